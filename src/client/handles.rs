@@ -1,0 +1,99 @@
+//! The handle table: `unsigned short` handles over sessions.
+//!
+//! A read-write lock guards the map for lookups; each handle has its own
+//! small state lock, and network I/O happens under the pair's lock only
+//! (mozilla ffi-support's model). Handles are never 0 and a freed number is
+//! not handed out again until the counter wraps around, so a stale handle
+//! gets EW_HANDLE instead of someone else's session.
+
+use super::pair::Pair;
+use crate::error::{Error, Result};
+use crate::ew::EW_HANDLE;
+use parking_lot::{Mutex, RwLock};
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// Most handles that can exist at once (FANUC's library: 1024, then it hangs).
+pub const MAX_HANDLES: usize = 60_000;
+/// FANUC numbers handles from 0x8001; we do too, so logs look familiar.
+const FIRST: u16 = 0x8001;
+
+#[derive(Debug, Clone)]
+pub struct HandleState {
+    pub path: u16,
+    pub timeout: i32,
+    /// (err_no, err_dtno) for cnc_getdtailerr.
+    pub detail: (i16, i16),
+    /// Once a call failed with EW_SOCKET the detail no longer changes (FANUC).
+    pub detail_frozen: bool,
+}
+
+pub struct Handle {
+    pub pair: Arc<Pair>,
+    pub state: Mutex<HandleState>,
+}
+
+struct Table {
+    map: HashMap<u16, Arc<Handle>>,
+    next: u16,
+}
+
+static TABLE: RwLock<Option<Table>> = RwLock::new(None);
+
+pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
+    let mut g = TABLE.write();
+    let t = g.get_or_insert_with(|| Table {
+        map: HashMap::new(),
+        next: FIRST,
+    });
+    if t.map.len() >= MAX_HANDLES {
+        return Err(Error::local(EW_HANDLE, "handle table full"));
+    }
+    let mut h = t.next;
+    while h == 0 || t.map.contains_key(&h) {
+        h = h.wrapping_add(1);
+    }
+    t.next = h.wrapping_add(1);
+    t.map.insert(
+        h,
+        Arc::new(Handle {
+            pair,
+            state: Mutex::new(HandleState {
+                path: 1,
+                timeout,
+                detail: (0, 0),
+                detail_frozen: false,
+            }),
+        }),
+    );
+    Ok(h)
+}
+
+pub fn get(h: u16) -> Result<Arc<Handle>> {
+    TABLE
+        .read()
+        .as_ref()
+        .and_then(|t| t.map.get(&h).cloned())
+        .ok_or_else(Error::handle)
+}
+
+pub fn remove(h: u16) -> Result<Arc<Handle>> {
+    TABLE
+        .write()
+        .as_mut()
+        .and_then(|t| t.map.remove(&h))
+        .ok_or_else(Error::handle)
+}
+
+/// Removes every handle (cnc_exitprocess); returns them for closing.
+pub fn drain() -> Vec<Arc<Handle>> {
+    TABLE
+        .write()
+        .as_mut()
+        .map(|t| t.map.drain().map(|(_, v)| v).collect())
+        .unwrap_or_default()
+}
+
+pub fn count() -> usize {
+    TABLE.read().as_ref().map_or(0, |t| t.map.len())
+}

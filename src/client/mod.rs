@@ -1,0 +1,59 @@
+//! The client side: connection pairs, sessions and the handle table.
+//! Blocking std::net, no threads of its own.
+
+pub mod conn;
+pub mod handles;
+pub mod log;
+pub mod pair;
+
+use crate::error::{Error, Result};
+use crate::proto::call::Call;
+use handles::Handle;
+
+/// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
+const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
+
+impl Handle {
+    /// Runs a call on this handle's pair with its path and timeout, and
+    /// records the error detail.
+    pub fn call<C: Call>(&self, c: &C) -> Result<C::Output> {
+        let (path, timeout) = {
+            let s = self.state.lock();
+            (s.path, s.timeout)
+        };
+        let r = self.pair.call(c, path, timeout);
+        match &r {
+            Ok(_) => self.clear_detail(),
+            Err(e) => self.note(e),
+        }
+        r
+    }
+
+    fn clear_detail(&self) {
+        let mut s = self.state.lock();
+        if !s.detail_frozen {
+            s.detail = (0, 0);
+        }
+    }
+
+    /// Updates the detail words cnc_getdtailerr reports.
+    pub fn note(&self, e: &Error) {
+        let mut s = self.state.lock();
+        if s.detail_frozen {
+            return;
+        }
+        match e {
+            Error::Cnc {
+                code,
+                detail1,
+                detail2,
+            } if DETAIL_CODES.contains(code) => s.detail = (*detail1 as i16, *detail2 as i16),
+            Error::Socket { detail, .. } => {
+                s.detail = *detail;
+                s.detail_frozen = true;
+            }
+            Error::Protocol { detail, .. } => s.detail = *detail,
+            _ => {}
+        }
+    }
+}

@@ -1,0 +1,294 @@
+//! One connection pair per (host, port) per process (SPEC.md §1, §3):
+//! connection 1 (program transfer) and connection 2 (data), shared and
+//! reference-counted by every handle to that CNC.
+
+use super::conn::{Conn, Deadline};
+use super::log;
+use crate::error::{detail, Error, Result};
+use crate::proto::call::{self, Call, Ctx};
+use crate::proto::frame::{ftype, Frame, CLIENT_VERSION};
+use crate::proto::open::{CncClass, OpenBody};
+use crate::proto::packet::{decode_response, encode_request, ReqSub, RespSub};
+use crate::proto::param::Param16;
+use crate::proto::status::{sysinfo_at_connect, SysInfo};
+use crate::proto::{cmd, OPTION_PARAM_15, OPTION_PARAM_16};
+use parking_lot::Mutex;
+use std::collections::HashMap;
+use std::net::{SocketAddr, ToSocketAddrs};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// What the CNC told us at connect time; immutable afterwards.
+#[derive(Debug, Clone)]
+pub struct CncInfo {
+    pub open: OpenBody,
+    /// Start-up sysinfo answers, by path number (1-based); None for absent paths.
+    pub sysinfo: Vec<Option<SysInfo>>,
+    /// The FOCAS option flags the library learns at connect.
+    pub option: u16,
+}
+
+impl CncInfo {
+    pub fn ctx(&self, path: u16) -> Ctx {
+        Ctx {
+            class: self.open.class(),
+            max_axes: self.open.max_axes(path as usize),
+        }
+    }
+}
+
+struct Conns {
+    c1: Conn,
+    c2: Conn,
+}
+
+pub struct Pair {
+    pub key: String,
+    pub info: CncInfo,
+    io: Mutex<Option<Conns>>,
+    /// Number of handles using the pair; the last free closes it.
+    refs: Mutex<usize>,
+    dead: AtomicBool,
+}
+
+/// Slots by "host:port". A slot's mutex serialises connecting to that CNC,
+/// so handles made at the same time share one pair; other CNCs are not held up.
+type Slot = Arc<Mutex<Option<Arc<Pair>>>>;
+static SLOTS: Mutex<Option<HashMap<String, Slot>>> = Mutex::new(None);
+
+fn slot(key: &str) -> Slot {
+    let mut g = SLOTS.lock();
+    g.get_or_insert_with(HashMap::new)
+        .entry(key.to_string())
+        .or_default()
+        .clone()
+}
+
+/// A live pair to `host:port`, shared if one exists, else a new connection.
+/// Returns the pair with its reference count already taken.
+pub fn acquire(host: &str, port: u16, timeout: i32, id: u32) -> Result<Arc<Pair>> {
+    let key = format!("{host}:{port}");
+    let slot = slot(&key);
+    let mut cur = slot.lock();
+    if let Some(p) = cur.as_ref() {
+        let mut refs = p.refs.lock();
+        if *refs > 0 && !p.is_dead() {
+            *refs += 1;
+            return Ok(p.clone());
+        }
+    }
+    let pair = Arc::new(Pair::connect(key, host, port, timeout, id)?);
+    *cur = Some(pair.clone());
+    Ok(pair)
+}
+
+/// Closes every pair (cnc_exitprocess).
+pub fn forget_all() {
+    let slots: Vec<Slot> = SLOTS.lock().take().map(|m| m.into_values().collect()).unwrap_or_default();
+    for s in slots {
+        if let Some(p) = s.lock().take() {
+            p.kill();
+        }
+    }
+}
+
+fn resolve(host: &str, port: u16) -> Result<Vec<SocketAddr>> {
+    let addrs: Vec<SocketAddr> = (host, port)
+        .to_socket_addrs()
+        .map_err(|e| Error::socket(detail::CONNECT, format!("resolve {host}: {e}")))?
+        .collect();
+    if addrs.is_empty() {
+        return Err(Error::socket(detail::CONNECT, format!("resolve {host}: no address")));
+    }
+    Ok(addrs)
+}
+
+/// Open handshake on one connection (optionally preceded by the 0xf501 id frame).
+fn open(conn: &mut Conn, number: u16, id: u32, deadline: Deadline) -> Result<Frame> {
+    if id != 0 {
+        conn.send(&Frame::new(CLIENT_VERSION, ftype::ID_REQ, id.to_be_bytes().to_vec()), deadline)?;
+        let r = conn.recv_kind(0xf5, deadline)?;
+        if r.ftype == ftype::ID_REJECT {
+            return Err(Error::protocol(detail::REJECTED, "CNC rejected the connection id"));
+        }
+    }
+    conn.send(&Frame::new(CLIENT_VERSION, ftype::OPEN_REQ, number.to_be_bytes().to_vec()), deadline)?;
+    let r = conn.recv_kind(0x01, deadline)?;
+    if r.ftype == ftype::OPEN_REJECT {
+        return Err(Error::socket(detail::REJECTED, "CNC refused the session (session limit reached)"));
+    }
+    Ok(r)
+}
+
+impl Pair {
+    fn connect(key: String, host: &str, port: u16, timeout: i32, id: u32) -> Result<Pair> {
+        let deadline = Deadline::after_secs(timeout);
+        let addrs = resolve(host, port)?;
+        let mut c1 = Conn::connect(&addrs, 1, deadline)?;
+        open(&mut c1, 1, id, deadline)?;
+        let mut c2 = Conn::connect(&addrs, 2, deadline)?;
+        let r = open(&mut c2, 2, id, deadline)?;
+        let open_body = OpenBody::decode(r.version, &r.body).map_err(Error::from)?;
+        let mut conns = Conns { c1, c2 };
+        match Self::startup(&mut conns, &open_body, deadline) {
+            Ok((sysinfo, option)) => {
+                crate::log_at!(log::CALLS, "connected to {key}: {:?}, {} path(s)", open_body.class(), open_body.path_count());
+                Ok(Pair {
+                    key,
+                    info: CncInfo {
+                        open: open_body,
+                        sysinfo,
+                        option,
+                    },
+                    io: Mutex::new(Some(conns)),
+                    refs: Mutex::new(1),
+                    dead: AtomicBool::new(false),
+                })
+            }
+            Err(e) => {
+                if !e.kills_connection() {
+                    // A CNC error at start-up: close politely, as FANUC's library does.
+                    let _ = close(&mut conns, deadline);
+                }
+                Err(e)
+            }
+        }
+    }
+
+    /// Start-up traffic on connection 2 (SPEC.md §3.1, §3.4).
+    fn startup(conns: &mut Conns, open: &OpenBody, deadline: Deadline) -> Result<(Vec<Option<SysInfo>>, u16)> {
+        let words = open.path_words();
+        let paths: Vec<u16> = (1..=words.len() as u16).filter(|p| words[*p as usize - 1] != 0).collect();
+        let mut subs = sysinfo_at_connect(&paths);
+        let class = open.class();
+        if class == (CncClass::Series16 { kind: 2 }) {
+            let mut s = ReqSub::cnc(cmd::SYSINFO15, &[]);
+            s.path = 1;
+            subs.push(s);
+        }
+        let resp = exchange(&mut conns.c2, &subs, deadline)?;
+        let mut sysinfo = vec![None; words.len()];
+        for (i, p) in paths.iter().enumerate() {
+            sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(&resp, i)?);
+        }
+        let option_param = match class {
+            CncClass::Series30 => None,
+            CncClass::Series16 { kind: 3 } => None,
+            CncClass::Series16 { kind: 2 } => Some((cmd::RDPARAM, OPTION_PARAM_15, 0x3f)),
+            CncClass::Series16 { .. } => Some((cmd::RDPARAM16, OPTION_PARAM_16, 0x01)),
+        };
+        let mut option = open_option(open);
+        if let Some((command, number, mask)) = option_param {
+            let mut s = ReqSub::cnc(command, &[number, number]);
+            s.path = 1;
+            let resp = exchange(&mut conns.c2, &[s], deadline)?;
+            // A CNC that cannot say leaves the option off; it is not a connect failure.
+            if let Ok(p) = call::payload::<Param16>(&resp, 0) {
+                option = p.values.first().map_or(0, |v| (*v as u16) & 0xff & mask);
+            }
+        }
+        Ok((sysinfo, option))
+    }
+
+    pub fn is_dead(&self) -> bool {
+        self.dead.load(Ordering::Acquire)
+    }
+
+    /// Tears the pair down ("circuit destroyed"): every later call on any of
+    /// its handles fails with EW_SOCKET without traffic.
+    pub fn kill(&self) {
+        self.dead.store(true, Ordering::Release);
+        if let Some(c) = self.io.lock().take() {
+            c.c1.shutdown();
+            c.c2.shutdown();
+        }
+    }
+
+    /// Sends `c`'s subpackets on connection 2 with the handle's path and
+    /// decodes the answer. One exchange at a time per pair.
+    pub fn call<C: Call>(&self, c: &C, path: u16, timeout: i32) -> Result<C::Output> {
+        let cx = self.info.ctx(path);
+        let mut subs = c.request(&cx);
+        for s in &mut subs {
+            if s.path == 0 {
+                s.path = path;
+            }
+        }
+        let resp = self.exchange(&subs, timeout)?;
+        c.decode(&cx, &resp)
+    }
+
+    pub fn exchange(&self, subs: &[ReqSub], timeout: i32) -> Result<Vec<RespSub>> {
+        let mut io = self.io.lock();
+        let Some(conns) = io.as_mut() else {
+            return Err(Error::socket(detail::DEAD, "connection was torn down by an earlier failure"));
+        };
+        match exchange(&mut conns.c2, subs, Deadline::after_secs(timeout)) {
+            Ok(r) => Ok(r),
+            Err(e) => {
+                if stream_broken(&e) {
+                    self.dead.store(true, Ordering::Release);
+                    if let Some(c) = io.take() {
+                        c.c1.shutdown();
+                        c.c2.shutdown();
+                    }
+                }
+                Err(e)
+            }
+        }
+    }
+
+    /// Drops one handle's reference; the last one sends the close frames.
+    pub fn release(&self, timeout: i32) -> Result<()> {
+        let mut refs = self.refs.lock();
+        *refs = refs.saturating_sub(1);
+        if *refs > 0 {
+            return Ok(());
+        }
+        let taken = self.io.lock().take();
+        self.dead.store(true, Ordering::Release);
+        match taken {
+            Some(mut c) => {
+                let r = close(&mut c, Deadline::after_secs(timeout));
+                c.c1.shutdown();
+                c.c2.shutdown();
+                r
+            }
+            None => Ok(()),
+        }
+    }
+}
+
+/// Socket errors and header-level protocol errors leave the stream unusable;
+/// body-level errors (count, subpacket lengths) do not.
+fn stream_broken(e: &Error) -> bool {
+    match e {
+        Error::Socket { .. } => true,
+        Error::Protocol { detail: d, .. } => *d == detail::BAD_MAGIC || *d == detail::OVERSIZE,
+        _ => false,
+    }
+}
+
+fn close(c: &mut Conns, deadline: Deadline) -> Result<()> {
+    for conn in [&mut c.c1, &mut c.c2] {
+        conn.send(&Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()), deadline)?;
+        conn.recv_kind(0x02, deadline)?;
+    }
+    Ok(())
+}
+
+fn open_option(open: &OpenBody) -> u16 {
+    match open {
+        OpenBody::Series30 { header, .. } => header[14],
+        OpenBody::Series16 { header, .. } if header[1] == 3 => 1,
+        OpenBody::Series16 { .. } => 0,
+    }
+}
+
+/// One data request and its response on a connection.
+fn exchange(conn: &mut Conn, subs: &[ReqSub], deadline: Deadline) -> Result<Vec<RespSub>> {
+    conn.send(&Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(subs)), deadline)?;
+    let f = conn.recv_kind(0x21, deadline)?;
+    Ok(decode_response(&f.body)?)
+}
+

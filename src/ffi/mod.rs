@@ -1,0 +1,71 @@
+//! The C ABI: one module per API area. Every exported body runs inside
+//! [`ffi_boundary!`], so a panic becomes `EW_UNEXP` instead of crossing into C.
+
+pub mod handle;
+pub mod status;
+
+use crate::client::log;
+use crate::error::{Error, Result};
+use crate::ew::{EW_OK, EW_UNEXP};
+use std::os::raw::{c_char, c_short};
+
+/// Runs an exported function's body: `Result<()>` becomes an `EW_*` code,
+/// a panic becomes `EW_UNEXP`. The signature stays outside, for cbindgen.
+macro_rules! ffi_boundary {
+    ($name:literal, $body:block) => {{
+        let r = ::std::panic::catch_unwind(::std::panic::AssertUnwindSafe(
+            || -> $crate::error::Result<()> { $body },
+        ));
+        $crate::ffi::finish($name, r)
+    }};
+}
+pub(crate) use ffi_boundary;
+
+pub(crate) fn finish(name: &str, r: std::thread::Result<Result<()>>) -> c_short {
+    match r {
+        Ok(Ok(())) => {
+            crate::log_at!(log::CALLS, "{name} -> 0");
+            EW_OK
+        }
+        Ok(Err(e)) => {
+            let code = e.ew();
+            crate::log_at!(log::ERRORS, "{name} -> {code}: {e}");
+            code
+        }
+        Err(p) => {
+            let msg = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            crate::log_at!(log::ERRORS, "{name} -> {EW_UNEXP}: internal panic: {msg}");
+            EW_UNEXP
+        }
+    }
+}
+
+/// A required pointer argument, checked before any traffic.
+pub(crate) fn nonnull<T>(p: *mut T) -> Result<*mut T> {
+    if p.is_null() { Err(Error::null()) } else { Ok(p) }
+}
+
+/// Writes a finished result to the caller (only ever on success).
+///
+/// # Safety
+/// `p` must be non-null and point to writable memory for a `T`.
+pub(crate) unsafe fn put<T>(p: *mut T, v: T) {
+    unsafe { p.write_unaligned(v) }
+}
+
+/// Reads a C string argument.
+///
+/// # Safety
+/// `p` must be NULL or point to a NUL-terminated string.
+pub(crate) unsafe fn cstr<'a>(p: *const c_char) -> Result<&'a str> {
+    if p.is_null() {
+        return Err(Error::null());
+    }
+    unsafe { std::ffi::CStr::from_ptr(p) }
+        .to_str()
+        .map_err(|_| Error::local(crate::ew::EW_DATA, "string argument is not UTF-8"))
+}

@@ -1,0 +1,20 @@
+//! fwlib32-rs: a Rust-native, drop-in replacement for FANUC's FOCAS2 Ethernet
+//! library, and a CNC simulator speaking the same protocol.
+//!
+//! * [`proto`]: the sans-IO codec shared by the client and the simulator.
+//! * [`client`]: connection pairs, sessions, the handle table (blocking std::net).
+//! * [`ffi`]: the exported C functions of `fwlib32.h`.
+//! * [`sim`]: the simulator (tokio), behind `focas-sim`.
+
+#![allow(non_snake_case)]
+
+pub mod client;
+pub mod error;
+pub mod ew;
+pub mod ffi;
+pub mod proto;
+pub mod sim;
+pub mod types;
+
+pub use ffi::handle::*;
+pub use ffi::status::*;

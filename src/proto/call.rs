@@ -1,0 +1,81 @@
+//! A FOCAS call as data: the subpackets to send and how to read the answer.
+//! Sans-IO: the client session sends what `request` returns and hands the
+//! response subpackets to `decode`; the codec tests do the same without sockets.
+
+use super::open::CncClass;
+use super::packet::{RespSub, ReqSub};
+use super::wire::Wire;
+use crate::error::{Error, Result};
+use std::marker::PhantomData;
+
+/// What a call needs to know about the CNC it talks to.
+#[derive(Debug, Clone, Copy)]
+pub struct Ctx {
+    pub class: CncClass,
+    /// Maximum axes of the current path (record count of all-axes answers).
+    pub max_axes: u16,
+}
+
+impl Default for Ctx {
+    fn default() -> Self {
+        Ctx {
+            class: CncClass::Series30,
+            max_axes: 32,
+        }
+    }
+}
+
+pub trait Call {
+    type Output;
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub>;
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output>;
+}
+
+/// Subpacket `i` of a response, its error code turned into an [`Error`].
+pub fn sub(resp: &[RespSub], i: usize) -> Result<&RespSub> {
+    let s = resp.get(i).ok_or_else(|| {
+        Error::protocol(
+            crate::error::detail::SUBLEN_TOO_SMALL,
+            format!("response has {} subpackets, expected at least {}", resp.len(), i + 1),
+        )
+    })?;
+    if s.error != 0 {
+        return Err(Error::Cnc {
+            code: s.error,
+            detail1: s.detail1,
+            detail2: s.detail2,
+        });
+    }
+    Ok(s)
+}
+
+/// The payload of subpacket `i`, decoded as `T`.
+pub fn payload<T: Wire>(resp: &[RespSub], i: usize) -> Result<T> {
+    Ok(T::from_bytes(&sub(resp, i)?.payload)?)
+}
+
+/// The commonest call: one subpacket whose payload decodes as `T`.
+#[derive(Debug, Clone)]
+pub struct Single<T> {
+    pub sub: ReqSub,
+    _out: PhantomData<fn() -> T>,
+}
+
+impl<T: Wire> Single<T> {
+    pub fn new(sub: ReqSub) -> Self {
+        Single {
+            sub,
+            _out: PhantomData,
+        }
+    }
+}
+
+impl<T: Wire> Call for Single<T> {
+    type Output = T;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![self.sub.clone()]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<T> {
+        payload(resp, 0)
+    }
+}

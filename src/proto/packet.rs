@@ -1,0 +1,214 @@
+//! Data frames (0x2101 / 0x2102): a counted list of subpackets (SPEC.md §4).
+
+use super::wire::{DecodeError, Reader, Writer};
+
+/// Subpacket class word.
+pub const CLASS_CNC: u16 = 1;
+pub const CLASS_PMC: u16 = 2;
+
+const REQ_FIXED: usize = 28;
+const RESP_FIXED: usize = 16;
+
+/// One command block of a request.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct ReqSub {
+    pub class: u16,
+    pub path: u16,
+    pub cmd: u16,
+    pub args: [i32; 5],
+    pub payload: Vec<u8>,
+}
+
+impl ReqSub {
+    /// A CNC-class subpacket. Path 0 means "the handle's current path": the
+    /// session stamps it before sending.
+    pub fn cnc(cmd: u16, args: &[i32]) -> ReqSub {
+        ReqSub::with_class(CLASS_CNC, cmd, args)
+    }
+    pub fn pmc(cmd: u16, args: &[i32]) -> ReqSub {
+        ReqSub::with_class(CLASS_PMC, cmd, args)
+    }
+    fn with_class(class: u16, cmd: u16, args: &[i32]) -> ReqSub {
+        let mut a = [0i32; 5];
+        for (d, s) in a.iter_mut().zip(args) {
+            *d = *s;
+        }
+        ReqSub {
+            class,
+            path: 0,
+            cmd,
+            args: a,
+            payload: Vec::new(),
+        }
+    }
+    /// A write-type subpacket: arg 5 carries the payload length.
+    pub fn with_payload(mut self, payload: Vec<u8>) -> ReqSub {
+        self.args[4] = payload.len() as i32;
+        self.payload = payload;
+        self
+    }
+}
+
+/// One result block of a response.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct RespSub {
+    pub class: u16,
+    pub path: u16,
+    pub cmd: u16,
+    pub error: i16,
+    pub detail1: u16,
+    pub detail2: u16,
+    pub payload: Vec<u8>,
+}
+
+impl RespSub {
+    /// The answer to `req` carrying `payload`.
+    pub fn ok(req: &ReqSub, payload: Vec<u8>) -> RespSub {
+        RespSub {
+            class: req.class,
+            path: req.path,
+            cmd: req.cmd,
+            payload,
+            ..RespSub::default()
+        }
+    }
+    /// The answer to `req` carrying a CNC error code.
+    pub fn err(req: &ReqSub, error: i16, detail1: u16, detail2: u16) -> RespSub {
+        RespSub {
+            class: req.class,
+            path: req.path,
+            cmd: req.cmd,
+            error,
+            detail1,
+            detail2,
+            payload: Vec::new(),
+        }
+    }
+}
+
+/// Encodes a request body: u16 count, then the subpackets.
+pub fn encode_request(subs: &[ReqSub]) -> Vec<u8> {
+    let mut w = Writer::with_capacity(2 + subs.len() * REQ_FIXED);
+    w.u16(subs.len() as u16);
+    for s in subs {
+        w.u16((REQ_FIXED + s.payload.len()) as u16);
+        w.u16(s.class);
+        w.u16(s.path);
+        w.u16(s.cmd);
+        for a in s.args {
+            w.i32(a);
+        }
+        w.bytes(&s.payload);
+    }
+    w.into_vec()
+}
+
+/// Decodes a request body (the simulator's side).
+pub fn decode_request(body: &[u8]) -> Result<Vec<ReqSub>, DecodeError> {
+    decode_list(body, REQ_FIXED, |r, len| {
+        let class = r.u16()?;
+        let path = r.u16()?;
+        let cmd = r.u16()?;
+        let mut args = [0i32; 5];
+        for a in &mut args {
+            *a = r.i32()?;
+        }
+        let payload = r.bytes(len - REQ_FIXED)?.to_vec();
+        Ok(ReqSub {
+            class,
+            path,
+            cmd,
+            args,
+            payload,
+        })
+    })
+}
+
+/// Encodes a response body.
+pub fn encode_response(subs: &[RespSub]) -> Vec<u8> {
+    let mut w = Writer::with_capacity(2 + subs.iter().map(|s| RESP_FIXED + s.payload.len()).sum::<usize>());
+    w.u16(subs.len() as u16);
+    for s in subs {
+        w.u16((RESP_FIXED + s.payload.len()) as u16);
+        w.u16(s.class);
+        w.u16(s.path);
+        w.u16(s.cmd);
+        w.i16(s.error);
+        w.u16(s.detail1);
+        w.u16(s.detail2);
+        w.u16(s.payload.len() as u16);
+        w.bytes(&s.payload);
+    }
+    w.into_vec()
+}
+
+/// Decodes a response body, checking the count and that the subpacket
+/// lengths add up to the body exactly. The payload-length word bounds the
+/// payload (FANUC's library uses no more than it announces).
+pub fn decode_response(body: &[u8]) -> Result<Vec<RespSub>, DecodeError> {
+    decode_list(body, RESP_FIXED, |r, len| {
+        let class = r.u16()?;
+        let path = r.u16()?;
+        let cmd = r.u16()?;
+        let error = r.i16()?;
+        let detail1 = r.u16()?;
+        let detail2 = r.u16()?;
+        let plen = r.u16()? as usize;
+        let room = len - RESP_FIXED;
+        let all = r.bytes(room)?;
+        if plen > room {
+            return Err(DecodeError::Invalid("payload length exceeds its subpacket"));
+        }
+        Ok(RespSub {
+            class,
+            path,
+            cmd,
+            error,
+            detail1,
+            detail2,
+            payload: all[..plen].to_vec(),
+        })
+    })
+}
+
+fn decode_list<T>(
+    body: &[u8],
+    fixed: usize,
+    mut one: impl FnMut(&mut Reader<'_>, usize) -> Result<T, DecodeError>,
+) -> Result<Vec<T>, DecodeError> {
+    let mut r = Reader::new(body);
+    let count = r.u16()?;
+    if count == 0 {
+        return Err(DecodeError::CountZero);
+    }
+    // Lengths are checked against the body before anything is parsed, so a
+    // lie in one length word cannot make us read another subpacket's bytes.
+    let mut lens = Vec::with_capacity(count as usize);
+    let mut at = 2usize;
+    for _ in 0..count {
+        if body.len() < at + 2 {
+            return Err(DecodeError::SubLenTooBig);
+        }
+        let len = u16::from_be_bytes([body[at], body[at + 1]]) as usize;
+        if len < fixed {
+            return Err(DecodeError::Invalid("subpacket shorter than its fixed part"));
+        }
+        at += len;
+        if at > body.len() {
+            return Err(DecodeError::SubLenTooBig);
+        }
+        lens.push(len);
+    }
+    if at != body.len() {
+        return Err(DecodeError::SubLenTooSmall);
+    }
+    let mut out = Vec::with_capacity(count as usize);
+    for len in lens {
+        r.u16()?;
+        let start = r.position();
+        let item = one(&mut r, len)?;
+        debug_assert_eq!(r.position() - start, len - 2);
+        out.push(item);
+    }
+    Ok(out)
+}
