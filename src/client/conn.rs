@@ -1,7 +1,7 @@
 //! One TCP connection to a CNC, blocking std::net, every wait bounded by a deadline.
 
 use super::log;
-use crate::error::{detail, Error, Result};
+use crate::error::{Error, Result, detail};
 use crate::proto::frame::{Frame, FrameHeader, HEADER_LEN};
 use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
@@ -76,7 +76,12 @@ impl Conn {
             .map_err(|e| Error::socket(detail::SEND, format!("send: {e}")))
     }
 
-    fn read_exact(&mut self, buf: &mut [u8], deadline: Deadline, on_timeout: (i16, i16)) -> Result<()> {
+    fn read_exact(
+        &mut self,
+        buf: &mut [u8],
+        deadline: Deadline,
+        on_timeout: (i16, i16),
+    ) -> Result<()> {
         let mut got = 0;
         while got < buf.len() {
             let t = deadline
@@ -84,7 +89,12 @@ impl Conn {
                 .ok_or_else(|| Error::socket(on_timeout, "receive: timed out"))?;
             let _ = self.stream.set_read_timeout(t);
             match self.stream.read(&mut buf[got..]) {
-                Ok(0) => return Err(Error::socket(detail::EOF, "receive: connection closed by the CNC")),
+                Ok(0) => {
+                    return Err(Error::socket(
+                        detail::EOF,
+                        "receive: connection closed by the CNC",
+                    ));
+                }
                 Ok(n) => got += n,
                 Err(e) if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut) => {
                     return Err(Error::socket(on_timeout, "receive: timed out"));

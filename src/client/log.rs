@@ -35,7 +35,11 @@ fn init_from_env() {
             return;
         };
         let sink = match std::env::var_os("FWLIB32_LOG_FILE") {
-            Some(p) => match std::fs::OpenOptions::new().create(true).append(true).open(p) {
+            Some(p) => match std::fs::OpenOptions::new()
+                .create(true)
+                .append(true)
+                .open(p)
+            {
                 Ok(f) => Sink::File(f),
                 Err(_) => Sink::Stderr,
             },
@@ -104,7 +108,10 @@ pub fn bytes(dir: &str, conn: u8, peer: &str, b: &[u8]) {
             use std::fmt::Write as _;
             let _ = write!(hex, "{x:02x}");
         }
-        write(BYTES, format_args!("{dir} conn{conn} {peer} {} bytes: {hex}", b.len()));
+        write(
+            BYTES,
+            format_args!("{dir} conn{conn} {peer} {} bytes: {hex}", b.len()),
+        );
     }
 }
 

@@ -4,14 +4,14 @@
 
 use super::conn::{Conn, Deadline};
 use super::log;
-use crate::error::{detail, Error, Result};
+use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
-use crate::proto::frame::{ftype, Frame, CLIENT_VERSION};
+use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use crate::proto::open::{CncClass, OpenBody};
-use crate::proto::packet::{decode_response, encode_request, ReqSub, RespSub};
+use crate::proto::packet::{ReqSub, RespSub, decode_response, encode_request};
 use crate::proto::param::Param16;
-use crate::proto::status::{sysinfo_at_connect, SysInfo};
-use crate::proto::{cmd, OPTION_PARAM_15, OPTION_PARAM_16};
+use crate::proto::status::{SysInfo, sysinfo_at_connect};
+use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
 use parking_lot::Mutex;
 use std::collections::HashMap;
 use std::net::{SocketAddr, ToSocketAddrs};
@@ -84,7 +84,11 @@ pub fn acquire(host: &str, port: u16, timeout: i32, id: u32) -> Result<Arc<Pair>
 
 /// Closes every pair (cnc_exitprocess).
 pub fn forget_all() {
-    let slots: Vec<Slot> = SLOTS.lock().take().map(|m| m.into_values().collect()).unwrap_or_default();
+    let slots: Vec<Slot> = SLOTS
+        .lock()
+        .take()
+        .map(|m| m.into_values().collect())
+        .unwrap_or_default();
     for s in slots {
         if let Some(p) = s.lock().take() {
             p.kill();
@@ -98,7 +102,10 @@ fn resolve(host: &str, port: u16) -> Result<Vec<SocketAddr>> {
         .map_err(|e| Error::socket(detail::CONNECT, format!("resolve {host}: {e}")))?
         .collect();
     if addrs.is_empty() {
-        return Err(Error::socket(detail::CONNECT, format!("resolve {host}: no address")));
+        return Err(Error::socket(
+            detail::CONNECT,
+            format!("resolve {host}: no address"),
+        ));
     }
     Ok(addrs)
 }
@@ -106,16 +113,32 @@ fn resolve(host: &str, port: u16) -> Result<Vec<SocketAddr>> {
 /// Open handshake on one connection (optionally preceded by the 0xf501 id frame).
 fn open(conn: &mut Conn, number: u16, id: u32, deadline: Deadline) -> Result<Frame> {
     if id != 0 {
-        conn.send(&Frame::new(CLIENT_VERSION, ftype::ID_REQ, id.to_be_bytes().to_vec()), deadline)?;
+        conn.send(
+            &Frame::new(CLIENT_VERSION, ftype::ID_REQ, id.to_be_bytes().to_vec()),
+            deadline,
+        )?;
         let r = conn.recv_kind(0xf5, deadline)?;
         if r.ftype == ftype::ID_REJECT {
-            return Err(Error::protocol(detail::REJECTED, "CNC rejected the connection id"));
+            return Err(Error::protocol(
+                detail::REJECTED,
+                "CNC rejected the connection id",
+            ));
         }
     }
-    conn.send(&Frame::new(CLIENT_VERSION, ftype::OPEN_REQ, number.to_be_bytes().to_vec()), deadline)?;
+    conn.send(
+        &Frame::new(
+            CLIENT_VERSION,
+            ftype::OPEN_REQ,
+            number.to_be_bytes().to_vec(),
+        ),
+        deadline,
+    )?;
     let r = conn.recv_kind(0x01, deadline)?;
     if r.ftype == ftype::OPEN_REJECT {
-        return Err(Error::socket(detail::REJECTED, "CNC refused the session (session limit reached)"));
+        return Err(Error::socket(
+            detail::REJECTED,
+            "CNC refused the session (session limit reached)",
+        ));
     }
     Ok(r)
 }
@@ -132,7 +155,12 @@ impl Pair {
         let mut conns = Conns { c1, c2 };
         match Self::startup(&mut conns, &open_body, deadline) {
             Ok((sysinfo, option)) => {
-                crate::log_at!(log::CALLS, "connected to {key}: {:?}, {} path(s)", open_body.class(), open_body.path_count());
+                crate::log_at!(
+                    log::CALLS,
+                    "connected to {key}: {:?}, {} path(s)",
+                    open_body.class(),
+                    open_body.path_count()
+                );
                 Ok(Pair {
                     key,
                     info: CncInfo {
@@ -156,9 +184,15 @@ impl Pair {
     }
 
     /// Start-up traffic on connection 2 (SPEC.md §3.1, §3.4).
-    fn startup(conns: &mut Conns, open: &OpenBody, deadline: Deadline) -> Result<(Vec<Option<SysInfo>>, u16)> {
+    fn startup(
+        conns: &mut Conns,
+        open: &OpenBody,
+        deadline: Deadline,
+    ) -> Result<(Vec<Option<SysInfo>>, u16)> {
         let words = open.path_words();
-        let paths: Vec<u16> = (1..=words.len() as u16).filter(|p| words[*p as usize - 1] != 0).collect();
+        let paths: Vec<u16> = (1..=words.len() as u16)
+            .filter(|p| words[*p as usize - 1] != 0)
+            .collect();
         let mut subs = sysinfo_at_connect(&paths);
         let class = open.class();
         if class == (CncClass::Series16 { kind: 2 }) {
@@ -221,7 +255,10 @@ impl Pair {
     pub fn exchange(&self, subs: &[ReqSub], timeout: i32) -> Result<Vec<RespSub>> {
         let mut io = self.io.lock();
         let Some(conns) = io.as_mut() else {
-            return Err(Error::socket(detail::DEAD, "connection was torn down by an earlier failure"));
+            return Err(Error::socket(
+                detail::DEAD,
+                "connection was torn down by an earlier failure",
+            ));
         };
         match exchange(&mut conns.c2, subs, Deadline::after_secs(timeout)) {
             Ok(r) => Ok(r),
@@ -271,7 +308,10 @@ fn stream_broken(e: &Error) -> bool {
 
 fn close(c: &mut Conns, deadline: Deadline) -> Result<()> {
     for conn in [&mut c.c1, &mut c.c2] {
-        conn.send(&Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()), deadline)?;
+        conn.send(
+            &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
+            deadline,
+        )?;
         conn.recv_kind(0x02, deadline)?;
     }
     Ok(())
@@ -287,8 +327,10 @@ fn open_option(open: &OpenBody) -> u16 {
 
 /// One data request and its response on a connection.
 fn exchange(conn: &mut Conn, subs: &[ReqSub], deadline: Deadline) -> Result<Vec<RespSub>> {
-    conn.send(&Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(subs)), deadline)?;
+    conn.send(
+        &Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(subs)),
+        deadline,
+    )?;
     let f = conn.recv_kind(0x21, deadline)?;
     Ok(decode_response(&f.body)?)
 }
-

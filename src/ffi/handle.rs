@@ -25,7 +25,11 @@ pub unsafe extern "C" fn cnc_startupprocess(level: c_long, logfile: *const c_cha
             log::stop();
             return Ok(());
         }
-        let path = if logfile.is_null() { None } else { Some(unsafe { cstr(logfile)? }) };
+        let path = if logfile.is_null() {
+            None
+        } else {
+            Some(unsafe { cstr(logfile)? })
+        };
         // A log file that cannot be created leaves logging off; it is not an error
         // worth failing a machine connection for.
         if log::start(level as u8, path.map(std::path::Path::new)).is_err() {
@@ -49,7 +53,13 @@ pub extern "C" fn cnc_exitprocess() -> c_short {
     })
 }
 
-fn allocate(ip: *const c_char, port: c_ushort, timeout: c_long, id: u32, h: *mut c_ushort) -> crate::error::Result<()> {
+fn allocate(
+    ip: *const c_char,
+    port: c_ushort,
+    timeout: c_long,
+    id: u32,
+    h: *mut c_ushort,
+) -> crate::error::Result<()> {
     let out = nonnull(h)?;
     let host = unsafe { cstr(ip)? };
     let timeout = timeout.clamp(i32::MIN as c_long, i32::MAX as c_long) as i32;
@@ -78,7 +88,9 @@ pub unsafe extern "C" fn cnc_allclibhndl3(
     timeout: c_long,
     FlibHndl: *mut c_ushort,
 ) -> c_short {
-    ffi_boundary!("cnc_allclibhndl3", { allocate(ip, port, timeout, 0, FlibHndl) })
+    ffi_boundary!("cnc_allclibhndl3", {
+        allocate(ip, port, timeout, 0, FlibHndl)
+    })
 }
 
 /// As cnc_allclibhndl3; a non-zero `id` is presented to the CNC (frame 0xf501)
@@ -94,7 +106,9 @@ pub unsafe extern "C" fn cnc_allclibhndl4(
     id: c_ulong,
     FlibHndl: *mut c_ushort,
 ) -> c_short {
-    ffi_boundary!("cnc_allclibhndl4", { allocate(ip, port, timeout, id as u32, FlibHndl) })
+    ffi_boundary!("cnc_allclibhndl4", {
+        allocate(ip, port, timeout, id as u32, FlibHndl)
+    })
 }
 
 /// Frees a handle. The last handle to a CNC closes its connections.
@@ -122,7 +136,11 @@ pub extern "C" fn cnc_settimeout(FlibHndl: c_ushort, timeout: c_long) -> c_short
 /// # Safety
 /// Both pointers must be writable `short`s.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_getpath(FlibHndl: c_ushort, path_no: *mut c_short, maxpath_no: *mut c_short) -> c_short {
+pub unsafe extern "C" fn cnc_getpath(
+    FlibHndl: c_ushort,
+    path_no: *mut c_short,
+    maxpath_no: *mut c_short,
+) -> c_short {
     ffi_boundary!("cnc_getpath", {
         let h = handles::get(FlibHndl)?;
         let (p, m) = (nonnull(path_no)?, nonnull(maxpath_no)?);

@@ -46,7 +46,11 @@ pub(crate) fn finish(name: &str, r: std::thread::Result<Result<()>>) -> c_short 
 
 /// A required pointer argument, checked before any traffic.
 pub(crate) fn nonnull<T>(p: *mut T) -> Result<*mut T> {
-    if p.is_null() { Err(Error::null()) } else { Ok(p) }
+    if p.is_null() {
+        Err(Error::null())
+    } else {
+        Ok(p)
+    }
 }
 
 /// Writes a finished result to the caller (only ever on success).

@@ -4,8 +4,8 @@ use super::{ffi_boundary, nonnull, put};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::EW_PATH;
-use crate::proto::status::{rdcncid, StatInfo, Status, Status2};
-use crate::types::{chars, ODBST, ODBST2, ODBSYS};
+use crate::proto::status::{StatInfo, Status, Status2, rdcncid};
+use crate::types::{ODBST, ODBST2, ODBSYS, chars};
 use std::os::raw::{c_short, c_ulong, c_ushort};
 
 /// Reads the CNC's system information (series, version, axes) of the

@@ -3,7 +3,7 @@
 //! response subpackets to `decode`; the codec tests do the same without sockets.
 
 use super::open::CncClass;
-use super::packet::{RespSub, ReqSub};
+use super::packet::{ReqSub, RespSub};
 use super::wire::Wire;
 use crate::error::{Error, Result};
 use std::marker::PhantomData;
@@ -36,7 +36,11 @@ pub fn sub(resp: &[RespSub], i: usize) -> Result<&RespSub> {
     let s = resp.get(i).ok_or_else(|| {
         Error::protocol(
             crate::error::detail::SUBLEN_TOO_SMALL,
-            format!("response has {} subpackets, expected at least {}", resp.len(), i + 1),
+            format!(
+                "response has {} subpackets, expected at least {}",
+                resp.len(),
+                i + 1
+            ),
         )
     })?;
     if s.error != 0 {

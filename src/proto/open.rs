@@ -58,7 +58,9 @@ impl OpenBody {
             }
             let n = header[5] as usize;
             if body.len() != 40 + 32 * n {
-                return Err(DecodeError::Invalid("open response size does not match its path count"));
+                return Err(DecodeError::Invalid(
+                    "open response size does not match its path count",
+                ));
             }
             let mut paths = Vec::with_capacity(n);
             for _ in 0..n {
@@ -76,7 +78,9 @@ impl OpenBody {
             }
             let n = header[4] as usize;
             if body.len() != 16 + 8 * n {
-                return Err(DecodeError::Invalid("open response size does not match its path count"));
+                return Err(DecodeError::Invalid(
+                    "open response size does not match its path count",
+                ));
             }
             let mut paths = Vec::with_capacity(n);
             for _ in 0..n {

@@ -126,7 +126,12 @@ pub fn decode_request(body: &[u8]) -> Result<Vec<ReqSub>, DecodeError> {
 
 /// Encodes a response body.
 pub fn encode_response(subs: &[RespSub]) -> Vec<u8> {
-    let mut w = Writer::with_capacity(2 + subs.iter().map(|s| RESP_FIXED + s.payload.len()).sum::<usize>());
+    let mut w = Writer::with_capacity(
+        2 + subs
+            .iter()
+            .map(|s| RESP_FIXED + s.payload.len())
+            .sum::<usize>(),
+    );
     w.u16(subs.len() as u16);
     for s in subs {
         w.u16((RESP_FIXED + s.payload.len()) as u16);
@@ -191,7 +196,9 @@ fn decode_list<T>(
         }
         let len = u16::from_be_bytes([body[at], body[at + 1]]) as usize;
         if len < fixed {
-            return Err(DecodeError::Invalid("subpacket shorter than its fixed part"));
+            return Err(DecodeError::Invalid(
+                "subpacket shorter than its fixed part",
+            ));
         }
         at += len;
         if at > body.len() {

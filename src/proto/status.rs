@@ -1,8 +1,8 @@
 //! Connection-group and status structures: sysinfo, statinfo, statinfo2, CNC id.
 
-use super::call::{payload, sub, Call, Ctx, Single};
+use super::call::{Call, Ctx, Single, payload, sub};
 use super::cmd;
-use super::packet::{RespSub, ReqSub};
+use super::packet::{ReqSub, RespSub};
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::Result;
 use crate::wire_struct;

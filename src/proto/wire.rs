@@ -11,7 +11,11 @@ pub enum DecodeError {
     #[error("bad magic")]
     BadMagic,
     #[error("body of {len} bytes exceeds the {max}-byte limit of frame version {version}")]
-    Oversize { len: usize, max: usize, version: u16 },
+    Oversize {
+        len: usize,
+        max: usize,
+        version: u16,
+    },
     #[error("subpacket count is zero")]
     CountZero,
     #[error("subpacket lengths exceed the body")]

@@ -1,0 +1,195 @@
+//! Machine profiles: the TOML file that says what the simulated CNC is and
+//! what it holds. Sections grow with the functions the simulator serves.
+
+use serde::Deserialize;
+
+pub const DEFAULT_PROFILE: &str = include_str!("default.toml");
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Profile {
+    #[serde(default)]
+    pub cnc: Cnc,
+    #[serde(default, rename = "path")]
+    pub paths: Vec<Path>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Class {
+    #[serde(rename = "30i")]
+    Series30,
+    #[serde(rename = "16i")]
+    Series16,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Cnc {
+    pub class: Class,
+    /// 16i class only: the open response's kind word (1 = 16/18/21/0i, 3 = option forced on).
+    pub kind: u16,
+    pub cnc_type: String,
+    pub series: String,
+    pub version: String,
+    pub addinfo: u16,
+    pub max_axes: u16,
+    pub max_spindles: u16,
+    pub max_sessions: usize,
+    pub cnc_id: Vec<u32>,
+    /// FOCAS option flags (30i: open-response word 14; 16i: parameter 9968).
+    pub option: u16,
+}
+
+impl Default for Cnc {
+    fn default() -> Self {
+        Cnc {
+            class: Class::Series30,
+            kind: 1,
+            cnc_type: "31".into(),
+            series: "G421".into(),
+            version: "08.0".into(),
+            addinfo: 1026,
+            max_axes: 32,
+            max_spindles: 8,
+            max_sessions: 5,
+            cnc_id: vec![0, 0, 0, 0],
+            option: 1,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum MachineKind {
+    #[default]
+    Mill,
+    Lathe,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Path {
+    pub machine: MachineKind,
+    pub status: StatusWords,
+    #[serde(rename = "axis")]
+    pub axes: Vec<Axis>,
+    #[serde(rename = "spindle")]
+    pub spindles: Vec<Spindle>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct StatusWords {
+    pub aut: i16,
+    pub run: i16,
+    pub motion: i16,
+    pub mstb: i16,
+    pub emergency: i16,
+    pub alarm: i16,
+    pub edit: i16,
+    pub hdck: i16,
+    pub tmmode: i16,
+    pub warning: i16,
+    pub o3dchk: i16,
+    pub ext_opt: i16,
+    pub restart: i16,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Axis {
+    pub name: String,
+    pub suffix: String,
+    pub decimals: i16,
+    pub absolute: i32,
+    pub machine: i32,
+    pub relative: i32,
+    pub distance: i32,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Spindle {
+    pub name: String,
+    pub speed: i32,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum ProfileError {
+    #[error("cannot read profile {0}: {1}")]
+    Io(String, std::io::Error),
+    #[error("invalid profile: {0}")]
+    Toml(#[from] toml::de::Error),
+    #[error("invalid profile: {0}")]
+    Invalid(String),
+}
+
+impl Profile {
+    pub fn parse(text: &str) -> Result<Profile, ProfileError> {
+        let p: Profile = toml::from_str(text)?;
+        p.validate()?;
+        Ok(p)
+    }
+
+    pub fn load(path: &std::path::Path) -> Result<Profile, ProfileError> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| ProfileError::Io(path.display().to_string(), e))?;
+        Profile::parse(&text)
+    }
+
+    fn validate(&self) -> Result<(), ProfileError> {
+        let bad = |m: String| Err(ProfileError::Invalid(m));
+        let c = &self.cnc;
+        for (name, v, n) in [
+            ("cnc_type", &c.cnc_type, 2),
+            ("series", &c.series, 4),
+            ("version", &c.version, 4),
+        ] {
+            if !v.is_ascii() || v.len() > n {
+                return bad(format!("cnc.{name} must be at most {n} ASCII characters"));
+            }
+        }
+        if self.paths.is_empty() {
+            return bad("at least one [[path]] is required".into());
+        }
+        if self.paths.len() > 15 {
+            return bad("at most 15 paths".into());
+        }
+        if c.cnc_id.len() > 4 {
+            return bad("cnc.cnc_id has at most 4 words".into());
+        }
+        for (i, p) in self.paths.iter().enumerate() {
+            if p.axes.len() > c.max_axes as usize || p.axes.len() > crate::types::MAX_AXIS {
+                return bad(format!("path {} has more axes than cnc.max_axes", i + 1));
+            }
+            if p.spindles.len() > c.max_spindles as usize
+                || p.spindles.len() > crate::types::MAX_SPINDLE
+            {
+                return bad(format!(
+                    "path {} has more spindles than cnc.max_spindles",
+                    i + 1
+                ));
+            }
+            for a in &p.axes {
+                if a.name.is_empty()
+                    || a.name.len() > 1
+                    || a.suffix.len() > 1
+                    || !a.name.is_ascii()
+                    || !a.suffix.is_ascii()
+                {
+                    return bad(format!(
+                        "axis name {:?}{:?}: one ASCII letter and an optional one-character suffix",
+                        a.name, a.suffix
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Default for Profile {
+    fn default() -> Self {
+        Profile::parse(DEFAULT_PROFILE).expect("built-in profile is valid")
+    }
+}
