@@ -33,7 +33,11 @@ pub enum Error {
     Protocol { detail: (i16, i16), msg: String },
     /// The CNC answered with a non-zero error code in a subpacket.
     #[error("CNC error {code} (detail {detail1}/{detail2})")]
-    Cnc { code: i16, detail1: u16, detail2: u16 },
+    Cnc {
+        code: i16,
+        detail1: u16,
+        detail2: u16,
+    },
     /// A check made before any traffic (handle, pointer, length, number ...).
     #[error("{msg} (EW {code})")]
     Local { code: c_short, msg: &'static str },
