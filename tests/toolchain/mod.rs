@@ -1,0 +1,146 @@
+//! Helpers shared by tests/header.rs, tests/abi.rs and tests/artifacts.rs: the
+//! C toolchain (cc, c++, nm, readelf), scratch directories, and reading
+//! include/fwlib32.h. A missing tool fails the test with a clear message;
+//! nothing is skipped.
+
+#![allow(dead_code)]
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+pub fn manifest_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The committed header, include/fwlib32.h.
+pub fn header_path() -> PathBuf {
+    manifest_dir().join("include").join("fwlib32.h")
+}
+
+pub fn header_text() -> String {
+    let p = header_path();
+    std::fs::read_to_string(&p).unwrap_or_else(|e| {
+        panic!(
+            "cannot read {}: {e}; run `FWLIB32_UPDATE_HEADER=1 cargo build` to generate it",
+            p.display()
+        )
+    })
+}
+
+/// The C compiler: `$CC`, else `cc`.
+pub fn cc() -> String {
+    std::env::var("CC").unwrap_or_else(|_| "cc".to_owned())
+}
+
+/// The C++ compiler: `$CXX`, else `c++`.
+pub fn cxx() -> String {
+    std::env::var("CXX").unwrap_or_else(|_| "c++".to_owned())
+}
+
+/// Runs a command to completion; panics with its output unless it succeeds.
+/// A tool that cannot be started fails with a message naming it.
+pub fn run(cmd: &mut Command) -> Output {
+    let out = output(cmd);
+    if !out.status.success() {
+        panic!(
+            "`{}` failed ({}):\n--- stdout ---\n{}\n--- stderr ---\n{}",
+            describe(cmd),
+            out.status,
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    out
+}
+
+/// Runs a command to completion, whatever its exit status. A tool that cannot
+/// be started fails with a message naming it.
+pub fn output(cmd: &mut Command) -> Output {
+    cmd.output().unwrap_or_else(|e| {
+        panic!(
+            "cannot run `{}`: {e}.\nThese tests need a C toolchain on PATH: cc and c++ \
+             (or $CC / $CXX), and binutils (nm, readelf). Install them, e.g. \
+             `apt-get install build-essential binutils`.",
+            cmd.get_program().to_string_lossy()
+        )
+    })
+}
+
+fn describe(cmd: &Command) -> String {
+    let mut s = cmd.get_program().to_string_lossy().into_owned();
+    for a in cmd.get_args() {
+        s.push(' ');
+        s.push_str(&a.to_string_lossy());
+    }
+    s
+}
+
+/// A fresh, empty scratch directory for one test.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("fwlib32-c-tests")
+        .join(format!("{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("create {}: {e}", dir.display()));
+    dir
+}
+
+/// `(kind, name)` of every `typedef struct X {` / `typedef union X {` in a header.
+pub fn header_typedefs(header: &str) -> Vec<(String, String)> {
+    header
+        .lines()
+        .filter_map(|l| {
+            let mut w = l.split_whitespace();
+            match (w.next(), w.next(), w.next(), w.next()) {
+                (Some("typedef"), Some(kind @ ("struct" | "union")), Some(name), Some("{")) => {
+                    Some((kind.to_owned(), name.to_owned()))
+                }
+                _ => None,
+            }
+        })
+        .collect()
+}
+
+/// Names of the functions a header declares (`short cnc_x(...);` prototypes,
+/// possibly spread over several lines).
+pub fn header_functions(header: &str) -> BTreeSet<String> {
+    header
+        .lines()
+        .filter(|l| !l.starts_with(' ') && !l.starts_with('#') && !l.starts_with('/'))
+        .filter_map(|l| {
+            let before = l.split_once('(')?.0;
+            let name = before.split_whitespace().last()?.trim_start_matches('*');
+            (name.starts_with("cnc_") || name.starts_with("pmc_")).then(|| name.to_owned())
+        })
+        .collect()
+}
+
+/// Names of the `pub ... extern "C" fn` items of src/ffi/*.rs.
+pub fn ffi_functions() -> BTreeSet<String> {
+    let dir = manifest_dir().join("src").join("ffi");
+    let mut names = BTreeSet::new();
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("read {}: {e}", dir.display()))
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .collect();
+    files.sort();
+    for f in files {
+        let text = std::fs::read_to_string(&f).unwrap();
+        for line in text.lines() {
+            let t = line.trim_start();
+            if !t.starts_with("pub ") {
+                continue;
+            }
+            if let Some((_, rest)) = t.split_once("extern \"C\" fn ") {
+                let name: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                names.insert(name);
+            }
+        }
+    }
+    names
+}
