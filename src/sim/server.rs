@@ -79,12 +79,17 @@ async fn connection(mut stream: TcpStream, shared: Arc<Shared>) {
                     .map_or(0, |b| u16::from_be_bytes([b[0], b[1]]));
                 let limit = shared.cnc.lock().max_sessions();
                 if number == 1 && _session.is_none() {
-                    let now = shared.sessions.fetch_add(1, Ordering::Relaxed);
-                    _session = Some(SessionGuard(&shared));
-                    if limit != 0 && now >= limit {
-                        Some(Frame::new(version, ftype::OPEN_REJECT, Vec::new()))
-                    } else {
+                    let admitted = shared
+                        .sessions
+                        .fetch_update(Ordering::AcqRel, Ordering::Acquire, |n| {
+                            (limit == 0 || n < limit).then_some(n + 1)
+                        })
+                        .is_ok();
+                    if admitted {
+                        _session = Some(SessionGuard(&shared));
                         None
+                    } else {
+                        Some(Frame::new(version, ftype::OPEN_REJECT, Vec::new()))
                     }
                 } else {
                     None
