@@ -9,7 +9,10 @@ use std::process::Command;
 /// target/<profile>/, where cargo leaves libfwlib32.so.
 fn lib_dir() -> PathBuf {
     let exe = std::env::current_exe().unwrap();
-    exe.parent().and_then(Path::parent).expect("target dir").to_path_buf()
+    exe.parent()
+        .and_then(Path::parent)
+        .expect("target dir")
+        .to_path_buf()
 }
 
 fn root() -> PathBuf {
@@ -30,7 +33,10 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn cc(args: &[&str]) {
-    let out = Command::new("cc").args(args).output().expect("cc (the system C compiler) must be installed");
+    let out = Command::new("cc")
+        .args(args)
+        .output()
+        .expect("cc (the system C compiler) must be installed");
     assert!(
         out.status.success(),
         "cc {:?} failed:\n{}",

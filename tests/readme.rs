@@ -24,7 +24,10 @@ fn exported() -> BTreeSet<String> {
 #[test]
 fn function_table_matches_the_exports() {
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let section = readme.split("## Functions").nth(1).expect("a Functions section");
+    let section = readme
+        .split("## Functions")
+        .nth(1)
+        .expect("a Functions section");
     let listed: BTreeSet<String> = section
         .lines()
         .filter_map(|l| l.strip_prefix("| "))
@@ -33,14 +36,20 @@ fn function_table_matches_the_exports() {
         .collect();
     let exported = exported();
     assert!(exported.len() >= 13);
-    assert_eq!(listed, exported, "README function table vs exported functions");
+    assert_eq!(
+        listed, exported,
+        "README function table vs exported functions"
+    );
 }
 
 #[test]
 fn ci_runs_the_readme_test_command() {
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
     let ci = std::fs::read_to_string(root().join(".ci/run")).unwrap();
-    let after = readme.split("Run all tests:").nth(1).expect("README names its test command");
+    let after = readme
+        .split("Run all tests:")
+        .nth(1)
+        .expect("README names its test command");
     let cmd = after
         .lines()
         .skip_while(|l| !l.starts_with("```"))
