@@ -73,3 +73,25 @@ pub(crate) unsafe fn cstr<'a>(p: *const c_char) -> Result<&'a str> {
         .to_str()
         .map_err(|_| Error::local(crate::ew::EW_DATA, "string argument is not UTF-8"))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ew::{EW_HANDLE, EW_OK, EW_UNEXP};
+
+    fn run(f: impl Fn() -> Result<()>) -> c_short {
+        ffi_boundary!("test", { f() })
+    }
+
+    #[test]
+    fn a_panic_becomes_ew_unexp() {
+        assert_eq!(run(|| panic!("bug")), EW_UNEXP);
+        assert_eq!(run(|| panic!("{}", String::from("bug"))), EW_UNEXP);
+    }
+
+    #[test]
+    fn results_become_codes() {
+        assert_eq!(run(|| Ok(())), EW_OK);
+        assert_eq!(run(|| Err(Error::handle())), EW_HANDLE);
+    }
+}

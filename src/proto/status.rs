@@ -96,6 +96,12 @@ impl<T> StatInfo<T> {
     }
 }
 
+impl<T> Default for StatInfo<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 /// Decoded statinfo: (hdck, tmmode, status words).
 pub type StatReply<T> = (i16, i16, T);
 
