@@ -1,0 +1,187 @@
+//! The shared library cargo builds (`libfwlib32.so`): its soname, its exported
+//! symbols, and a C program linked against it.
+
+mod toolchain;
+
+use std::collections::BTreeSet;
+use std::path::PathBuf;
+use std::process::Command;
+use toolchain::{cc, ffi_functions, header_functions, header_path, header_text, run, scratch};
+
+/// The library cargo built for this test run, found from this test's own path
+/// (`target/<profile>/deps/artifacts-<hash>`).
+///
+/// `cargo test` compiles the library with all its crate types, cdylib
+/// included, into `deps/`, but copies it up to `target/<profile>/` only on
+/// `cargo build`: the copy there may be stale, so `deps/libfwlib32.so` comes
+/// first. Without either, the library is built here.
+fn cdylib() -> PathBuf {
+    let exe = std::env::current_exe().expect("current_exe");
+    let deps = exe.parent().expect("test executable directory");
+    let profile_dir = if deps.file_name().is_some_and(|n| n == "deps") {
+        deps.parent().unwrap()
+    } else {
+        deps
+    };
+    let fresh = deps.join("libfwlib32.so");
+    if fresh.exists() {
+        return fresh;
+    }
+    let lib = profile_dir.join("libfwlib32.so");
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
+    let mut cmd = Command::new(cargo);
+    cmd.args(["build", "--lib", "--manifest-path"])
+        .arg(toolchain::manifest_dir().join("Cargo.toml"));
+    if profile_dir.file_name().is_some_and(|n| n == "release") {
+        cmd.arg("--release");
+    }
+    run(&mut cmd);
+    assert!(
+        lib.exists(),
+        "neither {} nor {} found after `cargo build --lib`",
+        fresh.display(),
+        lib.display()
+    );
+    lib
+}
+
+fn expected_soname() -> String {
+    format!("libfwlib32.so.{}", env!("CARGO_PKG_VERSION_MAJOR"))
+}
+
+#[test]
+fn soname_is_libfwlib32_so_major() {
+    let lib = cdylib();
+    let out = run(Command::new("readelf").arg("-d").arg(&lib));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let sonames: Vec<&str> = text
+        .lines()
+        .filter(|l| l.contains("(SONAME)"))
+        .filter_map(|l| l.split_once('[')?.1.split_once(']').map(|x| x.0))
+        .collect();
+    assert_eq!(
+        sonames,
+        [expected_soname()],
+        "SONAME of {} (readelf -d):\n{text}",
+        lib.display()
+    );
+}
+
+/// `(type, name)` of the defined dynamic symbols of the library.
+fn exported(lib: &std::path::Path) -> Vec<(String, String)> {
+    let out = run(Command::new("nm").args(["-D", "--defined-only"]).arg(lib));
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter_map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            let (ty, name) = match w.as_slice() {
+                [_, ty, name] | [ty, name] => (*ty, *name),
+                _ => return None,
+            };
+            let name = name.split('@').next().unwrap();
+            Some((ty.to_owned(), name.to_owned()))
+        })
+        .collect()
+}
+
+#[test]
+fn exports_are_exactly_the_ffi_functions() {
+    let lib = cdylib();
+    let symbols = exported(&lib);
+    let strays: Vec<_> = symbols
+        .iter()
+        .filter(|(ty, name)| ty != "T" || !(name.starts_with("cnc_") || name.starts_with("pmc_")))
+        .collect();
+    assert!(
+        strays.is_empty(),
+        "{} exports symbols other than cnc_*/pmc_* functions: {strays:?}",
+        lib.display()
+    );
+
+    let exported: BTreeSet<String> = symbols.into_iter().map(|s| s.1).collect();
+    let ffi = ffi_functions();
+    assert!(
+        !ffi.is_empty(),
+        "no `pub extern \"C\" fn` found in src/ffi/*.rs"
+    );
+    let unexported: Vec<_> = ffi.difference(&exported).collect();
+    assert!(
+        unexported.is_empty(),
+        "extern \"C\" functions of src/ffi/ not exported by {}: {unexported:?} (missing #[unsafe(no_mangle)]?)",
+        lib.display()
+    );
+    let unknown: Vec<_> = exported.difference(&ffi).collect();
+    assert!(
+        unknown.is_empty(),
+        "exported but not a `pub extern \"C\" fn` of src/ffi/*.rs: {unknown:?}"
+    );
+
+    let declared = header_functions(&header_text());
+    assert_eq!(
+        declared,
+        exported,
+        "functions declared by {} vs exported by {}",
+        header_path().display(),
+        lib.display()
+    );
+}
+
+/// Linked by soname, as a program built against FANUC's library is; only
+/// calls that need no CNC.
+const SMOKE: &str = r#"
+#include <stdio.h>
+#include <string.h>
+#include "fwlib32.h"
+
+#define CHECK(call, want) do { short r_ = (call); if (r_ != (want)) { \
+    printf("%s returned %d, expected %d\n", #call, r_, (want)); return 1; } } while (0)
+
+int main(void)
+{
+    ODBST st;
+    ODBERR err;
+    unsigned short h = 0;
+    unsigned long id[4];
+    memset(&st, 0x55, sizeof st);
+    CHECK(cnc_startupprocess(7, NULL), EW_NUMBER);
+    CHECK(cnc_startupprocess(0, NULL), EW_OK);
+    CHECK(cnc_allclibhndl3("127.0.0.1", 8193, 1, NULL), EW_DATA);
+    CHECK(cnc_allclibhndl3(NULL, 8193, 1, &h), EW_DATA);
+    CHECK(cnc_statinfo(0x7777, &st), EW_HANDLE);
+    CHECK(cnc_rdcncid(0x7777, id), EW_HANDLE);
+    CHECK(cnc_getdtailerr(0x7777, &err), EW_HANDLE);
+    CHECK(cnc_freelibhndl(0x7777), EW_HANDLE);
+    CHECK(cnc_exitprocess(), EW_OK);
+    if (st.hdck != 0x5555 || h != 0) {
+        printf("an output was written by a failing call\n");
+        return 1;
+    }
+    printf("ok\n");
+    return 0;
+}
+"#;
+
+#[test]
+fn c_program_links_and_runs_against_the_library() {
+    let lib = cdylib();
+    let dir = scratch("artifacts-link");
+    // What the dynamic linker looks for: the soname.
+    let soname = dir.join(expected_soname());
+    std::os::unix::fs::symlink(&lib, &soname).unwrap();
+    std::os::unix::fs::symlink(&lib, dir.join("libfwlib32.so")).unwrap();
+    let src = dir.join("smoke.c");
+    let exe = dir.join("smoke");
+    std::fs::write(&src, SMOKE).unwrap();
+    run(Command::new(cc())
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-o"])
+        .arg(&exe)
+        .arg("-I")
+        .arg(header_path().parent().unwrap())
+        .arg(&src)
+        .arg("-L")
+        .arg(&dir)
+        .arg("-lfwlib32")
+        .arg(format!("-Wl,-rpath,{}", dir.display())));
+    let out = run(&mut Command::new(&exe));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "ok");
+}
