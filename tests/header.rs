@@ -183,10 +183,12 @@ fn ew_codes_match_src_ew() {
     let ew = std::fs::read_to_string(toolchain::manifest_dir().join("src/ew.rs")).unwrap();
     let mut n = 0;
     for line in ew.lines() {
-        let Some(rest) = line.trim().strip_prefix("pub const ") else {
+        let Some(rest) = line.trim().strip_prefix("pub const EW_") else {
             continue;
         };
         let (name, rest) = rest.split_once(':').unwrap();
+        let name = format!("EW_{name}");
+        let name = name.as_str();
         let value = rest
             .split_once('=')
             .unwrap()
