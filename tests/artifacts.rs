@@ -4,46 +4,10 @@
 mod toolchain;
 
 use std::collections::BTreeSet;
-use std::path::PathBuf;
 use std::process::Command;
-use toolchain::{cc, ffi_functions, header_functions, header_path, header_text, run, scratch};
-
-/// The library cargo built for this test run, found from this test's own path
-/// (`target/<profile>/deps/artifacts-<hash>`).
-///
-/// `cargo test` compiles the library with all its crate types, cdylib
-/// included, into `deps/`, but copies it up to `target/<profile>/` only on
-/// `cargo build`: the copy there may be stale, so `deps/libfwlib32.so` comes
-/// first. Without either, the library is built here.
-fn cdylib() -> PathBuf {
-    let exe = std::env::current_exe().expect("current_exe");
-    let deps = exe.parent().expect("test executable directory");
-    let profile_dir = if deps.file_name().is_some_and(|n| n == "deps") {
-        deps.parent().unwrap()
-    } else {
-        deps
-    };
-    let fresh = deps.join("libfwlib32.so");
-    if fresh.exists() {
-        return fresh;
-    }
-    let lib = profile_dir.join("libfwlib32.so");
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_owned());
-    let mut cmd = Command::new(cargo);
-    cmd.args(["build", "--lib", "--manifest-path"])
-        .arg(toolchain::manifest_dir().join("Cargo.toml"));
-    if profile_dir.file_name().is_some_and(|n| n == "release") {
-        cmd.arg("--release");
-    }
-    run(&mut cmd);
-    assert!(
-        lib.exists(),
-        "neither {} nor {} found after `cargo build --lib`",
-        fresh.display(),
-        lib.display()
-    );
-    lib
-}
+use toolchain::{
+    cc, cdylib, ffi_functions, header_functions, header_path, header_text, run, scratch,
+};
 
 fn expected_soname() -> String {
     format!("libfwlib32.so.{}", env!("CARGO_PKG_VERSION_MAJOR"))

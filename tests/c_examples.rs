@@ -6,14 +6,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// target/<profile>/, where cargo leaves libfwlib32.so.
-fn lib_dir() -> PathBuf {
-    let exe = std::env::current_exe().unwrap();
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("target dir")
-        .to_path_buf()
-}
+mod toolchain;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -25,8 +18,7 @@ fn scratch(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("fwlib32-test-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
-    let so = lib_dir().join("libfwlib32.so");
-    assert!(so.exists(), "{} not built", so.display());
+    let so = toolchain::cdylib();
     std::fs::copy(&so, d.join("libfwlib32.so.1")).unwrap();
     std::os::unix::fs::symlink("libfwlib32.so.1", d.join("libfwlib32.so")).unwrap();
     d
