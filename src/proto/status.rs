@@ -50,6 +50,21 @@ wire_struct! {
     }
 }
 
+impl From<Status2> for Status {
+    /// The seven words both status forms share.
+    fn from(s: Status2) -> Status {
+        Status {
+            aut: s.aut,
+            run: s.run,
+            motion: s.motion,
+            mstb: s.mstb,
+            emergency: s.emergency,
+            alarm: s.alarm,
+            edit: s.edit,
+        }
+    }
+}
+
 wire_struct! {
     /// Payload of 0x00e1 (handle retrace) and 0x0098 (T/M mode): one word used.
     pub struct Word {

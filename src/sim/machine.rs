@@ -103,16 +103,7 @@ impl CncService for Machine {
     }
 
     fn statinfo(&mut self, path: u16) -> Reply<Status> {
-        let s = self.path(path)?.status;
-        Ok(Status {
-            aut: s.aut,
-            run: s.run,
-            motion: s.motion,
-            mstb: s.mstb,
-            emergency: s.emergency,
-            alarm: s.alarm,
-            edit: s.edit,
-        })
+        self.statinfo2(path).map(Status::from)
     }
 
     fn statinfo2(&mut self, path: u16) -> Reply<Status2> {
