@@ -148,7 +148,10 @@ impl Pair {
         let deadline = Deadline::after_secs(timeout);
         let addrs = resolve(host, port)?;
         let mut c1 = Conn::connect(&addrs, 1, deadline)?;
-        open(&mut c1, 1, id, deadline)?;
+        // FANUC's library checks the conn-1 answer's size before connecting
+        // conn 2 (SPEC.md §3.2): a bad one fails with EW_PROTOCOL right here.
+        let r1 = open(&mut c1, 1, id, deadline)?;
+        OpenBody::decode(r1.version, &r1.body).map_err(Error::from)?;
         let mut c2 = Conn::connect(&addrs, 2, deadline)?;
         let r = open(&mut c2, 2, id, deadline)?;
         let open_body = OpenBody::decode(r.version, &r.body).map_err(Error::from)?;
