@@ -779,6 +779,11 @@ fn run_case(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<String> {
                 o.ret
             ));
         }
+        problems.extend(
+            o.problems
+                .iter()
+                .map(|p| format!("{id}: cnc_startupprocess(1, file): {p}")),
+        );
     }
 
     let mut pair_alive = false;
@@ -990,6 +995,8 @@ fn golden_vectors_replay() {
             }
         }
     }
+    // Logging off again (the cases' log files are gone).
+    unsafe { cnc_startupprocess(0, std::ptr::null()) };
     let _ = std::fs::remove_dir_all(logdir());
 
     let n_skipped: usize = skipped.values().map(Vec::len).sum();
@@ -1044,7 +1051,8 @@ fn assert_untouched(o: &Outcome) {
 /// (allclibhndl3/connection_refused) Nothing listening: EW_SOCKET, `*h` untouched.
 #[test]
 fn connection_refused() {
-    let _g = shared();
+    // Exclusive: no replay server of another test may pick up the freed port.
+    let _g = exclusive();
     let port = {
         let l = std::net::TcpListener::bind("127.0.0.1:0").expect("bind");
         l.local_addr().unwrap().port()
