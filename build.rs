@@ -70,8 +70,16 @@ fn generate_header(root: &Path) -> String {
         "#ifdef __cplusplus\n}}  /* namespace Fwlib32 */\n\nusing namespace Fwlib32;\n#endif  /* __cplusplus */\n\n#endif  /* {GUARD} */"
     ));
 
-    // Every C type of src/types.rs goes into the header, used by a function yet or not.
-    let types = fs::read_to_string(root.join("src/types.rs")).expect("read src/types.rs");
+    // Every C type of src/types/ goes into the header, used by a function yet or not.
+    let mut types = String::new();
+    let mut files: Vec<_> = fs::read_dir(root.join("src/types"))
+        .expect("read src/types")
+        .map(|e| e.expect("read src/types").path())
+        .collect();
+    files.sort();
+    for f in files {
+        types.push_str(&fs::read_to_string(&f).expect("read src/types/*.rs"));
+    }
     for name in type_names(&types) {
         if !config.export.include.contains(&name) {
             config.export.include.push(name);
@@ -81,7 +89,7 @@ fn generate_header(root: &Path) -> String {
     let mut out = Vec::new();
     cbindgen::Builder::new()
         .with_config(config)
-        .with_src(root.join("src/types.rs"))
+        .with_src(root.join("src/types/mod.rs"))
         .with_src(root.join("src/ffi/mod.rs"))
         .generate()
         .unwrap_or_else(|e| panic!("cbindgen failed to generate fwlib32.h: {e}"))
@@ -147,7 +155,7 @@ fn ew_defines(src: &str) -> String {
     s
 }
 
-/// Names of the `pub struct`, `pub union` and `pub type` items of src/types.rs.
+/// Names of the `pub struct`, `pub union` and `pub type` items of src/types/.
 fn type_names(src: &str) -> Vec<String> {
     src.lines()
         .filter_map(|l| {

@@ -2,7 +2,7 @@
  * fwlib32.h: C interface of fwlib32-rs, a drop-in replacement for FANUC's
  * FOCAS2 Ethernet library libfwlib32.so.
  *
- * GENERATED FILE: do not edit. build.rs writes it with cbindgen from src/types.rs,
+ * GENERATED FILE: do not edit. build.rs writes it with cbindgen from src/types/,
  * src/ffi/ and src/ew.rs; refresh the committed copy with
  *     FWLIB32_UPDATE_HEADER=1 cargo build
  * (tests/header.rs fails while the two differ).

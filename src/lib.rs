@@ -16,5 +16,9 @@ pub mod proto;
 pub mod sim;
 pub mod types;
 
-pub use ffi::handle::*;
-pub use ffi::status::*;
+// The exported C functions, callable from Rust too. Areas fill in one at a time.
+#[allow(unused_imports)]
+pub use ffi::{
+    alarm::*, handle::*, macros::*, offset::*, param::*, pmc::*, position::*, program::*,
+    status::*, tool::*, upload::*,
+};

@@ -1,7 +1,7 @@
 //! Structure layouts: every struct/union typedef of include/fwlib32.h, compiled
 //! by the C compiler, has the `l32` sizeof/offsetof of FANUC's header recorded
 //! in `focas-protocol/layouts.json` (what FANUC's x86-64 library really reads
-//! and writes); the Rust types of src/types.rs have the same layouts.
+//! and writes); the Rust types of src/types/ have the same layouts.
 //!
 //! layouts.json is read from `$FOCAS_PROTOCOL_DIR`, else from
 //! `$CARGO_MANIFEST_DIR/../shared/focas-protocol`.
@@ -35,9 +35,12 @@ fn layouts() -> Value {
     serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
-/// The `pub struct` / `pub union` names of src/types.rs.
+/// The `pub struct` / `pub union` names of src/types/.
 fn rust_type_names() -> BTreeSet<String> {
-    let text = std::fs::read_to_string(manifest_dir().join("src/types.rs")).unwrap();
+    let mut text = String::new();
+    for e in std::fs::read_dir(manifest_dir().join("src/types")).unwrap() {
+        text.push_str(&std::fs::read_to_string(e.unwrap().path()).unwrap());
+    }
     text.lines()
         .filter_map(|l| {
             let l = l.trim();
@@ -238,7 +241,7 @@ fn header_structs_match_l32_layouts() {
         mismatches.join("\n")
     );
 
-    // At least today's structures, and every structure of src/types.rs that
+    // At least today's structures, and every structure of src/types/ that
     // FANUC's header has (the others must be helper types, checked above).
     let mut must: BTreeSet<String> = ["ODBSYS", "ODBST", "ODBST2", "ODBERR"]
         .map(String::from)
@@ -280,7 +283,7 @@ macro_rules! rust_layouts {
     };
 }
 
-// Every structure of src/types.rs must be listed here (checked below).
+// Every structure of src/types/ must be listed here (checked below).
 rust_layouts! {
     ODBSYS { addinfo, max_axis, cnc_type, mt_type, series, version, axes }
     ODBST { hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit }
@@ -289,6 +292,22 @@ rust_layouts! {
         warning, o3dchk, ext_opt, restart,
     }
     ODBERR { err_no, err_dtno }
+
+    // --- position ---
+
+    // --- program ---
+
+    // --- alarm ---
+
+    // --- param ---
+
+    // --- macros ---
+
+    // --- pmc ---
+
+    // --- offset ---
+
+    // --- tool ---
 }
 
 #[test]

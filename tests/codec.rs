@@ -95,6 +95,23 @@ const KNOWN: &[&str] = &[
     "getpath",
     "setpath",
     "getdtailerr",
+    // --- position ---
+
+    // --- program ---
+
+    // --- alarm ---
+
+    // --- param ---
+
+    // --- macros ---
+
+    // --- pmc ---
+
+    // --- offset ---
+
+    // --- tool ---
+
+    // --- upload ---
 ];
 
 fn num(s: &str) -> i64 {

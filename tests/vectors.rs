@@ -255,70 +255,80 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("getpath", "cnc_getpath", Some(w_getpath)),
     ("setpath", "cnc_setpath", Some(w_setpath)),
     ("getdtailerr", "cnc_getdtailerr", Some(w_getdtailerr)),
-    // Not implemented yet.
-    ("diagnoss", "cnc_diagnoss", None),
-    ("rdalmhistry", "cnc_rdalmhistry", None),
-    ("rdalmhistry2", "cnc_rdalmhistry2", None),
-    ("rdparam", "cnc_rdparam", None),
-    ("wrparam", "cnc_wrparam", None),
-    ("rdmacro", "cnc_rdmacro", None),
-    ("wrmacro", "cnc_wrmacro", None),
-    ("rdmacror", "cnc_rdmacror", None),
-    ("rdmacror2", "cnc_rdmacror2", None),
-    ("rdalmmsg", "cnc_rdalmmsg", None),
-    ("rdalmmsg2", "cnc_rdalmmsg2", None),
-    ("alarm", "cnc_alarm", None),
-    ("alarm2", "cnc_alarm2", None),
-    ("rdalminfo", "cnc_rdalminfo", None),
-    ("rdtimer", "cnc_rdtimer", None),
-    ("gettimer", "cnc_gettimer", None),
-    ("settimer", "cnc_settimer", None),
+    // Not implemented yet (`None`), by area.
+
+    // --- position ---
     ("rdaxisname", "cnc_rdaxisname", None),
     ("rdspdlname", "cnc_rdspdlname", None),
     ("rddynamic2", "cnc_rddynamic2", None),
     ("rddynamic", "cnc_rddynamic", None),
-    ("modal", "cnc_modal", None),
-    ("rdspmeter", "cnc_rdspmeter", None),
-    ("rdsvmeter", "cnc_rdsvmeter", None),
+    ("actf", "cnc_actf", None),
     ("acts", "cnc_acts", None),
     ("acts2", "cnc_acts2", None),
-    ("actf", "cnc_actf", None),
-    ("rdexecprog", "cnc_rdexecprog", None),
-    ("exeprgname", "cnc_exeprgname", None),
-    ("exeprgname2", "cnc_exeprgname2", None),
-    ("rdprgnum", "cnc_rdprgnum", None),
-    ("rdseqnum", "cnc_rdseqnum", None),
-    ("rdblkcount", "cnc_rdblkcount", None),
-    ("rdactpt", "cnc_rdactpt", None),
-    ("rdparainfo", "cnc_rdparainfo", None),
-    ("rddiaginfo", "cnc_rddiaginfo", None),
-    ("rdopmsg", "cnc_rdopmsg", None),
-    ("toolnum", "cnc_toolnum", None),
-    ("rdntool", "cnc_rdntool", None),
-    ("getfigure", "cnc_getfigure", None),
-    ("pmc_rdpmcrng", "pmc_rdpmcrng", None),
-    ("pmc_wrpmcrng", "pmc_wrpmcrng", None),
-    ("pmc_getdtailerr", "pmc_getdtailerr", None),
+    ("rdspmeter", "cnc_rdspmeter", None),
+    ("rdsvmeter", "cnc_rdsvmeter", None),
+    ("rdaxisdata", "cnc_rdaxisdata", None),
+    ("rdposition", "cnc_rdposition", None),
     ("absolute", "cnc_absolute", None),
     ("absolute2", "cnc_absolute2", None),
     ("machine", "cnc_machine", None),
     ("relative", "cnc_relative", None),
     ("relative2", "cnc_relative2", None),
     ("distance", "cnc_distance", None),
-    ("rdposition", "cnc_rdposition", None),
+    ("getfigure", "cnc_getfigure", None),
+    // --- program ---
+    ("rdprgnum", "cnc_rdprgnum", None),
+    ("rdseqnum", "cnc_rdseqnum", None),
+    ("rdblkcount", "cnc_rdblkcount", None),
+    ("rdactpt", "cnc_rdactpt", None),
+    ("exeprgname", "cnc_exeprgname", None),
+    ("exeprgname2", "cnc_exeprgname2", None),
+    ("rdexecprog", "cnc_rdexecprog", None),
+    ("modal", "cnc_modal", None),
+    ("rdtimer", "cnc_rdtimer", None),
+    ("gettimer", "cnc_gettimer", None),
+    ("settimer", "cnc_settimer", None),
+    ("rdprogdir", "cnc_rdprogdir", None),
+    ("rdprogdir3", "cnc_rdprogdir3", None),
+    // --- alarm ---
+    ("rdalmmsg", "cnc_rdalmmsg", None),
+    ("rdalmmsg2", "cnc_rdalmmsg2", None),
+    ("alarm", "cnc_alarm", None),
+    ("alarm2", "cnc_alarm2", None),
+    ("rdalminfo", "cnc_rdalminfo", None),
+    ("rdopmsg", "cnc_rdopmsg", None),
+    ("rdalmhistry", "cnc_rdalmhistry", None),
+    ("rdalmhistry2", "cnc_rdalmhistry2", None),
+    // --- param ---
+    ("rdparam", "cnc_rdparam", None),
+    ("wrparam", "cnc_wrparam", None),
+    ("rdparam_ext", "cnc_rdparam_ext", None),
+    ("rdparam_ext32", "cnc_rdparam_ext", None),
+    ("rdparainfo", "cnc_rdparainfo", None),
+    ("diagnoss", "cnc_diagnoss", None),
+    ("rddiaginfo", "cnc_rddiaginfo", None),
+    // --- macros ---
+    ("rdmacro", "cnc_rdmacro", None),
+    ("wrmacro", "cnc_wrmacro", None),
+    ("rdmacror", "cnc_rdmacror", None),
+    ("rdmacror2", "cnc_rdmacror2", None),
+    // --- pmc ---
+    ("pmc_rdpmcrng", "pmc_rdpmcrng", None),
+    ("pmc_wrpmcrng", "pmc_wrpmcrng", None),
+    ("pmc_getdtailerr", "pmc_getdtailerr", None),
+    // --- offset ---
+    ("rdtofs", "cnc_rdtofs", None),
+    ("rdzofs", "cnc_rdzofs", None),
+    // --- tool ---
+    ("toolnum", "cnc_toolnum", None),
+    ("rdntool", "cnc_rdntool", None),
+    // --- upload ---
     ("upstart", "cnc_upstart", None),
     ("upstart3", "cnc_upstart3", None),
     ("upload3", "cnc_upload3", None),
     ("upload", "cnc_upload", None),
     ("upend3", "cnc_upend3", None),
     ("upend", "cnc_upend", None),
-    ("rdprogdir", "cnc_rdprogdir", None),
-    ("rdprogdir3", "cnc_rdprogdir3", None),
-    ("rdtofs", "cnc_rdtofs", None),
-    ("rdzofs", "cnc_rdzofs", None),
-    ("rdparam_ext", "cnc_rdparam_ext", None),
-    ("rdparam_ext32", "cnc_rdparam_ext", None),
-    ("rdaxisdata", "cnc_rdaxisdata", None),
 ];
 
 fn word(w: &str) -> Option<&'static (&'static str, &'static str, Option<WordFn>)> {
@@ -1238,3 +1248,25 @@ fn dedicated_tests_named_in_the_table_exist() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// Word functions by area (keep each area's additions in its own section)
+// ---------------------------------------------------------------------------
+
+// --- position ---
+
+// --- program ---
+
+// --- alarm ---
+
+// --- param ---
+
+// --- macros ---
+
+// --- pmc ---
+
+// --- offset ---
+
+// --- tool ---
+
+// --- upload ---

@@ -1,8 +1,17 @@
 //! The C ABI: one module per API area. Every exported body runs inside
 //! [`ffi_boundary!`], so a panic becomes `EW_UNEXP` instead of crossing into C.
 
+pub mod alarm;
 pub mod handle;
+pub mod macros;
+pub mod offset;
+pub mod param;
+pub mod pmc;
+pub mod position;
+pub mod program;
 pub mod status;
+pub mod tool;
+pub mod upload;
 
 use crate::client::log;
 use crate::error::{Error, Result};

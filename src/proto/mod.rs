@@ -1,12 +1,21 @@
 //! The FOCAS2 Ethernet codec, sans-IO: bytes in, structures out. Shared by the
 //! client library and the simulator.
 
+pub mod alarm;
 pub mod call;
 pub mod frame;
+pub mod macros;
+pub mod offset;
 pub mod open;
 pub mod packet;
 pub mod param;
+pub mod pmc;
+pub mod position;
+pub mod program;
 pub mod status;
+pub mod tool;
+pub mod upload;
+pub mod value;
 pub mod wire;
 
 /// Command words of the subpackets (class 1 = CNC unless noted).

@@ -152,4 +152,20 @@ impl CncService for Machine {
         }
         Err(CncError::NUMBER)
     }
+
+    // --- position ---
+
+    // --- program ---
+
+    // --- alarm ---
+
+    // --- param ---
+
+    // --- macros ---
+
+    // --- pmc ---
+
+    // --- offset ---
+
+    // --- tool ---
 }

@@ -75,6 +75,21 @@ pub struct Path {
     pub axes: Vec<Axis>,
     #[serde(rename = "spindle")]
     pub spindles: Vec<Spindle>,
+    // --- position ---
+
+    // --- program ---
+
+    // --- alarm ---
+
+    // --- param ---
+
+    // --- macros ---
+
+    // --- pmc ---
+
+    // --- offset ---
+
+    // --- tool ---
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]

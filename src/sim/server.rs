@@ -113,6 +113,7 @@ async fn connection(mut stream: TcpStream, shared: Arc<Shared>) {
                 Ok(subs) => {
                     let resp = {
                         let mut cnc = shared.cnc.lock();
+                        cnc.advance(std::time::Instant::now());
                         subs.iter()
                             .map(|s| dispatch(cnc.as_mut(), s))
                             .collect::<Vec<_>>()

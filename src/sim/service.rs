@@ -43,6 +43,10 @@ pub trait CncService: Send {
     fn max_sessions(&self) -> usize {
         0
     }
+    /// Brings the machine's running state (program cycle, scheduled events)
+    /// up to `now`. Called once per data frame, before its subpackets are
+    /// answered, so one frame sees one consistent snapshot.
+    fn advance(&mut self, now: std::time::Instant) {}
     fn sysinfo(&mut self, path: u16) -> Reply<SysInfo> {
         unsupported()
     }
@@ -65,6 +69,22 @@ pub trait CncService: Send {
     fn param16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
         unsupported()
     }
+
+    // --- position ---
+
+    // --- program ---
+
+    // --- alarm ---
+
+    // --- param ---
+
+    // --- macros ---
+
+    // --- pmc ---
+
+    // --- offset ---
+
+    // --- tool ---
 }
 
 fn enc<T: Wire>(r: Reply<T>) -> Reply<Vec<u8>> {
@@ -87,6 +107,22 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, cmd::TMMODE) => enc(svc.tmmode(p)),
             (CLASS_CNC, cmd::RDCNCID) => enc(svc.cnc_id()),
             (CLASS_CNC, cmd::RDPARAM16) => enc(svc.param16(p, a[0], a[2] as i16)),
+
+            // --- position ---
+
+            // --- program ---
+
+            // --- alarm ---
+
+            // --- param ---
+
+            // --- macros ---
+
+            // --- pmc ---
+
+            // --- offset ---
+
+            // --- tool ---
             _ => Err(CncError::FUNC),
         }
     };

@@ -1,0 +1,1 @@
+//! Custom macro variables.

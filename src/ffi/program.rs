@@ -1,0 +1,1 @@
+//! Program execution: numbers, names, blocks, modal data, timers.

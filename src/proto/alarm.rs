@@ -1,0 +1,1 @@
+//! Alarms, alarm messages, operator messages and the alarm history.

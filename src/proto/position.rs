@@ -1,0 +1,1 @@
+//! Axes and spindles: names, positions, speeds, loads, dynamic data, figures.

@@ -1,0 +1,1 @@
+//! Tool numbers, tool life and counters.

@@ -1,0 +1,1 @@
+//! Program upload over connection 1.

@@ -1,0 +1,4 @@
+//! Custom macro variables.
+
+#[allow(unused_imports)]
+use super::{LONG, ULONG};

@@ -1,0 +1,40 @@
+//! The C structures of `fwlib32.h` (default variant), with FANUC's names.
+//!
+//! Fields FANUC's header spells `long` are 32-bit here (`LONG`/`ULONG`):
+//! FANUC's x86-64 library reads and writes them as 4 bytes, and so do we
+//! (the `l32` layouts of layouts.json, checked by tests/abi.rs).
+
+#![allow(non_camel_case_types)]
+
+use std::os::raw::c_char;
+
+// One file per API area, as in src/ffi/ (cbindgen reads them all).
+mod alarm;
+mod macros;
+mod offset;
+mod param;
+mod pmc;
+mod position;
+mod program;
+mod status;
+mod tool;
+
+#[allow(unused_imports)]
+pub use {
+    alarm::*, macros::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
+};
+
+/// FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
+pub type LONG = i32;
+/// FANUC's ULONG: 32 bits on every platform.
+pub type ULONG = u32;
+
+/// Maximum number of axes (Linux Ethernet build).
+pub const MAX_AXIS: usize = 32;
+/// Maximum number of spindles.
+pub const MAX_SPINDLE: usize = 8;
+
+/// Copies wire characters into a C char array.
+pub(crate) fn chars<const N: usize>(b: [u8; N]) -> [c_char; N] {
+    b.map(|x| x as c_char)
+}

@@ -1,0 +1,4 @@
+//! Tool and work offsets.
+
+#[allow(unused_imports)]
+use super::{LONG, ULONG};

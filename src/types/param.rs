@@ -1,0 +1,4 @@
+//! Parameters and diagnostics.
+
+#[allow(unused_imports)]
+use super::{LONG, ULONG};

@@ -1,0 +1,4 @@
+//! PMC areas.
+
+#[allow(unused_imports)]
+use super::{LONG, ULONG};

@@ -1,0 +1,4 @@
+//! Tool numbers, tool life and counters.
+
+#[allow(unused_imports)]
+use super::{LONG, ULONG};
