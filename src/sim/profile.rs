@@ -12,6 +12,23 @@ pub struct Profile {
     pub cnc: Cnc,
     #[serde(default, rename = "path")]
     pub paths: Vec<Path>,
+    // --- position ---
+
+    // --- program ---
+
+    // --- alarm ---
+
+    // --- param ---
+
+    // --- macros ---
+
+    // --- pmc ---
+
+    // --- offset ---
+
+    // --- tool ---
+
+    // --- upload ---
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
