@@ -9,6 +9,10 @@ use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 
 pub struct Machine {
     pub profile: Profile,
+    /// When the simulator started: the running program's clock.
+    pub started: std::time::Instant,
+    /// Live state per path (what a running machine changes).
+    pub run: Vec<super::run::PathRun>,
 }
 
 fn fixed<const N: usize>(s: &str) -> [u8; N] {
@@ -22,7 +26,11 @@ fn fixed<const N: usize>(s: &str) -> [u8; N] {
 
 impl Machine {
     pub fn new(profile: Profile) -> Machine {
-        Machine { profile }
+        Machine {
+            run: Machine::initial_run(&profile),
+            profile,
+            started: std::time::Instant::now(),
+        }
     }
 
     fn path(&self, path: u16) -> Reply<&super::profile::Path> {
@@ -82,6 +90,10 @@ impl CncService for Machine {
 
     fn max_sessions(&self) -> usize {
         self.profile.cnc.max_sessions
+    }
+
+    fn advance(&mut self, now: std::time::Instant) {
+        self.advance_to(now);
     }
 
     fn sysinfo(&mut self, path: u16) -> Reply<SysInfo> {

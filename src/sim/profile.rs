@@ -12,6 +12,12 @@ pub struct Profile {
     pub cnc: Cnc,
     #[serde(default, rename = "path")]
     pub paths: Vec<Path>,
+    /// Programs stored in memory (src/sim/run.rs).
+    #[serde(default, rename = "program")]
+    pub programs: Vec<super::run::StoredProgram>,
+    /// Scheduled events (src/sim/run.rs).
+    #[serde(default, rename = "event")]
+    pub events: Vec<super::run::Event>,
     // --- position ---
 
     // --- program ---
@@ -92,6 +98,11 @@ pub struct Path {
     pub axes: Vec<Axis>,
     #[serde(rename = "spindle")]
     pub spindles: Vec<Spindle>,
+    /// The program this path runs (src/sim/run.rs).
+    pub cycle: super::run::Cycle,
+    /// Alarms active from the start.
+    #[serde(rename = "alarm")]
+    pub alarms: Vec<super::run::Alarm>,
     // --- position ---
 
     // --- program ---
