@@ -94,7 +94,16 @@ fn generate_header(root: &Path) -> String {
         .generate()
         .unwrap_or_else(|e| panic!("cbindgen failed to generate fwlib32.h: {e}"))
         .write(&mut out);
-    String::from_utf8(out).expect("cbindgen wrote UTF-8")
+    let text = String::from_utf8(out).expect("cbindgen wrote UTF-8");
+    // Negative constants in brackets, as FANUC writes them: `#define ALL_AXES (-1)`.
+    text.lines()
+        .map(|l| match l.strip_prefix("#define ").and_then(|r| r.split_once(" -")) {
+            Some((name, v)) if v.parse::<i64>().is_ok() => format!("#define {name} (-{v})"),
+            _ => l.to_owned(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        + "\n"
 }
 
 /// `pub const EW_NAME: c_short = VALUE; // comment` lines of src/ew.rs, as

@@ -93,6 +93,16 @@ namespace Fwlib32 {
 #define MAX_SPINDLE 8
 
 /*
+ The axis argument meaning "every axis".
+ */
+#define ALL_AXES (-1)
+
+/*
+ The spindle argument meaning "every spindle".
+ */
+#define ALL_SPINDLES (-1)
+
+/*
  cnc_getdtailerr: detail of the last error.
  */
 typedef struct ODBERR {

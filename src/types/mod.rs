@@ -33,6 +33,10 @@ pub type ULONG = u32;
 pub const MAX_AXIS: usize = 32;
 /// Maximum number of spindles.
 pub const MAX_SPINDLE: usize = 8;
+/// The axis argument meaning "every axis".
+pub const ALL_AXES: i16 = -1;
+/// The spindle argument meaning "every spindle".
+pub const ALL_SPINDLES: i16 = -1;
 
 /// Copies wire characters into a C char array.
 pub(crate) fn chars<const N: usize>(b: [u8; N]) -> [c_char; N] {
