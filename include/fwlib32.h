@@ -93,12 +93,117 @@ namespace Fwlib32 {
 #define MAX_SPINDLE 8
 
 /*
+ FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
+ */
+typedef int32_t LONG;
+
+/*
+ A real diagnosis value: `dgn_val · 10^-dec_val`.
+ */
+typedef struct REALDGN {
+    LONG dgn_val;
+    LONG dec_val;
+} REALDGN;
+
+/*
+ The value union of ODBDGN.
+ */
+typedef union ODBDGN_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALDGN rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALDGN rdatas[MAX_AXIS];
+} ODBDGN_u;
+
+/*
+ cnc_diagnoss: one diagnosis data item (`type` = axis: 0 none, n, -1 all).
+ */
+typedef struct ODBDGN {
+    short datano;
+    short type;
+    union ODBDGN_u u;
+} ODBDGN;
+
+/*
  cnc_getdtailerr: detail of the last error.
  */
 typedef struct ODBERR {
     short err_no;
     short err_dtno;
 } ODBERR;
+
+/*
+ One entry of ODBDIAGIF.
+ */
+typedef struct ODBDIAGIF_info {
+    short diag_no;
+    short diag_type;
+} ODBDIAGIF_info;
+
+/*
+ cnc_rddiaginfo: diagnosis numbers and attributes.
+ */
+typedef struct ODBDIAGIF {
+    unsigned short info_no;
+    short prev_no;
+    short next_no;
+    struct ODBDIAGIF_info info[10];
+} ODBDIAGIF;
+
+/*
+ One entry of ODBPARAIF.
+ */
+typedef struct ODBPARAIF_info {
+    short prm_no;
+    short prm_type;
+} ODBPARAIF_info;
+
+/*
+ cnc_rdparainfo: parameter numbers and attributes (10 entries declared;
+ `read_no` entries may be used with a larger buffer).
+ */
+typedef struct ODBPARAIF {
+    unsigned short info_no;
+    short prev_no;
+    short next_no;
+    struct ODBPARAIF_info info[10];
+} ODBPARAIF;
+
+/*
+ A real parameter value: `prm_val · 10^-dec_val`.
+ */
+typedef struct REALPRM {
+    LONG prm_val;
+    LONG dec_val;
+} REALPRM;
+
+/*
+ The value union of IODBPSD: which member is valid depends on the
+ parameter's type and on whether one axis or all axes were read.
+ */
+typedef union IODBPSD_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALPRM rdatas[MAX_AXIS];
+} IODBPSD_u;
+
+/*
+ cnc_rdparam / cnc_wrparam: one parameter (`type` = axis: 0 none, n, -1 all).
+ */
+typedef struct IODBPSD {
+    short datano;
+    short type;
+    union IODBPSD_u u;
+} IODBPSD;
 
 /*
  cnc_statinfo: CNC status information.
@@ -148,14 +253,47 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
- FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
- */
-typedef int32_t LONG;
-
-/*
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
+
+/*
+ One value of IODBPRM.
+ */
+typedef struct IODBPRM_data {
+    LONG prm_val;
+    LONG dec_val;
+} IODBPRM_data;
+
+/*
+ cnc_rdparam_ext / cnc_rddiag_ext: one parameter (or diagnosis) record.
+ */
+typedef struct IODBPRM {
+    LONG datano;
+    short type;
+    short axis;
+    short info;
+    short unit;
+    struct IODBPRM_data data[32];
+} IODBPRM;
+
+/*
+ cnc_rdparanum: smallest and largest parameter number, and how many exist.
+ */
+typedef struct ODBPARANUM {
+    unsigned short para_min;
+    unsigned short para_max;
+    unsigned short total_no;
+} ODBPARANUM;
+
+/*
+ cnc_rddiagnum: smallest and largest diagnosis number, and how many exist.
+ */
+typedef struct ODBDIAGNUM {
+    unsigned short diag_min;
+    unsigned short diag_max;
+    unsigned short total_no;
+} ODBDIAGNUM;
 
 #ifdef __cplusplus
 extern "C" {
@@ -183,6 +321,19 @@ short cnc_allclibhndl4(const char *ip,
                        long timeout,
                        unsigned long id,
                        unsigned short *FlibHndl);
+
+/*
+ Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
+ and bit 1, word 2, 2-word 4, real 8).
+
+ # Safety
+ `diag` must point to a writable ODBDGN.
+ */
+short cnc_diagnoss(unsigned short FlibHndl,
+                   short number,
+                   short axis,
+                   short length,
+                   struct ODBDGN *diag);
 
 /*
  Frees every handle, closes every connection and the log.
@@ -222,6 +373,59 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
  `cncid` must point to 16 writable bytes.
  */
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
+
+/*
+ The same as cnc_diagnoss (an alias some programs use).
+
+ # Safety
+ `diag` must point to a writable ODBDGN.
+ */
+short cnc_rddiag(unsigned short FlibHndl,
+                 short number,
+                 short axis,
+                 short length,
+                 struct ODBDGN *diag);
+
+/*
+ Reads the numbers and attributes of up to `read_no` diagnosis data
+ items from `s_number` on, as cnc_rdparainfo.
+
+ # Safety
+ `diagif` must point to a writable ODBDIAGIF with room for `read_no` entries.
+ */
+short cnc_rddiaginfo(unsigned short FlibHndl,
+                     short s_number,
+                     unsigned short read_no,
+                     struct ODBDIAGIF *diagif);
+
+/*
+ Reads the numbers and attributes of up to `read_no` parameters from
+ `s_number` on, with the previous and next existing numbers. The
+ attribute word: bits 0-1 data type (bit, byte, word, 2-word), bit 8
+ axis parameter.
+
+ # Safety
+ `paraif` must point to a writable ODBPARAIF with room for `read_no`
+ entries (the declared 10, or a larger allocation).
+ */
+short cnc_rdparainfo(unsigned short FlibHndl,
+                     short s_number,
+                     unsigned short read_no,
+                     struct ODBPARAIF *paraif);
+
+/*
+ Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
+ (-1). `length` must be at least 4 + the size of one value (1 for bit and
+ byte, 2 word, 4 2-word, 8 real), checked after the exchange as FANUC does.
+
+ # Safety
+ `param` must point to a writable IODBPSD.
+ */
+short cnc_rdparam(unsigned short FlibHndl,
+                  short number,
+                  short axis,
+                  short length,
+                  struct IODBPSD *param);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).
@@ -270,6 +474,19 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Writes a CNC parameter. The parameter's attributes are read first
+ (one exchange); `length` must then equal 4 + the size of the values
+ (one value, or one per axis of the path for `type` -1), else EW_LENGTH
+ and nothing is written. The input is read with the l32 layout (values
+ from offset 4). The write is sent once; the CNC decides whether it is
+ allowed (parameter write enable, MDI mode ...).
+
+ # Safety
+ `param` must point to a readable IODBPSD.
+ */
+short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 #ifdef __cplusplus
 }  // extern "C"
