@@ -19,7 +19,9 @@ pub struct Profile {
     // --- alarm ---
 
     // --- param ---
-
+    /// Parameter and diagnosis tables, parameter write enable.
+    #[serde(default)]
+    pub param: super::param::Params,
     // --- macros ---
 
     // --- pmc ---
