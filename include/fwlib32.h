@@ -137,6 +137,26 @@ typedef struct ODBERR {
 } ODBERR;
 
 /*
+ One value of IODBPRM.
+ */
+typedef struct IODBPRM_data {
+    LONG prm_val;
+    LONG dec_val;
+} IODBPRM_data;
+
+/*
+ cnc_rdparam_ext / cnc_rddiag_ext: one parameter (or diagnosis) record.
+ */
+typedef struct IODBPRM {
+    LONG datano;
+    short type;
+    short axis;
+    short info;
+    short unit;
+    struct IODBPRM_data data[32];
+} IODBPRM;
+
+/*
  One entry of ODBDIAGIF.
  */
 typedef struct ODBDIAGIF_info {
@@ -153,6 +173,15 @@ typedef struct ODBDIAGIF {
     short next_no;
     struct ODBDIAGIF_info info[10];
 } ODBDIAGIF;
+
+/*
+ cnc_rddiagnum: smallest and largest diagnosis number, and how many exist.
+ */
+typedef struct ODBDIAGNUM {
+    unsigned short diag_min;
+    unsigned short diag_max;
+    unsigned short total_no;
+} ODBDIAGNUM;
 
 /*
  One entry of ODBPARAIF.
@@ -206,6 +235,15 @@ typedef struct IODBPSD {
 } IODBPSD;
 
 /*
+ cnc_rdparanum: smallest and largest parameter number, and how many exist.
+ */
+typedef struct ODBPARANUM {
+    unsigned short para_min;
+    unsigned short para_max;
+    unsigned short total_no;
+} ODBPARANUM;
+
+/*
  cnc_statinfo: CNC status information.
  */
 typedef struct ODBST {
@@ -256,44 +294,6 @@ typedef struct ODBSYS {
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
-
-/*
- One value of IODBPRM.
- */
-typedef struct IODBPRM_data {
-    LONG prm_val;
-    LONG dec_val;
-} IODBPRM_data;
-
-/*
- cnc_rdparam_ext / cnc_rddiag_ext: one parameter (or diagnosis) record.
- */
-typedef struct IODBPRM {
-    LONG datano;
-    short type;
-    short axis;
-    short info;
-    short unit;
-    struct IODBPRM_data data[32];
-} IODBPRM;
-
-/*
- cnc_rdparanum: smallest and largest parameter number, and how many exist.
- */
-typedef struct ODBPARANUM {
-    unsigned short para_min;
-    unsigned short para_max;
-    unsigned short total_no;
-} ODBPARANUM;
-
-/*
- cnc_rddiagnum: smallest and largest diagnosis number, and how many exist.
- */
-typedef struct ODBDIAGNUM {
-    unsigned short diag_min;
-    unsigned short diag_max;
-    unsigned short total_no;
-} ODBDIAGNUM;
 
 #ifdef __cplusplus
 extern "C" {
@@ -387,6 +387,14 @@ short cnc_rddiag(unsigned short FlibHndl,
                  struct ODBDGN *diag);
 
 /*
+ Reads several diagnosis data items, all axes each, as cnc_rdparam_ext.
+
+ # Safety
+ `diag_no` must point to `num` 32-bit numbers, `diag` to `num` writable IODBPRM.
+ */
+short cnc_rddiag_ext(unsigned short FlibHndl, long *diag_no, short num, struct IODBPRM *diag);
+
+/*
  Reads the numbers and attributes of up to `read_no` diagnosis data
  items from `s_number` on, as cnc_rdparainfo.
 
@@ -397,6 +405,14 @@ short cnc_rddiaginfo(unsigned short FlibHndl,
                      short s_number,
                      unsigned short read_no,
                      struct ODBDIAGIF *diagif);
+
+/*
+ Reads the smallest and largest diagnosis numbers and how many there are.
+
+ # Safety
+ `diagnum` must point to a writable ODBDIAGNUM.
+ */
+short cnc_rddiagnum(unsigned short FlibHndl, struct ODBDIAGNUM *diagnum);
 
 /*
  Reads the numbers and attributes of up to `read_no` parameters from
@@ -426,6 +442,25 @@ short cnc_rdparam(unsigned short FlibHndl,
                   short axis,
                   short length,
                   struct IODBPSD *param);
+
+/*
+ Reads several parameters, all axes each, with their attributes. The
+ numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
+ x86-64 library does). A number the CNC does not know gets `type` -1 and
+ nothing else. 8 parameters per exchange.
+
+ # Safety
+ `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
+ */
+short cnc_rdparam_ext(unsigned short FlibHndl, long *prm_no, short num, struct IODBPRM *prm);
+
+/*
+ Reads the smallest and largest parameter numbers and how many there are.
+
+ # Safety
+ `paranum` must point to a writable ODBPARANUM.
+ */
+short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).

@@ -321,3 +321,68 @@ fn the_machine_sets_parameters_itself() {
     m.set_param_write_enable(true);
     assert!(m.profile.param.param_write_enable);
 }
+
+#[test]
+fn ext_reads_and_number_ranges() {
+    let (_s, h) = start(Profile::default());
+    // 32-bit numbers (FANUC's x86-64 library reads `long *` 4 bytes apart);
+    // 10 numbers = two exchanges of 8 and 2; 9999 does not exist.
+    let mut nos: Vec<i32> = vec![6711, 1320, 9999, 20, 0, 1001, 1005, 1020, 1420, 6712];
+    let mut out = vec![IODBPRM::default(); nos.len()];
+    let r = unsafe { cnc_rdparam_ext(h, nos.as_mut_ptr().cast(), 10, out.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!((out[0].datano, out[0].r#type, out[0].axis), (6711, 3, 0));
+    assert_eq!(
+        out[0].data[0],
+        IODBPRM_data {
+            prm_val: 1234,
+            dec_val: 0
+        }
+    );
+    assert_eq!((out[1].datano, out[1].r#type, out[1].axis), (1320, 4, 3));
+    let d: Vec<_> = out[1].data[..4]
+        .iter()
+        .map(|d| (d.prm_val, d.dec_val))
+        .collect();
+    assert_eq!(d, [(800000, 3), (500000, 3), (0, 3), (0, 3)]);
+    assert_eq!((out[2].datano, out[2].r#type), (9999, -1));
+    assert_eq!((out[9].datano, out[9].data[0].prm_val), (6712, 56789));
+
+    let mut nos: Vec<i32> = vec![411, 4901];
+    let r = unsafe { cnc_rddiag_ext(h, nos.as_mut_ptr().cast(), 2, out.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!((out[0].datano, out[0].r#type, out[0].axis), (411, 1, 3));
+    assert_eq!(out[0].data[2].prm_val, 35);
+    assert_eq!(
+        (
+            out[1].r#type,
+            out[1].data[0].prm_val,
+            out[1].data[0].dec_val
+        ),
+        (5, 235, 1)
+    );
+
+    let p = Profile::default();
+    let mut n = ODBPARANUM::default();
+    assert_eq!(unsafe { cnc_rdparanum(h, &mut n) }, EW_OK);
+    let all = &p.param.parameters;
+    assert_eq!(
+        (n.para_min, n.para_max, n.total_no),
+        (
+            all[0].number as u16,
+            all[all.len() - 1].number as u16,
+            all.len() as u16
+        )
+    );
+    let mut d = ODBDIAGNUM::default();
+    assert_eq!(unsafe { cnc_rddiagnum(h, &mut d) }, EW_OK);
+    assert_eq!((d.diag_min, d.diag_max), (300, 5202));
+    unsafe {
+        assert_eq!(cnc_rdparanum(h, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rddiagnum(h, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(
+            cnc_rdparam_ext(h, std::ptr::null_mut(), 1, out.as_mut_ptr()),
+            EW_DATA
+        );
+    }
+}

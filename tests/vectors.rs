@@ -302,8 +302,8 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     // --- param ---
     ("rdparam", "cnc_rdparam", Some(w_rdparam)),
     ("wrparam", "cnc_wrparam", Some(w_wrparam)),
-    ("rdparam_ext", "cnc_rdparam_ext", None),
-    ("rdparam_ext32", "cnc_rdparam_ext", None),
+    ("rdparam_ext", "cnc_rdparam_ext", Some(w_rdparam_ext)),
+    ("rdparam_ext32", "cnc_rdparam_ext", Some(w_rdparam_ext32)),
     ("rdparainfo", "cnc_rdparainfo", Some(w_rdparainfo)),
     ("diagnoss", "cnc_diagnoss", Some(w_diagnoss)),
     ("rddiaginfo", "cnc_rddiaginfo", Some(w_rddiaginfo)),
@@ -1284,6 +1284,24 @@ fn w_wrparam(p: &mut Probe, a: &[String]) -> Outcome {
         *i = u8::from_str_radix(std::str::from_utf8(d).unwrap(), 16).unwrap();
     }
     Outcome::ret(unsafe { cnc_wrparam(p.h(), len as c_short, b.as_mut_ptr().cast()) })
+}
+
+/// `rdparam_ext N n1 .. nN` with the numbers as an 8-byte-long array.
+fn w_rdparam_ext(p: &mut Probe, a: &[String]) -> Outcome {
+    let n = num(a, 0);
+    let mut nos: Vec<i64> = (0..n as usize).map(|i| num(a, i + 1)).collect();
+    with_out(p, |h, b| unsafe {
+        cnc_rdparam_ext(h, nos.as_mut_ptr().cast(), n as c_short, b.cast())
+    })
+}
+
+/// `rdparam_ext32 N n1 .. nN` with the numbers as a packed 4-byte array.
+fn w_rdparam_ext32(p: &mut Probe, a: &[String]) -> Outcome {
+    let n = num(a, 0);
+    let mut nos: Vec<i32> = (0..n as usize).map(|i| num(a, i + 1) as i32).collect();
+    with_out(p, |h, b| unsafe {
+        cnc_rdparam_ext(h, nos.as_mut_ptr().cast(), n as c_short, b.cast())
+    })
 }
 
 fn w_rdparainfo(p: &mut Probe, a: &[String]) -> Outcome {

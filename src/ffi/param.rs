@@ -5,10 +5,13 @@ use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::EW_LENGTH;
 use crate::proto::param::{
-    InfoList, Item, ParamInfo, ReadInfo, ReadOne, Table, WriteParam, check_length,
+    EXT_PER_FRAME, ExtRecord, InfoList, Item, ParamInfo, ReadExt, ReadInfo, ReadOne, Table,
+    WriteParam, check_length, rdnum,
 };
-use crate::types::{IODBPSD, MAX_AXIS, ODBDGN, ODBDIAGIF, ODBPARAIF};
-use std::os::raw::{c_short, c_ushort};
+use crate::types::{
+    IODBPRM, IODBPRM_data, IODBPSD, MAX_AXIS, ODBDGN, ODBDIAGIF, ODBDIAGNUM, ODBPARAIF, ODBPARANUM,
+};
+use std::os::raw::{c_long, c_short, c_ushort};
 
 /// Reads one item and writes datano, type (the axis word of the answer)
 /// and the values from offset 4 of `out`. Like FANUC's library, the header
@@ -212,6 +215,153 @@ pub unsafe extern "C" fn cnc_rddiaginfo(
         let out = nonnull(diagif)?;
         let l = read_info(&h, Table::Diag, s_number, read_no)?;
         unsafe { put_info(&l, read_no, out.cast()) };
+        Ok(())
+    })
+}
+
+/// Reads `num` parameters (`table` Param) or diagnosis items into IODBPRM
+/// records: 8 numbers per exchange, each with its attributes and all-axes values.
+///
+/// # Safety
+/// `nos` must point to `num` 4-byte numbers, `out` to `num` IODBPRM records.
+unsafe fn read_ext(
+    h: &Handle,
+    table: Table,
+    nos: *const i32,
+    num: c_short,
+    out: *mut IODBPRM,
+) -> Result<()> {
+    let num = num.max(0) as usize;
+    let numbers: Vec<i32> = (0..num)
+        .map(|i| unsafe { nos.add(i).read_unaligned() })
+        .collect();
+    for (c, chunk) in numbers.chunks(EXT_PER_FRAME).enumerate() {
+        let (recs, err) = h.call(&ReadExt {
+            table,
+            numbers: chunk.to_vec(),
+        })?;
+        for (i, r) in recs.iter().enumerate() {
+            let k = c * EXT_PER_FRAME + i;
+            let rec = unsafe { out.add(k) };
+            let datano = numbers[k];
+            unsafe { std::ptr::addr_of_mut!((*rec).datano).write_unaligned(datano) };
+            match r {
+                ExtRecord::Missing => unsafe {
+                    std::ptr::addr_of_mut!((*rec).r#type).write_unaligned(-1)
+                },
+                ExtRecord::Found {
+                    ptype,
+                    axis,
+                    info,
+                    unit,
+                    data,
+                } => {
+                    let mut v = IODBPRM {
+                        datano,
+                        r#type: *ptype,
+                        axis: *axis,
+                        info: *info,
+                        unit: *unit,
+                        ..IODBPRM::default()
+                    };
+                    // Records beyond the CNC's axes keep the caller's bytes.
+                    let keep = unsafe { rec.read_unaligned() };
+                    v.data = keep.data;
+                    for (d, (val, dec)) in v.data.iter_mut().zip(data) {
+                        *d = IODBPRM_data {
+                            prm_val: *val,
+                            dec_val: *dec,
+                        };
+                    }
+                    unsafe { put(rec, v) };
+                }
+            }
+        }
+        if let Some(e) = err {
+            h.note(&e);
+            return Err(e);
+        }
+    }
+    Ok(())
+}
+
+/// Reads several parameters, all axes each, with their attributes. The
+/// numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
+/// x86-64 library does). A number the CNC does not know gets `type` -1 and
+/// nothing else. 8 parameters per exchange.
+///
+/// # Safety
+/// `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparam_ext(
+    FlibHndl: c_ushort,
+    prm_no: *mut c_long,
+    num: c_short,
+    prm: *mut IODBPRM,
+) -> c_short {
+    ffi_boundary!("cnc_rdparam_ext", {
+        let h = handles::get(FlibHndl)?;
+        let nos = nonnull(prm_no)?.cast::<i32>();
+        let out = nonnull(prm)?;
+        unsafe { read_ext(&h, Table::Param, nos, num, out) }
+    })
+}
+
+/// Reads several diagnosis data items, all axes each, as cnc_rdparam_ext.
+///
+/// # Safety
+/// `diag_no` must point to `num` 32-bit numbers, `diag` to `num` writable IODBPRM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddiag_ext(
+    FlibHndl: c_ushort,
+    diag_no: *mut c_long,
+    num: c_short,
+    diag: *mut IODBPRM,
+) -> c_short {
+    ffi_boundary!("cnc_rddiag_ext", {
+        let h = handles::get(FlibHndl)?;
+        let nos = nonnull(diag_no)?.cast::<i32>();
+        let out = nonnull(diag)?;
+        unsafe { read_ext(&h, Table::Diag, nos, num, out) }
+    })
+}
+
+/// Reads the smallest and largest parameter numbers and how many there are.
+///
+/// # Safety
+/// `paranum` must point to a writable ODBPARANUM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparanum(FlibHndl: c_ushort, paranum: *mut ODBPARANUM) -> c_short {
+    ffi_boundary!("cnc_rdparanum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(paranum)?;
+        let r = h.call(&rdnum(Table::Param))?;
+        let v = ODBPARANUM {
+            para_min: r.min as c_ushort,
+            para_max: r.max as c_ushort,
+            total_no: r.total as c_ushort,
+        };
+        unsafe { put(out, v) };
+        Ok(())
+    })
+}
+
+/// Reads the smallest and largest diagnosis numbers and how many there are.
+///
+/// # Safety
+/// `diagnum` must point to a writable ODBDIAGNUM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddiagnum(FlibHndl: c_ushort, diagnum: *mut ODBDIAGNUM) -> c_short {
+    ffi_boundary!("cnc_rddiagnum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(diagnum)?;
+        let r = h.call(&rdnum(Table::Diag))?;
+        let v = ODBDIAGNUM {
+            diag_min: r.min as c_ushort,
+            diag_max: r.max as c_ushort,
+            total_no: r.total as c_ushort,
+        };
+        unsafe { put(out, v) };
         Ok(())
     })
 }

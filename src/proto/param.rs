@@ -33,6 +33,14 @@ pub const DIAGNOSS: u16 = 0x0093;
 pub const DIAGNOSS16: u16 = 0x0030;
 /// Both classes: diagnosis numbers and attributes [s, n].
 pub const RDDIAGINFO: u16 = 0x0031;
+/// 30i: the attribute record of one diagnosis item [number, 1] (28 bytes).
+pub const DIAGTYPE: u16 = 0x00a2;
+/// cnc_rdparanum: smallest, largest and count of parameter numbers.
+pub const RDPARANUM: u16 = 0x0011;
+/// cnc_rddiagnum: the same for diagnosis data.
+pub const RDDIAGNUM: u16 = 0x0032;
+/// Items per frame of cnc_rdparam_ext / cnc_rddiag_ext.
+pub const EXT_PER_FRAME: usize = 8;
 
 /// Records of a 30i write payload (and of an all-axes 30i answer at most).
 pub const WRITE_RECORDS_30: usize = 32;
@@ -362,18 +370,48 @@ impl Call for ReadOne {
 }
 
 wire_struct! {
-    /// 30i attribute record of one parameter (0x00a0, exactly 28 bytes).
-    /// FANUC's library reads `ptype` (0..4) and `axis` (2 = axis parameter);
-    /// the other words are not known to be used (our simulator sends 0).
+    /// 30i attribute record of one parameter (0x00a0) or diagnosis item
+    /// (0x00a2), 28 bytes. cnc_wrparam uses `ptype` (0..4) and `axis`
+    /// (2 = axis parameter); cnc_rdparam_ext / cnc_rddiag_ext check `number`
+    /// and derive IODBPRM axis/info/unit from `axis`, `unit_lo`, `unit_hi`,
+    /// `kind` and `flags` (oracle findings; what a real CNC puts in the
+    /// words is not known, our simulator sends 0 there).
     pub struct ParamType30 {
-        pub number: i32,
+        pub w0: i32,
         pub w4: i32,
-        pub w8: i32,
+        pub number: i32,
         pub ptype: u16,
         pub axis: u16,
-        pub info: u16,
-        pub unit: u16,
-        pub rest: [u8; 8],
+        pub unit_lo: u16,
+        pub unit_hi: u16,
+        pub kind: u16,
+        pub w22: u16,
+        pub flags: u16,
+        pub w26: u16,
+    }
+}
+
+impl ParamType30 {
+    /// IODBPRM.axis: 0, or (2v - 2) | 1 for an axis attribute v.
+    pub fn ext_axis(&self) -> i16 {
+        if self.axis == 0 {
+            0
+        } else {
+            ((2 * self.axis as i32 - 2) | 1) as i16
+        }
+    }
+    /// IODBPRM.info of a parameter.
+    pub fn ext_info_param(&self) -> i16 {
+        let w = self.flags;
+        ((w & 1)
+            | if w & 2 != 0 { 8 } else { 0 }
+            | if w & 4 != 0 { 16 } else { 0 }
+            | if self.kind == 1 { 2 } else { 0 }
+            | if self.kind == 2 { 4 } else { 0 }) as i16
+    }
+    /// IODBPRM.unit of a parameter.
+    pub fn ext_unit_param(&self) -> i16 {
+        (self.unit_lo | (self.unit_hi << 2)) as i16
     }
 }
 
@@ -570,4 +608,119 @@ pub fn check_length(length: i16, elem: Option<Elem>) -> Result<()> {
         return Err(Error::local(EW_LENGTH, "length below 4 + element size"));
     }
     Ok(())
+}
+
+wire_struct! {
+    /// Payload of 0x0011 / 0x0032: three i32, of which the library keeps the low 16 bits.
+    pub struct NumRange {
+        pub min: i32,
+        pub max: i32,
+        pub total: i32,
+    }
+}
+
+pub fn rdnum(table: Table) -> super::call::Single<NumRange> {
+    super::call::Single::new(ReqSub::cnc(
+        match table {
+            Table::Param => RDPARANUM,
+            Table::Diag => RDDIAGNUM,
+        },
+        &[],
+    ))
+}
+
+/// One IODBPRM record of cnc_rdparam_ext / cnc_rddiag_ext.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ExtRecord {
+    /// The CNC does not know the number: only datano and type = -1 are written.
+    Missing,
+    Found {
+        ptype: i16,
+        axis: i16,
+        info: i16,
+        unit: i16,
+        /// max-axes (at most 32) {value, decimals}; base ignored, as FANUC's library does.
+        data: Vec<(i32, i32)>,
+    },
+}
+
+/// Up to [`EXT_PER_FRAME`] numbers: per number its attribute record
+/// (0x00a0 / 0x00a2 [no, 1]) and its all-axes values (0x008d / 0x0093 [no, no, -1]).
+#[derive(Debug, Clone)]
+pub struct ReadExt {
+    pub table: Table,
+    pub numbers: Vec<i32>,
+}
+
+impl Call for ReadExt {
+    /// The records decoded, and the error that stopped decoding (if any):
+    /// records before it are still written, as FANUC's library does.
+    type Output = (Vec<ExtRecord>, Option<Error>);
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let (info, read) = match self.table {
+            Table::Param => (PARAMTYPE, RDPARAM),
+            Table::Diag => (DIAGTYPE, DIAGNOSS),
+        };
+        let _ = cx;
+        self.numbers
+            .iter()
+            .flat_map(|n| {
+                [
+                    ReqSub::cnc(info, &[*n, 1]),
+                    ReqSub::cnc(read, &[*n, *n, -1]),
+                ]
+            })
+            .collect()
+    }
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
+        let count = (cx.max_axes as usize).min(crate::types::MAX_AXIS);
+        let mut out = Vec::with_capacity(self.numbers.len());
+        for (k, n) in self.numbers.iter().enumerate() {
+            let one = || -> Result<ExtRecord> {
+                // An unknown number: error 3 in the value subpacket (FANUC's
+                // library) or, as our simulator answers, already in the attributes.
+                let t: ParamType30 = match payload(resp, 2 * k) {
+                    Err(Error::Cnc {
+                        code: EW_NUMBER, ..
+                    }) => return Ok(ExtRecord::Missing),
+                    r => r?,
+                };
+                let v = match sub(resp, 2 * k + 1) {
+                    Err(Error::Cnc {
+                        code: EW_NUMBER, ..
+                    }) => return Ok(ExtRecord::Missing),
+                    r => r?,
+                };
+                if t.number != *n {
+                    return Ok(ExtRecord::Missing);
+                }
+                let p = Param30::from_bytes(&v.payload)?;
+                if p.values.len() < count {
+                    return Err(Error::protocol(
+                        crate::error::detail::SHORT_PAYLOAD,
+                        "fewer value records than the CNC's axes",
+                    ));
+                }
+                let (info, unit) = match self.table {
+                    Table::Param => (t.ext_info_param(), t.ext_unit_param()),
+                    Table::Diag => ((t.flags & 1) as i16, t.unit_hi as i16),
+                };
+                Ok(ExtRecord::Found {
+                    ptype: p.ptype as i16,
+                    axis: t.ext_axis(),
+                    info,
+                    unit,
+                    data: p.values[..count]
+                        .iter()
+                        .map(|r| (r.value, r.exp as i32))
+                        .collect(),
+                })
+            };
+            match one() {
+                Ok(r) => out.push(r),
+                Err(e) => return Ok((out, Some(e))),
+            }
+        }
+        Ok((out, None))
+    }
 }

@@ -4,7 +4,7 @@ use super::profile::{Class, MachineKind, Profile};
 use super::service::{CncError, CncService, Reply};
 use crate::proto::OPTION_PARAM_16;
 use crate::proto::open::OpenBody;
-use crate::proto::param::{InfoList, Param16, ParamType30, Table};
+use crate::proto::param::{InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 
 pub struct Machine {
@@ -181,11 +181,14 @@ impl CncService for Machine {
         }
         self.table_read16(path, Table::Diag, number, axis)
     }
-    fn param_type30(&mut self, _path: u16, number: i32) -> Reply<ParamType30> {
+    fn param_type30(&mut self, _path: u16, table: Table, number: i32) -> Reply<ParamType30> {
         if self.profile.cnc.class != Class::Series30 {
             return Err(CncError::FUNC);
         }
-        self.table_type30(number)
+        self.table_type30(table, number)
+    }
+    fn param_num(&mut self, _path: u16, table: Table) -> Reply<NumRange> {
+        Ok(self.table_num(table))
     }
     fn param_info(&mut self, _path: u16, table: Table, s: i32, n: i32) -> Reply<InfoList> {
         self.table_info(table, s, n)

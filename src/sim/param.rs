@@ -10,8 +10,8 @@ use super::machine::Machine;
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::param::{
-    INFO_AXIS, InfoEntry, InfoList, Param16, Param30, ParamType30, Table, WRITE_RECORDS_30,
-    WRITE_VALUES_16,
+    INFO_AXIS, InfoEntry, InfoList, NumRange, Param16, Param30, ParamType30, Table,
+    WRITE_RECORDS_30, WRITE_VALUES_16,
 };
 use crate::proto::value::{BASE_10, Value};
 use crate::proto::wire::Wire;
@@ -183,8 +183,10 @@ impl Machine {
         let n = self.axes(path)?;
         match (e.axis, axis) {
             (false, 0) => Ok(vec![e.value(0)]),
-            (true, -1) => Ok((0..self.profile.cnc.max_axes as usize)
-                .map(|i| e.value(i))
+            // All axes: max_axes values. A non-axis item answers its value
+            // first and zeros (cnc_rdparam_ext reads every item this way).
+            (_, -1) => Ok((0..self.profile.cnc.max_axes as usize)
+                .map(|i| if e.axis || i == 0 { e.value(i) } else { 0 })
                 .collect()),
             (true, a) if a >= 1 && (a as usize) <= n => Ok(vec![e.value(a as usize - 1)]),
             _ => Err(err(ew::EW_ATTRIB)),
@@ -249,15 +251,26 @@ impl Machine {
         })
     }
 
-    /// 0x00a0: the 28-byte attribute record of one parameter.
-    pub fn table_type30(&self, number: i32) -> Reply<ParamType30> {
-        let x = self.entry(Table::Param, number)?;
+    /// 0x00a0 / 0x00a2: the 28-byte attribute record of one item (number
+    /// at offset 8, type, axis attribute 2 for axis items; other words 0).
+    pub fn table_type30(&self, t: Table, number: i32) -> Reply<ParamType30> {
+        let x = self.entry(t, number)?;
         Ok(ParamType30 {
             number,
-            ptype: x.kind.code(Table::Param),
+            ptype: x.kind.code(t),
             axis: if x.axis { 2 } else { 0 },
             ..ParamType30::default()
         })
+    }
+
+    /// 0x0011 / 0x0032: smallest and largest number, count.
+    pub fn table_num(&self, t: Table) -> NumRange {
+        let all = self.table(t);
+        NumRange {
+            min: all.first().map_or(0, |e| e.number),
+            max: all.last().map_or(0, |e| e.number),
+            total: all.len() as i32,
+        }
     }
 
     /// 0x0010 / 0x0031: up to `n` items from `s` on, with the previous and

@@ -6,7 +6,7 @@ use crate::ew;
 use crate::proto::cmd;
 use crate::proto::open::OpenBody;
 use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
-use crate::proto::param::{self, InfoList, Param16, ParamType30, Table};
+use crate::proto::param::{self, InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
 
@@ -92,8 +92,12 @@ pub trait CncService: Send {
     fn diag16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
         unsupported()
     }
-    /// 30i attribute record of a parameter (0x00a0).
-    fn param_type30(&mut self, path: u16, number: i32) -> Reply<ParamType30> {
+    /// 30i attribute record of a parameter (0x00a0) or diagnosis item (0x00a2).
+    fn param_type30(&mut self, path: u16, table: Table, number: i32) -> Reply<ParamType30> {
+        unsupported()
+    }
+    /// cnc_rdparanum (0x0011) / cnc_rddiagnum (0x0032).
+    fn param_num(&mut self, path: u16, table: Table) -> Reply<NumRange> {
         unsupported()
     }
     /// cnc_rdparainfo (0x0010) / cnc_rddiaginfo (0x0031).
@@ -149,7 +153,10 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
                 svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16)
             }
             (CLASS_CNC, param::DIAGNOSS16) => enc(svc.diag16(p, a[0], a[2] as i16)),
-            (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, a[0])),
+            (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
+            (CLASS_CNC, param::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
+            (CLASS_CNC, param::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
+            (CLASS_CNC, param::RDDIAGNUM) => enc(svc.param_num(p, Table::Diag)),
             (CLASS_CNC, param::RDPARAINFO) => enc(svc.param_info(p, Table::Param, a[0], a[1])),
             (CLASS_CNC, param::RDDIAGINFO) => enc(svc.param_info(p, Table::Diag, a[0], a[1])),
             (CLASS_CNC, param::WRPARAM) => svc.param_write(p, false, &sub.payload),
