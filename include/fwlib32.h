@@ -103,12 +103,155 @@ namespace Fwlib32 {
 #define ALL_SPINDLES (-1)
 
 /*
+ FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
+ */
+typedef int32_t LONG;
+
+/*
+ A real diagnosis value: `dgn_val · 10^-dec_val`.
+ */
+typedef struct REALDGN {
+    LONG dgn_val;
+    LONG dec_val;
+} REALDGN;
+
+/*
+ The value union of ODBDGN.
+ */
+typedef union ODBDGN_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALDGN rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALDGN rdatas[MAX_AXIS];
+} ODBDGN_u;
+
+/*
+ cnc_diagnoss: one diagnosis data item (`type` = axis: 0 none, n, -1 all).
+ */
+typedef struct ODBDGN {
+    short datano;
+    short type;
+    union ODBDGN_u u;
+} ODBDGN;
+
+/*
  cnc_getdtailerr: detail of the last error.
  */
 typedef struct ODBERR {
     short err_no;
     short err_dtno;
 } ODBERR;
+
+/*
+ One value of IODBPRM.
+ */
+typedef struct IODBPRM_data {
+    LONG prm_val;
+    LONG dec_val;
+} IODBPRM_data;
+
+/*
+ cnc_rdparam_ext / cnc_rddiag_ext: one parameter (or diagnosis) record.
+ */
+typedef struct IODBPRM {
+    LONG datano;
+    short type;
+    short axis;
+    short info;
+    short unit;
+    struct IODBPRM_data data[32];
+} IODBPRM;
+
+/*
+ One entry of ODBDIAGIF.
+ */
+typedef struct ODBDIAGIF_info {
+    short diag_no;
+    short diag_type;
+} ODBDIAGIF_info;
+
+/*
+ cnc_rddiaginfo: diagnosis numbers and attributes.
+ */
+typedef struct ODBDIAGIF {
+    unsigned short info_no;
+    short prev_no;
+    short next_no;
+    struct ODBDIAGIF_info info[10];
+} ODBDIAGIF;
+
+/*
+ cnc_rddiagnum: smallest and largest diagnosis number, and how many exist.
+ */
+typedef struct ODBDIAGNUM {
+    unsigned short diag_min;
+    unsigned short diag_max;
+    unsigned short total_no;
+} ODBDIAGNUM;
+
+/*
+ One entry of ODBPARAIF.
+ */
+typedef struct ODBPARAIF_info {
+    short prm_no;
+    short prm_type;
+} ODBPARAIF_info;
+
+/*
+ cnc_rdparainfo: parameter numbers and attributes (10 entries declared;
+ `read_no` entries may be used with a larger buffer).
+ */
+typedef struct ODBPARAIF {
+    unsigned short info_no;
+    short prev_no;
+    short next_no;
+    struct ODBPARAIF_info info[10];
+} ODBPARAIF;
+
+/*
+ A real parameter value: `prm_val · 10^-dec_val`.
+ */
+typedef struct REALPRM {
+    LONG prm_val;
+    LONG dec_val;
+} REALPRM;
+
+/*
+ The value union of IODBPSD: which member is valid depends on the
+ parameter's type and on whether one axis or all axes were read.
+ */
+typedef union IODBPSD_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALPRM rdatas[MAX_AXIS];
+} IODBPSD_u;
+
+/*
+ cnc_rdparam / cnc_wrparam: one parameter (`type` = axis: 0 none, n, -1 all).
+ */
+typedef struct IODBPSD {
+    short datano;
+    short type;
+    union IODBPSD_u u;
+} IODBPSD;
+
+/*
+ cnc_rdparanum: smallest and largest parameter number, and how many exist.
+ */
+typedef struct ODBPARANUM {
+    unsigned short para_min;
+    unsigned short para_max;
+    unsigned short total_no;
+} ODBPARANUM;
 
 /*
  cnc_statinfo: CNC status information.
@@ -158,11 +301,6 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
- FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
- */
-typedef int32_t LONG;
-
-/*
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
@@ -193,6 +331,19 @@ short cnc_allclibhndl4(const char *ip,
                        long timeout,
                        unsigned long id,
                        unsigned short *FlibHndl);
+
+/*
+ Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
+ and bit 1, word 2, 2-word 4, real 8).
+
+ # Safety
+ `diag` must point to a writable ODBDGN.
+ */
+short cnc_diagnoss(unsigned short FlibHndl,
+                   short number,
+                   short axis,
+                   short length,
+                   struct ODBDGN *diag);
 
 /*
  Frees every handle, closes every connection and the log.
@@ -232,6 +383,94 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
  `cncid` must point to 16 writable bytes.
  */
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
+
+/*
+ The same as cnc_diagnoss (an alias some programs use).
+
+ # Safety
+ `diag` must point to a writable ODBDGN.
+ */
+short cnc_rddiag(unsigned short FlibHndl,
+                 short number,
+                 short axis,
+                 short length,
+                 struct ODBDGN *diag);
+
+/*
+ Reads several diagnosis data items, all axes each, as cnc_rdparam_ext.
+
+ # Safety
+ `diag_no` must point to `num` 32-bit numbers, `diag` to `num` writable IODBPRM.
+ */
+short cnc_rddiag_ext(unsigned short FlibHndl, long *diag_no, short num, struct IODBPRM *diag);
+
+/*
+ Reads the numbers and attributes of up to `read_no` diagnosis data
+ items from `s_number` on, as cnc_rdparainfo.
+
+ # Safety
+ `diagif` must point to a writable ODBDIAGIF with room for `read_no` entries.
+ */
+short cnc_rddiaginfo(unsigned short FlibHndl,
+                     short s_number,
+                     unsigned short read_no,
+                     struct ODBDIAGIF *diagif);
+
+/*
+ Reads the smallest and largest diagnosis numbers and how many there are.
+
+ # Safety
+ `diagnum` must point to a writable ODBDIAGNUM.
+ */
+short cnc_rddiagnum(unsigned short FlibHndl, struct ODBDIAGNUM *diagnum);
+
+/*
+ Reads the numbers and attributes of up to `read_no` parameters from
+ `s_number` on, with the previous and next existing numbers. The
+ attribute word: bits 0-1 data type (bit, byte, word, 2-word), bit 8
+ axis parameter.
+
+ # Safety
+ `paraif` must point to a writable ODBPARAIF with room for `read_no`
+ entries (the declared 10, or a larger allocation).
+ */
+short cnc_rdparainfo(unsigned short FlibHndl,
+                     short s_number,
+                     unsigned short read_no,
+                     struct ODBPARAIF *paraif);
+
+/*
+ Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
+ (-1). `length` must be at least 4 + the size of one value (1 for bit and
+ byte, 2 word, 4 2-word, 8 real), checked after the exchange as FANUC does.
+
+ # Safety
+ `param` must point to a writable IODBPSD.
+ */
+short cnc_rdparam(unsigned short FlibHndl,
+                  short number,
+                  short axis,
+                  short length,
+                  struct IODBPSD *param);
+
+/*
+ Reads several parameters, all axes each, with their attributes. The
+ numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
+ x86-64 library does). A number the CNC does not know gets `type` -1 and
+ nothing else. 8 parameters per exchange.
+
+ # Safety
+ `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
+ */
+short cnc_rdparam_ext(unsigned short FlibHndl, long *prm_no, short num, struct IODBPRM *prm);
+
+/*
+ Reads the smallest and largest parameter numbers and how many there are.
+
+ # Safety
+ `paranum` must point to a writable ODBPARANUM.
+ */
+short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).
@@ -280,6 +519,19 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Writes a CNC parameter. The parameter's attributes are read first
+ (one exchange); `length` must then equal 4 + the size of the values
+ (one value, or one per axis of the path for `type` -1), else EW_LENGTH
+ and nothing is written. The input is read with the l32 layout (values
+ from offset 4). The write is sent once; the CNC decides whether it is
+ allowed (parameter write enable, MDI mode ...).
+
+ # Safety
+ `param` must point to a readable IODBPSD.
+ */
+short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -300,6 +300,15 @@ rust_layouts! {
     // --- alarm ---
 
     // --- param ---
+    REALPRM { prm_val, dec_val }
+    REALDGN { dgn_val, dec_val }
+    IODBPSD { datano, r#type, u }
+    ODBDGN { datano, r#type, u }
+    IODBPRM { datano, r#type, axis, info, unit, data }
+    ODBPARAIF { info_no, prev_no, next_no, info }
+    ODBDIAGIF { info_no, prev_no, next_no, info }
+    ODBPARANUM { para_min, para_max, total_no }
+    ODBDIAGNUM { diag_min, diag_max, total_no }
 
     // --- macros ---
 
@@ -335,7 +344,11 @@ fn rust_types_match_l32_layouts() {
             "size_of::<{name}>()"
         );
         let want = l32["fields"].as_array().unwrap();
-        let got: Vec<&str> = fields.iter().map(|f| f.0).collect();
+        // A field named like a Rust keyword is spelled `r#type` in Rust.
+        let got: Vec<&str> = fields
+            .iter()
+            .map(|f| f.0.trim_start_matches("r#"))
+            .collect();
         let want_names: Vec<&str> = want.iter().map(|f| f["name"].as_str().unwrap()).collect();
         assert_eq!(got, want_names, "{name}: fields (names, order)");
         for ((field, offset, fsize), w) in fields.iter().zip(want) {

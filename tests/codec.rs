@@ -658,3 +658,102 @@ proptest! {
         let _ = OpenBody::decode(version, &body);
     }
 }
+
+// --- param ---
+
+mod param_codec {
+    use super::roundtrip;
+    use fwlib32::proto::open::CncClass;
+    use fwlib32::proto::param::*;
+    use fwlib32::proto::value::Value;
+    use fwlib32::proto::wire::Wire;
+    use proptest::collection::vec;
+    use proptest::prelude::*;
+
+    fn value() -> impl Strategy<Value = Value> {
+        (any::<i32>(), any::<u16>(), any::<i16>()).prop_map(|(value, base, exp)| Value {
+            value,
+            base,
+            exp,
+        })
+    }
+
+    fn elem() -> impl Strategy<Value = Elem> {
+        prop_oneof![
+            Just(Elem::Byte),
+            Just(Elem::Word),
+            Just(Elem::Long),
+            Just(Elem::Real)
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+        #[test]
+        fn param_payloads_roundtrip(
+            number in any::<i32>(), axis in any::<i16>(), ptype in any::<u16>(),
+            v30 in vec(value(), 0..33), v16 in vec(any::<i32>(), 0..9),
+            t in (any::<i32>(), any::<i32>(), any::<i32>(), vec(any::<u16>(), 8)),
+            info in (any::<i32>(), any::<i32>(), vec((any::<i32>(), any::<i32>()), 0..12)),
+            range in (any::<i32>(), any::<i32>(), any::<i32>()),
+        ) {
+            roundtrip(&Param30 { number, axis, ptype, values: v30 })?;
+            roundtrip(&Param16 { number, axis, ptype, values: v16 })?;
+            let w = &t.3;
+            let pt = ParamType30 {
+                w0: t.0, w4: t.1, number: t.2, ptype: w[0], axis: w[1], unit_lo: w[2],
+                unit_hi: w[3], kind: w[4], w22: w[5], flags: w[6], w26: w[7],
+            };
+            roundtrip(&pt)?;
+            prop_assert_eq!(pt.to_bytes().len(), PARAMTYPE_LEN);
+            let entries = info.2.iter().map(|(number, ptype)| InfoEntry { number: *number, ptype: *ptype }).collect();
+            roundtrip(&InfoList { prev: info.0, next: info.1, entries })?;
+            roundtrip(&NumRange { min: range.0, max: range.1, total: range.2 })?;
+        }
+
+        /// The C-side codec: get is put reversed, for every element kind.
+        #[test]
+        fn elem_get_is_put_reversed(e in elem(), value in any::<i32>(), dec in any::<i32>(), bytes in vec(any::<u8>(), 8)) {
+            // bytes → value → bytes is the identity on the element's bytes.
+            let n = e.get(&bytes);
+            let mut out = vec![0u8; 8];
+            e.put(&mut out, n);
+            prop_assert_eq!(&out[..e.size()], &bytes[..e.size()]);
+            // value → bytes → value is the identity for values of the element's range.
+            let v = match e {
+                Elem::Byte => Num::int(value as i8 as i32),
+                Elem::Word => Num::int(value as i16 as i32),
+                Elem::Long => Num::int(value),
+                Elem::Real => Num { value, dec },
+            };
+            e.put(&mut out, v);
+            prop_assert_eq!(e.get(&out), v);
+        }
+
+        /// A write payload decodes (as the simulator reads it) to what was written.
+        #[test]
+        fn write_payload_reads_back(number in any::<i16>(), axis in -1i16..=32, ptype in 0u16..=4,
+                                    values in vec((any::<i32>(), -9i32..=9), 1..=8)) {
+            let nums: Vec<Num> = values.iter().map(|(v, d)| Num { value: *v, dec: if ptype == 4 { *d } else { 0 } }).collect();
+            let w = WriteParam { number: number as i32, axis, ptype, values: nums.clone() };
+            let p = Param30::from_bytes(&w.payload(CncClass::Series30))?;
+            prop_assert_eq!((p.number, p.axis, p.ptype, p.values.len()), (number as i32, axis, ptype, WRITE_RECORDS_30));
+            let back: Vec<Num> = p.values[..nums.len()].iter().map(|v| num_of_value(*v, ptype == 4)).collect();
+            prop_assert_eq!(back, nums.clone());
+            if ptype != 4 {
+                let p = Param16::from_bytes(&w.payload(CncClass::Series16 { kind: 1 }))?;
+                prop_assert_eq!(p.values.len(), WRITE_VALUES_16);
+                prop_assert_eq!(&p.values[..nums.len()], &nums.iter().map(|n| n.value).collect::<Vec<_>>()[..]);
+            }
+        }
+
+        #[test]
+        fn param_decoders_never_panic(b in vec(any::<u8>(), 0..400)) {
+            let _ = Param30::from_bytes(&b);
+            let _ = ParamType30::from_bytes(&b);
+            let _ = InfoList::from_bytes(&b);
+            let _ = NumRange::from_bytes(&b);
+        }
+    }
+}

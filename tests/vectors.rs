@@ -300,13 +300,13 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("rdalmhistry", "cnc_rdalmhistry", None),
     ("rdalmhistry2", "cnc_rdalmhistry2", None),
     // --- param ---
-    ("rdparam", "cnc_rdparam", None),
-    ("wrparam", "cnc_wrparam", None),
-    ("rdparam_ext", "cnc_rdparam_ext", None),
-    ("rdparam_ext32", "cnc_rdparam_ext", None),
-    ("rdparainfo", "cnc_rdparainfo", None),
-    ("diagnoss", "cnc_diagnoss", None),
-    ("rddiaginfo", "cnc_rddiaginfo", None),
+    ("rdparam", "cnc_rdparam", Some(w_rdparam)),
+    ("wrparam", "cnc_wrparam", Some(w_wrparam)),
+    ("rdparam_ext", "cnc_rdparam_ext", Some(w_rdparam_ext)),
+    ("rdparam_ext32", "cnc_rdparam_ext", Some(w_rdparam_ext32)),
+    ("rdparainfo", "cnc_rdparainfo", Some(w_rdparainfo)),
+    ("diagnoss", "cnc_diagnoss", Some(w_diagnoss)),
+    ("rddiaginfo", "cnc_rddiaginfo", Some(w_rddiaginfo)),
     // --- macros ---
     ("rdmacro", "cnc_rdmacro", None),
     ("wrmacro", "cnc_wrmacro", None),
@@ -1260,6 +1260,63 @@ fn dedicated_tests_named_in_the_table_exist() {
 // --- alarm ---
 
 // --- param ---
+
+fn w_rdparam(p: &mut Probe, a: &[String]) -> Outcome {
+    let (n, x, l) = (num(a, 0), num(a, 1), num(a, 2));
+    with_out(p, |h, b| unsafe {
+        cnc_rdparam(h, n as c_short, x as c_short, l as c_short, b.cast())
+    })
+}
+
+fn w_diagnoss(p: &mut Probe, a: &[String]) -> Outcome {
+    let (n, x, l) = (num(a, 0), num(a, 1), num(a, 2));
+    with_out(p, |h, b| unsafe {
+        cnc_diagnoss(h, n as c_short, x as c_short, l as c_short, b.cast())
+    })
+}
+
+/// `wrparam LEN hex:BYTES`: the input buffer holds BYTES, then 0xCC.
+fn w_wrparam(p: &mut Probe, a: &[String]) -> Outcome {
+    let len = num(a, 0);
+    let hex = a[1].strip_prefix("hex:").expect("wrparam input as hex:");
+    let mut b = buf();
+    for (i, d) in b.iter_mut().zip(hex.as_bytes().chunks(2)) {
+        *i = u8::from_str_radix(std::str::from_utf8(d).unwrap(), 16).unwrap();
+    }
+    Outcome::ret(unsafe { cnc_wrparam(p.h(), len as c_short, b.as_mut_ptr().cast()) })
+}
+
+/// `rdparam_ext N n1 .. nN` with the numbers as an 8-byte-long array.
+fn w_rdparam_ext(p: &mut Probe, a: &[String]) -> Outcome {
+    let n = num(a, 0);
+    let mut nos: Vec<i64> = (0..n as usize).map(|i| num(a, i + 1)).collect();
+    with_out(p, |h, b| unsafe {
+        cnc_rdparam_ext(h, nos.as_mut_ptr().cast(), n as c_short, b.cast())
+    })
+}
+
+/// `rdparam_ext32 N n1 .. nN` with the numbers as a packed 4-byte array.
+fn w_rdparam_ext32(p: &mut Probe, a: &[String]) -> Outcome {
+    let n = num(a, 0);
+    let mut nos: Vec<i32> = (0..n as usize).map(|i| num(a, i + 1) as i32).collect();
+    with_out(p, |h, b| unsafe {
+        cnc_rdparam_ext(h, nos.as_mut_ptr().cast(), n as c_short, b.cast())
+    })
+}
+
+fn w_rdparainfo(p: &mut Probe, a: &[String]) -> Outcome {
+    let (s, n) = (num(a, 0), num(a, 1));
+    with_out(p, |h, b| unsafe {
+        cnc_rdparainfo(h, s as c_short, n as c_ushort, b.cast())
+    })
+}
+
+fn w_rddiaginfo(p: &mut Probe, a: &[String]) -> Outcome {
+    let (s, n) = (num(a, 0), num(a, 1));
+    with_out(p, |h, b| unsafe {
+        cnc_rddiaginfo(h, s as c_short, n as c_ushort, b.cast())
+    })
+}
 
 // --- macros ---
 

@@ -1,1 +1,367 @@
 //! Parameters and diagnostics.
+
+use super::{ffi_boundary, nonnull, put};
+use crate::client::handles::{self, Handle};
+use crate::error::{Error, Result};
+use crate::ew::EW_LENGTH;
+use crate::proto::param::{
+    EXT_PER_FRAME, ExtRecord, InfoList, Item, ParamInfo, ReadExt, ReadInfo, ReadOne, Table,
+    WriteParam, check_length, rdnum,
+};
+use crate::types::{
+    IODBPRM, IODBPRM_data, IODBPSD, MAX_AXIS, ODBDGN, ODBDIAGIF, ODBDIAGNUM, ODBPARAIF, ODBPARANUM,
+};
+use std::os::raw::{c_long, c_short, c_ushort};
+
+/// Reads one item and writes datano, type (the axis word of the answer)
+/// and the values from offset 4 of `out`. Like FANUC's library, the header
+/// is written before the length check, which happens after the exchange.
+///
+/// # Safety
+/// `out` must point to 4 writable bytes plus the values (at most 256).
+unsafe fn read_one(
+    h: &Handle,
+    table: Table,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    out: *mut u8,
+) -> Result<()> {
+    let item: Item = h.call(&ReadOne {
+        table,
+        number: number as i32,
+        axis,
+    })?;
+    let mut head = [0u8; 4];
+    head[..2].copy_from_slice(&(item.number as i16).to_le_bytes());
+    head[2..].copy_from_slice(&item.axis.to_le_bytes());
+    unsafe { put(out.cast::<[u8; 4]>(), head) };
+    check_length(length, item.elem)?;
+    let data = item.data_bytes();
+    debug_assert!(data.len() <= 256);
+    unsafe { std::ptr::copy_nonoverlapping(data.as_ptr(), out.add(4), data.len()) };
+    Ok(())
+}
+
+/// Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
+/// (-1). `length` must be at least 4 + the size of one value (1 for bit and
+/// byte, 2 word, 4 2-word, 8 real), checked after the exchange as FANUC does.
+///
+/// # Safety
+/// `param` must point to a writable IODBPSD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparam(
+    FlibHndl: c_ushort,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    param: *mut IODBPSD,
+) -> c_short {
+    ffi_boundary!("cnc_rdparam", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(param)?;
+        unsafe { read_one(&h, Table::Param, number, axis, length, out.cast()) }
+    })
+}
+
+/// Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
+/// and bit 1, word 2, 2-word 4, real 8).
+///
+/// # Safety
+/// `diag` must point to a writable ODBDGN.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_diagnoss(
+    FlibHndl: c_ushort,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    diag: *mut ODBDGN,
+) -> c_short {
+    ffi_boundary!("cnc_diagnoss", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(diag)?;
+        unsafe { read_one(&h, Table::Diag, number, axis, length, out.cast()) }
+    })
+}
+
+/// The same as cnc_diagnoss (an alias some programs use).
+///
+/// # Safety
+/// `diag` must point to a writable ODBDGN.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddiag(
+    FlibHndl: c_ushort,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    diag: *mut ODBDGN,
+) -> c_short {
+    unsafe { cnc_diagnoss(FlibHndl, number, axis, length, diag) }
+}
+
+/// Writes a CNC parameter. The parameter's attributes are read first
+/// (one exchange); `length` must then equal 4 + the size of the values
+/// (one value, or one per axis of the path for `type` -1), else EW_LENGTH
+/// and nothing is written. The input is read with the l32 layout (values
+/// from offset 4). The write is sent once; the CNC decides whether it is
+/// allowed (parameter write enable, MDI mode ...).
+///
+/// # Safety
+/// `param` must point to a readable IODBPSD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrparam(
+    FlibHndl: c_ushort,
+    length: c_short,
+    param: *mut IODBPSD,
+) -> c_short {
+    ffi_boundary!("cnc_wrparam", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(param)?.cast::<u8>();
+        let raw: [u8; 260] = unsafe { inp.cast::<[u8; 260]>().read_unaligned() };
+        let number = i16::from_le_bytes([raw[0], raw[1]]) as i32;
+        let axis = i16::from_le_bytes([raw[2], raw[3]]);
+        let info = h.call(&ParamInfo { number })?;
+        let count = if axis == -1 {
+            let path = h.state.lock().path;
+            (h.pair.info.ctx(path).max_axes as usize).min(MAX_AXIS)
+        } else {
+            1
+        };
+        let size = info.elem.size();
+        if length as i32 != (4 + size * count) as i32 {
+            return Err(Error::local(
+                EW_LENGTH,
+                "length is not 4 + the size of the parameter's values",
+            ));
+        }
+        let values = (0..count)
+            .map(|i| info.elem.get(&raw[4 + i * size..]))
+            .collect();
+        h.call(&WriteParam {
+            number,
+            axis,
+            ptype: info.ptype,
+            values,
+        })
+    })
+}
+
+/// Writes an info list into an ODBPARAIF / ODBDIAGIF (same layout).
+/// info_no is capped at `read_no`: FANUC's library takes every entry the
+/// CNC sent and may overrun the caller's buffer; we never write more than
+/// the caller asked for.
+///
+/// # Safety
+/// `out` must point to 6 + 4 · read_no writable bytes.
+unsafe fn put_info(l: &InfoList, read_no: c_ushort, out: *mut u8) {
+    let n = l.entries.len().min(read_no as usize);
+    let mut b = Vec::with_capacity(6 + 4 * n);
+    b.extend_from_slice(&(n as u16).to_le_bytes());
+    b.extend_from_slice(&(l.prev as i16).to_le_bytes());
+    b.extend_from_slice(&(l.next as i16).to_le_bytes());
+    for e in &l.entries[..n] {
+        b.extend_from_slice(&(e.number as i16).to_le_bytes());
+        b.extend_from_slice(&(e.ptype as i16).to_le_bytes());
+    }
+    unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, b.len()) };
+}
+
+fn read_info(h: &Handle, table: Table, s_number: c_short, read_no: c_ushort) -> Result<InfoList> {
+    h.call(&ReadInfo {
+        table,
+        start: s_number as i32,
+        count: read_no as i32,
+    })
+}
+
+/// Reads the numbers and attributes of up to `read_no` parameters from
+/// `s_number` on, with the previous and next existing numbers. The
+/// attribute word: bits 0-1 data type (bit, byte, word, 2-word), bit 8
+/// axis parameter.
+///
+/// # Safety
+/// `paraif` must point to a writable ODBPARAIF with room for `read_no`
+/// entries (the declared 10, or a larger allocation).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparainfo(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    read_no: c_ushort,
+    paraif: *mut ODBPARAIF,
+) -> c_short {
+    ffi_boundary!("cnc_rdparainfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(paraif)?;
+        let l = read_info(&h, Table::Param, s_number, read_no)?;
+        unsafe { put_info(&l, read_no, out.cast()) };
+        Ok(())
+    })
+}
+
+/// Reads the numbers and attributes of up to `read_no` diagnosis data
+/// items from `s_number` on, as cnc_rdparainfo.
+///
+/// # Safety
+/// `diagif` must point to a writable ODBDIAGIF with room for `read_no` entries.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddiaginfo(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    read_no: c_ushort,
+    diagif: *mut ODBDIAGIF,
+) -> c_short {
+    ffi_boundary!("cnc_rddiaginfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(diagif)?;
+        let l = read_info(&h, Table::Diag, s_number, read_no)?;
+        unsafe { put_info(&l, read_no, out.cast()) };
+        Ok(())
+    })
+}
+
+/// Reads `num` parameters (`table` Param) or diagnosis items into IODBPRM
+/// records: 8 numbers per exchange, each with its attributes and all-axes values.
+///
+/// # Safety
+/// `nos` must point to `num` 4-byte numbers, `out` to `num` IODBPRM records.
+unsafe fn read_ext(
+    h: &Handle,
+    table: Table,
+    nos: *const i32,
+    num: c_short,
+    out: *mut IODBPRM,
+) -> Result<()> {
+    let num = num.max(0) as usize;
+    let numbers: Vec<i32> = (0..num)
+        .map(|i| unsafe { nos.add(i).read_unaligned() })
+        .collect();
+    for (c, chunk) in numbers.chunks(EXT_PER_FRAME).enumerate() {
+        let (recs, err) = h.call(&ReadExt {
+            table,
+            numbers: chunk.to_vec(),
+        })?;
+        for (i, r) in recs.iter().enumerate() {
+            let k = c * EXT_PER_FRAME + i;
+            let rec = unsafe { out.add(k) };
+            let datano = numbers[k];
+            unsafe { std::ptr::addr_of_mut!((*rec).datano).write_unaligned(datano) };
+            match r {
+                ExtRecord::Missing => unsafe {
+                    std::ptr::addr_of_mut!((*rec).r#type).write_unaligned(-1)
+                },
+                ExtRecord::Found {
+                    ptype,
+                    axis,
+                    info,
+                    unit,
+                    data,
+                } => {
+                    let mut v = IODBPRM {
+                        datano,
+                        r#type: *ptype,
+                        axis: *axis,
+                        info: *info,
+                        unit: *unit,
+                        ..IODBPRM::default()
+                    };
+                    // Records beyond the CNC's axes keep the caller's bytes.
+                    let keep = unsafe { rec.read_unaligned() };
+                    v.data = keep.data;
+                    for (d, (val, dec)) in v.data.iter_mut().zip(data) {
+                        *d = IODBPRM_data {
+                            prm_val: *val,
+                            dec_val: *dec,
+                        };
+                    }
+                    unsafe { put(rec, v) };
+                }
+            }
+        }
+        if let Some(e) = err {
+            h.note(&e);
+            return Err(e);
+        }
+    }
+    Ok(())
+}
+
+/// Reads several parameters, all axes each, with their attributes. The
+/// numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
+/// x86-64 library does). A number the CNC does not know gets `type` -1 and
+/// nothing else. 8 parameters per exchange.
+///
+/// # Safety
+/// `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparam_ext(
+    FlibHndl: c_ushort,
+    prm_no: *mut c_long,
+    num: c_short,
+    prm: *mut IODBPRM,
+) -> c_short {
+    ffi_boundary!("cnc_rdparam_ext", {
+        let h = handles::get(FlibHndl)?;
+        let nos = nonnull(prm_no)?.cast::<i32>();
+        let out = nonnull(prm)?;
+        unsafe { read_ext(&h, Table::Param, nos, num, out) }
+    })
+}
+
+/// Reads several diagnosis data items, all axes each, as cnc_rdparam_ext.
+///
+/// # Safety
+/// `diag_no` must point to `num` 32-bit numbers, `diag` to `num` writable IODBPRM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddiag_ext(
+    FlibHndl: c_ushort,
+    diag_no: *mut c_long,
+    num: c_short,
+    diag: *mut IODBPRM,
+) -> c_short {
+    ffi_boundary!("cnc_rddiag_ext", {
+        let h = handles::get(FlibHndl)?;
+        let nos = nonnull(diag_no)?.cast::<i32>();
+        let out = nonnull(diag)?;
+        unsafe { read_ext(&h, Table::Diag, nos, num, out) }
+    })
+}
+
+/// Reads the smallest and largest parameter numbers and how many there are.
+///
+/// # Safety
+/// `paranum` must point to a writable ODBPARANUM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparanum(FlibHndl: c_ushort, paranum: *mut ODBPARANUM) -> c_short {
+    ffi_boundary!("cnc_rdparanum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(paranum)?;
+        let r = h.call(&rdnum(Table::Param))?;
+        let v = ODBPARANUM {
+            para_min: r.min as c_ushort,
+            para_max: r.max as c_ushort,
+            total_no: r.total as c_ushort,
+        };
+        unsafe { put(out, v) };
+        Ok(())
+    })
+}
+
+/// Reads the smallest and largest diagnosis numbers and how many there are.
+///
+/// # Safety
+/// `diagnum` must point to a writable ODBDIAGNUM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddiagnum(FlibHndl: c_ushort, diagnum: *mut ODBDIAGNUM) -> c_short {
+    ffi_boundary!("cnc_rddiagnum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(diagnum)?;
+        let r = h.call(&rdnum(Table::Diag))?;
+        let v = ODBDIAGNUM {
+            diag_min: r.min as c_ushort,
+            diag_max: r.max as c_ushort,
+            total_no: r.total as c_ushort,
+        };
+        unsafe { put(out, v) };
+        Ok(())
+    })
+}

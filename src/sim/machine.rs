@@ -4,7 +4,7 @@ use super::profile::{Class, MachineKind, Profile};
 use super::service::{CncError, CncService, Reply};
 use crate::proto::OPTION_PARAM_16;
 use crate::proto::open::OpenBody;
-use crate::proto::param::Param16;
+use crate::proto::param::{InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 
 pub struct Machine {
@@ -151,10 +151,12 @@ impl CncService for Machine {
         Ok(CncId(self.profile.cnc.cnc_id.clone()))
     }
 
-    fn param16(&mut self, _path: u16, number: i32, axis: i16) -> Reply<Param16> {
-        // The 16i-class FOCAS option probe; the parameter table proper
-        // arrives with the data-surface functions.
-        if self.profile.cnc.class == Class::Series16 && number == OPTION_PARAM_16 {
+    fn param16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+        if self.profile.cnc.class != Class::Series16 {
+            return Err(CncError::FUNC);
+        }
+        // The 16i-class FOCAS option probe (SPEC.md §3.4).
+        if number == OPTION_PARAM_16 {
             return Ok(Param16 {
                 number,
                 axis,
@@ -162,7 +164,7 @@ impl CncService for Machine {
                 values: vec![i32::from(self.profile.cnc.option), 0, 0, 0, 0, 0, 0, 0],
             });
         }
-        Err(CncError::NUMBER)
+        self.table_read16(path, Table::Param, number, axis)
     }
 
     // --- position ---
@@ -172,6 +174,43 @@ impl CncService for Machine {
     // --- alarm ---
 
     // --- param ---
+    fn param_read30(
+        &mut self,
+        path: u16,
+        table: Table,
+        s: i32,
+        e: i32,
+        axis: i16,
+    ) -> Reply<Vec<u8>> {
+        if self.profile.cnc.class != Class::Series30 {
+            return Err(CncError::FUNC);
+        }
+        self.table_read30(path, table, s, e, axis)
+    }
+    fn diag16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+        if self.profile.cnc.class != Class::Series16 {
+            return Err(CncError::FUNC);
+        }
+        self.table_read16(path, Table::Diag, number, axis)
+    }
+    fn param_type30(&mut self, _path: u16, table: Table, number: i32) -> Reply<ParamType30> {
+        if self.profile.cnc.class != Class::Series30 {
+            return Err(CncError::FUNC);
+        }
+        self.table_type30(table, number)
+    }
+    fn param_num(&mut self, _path: u16, table: Table) -> Reply<NumRange> {
+        Ok(self.table_num(table))
+    }
+    fn param_info(&mut self, _path: u16, table: Table, s: i32, n: i32) -> Reply<InfoList> {
+        self.table_info(table, s, n)
+    }
+    fn param_write(&mut self, path: u16, class16: bool, payload: &[u8]) -> Reply<Vec<u8>> {
+        if class16 != (self.profile.cnc.class == Class::Series16) {
+            return Err(CncError::FUNC);
+        }
+        self.table_write(path, class16, payload)
+    }
 
     // --- macros ---
 

@@ -25,7 +25,9 @@ pub struct Profile {
     // --- alarm ---
 
     // --- param ---
-
+    /// Parameter and diagnosis tables, parameter write enable.
+    #[serde(default)]
+    pub param: super::param::Params,
     // --- macros ---
 
     // --- pmc ---

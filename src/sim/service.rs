@@ -6,7 +6,7 @@ use crate::ew;
 use crate::proto::cmd;
 use crate::proto::open::OpenBody;
 use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
-use crate::proto::param::Param16;
+use crate::proto::param::{self, InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
 
@@ -77,6 +77,37 @@ pub trait CncService: Send {
     // --- alarm ---
 
     // --- param ---
+    /// 30i read of parameters (0x008d) or diagnosis data (0x0093) [s, e, axis].
+    fn param_read30(
+        &mut self,
+        path: u16,
+        table: Table,
+        s: i32,
+        e: i32,
+        axis: i16,
+    ) -> Reply<Vec<u8>> {
+        unsupported()
+    }
+    /// 16i read of diagnosis data (0x0030); parameters go through `param16`.
+    fn diag16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+        unsupported()
+    }
+    /// 30i attribute record of a parameter (0x00a0) or diagnosis item (0x00a2).
+    fn param_type30(&mut self, path: u16, table: Table, number: i32) -> Reply<ParamType30> {
+        unsupported()
+    }
+    /// cnc_rdparanum (0x0011) / cnc_rddiagnum (0x0032).
+    fn param_num(&mut self, path: u16, table: Table) -> Reply<NumRange> {
+        unsupported()
+    }
+    /// cnc_rdparainfo (0x0010) / cnc_rddiaginfo (0x0031).
+    fn param_info(&mut self, path: u16, table: Table, s: i32, n: i32) -> Reply<InfoList> {
+        unsupported()
+    }
+    /// Parameter write: 30i 0x008e, 16i 0x000f (`class16`).
+    fn param_write(&mut self, path: u16, class16: bool, payload: &[u8]) -> Reply<Vec<u8>> {
+        unsupported()
+    }
 
     // --- macros ---
 
@@ -115,6 +146,21 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             // --- alarm ---
 
             // --- param ---
+            (CLASS_CNC, param::RDPARAM) => {
+                svc.param_read30(p, Table::Param, a[0], a[1], a[2] as i16)
+            }
+            (CLASS_CNC, param::DIAGNOSS) => {
+                svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16)
+            }
+            (CLASS_CNC, param::DIAGNOSS16) => enc(svc.diag16(p, a[0], a[2] as i16)),
+            (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
+            (CLASS_CNC, param::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
+            (CLASS_CNC, param::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
+            (CLASS_CNC, param::RDDIAGNUM) => enc(svc.param_num(p, Table::Diag)),
+            (CLASS_CNC, param::RDPARAINFO) => enc(svc.param_info(p, Table::Param, a[0], a[1])),
+            (CLASS_CNC, param::RDDIAGINFO) => enc(svc.param_info(p, Table::Diag, a[0], a[1])),
+            (CLASS_CNC, param::WRPARAM) => svc.param_write(p, false, &sub.payload),
+            (CLASS_CNC, param::WRPARAM16) => svc.param_write(p, true, &sub.payload),
 
             // --- macros ---
 

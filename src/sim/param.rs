@@ -1,0 +1,407 @@
+//! The simulator's parameter and diagnosis tables (profile section `[param]`)
+//! and how a CNC answers reads and writes of them.
+//!
+//! Writes are checked as a real CNC checks them, in this order: payload size
+//! (EW_LENGTH), number (EW_NUMBER), type and axis (EW_ATTRIB), read-only
+//! (EW_PROT), then parameter write enable and MDI mode (EW_PASSWD). A refused
+//! write changes nothing.
+
+use super::machine::Machine;
+use super::service::{CncError, Reply};
+use crate::ew;
+use crate::proto::param::{
+    INFO_AXIS, InfoEntry, InfoList, NumRange, Param16, Param30, ParamType30, Table,
+    WRITE_RECORDS_30, WRITE_VALUES_16,
+};
+use crate::proto::value::{BASE_10, Value};
+use crate::proto::wire::Wire;
+use serde::Deserialize;
+
+/// Data type of a parameter or diagnosis item.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Kind {
+    #[serde(rename = "bit")]
+    Bit,
+    #[serde(rename = "byte")]
+    Byte,
+    #[serde(rename = "word")]
+    Word,
+    #[serde(rename = "2word")]
+    TwoWord,
+    #[serde(rename = "real")]
+    Real,
+}
+
+impl Kind {
+    /// The type word of read answers and writes.
+    pub fn code(self, table: Table) -> u16 {
+        match (table, self) {
+            (Table::Param, Kind::Bit) => 0,
+            (Table::Param, Kind::Byte) => 1,
+            (Table::Param, Kind::Word) => 2,
+            (Table::Param, Kind::TwoWord) => 3,
+            (Table::Param, Kind::Real) => 4,
+            (Table::Diag, Kind::Byte) => 0,
+            (Table::Diag, Kind::Word) => 1,
+            (Table::Diag, Kind::TwoWord) => 2,
+            (Table::Diag, Kind::Bit) => 3,
+            (Table::Diag, Kind::Real) => 5,
+        }
+    }
+    /// The attribute word of cnc_rdparainfo / cnc_rddiaginfo: bits 0-1 data
+    /// type (bit, byte, word, 2-word), bit 8 axis. Real items: 2-word with
+    /// bit 12 set (our choice; what a real CNC sends for reals is not known).
+    pub fn info(self, axis: bool) -> i32 {
+        let t = match self {
+            Kind::Bit => 0,
+            Kind::Byte => 1,
+            Kind::Word => 2,
+            Kind::TwoWord => 3,
+            Kind::Real => 3 | 0x1000,
+        };
+        t | if axis { INFO_AXIS } else { 0 }
+    }
+    /// The value as the CNC stores it (bit: 0..255, byte and word signed).
+    fn normalize(self, v: i32) -> i32 {
+        match self {
+            Kind::Bit => v as u8 as i32,
+            Kind::Byte => v as i8 as i32,
+            Kind::Word => v as i16 as i32,
+            Kind::TwoWord | Kind::Real => v,
+        }
+    }
+}
+
+/// One parameter or diagnosis item of the profile.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Entry {
+    pub number: i32,
+    pub kind: Kind,
+    /// An axis item: one value per axis of the path.
+    #[serde(default)]
+    pub axis: bool,
+    /// The value (one), or the values by axis (missing axes read 0).
+    #[serde(default)]
+    pub values: Vec<i32>,
+    /// Real items: decimals of every value.
+    #[serde(default)]
+    pub decimals: i16,
+    /// Writes are refused with EW_PROT.
+    #[serde(default)]
+    pub read_only: bool,
+}
+
+impl Entry {
+    fn value(&self, i: usize) -> i32 {
+        self.values.get(i).copied().unwrap_or(0)
+    }
+}
+
+/// Profile section `[param]`.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(try_from = "RawParams")]
+pub struct Params {
+    /// Parameter write enable (PWE, on the CNC's SETTING screen). Writes
+    /// also need MDI mode (status `aut` = 0).
+    pub param_write_enable: bool,
+    pub parameters: Vec<Entry>,
+    pub diagnostics: Vec<Entry>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+struct RawParams {
+    param_write_enable: bool,
+    #[serde(rename = "parameter")]
+    parameters: Vec<Entry>,
+    #[serde(rename = "diagnosis")]
+    diagnostics: Vec<Entry>,
+}
+
+impl TryFrom<RawParams> for Params {
+    type Error = String;
+    fn try_from(r: RawParams) -> Result<Params, String> {
+        for (what, list) in [("parameter", &r.parameters), ("diagnosis", &r.diagnostics)] {
+            let mut seen = std::collections::BTreeSet::new();
+            for e in list {
+                if !(0..=65535).contains(&e.number) || !seen.insert(e.number) {
+                    return Err(format!("{what} {}: number out of range or twice", e.number));
+                }
+                let most = if e.axis { crate::types::MAX_AXIS } else { 1 };
+                if e.values.len() > most {
+                    return Err(format!("{what} {}: more values than axes", e.number));
+                }
+                if e.values.iter().any(|v| e.kind.normalize(*v) != *v) {
+                    return Err(format!(
+                        "{what} {}: value out of its type's range",
+                        e.number
+                    ));
+                }
+            }
+        }
+        let mut p = Params {
+            param_write_enable: r.param_write_enable,
+            parameters: r.parameters,
+            diagnostics: r.diagnostics,
+        };
+        p.parameters.sort_by_key(|e| e.number);
+        p.diagnostics.sort_by_key(|e| e.number);
+        Ok(p)
+    }
+}
+
+const fn err(code: i16) -> CncError {
+    CncError::new(code)
+}
+
+impl Machine {
+    fn table(&self, t: Table) -> &[Entry] {
+        match t {
+            Table::Param => &self.profile.param.parameters,
+            Table::Diag => &self.profile.param.diagnostics,
+        }
+    }
+
+    fn entry(&self, t: Table, number: i32) -> Reply<&Entry> {
+        self.table(t)
+            .iter()
+            .find(|e| e.number == number)
+            .ok_or(CncError::NUMBER)
+    }
+
+    fn axes(&self, path: u16) -> Reply<usize> {
+        self.profile
+            .paths
+            .get(path as usize - 1)
+            .map(|p| p.axes.len())
+            .ok_or(CncError::PATH)
+    }
+
+    /// The values answered for `axis`: one (no axis, or axis n) or max-axes (-1).
+    fn read_values(&self, path: u16, e: &Entry, axis: i16) -> Reply<Vec<i32>> {
+        let n = self.axes(path)?;
+        match (e.axis, axis) {
+            (false, 0) => Ok(vec![e.value(0)]),
+            // All axes: max_axes values. A non-axis item answers its value
+            // first and zeros (cnc_rdparam_ext reads every item this way).
+            (_, -1) => Ok((0..self.profile.cnc.max_axes as usize)
+                .map(|i| if e.axis || i == 0 { e.value(i) } else { 0 })
+                .collect()),
+            (true, a) if a >= 1 && (a as usize) <= n => Ok(vec![e.value(a as usize - 1)]),
+            _ => Err(err(ew::EW_ATTRIB)),
+        }
+    }
+
+    /// 30i read (0x008d / 0x0093) of one item; `s..=e` ranges answer every
+    /// existing item in the range, one record block after the other.
+    pub fn table_read30(&self, path: u16, t: Table, s: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
+        let mut out = Vec::new();
+        let numbers: Vec<i32> = if s == e {
+            vec![self.entry(t, s)?.number]
+        } else {
+            self.table(t)
+                .iter()
+                .map(|x| x.number)
+                .filter(|n| (s..=e).contains(n))
+                .collect()
+        };
+        if numbers.is_empty() {
+            return Err(CncError::NUMBER);
+        }
+        for n in numbers {
+            let x = self.entry(t, n)?;
+            let rec = Param30 {
+                number: n,
+                axis,
+                ptype: x.kind.code(t),
+                values: self
+                    .read_values(path, x, axis)?
+                    .into_iter()
+                    .map(|v| Value {
+                        value: v,
+                        base: BASE_10,
+                        exp: if x.kind == Kind::Real { x.decimals } else { 0 },
+                    })
+                    .collect(),
+            };
+            out.extend(rec.to_bytes());
+        }
+        Ok(out)
+    }
+
+    /// 16i read (0x000e / 0x0030): number, axis, type, max-axes 4-byte values
+    /// (a 16i CNC always sends the whole array; a real takes two words).
+    pub fn table_read16(&self, path: u16, t: Table, number: i32, axis: i16) -> Reply<Param16> {
+        let x = self.entry(t, number)?;
+        let vals = self.read_values(path, x, axis)?;
+        let mut values: Vec<i32> = if x.kind == Kind::Real {
+            vals.iter()
+                .flat_map(|v| [*v, x.decimals as i32 & 0xffff])
+                .collect()
+        } else {
+            vals
+        };
+        values.resize((self.profile.cnc.max_axes as usize).max(values.len()), 0);
+        Ok(Param16 {
+            number,
+            axis,
+            ptype: x.kind.code(t),
+            values,
+        })
+    }
+
+    /// 0x00a0 / 0x00a2: the 28-byte attribute record of one item (number
+    /// at offset 8, type, axis attribute 2 for axis items; other words 0).
+    pub fn table_type30(&self, t: Table, number: i32) -> Reply<ParamType30> {
+        let x = self.entry(t, number)?;
+        Ok(ParamType30 {
+            number,
+            ptype: x.kind.code(t),
+            axis: if x.axis { 2 } else { 0 },
+            ..ParamType30::default()
+        })
+    }
+
+    /// 0x0011 / 0x0032: smallest and largest number, count.
+    pub fn table_num(&self, t: Table) -> NumRange {
+        let all = self.table(t);
+        NumRange {
+            min: all.first().map_or(0, |e| e.number),
+            max: all.last().map_or(0, |e| e.number),
+            total: all.len() as i32,
+        }
+    }
+
+    /// 0x0010 / 0x0031: up to `n` items from `s` on, with the previous and
+    /// next existing numbers (0 where there is none).
+    pub fn table_info(&self, t: Table, s: i32, n: i32) -> Reply<InfoList> {
+        let all = self.table(t);
+        let first = all
+            .iter()
+            .position(|e| e.number >= s)
+            .ok_or(CncError::NUMBER)?;
+        let take = (n.max(0) as usize).min(all.len() - first);
+        let entries: Vec<InfoEntry> = all[first..first + take]
+            .iter()
+            .map(|e| InfoEntry {
+                number: e.number,
+                ptype: e.kind.info(e.axis),
+            })
+            .collect();
+        let prev = if first > 0 { all[first - 1].number } else { 0 };
+        let next = all.get(first + take).map_or(0, |e| e.number);
+        Ok(InfoList {
+            prev,
+            next,
+            entries,
+        })
+    }
+
+    /// 0x008e (30i, 264 bytes) / 0x000f (16i, 40 bytes): write one parameter.
+    pub fn table_write(&mut self, path: u16, class16: bool, payload: &[u8]) -> Reply<Vec<u8>> {
+        let (number, axis, ptype, raw): (i32, i16, u16, Vec<(i32, i16)>) = if class16 {
+            if payload.len() != 8 + 4 * WRITE_VALUES_16 {
+                return Err(err(ew::EW_LENGTH));
+            }
+            let p = Param16::from_bytes(payload).map_err(|_| err(ew::EW_LENGTH))?;
+            let v = p.values.iter().map(|v| (*v, 0)).collect();
+            (p.number, p.axis, p.ptype, v)
+        } else {
+            if payload.len() != 8 + 8 * WRITE_RECORDS_30 {
+                return Err(err(ew::EW_LENGTH));
+            }
+            let p = Param30::from_bytes(payload).map_err(|_| err(ew::EW_LENGTH))?;
+            let v = p.values.iter().map(|r| (r.value, r.exp)).collect();
+            (p.number, p.axis, p.ptype, v)
+        };
+        let n_axes = self.axes(path)?;
+        let x = self.entry(Table::Param, number)?;
+        if ptype != x.kind.code(Table::Param) {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        // Which stored slots the write fills, from which payload values.
+        let slots: Vec<(usize, usize)> = match (x.axis, axis) {
+            (false, 0) => vec![(0, 0)],
+            (true, -1) => (0..n_axes).map(|i| (i, i)).collect(),
+            (true, a) if a >= 1 && (a as usize) <= n_axes => vec![(a as usize - 1, 0)],
+            _ => return Err(err(ew::EW_ATTRIB)),
+        };
+        if x.read_only {
+            return Err(err(ew::EW_PROT));
+        }
+        let mdi = self.profile.paths[path as usize - 1].status.aut == 0;
+        if !self.profile.param.param_write_enable || !mdi {
+            return Err(err(ew::EW_PASSWD));
+        }
+        // Convert everything first, so a bad value changes nothing.
+        let mut new = Vec::with_capacity(slots.len());
+        for (slot, src) in slots {
+            let (v, dec) = raw.get(src).copied().unwrap_or((0, 0));
+            let v = if x.kind == Kind::Real {
+                rescale(v, dec, x.decimals).ok_or(err(ew::EW_DATA))?
+            } else {
+                x.kind.normalize(v)
+            };
+            new.push((slot, v));
+        }
+        let x = self.param_entry_mut(number).ok_or(CncError::NUMBER)?;
+        for (slot, v) in new {
+            if x.values.len() <= slot {
+                x.values.resize(slot + 1, 0);
+            }
+            x.values[slot] = v;
+        }
+        Ok(Vec::new())
+    }
+
+    fn param_entry_mut(&mut self, number: i32) -> Option<&mut Entry> {
+        self.profile
+            .param
+            .parameters
+            .iter_mut()
+            .find(|e| e.number == number)
+    }
+
+    /// Sets a parameter's value from inside the machine (e.g. the part
+    /// counter 6711 when a program ends), without the write protection a
+    /// FOCAS write meets. `axis` 0 for a non-axis parameter, else 1-based.
+    /// Returns false if the parameter does not exist. Reals are in units of
+    /// their decimals.
+    pub fn set_param_value(&mut self, number: i32, axis: i16, value: i32) -> bool {
+        let Some(x) = self.param_entry_mut(number) else {
+            return false;
+        };
+        let slot = if axis >= 1 { axis as usize - 1 } else { 0 };
+        if x.values.len() <= slot {
+            x.values.resize(slot + 1, 0);
+        }
+        x.values[slot] = x.kind.normalize(value);
+        true
+    }
+
+    /// A parameter's value (0 for axes without one); None if it does not exist.
+    pub fn param_value(&self, number: i32, axis: i16) -> Option<i32> {
+        let x = self.entry(Table::Param, number).ok()?;
+        Some(x.value(if axis >= 1 { axis as usize - 1 } else { 0 }))
+    }
+
+    /// Turns parameter write enable (PWE) on or off.
+    pub fn set_param_write_enable(&mut self, on: bool) {
+        self.profile.param.param_write_enable = on;
+    }
+}
+
+/// `v · 10^-from` in units of `10^-to`, if exact and in range.
+fn rescale(v: i32, from: i16, to: i16) -> Option<i32> {
+    let d = to as i32 - from as i32;
+    let p = 10i64.checked_pow(d.unsigned_abs())?;
+    let x = if d >= 0 {
+        (v as i64).checked_mul(p)?
+    } else if (v as i64) % p == 0 {
+        v as i64 / p
+    } else {
+        return None;
+    };
+    i32::try_from(x).ok()
+}

@@ -1,0 +1,388 @@
+//! Parameters and diagnosis data through the C ABI against the simulator:
+//! every type read, write-then-read round trips, the CNC's write protection,
+//! local checks, and a 16i-class CNC.
+
+use fwlib32::ew::*;
+use fwlib32::sim::profile::DEFAULT_PROFILE;
+use fwlib32::sim::{Machine, Profile, Simulator};
+use fwlib32::types::*;
+use fwlib32::*;
+use std::ffi::CString;
+use std::os::raw::{c_short, c_ushort};
+
+/// The default profile with some text replaced.
+fn profile(edits: &[(&str, &str)]) -> Profile {
+    let mut t = DEFAULT_PROFILE.to_string();
+    for (a, b) in edits {
+        assert!(t.contains(a), "default profile lacks {a:?}");
+        t = t.replacen(a, b, 1);
+    }
+    Profile::parse(&t).expect("profile")
+}
+
+/// Parameter write enable on, MDI mode.
+const WRITABLE: &[(&str, &str)] = &[
+    ("param_write_enable = false", "param_write_enable = true"),
+    ("aut = 1 ", "aut = 0 "),
+];
+
+const S16: &[(&str, &str)] = &[
+    ("class = \"30i\"", "class = \"16i\""),
+    ("max_axes = 32", "max_axes = 8"),
+    ("param_write_enable = false", "param_write_enable = true"),
+    ("aut = 1 ", "aut = 0 "),
+];
+
+fn start(p: Profile) -> (Simulator, c_ushort) {
+    let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
+    let ip = CString::new("127.0.0.1").unwrap();
+    let mut h: c_ushort = 0;
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
+        EW_OK
+    );
+    (s, h)
+}
+
+fn rd(h: c_ushort, number: c_short, axis: c_short, length: c_short) -> (c_short, IODBPSD) {
+    let mut b = IODBPSD::default();
+    let r = unsafe { cnc_rdparam(h, number, axis, length, &mut b) };
+    (r, b)
+}
+
+fn rd_ok(h: c_ushort, number: c_short, axis: c_short) -> IODBPSD {
+    let (r, b) = rd(h, number, axis, 260);
+    assert_eq!(r, EW_OK, "cnc_rdparam({number}, {axis})");
+    assert_eq!(b.datano, number);
+    assert_eq!(b.r#type, axis);
+    b
+}
+
+fn dg_ok(h: c_ushort, number: c_short, axis: c_short) -> ODBDGN {
+    let mut b = ODBDGN::default();
+    assert_eq!(
+        unsafe { cnc_diagnoss(h, number, axis, 260, &mut b) },
+        EW_OK,
+        "cnc_diagnoss({number}, {axis})"
+    );
+    assert_eq!((b.datano, b.r#type), (number, axis));
+    let mut c = ODBDGN::default();
+    assert_eq!(unsafe { cnc_rddiag(h, number, axis, 260, &mut c) }, EW_OK);
+    assert_eq!(unsafe { c.u.ldatas }, unsafe { b.u.ldatas });
+    b
+}
+
+fn wr(h: c_ushort, length: c_short, mut b: IODBPSD) -> c_short {
+    unsafe { cnc_wrparam(h, length, &mut b) }
+}
+
+fn psd(number: c_short, axis: c_short, set: impl FnOnce(&mut IODBPSD_u)) -> IODBPSD {
+    let mut b = IODBPSD {
+        datano: number,
+        r#type: axis,
+        ..IODBPSD::default()
+    };
+    set(&mut b.u);
+    b
+}
+
+#[test]
+fn every_type_reads_as_the_profile_says() {
+    let (_s, h) = start(Profile::default());
+    unsafe {
+        assert_eq!(rd_ok(h, 0, 0).u.cdata, 0b10); // bit
+        assert_eq!(rd_ok(h, 20, 0).u.cdata, 4); // byte
+        assert_eq!(rd_ok(h, 1825, 2).u.idata, 3000); // word, one axis
+        assert_eq!(rd_ok(h, 6711, 0).u.ldata, 1234); // 2-word
+        let r = rd_ok(h, 1320, 1).u.rdata; // real
+        assert_eq!((r.prm_val, r.dec_val), (800000, 3));
+        // All axes: max_axes (32) values, axes beyond the path's three read 0.
+        let a = rd_ok(h, 1005, -1).u.cdatas;
+        assert_eq!(&a[..4], &[1, 1, 1, 0]);
+        let a = rd_ok(h, 1825, -1).u.idatas;
+        assert_eq!(&a[..4], &[3000, 3000, 3000, 0]);
+        let a = rd_ok(h, 1321, -1).u.rdatas;
+        assert_eq!(
+            a[..3]
+                .iter()
+                .map(|r| (r.prm_val, r.dec_val))
+                .collect::<Vec<_>>(),
+            [(-5000, 3), (-5000, 3), (-500000, 3)]
+        );
+        assert_eq!(rd_ok(h, 1020, 3).u.cdata, 90);
+
+        assert_eq!(dg_ok(h, 308, 2).u.cdata, 36); // byte
+        assert_eq!(dg_ok(h, 411, 3).u.idata, 35); // word
+        assert_eq!(dg_ok(h, 752, 1).u.ldata, 298); // 2-word
+        assert_eq!(&dg_ok(h, 300, -1).u.ldatas[..4], &[12, -8, 3, 0]);
+        assert_eq!(dg_ok(h, 1000, 0).u.cdata, 0); // bit
+        let r = dg_ok(h, 4901, 0).u.rdata; // real
+        assert_eq!((r.dgn_val, r.dec_val), (235, 1));
+    }
+}
+
+#[test]
+fn read_errors() {
+    let (_s, h) = start(Profile::default());
+    assert_eq!(rd(h, 9999, 0, 8).0, EW_NUMBER);
+    let mut b = ODBDGN::default();
+    assert_eq!(unsafe { cnc_diagnoss(h, 9999, 0, 8, &mut b) }, EW_NUMBER);
+    // An axis parameter needs an axis; a non-axis one none; axes beyond the path's.
+    assert_eq!(rd(h, 1825, 0, 8).0, EW_ATTRIB);
+    assert_eq!(rd(h, 6711, 1, 8).0, EW_ATTRIB);
+    assert_eq!(rd(h, 1825, 4, 8).0, EW_ATTRIB);
+    // Length below 4 + one value: EW_LENGTH after the exchange, header written.
+    let (r, b) = rd(h, 6711, 0, 7);
+    assert_eq!(r, EW_LENGTH);
+    assert_eq!((b.datano, b.r#type), (6711, 0));
+    assert_eq!(rd(h, 1320, 1, 11).0, EW_LENGTH);
+    assert_eq!(rd(h, 20, 0, 5).0, EW_OK);
+    // NULL pointers, bad handle.
+    unsafe {
+        assert_eq!(cnc_rdparam(h, 6711, 0, 8, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_diagnoss(h, 300, 1, 8, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rddiag(h, 300, 1, 8, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_wrparam(h, 8, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rdparainfo(h, 0, 1, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rddiaginfo(h, 0, 1, std::ptr::null_mut()), EW_DATA);
+        let mut b = IODBPSD::default();
+        assert_eq!(cnc_rdparam(0x7fff, 6711, 0, 8, &mut b), EW_HANDLE);
+    }
+}
+
+#[test]
+fn writes_read_back_for_every_type() {
+    let (_s, h) = start(profile(WRITABLE));
+    // bit: all eight bits (0x81 reads back as the same char).
+    assert_eq!(wr(h, 5, psd(1001, 0, |u| u.cdata = 0x81u8 as i8)), EW_OK);
+    assert_eq!(unsafe { rd_ok(h, 1001, 0).u.cdata } as u8, 0x81);
+    // byte, negative
+    assert_eq!(wr(h, 5, psd(20, 0, |u| u.cdata = -5)), EW_OK);
+    assert_eq!(unsafe { rd_ok(h, 20, 0).u.cdata }, -5);
+    // word, one axis; the other axes keep theirs
+    assert_eq!(wr(h, 6, psd(1825, 2, |u| u.idata = -1234)), EW_OK);
+    assert_eq!(
+        &unsafe { rd_ok(h, 1825, -1).u.idatas }[..3],
+        &[3000, -1234, 3000]
+    );
+    // 2-word
+    assert_eq!(wr(h, 8, psd(6711, 0, |u| u.ldata = 987654321)), EW_OK);
+    assert_eq!(unsafe { rd_ok(h, 6711, 0).u.ldata }, 987654321);
+    // real, same decimals and other decimals (converted to the parameter's)
+    let real = |v, d| {
+        psd(1320, 1, move |u| {
+            u.rdata = REALPRM {
+                prm_val: v,
+                dec_val: d,
+            }
+        })
+    };
+    assert_eq!(wr(h, 12, real(123456, 3)), EW_OK);
+    let r = unsafe { rd_ok(h, 1320, 1).u.rdata };
+    assert_eq!((r.prm_val, r.dec_val), (123456, 3));
+    assert_eq!(wr(h, 12, real(654, 1)), EW_OK);
+    let r = unsafe { rd_ok(h, 1320, 1).u.rdata };
+    assert_eq!((r.prm_val, r.dec_val), (65400, 3));
+    // a real that cannot be held with the parameter's decimals: EW_DATA, unchanged
+    assert_eq!(wr(h, 12, real(1, 4)), EW_DATA);
+    assert_eq!(unsafe { rd_ok(h, 1320, 1).u.rdata.prm_val }, 65400);
+    // all axes at once: one value per axis of the CNC (max_axes) in the input
+    let mut all = psd(1005, -1, |_| {});
+    unsafe { all.u.cdatas[..3].copy_from_slice(&[7, 8, 9]) };
+    assert_eq!(wr(h, 4 + 32, all), EW_OK);
+    assert_eq!(&unsafe { rd_ok(h, 1005, -1).u.cdatas }[..4], &[7, 8, 9, 0]);
+    let mut all = psd(1321, -1, |_| {});
+    unsafe {
+        for (i, r) in all.u.rdatas[..3].iter_mut().enumerate() {
+            *r = REALPRM {
+                prm_val: -(i as i32 + 1) * 1000,
+                dec_val: 3,
+            };
+        }
+    }
+    assert_eq!(wr(h, 4 + 8 * 32, all), EW_OK);
+    let r = unsafe { rd_ok(h, 1321, -1).u.rdatas };
+    assert_eq!(
+        r[..3].iter().map(|r| r.prm_val).collect::<Vec<_>>(),
+        [-1000, -2000, -3000]
+    );
+}
+
+#[test]
+fn protection_refuses_and_changes_nothing() {
+    let part = |h| unsafe { rd_ok(h, 6711, 0).u.ldata };
+    let count = |v| psd(6711, 0, move |u| u.ldata = v);
+
+    // Parameter write enable off (the default profile): EW_PASSWD.
+    let (s, h) = start(profile(&[("aut = 1 ", "aut = 0 ")]));
+    assert_eq!(wr(h, 8, count(1)), EW_PASSWD);
+    assert_eq!(part(h), 1234);
+    drop(s);
+    // Enabled, but not in MDI mode: EW_PASSWD.
+    let (s, h) = start(profile(&[(
+        "param_write_enable = false",
+        "param_write_enable = true",
+    )]));
+    assert_eq!(wr(h, 8, count(1)), EW_PASSWD);
+    assert_eq!(part(h), 1234);
+    drop(s);
+
+    let (_s, h) = start(profile(WRITABLE));
+    // Unknown number: the attribute read answers EW_NUMBER, nothing is written.
+    assert_eq!(wr(h, 8, psd(9999, 0, |u| u.ldata = 1)), EW_NUMBER);
+    // Length not 4 + the type's size: EW_LENGTH before the write.
+    assert_eq!(wr(h, 6, count(1)), EW_LENGTH);
+    assert_eq!(wr(h, 12, count(1)), EW_LENGTH);
+    assert_eq!(part(h), 1234);
+    // Axis word wrong for the parameter: EW_ATTRIB.
+    assert_eq!(wr(h, 8, psd(6711, 1, |u| u.ldata = 1)), EW_ATTRIB);
+    assert_eq!(wr(h, 6, psd(1825, 0, |u| u.idata = 1)), EW_ATTRIB);
+    assert_eq!(wr(h, 6, psd(1825, 4, |u| u.idata = 1)), EW_ATTRIB);
+    assert_eq!(part(h), 1234);
+    assert_eq!(
+        &unsafe { rd_ok(h, 1825, -1).u.idatas }[..3],
+        &[3000, 3000, 3000]
+    );
+    // Read-only: EW_PROT.
+    assert_eq!(wr(h, 5, psd(1020, 1, |u| u.cdata = 65)), EW_PROT);
+    assert_eq!(unsafe { rd_ok(h, 1020, 1).u.cdata }, 88);
+    // And a good write still works afterwards.
+    assert_eq!(wr(h, 8, count(1)), EW_OK);
+    assert_eq!(part(h), 1);
+}
+
+#[test]
+fn info_lists() {
+    let (_s, h) = start(Profile::default());
+    let mut b = ODBPARAIF::default();
+    assert_eq!(unsafe { cnc_rdparainfo(h, 6711, 3, &mut b) }, EW_OK);
+    assert_eq!((b.info_no, b.prev_no, b.next_no), (3, 6710, 6750));
+    let got: Vec<_> = b.info[..3].iter().map(|e| (e.prm_no, e.prm_type)).collect();
+    assert_eq!(got, [(6711, 3), (6712, 3), (6713, 3)]);
+    // The adapter's use: one entry, type & 3.
+    assert_eq!(unsafe { cnc_rdparainfo(h, 20, 1, &mut b) }, EW_OK);
+    assert_eq!(
+        (b.info_no, b.info[0].prm_no, b.info[0].prm_type & 3),
+        (1, 20, 1)
+    );
+    // Axis parameters have bit 8; a start between numbers gives the next one.
+    assert_eq!(unsafe { cnc_rdparainfo(h, 1800, 1, &mut b) }, EW_OK);
+    assert_eq!((b.info[0].prm_no, b.info[0].prm_type), (1825, 0x102));
+    // Never more than read_no entries.
+    assert_eq!(unsafe { cnc_rdparainfo(h, 0, 2, &mut b) }, EW_OK);
+    assert_eq!(b.info_no, 2);
+    assert_eq!(unsafe { cnc_rdparainfo(h, 30000, 1, &mut b) }, EW_NUMBER);
+
+    let mut d = ODBDIAGIF::default();
+    assert_eq!(unsafe { cnc_rddiaginfo(h, 411, 2, &mut d) }, EW_OK);
+    assert_eq!((d.info_no, d.prev_no, d.next_no), (2, 308, 1000));
+    let got: Vec<_> = d.info[..2]
+        .iter()
+        .map(|e| (e.diag_no, e.diag_type))
+        .collect();
+    assert_eq!(got, [(411, 0x102), (752, 0x103)]);
+}
+
+#[test]
+fn series_16i() {
+    let (_s, h) = start(profile(S16));
+    unsafe {
+        assert_eq!(rd_ok(h, 6711, 0).u.ldata, 1234);
+        assert_eq!(rd_ok(h, 20, 0).u.cdata, 4);
+        assert_eq!(
+            &rd_ok(h, 1825, -1).u.idatas[..9],
+            &[3000, 3000, 3000, 0, 0, 0, 0, 0, 0]
+        );
+        assert_eq!(dg_ok(h, 411, 3).u.idata, 35);
+        assert_eq!(&dg_ok(h, 300, -1).u.ldatas[..4], &[12, -8, 3, 0]);
+    }
+    assert_eq!(wr(h, 8, psd(6711, 0, |u| u.ldata = -77)), EW_OK);
+    assert_eq!(unsafe { rd_ok(h, 6711, 0).u.ldata }, -77);
+    assert_eq!(wr(h, 6, psd(1825, 3, |u| u.idata = 2500)), EW_OK);
+    assert_eq!(unsafe { rd_ok(h, 1825, 3).u.idata }, 2500);
+    assert_eq!(wr(h, 5, psd(1020, 1, |u| u.cdata = 65)), EW_PROT);
+    let mut b = ODBPARAIF::default();
+    assert_eq!(unsafe { cnc_rdparainfo(h, 6711, 1, &mut b) }, EW_OK);
+    assert_eq!(
+        (b.info_no, b.info[0].prm_no, b.info[0].prm_type),
+        (1, 6711, 3)
+    );
+}
+
+#[test]
+fn the_machine_sets_parameters_itself() {
+    let mut m = Machine::new(Profile::default());
+    assert_eq!(m.param_value(6711, 0), Some(1234));
+    assert!(m.set_param_value(6711, 0, 1235));
+    assert_eq!(m.param_value(6711, 0), Some(1235));
+    assert!(m.set_param_value(1825, 2, 100));
+    assert_eq!(m.param_value(1825, 2), Some(100));
+    assert!(!m.set_param_value(9999, 0, 1));
+    m.set_param_write_enable(true);
+    assert!(m.profile.param.param_write_enable);
+}
+
+#[test]
+fn ext_reads_and_number_ranges() {
+    let (_s, h) = start(Profile::default());
+    // 32-bit numbers (FANUC's x86-64 library reads `long *` 4 bytes apart);
+    // 10 numbers = two exchanges of 8 and 2; 9999 does not exist.
+    let mut nos: Vec<i32> = vec![6711, 1320, 9999, 20, 0, 1001, 1005, 1020, 1420, 6712];
+    let mut out = vec![IODBPRM::default(); nos.len()];
+    let r = unsafe { cnc_rdparam_ext(h, nos.as_mut_ptr().cast(), 10, out.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!((out[0].datano, out[0].r#type, out[0].axis), (6711, 3, 0));
+    assert_eq!(
+        out[0].data[0],
+        IODBPRM_data {
+            prm_val: 1234,
+            dec_val: 0
+        }
+    );
+    assert_eq!((out[1].datano, out[1].r#type, out[1].axis), (1320, 4, 3));
+    let d: Vec<_> = out[1].data[..4]
+        .iter()
+        .map(|d| (d.prm_val, d.dec_val))
+        .collect();
+    assert_eq!(d, [(800000, 3), (500000, 3), (0, 3), (0, 3)]);
+    assert_eq!((out[2].datano, out[2].r#type), (9999, -1));
+    assert_eq!((out[9].datano, out[9].data[0].prm_val), (6712, 56789));
+
+    let mut nos: Vec<i32> = vec![411, 4901];
+    let r = unsafe { cnc_rddiag_ext(h, nos.as_mut_ptr().cast(), 2, out.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!((out[0].datano, out[0].r#type, out[0].axis), (411, 1, 3));
+    assert_eq!(out[0].data[2].prm_val, 35);
+    assert_eq!(
+        (
+            out[1].r#type,
+            out[1].data[0].prm_val,
+            out[1].data[0].dec_val
+        ),
+        (5, 235, 1)
+    );
+
+    let p = Profile::default();
+    let mut n = ODBPARANUM::default();
+    assert_eq!(unsafe { cnc_rdparanum(h, &mut n) }, EW_OK);
+    let all = &p.param.parameters;
+    assert_eq!(
+        (n.para_min, n.para_max, n.total_no),
+        (
+            all[0].number as u16,
+            all[all.len() - 1].number as u16,
+            all.len() as u16
+        )
+    );
+    let mut d = ODBDIAGNUM::default();
+    assert_eq!(unsafe { cnc_rddiagnum(h, &mut d) }, EW_OK);
+    assert_eq!((d.diag_min, d.diag_max), (300, 5202));
+    unsafe {
+        assert_eq!(cnc_rdparanum(h, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rddiagnum(h, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(
+            cnc_rdparam_ext(h, std::ptr::null_mut(), 1, out.as_mut_ptr()),
+            EW_DATA
+        );
+    }
+}
