@@ -101,6 +101,63 @@ typedef struct ODBERR {
 } ODBERR;
 
 /*
+ FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
+ */
+typedef int32_t LONG;
+
+/*
+ cnc_rdmacro: one custom macro variable. The value is
+ `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
+ */
+typedef struct ODBM {
+    /*
+     Variable number.
+     */
+    short datano;
+    short dummy;
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} ODBM;
+
+/*
+ One variable of IODBMR.
+ */
+typedef struct IODBMR_data {
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} IODBMR_data;
+
+/*
+ cnc_rdmacror / cnc_wrmacror: a range of custom macro variables. FANUC's
+ header declares 5 records; callers pass larger buffers for more
+ (`length` = 8 + 8 · count).
+ */
+typedef struct IODBMR {
+    /*
+     First variable number.
+     */
+    short datano_s;
+    short dummy;
+    /*
+     Last variable number.
+     */
+    short datano_e;
+    struct IODBMR_data data[5];
+} IODBMR;
+
+/*
  cnc_statinfo: CNC status information.
  */
 typedef struct ODBST {
@@ -148,14 +205,95 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
- FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
+ pmc_getdtailerr: detail of the last PMC error.
  */
-typedef int32_t LONG;
+typedef struct ODBPMCERR {
+    short err_no;
+    short err_dtno;
+} ODBPMCERR;
+
+/*
+ The data of IODBPMC: bytes, words, longs (4 bytes each), floats or
+ doubles, by the request's data type.
+ */
+typedef union IODBPMC_u {
+    char cdata[5];
+    short idata[5];
+    LONG ldata[5];
+    float fdata[5];
+    double dfdata[5];
+} IODBPMC_u;
+
+/*
+ pmc_rdpmcrng / pmc_wrpmcrng: a range of PMC addresses. FANUC's header
+ declares 5 elements; callers pass larger buffers for more
+ (`length` = 8 + bytes of data).
+ */
+typedef struct IODBPMC {
+    /*
+     Address type: 0 G, 1 F, 2 Y, 3 X, 4 A, 5 R, 6 T, 7 K, 8 C, 9 D, ...
+     */
+    short type_a;
+    /*
+     Data type: 0 byte, 1 word, 2 long (4 bytes), 4 float, 5 double.
+     */
+    short type_d;
+    /*
+     First address (a byte address).
+     */
+    short datano_s;
+    /*
+     Last address (a byte address).
+     */
+    short datano_e;
+    union IODBPMC_u u;
+} IODBPMC;
+
+/*
+ cnc_rdmacroinfo: custom macro variable information.
+ */
+typedef struct ODBMVINF {
+    short use_no1;
+    short use_no2;
+} ODBMVINF;
 
 /*
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
+
+/*
+ One area of ODBPMCINF.
+ */
+typedef struct ODBPMCINF_info {
+    /*
+     Address letter ('G', 'F', ...).
+     */
+    char pmc_adr;
+    /*
+     Attribute bits of the area, as the CNC reports them.
+     */
+    char adr_attr;
+    /*
+     First address.
+     */
+    unsigned short top_num;
+    /*
+     Last address.
+     */
+    unsigned short last_num;
+} ODBPMCINF_info;
+
+/*
+ pmc_rdpmcinfo: the PMC areas and their address ranges.
+ */
+typedef struct ODBPMCINF {
+    /*
+     Number of areas in `info`.
+     */
+    short datano;
+    struct ODBPMCINF_info info[64];
+} ODBPMCINF;
 
 #ifdef __cplusplus
 extern "C" {
@@ -224,6 +362,31 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
 
 /*
+ Reads the custom macro variable `number` (common #100.., #500.., system
+ variables): `mcr_val · 10^-dec_val`; a vacant variable reads as
+ mcr_val 0, dec_val -1. `length` must be at least 10 (the l32 ODBM).
+
+ # Safety
+ `macro_` must point to a writable ODBM.
+ */
+short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct ODBM *macro_);
+
+/*
+ Reads the custom macro variables `s_no`..`e_no` into `buf->data`
+ (8 bytes per variable, as FANUC's x86-64 library writes them).
+ `length` is the buffer's size: `8 + 8 · count`; no more variables than
+ fit are written. `datano_s`/`datano_e` are set from the request.
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_rdmacror(unsigned short FlibHndl,
+                   short s_no,
+                   short e_no,
+                   short length,
+                   struct IODBMR *buf);
+
+/*
  Selects the path later calls on this handle address (0 or -1: path 1).
  Other handles, even to the same CNC, are not affected.
  */
@@ -270,6 +433,56 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
+ `length` must be 10; `mcr_val` is taken as 32 bits (FANUC's x86-64
+ library truncates a 64-bit `long` the same way).
+
+ # Safety
+ No pointers.
+ */
+short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_val, short dec_val);
+
+/*
+ The detail of the last PMC error on this handle (pmc_* functions only;
+ cnc_getdtailerr keeps the CNC's).
+
+ # Safety
+ `err` must point to a writable ODBPMCERR.
+ */
+short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
+
+/*
+ Reads PMC addresses `s_number`..`e_number` (byte addresses) of area
+ `adr_type` (0 G, 1 F, 2 Y, 3 X, 4 A, 5 R, 6 T, 7 K, 8 C, 9 D, ...) as
+ `data_type` elements (0 byte, 1 word, 2 long (4 bytes), 4 float,
+ 5 double) into `buf->u`. `length` is the buffer's size: `8 +` the data
+ bytes. The header is set from the arguments; no more data than the range
+ spans and the buffer holds is written (FANUC's library copies the whole
+ reply).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short pmc_rdpmcrng(unsigned short FlibHndl,
+                   short adr_type,
+                   short data_type,
+                   unsigned short s_number,
+                   unsigned short e_number,
+                   unsigned short length,
+                   struct IODBPMC *buf);
+
+/*
+ Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area
+ `buf->type_a` from `buf->u`, as `buf->type_d` elements (see
+ pmc_rdpmcrng). Sends exactly the bytes the range spans; `length` must
+ cover them (`8 +` bytes), else EW_LENGTH without traffic.
+
+ # Safety
+ `buf` must point to `length` readable bytes.
+ */
+short pmc_wrpmcrng(unsigned short FlibHndl, unsigned short length, struct IODBPMC *buf);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -302,8 +302,14 @@ rust_layouts! {
     // --- param ---
 
     // --- macros ---
+    ODBM { datano, dummy, mcr_val, dec_val }
+    IODBMR { datano_s, dummy, datano_e, data }
+    ODBMVINF { use_no1, use_no2 }
 
     // --- pmc ---
+    IODBPMC { type_a, type_d, datano_s, datano_e, u }
+    ODBPMCINF { datano, info }
+    ODBPMCERR { err_no, err_dtno }
 
     // --- offset ---
 

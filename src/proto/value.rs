@@ -28,3 +28,33 @@ impl Value {
         }
     }
 }
+
+/// Most decimals a binary record is converted to (FANUC's library turns
+/// `5 · 2^-1` into 250000000 with 8 decimals, vector cnc_rdmacror
+/// `v3_base2_record`).
+pub const BASE_2_DECIMALS: i16 = 8;
+
+impl Value {
+    /// The record as decimal digits and decimal places (`digits · 10^-dec`),
+    /// as FANUC's library writes it into `mcr_val` / `dec_val`.
+    ///
+    /// Base 10 (and any base other than 2) is a plain copy. A base-2 record
+    /// `value · 2^-exp` becomes the value with [`BASE_2_DECIMALS`] decimals,
+    /// or fewer while the digits would not fit in 32 bits (the one recorded
+    /// case is 5·2^-1 → 250000000, 8; how FANUC's library treats larger
+    /// values is not recorded: this rule keeps the most precision that fits).
+    pub fn to_decimal(&self) -> (i32, i16) {
+        if self.base != BASE_2 {
+            return (self.value, self.exp);
+        }
+        let x = f64::from(self.value) * 2f64.powi(-i32::from(self.exp));
+        for dec in (0..=BASE_2_DECIMALS).rev() {
+            let m = (x * 10f64.powi(i32::from(dec))).round();
+            if m.abs() <= f64::from(i32::MAX) {
+                return (m as i32, dec);
+            }
+        }
+        // Beyond 32 bits even without decimals: saturate.
+        (if x < 0.0 { i32::MIN } else { i32::MAX }, 0)
+    }
+}
