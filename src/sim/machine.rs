@@ -162,8 +162,28 @@ impl CncService for Machine {
     // --- param ---
 
     // --- macros ---
+    fn read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<crate::proto::value::Value>> {
+        self.sim_read_macros(path, s, e)
+    }
+
+    fn write_macros(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        records: &[crate::proto::value::Value],
+    ) -> Reply<()> {
+        self.sim_write_macros(path, s, e, records)
+    }
 
     // --- pmc ---
+    fn read_pmc(&mut self, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
+        self.profile.pmc.read(&range)
+    }
+
+    fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
+        self.profile.pmc.write(&range, data)
+    }
 
     // --- offset ---
 

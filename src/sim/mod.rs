@@ -3,6 +3,8 @@
 //! own tokio runtime, so tests and tools can block while it serves.
 
 pub mod machine;
+pub mod macros;
+pub mod pmc;
 pub mod profile;
 pub mod server;
 pub mod service;

@@ -23,7 +23,9 @@ pub struct Profile {
     // --- macros ---
 
     // --- pmc ---
-
+    /// PMC address areas and their bytes (`[pmc]`, `[pmc.area.R]` ...).
+    #[serde(default)]
+    pub pmc: super::pmc::Pmc,
     // --- offset ---
 
     // --- tool ---
@@ -101,7 +103,8 @@ pub struct Path {
     // --- param ---
 
     // --- macros ---
-
+    /// Custom macro variables (`[path.macros]`).
+    pub macros: super::macros::Macros,
     // --- pmc ---
 
     // --- offset ---

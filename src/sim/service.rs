@@ -79,8 +79,30 @@ pub trait CncService: Send {
     // --- param ---
 
     // --- macros ---
+    /// Custom macro variables `s..=e` (0x0015).
+    fn read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<crate::proto::value::Value>> {
+        unsupported()
+    }
+    /// Writes custom macro variables `s..=e` (0x0016).
+    fn write_macros(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        records: &[crate::proto::value::Value],
+    ) -> Reply<()> {
+        unsupported()
+    }
 
     // --- pmc ---
+    /// A PMC range's bytes (class 2, 0x8001).
+    fn read_pmc(&mut self, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
+        unsupported()
+    }
+    /// Writes a PMC range (class 2, 0x8002).
+    fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
+        unsupported()
+    }
 
     // --- offset ---
 
@@ -117,8 +139,21 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             // --- param ---
 
             // --- macros ---
+            (CLASS_CNC, crate::proto::macros::RDMACRO) => enc(svc.read_macros(p, a[0], a[1])),
+            (CLASS_CNC, crate::proto::macros::WRMACRO) => {
+                match Vec::<crate::proto::value::Value>::from_bytes(&sub.payload) {
+                    Ok(v) => svc.write_macros(p, a[0], a[1], &v).map(|()| Vec::new()),
+                    Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+                }
+            }
 
             // --- pmc ---
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCRNG) => {
+                svc.read_pmc(crate::proto::pmc::PmcRange::from_args(&a))
+            }
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::WRPMCRNG) => svc
+                .write_pmc(crate::proto::pmc::PmcRange::from_args(&a), &sub.payload)
+                .map(|()| Vec::new()),
 
             // --- offset ---
 
