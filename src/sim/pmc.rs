@@ -29,7 +29,10 @@ pub const AREA_TYPES: &[(&str, i16)] = &[
 /// A 31i-B first PMC (memory C): letter, address ranges, FOCAS-writable.
 /// X (inputs from the machine), F (CNC → PMC) and Y (ladder outputs) are
 /// written by the machine every scan, not by FOCAS: writes get EW_PROT.
-const STANDARD: &[(&str, &[(u16, u16)], bool)] = &[
+/// (letter, inclusive address ranges, FOCAS-writable)
+type AreaSpec = (&'static str, &'static [(u16, u16)], bool);
+
+const STANDARD: &[AreaSpec] = &[
     ("G", &[(0, 767)], true),
     ("F", &[(0, 767)], false),
     ("Y", &[(0, 127)], false),
