@@ -126,6 +126,14 @@ typedef struct ODBM {
 } ODBM;
 
 /*
+ cnc_rdmacroinfo: custom macro variable information.
+ */
+typedef struct ODBMVINF {
+    short use_no1;
+    short use_no2;
+} ODBMVINF;
+
+/*
  One variable of IODBMR.
  */
 typedef struct IODBMR_data {
@@ -213,6 +221,39 @@ typedef struct ODBPMCERR {
 } ODBPMCERR;
 
 /*
+ One area of ODBPMCINF.
+ */
+typedef struct ODBPMCINF_info {
+    /*
+     Address letter ('G', 'F', ...).
+     */
+    char pmc_adr;
+    /*
+     Attribute bits of the area, as the CNC reports them.
+     */
+    char adr_attr;
+    /*
+     First address.
+     */
+    unsigned short top_num;
+    /*
+     Last address.
+     */
+    unsigned short last_num;
+} ODBPMCINF_info;
+
+/*
+ pmc_rdpmcinfo: the PMC areas and their address ranges.
+ */
+typedef struct ODBPMCINF {
+    /*
+     Number of areas in `info`.
+     */
+    short datano;
+    struct ODBPMCINF_info info[64];
+} ODBPMCINF;
+
+/*
  The data of IODBPMC: bytes, words, longs (4 bytes each), floats or
  doubles, by the request's data type.
  */
@@ -250,50 +291,9 @@ typedef struct IODBPMC {
 } IODBPMC;
 
 /*
- cnc_rdmacroinfo: custom macro variable information.
- */
-typedef struct ODBMVINF {
-    short use_no1;
-    short use_no2;
-} ODBMVINF;
-
-/*
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
-
-/*
- One area of ODBPMCINF.
- */
-typedef struct ODBPMCINF_info {
-    /*
-     Address letter ('G', 'F', ...).
-     */
-    char pmc_adr;
-    /*
-     Attribute bits of the area, as the CNC reports them.
-     */
-    char adr_attr;
-    /*
-     First address.
-     */
-    unsigned short top_num;
-    /*
-     Last address.
-     */
-    unsigned short last_num;
-} ODBPMCINF_info;
-
-/*
- pmc_rdpmcinfo: the PMC areas and their address ranges.
- */
-typedef struct ODBPMCINF {
-    /*
-     Number of areas in `info`.
-     */
-    short datano;
-    struct ODBPMCINF_info info[64];
-} ODBPMCINF;
 
 #ifdef __cplusplus
 extern "C" {
@@ -372,6 +372,15 @@ short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
 short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct ODBM *macro_);
 
 /*
+ Reads how many common variables the CNC has: `use_no1` (#100..),
+ `use_no2` (#500..).
+
+ # Safety
+ `buf` must point to a writable ODBMVINF.
+ */
+short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
+
+/*
  Reads the custom macro variables `s_no`..`e_no` into `buf->data`
  (8 bytes per variable, as FANUC's x86-64 library writes them).
  `length` is the buffer's size: `8 + 8 · count`; no more variables than
@@ -385,6 +394,20 @@ short cnc_rdmacror(unsigned short FlibHndl,
                    short e_no,
                    short length,
                    struct IODBMR *buf);
+
+/*
+ Reads `*num` custom macro variables from `s_no` as IEEE doubles into
+ `data`; `*num` becomes the number read. As FANUC's x86-64 library,
+ `s_no` and `*num` are 32-bit (`*num` is read and written as 4 bytes).
+ Requests carry at most 179 variables each; a shorter answer ends the
+ read. No more than the requested `*num` doubles are written (FANUC's
+ library writes whatever the CNC sends). How a CNC marks a vacant
+ variable in this form is not known.
+
+ # Safety
+ `num` must point to a 4-byte count, `data` to `*num` writable doubles.
+ */
+short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).
@@ -445,6 +468,29 @@ short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
 short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_val, short dec_val);
 
 /*
+ Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
+ `buf->data` (8 bytes per variable, l32) in one request. `length` must
+ cover the records (at least `8 · count + 6`); numbers below 100 or a
+ reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
+ all before any traffic.
+
+ # Safety
+ `buf` must point to `length` readable bytes.
+ */
+short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
+
+/*
+ Writes `*num` custom macro variables from `s_no` as IEEE doubles;
+ `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
+ as in FANUC's x86-64 library. Requests carry at most 177 variables; the
+ next is sent only when the CNC wrote the whole previous one.
+
+ # Safety
+ `num` must point to a 4-byte count, `data` to `*num` readable doubles.
+ */
+short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
  The detail of the last PMC error on this handle (pmc_* functions only;
  cnc_getdtailerr keeps the CNC's).
 
@@ -452,6 +498,17 @@ short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_
  `err` must point to a writable ODBPMCERR.
  */
 short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
+
+/*
+ Reads the PMC's address areas (letter, attribute, first and last
+ address). At most 64 areas, and no more than the reply holds, are
+ written (FANUC's library trusts the reply's count and can read past its
+ buffer).
+
+ # Safety
+ `buf` must point to a writable ODBPMCINF.
+ */
+short pmc_rdpmcinfo(unsigned short FlibHndl, short adr_type, struct ODBPMCINF *buf);
 
 /*
  Reads PMC addresses `s_number`..`e_number` (byte addresses) of area

@@ -206,3 +206,110 @@ fn series16_round_trip() {
     assert_eq!(unsafe { cnc_wrmacro(h, 500, 9, 1, 0) }, EW_LENGTH);
     cnc_freelibhndl(h);
 }
+
+#[test]
+fn range_write_reads_back() {
+    let s = start(PROFILE);
+    let h = alloc(&s);
+    let mut b = IODBMR {
+        datano_s: 500,
+        datano_e: 502,
+        ..IODBMR::default()
+    };
+    for (i, (v, d)) in [(15, 1), (-2250, 3), (0, -1)].into_iter().enumerate() {
+        b.data[i] = IODBMR_data {
+            mcr_val: v,
+            dec_val: d,
+        };
+    }
+    assert_eq!(unsafe { cnc_wrmacror(h, 8 + 8 * 3, &mut b) }, EW_OK);
+    assert_eq!(rd(h, 500), (EW_OK, 15, 1));
+    assert_eq!(rd(h, 501), (EW_OK, -2250, 3));
+    assert_eq!(rd(h, 502), (EW_OK, 0, -1));
+    let mut back = IODBMR::default();
+    assert_eq!(unsafe { cnc_rdmacror(h, 500, 502, 48, &mut back) }, EW_OK);
+    assert_eq!(&back.data[..3], &b.data[..3]);
+
+    // Local checks (FANUC's): the last dec_val must lie within length,
+    // numbers from 100, s <= e, dec_val not 32767 / below -1.
+    assert_eq!(unsafe { cnc_wrmacror(h, 8 * 3 + 5, &mut b) }, EW_LENGTH);
+    assert_eq!(unsafe { cnc_wrmacror(h, 8 * 3 + 6, &mut b) }, EW_OK);
+    b.data[1].dec_val = 32767;
+    assert_eq!(unsafe { cnc_wrmacror(h, 48, &mut b) }, EW_DATA);
+    b.data[1].dec_val = -2;
+    assert_eq!(unsafe { cnc_wrmacror(h, 48, &mut b) }, EW_DATA);
+    b.data[1].dec_val = 3;
+    b.datano_s = 99;
+    assert_eq!(unsafe { cnc_wrmacror(h, 48, &mut b) }, EW_NUMBER);
+    b.datano_s = 503;
+    assert_eq!(unsafe { cnc_wrmacror(h, 48, &mut b) }, EW_NUMBER);
+    assert_eq!(
+        unsafe { cnc_wrmacror(h, 48, std::ptr::null_mut()) },
+        EW_DATA
+    );
+    // A range touching protected #990-#999: EW_PROT, none written.
+    b.datano_s = 988;
+    b.datano_e = 990;
+    assert_eq!(unsafe { cnc_wrmacror(h, 48, &mut b) }, EW_PROT);
+    assert_eq!(rd(h, 988), (EW_OK, 0, -1));
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn macro_info_counts_the_common_variables() {
+    let s = start(PROFILE);
+    let h = alloc(&s);
+    let mut i = ODBMVINF::default();
+    assert_eq!(unsafe { cnc_rdmacroinfo(h, &mut i) }, EW_OK);
+    assert_eq!((i.use_no1, i.use_no2), (100, 500));
+    assert_eq!(unsafe { cnc_rdmacroinfo(h, std::ptr::null_mut()) }, EW_DATA);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn doubles_round_trip() {
+    let s = start(PROFILE);
+    let h = alloc(&s);
+    // 400 variables from #500: FANUC's library writes 177 per request and
+    // reads 179 per request; both loops are exercised.
+    let mut vals: Vec<f64> = (0..400).map(|i| f64::from(i) * 0.25 - 50.0).collect();
+    let mut n: [u32; 2] = [400, 0xdead];
+    let r = unsafe { cnc_wrmacror2(h, 500, n.as_mut_ptr().cast(), vals.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!(n, [400, 0xdead], "*num is 4 bytes");
+    let mut back = vec![f64::NAN; 410];
+    n[0] = 400;
+    let r = unsafe { cnc_rdmacror2(h, 500, n.as_mut_ptr().cast(), back.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!(n[0], 400);
+    assert_eq!(&back[..400], &vals[..]);
+    assert!(
+        back[400..].iter().all(|x| x.is_nan()),
+        "no more than *num written"
+    );
+    // The same values through the decimal interface.
+    assert_eq!(rd(h, 501), (EW_OK, -4975, 2));
+    assert_eq!(rd(h, 504), (EW_OK, -49, 0));
+
+    // Reading past the last variable: a short answer ends the read.
+    n[0] = 10;
+    let r = unsafe { cnc_rdmacror2(h, 195, n.as_mut_ptr().cast(), back.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!(n[0], 5);
+    // *num 0: EW_LENGTH before any traffic; protected or missing: nothing written.
+    n[0] = 0;
+    let r = unsafe { cnc_rdmacror2(h, 100, n.as_mut_ptr().cast(), back.as_mut_ptr()) };
+    assert_eq!(r, EW_LENGTH);
+    n[0] = 2;
+    let mut two = [1.0, 2.0];
+    let r = unsafe { cnc_wrmacror2(h, 989, n.as_mut_ptr().cast(), two.as_mut_ptr()) };
+    assert_eq!(r, EW_PROT);
+    assert_eq!(rd(h, 989), (EW_OK, 0, -1));
+    let r = unsafe { cnc_wrmacror2(h, 199, n.as_mut_ptr().cast(), two.as_mut_ptr()) };
+    assert_eq!(r, EW_NUMBER);
+    let mut nan = [f64::NAN];
+    n[0] = 1;
+    let r = unsafe { cnc_wrmacror2(h, 100, n.as_mut_ptr().cast(), nan.as_mut_ptr()) };
+    assert_eq!(r, EW_DATA);
+    cnc_freelibhndl(h);
+}

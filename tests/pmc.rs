@@ -228,3 +228,23 @@ fn pmc_getdtailerr_reads_the_pmc_detail() {
     assert_eq!((e.err_no, e.err_dtno), (0, 0));
     cnc_freelibhndl(h);
 }
+
+#[test]
+fn pmc_info_lists_the_areas() {
+    let s = start();
+    let h = alloc(&s);
+    let mut i = ODBPMCINF::default();
+    assert_eq!(unsafe { pmc_rdpmcinfo(h, 0, &mut i) }, EW_OK);
+    let areas: Vec<(u8, u16, u16)> = i.info[..i.datano as usize]
+        .iter()
+        .map(|a| (a.pmc_adr as u8, a.top_num, a.last_num))
+        .collect();
+    assert!(areas.contains(&(b'G', 0, 767)), "{areas:?}");
+    assert!(areas.contains(&(b'R', 0, 7999)));
+    assert!(areas.contains(&(b'K', 900, 999)));
+    assert_eq!(
+        unsafe { pmc_rdpmcinfo(h, 0, std::ptr::null_mut()) },
+        EW_DATA
+    );
+    cnc_freelibhndl(h);
+}

@@ -319,7 +319,7 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("rdmacro", "cnc_rdmacro", Some(w_rdmacro)),
     ("wrmacro", "cnc_wrmacro", Some(w_wrmacro)),
     ("rdmacror", "cnc_rdmacror", Some(w_rdmacror)),
-    ("rdmacror2", "cnc_rdmacror2", None),
+    ("rdmacror2", "cnc_rdmacror2", Some(w_rdmacror2)),
     // --- pmc ---
     ("pmc_rdpmcrng", "pmc_rdpmcrng", Some(w_pmc_rdpmcrng)),
     ("pmc_wrpmcrng", "pmc_wrpmcrng", Some(w_pmc_wrpmcrng)),
@@ -1293,6 +1293,17 @@ fn w_rdmacror(p: &mut Probe, a: &[String]) -> Outcome {
         num(a, 2) as c_short,
     );
     with_out(p, |h, b| unsafe { cnc_rdmacror(h, s, e, len, b.cast()) })
+}
+
+/// `rdmacror2 s num`: `*num` starts at the given count and is reported back.
+fn w_rdmacror2(p: &mut Probe, a: &[String]) -> Outcome {
+    let s = num(a, 0) as c_ulong;
+    let mut n = [num(a, 1) as u32, 0xCCCC_CCCC];
+    let mut o = with_out(p, |h, b| unsafe {
+        cnc_rdmacror2(h, s, n.as_mut_ptr().cast(), b.cast())
+    });
+    o.fields.push(("num", i64::from(n[0])));
+    o
 }
 
 // --- pmc ---

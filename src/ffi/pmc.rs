@@ -4,8 +4,11 @@ use super::{ffi_boundary, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_LENGTH;
-use crate::proto::pmc::{PmcRange, ReadPmc, WritePmc, elem_size, swap_elements};
-use crate::types::{IODBPMC, ODBPMCERR};
+use crate::proto::pmc::{
+    PMCINFO_MAX, PmcRange, ReadPmc, WritePmc, elem_size, rdpmcinfo, swap_elements,
+};
+use crate::types::{IODBPMC, ODBPMCERR, ODBPMCINF, ODBPMCINF_info};
+use std::os::raw::c_char;
 use std::os::raw::{c_short, c_ushort};
 use std::ptr::addr_of_mut;
 
@@ -116,6 +119,41 @@ pub unsafe extern "C" fn pmc_getdtailerr(FlibHndl: c_ushort, err: *mut ODBPMCERR
         let out = nonnull(err)?;
         let (err_no, err_dtno) = h.state.lock().pmc_detail;
         unsafe { put(out, ODBPMCERR { err_no, err_dtno }) };
+        Ok(())
+    })
+}
+
+/// Reads the PMC's address areas (letter, attribute, first and last
+/// address). At most 64 areas, and no more than the reply holds, are
+/// written (FANUC's library trusts the reply's count and can read past its
+/// buffer).
+///
+/// # Safety
+/// `buf` must point to a writable ODBPMCINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_rdpmcinfo(
+    FlibHndl: c_ushort,
+    adr_type: c_short,
+    buf: *mut ODBPMCINF,
+) -> c_short {
+    ffi_boundary!("pmc_rdpmcinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(buf)?;
+        let info = h.call_pmc(&rdpmcinfo(adr_type))?;
+        let n = info.areas.len().min(PMCINFO_MAX);
+        unsafe {
+            put(addr_of_mut!((*out).datano), n as c_short);
+            let dst = addr_of_mut!((*out).info).cast::<ODBPMCINF_info>();
+            for (i, a) in info.areas[..n].iter().enumerate() {
+                let rec = ODBPMCINF_info {
+                    pmc_adr: a.adr as u8 as c_char,
+                    adr_attr: a.attr as u8 as c_char,
+                    top_num: a.top as c_ushort,
+                    last_num: a.last as c_ushort,
+                };
+                put(dst.add(i), rec);
+            }
+        }
         Ok(())
     })
 }

@@ -107,3 +107,48 @@ impl Call for WritePmc {
         sub(resp, 0).map(|_| ())
     }
 }
+
+/// pmc_rdpmcinfo: (2,0x8003)[adr_type]; payload i32 count + 12-byte records.
+pub const RDPMCINFO: u16 = 0x8003;
+/// Records ODBPMCINF holds.
+pub const PMCINFO_MAX: usize = 64;
+
+crate::wire_struct! {
+    /// One area of the 0x8003 reply (only the low byte of `adr` / `attr`
+    /// and the low 16 bits of `top` / `last` reach ODBPMCINF).
+    pub struct PmcAreaInfo {
+        pub adr: u16,
+        pub attr: u16,
+        pub top: i32,
+        pub last: i32,
+    }
+}
+
+/// Payload of 0x8003. The count word is kept as sent; the decoder takes
+/// no more records than are present (FANUC's library trusts the count
+/// and read past its buffer).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct PmcInfo {
+    pub count: i32,
+    pub areas: Vec<PmcAreaInfo>,
+}
+
+impl super::wire::Wire for PmcInfo {
+    fn encode(&self, w: &mut super::wire::Writer) {
+        w.i32(self.count);
+        self.areas.encode(w);
+    }
+    fn decode(r: &mut super::wire::Reader<'_>) -> Result<Self, super::wire::DecodeError> {
+        let count = r.i32()?;
+        let n = (count.max(0) as usize).min(r.remaining() / 12);
+        let mut areas = Vec::with_capacity(n);
+        for _ in 0..n {
+            areas.push(PmcAreaInfo::decode(r)?);
+        }
+        Ok(PmcInfo { count, areas })
+    }
+}
+
+pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
+    super::call::Single::new(ReqSub::pmc(RDPMCINFO, &[i32::from(adr_type)]))
+}

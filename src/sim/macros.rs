@@ -5,7 +5,7 @@ use super::Machine;
 use super::profile::Class;
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::macros::VACANT_DEC;
+use crate::proto::macros::{Double, MacroInfo, RDMACROR2_CHUNK, VACANT_DEC};
 use crate::proto::value::Value;
 use serde::Deserialize;
 use std::collections::BTreeMap;
@@ -215,6 +215,72 @@ impl Machine {
         Ok(())
     }
 
+    /// Command 0x0017: how many common variables exist from #100 (below
+    /// #500) and from #500 (below #1000).
+    pub(crate) fn sim_macro_info(&mut self, path: u16) -> Reply<MacroInfo> {
+        let m = self.macros(path)?;
+        let count = |a: i32, b: i32| (a..=b).filter(|n| m.exists(*n)).count() as i32;
+        Ok(MacroInfo {
+            use_no1: count(100, 499),
+            use_no2: count(500, 999),
+        })
+    }
+
+    /// Command 0x00a7: up to `n` variables from `s` as doubles, stopping at
+    /// the first number that does not exist (EW_NUMBER if that is `s`). A
+    /// vacant variable reads as 0.0: how a real CNC marks vacancy in this
+    /// form is not known.
+    pub(crate) fn sim_read_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        n: i32,
+    ) -> Reply<Vec<Double>> {
+        let m = self.macros(path)?;
+        if n <= 0 || n as u32 > RDMACROR2_CHUNK || !m.exists(s) {
+            return Err(CncError::NUMBER);
+        }
+        Ok((s..s.saturating_add(n))
+            .take_while(|k| m.exists(*k))
+            .map(|k| {
+                let (v, d) = m.values.get(&k).copied().unwrap_or((0, 0));
+                Double(f64::from(v) / 10f64.powi(i32::from(d)))
+            })
+            .collect())
+    }
+
+    /// Command 0x00a8: variables from `s`; all must exist and be writable
+    /// (else EW_NUMBER / EW_PROT, nothing written). Each double is kept
+    /// with the fewest decimal places (up to 9) that reproduce it; NaN and
+    /// infinities are EW_DATA. Answers the count written.
+    pub(crate) fn sim_write_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        values: &[Double],
+    ) -> Reply<i32> {
+        let m = self.macros_mut(path)?;
+        let n = values.len() as i32;
+        if n == 0 {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        let e = s.checked_add(n - 1).ok_or(CncError::NUMBER)?;
+        if !(s..=e).all(|k| m.exists(k)) {
+            return Err(CncError::NUMBER);
+        }
+        if (s..=e).any(|k| m.protected(k)) {
+            return Err(CncError::new(ew::EW_PROT));
+        }
+        let new = values
+            .iter()
+            .map(|d| double_to_decimal(d.0).ok_or(CncError::new(ew::EW_DATA)))
+            .collect::<Reply<Vec<_>>>()?;
+        for (k, v) in (s..=e).zip(new) {
+            m.values.insert(k, v);
+        }
+        Ok(n)
+    }
+
     /// Sets a macro variable as a running program would (`None`: vacant),
     /// ignoring write protection. EW_NUMBER for a number that does not exist.
     pub fn set_macro(&mut self, path: u16, number: i32, value: Option<(i32, i16)>) -> Reply<()> {
@@ -239,6 +305,27 @@ impl Machine {
     }
 }
 
+/// The fewest decimal places (0..=9) whose digits fit in 32 bits and give
+/// back `x` exactly, else the most places that fit; None for NaN/inf or
+/// magnitudes beyond 32-bit digits.
+pub fn double_to_decimal(x: f64) -> Option<(i32, i16)> {
+    if !x.is_finite() {
+        return None;
+    }
+    let mut best = None;
+    for d in 0..=MAX_DEC {
+        let m = (x * 10f64.powi(i32::from(d))).round();
+        if m.abs() > f64::from(i32::MAX) {
+            break;
+        }
+        best = Some((m as i32, d));
+        if m / 10f64.powi(i32::from(d)) == x {
+            break;
+        }
+    }
+    best
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -252,5 +339,14 @@ mod tests {
         assert_eq!(parse_decimal("1e3"), None);
         assert_eq!(parse_decimal("99999999999"), None);
         assert_eq!(parse_decimal("."), None);
+    }
+
+    #[test]
+    fn doubles_keep_their_places() {
+        assert_eq!(double_to_decimal(1.5), Some((15, 1)));
+        assert_eq!(double_to_decimal(-2.25), Some((-225, 2)));
+        assert_eq!(double_to_decimal(7.0), Some((7, 0)));
+        assert_eq!(double_to_decimal(f64::NAN), None);
+        assert_eq!(double_to_decimal(1e12), None);
     }
 }

@@ -4,7 +4,7 @@
 use super::Machine;
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::pmc::{PmcRange, elem_size};
+use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, elem_size};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -230,6 +230,32 @@ impl Pmc {
         let area = self.area_mut(r.adr_type).expect("checked");
         area.mem[usize::from(r.s)..=usize::from(r.e)].copy_from_slice(data);
         Ok(())
+    }
+}
+
+impl Pmc {
+    /// The 0x8003 answer: one record per address range (K has two), the
+    /// letter's character code, attribute 0, first and last address. What a
+    /// real PMC puts in the attribute word and does with `adr_type` is not
+    /// known; the simulator answers every area whatever `adr_type`.
+    pub fn info(&self, _adr_type: i16) -> PmcInfo {
+        let areas: Vec<PmcAreaInfo> = self
+            .areas
+            .iter()
+            .flat_map(|a| {
+                a.ranges.iter().map(|&(s, e)| PmcAreaInfo {
+                    adr: u16::from(a.letter.as_bytes()[0]),
+                    attr: 0,
+                    top: i32::from(s),
+                    last: i32::from(e),
+                })
+            })
+            .take(PMCINFO_MAX)
+            .collect();
+        PmcInfo {
+            count: areas.len() as i32,
+            areas,
+        }
     }
 }
 

@@ -93,6 +93,28 @@ pub trait CncService: Send {
     ) -> Reply<()> {
         unsupported()
     }
+    /// Counts of common variables (0x0017).
+    fn macro_info(&mut self, path: u16) -> Reply<crate::proto::macros::MacroInfo> {
+        unsupported()
+    }
+    /// `n` variables from `s` as doubles (0x00a7).
+    fn read_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        n: i32,
+    ) -> Reply<Vec<crate::proto::macros::Double>> {
+        unsupported()
+    }
+    /// Writes variables from `s` as doubles; answers the count (0x00a8).
+    fn write_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        values: &[crate::proto::macros::Double],
+    ) -> Reply<i32> {
+        unsupported()
+    }
 
     // --- pmc ---
     /// A PMC range's bytes (class 2, 0x8001).
@@ -101,6 +123,10 @@ pub trait CncService: Send {
     }
     /// Writes a PMC range (class 2, 0x8002).
     fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
+        unsupported()
+    }
+    /// The PMC's areas (class 2, 0x8003).
+    fn pmc_info(&mut self, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
         unsupported()
     }
 
@@ -146,6 +172,16 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
                     Err(_) => Err(CncError::new(ew::EW_LENGTH)),
                 }
             }
+            (CLASS_CNC, crate::proto::macros::RDMACROINFO) => enc(svc.macro_info(p)),
+            (CLASS_CNC, crate::proto::macros::RDMACROR2) => {
+                enc(svc.read_macros_double(p, a[0], a[1]))
+            }
+            (CLASS_CNC, crate::proto::macros::WRMACROR2) => {
+                match Vec::<crate::proto::macros::Double>::from_bytes(&sub.payload) {
+                    Ok(v) => enc(svc.write_macros_double(p, a[0], &v)),
+                    Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+                }
+            }
 
             // --- pmc ---
             (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCRNG) => {
@@ -154,6 +190,9 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (crate::proto::packet::CLASS_PMC, crate::proto::pmc::WRPMCRNG) => svc
                 .write_pmc(crate::proto::pmc::PmcRange::from_args(&a), &sub.payload)
                 .map(|()| Vec::new()),
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCINFO) => {
+                enc(svc.pmc_info(a[0] as i16))
+            }
 
             // --- offset ---
 
