@@ -729,18 +729,55 @@ proptest! {
         let v = Value { value, base, exp };
         roundtrip(&v)?;
         prop_assert_eq!(v.to_bytes().len(), 8);
-        if base != 2 {
+        if base == 10 {
             prop_assert_eq!(v.to_decimal(), (value, exp));
         }
     }
 
-    /// A binary record converts to the same number in decimal (to 8 places).
+    /// A binary record converts to the same number in decimal: 9 significant
+    /// digits, rounded at 9 decimal places.
     #[test]
-    fn base2_records_keep_their_value(value in -1_000_000i32..1_000_000, exp in 0i16..12) {
+    fn base2_records_keep_their_value(value in any::<i32>(), exp in -40i16..40) {
         let (m, d) = Value { value, base: 2, exp }.to_decimal();
         let want = f64::from(value) / 2f64.powi(i32::from(exp));
         let got = f64::from(m) / 10f64.powi(i32::from(d));
-        prop_assert!((want - got).abs() <= 0.51e-8 * 10f64.powi(8 - i32::from(d)), "{} {} {}", want, m, d);
+        prop_assert!((want - got).abs() <= 0.51e-9 + want.abs() * 0.51e-8, "{} {} {}", want, m, d);
+        if value != 0 {
+            prop_assert!((100_000_000..1_000_000_000).contains(&m.unsigned_abs()), "{}", m);
+        }
+    }
+
+    /// The oracle's recorded conversions (findings cnc_rdmacro_base2).
+    #[test]
+    fn base2_records_as_fanuc(_x in 0..1) {
+        for ((v, b, e), want) in [
+            ((5, 2, 1), (250000000, 8)),
+            ((5, 2, 0), (500000000, 8)),
+            ((5, 2, -1), (100000000, 7)),
+            ((1, 2, 2), (250000000, 9)),
+            ((-7, 2, 3), (-875000000, 9)),
+            ((5, 0, 3), (625000000, 9)),
+            ((5, 16, 1), (250000000, 8)),
+            ((0, 2, 5), (0, 5)),
+            ((1, 2, 10), (976563000, 12)),
+            ((1, 2, 20), (954000000, 15)),
+            ((1, 2, 24), (600000000, 16)),
+            ((1, 2, 28), (400000000, 17)),
+            ((3, 2, 31), (100000000, 17)),
+            ((1, 2, 30), (931322575, 18)),
+            ((12345, 2, 20), (117731090, 10)),
+            ((1000001, 2, 1), (500000500, 3)),
+            ((999999999, 2, 1), (500000000, 0)),
+            ((1234567891, 2, 0), (123456789, -1)),
+            ((3, 2, -29), (161061274, -1)),
+            ((1, 2, -31), (214748365, -1)),
+            ((3, 2, -40), (329853488, -4)),
+            ((2000000000, 2, -1), (400000000, -1)),
+            ((-1, 0, -1), (-200000000, 8)),
+            ((5, 10, -1), (5, -1)),
+        ] {
+            prop_assert_eq!(Value { value: v, base: b, exp: e }.to_decimal(), want, "{:?}", (v, b, e));
+        }
     }
 
     /// What cnc_wrmacro encodes, the simulator stores and cnc_rdmacror decodes.
