@@ -97,10 +97,12 @@ fn generate_header(root: &Path) -> String {
     let text = String::from_utf8(out).expect("cbindgen wrote UTF-8");
     // Negative constants in brackets, as FANUC writes them: `#define ALL_AXES (-1)`.
     text.lines()
-        .map(|l| match l.strip_prefix("#define ").and_then(|r| r.split_once(" -")) {
-            Some((name, v)) if v.parse::<i64>().is_ok() => format!("#define {name} (-{v})"),
-            _ => l.to_owned(),
-        })
+        .map(
+            |l| match l.strip_prefix("#define ").and_then(|r| r.split_once(" -")) {
+                Some((name, v)) if v.parse::<i64>().is_ok() => format!("#define {name} (-{v})"),
+                _ => l.to_owned(),
+            },
+        )
         .collect::<Vec<_>>()
         .join("\n")
         + "\n"

@@ -194,6 +194,66 @@ typedef struct ODBDIAGNUM {
 } ODBDIAGNUM;
 
 /*
+ cnc_rdmacro: one custom macro variable. The value is
+ `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
+ */
+typedef struct ODBM {
+    /*
+     Variable number.
+     */
+    short datano;
+    short dummy;
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} ODBM;
+
+/*
+ cnc_rdmacroinfo: custom macro variable information.
+ */
+typedef struct ODBMVINF {
+    short use_no1;
+    short use_no2;
+} ODBMVINF;
+
+/*
+ One variable of IODBMR.
+ */
+typedef struct IODBMR_data {
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} IODBMR_data;
+
+/*
+ cnc_rdmacror / cnc_wrmacror: a range of custom macro variables. FANUC's
+ header declares 5 records; callers pass larger buffers for more
+ (`length` = 8 + 8 · count).
+ */
+typedef struct IODBMR {
+    /*
+     First variable number.
+     */
+    short datano_s;
+    short dummy;
+    /*
+     Last variable number.
+     */
+    short datano_e;
+    struct IODBMR_data data[5];
+} IODBMR;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -299,6 +359,84 @@ typedef struct ODBSYS {
     char version[4];
     char axes[2];
 } ODBSYS;
+
+/*
+ pmc_getdtailerr: detail of the last PMC error.
+ */
+typedef struct ODBPMCERR {
+    short err_no;
+    short err_dtno;
+} ODBPMCERR;
+
+/*
+ One area of ODBPMCINF.
+ */
+typedef struct ODBPMCINF_info {
+    /*
+     Address letter ('G', 'F', ...).
+     */
+    char pmc_adr;
+    /*
+     Attribute bits of the area, as the CNC reports them.
+     */
+    char adr_attr;
+    /*
+     First address.
+     */
+    unsigned short top_num;
+    /*
+     Last address.
+     */
+    unsigned short last_num;
+} ODBPMCINF_info;
+
+/*
+ pmc_rdpmcinfo: the PMC areas and their address ranges.
+ */
+typedef struct ODBPMCINF {
+    /*
+     Number of areas in `info`.
+     */
+    short datano;
+    struct ODBPMCINF_info info[64];
+} ODBPMCINF;
+
+/*
+ The data of IODBPMC: bytes, words, longs (4 bytes each), floats or
+ doubles, by the request's data type.
+ */
+typedef union IODBPMC_u {
+    char cdata[5];
+    short idata[5];
+    LONG ldata[5];
+    float fdata[5];
+    double dfdata[5];
+} IODBPMC_u;
+
+/*
+ pmc_rdpmcrng / pmc_wrpmcrng: a range of PMC addresses. FANUC's header
+ declares 5 elements; callers pass larger buffers for more
+ (`length` = 8 + bytes of data).
+ */
+typedef struct IODBPMC {
+    /*
+     Address type: 0 G, 1 F, 2 Y, 3 X, 4 A, 5 R, 6 T, 7 K, 8 C, 9 D, ...
+     */
+    short type_a;
+    /*
+     Data type: 0 byte, 1 word, 2 long (4 bytes), 4 float, 5 double.
+     */
+    short type_d;
+    /*
+     First address (a byte address).
+     */
+    short datano_s;
+    /*
+     Last address (a byte address).
+     */
+    short datano_e;
+    union IODBPMC_u u;
+} IODBPMC;
 
 /*
  FANUC's ULONG: 32 bits on every platform.
@@ -425,6 +563,54 @@ short cnc_rddiaginfo(unsigned short FlibHndl,
 short cnc_rddiagnum(unsigned short FlibHndl, struct ODBDIAGNUM *diagnum);
 
 /*
+ Reads the custom macro variable `number` (common #100.., #500.., system
+ variables): `mcr_val · 10^-dec_val`; a vacant variable reads as
+ mcr_val 0, dec_val -1. `length` must be at least 10 (the l32 ODBM).
+
+ # Safety
+ `macro_` must point to a writable ODBM.
+ */
+short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct ODBM *macro_);
+
+/*
+ Reads how many common variables the CNC has: `use_no1` (#100..),
+ `use_no2` (#500..).
+
+ # Safety
+ `buf` must point to a writable ODBMVINF.
+ */
+short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
+
+/*
+ Reads the custom macro variables `s_no`..`e_no` into `buf->data`
+ (8 bytes per variable, as FANUC's x86-64 library writes them).
+ `length` is the buffer's size: `8 + 8 · count`; no more variables than
+ fit are written. `datano_s`/`datano_e` are set from the request.
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_rdmacror(unsigned short FlibHndl,
+                   short s_no,
+                   short e_no,
+                   short length,
+                   struct IODBMR *buf);
+
+/*
+ Reads `*num` custom macro variables from `s_no` as IEEE doubles into
+ `data`; `*num` becomes the number read. As FANUC's x86-64 library,
+ `s_no` and `*num` are 32-bit (`*num` is read and written as 4 bytes).
+ Requests carry at most 179 variables each; a shorter answer ends the
+ read. No more than the requested `*num` doubles are written (FANUC's
+ library writes whatever the CNC sends). How a CNC marks a vacant
+ variable in this form is not known.
+
+ # Safety
+ `num` must point to a 4-byte count, `data` to `*num` writable doubles.
+ */
+short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
  Reads the numbers and attributes of up to `read_no` parameters from
  `s_number` on, with the previous and next existing numbers. The
  attribute word: bits 0-1 data type (bit, byte, word, 2-word), bit 8
@@ -521,6 +707,39 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
 
 /*
+ Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
+ `length` must be 10; `mcr_val` is taken as 32 bits (FANUC's x86-64
+ library truncates a 64-bit `long` the same way).
+
+ # Safety
+ No pointers.
+ */
+short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_val, short dec_val);
+
+/*
+ Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
+ `buf->data` (8 bytes per variable, l32) in one request. `length` must
+ cover the records (at least `8 · count + 6`); numbers below 100 or a
+ reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
+ all before any traffic.
+
+ # Safety
+ `buf` must point to `length` readable bytes.
+ */
+short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
+
+/*
+ Writes `*num` custom macro variables from `s_no` as IEEE doubles;
+ `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
+ as in FANUC's x86-64 library. Requests carry at most 177 variables; the
+ next is sent only when the CNC wrote the whole previous one.
+
+ # Safety
+ `num` must point to a 4-byte count, `data` to `*num` readable doubles.
+ */
+short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
  Writes a CNC parameter. The parameter's attributes are read first
  (one exchange); `length` must then equal 4 + the size of the values
  (one value, or one per axis of the path for `type` -1), else EW_LENGTH
@@ -532,6 +751,57 @@ short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
  `param` must point to a readable IODBPSD.
  */
 short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
+
+/*
+ The detail of the last PMC error on this handle (pmc_* functions only;
+ cnc_getdtailerr keeps the CNC's).
+
+ # Safety
+ `err` must point to a writable ODBPMCERR.
+ */
+short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
+
+/*
+ Reads the PMC's address areas (letter, attribute, first and last
+ address). At most 64 areas, and no more than the reply holds, are
+ written (FANUC's library trusts the reply's count and can read past its
+ buffer).
+
+ # Safety
+ `buf` must point to a writable ODBPMCINF.
+ */
+short pmc_rdpmcinfo(unsigned short FlibHndl, short adr_type, struct ODBPMCINF *buf);
+
+/*
+ Reads PMC addresses `s_number`..`e_number` (byte addresses) of area
+ `adr_type` (0 G, 1 F, 2 Y, 3 X, 4 A, 5 R, 6 T, 7 K, 8 C, 9 D, ...) as
+ `data_type` elements (0 byte, 1 word, 2 long (4 bytes), 4 float,
+ 5 double) into `buf->u`. `length` is the buffer's size: `8 +` the data
+ bytes. The header is set from the arguments; no more data than the range
+ spans and the buffer holds is written (FANUC's library copies the whole
+ reply).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short pmc_rdpmcrng(unsigned short FlibHndl,
+                   short adr_type,
+                   short data_type,
+                   unsigned short s_number,
+                   unsigned short e_number,
+                   unsigned short length,
+                   struct IODBPMC *buf);
+
+/*
+ Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area
+ `buf->type_a` from `buf->u`, as `buf->type_d` elements (see
+ pmc_rdpmcrng). Sends exactly the bytes the range spans; `length` must
+ cover them (`8 +` bytes), else EW_LENGTH without traffic.
+
+ # Safety
+ `buf` must point to `length` readable bytes.
+ */
+short pmc_wrpmcrng(unsigned short FlibHndl, unsigned short length, struct IODBPMC *buf);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -311,8 +311,14 @@ rust_layouts! {
     ODBDIAGNUM { diag_min, diag_max, total_no }
 
     // --- macros ---
+    ODBM { datano, dummy, mcr_val, dec_val }
+    IODBMR { datano_s, dummy, datano_e, data }
+    ODBMVINF { use_no1, use_no2 }
 
     // --- pmc ---
+    IODBPMC { type_a, type_d, datano_s, datano_e, u }
+    ODBPMCINF { datano, info }
+    ODBPMCERR { err_no, err_dtno }
 
     // --- offset ---
 

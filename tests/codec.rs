@@ -24,6 +24,11 @@ use fwlib32::proto::status::{
 };
 use fwlib32::proto::wire::{DecodeError, Wire, Writer};
 use fwlib32::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
+// --- macros ---
+use fwlib32::proto::macros::{ReadMacros, WriteMacros};
+use fwlib32::proto::value::Value;
+// --- pmc ---
+use fwlib32::proto::pmc::{PmcRange, ReadPmc, WritePmc, swap_elements};
 use proptest::collection::vec;
 use proptest::prelude::*;
 
@@ -104,9 +109,13 @@ const KNOWN: &[&str] = &[
     // --- param ---
 
     // --- macros ---
-
+    "rdmacro",
+    "wrmacro",
+    "rdmacror",
     // --- pmc ---
-
+    "pmc_rdpmcrng",
+    "pmc_wrpmcrng",
+    "pmc_getdtailerr",
     // --- offset ---
 
     // --- tool ---
@@ -190,6 +199,45 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                                 }
                                 "statinfo2" => stamped(&StatInfo::<Status2>::new(), &cx, path),
                                 "rdcncid" => stamped(&rdcncid(), &cx, path),
+                                // --- macros ---
+                                "rdmacro" => {
+                                    let n = num(&args[0]) as i32;
+                                    stamped(&ReadMacros { s: n, e: n }, &cx, path)
+                                }
+                                "rdmacror" => {
+                                    let (s, e) = (num(&args[0]) as i32, num(&args[1]) as i32);
+                                    stamped(&ReadMacros { s, e }, &cx, path)
+                                }
+                                "wrmacro" => {
+                                    let w = WriteMacros {
+                                        s: num(&args[0]) as i32,
+                                        values: vec![(num(&args[2]) as i32, num(&args[3]) as i16)],
+                                    };
+                                    stamped(&w, &cx, path)
+                                }
+                                // --- pmc ---
+                                "pmc_rdpmcrng" => {
+                                    let r = PmcRange {
+                                        adr_type: num(&args[0]) as i16,
+                                        data_type: num(&args[1]) as i16,
+                                        s: num(&args[2]) as u16,
+                                        e: num(&args[3]) as u16,
+                                    };
+                                    stamped(&ReadPmc(r), &cx, path)
+                                }
+                                "pmc_wrpmcrng" => {
+                                    let b = unhex(args[1].strip_prefix("hex:").unwrap());
+                                    let w16 = |i: usize| i16::from_le_bytes([b[i], b[i + 1]]);
+                                    let range = PmcRange {
+                                        adr_type: w16(0),
+                                        data_type: w16(2),
+                                        s: w16(4) as u16,
+                                        e: w16(6) as u16,
+                                    };
+                                    let mut data = b[8..8 + range.span()].to_vec();
+                                    swap_elements(range.data_type, &mut data);
+                                    stamped(&WritePmc { range, data }, &cx, path)
+                                }
                                 w => {
                                     bad.push(format!("{id} call {i}: no request known for `{w}`"));
                                     continue;
@@ -755,5 +803,126 @@ mod param_codec {
             let _ = InfoList::from_bytes(&b);
             let _ = NumRange::from_bytes(&b);
         }
+    }
+}
+
+// --- macros ---
+
+/// A client call answered by the simulator's dispatch, sans-IO.
+fn serve<C: Call>(m: &mut fwlib32::sim::Machine, c: &C) -> fwlib32::error::Result<C::Output> {
+    let cx = Ctx::default();
+    let resp: Vec<RespSub> = stamped(c, &cx, 1)
+        .iter()
+        .map(|s| fwlib32::sim::service::dispatch(m, s))
+        .collect();
+    c.decode(&cx, &resp)
+}
+
+fn machine() -> fwlib32::sim::Machine {
+    fwlib32::sim::Machine::new(fwlib32::sim::Profile::default())
+}
+
+proptest! {
+    #[test]
+    fn value_records_roundtrip(value in any::<i32>(), base in any::<u16>(), exp in any::<i16>()) {
+        let v = Value { value, base, exp };
+        roundtrip(&v)?;
+        prop_assert_eq!(v.to_bytes().len(), 8);
+        if base == 10 {
+            prop_assert_eq!(v.to_decimal(), (value, exp));
+        }
+    }
+
+    /// A binary record converts to the same number in decimal: 9 significant
+    /// digits, rounded at 9 decimal places.
+    #[test]
+    fn base2_records_keep_their_value(value in any::<i32>(), exp in -40i16..40) {
+        let (m, d) = Value { value, base: 2, exp }.to_decimal();
+        let want = f64::from(value) / 2f64.powi(i32::from(exp));
+        let got = f64::from(m) / 10f64.powi(i32::from(d));
+        prop_assert!((want - got).abs() <= 0.51e-9 + want.abs() * 0.51e-8, "{} {} {}", want, m, d);
+        if value != 0 {
+            prop_assert!((100_000_000..1_000_000_000).contains(&m.unsigned_abs()), "{}", m);
+        }
+    }
+
+    /// The oracle's recorded conversions (findings cnc_rdmacro_base2).
+    #[test]
+    fn base2_records_as_fanuc(_x in 0..1) {
+        for ((v, b, e), want) in [
+            ((5, 2, 1), (250000000, 8)),
+            ((5, 2, 0), (500000000, 8)),
+            ((5, 2, -1), (100000000, 7)),
+            ((1, 2, 2), (250000000, 9)),
+            ((-7, 2, 3), (-875000000, 9)),
+            ((5, 0, 3), (625000000, 9)),
+            ((5, 16, 1), (250000000, 8)),
+            ((0, 2, 5), (0, 5)),
+            ((1, 2, 10), (976563000, 12)),
+            ((1, 2, 20), (954000000, 15)),
+            ((1, 2, 24), (600000000, 16)),
+            ((1, 2, 28), (400000000, 17)),
+            ((3, 2, 31), (100000000, 17)),
+            ((1, 2, 30), (931322575, 18)),
+            ((12345, 2, 20), (117731090, 10)),
+            ((1000001, 2, 1), (500000500, 3)),
+            ((999999999, 2, 1), (500000000, 0)),
+            ((1234567891, 2, 0), (123456789, -1)),
+            ((3, 2, -29), (161061274, -1)),
+            ((1, 2, -31), (214748365, -1)),
+            ((3, 2, -40), (329853488, -4)),
+            ((2000000000, 2, -1), (400000000, -1)),
+            ((-1, 0, -1), (-200000000, 8)),
+            ((5, 10, -1), (5, -1)),
+        ] {
+            prop_assert_eq!(Value { value: v, base: b, exp: e }.to_decimal(), want, "{:?}", (v, b, e));
+        }
+    }
+
+    /// What cnc_wrmacro encodes, the simulator stores and cnc_rdmacror decodes.
+    #[test]
+    fn macros_write_then_read(s in 100i32..195, vals in vec((any::<i32>(), 0i16..=9), 1..5)) {
+        let mut m = machine();
+        let w = WriteMacros { s, values: vals.clone() };
+        prop_assert_eq!(w.request(&Ctx::default()).len(), 1, "a write is one subpacket");
+        serve(&mut m, &w).unwrap();
+        let back = serve(&mut m, &ReadMacros { s, e: w.e() }).unwrap();
+        let got: Vec<(i32, i16)> = back.iter().map(Value::to_decimal).collect();
+        prop_assert_eq!(got, vals);
+    }
+
+    #[test]
+    fn macro_decoders_never_panic(b in vec(any::<u8>(), 0..100)) {
+        let _ = Value::from_bytes(&b);
+        let _ = Vec::<Value>::from_bytes(&b);
+    }
+}
+
+// --- pmc ---
+
+proptest! {
+    /// Element swapping is its own inverse (reads and writes share it).
+    #[test]
+    fn pmc_swap_is_an_involution(t in prop_oneof![Just(0i16), Just(1), Just(2), Just(4), Just(5)], b in vec(any::<u8>(), 0..64)) {
+        let mut x = b.clone();
+        swap_elements(t, &mut x);
+        swap_elements(t, &mut x);
+        prop_assert_eq!(x, b);
+    }
+
+    /// What pmc_wrpmcrng encodes, the simulator stores and pmc_rdpmcrng
+    /// decodes; the same bytes read back as bytes.
+    #[test]
+    fn pmc_write_then_read(words in vec(any::<u16>(), 1..20), s in 0u16..1000) {
+        let mut m = machine();
+        let s = s * 2;
+        let range = PmcRange { adr_type: 5, data_type: 1, s, e: s + 2 * words.len() as u16 - 1 };
+        let data: Vec<u8> = words.iter().flat_map(|w| w.to_be_bytes()).collect();
+        let w = WritePmc { range, data: data.clone() };
+        prop_assert_eq!(w.request(&Ctx::default()).len(), 1, "a write is one subpacket");
+        serve(&mut m, &w).unwrap();
+        prop_assert_eq!(serve(&mut m, &ReadPmc(range)).unwrap(), data.clone());
+        let bytes = PmcRange { data_type: 0, ..range };
+        prop_assert_eq!(serve(&mut m, &ReadPmc(bytes)).unwrap(), data);
     }
 }

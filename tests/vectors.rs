@@ -216,6 +216,14 @@ const DEVIATIONS: &[Deviation] = &[
         reason: "(d) timing: settimeout(0) waits for a late answer; (a) hdck = tmmode = 0 where FANUC wrote garbage",
         treatment: Dedicated("timeout_0_waits_for_a_late_answer"),
     },
+    // --- macros ---
+    Deviation {
+        function: "cnc_rdmacro",
+        case: "v3_error",
+        reason: "(f) on a CNC error (3) FANUC still writes datano and a zeroed mcr_val/dec_val; we return the same 3 \
+                 and write nothing (output structs are written only on EW_OK)",
+        treatment: Differs(&[NoOutput(0)]),
+    },
 ];
 
 fn deviation(case: &Case) -> Option<&'static Deviation> {
@@ -308,14 +316,18 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("diagnoss", "cnc_diagnoss", Some(w_diagnoss)),
     ("rddiaginfo", "cnc_rddiaginfo", Some(w_rddiaginfo)),
     // --- macros ---
-    ("rdmacro", "cnc_rdmacro", None),
-    ("wrmacro", "cnc_wrmacro", None),
-    ("rdmacror", "cnc_rdmacror", None),
-    ("rdmacror2", "cnc_rdmacror2", None),
+    ("rdmacro", "cnc_rdmacro", Some(w_rdmacro)),
+    ("wrmacro", "cnc_wrmacro", Some(w_wrmacro)),
+    ("rdmacror", "cnc_rdmacror", Some(w_rdmacror)),
+    ("rdmacror2", "cnc_rdmacror2", Some(w_rdmacror2)),
     // --- pmc ---
-    ("pmc_rdpmcrng", "pmc_rdpmcrng", None),
-    ("pmc_wrpmcrng", "pmc_wrpmcrng", None),
-    ("pmc_getdtailerr", "pmc_getdtailerr", None),
+    ("pmc_rdpmcrng", "pmc_rdpmcrng", Some(w_pmc_rdpmcrng)),
+    ("pmc_wrpmcrng", "pmc_wrpmcrng", Some(w_pmc_wrpmcrng)),
+    (
+        "pmc_getdtailerr",
+        "pmc_getdtailerr",
+        Some(w_pmc_getdtailerr),
+    ),
     // --- offset ---
     ("rdtofs", "cnc_rdtofs", None),
     ("rdzofs", "cnc_rdzofs", None),
@@ -1320,7 +1332,67 @@ fn w_rddiaginfo(p: &mut Probe, a: &[String]) -> Outcome {
 
 // --- macros ---
 
+fn w_rdmacro(p: &mut Probe, a: &[String]) -> Outcome {
+    let (n, len) = (num(a, 0) as c_short, num(a, 1) as c_short);
+    with_out(p, |h, b| unsafe { cnc_rdmacro(h, n, len, b.cast()) })
+}
+
+fn w_wrmacro(p: &mut Probe, a: &[String]) -> Outcome {
+    let (n, len) = (num(a, 0) as c_short, num(a, 1) as c_short);
+    let (v, d) = (num(a, 2) as c_long, num(a, 3) as c_short);
+    Outcome::ret(unsafe { cnc_wrmacro(p.h(), n, len, v, d) })
+}
+
+fn w_rdmacror(p: &mut Probe, a: &[String]) -> Outcome {
+    let (s, e, len) = (
+        num(a, 0) as c_short,
+        num(a, 1) as c_short,
+        num(a, 2) as c_short,
+    );
+    with_out(p, |h, b| unsafe { cnc_rdmacror(h, s, e, len, b.cast()) })
+}
+
+/// `rdmacror2 s num`: `*num` starts at the given count and is reported back.
+fn w_rdmacror2(p: &mut Probe, a: &[String]) -> Outcome {
+    let s = num(a, 0) as c_ulong;
+    let mut n = [num(a, 1) as u32, 0xCCCC_CCCC];
+    let mut o = with_out(p, |h, b| unsafe {
+        cnc_rdmacror2(h, s, n.as_mut_ptr().cast(), b.cast())
+    });
+    o.fields.push(("num", i64::from(n[0])));
+    o
+}
+
 // --- pmc ---
+
+fn w_pmc_rdpmcrng(p: &mut Probe, a: &[String]) -> Outcome {
+    let (adr, dt) = (num(a, 0) as c_short, num(a, 1) as c_short);
+    let (s, e, len) = (
+        num(a, 2) as c_ushort,
+        num(a, 3) as c_ushort,
+        num(a, 4) as c_ushort,
+    );
+    with_out(p, |h, b| unsafe {
+        pmc_rdpmcrng(h, adr, dt, s, e, len, b.cast())
+    })
+}
+
+/// `pmc_wrpmcrng length hex:<buffer>`: the buffer holds the given bytes.
+fn w_pmc_wrpmcrng(p: &mut Probe, a: &[String]) -> Outcome {
+    let len = num(a, 0) as c_ushort;
+    let mut b = buf();
+    let data = a[1].strip_prefix("hex:").expect("hex: buffer");
+    let bytes: Vec<u8> = (0..data.len())
+        .step_by(2)
+        .map(|i| u8::from_str_radix(&data[i..i + 2], 16).unwrap())
+        .collect();
+    b[..bytes.len()].copy_from_slice(&bytes);
+    Outcome::ret(unsafe { pmc_wrpmcrng(p.h(), len, b.as_mut_ptr().cast()) })
+}
+
+fn w_pmc_getdtailerr(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { pmc_getdtailerr(h, b.cast()) })
+}
 
 // --- offset ---
 

@@ -26,6 +26,8 @@ pub struct HandleState {
     pub detail: (i16, i16),
     /// Once a call failed with EW_SOCKET the detail no longer changes (FANUC).
     pub detail_frozen: bool,
+    /// (err_no, err_dtno) for pmc_getdtailerr, kept apart from the CNC's.
+    pub pmc_detail: (i16, i16),
 }
 
 pub struct Handle {
@@ -63,6 +65,7 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
                 timeout,
                 detail: (0, 0),
                 detail_frozen: false,
+                pmc_detail: (0, 0),
             }),
         }),
     );

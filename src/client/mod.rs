@@ -12,6 +12,8 @@ use handles::Handle;
 
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
 const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
+/// The same for pmc_getdtailerr (SPEC.md §6.2, from FANUC's code).
+const PMC_DETAIL_CODES: [i16; 6] = [3, 5, 8, 13, 17, 18];
 
 impl Handle {
     /// Runs a call on this handle's pair with its path and timeout, and
@@ -55,5 +57,31 @@ impl Handle {
             Error::Protocol { detail, .. } => s.detail = *detail,
             _ => {}
         }
+    }
+
+    /// Runs a PMC call (pmc_*): as [`Handle::call`], but the error detail
+    /// goes to pmc_getdtailerr's words, not cnc_getdtailerr's.
+    pub fn call_pmc<C: Call>(&self, c: &C) -> Result<C::Output> {
+        let (path, timeout) = {
+            let s = self.state.lock();
+            (s.path, s.timeout)
+        };
+        let r = self.pair.call(c, path, timeout);
+        let mut s = self.state.lock();
+        match &r {
+            Ok(_) => s.pmc_detail = (0, 0),
+            Err(Error::Cnc {
+                code,
+                detail1,
+                detail2,
+            }) if PMC_DETAIL_CODES.contains(code) => {
+                s.pmc_detail = (*detail1 as i16, *detail2 as i16)
+            }
+            Err(Error::Socket { detail, .. } | Error::Protocol { detail, .. }) => {
+                s.pmc_detail = *detail
+            }
+            Err(_) => {}
+        }
+        r
     }
 }

@@ -1,1 +1,331 @@
 //! Custom macro variables.
+
+use super::put;
+use super::{ffi_boundary, nonnull};
+use crate::client::handles;
+use crate::error::{Error, Result};
+use crate::ew::{EW_DATA, EW_LENGTH, EW_NUMBER};
+use crate::proto::macros::{
+    DEC_FORBIDDEN, Double, FIRST_WRITABLE, RDMACROR2_CHUNK, ReadMacros, ReadMacrosDouble,
+    WRMACROR2_CHUNK, WriteMacros, WriteMacrosDouble, rdmacroinfo,
+};
+use crate::proto::value::Value;
+use crate::types::{IODBMR, IODBMR_data, ODBM, ODBMVINF};
+use std::os::raw::{c_long, c_short, c_ulong, c_ushort};
+use std::ptr::addr_of_mut;
+
+/// Bytes of ODBM FANUC's library requires (datano .. dec_val, l32).
+const ODBM_LEN: c_short = 10;
+/// Bytes of IODBMR before the records, and per record (l32).
+const IODBMR_HEAD: usize = 8;
+const IODBMR_REC: usize = std::mem::size_of::<IODBMR_data>();
+
+/// Writes one field of a caller's structure.
+///
+/// # Safety
+/// `p` must be valid for writes.
+unsafe fn set<T>(p: *mut T, v: T) {
+    unsafe { p.write_unaligned(v) }
+}
+
+/// Reads the custom macro variable `number` (common #100.., #500.., system
+/// variables): `mcr_val · 10^-dec_val`; a vacant variable reads as
+/// mcr_val 0, dec_val -1. `length` must be at least 10 (the l32 ODBM).
+///
+/// # Safety
+/// `macro_` must point to a writable ODBM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdmacro(
+    FlibHndl: c_ushort,
+    number: c_short,
+    length: c_short,
+    macro_: *mut ODBM,
+) -> c_short {
+    ffi_boundary!("cnc_rdmacro", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(macro_)?;
+        if length < ODBM_LEN {
+            return Err(Error::length());
+        }
+        let n = i32::from(number);
+        let recs = h.call(&ReadMacros { s: n, e: n })?;
+        let (mcr_val, dec_val) = first(&recs)?.to_decimal();
+        // FANUC writes datano, mcr_val, dec_val; `dummy` stays as it was.
+        unsafe {
+            set(addr_of_mut!((*out).datano), number);
+            set(addr_of_mut!((*out).mcr_val), mcr_val);
+            set(addr_of_mut!((*out).dec_val), dec_val);
+        }
+        Ok(())
+    })
+}
+
+fn first(recs: &[Value]) -> Result<&Value> {
+    recs.first().ok_or_else(|| {
+        Error::protocol(
+            crate::error::detail::SHORT_PAYLOAD,
+            "macro reply carries no record",
+        )
+    })
+}
+
+/// Checks cnc_wrmacro / cnc_wrmacror make before any traffic (SPEC.md §5.2):
+/// local variables (#1..#33, any number below 100) cannot be written
+/// (EW_NUMBER), dec_val 32767 is refused (EW_DATA).
+fn check_write(number: c_short, dec_val: c_short) -> Result<()> {
+    if number < FIRST_WRITABLE {
+        return Err(Error::local(EW_NUMBER, "local variables cannot be written"));
+    }
+    check_dec(dec_val)
+}
+
+/// FANUC's library refuses dec_val 32767 (cnc_wrmacro, cnc_wrmacror) and
+/// -32768 / -13108 (cnc_wrmacror) with EW_DATA, accepts -1 (vacant), 3, 16;
+/// the exact range is not known: we refuse 32767 and anything below -1.
+fn check_dec(dec_val: c_short) -> Result<()> {
+    if dec_val == DEC_FORBIDDEN || dec_val < -1 {
+        return Err(Error::local(
+            EW_DATA,
+            "dec_val is not a number of decimal places",
+        ));
+    }
+    Ok(())
+}
+
+/// Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
+/// `length` must be 10; `mcr_val` is taken as 32 bits (FANUC's x86-64
+/// library truncates a 64-bit `long` the same way).
+///
+/// # Safety
+/// No pointers.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrmacro(
+    FlibHndl: c_ushort,
+    number: c_short,
+    length: c_short,
+    mcr_val: c_long,
+    dec_val: c_short,
+) -> c_short {
+    ffi_boundary!("cnc_wrmacro", {
+        let h = handles::get(FlibHndl)?;
+        if length != ODBM_LEN {
+            return Err(Error::local(EW_LENGTH, "length must be 10"));
+        }
+        check_write(number, dec_val)?;
+        h.call(&WriteMacros {
+            s: i32::from(number),
+            values: vec![(mcr_val as i32, dec_val)],
+        })
+    })
+}
+
+/// Reads the custom macro variables `s_no`..`e_no` into `buf->data`
+/// (8 bytes per variable, as FANUC's x86-64 library writes them).
+/// `length` is the buffer's size: `8 + 8 · count`; no more variables than
+/// fit are written. `datano_s`/`datano_e` are set from the request.
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdmacror(
+    FlibHndl: c_ushort,
+    s_no: c_short,
+    e_no: c_short,
+    length: c_short,
+    buf: *mut IODBMR,
+) -> c_short {
+    ffi_boundary!("cnc_rdmacror", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(buf)?;
+        let room = (length.max(0) as usize).checked_sub(IODBMR_HEAD);
+        let Some(room) = room else {
+            return Err(Error::length());
+        };
+        let recs = h.call(&ReadMacros {
+            s: i32::from(s_no),
+            e: i32::from(e_no),
+        })?;
+        let want = (i32::from(e_no) - i32::from(s_no) + 1).max(0) as usize;
+        let n = recs.len().min(want).min(room / IODBMR_REC);
+        unsafe {
+            set(addr_of_mut!((*out).datano_s), s_no);
+            set(addr_of_mut!((*out).datano_e), e_no);
+            let data = addr_of_mut!((*out).data).cast::<IODBMR_data>();
+            for (i, r) in recs[..n].iter().enumerate() {
+                let (v, d) = r.to_decimal();
+                let p = data.add(i);
+                set(addr_of_mut!((*p).mcr_val), v);
+                set(addr_of_mut!((*p).dec_val), d);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
+/// `buf->data` (8 bytes per variable, l32) in one request. `length` must
+/// cover the records (at least `8 · count + 6`); numbers below 100 or a
+/// reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
+/// all before any traffic.
+///
+/// # Safety
+/// `buf` must point to `length` readable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrmacror(
+    FlibHndl: c_ushort,
+    length: c_short,
+    buf: *mut IODBMR,
+) -> c_short {
+    ffi_boundary!("cnc_wrmacror", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(buf)?;
+        let (s, e) = unsafe {
+            (
+                addr_of_mut!((*inp).datano_s).read_unaligned(),
+                addr_of_mut!((*inp).datano_e).read_unaligned(),
+            )
+        };
+        if s < FIRST_WRITABLE || e < s {
+            return Err(Error::local(
+                EW_NUMBER,
+                "variables below #100 or a reversed range",
+            ));
+        }
+        let n = (e - s) as usize + 1;
+        // FANUC's library requires the last dec_val to lie within `length`.
+        if (length.max(0) as usize) < IODBMR_REC * n + 6 {
+            return Err(Error::length());
+        }
+        let data = unsafe { addr_of_mut!((*inp).data).cast::<IODBMR_data>() };
+        let mut values = Vec::with_capacity(n);
+        for i in 0..n {
+            let (v, d) = unsafe {
+                let p = data.add(i);
+                (
+                    addr_of_mut!((*p).mcr_val).read_unaligned(),
+                    addr_of_mut!((*p).dec_val).read_unaligned(),
+                )
+            };
+            check_dec(d)?;
+            values.push((v, d));
+        }
+        h.call(&WriteMacros {
+            s: i32::from(s),
+            values,
+        })
+    })
+}
+
+/// Reads how many common variables the CNC has: `use_no1` (#100..),
+/// `use_no2` (#500..).
+///
+/// # Safety
+/// `buf` must point to a writable ODBMVINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdmacroinfo(FlibHndl: c_ushort, buf: *mut ODBMVINF) -> c_short {
+    ffi_boundary!("cnc_rdmacroinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(buf)?;
+        let i = h.call(&rdmacroinfo())?;
+        unsafe {
+            put(
+                out,
+                ODBMVINF {
+                    use_no1: i.use_no1 as c_short,
+                    use_no2: i.use_no2 as c_short,
+                },
+            )
+        };
+        Ok(())
+    })
+}
+
+/// Reads `*num` custom macro variables from `s_no` as IEEE doubles into
+/// `data`; `*num` becomes the number read. As FANUC's x86-64 library,
+/// `s_no` and `*num` are 32-bit (`*num` is read and written as 4 bytes).
+/// Requests carry at most 179 variables each; a shorter answer ends the
+/// read. No more than the requested `*num` doubles are written (FANUC's
+/// library writes whatever the CNC sends). How a CNC marks a vacant
+/// variable in this form is not known.
+///
+/// # Safety
+/// `num` must point to a 4-byte count, `data` to `*num` writable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdmacror2(
+    FlibHndl: c_ushort,
+    s_no: c_ulong,
+    num: *mut c_ulong,
+    data: *mut f64,
+) -> c_short {
+    ffi_boundary!("cnc_rdmacror2", {
+        let h = handles::get(FlibHndl)?;
+        let num = nonnull(num)?.cast::<u32>();
+        let data = nonnull(data)?;
+        let want = unsafe { num.read_unaligned() };
+        if want == 0 {
+            return Err(Error::length());
+        }
+        let mut got: Vec<f64> = Vec::new();
+        let mut s = s_no as u32;
+        while (got.len() as u32) < want {
+            let n = (want - got.len() as u32).min(RDMACROR2_CHUNK);
+            let part = h.call(&ReadMacrosDouble { s, n })?;
+            let full = part.len() as u32 >= n;
+            got.extend(part.iter().take(n as usize).map(|d| d.0));
+            if !full {
+                break;
+            }
+            s = s.wrapping_add(n);
+        }
+        unsafe {
+            for (i, v) in got.iter().enumerate() {
+                put(data.add(i), *v);
+            }
+            put(num, got.len() as u32);
+        }
+        Ok(())
+    })
+}
+
+/// Writes `*num` custom macro variables from `s_no` as IEEE doubles;
+/// `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
+/// as in FANUC's x86-64 library. Requests carry at most 177 variables; the
+/// next is sent only when the CNC wrote the whole previous one.
+///
+/// # Safety
+/// `num` must point to a 4-byte count, `data` to `*num` readable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrmacror2(
+    FlibHndl: c_ushort,
+    s_no: c_ulong,
+    num: *mut c_ulong,
+    data: *mut f64,
+) -> c_short {
+    ffi_boundary!("cnc_wrmacror2", {
+        let h = handles::get(FlibHndl)?;
+        let num = nonnull(num)?.cast::<u32>();
+        let data = nonnull(data)?;
+        let want = unsafe { num.read_unaligned() } as usize;
+        if want == 0 {
+            return Err(Error::length());
+        }
+        let values: Vec<Double> = (0..want)
+            .map(|i| Double(unsafe { data.add(i).read_unaligned() }))
+            .collect();
+        let mut s = s_no as u32;
+        let mut written: u32 = 0;
+        for chunk in values.chunks(WRMACROR2_CHUNK as usize) {
+            let n = h.call(&WriteMacrosDouble {
+                s,
+                values: chunk.to_vec(),
+            })?;
+            written = written.wrapping_add(n as u32);
+            if (n.max(0) as usize) < chunk.len() {
+                break;
+            }
+            s = s.wrapping_add(chunk.len() as u32);
+        }
+        unsafe { put(num, written) };
+        Ok(())
+    })
+}

@@ -1,1 +1,159 @@
 //! PMC areas.
+
+use super::{ffi_boundary, nonnull, put};
+use crate::client::handles;
+use crate::error::{Error, Result};
+use crate::ew::EW_LENGTH;
+use crate::proto::pmc::{
+    PMCINFO_MAX, PmcRange, ReadPmc, WritePmc, elem_size, rdpmcinfo, swap_elements,
+};
+use crate::types::{IODBPMC, ODBPMCERR, ODBPMCINF, ODBPMCINF_info};
+use std::os::raw::c_char;
+use std::os::raw::{c_short, c_ushort};
+use std::ptr::addr_of_mut;
+
+/// Bytes of IODBPMC before the data.
+const HEAD: usize = 8;
+
+/// Data bytes a buffer of `length` bytes holds.
+fn room(length: c_ushort) -> Result<usize> {
+    (length as usize).checked_sub(HEAD).ok_or(Error::local(
+        EW_LENGTH,
+        "length is smaller than the IODBPMC header",
+    ))
+}
+
+/// Reads PMC addresses `s_number`..`e_number` (byte addresses) of area
+/// `adr_type` (0 G, 1 F, 2 Y, 3 X, 4 A, 5 R, 6 T, 7 K, 8 C, 9 D, ...) as
+/// `data_type` elements (0 byte, 1 word, 2 long (4 bytes), 4 float,
+/// 5 double) into `buf->u`. `length` is the buffer's size: `8 +` the data
+/// bytes. The header is set from the arguments; no more data than the range
+/// spans and the buffer holds is written (FANUC's library copies the whole
+/// reply).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_rdpmcrng(
+    FlibHndl: c_ushort,
+    adr_type: c_short,
+    data_type: c_short,
+    s_number: c_ushort,
+    e_number: c_ushort,
+    length: c_ushort,
+    buf: *mut IODBPMC,
+) -> c_short {
+    ffi_boundary!("pmc_rdpmcrng", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(buf)?;
+        let room = room(length)?;
+        let range = PmcRange {
+            adr_type,
+            data_type,
+            s: s_number,
+            e: e_number,
+        };
+        let mut data = h.call_pmc(&ReadPmc(range))?;
+        let size = elem_size(data_type).unwrap_or(1);
+        let n = data.len().min(range.span()).min(room) / size * size;
+        data.truncate(n);
+        swap_elements(data_type, &mut data);
+        unsafe {
+            put(addr_of_mut!((*out).type_a), adr_type);
+            put(addr_of_mut!((*out).type_d), data_type);
+            put(addr_of_mut!((*out).datano_s), s_number as c_short);
+            put(addr_of_mut!((*out).datano_e), e_number as c_short);
+            let dst = addr_of_mut!((*out).u).cast::<u8>();
+            std::ptr::copy_nonoverlapping(data.as_ptr(), dst, n);
+        }
+        Ok(())
+    })
+}
+
+/// Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area
+/// `buf->type_a` from `buf->u`, as `buf->type_d` elements (see
+/// pmc_rdpmcrng). Sends exactly the bytes the range spans; `length` must
+/// cover them (`8 +` bytes), else EW_LENGTH without traffic.
+///
+/// # Safety
+/// `buf` must point to `length` readable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_wrpmcrng(
+    FlibHndl: c_ushort,
+    length: c_ushort,
+    buf: *mut IODBPMC,
+) -> c_short {
+    ffi_boundary!("pmc_wrpmcrng", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(buf)?;
+        let room = room(length)?;
+        let (range, data) = unsafe {
+            let range = PmcRange {
+                adr_type: addr_of_mut!((*inp).type_a).read_unaligned(),
+                data_type: addr_of_mut!((*inp).type_d).read_unaligned(),
+                s: addr_of_mut!((*inp).datano_s).read_unaligned() as u16,
+                e: addr_of_mut!((*inp).datano_e).read_unaligned() as u16,
+            };
+            let n = range.span();
+            if n > room {
+                return Err(Error::local(EW_LENGTH, "length does not cover the range"));
+            }
+            let src = addr_of_mut!((*inp).u).cast::<u8>();
+            (range, std::slice::from_raw_parts(src, n).to_vec())
+        };
+        let mut data = data;
+        swap_elements(range.data_type, &mut data);
+        h.call_pmc(&WritePmc { range, data })
+    })
+}
+
+/// The detail of the last PMC error on this handle (pmc_* functions only;
+/// cnc_getdtailerr keeps the CNC's).
+///
+/// # Safety
+/// `err` must point to a writable ODBPMCERR.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_getdtailerr(FlibHndl: c_ushort, err: *mut ODBPMCERR) -> c_short {
+    ffi_boundary!("pmc_getdtailerr", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(err)?;
+        let (err_no, err_dtno) = h.state.lock().pmc_detail;
+        unsafe { put(out, ODBPMCERR { err_no, err_dtno }) };
+        Ok(())
+    })
+}
+
+/// Reads the PMC's address areas (letter, attribute, first and last
+/// address). At most 64 areas, and no more than the reply holds, are
+/// written (FANUC's library trusts the reply's count and can read past its
+/// buffer).
+///
+/// # Safety
+/// `buf` must point to a writable ODBPMCINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_rdpmcinfo(
+    FlibHndl: c_ushort,
+    adr_type: c_short,
+    buf: *mut ODBPMCINF,
+) -> c_short {
+    ffi_boundary!("pmc_rdpmcinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(buf)?;
+        let info = h.call_pmc(&rdpmcinfo(adr_type))?;
+        let n = info.areas.len().min(PMCINFO_MAX);
+        unsafe {
+            put(addr_of_mut!((*out).datano), n as c_short);
+            let dst = addr_of_mut!((*out).info).cast::<ODBPMCINF_info>();
+            for (i, a) in info.areas[..n].iter().enumerate() {
+                let rec = ODBPMCINF_info {
+                    pmc_adr: a.adr as u8 as c_char,
+                    adr_attr: a.attr as u8 as c_char,
+                    top_num: a.top as c_ushort,
+                    last_num: a.last as c_ushort,
+                };
+                put(dst.add(i), rec);
+            }
+        }
+        Ok(())
+    })
+}

@@ -1,1 +1,155 @@
-//! Custom macro variables.
+//! Custom macro variables (SPEC.md §5.2): read and write 8-byte value
+//! records ([`Value`]) with command 0x0015 / 0x0016.
+
+use super::call::{Call, Ctx, payload, sub};
+use super::open::CncClass;
+use super::packet::{ReqSub, RespSub};
+use super::value::{BASE_2, BASE_10, Value};
+use super::wire::Wire;
+use crate::error::Result;
+
+/// Read custom macro variables s..e: args (s, e); payload: one record each.
+pub const RDMACRO: u16 = 0x0015;
+/// Write custom macro variables: args (s, e, 0, 0, payload length) + records.
+pub const WRMACRO: u16 = 0x0016;
+
+/// Decimal places of a vacant (`<null>`) variable, as CNCs report it.
+pub const VACANT_DEC: i16 = -1;
+/// `dec_val` FANUC's library refuses locally with EW_DATA.
+pub const DEC_FORBIDDEN: i16 = 32767;
+/// The lowest number cnc_wrmacro sends: #1..#33 are local variables.
+pub const FIRST_WRITABLE: i16 = 100;
+
+/// cnc_rdmacro / cnc_rdmacror: variables `s..=e` as records.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ReadMacros {
+    pub s: i32,
+    pub e: i32,
+}
+
+impl Call for ReadMacros {
+    type Output = Vec<Value>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(RDMACRO, &[self.s, self.e])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Value>> {
+        payload(resp, 0)
+    }
+}
+
+/// cnc_wrmacro / cnc_wrmacror: variables `s..` = `mcr_val · 10^-dec_val`,
+/// one subpacket. The records are the exact inverse of [`ReadMacros`]'
+/// reply: a 30i-class CNC gets base-10 records; FANUC's library sends the
+/// 16i class the same digits and decimals with base word 2 (SPEC.md §5.2).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct WriteMacros {
+    pub s: i32,
+    /// (mcr_val, dec_val) per variable.
+    pub values: Vec<(i32, i16)>,
+}
+
+impl WriteMacros {
+    pub fn e(&self) -> i32 {
+        self.s + self.values.len().max(1) as i32 - 1
+    }
+
+    /// The records sent to a CNC of `cx`'s class.
+    pub fn records(&self, cx: &Ctx) -> Vec<Value> {
+        let base = match cx.class {
+            CncClass::Series16 { .. } => BASE_2,
+            CncClass::Series30 => BASE_10,
+        };
+        self.values
+            .iter()
+            .map(|&(value, exp)| Value { value, base, exp })
+            .collect()
+    }
+}
+
+impl Call for WriteMacros {
+    type Output = ();
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(WRMACRO, &[self.s, self.e()]).with_payload(self.records(cx).to_bytes())]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        sub(resp, 0).map(|_| ())
+    }
+}
+
+/// cnc_rdmacroinfo: (1,0x0017), payload 2 × i32 (low 16 bits used).
+pub const RDMACROINFO: u16 = 0x0017;
+/// cnc_rdmacror2: (1,0x00a7)[s, n], payload n IEEE doubles big-endian.
+pub const RDMACROR2: u16 = 0x00a7;
+/// cnc_wrmacror2: (1,0x00a8)[s, 0, 0, 0, 8n] + n doubles; reply i32 count.
+pub const WRMACROR2: u16 = 0x00a8;
+/// Most doubles FANUC's library asks for in one cnc_rdmacror2 request.
+pub const RDMACROR2_CHUNK: u32 = 179;
+/// Most doubles FANUC's library sends in one cnc_wrmacror2 request.
+pub const WRMACROR2_CHUNK: u32 = 177;
+
+crate::wire_struct! {
+    /// Payload of 0x0017: variable counts (only the low 16 bits reach ODBMVINF).
+    pub struct MacroInfo {
+        pub use_no1: i32,
+        pub use_no2: i32,
+    }
+}
+
+pub fn rdmacroinfo() -> super::call::Single<MacroInfo> {
+    super::call::Single::new(ReqSub::cnc(RDMACROINFO, &[]))
+}
+
+/// A big-endian IEEE double: the element of the rdmacror2/wrmacror2
+/// payloads (bit-exact both ways, NaN included).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Double(pub f64);
+
+impl PartialEq for Double {
+    fn eq(&self, o: &Double) -> bool {
+        self.0.to_bits() == o.0.to_bits()
+    }
+}
+
+impl Wire for Double {
+    fn encode(&self, w: &mut super::wire::Writer) {
+        w.bytes(&self.0.to_bits().to_be_bytes());
+    }
+    fn decode(r: &mut super::wire::Reader<'_>) -> Result<Self, super::wire::DecodeError> {
+        Ok(Double(f64::from_bits(u64::from_be_bytes(r.array()?))))
+    }
+}
+
+/// One cnc_rdmacror2 request: `n` variables from `s`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ReadMacrosDouble {
+    pub s: u32,
+    pub n: u32,
+}
+
+impl Call for ReadMacrosDouble {
+    type Output = Vec<Double>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(RDMACROR2, &[self.s as i32, self.n as i32])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Double>> {
+        payload(resp, 0)
+    }
+}
+
+/// One cnc_wrmacror2 request: variables from `s`; the reply is the count
+/// written. The payload is exactly what [`ReadMacrosDouble`] decodes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WriteMacrosDouble {
+    pub s: u32,
+    pub values: Vec<Double>,
+}
+
+impl Call for WriteMacrosDouble {
+    type Output = i32;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(WRMACROR2, &[self.s as i32]).with_payload(self.values.to_bytes())]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<i32> {
+        payload(resp, 0)
+    }
+}

@@ -28,3 +28,52 @@ impl Value {
         }
     }
 }
+
+impl Value {
+    /// The record as decimal digits and decimal places (`digits · 10^-dec`),
+    /// as FANUC's library writes it into `mcr_val` / `dec_val` (oracle
+    /// finding cnc_rdmacro_base2, vector cnc_rdmacror `v3_base2_record`):
+    ///
+    /// * base 10: a plain copy;
+    /// * any other base is binary, `x = value · 2^-exp`; value 0 gives
+    ///   (0, exp) unchanged;
+    /// * otherwise x is rounded to 9 decimal places (half away from zero,
+    ///   when |x| ≥ 1e-9) and written with a 9-digit mantissa
+    ///   (10^8 ≤ |digits| < 10^9, trailing zeros added): 5·2^-1 → 250000000
+    ///   with 8 decimals; values of 10^9 and more keep 9 significant digits
+    ///   with negative decimals. Below 1e-9, FANUC's last digit may differ by
+    ///   one (its own floating-point rounding); beyond f64's range (exponents
+    ///   below about -1000) it was not probed: we give ±999999999 · 10^300.
+    pub fn to_decimal(&self) -> (i32, i16) {
+        if self.base != BASE_10 {
+            return binary_to_decimal(self.value, self.exp);
+        }
+        (self.value, self.exp)
+    }
+}
+
+fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
+    if value == 0 {
+        return (0, exp);
+    }
+    let x = f64::from(value) * 2f64.powi(-i32::from(exp));
+    if !x.is_finite() {
+        return (999_999_999 * value.signum(), -300);
+    }
+    let x = if x.abs() >= 1e-9 && x.abs() < 1e9 {
+        (x * 1e9).round() / 1e9
+    } else {
+        x
+    };
+    let mut dec = 8 - x.abs().log10().floor() as i32;
+    let digits = |dec: i32| (x * 10f64.powi(dec)).round();
+    let mut m = digits(dec);
+    if m.abs() >= 1e9 {
+        dec -= 1;
+        m = digits(dec);
+    } else if m.abs() < 1e8 {
+        dec += 1;
+        m = digits(dec);
+    }
+    (m as i32, dec as i16)
+}

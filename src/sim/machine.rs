@@ -213,8 +213,54 @@ impl CncService for Machine {
     }
 
     // --- macros ---
+    fn read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<crate::proto::value::Value>> {
+        self.sim_read_macros(path, s, e)
+    }
+
+    fn write_macros(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        records: &[crate::proto::value::Value],
+    ) -> Reply<()> {
+        self.sim_write_macros(path, s, e, records)
+    }
+
+    fn macro_info(&mut self, path: u16) -> Reply<crate::proto::macros::MacroInfo> {
+        self.sim_macro_info(path)
+    }
+
+    fn read_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        n: i32,
+    ) -> Reply<Vec<crate::proto::macros::Double>> {
+        self.sim_read_macros_double(path, s, n)
+    }
+
+    fn write_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        values: &[crate::proto::macros::Double],
+    ) -> Reply<i32> {
+        self.sim_write_macros_double(path, s, values)
+    }
 
     // --- pmc ---
+    fn read_pmc(&mut self, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
+        self.profile.pmc.read(&range)
+    }
+
+    fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
+        self.profile.pmc.write(&range, data)
+    }
+
+    fn pmc_info(&mut self, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
+        Ok(self.profile.pmc.info(adr_type))
+    }
 
     // --- offset ---
 

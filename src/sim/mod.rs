@@ -3,7 +3,9 @@
 //! own tokio runtime, so tests and tools can block while it serves.
 
 pub mod machine;
+pub mod macros;
 pub mod param;
+pub mod pmc;
 pub mod profile;
 pub mod run;
 pub mod server;

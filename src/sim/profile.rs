@@ -31,7 +31,9 @@ pub struct Profile {
     // --- macros ---
 
     // --- pmc ---
-
+    /// PMC address areas and their bytes (`[pmc]`, `[pmc.area.R]` ...).
+    #[serde(default)]
+    pub pmc: super::pmc::Pmc,
     // --- offset ---
 
     // --- tool ---
@@ -114,7 +116,8 @@ pub struct Path {
     // --- param ---
 
     // --- macros ---
-
+    /// Custom macro variables (`[path.macros]`).
+    pub macros: super::macros::Macros,
     // --- pmc ---
 
     // --- offset ---

@@ -110,8 +110,56 @@ pub trait CncService: Send {
     }
 
     // --- macros ---
+    /// Custom macro variables `s..=e` (0x0015).
+    fn read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<crate::proto::value::Value>> {
+        unsupported()
+    }
+    /// Writes custom macro variables `s..=e` (0x0016).
+    fn write_macros(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        records: &[crate::proto::value::Value],
+    ) -> Reply<()> {
+        unsupported()
+    }
+    /// Counts of common variables (0x0017).
+    fn macro_info(&mut self, path: u16) -> Reply<crate::proto::macros::MacroInfo> {
+        unsupported()
+    }
+    /// `n` variables from `s` as doubles (0x00a7).
+    fn read_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        n: i32,
+    ) -> Reply<Vec<crate::proto::macros::Double>> {
+        unsupported()
+    }
+    /// Writes variables from `s` as doubles; answers the count (0x00a8).
+    fn write_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        values: &[crate::proto::macros::Double],
+    ) -> Reply<i32> {
+        unsupported()
+    }
 
     // --- pmc ---
+    /// A PMC range's bytes (class 2, 0x8001).
+    fn read_pmc(&mut self, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
+        unsupported()
+    }
+    /// Writes a PMC range (class 2, 0x8002).
+    fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
+        unsupported()
+    }
+    /// The PMC's areas (class 2, 0x8003).
+    fn pmc_info(&mut self, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
+        unsupported()
+    }
 
     // --- offset ---
 
@@ -163,8 +211,34 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, param::WRPARAM16) => svc.param_write(p, true, &sub.payload),
 
             // --- macros ---
+            (CLASS_CNC, crate::proto::macros::RDMACRO) => enc(svc.read_macros(p, a[0], a[1])),
+            (CLASS_CNC, crate::proto::macros::WRMACRO) => {
+                match Vec::<crate::proto::value::Value>::from_bytes(&sub.payload) {
+                    Ok(v) => svc.write_macros(p, a[0], a[1], &v).map(|()| Vec::new()),
+                    Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+                }
+            }
+            (CLASS_CNC, crate::proto::macros::RDMACROINFO) => enc(svc.macro_info(p)),
+            (CLASS_CNC, crate::proto::macros::RDMACROR2) => {
+                enc(svc.read_macros_double(p, a[0], a[1]))
+            }
+            (CLASS_CNC, crate::proto::macros::WRMACROR2) => {
+                match Vec::<crate::proto::macros::Double>::from_bytes(&sub.payload) {
+                    Ok(v) => enc(svc.write_macros_double(p, a[0], &v)),
+                    Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+                }
+            }
 
             // --- pmc ---
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCRNG) => {
+                svc.read_pmc(crate::proto::pmc::PmcRange::from_args(&a))
+            }
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::WRPMCRNG) => svc
+                .write_pmc(crate::proto::pmc::PmcRange::from_args(&a), &sub.payload)
+                .map(|()| Vec::new()),
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCINFO) => {
+                enc(svc.pmc_info(a[0] as i16))
+            }
 
             // --- offset ---
 

@@ -2,3 +2,50 @@
 
 #[allow(unused_imports)]
 use super::{LONG, ULONG};
+use std::os::raw::c_short;
+
+/// cnc_rdmacro: one custom macro variable. The value is
+/// `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBM {
+    /// Variable number.
+    pub datano: c_short,
+    pub dummy: c_short,
+    /// Value digits.
+    pub mcr_val: LONG,
+    /// Decimal places (-1: vacant).
+    pub dec_val: c_short,
+}
+
+/// One variable of IODBMR.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBMR_data {
+    /// Value digits.
+    pub mcr_val: LONG,
+    /// Decimal places (-1: vacant).
+    pub dec_val: c_short,
+}
+
+/// cnc_rdmacror / cnc_wrmacror: a range of custom macro variables. FANUC's
+/// header declares 5 records; callers pass larger buffers for more
+/// (`length` = 8 + 8 · count).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBMR {
+    /// First variable number.
+    pub datano_s: c_short,
+    pub dummy: c_short,
+    /// Last variable number.
+    pub datano_e: c_short,
+    pub data: [IODBMR_data; 5],
+}
+
+/// cnc_rdmacroinfo: custom macro variable information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBMVINF {
+    pub use_no1: c_short,
+    pub use_no2: c_short,
+}

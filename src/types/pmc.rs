@@ -2,3 +2,87 @@
 
 #[allow(unused_imports)]
 use super::{LONG, ULONG};
+use std::os::raw::{c_char, c_short, c_ushort};
+
+/// The data of IODBPMC: bytes, words, longs (4 bytes each), floats or
+/// doubles, by the request's data type.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub union IODBPMC_u {
+    pub cdata: [c_char; 5],
+    pub idata: [c_short; 5],
+    pub ldata: [LONG; 5],
+    pub fdata: [f32; 5],
+    pub dfdata: [f64; 5],
+}
+
+impl Default for IODBPMC_u {
+    fn default() -> Self {
+        IODBPMC_u { dfdata: [0.0; 5] }
+    }
+}
+
+impl std::fmt::Debug for IODBPMC_u {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // SAFETY: every bit pattern is a valid [u8; 40].
+        let b: [u8; 40] = unsafe { std::mem::transmute(*self) };
+        f.debug_struct("IODBPMC_u").field("bytes", &b).finish()
+    }
+}
+
+/// pmc_rdpmcrng / pmc_wrpmcrng: a range of PMC addresses. FANUC's header
+/// declares 5 elements; callers pass larger buffers for more
+/// (`length` = 8 + bytes of data).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct IODBPMC {
+    /// Address type: 0 G, 1 F, 2 Y, 3 X, 4 A, 5 R, 6 T, 7 K, 8 C, 9 D, ...
+    pub type_a: c_short,
+    /// Data type: 0 byte, 1 word, 2 long (4 bytes), 4 float, 5 double.
+    pub type_d: c_short,
+    /// First address (a byte address).
+    pub datano_s: c_short,
+    /// Last address (a byte address).
+    pub datano_e: c_short,
+    pub u: IODBPMC_u,
+}
+
+/// One area of ODBPMCINF.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPMCINF_info {
+    /// Address letter ('G', 'F', ...).
+    pub pmc_adr: c_char,
+    /// Attribute bits of the area, as the CNC reports them.
+    pub adr_attr: c_char,
+    /// First address.
+    pub top_num: c_ushort,
+    /// Last address.
+    pub last_num: c_ushort,
+}
+
+/// pmc_rdpmcinfo: the PMC areas and their address ranges.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPMCINF {
+    /// Number of areas in `info`.
+    pub datano: c_short,
+    pub info: [ODBPMCINF_info; 64],
+}
+
+impl Default for ODBPMCINF {
+    fn default() -> Self {
+        ODBPMCINF {
+            datano: 0,
+            info: [ODBPMCINF_info::default(); 64],
+        }
+    }
+}
+
+/// pmc_getdtailerr: detail of the last PMC error.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPMCERR {
+    pub err_no: c_short,
+    pub err_dtno: c_short,
+}

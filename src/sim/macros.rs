@@ -1,0 +1,352 @@
+//! Simulated custom macro variables: which numbers exist, which are
+//! write-protected, and their values (digits and decimal places, or vacant).
+
+use super::Machine;
+use super::profile::Class;
+use super::service::{CncError, Reply};
+use crate::ew;
+use crate::proto::macros::{Double, MacroInfo, RDMACROR2_CHUNK, VACANT_DEC};
+use crate::proto::value::Value;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// Most records one read or write may carry (the reply must fit in the
+/// smallest frame a CNC sends, 1450 bytes).
+pub const MAX_RECORDS: usize = 100;
+/// Decimal places a written value may have (a CNC keeps macro variables
+/// as doubles; more places than this are refused with EW_DATA).
+pub const MAX_DEC: i16 = 9;
+
+/// The custom macro variables of a path (profile `[path.macros]`).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(try_from = "MacrosToml")]
+pub struct Macros {
+    /// Inclusive number ranges that exist; others answer EW_NUMBER.
+    pub ranges: Vec<(i32, i32)>,
+    /// Inclusive ranges that cannot be written (EW_PROT), e.g. #500.. locked
+    /// by parameters 6031/6032.
+    pub protected: Vec<(i32, i32)>,
+    /// Values (digits, decimal places); a missing number is vacant.
+    pub values: BTreeMap<i32, (i32, i16)>,
+}
+
+impl Default for Macros {
+    /// A 31i's standard set: #100-#199 and #500-#999, all vacant.
+    fn default() -> Self {
+        Macros {
+            ranges: vec![(100, 199), (500, 999)],
+            protected: Vec::new(),
+            values: BTreeMap::new(),
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MacrosToml {
+    #[serde(default)]
+    ranges: Option<Vec<[i32; 2]>>,
+    #[serde(default)]
+    protected: Vec<[i32; 2]>,
+    /// number = "decimal text" ("12.500" keeps three places).
+    #[serde(default)]
+    values: BTreeMap<String, String>,
+}
+
+impl TryFrom<MacrosToml> for Macros {
+    type Error = String;
+    fn try_from(t: MacrosToml) -> Result<Macros, String> {
+        let pairs = |v: Vec<[i32; 2]>| -> Result<Vec<(i32, i32)>, String> {
+            v.into_iter()
+                .map(|[a, b]| {
+                    if a > b {
+                        Err(format!("macro range [{a}, {b}] is reversed"))
+                    } else {
+                        Ok((a, b))
+                    }
+                })
+                .collect()
+        };
+        let mut m = Macros {
+            ranges: match t.ranges {
+                Some(r) => pairs(r)?,
+                None => Macros::default().ranges,
+            },
+            protected: pairs(t.protected)?,
+            values: BTreeMap::new(),
+        };
+        for (k, v) in t.values {
+            let n: i32 = k
+                .trim()
+                .parse()
+                .map_err(|_| format!("macro number {k:?} is not a number"))?;
+            if !m.exists(n) {
+                return Err(format!("macro #{n} is outside path.macros.ranges"));
+            }
+            let d = parse_decimal(&v).ok_or_else(|| {
+                format!("macro #{n}: {v:?} is not a decimal number that fits in 32-bit digits")
+            })?;
+            m.values.insert(n, d);
+        }
+        Ok(m)
+    }
+}
+
+/// "-12.500" → (-12500, 3). At most [`MAX_DEC`] places, digits within i32.
+pub fn parse_decimal(s: &str) -> Option<(i32, i16)> {
+    let s = s.trim();
+    let (neg, body) = match s.strip_prefix('-') {
+        Some(b) => (true, b),
+        None => (false, s.strip_prefix('+').unwrap_or(s)),
+    };
+    let (int, frac) = body.split_once('.').unwrap_or((body, ""));
+    if int.is_empty() && frac.is_empty()
+        || !int.bytes().chain(frac.bytes()).all(|c| c.is_ascii_digit())
+        || frac.len() > MAX_DEC as usize
+    {
+        return None;
+    }
+    let digits: i64 = format!("{int}{frac}").parse().ok()?;
+    let v = i32::try_from(if neg { -digits } else { digits }).ok()?;
+    Some((v, frac.len() as i16))
+}
+
+impl Macros {
+    pub fn exists(&self, n: i32) -> bool {
+        self.ranges.iter().any(|&(a, b)| (a..=b).contains(&n))
+    }
+
+    pub fn protected(&self, n: i32) -> bool {
+        self.protected.iter().any(|&(a, b)| (a..=b).contains(&n))
+    }
+
+    /// The record a read answers for `n` (vacant: value 0, decimals -1).
+    pub fn record(&self, n: i32) -> Value {
+        match self.values.get(&n) {
+            Some(&(v, d)) => Value::decimal(v, d),
+            None => Value::decimal(0, VACANT_DEC),
+        }
+    }
+
+    /// Variables `s..=e` that all exist, else EW_NUMBER.
+    fn check_range(&self, s: i32, e: i32) -> Reply<()> {
+        if e < s || (e - s) as usize >= MAX_RECORDS {
+            return Err(CncError::NUMBER);
+        }
+        if (s..=e).all(|n| self.exists(n)) {
+            Ok(())
+        } else {
+            Err(CncError::NUMBER)
+        }
+    }
+}
+
+/// Checks a value a client writes: decimals -1 (vacant, with digits 0) or
+/// 0..=[`MAX_DEC`].
+fn check_value(v: i32, d: i16) -> Reply<Option<(i32, i16)>> {
+    match d {
+        VACANT_DEC if v == 0 => Ok(None),
+        0..=MAX_DEC => Ok(Some((v, d))),
+        _ => Err(CncError::new(ew::EW_DATA)),
+    }
+}
+
+impl Machine {
+    fn macros(&self, path: u16) -> Reply<&Macros> {
+        self.profile
+            .paths
+            .get(usize::from(path).wrapping_sub(1))
+            .map(|p| &p.macros)
+            .ok_or(CncError::PATH)
+    }
+
+    fn macros_mut(&mut self, path: u16) -> Reply<&mut Macros> {
+        self.profile
+            .paths
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .map(|p| &mut p.macros)
+            .ok_or(CncError::PATH)
+    }
+
+    /// Command 0x0015: variables `s..=e`.
+    pub(crate) fn sim_read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<Value>> {
+        let m = self.macros(path)?;
+        m.check_range(s, e)?;
+        Ok((s..=e).map(|n| m.record(n)).collect())
+    }
+
+    /// Command 0x0016: variables `s..=e` from records. All or nothing: a
+    /// rejected write changes no variable.
+    pub(crate) fn sim_write_macros(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        records: &[Value],
+    ) -> Reply<()> {
+        let series16 = self.profile.cnc.class == Class::Series16;
+        let m = self.macros_mut(path)?;
+        m.check_range(s, e)?;
+        if records.len() != (e - s + 1) as usize {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        if (s..=e).any(|n| m.protected(n)) {
+            return Err(CncError::new(ew::EW_PROT));
+        }
+        let mut new = Vec::with_capacity(records.len());
+        for r in records {
+            // FANUC's library sends the 16i class decimal digits with base
+            // word 2; a 30i-class record is value · base^-exp.
+            let (v, d) = if series16 || r.base == 10 {
+                (r.value, r.exp)
+            } else if r.base == 2 {
+                r.to_decimal()
+            } else {
+                return Err(CncError::new(ew::EW_DATA));
+            };
+            new.push(check_value(v, d)?);
+        }
+        for (n, v) in (s..=e).zip(new) {
+            match v {
+                Some(v) => m.values.insert(n, v),
+                None => m.values.remove(&n),
+            };
+        }
+        Ok(())
+    }
+
+    /// Command 0x0017: how many common variables exist from #100 (below
+    /// #500) and from #500 (below #1000).
+    pub(crate) fn sim_macro_info(&mut self, path: u16) -> Reply<MacroInfo> {
+        let m = self.macros(path)?;
+        let count = |a: i32, b: i32| (a..=b).filter(|n| m.exists(*n)).count() as i32;
+        Ok(MacroInfo {
+            use_no1: count(100, 499),
+            use_no2: count(500, 999),
+        })
+    }
+
+    /// Command 0x00a7: up to `n` variables from `s` as doubles, stopping at
+    /// the first number that does not exist (EW_NUMBER if that is `s`). A
+    /// vacant variable reads as 0.0: how a real CNC marks vacancy in this
+    /// form is not known.
+    pub(crate) fn sim_read_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        n: i32,
+    ) -> Reply<Vec<Double>> {
+        let m = self.macros(path)?;
+        if n <= 0 || n as u32 > RDMACROR2_CHUNK || !m.exists(s) {
+            return Err(CncError::NUMBER);
+        }
+        Ok((s..s.saturating_add(n))
+            .take_while(|k| m.exists(*k))
+            .map(|k| {
+                let (v, d) = m.values.get(&k).copied().unwrap_or((0, 0));
+                Double(f64::from(v) / 10f64.powi(i32::from(d)))
+            })
+            .collect())
+    }
+
+    /// Command 0x00a8: variables from `s`; all must exist and be writable
+    /// (else EW_NUMBER / EW_PROT, nothing written). Each double is kept
+    /// with the fewest decimal places (up to 9) that reproduce it; NaN and
+    /// infinities are EW_DATA. Answers the count written.
+    pub(crate) fn sim_write_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        values: &[Double],
+    ) -> Reply<i32> {
+        let m = self.macros_mut(path)?;
+        let n = values.len() as i32;
+        if n == 0 {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        let e = s.checked_add(n - 1).ok_or(CncError::NUMBER)?;
+        if !(s..=e).all(|k| m.exists(k)) {
+            return Err(CncError::NUMBER);
+        }
+        if (s..=e).any(|k| m.protected(k)) {
+            return Err(CncError::new(ew::EW_PROT));
+        }
+        let new = values
+            .iter()
+            .map(|d| double_to_decimal(d.0).ok_or(CncError::new(ew::EW_DATA)))
+            .collect::<Reply<Vec<_>>>()?;
+        for (k, v) in (s..=e).zip(new) {
+            m.values.insert(k, v);
+        }
+        Ok(n)
+    }
+
+    /// Sets a macro variable as a running program would (`None`: vacant),
+    /// ignoring write protection. EW_NUMBER for a number that does not exist.
+    pub fn set_macro(&mut self, path: u16, number: i32, value: Option<(i32, i16)>) -> Reply<()> {
+        let m = self.macros_mut(path)?;
+        if !m.exists(number) {
+            return Err(CncError::NUMBER);
+        }
+        match value {
+            Some(v) => m.values.insert(number, v),
+            None => m.values.remove(&number),
+        };
+        Ok(())
+    }
+
+    /// A macro variable's value (`None`: vacant).
+    pub fn macro_value(&self, path: u16, number: i32) -> Reply<Option<(i32, i16)>> {
+        let m = self.macros(path)?;
+        if !m.exists(number) {
+            return Err(CncError::NUMBER);
+        }
+        Ok(m.values.get(&number).copied())
+    }
+}
+
+/// The fewest decimal places (0..=9) whose digits fit in 32 bits and give
+/// back `x` exactly, else the most places that fit; None for NaN/inf or
+/// magnitudes beyond 32-bit digits.
+pub fn double_to_decimal(x: f64) -> Option<(i32, i16)> {
+    if !x.is_finite() {
+        return None;
+    }
+    let mut best = None;
+    for d in 0..=MAX_DEC {
+        let m = (x * 10f64.powi(i32::from(d))).round();
+        if m.abs() > f64::from(i32::MAX) {
+            break;
+        }
+        best = Some((m as i32, d));
+        if m / 10f64.powi(i32::from(d)) == x {
+            break;
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimals_parse_exactly() {
+        assert_eq!(parse_decimal("12.500"), Some((12500, 3)));
+        assert_eq!(parse_decimal("-0.5"), Some((-5, 1)));
+        assert_eq!(parse_decimal("7"), Some((7, 0)));
+        assert_eq!(parse_decimal("+.25"), Some((25, 2)));
+        assert_eq!(parse_decimal("1e3"), None);
+        assert_eq!(parse_decimal("99999999999"), None);
+        assert_eq!(parse_decimal("."), None);
+    }
+
+    #[test]
+    fn doubles_keep_their_places() {
+        assert_eq!(double_to_decimal(1.5), Some((15, 1)));
+        assert_eq!(double_to_decimal(-2.25), Some((-225, 2)));
+        assert_eq!(double_to_decimal(7.0), Some((7, 0)));
+        assert_eq!(double_to_decimal(f64::NAN), None);
+        assert_eq!(double_to_decimal(1e12), None);
+    }
+}

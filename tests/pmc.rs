@@ -1,0 +1,250 @@
+//! PMC areas through the C ABI against the simulator: bytes, words and
+//! longs written and read back (the same addresses read as bytes and as
+//! words agree: big-endian on the wire), read-only areas, ranges, local
+//! checks and pmc_getdtailerr.
+
+use fwlib32::ew::*;
+use fwlib32::sim::{Profile, Simulator};
+use fwlib32::types::*;
+use fwlib32::*;
+use std::ffi::CString;
+use std::os::raw::{c_short, c_ushort};
+
+const G: c_short = 0;
+const F: c_short = 1;
+const X: c_short = 3;
+const R: c_short = 5;
+const D: c_short = 9;
+const BYTE: c_short = 0;
+const WORD: c_short = 1;
+const LONG: c_short = 2;
+
+fn start() -> Simulator {
+    Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator")
+}
+
+fn alloc(s: &Simulator) -> c_ushort {
+    let ip = CString::new("127.0.0.1").unwrap();
+    let mut h: c_ushort = 0;
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
+        EW_OK
+    );
+    h
+}
+
+/// pmc_rdpmcrng into a 0xCC-filled buffer of `8 + room` bytes (plus slack
+/// to see overruns); returns (code, buffer).
+fn read(h: c_ushort, a: c_short, t: c_short, s: u16, e: u16, room: usize) -> (c_short, Vec<u8>) {
+    let mut b = vec![0xCCu8; 8 + room + 64];
+    let r = unsafe { pmc_rdpmcrng(h, a, t, s, e, (8 + room) as c_ushort, b.as_mut_ptr().cast()) };
+    (r, b)
+}
+
+/// The data bytes of a successful read of `s..=e`.
+fn data(h: c_ushort, a: c_short, t: c_short, s: u16, e: u16) -> Vec<u8> {
+    let n = usize::from(e - s + 1);
+    let (r, b) = read(h, a, t, s, e, n);
+    assert_eq!(r, EW_OK, "read {a}/{t} {s}..{e}");
+    assert_eq!(&b[0..8], header(a, t, s, e).as_slice());
+    assert!(b[8 + n..].iter().all(|x| *x == 0xCC), "overrun");
+    b[8..8 + n].to_vec()
+}
+
+fn header(a: c_short, t: c_short, s: u16, e: u16) -> Vec<u8> {
+    [
+        a.to_le_bytes(),
+        t.to_le_bytes(),
+        s.to_le_bytes(),
+        e.to_le_bytes(),
+    ]
+    .concat()
+}
+
+/// pmc_wrpmcrng with `data` in host order.
+fn write(h: c_ushort, a: c_short, t: c_short, s: u16, e: u16, data: &[u8]) -> c_short {
+    let mut b = header(a, t, s, e);
+    b.extend_from_slice(data);
+    unsafe { pmc_wrpmcrng(h, b.len() as c_ushort, b.as_mut_ptr().cast()) }
+}
+
+#[test]
+fn default_profile_signals() {
+    let s = start();
+    let h = alloc(&s);
+    // As the MTConnect adapter reads them: one byte, length 8 + 1.
+    let mut buf = IODBPMC::default();
+    assert_eq!(
+        unsafe { pmc_rdpmcrng(h, G, BYTE, 12, 12, 9, &mut buf) },
+        EW_OK
+    );
+    assert_eq!(unsafe { buf.u.cdata[0] } as u8, 0x9b);
+    assert_eq!(
+        (buf.type_a, buf.type_d, buf.datano_s, buf.datano_e),
+        (G, BYTE, 12, 12)
+    );
+    assert_eq!(data(h, G, BYTE, 30, 30), [100]);
+    assert_eq!(data(h, R, WORD, 500, 501), 42u16.to_le_bytes());
+    assert_eq!(data(h, D, LONG, 0, 3), 1000i32.to_le_bytes());
+    assert_eq!(data(h, F, BYTE, 0, 0), [0x20]);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn bytes_words_and_longs_agree() {
+    let s = start();
+    let h = alloc(&s);
+    // Bytes in, words and a long out.
+    assert_eq!(
+        write(h, R, BYTE, 100, 103, &[0x01, 0x02, 0x03, 0x84]),
+        EW_OK
+    );
+    assert_eq!(data(h, R, BYTE, 100, 103), [0x01, 0x02, 0x03, 0x84]);
+    assert_eq!(
+        data(h, R, WORD, 100, 103),
+        [0x0102u16.to_le_bytes(), 0x0384u16.to_le_bytes()].concat()
+    );
+    assert_eq!(data(h, R, LONG, 100, 103), 0x0102_0384u32.to_le_bytes());
+
+    // Words in (host order), bytes out high byte first.
+    let words = [600i16, -2];
+    let host: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+    assert_eq!(write(h, D, WORD, 2204, 2207, &host), EW_OK);
+    assert_eq!(data(h, D, BYTE, 2204, 2207), [0x02, 0x58, 0xff, 0xfe]);
+    assert_eq!(data(h, D, WORD, 2204, 2207), host);
+
+    // Longs, negative.
+    let longs = [70000i32, -1];
+    let host: Vec<u8> = longs.iter().flat_map(|w| w.to_le_bytes()).collect();
+    assert_eq!(write(h, D, LONG, 1870, 1877, &host), EW_OK);
+    assert_eq!(data(h, D, LONG, 1870, 1877), host);
+    assert_eq!(
+        data(h, D, BYTE, 1870, 1873),
+        70000i32.to_be_bytes().to_vec()
+    );
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn read_only_areas_and_ranges() {
+    let s = start();
+    let h = alloc(&s);
+    // X and F are the machine's: EW_PROT, nothing changes.
+    let x0 = data(h, X, BYTE, 0, 0);
+    assert_eq!(write(h, X, BYTE, 0, 0, &[0x55]), EW_PROT);
+    assert_eq!(data(h, X, BYTE, 0, 0), x0);
+    assert_eq!(write(h, F, WORD, 0, 1, &[1, 2]), EW_PROT);
+    assert_eq!(data(h, F, BYTE, 0, 0), [0x20]);
+
+    // Outside the area (R0-R7999, K0-K99/K900-K999): EW_RANGE (3), nothing written.
+    let (r, b) = read(h, R, BYTE, 7999, 8000, 2);
+    assert_eq!(r, EW_RANGE);
+    assert!(b.iter().all(|x| *x == 0xCC));
+    assert_eq!(write(h, R, BYTE, 7999, 8000, &[1, 2]), EW_RANGE);
+    assert_eq!(data(h, R, BYTE, 7999, 7999), [0]);
+    assert_eq!(read(h, 7, BYTE, 100, 100, 1).0, EW_RANGE);
+    assert_eq!(read(h, 7, BYTE, 900, 900, 1).0, EW_OK);
+    // A word range of an odd number of bytes: EW_RANGE.
+    assert_eq!(read(h, R, WORD, 0, 2, 3).0, EW_RANGE);
+    // Unknown area or data type: EW_TYPE (4).
+    assert_eq!(read(h, 99, BYTE, 0, 0, 1).0, EW_TYPE);
+    assert_eq!(read(h, R, 3, 0, 3, 4).0, EW_TYPE);
+    assert_eq!(write(h, R, 3, 0, 3, &[0; 4]), EW_TYPE);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn buffers_are_bounded_by_length() {
+    let s = start();
+    let h = alloc(&s);
+    assert_eq!(
+        write(h, R, BYTE, 0, 9, &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10]),
+        EW_OK
+    );
+    // Ten bytes asked for, room for four: four written, nothing more.
+    let (r, b) = read(h, R, BYTE, 0, 9, 4);
+    assert_eq!(r, EW_OK);
+    assert_eq!(&b[8..12], &[1, 2, 3, 4]);
+    assert!(b[12..].iter().all(|x| *x == 0xCC));
+    // Room for three bytes of words: one whole word.
+    let (r, b) = read(h, R, WORD, 0, 9, 3);
+    assert_eq!(r, EW_OK);
+    assert_eq!(&b[8..10], &0x0102u16.to_le_bytes());
+    assert!(b[10..].iter().all(|x| *x == 0xCC));
+    // length below the header: EW_LENGTH before any traffic.
+    let mut buf = [0xCCu8; 16];
+    assert_eq!(
+        unsafe { pmc_rdpmcrng(h, R, BYTE, 0, 0, 7, buf.as_mut_ptr().cast()) },
+        EW_LENGTH
+    );
+    assert!(buf.iter().all(|x| *x == 0xCC));
+    // A write whose length does not cover the range: EW_LENGTH, nothing sent.
+    let mut w = header(R, BYTE, 0, 3);
+    w.extend_from_slice(&[9, 9, 9, 9]);
+    assert_eq!(
+        unsafe { pmc_wrpmcrng(h, 8 + 3, w.as_mut_ptr().cast()) },
+        EW_LENGTH
+    );
+    assert_eq!(data(h, R, BYTE, 0, 3), [1, 2, 3, 4]);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn null_pointers_and_handles() {
+    let s = start();
+    let h = alloc(&s);
+    assert_eq!(
+        unsafe { pmc_rdpmcrng(h, R, BYTE, 0, 0, 9, std::ptr::null_mut()) },
+        EW_DATA
+    );
+    assert_eq!(unsafe { pmc_wrpmcrng(h, 9, std::ptr::null_mut()) }, EW_DATA);
+    assert_eq!(unsafe { pmc_getdtailerr(h, std::ptr::null_mut()) }, EW_DATA);
+    cnc_freelibhndl(h);
+    let mut buf = IODBPMC::default();
+    assert_eq!(
+        unsafe { pmc_rdpmcrng(h, R, BYTE, 0, 0, 9, &mut buf) },
+        EW_HANDLE
+    );
+    let mut e = ODBPMCERR::default();
+    assert_eq!(unsafe { pmc_getdtailerr(h, &mut e) }, EW_HANDLE);
+}
+
+/// pmc_getdtailerr answers from the handle's PMC detail (FANUC's details
+/// for a PMC error are checked by the vector pmc_rdpmcrng/v3_error; the
+/// simulator's details are 0/0).
+#[test]
+fn pmc_getdtailerr_reads_the_pmc_detail() {
+    let s = start();
+    let h = alloc(&s);
+    let mut e = ODBPMCERR {
+        err_no: 9,
+        err_dtno: 9,
+    };
+    assert_eq!(unsafe { pmc_getdtailerr(h, &mut e) }, EW_OK);
+    assert_eq!((e.err_no, e.err_dtno), (0, 0));
+    // A PMC error (3) updates the PMC detail (the simulator's details are 0/0).
+    assert_eq!(read(h, R, BYTE, 9000, 9000, 1).0, EW_RANGE);
+    assert_eq!(unsafe { pmc_getdtailerr(h, &mut e) }, EW_OK);
+    assert_eq!((e.err_no, e.err_dtno), (0, 0));
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn pmc_info_lists_the_areas() {
+    let s = start();
+    let h = alloc(&s);
+    let mut i = ODBPMCINF::default();
+    assert_eq!(unsafe { pmc_rdpmcinfo(h, 0, &mut i) }, EW_OK);
+    let areas: Vec<(u8, u16, u16)> = i.info[..i.datano as usize]
+        .iter()
+        .map(|a| (a.pmc_adr as u8, a.top_num, a.last_num))
+        .collect();
+    assert!(areas.contains(&(b'G', 0, 767)), "{areas:?}");
+    assert!(areas.contains(&(b'R', 0, 7999)));
+    assert!(areas.contains(&(b'K', 900, 999)));
+    assert_eq!(
+        unsafe { pmc_rdpmcinfo(h, 0, std::ptr::null_mut()) },
+        EW_DATA
+    );
+    cnc_freelibhndl(h);
+}
