@@ -3,6 +3,7 @@
 //! own tokio runtime, so tests and tools can block while it serves.
 
 pub mod machine;
+pub mod position;
 pub mod profile;
 pub mod run;
 pub mod server;
