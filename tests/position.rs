@@ -170,7 +170,8 @@ fn positions_read_back() {
     let c = start(&profile(32));
     let axes = &c.p.paths[0].axes;
     type F = unsafe extern "C" fn(c_ushort, c_short, c_short, *mut ODBAXIS) -> c_short;
-    let fns: [(F, fn(&fwlib32::sim::profile::Axis) -> i32); 6] = [
+    type Pick = fn(&fwlib32::sim::profile::Axis) -> i32;
+    let fns: [(F, Pick); 6] = [
         (cnc_absolute, |a| a.absolute),
         (cnc_absolute2, |a| a.absolute),
         (cnc_machine, |a| a.machine),
