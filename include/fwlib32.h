@@ -108,6 +108,32 @@ namespace Fwlib32 {
 typedef int32_t LONG;
 
 /*
+ cnc_absolute / machine / relative / distance (and the ...2 forms).
+ */
+typedef struct ODBAXIS {
+    short dummy;
+    short type;
+    LONG data[MAX_AXIS];
+} ODBAXIS;
+
+/*
+ cnc_actf / cnc_acts: actual feed rate or spindle speed.
+ */
+typedef struct ODBACT {
+    short dummy[2];
+    LONG data;
+} ODBACT;
+
+/*
+ cnc_acts2: actual speed of one or all spindles.
+ */
+typedef struct ODBACT2 {
+    short datano;
+    short type;
+    LONG data[MAX_SPINDLE];
+} ODBACT2;
+
+/*
  A real diagnosis value: `dgn_val · 10^-dec_val`.
  */
 typedef struct REALDGN {
@@ -145,6 +171,26 @@ typedef struct ODBERR {
     short err_no;
     short err_dtno;
 } ODBERR;
+
+/*
+ cnc_rdaxisdata: one value of one axis or spindle.
+ */
+typedef struct ODBAXDT {
+    char name[4];
+    LONG data;
+    short dec;
+    short unit;
+    short flag;
+    short reserve;
+} ODBAXDT;
+
+/*
+ cnc_rdaxisname: one axis name.
+ */
+typedef struct ODBAXISNAME {
+    char name;
+    char suff;
+} ODBAXISNAME;
 
 /*
  One value of IODBPRM.
@@ -192,6 +238,65 @@ typedef struct ODBDIAGNUM {
     unsigned short diag_max;
     unsigned short total_no;
 } ODBDIAGNUM;
+
+/*
+ The all-axes form of the position union of ODBDY / ODBDY2.
+ */
+typedef struct ODBDY_FAXIS {
+    LONG absolute[MAX_AXIS];
+    LONG machine[MAX_AXIS];
+    LONG relative[MAX_AXIS];
+    LONG distance[MAX_AXIS];
+} ODBDY_FAXIS;
+
+/*
+ The one-axis form of the position union of ODBDY / ODBDY2.
+ */
+typedef struct ODBDY_OAXIS {
+    LONG absolute;
+    LONG machine;
+    LONG relative;
+    LONG distance;
+} ODBDY_OAXIS;
+
+/*
+ The position union of ODBDY / ODBDY2 (`pos`): `faxis` for all axes
+ (axis -1), `oaxis` for one axis.
+ */
+typedef union ODBDY_POS {
+    struct ODBDY_FAXIS faxis;
+    struct ODBDY_OAXIS oaxis;
+} ODBDY_POS;
+
+/*
+ cnc_rddynamic: dynamic data, program numbers as shorts.
+ */
+typedef struct ODBDY {
+    short dummy;
+    short axis;
+    short alarm;
+    short prgnum;
+    short prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY_POS pos;
+} ODBDY;
+
+/*
+ cnc_rddynamic2: dynamic data (alarm, program numbers, feed, speed, positions).
+ */
+typedef struct ODBDY2 {
+    short dummy;
+    short axis;
+    LONG alarm;
+    LONG prgnum;
+    LONG prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY_POS pos;
+} ODBDY2;
 
 /*
  cnc_rdmacro: one custom macro variable. The value is
@@ -312,6 +417,95 @@ typedef struct ODBPARANUM {
     unsigned short para_max;
     unsigned short total_no;
 } ODBPARANUM;
+
+/*
+ One position of cnc_rdposition.
+ */
+typedef struct POSELM {
+    LONG data;
+    short dec;
+    short unit;
+    short disp;
+    char name;
+    char suff;
+} POSELM;
+
+/*
+ cnc_rdposition: the four positions of one axis.
+ */
+typedef struct ODBPOS {
+    struct POSELM abs;
+    struct POSELM mach;
+    struct POSELM rel;
+    struct POSELM dist;
+} ODBPOS;
+
+/*
+ cnc_rdspdlname: one spindle name.
+ */
+typedef struct ODBSPDLNAME {
+    char name;
+    char suff1;
+    char suff2;
+    char suff3;
+} ODBSPDLNAME;
+
+/*
+ One speed of cnc_rdspeed.
+ */
+typedef struct SPEEDELM {
+    LONG data;
+    short dec;
+    short unit;
+    short disp;
+    char name;
+    char suff;
+} SPEEDELM;
+
+/*
+ cnc_rdspeed: actual feed rate and spindle speed with units.
+ */
+typedef struct ODBSPEED {
+    struct SPEEDELM actf;
+    struct SPEEDELM acts;
+} ODBSPEED;
+
+/*
+ cnc_rdspload: serial spindle load.
+ */
+typedef struct ODBSPN {
+    short datano;
+    short type;
+    short data[MAX_SPINDLE];
+} ODBSPN;
+
+/*
+ One load meter value (cnc_rdsvmeter, cnc_rdspmeter).
+ */
+typedef struct LOADELM {
+    LONG data;
+    short dec;
+    short unit;
+    char name;
+    char suff1;
+    char suff2;
+    char reserve;
+} LOADELM;
+
+/*
+ cnc_rdspmeter: one spindle's load and speed.
+ */
+typedef struct ODBSPLOAD {
+    struct LOADELM spload;
+    struct LOADELM spspeed;
+} ODBSPLOAD;
+
+/*
+ cnc_rdsvmeter: one axis's servo load.
+ */
+typedef struct ODBSVLOAD {
+    struct LOADELM svload;
+} ODBSVLOAD;
 
 /*
  cnc_statinfo: CNC status information.
@@ -448,6 +642,47 @@ extern "C" {
 #endif // __cplusplus
 
 /*
+ Reads the absolute position of one axis (`length` ≥ 8) or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the absolute position (form 2: 0x26 code 0).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the actual feed rate (F).
+
+ # Safety
+ `actualfeed` must point to a writable ODBACT.
+ */
+short cnc_actf(unsigned short FlibHndl, struct ODBACT *actualfeed);
+
+/*
+ Reads the actual spindle speed (S).
+
+ # Safety
+ `actualspindle` must point to a writable ODBACT.
+ */
+short cnc_acts(unsigned short FlibHndl, struct ODBACT *actualspindle);
+
+/*
+ Reads the actual speed of spindle `sp_no` (1..) or of all spindles (-1):
+ `datano` = sp_no, `data[i]` per spindle.
+
+ # Safety
+ `actualspindle` must point to a writable ODBACT2.
+ */
+short cnc_acts2(unsigned short FlibHndl, short sp_no, struct ODBACT2 *actualspindle);
+
+/*
  Connects to the CNC at `ip:port` (or shares the existing connection to
  it) and returns a handle in `*FlibHndl`. `timeout` is in seconds; 0 or
  less waits forever.
@@ -484,6 +719,14 @@ short cnc_diagnoss(unsigned short FlibHndl,
                    struct ODBDGN *diag);
 
 /*
+ Reads the distance to go.
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
  Frees every handle, closes every connection and the log.
  */
 short cnc_exitprocess(void);
@@ -502,12 +745,61 @@ short cnc_freelibhndl(unsigned short FlibHndl);
 short cnc_getdtailerr(unsigned short FlibHndl, struct ODBERR *err);
 
 /*
+ Reads the input (`dec_fig_in`) and output (`dec_fig_out`) decimal
+ figures of every axis; `*valid_fig` = the number of axes.
+
+ # Safety
+ `valid_fig` must point to a writable short, `dec_fig_in` and
+ `dec_fig_out` to MAX_AXIS writable shorts each.
+ */
+short cnc_getfigure(unsigned short FlibHndl,
+                    short data_type,
+                    short *valid_fig,
+                    short *dec_fig_in,
+                    short *dec_fig_out);
+
+/*
  Reads the current path of this handle and the CNC's number of paths.
 
  # Safety
  Both pointers must be writable `short`s.
  */
 short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
+
+/*
+ Reads the machine position.
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads several values of all axes (`cls` 1 positions, types 0..3), servo
+ loads (`cls` 2, type 0) or spindles (`cls` 3, types 0 load, 1 speed):
+ `num` types from `type`; `*len` in = axes room per type, out = axes
+ written. Record (type k, axis i) is `axdata[k * len_in + i]`.
+
+ # Safety
+ `type` must point to `num` shorts, `len` to a writable short, `axdata`
+ to `num * *len` writable ODBAXDT.
+ */
+short cnc_rdaxisdata(unsigned short FlibHndl,
+                     short cls,
+                     short *type,
+                     short num,
+                     short *len,
+                     struct ODBAXDT *axdata);
+
+/*
+ Reads the names of the controlled axes: `*data_num` in = room in
+ `axisname`, out = names written (at most the CNC's axis count).
+
+ # Safety
+ `data_num` must point to a writable short, `axisname` to `*data_num`
+ writable ODBAXISNAME.
+ */
+short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAME *axisname);
 
 /*
  Reads the CNC's identification number: four 32-bit words.
@@ -561,6 +853,28 @@ short cnc_rddiaginfo(unsigned short FlibHndl,
  `diagnum` must point to a writable ODBDIAGNUM.
  */
 short cnc_rddiagnum(unsigned short FlibHndl, struct ODBDIAGNUM *diagnum);
+
+/*
+ cnc_rddynamic2 with alarm and program numbers as shorts (ODBDY;
+ `length` ≥ 40 for one axis, 536 for all).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_rddynamic(unsigned short FlibHndl, short axis, short length, struct ODBDY *buf);
+
+/*
+ Reads the dynamic data in one exchange: alarm status, program numbers,
+ sequence number, actual feed and spindle speed, and the absolute,
+ machine, relative and distance-to-go positions of one axis (`oaxis`,
+ `length` ≥ 44) or of all axes (`axis` = -1, `faxis`, `length` ≥ 540).
+ For all axes every record is placed at its array index; slots the CNC
+ sent no record for are left as they were.
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct ODBDY2 *buf);
 
 /*
  Reads the custom macro variable `number` (common #100.., #500.., system
@@ -657,6 +971,83 @@ short cnc_rdparam_ext(unsigned short FlibHndl, long *prm_no, short num, struct I
  `paranum` must point to a writable ODBPARANUM.
  */
 short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
+
+/*
+ Reads positions with decimals, units and names: `type` 0 absolute,
+ 1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
+ room, out = axes written.
+
+ # Safety
+ `data_num` must point to a writable short, `position` to `*data_num`
+ writable ODBPOS.
+ */
+short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struct ODBPOS *position);
+
+/*
+ Reads the names of the spindles: `*data_num` in = room in `spdlname`,
+ out = names written.
+
+ # Safety
+ `data_num` must point to a writable short, `spdlname` to `*data_num`
+ writable ODBSPDLNAME.
+ */
+short cnc_rdspdlname(unsigned short FlibHndl, short *data_num, struct ODBSPDLNAME *spdlname);
+
+/*
+ Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
+ with decimals, units and names (ODBSPEED). Other types: EW_ATTRIB.
+
+ # Safety
+ `speed` must point to a writable ODBSPEED.
+ */
+short cnc_rdspeed(unsigned short FlibHndl, short type, struct ODBSPEED *speed);
+
+/*
+ Reads the load of serial spindle `sp_no` (1..8, or -1 all): `datano` =
+ sp_no, `data[i]` = low 16 bits of each value (`type` not written).
+
+ # Safety
+ `serialspindle` must point to a writable ODBSPN.
+ */
+short cnc_rdspload(unsigned short FlibHndl, short sp_no, struct ODBSPN *serialspindle);
+
+/*
+ Reads the spindle load meters (`type` 0), motor speeds (1) or both (-1):
+ `*data_num` in = room, out = spindles written.
+
+ # Safety
+ `data_num` must point to a writable short, `loadmeter` to `*data_num`
+ writable ODBSPLOAD.
+ */
+short cnc_rdspmeter(unsigned short FlibHndl,
+                    short type,
+                    short *data_num,
+                    struct ODBSPLOAD *loadmeter);
+
+/*
+ Reads the servo load meters: `*data_num` in = room, out = axes written.
+
+ # Safety
+ `data_num` must point to a writable short, `loadmeter` to `*data_num`
+ writable ODBSVLOAD.
+ */
+short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *loadmeter);
+
+/*
+ Reads the relative position.
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the relative position (form 2: 0x26 code 2).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).

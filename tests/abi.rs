@@ -273,7 +273,8 @@ macro_rules! rust_layouts {
                     stringify!($ty),
                     std::mem::size_of::<$ty>(),
                     vec![$((
-                        stringify!($field),
+                        // `r#type` is FANUC's `type`.
+                        stringify!($field).trim_start_matches("r#"),
                         std::mem::offset_of!($ty, $field),
                         field_size(|v: &$ty| &v.$field),
                     )),*],
@@ -294,6 +295,22 @@ rust_layouts! {
     ODBERR { err_no, err_dtno }
 
     // --- position ---
+    ODBAXISNAME { name, suff }
+    ODBSPDLNAME { name, suff1, suff2, suff3 }
+    ODBDY2 { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
+    ODBDY { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
+    ODBACT { dummy, data }
+    ODBACT2 { datano, r#type, data }
+    SPEEDELM { data, dec, unit, disp, name, suff }
+    ODBSPEED { actf, acts }
+    LOADELM { data, dec, unit, name, suff1, suff2, reserve }
+    ODBSPLOAD { spload, spspeed }
+    ODBSVLOAD { svload }
+    ODBSPN { datano, r#type, data }
+    ODBAXDT { name, data, dec, unit, flag, reserve }
+    POSELM { data, dec, unit, disp, name, suff }
+    ODBPOS { abs, mach, rel, dist }
+    ODBAXIS { dummy, r#type, data }
 
     // --- program ---
 

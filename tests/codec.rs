@@ -101,7 +101,24 @@ const KNOWN: &[&str] = &[
     "setpath",
     "getdtailerr",
     // --- position ---
-
+    "rdaxisname",
+    "rdspdlname",
+    "rddynamic2",
+    "rddynamic",
+    "actf",
+    "acts",
+    "acts2",
+    "rdspmeter",
+    "rdsvmeter",
+    "rdaxisdata",
+    "rdposition",
+    "absolute",
+    "absolute2",
+    "machine",
+    "relative",
+    "relative2",
+    "distance",
+    "getfigure",
     // --- program ---
 
     // --- alarm ---
@@ -237,6 +254,9 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                                     let mut data = b[8..8 + range.span()].to_vec();
                                     swap_elements(range.data_type, &mut data);
                                     stamped(&WritePmc { range, data }, &cx, path)
+                                }
+                                w if position_request(w, &args).is_some() => {
+                                    stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
                                 }
                                 w => {
                                     bad.push(format!("{id} call {i}: no request known for `{w}`"));
@@ -924,5 +944,163 @@ proptest! {
         prop_assert_eq!(serve(&mut m, &ReadPmc(range)).unwrap(), data.clone());
         let bytes = PmcRange { data_type: 0, ..range };
         prop_assert_eq!(serve(&mut m, &ReadPmc(bytes)).unwrap(), data);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// --- position ---
+// ---------------------------------------------------------------------------
+
+/// Already-built subpackets as a call (request side only).
+struct Raw(Vec<ReqSub>);
+
+impl Call for Raw {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        self.0.clone()
+    }
+    fn decode(&self, _: &Ctx, _: &[RespSub]) -> fwlib32::error::Result<()> {
+        Ok(())
+    }
+}
+
+/// The request of a position-area probe word, as src/ffi/position.rs builds it.
+fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
+    use fwlib32::proto::position::*;
+    let n = |i: usize| num(&a[i]);
+    let cx = Ctx::default();
+    let axes = |codes: Vec<i32>| AxisDataCall {
+        what: AxisData::Positions(codes),
+        limit: 8,
+    };
+    let code = |w: &str| match w {
+        "absolute" => pos::ABSOLUTE,
+        "absolute2" => pos::ABSOLUTE2,
+        "machine" => pos::MACHINE,
+        "relative" => pos::RELATIVE,
+        "relative2" => pos::RELATIVE2,
+        _ => pos::DISTANCE,
+    };
+    Some(match w {
+        "rdaxisname" => rdaxisname().request(&cx),
+        "rdspdlname" => rdspdlname().request(&cx),
+        "rddynamic2" | "rddynamic" => Dynamic { axis: n(0) as i16 }.request(&cx),
+        "actf" => actual(ACTF).request(&cx),
+        "acts" => actual(ACTS).request(&cx),
+        "acts2" => SpindleData {
+            code: spdl::SPEED_ACT,
+            sp_no: n(0) as i16,
+        }
+        .request(&cx),
+        "rdspmeter" => {
+            let codes = match n(0) {
+                0 => vec![spdl::LOAD_METER],
+                1 => vec![spdl::SPEED_METER],
+                _ => vec![spdl::LOAD_METER, spdl::SPEED_METER],
+            };
+            AxisDataCall {
+                what: AxisData::Spindle(codes),
+                limit: 8,
+            }
+            .request(&cx)
+        }
+        "rdsvmeter" => AxisDataCall {
+            what: AxisData::Servo(vec![1]),
+            limit: 8,
+        }
+        .request(&cx),
+        "rdaxisdata" => {
+            let types: Vec<i32> = (0..n(1) as usize).map(|i| n(2 + i) as i32).collect();
+            match n(0) {
+                1 => axes(types),
+                2 => AxisDataCall {
+                    what: AxisData::Servo(vec![1; types.len()]),
+                    limit: 8,
+                },
+                _ => AxisDataCall {
+                    what: AxisData::Spindle(types.iter().map(|t| spdl::LOAD_METER + t).collect()),
+                    limit: 8,
+                },
+            }
+            .request(&cx)
+        }
+        "rdposition" => match n(0) {
+            -1 => axes(vec![0, 1, 2, 3]),
+            t => axes(vec![t as i32]),
+        }
+        .request(&cx),
+        "absolute" | "absolute2" | "machine" | "relative" | "relative2" | "distance" => {
+            position(code(w), n(0) as i16).request(&cx)
+        }
+        "getfigure" => getfigure(n(0) as i16).request(&cx),
+        _ => return None,
+    })
+}
+
+fn value() -> impl Strategy<Value = fwlib32::proto::value::Value> {
+    (any::<i32>(), any::<u16>(), any::<i16>())
+        .prop_map(|(value, base, exp)| fwlib32::proto::value::Value { value, base, exp })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 128,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn position_wire_structs_roundtrip(
+        bits in any::<u32>(),
+        (data, mdata) in (any::<i32>(), any::<i32>()),
+        recs in vec(value(), 0..40),
+        names in vec(any::<[u8; 4]>(), 0..32),
+        pnames in vec(any::<[u8; 16]>(), 0..32),
+        count in any::<i32>(),
+        figs in vec((any::<i16>(), any::<i16>()), 0..32),
+        units in vec((any::<u16>(), any::<u16>()), 0..32),
+        n in any::<u16>(),
+    ) {
+        use fwlib32::proto::position::*;
+        roundtrip(&AlarmBits { bits })?;
+        roundtrip(&ProgNums { data, mdata })?;
+        roundtrip(&SeqNum { data })?;
+        prop_assert_eq!(ProgNums { data, mdata }.to_bytes().len(), 8);
+        roundtrip(&recs)?;
+        prop_assert_eq!(recs.to_bytes().len(), 8 * recs.len());
+        let names: Vec<Name> = names.into_iter().map(|bytes| Name { bytes }).collect();
+        roundtrip(&names)?;
+        let axes = pnames
+            .iter()
+            .map(|b| PosNames {
+                absolute: b[0..4].try_into().unwrap(),
+                machine: b[4..8].try_into().unwrap(),
+                relative: b[8..12].try_into().unwrap(),
+                other: b[12..16].try_into().unwrap(),
+            })
+            .collect::<Vec<_>>();
+        let an = AxisNames { count, axes };
+        roundtrip(&an)?;
+        prop_assert_eq!(an.to_bytes().len(), 4 + 16 * an.axes.len());
+        let f = Figures {
+            count,
+            axes: figs.into_iter().map(|(input, output)| Figure { input, output }).collect(),
+        };
+        roundtrip(&f)?;
+        let u: Vec<UnitWords> = units.into_iter().map(|(w0, w1)| UnitWords { w0, w1 }).collect();
+        roundtrip(&u)?;
+        roundtrip(&Count { n })?;
+    }
+
+    #[test]
+    fn position_decoders_never_panic(b in vec(any::<u8>(), 0..300)) {
+        use fwlib32::proto::position::*;
+        let _ = AlarmBits::from_bytes(&b);
+        let _ = ProgNums::from_bytes(&b);
+        let _ = AxisNames::from_bytes(&b);
+        let _ = Figures::from_bytes(&b);
+        let _ = Vec::<fwlib32::proto::value::Value>::from_bytes(&b);
+        let _ = Vec::<Name>::from_bytes(&b);
+        let _ = Vec::<UnitWords>::from_bytes(&b);
     }
 }

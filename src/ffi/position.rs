@@ -1,1 +1,820 @@
 //! Axes and spindles: names, positions, speeds, loads, dynamic data, figures.
+//!
+//! Outputs are written field by field at their l32 offsets, only the bytes
+//! FANUC's library writes (so a caller's buffer of `length` bytes is never
+//! overrun), and only on success.
+
+use super::{ffi_boundary, nonnull, put};
+use crate::client::handles::{self, Handle};
+use crate::error::{Error, Result};
+use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NOOPT, EW_NUMBER};
+use crate::proto::call::Ctx;
+use crate::proto::position::{
+    ACTF, ACTS, AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData,
+    actual, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
+};
+use crate::types::{
+    LOADELM, MAX_AXIS, MAX_SPINDLE, ODBACT, ODBACT2, ODBAXDT, ODBAXIS, ODBAXISNAME, ODBDY,
+    ODBDY_FAXIS, ODBDY_OAXIS, ODBDY2, ODBPOS, ODBSPDLNAME, ODBSPEED, ODBSPLOAD, ODBSPN, ODBSVLOAD,
+    POSELM, SPEEDELM,
+};
+use std::mem::{offset_of, size_of};
+use std::os::raw::{c_char, c_short, c_ushort};
+
+/// Writes `v` at byte offset `off` of the caller's buffer.
+///
+/// # Safety
+/// `base + off .. + size_of::<T>()` must be writable.
+unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
+    unsafe { put(base.add(off).cast::<T>(), v) }
+}
+
+fn ctx(h: &Handle) -> Ctx {
+    let path = h.state.lock().path;
+    h.pair.info.ctx(path)
+}
+
+/// The spindle functions of a 30i-class CNC need the open response's
+/// spindle word (SPEC.md §5.3): without it EW_NOOPT, without traffic.
+fn need_spindle_info(h: &Handle) -> Result<()> {
+    if h.pair.info.open.has_spindle_info() {
+        Ok(())
+    } else {
+        Err(Error::local(
+            EW_NOOPT,
+            "the CNC reports no spindle information",
+        ))
+    }
+}
+
+/// A `short *` in/out count, read before any traffic.
+fn read_count(p: *mut c_short) -> Result<c_short> {
+    Ok(unsafe { nonnull(p)?.read_unaligned() })
+}
+
+// ---------------------------------------------------------------------------
+// Names
+// ---------------------------------------------------------------------------
+
+/// Reads the names of the controlled axes: `*data_num` in = room in
+/// `axisname`, out = names written (at most the CNC's axis count).
+///
+/// # Safety
+/// `data_num` must point to a writable short, `axisname` to `*data_num`
+/// writable ODBAXISNAME.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdaxisname(
+    FlibHndl: c_ushort,
+    data_num: *mut c_short,
+    axisname: *mut ODBAXISNAME,
+) -> c_short {
+    ffi_boundary!("cnc_rdaxisname", {
+        let h = handles::get(FlibHndl)?;
+        let room = read_count(data_num)?;
+        let out = nonnull(axisname)?;
+        let names = h.call(&rdaxisname())?;
+        let n = names.len().min(room.max(0) as usize);
+        for (i, e) in names.iter().take(n).enumerate() {
+            let v = ODBAXISNAME {
+                name: e.bytes[0] as c_char,
+                suff: e.bytes[1] as c_char,
+            };
+            unsafe { put(out.add(i), v) };
+        }
+        unsafe { put(data_num, n as c_short) };
+        Ok(())
+    })
+}
+
+/// Reads the names of the spindles: `*data_num` in = room in `spdlname`,
+/// out = names written.
+///
+/// # Safety
+/// `data_num` must point to a writable short, `spdlname` to `*data_num`
+/// writable ODBSPDLNAME.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdspdlname(
+    FlibHndl: c_ushort,
+    data_num: *mut c_short,
+    spdlname: *mut ODBSPDLNAME,
+) -> c_short {
+    ffi_boundary!("cnc_rdspdlname", {
+        let h = handles::get(FlibHndl)?;
+        let room = read_count(data_num)?;
+        let out = nonnull(spdlname)?;
+        let names = h.call(&rdspdlname())?;
+        let n = names.len().min(room.max(0) as usize);
+        for (i, e) in names.iter().take(n).enumerate() {
+            let [name, suff1, suff2, suff3] = e.bytes.map(|b| b as c_char);
+            let v = ODBSPDLNAME {
+                name,
+                suff1,
+                suff2,
+                suff3,
+            };
+            unsafe { put(out.add(i), v) };
+        }
+        unsafe { put(data_num, n as c_short) };
+        Ok(())
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Dynamic data
+// ---------------------------------------------------------------------------
+
+/// Byte offsets of the fields the dynamic functions write.
+struct DynLayout {
+    axis: usize,
+    /// alarm, prgnum, prgmnum: 4 bytes (ODBDY2) or 2 bytes (ODBDY).
+    numbers: [usize; 3],
+    wide: bool,
+    seqnum: usize,
+    actf: usize,
+    acts: usize,
+    pos: usize,
+    /// Size with one axis and with all axes.
+    one: usize,
+    all: usize,
+}
+
+const DY2: DynLayout = DynLayout {
+    axis: offset_of!(ODBDY2, axis),
+    numbers: [
+        offset_of!(ODBDY2, alarm),
+        offset_of!(ODBDY2, prgnum),
+        offset_of!(ODBDY2, prgmnum),
+    ],
+    wide: true,
+    seqnum: offset_of!(ODBDY2, seqnum),
+    actf: offset_of!(ODBDY2, actf),
+    acts: offset_of!(ODBDY2, acts),
+    pos: offset_of!(ODBDY2, pos),
+    one: offset_of!(ODBDY2, pos) + size_of::<ODBDY_OAXIS>(),
+    all: size_of::<ODBDY2>(),
+};
+
+const DY: DynLayout = DynLayout {
+    axis: offset_of!(ODBDY, axis),
+    numbers: [
+        offset_of!(ODBDY, alarm),
+        offset_of!(ODBDY, prgnum),
+        offset_of!(ODBDY, prgmnum),
+    ],
+    wide: false,
+    seqnum: offset_of!(ODBDY, seqnum),
+    actf: offset_of!(ODBDY, actf),
+    acts: offset_of!(ODBDY, acts),
+    pos: offset_of!(ODBDY, pos),
+    one: offset_of!(ODBDY, pos) + size_of::<ODBDY_OAXIS>(),
+    all: size_of::<ODBDY>(),
+};
+
+/// Offsets of absolute, machine, relative, distance within `faxis`.
+const FAXIS: [usize; 4] = [
+    offset_of!(ODBDY_FAXIS, absolute),
+    offset_of!(ODBDY_FAXIS, machine),
+    offset_of!(ODBDY_FAXIS, relative),
+    offset_of!(ODBDY_FAXIS, distance),
+];
+
+fn dynamic(l: &DynLayout, h: c_ushort, axis: c_short, length: c_short, out: *mut u8) -> Result<()> {
+    {
+        let h = handles::get(h)?;
+        let base = nonnull(out)?;
+        let need = if axis == -1 { l.all } else { l.one };
+        if (length as i32) < need as i32 {
+            return Err(Error::length());
+        }
+        let d: DynamicData = h.call(&Dynamic { axis })?;
+        unsafe {
+            put_at(base, l.axis, axis);
+            let nums = [d.alarm as i32, d.prgnum, d.prgmnum];
+            for (off, v) in l.numbers.iter().zip(nums) {
+                // FANUC takes the low 16 bits, sign-extended.
+                if l.wide {
+                    put_at(base, *off, low16(v));
+                } else {
+                    put_at(base, *off, v as i16);
+                }
+            }
+            put_at(base, l.seqnum, d.seqnum);
+            put_at(base, l.actf, d.actf);
+            put_at(base, l.acts, d.acts);
+            if axis == -1 {
+                // Every record at its struct offset (FANUC packs them by the
+                // number received: the same bytes for MAX_AXIS records).
+                for (k, vals) in d.pos.iter().enumerate() {
+                    for (i, v) in vals.iter().take(MAX_AXIS).enumerate() {
+                        put_at(base, l.pos + FAXIS[k] + 4 * i, *v);
+                    }
+                }
+            } else {
+                for (k, vals) in d.pos.iter().enumerate() {
+                    put_at(base, l.pos + 4 * k, vals[0]);
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Reads the dynamic data in one exchange: alarm status, program numbers,
+/// sequence number, actual feed and spindle speed, and the absolute,
+/// machine, relative and distance-to-go positions of one axis (`oaxis`,
+/// `length` ≥ 44) or of all axes (`axis` = -1, `faxis`, `length` ≥ 540).
+/// For all axes every record is placed at its array index; slots the CNC
+/// sent no record for are left as they were.
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddynamic2(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBDY2,
+) -> c_short {
+    ffi_boundary!("cnc_rddynamic2", {
+        dynamic(&DY2, FlibHndl, axis, length, buf.cast())
+    })
+}
+
+/// cnc_rddynamic2 with alarm and program numbers as shorts (ODBDY;
+/// `length` ≥ 40 for one axis, 536 for all).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddynamic(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBDY,
+) -> c_short {
+    ffi_boundary!("cnc_rddynamic", {
+        dynamic(&DY, FlibHndl, axis, length, buf.cast())
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Feed and speed
+// ---------------------------------------------------------------------------
+
+fn act(cmd: u16, h: c_ushort, out: *mut ODBACT) -> Result<()> {
+    let h = handles::get(h)?;
+    let out = nonnull(out)?;
+    let v = h.call(&actual(cmd))?;
+    unsafe { put_at(out.cast::<u8>(), offset_of!(ODBACT, data), v.value) };
+    Ok(())
+}
+
+/// Reads the actual feed rate (F).
+///
+/// # Safety
+/// `actualfeed` must point to a writable ODBACT.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_actf(FlibHndl: c_ushort, actualfeed: *mut ODBACT) -> c_short {
+    ffi_boundary!("cnc_actf", { act(ACTF, FlibHndl, actualfeed) })
+}
+
+/// Reads the actual spindle speed (S).
+///
+/// # Safety
+/// `actualspindle` must point to a writable ODBACT.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_acts(FlibHndl: c_ushort, actualspindle: *mut ODBACT) -> c_short {
+    ffi_boundary!("cnc_acts", { act(ACTS, FlibHndl, actualspindle) })
+}
+
+/// Reads the actual speed of spindle `sp_no` (1..) or of all spindles (-1):
+/// `datano` = sp_no, `data[i]` per spindle.
+///
+/// # Safety
+/// `actualspindle` must point to a writable ODBACT2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_acts2(
+    FlibHndl: c_ushort,
+    sp_no: c_short,
+    actualspindle: *mut ODBACT2,
+) -> c_short {
+    ffi_boundary!("cnc_acts2", {
+        let h = handles::get(FlibHndl)?;
+        let base = nonnull(actualspindle)?.cast::<u8>();
+        let (_, recs) = h.call(&SpindleData {
+            code: spdl::SPEED_ACT,
+            sp_no,
+        })?;
+        unsafe {
+            put_at(base, offset_of!(ODBACT2, datano), sp_no);
+            for (i, r) in recs.iter().take(MAX_SPINDLE).enumerate() {
+                put_at(base, offset_of!(ODBACT2, data) + 4 * i, r.value);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
+/// with decimals, units and names (ODBSPEED). Other types: EW_ATTRIB.
+///
+/// # Safety
+/// `speed` must point to a writable ODBSPEED.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdspeed(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    speed: *mut ODBSPEED,
+) -> c_short {
+    ffi_boundary!("cnc_rdspeed", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(speed)?;
+        let (feed, spindle) = match r#type {
+            0 => (true, false),
+            1 => (false, true),
+            -1 => (true, true),
+            _ => return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or -1")),
+        };
+        let r = h.call(&Speed { feed, spindle })?;
+        if let Some(f) = r.actf {
+            let v = SPEEDELM {
+                data: f.value,
+                dec: f.exp,
+                unit: (r.feed_unit as i16).wrapping_sub(3),
+                disp: 0,
+                name: b'F' as c_char,
+                suff: 0,
+            };
+            unsafe { put(&raw mut (*out).actf, v) };
+        }
+        if let Some(s) = r.acts {
+            let (disp, name, suff) = if r.count == 0 {
+                (0, b'S', 0)
+            } else {
+                (1, r.name[0], r.name[1])
+            };
+            let v = SPEEDELM {
+                data: s.value,
+                dec: s.exp,
+                unit: 2,
+                disp,
+                name: name as c_char,
+                suff: suff as c_char,
+            };
+            unsafe { put(&raw mut (*out).acts, v) };
+        }
+        Ok(())
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Load meters and axis data
+// ---------------------------------------------------------------------------
+
+/// The 11 bytes of a LOADELM FANUC writes (`reserve` untouched).
+///
+/// # Safety
+/// `p` must point to a writable LOADELM.
+unsafe fn put_load(p: *mut LOADELM, v: &AxisValue, unit: i16) {
+    let b = p.cast::<u8>();
+    unsafe {
+        put_at(b, offset_of!(LOADELM, data), v.data);
+        put_at(b, offset_of!(LOADELM, dec), v.dec);
+        put_at(b, offset_of!(LOADELM, unit), unit);
+        put_at(b, offset_of!(LOADELM, name), v.name[0]);
+        put_at(b, offset_of!(LOADELM, suff1), v.name[1]);
+        put_at(b, offset_of!(LOADELM, suff2), v.name[2]);
+    }
+}
+
+/// Reads the servo load meters: `*data_num` in = room, out = axes written.
+///
+/// # Safety
+/// `data_num` must point to a writable short, `loadmeter` to `*data_num`
+/// writable ODBSVLOAD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdsvmeter(
+    FlibHndl: c_ushort,
+    data_num: *mut c_short,
+    loadmeter: *mut ODBSVLOAD,
+) -> c_short {
+    ffi_boundary!("cnc_rdsvmeter", {
+        let h = handles::get(FlibHndl)?;
+        let limit = read_count(data_num)?;
+        let out = nonnull(loadmeter)?;
+        let r = h.call(&AxisDataCall {
+            what: AxisData::Servo(vec![1]),
+            limit,
+        })?;
+        for (i, v) in r.values[0].iter().enumerate() {
+            unsafe { put_load(&raw mut (*out.add(i)).svload, v, 0) };
+        }
+        unsafe { put(data_num, r.count as c_short) };
+        Ok(())
+    })
+}
+
+/// Reads the spindle load meters (`type` 0), motor speeds (1) or both (-1):
+/// `*data_num` in = room, out = spindles written.
+///
+/// # Safety
+/// `data_num` must point to a writable short, `loadmeter` to `*data_num`
+/// writable ODBSPLOAD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdspmeter(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    data_num: *mut c_short,
+    loadmeter: *mut ODBSPLOAD,
+) -> c_short {
+    ffi_boundary!("cnc_rdspmeter", {
+        let h = handles::get(FlibHndl)?;
+        let limit = read_count(data_num)?;
+        let out = nonnull(loadmeter)?;
+        let (load, speed) = match r#type {
+            0 => (true, false),
+            1 => (false, true),
+            -1 => (true, true),
+            _ => return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or -1")),
+        };
+        need_spindle_info(&h)?;
+        let mut codes = vec![];
+        if load {
+            codes.push(spdl::LOAD_METER);
+        }
+        if speed {
+            codes.push(spdl::SPEED_METER);
+        }
+        let r = h.call(&AxisDataCall {
+            what: AxisData::Spindle(codes),
+            limit,
+        })?;
+        let mut rows = r.values.iter();
+        if load {
+            for (i, v) in rows.next().into_iter().flatten().enumerate() {
+                unsafe { put_load(&raw mut (*out.add(i)).spload, v, 0) };
+            }
+        }
+        if speed {
+            for (i, v) in rows.next().into_iter().flatten().enumerate() {
+                unsafe { put_load(&raw mut (*out.add(i)).spspeed, v, 1) };
+            }
+        }
+        unsafe { put(data_num, r.count as c_short) };
+        Ok(())
+    })
+}
+
+/// Reads the load of serial spindle `sp_no` (1..8, or -1 all): `datano` =
+/// sp_no, `data[i]` = low 16 bits of each value (`type` not written).
+///
+/// # Safety
+/// `serialspindle` must point to a writable ODBSPN.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdspload(
+    FlibHndl: c_ushort,
+    sp_no: c_short,
+    serialspindle: *mut ODBSPN,
+) -> c_short {
+    ffi_boundary!("cnc_rdspload", {
+        let h = handles::get(FlibHndl)?;
+        let base = nonnull(serialspindle)?.cast::<u8>();
+        if sp_no > MAX_SPINDLE as c_short {
+            return Err(Error::local(EW_NUMBER, "spindle number above 8"));
+        }
+        let (n, recs) = h.call(&SpindleData {
+            code: spdl::LOAD_SERIAL,
+            sp_no,
+        })?;
+        if sp_no > n as c_short {
+            return Err(Error::local(EW_NUMBER, "the CNC has fewer spindles"));
+        }
+        unsafe {
+            put_at(base, offset_of!(ODBSPN, datano), sp_no);
+            for (i, r) in recs.iter().take(MAX_SPINDLE).enumerate() {
+                put_at(base, offset_of!(ODBSPN, data) + 2 * i, r.value as i16);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Position types of rdaxisdata class 1 / rdposition: 0 absolute,
+/// 1 machine, 2 relative, 3 distance to go (0x26 codes 0..3).
+const POS_TYPES: [i32; 4] = [pos::ABSOLUTE2, pos::MACHINE, pos::RELATIVE2, pos::DISTANCE2];
+
+/// Reads several values of all axes (`cls` 1 positions, types 0..3), servo
+/// loads (`cls` 2, type 0) or spindles (`cls` 3, types 0 load, 1 speed):
+/// `num` types from `type`; `*len` in = axes room per type, out = axes
+/// written. Record (type k, axis i) is `axdata[k * len_in + i]`.
+///
+/// # Safety
+/// `type` must point to `num` shorts, `len` to a writable short, `axdata`
+/// to `num * *len` writable ODBAXDT.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdaxisdata(
+    FlibHndl: c_ushort,
+    cls: c_short,
+    r#type: *mut c_short,
+    num: c_short,
+    len: *mut c_short,
+    axdata: *mut ODBAXDT,
+) -> c_short {
+    ffi_boundary!("cnc_rdaxisdata", {
+        let h = handles::get(FlibHndl)?;
+        let types_p = nonnull(r#type)?;
+        let room = read_count(len)?;
+        let out = nonnull(axdata)?;
+        if !(1..=16).contains(&num) {
+            return Err(Error::local(EW_NUMBER, "num must be 1..16"));
+        }
+        if room < 1 {
+            return Err(Error::length());
+        }
+        let types: Vec<c_short> = (0..num as usize)
+            .map(|i| unsafe { types_p.add(i).read_unaligned() })
+            .collect();
+        let bad = |ok: &dyn Fn(c_short) -> bool| types.iter().any(|t| !ok(*t));
+        let (what, units): (AxisData, Vec<Option<i16>>) = match cls {
+            1 => {
+                if bad(&|t| (0..4).contains(&t)) {
+                    return Err(Error::local(EW_ATTRIB, "class 1 types are 0..3"));
+                }
+                let codes = types.iter().map(|t| POS_TYPES[*t as usize]).collect();
+                (AxisData::Positions(codes), vec![None; types.len()])
+            }
+            2 => {
+                if bad(&|t| t == 0) {
+                    return Err(Error::local(EW_ATTRIB, "class 2 type is 0 (servo load)"));
+                }
+                (
+                    AxisData::Servo(vec![1; types.len()]),
+                    vec![Some(8); types.len()],
+                )
+            }
+            3 => {
+                if bad(&|t| t == 0 || t == 1) {
+                    return Err(Error::local(
+                        EW_ATTRIB,
+                        "class 3 types are 0 (load), 1 (speed)",
+                    ));
+                }
+                need_spindle_info(&h)?;
+                let codes = types
+                    .iter()
+                    .map(|t| spdl::LOAD_METER + i32::from(*t))
+                    .collect();
+                // ODBAXDT unit codes: 8 = %, 5 = min^-1.
+                let units = types
+                    .iter()
+                    .map(|t| Some(if *t == 0 { 8 } else { 5 }))
+                    .collect();
+                (AxisData::Spindle(codes), units)
+            }
+            _ => return Err(Error::local(EW_ATTRIB, "class must be 1, 2 or 3")),
+        };
+        let r = h.call(&AxisDataCall { what, limit: room })?;
+        for (k, (row, unit)) in r.values.iter().zip(&units).enumerate() {
+            for (i, v) in row.iter().enumerate() {
+                let b = unsafe { out.add(k * room as usize + i) }.cast::<u8>();
+                let (unit, flag) = match unit {
+                    Some(u) => (*u, 0),
+                    None => (v.unit, v.flag),
+                };
+                unsafe {
+                    put_at(b, offset_of!(ODBAXDT, name), v.name);
+                    put_at(b, offset_of!(ODBAXDT, data), v.data);
+                    put_at(b, offset_of!(ODBAXDT, dec), v.dec);
+                    put_at(b, offset_of!(ODBAXDT, unit), unit);
+                    put_at(b, offset_of!(ODBAXDT, flag), flag);
+                }
+            }
+        }
+        unsafe { put(len, r.count as c_short) };
+        Ok(())
+    })
+}
+
+/// Reads positions with decimals, units and names: `type` 0 absolute,
+/// 1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
+/// room, out = axes written.
+///
+/// # Safety
+/// `data_num` must point to a writable short, `position` to `*data_num`
+/// writable ODBPOS.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdposition(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    data_num: *mut c_short,
+    position: *mut ODBPOS,
+) -> c_short {
+    ffi_boundary!("cnc_rdposition", {
+        let h = handles::get(FlibHndl)?;
+        let limit = read_count(data_num)?;
+        let out = nonnull(position)?;
+        let slots: Vec<usize> = match r#type {
+            -1 => vec![0, 1, 2, 3],
+            0..=3 => vec![r#type as usize],
+            _ => return Err(Error::local(EW_ATTRIB, "type must be -1..3")),
+        };
+        let codes = slots.iter().map(|s| POS_TYPES[*s]).collect();
+        let r = h.call(&AxisDataCall {
+            what: AxisData::Positions(codes),
+            limit,
+        })?;
+        for (slot, row) in slots.iter().zip(&r.values) {
+            for (i, v) in row.iter().enumerate() {
+                let e = POSELM {
+                    data: v.data,
+                    dec: v.dec,
+                    unit: v.unit,
+                    // Unverified reading: the flag's display bit.
+                    disp: v.flag & 1,
+                    name: v.name[0] as c_char,
+                    suff: v.name[1] as c_char,
+                };
+                let p = unsafe { out.add(i).cast::<POSELM>().add(*slot) };
+                unsafe { put(p, e) };
+            }
+        }
+        unsafe { put(data_num, r.count as c_short) };
+        Ok(())
+    })
+}
+
+// ---------------------------------------------------------------------------
+// Positions (ODBAXIS)
+// ---------------------------------------------------------------------------
+
+fn axis_values(
+    code: i32,
+    h: c_ushort,
+    axis: c_short,
+    length: c_short,
+    out: *mut ODBAXIS,
+) -> Result<()> {
+    {
+        let h = handles::get(h)?;
+        let base = nonnull(out)?.cast::<u8>();
+        let data = offset_of!(ODBAXIS, data);
+        let length = length.max(0) as usize;
+        // One value, or one per axis the CNC can have (all axes).
+        let need = if axis == -1 {
+            data + 4 * usize::from(ctx(&h).max_axes).min(MAX_AXIS)
+        } else {
+            data + 4
+        };
+        if length < need {
+            return Err(Error::local(
+                EW_LENGTH,
+                "length too small for the axes asked",
+            ));
+        }
+        let recs = h.call(&position(code, axis))?;
+        if recs.is_empty() {
+            return Err(Error::protocol(
+                crate::error::detail::SHORT_PAYLOAD,
+                "no position record",
+            ));
+        }
+        let room = ((length - data) / 4).min(MAX_AXIS);
+        let n = if axis == -1 { recs.len().min(room) } else { 1 };
+        unsafe {
+            put_at(base, offset_of!(ODBAXIS, r#type), axis);
+            for (i, r) in recs.iter().take(n).enumerate() {
+                put_at(base, data + 4 * i, r.value);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Reads the absolute position of one axis (`length` ≥ 8) or all axes (-1).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_absolute(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_absolute", {
+        axis_values(pos::ABSOLUTE, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the absolute position (form 2: 0x26 code 0).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_absolute2(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_absolute2", {
+        axis_values(pos::ABSOLUTE2, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the machine position.
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_machine(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_machine", {
+        axis_values(pos::MACHINE, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the relative position.
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_relative(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_relative", {
+        axis_values(pos::RELATIVE, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the relative position (form 2: 0x26 code 2).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_relative2(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_relative2", {
+        axis_values(pos::RELATIVE2, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the distance to go.
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_distance(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_distance", {
+        axis_values(pos::DISTANCE, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the input (`dec_fig_in`) and output (`dec_fig_out`) decimal
+/// figures of every axis; `*valid_fig` = the number of axes.
+///
+/// # Safety
+/// `valid_fig` must point to a writable short, `dec_fig_in` and
+/// `dec_fig_out` to MAX_AXIS writable shorts each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_getfigure(
+    FlibHndl: c_ushort,
+    data_type: c_short,
+    valid_fig: *mut c_short,
+    dec_fig_in: *mut c_short,
+    dec_fig_out: *mut c_short,
+) -> c_short {
+    ffi_boundary!("cnc_getfigure", {
+        let h = handles::get(FlibHndl)?;
+        let (v, fin, fout) = (
+            nonnull(valid_fig)?,
+            nonnull(dec_fig_in)?,
+            nonnull(dec_fig_out)?,
+        );
+        let f = h.call(&getfigure(data_type))?;
+        unsafe {
+            put(v, f.count as c_short);
+            for (i, a) in f.axes.iter().take(MAX_AXIS).enumerate() {
+                put(fin.add(i), a.input);
+                put(fout.add(i), a.output);
+            }
+        }
+        Ok(())
+    })
+}

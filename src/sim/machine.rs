@@ -168,6 +168,58 @@ impl CncService for Machine {
     }
 
     // --- position ---
+    fn alarm_bits(&mut self, path: u16) -> Reply<crate::proto::position::AlarmBits> {
+        self.pos_alarm_bits(path)
+    }
+    fn prog_nums(&mut self, path: u16) -> Reply<crate::proto::position::ProgNums> {
+        self.pos_prog_nums(path)
+    }
+    fn seq_num(&mut self, path: u16) -> Reply<crate::proto::position::SeqNum> {
+        self.pos_seq_num(path)
+    }
+    fn actual(&mut self, path: u16, spindle: bool) -> Reply<crate::proto::value::Value> {
+        self.pos_actual(path, spindle)
+    }
+    fn positions(
+        &mut self,
+        path: u16,
+        code: i32,
+        axis: i32,
+    ) -> Reply<Vec<crate::proto::value::Value>> {
+        self.pos_positions(path, code, axis)
+    }
+    fn figures(&mut self, path: u16, data_type: i32) -> Reply<crate::proto::position::Figures> {
+        self.pos_figures(path, data_type)
+    }
+    fn axis_names(&mut self, path: u16) -> Reply<Vec<crate::proto::position::Name>> {
+        self.pos_axis_names(path)
+    }
+    fn axis_pos_names(&mut self, path: u16) -> Reply<crate::proto::position::AxisNames> {
+        self.pos_axis_pos_names(path)
+    }
+    fn spindle_names(&mut self, path: u16) -> Reply<Vec<crate::proto::position::Name>> {
+        self.pos_spindle_names(path)
+    }
+    fn spindle_data(
+        &mut self,
+        path: u16,
+        code: i32,
+        sp_no: i32,
+    ) -> Reply<Vec<crate::proto::value::Value>> {
+        self.pos_spindle_data(path, code, sp_no)
+    }
+    fn servo_load(&mut self, path: u16, code: i32) -> Reply<Vec<crate::proto::value::Value>> {
+        self.pos_servo_load(path, code)
+    }
+    fn units(&mut self, path: u16, kind: i32) -> Reply<Vec<u16>> {
+        self.pos_units(path, kind)
+    }
+    fn axis_flags(&mut self, path: u16) -> Reply<Vec<u32>> {
+        self.pos_axis_flags(path)
+    }
+    fn counts(&mut self, path: u16, kind: i32) -> Reply<crate::proto::position::Count> {
+        self.pos_counts(path, kind)
+    }
 
     // --- program ---
 

@@ -6,6 +6,7 @@ pub mod machine;
 pub mod macros;
 pub mod param;
 pub mod pmc;
+pub mod position;
 pub mod profile;
 pub mod run;
 pub mod server;

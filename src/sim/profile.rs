@@ -108,7 +108,9 @@ pub struct Path {
     #[serde(rename = "alarm")]
     pub alarms: Vec<super::run::Alarm>,
     // --- position ---
-
+    /// Actual feed rate (cnc_actf, rddynamic2 actf, rdspeed), mm/min; the
+    /// program cycle (src/sim/run.rs) may change it while running.
+    pub feed: i32,
     // --- program ---
 
     // --- alarm ---
@@ -153,6 +155,14 @@ pub struct Axis {
     pub machine: i32,
     pub relative: i32,
     pub distance: i32,
+    // --- position ---
+    /// Servo load meter, % (cnc_rdsvmeter, rdaxisdata class 2).
+    pub servo_load: i32,
+    /// Unit of the positions: 0 mm, 1 inch, 2 degree (rdaxisdata / rdposition `unit`).
+    pub unit: i16,
+    /// Input / output figures (cnc_getfigure); default `decimals`.
+    pub input_figures: Option<i16>,
+    pub output_figures: Option<i16>,
 }
 
 #[derive(Debug, Clone, Deserialize, Default)]
@@ -160,6 +170,9 @@ pub struct Axis {
 pub struct Spindle {
     pub name: String,
     pub speed: i32,
+    // --- position ---
+    /// Spindle load, % (cnc_rdspmeter, rdaxisdata class 3, cnc_rdspload).
+    pub load: i32,
 }
 
 #[derive(Debug, thiserror::Error)]

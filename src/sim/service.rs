@@ -71,6 +71,72 @@ pub trait CncService: Send {
     }
 
     // --- position ---
+    /// 0x1a: one bit per active alarm type (also cnc_alarm / cnc_alarm2).
+    fn alarm_bits(&mut self, path: u16) -> Reply<crate::proto::position::AlarmBits> {
+        unsupported()
+    }
+    /// 0x1c: running and main program numbers (also cnc_rdprgnum).
+    fn prog_nums(&mut self, path: u16) -> Reply<crate::proto::position::ProgNums> {
+        unsupported()
+    }
+    /// 0x1d: sequence number (also cnc_rdseqnum).
+    fn seq_num(&mut self, path: u16) -> Reply<crate::proto::position::SeqNum> {
+        unsupported()
+    }
+    /// 0x24 (`spindle` false) / 0x25 (true): actual feed / spindle speed.
+    fn actual(&mut self, path: u16, spindle: bool) -> Reply<crate::proto::value::Value> {
+        unsupported()
+    }
+    /// 0x26[code, axis]: positions (axis -1: max-axes records).
+    fn positions(
+        &mut self,
+        path: u16,
+        code: i32,
+        axis: i32,
+    ) -> Reply<Vec<crate::proto::value::Value>> {
+        unsupported()
+    }
+    /// 0x1b[type]: input/output figures per axis.
+    fn figures(&mut self, path: u16, data_type: i32) -> Reply<crate::proto::position::Figures> {
+        unsupported()
+    }
+    /// 0x89[0]: 4-byte axis names.
+    fn axis_names(&mut self, path: u16) -> Reply<Vec<crate::proto::position::Name>> {
+        unsupported()
+    }
+    /// 0x89[-1]: names per position kind.
+    fn axis_pos_names(&mut self, path: u16) -> Reply<crate::proto::position::AxisNames> {
+        unsupported()
+    }
+    /// 0x8a: 4-byte spindle names.
+    fn spindle_names(&mut self, path: u16) -> Reply<Vec<crate::proto::position::Name>> {
+        unsupported()
+    }
+    /// 0x40[code, sp_no]: spindle data records.
+    fn spindle_data(
+        &mut self,
+        path: u16,
+        code: i32,
+        sp_no: i32,
+    ) -> Reply<Vec<crate::proto::value::Value>> {
+        unsupported()
+    }
+    /// 0x56[code]: servo load records per axis.
+    fn servo_load(&mut self, path: u16, code: i32) -> Reply<Vec<crate::proto::value::Value>> {
+        unsupported()
+    }
+    /// 0x88[kind]: unit words.
+    fn units(&mut self, path: u16, kind: i32) -> Reply<Vec<u16>> {
+        unsupported()
+    }
+    /// 0xa3: display flags per axis.
+    fn axis_flags(&mut self, path: u16) -> Reply<Vec<u32>> {
+        unsupported()
+    }
+    /// 0xa4[kind]: axis / spindle counts.
+    fn counts(&mut self, path: u16, kind: i32) -> Reply<crate::proto::position::Count> {
+        unsupported()
+    }
 
     // --- program ---
 
@@ -188,6 +254,23 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, cmd::RDPARAM16) => enc(svc.param16(p, a[0], a[2] as i16)),
 
             // --- position ---
+            (CLASS_CNC, crate::proto::position::ALARM) => enc(svc.alarm_bits(p)),
+            (CLASS_CNC, crate::proto::position::PRGNUM) => enc(svc.prog_nums(p)),
+            (CLASS_CNC, crate::proto::position::SEQNUM) => enc(svc.seq_num(p)),
+            (CLASS_CNC, crate::proto::position::ACTF) => enc(svc.actual(p, false)),
+            (CLASS_CNC, crate::proto::position::ACTS) => enc(svc.actual(p, true)),
+            (CLASS_CNC, crate::proto::position::POSITION) => enc(svc.positions(p, a[0], a[1])),
+            (CLASS_CNC, crate::proto::position::GETFIGURE) => enc(svc.figures(p, a[0])),
+            (CLASS_CNC, crate::proto::position::RDAXISNAME) if a[0] == -1 => {
+                enc(svc.axis_pos_names(p))
+            }
+            (CLASS_CNC, crate::proto::position::RDAXISNAME) => enc(svc.axis_names(p)),
+            (CLASS_CNC, crate::proto::position::RDSPDLNAME) => enc(svc.spindle_names(p)),
+            (CLASS_CNC, crate::proto::position::SPINDLE) => enc(svc.spindle_data(p, a[0], a[1])),
+            (CLASS_CNC, crate::proto::position::SERVO_LOAD) => enc(svc.servo_load(p, a[0])),
+            (CLASS_CNC, crate::proto::position::UNITS) => enc(svc.units(p, a[0])),
+            (CLASS_CNC, crate::proto::position::AXIS_FLAGS) => enc(svc.axis_flags(p)),
+            (CLASS_CNC, crate::proto::position::COUNT) => enc(svc.counts(p, a[0])),
 
             // --- program ---
 

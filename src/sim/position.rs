@@ -1,0 +1,249 @@
+//! What the simulated CNC answers for the position area: positions, names,
+//! feed, speeds, loads, figures, and the alarm / program / sequence words of
+//! the dynamic frame. Everything is read from the profile and the live
+//! state at request time, so motion written there by the running program
+//! (src/sim/run.rs) shows up at once.
+//!
+//! Wire forms are those FANUC's library reads (SPEC.md §5.3). Where the
+//! meaning of a word is not known, the answer is a plausible constant
+//! (marked below).
+
+use super::Machine;
+use super::profile::{Axis, Path, Spindle};
+use super::service::{CncError, Reply};
+use crate::ew::{EW_ATTRIB, EW_NUMBER};
+use crate::proto::position::{
+    AlarmBits, AxisNames, Count, Figure, Figures, Name, PosNames, ProgNums, SeqNum, pos, spdl,
+};
+use crate::proto::value::{BASE_10, Value};
+
+const ATTRIB: CncError = CncError::new(EW_ATTRIB);
+const NUMBER: CncError = CncError::new(EW_NUMBER);
+
+/// The 4-byte name entry of an axis: name, suffix, two zero bytes.
+fn axis_name(a: &Axis) -> [u8; 4] {
+    let mut n = [0u8; 4];
+    n[0] = a.name.bytes().next().unwrap_or(0);
+    n[1] = a.suffix.bytes().next().unwrap_or(0);
+    n
+}
+
+/// The 4-byte name entry of a spindle: the profile's name characters
+/// ("S", "S1" ...), zero-padded.
+fn spindle_name(s: &Spindle) -> [u8; 4] {
+    let mut n = [0u8; 4];
+    for (d, b) in n.iter_mut().zip(s.name.bytes()) {
+        *d = b;
+    }
+    n
+}
+
+/// An empty record for an axis slot the path does not use.
+const UNUSED: Value = Value {
+    value: 0,
+    base: BASE_10,
+    exp: 0,
+};
+
+impl Machine {
+    fn pos_path(&self, path: u16) -> Reply<&Path> {
+        self.profile
+            .paths
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)
+    }
+
+    fn pos_run(&self, path: u16) -> Reply<&super::run::PathRun> {
+        self.run
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)
+    }
+
+    pub(crate) fn pos_alarm_bits(&self, path: u16) -> Reply<AlarmBits> {
+        let bits = self
+            .pos_run(path)?
+            .alarms
+            .iter()
+            .filter(|a| (0..32).contains(&a.kind))
+            .fold(0u32, |b, a| b | 1 << a.kind);
+        Ok(AlarmBits { bits })
+    }
+
+    pub(crate) fn pos_prog_nums(&self, path: u16) -> Reply<ProgNums> {
+        let r = self.pos_run(path)?;
+        Ok(ProgNums {
+            data: r.program,
+            mdata: r.main_program,
+        })
+    }
+
+    pub(crate) fn pos_seq_num(&self, path: u16) -> Reply<SeqNum> {
+        Ok(SeqNum {
+            data: self.pos_run(path)?.seq,
+        })
+    }
+
+    /// Feed rate of the path, or the speed of its first spindle.
+    pub(crate) fn pos_actual(&self, path: u16, spindle: bool) -> Reply<Value> {
+        let p = self.pos_path(path)?;
+        let v = if spindle {
+            p.spindles.first().map_or(0, |s| s.speed)
+        } else {
+            p.feed
+        };
+        Ok(Value::decimal(v, 0))
+    }
+
+    /// 0x26: one record for axis 1..=axes, `max_axes` records for -1 (the
+    /// path's axes, then zero records), as a real CNC answers.
+    pub(crate) fn pos_positions(&self, path: u16, code: i32, axis: i32) -> Reply<Vec<Value>> {
+        let p = self.pos_path(path)?;
+        let pick: fn(&Axis) -> i32 = match code {
+            pos::ABSOLUTE | pos::ABSOLUTE2 => |a| a.absolute,
+            pos::MACHINE => |a| a.machine,
+            pos::RELATIVE | pos::RELATIVE2 => |a| a.relative,
+            pos::DISTANCE | pos::DISTANCE2 => |a| a.distance,
+            _ => return Err(NUMBER),
+        };
+        let rec = |a: &Axis| Value::decimal(pick(a), a.decimals);
+        match axis {
+            -1 => {
+                let max = usize::from(self.profile.cnc.max_axes);
+                let mut v: Vec<Value> = p.axes.iter().map(rec).collect();
+                v.resize(max.max(v.len()), UNUSED);
+                Ok(v)
+            }
+            n if n >= 1 && (n as usize) <= p.axes.len() => Ok(vec![rec(&p.axes[n as usize - 1])]),
+            _ => Err(ATTRIB),
+        }
+    }
+
+    /// 0x1b: input/output figures of the path's axes (types 0 and 1 are
+    /// answered alike; what distinguishes them is not known).
+    pub(crate) fn pos_figures(&self, path: u16, data_type: i32) -> Reply<Figures> {
+        if !(0..=1).contains(&data_type) {
+            return Err(ATTRIB);
+        }
+        let p = self.pos_path(path)?;
+        Ok(Figures {
+            count: p.axes.len() as i32,
+            axes: p
+                .axes
+                .iter()
+                .map(|a| Figure {
+                    input: a.input_figures.unwrap_or(a.decimals),
+                    output: a.output_figures.unwrap_or(a.decimals),
+                })
+                .collect(),
+        })
+    }
+
+    pub(crate) fn pos_axis_names(&self, path: u16) -> Reply<Vec<Name>> {
+        let p = self.pos_path(path)?;
+        Ok(p.axes
+            .iter()
+            .map(|a| Name {
+                bytes: axis_name(a),
+            })
+            .collect())
+    }
+
+    /// 0x89[-1]: the same name for the absolute, machine and relative
+    /// displays (the fourth entry is unused).
+    pub(crate) fn pos_axis_pos_names(&self, path: u16) -> Reply<AxisNames> {
+        let p = self.pos_path(path)?;
+        Ok(AxisNames {
+            count: p.axes.len() as i32,
+            axes: p
+                .axes
+                .iter()
+                .map(|a| {
+                    let n = axis_name(a);
+                    PosNames {
+                        absolute: n,
+                        machine: n,
+                        relative: n,
+                        other: [0; 4],
+                    }
+                })
+                .collect(),
+        })
+    }
+
+    pub(crate) fn pos_spindle_names(&self, path: u16) -> Reply<Vec<Name>> {
+        let p = self.pos_path(path)?;
+        Ok(p.spindles
+            .iter()
+            .map(|s| Name {
+                bytes: spindle_name(s),
+            })
+            .collect())
+    }
+
+    /// 0x40: code 0 (serial spindle load) and 4 (load meter) answer the
+    /// load in %, 3 (actual speed) and 5 (motor speed) the speed.
+    pub(crate) fn pos_spindle_data(&self, path: u16, code: i32, sp_no: i32) -> Reply<Vec<Value>> {
+        let p = self.pos_path(path)?;
+        let pick: fn(&Spindle) -> i32 = match code {
+            spdl::LOAD_SERIAL | spdl::LOAD_METER => |s| s.load,
+            spdl::SPEED_ACT | spdl::SPEED_METER => |s| s.speed,
+            _ => return Err(NUMBER),
+        };
+        let rec = |s: &Spindle| Value::decimal(pick(s), 0);
+        match sp_no {
+            -1 => Ok(p.spindles.iter().map(rec).collect()),
+            n if n >= 1 && (n as usize) <= p.spindles.len() => {
+                Ok(vec![rec(&p.spindles[n as usize - 1])])
+            }
+            _ => Err(NUMBER),
+        }
+    }
+
+    /// 0x56[1]: servo load meter (%) of each axis of the path.
+    pub(crate) fn pos_servo_load(&self, path: u16, code: i32) -> Reply<Vec<Value>> {
+        if code != 1 {
+            return Err(NUMBER);
+        }
+        let p = self.pos_path(path)?;
+        Ok(p.axes
+            .iter()
+            .map(|a| Value::decimal(a.servo_load, 0))
+            .collect())
+    }
+
+    /// 0x88: [1] and [2] two words per axis (FANUC's library reads word 0
+    /// of [1] as the position unit, word 1 of [2] as the machine-position
+    /// unit; both words carry the axis unit here); [3] word 0 = feed unit
+    /// in ODBAXDT codes (3 = mm/min); [4] meaning unknown: zeros.
+    pub(crate) fn pos_units(&self, path: u16, kind: i32) -> Reply<Vec<u16>> {
+        let p = self.pos_path(path)?;
+        match kind {
+            1 | 2 => Ok(p
+                .axes
+                .iter()
+                .flat_map(|a| [a.unit as u16, a.unit as u16])
+                .collect()),
+            3 => Ok(vec![3, 0, 0, 0]),
+            4 => Ok(vec![0; 4]),
+            _ => Err(NUMBER),
+        }
+    }
+
+    /// 0xa3: per axis, bits 0 and 1 set (FANUC's library derives the
+    /// machine and absolute display flags from them; the other bits'
+    /// meaning is not known).
+    pub(crate) fn pos_axis_flags(&self, path: u16) -> Reply<Vec<u32>> {
+        Ok(vec![0b11; self.pos_path(path)?.axes.len()])
+    }
+
+    /// 0xa4: [0] and [2] the path's axes, [1] and [3] its spindles.
+    pub(crate) fn pos_counts(&self, path: u16, kind: i32) -> Reply<Count> {
+        let p = self.pos_path(path)?;
+        let n = match kind {
+            0 | 2 => p.axes.len(),
+            1 | 3 => p.spindles.len(),
+            _ => return Err(NUMBER),
+        };
+        Ok(Count { n: n as u16 })
+    }
+}
