@@ -148,6 +148,62 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
+ One record of ODBAHIS (48 bytes).
+ */
+typedef struct ODBAHIS_ALM {
+    short dummy;
+    short alm_grp;
+    short alm_no;
+    char axis_no;
+    char year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+    char dummy2;
+    short len_msg;
+    char alm_msg[32];
+} ODBAHIS_ALM;
+
+/*
+ cnc_rdalmhistry: alarm history (10 records as declared; the caller's
+ `length` says how many really fit).
+ */
+typedef struct ODBAHIS {
+    unsigned short s_no;
+    short type;
+    unsigned short e_no;
+    struct ODBAHIS_ALM alm_his[10];
+} ODBAHIS;
+
+/*
+ One record of ODBAHIS2 (52 bytes).
+ */
+typedef struct ODBAHIS2_ALM {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    char alm_msg[32];
+} ODBAHIS2_ALM;
+
+/*
+ cnc_rdalmhistry2: alarm history, all fields as shorts.
+ */
+typedef struct ODBAHIS2 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBAHIS2_ALM alm_his[10];
+} ODBAHIS2;
+
+/*
  FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
  */
 typedef int32_t LONG;
@@ -156,6 +212,161 @@ typedef int32_t LONG;
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
+
+/*
+ cnc_rdtofs: one tool offset value.
+ */
+typedef struct ODBTOFS {
+    short datano;
+    short type;
+    LONG data;
+} ODBTOFS;
+
+/*
+ A tool offset with its imaginary tip number and 1 value (IODBTO.u.m_ofs_at).
+ */
+typedef struct IODBTO_TIP1 {
+    short tip;
+    LONG data[1];
+} IODBTO_TIP1;
+
+/*
+ A tool offset with its imaginary tip number and 2 values (IODBTO.u.m_ofs_bt).
+ */
+typedef struct IODBTO_TIP2 {
+    short tip;
+    LONG data[2];
+} IODBTO_TIP2;
+
+/*
+ A tool offset with its imaginary tip number and 4 values (m_ofs_ct, t_ofs_a).
+ */
+typedef struct IODBTO_TIP4 {
+    short tip;
+    LONG data[4];
+} IODBTO_TIP4;
+
+/*
+ A tool offset with its imaginary tip number and 8 values (t_ofs_b).
+ */
+typedef struct IODBTO_TIP8 {
+    short tip;
+    LONG data[8];
+} IODBTO_TIP8;
+
+/*
+ Two values of the extended lathe offsets (t_ofs_ex).
+ */
+typedef struct IODBTO_EX {
+    LONG data[2];
+} IODBTO_EX;
+
+/*
+ The value area of IODBTO: one view per offset memory type (180 bytes).
+ */
+typedef union IODBTO_U {
+    LONG m_ofs[5];
+    LONG m_ofs_a[5];
+    LONG m_ofs_b[10];
+    LONG m_ofs_c[20];
+    struct IODBTO_TIP1 m_ofs_at[5];
+    struct IODBTO_TIP2 m_ofs_bt[5];
+    struct IODBTO_TIP4 m_ofs_ct[5];
+    short t_tip[5];
+    LONG t_ofs[5];
+    struct IODBTO_TIP4 t_ofs_a[5];
+    struct IODBTO_TIP8 t_ofs_b[5];
+    LONG t_ofs_2g[15];
+    LONG m_ofs_cnr[10];
+    struct IODBTO_EX t_ofs_ex[5];
+} IODBTO_U;
+
+/*
+ cnc_rdtofsr: tool offsets of a number range (5 values as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct IODBTO {
+    short datano_s;
+    short type;
+    short datano_e;
+    union IODBTO_U u;
+} IODBTO;
+
+/*
+ cnc_rdtofsinfo: tool offset memory type and number of offsets.
+ */
+typedef struct ODBTLINF {
+    short ofs_type;
+    short use_no;
+} ODBTLINF;
+
+/*
+ cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
+ */
+typedef struct IODBZOFS {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBZOFS;
+
+/*
+ cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
+ of MAX_AXIS values; the caller's `length` says how many really fit).
+ */
+typedef struct IODBZOR {
+    short datano_s;
+    short type;
+    short datano_e;
+    LONG data[256];
+} IODBZOR;
+
+/*
+ cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
+ */
+typedef struct ODBTLIFE3 {
+    short datano;
+    short dummy;
+    LONG data;
+} ODBTLIFE3;
+
+/*
+ One tool of a tool life group (ODBTG.data).
+ */
+typedef struct ODBTG_DATA {
+    LONG tuse_num;
+    LONG tool_num;
+    LONG length_num;
+    LONG radius_num;
+    LONG tinfo;
+} ODBTG_DATA;
+
+/*
+ cnc_rdtoolgrp: a tool life group with its tools (5 as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct ODBTG {
+    short grp_num;
+    short dummy[2];
+    LONG ntool;
+    LONG life;
+    LONG count;
+    struct ODBTG_DATA data[5];
+} ODBTG;
+
+/*
+ cnc_rdtlctldata: tool control data of a punch press.
+ */
+typedef struct IODBTLCTL {
+    short slct;
+    short used_tool;
+    short turret_indx;
+    LONG zero_tl_no;
+    LONG t_axis_move;
+    LONG total_punch[2];
+    char t_axis_dec;
+    char reserve;
+    short reserves[10];
+} IODBTLCTL;
 
 #ifdef __cplusplus
 extern "C" {

@@ -273,7 +273,8 @@ macro_rules! rust_layouts {
                     stringify!($ty),
                     std::mem::size_of::<$ty>(),
                     vec![$((
-                        stringify!($field),
+                        // `r#type` is FANUC's field `type`.
+                        stringify!($field).trim_start_matches("r#"),
                         std::mem::offset_of!($ty, $field),
                         field_size(|v: &$ty| &v.$field),
                     )),*],
@@ -306,8 +307,22 @@ rust_layouts! {
     // --- pmc ---
 
     // --- offset ---
+    ODBTOFS { datano, r#type, data }
+    IODBTO { datano_s, r#type, datano_e, u }
+    ODBTLINF { ofs_type, use_no }
+    IODBZOFS { datano, r#type, data }
+    IODBZOR { datano_s, r#type, datano_e, data }
+    // alarm history (offset helper)
+    ODBAHIS { s_no, r#type, e_no, alm_his }
+    ODBAHIS2 { s_no, e_no, alm_his }
 
     // --- tool ---
+    ODBTLIFE3 { datano, dummy, data }
+    ODBTG { grp_num, dummy, ntool, life, count, data }
+    IODBTLCTL {
+        slct, used_tool, turret_indx, zero_tl_no, t_axis_move, total_punch,
+        t_axis_dec, reserve, reserves,
+    }
 }
 
 #[test]
