@@ -101,53 +101,6 @@ typedef struct ODBERR {
 } ODBERR;
 
 /*
- cnc_statinfo: CNC status information.
- */
-typedef struct ODBST {
-    short hdck;
-    short tmmode;
-    short aut;
-    short run;
-    short motion;
-    short mstb;
-    short emergency;
-    short alarm;
-    short edit;
-} ODBST;
-
-/*
- cnc_statinfo2: CNC status information 2.
- */
-typedef struct ODBST2 {
-    short hdck;
-    short tmmode;
-    short aut;
-    short run;
-    short motion;
-    short mstb;
-    short emergency;
-    short alarm;
-    short edit;
-    short warning;
-    short o3dchk;
-    short ext_opt;
-    short restart;
-} ODBST2;
-
-/*
- cnc_sysinfo: CNC system information.
- */
-typedef struct ODBSYS {
-    short addinfo;
-    short max_axis;
-    char cnc_type[2];
-    char mt_type[2];
-    char series[4];
-    char version[4];
-    char axes[2];
-} ODBSYS;
-
-/*
  One record of ODBAHIS (48 bytes).
  */
 typedef struct ODBAHIS_ALM {
@@ -209,9 +162,28 @@ typedef struct ODBAHIS2 {
 typedef int32_t LONG;
 
 /*
- FANUC's ULONG: 32 bits on every platform.
+ cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
  */
-typedef uint32_t ULONG;
+typedef struct ODBTLIFE3 {
+    short datano;
+    short dummy;
+    LONG data;
+} ODBTLIFE3;
+
+/*
+ cnc_rdtlctldata: tool control data of a punch press.
+ */
+typedef struct IODBTLCTL {
+    short slct;
+    short used_tool;
+    short turret_indx;
+    LONG zero_tl_no;
+    LONG t_axis_move;
+    LONG total_punch[2];
+    char t_axis_dec;
+    char reserve;
+    short reserves[10];
+} IODBTLCTL;
 
 /*
  cnc_rdtofs: one tool offset value.
@@ -221,6 +193,14 @@ typedef struct ODBTOFS {
     short type;
     LONG data;
 } ODBTOFS;
+
+/*
+ cnc_rdtofsinfo: tool offset memory type and number of offsets.
+ */
+typedef struct ODBTLINF {
+    short ofs_type;
+    short use_no;
+} ODBTLINF;
 
 /*
  A tool offset with its imaginary tip number and 1 value (IODBTO.u.m_ofs_at).
@@ -293,43 +273,6 @@ typedef struct IODBTO {
 } IODBTO;
 
 /*
- cnc_rdtofsinfo: tool offset memory type and number of offsets.
- */
-typedef struct ODBTLINF {
-    short ofs_type;
-    short use_no;
-} ODBTLINF;
-
-/*
- cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
- */
-typedef struct IODBZOFS {
-    short datano;
-    short type;
-    LONG data[MAX_AXIS];
-} IODBZOFS;
-
-/*
- cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
- of MAX_AXIS values; the caller's `length` says how many really fit).
- */
-typedef struct IODBZOR {
-    short datano_s;
-    short type;
-    short datano_e;
-    LONG data[256];
-} IODBZOR;
-
-/*
- cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
- */
-typedef struct ODBTLIFE3 {
-    short datano;
-    short dummy;
-    LONG data;
-} ODBTLIFE3;
-
-/*
  One tool of a tool life group (ODBTG.data).
  */
 typedef struct ODBTG_DATA {
@@ -354,19 +297,76 @@ typedef struct ODBTG {
 } ODBTG;
 
 /*
- cnc_rdtlctldata: tool control data of a punch press.
+ cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
  */
-typedef struct IODBTLCTL {
-    short slct;
-    short used_tool;
-    short turret_indx;
-    LONG zero_tl_no;
-    LONG t_axis_move;
-    LONG total_punch[2];
-    char t_axis_dec;
-    char reserve;
-    short reserves[10];
-} IODBTLCTL;
+typedef struct IODBZOFS {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBZOFS;
+
+/*
+ cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
+ of MAX_AXIS values; the caller's `length` says how many really fit).
+ */
+typedef struct IODBZOR {
+    short datano_s;
+    short type;
+    short datano_e;
+    LONG data[256];
+} IODBZOR;
+
+/*
+ cnc_statinfo: CNC status information.
+ */
+typedef struct ODBST {
+    short hdck;
+    short tmmode;
+    short aut;
+    short run;
+    short motion;
+    short mstb;
+    short emergency;
+    short alarm;
+    short edit;
+} ODBST;
+
+/*
+ cnc_statinfo2: CNC status information 2.
+ */
+typedef struct ODBST2 {
+    short hdck;
+    short tmmode;
+    short aut;
+    short run;
+    short motion;
+    short mstb;
+    short emergency;
+    short alarm;
+    short edit;
+    short warning;
+    short o3dchk;
+    short ext_opt;
+    short restart;
+} ODBST2;
+
+/*
+ cnc_sysinfo: CNC system information.
+ */
+typedef struct ODBSYS {
+    short addinfo;
+    short max_axis;
+    char cnc_type[2];
+    char mt_type[2];
+    char series[4];
+    char version[4];
+    char axes[2];
+} ODBSYS;
+
+/*
+ FANUC's ULONG: 32 bits on every platform.
+ */
+typedef uint32_t ULONG;
 
 #ifdef __cplusplus
 extern "C" {
@@ -422,6 +422,46 @@ short cnc_getdtailerr(unsigned short FlibHndl, struct ODBERR *err);
 short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 
 /*
+ Reads the number of alarm history entries. A negative count from the
+ CNC reads as 0 (an empty history).
+
+ # Safety
+ `hisno` must point to a writable unsigned short.
+ */
+short cnc_rdalmhisno(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
+ Reads the alarm history entries `s_number..=e_number` (1 = newest) into
+ ODBAHIS: year as year mod 100, the other time fields as bytes, as
+ FANUC's library writes them. `e_no` = `s_no` + entries written - 1.
+ Entries with an impossible time stamp are skipped; an entry whose message
+ length runs past its text ends the list; entries that do not fit in
+ `length` are not written.
+
+ # Safety
+ `alm_hst` must point to `length` writable bytes.
+ */
+short cnc_rdalmhistry(unsigned short FlibHndl,
+                      unsigned short s_number,
+                      unsigned short e_number,
+                      unsigned short length,
+                      struct ODBAHIS *alm_hst);
+
+/*
+ Reads the alarm history into ODBAHIS2 (all fields shorts). The year is
+ FANUC's: the low byte of the year, sign-extended (2024 → -24). Entry
+ checks and `length` as cnc_rdalmhistry.
+
+ # Safety
+ `alm_hst` must point to `length` writable bytes.
+ */
+short cnc_rdalmhistry2(unsigned short FlibHndl,
+                       unsigned short s_number,
+                       unsigned short e_number,
+                       unsigned short length,
+                       struct ODBAHIS2 *alm_hst);
+
+/*
  Reads the CNC's identification number: four 32-bit words.
 
  The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
@@ -433,6 +473,118 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
  `cncid` must point to 16 writable bytes.
  */
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
+
+/*
+ Reads the tool life counter of tool group `number`.
+
+ # Safety
+ `count` must point to a writable ODBTLIFE3.
+ */
+short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
+
+/*
+ Reads the tool life of tool group `number` (`data`; `dummy` untouched).
+
+ # Safety
+ `life` must point to a writable ODBTLIFE3.
+ */
+short cnc_rdlife(unsigned short FlibHndl, short number, struct ODBTLIFE3 *life);
+
+/*
+ Reads the tool control data of a punch press (or laser). Other machines
+ get the code EW_FUNC without any traffic, as from FANUC's library.
+
+ # Safety
+ `tlctl` must point to a writable IODBTLCTL.
+ */
+short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
+
+/*
+ Reads one tool offset value (`type`: offset kind, e.g. on a mill with
+ memory C 0/1 radius wear/geometry, 2/3 length wear/geometry).
+
+ # Safety
+ `tofs` must point to a writable ODBTOFS.
+ */
+short cnc_rdtofs(unsigned short FlibHndl,
+                 short number,
+                 short type,
+                 short length,
+                 struct ODBTOFS *tofs);
+
+/*
+ Reads the tool offset memory type and the number of offsets.
+
+ # Safety
+ `tlinf` must point to a writable ODBTLINF.
+ */
+short cnc_rdtofsinfo(unsigned short FlibHndl, struct ODBTLINF *tlinf);
+
+/*
+ Reads the tool offsets `s_number..=e_number` of one type (-1: all types
+ of each offset), one 4-byte value each from offset 8. Values that do not
+ fit in `length` are not written (FANUC's library writes every value the
+ CNC sent).
+
+ # Safety
+ `tofs` must point to `length` writable bytes.
+ */
+short cnc_rdtofsr(unsigned short FlibHndl,
+                  short s_number,
+                  short type,
+                  short e_number,
+                  short length,
+                  struct IODBTO *tofs);
+
+/*
+ Reads a tool life group with its tools: number of tools, life, counter,
+ then per tool its use number (1, 2, ...), tool number, length and radius
+ offset numbers and information. `length` must hold the 20-byte head
+ (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
+ the code EW_LENGTH with nothing written, as FANUC's library).
+
+ # Safety
+ `toolgrp` must point to `length` writable bytes.
+ */
+short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct ODBTG *toolgrp);
+
+/*
+ Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
+ P1..) for one axis or all axes (-1). An all-axes answer must carry a
+ value per axis (FANUC's library writes uninitialised memory otherwise;
+ we return the code EW_PROTOCOL).
+
+ # Safety
+ `zofs` must point to `length` writable bytes.
+ */
+short cnc_rdzofs(unsigned short FlibHndl,
+                 short number,
+                 short axis,
+                 short length,
+                 struct IODBZOFS *zofs);
+
+/*
+ Reads the number of work zero offsets.
+
+ # Safety
+ `ofs_no` must point to a writable short.
+ */
+short cnc_rdzofsinfo(unsigned short FlibHndl, short *ofs_no);
+
+/*
+ Reads the work zero offsets `s_number..` for one axis or all axes (-1).
+ `datano_e` is set from the offsets received; more values than `length`
+ holds give the code EW_LENGTH with nothing written (as FANUC's library).
+
+ # Safety
+ `zofsr` must point to `length` writable bytes.
+ */
+short cnc_rdzofsr(unsigned short FlibHndl,
+                  short s_number,
+                  short axis,
+                  short e_number,
+                  short length,
+                  struct IODBZOR *zofsr);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).
@@ -481,6 +633,24 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Writes one tool offset value. `data` is sent as its low 32 bits, as
+ FANUC's x86-64 library does.
+
+ # Safety
+ No pointer arguments.
+ */
+short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length, long data);
+
+/*
+ Writes a work zero offset for one axis (`type` = axis) or all axes
+ (`type` = -1: one value per axis of the CNC).
+
+ # Safety
+ `zofs` must point to `length` readable bytes (an IODBZOFS).
+ */
+short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
 
 #ifdef __cplusplus
 }  // extern "C"
