@@ -2,7 +2,9 @@
 //! configured from a machine profile. It runs on its own threads with its
 //! own tokio runtime, so tests and tools can block while it serves.
 
+pub mod history;
 pub mod machine;
+pub mod offset;
 pub mod profile;
 pub mod server;
 pub mod service;
