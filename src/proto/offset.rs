@@ -1,5 +1,8 @@
-//! Tool and work offsets (SPEC.md §5.3 for cnc_rdtofs / cnc_rdzofs; the rest
-//! recorded from FANUC's library against a fake CNC, see each item).
+//! Tool and work offsets (SPEC.md §5.3 for cnc_rdtofs / cnc_rdzofs). The
+//! other functions' requests, local checks and the payload bytes FANUC's
+//! library reads were recorded by running FANUC's library against the fake
+//! CNC (/tmp/orc/fake.py); what a real CNC answers (the decimals it sends,
+//! the 0x000a/0x000d words) is not verified.
 //!
 //! Every value travels as the 30i 8-byte value record ([`Value`]). Reads
 //! answer records with base 10 and the decimals of the offset; writes send
