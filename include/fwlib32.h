@@ -173,6 +173,62 @@ typedef struct ODBERR {
 } ODBERR;
 
 /*
+ One record of ODBAHIS (48 bytes).
+ */
+typedef struct ODBAHIS_ALM {
+    short dummy;
+    short alm_grp;
+    short alm_no;
+    char axis_no;
+    char year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+    char dummy2;
+    short len_msg;
+    char alm_msg[32];
+} ODBAHIS_ALM;
+
+/*
+ cnc_rdalmhistry: alarm history (10 records as declared; the caller's
+ `length` says how many really fit).
+ */
+typedef struct ODBAHIS {
+    unsigned short s_no;
+    short type;
+    unsigned short e_no;
+    struct ODBAHIS_ALM alm_his[10];
+} ODBAHIS;
+
+/*
+ One record of ODBAHIS2 (52 bytes).
+ */
+typedef struct ODBAHIS2_ALM {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    char alm_msg[32];
+} ODBAHIS2_ALM;
+
+/*
+ cnc_rdalmhistry2: alarm history, all fields as shorts.
+ */
+typedef struct ODBAHIS2 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBAHIS2_ALM alm_his[10];
+} ODBAHIS2;
+
+/*
  cnc_rdaxisdata: one value of one axis or spindle.
  */
 typedef struct ODBAXDT {
@@ -191,6 +247,15 @@ typedef struct ODBAXISNAME {
     char name;
     char suff;
 } ODBAXISNAME;
+
+/*
+ cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
+ */
+typedef struct ODBTLIFE3 {
+    short datano;
+    short dummy;
+    LONG data;
+} ODBTLIFE3;
 
 /*
  One value of IODBPRM.
@@ -508,6 +573,152 @@ typedef struct ODBSVLOAD {
 } ODBSVLOAD;
 
 /*
+ cnc_rdtlctldata: tool control data of a punch press.
+ */
+typedef struct IODBTLCTL {
+    short slct;
+    short used_tool;
+    short turret_indx;
+    LONG zero_tl_no;
+    LONG t_axis_move;
+    LONG total_punch[2];
+    char t_axis_dec;
+    char reserve;
+    short reserves[10];
+} IODBTLCTL;
+
+/*
+ cnc_rdtofs: one tool offset value.
+ */
+typedef struct ODBTOFS {
+    short datano;
+    short type;
+    LONG data;
+} ODBTOFS;
+
+/*
+ cnc_rdtofsinfo: tool offset memory type and number of offsets.
+ */
+typedef struct ODBTLINF {
+    short ofs_type;
+    short use_no;
+} ODBTLINF;
+
+/*
+ A tool offset with its imaginary tip number and 1 value (IODBTO.u.m_ofs_at).
+ */
+typedef struct IODBTO_TIP1 {
+    short tip;
+    LONG data[1];
+} IODBTO_TIP1;
+
+/*
+ A tool offset with its imaginary tip number and 2 values (IODBTO.u.m_ofs_bt).
+ */
+typedef struct IODBTO_TIP2 {
+    short tip;
+    LONG data[2];
+} IODBTO_TIP2;
+
+/*
+ A tool offset with its imaginary tip number and 4 values (m_ofs_ct, t_ofs_a).
+ */
+typedef struct IODBTO_TIP4 {
+    short tip;
+    LONG data[4];
+} IODBTO_TIP4;
+
+/*
+ A tool offset with its imaginary tip number and 8 values (t_ofs_b).
+ */
+typedef struct IODBTO_TIP8 {
+    short tip;
+    LONG data[8];
+} IODBTO_TIP8;
+
+/*
+ Two values of the extended lathe offsets (t_ofs_ex).
+ */
+typedef struct IODBTO_EX {
+    LONG data[2];
+} IODBTO_EX;
+
+/*
+ The value area of IODBTO: one view per offset memory type (180 bytes).
+ */
+typedef union IODBTO_U {
+    LONG m_ofs[5];
+    LONG m_ofs_a[5];
+    LONG m_ofs_b[10];
+    LONG m_ofs_c[20];
+    struct IODBTO_TIP1 m_ofs_at[5];
+    struct IODBTO_TIP2 m_ofs_bt[5];
+    struct IODBTO_TIP4 m_ofs_ct[5];
+    short t_tip[5];
+    LONG t_ofs[5];
+    struct IODBTO_TIP4 t_ofs_a[5];
+    struct IODBTO_TIP8 t_ofs_b[5];
+    LONG t_ofs_2g[15];
+    LONG m_ofs_cnr[10];
+    struct IODBTO_EX t_ofs_ex[5];
+} IODBTO_U;
+
+/*
+ cnc_rdtofsr: tool offsets of a number range (5 values as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct IODBTO {
+    short datano_s;
+    short type;
+    short datano_e;
+    union IODBTO_U u;
+} IODBTO;
+
+/*
+ One tool of a tool life group (ODBTG.data).
+ */
+typedef struct ODBTG_DATA {
+    LONG tuse_num;
+    LONG tool_num;
+    LONG length_num;
+    LONG radius_num;
+    LONG tinfo;
+} ODBTG_DATA;
+
+/*
+ cnc_rdtoolgrp: a tool life group with its tools (5 as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct ODBTG {
+    short grp_num;
+    short dummy[2];
+    LONG ntool;
+    LONG life;
+    LONG count;
+    struct ODBTG_DATA data[5];
+} ODBTG;
+
+/*
+ cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
+ */
+typedef struct IODBZOFS {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBZOFS;
+
+/*
+ cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
+ of MAX_AXIS values; the caller's `length` says how many really fit).
+ */
+typedef struct IODBZOR {
+    short datano_s;
+    short type;
+    short datano_e;
+    LONG data[256];
+} IODBZOR;
+
+/*
  cnc_statinfo: CNC status information.
  */
 typedef struct ODBST {
@@ -775,6 +986,46 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Reads the number of alarm history entries. A negative count from the
+ CNC reads as 0 (an empty history).
+
+ # Safety
+ `hisno` must point to a writable unsigned short.
+ */
+short cnc_rdalmhisno(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
+ Reads the alarm history entries `s_number..=e_number` (1 = newest) into
+ ODBAHIS: year as year mod 100, the other time fields as bytes, as
+ FANUC's library writes them. `e_no` = `s_no` + entries written - 1.
+ Entries with an impossible time stamp are skipped; an entry whose message
+ length runs past its text ends the list; entries that do not fit in
+ `length` are not written.
+
+ # Safety
+ `alm_hst` must point to `length` writable bytes.
+ */
+short cnc_rdalmhistry(unsigned short FlibHndl,
+                      unsigned short s_number,
+                      unsigned short e_number,
+                      unsigned short length,
+                      struct ODBAHIS *alm_hst);
+
+/*
+ Reads the alarm history into ODBAHIS2 (all fields shorts). The year is
+ FANUC's: the low byte of the year, sign-extended (2024 → -24). Entry
+ checks and `length` as cnc_rdalmhistry.
+
+ # Safety
+ `alm_hst` must point to `length` writable bytes.
+ */
+short cnc_rdalmhistry2(unsigned short FlibHndl,
+                       unsigned short s_number,
+                       unsigned short e_number,
+                       unsigned short length,
+                       struct ODBAHIS2 *alm_hst);
+
+/*
  Reads several values of all axes (`cls` 1 positions, types 0..3), servo
  loads (`cls` 2, type 0) or spindles (`cls` 3, types 0 load, 1 speed):
  `num` types from `type`; `*len` in = axes room per type, out = axes
@@ -813,6 +1064,14 @@ short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAM
  `cncid` must point to 16 writable bytes.
  */
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
+
+/*
+ Reads the tool life counter of tool group `number`.
+
+ # Safety
+ `count` must point to a writable ODBTLIFE3.
+ */
+short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
 
 /*
  The same as cnc_diagnoss (an alias some programs use).
@@ -875,6 +1134,14 @@ short cnc_rddynamic(unsigned short FlibHndl, short axis, short length, struct OD
  `buf` must point to `length` writable bytes.
  */
 short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct ODBDY2 *buf);
+
+/*
+ Reads the tool life of tool group `number` (`data`; `dummy` untouched).
+
+ # Safety
+ `life` must point to a writable ODBTLIFE3.
+ */
+short cnc_rdlife(unsigned short FlibHndl, short number, struct ODBTLIFE3 *life);
 
 /*
  Reads the custom macro variable `number` (common #100.., #500.., system
@@ -1034,6 +1301,102 @@ short cnc_rdspmeter(unsigned short FlibHndl,
 short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *loadmeter);
 
 /*
+ Reads the tool control data of a punch press (or laser). Other machines
+ get the code EW_FUNC without any traffic, as from FANUC's library.
+
+ # Safety
+ `tlctl` must point to a writable IODBTLCTL.
+ */
+short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
+
+/*
+ Reads one tool offset value (`type`: offset kind, e.g. on a mill with
+ memory C 0/1 radius wear/geometry, 2/3 length wear/geometry).
+
+ # Safety
+ `tofs` must point to a writable ODBTOFS.
+ */
+short cnc_rdtofs(unsigned short FlibHndl,
+                 short number,
+                 short type,
+                 short length,
+                 struct ODBTOFS *tofs);
+
+/*
+ Reads the tool offset memory type and the number of offsets.
+
+ # Safety
+ `tlinf` must point to a writable ODBTLINF.
+ */
+short cnc_rdtofsinfo(unsigned short FlibHndl, struct ODBTLINF *tlinf);
+
+/*
+ Reads the tool offsets `s_number..=e_number` of one type (-1: all types
+ of each offset), one 4-byte value each from offset 8. Values that do not
+ fit in `length` are not written (FANUC's library writes every value the
+ CNC sent).
+
+ # Safety
+ `tofs` must point to `length` writable bytes.
+ */
+short cnc_rdtofsr(unsigned short FlibHndl,
+                  short s_number,
+                  short type,
+                  short e_number,
+                  short length,
+                  struct IODBTO *tofs);
+
+/*
+ Reads a tool life group with its tools: number of tools, life, counter,
+ then per tool its use number (1, 2, ...), tool number, length and radius
+ offset numbers and information. `length` must hold the 20-byte head
+ (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
+ the code EW_LENGTH with nothing written, as FANUC's library).
+
+ # Safety
+ `toolgrp` must point to `length` writable bytes.
+ */
+short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct ODBTG *toolgrp);
+
+/*
+ Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
+ P1..) for one axis or all axes (-1). An all-axes answer must carry a
+ value per axis (FANUC's library writes uninitialised memory otherwise;
+ we return the code EW_PROTOCOL).
+
+ # Safety
+ `zofs` must point to `length` writable bytes.
+ */
+short cnc_rdzofs(unsigned short FlibHndl,
+                 short number,
+                 short axis,
+                 short length,
+                 struct IODBZOFS *zofs);
+
+/*
+ Reads the number of work zero offsets.
+
+ # Safety
+ `ofs_no` must point to a writable short.
+ */
+short cnc_rdzofsinfo(unsigned short FlibHndl, short *ofs_no);
+
+/*
+ Reads the work zero offsets `s_number..` for one axis or all axes (-1).
+ `datano_e` is set from the offsets received; more values than `length`
+ holds give the code EW_LENGTH with nothing written (as FANUC's library).
+
+ # Safety
+ `zofsr` must point to `length` writable bytes.
+ */
+short cnc_rdzofsr(unsigned short FlibHndl,
+                  short s_number,
+                  short axis,
+                  short e_number,
+                  short length,
+                  struct IODBZOR *zofsr);
+
+/*
  Reads the relative position.
 
  # Safety
@@ -1142,6 +1505,24 @@ short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
  `param` must point to a readable IODBPSD.
  */
 short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
+
+/*
+ Writes one tool offset value. `data` is sent as its low 32 bits, as
+ FANUC's x86-64 library does.
+
+ # Safety
+ No pointer arguments.
+ */
+short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length, long data);
+
+/*
+ Writes a work zero offset for one axis (`type` = axis) or all axes
+ (`type` = -1: one value per axis of the CNC).
+
+ # Safety
+ `zofs` must point to `length` readable bytes (an IODBZOFS).
+ */
+short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
 
 /*
  The detail of the last PMC error on this handle (pmc_* functions only;

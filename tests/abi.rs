@@ -338,8 +338,22 @@ rust_layouts! {
     ODBPMCERR { err_no, err_dtno }
 
     // --- offset ---
+    ODBTOFS { datano, r#type, data }
+    IODBTO { datano_s, r#type, datano_e, u }
+    ODBTLINF { ofs_type, use_no }
+    IODBZOFS { datano, r#type, data }
+    IODBZOR { datano_s, r#type, datano_e, data }
+    // alarm history (offset helper)
+    ODBAHIS { s_no, r#type, e_no, alm_his }
+    ODBAHIS2 { s_no, e_no, alm_his }
 
     // --- tool ---
+    ODBTLIFE3 { datano, dummy, data }
+    ODBTG { grp_num, dummy, ntool, life, count, data }
+    IODBTLCTL {
+        slct, used_tool, turret_indx, zero_tl_no, t_axis_move, total_punch,
+        t_axis_dec, reserve, reserves,
+    }
 }
 
 #[test]

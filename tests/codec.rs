@@ -134,7 +134,10 @@ const KNOWN: &[&str] = &[
     "pmc_wrpmcrng",
     "pmc_getdtailerr",
     // --- offset ---
-
+    "rdtofs",
+    "rdzofs",
+    "rdalmhistry",
+    "rdalmhistry2",
     // --- tool ---
 
     // --- upload ---
@@ -254,6 +257,10 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                                     let mut data = b[8..8 + range.span()].to_vec();
                                     swap_elements(range.data_type, &mut data);
                                     stamped(&WritePmc { range, data }, &cx, path)
+                                }
+                                // --- offset ---
+                                "rdtofs" | "rdzofs" | "rdalmhistry" | "rdalmhistry2" => {
+                                    offset_request(call.word(), &args, &cx, path)
                                 }
                                 w if position_request(w, &args).is_some() => {
                                     stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
@@ -1102,5 +1109,164 @@ proptest! {
         let _ = Vec::<fwlib32::proto::value::Value>::from_bytes(&b);
         let _ = Vec::<Name>::from_bytes(&b);
         let _ = Vec::<UnitWords>::from_bytes(&b);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// --- offset ---: offsets, tool life and the alarm history
+// ---------------------------------------------------------------------------
+
+fn offset_request(word: &str, a: &[String], cx: &Ctx, path: u16) -> Vec<ReqSub> {
+    use fwlib32::proto::{alarm, offset};
+    let n = |i: usize| num(&a[i]);
+    match word {
+        "rdtofs" => stamped(&offset::rdtofs(n(0) as i16, n(1) as i16), cx, path),
+        "rdzofs" => stamped(&offset::rdzofs(n(0) as i16, n(1) as i16), cx, path),
+        _ => stamped(&alarm::rdalmhistry(n(0) as u16, n(1) as u16), cx, path),
+    }
+}
+
+fn value_rec() -> impl Strategy<Value = fwlib32::proto::value::Value> {
+    (any::<i32>(), any::<u16>(), any::<i16>())
+        .prop_map(|(value, base, exp)| fwlib32::proto::value::Value { value, base, exp })
+}
+
+fn his_rec() -> impl Strategy<Value = fwlib32::proto::alarm::AlmHisRecord> {
+    (
+        (any::<i32>(), any::<i16>(), any::<i16>(), any::<i32>()),
+        any::<[u16; 6]>(),
+        (any::<i32>(), any::<[u8; 32]>()),
+    )
+        .prop_map(|((alm_no, reserved, alm_grp, axis), t, (msg_len, msg))| {
+            fwlib32::proto::alarm::AlmHisRecord {
+                alm_no,
+                reserved,
+                alm_grp,
+                axis,
+                year: t[0],
+                month: t[1],
+                day: t[2],
+                hour: t[3],
+                minute: t[4],
+                second: t[5],
+                msg_len,
+                msg,
+            }
+        })
+}
+
+#[test]
+fn history_decoder_drops_a_ragged_tail() {
+    use fwlib32::proto::alarm::AlmHistory;
+    let vectors = unhex(
+        "000001f4000000040000000107e800050011000d002d001e000000134f5430353030204f56455254524156454c203000000000000000000000000000",
+    );
+    let one = AlmHistory::from_bytes(&vectors).unwrap();
+    assert_eq!(one.0.len(), 1);
+    assert_eq!(
+        (one.0[0].alm_no, one.0[0].year, one.0[0].msg_len),
+        (500, 2024, 19)
+    );
+    assert_eq!(one.0[0].year_his(), 24);
+    assert_eq!(one.0[0].year_his2(), -24);
+    let ragged = AlmHistory::from_bytes(&vectors[..59]).unwrap();
+    assert!(ragged.0.is_empty());
+    assert!(AlmHistory::from_bytes(&[]).unwrap().0.is_empty());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn offset_wire_roundtrip(
+        v in vec(value_rec(), 0..40),
+        info in (any::<i16>(), any::<i16>(), any::<i16>()),
+        c in any::<i32>(),
+    ) {
+        use fwlib32::proto::offset::{Count, TofsInfo};
+        roundtrip(&v)?;
+        prop_assert_eq!(v.to_bytes().len(), 8 * v.len());
+        let i = TofsInfo { reserved: info.0, use_no: info.1, ofs_type: info.2 };
+        roundtrip(&i)?;
+        roundtrip(&Count { value: c })?;
+    }
+
+    /// The write encoder is the read decoder reversed: what wrtofs/wrzofs
+    /// put in a payload decodes to the values written.
+    #[test]
+    fn offset_write_payload_is_the_read_record(values in vec(any::<i32>(), 1..33), n in any::<i16>(), axis in -1i16..33, kind in 0i16..10) {
+        use fwlib32::proto::offset::{wrtofs, wrzofs, RDZOFS, WRZOFS, WRTOFS, RDTOFS, rdtofs, rdzofs};
+        let cx = Ctx::default();
+        let w = &wrzofs(n, axis, &values).request(&cx)[0];
+        let r = &rdzofs(n, axis).request(&cx)[0];
+        prop_assert_eq!((w.cmd, r.cmd), (WRZOFS, RDZOFS));
+        prop_assert_eq!(&w.args[..3], &r.args[..3]);
+        prop_assert_eq!(w.args[4] as usize, 8 * values.len());
+        let back = Vec::<fwlib32::proto::value::Value>::from_bytes(&w.payload).unwrap();
+        prop_assert_eq!(back.iter().map(|x| x.value).collect::<Vec<_>>(), values.clone());
+        let w = &wrtofs(n, kind, values[0]).request(&cx)[0];
+        let r = &rdtofs(n, kind).request(&cx)[0];
+        prop_assert_eq!((w.cmd, r.cmd), (WRTOFS, RDTOFS));
+        prop_assert_eq!(&w.args[..3], &r.args[..3]);
+        let back = Vec::<fwlib32::proto::value::Value>::from_bytes(&w.payload).unwrap();
+        prop_assert_eq!(back.len(), 1);
+        prop_assert_eq!(back[0].value, values[0]);
+    }
+
+    #[test]
+    fn history_roundtrip(recs in vec(his_rec(), 0..12)) {
+        use fwlib32::proto::alarm::AlmHistory;
+        let h = AlmHistory(recs);
+        roundtrip(&h)?;
+        prop_assert_eq!(h.to_bytes().len(), 60 * h.0.len());
+        // The checked list is a prefix-cut, filtered list of the records.
+        let valid = h.valid();
+        prop_assert!(valid.iter().all(|r| r.time_ok() && r.msg_ok()));
+        let cut = h.0.iter().position(|r| !r.msg_ok()).unwrap_or(h.0.len());
+        let want: Vec<_> = h.0[..cut].iter().filter(|r| r.time_ok()).copied().collect();
+        prop_assert_eq!(valid, want);
+    }
+
+    #[test]
+    fn tool_wire_roundtrip(
+        g in (any::<i32>(), value_rec(), value_rec(), value_rec()),
+        tools in vec(any::<[i32; 4]>(), 0..10),
+        head in any::<(i32, i32)>(),
+        ctl in any::<[i32; 9]>(),
+    ) {
+        use fwlib32::proto::tool::{ToolCtl, ToolEntry, ToolGroup, ToolList};
+        let tg = ToolGroup { grp: g.0, ntool: g.1, life: g.2, count: g.3 };
+        roundtrip(&tg)?;
+        prop_assert_eq!(tg.to_bytes().len(), 28);
+        let tl = ToolList {
+            grp: head.0,
+            first: head.1,
+            tools: tools.iter().map(|t| ToolEntry { tool_num: t[0], length_num: t[1], radius_num: t[2], tinfo: t[3] }).collect(),
+        };
+        roundtrip(&tl)?;
+        let c = ToolCtl {
+            slct: ctl[0], used_tool: ctl[1], turret_indx: ctl[2], zero_tl_no: ctl[3],
+            total_punch0: ctl[4], total_punch1: ctl[5], t_axis_move: ctl[6], reserved: ctl[7], t_axis_dec: ctl[8],
+        };
+        roundtrip(&c)?;
+        prop_assert_eq!(c.to_bytes().len(), 36);
+    }
+
+    #[test]
+    fn offset_decoders_never_panic(b in vec(any::<u8>(), 0..400)) {
+        let _ = Vec::<fwlib32::proto::value::Value>::from_bytes(&b);
+        let _ = fwlib32::proto::offset::TofsInfo::from_bytes(&b);
+        let _ = fwlib32::proto::offset::Count::from_bytes(&b);
+        if let Ok(h) = fwlib32::proto::alarm::AlmHistory::from_bytes(&b) {
+            prop_assert_eq!(h.0.len(), b.len() / 60);
+            let _ = h.valid();
+        }
+        let _ = fwlib32::proto::tool::ToolGroup::from_bytes(&b);
+        let _ = fwlib32::proto::tool::ToolList::from_bytes(&b);
+        let _ = fwlib32::proto::tool::ToolCtl::from_bytes(&b);
     }
 }

@@ -188,6 +188,14 @@ const DEVIATIONS: &[Deviation] = &[
                  for 32 records (a real CNC answers all-axes requests with max-axes records)",
         treatment: Dedicated("rddynamic2_all_axes_records_at_struct_offsets"),
     },
+    // --- offset ---
+    Deviation {
+        function: "cnc_rdzofs",
+        case: "v3_all_axes",
+        reason: "(a) axis -1 answered with 4 records where the CNC has 32 axes: FANUC writes uninitialised memory \
+                 (and crashes on an empty payload); we return EW_PROTOCOL (-17) and write nothing",
+        treatment: Differs(&[Ret(0, EW_PROTOCOL), NoOutput(0)]),
+    },
     // Recordings that cannot be replayed as they are.
     Deviation {
         function: "cnc_freelibhndl",
@@ -322,8 +330,8 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("alarm2", "cnc_alarm2", None),
     ("rdalminfo", "cnc_rdalminfo", None),
     ("rdopmsg", "cnc_rdopmsg", None),
-    ("rdalmhistry", "cnc_rdalmhistry", None),
-    ("rdalmhistry2", "cnc_rdalmhistry2", None),
+    ("rdalmhistry", "cnc_rdalmhistry", Some(w_rdalmhistry)),
+    ("rdalmhistry2", "cnc_rdalmhistry2", Some(w_rdalmhistry2)),
     // --- param ---
     ("rdparam", "cnc_rdparam", Some(w_rdparam)),
     ("wrparam", "cnc_wrparam", Some(w_wrparam)),
@@ -346,8 +354,8 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
         Some(w_pmc_getdtailerr),
     ),
     // --- offset ---
-    ("rdtofs", "cnc_rdtofs", None),
-    ("rdzofs", "cnc_rdzofs", None),
+    ("rdtofs", "cnc_rdtofs", Some(w_rdtofs)),
+    ("rdzofs", "cnc_rdzofs", Some(w_rdzofs)),
     // --- tool ---
     ("toolnum", "cnc_toolnum", None),
     ("rdntool", "cnc_rdntool", None),
@@ -1629,6 +1637,35 @@ fn w_pmc_getdtailerr(p: &mut Probe, _: &[String]) -> Outcome {
 }
 
 // --- offset ---
+
+fn w_rdtofs(p: &mut Probe, a: &[String]) -> Outcome {
+    let (n, t, l) = (num(a, 0), num(a, 1), num(a, 2));
+    with_out(p, |h, b| unsafe {
+        cnc_rdtofs(h, n as c_short, t as c_short, l as c_short, b.cast())
+    })
+}
+
+fn w_rdzofs(p: &mut Probe, a: &[String]) -> Outcome {
+    let (n, ax, l) = (num(a, 0), num(a, 1), num(a, 2));
+    with_out(p, |h, b| unsafe {
+        cnc_rdzofs(h, n as c_short, ax as c_short, l as c_short, b.cast())
+    })
+}
+
+// alarm history (offset helper)
+fn w_rdalmhistry(p: &mut Probe, a: &[String]) -> Outcome {
+    let (s, e, l) = (num(a, 0), num(a, 1), num(a, 2));
+    with_out(p, |h, b| unsafe {
+        cnc_rdalmhistry(h, s as c_ushort, e as c_ushort, l as c_ushort, b.cast())
+    })
+}
+
+fn w_rdalmhistry2(p: &mut Probe, a: &[String]) -> Outcome {
+    let (s, e, l) = (num(a, 0), num(a, 1), num(a, 2));
+    with_out(p, |h, b| unsafe {
+        cnc_rdalmhistry2(h, s as c_ushort, e as c_ushort, l as c_ushort, b.cast())
+    })
+}
 
 // --- tool ---
 

@@ -1,1 +1,291 @@
 //! Tool and work offsets.
+//!
+//! Requests, local checks and output bytes as FANUC's library (vectors
+//! cnc_rdtofs / cnc_rdzofs; the other functions recorded from FANUC's
+//! library against a fake CNC). Outputs are written field by field at their
+//! l32 offsets, and only on success.
+
+use super::{ffi_boundary, nonnull};
+use crate::client::handles::{self, Handle};
+use crate::error::{Error, Result};
+use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
+use crate::proto::offset as p;
+use crate::proto::value::Value;
+use crate::types::{IODBTO, IODBZOFS, IODBZOR, MAX_AXIS, ODBTLINF, ODBTOFS};
+use std::os::raw::{c_long, c_short, c_ushort};
+
+/// Writes `v` at byte offset `off` of the caller's buffer.
+///
+/// # Safety
+/// `base + off .. + size_of::<T>()` must be writable.
+pub(crate) unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
+    unsafe { base.add(off).cast::<T>().write_unaligned(v) }
+}
+
+/// The caller's `length` as a byte count (negative counts as 0).
+pub(crate) fn len_of(length: c_short) -> usize {
+    length.max(0) as usize
+}
+
+/// Maximum axes of the handle's current path (record count of axis -1).
+fn max_axes(h: &Handle) -> usize {
+    let path = h.state.lock().path;
+    (h.pair.info.ctx(path).max_axes as usize).min(MAX_AXIS)
+}
+
+/// Bytes IODBZOFS needs for `axis`, FANUC's local check: axis -1 all axes,
+/// axis > max → EW_ATTRIB, axis below -1 → EW_LENGTH (as FANUC's library).
+fn zofs_needed(h: &Handle, axis: c_short) -> Result<usize> {
+    let max = max_axes(h);
+    match axis {
+        -1 => Ok(4 + 4 * max),
+        a if a < -1 => Err(Error::local(EW_LENGTH, "axis below -1")),
+        a if a as usize > max => Err(Error::local(EW_ATTRIB, "axis beyond the CNC's axes")),
+        _ => Ok(8),
+    }
+}
+
+fn first(v: &[Value]) -> Result<i32> {
+    v.first().map(|r| r.value).ok_or_else(short)
+}
+
+fn short() -> Error {
+    Error::protocol(
+        crate::error::detail::SHORT_PAYLOAD,
+        "payload shorter than the answer needs",
+    )
+}
+
+/// Reads one tool offset value (`type`: offset kind, e.g. on a mill with
+/// memory C 0/1 radius wear/geometry, 2/3 length wear/geometry).
+///
+/// # Safety
+/// `tofs` must point to a writable ODBTOFS.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtofs(
+    FlibHndl: c_ushort,
+    number: c_short,
+    r#type: c_short,
+    length: c_short,
+    tofs: *mut ODBTOFS,
+) -> c_short {
+    ffi_boundary!("cnc_rdtofs", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(tofs)?.cast::<u8>();
+        if len_of(length) < 8 {
+            return Err(Error::length());
+        }
+        let v = first(&h.call(&p::rdtofs(number, r#type))?)?;
+        unsafe {
+            put_at(out, 0, number);
+            put_at(out, 2, r#type);
+            put_at(out, 4, v);
+        }
+        Ok(())
+    })
+}
+
+/// Writes one tool offset value. `data` is sent as its low 32 bits, as
+/// FANUC's x86-64 library does.
+///
+/// # Safety
+/// No pointer arguments.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrtofs(
+    FlibHndl: c_ushort,
+    number: c_short,
+    r#type: c_short,
+    length: c_short,
+    data: c_long,
+) -> c_short {
+    ffi_boundary!("cnc_wrtofs", {
+        let h = handles::get(FlibHndl)?;
+        if len_of(length) < 8 {
+            return Err(Error::length());
+        }
+        h.call(&p::wrtofs(number, r#type, data as i32))?;
+        Ok(())
+    })
+}
+
+/// Reads the tool offsets `s_number..=e_number` of one type (-1: all types
+/// of each offset), one 4-byte value each from offset 8. Values that do not
+/// fit in `length` are not written (FANUC's library writes every value the
+/// CNC sent).
+///
+/// # Safety
+/// `tofs` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtofsr(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    r#type: c_short,
+    e_number: c_short,
+    length: c_short,
+    tofs: *mut IODBTO,
+) -> c_short {
+    ffi_boundary!("cnc_rdtofsr", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(tofs)?.cast::<u8>();
+        if s_number > e_number {
+            return Err(Error::local(EW_NUMBER, "start number after end number"));
+        }
+        let room = len_of(length);
+        let count = (i32::from(e_number) - i32::from(s_number) + 1) as usize;
+        if room < 8 + 4 * count {
+            return Err(Error::length());
+        }
+        let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?;
+        let n = v.len().min((room - 8) / 4);
+        unsafe {
+            put_at(out, 0, s_number);
+            put_at(out, 2, r#type);
+            put_at(out, 4, e_number);
+            for (i, r) in v[..n].iter().enumerate() {
+                put_at(out, 8 + 4 * i, r.value);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Reads the tool offset memory type and the number of offsets.
+///
+/// # Safety
+/// `tlinf` must point to a writable ODBTLINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtofsinfo(FlibHndl: c_ushort, tlinf: *mut ODBTLINF) -> c_short {
+    ffi_boundary!("cnc_rdtofsinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(tlinf)?;
+        let i = h.call(&p::rdtofsinfo())?;
+        unsafe {
+            super::put(
+                out,
+                ODBTLINF {
+                    ofs_type: i.ofs_type,
+                    use_no: i.use_no,
+                },
+            )
+        };
+        Ok(())
+    })
+}
+
+/// Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
+/// P1..) for one axis or all axes (-1). An all-axes answer must carry a
+/// value per axis (FANUC's library writes uninitialised memory otherwise;
+/// we return the code EW_PROTOCOL).
+///
+/// # Safety
+/// `zofs` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdzofs(
+    FlibHndl: c_ushort,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    zofs: *mut IODBZOFS,
+) -> c_short {
+    ffi_boundary!("cnc_rdzofs", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(zofs)?.cast::<u8>();
+        if len_of(length) < zofs_needed(&h, axis)? {
+            return Err(Error::length());
+        }
+        let v = h.call(&p::rdzofs(number, axis))?;
+        let n = if axis == -1 { max_axes(&h) } else { 1 };
+        if v.len() < n {
+            return Err(short());
+        }
+        unsafe {
+            put_at(out, 0, number);
+            put_at(out, 2, axis);
+            for (i, r) in v[..n].iter().enumerate() {
+                put_at(out, 4 + 4 * i, r.value);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Writes a work zero offset for one axis (`type` = axis) or all axes
+/// (`type` = -1: one value per axis of the CNC).
+///
+/// # Safety
+/// `zofs` must point to `length` readable bytes (an IODBZOFS).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrzofs(
+    FlibHndl: c_ushort,
+    length: c_short,
+    zofs: *mut IODBZOFS,
+) -> c_short {
+    ffi_boundary!("cnc_wrzofs", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(zofs)?.cast::<u8>().cast_const();
+        let rd = |off: usize| unsafe { inp.add(off).cast::<i32>().read_unaligned() };
+        let number = unsafe { inp.cast::<i16>().read_unaligned() };
+        let axis = unsafe { inp.add(2).cast::<i16>().read_unaligned() };
+        if len_of(length) < zofs_needed(&h, axis)? {
+            return Err(Error::length());
+        }
+        let n = if axis == -1 { max_axes(&h) } else { 1 };
+        let values: Vec<i32> = (0..n).map(|i| rd(4 + 4 * i)).collect();
+        h.call(&p::wrzofs(number, axis, &values))?;
+        Ok(())
+    })
+}
+
+/// Reads the work zero offsets `s_number..` for one axis or all axes (-1).
+/// `datano_e` is set from the offsets received; more values than `length`
+/// holds give the code EW_LENGTH with nothing written (as FANUC's library).
+///
+/// # Safety
+/// `zofsr` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdzofsr(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    axis: c_short,
+    e_number: c_short,
+    length: c_short,
+    zofsr: *mut IODBZOR,
+) -> c_short {
+    ffi_boundary!("cnc_rdzofsr", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(zofsr)?.cast::<u8>();
+        if s_number > e_number {
+            return Err(Error::local(EW_NUMBER, "start number after end number"));
+        }
+        let v = h.call(&p::rdzofsr(s_number, axis, e_number))?;
+        if 8 + 4 * v.len() > len_of(length) {
+            return Err(Error::length());
+        }
+        let per = if axis == -1 { max_axes(&h).max(1) } else { 1 };
+        let e = i32::from(s_number) + (v.len() / per) as i32 - 1;
+        unsafe {
+            put_at(out, 0, s_number);
+            put_at(out, 2, axis);
+            put_at(out, 4, e as i16);
+            for (i, r) in v.iter().enumerate() {
+                put_at(out, 8 + 4 * i, r.value);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Reads the number of work zero offsets.
+///
+/// # Safety
+/// `ofs_no` must point to a writable short.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdzofsinfo(FlibHndl: c_ushort, ofs_no: *mut c_short) -> c_short {
+    ffi_boundary!("cnc_rdzofsinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(ofs_no)?;
+        let c = h.call(&p::rdzofsinfo())?;
+        unsafe { super::put(out, c.value as i16) };
+        Ok(())
+    })
+}

@@ -1,1 +1,106 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
+
+// --- alarm history ---
+
+/// Read the alarm history: args [s, e, 1] (SPEC.md §5.2).
+pub const RDALMHISTRY: u16 = 0x006c;
+/// Number of alarm history entries: one i32 (FANUC keeps its low 16 bits).
+pub const RDALMHISNO: u16 = 0x006b;
+
+/// Characters of a history record's message.
+pub const HIS_MSG_LEN: usize = 32;
+
+crate::wire_struct! {
+    /// One 60-byte alarm history record (SPEC.md §5.2).
+    pub struct AlmHisRecord {
+        pub alm_no: i32,
+        /// Not used by FANUC's library; 0 from our simulator.
+        pub reserved: i16,
+        pub alm_grp: i16,
+        pub axis: i32,
+        pub year: u16,
+        pub month: u16,
+        pub day: u16,
+        pub hour: u16,
+        pub minute: u16,
+        pub second: u16,
+        pub msg_len: i32,
+        pub msg: [u8; HIS_MSG_LEN],
+    }
+}
+
+impl AlmHisRecord {
+    /// A possible time stamp: month 1..12, day 1..31, hour 0..23,
+    /// minute and second 0..59.
+    pub fn time_ok(&self) -> bool {
+        (1..=12).contains(&self.month)
+            && (1..=31).contains(&self.day)
+            && self.hour <= 23
+            && self.minute <= 59
+            && self.second <= 59
+    }
+
+    /// The message length stays inside the record's text field.
+    pub fn msg_ok(&self) -> bool {
+        (0..=HIS_MSG_LEN as i32).contains(&self.msg_len)
+    }
+
+    /// ODBAHIS year: the year mod 100, as FANUC's library writes it.
+    pub fn year_his(&self) -> i8 {
+        (self.year % 100) as i8
+    }
+
+    /// ODBAHIS2 year: FANUC's library writes the low byte sign-extended
+    /// (2024 → -24); reproduced.
+    pub fn year_his2(&self) -> i16 {
+        i16::from(self.year as u8 as i8)
+    }
+}
+
+/// Payload of 0x006c: whole 60-byte records. A ragged tail (part of a
+/// record) is ignored, as FANUC's library ignores it.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct AlmHistory(pub Vec<AlmHisRecord>);
+
+impl super::wire::Wire for AlmHistory {
+    fn encode(&self, w: &mut super::wire::Writer) {
+        super::wire::Wire::encode(&self.0, w)
+    }
+    fn decode(r: &mut super::wire::Reader<'_>) -> Result<Self, super::wire::DecodeError> {
+        let mut v = Vec::new();
+        while r.remaining() >= 60 {
+            v.push(<AlmHisRecord as super::wire::Wire>::decode(r)?);
+        }
+        Ok(AlmHistory(v))
+    }
+}
+
+impl AlmHistory {
+    /// The entries our library hands to the caller: an entry with an
+    /// impossible time stamp is skipped and the rest kept; an entry whose
+    /// message length runs past its text field ends the list there (the
+    /// entry and everything after it are dropped).
+    pub fn valid(&self) -> Vec<AlmHisRecord> {
+        let mut out = Vec::new();
+        for r in &self.0 {
+            if !r.msg_ok() {
+                break;
+            }
+            if r.time_ok() {
+                out.push(*r);
+            }
+        }
+        out
+    }
+}
+
+pub fn rdalmhistry(s: u16, e: u16) -> super::call::Single<AlmHistory> {
+    super::call::Single::new(super::packet::ReqSub::cnc(
+        RDALMHISTRY,
+        &[i32::from(s), i32::from(e), 1],
+    ))
+}
+
+pub fn rdalmhisno() -> super::call::Single<super::offset::Count> {
+    super::call::Single::new(super::packet::ReqSub::cnc(RDALMHISNO, &[]))
+}

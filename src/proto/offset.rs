@@ -1,1 +1,120 @@
-//! Tool and work offsets.
+//! Tool and work offsets (SPEC.md §5.3 for cnc_rdtofs / cnc_rdzofs). The
+//! other functions' requests, local checks and the payload bytes FANUC's
+//! library reads were recorded by running FANUC's library against the fake
+//! CNC (/tmp/orc/fake.py); what a real CNC answers (the decimals it sends,
+//! the 0x000a/0x000d words) is not verified.
+//!
+//! Every value travels as the 30i 8-byte value record ([`Value`]). Reads
+//! answer records with base 10 and the decimals of the offset; writes send
+//! base 0 and decimals -1 (FANUC's library: "integer, no decimals").
+
+use super::call::Single;
+use super::packet::ReqSub;
+use super::value::Value;
+use super::wire::{DecodeError, Reader, Wire, Writer};
+use crate::wire_struct;
+
+/// Read tool offsets: args [s, e, type]; cnc_rdtofs sends [n, n, 1000 + type].
+pub const RDTOFS: u16 = 0x0008;
+/// Write one tool offset: args [n, n, 1000 + type, 0, 8] + one record.
+pub const WRTOFS: u16 = 0x0009;
+/// Tool offset memory information.
+pub const RDTOFSINFO: u16 = 0x000a;
+/// Read work zero offsets: args [s, e, axis].
+pub const RDZOFS: u16 = 0x000b;
+/// Write one work zero offset: args [n, n, axis, 0, 8 · records] + records.
+pub const WRZOFS: u16 = 0x000c;
+/// Number of work zero offsets.
+pub const RDZOFSINFO: u16 = 0x000d;
+
+/// cnc_rdtofs adds this to the type word (cnc_rdtofsr sends the type as is).
+pub const TOFS_SINGLE: i32 = 1000;
+
+/// The record a write sends: FANUC's library marks it base 0, decimals -1.
+pub const fn write_record(value: i32) -> Value {
+    Value {
+        value,
+        base: 0,
+        exp: -1,
+    }
+}
+
+/// Offset values: whole 8-byte records filling the payload.
+pub type Values = Vec<Value>;
+
+pub fn rdtofs(number: i16, kind: i16) -> Single<Values> {
+    let n = i32::from(number);
+    Single::new(ReqSub::cnc(RDTOFS, &[n, n, TOFS_SINGLE + i32::from(kind)]))
+}
+
+pub fn rdtofsr(s: i16, kind: i16, e: i16) -> Single<Values> {
+    Single::new(ReqSub::cnc(
+        RDTOFS,
+        &[i32::from(s), i32::from(e), i32::from(kind)],
+    ))
+}
+
+/// An empty answer (the write's acknowledgement).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Ack;
+
+impl Wire for Ack {
+    fn encode(&self, _: &mut Writer) {}
+    fn decode(_: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        Ok(Ack)
+    }
+}
+
+pub fn wrtofs(number: i16, kind: i16, value: i32) -> Single<Ack> {
+    let n = i32::from(number);
+    Single::new(
+        ReqSub::cnc(WRTOFS, &[n, n, TOFS_SINGLE + i32::from(kind)])
+            .with_payload(write_record(value).to_bytes()),
+    )
+}
+
+wire_struct! {
+    /// Payload of 0x000a (cnc_rdtofsinfo). FANUC's library reads `use_no`
+    /// from bytes 2..4 and `ofs_type` from bytes 4..6; what a real CNC puts
+    /// in bytes 0..2 is unknown (not recorded from a real CNC).
+    pub struct TofsInfo {
+        pub reserved: i16,
+        pub use_no: i16,
+        pub ofs_type: i16,
+    }
+}
+
+pub fn rdtofsinfo() -> Single<TofsInfo> {
+    Single::new(ReqSub::cnc(RDTOFSINFO, &[]))
+}
+
+pub fn rdzofs(number: i16, axis: i16) -> Single<Values> {
+    let n = i32::from(number);
+    Single::new(ReqSub::cnc(RDZOFS, &[n, n, i32::from(axis)]))
+}
+
+pub fn rdzofsr(s: i16, axis: i16, e: i16) -> Single<Values> {
+    Single::new(ReqSub::cnc(
+        RDZOFS,
+        &[i32::from(s), i32::from(e), i32::from(axis)],
+    ))
+}
+
+/// cnc_wrzofs: one record (axis ≥ 0) or one per axis (axis -1).
+pub fn wrzofs(number: i16, axis: i16, values: &[i32]) -> Single<Ack> {
+    let n = i32::from(number);
+    let records: Values = values.iter().map(|v| write_record(*v)).collect();
+    Single::new(ReqSub::cnc(WRZOFS, &[n, n, i32::from(axis)]).with_payload(records.to_bytes()))
+}
+
+wire_struct! {
+    /// Payload of 0x000d (cnc_rdzofsinfo) and 0x006b (cnc_rdalmhisno): one
+    /// i32 of which FANUC's library keeps the low 16 bits.
+    pub struct Count {
+        pub value: i32,
+    }
+}
+
+pub fn rdzofsinfo() -> Single<Count> {
+    Single::new(ReqSub::cnc(RDZOFSINFO, &[]))
+}

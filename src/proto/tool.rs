@@ -1,1 +1,99 @@
 //! Tool numbers, tool life and counters.
+//!
+//! Recorded from FANUC's library against a fake CNC (not from a real CNC):
+//! cnc_rdntool, cnc_rdlife and cnc_rdcount all read the group record of
+//! 0x008b [grp, grp]; cnc_rdtoolgrp reads it and then the group's tools
+//! with 0x004d [grp, 1, ntool] (cnc_toolnum's command).
+
+use super::call::Single;
+use super::packet::ReqSub;
+use super::value::Value;
+use super::wire::{DecodeError, Reader, Wire, Writer};
+use crate::wire_struct;
+
+/// Tool life group record: args [grp, grp].
+pub const TLGROUP: u16 = 0x008b;
+/// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
+pub const TLTOOLS: u16 = 0x004d;
+/// Punch press tool control data (no args).
+pub const TLCTL: u16 = 0x009a;
+
+wire_struct! {
+    /// Payload of 0x008b: group number, then the number of tools, tool life
+    /// and life counter as value records. FANUC's library reads the value
+    /// words at payload offsets 4 (ntool), 12 (life) and 20 (count).
+    pub struct ToolGroup {
+        pub grp: i32,
+        pub ntool: Value,
+        pub life: Value,
+        pub count: Value,
+    }
+}
+
+pub fn tlgroup(grp: i16) -> Single<ToolGroup> {
+    let g = i32::from(grp);
+    Single::new(ReqSub::cnc(TLGROUP, &[g, g]))
+}
+
+wire_struct! {
+    /// One tool of a group in a 0x004d answer (16 bytes).
+    pub struct ToolEntry {
+        pub tool_num: i32,
+        pub length_num: i32,
+        pub radius_num: i32,
+        pub tinfo: i32,
+    }
+}
+
+/// Payload of 0x004d: i32 group, i32 first tool-use number, then 16-byte
+/// tool records (FANUC's library numbers them tuse 1, 2, ... in order). A
+/// ragged tail is ignored, as FANUC's library ignores it.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct ToolList {
+    pub grp: i32,
+    pub first: i32,
+    pub tools: Vec<ToolEntry>,
+}
+
+impl Wire for ToolList {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.grp);
+        w.i32(self.first);
+        self.tools.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let grp = r.i32()?;
+        let first = r.i32()?;
+        let mut tools = Vec::new();
+        while r.remaining() >= 16 {
+            tools.push(ToolEntry::decode(r)?);
+        }
+        Ok(ToolList { grp, first, tools })
+    }
+}
+
+pub fn tltools(grp: i16, ntool: i32) -> Single<ToolList> {
+    Single::new(ReqSub::cnc(TLTOOLS, &[i32::from(grp), 1, ntool]))
+}
+
+wire_struct! {
+    /// Payload of 0x009a (cnc_rdtlctldata), read from FANUC's library code
+    /// (it only sends it to a punch press or laser, mt_type " P" / " L"):
+    /// 32-bit words, of which the short fields take the low 16 bits and
+    /// t_axis_dec the low byte. Not exercised against any CNC.
+    pub struct ToolCtl {
+        pub slct: i32,
+        pub used_tool: i32,
+        pub turret_indx: i32,
+        pub zero_tl_no: i32,
+        pub total_punch0: i32,
+        pub total_punch1: i32,
+        pub t_axis_move: i32,
+        pub reserved: i32,
+        pub t_axis_dec: i32,
+    }
+}
+
+pub fn tlctl() -> Single<ToolCtl> {
+    Single::new(ReqSub::cnc(TLCTL, &[]))
+}

@@ -315,6 +315,66 @@ impl CncService for Machine {
     }
 
     // --- offset ---
+    fn rdtofs(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        kind: i32,
+    ) -> Reply<Vec<crate::proto::value::Value>> {
+        self.tofs_read(path, s, e, kind)
+    }
+    fn wrtofs(
+        &mut self,
+        path: u16,
+        n: i32,
+        kind: i32,
+        payload: &[u8],
+    ) -> Reply<crate::proto::offset::Ack> {
+        self.tofs_write(path, n, kind, payload)
+    }
+    fn rdtofsinfo(&mut self, path: u16) -> Reply<crate::proto::offset::TofsInfo> {
+        self.tofs_info(path)
+    }
+    fn rdzofs(
+        &mut self,
+        path: u16,
+        s: i32,
+        e: i32,
+        axis: i32,
+    ) -> Reply<Vec<crate::proto::value::Value>> {
+        self.zofs_read(path, s, e, axis)
+    }
+    fn wrzofs(
+        &mut self,
+        path: u16,
+        n: i32,
+        axis: i32,
+        payload: &[u8],
+    ) -> Reply<crate::proto::offset::Ack> {
+        self.zofs_write(path, n, axis, payload)
+    }
+    fn rdzofsinfo(&mut self, path: u16) -> Reply<crate::proto::offset::Count> {
+        self.zofs_info(path)
+    }
+    fn rdalmhistry(&mut self, s: i32, e: i32) -> Reply<crate::proto::alarm::AlmHistory> {
+        self.history_read(s, e)
+    }
+    fn rdalmhisno(&mut self) -> Reply<crate::proto::offset::Count> {
+        self.history_count()
+    }
 
     // --- tool ---
+    fn tool_group(&mut self, path: u16, grp: i32) -> Reply<crate::proto::tool::ToolGroup> {
+        self.tl_group(path, grp)
+    }
+    fn tool_list(
+        &mut self,
+        path: u16,
+        grp: i32,
+        s: i32,
+        e: i32,
+    ) -> Reply<crate::proto::tool::ToolList> {
+        self.tl_list(path, grp, s, e)
+    }
 }

@@ -2,8 +2,10 @@
 //! configured from a machine profile. It runs on its own threads with its
 //! own tokio runtime, so tests and tools can block while it serves.
 
+pub mod history;
 pub mod machine;
 pub mod macros;
+pub mod offset;
 pub mod param;
 pub mod pmc;
 pub mod position;

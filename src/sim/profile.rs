@@ -35,7 +35,9 @@ pub struct Profile {
     #[serde(default)]
     pub pmc: super::pmc::Pmc,
     // --- offset ---
-
+    /// The alarm history (src/sim/history.rs).
+    #[serde(default)]
+    pub alarm_history: super::history::History,
     // --- tool ---
 
     // --- upload ---
@@ -123,8 +125,13 @@ pub struct Path {
     // --- pmc ---
 
     // --- offset ---
+    /// Tool and work offsets (src/sim/offset.rs).
+    pub offset: super::offset::Offsets,
 
     // --- tool ---
+    /// Tool life groups (src/sim/offset.rs).
+    #[serde(rename = "tool_group")]
+    pub tool_groups: Vec<super::offset::ToolGroupProfile>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]
@@ -244,6 +251,15 @@ impl Profile {
                     ));
                 }
             }
+        }
+        // --- offset ---
+        self.alarm_history
+            .validate()
+            .map_err(ProfileError::Invalid)?;
+        for (i, p) in self.paths.iter().enumerate() {
+            p.offset
+                .validate(p.axes.len())
+                .map_err(|m| ProfileError::Invalid(format!("path {}: {m}", i + 1)))?;
         }
         Ok(())
     }

@@ -9,6 +9,11 @@ use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
 use crate::proto::param::{self, InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
+// --- offset ---
+use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
+use crate::proto::offset::{self as ofs, Ack, Count, TofsInfo};
+use crate::proto::tool::{TLGROUP, TLTOOLS, ToolGroup, ToolList};
+use crate::proto::value::Value;
 
 /// An error code a CNC puts in a response subpacket.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -228,8 +233,45 @@ pub trait CncService: Send {
     }
 
     // --- offset ---
+    /// 0x0008 [s, e, type] (type ≥ 1000: cnc_rdtofs's single form).
+    fn rdtofs(&mut self, path: u16, s: i32, e: i32, kind: i32) -> Reply<Vec<Value>> {
+        unsupported()
+    }
+    /// 0x0009 [n, n, 1000 + type] + one record.
+    fn wrtofs(&mut self, path: u16, n: i32, kind: i32, payload: &[u8]) -> Reply<Ack> {
+        unsupported()
+    }
+    fn rdtofsinfo(&mut self, path: u16) -> Reply<TofsInfo> {
+        unsupported()
+    }
+    /// 0x000b [s, e, axis].
+    fn rdzofs(&mut self, path: u16, s: i32, e: i32, axis: i32) -> Reply<Vec<Value>> {
+        unsupported()
+    }
+    /// 0x000c [n, n, axis] + records.
+    fn wrzofs(&mut self, path: u16, n: i32, axis: i32, payload: &[u8]) -> Reply<Ack> {
+        unsupported()
+    }
+    fn rdzofsinfo(&mut self, path: u16) -> Reply<Count> {
+        unsupported()
+    }
+    /// 0x006c [s, e, 1]: alarm history entries s..=e (1 = newest).
+    fn rdalmhistry(&mut self, s: i32, e: i32) -> Reply<AlmHistory> {
+        unsupported()
+    }
+    fn rdalmhisno(&mut self) -> Reply<Count> {
+        unsupported()
+    }
 
     // --- tool ---
+    /// 0x008b [grp, grp]: a tool life group record.
+    fn tool_group(&mut self, path: u16, grp: i32) -> Reply<ToolGroup> {
+        unsupported()
+    }
+    /// 0x004d [grp, s, e]: tools s..=e of a group.
+    fn tool_list(&mut self, path: u16, grp: i32, s: i32, e: i32) -> Reply<ToolList> {
+        unsupported()
+    }
 }
 
 fn enc<T: Wire>(r: Reply<T>) -> Reply<Vec<u8>> {
@@ -324,8 +366,18 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             }
 
             // --- offset ---
+            (CLASS_CNC, ofs::RDTOFS) => enc(svc.rdtofs(p, a[0], a[1], a[2])),
+            (CLASS_CNC, ofs::WRTOFS) => enc(svc.wrtofs(p, a[0], a[2], &sub.payload)),
+            (CLASS_CNC, ofs::RDTOFSINFO) => enc(svc.rdtofsinfo(p)),
+            (CLASS_CNC, ofs::RDZOFS) => enc(svc.rdzofs(p, a[0], a[1], a[2])),
+            (CLASS_CNC, ofs::WRZOFS) => enc(svc.wrzofs(p, a[0], a[2], &sub.payload)),
+            (CLASS_CNC, ofs::RDZOFSINFO) => enc(svc.rdzofsinfo(p)),
+            (CLASS_CNC, RDALMHISTRY) => enc(svc.rdalmhistry(a[0], a[1])),
+            (CLASS_CNC, RDALMHISNO) => enc(svc.rdalmhisno()),
 
             // --- tool ---
+            (CLASS_CNC, TLGROUP) => enc(svc.tool_group(p, a[0])),
+            (CLASS_CNC, TLTOOLS) => enc(svc.tool_list(p, a[0], a[1], a[2])),
             _ => Err(CncError::FUNC),
         }
     };

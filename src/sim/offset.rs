@@ -1,0 +1,273 @@
+//! Simulated tool and work offsets: the profile's `[path.offset]` tables,
+//! read and written through 0x0008..0x000d.
+
+use super::Machine;
+use super::service::{CncError, Reply};
+use crate::ew;
+use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo};
+use crate::proto::value::Value;
+use crate::proto::wire::Wire;
+use serde::Deserialize;
+
+/// `[path.offset]`: what cnc_rdtofs/cnc_rdzofs read and the writes change.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Offsets {
+    /// Decimals of every offset value (3: 0.001 mm).
+    pub decimals: i16,
+    /// cnc_rdtofsinfo `ofs_type`: tool offset memory (0 A, 1 B, 2 C).
+    pub memory: i16,
+    /// Tool offsets: row k is offset number k+1, one column per type
+    /// (mill, memory C: radius wear, radius geometry, length wear, length
+    /// geometry, types 0..3). Every row has the same number of columns.
+    pub tool: Vec<Vec<i32>>,
+    /// Work zero offsets: row 0 external, rows 1..6 G54..G59 (7.. G54.1 P1..),
+    /// one column per axis (missing columns read 0).
+    pub work: Vec<Vec<i32>>,
+}
+
+impl Default for Offsets {
+    fn default() -> Self {
+        Offsets {
+            decimals: 3,
+            memory: 2,
+            tool: Vec::new(),
+            work: Vec::new(),
+        }
+    }
+}
+
+impl Offsets {
+    pub fn validate(&self, axes: usize) -> Result<(), String> {
+        if let Some(w) = self.tool.first().map(Vec::len)
+            && self.tool.iter().any(|r| r.len() != w)
+        {
+            return Err("offset.tool rows must all have the same number of types".into());
+        }
+        if self.work.iter().any(|r| r.len() > axes) {
+            return Err("offset.work rows have at most one value per axis".into());
+        }
+        Ok(())
+    }
+}
+
+const NUMBER: CncError = CncError::NUMBER;
+const ATTRIB: CncError = CncError::new(ew::EW_ATTRIB);
+const LENGTH: CncError = CncError::new(ew::EW_LENGTH);
+
+/// Write payload: exactly `n` whole records.
+fn records(payload: &[u8], n: usize) -> Reply<Vec<i32>> {
+    if payload.len() != 8 * n {
+        return Err(LENGTH);
+    }
+    let v = Vec::<Value>::from_bytes(payload).map_err(|_| LENGTH)?;
+    Ok(v.iter().map(|r| r.value).collect())
+}
+
+impl Machine {
+    fn offsets(&self, path: u16) -> Reply<&Offsets> {
+        self.profile
+            .paths
+            .get(path as usize - 1)
+            .map(|p| &p.offset)
+            .ok_or(CncError::PATH)
+    }
+
+    fn offsets_mut(&mut self, path: u16) -> Reply<&mut Offsets> {
+        self.profile
+            .paths
+            .get_mut(path as usize - 1)
+            .map(|p| &mut p.offset)
+            .ok_or(CncError::PATH)
+    }
+
+    fn axes_of(&self, path: u16) -> usize {
+        self.profile.paths[path as usize - 1].axes.len()
+    }
+
+    /// Offset number range check: `lo..=hi` within `first..first+rows`.
+    fn range(s: i32, e: i32, first: i32, rows: usize) -> Reply<(usize, usize)> {
+        if s < first || e < s || e >= first + rows as i32 {
+            return Err(NUMBER);
+        }
+        Ok(((s - first) as usize, (e - first) as usize))
+    }
+
+    /// 0x0008 [s, e, type]: type ≥ 1000 is cnc_rdtofs's single form.
+    pub fn tofs_read(&mut self, path: u16, s: i32, e: i32, t: i32) -> Reply<Vec<Value>> {
+        let o = self.offsets(path)?;
+        let kind = if t >= TOFS_SINGLE - 1 {
+            t - TOFS_SINGLE
+        } else {
+            t
+        };
+        let (a, b) = Self::range(s, e, 1, o.tool.len())?;
+        let types = o.tool.first().map_or(0, Vec::len);
+        let rows = &o.tool[a..=b];
+        let v: Vec<i32> = match kind {
+            -1 => rows.iter().flatten().copied().collect(),
+            k if k >= 0 && (k as usize) < types => rows.iter().map(|r| r[k as usize]).collect(),
+            _ => return Err(ATTRIB),
+        };
+        Ok(v.into_iter()
+            .map(|x| Value::decimal(x, o.decimals))
+            .collect())
+    }
+
+    /// 0x0009 [n, n, 1000 + type] + one record.
+    pub fn tofs_write(&mut self, path: u16, n: i32, t: i32, payload: &[u8]) -> Reply<Ack> {
+        let o = self.offsets_mut(path)?;
+        let (a, _) = Self::range(n, n, 1, o.tool.len())?;
+        let kind = t - TOFS_SINGLE;
+        let types = o.tool.first().map_or(0, Vec::len);
+        if kind < 0 || kind as usize >= types {
+            return Err(ATTRIB);
+        }
+        let v = records(payload, 1)?;
+        o.tool[a][kind as usize] = v[0];
+        Ok(Ack)
+    }
+
+    pub fn tofs_info(&mut self, path: u16) -> Reply<TofsInfo> {
+        let o = self.offsets(path)?;
+        Ok(TofsInfo {
+            reserved: 0,
+            use_no: o.tool.len() as i16,
+            ofs_type: o.memory,
+        })
+    }
+
+    /// Which axes an axis word selects: -1 all (max_axes records), 1..=n one.
+    fn zofs_axes(&self, path: u16, axis: i32) -> Reply<std::ops::Range<usize>> {
+        let n = self.axes_of(path);
+        match axis {
+            -1 => Ok(0..self.profile.cnc.max_axes as usize),
+            a if a >= 1 && a as usize <= n => Ok(a as usize - 1..a as usize),
+            _ => Err(ATTRIB),
+        }
+    }
+
+    /// 0x000b [s, e, axis].
+    pub fn zofs_read(&mut self, path: u16, s: i32, e: i32, axis: i32) -> Reply<Vec<Value>> {
+        let cols = self.zofs_axes(path, axis)?;
+        let o = self.offsets(path)?;
+        let (a, b) = Self::range(s, e, 0, o.work.len())?;
+        let mut out = Vec::new();
+        for row in &o.work[a..=b] {
+            for c in cols.clone() {
+                let v = row.get(c).copied().unwrap_or(0);
+                out.push(Value::decimal(v, o.decimals));
+            }
+        }
+        Ok(out)
+    }
+
+    /// 0x000c [n, n, axis] + one record per selected axis.
+    pub fn zofs_write(&mut self, path: u16, n: i32, axis: i32, payload: &[u8]) -> Reply<Ack> {
+        let cols = self.zofs_axes(path, axis)?;
+        let axes = self.axes_of(path);
+        let o = self.offsets_mut(path)?;
+        let (a, _) = Self::range(n, n, 0, o.work.len())?;
+        let v = records(payload, cols.len())?;
+        let row = &mut o.work[a];
+        for (c, x) in cols.zip(v) {
+            if c < axes {
+                if row.len() <= c {
+                    row.resize(c + 1, 0);
+                }
+                row[c] = x;
+            }
+        }
+        Ok(Ack)
+    }
+
+    /// 0x000d: the workpiece coordinate systems (G54.. and G54.1 P..), not
+    /// counting the external offset. Not checked against a real CNC.
+    pub fn zofs_info(&mut self, path: u16) -> Reply<Count> {
+        let o = self.offsets(path)?;
+        Ok(Count {
+            value: o.work.len().saturating_sub(1) as i32,
+        })
+    }
+}
+
+/// `[[path.tool_group]]`: a tool life group (cnc_rdlife, cnc_rdcount,
+/// cnc_rdtoolgrp, and the tool numbers of cnc_toolnum).
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct ToolGroupProfile {
+    pub number: i32,
+    /// Tool life (minutes or uses, as the CNC counts).
+    pub life: i32,
+    /// Tool life counter.
+    pub count: i32,
+    /// The group's tools in use order (tool-use number 1, 2, ...).
+    #[serde(rename = "tool")]
+    pub tools: Vec<ToolProfile>,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct ToolProfile {
+    /// T number.
+    pub number: i32,
+    /// Length (H) and radius (D) offset numbers.
+    pub length: i32,
+    pub radius: i32,
+    /// Tool information bits (skip, expired ...).
+    pub info: i32,
+}
+
+impl Machine {
+    fn tool_group_of(&self, path: u16, grp: i32) -> Reply<&ToolGroupProfile> {
+        self.profile
+            .paths
+            .get(path as usize - 1)
+            .ok_or(CncError::PATH)?
+            .tool_groups
+            .iter()
+            .find(|g| g.number == grp)
+            .ok_or(NUMBER)
+    }
+
+    /// 0x008b [grp, grp].
+    pub fn tl_group(&mut self, path: u16, grp: i32) -> Reply<crate::proto::tool::ToolGroup> {
+        let g = self.tool_group_of(path, grp)?;
+        Ok(crate::proto::tool::ToolGroup {
+            grp,
+            ntool: Value::decimal(g.tools.len() as i32, 0),
+            life: Value::decimal(g.life, 0),
+            count: Value::decimal(g.count, 0),
+        })
+    }
+
+    /// 0x004d [grp, s, e]: the tools with use numbers s..=e that exist.
+    pub fn tl_list(
+        &mut self,
+        path: u16,
+        grp: i32,
+        s: i32,
+        e: i32,
+    ) -> Reply<crate::proto::tool::ToolList> {
+        let g = self.tool_group_of(path, grp)?;
+        if s < 1 || e < s || s as usize > g.tools.len() {
+            return Err(NUMBER);
+        }
+        Ok(crate::proto::tool::ToolList {
+            grp,
+            first: s,
+            tools: g
+                .tools
+                .iter()
+                .skip(s as usize - 1)
+                .take((e - s + 1) as usize)
+                .map(|t| crate::proto::tool::ToolEntry {
+                    tool_num: t.number,
+                    length_num: t.length,
+                    radius_num: t.radius,
+                    tinfo: t.info,
+                })
+                .collect(),
+        })
+    }
+}

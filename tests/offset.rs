@@ -1,0 +1,312 @@
+//! Tool and work offsets and tool life through the C ABI against the
+//! simulator: reads equal the profile, writes read back (the write encoder
+//! is the read decoder reversed), protection, NULL pointers, bad lengths.
+
+use fwlib32::ew::*;
+use fwlib32::sim::{Profile, Simulator};
+use fwlib32::types::*;
+use fwlib32::*;
+use std::ffi::CString;
+use std::os::raw::{c_short, c_ushort};
+
+fn start(p: Profile) -> (Simulator, c_ushort) {
+    let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
+    let ip = CString::new("127.0.0.1").unwrap();
+    let mut h: c_ushort = 0;
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
+        EW_OK
+    );
+    (s, h)
+}
+
+fn default() -> (Simulator, c_ushort) {
+    start(Profile::default())
+}
+
+fn rdtofs(h: c_ushort, n: c_short, t: c_short) -> Result<i32, c_short> {
+    let mut o = ODBTOFS::default();
+    match unsafe { cnc_rdtofs(h, n, t, 8, &mut o) } {
+        EW_OK => {
+            assert_eq!((o.datano, o.r#type), (n, t));
+            Ok(o.data)
+        }
+        e => Err(e),
+    }
+}
+
+fn rdzofs_all(h: c_ushort, n: c_short) -> Result<IODBZOFS, c_short> {
+    let mut z = IODBZOFS::default();
+    match unsafe { cnc_rdzofs(h, n, -1, 132, &mut z) } {
+        EW_OK => Ok(z),
+        e => Err(e),
+    }
+}
+
+#[test]
+fn tool_offsets_read_the_profile() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let tool = &p.paths[0].offset.tool;
+    for (i, row) in tool.iter().enumerate() {
+        for (t, v) in row.iter().enumerate() {
+            assert_eq!(rdtofs(h, i as c_short + 1, t as c_short), Ok(*v));
+        }
+    }
+    let mut info = ODBTLINF::default();
+    assert_eq!(unsafe { cnc_rdtofsinfo(h, &mut info) }, EW_OK);
+    assert_eq!(info.use_no as usize, tool.len());
+    assert_eq!(info.ofs_type, p.paths[0].offset.memory);
+
+    // A range of one type, and all types of each offset (type -1).
+    let mut r: IODBTO = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { cnc_rdtofsr(h, 1, 3, 3, 8 + 3 * 4, &mut r) }, EW_OK);
+    assert_eq!((r.datano_s, r.r#type, r.datano_e), (1, 3, 3));
+    let m = unsafe { r.u.m_ofs };
+    assert_eq!(&m[..3], &[tool[0][3], tool[1][3], tool[2][3]]);
+    let mut r: IODBTO = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { cnc_rdtofsr(h, 1, -1, 2, 188, &mut r) }, EW_OK);
+    let all: Vec<i32> = tool[..2].iter().flatten().copied().collect();
+    assert_eq!(unsafe { &r.u.m_ofs_c[..8] }, &all[..]);
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn tool_offset_write_then_read_every_type() {
+    let (_s, h) = default();
+    // Radius wear/geometry (0/1) and length wear/geometry (2/3).
+    for (n, t, v) in [(1, 0, -25), (1, 1, 5012), (2, 2, -333), (2, 3, 150_001)] {
+        assert_eq!(unsafe { cnc_wrtofs(h, n, t, 8, v) }, EW_OK);
+        assert_eq!(rdtofs(h, n, t), Ok(v as i32));
+    }
+    // Other types of the same offset are unchanged.
+    let p = Profile::default();
+    assert_eq!(rdtofs(h, 1, 2), Ok(p.paths[0].offset.tool[0][2]));
+    // A `long` is sent as its low 32 bits.
+    assert_eq!(unsafe { cnc_wrtofs(h, 3, 3, 8, 0x1_0000_0007) }, EW_OK);
+    assert_eq!(rdtofs(h, 3, 3), Ok(7));
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn tool_offset_protection() {
+    let (_s, h) = default();
+    let before = rdtofs(h, 1, 1).unwrap();
+    unsafe {
+        // Unknown numbers, wrong types: the CNC refuses, nothing changes.
+        assert_eq!(cnc_wrtofs(h, 0, 1, 8, 1), EW_NUMBER);
+        assert_eq!(cnc_wrtofs(h, 99, 1, 8, 1), EW_NUMBER);
+        assert_eq!(cnc_wrtofs(h, 1, 4, 8, 1), EW_ATTRIB);
+        assert_eq!(cnc_wrtofs(h, 1, -1, 8, 1), EW_ATTRIB);
+        // Bad length: refused before any traffic.
+        assert_eq!(cnc_wrtofs(h, 1, 1, 7, 1), EW_LENGTH);
+        let mut o = ODBTOFS::default();
+        assert_eq!(cnc_rdtofs(h, 1, 1, 7, &mut o), EW_LENGTH);
+        assert_eq!(cnc_rdtofs(h, 99, 1, 8, &mut o), EW_NUMBER);
+        assert_eq!(cnc_rdtofs(h, 1, 9, 8, &mut o), EW_ATTRIB);
+        assert_eq!(o, ODBTOFS::default(), "nothing written on errors");
+        assert_eq!(cnc_rdtofs(h, 1, 1, 8, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rdtofsinfo(h, std::ptr::null_mut()), EW_DATA);
+        let mut r: IODBTO = std::mem::zeroed();
+        assert_eq!(cnc_rdtofsr(h, 1, 0, 3, 19, &mut r), EW_LENGTH);
+        assert_eq!(cnc_rdtofsr(h, 3, 0, 1, 100, &mut r), EW_NUMBER);
+        assert_eq!(cnc_rdtofsr(h, 1, 0, 3, 100, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rdtofs(0, 1, 1, 8, &mut o), EW_HANDLE);
+        assert_eq!(cnc_wrtofs(0, 1, 1, 8, 1), EW_HANDLE);
+    }
+    assert_eq!(rdtofs(h, 1, 1), Ok(before));
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn work_offsets_read_the_profile() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let work = &p.paths[0].offset.work;
+    for (n, row) in work.iter().enumerate() {
+        let z = rdzofs_all(h, n as c_short).unwrap();
+        assert_eq!((z.datano, z.r#type), (n as c_short, -1));
+        assert_eq!(&z.data[..3], &row[..]);
+        assert!(
+            z.data[3..].iter().all(|v| *v == 0),
+            "axes beyond the machine's read 0"
+        );
+        for (a, v) in row.iter().enumerate() {
+            let mut z = IODBZOFS::default();
+            assert_eq!(
+                unsafe { cnc_rdzofs(h, n as c_short, a as c_short + 1, 8, &mut z) },
+                EW_OK
+            );
+            assert_eq!(
+                (z.datano, z.r#type, z.data[0]),
+                (n as c_short, a as c_short + 1, *v)
+            );
+        }
+    }
+    let mut no: c_short = 0;
+    assert_eq!(unsafe { cnc_rdzofsinfo(h, &mut no) }, EW_OK);
+    assert_eq!(no as usize, work.len() - 1);
+
+    // A range, all axes: 32 values per offset; datano_e from the answer.
+    let mut r: IODBZOR = unsafe { std::mem::zeroed() };
+    assert_eq!(
+        unsafe { cnc_rdzofsr(h, 1, -1, 2, 8 + 2 * 128, &mut r) },
+        EW_OK
+    );
+    assert_eq!((r.datano_s, r.r#type, r.datano_e), (1, -1, 2));
+    assert_eq!(&r.data[..3], &work[1][..]);
+    assert_eq!(&r.data[32..35], &work[2][..]);
+    // One axis of G54..G59.
+    let mut r: IODBZOR = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { cnc_rdzofsr(h, 1, 2, 6, 8 + 6 * 4, &mut r) }, EW_OK);
+    let ys: Vec<i32> = work[1..7].iter().map(|w| w[1]).collect();
+    assert_eq!(&r.data[..6], &ys[..]);
+    assert_eq!(r.datano_e, 6);
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn work_offset_write_then_read_per_axis_and_all_axes() {
+    let (_s, h) = default();
+    // Per axis.
+    for (n, a, v) in [(1, 1, -100_000), (1, 3, 12_345), (0, 2, -7)] {
+        let mut z = IODBZOFS {
+            datano: n,
+            r#type: a,
+            ..IODBZOFS::default()
+        };
+        z.data[0] = v;
+        assert_eq!(unsafe { cnc_wrzofs(h, 8, &mut z) }, EW_OK);
+        let mut back = IODBZOFS::default();
+        assert_eq!(unsafe { cnc_rdzofs(h, n, a, 8, &mut back) }, EW_OK);
+        assert_eq!(back.data[0], v);
+    }
+    // All axes: the machine's three take the values.
+    let mut z = IODBZOFS {
+        datano: 4,
+        r#type: -1,
+        ..IODBZOFS::default()
+    };
+    z.data[..3].copy_from_slice(&[111, -222, 333]);
+    assert_eq!(unsafe { cnc_wrzofs(h, 132, &mut z) }, EW_OK);
+    let back = rdzofs_all(h, 4).unwrap();
+    assert_eq!(&back.data[..3], &[111, -222, 333]);
+    // G54's Y kept its profile value next to the written X and Z.
+    let p = Profile::default();
+    let g54 = rdzofs_all(h, 1).unwrap();
+    assert_eq!(
+        &g54.data[..3],
+        &[-100_000, p.paths[0].offset.work[1][1], 12_345]
+    );
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn work_offset_protection() {
+    let (_s, h) = default();
+    let before = rdzofs_all(h, 1).unwrap();
+    unsafe {
+        let mut z = IODBZOFS {
+            datano: 1,
+            r#type: 1,
+            ..IODBZOFS::default()
+        };
+        z.data = [9; 32];
+        // Lengths: refused before traffic.
+        assert_eq!(cnc_wrzofs(h, 7, &mut z), EW_LENGTH);
+        z.r#type = -1;
+        assert_eq!(cnc_wrzofs(h, 131, &mut z), EW_LENGTH);
+        z.r#type = -2;
+        assert_eq!(cnc_wrzofs(h, 132, &mut z), EW_LENGTH);
+        // Axis beyond the CNC's: local; beyond the machine's: the CNC's.
+        z.r#type = 33;
+        assert_eq!(cnc_wrzofs(h, 8, &mut z), EW_ATTRIB);
+        z.r#type = 4;
+        assert_eq!(cnc_wrzofs(h, 8, &mut z), EW_ATTRIB);
+        z.r#type = 0;
+        assert_eq!(cnc_wrzofs(h, 8, &mut z), EW_ATTRIB);
+        // Unknown number.
+        z.r#type = 1;
+        z.datano = 7;
+        assert_eq!(cnc_wrzofs(h, 8, &mut z), EW_NUMBER);
+        z.datano = -1;
+        assert_eq!(cnc_wrzofs(h, 8, &mut z), EW_NUMBER);
+        assert_eq!(cnc_wrzofs(h, 8, std::ptr::null_mut()), EW_DATA);
+
+        let mut o = IODBZOFS::default();
+        assert_eq!(cnc_rdzofs(h, 1, 1, 7, &mut o), EW_LENGTH);
+        assert_eq!(cnc_rdzofs(h, 1, -1, 131, &mut o), EW_LENGTH);
+        assert_eq!(cnc_rdzofs(h, 1, 33, 8, &mut o), EW_ATTRIB);
+        assert_eq!(cnc_rdzofs(h, 9, 1, 8, &mut o), EW_NUMBER);
+        assert_eq!(cnc_rdzofs(h, 1, 1, 8, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(o, IODBZOFS::default(), "nothing written on errors");
+        let mut r: IODBZOR = std::mem::zeroed();
+        assert_eq!(cnc_rdzofsr(h, 3, 1, 1, 100, &mut r), EW_NUMBER);
+        // More values than `length` holds: EW_LENGTH after the exchange, nothing written.
+        assert_eq!(cnc_rdzofsr(h, 1, 1, 6, 8 + 5 * 4, &mut r), EW_LENGTH);
+        assert_eq!(r.datano_s, 0);
+        assert_eq!(cnc_rdzofsinfo(h, std::ptr::null_mut()), EW_DATA);
+    }
+    let after = rdzofs_all(h, 1).unwrap();
+    assert_eq!(after, before, "rejected writes change nothing");
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn tool_life_groups() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let g = &p.paths[0].tool_groups[0];
+    let mut l = ODBTLIFE3 {
+        dummy: 77,
+        ..ODBTLIFE3::default()
+    };
+    assert_eq!(unsafe { cnc_rdlife(h, g.number as c_short, &mut l) }, EW_OK);
+    assert_eq!(
+        (l.datano, l.dummy, l.data),
+        (g.number as c_short, 77, g.life)
+    );
+    assert_eq!(
+        unsafe { cnc_rdcount(h, g.number as c_short, &mut l) },
+        EW_OK
+    );
+    assert_eq!(l.data, g.count);
+
+    let mut t = ODBTG::default();
+    let len = std::mem::size_of::<ODBTG>() as c_short;
+    assert_eq!(
+        unsafe { cnc_rdtoolgrp(h, g.number as c_short, len, &mut t) },
+        EW_OK
+    );
+    assert_eq!(
+        (t.grp_num, t.ntool, t.life, t.count),
+        (g.number as c_short, g.tools.len() as i32, g.life, g.count)
+    );
+    for (i, x) in g.tools.iter().enumerate() {
+        let d = t.data[i];
+        assert_eq!(
+            (d.tuse_num, d.tool_num, d.length_num, d.radius_num, d.tinfo),
+            (i as i32 + 1, x.number, x.length, x.radius, x.info)
+        );
+    }
+    unsafe {
+        assert_eq!(cnc_rdlife(h, 99, &mut l), EW_NUMBER);
+        assert_eq!(cnc_rdcount(h, 1, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(cnc_rdtoolgrp(h, 1, 19, &mut t), EW_LENGTH);
+        // Room for the head and one tool, the group has two.
+        assert_eq!(cnc_rdtoolgrp(h, 1, 40, &mut t), EW_LENGTH);
+        // A punch-press function: a mill refuses it without traffic.
+        let mut c = IODBTLCTL::default();
+        assert_eq!(cnc_rdtlctldata(h, &mut c), EW_FUNC);
+        assert_eq!(cnc_rdtlctldata(h, std::ptr::null_mut()), EW_DATA);
+    }
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}
+
+#[test]
+fn profile_validation() {
+    let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\ntool = [[1, 2], [3]]\n";
+    assert!(Profile::parse(bad).is_err());
+    let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\nwork = [[1, 2]]\n";
+    assert!(Profile::parse(bad).is_err());
+}
