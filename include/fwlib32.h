@@ -148,14 +148,221 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
+ cnc_alarm: alarm status bits (low 16 bits).
+ */
+typedef struct ODBALM {
+    short dummy[2];
+    short data;
+} ODBALM;
+
+/*
  FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
  */
 typedef int32_t LONG;
 
 /*
+ cnc_rdalmmsg: one alarm with a 32-character message.
+ */
+typedef struct ODBALMMSG {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[32];
+} ODBALMMSG;
+
+/*
+ cnc_rdalmmsg2: one alarm with a 64-character message.
+ */
+typedef struct ODBALMMSG2 {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[64];
+} ODBALMMSG2;
+
+/*
+ ALMINFO type 0 record: axis bits and alarm number.
+ */
+typedef struct ALMINFO_alm1_rec {
+    LONG axis;
+    short alm_no;
+} ALMINFO_alm1_rec;
+
+/*
+ ALMINFO type 0: up to 5 alarms without messages.
+ */
+typedef struct ALMINFO_alm1 {
+    struct ALMINFO_alm1_rec alm[5];
+    LONG data_end;
+} ALMINFO_alm1;
+
+/*
+ ALMINFO type 1 record: axis bits, alarm number and message.
+ */
+typedef struct ALMINFO_alm2_rec {
+    LONG axis;
+    short alm_no;
+    short msg_len;
+    char alm_msg[32];
+} ALMINFO_alm2_rec;
+
+/*
+ ALMINFO type 1: up to 5 alarms with messages.
+ */
+typedef struct ALMINFO_alm2 {
+    struct ALMINFO_alm2_rec alm[5];
+    LONG data_end;
+} ALMINFO_alm2;
+
+/*
+ The union of ALMINFO.
+ */
+typedef union ALMINFO_u {
+    struct ALMINFO_alm1 alm1;
+    struct ALMINFO_alm2 alm2;
+} ALMINFO_u;
+
+/*
+ cnc_rdalminfo: alarm information (5 alarms; the caller's `length` says how many fit).
+ */
+typedef struct ALMINFO {
+    union ALMINFO_u u;
+} ALMINFO;
+
+/*
+ cnc_rdopmsg: one operator message (256-character variant).
+ */
+typedef struct OPMSG {
+    short datano;
+    short type;
+    short char_num;
+    char data[256];
+} OPMSG;
+
+/*
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
+
+/*
+ cnc_rdprgnum: running and main program numbers (low 16 bits, as FANUC's).
+ */
+typedef struct ODBPRO {
+    short dummy[2];
+    short data;
+    short mdata;
+} ODBPRO;
+
+/*
+ cnc_rdseqnum: sequence number.
+ */
+typedef struct ODBSEQ {
+    short dummy[2];
+    LONG data;
+} ODBSEQ;
+
+/*
+ cnc_exeprgname: name and number of the running program.
+ */
+typedef struct ODBEXEPRG {
+    char name[36];
+    LONG o_num;
+} ODBEXEPRG;
+
+/*
+ One modal code other than a G code (cnc_modal aux / raux1 / raux2).
+ */
+typedef struct MODAL_AUX {
+    LONG aux_data;
+    char flag1;
+    char flag2;
+} MODAL_AUX;
+
+/*
+ The union of ODBMDL.
+ */
+typedef union ODBMDL_modal {
+    char g_data;
+    char g_rdata[35];
+    char g_1shot[4];
+    struct MODAL_AUX aux;
+    struct MODAL_AUX raux1[27];
+    struct MODAL_AUX raux2[32];
+} ODBMDL_modal;
+
+/*
+ cnc_modal: modal data (G codes or other codes).
+ */
+typedef struct ODBMDL {
+    short datano;
+    short type;
+    union ODBMDL_modal modal;
+} ODBMDL;
+
+/*
+ cnc_rdtimer: a timer as minutes and milliseconds.
+ */
+typedef struct IODBTIME {
+    LONG minute;
+    LONG msec;
+} IODBTIME;
+
+/*
+ IODBTIMER date view.
+ */
+typedef struct IODBTIMER_date {
+    short year;
+    short month;
+    short date;
+} IODBTIMER_date;
+
+/*
+ IODBTIMER time view.
+ */
+typedef struct IODBTIMER_time {
+    short hour;
+    short minute;
+    short second;
+} IODBTIMER_time;
+
+/*
+ The union of IODBTIMER: date (type 0) or time (type 1).
+ */
+typedef union IODBTIMER_data {
+    struct IODBTIMER_date date;
+    struct IODBTIMER_time time;
+} IODBTIMER_data;
+
+/*
+ cnc_gettimer / cnc_settimer: the CNC's date (type 0) or time (type 1).
+ */
+typedef struct IODBTIMER {
+    short type;
+    short dummy;
+    union IODBTIMER_data data;
+} IODBTIMER;
+
+/*
+ cnc_rdntool: number of tools in a tool-life group.
+ */
+typedef struct ODBTLIFE3 {
+    short datano;
+    short dummy;
+    LONG data;
+} ODBTLIFE3;
+
+/*
+ cnc_toolnum: tool number of a tool in a tool-life group.
+ */
+typedef struct ODBTLIFE4 {
+    short datano;
+    short type;
+    LONG data;
+} ODBTLIFE4;
 
 #ifdef __cplusplus
 extern "C" {

@@ -273,7 +273,8 @@ macro_rules! rust_layouts {
                     stringify!($ty),
                     std::mem::size_of::<$ty>(),
                     vec![$((
-                        stringify!($field),
+                        // `r#type` is the C member `type`.
+                        stringify!($field).trim_start_matches("r#"),
                         std::mem::offset_of!($ty, $field),
                         field_size(|v: &$ty| &v.$field),
                     )),*],
@@ -296,8 +297,21 @@ rust_layouts! {
     // --- position ---
 
     // --- program ---
+    ODBPRO { dummy, data, mdata }
+    ODBSEQ { dummy, data }
+    ODBEXEPRG { name, o_num }
+    ODBMDL { datano, r#type, modal }
+    IODBTIME { minute, msec }
+    IODBTIMER { r#type, dummy, data }
+    ODBTLIFE3 { datano, dummy, data }
+    ODBTLIFE4 { datano, r#type, data }
 
     // --- alarm ---
+    ODBALM { dummy, data }
+    ODBALMMSG { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ODBALMMSG2 { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ALMINFO { u }
+    OPMSG { datano, r#type, char_num, data }
 
     // --- param ---
 
