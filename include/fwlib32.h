@@ -93,61 +93,6 @@ namespace Fwlib32 {
 #define MAX_SPINDLE 8
 
 /*
- cnc_getdtailerr: detail of the last error.
- */
-typedef struct ODBERR {
-    short err_no;
-    short err_dtno;
-} ODBERR;
-
-/*
- cnc_statinfo: CNC status information.
- */
-typedef struct ODBST {
-    short hdck;
-    short tmmode;
-    short aut;
-    short run;
-    short motion;
-    short mstb;
-    short emergency;
-    short alarm;
-    short edit;
-} ODBST;
-
-/*
- cnc_statinfo2: CNC status information 2.
- */
-typedef struct ODBST2 {
-    short hdck;
-    short tmmode;
-    short aut;
-    short run;
-    short motion;
-    short mstb;
-    short emergency;
-    short alarm;
-    short edit;
-    short warning;
-    short o3dchk;
-    short ext_opt;
-    short restart;
-} ODBST2;
-
-/*
- cnc_sysinfo: CNC system information.
- */
-typedef struct ODBSYS {
-    short addinfo;
-    short max_axis;
-    char cnc_type[2];
-    char mt_type[2];
-    char series[4];
-    char version[4];
-    char axes[2];
-} ODBSYS;
-
-/*
  cnc_alarm: alarm status bits (low 16 bits).
  */
 typedef struct ODBALM {
@@ -161,28 +106,85 @@ typedef struct ODBALM {
 typedef int32_t LONG;
 
 /*
- cnc_rdalmmsg: one alarm with a 32-character message.
+ cnc_exeprgname: name and number of the running program.
  */
-typedef struct ODBALMMSG {
-    LONG alm_no;
-    short type;
-    short axis;
-    short dummy;
-    short msg_len;
-    char alm_msg[32];
-} ODBALMMSG;
+typedef struct ODBEXEPRG {
+    char name[36];
+    LONG o_num;
+} ODBEXEPRG;
 
 /*
- cnc_rdalmmsg2: one alarm with a 64-character message.
+ cnc_getdtailerr: detail of the last error.
  */
-typedef struct ODBALMMSG2 {
-    LONG alm_no;
+typedef struct ODBERR {
+    short err_no;
+    short err_dtno;
+} ODBERR;
+
+/*
+ IODBTIMER date view.
+ */
+typedef struct IODBTIMER_date {
+    short year;
+    short month;
+    short date;
+} IODBTIMER_date;
+
+/*
+ IODBTIMER time view.
+ */
+typedef struct IODBTIMER_time {
+    short hour;
+    short minute;
+    short second;
+} IODBTIMER_time;
+
+/*
+ The union of IODBTIMER: date (type 0) or time (type 1).
+ */
+typedef union IODBTIMER_data {
+    struct IODBTIMER_date date;
+    struct IODBTIMER_time time;
+} IODBTIMER_data;
+
+/*
+ cnc_gettimer / cnc_settimer: the CNC's date (type 0) or time (type 1).
+ */
+typedef struct IODBTIMER {
     short type;
-    short axis;
     short dummy;
-    short msg_len;
-    char alm_msg[64];
-} ODBALMMSG2;
+    union IODBTIMER_data data;
+} IODBTIMER;
+
+/*
+ One modal code other than a G code (cnc_modal aux / raux1 / raux2).
+ */
+typedef struct MODAL_AUX {
+    LONG aux_data;
+    char flag1;
+    char flag2;
+} MODAL_AUX;
+
+/*
+ The union of ODBMDL.
+ */
+typedef union ODBMDL_modal {
+    char g_data;
+    char g_rdata[35];
+    char g_1shot[4];
+    struct MODAL_AUX aux;
+    struct MODAL_AUX raux1[27];
+    struct MODAL_AUX raux2[32];
+} ODBMDL_modal;
+
+/*
+ cnc_modal: modal data (G codes or other codes).
+ */
+typedef struct ODBMDL {
+    short datano;
+    short type;
+    union ODBMDL_modal modal;
+} ODBMDL;
 
 /*
  ALMINFO type 0 record: axis bits and alarm number.
@@ -234,6 +236,39 @@ typedef struct ALMINFO {
 } ALMINFO;
 
 /*
+ cnc_rdalmmsg: one alarm with a 32-character message.
+ */
+typedef struct ODBALMMSG {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[32];
+} ODBALMMSG;
+
+/*
+ cnc_rdalmmsg2: one alarm with a 64-character message.
+ */
+typedef struct ODBALMMSG2 {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[64];
+} ODBALMMSG2;
+
+/*
+ cnc_rdntool: number of tools in a tool-life group.
+ */
+typedef struct ODBTLIFE3 {
+    short datano;
+    short dummy;
+    LONG data;
+} ODBTLIFE3;
+
+/*
  cnc_rdopmsg: one operator message (256-character variant).
  */
 typedef struct OPMSG {
@@ -242,11 +277,6 @@ typedef struct OPMSG {
     short char_num;
     char data[256];
 } OPMSG;
-
-/*
- FANUC's ULONG: 32 bits on every platform.
- */
-typedef uint32_t ULONG;
 
 /*
  cnc_rdprgnum: running and main program numbers (low 16 bits, as FANUC's).
@@ -266,44 +296,6 @@ typedef struct ODBSEQ {
 } ODBSEQ;
 
 /*
- cnc_exeprgname: name and number of the running program.
- */
-typedef struct ODBEXEPRG {
-    char name[36];
-    LONG o_num;
-} ODBEXEPRG;
-
-/*
- One modal code other than a G code (cnc_modal aux / raux1 / raux2).
- */
-typedef struct MODAL_AUX {
-    LONG aux_data;
-    char flag1;
-    char flag2;
-} MODAL_AUX;
-
-/*
- The union of ODBMDL.
- */
-typedef union ODBMDL_modal {
-    char g_data;
-    char g_rdata[35];
-    char g_1shot[4];
-    struct MODAL_AUX aux;
-    struct MODAL_AUX raux1[27];
-    struct MODAL_AUX raux2[32];
-} ODBMDL_modal;
-
-/*
- cnc_modal: modal data (G codes or other codes).
- */
-typedef struct ODBMDL {
-    short datano;
-    short type;
-    union ODBMDL_modal modal;
-} ODBMDL;
-
-/*
  cnc_rdtimer: a timer as minutes and milliseconds.
  */
 typedef struct IODBTIME {
@@ -312,48 +304,51 @@ typedef struct IODBTIME {
 } IODBTIME;
 
 /*
- IODBTIMER date view.
+ cnc_statinfo: CNC status information.
  */
-typedef struct IODBTIMER_date {
-    short year;
-    short month;
-    short date;
-} IODBTIMER_date;
+typedef struct ODBST {
+    short hdck;
+    short tmmode;
+    short aut;
+    short run;
+    short motion;
+    short mstb;
+    short emergency;
+    short alarm;
+    short edit;
+} ODBST;
 
 /*
- IODBTIMER time view.
+ cnc_statinfo2: CNC status information 2.
  */
-typedef struct IODBTIMER_time {
-    short hour;
-    short minute;
-    short second;
-} IODBTIMER_time;
+typedef struct ODBST2 {
+    short hdck;
+    short tmmode;
+    short aut;
+    short run;
+    short motion;
+    short mstb;
+    short emergency;
+    short alarm;
+    short edit;
+    short warning;
+    short o3dchk;
+    short ext_opt;
+    short restart;
+} ODBST2;
 
 /*
- The union of IODBTIMER: date (type 0) or time (type 1).
+ cnc_sysinfo: CNC system information.
  */
-typedef union IODBTIMER_data {
-    struct IODBTIMER_date date;
-    struct IODBTIMER_time time;
-} IODBTIMER_data;
-
-/*
- cnc_gettimer / cnc_settimer: the CNC's date (type 0) or time (type 1).
- */
-typedef struct IODBTIMER {
-    short type;
-    short dummy;
-    union IODBTIMER_data data;
-} IODBTIMER;
-
-/*
- cnc_rdntool: number of tools in a tool-life group.
- */
-typedef struct ODBTLIFE3 {
-    short datano;
-    short dummy;
-    LONG data;
-} ODBTLIFE3;
+typedef struct ODBSYS {
+    short addinfo;
+    short max_axis;
+    char cnc_type[2];
+    char mt_type[2];
+    char series[4];
+    char version[4];
+    char axes[2];
+} ODBSYS;
 
 /*
  cnc_toolnum: tool number of a tool in a tool-life group.
@@ -364,9 +359,30 @@ typedef struct ODBTLIFE4 {
     LONG data;
 } ODBTLIFE4;
 
+/*
+ FANUC's ULONG: 32 bits on every platform.
+ */
+typedef uint32_t ULONG;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/*
+ Reads the alarm status bits; `data` = their low 16 bits.
+
+ # Safety
+ `alarm` must point to a writable ODBALM.
+ */
+short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
+
+/*
+ Reads the alarm status bits (32 bits, 4 bytes written into the `long`).
+
+ # Safety
+ `alarm` must point to 4 writable bytes.
+ */
+short cnc_alarm2(unsigned short FlibHndl, long *alarm);
 
 /*
  Connects to the CNC at `ip:port` (or shares the existing connection to
@@ -390,6 +406,23 @@ short cnc_allclibhndl4(const char *ip,
                        long timeout,
                        unsigned long id,
                        unsigned short *FlibHndl);
+
+/*
+ Reads the name and O number of the running program.
+
+ # Safety
+ `exeprg` must point to a writable ODBEXEPRG.
+ */
+short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
+
+/*
+ Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
+ 256 bytes, NUL-terminated and zero-filled.
+
+ # Safety
+ `path_name` must point to 256 writable bytes.
+ */
+short cnc_exeprgname2(unsigned short FlibHndl, char *path_name);
 
 /*
  Frees every handle, closes every connection and the log.
@@ -418,6 +451,80 @@ short cnc_getdtailerr(unsigned short FlibHndl, struct ODBERR *err);
 short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 
 /*
+ Reads the CNC's date (`time->type` 0: year, month, date) or time of day
+ (1: hour, minute, second). Other types: EW_NUMBER without traffic.
+
+ # Safety
+ `time` must point to a readable and writable IODBTIMER.
+ */
+short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
+ Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
+ 300..) or other codes (100..126, 200..299, −2 all in raux1 order, −3 all
+ as sent), of `block` (0 active, 1 next ...). `datano` = `type`, `type` =
+ `block`. Writes never exceed the union (35 G-code bytes, 32 records),
+ where FANUC's library writes whatever arrives. Other types: EW_NUMBER
+ without traffic.
+
+ # Safety
+ `modal` must point to a writable ODBMDL.
+ */
+short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
+
+/*
+ Reads the execution pointer: program number and block number. Writes 4
+ bytes into each `long`.
+
+ # Safety
+ Both pointers must point to 4 writable bytes.
+ */
+short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
+
+/*
+ Reads active alarms of `alm_type` (−1 all): `type` 0 axis and number
+ (ALMINFO alm1, 8-byte records), 1 with messages (alm2, 40-byte records);
+ after the last record −1 is written into the next record's place (the
+ `data_end` slot when there are 5). `length` is the caller's buffer size:
+ at most 5 records and never more than `length` bytes are written (FANUC's
+ library writes every record the CNC sends). `length` ≤ 4: EW_LENGTH
+ without traffic.
+
+ # Safety
+ `almmsg` must have `length` writable bytes.
+ */
+short cnc_rdalminfo(unsigned short FlibHndl,
+                    short type,
+                    short alm_type,
+                    short length,
+                    struct ALMINFO *almmsg);
+
+/*
+ Reads up to `*num` active alarms of `type` (−1: all) with 32-character
+ messages; `*num` becomes the number read.
+
+ # Safety
+ `num` readable and writable; `almmsg` must have room for `*num` records.
+ */
+short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG *almmsg);
+
+/*
+ As cnc_rdalmmsg with 64-character messages.
+
+ # Safety
+ `num` readable and writable; `almmsg` must have room for `*num` records.
+ */
+short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
+
+/*
+ Reads the number of blocks executed. Writes 4 bytes into the `long`.
+
+ # Safety
+ `prog_bc` must point to 4 writable bytes.
+ */
+short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
+
+/*
  Reads the CNC's identification number: four 32-bit words.
 
  The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
@@ -431,6 +538,71 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
 
 /*
+ Reads the text of the block being executed and the blocks after it.
+ `*length` in: size of `data` in bytes; out: characters read (the text
+ is NUL-terminated and, unlike FANUC's library, never longer than
+ `*length - 1` characters, so `data` is never overrun). A CNC answering
+ with no text gives `*length` 0, an empty string and `*blknum` 0 (FANUC's
+ library reads past its receive buffer there).
+
+ # Safety
+ `length`, `blknum` writable; `data` must have `*length` writable bytes.
+ */
+short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blknum, char *data);
+
+/*
+ Reads the number of tools in tool-life group `grp_num`.
+
+ # Safety
+ `tool` must point to a writable ODBTLIFE3.
+ */
+short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool);
+
+/*
+ Reads the operation mode word.
+
+ # Safety
+ `mode` must point to a writable short.
+ */
+short cnc_rdopmode(unsigned short FlibHndl, short *mode);
+
+/*
+ Reads the operator message of `type` (0..4): number, type, length and
+ text, zero-filled to `length` bytes (at most the 262 of OPMSG).
+ `length` < 6: EW_LENGTH without traffic.
+
+ # Safety
+ `opmsg` must have `length` writable bytes.
+ */
+short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMSG *opmsg);
+
+/*
+ Reads the running and main program numbers (low 16 bits of each, as
+ FANUC's library stores them in the default ODBPRO's shorts).
+
+ # Safety
+ `prgnum` must point to a writable ODBPRO.
+ */
+short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
+
+/*
+ Reads the sequence number of the block being executed.
+
+ # Safety
+ `seqnum` must point to a writable ODBSEQ.
+ */
+short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
+ Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4
+ free) as minutes and milliseconds.
+
+ # Safety
+ `time` must point to a writable IODBTIME.
+ */
+short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
+
+/*
  Selects the path later calls on this handle address (0 or -1: path 1).
  Other handles, even to the same CNC, are not affected.
  */
@@ -440,6 +612,15 @@ short cnc_setpath(unsigned short FlibHndl, short path_no);
  Sets the handle's timeout in seconds (0 or less: wait forever).
  */
 short cnc_settimeout(unsigned short FlibHndl, long timeout);
+
+/*
+ Sets the CNC's date (`time->type` 0) or time of day (1). Other types:
+ EW_NUMBER without traffic. The caller's struct is not modified.
+
+ # Safety
+ `time` must point to a readable IODBTIMER.
+ */
+short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
 
 /*
  Starts the library's log. `level` 0 = off, 1 = errors, 2 = every call,
@@ -477,6 +658,17 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Reads the tool number of the `tuse_num`-th tool of tool-life group `grp_num`.
+
+ # Safety
+ `toolnum` must point to a writable ODBTLIFE4.
+ */
+short cnc_toolnum(unsigned short FlibHndl,
+                  short grp_num,
+                  short tuse_num,
+                  struct ODBTLIFE4 *toolnum);
 
 #ifdef __cplusplus
 }  // extern "C"
