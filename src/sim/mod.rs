@@ -4,6 +4,7 @@
 
 pub mod machine;
 pub mod profile;
+pub mod program;
 pub mod run;
 pub mod server;
 pub mod service;

@@ -21,7 +21,12 @@ pub struct Profile {
     // --- position ---
 
     // --- program ---
-
+    /// cnc_rdtimer counters (src/sim/program.rs).
+    #[serde(default)]
+    pub timers: super::program::Timers,
+    /// Tool-life groups (cnc_rdntool, cnc_toolnum).
+    #[serde(default, rename = "tool_group")]
+    pub tool_groups: Vec<super::program::ToolGroup>,
     // --- alarm ---
 
     // --- param ---
@@ -106,9 +111,15 @@ pub struct Path {
     // --- position ---
 
     // --- program ---
+    /// Modal codes (cnc_modal).
+    pub modal: super::program::Modal,
+    /// Operation mode word (cnc_rdopmode).
+    pub opmode: i16,
 
     // --- alarm ---
-
+    /// Operator messages on display (cnc_rdopmsg).
+    #[serde(rename = "opmsg")]
+    pub opmsgs: Vec<super::program::OperatorMessage>,
     // --- param ---
 
     // --- macros ---
