@@ -772,7 +772,7 @@ proptest! {
         roundtrip(&ExePrgName { o_num: w[3], name: n })?;
         prop_assert_eq!(ExePrgName { o_num: w[3], name: n }.to_bytes().len(), 40);
         roundtrip(&PathName(text.clone()))?;
-        roundtrip(&ExecProg { blknum: w[0] | 1, text: text.clone() })?;
+        roundtrip(&ExecProg { blknum: Some(w[0]), text: text.clone() })?;
         roundtrip(&ExecProg::default())?;
         prop_assert_eq!(ExecProg::default().to_bytes().len(), 0);
         roundtrip(&Timer { minute: w[0], msec: w[1] })?;

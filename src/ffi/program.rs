@@ -161,7 +161,7 @@ pub unsafe extern "C" fn cnc_rdexecprog(
             std::ptr::copy_nonoverlapping(e.text.as_ptr(), out.cast::<u8>(), n);
             put(out.add(n), 0);
             put(len, n as c_ushort);
-            put(blk, low16(e.blknum));
+            put(blk, low16(e.blknum.unwrap_or(0)));
         }
         Ok(())
     })
@@ -273,7 +273,9 @@ fn timer_type(t: c_short) -> crate::error::Result<c_short> {
 }
 
 /// Reads the CNC's date (`time->type` 0: year, month, date) or time of day
-/// (1: hour, minute, second). Other types: EW_NUMBER without traffic.
+/// (1: hour, minute, second). Other types: EW_NUMBER without traffic
+/// (unverified: no recording has another type; FANUC's cnc_settimer refuses
+/// them this way, so we do the same here).
 ///
 /// # Safety
 /// `time` must point to a readable and writable IODBTIMER.

@@ -126,21 +126,21 @@ wire_struct! {
     }
 }
 
-/// Payload of 0x0020 (cnc_rdexecprog): block number and program text. An
-/// empty payload is an empty result (FANUC's library reads past its buffer).
+/// Payload of 0x0020 (cnc_rdexecprog): block number and program text.
+/// `blknum` None is the empty payload, an empty result (FANUC's library
+/// reads past its buffer there).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct ExecProg {
-    pub blknum: i32,
+    pub blknum: Option<i32>,
     pub text: Vec<u8>,
 }
 
 impl Wire for ExecProg {
     fn encode(&self, w: &mut Writer) {
-        if self.blknum == 0 && self.text.is_empty() {
-            return;
+        if let Some(b) = self.blknum {
+            w.i32(b);
+            w.bytes(&self.text);
         }
-        w.i32(self.blknum);
-        w.bytes(&self.text);
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         if r.remaining() == 0 {
@@ -149,7 +149,10 @@ impl Wire for ExecProg {
         let blknum = r.i32()?;
         let text = r.rest().to_vec();
         r.bytes(text.len())?;
-        Ok(ExecProg { blknum, text })
+        Ok(ExecProg {
+            blknum: Some(blknum),
+            text,
+        })
     }
 }
 

@@ -153,7 +153,7 @@ impl Machine {
         let mut text = r.exec_text.clone().into_bytes();
         text.truncate(length.max(0) as usize);
         Ok(ExecProg {
-            blknum: r.block as i32,
+            blknum: Some(r.block as i32),
             text,
         })
     }
@@ -377,7 +377,9 @@ impl Machine {
     }
 
     /// cnc_rdopmsg: the message of type 0..4 (none: number −1, no text);
-    /// other types EW_ATTRIB.
+    /// other types EW_ATTRIB. Unverified against a real CNC: FANUC's library
+    /// gave EW_ATTRIB for type −1 in one oracle run (not analysed), and what
+    /// a CNC answers with no message on display is not recorded.
     pub(crate) fn sim_opmsg(&self, path: u16, kind: i32) -> Reply<OpMsg> {
         if !(0..=4).contains(&kind) {
             return Err(err(ew::EW_ATTRIB));
