@@ -452,7 +452,9 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 
 /*
  Reads the CNC's date (`time->type` 0: year, month, date) or time of day
- (1: hour, minute, second). Other types: EW_NUMBER without traffic.
+ (1: hour, minute, second). Other types: EW_NUMBER without traffic
+ (unverified: no recording has another type; FANUC's cnc_settimer refuses
+ them this way, so we do the same here).
 
  # Safety
  `time` must point to a readable and writable IODBTIMER.
