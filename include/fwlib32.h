@@ -134,6 +134,14 @@ typedef struct ODBACT2 {
 } ODBACT2;
 
 /*
+ cnc_alarm: alarm status bits (low 16 bits).
+ */
+typedef struct ODBALM {
+    short dummy[2];
+    short data;
+} ODBALM;
+
+/*
  A real diagnosis value: `dgn_val · 10^-dec_val`.
  */
 typedef struct REALDGN {
@@ -165,12 +173,85 @@ typedef struct ODBDGN {
 } ODBDGN;
 
 /*
+ cnc_exeprgname: name and number of the running program.
+ */
+typedef struct ODBEXEPRG {
+    char name[36];
+    LONG o_num;
+} ODBEXEPRG;
+
+/*
  cnc_getdtailerr: detail of the last error.
  */
 typedef struct ODBERR {
     short err_no;
     short err_dtno;
 } ODBERR;
+
+/*
+ IODBTIMER date view.
+ */
+typedef struct IODBTIMER_date {
+    short year;
+    short month;
+    short date;
+} IODBTIMER_date;
+
+/*
+ IODBTIMER time view.
+ */
+typedef struct IODBTIMER_time {
+    short hour;
+    short minute;
+    short second;
+} IODBTIMER_time;
+
+/*
+ The union of IODBTIMER: date (type 0) or time (type 1).
+ */
+typedef union IODBTIMER_data {
+    struct IODBTIMER_date date;
+    struct IODBTIMER_time time;
+} IODBTIMER_data;
+
+/*
+ cnc_gettimer / cnc_settimer: the CNC's date (type 0) or time (type 1).
+ */
+typedef struct IODBTIMER {
+    short type;
+    short dummy;
+    union IODBTIMER_data data;
+} IODBTIMER;
+
+/*
+ One modal code other than a G code (cnc_modal aux / raux1 / raux2).
+ */
+typedef struct MODAL_AUX {
+    LONG aux_data;
+    char flag1;
+    char flag2;
+} MODAL_AUX;
+
+/*
+ The union of ODBMDL.
+ */
+typedef union ODBMDL_modal {
+    char g_data;
+    char g_rdata[35];
+    char g_1shot[4];
+    struct MODAL_AUX aux;
+    struct MODAL_AUX raux1[27];
+    struct MODAL_AUX raux2[32];
+} ODBMDL_modal;
+
+/*
+ cnc_modal: modal data (G codes or other codes).
+ */
+typedef struct ODBMDL {
+    short datano;
+    short type;
+    union ODBMDL_modal modal;
+} ODBMDL;
 
 /*
  One record of ODBAHIS (48 bytes).
@@ -227,6 +308,79 @@ typedef struct ODBAHIS2 {
     unsigned short e_no;
     struct ODBAHIS2_ALM alm_his[10];
 } ODBAHIS2;
+
+/*
+ ALMINFO type 0 record: axis bits and alarm number.
+ */
+typedef struct ALMINFO_alm1_rec {
+    LONG axis;
+    short alm_no;
+} ALMINFO_alm1_rec;
+
+/*
+ ALMINFO type 0: up to 5 alarms without messages.
+ */
+typedef struct ALMINFO_alm1 {
+    struct ALMINFO_alm1_rec alm[5];
+    LONG data_end;
+} ALMINFO_alm1;
+
+/*
+ ALMINFO type 1 record: axis bits, alarm number and message.
+ */
+typedef struct ALMINFO_alm2_rec {
+    LONG axis;
+    short alm_no;
+    short msg_len;
+    char alm_msg[32];
+} ALMINFO_alm2_rec;
+
+/*
+ ALMINFO type 1: up to 5 alarms with messages.
+ */
+typedef struct ALMINFO_alm2 {
+    struct ALMINFO_alm2_rec alm[5];
+    LONG data_end;
+} ALMINFO_alm2;
+
+/*
+ The union of ALMINFO.
+ */
+typedef union ALMINFO_u {
+    struct ALMINFO_alm1 alm1;
+    struct ALMINFO_alm2 alm2;
+} ALMINFO_u;
+
+/*
+ cnc_rdalminfo: alarm information (5 alarms; the caller's `length` says how many fit).
+ */
+typedef struct ALMINFO {
+    union ALMINFO_u u;
+} ALMINFO;
+
+/*
+ cnc_rdalmmsg: one alarm with a 32-character message.
+ */
+typedef struct ODBALMMSG {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[32];
+} ODBALMMSG;
+
+/*
+ cnc_rdalmmsg2: one alarm with a 64-character message.
+ */
+typedef struct ODBALMMSG2 {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[64];
+} ODBALMMSG2;
 
 /*
  cnc_rdaxisdata: one value of one axis or spindle.
@@ -424,6 +578,16 @@ typedef struct IODBMR {
 } IODBMR;
 
 /*
+ cnc_rdopmsg: one operator message (256-character variant).
+ */
+typedef struct OPMSG {
+    short datano;
+    short type;
+    short char_num;
+    char data[256];
+} OPMSG;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -506,6 +670,23 @@ typedef struct ODBPOS {
 } ODBPOS;
 
 /*
+ cnc_rdprgnum: running and main program numbers (low 16 bits, as FANUC's).
+ */
+typedef struct ODBPRO {
+    short dummy[2];
+    short data;
+    short mdata;
+} ODBPRO;
+
+/*
+ cnc_rdseqnum: sequence number.
+ */
+typedef struct ODBSEQ {
+    short dummy[2];
+    LONG data;
+} ODBSEQ;
+
+/*
  cnc_rdspdlname: one spindle name.
  */
 typedef struct ODBSPDLNAME {
@@ -571,6 +752,14 @@ typedef struct ODBSPLOAD {
 typedef struct ODBSVLOAD {
     struct LOADELM svload;
 } ODBSVLOAD;
+
+/*
+ cnc_rdtimer: a timer as minutes and milliseconds.
+ */
+typedef struct IODBTIME {
+    LONG minute;
+    LONG msec;
+} IODBTIME;
 
 /*
  cnc_rdtlctldata: tool control data of a punch press.
@@ -766,6 +955,15 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
+ cnc_toolnum: tool number of a tool in a tool-life group.
+ */
+typedef struct ODBTLIFE4 {
+    short datano;
+    short type;
+    LONG data;
+} ODBTLIFE4;
+
+/*
  pmc_getdtailerr: detail of the last PMC error.
  */
 typedef struct ODBPMCERR {
@@ -894,6 +1092,22 @@ short cnc_acts(unsigned short FlibHndl, struct ODBACT *actualspindle);
 short cnc_acts2(unsigned short FlibHndl, short sp_no, struct ODBACT2 *actualspindle);
 
 /*
+ Reads the alarm status bits; `data` = their low 16 bits.
+
+ # Safety
+ `alarm` must point to a writable ODBALM.
+ */
+short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
+
+/*
+ Reads the alarm status bits (32 bits, 4 bytes written into the `long`).
+
+ # Safety
+ `alarm` must point to 4 writable bytes.
+ */
+short cnc_alarm2(unsigned short FlibHndl, long *alarm);
+
+/*
  Connects to the CNC at `ip:port` (or shares the existing connection to
  it) and returns a handle in `*FlibHndl`. `timeout` is in seconds; 0 or
  less waits forever.
@@ -938,6 +1152,23 @@ short cnc_diagnoss(unsigned short FlibHndl,
 short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Reads the name and O number of the running program.
+
+ # Safety
+ `exeprg` must point to a writable ODBEXEPRG.
+ */
+short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
+
+/*
+ Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
+ 256 bytes, NUL-terminated and zero-filled.
+
+ # Safety
+ `path_name` must point to 256 writable bytes.
+ */
+short cnc_exeprgname2(unsigned short FlibHndl, char *path_name);
+
+/*
  Frees every handle, closes every connection and the log.
  */
 short cnc_exitprocess(void);
@@ -978,12 +1209,45 @@ short cnc_getfigure(unsigned short FlibHndl,
 short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 
 /*
+ Reads the CNC's date (`time->type` 0: year, month, date) or time of day
+ (1: hour, minute, second). Other types: EW_NUMBER without traffic
+ (unverified: no recording has another type; FANUC's cnc_settimer refuses
+ them this way, so we do the same here).
+
+ # Safety
+ `time` must point to a readable and writable IODBTIMER.
+ */
+short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
  Reads the machine position.
 
  # Safety
  `buf` must point to `length` writable bytes.
  */
 short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
+ 300..) or other codes (100..126, 200..299, −2 all in raux1 order, −3 all
+ as sent), of `block` (0 active, 1 next ...). `datano` = `type`, `type` =
+ `block`. Writes never exceed the union (35 G-code bytes, 32 records),
+ where FANUC's library writes whatever arrives. Other types: EW_NUMBER
+ without traffic.
+
+ # Safety
+ `modal` must point to a writable ODBMDL.
+ */
+short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
+
+/*
+ Reads the execution pointer: program number and block number. Writes 4
+ bytes into each `long`.
+
+ # Safety
+ Both pointers must point to 4 writable bytes.
+ */
+short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
 
 /*
  Reads the number of alarm history entries. A negative count from the
@@ -1026,6 +1290,41 @@ short cnc_rdalmhistry2(unsigned short FlibHndl,
                        struct ODBAHIS2 *alm_hst);
 
 /*
+ Reads active alarms of `alm_type` (−1 all): `type` 0 axis and number
+ (ALMINFO alm1, 8-byte records), 1 with messages (alm2, 40-byte records);
+ after the last record −1 is written into the next record's place (the
+ `data_end` slot when there are 5). `length` is the caller's buffer size:
+ at most 5 records and never more than `length` bytes are written (FANUC's
+ library writes every record the CNC sends). `length` ≤ 4: EW_LENGTH
+ without traffic.
+
+ # Safety
+ `almmsg` must have `length` writable bytes.
+ */
+short cnc_rdalminfo(unsigned short FlibHndl,
+                    short type,
+                    short alm_type,
+                    short length,
+                    struct ALMINFO *almmsg);
+
+/*
+ Reads up to `*num` active alarms of `type` (−1: all) with 32-character
+ messages; `*num` becomes the number read.
+
+ # Safety
+ `num` readable and writable; `almmsg` must have room for `*num` records.
+ */
+short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG *almmsg);
+
+/*
+ As cnc_rdalmmsg with 64-character messages.
+
+ # Safety
+ `num` readable and writable; `almmsg` must have room for `*num` records.
+ */
+short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
+
+/*
  Reads several values of all axes (`cls` 1 positions, types 0..3), servo
  loads (`cls` 2, type 0) or spindles (`cls` 3, types 0 load, 1 speed):
  `num` types from `type`; `*len` in = axes room per type, out = axes
@@ -1051,6 +1350,14 @@ short cnc_rdaxisdata(unsigned short FlibHndl,
  writable ODBAXISNAME.
  */
 short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAME *axisname);
+
+/*
+ Reads the number of blocks executed. Writes 4 bytes into the `long`.
+
+ # Safety
+ `prog_bc` must point to 4 writable bytes.
+ */
+short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 
 /*
  Reads the CNC's identification number: four 32-bit words.
@@ -1136,6 +1443,19 @@ short cnc_rddynamic(unsigned short FlibHndl, short axis, short length, struct OD
 short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct ODBDY2 *buf);
 
 /*
+ Reads the text of the block being executed and the blocks after it.
+ `*length` in: size of `data` in bytes; out: characters read (the text
+ is NUL-terminated and, unlike FANUC's library, never longer than
+ `*length - 1` characters, so `data` is never overrun). A CNC answering
+ with no text gives `*length` 0, an empty string and `*blknum` 0 (FANUC's
+ library reads past its receive buffer there).
+
+ # Safety
+ `length`, `blknum` writable; `data` must have `*length` writable bytes.
+ */
+short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blknum, char *data);
+
+/*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched).
 
  # Safety
@@ -1190,6 +1510,32 @@ short cnc_rdmacror(unsigned short FlibHndl,
  `num` must point to a 4-byte count, `data` to `*num` writable doubles.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
+ Reads the number of tools in tool-life group `grp_num`.
+
+ # Safety
+ `tool` must point to a writable ODBTLIFE3.
+ */
+short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool);
+
+/*
+ Reads the operation mode word.
+
+ # Safety
+ `mode` must point to a writable short.
+ */
+short cnc_rdopmode(unsigned short FlibHndl, short *mode);
+
+/*
+ Reads the operator message of `type` (0..4): number, type, length and
+ text, zero-filled to `length` bytes (at most the 262 of OPMSG).
+ `length` < 6: EW_LENGTH without traffic.
+
+ # Safety
+ `opmsg` must have `length` writable bytes.
+ */
+short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMSG *opmsg);
 
 /*
  Reads the numbers and attributes of up to `read_no` parameters from
@@ -1251,6 +1597,23 @@ short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
 short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struct ODBPOS *position);
 
 /*
+ Reads the running and main program numbers (low 16 bits of each, as
+ FANUC's library stores them in the default ODBPRO's shorts).
+
+ # Safety
+ `prgnum` must point to a writable ODBPRO.
+ */
+short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
+
+/*
+ Reads the sequence number of the block being executed.
+
+ # Safety
+ `seqnum` must point to a writable ODBSEQ.
+ */
+short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
  Reads the names of the spindles: `*data_num` in = room in `spdlname`,
  out = names written.
 
@@ -1299,6 +1662,15 @@ short cnc_rdspmeter(unsigned short FlibHndl,
  writable ODBSVLOAD.
  */
 short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *loadmeter);
+
+/*
+ Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4
+ free) as minutes and milliseconds.
+
+ # Safety
+ `time` must point to a writable IODBTIME.
+ */
+short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
 
 /*
  Reads the tool control data of a punch press (or laser). Other machines
@@ -1424,6 +1796,15 @@ short cnc_setpath(unsigned short FlibHndl, short path_no);
 short cnc_settimeout(unsigned short FlibHndl, long timeout);
 
 /*
+ Sets the CNC's date (`time->type` 0) or time of day (1). Other types:
+ EW_NUMBER without traffic. The caller's struct is not modified.
+
+ # Safety
+ `time` must point to a readable IODBTIMER.
+ */
+short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
  Starts the library's log. `level` 0 = off, 1 = errors, 2 = every call,
  3 = every byte sent and received; `logfile` is created (truncated).
  Levels outside 0..=3 return EW_NUMBER (3) as FANUC's library does.
@@ -1459,6 +1840,17 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Reads the tool number of the `tuse_num`-th tool of tool-life group `grp_num`.
+
+ # Safety
+ `toolnum` must point to a writable ODBTLIFE4.
+ */
+short cnc_toolnum(unsigned short FlibHndl,
+                  short grp_num,
+                  short tuse_num,
+                  struct ODBTLIFE4 *toolnum);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.

@@ -313,8 +313,21 @@ rust_layouts! {
     ODBAXIS { dummy, r#type, data }
 
     // --- program ---
+    ODBPRO { dummy, data, mdata }
+    ODBSEQ { dummy, data }
+    ODBEXEPRG { name, o_num }
+    ODBMDL { datano, r#type, modal }
+    IODBTIME { minute, msec }
+    IODBTIMER { r#type, dummy, data }
+    ODBTLIFE3 { datano, dummy, data }
+    ODBTLIFE4 { datano, r#type, data }
 
     // --- alarm ---
+    ODBALM { dummy, data }
+    ODBALMMSG { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ODBALMMSG2 { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ALMINFO { u }
+    OPMSG { datano, r#type, char_num, data }
 
     // --- param ---
     REALPRM { prm_val, dec_val }

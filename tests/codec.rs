@@ -19,6 +19,13 @@ use fwlib32::proto::packet::{
     ReqSub, RespSub, decode_request, decode_response, encode_request, encode_response,
 };
 use fwlib32::proto::param::Param16;
+// --- program ---
+use fwlib32::proto::alarm::{self as pa, AlmMsg, OpMsg};
+use fwlib32::proto::position::{AlarmBits, ProgNums, SeqNum};
+use fwlib32::proto::program::{
+    self as pp, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, NTool,
+    OpMode, PathName, Timer, ToolNum,
+};
 use fwlib32::proto::status::{
     CncId, StatInfo, Status, Status2, SysInfo, Word, rdcncid, sysinfo_at_connect,
 };
@@ -120,9 +127,24 @@ const KNOWN: &[&str] = &[
     "distance",
     "getfigure",
     // --- program ---
-
+    "rdprgnum",
+    "rdseqnum",
+    "rdblkcount",
+    "rdactpt",
+    "exeprgname",
+    "exeprgname2",
+    "rdexecprog",
+    "modal",
+    "rdtimer",
+    "gettimer",
+    "toolnum",
+    "rdntool",
     // --- alarm ---
-
+    "rdalmmsg",
+    "rdalmmsg2",
+    "alarm",
+    "alarm2",
+    "rdopmsg",
     // --- param ---
 
     // --- macros ---
@@ -265,6 +287,44 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                                 w if position_request(w, &args).is_some() => {
                                     stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
                                 }
+                                // --- program ---
+                                "rdprgnum" => stamped(&pp::rdprgnum(), &cx, path),
+                                "rdseqnum" => stamped(&pp::rdseqnum(), &cx, path),
+                                "rdblkcount" => stamped(&pp::rdblkcount(), &cx, path),
+                                "rdactpt" => stamped(&pp::rdactpt(), &cx, path),
+                                "exeprgname" => stamped(&pp::exeprgname(), &cx, path),
+                                "exeprgname2" => stamped(&pp::exeprgname2(), &cx, path),
+                                "rdexecprog" => {
+                                    stamped(&pp::rdexecprog(num(&args[0]) as u16), &cx, path)
+                                }
+                                "modal" => {
+                                    let kind = pp::modal_kind(num(&args[0]) as i16).unwrap();
+                                    let block = num(&args[1]) as i16;
+                                    stamped(&pp::ModalCall { kind, block }, &cx, path)
+                                }
+                                "rdtimer" => stamped(&pp::rdtimer(num(&args[0]) as i16), &cx, path),
+                                "gettimer" => {
+                                    stamped(&pp::gettimer(num(&args[0]) as i16), &cx, path)
+                                }
+                                "toolnum" => stamped(
+                                    &pp::toolnum(num(&args[0]) as i16, num(&args[1]) as i16),
+                                    &cx,
+                                    path,
+                                ),
+                                "rdntool" => stamped(&pp::rdntool(num(&args[0]) as i16), &cx, path),
+                                // --- alarm ---
+                                "alarm" | "alarm2" => stamped(&pa::alarm(), &cx, path),
+                                "rdalmmsg" => stamped(
+                                    &pa::rdalmmsg::<32>(num(&args[0]) as i16, num(&args[1]) as i16),
+                                    &cx,
+                                    path,
+                                ),
+                                "rdalmmsg2" => stamped(
+                                    &pa::rdalmmsg::<64>(num(&args[0]) as i16, num(&args[1]) as i16),
+                                    &cx,
+                                    path,
+                                ),
+                                "rdopmsg" => stamped(&pa::rdopmsg(num(&args[0]) as i16), &cx, path),
                                 w => {
                                     bad.push(format!("{id} call {i}: no request known for `{w}`"));
                                     continue;
@@ -1268,5 +1328,105 @@ proptest! {
         let _ = fwlib32::proto::tool::ToolGroup::from_bytes(&b);
         let _ = fwlib32::proto::tool::ToolList::from_bytes(&b);
         let _ = fwlib32::proto::tool::ToolCtl::from_bytes(&b);
+    }
+}
+
+// --- program ---
+
+fn alm_msg<const N: usize>() -> impl Strategy<Value = AlmMsg<N>> {
+    (any::<[i32; 4]>(), vec(any::<u8>(), N)).prop_map(|(w, m)| {
+        let mut msg = [0u8; N];
+        msg.copy_from_slice(&m);
+        AlmMsg {
+            alm_no: w[0],
+            kind: w[1],
+            axis: w[2],
+            msg_len: w[3],
+            msg,
+        }
+    })
+}
+
+fn aux_code() -> impl Strategy<Value = AuxCode> {
+    (any::<i32>(), any::<[u8; 4]>()).prop_map(|(value, b)| AuxCode {
+        value,
+        pad1: b[0],
+        flag1: b[1],
+        pad2: b[2],
+        flag2: b[3],
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn program_and_alarm_structs_roundtrip(
+        w in any::<[i32; 4]>(),
+        h in any::<[i16; 6]>(),
+        name in vec(any::<u8>(), 36),
+        text in vec(any::<u8>(), 0..300),
+        g in vec(any::<(u8, u8)>(), 1..40),
+        aux in vec(aux_code(), 1..40),
+        m32 in vec(alm_msg::<32>(), 0..6),
+        m64 in vec(alm_msg::<64>(), 0..6),
+    ) {
+        roundtrip(&AlarmBits { bits: w[0] as u32 })?;
+        roundtrip(&ProgNums { data: w[0], mdata: w[1] })?;
+        roundtrip(&SeqNum { data: w[2] })?;
+        roundtrip(&ActPt { prog_no: w[0], blk_no: w[1] })?;
+        let mut n = [0u8; 36];
+        n.copy_from_slice(&name);
+        roundtrip(&ExePrgName { o_num: w[3], name: n })?;
+        prop_assert_eq!(ExePrgName { o_num: w[3], name: n }.to_bytes().len(), 40);
+        roundtrip(&PathName(text.clone()))?;
+        roundtrip(&ExecProg { blknum: Some(w[0]), text: text.clone() })?;
+        roundtrip(&ExecProg::default())?;
+        prop_assert_eq!(ExecProg::default().to_bytes().len(), 0);
+        roundtrip(&Timer { minute: w[0], msec: w[1] })?;
+        let c = Clock { year: h[0], month: h[1], day: h[2], hour: h[3], minute: h[4], second: h[5] };
+        roundtrip(&c)?;
+        prop_assert_eq!(c.to_bytes().len(), 12);
+        roundtrip(&ToolNum { datano: w[0], kind: w[1], data: w[2] })?;
+        roundtrip(&NTool { datano: w[0], data: w[1] })?;
+        roundtrip(&OpMode { mode: h[0] })?;
+        roundtrip(&GModal(g.iter().map(|(code, flag)| GCode { code: *code, flag: *flag }).collect()))?;
+        roundtrip(&AuxModal(aux.clone()))?;
+        prop_assert_eq!(AuxModal(aux.clone()).to_bytes().len(), 8 * aux.len());
+        roundtrip(&m32)?;
+        roundtrip(&m64)?;
+        prop_assert_eq!(m32.to_bytes().len(), 48 * m32.len());
+        prop_assert_eq!(m64.to_bytes().len(), 80 * m64.len());
+        roundtrip(&OpMsg { datano: w[0], kind: w[1], char_num: w[2], text })?;
+    }
+
+    #[test]
+    fn program_and_alarm_decoders_never_panic(b in vec(any::<u8>(), 0..400)) {
+        let _ = ExecProg::from_bytes(&b);
+        let _ = GModal::from_bytes(&b);
+        let _ = AuxModal::from_bytes(&b);
+        let _ = Vec::<AlmMsg<32>>::from_bytes(&b);
+        let _ = Vec::<AlmMsg<64>>::from_bytes(&b);
+        let _ = OpMsg::from_bytes(&b);
+        let _ = ExePrgName::from_bytes(&b);
+        let _ = Clock::from_bytes(&b);
+        // Short payloads are errors, never garbage.
+        if b.len() < 12 {
+            prop_assert!(OpMsg::from_bytes(&b).is_err());
+            prop_assert!(Clock::from_bytes(&b).is_err());
+        }
+        if (1..4).contains(&b.len()) {
+            prop_assert!(ExecProg::from_bytes(&b).is_err());
+        }
+        if b.len() < 2 {
+            prop_assert!(GModal::from_bytes(&b).is_err());
+        }
+        if b.len() < 8 {
+            prop_assert!(AuxModal::from_bytes(&b).is_err());
+        }
     }
 }

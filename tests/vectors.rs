@@ -249,6 +249,45 @@ const DEVIATIONS: &[Deviation] = &[
                  and write nothing (output structs are written only on EW_OK)",
         treatment: Differs(&[NoOutput(0)]),
     },
+    // --- program ---
+    Deviation {
+        function: "cnc_modal",
+        case: "v3_error",
+        reason: "(a) CNC error 3: FANUC has already written datano/type into the struct; we return the same 3 and \
+                 write nothing (outputs only on success)",
+        treatment: Differs(&[NoOutput(0)]),
+    },
+    Deviation {
+        function: "cnc_modal",
+        case: "v3_aux_codes",
+        reason: "(a) type -2 fills raux1[23], raux1[24] from records 27 and 28, which this 27-record reply lacks: \
+                 FANUC copies stale receive-buffer bytes (zeros here); we return EW_PROTOCOL (-17) and write nothing",
+        treatment: Differs(&[Ret(10, EW_PROTOCOL), NoOutput(10)]),
+    },
+    Deviation {
+        function: "cnc_rdexecprog",
+        case: "v3_empty_payload",
+        reason: "(a) empty payload: FANUC sets *length 65532 and reads past its receive buffer (the probe crashed); \
+                 we return 0 with *length 0, *blknum 0 and an empty string, and the connection stays up",
+        treatment: Differs(&[
+            Ret(0, EW_OK),
+            Script(
+                0,
+                &[
+                    (
+                        2,
+                        "req",
+                        "a0a0a0a000012101001e0001001c0001000100200000010000000000000000000000000000000000",
+                    ),
+                    (
+                        2,
+                        "resp",
+                        "a0a0a0a0000321020012000100100001000100200000000000000000",
+                    ),
+                ],
+            ),
+        ]),
+    },
 ];
 
 fn deviation(case: &Case) -> Option<&'static Deviation> {
@@ -310,26 +349,26 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("distance", "cnc_distance", Some(w_distance)),
     ("getfigure", "cnc_getfigure", Some(w_getfigure)),
     // --- program ---
-    ("rdprgnum", "cnc_rdprgnum", None),
-    ("rdseqnum", "cnc_rdseqnum", None),
-    ("rdblkcount", "cnc_rdblkcount", None),
-    ("rdactpt", "cnc_rdactpt", None),
-    ("exeprgname", "cnc_exeprgname", None),
-    ("exeprgname2", "cnc_exeprgname2", None),
-    ("rdexecprog", "cnc_rdexecprog", None),
-    ("modal", "cnc_modal", None),
-    ("rdtimer", "cnc_rdtimer", None),
-    ("gettimer", "cnc_gettimer", None),
-    ("settimer", "cnc_settimer", None),
+    ("rdprgnum", "cnc_rdprgnum", Some(w_rdprgnum)),
+    ("rdseqnum", "cnc_rdseqnum", Some(w_rdseqnum)),
+    ("rdblkcount", "cnc_rdblkcount", Some(w_rdblkcount)),
+    ("rdactpt", "cnc_rdactpt", Some(w_rdactpt)),
+    ("exeprgname", "cnc_exeprgname", Some(w_exeprgname)),
+    ("exeprgname2", "cnc_exeprgname2", Some(w_exeprgname2)),
+    ("rdexecprog", "cnc_rdexecprog", Some(w_rdexecprog)),
+    ("modal", "cnc_modal", Some(w_modal)),
+    ("rdtimer", "cnc_rdtimer", Some(w_rdtimer)),
+    ("gettimer", "cnc_gettimer", Some(w_gettimer)),
+    ("settimer", "cnc_settimer", Some(w_settimer)),
     ("rdprogdir", "cnc_rdprogdir", None),
     ("rdprogdir3", "cnc_rdprogdir3", None),
     // --- alarm ---
-    ("rdalmmsg", "cnc_rdalmmsg", None),
-    ("rdalmmsg2", "cnc_rdalmmsg2", None),
-    ("alarm", "cnc_alarm", None),
-    ("alarm2", "cnc_alarm2", None),
-    ("rdalminfo", "cnc_rdalminfo", None),
-    ("rdopmsg", "cnc_rdopmsg", None),
+    ("rdalmmsg", "cnc_rdalmmsg", Some(w_rdalmmsg)),
+    ("rdalmmsg2", "cnc_rdalmmsg2", Some(w_rdalmmsg2)),
+    ("alarm", "cnc_alarm", Some(w_alarm)),
+    ("alarm2", "cnc_alarm2", Some(w_alarm2)),
+    ("rdalminfo", "cnc_rdalminfo", Some(w_rdalminfo)),
+    ("rdopmsg", "cnc_rdopmsg", Some(w_rdopmsg)),
     ("rdalmhistry", "cnc_rdalmhistry", Some(w_rdalmhistry)),
     ("rdalmhistry2", "cnc_rdalmhistry2", Some(w_rdalmhistry2)),
     // --- param ---
@@ -357,8 +396,8 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("rdtofs", "cnc_rdtofs", Some(w_rdtofs)),
     ("rdzofs", "cnc_rdzofs", Some(w_rdzofs)),
     // --- tool ---
-    ("toolnum", "cnc_toolnum", None),
-    ("rdntool", "cnc_rdntool", None),
+    ("toolnum", "cnc_toolnum", Some(w_toolnum)),
+    ("rdntool", "cnc_rdntool", Some(w_rdntool)),
     // --- upload ---
     ("upstart", "cnc_upstart", None),
     ("upstart3", "cnc_upstart3", None),
@@ -1511,7 +1550,140 @@ fn w_getfigure(p: &mut Probe, a: &[String]) -> Outcome {
 
 // --- program ---
 
+fn w_rdprgnum(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_rdprgnum(h, b.cast()) })
+}
+
+fn w_rdseqnum(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_rdseqnum(h, b.cast()) })
+}
+
+fn w_rdblkcount(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_rdblkcount(h, b.cast()) })
+}
+
+fn w_rdactpt(p: &mut Probe, _: &[String]) -> Outcome {
+    let (mut b0, mut b1) = (buf(), buf());
+    let ret = unsafe { cnc_rdactpt(p.h(), b0.as_mut_ptr().cast(), b1.as_mut_ptr().cast()) };
+    Outcome {
+        ret,
+        outputs: vec![("prog_no", b0), ("blk_no", b1)],
+        ..Outcome::default()
+    }
+}
+
+fn w_exeprgname(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_exeprgname(h, b.cast()) })
+}
+
+fn w_exeprgname2(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_exeprgname2(h, b.cast()) })
+}
+
+fn w_rdexecprog(p: &mut Probe, a: &[String]) -> Outcome {
+    let mut len = num(a, 0) as c_ushort;
+    let mut blk: c_short = -13108;
+    let mut o = with_out(p, |h, b| unsafe {
+        cnc_rdexecprog(h, &mut len, &mut blk, b.cast())
+    });
+    o.fields = vec![("length", len as i64), ("blknum", blk as i64)];
+    o
+}
+
+fn w_modal(p: &mut Probe, a: &[String]) -> Outcome {
+    let (t, b) = (num(a, 0) as c_short, num(a, 1) as c_short);
+    with_out(p, |h, buf| unsafe { cnc_modal(h, t, b, buf.cast()) })
+}
+
+fn w_rdtimer(p: &mut Probe, a: &[String]) -> Outcome {
+    let t = num(a, 0) as c_short;
+    with_out(p, |h, b| unsafe { cnc_rdtimer(h, t, b.cast()) })
+}
+
+/// `cnc_gettimer(h, t)`: the probe sets `t.type` = $1 in the 0xCC buffer.
+fn w_gettimer(p: &mut Probe, a: &[String]) -> Outcome {
+    let t = num(a, 0) as c_short;
+    with_out(p, |h, b| unsafe {
+        b.cast::<[u8; 2]>().write(t.to_le_bytes());
+        cnc_gettimer(h, b.cast())
+    })
+}
+
+/// `settimer type v1 v2 v3` (no recorded case uses it).
+fn w_settimer(p: &mut Probe, a: &[String]) -> Outcome {
+    let mut b = buf();
+    for k in 0..4 {
+        let v = num(a, k) as i16;
+        let at = if k == 0 { 0 } else { 2 + 2 * k };
+        b[at..at + 2].copy_from_slice(&v.to_le_bytes());
+    }
+    let ret = unsafe { cnc_settimer(p.h(), b.as_mut_ptr().cast()) };
+    Outcome {
+        ret,
+        outputs: vec![("out", b)],
+        ..Outcome::default()
+    }
+}
+
+fn w_toolnum(p: &mut Probe, a: &[String]) -> Outcome {
+    let (g, t) = (num(a, 0) as c_short, num(a, 1) as c_short);
+    with_out(p, |h, b| unsafe { cnc_toolnum(h, g, t, b.cast()) })
+}
+
+fn w_rdntool(p: &mut Probe, a: &[String]) -> Outcome {
+    let g = num(a, 0) as c_short;
+    with_out(p, |h, b| unsafe { cnc_rdntool(h, g, b.cast()) })
+}
+
 // --- alarm ---
+
+fn almmsg_word(
+    p: &mut Probe,
+    a: &[String],
+    f: unsafe extern "C" fn(c_ushort, c_short, *mut c_short, *mut u8) -> c_short,
+) -> Outcome {
+    let t = num(a, 0) as c_short;
+    let mut n = num(a, 1) as c_short;
+    let mut o = with_out(p, |h, b| unsafe { f(h, t, &mut n, b) });
+    o.fields = vec![("num", n as i64)];
+    o
+}
+
+fn w_rdalmmsg(p: &mut Probe, a: &[String]) -> Outcome {
+    unsafe extern "C" fn f(h: c_ushort, t: c_short, n: *mut c_short, b: *mut u8) -> c_short {
+        unsafe { cnc_rdalmmsg(h, t, n, b.cast()) }
+    }
+    almmsg_word(p, a, f)
+}
+
+fn w_rdalmmsg2(p: &mut Probe, a: &[String]) -> Outcome {
+    unsafe extern "C" fn f(h: c_ushort, t: c_short, n: *mut c_short, b: *mut u8) -> c_short {
+        unsafe { cnc_rdalmmsg2(h, t, n, b.cast()) }
+    }
+    almmsg_word(p, a, f)
+}
+
+fn w_alarm(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_alarm(h, b.cast()) })
+}
+
+fn w_alarm2(p: &mut Probe, _: &[String]) -> Outcome {
+    with_out(p, |h, b| unsafe { cnc_alarm2(h, b.cast()) })
+}
+
+fn w_rdalminfo(p: &mut Probe, a: &[String]) -> Outcome {
+    let (t, at, len) = (
+        num(a, 0) as c_short,
+        num(a, 1) as c_short,
+        num(a, 2) as c_short,
+    );
+    with_out(p, |h, b| unsafe { cnc_rdalminfo(h, t, at, len, b.cast()) })
+}
+
+fn w_rdopmsg(p: &mut Probe, a: &[String]) -> Outcome {
+    let (t, len) = (num(a, 0) as c_short, num(a, 1) as c_short);
+    with_out(p, |h, b| unsafe { cnc_rdopmsg(h, t, len, b.cast()) })
+}
 
 // --- param ---
 

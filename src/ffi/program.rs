@@ -1,1 +1,396 @@
 //! Program execution: numbers, names, blocks, modal data, timers.
+
+// --- program ---
+
+use super::{ffi_boundary, nonnull, put};
+use crate::client::handles;
+use crate::error::Error;
+use crate::ew::{EW_LENGTH, EW_NUMBER};
+use crate::proto::program::{self as pp, AUX_ORDER, Clock, Modal, ModalCall, ModalKind};
+use crate::types::{IODBTIME, IODBTIMER, ODBEXEPRG, ODBMDL, ODBPRO, ODBSEQ, ODBTLIFE3, ODBTLIFE4};
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
+
+/// The low 16 bits, as FANUC's library stores 32-bit numbers in shorts.
+pub(crate) fn low16(v: i32) -> c_short {
+    v as u32 as u16 as c_short
+}
+
+/// Reads the running and main program numbers (low 16 bits of each, as
+/// FANUC's library stores them in the default ODBPRO's shorts).
+///
+/// # Safety
+/// `prgnum` must point to a writable ODBPRO.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdprgnum(FlibHndl: c_ushort, prgnum: *mut ODBPRO) -> c_short {
+    ffi_boundary!("cnc_rdprgnum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(prgnum)?;
+        let p = h.call(&pp::rdprgnum())?;
+        unsafe {
+            put(&raw mut (*out).data, low16(p.data));
+            put(&raw mut (*out).mdata, low16(p.mdata));
+        }
+        Ok(())
+    })
+}
+
+/// Reads the sequence number of the block being executed.
+///
+/// # Safety
+/// `seqnum` must point to a writable ODBSEQ.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdseqnum(FlibHndl: c_ushort, seqnum: *mut ODBSEQ) -> c_short {
+    ffi_boundary!("cnc_rdseqnum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(seqnum)?;
+        let s = h.call(&pp::rdseqnum())?;
+        unsafe { put(&raw mut (*out).data, s.data) };
+        Ok(())
+    })
+}
+
+/// Reads the number of blocks executed. Writes 4 bytes into the `long`.
+///
+/// # Safety
+/// `prog_bc` must point to 4 writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdblkcount(FlibHndl: c_ushort, prog_bc: *mut c_long) -> c_short {
+    ffi_boundary!("cnc_rdblkcount", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(prog_bc)?.cast::<i32>();
+        let n = h.call(&pp::rdblkcount())?;
+        unsafe { put(out, n) };
+        Ok(())
+    })
+}
+
+/// Reads the execution pointer: program number and block number. Writes 4
+/// bytes into each `long`.
+///
+/// # Safety
+/// Both pointers must point to 4 writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdactpt(
+    FlibHndl: c_ushort,
+    prog_no: *mut c_long,
+    blk_no: *mut c_long,
+) -> c_short {
+    ffi_boundary!("cnc_rdactpt", {
+        let h = handles::get(FlibHndl)?;
+        let (p, b) = (
+            nonnull(prog_no)?.cast::<i32>(),
+            nonnull(blk_no)?.cast::<i32>(),
+        );
+        let a = h.call(&pp::rdactpt())?;
+        unsafe {
+            put(p, a.prog_no);
+            put(b, a.blk_no);
+        }
+        Ok(())
+    })
+}
+
+/// Reads the name and O number of the running program.
+///
+/// # Safety
+/// `exeprg` must point to a writable ODBEXEPRG.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_exeprgname(FlibHndl: c_ushort, exeprg: *mut ODBEXEPRG) -> c_short {
+    ffi_boundary!("cnc_exeprgname", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(exeprg)?;
+        let e = h.call(&pp::exeprgname())?;
+        let v = ODBEXEPRG {
+            name: e.name.map(|b| b as c_char),
+            o_num: e.o_num,
+        };
+        unsafe { put(out, v) };
+        Ok(())
+    })
+}
+
+/// Size of cnc_exeprgname2's output.
+const PATH_NAME_LEN: usize = 256;
+
+/// Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
+/// 256 bytes, NUL-terminated and zero-filled.
+///
+/// # Safety
+/// `path_name` must point to 256 writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
+    ffi_boundary!("cnc_exeprgname2", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(path_name)?.cast::<u8>();
+        let n = h.call(&pp::exeprgname2())?;
+        let mut b = [0u8; PATH_NAME_LEN];
+        let s = n.0.split(|c| *c == 0).next().unwrap_or(&[]);
+        let k = s.len().min(PATH_NAME_LEN - 1);
+        b[..k].copy_from_slice(&s[..k]);
+        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, PATH_NAME_LEN) };
+        Ok(())
+    })
+}
+
+/// Reads the text of the block being executed and the blocks after it.
+/// `*length` in: size of `data` in bytes; out: characters read (the text
+/// is NUL-terminated and, unlike FANUC's library, never longer than
+/// `*length - 1` characters, so `data` is never overrun). A CNC answering
+/// with no text gives `*length` 0, an empty string and `*blknum` 0 (FANUC's
+/// library reads past its receive buffer there).
+///
+/// # Safety
+/// `length`, `blknum` writable; `data` must have `*length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdexecprog(
+    FlibHndl: c_ushort,
+    length: *mut c_ushort,
+    blknum: *mut c_short,
+    data: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_rdexecprog", {
+        let h = handles::get(FlibHndl)?;
+        let (len, blk, out) = (nonnull(length)?, nonnull(blknum)?, nonnull(data)?);
+        let room = unsafe { len.read_unaligned() };
+        if room == 0 {
+            return Err(Error::local(EW_LENGTH, "length must be at least 1"));
+        }
+        let e = h.call(&pp::rdexecprog(room))?;
+        let n = e.text.len().min(room as usize - 1);
+        unsafe {
+            std::ptr::copy_nonoverlapping(e.text.as_ptr(), out.cast::<u8>(), n);
+            put(out.add(n), 0);
+            put(len, n as c_ushort);
+            put(blk, low16(e.blknum.unwrap_or(0)));
+        }
+        Ok(())
+    })
+}
+
+/// Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
+/// 300..) or other codes (100..126, 200..299, −2 all in raux1 order, −3 all
+/// as sent), of `block` (0 active, 1 next ...). `datano` = `type`, `type` =
+/// `block`. Writes never exceed the union (35 G-code bytes, 32 records),
+/// where FANUC's library writes whatever arrives. Other types: EW_NUMBER
+/// without traffic.
+///
+/// # Safety
+/// `modal` must point to a writable ODBMDL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_modal(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    block: c_short,
+    modal: *mut ODBMDL,
+) -> c_short {
+    ffi_boundary!("cnc_modal", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(modal)?;
+        let kind =
+            pp::modal_kind(r#type).ok_or(Error::local(EW_NUMBER, "no such modal data type"))?;
+        let m = h.call(&ModalCall { kind, block })?;
+        let base = out.cast::<u8>();
+        // The other-code records to write, in raux order.
+        let records: Vec<pp::AuxCode> = match (&m, kind) {
+            (Modal::Aux(a), ModalKind::AuxAll) => {
+                let need = *AUX_ORDER.iter().max().unwrap_or(&0) as usize + 1;
+                if a.0.len() < need {
+                    return Err(Error::protocol(
+                        crate::error::detail::SHORT_PAYLOAD,
+                        format!(
+                            "modal −2: {} records, the raux1 order needs {need}",
+                            a.0.len()
+                        ),
+                    ));
+                }
+                AUX_ORDER.iter().map(|i| a.0[*i as usize]).collect()
+            }
+            (Modal::Aux(a), _) => a.0.iter().take(32).copied().collect(),
+            (Modal::G(_), _) => Vec::new(),
+        };
+        unsafe {
+            put(&raw mut (*out).datano, r#type);
+            put(&raw mut (*out).r#type, block);
+            match &m {
+                Modal::G(g) => {
+                    for (i, c) in g.0.iter().take(35).enumerate() {
+                        let v = if c.flag & 1 != 0 {
+                            c.code | 0x80
+                        } else {
+                            c.code
+                        };
+                        put(base.add(4 + i), v);
+                    }
+                }
+                Modal::Aux(_) => {
+                    for (i, r) in records.iter().enumerate() {
+                        let at = base.add(4 + 8 * i);
+                        put(at.cast::<i32>(), r.value);
+                        put(at.add(4), r.flag1);
+                        put(at.add(5), r.flag2);
+                    }
+                }
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4
+/// free) as minutes and milliseconds.
+///
+/// # Safety
+/// `time` must point to a writable IODBTIME.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtimer(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    time: *mut IODBTIME,
+) -> c_short {
+    ffi_boundary!("cnc_rdtimer", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(time)?;
+        let t = h.call(&pp::rdtimer(r#type))?;
+        unsafe {
+            put(
+                out,
+                IODBTIME {
+                    minute: t.minute,
+                    msec: t.msec,
+                },
+            )
+        };
+        Ok(())
+    })
+}
+
+fn timer_type(t: c_short) -> crate::error::Result<c_short> {
+    if t == 0 || t == 1 {
+        Ok(t)
+    } else {
+        Err(Error::local(EW_NUMBER, "type must be 0 (date) or 1 (time)"))
+    }
+}
+
+/// Reads the CNC's date (`time->type` 0: year, month, date) or time of day
+/// (1: hour, minute, second). Other types: EW_NUMBER without traffic
+/// (unverified: no recording has another type; FANUC's cnc_settimer refuses
+/// them this way, so we do the same here).
+///
+/// # Safety
+/// `time` must point to a readable and writable IODBTIMER.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_gettimer(FlibHndl: c_ushort, time: *mut IODBTIMER) -> c_short {
+    ffi_boundary!("cnc_gettimer", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(time)?;
+        let t = timer_type(unsafe { (&raw const (*out).r#type).read_unaligned() })?;
+        let c = h.call(&pp::gettimer(t))?;
+        let words = if t == 0 {
+            [c.year, c.month, c.day]
+        } else {
+            [c.hour, c.minute, c.second]
+        };
+        unsafe { put((&raw mut (*out).data).cast::<[c_short; 3]>(), words) };
+        Ok(())
+    })
+}
+
+/// Sets the CNC's date (`time->type` 0) or time of day (1). Other types:
+/// EW_NUMBER without traffic. The caller's struct is not modified.
+///
+/// # Safety
+/// `time` must point to a readable IODBTIMER.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_settimer(FlibHndl: c_ushort, time: *mut IODBTIMER) -> c_short {
+    ffi_boundary!("cnc_settimer", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(time)?;
+        let t = timer_type(unsafe { (&raw const (*inp).r#type).read_unaligned() })?;
+        let w = unsafe {
+            (&raw const (*inp).data)
+                .cast::<[c_short; 3]>()
+                .read_unaligned()
+        };
+        // FANUC's library sends its stale static buffer in the other half;
+        // we send zeros there.
+        let clock = if t == 0 {
+            Clock {
+                year: w[0],
+                month: w[1],
+                day: w[2],
+                ..Clock::default()
+            }
+        } else {
+            Clock {
+                hour: w[0],
+                minute: w[1],
+                second: w[2],
+                ..Clock::default()
+            }
+        };
+        h.call(&pp::SetTimer { kind: t, clock })
+    })
+}
+
+/// Reads the operation mode word.
+///
+/// # Safety
+/// `mode` must point to a writable short.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) -> c_short {
+    ffi_boundary!("cnc_rdopmode", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(mode)?;
+        let m = h.call(&pp::rdopmode())?;
+        unsafe { put(out, m.mode) };
+        Ok(())
+    })
+}
+
+/// Reads the tool number of the `tuse_num`-th tool of tool-life group `grp_num`.
+///
+/// # Safety
+/// `toolnum` must point to a writable ODBTLIFE4.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_toolnum(
+    FlibHndl: c_ushort,
+    grp_num: c_short,
+    tuse_num: c_short,
+    toolnum: *mut ODBTLIFE4,
+) -> c_short {
+    ffi_boundary!("cnc_toolnum", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(toolnum)?;
+        let t = h.call(&pp::toolnum(grp_num, tuse_num))?;
+        let v = ODBTLIFE4 {
+            datano: low16(t.datano),
+            r#type: low16(t.kind),
+            data: t.data,
+        };
+        unsafe { put(out, v) };
+        Ok(())
+    })
+}
+
+/// Reads the number of tools in tool-life group `grp_num`.
+///
+/// # Safety
+/// `tool` must point to a writable ODBTLIFE3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdntool(
+    FlibHndl: c_ushort,
+    grp_num: c_short,
+    tool: *mut ODBTLIFE3,
+) -> c_short {
+    ffi_boundary!("cnc_rdntool", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(tool)?;
+        let t = h.call(&pp::rdntool(grp_num))?;
+        unsafe {
+            put(&raw mut (*out).datano, low16(t.datano));
+            put(&raw mut (*out).data, t.data);
+        }
+        Ok(())
+    })
+}

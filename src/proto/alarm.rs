@@ -1,5 +1,128 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
 
+use super::call::Single;
+use super::packet::ReqSub;
+use super::position::AlarmBits;
+use super::wire::{DecodeError, Reader, Wire, Writer};
+
+// --- alarm ---
+
+pub const ALARM: u16 = 0x001a;
+pub const RDALMMSG: u16 = 0x0023;
+pub const RDOPMSG: u16 = 0x0034;
+
+/// One 0x0023 record: i32 number, type, axis, message length, then an
+/// N-byte message (N = the request's arg 4: 32 or 64).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AlmMsg<const N: usize> {
+    pub alm_no: i32,
+    pub kind: i32,
+    pub axis: i32,
+    pub msg_len: i32,
+    pub msg: [u8; N],
+}
+
+impl<const N: usize> Default for AlmMsg<N> {
+    fn default() -> Self {
+        AlmMsg {
+            alm_no: 0,
+            kind: 0,
+            axis: 0,
+            msg_len: 0,
+            msg: [0; N],
+        }
+    }
+}
+
+impl<const N: usize> Wire for AlmMsg<N> {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.alm_no);
+        w.i32(self.kind);
+        w.i32(self.axis);
+        w.i32(self.msg_len);
+        w.bytes(&self.msg);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        Ok(AlmMsg {
+            alm_no: r.i32()?,
+            kind: r.i32()?,
+            axis: r.i32()?,
+            msg_len: r.i32()?,
+            msg: r.array()?,
+        })
+    }
+}
+
+impl<const N: usize> AlmMsg<N> {
+    /// A record with `text` (truncated to N bytes, zero-padded).
+    pub fn new(alm_no: i32, kind: i32, axis: i32, text: &str) -> Self {
+        let mut msg = [0u8; N];
+        let b = text.as_bytes();
+        let n = b.len().min(N);
+        msg[..n].copy_from_slice(&b[..n]);
+        AlmMsg {
+            alm_no,
+            kind,
+            axis,
+            msg_len: n as i32,
+            msg,
+        }
+    }
+}
+
+/// Payload of 0x0034 (cnc_rdopmsg): number, type, character count, text.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct OpMsg {
+    pub datano: i32,
+    pub kind: i32,
+    pub char_num: i32,
+    pub text: Vec<u8>,
+}
+
+impl Wire for OpMsg {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.datano);
+        w.i32(self.kind);
+        w.i32(self.char_num);
+        w.bytes(&self.text);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let (datano, kind, char_num) = (r.i32()?, r.i32()?, r.i32()?);
+        let text = r.rest().to_vec();
+        r.bytes(text.len())?;
+        Ok(OpMsg {
+            datano,
+            kind,
+            char_num,
+            text,
+        })
+    }
+}
+
+pub fn alarm() -> Single<AlarmBits> {
+    Single::new(ReqSub::cnc(ALARM, &[]))
+}
+
+/// cnc_rdalmmsg (N = 32) / cnc_rdalmmsg2 (N = 64): (1,0x23)[type, num, 2, N].
+pub fn rdalmmsg<const N: usize>(kind: i16, num: i16) -> Single<Vec<AlmMsg<N>>> {
+    Single::new(ReqSub::cnc(
+        RDALMMSG,
+        &[i32::from(kind), i32::from(num), 2, N as i32],
+    ))
+}
+
+/// cnc_rdalminfo: (1,0x23)[alm_type, n, type, 32], 48-byte records.
+pub fn rdalminfo(kind: i16, alm_type: i16, n: i32) -> Single<Vec<AlmMsg<32>>> {
+    Single::new(ReqSub::cnc(
+        RDALMMSG,
+        &[i32::from(alm_type), n, i32::from(kind), 32],
+    ))
+}
+
+pub fn rdopmsg(kind: i16) -> Single<OpMsg> {
+    Single::new(ReqSub::cnc(RDOPMSG, &[i32::from(kind)]))
+}
+
 // --- alarm history ---
 
 /// Read the alarm history: args [s, e, 1] (SPEC.md §5.2).

@@ -1,1 +1,342 @@
 //! Program execution: numbers, names, blocks, modal data, timers.
+
+use super::call::{Call, Ctx, Single, payload};
+use super::packet::{ReqSub, RespSub};
+use super::position::{ProgNums, SeqNum};
+use super::wire::{DecodeError, Reader, Wire, Writer};
+use crate::error::Result;
+use crate::wire_struct;
+
+// --- program ---
+
+pub const RDPRGNUM: u16 = 0x001c;
+pub const RDSEQNUM: u16 = 0x001d;
+pub const RDEXECPROG: u16 = 0x0020;
+pub const MODAL_G: u16 = 0x0021;
+pub const MODAL_AUX: u16 = 0x0022;
+pub const RDBLKCOUNT: u16 = 0x0035;
+pub const GETTIMER: u16 = 0x0045;
+pub const SETTIMER: u16 = 0x0046;
+pub const TOOLNUM: u16 = 0x004d;
+pub const RDOPMODE: u16 = 0x0057;
+pub const RDNTOOL: u16 = 0x008b;
+pub const EXEPRGNAME: u16 = 0x00cf;
+pub const EXEPRGNAME2: u16 = 0x00fc;
+pub const RDTIMER: u16 = 0x0120;
+pub const RDACTPT: u16 = 0x0162;
+
+wire_struct! {
+    /// Payload of 0x0162 (cnc_rdactpt): program number and block pointer.
+    pub struct ActPt {
+        pub prog_no: i32,
+        pub blk_no: i32,
+    }
+}
+
+/// Payload of 0x00cf (cnc_exeprgname): O number and a 36-byte name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ExePrgName {
+    pub o_num: i32,
+    pub name: [u8; 36],
+}
+
+impl Default for ExePrgName {
+    fn default() -> Self {
+        ExePrgName {
+            o_num: 0,
+            name: [0; 36],
+        }
+    }
+}
+
+impl Wire for ExePrgName {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.o_num);
+        w.bytes(&self.name);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        Ok(ExePrgName {
+            o_num: r.i32()?,
+            name: r.array()?,
+        })
+    }
+}
+
+wire_struct! {
+    /// Payload of 0x0120 (cnc_rdtimer): minutes and milliseconds.
+    pub struct Timer {
+        pub minute: i32,
+        pub msec: i32,
+    }
+}
+
+wire_struct! {
+    /// Payload of 0x0045 (cnc_gettimer) and of the 0x0046 request (cnc_settimer).
+    pub struct Clock {
+        pub year: i16,
+        pub month: i16,
+        pub day: i16,
+        pub hour: i16,
+        pub minute: i16,
+        pub second: i16,
+    }
+}
+
+wire_struct! {
+    /// Payload of 0x004d (cnc_toolnum).
+    pub struct ToolNum {
+        pub datano: i32,
+        pub kind: i32,
+        pub data: i32,
+    }
+}
+
+wire_struct! {
+    /// Payload of 0x008b (cnc_rdntool).
+    pub struct NTool {
+        pub datano: i32,
+        pub data: i32,
+    }
+}
+
+wire_struct! {
+    /// Payload of 0x0057 (cnc_rdopmode): the mode word (FANUC's library
+    /// copies every further word too; a CNC sends one).
+    pub struct OpMode {
+        pub mode: i16,
+    }
+}
+
+wire_struct! {
+    /// One G-code group of 0x0021: code within the group, flag (bit 0: commanded in the block).
+    pub struct GCode {
+        pub code: u8,
+        pub flag: u8,
+    }
+}
+
+wire_struct! {
+    /// One record of 0x0022: value, then flag1 / flag2 in bytes 5 and 7.
+    pub struct AuxCode {
+        pub value: i32,
+        pub pad1: u8,
+        pub flag1: u8,
+        pub pad2: u8,
+        pub flag2: u8,
+    }
+}
+
+/// Payload of 0x0020 (cnc_rdexecprog): block number and program text.
+/// `blknum` None is the empty payload, an empty result (FANUC's library
+/// reads past its buffer there).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct ExecProg {
+    pub blknum: Option<i32>,
+    pub text: Vec<u8>,
+}
+
+impl Wire for ExecProg {
+    fn encode(&self, w: &mut Writer) {
+        if let Some(b) = self.blknum {
+            w.i32(b);
+            w.bytes(&self.text);
+        }
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        if r.remaining() == 0 {
+            return Ok(ExecProg::default());
+        }
+        let blknum = r.i32()?;
+        let text = r.rest().to_vec();
+        r.bytes(text.len())?;
+        Ok(ExecProg {
+            blknum: Some(blknum),
+            text,
+        })
+    }
+}
+
+/// Payload of 0x00fc (cnc_exeprgname2): the program's path name as bytes.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct PathName(pub Vec<u8>);
+
+impl Wire for PathName {
+    fn encode(&self, w: &mut Writer) {
+        w.bytes(&self.0);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let b = r.rest().to_vec();
+        r.bytes(b.len())?;
+        Ok(PathName(b))
+    }
+}
+
+/// Non-empty list of records filling the payload (an empty one is too short).
+fn non_empty<T: Wire>(r: &mut Reader<'_>) -> Result<Vec<T>, DecodeError> {
+    if r.remaining() == 0 {
+        return Err(DecodeError::Short { need: 1, have: 0 });
+    }
+    Vec::<T>::decode(r)
+}
+
+/// Payload of 0x0021: one [code, flag] pair per group. A trailing odd byte
+/// is ignored.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct GModal(pub Vec<GCode>);
+
+impl Wire for GModal {
+    fn encode(&self, w: &mut Writer) {
+        self.0.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let n = r.remaining() / 2;
+        let mut whole = Reader::new(r.bytes(n * 2)?);
+        Ok(GModal(non_empty(&mut whole)?))
+    }
+}
+
+/// Payload of 0x0022: 8-byte records.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct AuxModal(pub Vec<AuxCode>);
+
+impl Wire for AuxModal {
+    fn encode(&self, w: &mut Writer) {
+        self.0.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        Ok(AuxModal(non_empty(r)?))
+    }
+}
+
+pub fn rdprgnum() -> Single<ProgNums> {
+    Single::new(ReqSub::cnc(RDPRGNUM, &[]))
+}
+
+pub fn rdseqnum() -> Single<SeqNum> {
+    Single::new(ReqSub::cnc(RDSEQNUM, &[]))
+}
+
+pub fn rdblkcount() -> Single<i32> {
+    Single::new(ReqSub::cnc(RDBLKCOUNT, &[]))
+}
+
+pub fn rdactpt() -> Single<ActPt> {
+    Single::new(ReqSub::cnc(RDACTPT, &[]))
+}
+
+pub fn exeprgname() -> Single<ExePrgName> {
+    Single::new(ReqSub::cnc(EXEPRGNAME, &[]))
+}
+
+pub fn exeprgname2() -> Single<PathName> {
+    Single::new(ReqSub::cnc(EXEPRGNAME2, &[]))
+}
+
+pub fn rdexecprog(length: u16) -> Single<ExecProg> {
+    Single::new(ReqSub::cnc(RDEXECPROG, &[i32::from(length)]))
+}
+
+pub fn rdtimer(kind: i16) -> Single<Timer> {
+    Single::new(ReqSub::cnc(RDTIMER, &[i32::from(kind)]))
+}
+
+pub fn gettimer(kind: i16) -> Single<Clock> {
+    Single::new(ReqSub::cnc(GETTIMER, &[i32::from(kind)]))
+}
+
+/// cnc_settimer: the six words with the half of `kind` filled (0 date, 1 time)
+/// and zeros in the other half; the reply's payload is not used.
+#[derive(Debug, Clone)]
+pub struct SetTimer {
+    pub kind: i16,
+    pub clock: Clock,
+}
+
+impl Call for SetTimer {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(SETTIMER, &[i32::from(self.kind)]).with_payload(self.clock.to_bytes())]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        super::call::sub(resp, 0).map(|_| ())
+    }
+}
+
+pub fn toolnum(grp: i16, tuse: i16) -> Single<ToolNum> {
+    let (g, t) = (i32::from(grp), i32::from(tuse));
+    Single::new(ReqSub::cnc(TOOLNUM, &[g, t, t]))
+}
+
+pub fn rdntool(grp: i16) -> Single<NTool> {
+    let g = i32::from(grp);
+    Single::new(ReqSub::cnc(RDNTOOL, &[g, g]))
+}
+
+pub fn rdopmode() -> Single<OpMode> {
+    Single::new(ReqSub::cnc(RDOPMODE, &[]))
+}
+
+/// What cnc_modal reads for a `type`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ModalKind {
+    /// 0x0021 with this code: G-code groups.
+    G(i32),
+    /// 0x0022 with this code: other codes, written in payload order.
+    Aux(i32),
+    /// 0x0022 code −1: every other code, reordered into raux1[27] by [`AUX_ORDER`].
+    AuxAll,
+}
+
+/// Codes of types 100..=126 (FANUC's table); also the payload record each
+/// raux1[k] of type −2 comes from.
+pub const AUX_ORDER: [i32; 27] = [
+    1, 3, 4, 5, 6, 10, 11, 21, 22, 20, 18, 19, 0, 2, 7, 8, 9, 16, 17, 23, 24, 25, 26, 27, 28, 12,
+    13,
+];
+
+/// cnc_modal's type → subpacket map (FANUC's library; other types are EW_NUMBER).
+pub fn modal_kind(kind: i16) -> Option<ModalKind> {
+    let t = i32::from(kind);
+    Some(match t {
+        -1..=99 => ModalKind::G(t),
+        -4 => ModalKind::G(-2),
+        -5 => ModalKind::G(-3),
+        300..=399 => ModalKind::G(t - 200),
+        100..=126 => ModalKind::Aux(AUX_ORDER[(t - 100) as usize]),
+        200..=299 => ModalKind::Aux(t - 100),
+        -2 => ModalKind::AuxAll,
+        -3 => ModalKind::Aux(-2),
+        _ => return None,
+    })
+}
+
+/// The decoded answer of cnc_modal.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Modal {
+    G(GModal),
+    Aux(AuxModal),
+}
+
+#[derive(Debug, Clone, Copy)]
+pub struct ModalCall {
+    pub kind: ModalKind,
+    pub block: i16,
+}
+
+impl Call for ModalCall {
+    type Output = Modal;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let b = i32::from(self.block);
+        vec![match self.kind {
+            ModalKind::G(c) => ReqSub::cnc(MODAL_G, &[c, b]),
+            ModalKind::Aux(c) => ReqSub::cnc(MODAL_AUX, &[c, b]),
+            ModalKind::AuxAll => ReqSub::cnc(MODAL_AUX, &[-1, b]),
+        }]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Modal> {
+        Ok(match self.kind {
+            ModalKind::G(_) => Modal::G(payload(resp, 0)?),
+            _ => Modal::Aux(payload(resp, 0)?),
+        })
+    }
+}

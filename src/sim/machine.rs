@@ -222,8 +222,68 @@ impl CncService for Machine {
     }
 
     // --- program ---
+    fn block_count(&mut self, path: u16) -> Reply<i32> {
+        self.sim_block_count(path)
+    }
+
+    fn actpt(&mut self, path: u16) -> Reply<crate::proto::program::ActPt> {
+        self.sim_actpt(path)
+    }
+
+    fn exe_prgname(&mut self, path: u16) -> Reply<crate::proto::program::ExePrgName> {
+        self.sim_exe_prgname(path)
+    }
+
+    fn exe_prgname2(&mut self, path: u16) -> Reply<crate::proto::program::PathName> {
+        self.sim_exe_prgname2(path)
+    }
+
+    fn exec_prog(&mut self, path: u16, length: i32) -> Reply<crate::proto::program::ExecProg> {
+        self.sim_exec_prog(path, length)
+    }
+
+    fn modal_g(
+        &mut self,
+        path: u16,
+        code: i32,
+        _block: i32,
+    ) -> Reply<crate::proto::program::GModal> {
+        self.sim_modal_g(path, code)
+    }
+
+    fn modal_aux(
+        &mut self,
+        path: u16,
+        code: i32,
+        _block: i32,
+    ) -> Reply<crate::proto::program::AuxModal> {
+        self.sim_modal_aux(path, code)
+    }
+
+    fn timer(&mut self, _path: u16, kind: i32) -> Reply<crate::proto::program::Timer> {
+        self.sim_timer(kind)
+    }
+
+    fn clock(&mut self, _path: u16, kind: i32) -> Reply<crate::proto::program::Clock> {
+        self.sim_clock(kind)
+    }
+
+    fn set_clock(&mut self, _path: u16, kind: i32, payload: &[u8]) -> Reply<()> {
+        self.sim_set_clock(kind, payload)
+    }
+
+    fn opmode(&mut self, path: u16) -> Reply<crate::proto::program::OpMode> {
+        self.sim_opmode(path)
+    }
 
     // --- alarm ---
+    fn alarm_messages(&mut self, path: u16, kind: i32, num: i32, text_len: i32) -> Reply<Vec<u8>> {
+        self.sim_alarm_messages(path, kind, num, text_len)
+    }
+
+    fn opmsg(&mut self, path: u16, kind: i32) -> Reply<crate::proto::alarm::OpMsg> {
+        self.sim_opmsg(path, kind)
+    }
 
     // --- param ---
     fn param_read30(

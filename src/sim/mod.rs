@@ -10,6 +10,7 @@ pub mod param;
 pub mod pmc;
 pub mod position;
 pub mod profile;
+pub mod program;
 pub mod run;
 pub mod server;
 pub mod service;

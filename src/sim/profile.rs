@@ -21,7 +21,9 @@ pub struct Profile {
     // --- position ---
 
     // --- program ---
-
+    /// cnc_rdtimer counters (src/sim/program.rs).
+    #[serde(default)]
+    pub timers: super::program::Timers,
     // --- alarm ---
 
     // --- param ---
@@ -114,9 +116,15 @@ pub struct Path {
     /// program cycle (src/sim/run.rs) may change it while running.
     pub feed: i32,
     // --- program ---
+    /// Modal codes (cnc_modal).
+    pub modal: super::program::Modal,
+    /// Operation mode word (cnc_rdopmode).
+    pub opmode: i16,
 
     // --- alarm ---
-
+    /// Operator messages on display (cnc_rdopmsg).
+    #[serde(rename = "opmsg")]
+    pub opmsgs: Vec<super::program::OperatorMessage>,
     // --- param ---
 
     // --- macros ---

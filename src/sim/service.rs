@@ -14,6 +14,11 @@ use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
 use crate::proto::offset::{self as ofs, Ack, Count, TofsInfo};
 use crate::proto::tool::{TLGROUP, TLTOOLS, ToolGroup, ToolList};
 use crate::proto::value::Value;
+// --- position ---
+// --- program ---
+use crate::proto::program as pprog;
+// --- alarm ---
+use crate::proto::alarm::{self as palarm, OpMsg};
 
 /// An error code a CNC puts in a response subpacket.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -144,8 +149,56 @@ pub trait CncService: Send {
     }
 
     // --- program ---
+    fn block_count(&mut self, path: u16) -> Reply<i32> {
+        unsupported()
+    }
+    fn actpt(&mut self, path: u16) -> Reply<pprog::ActPt> {
+        unsupported()
+    }
+    fn exe_prgname(&mut self, path: u16) -> Reply<pprog::ExePrgName> {
+        unsupported()
+    }
+    fn exe_prgname2(&mut self, path: u16) -> Reply<pprog::PathName> {
+        unsupported()
+    }
+    /// 0x0020[length]: executing program text.
+    fn exec_prog(&mut self, path: u16, length: i32) -> Reply<pprog::ExecProg> {
+        unsupported()
+    }
+    /// 0x0021[code, block]: G-code groups.
+    fn modal_g(&mut self, path: u16, code: i32, block: i32) -> Reply<pprog::GModal> {
+        unsupported()
+    }
+    /// 0x0022[code, block]: other modal codes.
+    fn modal_aux(&mut self, path: u16, code: i32, block: i32) -> Reply<pprog::AuxModal> {
+        unsupported()
+    }
+    /// 0x0120[type]: timers.
+    fn timer(&mut self, path: u16, kind: i32) -> Reply<pprog::Timer> {
+        unsupported()
+    }
+    /// 0x0045[type]: date and time.
+    fn clock(&mut self, path: u16, kind: i32) -> Reply<pprog::Clock> {
+        unsupported()
+    }
+    /// 0x0046[type] + 12-byte payload: set date or time.
+    fn set_clock(&mut self, path: u16, kind: i32, payload: &[u8]) -> Reply<()> {
+        unsupported()
+    }
+    /// 0x0057: operation mode.
+    fn opmode(&mut self, path: u16) -> Reply<pprog::OpMode> {
+        unsupported()
+    }
 
     // --- alarm ---
+    /// 0x0023[type, num, _, text_len]: active alarms, records already encoded.
+    fn alarm_messages(&mut self, path: u16, kind: i32, num: i32, text_len: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
+    /// 0x0034[type]: operator message.
+    fn opmsg(&mut self, path: u16, kind: i32) -> Reply<OpMsg> {
+        unsupported()
+    }
 
     // --- param ---
     /// 30i read of parameters (0x008d) or diagnosis data (0x0093) [s, e, axis].
@@ -315,8 +368,23 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, crate::proto::position::COUNT) => enc(svc.counts(p, a[0])),
 
             // --- program ---
+            (CLASS_CNC, pprog::RDBLKCOUNT) => enc(svc.block_count(p)),
+            (CLASS_CNC, pprog::RDACTPT) => enc(svc.actpt(p)),
+            (CLASS_CNC, pprog::EXEPRGNAME) => enc(svc.exe_prgname(p)),
+            (CLASS_CNC, pprog::EXEPRGNAME2) => enc(svc.exe_prgname2(p)),
+            (CLASS_CNC, pprog::RDEXECPROG) => enc(svc.exec_prog(p, a[0])),
+            (CLASS_CNC, pprog::MODAL_G) => enc(svc.modal_g(p, a[0], a[1])),
+            (CLASS_CNC, pprog::MODAL_AUX) => enc(svc.modal_aux(p, a[0], a[1])),
+            (CLASS_CNC, pprog::RDTIMER) => enc(svc.timer(p, a[0])),
+            (CLASS_CNC, pprog::GETTIMER) => enc(svc.clock(p, a[0])),
+            (CLASS_CNC, pprog::SETTIMER) => {
+                svc.set_clock(p, a[0], &sub.payload).map(|_| Vec::new())
+            }
+            (CLASS_CNC, pprog::RDOPMODE) => enc(svc.opmode(p)),
 
             // --- alarm ---
+            (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
+            (CLASS_CNC, palarm::RDOPMSG) => enc(svc.opmsg(p, a[0])),
 
             // --- param ---
             (CLASS_CNC, param::RDPARAM) => {

@@ -2,3 +2,155 @@
 
 #[allow(unused_imports)]
 use super::{LONG, ULONG};
+use std::os::raw::{c_char, c_short};
+
+// --- program ---
+
+/// cnc_rdprgnum: running and main program numbers (low 16 bits, as FANUC's).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPRO {
+    pub dummy: [c_short; 2],
+    pub data: c_short,
+    pub mdata: c_short,
+}
+
+/// cnc_rdseqnum: sequence number.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSEQ {
+    pub dummy: [c_short; 2],
+    pub data: LONG,
+}
+
+/// cnc_exeprgname: name and number of the running program.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBEXEPRG {
+    pub name: [c_char; 36],
+    pub o_num: LONG,
+}
+
+impl Default for ODBEXEPRG {
+    fn default() -> Self {
+        ODBEXEPRG {
+            name: [0; 36],
+            o_num: 0,
+        }
+    }
+}
+
+/// One modal code other than a G code (cnc_modal aux / raux1 / raux2).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct MODAL_AUX {
+    pub aux_data: LONG,
+    pub flag1: c_char,
+    pub flag2: c_char,
+}
+
+/// The union of ODBMDL.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub union ODBMDL_modal {
+    pub g_data: c_char,
+    pub g_rdata: [c_char; 35],
+    pub g_1shot: [c_char; 4],
+    pub aux: MODAL_AUX,
+    pub raux1: [MODAL_AUX; 27],
+    pub raux2: [MODAL_AUX; 32],
+}
+
+impl Default for ODBMDL_modal {
+    fn default() -> Self {
+        ODBMDL_modal {
+            raux2: [MODAL_AUX::default(); 32],
+        }
+    }
+}
+
+impl std::fmt::Debug for ODBMDL_modal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // Every member is plain bytes: show the largest view.
+        f.debug_struct("ODBMDL_modal")
+            .field("raux2", unsafe { &self.raux2 })
+            .finish()
+    }
+}
+
+/// cnc_modal: modal data (G codes or other codes).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ODBMDL {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub modal: ODBMDL_modal,
+}
+
+/// cnc_rdtimer: a timer as minutes and milliseconds.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTIME {
+    pub minute: LONG,
+    pub msec: LONG,
+}
+
+/// IODBTIMER date view.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTIMER_date {
+    pub year: c_short,
+    pub month: c_short,
+    pub date: c_short,
+}
+
+/// IODBTIMER time view.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTIMER_time {
+    pub hour: c_short,
+    pub minute: c_short,
+    pub second: c_short,
+}
+
+/// The union of IODBTIMER: date (type 0) or time (type 1).
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub union IODBTIMER_data {
+    pub date: IODBTIMER_date,
+    pub time: IODBTIMER_time,
+}
+
+impl Default for IODBTIMER_data {
+    fn default() -> Self {
+        IODBTIMER_data {
+            date: IODBTIMER_date::default(),
+        }
+    }
+}
+
+impl std::fmt::Debug for IODBTIMER_data {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("IODBTIMER_data")
+            .field("date", unsafe { &self.date })
+            .finish()
+    }
+}
+
+/// cnc_gettimer / cnc_settimer: the CNC's date (type 0) or time (type 1).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct IODBTIMER {
+    pub r#type: c_short,
+    pub dummy: c_short,
+    pub data: IODBTIMER_data,
+}
+
+/// cnc_toolnum: tool number of a tool in a tool-life group.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLIFE4 {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: LONG,
+}

@@ -1,0 +1,357 @@
+//! The simulator's program, timer, tool-life and alarm answers (areas
+//! `program` and `alarm`): profile sections and the `impl Machine` helpers
+//! the `CncService` methods call. Live values (program, block, alarms) come
+//! from [`super::run::PathRun`] at request time.
+
+use super::Machine;
+use super::service::{CncError, Reply};
+use crate::ew;
+use crate::proto::alarm::OpMsg;
+use crate::proto::program::{
+    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, OpMode,
+    PathName, Timer,
+};
+use crate::proto::wire::{Reader, Wire, Writer};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// `[timers]`: cnc_rdtimer's counters at simulator start, in minutes; they
+/// run on from there (operating and cutting only while path 1 runs / moves).
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Timers {
+    pub power_on: i32,
+    pub operating: i32,
+    pub cutting: i32,
+    pub free: i32,
+    /// Seconds cnc_settimer moved the CNC clock from the system clock.
+    #[serde(skip)]
+    pub clock_offset: i64,
+}
+
+/// `[path.modal]`: what cnc_modal reads.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Modal {
+    /// Per G-code group (cnc_modal type 0, 1, ...): the code within the
+    /// group as the CNC encodes it (e.g. group 0: 0 G00, 1 G01, 2 G02 ...).
+    pub g: Vec<u8>,
+    /// Other modal codes by cnc_modal type (100..126) → value.
+    pub aux: BTreeMap<String, i32>,
+}
+
+/// `[[path.opmsg]]`: an operator message on display (cnc_rdopmsg).
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct OperatorMessage {
+    pub number: i32,
+    /// Message type 0..4 (cnc_rdopmsg `type`).
+    #[serde(rename = "type")]
+    pub kind: i16,
+    pub text: String,
+}
+
+/// G-code groups answered for type −1 (g_rdata[35]).
+const G_GROUPS: usize = 35;
+/// One-shot G codes answered for types −4/−5 (g_1shot[4]).
+const G_ONESHOT: usize = 4;
+/// Records of other codes the CNC indexes by code (0..=28, see AUX_ORDER).
+const AUX_CODES: i32 = 29;
+
+fn err(code: i16) -> CncError {
+    CncError::new(code)
+}
+
+impl Machine {
+    fn live(&self, path: u16) -> Reply<&super::run::PathRun> {
+        self.run.get(path as usize - 1).ok_or(CncError::PATH)
+    }
+
+    pub(crate) fn sim_block_count(&self, path: u16) -> Reply<i32> {
+        Ok(self.live(path)?.block_count)
+    }
+
+    pub(crate) fn sim_actpt(&self, path: u16) -> Reply<ActPt> {
+        let r = self.live(path)?;
+        Ok(ActPt {
+            prog_no: r.program,
+            blk_no: r.block as i32,
+        })
+    }
+
+    /// The program's full path name: the profile's if it is one, else
+    /// "//CNC_MEM/USER/PATH<n>/<name>".
+    fn full_name(&self, path: u16) -> Reply<String> {
+        let name = &self.live(path)?.program_name;
+        Ok(if name.starts_with("//") || name.is_empty() {
+            name.clone()
+        } else {
+            format!("//CNC_MEM/USER/PATH{path}/{name}")
+        })
+    }
+
+    pub(crate) fn sim_exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
+        let full = self.full_name(path)?;
+        let short = full.rsplit('/').next().unwrap_or("");
+        let mut name = [0u8; 36];
+        let n = short.len().min(35);
+        name[..n].copy_from_slice(&short.as_bytes()[..n]);
+        Ok(ExePrgName {
+            o_num: self.live(path)?.program,
+            name,
+        })
+    }
+
+    pub(crate) fn sim_exe_prgname2(&self, path: u16) -> Reply<PathName> {
+        let mut b = self.full_name(path)?.into_bytes();
+        b.truncate(255);
+        b.push(0);
+        Ok(PathName(b))
+    }
+
+    /// The executing text, at most `length` bytes; an idle path answers
+    /// with an empty payload.
+    pub(crate) fn sim_exec_prog(&self, path: u16, length: i32) -> Reply<ExecProg> {
+        let r = self.live(path)?;
+        if r.program == 0 || r.exec_text.is_empty() {
+            return Ok(ExecProg::default());
+        }
+        let mut text = r.exec_text.clone().into_bytes();
+        text.truncate(length.max(0) as usize);
+        Ok(ExecProg {
+            blknum: Some(r.block as i32),
+            text,
+        })
+    }
+
+    pub(crate) fn sim_modal_g(&self, path: u16, code: i32) -> Reply<GModal> {
+        let g = &self.path_profile(path)?.modal.g;
+        let at = |i: usize| GCode {
+            code: g.get(i).copied().unwrap_or(0),
+            flag: 0,
+        };
+        Ok(GModal(match code {
+            -1 => (0..G_GROUPS).map(at).collect(),
+            -2 | -3 => vec![GCode::default(); G_ONESHOT],
+            c if (0..G_GROUPS as i32).contains(&c) => vec![at(c as usize)],
+            _ => return Err(CncError::NUMBER),
+        }))
+    }
+
+    pub(crate) fn sim_modal_aux(&self, path: u16, code: i32) -> Reply<AuxModal> {
+        let aux = &self.path_profile(path)?.modal.aux;
+        let rec = |c: i32| {
+            let value = AUX_ORDER
+                .iter()
+                .position(|x| *x == c)
+                .and_then(|k| aux.get(&(100 + k).to_string()))
+                .copied()
+                .unwrap_or(0);
+            AuxCode {
+                value,
+                ..AuxCode::default()
+            }
+        };
+        Ok(AuxModal(match code {
+            -1 | -2 => (0..AUX_CODES).map(rec).collect(),
+            c if (0..AUX_CODES).contains(&c) => vec![rec(c)],
+            _ => return Err(CncError::NUMBER),
+        }))
+    }
+
+    fn path_profile(&self, path: u16) -> Reply<&super::profile::Path> {
+        self.profile
+            .paths
+            .get(path as usize - 1)
+            .ok_or(CncError::PATH)
+    }
+
+    /// Milliseconds since the simulator started.
+    fn elapsed_ms(&self) -> i64 {
+        self.started.elapsed().as_millis() as i64
+    }
+
+    /// cnc_rdtimer: 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free.
+    pub(crate) fn sim_timer(&self, kind: i32) -> Reply<Timer> {
+        let t = &self.profile.timers;
+        let el = self.elapsed_ms();
+        let p1 = self
+            .profile
+            .paths
+            .first()
+            .map(|p| p.status)
+            .unwrap_or_default();
+        let min = |m: i32| i64::from(m) * 60_000;
+        let ms = match kind {
+            0 => min(t.power_on) + el,
+            1 => min(t.operating) + if p1.run == 3 { el } else { 0 },
+            2 => min(t.cutting) + if p1.run == 3 && p1.motion == 1 { el } else { 0 },
+            3 => {
+                // Time into the current cycle of path 1's program.
+                let p = self.profile.paths.first();
+                let blocks = p
+                    .and_then(|p| {
+                        self.profile
+                            .programs
+                            .iter()
+                            .find(|s| s.number == p.cycle.program)
+                    })
+                    .map_or(0, |s| s.text.lines().count());
+                let period = p.map_or(0.0, |p| p.cycle.block_seconds) * blocks as f64 * 1000.0;
+                if period >= 1.0 {
+                    el % period as i64
+                } else {
+                    el
+                }
+            }
+            4 => min(t.free),
+            _ => return Err(CncError::NUMBER),
+        };
+        Ok(Timer {
+            minute: (ms / 60_000) as i32,
+            msec: (ms % 60_000) as i32,
+        })
+    }
+
+    fn clock_now(&self) -> i64 {
+        let now = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs() as i64);
+        now + self.profile.timers.clock_offset
+    }
+
+    /// cnc_gettimer: the system clock (local time) moved by cnc_settimer.
+    pub(crate) fn sim_clock(&self, kind: i32) -> Reply<Clock> {
+        if kind != 0 && kind != 1 {
+            return Err(CncError::NUMBER);
+        }
+        let tm = local(self.clock_now());
+        Ok(Clock {
+            year: (tm.tm_year + 1900) as i16,
+            month: (tm.tm_mon + 1) as i16,
+            day: tm.tm_mday as i16,
+            hour: tm.tm_hour as i16,
+            minute: tm.tm_min as i16,
+            second: tm.tm_sec as i16,
+        })
+    }
+
+    /// cnc_settimer: type 0 sets the date, 1 the time of day (the payload's
+    /// other half is ignored); invalid values are EW_DATA.
+    pub(crate) fn sim_set_clock(&mut self, kind: i32, payload: &[u8]) -> Reply<()> {
+        let c = Clock::decode(&mut Reader::new(payload)).map_err(|_| err(ew::EW_LENGTH))?;
+        let now = self.clock_now();
+        let mut tm = local(now);
+        match kind {
+            0 => {
+                if !(1970..=2099).contains(&c.year)
+                    || !(1..=12).contains(&c.month)
+                    || !(1..=31).contains(&c.day)
+                {
+                    return Err(err(ew::EW_DATA));
+                }
+                tm.tm_year = i32::from(c.year) - 1900;
+                tm.tm_mon = i32::from(c.month) - 1;
+                tm.tm_mday = i32::from(c.day);
+            }
+            1 => {
+                if !(0..=23).contains(&c.hour)
+                    || !(0..=59).contains(&c.minute)
+                    || !(0..=59).contains(&c.second)
+                {
+                    return Err(err(ew::EW_DATA));
+                }
+                tm.tm_hour = i32::from(c.hour);
+                tm.tm_min = i32::from(c.minute);
+                tm.tm_sec = i32::from(c.second);
+            }
+            _ => return Err(CncError::NUMBER),
+        }
+        tm.tm_isdst = -1;
+        let t = unsafe { libc::mktime(&mut tm) };
+        if t == -1 {
+            return Err(err(ew::EW_DATA));
+        }
+        self.profile.timers.clock_offset += t as i64 - now;
+        Ok(())
+    }
+
+    pub(crate) fn sim_opmode(&self, path: u16) -> Reply<OpMode> {
+        Ok(OpMode {
+            mode: self.path_profile(path)?.opmode,
+        })
+    }
+
+    /// 0x0023 (cnc_rdalmmsg/2, cnc_rdalminfo): up to `num` active alarms of
+    /// `kind` (−1 all) as 16-byte heads and `text_len`-byte messages.
+    pub(crate) fn sim_alarm_messages(
+        &self,
+        path: u16,
+        kind: i32,
+        num: i32,
+        text_len: i32,
+    ) -> Reply<Vec<u8>> {
+        if !(1..=256).contains(&text_len) {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        let mut w = Writer::new();
+        for a in self
+            .live(path)?
+            .alarms
+            .iter()
+            .filter(|a| kind == -1 || i32::from(a.kind) == kind)
+            .take(num.max(0) as usize)
+        {
+            let mut msg = a.message.clone().into_bytes();
+            msg.truncate(text_len as usize);
+            w.i32(a.number);
+            w.i32(i32::from(a.kind));
+            w.i32(i32::from(a.axis));
+            w.i32(msg.len() as i32);
+            msg.resize(text_len as usize, 0);
+            w.bytes(&msg);
+        }
+        Ok(w.into_vec())
+    }
+
+    /// cnc_rdopmsg: the message of type 0..4 (none: number −1, no text);
+    /// other types EW_ATTRIB. Unverified against a real CNC: FANUC's library
+    /// gave EW_ATTRIB for type −1 in one oracle run (not analysed), and what
+    /// a CNC answers with no message on display is not recorded.
+    pub(crate) fn sim_opmsg(&self, path: u16, kind: i32) -> Reply<OpMsg> {
+        if !(0..=4).contains(&kind) {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        let m = self
+            .path_profile(path)?
+            .opmsgs
+            .iter()
+            .find(|m| i32::from(m.kind) == kind);
+        Ok(match m {
+            Some(m) => {
+                let mut text = m.text.clone().into_bytes();
+                text.truncate(256);
+                OpMsg {
+                    datano: m.number,
+                    kind,
+                    char_num: text.len() as i32,
+                    text,
+                }
+            }
+            None => OpMsg {
+                datano: -1,
+                kind,
+                char_num: 0,
+                text: Vec::new(),
+            },
+        })
+    }
+}
+
+/// Local broken-down time of a Unix time.
+fn local(t: i64) -> libc::tm {
+    let tt = t as libc::time_t;
+    let mut tm: libc::tm = unsafe { std::mem::zeroed() };
+    unsafe { libc::localtime_r(&tt, &mut tm) };
+    tm
+}

@@ -1,0 +1,391 @@
+//! Program-area functions through the C ABI against the simulator: values
+//! equal the profile's (or the running machine's), NULL pointers, bad
+//! handles, bad types and lengths.
+
+use fwlib32::ew::*;
+use fwlib32::sim::{Profile, Simulator};
+use fwlib32::types::*;
+use fwlib32::*;
+use std::ffi::CString;
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
+use std::ptr::null_mut;
+
+fn start(profile: &str) -> (Simulator, c_ushort) {
+    let p = if profile.is_empty() {
+        Profile::default()
+    } else {
+        Profile::parse(profile).expect("profile")
+    };
+    let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
+    let ip = CString::new("127.0.0.1").unwrap();
+    let mut h: c_ushort = 0;
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
+        EW_OK
+    );
+    (s, h)
+}
+
+fn text(c: &[c_char]) -> String {
+    let b: Vec<u8> = c
+        .iter()
+        .take_while(|x| **x != 0)
+        .map(|x| *x as u8)
+        .collect();
+    String::from_utf8(b).unwrap()
+}
+
+/// One path running O1234 slowly (a block every 10^6 s: it stays put), an
+/// 8-digit program stored too.
+const RUNNING: &str = r#"
+[[path]]
+opmode = 3
+[path.cycle]
+program = 1234
+block_seconds = 1000000.0
+[[program]]
+number = 1234
+text = """
+O1234 (TEST);
+N10 G90 G54;
+N20 G01 X10. F100;
+N30 M30;
+%
+"""
+"#;
+
+const EIGHT_DIGITS: &str = r#"
+[[path]]
+[path.cycle]
+program = 12345678
+block_seconds = 1000000.0
+[[program]]
+number = 12345678
+name = "//CNC_MEM/USER/LIBRARY/O12345678"
+text = "O12345678;\nN1 M30;\n"
+"#;
+
+const IDLE: &str = r#"
+[[path]]
+"#;
+
+#[test]
+fn program_numbers_names_and_pointer() {
+    let (_s, h) = start(RUNNING);
+    let mut p = ODBPRO {
+        dummy: [7, 7],
+        ..ODBPRO::default()
+    };
+    assert_eq!(unsafe { cnc_rdprgnum(h, &mut p) }, EW_OK);
+    assert_eq!((p.data, p.mdata), (1234, 1234));
+    assert_eq!(p.dummy, [7, 7], "dummy untouched");
+
+    let mut e = ODBEXEPRG::default();
+    assert_eq!(unsafe { cnc_exeprgname(h, &mut e) }, EW_OK);
+    assert_eq!((text(&e.name).as_str(), e.o_num), ("O1234", 1234));
+
+    let mut full = [0x55 as c_char; 300];
+    assert_eq!(unsafe { cnc_exeprgname2(h, full.as_mut_ptr()) }, EW_OK);
+    assert_eq!(text(&full), "//CNC_MEM/USER/PATH1/O1234");
+    assert!(full[26..256].iter().all(|c| *c == 0), "zero-filled to 256");
+    assert!(full[256..].iter().all(|c| *c == 0x55), "nothing past 256");
+
+    let (mut prog, mut blk): (c_long, c_long) = (0, 0);
+    assert_eq!(unsafe { cnc_rdactpt(h, &mut prog, &mut blk) }, EW_OK);
+    assert_eq!(prog as i32, 1234);
+
+    let mut bc: c_long = 0;
+    assert_eq!(unsafe { cnc_rdblkcount(h, &mut bc) }, EW_OK);
+    assert!(bc as i32 >= 0);
+
+    let mut seq = ODBSEQ::default();
+    assert_eq!(unsafe { cnc_rdseqnum(h, &mut seq) }, EW_OK);
+    let program = "O1234 (TEST);\nN10 G90 G54;\nN20 G01 X10. F100;\nN30 M30;\n%\n";
+    assert!(
+        seq.data == 0 || program.contains(&format!("N{} ", seq.data)),
+        "sequence number {} is not one of the program's",
+        seq.data
+    );
+
+    // The executing text: lines of the program, NUL-terminated.
+    let mut buf = [0x55 as c_char; 256];
+    let mut len: c_ushort = 200;
+    let mut blknum: c_short = -1;
+    assert_eq!(
+        unsafe { cnc_rdexecprog(h, &mut len, &mut blknum, buf.as_mut_ptr()) },
+        EW_OK
+    );
+    let t = text(&buf);
+    assert_eq!(t.len(), len as usize);
+    assert_eq!(buf[len as usize], 0);
+    assert!(!t.is_empty());
+    let lines: Vec<&str> = program.lines().collect();
+    for l in t.lines().filter(|l| !l.is_empty()) {
+        assert!(lines.iter().any(|p| p.starts_with(l)), "{l:?} not in O1234");
+    }
+    assert_eq!(blknum, blk as i32 as c_short, "same block as cnc_rdactpt");
+
+    // A short buffer: never more than length - 1 characters and the NUL.
+    let mut small = [0x55 as c_char; 16];
+    let mut len: c_ushort = 8;
+    assert_eq!(
+        unsafe { cnc_rdexecprog(h, &mut len, &mut blknum, small.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!(len, 7);
+    assert_eq!(small[7], 0);
+    assert!(small[8..].iter().all(|c| *c == 0x55));
+
+    let mut mode: c_short = -1;
+    assert_eq!(unsafe { cnc_rdopmode(h, &mut mode) }, EW_OK);
+    assert_eq!(mode, 3);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn program_numbers_keep_their_low_16_bits() {
+    let (_s, h) = start(EIGHT_DIGITS);
+    let mut p = ODBPRO::default();
+    assert_eq!(unsafe { cnc_rdprgnum(h, &mut p) }, EW_OK);
+    assert_eq!(p.data, 12345678u32 as u16 as i16);
+    assert_eq!(p.mdata, 12345678u32 as u16 as i16);
+    let mut e = ODBEXEPRG::default();
+    assert_eq!(unsafe { cnc_exeprgname(h, &mut e) }, EW_OK);
+    assert_eq!((text(&e.name).as_str(), e.o_num), ("O12345678", 12345678));
+    let mut full = [0 as c_char; 256];
+    assert_eq!(unsafe { cnc_exeprgname2(h, full.as_mut_ptr()) }, EW_OK);
+    assert_eq!(text(&full), "//CNC_MEM/USER/LIBRARY/O12345678");
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn an_idle_path_has_an_empty_executing_text() {
+    let (_s, h) = start(IDLE);
+    let mut p = ODBPRO::default();
+    assert_eq!(unsafe { cnc_rdprgnum(h, &mut p) }, EW_OK);
+    assert_eq!((p.data, p.mdata), (0, 0));
+    let mut buf = [0x55 as c_char; 64];
+    let mut len: c_ushort = 64;
+    let mut blknum: c_short = 9;
+    assert_eq!(
+        unsafe { cnc_rdexecprog(h, &mut len, &mut blknum, buf.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!((len, blknum, buf[0]), (0, 0, 0));
+    assert!(buf[1..].iter().all(|c| *c == 0x55));
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn modal_codes_equal_the_profile() {
+    let (_s, h) = start("");
+    let prof = Profile::default();
+    let m = &prof.paths[0].modal;
+    let aux = |t: i32| m.aux.get(&t.to_string()).copied().unwrap_or(0);
+
+    let mut o = ODBMDL::default();
+    assert_eq!(unsafe { cnc_modal(h, 0, 0, &mut o) }, EW_OK);
+    assert_eq!((o.datano, o.r#type), (0, 0));
+    assert_eq!(unsafe { o.modal.g_data } as u8, m.g[0]);
+
+    let mut o = ODBMDL::default();
+    assert_eq!(unsafe { cnc_modal(h, 5, 1, &mut o) }, EW_OK);
+    assert_eq!((o.datano, o.r#type), (5, 1));
+    assert_eq!(unsafe { o.modal.g_data } as u8, m.g[5]);
+
+    let mut o = ODBMDL::default();
+    assert_eq!(unsafe { cnc_modal(h, -1, 0, &mut o) }, EW_OK);
+    let g = unsafe { o.modal.g_rdata };
+    for (i, c) in m.g.iter().enumerate() {
+        assert_eq!(g[i] as u8, *c, "group {i}");
+    }
+
+    for t in 100..=126 {
+        let mut o = ODBMDL::default();
+        assert_eq!(unsafe { cnc_modal(h, t, 0, &mut o) }, EW_OK, "type {t}");
+        assert_eq!(o.datano, t);
+        assert_eq!(unsafe { o.modal.aux.aux_data }, aux(t as i32), "type {t}");
+    }
+    assert_eq!(aux(103), 1500, "the default profile's F");
+
+    // −2: raux1[k] is type 100 + k.
+    let mut o = ODBMDL::default();
+    assert_eq!(unsafe { cnc_modal(h, -2, 0, &mut o) }, EW_OK);
+    let r = unsafe { o.modal.raux1 };
+    for (k, rec) in r.iter().enumerate() {
+        assert_eq!(rec.aux_data, aux(100 + k as i32), "raux1[{k}]");
+    }
+
+    // −3: in the CNC's code order; raux2 has 32 places, 29 codes are sent.
+    let mut o = ODBMDL::default();
+    unsafe { o.modal.raux2[31].aux_data = 77 };
+    assert_eq!(unsafe { cnc_modal(h, -3, 0, &mut o) }, EW_OK);
+    let r = unsafe { o.modal.raux2 };
+    assert_eq!(r[5].aux_data, aux(103), "code 5 is type 103");
+    assert_eq!(r[31].aux_data, 77, "untouched past the records sent");
+
+    // Types FANUC's library refuses locally, and a code the CNC lacks.
+    let mut o = ODBMDL::default();
+    for t in [127, 199, 400, -6] {
+        assert_eq!(unsafe { cnc_modal(h, t, 0, &mut o) }, EW_NUMBER, "type {t}");
+    }
+    assert_eq!(unsafe { cnc_modal(h, 200, 0, &mut o) }, EW_NUMBER);
+    assert_eq!(unsafe { cnc_modal(h, 99, 0, &mut o) }, EW_NUMBER);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn timers_and_clock() {
+    let (_s, h) = start("");
+    let t = Profile::default().timers;
+    let mut o = IODBTIME::default();
+    assert_eq!(unsafe { cnc_rdtimer(h, 0, &mut o) }, EW_OK);
+    assert!(o.minute >= t.power_on && (0..60_000).contains(&o.msec));
+    assert_eq!(unsafe { cnc_rdtimer(h, 4, &mut o) }, EW_OK);
+    assert_eq!((o.minute, o.msec), (t.free, 0));
+    for k in 1..=3 {
+        assert_eq!(unsafe { cnc_rdtimer(h, k, &mut o) }, EW_OK);
+        assert!((0..60_000).contains(&o.msec));
+    }
+    assert_eq!(unsafe { cnc_rdtimer(h, 9, &mut o) }, EW_NUMBER);
+
+    let mut c = IODBTIMER::default();
+    assert_eq!(unsafe { cnc_gettimer(h, &mut c) }, EW_OK);
+    let d = unsafe { c.data.date };
+    assert!(d.year >= 2024 && (1..=12).contains(&d.month) && (1..=31).contains(&d.date));
+
+    // settimer moves the CNC's clock; gettimer reads it back.
+    let mut set = IODBTIMER {
+        r#type: 0,
+        dummy: 0,
+        data: IODBTIMER_data {
+            date: IODBTIMER_date {
+                year: 2031,
+                month: 2,
+                date: 3,
+            },
+        },
+    };
+    assert_eq!(unsafe { cnc_settimer(h, &mut set) }, EW_OK);
+    let mut c = IODBTIMER::default();
+    assert_eq!(unsafe { cnc_gettimer(h, &mut c) }, EW_OK);
+    let d = unsafe { c.data.date };
+    assert_eq!((d.year, d.month), (2031, 2));
+    assert!((3..=4).contains(&d.date), "midnight may pass");
+
+    set.r#type = 1;
+    set.data.time = IODBTIMER_time {
+        hour: 12,
+        minute: 34,
+        second: 0,
+    };
+    assert_eq!(unsafe { cnc_settimer(h, &mut set) }, EW_OK);
+    let mut c = IODBTIMER {
+        r#type: 1,
+        ..IODBTIMER::default()
+    };
+    assert_eq!(unsafe { cnc_gettimer(h, &mut c) }, EW_OK);
+    let t = unsafe { c.data.time };
+    assert_eq!((t.hour, t.minute), (12, 34));
+    assert!(t.second < 30);
+
+    // Invalid values: the CNC's EW_DATA; other types: EW_NUMBER without traffic.
+    set.data.time.hour = 25;
+    assert_eq!(unsafe { cnc_settimer(h, &mut set) }, EW_DATA);
+    set.r#type = 2;
+    assert_eq!(unsafe { cnc_settimer(h, &mut set) }, EW_NUMBER);
+    let mut c = IODBTIMER {
+        r#type: -1,
+        ..IODBTIMER::default()
+    };
+    assert_eq!(unsafe { cnc_gettimer(h, &mut c) }, EW_NUMBER);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn tool_life_groups() {
+    let (_s, h) = start("");
+    let prof = Profile::default();
+    for g in &prof.paths[0].tool_groups {
+        let mut n = ODBTLIFE3 {
+            dummy: 99,
+            ..ODBTLIFE3::default()
+        };
+        assert_eq!(
+            unsafe { cnc_rdntool(h, g.number as c_short, &mut n) },
+            EW_OK
+        );
+        assert_eq!(
+            (n.datano as i32, n.data, n.dummy),
+            (g.number, g.tools.len() as i32, 99)
+        );
+        for (i, tool) in g.tools.iter().enumerate() {
+            let mut t = ODBTLIFE4::default();
+            let u = i as c_short + 1;
+            assert_eq!(
+                unsafe { cnc_toolnum(h, g.number as c_short, u, &mut t) },
+                EW_OK
+            );
+            assert_eq!((t.datano as i32, t.r#type, t.data), (g.number, u, tool.number));
+        }
+        let mut t = ODBTLIFE4::default();
+        let past = g.tools.len() as c_short + 1;
+        assert_eq!(
+            unsafe { cnc_toolnum(h, g.number as c_short, past, &mut t) },
+            EW_NUMBER
+        );
+    }
+    let mut n = ODBTLIFE3::default();
+    assert_eq!(unsafe { cnc_rdntool(h, 99, &mut n) }, EW_NUMBER);
+    cnc_freelibhndl(h);
+}
+
+#[test]
+fn null_pointers_bad_handles_and_lengths() {
+    let (_s, h) = start("");
+    let mut l: c_long = 0;
+    let mut len: c_ushort = 10;
+    let mut s: c_short = 0;
+    let mut b = [0 as c_char; 16];
+    unsafe {
+        assert_eq!(cnc_rdprgnum(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_rdseqnum(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_rdblkcount(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_rdactpt(h, null_mut(), &mut l), EW_DATA);
+        assert_eq!(cnc_rdactpt(h, &mut l, null_mut()), EW_DATA);
+        assert_eq!(cnc_exeprgname(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_exeprgname2(h, null_mut()), EW_DATA);
+        assert_eq!(
+            cnc_rdexecprog(h, null_mut(), &mut s, b.as_mut_ptr()),
+            EW_DATA
+        );
+        assert_eq!(
+            cnc_rdexecprog(h, &mut len, null_mut(), b.as_mut_ptr()),
+            EW_DATA
+        );
+        assert_eq!(cnc_rdexecprog(h, &mut len, &mut s, null_mut()), EW_DATA);
+        assert_eq!(cnc_modal(h, 0, 0, null_mut()), EW_DATA);
+        assert_eq!(cnc_rdtimer(h, 0, null_mut()), EW_DATA);
+        assert_eq!(cnc_gettimer(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_settimer(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_rdopmode(h, null_mut()), EW_DATA);
+        assert_eq!(cnc_toolnum(h, 1, 1, null_mut()), EW_DATA);
+        assert_eq!(cnc_rdntool(h, 1, null_mut()), EW_DATA);
+        let mut zero: c_ushort = 0;
+        assert_eq!(
+            cnc_rdexecprog(h, &mut zero, &mut s, b.as_mut_ptr()),
+            EW_LENGTH
+        );
+
+        let bad = 0x7777;
+        let mut p = ODBPRO::default();
+        assert_eq!(cnc_rdprgnum(bad, &mut p), EW_HANDLE);
+        assert_eq!(cnc_rdblkcount(bad, &mut l), EW_HANDLE);
+        let mut m = ODBMDL::default();
+        assert_eq!(cnc_modal(bad, 0, 0, &mut m), EW_HANDLE);
+        let mut t = IODBTIME::default();
+        assert_eq!(cnc_rdtimer(bad, 0, &mut t), EW_HANDLE);
+        assert_eq!(cnc_rdopmode(bad, &mut s), EW_HANDLE);
+    }
+    cnc_freelibhndl(h);
+}
