@@ -227,6 +227,7 @@ impl Profile {
                 }
             }
         }
+        self.validate_run().map_err(ProfileError::Invalid)?;
         Ok(())
     }
 }

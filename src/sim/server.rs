@@ -14,6 +14,8 @@ use tokio::net::{TcpListener, TcpStream};
 pub struct Shared {
     pub cnc: Mutex<Box<dyn CncService>>,
     sessions: AtomicUsize,
+    /// A frozen clock (tests): frames are answered as at this instant.
+    clock: Mutex<Option<std::time::Instant>>,
 }
 
 impl Shared {
@@ -21,7 +23,16 @@ impl Shared {
         Arc::new(Shared {
             cnc: Mutex::new(cnc),
             sessions: AtomicUsize::new(0),
+            clock: Mutex::new(None),
         })
+    }
+    /// Freezes the clock data frames are answered at (None: real time again).
+    pub fn set_clock(&self, at: Option<std::time::Instant>) {
+        *self.clock.lock() = at;
+    }
+    /// The instant a data frame is answered at.
+    pub fn now(&self) -> std::time::Instant {
+        self.clock.lock().unwrap_or_else(std::time::Instant::now)
     }
     /// FOCAS sessions open now (connection-1 opens not yet closed).
     pub fn sessions(&self) -> usize {
@@ -112,8 +123,9 @@ async fn connection(mut stream: TcpStream, shared: Arc<Shared>) {
             ftype::DATA_REQ => match decode_request(&frame.body) {
                 Ok(subs) => {
                     let resp = {
+                        let now = shared.now();
                         let mut cnc = shared.cnc.lock();
-                        cnc.advance(std::time::Instant::now());
+                        cnc.advance(now);
                         subs.iter()
                             .map(|s| dispatch(cnc.as_mut(), s))
                             .collect::<Vec<_>>()
