@@ -93,6 +93,15 @@ namespace Fwlib32 {
 #define MAX_SPINDLE 8
 
 /*
+ cnc_upload / cnc_cupload: a piece of program text (`data` holds up to
+ `*length` characters, not NUL-terminated; `dummy` is not written).
+ */
+typedef struct ODBUP {
+    short dummy[2];
+    char data[256];
+} ODBUP;
+
+/*
  cnc_getdtailerr: detail of the last error.
  */
 typedef struct ODBERR {
@@ -185,6 +194,15 @@ short cnc_allclibhndl4(const char *ip,
                        unsigned short *FlibHndl);
 
 /*
+ As cnc_upload, but returns EW_BUFFER instead of waiting when nothing
+ has arrived yet (conditional upload).
+
+ # Safety
+ As cnc_upload.
+ */
+short cnc_cupload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
+
+/*
  Frees every handle, closes every connection and the log.
  */
 short cnc_exitprocess(void);
@@ -270,6 +288,75 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Ends the upload started by cnc_upstart (as cnc_upend3).
+ */
+short cnc_upend(unsigned short FlibHndl);
+
+/*
+ Ends the upload: after the whole text nothing is sent; before, the
+ upload is aborted (frame 0x1804).
+ */
+short cnc_upend3(unsigned short FlibHndl);
+
+/*
+ As cnc_upend3 (FANUC's cnc_upend4 is the same function).
+ */
+short cnc_upend4(unsigned short FlibHndl);
+
+/*
+ Reads the next piece of uploaded text into `upload->data`, waiting
+ until some has arrived (FANUC polls every millisecond; the handle's
+ timeout still ends a stalled upload with EW_SOCKET). `*length`: room in
+ `data` (more than 255) in, size read out. EW_RESET (-2) at the end.
+
+ # Safety
+ `upload` must point to writable memory of 4 + `*length` bytes,
+ `length` to an `unsigned short`.
+ */
+short cnc_upload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
+
+/*
+ Reads the next piece of uploaded text into `data` (at most `*length`
+ bytes, at least 256 of room required; not NUL-terminated) and sets
+ `*length` to its size. Returns EW_BUFFER while nothing has arrived
+ (call again), EW_RESET (-2) once the whole text was read.
+
+ # Safety
+ `length` must point to a `long` (4 bytes are read and written);
+ `data` to `*length` writable bytes.
+ */
+short cnc_upload3(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ As cnc_upload3 (FANUC's cnc_upload4 is the same function).
+
+ # Safety
+ As cnc_upload3.
+ */
+short cnc_upload4(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ Starts uploading NC program `prgno` (text "O<n>-O<n>", data type 0).
+ Then cnc_upload / cnc_upload3 read the text and cnc_upend ends it.
+ */
+short cnc_upstart(unsigned short FlibHndl, short prgno);
+
+/*
+ Starts uploading data of `type` (0 = NC programs) for the O-number range
+ `start`..`end`.
+ */
+short cnc_upstart3(unsigned short FlibHndl, short type, long startno, long endno);
+
+/*
+ Starts uploading data of `type` for the program named `prgname`
+ (e.g. "O1234" or "//CNC_MEM/USER/PATH1/O1234"); NULL sends no name.
+
+ # Safety
+ `prgname` must be NULL or a NUL-terminated string.
+ */
+short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -308,6 +308,9 @@ rust_layouts! {
     // --- offset ---
 
     // --- tool ---
+
+    // --- upload ---
+    ODBUP { dummy, data }
 }
 
 #[test]
