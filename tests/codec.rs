@@ -112,6 +112,10 @@ const KNOWN: &[&str] = &[
     // --- tool ---
 
     // --- upload ---
+    "upstart",
+    "upstart3",
+    "upload3",
+    "upend3",
 ];
 
 fn num(s: &str) -> i64 {
@@ -205,6 +209,31 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                             }
                             data_frame(&subs)
                         }
+                        // --- upload ---
+                        Some(ftype::UPLOAD_START_REQ) => {
+                            use fwlib32::proto::upload::{StartReq, range_name};
+                            let (dtype, s, e) = match call.word() {
+                                "upstart" => (0, num(&args[0]), num(&args[0])),
+                                _ => (num(&args[0]), num(&args[1]), num(&args[2])),
+                            };
+                            let req = StartReq {
+                                dtype: dtype as i16,
+                                path,
+                                start: range_name(s as i32, e as i32),
+                                end: String::new(),
+                            };
+                            Frame::new(CLIENT_VERSION, ftype::UPLOAD_START_REQ, req.encode())
+                                .encode()
+                        }
+                        Some(ftype::UPLOAD_END_ACK) => {
+                            Frame::new(CLIENT_VERSION, ftype::UPLOAD_END_ACK, vec![]).encode()
+                        }
+                        Some(ftype::UPLOAD_ABORT) => Frame::new(
+                            CLIENT_VERSION,
+                            ftype::UPLOAD_ABORT,
+                            fwlib32::proto::upload::ABORT_BODY.to_vec(),
+                        )
+                        .encode(),
                         t => {
                             bad.push(format!(
                                 "{id} call {i}: request of unexpected type {t:04x?}"

@@ -180,4 +180,9 @@ impl CncService for Machine {
     // --- offset ---
 
     // --- tool ---
+
+    // --- upload ---
+    fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
+        self.upload_text(req)
+    }
 }

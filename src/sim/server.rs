@@ -120,6 +120,38 @@ async fn connection(mut stream: TcpStream, shared: Arc<Shared>) {
                 return;
             }
             ftype::ID_REQ => Some(Frame::new(version, ftype::ID_RESP, frame.body.clone())),
+            ftype::UPLOAD_START_REQ => {
+                // --- upload ---
+                // The answer, then the whole upload in one write, as the fake
+                // CNC of the recordings did; the client's 0x1702 / 0x1804
+                // need no answer (ignored below).
+                let req = crate::proto::upload::StartReq::decode(&frame.body);
+                let r = shared.cnc.lock().upload(&req);
+                let mut out = Frame::new(version, ftype::UPLOAD_START_RESP, Vec::new()).encode();
+                match r {
+                    Ok(text) => {
+                        let max = crate::proto::frame::max_body_len(version);
+                        for chunk in text.chunks(max) {
+                            out.extend(
+                                Frame::new(version, ftype::UPLOAD_DATA, chunk.to_vec()).encode(),
+                            );
+                        }
+                        out.extend(Frame::new(version, ftype::UPLOAD_END, Vec::new()).encode());
+                    }
+                    Err(e) => out.extend(
+                        Frame::new(
+                            version,
+                            ftype::UPLOAD_ABORT,
+                            crate::proto::upload::error_body(e.code, e.detail.0, e.detail.1),
+                        )
+                        .encode(),
+                    ),
+                }
+                if stream.write_all(&out).await.is_err() {
+                    return;
+                }
+                None
+            }
             ftype::DATA_REQ => match decode_request(&frame.body) {
                 Ok(subs) => {
                     let resp = {

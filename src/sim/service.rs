@@ -85,6 +85,13 @@ pub trait CncService: Send {
     // --- offset ---
 
     // --- tool ---
+
+    // --- upload ---
+    /// Program upload on connection 1 (0x1501): the text to push in 0x1604
+    /// frames, or the error for the CNC's error frame.
+    fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
+        unsupported()
+    }
 }
 
 fn enc<T: Wire>(r: Reply<T>) -> Reply<Vec<u8>> {
