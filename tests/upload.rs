@@ -4,6 +4,8 @@
 //! connection 2 during an upload. No sleeps: EW_BUFFER is retried, as the
 //! API asks.
 
+mod common;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
@@ -301,4 +303,49 @@ fn data_requests_go_on_during_an_upload() {
     assert_eq!(cnc_upend3(h1), EW_OK);
     assert_eq!(cnc_freelibhndl(h1), EW_OK);
     assert_eq!(cnc_freelibhndl(h2), EW_OK);
+}
+
+/// Against a replayed CNC that answers the start and then sends nothing:
+/// after the handle's timeout the library aborts (0x1804), closes both
+/// connections and returns EW_SOCKET with detail (9, 4), as FANUC's code does.
+#[test]
+fn a_stalled_upload_ends_after_the_timeout() {
+    use common::{Ev, Event, Replay, find_case, load_vectors, vectors_available};
+    if !vectors_available() {
+        return;
+    }
+    let files = load_vectors();
+    let connect = find_case(&files, "cnc_allclibhndl3", "v3_one_path").calls[0]
+        .frames
+        .clone();
+    let start = find_case(&files, "cnc_upload3", "v3_not_started_yet").calls[0]
+        .frames
+        .clone();
+    let mut server = Replay::start();
+    let ip = CString::new("127.0.0.1").unwrap();
+    let (mut h, port): (c_ushort, u16) = (0, server.port);
+    let (r, m) = server.step("connect", connect, || unsafe {
+        cnc_allclibhndl3(ip.as_ptr(), port, 3, &mut h)
+    });
+    assert_eq!((r, m), (EW_OK, vec![]));
+    let (r, m) = server.step("upstart", start, || cnc_upstart(h, 1234));
+    assert_eq!((r, m), (EW_OK, vec![]));
+    assert_eq!(cnc_settimeout(h, 1), EW_OK);
+    let stall = vec![
+        Event::parse(1, "req", "a0a0a0a00001180400080000000000000000"),
+        Event::new(1, Ev::Eof),
+        Event::new(2, Ev::Eof),
+    ];
+    let (r, m) = server.step("stalled cnc_upload", stall, || {
+        let mut up = ODBUP::default();
+        let mut len: c_ushort = 256;
+        unsafe { cnc_upload(h, &mut up, &mut len) }
+    });
+    assert_eq!((r, m), (EW_SOCKET, vec![]));
+    let mut e = ODBERR::default();
+    assert_eq!(unsafe { cnc_getdtailerr(h, &mut e) }, EW_OK);
+    assert_eq!((e.err_no, e.err_dtno), (9, 4));
+    let (r, m) = server.step("free", vec![], || cnc_freelibhndl(h));
+    assert_eq!((r, m), (EW_OK, vec![]));
+    assert_eq!(server.finish(), Vec::<String>::new());
 }
