@@ -306,21 +306,21 @@ short cnc_upend3(unsigned short FlibHndl);
 short cnc_upend4(unsigned short FlibHndl);
 
 /*
- Reads the next piece of uploaded text into `upload->data`, waiting
- until some has arrived (FANUC polls every millisecond; the handle's
- timeout still ends a stalled upload with EW_SOCKET). `*length`: room in
- `data` (more than 255) in, size read out. EW_RESET (-2) at the end.
+ Reads the next piece of uploaded text (at most 256 bytes) into
+ `upload->data`, waiting until some has arrived (FANUC polls every
+ millisecond; the handle's timeout still ends a stalled upload with
+ EW_SOCKET). `*length`: at least 256 in, size read out. EW_RESET (-2)
+ at the end.
 
  # Safety
- `upload` must point to writable memory of 4 + `*length` bytes,
- `length` to an `unsigned short`.
+ `upload` must point to a writable ODBUP, `length` to an `unsigned short`.
  */
 short cnc_upload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
 
 /*
  Reads the next piece of uploaded text into `data` (at most `*length`
- bytes, at least 256 of room required; not NUL-terminated) and sets
- `*length` to its size. Returns EW_BUFFER while nothing has arrived
+ rounded down to whole 256 bytes; 256 or more required; not
+ NUL-terminated) and sets `*length` to its size. Returns EW_BUFFER while nothing has arrived
  (call again), EW_RESET (-2) once the whole text was read.
 
  # Safety

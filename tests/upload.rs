@@ -223,8 +223,20 @@ fn missing_programs_and_bad_arguments() {
     assert_eq!(cnc_upend3(h), EW_ATTRIB);
 
     // Lengths (after the start, as FANUC checks them), NULLs, handles.
-    assert_eq!(cnc_upstart(h, 100), EW_OK);
+    assert_eq!(cnc_upstart(h, 7000), EW_OK);
     assert_eq!(upload3(h, 255).0, EW_LENGTH);
+    // Room counts in whole 256 bytes; ODBUP never gets more than its 256.
+    let first = loop {
+        match upload3(h, 511) {
+            (EW_BUFFER, _) => std::thread::yield_now(),
+            (r, b) => break (r, b.len()),
+        }
+    };
+    assert_eq!(first, (EW_OK, 256));
+    let mut up = ODBUP::default();
+    let mut len: c_ushort = 1000;
+    assert_eq!(unsafe { cnc_upload(h, &mut up, &mut len) }, EW_OK);
+    assert!(len <= 256, "{len}");
     let mut up = ODBUP::default();
     let mut len: c_ushort = 255;
     assert_eq!(unsafe { cnc_cupload(h, &mut up, &mut len) }, EW_LENGTH);
@@ -346,6 +358,77 @@ fn a_stalled_upload_ends_after_the_timeout() {
     assert_eq!(unsafe { cnc_getdtailerr(h, &mut e) }, EW_OK);
     assert_eq!((e.err_no, e.err_dtno), (9, 4));
     let (r, m) = server.step("free", vec![], || cnc_freelibhndl(h));
+    assert_eq!((r, m), (EW_OK, vec![]));
+    assert_eq!(server.finish(), Vec::<String>::new());
+}
+
+/// FANUC's buffer rule (oracle findings, no vectors): the room is `*length`
+/// in whole 256 bytes; queued frames are copied, a frame that does not fit
+/// split, while 256 bytes or more of room are left.
+#[test]
+fn room_in_whole_256s_frames_split_to_fit() {
+    use common::{Event, Replay, find_case, hex, load_vectors, vectors_available};
+    use fwlib32::proto::frame::{Frame, ftype};
+    if !vectors_available() {
+        return;
+    }
+    let files = load_vectors();
+    let connect = find_case(&files, "cnc_allclibhndl3", "v3_one_path").calls[0]
+        .frames
+        .clone();
+    let start_req =
+        find_case(&files, "cnc_upload3", "v3_not_started_yet").calls[0].frames[0].clone();
+    let pushed = |sizes: &[usize]| {
+        let mut b = Frame::new(3, ftype::UPLOAD_START_RESP, vec![]).encode();
+        for (i, n) in sizes.iter().enumerate() {
+            b.extend(Frame::new(3, ftype::UPLOAD_DATA, vec![b'a' + i as u8; *n]).encode());
+        }
+        b.extend(Frame::new(3, ftype::UPLOAD_END, vec![]).encode());
+        vec![start_req.clone(), Event::parse(1, "resp", &hex(&b))]
+    };
+    let ack = || vec![Event::parse(1, "req", "a0a0a0a0000117020000")];
+    let mut server = Replay::start();
+    let ip = CString::new("127.0.0.1").unwrap();
+    let (mut h, port): (c_ushort, u16) = (0, server.port);
+    let (r, m) = server.step("connect", connect, || unsafe {
+        cnc_allclibhndl3(ip.as_ptr(), port, 3, &mut h)
+    });
+    assert_eq!((r, m), (EW_OK, vec![]));
+
+    for (sizes, room, want) in [
+        (&[300, 600, 10][..], 768, &[768, 142][..]),
+        (&[300, 300, 10][..], 256, &[256, 44, 256, 44, 10][..]),
+        (&[300, 300, 10][..], 1000, &[600, 10][..]),
+        (&[19, 5][..], 511, &[19, 5][..]),
+        (&[19, 5][..], 512, &[24][..]),
+    ] {
+        let (r, m) = server.step("upstart", pushed(sizes), || cnc_upstart(h, 1234));
+        assert_eq!((r, m), (EW_OK, vec![]));
+        // The 0x1702 goes out when the end frame is taken: with the last
+        // piece when 256 bytes of room were left, else on the next call.
+        let ((got, last), m) = server.step("upload", ack(), || {
+            let got: Vec<(c_short, usize)> = want
+                .iter()
+                .map(|_| {
+                    let (r, b) = upload3(h, room);
+                    (r, b.len())
+                })
+                .collect();
+            (got, upload3(h, room).0)
+        });
+        assert_eq!(m, Vec::<String>::new());
+        let want: Vec<(c_short, usize)> = want.iter().map(|n| (EW_OK, *n)).collect();
+        assert_eq!(got, want, "frames {sizes:?}, room {room}");
+        assert_eq!(last, EW_RESET);
+        assert_eq!(cnc_upend3(h), EW_OK);
+    }
+    let close = vec![
+        Event::parse(1, "req", "a0a0a0a0000102010000"),
+        Event::parse(1, "resp", "a0a0a0a0000302020000"),
+        Event::parse(2, "req", "a0a0a0a0000102010000"),
+        Event::parse(2, "resp", "a0a0a0a0000302020000"),
+    ];
+    let (r, m) = server.step("free", close, || cnc_freelibhndl(h));
     assert_eq!((r, m), (EW_OK, vec![]));
     assert_eq!(server.finish(), Vec::<String>::new());
 }

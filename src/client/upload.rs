@@ -165,9 +165,11 @@ impl Pair {
         })
     }
 
-    /// cnc_upload3: copies upload text into `out` (FANUC: from as many
-    /// frames as have arrived while more than 255 bytes of room are left)
-    /// and returns how much. Nothing yet: EW_BUFFER; after the end: EW_RESET.
+    /// cnc_upload3: copies upload text into `out` and returns how much.
+    /// As FANUC's library: the room is `out.len()` rounded down to whole
+    /// 256 bytes; frames that have arrived are copied (one that does not
+    /// fit is split, its rest comes next time) while 256 bytes or more of
+    /// room are left. Nothing yet: EW_BUFFER; after the end: EW_RESET.
     pub fn upload_read(&self, h: u16, out: &mut [u8], timeout: i32) -> Result<usize> {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
@@ -177,6 +179,9 @@ impl Pair {
             if out.len() < MIN_READ {
                 return Err(Error::local(EW_LENGTH, "length must be at least 256"));
             }
+            // FANUC's library uses whole 256-byte units of the room given.
+            let room = out.len() / MIN_READ * MIN_READ;
+            let out = &mut out[..room];
             let mut total = 0;
             loop {
                 let u = c1.upload.as_mut().expect("settled");

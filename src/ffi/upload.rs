@@ -1,7 +1,10 @@
 //! Program upload over connection 1 (cnc_upstart ... cnc_upend).
 //!
 //! Recorded from FANUC's library: cnc_upstart, cnc_upstart3, cnc_upload3,
-//! cnc_upend3 (vectors). Read from its code, not recorded ([dis]): cnc_upload4
+//! cnc_upend3 (vectors); cnc_upstart4, cnc_upload4, cnc_upload, cnc_upend4,
+//! cnc_upend and the buffer rule (room in whole 256s, frames split to fit)
+//! by the oracle helper (/tmp/orc/findings/cnc_upload_family.md, [lib],
+//! no vectors). Read from its code ([dis]): cnc_upload4
 //! and cnc_upend4 are cnc_upload3 and cnc_upend3 under another name;
 //! cnc_upstart4 sends the start name "N:<prgname>" ("N:" for NULL);
 //! cnc_cupload is cnc_upload3 into ODBUP.data with an `unsigned short`
@@ -125,8 +128,8 @@ pub unsafe extern "C" fn cnc_upstart4(
 }
 
 /// Reads the next piece of uploaded text into `data` (at most `*length`
-/// bytes, at least 256 of room required; not NUL-terminated) and sets
-/// `*length` to its size. Returns EW_BUFFER while nothing has arrived
+/// rounded down to whole 256 bytes; 256 or more required; not
+/// NUL-terminated) and sets `*length` to its size. Returns EW_BUFFER while nothing has arrived
 /// (call again), EW_RESET (-2) once the whole text was read.
 ///
 /// # Safety
@@ -169,14 +172,14 @@ unsafe fn upload3(handle: c_ushort, length: *mut c_long, data: *mut c_char) -> R
     Ok(())
 }
 
-/// Reads the next piece of uploaded text into `upload->data`, waiting
-/// until some has arrived (FANUC polls every millisecond; the handle's
-/// timeout still ends a stalled upload with EW_SOCKET). `*length`: room in
-/// `data` (more than 255) in, size read out. EW_RESET (-2) at the end.
+/// Reads the next piece of uploaded text (at most 256 bytes) into
+/// `upload->data`, waiting until some has arrived (FANUC polls every
+/// millisecond; the handle's timeout still ends a stalled upload with
+/// EW_SOCKET). `*length`: at least 256 in, size read out. EW_RESET (-2)
+/// at the end.
 ///
 /// # Safety
-/// `upload` must point to writable memory of 4 + `*length` bytes,
-/// `length` to an `unsigned short`.
+/// `upload` must point to a writable ODBUP, `length` to an `unsigned short`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_upload(
     FlibHndl: c_ushort,
@@ -219,6 +222,9 @@ unsafe fn cupload(handle: c_ushort, upload: *mut ODBUP, length: *mut c_ushort) -
     if want <= 255 {
         return Err(Error::local(EW_LENGTH, "length must be more than 255"));
     }
+    // FANUC writes up to `*length` (in whole 256s) past ODBUP.data's 256
+    // bytes; we never write beyond the struct.
+    let want = want.min(256);
     let data = unsafe { up.cast::<u8>().add(4) };
     let out = unsafe { std::slice::from_raw_parts_mut(data, want) };
     let n = old_style(read(&h, handle, out))?;
