@@ -867,3 +867,37 @@ impl Machine {
         ))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn raised_at(m: &mut Machine, t: f64) -> Vec<(u16, i32, f64)> {
+        let mut v = Vec::new();
+        m.advance_path(0, t, &mut v);
+        v.into_iter()
+            .map(|(p, a, d)| (p, a.number, d.as_secs_f64()))
+            .collect()
+    }
+
+    #[test]
+    fn the_alarm_hook_sees_every_occurrence_once() {
+        let mut p = Profile::default();
+        p.paths[0].alarms.push(Alarm {
+            number: 500,
+            ..Alarm::default()
+        });
+        let mut m = Machine::new(p);
+        // The profile's alarm at the first advance; the event (30 s, every 60 s) later.
+        assert_eq!(raised_at(&mut m, 1.0), vec![(1, 500, 0.0)]);
+        assert_eq!(raised_at(&mut m, 29.0), vec![]);
+        assert_eq!(raised_at(&mut m, 31.0), vec![(1, 1001, 30.0)]);
+        assert_eq!(raised_at(&mut m, 35.0), vec![]);
+        // A long pause: the occurrences in between, in order.
+        assert_eq!(
+            raised_at(&mut m, 215.0),
+            vec![(1, 1001, 90.0), (1, 1001, 150.0), (1, 1001, 210.0)]
+        );
+        assert_eq!(raised_at(&mut m, 215.0), vec![]);
+    }
+}
