@@ -687,3 +687,40 @@ proptest! {
         let _ = OpenBody::decode(version, &body);
     }
 }
+
+// --- upload ---
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn upload_start_body_roundtrip(
+        dtype in any::<i16>(),
+        path in any::<u16>(),
+        start in "[ -~]{0,255}",
+        end in "[ -~]{0,255}",
+    ) {
+        use fwlib32::proto::upload::{START_BODY_LEN, StartReq};
+        let r = StartReq { dtype, path, start, end };
+        let b = r.encode();
+        prop_assert_eq!(b.len(), START_BODY_LEN);
+        prop_assert_eq!(StartReq::decode(&b), r);
+    }
+
+    #[test]
+    fn upload_error_body_roundtrip(code in any::<i16>(), d1 in any::<u16>(), d2 in any::<u16>()) {
+        use fwlib32::proto::upload::{decode_error, error_body};
+        prop_assert_eq!(decode_error(&error_body(code, d1, d2)), (code, d1, d2));
+    }
+
+    #[test]
+    fn upload_decoders_never_panic(b in vec(any::<u8>(), 0..700)) {
+        let r = fwlib32::proto::upload::StartReq::decode(&b);
+        let _ = r.range();
+        let _ = fwlib32::proto::upload::decode_error(&b);
+    }
+}
