@@ -142,6 +142,15 @@ typedef struct ODBALM {
 } ODBALM;
 
 /*
+ cnc_upload / cnc_cupload: a piece of program text (`data` holds up to
+ `*length` characters, not NUL-terminated; `dummy` is not written).
+ */
+typedef struct ODBUP {
+    short dummy[2];
+    char data[256];
+} ODBUP;
+
+/*
  A real diagnosis value: `dgn_val · 10^-dec_val`.
  */
 typedef struct REALDGN {
@@ -1131,6 +1140,15 @@ short cnc_allclibhndl4(const char *ip,
                        unsigned short *FlibHndl);
 
 /*
+ As cnc_upload, but returns EW_BUFFER instead of waiting when nothing
+ has arrived yet (conditional upload).
+
+ # Safety
+ As cnc_upload.
+ */
+short cnc_cupload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
+
+/*
  Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
  and bit 1, word 2, 2-word 4, real 8).
 
@@ -1851,6 +1869,75 @@ short cnc_toolnum(unsigned short FlibHndl,
                   short grp_num,
                   short tuse_num,
                   struct ODBTLIFE4 *toolnum);
+
+/*
+ Ends the upload started by cnc_upstart (as cnc_upend3).
+ */
+short cnc_upend(unsigned short FlibHndl);
+
+/*
+ Ends the upload: after the whole text nothing is sent; before, the
+ upload is aborted (frame 0x1804).
+ */
+short cnc_upend3(unsigned short FlibHndl);
+
+/*
+ As cnc_upend3 (FANUC's cnc_upend4 is the same function).
+ */
+short cnc_upend4(unsigned short FlibHndl);
+
+/*
+ Reads the next piece of uploaded text (at most 256 bytes) into
+ `upload->data`, waiting until some has arrived (FANUC polls every
+ millisecond; the handle's timeout still ends a stalled upload with
+ EW_SOCKET). `*length`: at least 256 in, size read out. EW_RESET (-2)
+ at the end.
+
+ # Safety
+ `upload` must point to a writable ODBUP, `length` to an `unsigned short`.
+ */
+short cnc_upload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
+
+/*
+ Reads the next piece of uploaded text into `data` (at most `*length`
+ rounded down to whole 256 bytes; 256 or more required; not
+ NUL-terminated) and sets `*length` to its size. Returns EW_BUFFER while nothing has arrived
+ (call again), EW_RESET (-2) once the whole text was read.
+
+ # Safety
+ `length` must point to a `long` (4 bytes are read and written);
+ `data` to `*length` writable bytes.
+ */
+short cnc_upload3(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ As cnc_upload3 (FANUC's cnc_upload4 is the same function).
+
+ # Safety
+ As cnc_upload3.
+ */
+short cnc_upload4(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ Starts uploading NC program `prgno` (text "O<n>-O<n>", data type 0).
+ Then cnc_upload / cnc_upload3 read the text and cnc_upend ends it.
+ */
+short cnc_upstart(unsigned short FlibHndl, short prgno);
+
+/*
+ Starts uploading data of `type` (0 = NC programs) for the O-number range
+ `start`..`end`.
+ */
+short cnc_upstart3(unsigned short FlibHndl, short type, long startno, long endno);
+
+/*
+ Starts uploading data of `type` for the program named `prgname`
+ (e.g. "O1234" or "//CNC_MEM/USER/PATH1/O1234"); NULL sends no name.
+
+ # Safety
+ `prgname` must be NULL or a NUL-terminated string.
+ */
+short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.

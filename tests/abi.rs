@@ -367,6 +367,9 @@ rust_layouts! {
         slct, used_tool, turret_indx, zero_tl_no, t_axis_move, total_punch,
         t_axis_dec, reserve, reserves,
     }
+
+    // --- upload ---
+    ODBUP { dummy, data }
 }
 
 #[test]

@@ -163,6 +163,10 @@ const KNOWN: &[&str] = &[
     // --- tool ---
 
     // --- upload ---
+    "upstart",
+    "upstart3",
+    "upload3",
+    "upend3",
 ];
 
 fn num(s: &str) -> i64 {
@@ -340,6 +344,31 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                             }
                             data_frame(&subs)
                         }
+                        // --- upload ---
+                        Some(ftype::UPLOAD_START_REQ) => {
+                            use fwlib32::proto::upload::{StartReq, range_name};
+                            let (dtype, s, e) = match call.word() {
+                                "upstart" => (0, num(&args[0]), num(&args[0])),
+                                _ => (num(&args[0]), num(&args[1]), num(&args[2])),
+                            };
+                            let req = StartReq {
+                                dtype: dtype as i16,
+                                path,
+                                start: range_name(s as i32, e as i32),
+                                end: String::new(),
+                            };
+                            Frame::new(CLIENT_VERSION, ftype::UPLOAD_START_REQ, req.encode())
+                                .encode()
+                        }
+                        Some(ftype::UPLOAD_END_ACK) => {
+                            Frame::new(CLIENT_VERSION, ftype::UPLOAD_END_ACK, vec![]).encode()
+                        }
+                        Some(ftype::UPLOAD_ABORT) => Frame::new(
+                            CLIENT_VERSION,
+                            ftype::UPLOAD_ABORT,
+                            fwlib32::proto::upload::ABORT_BODY.to_vec(),
+                        )
+                        .encode(),
                         t => {
                             bad.push(format!(
                                 "{id} call {i}: request of unexpected type {t:04x?}"
@@ -1428,5 +1457,42 @@ proptest! {
         if b.len() < 8 {
             prop_assert!(AuxModal::from_bytes(&b).is_err());
         }
+    }
+}
+
+// --- upload ---
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn upload_start_body_roundtrip(
+        dtype in any::<i16>(),
+        path in any::<u16>(),
+        start in "[ -~]{0,255}",
+        end in "[ -~]{0,255}",
+    ) {
+        use fwlib32::proto::upload::{START_BODY_LEN, StartReq};
+        let r = StartReq { dtype, path, start, end };
+        let b = r.encode();
+        prop_assert_eq!(b.len(), START_BODY_LEN);
+        prop_assert_eq!(StartReq::decode(&b), r);
+    }
+
+    #[test]
+    fn upload_error_body_roundtrip(code in any::<i16>(), d1 in any::<u16>(), d2 in any::<u16>()) {
+        use fwlib32::proto::upload::{decode_error, error_body};
+        prop_assert_eq!(decode_error(&error_body(code, d1, d2)), (code, d1, d2));
+    }
+
+    #[test]
+    fn upload_decoders_never_panic(b in vec(any::<u8>(), 0..700)) {
+        let r = fwlib32::proto::upload::StartReq::decode(&b);
+        let _ = r.range();
+        let _ = fwlib32::proto::upload::decode_error(&b);
     }
 }

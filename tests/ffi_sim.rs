@@ -30,6 +30,9 @@ fn text(c: &[std::os::raw::c_char]) -> String {
 #[test]
 fn default_profile_reads_back() {
     let s = default_sim();
+    // The machine runs (src/sim/run.rs): at 1.25 s O1234 is in N30 G00,
+    // a move, so the status words are the profile's run 3 / motion 1.
+    s.set_elapsed(std::time::Duration::from_millis(1250));
     let p = Profile::default();
     let h = alloc(&s).expect("alloc");
     assert_ne!(h, 0);

@@ -326,7 +326,10 @@ fn tool_life_groups() {
                 unsafe { cnc_toolnum(h, g.number as c_short, u, &mut t) },
                 EW_OK
             );
-            assert_eq!((t.datano as i32, t.r#type, t.data), (g.number, u, tool.number));
+            assert_eq!(
+                (t.datano as i32, t.r#type, t.data),
+                (g.number, u, tool.number)
+            );
         }
         let mut t = ODBTLIFE4::default();
         let past = g.tools.len() as c_short + 1;

@@ -399,12 +399,12 @@ const WORDS: &[(&str, &str, Option<WordFn>)] = &[
     ("toolnum", "cnc_toolnum", Some(w_toolnum)),
     ("rdntool", "cnc_rdntool", Some(w_rdntool)),
     // --- upload ---
-    ("upstart", "cnc_upstart", None),
-    ("upstart3", "cnc_upstart3", None),
-    ("upload3", "cnc_upload3", None),
-    ("upload", "cnc_upload", None),
-    ("upend3", "cnc_upend3", None),
-    ("upend", "cnc_upend", None),
+    ("upstart", "cnc_upstart", Some(w_upstart)),
+    ("upstart3", "cnc_upstart3", Some(w_upstart3)),
+    ("upload3", "cnc_upload3", Some(w_upload3)),
+    ("upload", "cnc_upload", Some(w_upload)),
+    ("upend3", "cnc_upend3", Some(w_upend3)),
+    ("upend", "cnc_upend", Some(w_upend)),
 ];
 
 fn word(w: &str) -> Option<&'static (&'static str, &'static str, Option<WordFn>)> {
@@ -1842,3 +1842,47 @@ fn w_rdalmhistry2(p: &mut Probe, a: &[String]) -> Outcome {
 // --- tool ---
 
 // --- upload ---
+
+fn w_upstart(p: &mut Probe, a: &[String]) -> Outcome {
+    Outcome::ret(cnc_upstart(p.h(), num(a, 0) as c_short))
+}
+
+fn w_upstart3(p: &mut Probe, a: &[String]) -> Outcome {
+    Outcome::ret(cnc_upstart3(
+        p.h(),
+        num(a, 0) as c_short,
+        num(a, 1) as c_long,
+        num(a, 2) as c_long,
+    ))
+}
+
+/// `upload3 N`: cnc_upload3(h, &len, b0) with len = N; reports `length`.
+fn w_upload3(p: &mut Probe, a: &[String]) -> Outcome {
+    // The library moves 4 bytes through `long *` (the l32 convention).
+    let mut len: c_long = 0;
+    unsafe {
+        (&mut len as *mut c_long)
+            .cast::<i32>()
+            .write(num(a, 0) as i32)
+    };
+    let mut o = with_out(p, |h, b| unsafe { cnc_upload3(h, &mut len, b.cast()) });
+    let got = unsafe { (&len as *const c_long).cast::<i32>().read() };
+    o.fields.push(("length", i64::from(got)));
+    o
+}
+
+/// `upload N`: cnc_upload(h, b0, &len) with len = N; reports `length`.
+fn w_upload(p: &mut Probe, a: &[String]) -> Outcome {
+    let mut len = num(a, 0) as c_ushort;
+    let mut o = with_out(p, |h, b| unsafe { cnc_upload(h, b.cast(), &mut len) });
+    o.fields.push(("length", i64::from(len)));
+    o
+}
+
+fn w_upend3(p: &mut Probe, _: &[String]) -> Outcome {
+    Outcome::ret(cnc_upend3(p.h()))
+}
+
+fn w_upend(p: &mut Probe, _: &[String]) -> Outcome {
+    Outcome::ret(cnc_upend(p.h()))
+}

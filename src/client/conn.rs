@@ -146,6 +146,50 @@ impl Conn {
         }
     }
 
+    /// Appends bytes from the socket to `buf` and returns how many: with
+    /// `wait` None only what has already arrived (possibly none), else at
+    /// least one byte before the deadline. End of file is an error.
+    pub fn read_some(&mut self, buf: &mut Vec<u8>, wait: Option<Deadline>) -> Result<usize> {
+        let mut tmp = [0u8; 8192];
+        let r = match wait {
+            None => {
+                let _ = self.stream.set_nonblocking(true);
+                let r = self.stream.read(&mut tmp);
+                let _ = self.stream.set_nonblocking(false);
+                match r {
+                    Err(e) if e.kind() == ErrorKind::WouldBlock => return Ok(0),
+                    r => r,
+                }
+            }
+            Some(deadline) => loop {
+                let t = deadline.remaining().ok_or_else(|| {
+                    Error::socket(detail::RECV_TIMEOUT_HEADER, "receive: timed out")
+                })?;
+                let _ = self.stream.set_read_timeout(t);
+                match self.stream.read(&mut tmp) {
+                    Err(e) if e.kind() == ErrorKind::Interrupted => {}
+                    r => break r,
+                }
+            },
+        };
+        match r {
+            Ok(0) => Err(Error::socket(
+                detail::EOF,
+                "receive: connection closed by the CNC",
+            )),
+            Ok(n) => {
+                log::bytes("recv", self.number, &self.peer, &tmp[..n]);
+                buf.extend_from_slice(&tmp[..n]);
+                Ok(n)
+            }
+            Err(e) if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut) => Err(
+                Error::socket(detail::RECV_TIMEOUT_HEADER, "receive: timed out"),
+            ),
+            Err(e) if e.kind() == ErrorKind::Interrupted => Ok(0),
+            Err(e) => Err(Error::socket(detail::EOF, format!("receive: {e}"))),
+        }
+    }
+
     pub fn shutdown(&self) {
         let _ = self.stream.shutdown(std::net::Shutdown::Both);
     }

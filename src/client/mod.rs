@@ -5,6 +5,7 @@ pub mod conn;
 pub mod handles;
 pub mod log;
 pub mod pair;
+pub mod upload;
 
 use crate::error::{Error, Result};
 use crate::proto::call::Call;

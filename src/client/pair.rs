@@ -4,6 +4,7 @@
 
 use super::conn::{Conn, Deadline};
 use super::log;
+use super::upload::Conn1;
 use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
@@ -45,7 +46,12 @@ struct Conns {
 pub struct Pair {
     pub key: String,
     pub info: CncInfo,
-    io: Mutex<Option<Conns>>,
+    /// Connection 2, the data requests. One exchange at a time.
+    io: Mutex<Option<Conn>>,
+    /// Connection 1 and the program upload on it (src/client/upload.rs).
+    /// Its own lock, never held together with `io`: an upload never holds
+    /// up the data requests of other handles.
+    pub(super) c1: Mutex<Option<Conn1>>,
     /// Number of handles using the pair; the last free closes it.
     refs: Mutex<usize>,
     dead: AtomicBool,
@@ -171,7 +177,8 @@ impl Pair {
                         sysinfo,
                         option,
                     },
-                    io: Mutex::new(Some(conns)),
+                    io: Mutex::new(Some(conns.c2)),
+                    c1: Mutex::new(Some(Conn1::new(conns.c1))),
                     refs: Mutex::new(1),
                     dead: AtomicBool::new(false),
                 })
@@ -235,9 +242,11 @@ impl Pair {
     /// its handles fails with EW_SOCKET without traffic.
     pub fn kill(&self) {
         self.dead.store(true, Ordering::Release);
+        if let Some(c) = self.c1.lock().take() {
+            c.conn.shutdown();
+        }
         if let Some(c) = self.io.lock().take() {
-            c.c1.shutdown();
-            c.c2.shutdown();
+            c.shutdown();
         }
     }
 
@@ -257,21 +266,15 @@ impl Pair {
 
     pub fn exchange(&self, subs: &[ReqSub], timeout: i32) -> Result<Vec<RespSub>> {
         let mut io = self.io.lock();
-        let Some(conns) = io.as_mut() else {
-            return Err(Error::socket(
-                detail::DEAD,
-                "connection was torn down by an earlier failure",
-            ));
+        let Some(c2) = io.as_mut() else {
+            return Err(dead());
         };
-        match exchange(&mut conns.c2, subs, Deadline::after_secs(timeout)) {
+        match exchange(c2, subs, Deadline::after_secs(timeout)) {
             Ok(r) => Ok(r),
             Err(e) => {
                 if stream_broken(&e) {
-                    self.dead.store(true, Ordering::Release);
-                    if let Some(c) = io.take() {
-                        c.c1.shutdown();
-                        c.c2.shutdown();
-                    }
+                    drop(io);
+                    self.kill();
                 }
                 Err(e)
             }
@@ -285,23 +288,38 @@ impl Pair {
         if *refs > 0 {
             return Ok(());
         }
-        let taken = self.io.lock().take();
+        let c1 = self.c1.lock().take();
+        let c2 = self.io.lock().take();
         self.dead.store(true, Ordering::Release);
-        match taken {
-            Some(mut c) => {
-                let r = close(&mut c, Deadline::after_secs(timeout));
-                c.c1.shutdown();
-                c.c2.shutdown();
+        match (c1, c2) {
+            (Some(mut c1), Some(mut c2)) => {
+                let deadline = Deadline::after_secs(timeout);
+                let r = c1
+                    .close(deadline)
+                    .and_then(|_| close_conn(&mut c2, deadline));
+                c1.conn.shutdown();
+                c2.shutdown();
                 r
             }
-            None => Ok(()),
+            (c1, c2) => {
+                c1.inspect(|c| c.conn.shutdown());
+                c2.inspect(|c| c.shutdown());
+                Ok(())
+            }
         }
     }
 }
 
+pub(crate) fn dead() -> Error {
+    Error::socket(
+        detail::DEAD,
+        "connection was torn down by an earlier failure",
+    )
+}
+
 /// Socket errors and header-level protocol errors leave the stream unusable;
 /// body-level errors (count, subpacket lengths) do not.
-fn stream_broken(e: &Error) -> bool {
+pub(crate) fn stream_broken(e: &Error) -> bool {
     match e {
         Error::Socket { .. } => true,
         Error::Protocol { detail: d, .. } => *d == detail::BAD_MAGIC || *d == detail::OVERSIZE,
@@ -311,12 +329,17 @@ fn stream_broken(e: &Error) -> bool {
 
 fn close(c: &mut Conns, deadline: Deadline) -> Result<()> {
     for conn in [&mut c.c1, &mut c.c2] {
-        conn.send(
-            &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
-            deadline,
-        )?;
-        conn.recv_kind(0x02, deadline)?;
+        close_conn(conn, deadline)?;
     }
+    Ok(())
+}
+
+pub(crate) fn close_conn(conn: &mut Conn, deadline: Deadline) -> Result<()> {
+    conn.send(
+        &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
+        deadline,
+    )?;
+    conn.recv_kind(0x02, deadline)?;
     Ok(())
 }
 

@@ -437,4 +437,9 @@ impl CncService for Machine {
     ) -> Reply<crate::proto::tool::ToolList> {
         self.tl_list(path, grp, s, e)
     }
+
+    // --- upload ---
+    fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
+        self.upload_text(req)
+    }
 }

@@ -27,6 +27,8 @@ pub struct Simulator {
     addr: SocketAddr,
     shared: Arc<Shared>,
     runtime: Option<tokio::runtime::Runtime>,
+    /// The machine's start: time zero of the running program.
+    started: std::time::Instant,
 }
 
 impl Simulator {
@@ -37,7 +39,9 @@ impl Simulator {
             .thread_name("focas-sim")
             .enable_all()
             .build()?;
-        let shared = Shared::new(Box::new(Machine::new(profile)));
+        let machine = Machine::new(profile);
+        let started = machine.started;
+        let shared = Shared::new(Box::new(machine));
         let listener = runtime.block_on(tokio::net::TcpListener::bind(listen))?;
         let addr = listener.local_addr()?;
         runtime.spawn(server::serve(listener, shared.clone()));
@@ -45,7 +49,19 @@ impl Simulator {
             addr,
             shared,
             runtime: Some(runtime),
+            started,
         })
+    }
+
+    /// Stops the simulator's clock at `elapsed` after its start: every
+    /// later frame sees the machine as it is then (deterministic tests).
+    pub fn set_elapsed(&self, elapsed: std::time::Duration) {
+        self.shared.set_clock(Some(self.started + elapsed));
+    }
+
+    /// Lets the clock run in real time again.
+    pub fn real_time(&self) {
+        self.shared.set_clock(None);
     }
 
     pub fn addr(&self) -> SocketAddr {

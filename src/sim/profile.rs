@@ -269,6 +269,7 @@ impl Profile {
                 .validate(p.axes.len())
                 .map_err(|m| ProfileError::Invalid(format!("path {}: {m}", i + 1)))?;
         }
+        self.validate_run().map_err(ProfileError::Invalid)?;
         Ok(())
     }
 }

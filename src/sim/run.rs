@@ -1,12 +1,14 @@
 //! The running machine: what changes while a program is in cycle. The
 //! profile describes stored programs, the program each path runs, active
 //! alarms and scheduled events; [`PathRun`] is the live state the
-//! monitoring functions read, brought up to date by [`Machine::advance`]
+//! monitoring functions read, brought up to date by [`Machine::advance_to`]
 //! (the `CncService::advance` hook, once per request frame).
 
 use super::Machine;
+use super::profile::{Profile, StatusWords};
 use serde::Deserialize;
-use std::time::Instant;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 /// `[[program]]`: a program stored in the CNC's memory (uploadable; the
 /// one a path's `[path.cycle]` names is the one in cycle).
@@ -80,6 +82,11 @@ pub struct Event {
 }
 
 /// Live state of one path, what the monitoring functions read.
+///
+/// [`Machine::advance_to`] computes it as a pure function of the time since
+/// the simulator started (state(t)): the same elapsed time always gives the
+/// same state, whatever was polled before. It also writes the profile's
+/// status words, axis positions and spindle speeds of the path.
 #[derive(Debug, Clone, Default)]
 pub struct PathRun {
     /// O number running (cnc_rdprgnum data) and main program (mdata).
@@ -87,18 +94,364 @@ pub struct PathRun {
     pub main_program: i32,
     /// Name as cnc_exeprgname/exeprgname2 report it.
     pub program_name: String,
-    /// Sequence number of the current block (cnc_rdseqnum).
+    /// Sequence number of the current block (cnc_rdseqnum): the last N
+    /// number seen up to the current block in this pass of the program.
     pub seq: i32,
-    /// Index of the current block in the program's lines.
+    /// Index of the current block in the program's lines (`text.lines()`,
+    /// line 0 being the "O1234" line).
     pub block: usize,
     /// Blocks executed since power-on (cnc_rdblkcount).
     pub block_count: i32,
-    /// Text of the current block and the ones after it (cnc_rdexecprog).
+    /// Text of the current block and the ones after it (cnc_rdexecprog),
+    /// lines joined by '\n'.
     pub exec_text: String,
     /// Active alarms (profile `[[path.alarm]]` plus those events raised).
     pub alarms: Vec<Alarm>,
-    /// Parts made since start (the runner also adds them to the part-count parameter).
+    /// Parts made since start: M30 (or M02) blocks completed.
     pub parts: i64,
+    /// Actual feed rate of the path, mm/min (cnc_actf): the modal F of a
+    /// G01 move, the traverse speed of a G00 move, 0 when not moving.
+    pub feed: i32,
+    /// Actual speed of the first spindle, min^-1 (cnc_acts): the modal S
+    /// while M03/M04 is on, 0 after M05 or in an emergency stop.
+    pub spindle_speed: i32,
+    /// The program ended and does not repeat (status run 0).
+    pub finished: bool,
+    /// Feed hold (an event) is active on the path.
+    pub held: bool,
+    /// What the clock needs: parsed program, profile base values, caches.
+    pub(crate) engine: Engine,
+}
+
+/// The runner's own state for one path (not part of the visible model).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Engine {
+    /// The parsed program in cycle (None: the path is idle).
+    plan: Option<Arc<Plan>>,
+    /// Status words, positions and spindle speeds as the profile gives them.
+    base_status: StatusWords,
+    base_axes: Vec<[i64; 3]>,
+    base_spindles: Vec<i32>,
+    /// Held time (feed hold, emergency) memo: (t, held seconds in [0, t)).
+    held_memo: (f64, f64),
+    /// Per profile event (by index): the last occurrence reported raised.
+    raised: Vec<Option<u64>>,
+    /// The profile's own alarms were reported raised.
+    initial_reported: bool,
+    /// exec_text was built for this line.
+    text_line: Option<usize>,
+}
+
+/// Where an axis is at the end of a block: fixed by an absolute word, or
+/// relative to where the axis was when the pass of the program started.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Pos {
+    Abs(i64),
+    Rel(i64),
+}
+
+impl Pos {
+    fn at(self, start: i64) -> i64 {
+        match self {
+            Pos::Abs(v) => v,
+            Pos::Rel(d) => start + d,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    /// No motion (M, S, T, modal settings only).
+    Still,
+    Move {
+        rapid: bool,
+    },
+    Dwell,
+}
+
+/// One executable block, with the modal state after it.
+#[derive(Debug, Clone)]
+struct Block {
+    /// Index in the program's lines.
+    line: usize,
+    /// Modal N number (0: none yet in this pass).
+    seq: i32,
+    kind: Kind,
+    /// Axis end points (per profile axis of the path).
+    end: Vec<Pos>,
+    /// Modal F (None: not yet set in this pass).
+    feed: Option<i32>,
+    /// Modal S and spindle on/off (None: inherited from before the pass).
+    speed: Option<i32>,
+    spin: Option<bool>,
+    /// M30/M02: a part is counted when the block completes.
+    end_of_program: bool,
+    /// Text of this line and the following ones (cnc_rdexecprog).
+    text: String,
+}
+
+/// A program parsed for one path's axes.
+#[derive(Debug, Clone)]
+struct Plan {
+    blocks: Vec<Block>,
+    /// Axis increments per mm (10^decimals), per axis.
+    scale: Vec<f64>,
+    block_seconds: f64,
+    repeat: bool,
+    /// M30/M02 blocks per pass.
+    parts_per_pass: i64,
+}
+
+/// Lines shown by cnc_rdexecprog: the current one and the following.
+const EXEC_LINES: usize = 8;
+/// Missed alarm occurrences reported at most per event when a poller
+/// comes back after a long pause.
+const MAX_CATCH_UP: u64 = 64;
+
+/// The word value in least increments: with a decimal point, millimetres
+/// (scaled by 10^decimals); without, increments (FANUC's default).
+fn axis_value(text: &str, scale: f64) -> Option<i64> {
+    let v: f64 = text.parse().ok()?;
+    Some(if text.contains('.') {
+        (v * scale).round() as i64
+    } else {
+        v as i64
+    })
+}
+
+/// The address words of a block: comments "(...)", ';' and spaces removed.
+fn words(line: &str) -> Vec<(char, String)> {
+    let mut clean = String::with_capacity(line.len());
+    let mut depth = 0;
+    for c in line.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth = (depth - 1).max(0),
+            ';' | ' ' | '\t' if depth == 0 => {}
+            c if depth == 0 => clean.push(c.to_ascii_uppercase()),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    let mut chars = clean.chars().peekable();
+    while let Some(c) = chars.next() {
+        if !c.is_ascii_alphabetic() {
+            continue;
+        }
+        let mut v = String::new();
+        while let Some(&d) = chars.peek() {
+            if d.is_ascii_digit() || d == '.' || ((d == '-' || d == '+') && v.is_empty()) {
+                v.push(d);
+                chars.next();
+            } else {
+                break;
+            }
+        }
+        out.push((c, v));
+    }
+    out
+}
+
+impl Plan {
+    /// Parses `text` for a path with these axes. Lines that are empty, '%'
+    /// or the "O1234" program-number line are not blocks. G00/G01 (and
+    /// G02/G03, run as straight moves) with G90/G91 move the axes; G04 is
+    /// a dwell; G28 returns the named axes to machine zero.
+    fn parse(text: &str, axes: &[super::profile::Axis], cycle: &Cycle) -> Plan {
+        let lines: Vec<&str> = text.lines().collect();
+        let scale: Vec<f64> = axes
+            .iter()
+            .map(|a| 10f64.powi(i32::from(a.decimals.clamp(0, 9))))
+            .collect();
+        // Machine zero in absolute coordinates: absolute - machine offset.
+        let zero: Vec<i64> = axes
+            .iter()
+            .map(|a| i64::from(a.absolute) - i64::from(a.machine))
+            .collect();
+        let mut pos: Vec<Pos> = vec![Pos::Rel(0); axes.len()];
+        let (mut seq, mut feed, mut speed, mut spin) = (0, None, None, None);
+        let (mut rapid, mut incremental) = (true, false);
+        let mut blocks = Vec::new();
+        for (line, raw) in lines.iter().enumerate() {
+            let t = raw.trim();
+            if t.is_empty() || t.starts_with('%') || t.starts_with(['O', 'o', ':']) {
+                continue;
+            }
+            let ws = words(t);
+            let gs: Vec<i32> = ws
+                .iter()
+                .filter(|(c, _)| *c == 'G')
+                .filter_map(|(_, v)| v.parse::<f64>().ok().map(|g| g as i32))
+                .collect();
+            let (dwell, home) = (gs.contains(&4), gs.contains(&28));
+            for g in &gs {
+                match g {
+                    0 => rapid = true,
+                    1..=3 => rapid = false,
+                    90 => incremental = false,
+                    91 => incremental = true,
+                    _ => {}
+                }
+            }
+            let mut end_of_program = false;
+            let mut moved = false;
+            for (c, v) in &ws {
+                match c {
+                    'N' => seq = v.parse().unwrap_or(seq),
+                    'F' => feed = v.parse::<f64>().ok().map(|f| f as i32),
+                    'S' => speed = v.parse::<f64>().ok().map(|s| s as i32),
+                    'M' => match v.parse::<i32>().unwrap_or(-1) {
+                        3 | 4 => spin = Some(true),
+                        5 => spin = Some(false),
+                        2 | 30 => end_of_program = true,
+                        _ => {}
+                    },
+                    _ if !dwell => {
+                        let Some(i) = axes.iter().position(|a| a.name.starts_with(*c)) else {
+                            continue;
+                        };
+                        let Some(x) = axis_value(v, scale[i]) else {
+                            continue;
+                        };
+                        moved = true;
+                        pos[i] = if home {
+                            Pos::Abs(zero[i])
+                        } else if incremental {
+                            match pos[i] {
+                                Pos::Abs(p) => Pos::Abs(p + x),
+                                Pos::Rel(d) => Pos::Rel(d + x),
+                            }
+                        } else {
+                            Pos::Abs(x)
+                        };
+                    }
+                    _ => {}
+                }
+            }
+            let kind = if dwell {
+                Kind::Dwell
+            } else if moved {
+                Kind::Move {
+                    rapid: rapid || home,
+                }
+            } else {
+                Kind::Still
+            };
+            let end = (line + EXEC_LINES).min(lines.len());
+            blocks.push(Block {
+                line,
+                seq,
+                kind,
+                end: pos.clone(),
+                feed,
+                speed,
+                spin,
+                end_of_program,
+                text: lines[line..end].join("\n"),
+            });
+        }
+        let parts_per_pass = blocks.iter().filter(|b| b.end_of_program).count() as i64;
+        Plan {
+            blocks,
+            scale,
+            block_seconds: cycle.block_seconds,
+            repeat: cycle.repeat,
+            parts_per_pass,
+        }
+    }
+
+    /// Where axis `i` starts pass `pass` of the program.
+    fn pass_start(&self, i: usize, pass: u64, base: i64) -> i64 {
+        match self.blocks.last().map(|b| b.end[i]) {
+            None => base,
+            Some(Pos::Abs(v)) => {
+                if pass == 0 {
+                    base
+                } else {
+                    v
+                }
+            }
+            Some(Pos::Rel(d)) => base.saturating_add(d.saturating_mul(pass as i64)),
+        }
+    }
+}
+
+/// When an event's condition holds: occurrence k covers
+/// [at + k·every, at + k·every + duration); duration 0 = for ever after `at`.
+fn occurrence(e: &Event, t: f64) -> Option<u64> {
+    if t < e.at {
+        return None;
+    }
+    let k = if e.every > 0.0 {
+        ((t - e.at) / e.every).floor() as u64
+    } else {
+        0
+    };
+    Some(k)
+}
+
+fn active(e: &Event, t: f64) -> bool {
+    match occurrence(e, t) {
+        None => false,
+        Some(_) if e.duration <= 0.0 => true,
+        Some(k) => t - (e.at + k as f64 * e.every) < e.duration,
+    }
+}
+
+/// Seconds of [a, b) covered by the union of the events' conditions.
+fn covered(events: &[&Event], a: f64, b: f64) -> f64 {
+    if b <= a {
+        return 0.0;
+    }
+    let mut iv: Vec<(f64, f64)> = Vec::new();
+    for e in events {
+        if e.duration <= 0.0 || (e.every > 0.0 && e.duration >= e.every) {
+            iv.push((e.at, f64::INFINITY));
+            continue;
+        }
+        if e.every <= 0.0 {
+            iv.push((e.at, e.at + e.duration));
+            continue;
+        }
+        let mut k = if a > e.at {
+            ((a - e.at) / e.every).floor()
+        } else {
+            0.0
+        };
+        loop {
+            let s = e.at + k * e.every;
+            if s >= b {
+                break;
+            }
+            iv.push((s, s + e.duration));
+            k += 1.0;
+        }
+    }
+    iv.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let (mut sum, mut cur): (f64, Option<(f64, f64)>) = (0.0, None);
+    for (s, e) in iv {
+        let (s, e) = (s.max(a), e.min(b));
+        if e <= s {
+            continue;
+        }
+        cur = match cur {
+            Some((cs, ce)) if s <= ce => Some((cs, ce.max(e))),
+            Some((cs, ce)) => {
+                sum += ce - cs;
+                Some((s, e))
+            }
+            None => Some((s, e)),
+        };
+    }
+    if let Some((cs, ce)) = cur {
+        sum += ce - cs;
+    }
+    sum
+}
+
+/// The event's path as an index (path 0 means path 1).
+fn event_path(e: &Event) -> usize {
+    usize::from(e.path.max(1)) - 1
 }
 
 impl Machine {
@@ -112,23 +465,273 @@ impl Machine {
                     .programs
                     .iter()
                     .find(|s| s.number == p.cycle.program);
+                let plan = prog
+                    .filter(|_| p.cycle.program != 0)
+                    .map(|s| Arc::new(Plan::parse(&s.text, &p.axes, &p.cycle)));
                 PathRun {
                     program: p.cycle.program,
                     main_program: p.cycle.program,
                     program_name: prog.map(StoredProgram::display_name).unwrap_or_default(),
                     exec_text: prog
-                        .map(|s| s.text.lines().take(8).collect::<Vec<_>>().join("\n"))
+                        .map(|s| {
+                            s.text
+                                .lines()
+                                .take(EXEC_LINES)
+                                .collect::<Vec<_>>()
+                                .join("\n")
+                        })
                         .unwrap_or_default(),
                     alarms: p.alarms.clone(),
+                    spindle_speed: p.spindles.first().map_or(0, |s| s.speed),
+                    engine: Engine {
+                        plan,
+                        base_status: p.status,
+                        base_axes: p
+                            .axes
+                            .iter()
+                            .map(|a| [a.absolute, a.machine, a.relative].map(i64::from))
+                            .collect(),
+                        base_spindles: p.spindles.iter().map(|s| s.speed).collect(),
+                        raised: vec![None; profile.events.len()],
+                        ..Engine::default()
+                    },
                     ..PathRun::default()
                 }
             })
             .collect()
     }
 
-    /// Brings the live state up to `now`.
+    /// Brings the live state up to `now`: a pure function of the time
+    /// since [`Machine::started`] (a `now` before it counts as 0).
     pub fn advance_to(&mut self, now: Instant) {
-        let _ = now.saturating_duration_since(self.started);
+        let since = now.saturating_duration_since(self.started);
+        let t = since.as_secs_f64();
+        let mut raised: Vec<(u16, Alarm, Duration)> = Vec::new();
+        for i in 0..self.run.len() {
+            self.advance_path(i, t, &mut raised);
+        }
+        for (path, alarm, at) in raised {
+            self.on_alarm_raised(path, &alarm, at);
+        }
+    }
+
+    /// An alarm became active on `path` (1-based) at `at` after the start:
+    /// the profile's own alarms at the first advance (0 s), an event's
+    /// alarm at each occurrence (also those that came and went between two
+    /// polls, at most 64 per event). THE single hook for the alarm history:
+    /// connect `self.record_alarm(...)` here.
+    fn on_alarm_raised(&mut self, path: u16, alarm: &Alarm, at: Duration) {
+        let _ = (path, alarm, at);
+    }
+
+    fn advance_path(&mut self, i: usize, t: f64, raised: &mut Vec<(u16, Alarm, Duration)>) {
+        let profile = &mut self.profile;
+        let run = &mut self.run[i];
+        let eng = &mut run.engine;
+        let path_no = i as u16 + 1;
+        let mine: Vec<(usize, &Event)> = profile
+            .events
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| event_path(e) == i)
+            .collect();
+
+        // Alarms: the profile's, then the events' active now.
+        if !eng.initial_reported {
+            eng.initial_reported = true;
+            for a in &profile.paths[i].alarms {
+                raised.push((path_no, a.clone(), Duration::ZERO));
+            }
+        }
+        let mut alarms = profile.paths[i].alarms.clone();
+        let (mut hold, mut emergency, mut mode) = (false, false, None);
+        for (k, e) in &mine {
+            let now_k = occurrence(e, t);
+            if e.action == "alarm" {
+                if let (Some(a), Some(kn)) = (&e.alarm, now_k) {
+                    let first = match eng.raised.get(*k).copied().flatten() {
+                        Some(last) if last >= kn => kn + 1,
+                        Some(last) => last + 1,
+                        None => 0,
+                    };
+                    for occ in first.max((kn + 1).saturating_sub(MAX_CATCH_UP))..=kn {
+                        let at = e.at + occ as f64 * e.every;
+                        raised.push((path_no, a.clone(), Duration::from_secs_f64(at)));
+                    }
+                }
+                if let Some(slot) = eng.raised.get_mut(*k) {
+                    *slot = now_k;
+                }
+            }
+            if !active(e, t) {
+                continue;
+            }
+            match e.action.as_str() {
+                "alarm" => alarms.extend(e.alarm.clone()),
+                "feed_hold" => hold = true,
+                "emergency" => emergency = true,
+                "mode" => mode = Some(e.value as i16),
+                _ => {}
+            }
+        }
+
+        let mut st = eng.base_status;
+        if !alarms.is_empty() {
+            st.alarm = 1;
+        }
+        if emergency {
+            st.emergency = 1;
+        }
+        if let Some(m) = mode {
+            st.aut = m;
+        }
+        run.alarms = alarms;
+        run.held = hold && !emergency;
+
+        let Some(plan) = eng.plan.clone() else {
+            if run.held {
+                st.run = 2;
+                st.motion = 0;
+            }
+            if emergency {
+                st.run = 0;
+                st.motion = 0;
+            }
+            profile.paths[i].status = st;
+            return;
+        };
+
+        // The program clock: elapsed time less the time held (feed hold,
+        // emergency stop), memoised so each frame only sweeps its own span.
+        let stops: Vec<&Event> = mine
+            .iter()
+            .map(|(_, e)| *e)
+            .filter(|e| e.action == "feed_hold" || e.action == "emergency")
+            .collect();
+        let held = if stops.is_empty() {
+            0.0
+        } else {
+            let (mt, mh) = eng.held_memo;
+            let h = if t >= mt {
+                mh + covered(&stops, mt, t)
+            } else {
+                covered(&stops, 0.0, t)
+            };
+            eng.held_memo = (t, h);
+            h
+        };
+        let tp = (t - held).max(0.0);
+        let n = plan.blocks.len() as u64;
+        if n == 0 {
+            profile.paths[i].status = st;
+            return;
+        }
+        let done = (tp / plan.block_seconds).floor() as u64;
+        let (pass, k, frac, finished) = if plan.repeat {
+            (
+                done / n,
+                (done % n) as usize,
+                tp / plan.block_seconds - done as f64,
+                false,
+            )
+        } else if done >= n {
+            (0, n as usize - 1, 1.0, true)
+        } else {
+            (
+                0,
+                done as usize,
+                tp / plan.block_seconds - done as f64,
+                false,
+            )
+        };
+        let b = &plan.blocks[k];
+        let before = (k > 0).then(|| &plan.blocks[k - 1]);
+        let last = plan.blocks.last().expect("n > 0");
+        let stopped = run.held || emergency || finished;
+        let moving = matches!(b.kind, Kind::Move { .. }) && !stopped;
+
+        // Axes: interpolate from the previous block's end point to this one's.
+        let axes = &mut profile.paths[i].axes;
+        let mut dist2 = 0.0;
+        for (j, ax) in axes.iter_mut().enumerate() {
+            let Some(base) = eng.base_axes.get(j) else {
+                continue;
+            };
+            let start = plan.pass_start(j, pass, base[0]);
+            let from = before.map_or(start, |p| p.end[j].at(start));
+            let to = b.end[j].at(start);
+            let cur = if matches!(b.kind, Kind::Move { .. }) {
+                from + ((to - from) as f64 * frac.clamp(0.0, 1.0)).round() as i64
+            } else {
+                to
+            };
+            let mm = (to - from) as f64 / plan.scale[j];
+            dist2 += mm * mm;
+            let clamp = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+            ax.absolute = clamp(cur);
+            ax.machine = clamp(cur + base[1] - base[0]);
+            ax.relative = clamp(cur + base[2] - base[0]);
+            ax.distance = if finished { 0 } else { clamp(to - cur) };
+        }
+
+        // Feed and spindle: modal values, inherited from the previous pass
+        // (or the profile) until the program sets them.
+        let feed = b
+            .feed
+            .or(if pass > 0 { last.feed } else { None })
+            .unwrap_or(0);
+        run.feed = match b.kind {
+            _ if !moving => 0,
+            Kind::Move { rapid: false } => feed,
+            _ => (dist2.sqrt() * 60.0 / plan.block_seconds).round() as i32,
+        };
+        let base_speed = eng.base_spindles.first().copied().unwrap_or(0);
+        let inherit = |x: Option<i32>, y: Option<bool>| -> (i32, bool) {
+            let prev_s = if pass > 0 { last.speed } else { None };
+            let prev_on = if pass > 0 { last.spin } else { None };
+            (
+                x.or(prev_s).unwrap_or(base_speed),
+                y.or(prev_on).unwrap_or(base_speed != 0),
+            )
+        };
+        let (s, on) = inherit(b.speed, b.spin);
+        run.spindle_speed = if on && !emergency { s } else { 0 };
+        if let Some(sp) = profile.paths[i].spindles.first_mut() {
+            sp.speed = run.spindle_speed;
+        }
+
+        // Block, counters, text.
+        run.seq = b.seq;
+        run.block = b.line;
+        run.finished = finished;
+        run.block_count = i32::try_from(if finished { n } else { done }).unwrap_or(i32::MAX);
+        let ends_before = plan.blocks[..k].iter().filter(|x| x.end_of_program).count() as i64;
+        run.parts = if finished {
+            plan.parts_per_pass
+        } else {
+            (pass as i64).saturating_mul(plan.parts_per_pass) + ends_before
+        };
+        if eng.text_line != Some(b.line) {
+            eng.text_line = Some(b.line);
+            run.exec_text = b.text.clone();
+        }
+
+        // Status words.
+        if emergency || finished {
+            st.run = 0;
+            st.motion = 0;
+        } else if run.held {
+            st.run = 2;
+            st.motion = 0;
+        } else {
+            st.run = 3;
+            st.motion = match b.kind {
+                Kind::Move { .. } => 1,
+                Kind::Dwell => 2,
+                Kind::Still => 0,
+            };
+        }
+        profile.paths[i].status = st;
     }
 }
 
@@ -140,5 +743,162 @@ impl StoredProgram {
         } else {
             self.name.clone()
         }
+    }
+}
+
+/// Event actions the runner knows.
+pub const ACTIONS: [&str; 4] = ["alarm", "feed_hold", "mode", "emergency"];
+
+impl Profile {
+    /// The running-machine sections: programs, cycles, events.
+    pub(super) fn validate_run(&self) -> Result<(), String> {
+        for (k, p) in self.programs.iter().enumerate() {
+            if !(1..=99_999_999).contains(&p.number) {
+                return Err(format!("[[program]] {}: number must be 1..99999999", k + 1));
+            }
+            if self.programs[..k].iter().any(|q| q.number == p.number) {
+                return Err(format!("[[program]] O{:04} is given twice", p.number));
+            }
+            if !p.text.is_ascii() {
+                return Err(format!("[[program]] O{:04}: text must be ASCII", p.number));
+            }
+        }
+        for (i, p) in self.paths.iter().enumerate() {
+            let c = &p.cycle;
+            if c.program != 0 && !self.programs.iter().any(|q| q.number == c.program) {
+                return Err(format!(
+                    "path {}: cycle.program = {} names no [[program]] with that number",
+                    i + 1,
+                    c.program
+                ));
+            }
+            if !(c.block_seconds.is_finite() && c.block_seconds > 0.0) {
+                return Err(format!(
+                    "path {}: cycle.block_seconds must be a positive number of seconds",
+                    i + 1
+                ));
+            }
+        }
+        for (k, e) in self.events.iter().enumerate() {
+            let what = format!("[[event]] {} ({:?})", k + 1, e.action);
+            if !ACTIONS.contains(&e.action.as_str()) {
+                return Err(format!(
+                    "{what}: action must be one of {}",
+                    ACTIONS.join(", ")
+                ));
+            }
+            if usize::from(e.path) > self.paths.len() {
+                return Err(format!(
+                    "{what}: path {} does not exist (the profile has {} path(s))",
+                    e.path,
+                    self.paths.len()
+                ));
+            }
+            for (name, v) in [("at", e.at), ("every", e.every), ("duration", e.duration)] {
+                if !(v.is_finite() && v >= 0.0) {
+                    return Err(format!("{what}: {name} must be a number of seconds >= 0"));
+                }
+            }
+            if e.every > 0.0 && e.every < 0.01 {
+                return Err(format!("{what}: every must be 0 (once) or at least 0.01 s"));
+            }
+            if e.action == "alarm" && e.alarm.is_none() {
+                return Err(format!(
+                    "{what}: an alarm event needs alarm = {{ number = .., message = .. }}"
+                ));
+            }
+            if e.action != "alarm" && e.alarm.is_some() {
+                return Err(format!("{what}: only an \"alarm\" event takes an alarm"));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Machine {
+    /// What the CNC pushes for an upload request (0x1501): the stored
+    /// programs of the O-number range ("O<s>-O<e>") or of the name
+    /// ("N:<name>": a program's name, "O<number>" or the last part of its
+    /// path name) as a CNC punches them. Errors (the CNC's error frame; a
+    /// real CNC's codes are not known): data type other than 0 (NC
+    /// program) EW_ATTRIB, no such path EW_PATH, a range with start > end
+    /// EW_NUMBER, no program found or a name not understood EW_DATA.
+    pub fn upload_text(
+        &self,
+        req: &crate::proto::upload::StartReq,
+    ) -> super::service::Reply<Vec<u8>> {
+        use super::service::CncError;
+        use crate::ew::{EW_ATTRIB, EW_DATA};
+        if req.dtype != 0 {
+            return Err(CncError::new(EW_ATTRIB));
+        }
+        if req.path == 0 || usize::from(req.path) > self.profile.paths.len() {
+            return Err(CncError::PATH);
+        }
+        let mut found: Vec<&StoredProgram> = if let Some(name) = req.start.strip_prefix("N:") {
+            self.profile
+                .programs
+                .iter()
+                .filter(|p| {
+                    !name.is_empty()
+                        && (p.display_name() == name
+                            || format!("O{:04}", p.number) == name
+                            || format!("O{}", p.number) == name
+                            || p.display_name().rsplit('/').next() == Some(name))
+                })
+                .collect()
+        } else {
+            let (s, e) = req.range().ok_or(CncError::new(EW_DATA))?;
+            if s > e {
+                return Err(CncError::NUMBER);
+            }
+            self.profile
+                .programs
+                .iter()
+                .filter(|p| (s..=e).contains(&i64::from(p.number)))
+                .collect()
+        };
+        if found.is_empty() {
+            return Err(CncError::new(EW_DATA));
+        }
+        found.sort_by_key(|p| p.number);
+        Ok(crate::proto::upload::punch(
+            found.iter().map(|p| p.text.as_str()),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn raised_at(m: &mut Machine, t: f64) -> Vec<(u16, i32, f64)> {
+        let mut v = Vec::new();
+        m.advance_path(0, t, &mut v);
+        v.into_iter()
+            .map(|(p, a, d)| (p, a.number, d.as_secs_f64()))
+            .collect()
+    }
+
+    #[test]
+    fn the_alarm_hook_sees_every_occurrence_once() {
+        let mut p = Profile::default();
+        let ev = p.events[0].alarm.as_ref().expect("an alarm event").number;
+        p.paths[0].alarms.push(Alarm {
+            number: 9001,
+            ..Alarm::default()
+        });
+        let mut m = Machine::new(p);
+        // The profile's alarm at the first advance; the event (30 s, every 60 s) later.
+        assert_eq!(raised_at(&mut m, 1.0), vec![(1, 9001, 0.0)]);
+        assert_eq!(raised_at(&mut m, 29.0), vec![]);
+        assert_eq!(raised_at(&mut m, 31.0), vec![(1, ev, 30.0)]);
+        assert_eq!(raised_at(&mut m, 35.0), vec![]);
+        // A long pause: the occurrences in between, in order.
+        assert_eq!(
+            raised_at(&mut m, 215.0),
+            vec![(1, ev, 90.0), (1, ev, 150.0), (1, ev, 210.0)]
+        );
+        assert_eq!(raised_at(&mut m, 215.0), vec![]);
     }
 }

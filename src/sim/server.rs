@@ -14,6 +14,8 @@ use tokio::net::{TcpListener, TcpStream};
 pub struct Shared {
     pub cnc: Mutex<Box<dyn CncService>>,
     sessions: AtomicUsize,
+    /// A frozen clock (tests): frames are answered as at this instant.
+    clock: Mutex<Option<std::time::Instant>>,
 }
 
 impl Shared {
@@ -21,7 +23,16 @@ impl Shared {
         Arc::new(Shared {
             cnc: Mutex::new(cnc),
             sessions: AtomicUsize::new(0),
+            clock: Mutex::new(None),
         })
+    }
+    /// Freezes the clock data frames are answered at (None: real time again).
+    pub fn set_clock(&self, at: Option<std::time::Instant>) {
+        *self.clock.lock() = at;
+    }
+    /// The instant a data frame is answered at.
+    pub fn now(&self) -> std::time::Instant {
+        self.clock.lock().unwrap_or_else(std::time::Instant::now)
     }
     /// FOCAS sessions open now (connection-1 opens not yet closed).
     pub fn sessions(&self) -> usize {
@@ -109,11 +120,44 @@ async fn connection(mut stream: TcpStream, shared: Arc<Shared>) {
                 return;
             }
             ftype::ID_REQ => Some(Frame::new(version, ftype::ID_RESP, frame.body.clone())),
+            ftype::UPLOAD_START_REQ => {
+                // --- upload ---
+                // The answer, then the whole upload in one write, as the fake
+                // CNC of the recordings did; the client's 0x1702 / 0x1804
+                // need no answer (ignored below).
+                let req = crate::proto::upload::StartReq::decode(&frame.body);
+                let r = shared.cnc.lock().upload(&req);
+                let mut out = Frame::new(version, ftype::UPLOAD_START_RESP, Vec::new()).encode();
+                match r {
+                    Ok(text) => {
+                        let max = crate::proto::frame::max_body_len(version);
+                        for chunk in text.chunks(max) {
+                            out.extend(
+                                Frame::new(version, ftype::UPLOAD_DATA, chunk.to_vec()).encode(),
+                            );
+                        }
+                        out.extend(Frame::new(version, ftype::UPLOAD_END, Vec::new()).encode());
+                    }
+                    Err(e) => out.extend(
+                        Frame::new(
+                            version,
+                            ftype::UPLOAD_ABORT,
+                            crate::proto::upload::error_body(e.code, e.detail.0, e.detail.1),
+                        )
+                        .encode(),
+                    ),
+                }
+                if stream.write_all(&out).await.is_err() {
+                    return;
+                }
+                None
+            }
             ftype::DATA_REQ => match decode_request(&frame.body) {
                 Ok(subs) => {
                     let resp = {
+                        let now = shared.now();
                         let mut cnc = shared.cnc.lock();
-                        cnc.advance(std::time::Instant::now());
+                        cnc.advance(now);
                         subs.iter()
                             .map(|s| dispatch(cnc.as_mut(), s))
                             .collect::<Vec<_>>()

@@ -325,6 +325,13 @@ pub trait CncService: Send {
     fn tool_list(&mut self, path: u16, grp: i32, s: i32, e: i32) -> Reply<ToolList> {
         unsupported()
     }
+
+    // --- upload ---
+    /// Program upload on connection 1 (0x1501): the text to push in 0x1604
+    /// frames, or the error for the CNC's error frame.
+    fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
+        unsupported()
+    }
 }
 
 fn enc<T: Wire>(r: Reply<T>) -> Reply<Vec<u8>> {

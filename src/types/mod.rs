@@ -18,10 +18,12 @@ mod position;
 mod program;
 mod status;
 mod tool;
+mod upload;
 
 #[allow(unused_imports)]
 pub use {
     alarm::*, macros::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
+    upload::*,
 };
 
 /// FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.

@@ -1,0 +1,295 @@
+//! Program upload on connection 1 (SPEC.md §2, §5.3), client side.
+//!
+//! One upload at a time per connection pair, owned by the handle that
+//! started it. Connection 1 has its own lock (`Pair::c1`), never held with
+//! connection 2's, so data requests of every handle go on during an upload.
+//! Upload calls never wait for data: what has arrived is handed out, and
+//! nothing yet is EW_BUFFER, as FANUC's library does. A handle freed in the
+//! middle of its upload leaves it to be aborted by the next upload call of
+//! any handle of the pair (or closed with the pair by the last free).
+
+use super::conn::{Conn, Deadline};
+use super::handles;
+use super::pair::{Pair, close_conn, dead, stream_broken};
+use crate::error::{Error, Result};
+use crate::ew::{EW_BUFFER, EW_BUSY, EW_FUNC, EW_LENGTH, EW_RESET};
+use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
+use crate::proto::upload::{
+    ABORT_BODY, KIND_DATA, KIND_END, KIND_ERROR, KIND_START, MIN_READ, StartReq, decode_error,
+};
+use std::time::{Duration, Instant};
+
+/// Connection 1 with its read buffer (frames are taken from it whole, so
+/// a frame half-read by a non-blocking upload call is completed later).
+pub struct Conn1 {
+    pub(super) conn: Conn,
+    rbuf: Vec<u8>,
+    upload: Option<Upload>,
+}
+
+struct Upload {
+    /// The handle that started it.
+    owner: u16,
+    /// Text of the current 0x1604 frame not yet handed out, from `pos`.
+    text: Vec<u8>,
+    pos: usize,
+    /// How it ended: EW_RESET after the CNC's end frame, or the CNC's
+    /// error; every later upload call returns it.
+    ended: Option<Error>,
+    /// Since when upload calls have found nothing (the timeout runs from there).
+    empty_since: Option<Instant>,
+}
+
+/// Detail words of the upload stall timeout (FANUC's, [dis]).
+const STALL: (i16, i16) = (9, 4);
+
+impl Conn1 {
+    pub fn new(conn: Conn) -> Conn1 {
+        Conn1 {
+            conn,
+            rbuf: Vec::new(),
+            upload: None,
+        }
+    }
+
+    /// The next whole frame: with `wait` None only if it has fully arrived.
+    fn next_frame(&mut self, wait: Option<Deadline>) -> Result<Option<Frame>> {
+        loop {
+            if let Some((f, used)) = Frame::decode(&self.rbuf).map_err(Error::from)? {
+                self.rbuf.drain(..used);
+                return Ok(Some(f));
+            }
+            if self.conn.read_some(&mut self.rbuf, wait)? == 0 {
+                return Ok(None);
+            }
+        }
+    }
+
+    /// Waits for a frame of kind `kind`, discarding others (stale upload data).
+    fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
+        loop {
+            let f = self.next_frame(Some(deadline))?.expect("waited");
+            if (f.ftype >> 8) as u8 == kind {
+                return Ok(f);
+            }
+            crate::log_at!(
+                super::log::ERRORS,
+                "conn1 discarded a frame of type {:04x} while waiting for {kind:02x}xx",
+                f.ftype
+            );
+        }
+    }
+
+    fn send(&mut self, ftype: u16, body: Vec<u8>, deadline: Deadline) -> Result<()> {
+        self.conn
+            .send(&Frame::new(CLIENT_VERSION, ftype, body), deadline)
+    }
+
+    /// The close handshake, through the read buffer.
+    pub(super) fn close(&mut self, deadline: Deadline) -> Result<()> {
+        if self.rbuf.is_empty() {
+            return close_conn(&mut self.conn, deadline);
+        }
+        self.send(ftype::CLOSE_REQ, Vec::new(), deadline)?;
+        self.recv_kind(0x02, deadline).map(|_| ())
+    }
+
+    /// Aborts an unfinished upload (0x1804, 8 zero bytes, no answer awaited).
+    fn abort(&mut self, deadline: Deadline) -> Result<()> {
+        match self.upload.take() {
+            Some(u) if u.ended.is_none() => {
+                self.send(ftype::UPLOAD_ABORT, ABORT_BODY.to_vec(), deadline)
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+fn no_upload() -> Error {
+    Error::local(EW_FUNC, "no upload started (cnc_upstart first)")
+}
+
+fn busy() -> Error {
+    Error::local(EW_BUSY, "another upload is running on this connection")
+}
+
+impl Pair {
+    /// Runs `f` on connection 1; a broken stream tears the pair down.
+    fn with_c1<T>(&self, f: impl FnOnce(&mut Conn1) -> Result<T>) -> Result<T> {
+        let mut g = self.c1.lock();
+        let c1 = g.as_mut().ok_or_else(dead)?;
+        let r = f(c1);
+        if let Err(e) = &r {
+            if stream_broken(e) {
+                drop(g);
+                self.kill();
+            }
+        }
+        r
+    }
+
+    /// Whether handle `h` still exists on this pair.
+    fn owns(&self, h: u16) -> bool {
+        handles::get(h).is_ok_and(|x| std::ptr::eq(&*x.pair, self))
+    }
+
+    /// Drops an upload whose handle was freed (aborting it), then checks
+    /// that `h` may act on the pair's upload: Ok(true) when `h` owns the
+    /// running one, Ok(false) when there is none.
+    fn settle(&self, c1: &mut Conn1, h: u16, deadline: Deadline) -> Result<bool> {
+        match &c1.upload {
+            None => Ok(false),
+            Some(u) if u.owner == h => Ok(true),
+            Some(u) if self.owns(u.owner) => Err(busy()),
+            Some(_) => c1.abort(deadline).map(|_| false),
+        }
+    }
+
+    /// cnc_upstart and relatives: 0x1501, then any 0x15xx answer.
+    pub fn upload_start(&self, h: u16, req: &StartReq, timeout: i32) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            if self.settle(c1, h, deadline)? {
+                return Err(busy());
+            }
+            c1.send(ftype::UPLOAD_START_REQ, req.encode(), deadline)?;
+            c1.recv_kind(KIND_START, deadline)?;
+            c1.upload = Some(Upload {
+                owner: h,
+                text: Vec::new(),
+                pos: 0,
+                ended: None,
+                empty_since: None,
+            });
+            Ok(())
+        })
+    }
+
+    /// cnc_upload3: copies upload text into `out` and returns how much.
+    /// As FANUC's library: the room is `out.len()` rounded down to whole
+    /// 256 bytes; frames that have arrived are copied (one that does not
+    /// fit is split, its rest comes next time) while 256 bytes or more of
+    /// room are left. Nothing yet: EW_BUFFER; after the end: EW_RESET.
+    pub fn upload_read(&self, h: u16, out: &mut [u8], timeout: i32) -> Result<usize> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            if !self.settle(c1, h, deadline)? {
+                return Err(no_upload());
+            }
+            if out.len() < MIN_READ {
+                return Err(Error::local(EW_LENGTH, "length must be at least 256"));
+            }
+            // FANUC's library uses whole 256-byte units of the room given.
+            let room = out.len() / MIN_READ * MIN_READ;
+            let out = &mut out[..room];
+            let mut total = 0;
+            loop {
+                let u = c1.upload.as_mut().expect("settled");
+                if let Some(e) = &u.ended {
+                    return Err(e.clone());
+                }
+                let n = (u.text.len() - u.pos).min(out.len() - total);
+                if n > 0 {
+                    out[total..total + n].copy_from_slice(&u.text[u.pos..u.pos + n]);
+                    u.pos += n;
+                    total += n;
+                    if out.len() - total >= MIN_READ {
+                        continue;
+                    }
+                    break;
+                }
+                let Some(f) = c1.next_frame(None)? else {
+                    if total > 0 {
+                        break;
+                    }
+                    let u = c1.upload.as_mut().expect("settled");
+                    let since = *u.empty_since.get_or_insert_with(Instant::now);
+                    if timeout > 0 && since.elapsed() > Duration::from_secs(timeout as u64) {
+                        // As FANUC: abort, then the sockets are closed
+                        // (a socket error tears the pair down).
+                        let _ = c1.abort(Deadline::after_secs(1));
+                        return Err(Error::socket(STALL, "upload: no data within the timeout"));
+                    }
+                    return Err(Error::local(EW_BUFFER, "no upload data yet"));
+                };
+                let u = c1.upload.as_mut().expect("settled");
+                match (f.ftype >> 8) as u8 {
+                    KIND_DATA => {
+                        u.text = f.body;
+                        u.pos = 0;
+                    }
+                    KIND_END => {
+                        u.ended = Some(Error::Cnc {
+                            code: EW_RESET,
+                            detail1: 0,
+                            detail2: 0,
+                        });
+                        c1.send(ftype::UPLOAD_END_ACK, Vec::new(), deadline)?;
+                        if total > 0 {
+                            break;
+                        }
+                    }
+                    KIND_ERROR => {
+                        let (code, detail1, detail2) = decode_error(&f.body);
+                        let code = if code == 0 { EW_RESET } else { code };
+                        u.ended = Some(Error::Cnc {
+                            code,
+                            detail1,
+                            detail2,
+                        });
+                    }
+                    _ => crate::log_at!(
+                        super::log::ERRORS,
+                        "conn1 discarded a frame of type {:04x} during an upload",
+                        f.ftype
+                    ),
+                }
+            }
+            if let Some(u) = c1.upload.as_mut() {
+                u.empty_since = None;
+            }
+            Ok(total)
+        })
+    }
+
+    /// cnc_upend3: ends the handle's upload; before the CNC's end frame it
+    /// sends the 0x1804 abort. After a CNC error frame, that error.
+    pub fn upload_end(&self, h: u16, timeout: i32) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            if !self.settle(c1, h, deadline)? {
+                return Err(no_upload());
+            }
+            let u = c1.upload.as_ref().expect("settled");
+            if let Some(e) = &u.ended {
+                let e = e.clone();
+                c1.upload = None;
+                return match e {
+                    Error::Cnc { code: EW_RESET, .. } => Ok(()),
+                    e => Err(e),
+                };
+            }
+            // FANUC looks at one frame that has arrived: the end is
+            // acknowledged, an error returned, anything else aborted.
+            match c1.next_frame(None)? {
+                Some(f) if (f.ftype >> 8) as u8 == KIND_END => {
+                    c1.upload = None;
+                    c1.send(ftype::UPLOAD_END_ACK, Vec::new(), deadline)
+                }
+                Some(f) if (f.ftype >> 8) as u8 == KIND_ERROR => {
+                    c1.upload = None;
+                    let (code, detail1, detail2) = decode_error(&f.body);
+                    match code {
+                        0 => Ok(()),
+                        code => Err(Error::Cnc {
+                            code,
+                            detail1,
+                            detail2,
+                        }),
+                    }
+                }
+                _ => c1.abort(deadline),
+            }
+        })
+    }
+}
