@@ -385,3 +385,64 @@ alarm = { number = 1001, type = 19, message = "COOLANT LEVEL LOW" }
     assert_eq!(status(h).run, 2, "the same time gives the same state");
     assert_eq!(cnc_freelibhndl(h), EW_OK);
 }
+
+fn rdparam_long(h: c_ushort, number: i16) -> i32 {
+    let mut p = std::mem::MaybeUninit::<IODBPSD>::zeroed();
+    assert_eq!(
+        unsafe { cnc_rdparam(h, number, 0, 8, p.as_mut_ptr()) },
+        EW_OK
+    );
+    unsafe { p.assume_init().u.ldata }
+}
+
+fn history_count(h: c_ushort) -> u16 {
+    let mut n: c_ushort = 0;
+    assert_eq!(unsafe { cnc_rdalmhisno(h, &mut n) }, EW_OK);
+    n
+}
+
+/// What the running program drives beyond status and positions: feed and
+/// spindle readings, the part counter (parameter 6711) and the alarm history.
+#[test]
+fn feed_parts_and_alarm_history_follow_the_program() {
+    let extra = r#"
+[[event]]
+at = 20.0
+duration = 5.0
+action = "alarm"
+alarm = { number = 500, type = 4, axis = 1, message = "OVER TRAVEL ( SOFT 1 ) +X" }
+
+[param]
+[[param.parameter]]
+number = 6711
+kind = "2word"
+values = [100]
+"#;
+    let s = Simulator::start(profile(extra), "127.0.0.1:0").expect("simulator");
+    s.set_elapsed(Duration::from_secs_f64(1.5)); // N20 G01 X20. F300 S1000 M03
+    let h = alloc(&s);
+    let mut f = ODBACT::default();
+    assert_eq!(unsafe { cnc_actf(h, &mut f) }, EW_OK);
+    assert_eq!(f.data, 300, "programmed feed while cutting");
+    let mut sp = ODBACT::default();
+    assert_eq!(unsafe { cnc_acts(h, &mut sp) }, EW_OK);
+    assert_eq!(sp.data, 1000, "S1000 M03");
+    let parts0 = rdparam_long(h, 6711);
+    assert_eq!(parts0, 100);
+    let hist0 = history_count(h);
+
+    s.set_elapsed(Duration::from_secs(21));
+    assert_eq!(
+        history_count(h),
+        hist0 + 1,
+        "the raised alarm is in the history"
+    );
+    let mut m = Machine::new(profile(extra));
+    at(&mut m, 21.0);
+    let made = m.run[0].parts as i32;
+    assert!(made > 0);
+    assert_eq!(rdparam_long(h, 6711), 100 + made, "one count per M30");
+    s.set_elapsed(Duration::from_secs(21));
+    assert_eq!(rdparam_long(h, 6711), 100 + made, "counted once");
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+}

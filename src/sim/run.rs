@@ -10,6 +10,9 @@ use serde::Deserialize;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+/// The parameter a FANUC CNC counts machined parts in.
+const PART_COUNT_PARAM: i32 = 6711;
+
 /// `[[program]]`: a program stored in the CNC's memory (uploadable; the
 /// one a path's `[path.cycle]` names is the one in cycle).
 #[derive(Debug, Clone, Deserialize, Default)]
@@ -132,6 +135,11 @@ pub(crate) struct Engine {
     base_status: StatusWords,
     base_axes: Vec<[i64; 3]>,
     base_spindles: Vec<i32>,
+    /// Servo loads per axis and the first spindle's load, as the profile gives them.
+    base_loads: Vec<i32>,
+    base_spindle_load: i32,
+    /// Parts already added to the part-count parameter (6711).
+    counted_parts: i64,
     /// Held time (feed hold, emergency) memo: (t, held seconds in [0, t)).
     held_memo: (f64, f64),
     /// Per profile event (by index): the last occurrence reported raised.
@@ -492,6 +500,8 @@ impl Machine {
                             .map(|a| [a.absolute, a.machine, a.relative].map(i64::from))
                             .collect(),
                         base_spindles: p.spindles.iter().map(|s| s.speed).collect(),
+                        base_loads: p.axes.iter().map(|a| a.servo_load).collect(),
+                        base_spindle_load: p.spindles.first().map_or(0, |s| s.load),
                         raised: vec![None; profile.events.len()],
                         ..Engine::default()
                     },
@@ -511,17 +521,40 @@ impl Machine {
             self.advance_path(i, t, &mut raised);
         }
         for (path, alarm, at) in raised {
-            self.on_alarm_raised(path, &alarm, at);
+            self.on_alarm_raised(path, &alarm, since.saturating_sub(at));
+        }
+        self.count_parts();
+    }
+
+    /// Each part path 1 finishes adds one to the part counter (parameter
+    /// 6711, where the profile has it), as a CNC counts at M30: a value
+    /// written through FOCAS counts on from there.
+    fn count_parts(&mut self) {
+        let Some(run) = self.run.first_mut() else {
+            return;
+        };
+        let new = run.parts - run.engine.counted_parts;
+        if new <= 0 {
+            return;
+        }
+        run.engine.counted_parts = run.parts;
+        if let Some(v) = self.param_value(PART_COUNT_PARAM, 0) {
+            let add = i32::try_from(new).unwrap_or(i32::MAX);
+            self.set_param_value(PART_COUNT_PARAM, 0, v.saturating_add(add));
         }
     }
 
     /// An alarm became active on `path` (1-based) at `at` after the start:
     /// the profile's own alarms at the first advance (0 s), an event's
     /// alarm at each occurrence (also those that came and went between two
-    /// polls, at most 64 per event). THE single hook for the alarm history:
-    /// connect `self.record_alarm(...)` here.
-    fn on_alarm_raised(&mut self, path: u16, alarm: &Alarm, at: Duration) {
-        let _ = (path, alarm, at);
+    /// polls, at most 64 per event): it goes into the alarm history, stamped
+    /// with the wall clock `ago` before now.
+    fn on_alarm_raised(&mut self, path: u16, alarm: &Alarm, ago: Duration) {
+        let _ = path;
+        let at = std::time::SystemTime::now()
+            .checked_sub(ago)
+            .unwrap_or(std::time::UNIX_EPOCH);
+        self.record_alarm(alarm.number, alarm.kind, alarm.axis, &alarm.message, at);
     }
 
     fn advance_path(&mut self, i: usize, t: f64, raised: &mut Vec<(u16, Alarm, Duration)>) {
@@ -696,8 +729,16 @@ impl Machine {
         };
         let (s, on) = inherit(b.speed, b.spin);
         run.spindle_speed = if on && !emergency { s } else { 0 };
+        profile.paths[i].feed = run.feed;
+        // Loads follow the work: the profile's servo load while moving, a
+        // third of it at rest; the spindle's load while it turns.
+        let spindle_on = run.spindle_speed != 0;
         if let Some(sp) = profile.paths[i].spindles.first_mut() {
             sp.speed = run.spindle_speed;
+            sp.load = if spindle_on { eng.base_spindle_load } else { 0 };
+        }
+        for (ax, base) in profile.paths[i].axes.iter_mut().zip(&eng.base_loads) {
+            ax.servo_load = if moving { *base } else { *base / 3 };
         }
 
         // Block, counters, text.
