@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The main job: build the library and the simulator, start focas-sim with its
-# built-in profile on a free loopback port, build c-examples/status.c against
-# include/fwlib32.h and libfwlib32.so, and run it against the simulator.
+# built-in profile (a 31i mill running program O1234) on a free loopback port,
+# build the C examples against include/fwlib32.h and libfwlib32.so, and run
+# them against the simulator: status.c (connect, status, id), then adapter.c
+# (the MTConnect adapter's calls, polling the running machine 4 times).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,8 +12,10 @@ out=target/c-examples
 mkdir -p "$out"
 # A program linked with -lfwlib32 asks the loader for the SONAME libfwlib32.so.1.
 ln -sf libfwlib32.so target/release/libfwlib32.so.1
-cc -std=c99 -Wall -Wextra -Werror -I include c-examples/status.c \
-   -L target/release -lfwlib32 -Wl,-rpath,"$PWD/target/release" -o "$out/status"
+for ex in status adapter; do
+    cc -std=c99 -Wall -Wextra -Werror -I include "c-examples/$ex.c" \
+       -L target/release -lfwlib32 -Wl,-rpath,"$PWD/target/release" -o "$out/$ex"
+done
 
 coproc SIM { exec target/release/focas-sim --listen 127.0.0.1:0; }
 sim_pid=$SIM_PID
@@ -21,3 +25,5 @@ echo "focas-sim: $line"
 port=${line##*:}
 
 "$out/status" 127.0.0.1 "$port"
+echo
+"$out/adapter" 127.0.0.1 "$port" 4 700

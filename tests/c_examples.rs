@@ -1,6 +1,7 @@
 //! The C examples, compiled with the system C compiler against
 //! include/fwlib32.h and the built libfwlib32.so, run against the simulator.
 
+use fwlib32::ew::EW_RESET;
 use fwlib32::sim::{Profile, Simulator};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -148,4 +149,140 @@ fn ld_preload_replaces_another_libfwlib32() {
         .output()
         .unwrap();
     check_status_output(&out, &Profile::default());
+}
+
+/// The numbers after the letter `axis` (e.g. 'X') in a program's text, in
+/// least input increments.
+fn program_coordinates(text: &str, axis: char, decimals: i16) -> Vec<i64> {
+    let scale = 10f64.powi(decimals as i32);
+    text.split(|c: char| c.is_whitespace() || c == ';')
+        .filter_map(|w| w.strip_prefix(axis))
+        .filter_map(|v| v.parse::<f64>().ok())
+        .map(|v| (v * scale).round() as i64)
+        .collect()
+}
+
+/// adapter.c makes the MTConnect adapter's calls in its order against the
+/// default profile while its program runs: every value must be one the
+/// profile allows at some point of the cycle, and the machine must move.
+#[test]
+fn adapter_example_polls_the_running_machine() {
+    let dir = scratch("adapter");
+    let exe = build_example("adapter", &dir);
+    let p = Profile::default();
+    let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
+    let polls = 4;
+    let out = Command::new(&exe)
+        .args([
+            "127.0.0.1",
+            &sim.port().to_string(),
+            &polls.to_string(),
+            "600",
+        ])
+        .env("LD_LIBRARY_PATH", &dir)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "adapter failed:\n{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let kv = key_values(&out.stdout);
+    let path = &p.paths[0];
+    let prog = p
+        .programs
+        .iter()
+        .find(|s| s.number == path.cycle.program)
+        .expect("the default profile runs a stored program");
+
+    // Once, at connect.
+    assert_eq!(kv["series"], p.cnc.series);
+    assert_eq!(kv["axes"], path.axes.len().to_string());
+    for (i, a) in path.axes.iter().enumerate() {
+        assert_eq!(kv[&format!("axis{}", i + 1)].trim(), a.name);
+        assert_eq!(kv[&format!("figure{}", i + 1)], a.decimals.to_string());
+    }
+    assert_eq!(kv["spindles"], path.spindles.len().to_string());
+
+    // Every poll.
+    let lines: Vec<&str> = prog.text.lines().map(str::trim).collect();
+    let seqs: Vec<String> = lines
+        .iter()
+        .filter_map(|l| l.split_whitespace().next())
+        .filter_map(|w| w.strip_prefix('N'))
+        .map(str::to_string)
+        .collect();
+    let speeds: Vec<i64> = std::iter::once(0)
+        .chain(std::iter::once(i64::from(path.spindles[0].speed)))
+        .chain(program_coordinates(&prog.text, 'S', 0))
+        .collect();
+    let diag308 = p
+        .param
+        .diagnostics
+        .iter()
+        .find(|d| d.number == 308)
+        .unwrap();
+    let msg = &path.opmsgs[0];
+    let mut seen = std::collections::BTreeSet::new();
+    for n in 0..polls {
+        let at = |k: &str| kv[&format!("{n}.{k}")].clone();
+        assert_eq!(at("prgnum"), prog.number.to_string());
+        assert_eq!(at("prgmnum"), prog.number.to_string());
+        assert!(at("program").ends_with(&format!("O{}", prog.number)));
+        assert!(seqs.contains(&at("seqnum")), "seqnum {}", at("seqnum"));
+        assert!(
+            lines.contains(&at("block").as_str()),
+            "block {:?}",
+            at("block")
+        );
+        seen.insert(at("seqnum"));
+        for a in &path.axes {
+            let mut range =
+                program_coordinates(&prog.text, a.name.chars().next().unwrap(), a.decimals);
+            range.push(i64::from(a.absolute));
+            let (lo, hi) = (*range.iter().min().unwrap(), *range.iter().max().unwrap());
+            let v: f64 = at(&format!("abs{}", a.name)).parse().unwrap();
+            let v = (v * 10f64.powi(a.decimals as i32)).round() as i64;
+            assert!(
+                (lo..=hi).contains(&v),
+                "{} at {v} outside {lo}..{hi}",
+                a.name
+            );
+        }
+        let s: i64 = at("speed1").parse().unwrap();
+        assert!(speeds.contains(&s), "spindle speed {s}");
+        assert_eq!(at("alarms"), "0", "no alarm in the first 30 s");
+        assert_eq!(at("opmsg"), format!("{} {}", msg.number, msg.text));
+        assert!(at("parts").parse::<i32>().unwrap() >= 1234);
+        assert_eq!(at("diag308"), diag308.values[0].to_string());
+        assert_eq!(at("macro500"), "25.400");
+        assert_eq!(at("feed_override"), "100");
+        assert_eq!(at("spindle_override"), "100");
+    }
+    assert!(
+        seen.len() > 1,
+        "the program advances between polls: {seen:?}"
+    );
+
+    // The upload is the stored program, in punch format.
+    let uploaded = text
+        .split("upload-begin\n")
+        .nth(1)
+        .and_then(|t| t.split("\nupload-end").next())
+        .expect("upload markers");
+    let want: Vec<String> = prog
+        .text
+        .lines()
+        .map(|l| l.trim().trim_end_matches(';').to_string())
+        .filter(|l| !l.is_empty())
+        .collect();
+    let got: Vec<String> = uploaded
+        .lines()
+        .map(|l| l.trim().to_string())
+        .filter(|l| !l.is_empty() && l != "%")
+        .collect();
+    let want: Vec<String> = want.into_iter().filter(|l| l != "%").collect();
+    assert_eq!(got, want);
+    assert_eq!(kv["upload_ret"], EW_RESET.to_string());
 }

@@ -219,22 +219,26 @@ pub struct ToolProfile {
 }
 
 impl Machine {
+    /// Group `grp`; 0 is the group in use (the simulator's choice: the
+    /// first group; adapters ask cnc_toolnum(0, 0) for the tool in use).
     fn tool_group_of(&self, path: u16, grp: i32) -> Reply<&ToolGroupProfile> {
-        self.profile
+        let groups = &self
+            .profile
             .paths
             .get(path as usize - 1)
             .ok_or(CncError::PATH)?
-            .tool_groups
-            .iter()
-            .find(|g| g.number == grp)
-            .ok_or(NUMBER)
+            .tool_groups;
+        if grp == 0 {
+            return groups.first().ok_or(NUMBER);
+        }
+        groups.iter().find(|g| g.number == grp).ok_or(NUMBER)
     }
 
     /// 0x008b [grp, grp].
     pub fn tl_group(&mut self, path: u16, grp: i32) -> Reply<crate::proto::tool::ToolGroup> {
         let g = self.tool_group_of(path, grp)?;
         Ok(crate::proto::tool::ToolGroup {
-            grp,
+            grp: g.number,
             ntool: Value::decimal(g.tools.len() as i32, 0),
             life: Value::decimal(g.life, 0),
             count: Value::decimal(g.count, 0),
@@ -250,11 +254,13 @@ impl Machine {
         e: i32,
     ) -> Reply<crate::proto::tool::ToolList> {
         let g = self.tool_group_of(path, grp)?;
+        // Use number 0: the tool in use (the group's first, in this simulator).
+        let (s, e) = if s == 0 { (1, e.max(1)) } else { (s, e) };
         if s < 1 || e < s || s as usize > g.tools.len() {
             return Err(NUMBER);
         }
         Ok(crate::proto::tool::ToolList {
-            grp,
+            grp: g.number,
             first: s,
             tools: g
                 .tools
