@@ -286,3 +286,81 @@ fn adapter_example_polls_the_running_machine() {
     assert_eq!(got, want);
     assert_eq!(kv["upload_ret"], EW_RESET.to_string());
 }
+
+/// data.c writes a parameter (part counter and a real per-axis one), a
+/// macro, a PMC word, a tool and a work offset, and dumps the alarm history;
+/// a second run only reads, over a new connection: the simulator kept what
+/// was written. Parameter writes need MDI mode and parameter write enable.
+#[test]
+fn data_example_writes_and_reads_back() {
+    let dir = scratch("data");
+    let exe = build_example("data", &dir);
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE
+        .replace("param_write_enable = false", "param_write_enable = true")
+        .replacen("aut = 1 ", "aut = 0 ", 1);
+    let p = Profile::parse(&text).unwrap();
+    assert!(p.param.param_write_enable && p.paths[0].status.aut == 0);
+    let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
+    let port = sim.port().to_string();
+    let run = |mode: &str| {
+        let out = Command::new(&exe)
+            .args(["127.0.0.1", &port, mode])
+            .env("LD_LIBRARY_PATH", &dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "data {mode} failed:\n{}\n{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout)
+            .lines()
+            .filter_map(|l| l.split_once('='))
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect::<HashMap<String, String>>()
+    };
+    let before = run("read");
+    assert_eq!(before["macro500"], "25400/3");
+    let written = run("write");
+    assert_eq!(written["written"], "ok");
+    let after = run("read");
+    for kv in [&written, &after] {
+        // The part counter counts on from what was written as parts finish.
+        assert!(kv["param6711"].parse::<i32>().unwrap() >= 4321);
+        assert_eq!(kv["param1320.x"], "812500/3");
+        assert_eq!(kv["macro500"], "12345/3");
+        assert_eq!(kv["pmcD100"], 0x1234.to_string());
+        assert_eq!(kv["tofs1.0"], "-25");
+        assert_eq!(kv["zofs54.x"], "-300000");
+    }
+    // The history as the profile gives it, newest first, FANUC's 2-digit year.
+    let h = &p.alarm_history.entries;
+    assert_eq!(after["history"], h.len().to_string());
+    for (i, e) in h.iter().enumerate() {
+        let (date, time) = e.time.split_once(' ').unwrap();
+        let want = format!(
+            "{}/{} {} {}",
+            &date[2..4],
+            &date[5..].replace('-', "/"),
+            time,
+            e.number
+        );
+        assert_eq!(
+            after[&format!("history{}", i + 1)],
+            format!("{want} {}", e.message)
+        );
+    }
+
+    // Without parameter write enable the same program is refused with EW_PASSWD.
+    let locked = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
+    let out = Command::new(&exe)
+        .args(["127.0.0.1", &locked.port().to_string(), "write"])
+        .env("LD_LIBRARY_PATH", &dir)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("cnc_wrparam(h, 4 + 4, &prm) failed: 17")
+    );
+}
