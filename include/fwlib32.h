@@ -1614,7 +1614,7 @@ short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
  size) is the bytes used and `*e_number` the last number read.
  `*s_number > *e_number` is EW_NUMBER without traffic. A record that
  does not fit is EW_LENGTH: the records before it stay written, as does
- its 4-byte header if that fits (FANUC's library writes the header even
+ its 4-byte header if that fits whole (FANUC's library writes the header even
  past `*length`; we never write past it).
 
  # Safety

@@ -384,7 +384,7 @@ fn class_axes(h: &Handle) -> (CncClass, usize) {
 /// size) is the bytes used and `*e_number` the last number read.
 /// `*s_number > *e_number` is EW_NUMBER without traffic. A record that
 /// does not fit is EW_LENGTH: the records before it stay written, as does
-/// its 4-byte header if that fits (FANUC's library writes the header even
+/// its 4-byte header if that fits whole (FANUC's library writes the header even
 /// past `*length`; we never write past it).
 ///
 /// # Safety
@@ -436,8 +436,10 @@ pub unsafe extern "C" fn cnc_rdparar(
             for r in &recs {
                 let bytes = r.to_c();
                 if used + bytes.len() > room {
-                    let head = bytes.len().min(4).min(room - used);
-                    unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), head) };
+                    // Its header, as FANUC's library writes it, if it fits whole.
+                    if used + 4 <= room {
+                        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), 4) };
+                    }
                     return Err(Error::local(EW_LENGTH, "a record does not fit in length"));
                 }
                 unsafe {
