@@ -1610,12 +1610,13 @@ short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
  the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
  decimals), each record padded to a multiple of 4 (the padding bytes are
  not written). Asks the CNC again from the last number received + 1
- until `*e_number` is reached. On success `*length` (in: the buffer's
- size) is the bytes used and `*e_number` the last number read.
- `*s_number > *e_number` is EW_NUMBER without traffic. A record that
- does not fit is EW_LENGTH: the records before it stay written, as does
- its 4-byte header if that fits whole (FANUC's library writes the header even
- past `*length`; we never write past it).
+ until `*e_number` is reached. On success `*s_number` is the first
+ number read, `*e_number` the last, and `*length` (in: the buffer's
+ size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
+ traffic. A record that does not fit with its padding is EW_LENGTH: the
+ records before it stay written, as does its 4-byte header if that fits,
+ and the three pointers keep their values (all as FANUC's library, checked
+ against it with our simulator).
 
  # Safety
  `s_number`, `e_number`, `length` must point to shorts, `param` to

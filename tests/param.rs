@@ -390,10 +390,12 @@ fn ext_reads_and_number_ranges() {
 // --- cnc_rdparar / cnc_wrparas ---
 
 /// cnc_rdparar into a buffer of `len` bytes followed by 16 guard bytes
-/// (all 0xCC before the call): (return, *e_number, *length, buffer).
-fn rdr(
+/// (all 0xCC before the call): (return, *e_number, *length, buffer);
+/// `*s_number` must come back as `s_out` (the first number read).
+fn rdr_s(
     h: c_ushort,
     s: c_short,
+    s_out: c_short,
     axis: c_short,
     e: c_short,
     len: c_short,
@@ -410,7 +412,7 @@ fn rdr(
             buf.as_mut_ptr().cast(),
         )
     };
-    assert_eq!(s_no, s, "*s_number is never changed");
+    assert_eq!(s_no, s_out, "*s_number");
     assert!(
         buf[len.max(0) as usize..].iter().all(|b| *b == 0xcc),
         "written past *length"
@@ -431,6 +433,17 @@ fn size_of(typ: u16) -> usize {
 }
 
 /// Splits `used` bytes of cnc_rdparar output into records (max_axes 32).
+/// cnc_rdparar where `*s_number` stays (an error, or `s` exists).
+fn rdr(
+    h: c_ushort,
+    s: c_short,
+    axis: c_short,
+    e: c_short,
+    len: c_short,
+) -> (c_short, c_short, c_short, Vec<u8>) {
+    rdr_s(h, s, s, axis, e, len)
+}
+
 fn records(buf: &[u8]) -> Vec<Rec> {
     let mut out = Vec::new();
     let mut at = 0;
@@ -522,7 +535,8 @@ fn rdparar_reads_ranges() {
     );
 
     // Axis 0 over axis parameters: those answer all axes (type word 0x..ff).
-    let (r, e, len, buf) = rdr(h, 1000, 0, 1030, 100);
+    // *s_number becomes the first number read.
+    let (r, e, len, buf) = rdr_s(h, 1000, 1001, 0, 1030, 100);
     assert_eq!((r, e, len), (EW_OK, 1020, 8 + 36 + 36));
     let got = records(&buf[..80]);
     assert_eq!(
@@ -601,6 +615,11 @@ fn rdparar_errors() {
     let (r, _, _, buf) = rdr(h, 6710, 0, 6713, 10);
     assert_eq!(r, EW_LENGTH);
     assert_eq!(&buf[8..10], &[0xcc, 0xcc]);
+    // A record fits only with its padding (FANUC's library: a word record
+    // in 6 bytes is EW_LENGTH with only its header written); *s_number stays.
+    let (r, _, _, buf) = rdr(h, 6701, 0, 6713, 6);
+    assert_eq!(r, EW_LENGTH);
+    assert_eq!(&buf[..6], &[0x36, 0x1a, 0x00, 0x02, 0xcc, 0xcc]);
     let (r, _, _, buf) = rdr(h, 6710, 0, 6713, 0);
     assert_eq!(r, EW_LENGTH);
     assert!(buf.iter().all(|b| *b == 0xcc));

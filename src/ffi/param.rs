@@ -380,12 +380,13 @@ fn class_axes(h: &Handle) -> (CncClass, usize) {
 /// the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
 /// decimals), each record padded to a multiple of 4 (the padding bytes are
 /// not written). Asks the CNC again from the last number received + 1
-/// until `*e_number` is reached. On success `*length` (in: the buffer's
-/// size) is the bytes used and `*e_number` the last number read.
-/// `*s_number > *e_number` is EW_NUMBER without traffic. A record that
-/// does not fit is EW_LENGTH: the records before it stay written, as does
-/// its 4-byte header if that fits whole (FANUC's library writes the header even
-/// past `*length`; we never write past it).
+/// until `*e_number` is reached. On success `*s_number` is the first
+/// number read, `*e_number` the last, and `*length` (in: the buffer's
+/// size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
+/// traffic. A record that does not fit with its padding is EW_LENGTH: the
+/// records before it stay written, as does its 4-byte header if that fits,
+/// and the three pointers keep their values (all as FANUC's library, checked
+/// against it with our simulator).
 ///
 /// # Safety
 /// `s_number`, `e_number`, `length` must point to shorts, `param` to
@@ -419,6 +420,7 @@ pub unsafe extern "C" fn cnc_rdparar(
             ));
         }
         let mut used = 0usize;
+        let mut first: Option<i16> = None;
         let mut last: Option<i32> = None;
         let mut next = s;
         loop {
@@ -435,8 +437,8 @@ pub unsafe extern "C" fn cnc_rdparar(
             };
             for r in &recs {
                 let bytes = r.to_c();
-                if used + bytes.len() > room {
-                    // Its header, as FANUC's library writes it, if it fits whole.
+                if used + r.padded_len() > room {
+                    // Its header, as FANUC's library writes it, if it fits.
                     if used + 4 <= room {
                         unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), 4) };
                     }
@@ -445,7 +447,8 @@ pub unsafe extern "C" fn cnc_rdparar(
                 unsafe {
                     std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), bytes.len())
                 };
-                used = (used + r.padded_len()).min(room);
+                used += r.padded_len();
+                first.get_or_insert(r.number);
                 last = Some(r.number as i32);
             }
             let Some(l) = last else {
@@ -462,6 +465,7 @@ pub unsafe extern "C" fn cnc_rdparar(
             next = l + 1;
         }
         unsafe {
+            put(s_number, first.unwrap_or(s as i16));
             put(length, used as c_short);
             put(e_number, last.unwrap_or(e) as c_short);
         }
