@@ -1604,6 +1604,32 @@ short cnc_rdparam_ext(unsigned short FlibHndl, long *prm_no, short num, struct I
 short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
 
 /*
+ Reads the parameters `*s_number..=*e_number` (those the CNC has) into
+ `param` as packed records: i16 number, i16 type word `(type << 8) |
+ (axis & 0xff)`, then one value (axis -1: one per axis of the CNC) of
+ the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
+ decimals), each record padded to a multiple of 4 (the padding bytes are
+ not written). Asks the CNC again from the last number received + 1
+ until `*e_number` is reached. On success `*s_number` is the first
+ number read, `*e_number` the last, and `*length` (in: the buffer's
+ size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
+ traffic. A record that does not fit with its padding is EW_LENGTH: the
+ records before it stay written, as does its 4-byte header if that fits,
+ and the three pointers keep their values (all as FANUC's library, checked
+ against it with our simulator).
+
+ # Safety
+ `s_number`, `e_number`, `length` must point to shorts, `param` to
+ `*length` writable bytes.
+ */
+short cnc_rdparar(unsigned short FlibHndl,
+                  short *s_number,
+                  short axis,
+                  short *e_number,
+                  short *length,
+                  void *param);
+
+/*
  Reads positions with decimals, units and names: `type` 0 absolute,
  1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
  room, out = axes written.
@@ -1984,6 +2010,21 @@ short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
  `param` must point to a readable IODBPSD.
  */
 short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
+
+/*
+ Writes several parameters given as packed records (the format
+ cnc_rdparar reads) in `length` bytes, 5 per exchange, without reading
+ their attributes first. `length` ≤ 0 writes nothing. A record that does
+ not fit in `length` is EW_LENGTH and a type other than 0..4 EW_ATTRIB,
+ both before any traffic (FANUC's library sends unknown types as
+ 4-byte records of stale data). The CNC checks each write as for
+ cnc_wrparam; the first refused exchange ends the call with its error
+ (earlier exchanges stay written).
+
+ # Safety
+ `param` must point to `length` readable bytes.
+ */
+short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

@@ -912,8 +912,42 @@ mod param_codec {
             }
         }
 
+        /// cnc_rdparar / cnc_wrparas records: the C bytes read back
+        /// (`from_c` is `to_c` reversed), and the write block of a record
+        /// decodes, as a read answer block, to the same record.
+        #[test]
+        fn packed_records_roundtrip(number in any::<i16>(), axis in -1i8..=32, ptype in 0u8..=4,
+                                    values in vec((any::<i32>(), any::<i16>()), 32), axes in 1usize..=32,
+                                    tail in vec(any::<u8>(), 0..12)) {
+            let n = Packed::count(axis, axes);
+            let nums: Vec<Num> = values[..n].iter().map(|(v, d)| match ptype {
+                0 | 1 => Num::int(*v as i8 as i32),
+                2 => Num::int(*v as i16 as i32),
+                3 => Num::int(*v),
+                _ => Num { value: *v, dec: *d as i32 },
+            }).collect();
+            let r = Packed { number, axis, ptype, values: nums };
+            let c = r.to_c();
+            prop_assert_eq!(c.len(), 4 + n * [1, 1, 2, 4, 8][ptype as usize]);
+            prop_assert_eq!(r.padded_len() % 4, 0);
+            let mut buf = c.clone();
+            buf.resize(r.padded_len(), 0);
+            buf.extend(&tail);
+            let (back, used) = Packed::from_c(&buf, axes)?;
+            prop_assert_eq!(&back, &r);
+            prop_assert_eq!(used, r.padded_len());
+            // Every shorter input is EW_LENGTH, never a panic.
+            for k in 0..c.len() {
+                prop_assert!(Packed::from_c(&c[..k], axes).is_err());
+            }
+            let block = Param30::from_bytes(&r.to_block())?;
+            prop_assert_eq!(block.values.len(), WRITE_RECORDS_30);
+            prop_assert_eq!(Packed::of_block(&block, axes)?, r);
+        }
+
         #[test]
         fn param_decoders_never_panic(b in vec(any::<u8>(), 0..400)) {
+            let _ = Packed::from_c(&b, 32);
             let _ = Param30::from_bytes(&b);
             let _ = ParamType30::from_bytes(&b);
             let _ = InfoList::from_bytes(&b);

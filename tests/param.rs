@@ -386,3 +386,355 @@ fn ext_reads_and_number_ranges() {
         );
     }
 }
+
+// --- cnc_rdparar / cnc_wrparas ---
+
+/// cnc_rdparar into a buffer of `len` bytes followed by 16 guard bytes
+/// (all 0xCC before the call): (return, *e_number, *length, buffer);
+/// `*s_number` must come back as `s_out` (the first number read).
+fn rdr_s(
+    h: c_ushort,
+    s: c_short,
+    s_out: c_short,
+    axis: c_short,
+    e: c_short,
+    len: c_short,
+) -> (c_short, c_short, c_short, Vec<u8>) {
+    let mut buf = vec![0xccu8; len.max(0) as usize + 16];
+    let (mut s_no, mut e_no, mut length) = (s, e, len);
+    let r = unsafe {
+        cnc_rdparar(
+            h,
+            &mut s_no,
+            axis,
+            &mut e_no,
+            &mut length,
+            buf.as_mut_ptr().cast(),
+        )
+    };
+    assert_eq!(s_no, s_out, "*s_number");
+    assert!(
+        buf[len.max(0) as usize..].iter().all(|b| *b == 0xcc),
+        "written past *length"
+    );
+    (r, e_no, length, buf)
+}
+
+/// A packed record: number, type word, value bytes (before padding).
+#[derive(Debug, PartialEq)]
+struct Rec {
+    number: i16,
+    typ: u16,
+    data: Vec<u8>,
+}
+
+fn size_of(typ: u16) -> usize {
+    [1, 1, 2, 4, 8][(typ >> 8) as usize]
+}
+
+/// Splits `used` bytes of cnc_rdparar output into records (max_axes 32).
+/// cnc_rdparar where `*s_number` stays (an error, or `s` exists).
+fn rdr(
+    h: c_ushort,
+    s: c_short,
+    axis: c_short,
+    e: c_short,
+    len: c_short,
+) -> (c_short, c_short, c_short, Vec<u8>) {
+    rdr_s(h, s, s, axis, e, len)
+}
+
+fn records(buf: &[u8]) -> Vec<Rec> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while at < buf.len() {
+        let number = i16::from_le_bytes([buf[at], buf[at + 1]]);
+        let typ = u16::from_le_bytes([buf[at + 2], buf[at + 3]]);
+        let n = if typ & 0xff == 0xff { 32 } else { 1 };
+        let end = at + 4 + n * size_of(typ);
+        out.push(Rec {
+            number,
+            typ,
+            data: buf[at + 4..end].to_vec(),
+        });
+        at = (end + 3) & !3;
+    }
+    out
+}
+
+fn rec(number: i16, ptype: u8, axis: i8, data: &[u8]) -> Vec<u8> {
+    let mut b = number.to_le_bytes().to_vec();
+    b.push(axis as u8);
+    b.push(ptype);
+    b.extend_from_slice(data);
+    while b.len() % 4 != 0 {
+        b.push(0);
+    }
+    b
+}
+
+fn real(v: i32, d: i32) -> Vec<u8> {
+    [v.to_le_bytes(), d.to_le_bytes()].concat()
+}
+
+fn wrs(h: c_ushort, recs: &[Vec<u8>]) -> c_short {
+    let mut b = recs.concat();
+    unsafe { cnc_wrparas(h, b.len() as c_short, b.as_mut_ptr().cast()) }
+}
+
+#[test]
+fn rdparar_reads_ranges() {
+    let (_s, h) = start(Profile::default());
+    // 6700..6760: twelve parameters, answers of five, five and two;
+    // padding is not written.
+    let (r, e, len, buf) = rdr(h, 6700, 0, 6760, 200);
+    assert_eq!(r, EW_OK);
+    assert_eq!((e, len), (6758, 96));
+    assert!(buf[96..].iter().all(|b| *b == 0xcc));
+    let got = records(&buf[..96]);
+    let numbers: Vec<i16> = got.iter().map(|r| r.number).collect();
+    assert_eq!(
+        numbers,
+        [
+            6700, 6710, 6711, 6712, 6713, 6750, 6751, 6752, 6753, 6754, 6757, 6758
+        ]
+    );
+    assert_eq!(
+        got[0],
+        Rec {
+            number: 6700,
+            typ: 0x0000,
+            data: vec![0]
+        }
+    );
+    assert_eq!(
+        got[1],
+        Rec {
+            number: 6710,
+            typ: 0x0200,
+            data: 30i16.to_le_bytes().to_vec()
+        }
+    );
+    assert_eq!(
+        got[2],
+        Rec {
+            number: 6711,
+            typ: 0x0300,
+            data: 1234i32.to_le_bytes().to_vec()
+        }
+    );
+    assert_eq!(
+        &buf[5..8],
+        &[0xcc; 3],
+        "padding of the bit record untouched"
+    );
+    assert_eq!(
+        &buf[14..16],
+        &[0xcc; 2],
+        "padding of the word record untouched"
+    );
+
+    // Axis 0 over axis parameters: those answer all axes (type word 0x..ff).
+    // *s_number becomes the first number read.
+    let (r, e, len, buf) = rdr_s(h, 1000, 1001, 0, 1030, 100);
+    assert_eq!((r, e, len), (EW_OK, 1020, 8 + 36 + 36));
+    let got = records(&buf[..80]);
+    assert_eq!(
+        got[0],
+        Rec {
+            number: 1001,
+            typ: 0x0000,
+            data: vec![0]
+        }
+    );
+    assert_eq!((got[1].number, got[1].typ), (1005, 0x00ff));
+    assert_eq!(&got[1].data[..4], &[1, 1, 1, 0]);
+    assert_eq!((got[2].number, got[2].typ), (1020, 0x01ff));
+    assert_eq!(&got[2].data[..4], &[88, 89, 90, 0]);
+
+    // Reals of one axis: value and decimals.
+    let (r, e, len, buf) = rdr(h, 1320, 2, 1420, 100);
+    assert_eq!((r, e, len), (EW_OK, 1420, 36));
+    let got = records(&buf[..36]);
+    assert_eq!(
+        got[0],
+        Rec {
+            number: 1320,
+            typ: 0x0402,
+            data: real(500000, 3)
+        }
+    );
+    assert_eq!(
+        got[1],
+        Rec {
+            number: 1321,
+            typ: 0x0402,
+            data: real(-5000, 3)
+        }
+    );
+    assert_eq!(
+        got[2],
+        Rec {
+            number: 1420,
+            typ: 0x0402,
+            data: real(48000, 0)
+        }
+    );
+
+    // All axes: every parameter with max_axes values.
+    let (r, e, len, buf) = rdr(h, 1320, -1, 1321, 600);
+    assert_eq!((r, e, len), (EW_OK, 1321, 2 * (4 + 256)));
+    let got = records(&buf[..520]);
+    assert_eq!(got[1].typ, 0x04ff);
+    assert_eq!(&got[1].data[16..24], &real(-500000, 3)[..]);
+    assert_eq!(&got[1].data[24..32], &real(0, 3)[..]);
+
+    // One number (the request cnc_rdparam sends).
+    let (r, e, len, buf) = rdr(h, 6711, 0, 6711, 8);
+    assert_eq!((r, e, len), (EW_OK, 6711, 8));
+    assert_eq!(records(&buf[..8])[0].data, 1234i32.to_le_bytes());
+}
+
+#[test]
+fn rdparar_errors() {
+    let (_s, h) = start(Profile::default());
+    // Start above end: EW_NUMBER without traffic; nothing written.
+    let (r, e, len, buf) = rdr(h, 6711, 0, 6700, 100);
+    assert_eq!((r, e, len), (EW_NUMBER, 6700, 100));
+    assert!(buf.iter().all(|b| *b == 0xcc));
+    // No parameter in the range.
+    assert_eq!(rdr(h, 2, 0, 19, 100).0, EW_NUMBER);
+    // An axis beyond the path's.
+    assert_eq!(rdr(h, 1000, 4, 1030, 100).0, EW_ATTRIB);
+    // Too small: the records that fit stay, and the next one's header if it
+    // fits whole; *length and *e_number unchanged; never past *length.
+    let (r, e, len, buf) = rdr(h, 6710, 0, 6713, 12);
+    assert_eq!((r, e, len), (EW_LENGTH, 6713, 12));
+    assert_eq!(&buf[..4], &[0x36, 0x1a, 0x00, 0x02]);
+    assert_eq!(&buf[8..12], &[0x37, 0x1a, 0x00, 0x03]);
+    let (r, _, _, buf) = rdr(h, 6710, 0, 6713, 10);
+    assert_eq!(r, EW_LENGTH);
+    assert_eq!(&buf[8..10], &[0xcc, 0xcc]);
+    // A record fits only with its padding (FANUC's library: a word record
+    // in 6 bytes is EW_LENGTH with only its header written); *s_number stays.
+    let (r, _, _, buf) = rdr(h, 6701, 0, 6713, 6);
+    assert_eq!(r, EW_LENGTH);
+    assert_eq!(&buf[..6], &[0x36, 0x1a, 0x00, 0x02, 0xcc, 0xcc]);
+    let (r, _, _, buf) = rdr(h, 6710, 0, 6713, 0);
+    assert_eq!(r, EW_LENGTH);
+    assert!(buf.iter().all(|b| *b == 0xcc));
+    // NULL pointers, bad handle.
+    let (mut s, mut e, mut l) = (6700 as c_short, 6760 as c_short, 100 as c_short);
+    let mut buf = [0u8; 100];
+    let p = buf.as_mut_ptr().cast();
+    let null = std::ptr::null_mut();
+    unsafe {
+        assert_eq!(cnc_rdparar(h, null, 0, &mut e, &mut l, p), EW_DATA);
+        assert_eq!(cnc_rdparar(h, &mut s, 0, null, &mut l, p), EW_DATA);
+        assert_eq!(cnc_rdparar(h, &mut s, 0, &mut e, null, p), EW_DATA);
+        assert_eq!(
+            cnc_rdparar(h, &mut s, 0, &mut e, &mut l, null.cast()),
+            EW_DATA
+        );
+        assert_eq!(cnc_rdparar(0x7fff, &mut s, 0, &mut e, &mut l, p), EW_HANDLE);
+        assert_eq!(cnc_wrparas(h, 8, null.cast()), EW_DATA);
+        assert_eq!(cnc_wrparas(0x7fff, 8, p), EW_HANDLE);
+    }
+}
+
+#[test]
+fn wrparas_writes_every_type_and_reads_back() {
+    let (_s, h) = start(profile(WRITABLE));
+    let mut bits = vec![0u8; 32];
+    bits[..3].copy_from_slice(&[7, 8, 9]);
+    // Six records: two exchanges (5 + 1).
+    let recs = [
+        rec(1001, 0, 0, &[0x81]),
+        rec(20, 1, 0, &[(-5i8) as u8]),
+        rec(1825, 2, 2, &(-1234i16).to_le_bytes()),
+        rec(6711, 3, 0, &987654321i32.to_le_bytes()),
+        rec(1320, 4, 1, &real(654, 1)),
+        rec(1005, 0, -1, &bits),
+    ];
+    assert_eq!(wrs(h, &recs), EW_OK);
+    unsafe {
+        assert_eq!(rd_ok(h, 1001, 0).u.cdata as u8, 0x81);
+        assert_eq!(rd_ok(h, 20, 0).u.cdata, -5);
+        assert_eq!(&rd_ok(h, 1825, -1).u.idatas[..3], &[3000, -1234, 3000]);
+        assert_eq!(rd_ok(h, 6711, 0).u.ldata, 987654321);
+        let r = rd_ok(h, 1320, 1).u.rdata;
+        assert_eq!((r.prm_val, r.dec_val), (65400, 3)); // converted to the parameter's decimals
+        assert_eq!(&rd_ok(h, 1005, -1).u.cdatas[..4], &[7, 8, 9, 0]);
+    }
+    // What cnc_rdparar reads, cnc_wrparas writes back unchanged.
+    let (r, _, len, mut buf) = rdr(h, 6710, 0, 6713, 100);
+    assert_eq!(r, EW_OK);
+    assert_eq!(
+        unsafe { cnc_wrparas(h, len, buf.as_mut_ptr().cast()) },
+        EW_OK
+    );
+    let (_, _, len2, buf2) = rdr(h, 6710, 0, 6713, 100);
+    assert_eq!(&buf2[..len2 as usize], &buf[..len as usize]);
+    // length 0 writes nothing.
+    assert_eq!(unsafe { cnc_wrparas(h, 0, buf.as_mut_ptr().cast()) }, EW_OK);
+}
+
+#[test]
+fn wrparas_protection_and_local_checks() {
+    let part = |h| unsafe { rd_ok(h, 6711, 0).u.ldata };
+    let count = |v: i32| rec(6711, 3, 0, &v.to_le_bytes());
+
+    // Parameter write enable off: EW_PASSWD, nothing written.
+    let (s, h) = start(profile(&[("aut = 1 ", "aut = 0 ")]));
+    assert_eq!(wrs(h, &[count(1), rec(20, 1, 0, &[9])]), EW_PASSWD);
+    assert_eq!(part(h), 1234);
+    assert_eq!(unsafe { rd_ok(h, 20, 0).u.cdata }, 4);
+    drop(s);
+
+    let (_s, h) = start(profile(WRITABLE));
+    // One refused record in an exchange: the simulator checks every record
+    // of the subpacket first and applies none (a real CNC writes the ones
+    // before the refused one).
+    assert_eq!(wrs(h, &[count(1), rec(1020, 1, 1, &[65])]), EW_PROT);
+    assert_eq!(wrs(h, &[count(1), rec(9999, 3, 0, &[0; 4])]), EW_NUMBER);
+    assert_eq!(wrs(h, &[count(1), rec(20, 2, 0, &[1, 0])]), EW_ATTRIB); // wrong type
+    assert_eq!(wrs(h, &[count(1), rec(1825, 2, 0, &[1, 0])]), EW_ATTRIB); // axis needed
+    assert_eq!(part(h), 1234);
+    assert_eq!(unsafe { rd_ok(h, 1020, 1).u.cdata }, 88);
+    // Exchanges before the refused one stay written: five go in the first.
+    let five: Vec<_> = (0..5).map(|_| count(77)).collect();
+    assert_eq!(
+        wrs(h, &[five, vec![rec(1020, 1, 1, &[65])]].concat()),
+        EW_PROT
+    );
+    assert_eq!(part(h), 77);
+
+    // Local checks, no traffic: a record longer than length, an unknown type.
+    let mut b = count(5);
+    for l in 1..8 {
+        assert_eq!(
+            unsafe { cnc_wrparas(h, l, b.as_mut_ptr().cast()) },
+            EW_LENGTH,
+            "length {l}"
+        );
+    }
+    let mut two = [count(6), count(7)].concat();
+    assert_eq!(
+        unsafe { cnc_wrparas(h, 12, two.as_mut_ptr().cast()) },
+        EW_LENGTH
+    );
+    let mut bad = rec(6711, 5, 0, &[0; 4]);
+    assert_eq!(
+        unsafe { cnc_wrparas(h, 8, bad.as_mut_ptr().cast()) },
+        EW_ATTRIB
+    );
+    assert_eq!(part(h), 77);
+}
+
+#[test]
+fn rdparar_wrparas_series_16i_unknown() {
+    let (_s, h) = start(profile(S16));
+    assert_eq!(rdr(h, 6700, 0, 6760, 100).0, EW_FUNC);
+    assert_eq!(wrs(h, &[rec(6711, 3, 0, &[1, 0, 0, 0])]), EW_FUNC);
+    assert_eq!(unsafe { rd_ok(h, 6711, 0).u.ldata }, 1234);
+}

@@ -3,15 +3,16 @@
 use super::{ffi_boundary, nonnull, put};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
-use crate::ew::EW_LENGTH;
+use crate::ew::{EW_FUNC, EW_LENGTH, EW_NUMBER};
+use crate::proto::open::CncClass;
 use crate::proto::param::{
-    EXT_PER_FRAME, ExtRecord, InfoList, Item, ParamInfo, ReadExt, ReadInfo, ReadOne, Table,
-    WriteParam, check_length, rdnum,
+    EXT_PER_FRAME, ExtRecord, InfoList, Item, Packed, ParamInfo, ReadExt, ReadInfo, ReadOne,
+    ReadRange, Table, WRPARAS_PER_FRAME, WriteParam, WriteSeveral, check_length, rdnum,
 };
 use crate::types::{
     IODBPRM, IODBPRM_data, IODBPSD, MAX_AXIS, ODBDGN, ODBDIAGIF, ODBDIAGNUM, ODBPARAIF, ODBPARANUM,
 };
-use std::os::raw::{c_long, c_short, c_ushort};
+use std::os::raw::{c_long, c_short, c_ushort, c_void};
 
 /// Reads one item and writes datano, type (the axis word of the answer)
 /// and the values from offset 4 of `out`. Like FANUC's library, the header
@@ -362,6 +363,159 @@ pub unsafe extern "C" fn cnc_rddiagnum(FlibHndl: c_ushort, diagnum: *mut ODBDIAG
             total_no: r.total as c_ushort,
         };
         unsafe { put(out, v) };
+        Ok(())
+    })
+}
+
+/// The CNC's class and max-axes count (capped at 32) on the handle's path.
+fn class_axes(h: &Handle) -> (CncClass, usize) {
+    let path = h.state.lock().path;
+    let cx = h.pair.info.ctx(path);
+    (cx.class, (cx.max_axes as usize).min(MAX_AXIS))
+}
+
+/// Reads the parameters `*s_number..=*e_number` (those the CNC has) into
+/// `param` as packed records: i16 number, i16 type word `(type << 8) |
+/// (axis & 0xff)`, then one value (axis -1: one per axis of the CNC) of
+/// the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
+/// decimals), each record padded to a multiple of 4 (the padding bytes are
+/// not written). Asks the CNC again from the last number received + 1
+/// until `*e_number` is reached. On success `*s_number` is the first
+/// number read, `*e_number` the last, and `*length` (in: the buffer's
+/// size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
+/// traffic. A record that does not fit with its padding is EW_LENGTH: the
+/// records before it stay written, as does its 4-byte header if that fits,
+/// and the three pointers keep their values (all as FANUC's library, checked
+/// against it with our simulator).
+///
+/// # Safety
+/// `s_number`, `e_number`, `length` must point to shorts, `param` to
+/// `*length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparar(
+    FlibHndl: c_ushort,
+    s_number: *mut c_short,
+    axis: c_short,
+    e_number: *mut c_short,
+    length: *mut c_short,
+    param: *mut c_void,
+) -> c_short {
+    ffi_boundary!("cnc_rdparar", {
+        let h = handles::get(FlibHndl)?;
+        let s_number = nonnull(s_number)?;
+        let e_number = nonnull(e_number)?;
+        let length = nonnull(length)?;
+        let out = nonnull(param)?.cast::<u8>();
+        let s = unsafe { s_number.read_unaligned() } as i32;
+        let e = unsafe { e_number.read_unaligned() } as i32;
+        let room = unsafe { length.read_unaligned() }.max(0) as usize;
+        if s > e {
+            return Err(Error::local(EW_NUMBER, "start number above end number"));
+        }
+        let (class, _) = class_axes(&h);
+        if class != CncClass::Series30 {
+            return Err(Error::local(
+                EW_FUNC,
+                "cnc_rdparar of a 16i-class CNC is not known",
+            ));
+        }
+        let mut used = 0usize;
+        let mut first: Option<i16> = None;
+        let mut last: Option<i32> = None;
+        let mut next = s;
+        loop {
+            let recs = match h.call(&ReadRange {
+                start: next,
+                end: e,
+                axis,
+            }) {
+                // No more numbers after some were read: done.
+                Err(Error::Cnc {
+                    code: EW_NUMBER, ..
+                }) if last.is_some() => break,
+                r => r?,
+            };
+            for r in &recs {
+                let bytes = r.to_c();
+                if used + r.padded_len() > room {
+                    // Its header, as FANUC's library writes it, if it fits.
+                    if used + 4 <= room {
+                        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), 4) };
+                    }
+                    return Err(Error::local(EW_LENGTH, "a record does not fit in length"));
+                }
+                unsafe {
+                    std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), bytes.len())
+                };
+                used += r.padded_len();
+                first.get_or_insert(r.number);
+                last = Some(r.number as i32);
+            }
+            let Some(l) = last else {
+                return Err(Error::protocol(
+                    crate::error::detail::SHORT_PAYLOAD,
+                    "parameter range answer without a block",
+                ));
+            };
+            // The CNC must move on; a number at or before the last request's
+            // start would make us ask the same again forever.
+            if l >= e || l < next {
+                break;
+            }
+            next = l + 1;
+        }
+        unsafe {
+            put(s_number, first.unwrap_or(s as i16));
+            put(length, used as c_short);
+            put(e_number, last.unwrap_or(e) as c_short);
+        }
+        Ok(())
+    })
+}
+
+/// Writes several parameters given as packed records (the format
+/// cnc_rdparar reads) in `length` bytes, 5 per exchange, without reading
+/// their attributes first. `length` ≤ 0 writes nothing. A record that does
+/// not fit in `length` is EW_LENGTH and a type other than 0..4 EW_ATTRIB,
+/// both before any traffic (FANUC's library sends unknown types as
+/// 4-byte records of stale data). The CNC checks each write as for
+/// cnc_wrparam; the first refused exchange ends the call with its error
+/// (earlier exchanges stay written).
+///
+/// # Safety
+/// `param` must point to `length` readable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrparas(
+    FlibHndl: c_ushort,
+    length: c_short,
+    param: *mut c_void,
+) -> c_short {
+    ffi_boundary!("cnc_wrparas", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(param)?.cast::<u8>();
+        if length <= 0 {
+            return Ok(());
+        }
+        let (class, axes) = class_axes(&h);
+        if class != CncClass::Series30 {
+            return Err(Error::local(
+                EW_FUNC,
+                "cnc_wrparas of a 16i-class CNC is not known",
+            ));
+        }
+        let buf = unsafe { std::slice::from_raw_parts(inp, length as usize) };
+        let mut records = Vec::new();
+        let mut at = 0;
+        while at < buf.len() {
+            let (r, n) = Packed::from_c(&buf[at..], axes)?;
+            records.push(r);
+            at += n;
+        }
+        for chunk in records.chunks(WRPARAS_PER_FRAME) {
+            h.call(&WriteSeveral {
+                records: chunk.to_vec(),
+            })?;
+        }
         Ok(())
     })
 }

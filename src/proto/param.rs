@@ -724,3 +724,180 @@ impl Call for ReadExt {
         Ok((out, None))
     }
 }
+
+// --- rdparar / wrparas ---
+//
+// cnc_rdparar and cnc_wrparas move parameters in one packed C format
+// ([`Packed`]): per parameter i16 number, i16 type word
+// `(type << 8) | (axis & 0xff)`, then one value (or max-axes values for
+// axis -1) of the type's size (bit/byte 1, word 2, 2-word 4, real 8 =
+// value + decimals), each record padded to a multiple of 4 (padding bytes
+// are never written). On the wire both use the 30i block of cnc_rdparam /
+// cnc_wrparam ([`Param30`], 8 + 8 · max-axes bytes). Only the 30i class is
+// known (oracle findings); a 16i-class CNC gets EW_FUNC without traffic.
+
+/// Blocks per 0x008e frame of cnc_wrparas (FANUC's library sends 5).
+pub const WRPARAS_PER_FRAME: usize = 5;
+
+/// One parameter of the packed cnc_rdparar / cnc_wrparas buffer.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Packed {
+    pub number: i16,
+    /// Axis byte of the type word as a signed value (-1 all axes, 0, 1..).
+    pub axis: i8,
+    /// Type (high byte of the type word): 0 bit, 1 byte, 2 word, 3 2-word, 4 real.
+    pub ptype: u8,
+    /// One value, or `axes` values when `axis` is -1.
+    pub values: Vec<Num>,
+}
+
+impl Packed {
+    /// Values a record with this axis byte carries.
+    pub fn count(axis: i8, axes: usize) -> usize {
+        if axis < 0 { axes } else { 1 }
+    }
+    fn elem(ptype: u8) -> Option<Elem> {
+        Elem::of_param(ptype as u16).filter(|_| ptype <= 4)
+    }
+    /// Bytes the record takes in the buffer, padding included.
+    pub fn padded_len(&self) -> usize {
+        (self.to_c().len() + 3) & !3
+    }
+    /// The record's bytes without the padding (a type we do not know
+    /// carries no value).
+    pub fn to_c(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(4 + 8 * self.values.len());
+        out.extend_from_slice(&self.number.to_le_bytes());
+        out.push(self.axis as u8);
+        out.push(self.ptype);
+        if let Some(e) = Self::elem(self.ptype) {
+            for v in &self.values {
+                let at = out.len();
+                out.resize(at + e.size(), 0);
+                e.put(&mut out[at..], *v);
+            }
+        }
+        out
+    }
+    /// Reads one record from the start of `inp` (what `to_c` wrote) and
+    /// returns it with the bytes it takes, padding included (the padding
+    /// of the last record may be missing). EW_ATTRIB for a type other than
+    /// 0..4, EW_LENGTH if the record does not fit in `inp`.
+    pub fn from_c(inp: &[u8], axes: usize) -> Result<(Packed, usize)> {
+        if inp.len() < 4 {
+            return Err(Error::local(EW_LENGTH, "a record does not fit in length"));
+        }
+        let number = i16::from_le_bytes([inp[0], inp[1]]);
+        let axis = inp[2] as i8;
+        let ptype = inp[3];
+        let e = Self::elem(ptype).ok_or(Error::local(
+            crate::ew::EW_ATTRIB,
+            "parameter type not 0..4",
+        ))?;
+        let n = Self::count(axis, axes);
+        let end = 4 + n * e.size();
+        if inp.len() < end {
+            return Err(Error::local(EW_LENGTH, "a record does not fit in length"));
+        }
+        let values = (0..n).map(|i| e.get(&inp[4 + i * e.size()..])).collect();
+        Ok((
+            Packed {
+                number,
+                axis,
+                ptype,
+                values,
+            },
+            ((end + 3) & !3).min(inp.len()),
+        ))
+    }
+    /// The record of a 0x008d answer block: the first value, or `axes`
+    /// values for a block with axis < 0.
+    pub fn of_block(b: &Param30, axes: usize) -> Result<Packed> {
+        let ptype = b.ptype as u8;
+        let real = Self::elem(ptype) == Some(Elem::Real);
+        let n = Self::count(b.axis as i8, axes);
+        if b.values.len() < n {
+            return Err(Error::protocol(
+                crate::error::detail::SHORT_PAYLOAD,
+                "parameter block carries fewer values than its axis word needs",
+            ));
+        }
+        Ok(Packed {
+            number: b.number as i16,
+            axis: if b.axis < 0 { -1 } else { b.axis as i8 },
+            ptype,
+            values: b.values[..n]
+                .iter()
+                .map(|v| num_of_value(*v, real))
+                .collect(),
+        })
+    }
+    /// The 0x008e write block of the record (cnc_wrparam's payload).
+    pub fn to_block(&self) -> Vec<u8> {
+        WriteParam {
+            number: self.number as i32,
+            axis: self.axis as i16,
+            ptype: self.ptype as u16,
+            values: self.values.clone(),
+        }
+        .payload(CncClass::Series30)
+    }
+}
+
+/// Size of one block of a 30i 0x008d answer / 0x008e write.
+pub fn block_len(max_axes: usize) -> usize {
+    8 + 8 * max_axes
+}
+
+/// One exchange of cnc_rdparar: [s, e, axis] → the records of the answer's
+/// whole blocks (8 + 8 · max-axes bytes each; a ragged tail is ignored).
+#[derive(Debug, Clone, Copy)]
+pub struct ReadRange {
+    pub start: i32,
+    pub end: i32,
+    pub axis: i16,
+}
+
+impl Call for ReadRange {
+    type Output = Vec<Packed>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(
+            RDPARAM,
+            &[self.start, self.end, self.axis as i32],
+        )]
+    }
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<Packed>> {
+        let s = sub(resp, 0)?;
+        let axes = (cx.max_axes as usize).min(crate::types::MAX_AXIS);
+        let size = block_len(cx.max_axes as usize);
+        if s.payload.len() < size {
+            // FANUC's library then loops on a garbage number; we stop.
+            return Err(Error::protocol(
+                crate::error::detail::SHORT_PAYLOAD,
+                "parameter range answer shorter than one block",
+            ));
+        }
+        s.payload
+            .chunks_exact(size)
+            .map(|c| Packed::of_block(&Param30::from_bytes(c)?, axes))
+            .collect()
+    }
+}
+
+/// One frame of cnc_wrparas: up to [`WRPARAS_PER_FRAME`] records as
+/// consecutive 0x008e blocks in one subpacket.
+#[derive(Debug, Clone)]
+pub struct WriteSeveral {
+    pub records: Vec<Packed>,
+}
+
+impl Call for WriteSeveral {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let payload = self.records.iter().flat_map(Packed::to_block).collect();
+        vec![ReqSub::cnc(WRPARAM, &[]).with_payload(payload)]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        sub(resp, 0).map(|_| ())
+    }
+}

@@ -151,6 +151,10 @@ impl TryFrom<RawParams> for Params {
     }
 }
 
+/// Items per answer of a 30i range read (cnc_rdparar); our choice, the
+/// limit of a real CNC is not known.
+pub const RANGE_PER_ANSWER: usize = 5;
+
 const fn err(code: i16) -> CncError {
     CncError::new(code)
 }
@@ -193,39 +197,64 @@ impl Machine {
         }
     }
 
-    /// 30i read (0x008d / 0x0093) of one item; `s..=e` ranges answer every
-    /// existing item in the range, one record block after the other.
+    /// 30i read (0x008d / 0x0093) [s, e, axis]. Every answer block has
+    /// max-axes value records (8 + 8 · max_axes bytes, unused records zero):
+    /// FANUC's cnc_rdparar sends the same [s, e, axis] as cnc_rdparam and
+    /// needs whole blocks, so a CNC cannot answer the two differently.
+    ///
+    /// `s == e`: that item, as [`Machine::read_values`] allows. A range
+    /// (`s < e`, cnc_rdparar): the existing items from `s` on, at most
+    /// [`RANGE_PER_ANSWER`] per answer (the library asks again from the
+    /// last number + 1); EW_NUMBER if there is none. In a range every item
+    /// answers in its own form (our choice; what a real CNC does is not
+    /// known): axis -1 all axes; axis 0 a non-axis item its value and an
+    /// axis item all axes (axis word -1); axis n an axis item its n-th value
+    /// and a non-axis item its value (axis word 0).
     pub fn table_read30(&self, path: u16, t: Table, s: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
-        let mut out = Vec::new();
-        let numbers: Vec<i32> = if s == e {
-            vec![self.entry(t, s)?.number]
-        } else {
-            self.table(t)
-                .iter()
-                .map(|x| x.number)
-                .filter(|n| (s..=e).contains(n))
-                .collect()
-        };
-        if numbers.is_empty() {
-            return Err(CncError::NUMBER);
-        }
-        for n in numbers {
-            let x = self.entry(t, n)?;
-            let rec = Param30 {
-                number: n,
+        let max = self.profile.cnc.max_axes as usize;
+        let block = |x: &Entry, axis: i16, vals: Vec<i32>| {
+            let mut values: Vec<Value> = vals
+                .into_iter()
+                .map(|v| Value {
+                    value: v,
+                    base: BASE_10,
+                    exp: if x.kind == Kind::Real { x.decimals } else { 0 },
+                })
+                .collect();
+            values.resize(max.max(values.len()), Value::default());
+            Param30 {
+                number: x.number,
                 axis,
                 ptype: x.kind.code(t),
-                values: self
-                    .read_values(path, x, axis)?
-                    .into_iter()
-                    .map(|v| Value {
-                        value: v,
-                        base: BASE_10,
-                        exp: if x.kind == Kind::Real { x.decimals } else { 0 },
-                    })
-                    .collect(),
+                values,
+            }
+            .to_bytes()
+        };
+        if s == e {
+            let x = self.entry(t, s)?;
+            return Ok(block(x, axis, self.read_values(path, x, axis)?));
+        }
+        let n_axes = self.axes(path)?;
+        if axis < -1 || axis as i32 > n_axes as i32 {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        let items: Vec<&Entry> = self
+            .table(t)
+            .iter()
+            .filter(|x| (s..=e).contains(&x.number))
+            .take(RANGE_PER_ANSWER)
+            .collect();
+        if items.is_empty() {
+            return Err(CncError::NUMBER);
+        }
+        let mut out = Vec::new();
+        for x in items {
+            let a = match (x.axis, axis) {
+                (_, -1) | (true, 0) => -1,
+                (false, _) => 0,
+                (true, a) => a,
             };
-            out.extend(rec.to_bytes());
+            out.extend(block(x, a, self.read_values(path, x, a)?));
         }
         Ok(out)
     }
@@ -298,19 +327,54 @@ impl Machine {
         })
     }
 
-    /// 0x008e (30i, 264 bytes) / 0x000f (16i, 40 bytes): write one parameter.
+    /// 0x008e (30i) / 0x000f (16i, 40 bytes): write parameters. A 30i
+    /// payload is one 264-byte block (cnc_wrparam) or several (cnc_wrparas
+    /// sends up to 5). Every block is checked before any is applied, so a
+    /// refused subpacket changes nothing and answers the first refusal (a
+    /// real CNC is said to stop at the failing parameter, keeping the
+    /// ones before it in the same subpacket).
     pub fn table_write(&mut self, path: u16, class16: bool, payload: &[u8]) -> Reply<Vec<u8>> {
-        let (number, axis, ptype, raw): (i32, i16, u16, Vec<(i32, i16)>) = if class16 {
+        let size = 8 + 8 * WRITE_RECORDS_30;
+        let blocks: Vec<&[u8]> = if class16 {
             if payload.len() != 8 + 4 * WRITE_VALUES_16 {
                 return Err(err(ew::EW_LENGTH));
             }
+            vec![payload]
+        } else {
+            if payload.is_empty() || payload.len() % size != 0 {
+                return Err(err(ew::EW_LENGTH));
+            }
+            payload.chunks_exact(size).collect()
+        };
+        let mut all = Vec::with_capacity(blocks.len());
+        for b in blocks {
+            all.push(self.check_write(path, class16, b)?);
+        }
+        for (number, new) in all {
+            let x = self.param_entry_mut(number).ok_or(CncError::NUMBER)?;
+            for (slot, v) in new {
+                if x.values.len() <= slot {
+                    x.values.resize(slot + 1, 0);
+                }
+                x.values[slot] = v;
+            }
+        }
+        Ok(Vec::new())
+    }
+
+    /// Checks one write block and returns the parameter's number and the
+    /// (slot, stored value) pairs it sets.
+    fn check_write(
+        &self,
+        path: u16,
+        class16: bool,
+        payload: &[u8],
+    ) -> Reply<(i32, Vec<(usize, i32)>)> {
+        let (number, axis, ptype, raw): (i32, i16, u16, Vec<(i32, i16)>) = if class16 {
             let p = Param16::from_bytes(payload).map_err(|_| err(ew::EW_LENGTH))?;
             let v = p.values.iter().map(|v| (*v, 0)).collect();
             (p.number, p.axis, p.ptype, v)
         } else {
-            if payload.len() != 8 + 8 * WRITE_RECORDS_30 {
-                return Err(err(ew::EW_LENGTH));
-            }
             let p = Param30::from_bytes(payload).map_err(|_| err(ew::EW_LENGTH))?;
             let v = p.values.iter().map(|r| (r.value, r.exp)).collect();
             (p.number, p.axis, p.ptype, v)
@@ -345,14 +409,7 @@ impl Machine {
             };
             new.push((slot, v));
         }
-        let x = self.param_entry_mut(number).ok_or(CncError::NUMBER)?;
-        for (slot, v) in new {
-            if x.values.len() <= slot {
-                x.values.resize(slot + 1, 0);
-            }
-            x.values[slot] = v;
-        }
-        Ok(Vec::new())
+        Ok((number, new))
     }
 
     fn param_entry_mut(&mut self, number: i32) -> Option<&mut Entry> {
