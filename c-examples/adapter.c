@@ -62,6 +62,7 @@ int main(int argc, char **argv)
     short fig_in[MAX_AXIS], fig_out[MAX_AXIS];
     int poll;
 
+    cnc_startupprocess(0, "focas.log"); /* no log file (FANUC's library needs the call) */
     if (cnc_allclibhndl3(host, port, 10, &h) != EW_OK) {
         fprintf(stderr, "cannot connect to %s:%u\n", host, port);
         return 1;
