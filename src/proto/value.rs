@@ -65,8 +65,16 @@ fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
     } else {
         x
     };
+    if x == 0.0 {
+        // Underflow (a huge exponent): nothing left to show.
+        return (0, 0);
+    }
     let mut dec = 8 - x.abs().log10().floor() as i32;
-    let digits = |dec: i32| (x * 10f64.powi(dec)).round();
+    // 10^dec in two halves: a subnormal x needs dec up to ~332, past f64's range.
+    let digits = |dec: i32| {
+        let h = dec / 2;
+        (x * 10f64.powi(h) * 10f64.powi(dec - h)).round()
+    };
     let mut m = digits(dec);
     if m.abs() >= 1e9 {
         dec -= 1;
@@ -76,4 +84,47 @@ fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
         m = digits(dec);
     }
     (m as i32, dec as i16)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extreme_binary_exponents_neither_panic_nor_wrap() {
+        for exp in [
+            i16::MIN,
+            -1100,
+            -1075,
+            -1000,
+            -500,
+            500,
+            1000,
+            1074,
+            1075,
+            1100,
+            i16::MAX,
+        ] {
+            for value in [1, -1, 5, i32::MAX, i32::MIN] {
+                let (m, dec) = Value {
+                    value,
+                    base: BASE_2,
+                    exp,
+                }
+                .to_decimal();
+                let x = f64::from(value) * 2f64.powi(-i32::from(exp));
+                if x == 0.0 {
+                    assert_eq!((m, dec), (0, 0), "{value}·2^-{exp}");
+                } else if x.is_finite() {
+                    let back = f64::from(m)
+                        / 10f64.powi(i32::from(dec) / 2)
+                        / 10f64.powi(i32::from(dec) - i32::from(dec) / 2);
+                    assert!(
+                        ((back - x) / x).abs() < 1e-8,
+                        "{value}·2^-{exp}: {m}e-{dec}"
+                    );
+                }
+            }
+        }
+    }
 }
