@@ -688,6 +688,37 @@ typedef struct ODBPRO {
 } ODBPRO;
 
 /*
+ cnc_rdprogdir: the program directory as text ("O1O1000%", see the function).
+ */
+typedef struct PRGDIR {
+    char prg_data[256];
+} PRGDIR;
+
+/*
+ A date of PRGDIR3 (`mdate`, `cdate`).
+ */
+typedef struct PRGDIR3_date {
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short dummy;
+} PRGDIR3_date;
+
+/*
+ cnc_rdprogdir3: one program of the directory (88 bytes).
+ */
+typedef struct PRGDIR3 {
+    LONG number;
+    LONG length;
+    LONG page;
+    char comment[52];
+    struct PRGDIR3_date mdate;
+    struct PRGDIR3_date cdate;
+} PRGDIR3;
+
+/*
  cnc_rdseqnum: sequence number.
  */
 typedef struct ODBSEQ {
@@ -1648,6 +1679,45 @@ short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struc
  `prgnum` must point to a writable ODBPRO.
  */
 short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
+
+/*
+ Reads the program directory as text: the programs numbered `datano_s`
+ to `datano_e`, `type` 0 "O1O1000%", 1 "%\nO1\nO1000(COMMENT)\n%", 2
+ "O1100O1000(COMMENT)2048%" (number, comment, size in bytes run
+ together), at most `length` bytes, no NUL terminator (all as FANUC's
+ library writes it, learnt from it against a fake CNC). An entry that does
+ not fit ends the text ("%" still written) with EW_LENGTH. Type not 0..2:
+ EW_ATTRIB, `datano_s` > `datano_e`: EW_NUMBER, `length` 0: EW_LENGTH, all
+ without traffic. Asks the CNC for 19 programs per exchange, as FANUC's.
+
+ # Safety
+ `prg_dir` must point to `length` writable bytes.
+ */
+short cnc_rdprogdir(unsigned short FlibHndl,
+                    short type,
+                    short datano_s,
+                    short datano_e,
+                    unsigned short length,
+                    struct PRGDIR *prg_dir);
+
+/*
+ Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
+ the numbers, 1 also the comments, 2 also size and modification date
+ (`page` and `cdate` are never written). Out: `*num_prog` records read,
+ `*top_prog` the number of the first (untouched when none was found, as
+ FANUC's library). Never writes more than `*num_prog` records. Type not
+ 0..2: EW_ATTRIB, `*num_prog` ≤ 0: EW_LENGTH, without traffic. Asks the
+ CNC for 19 programs per exchange at most, as FANUC's library.
+
+ # Safety
+ `top_prog` (4 bytes) and `num_prog` readable and writable; `buf` must
+ have `*num_prog` writable PRGDIR3 records.
+ */
+short cnc_rdprogdir3(unsigned short FlibHndl,
+                     short type,
+                     long *top_prog,
+                     short *num_prog,
+                     struct PRGDIR3 *buf);
 
 /*
  Reads the sequence number of the block being executed.

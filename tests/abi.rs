@@ -321,6 +321,8 @@ rust_layouts! {
     IODBTIMER { r#type, dummy, data }
     ODBTLIFE3 { datano, dummy, data }
     ODBTLIFE4 { datano, r#type, data }
+    PRGDIR { prg_data }
+    PRGDIR3 { number, length, page, comment, mdate, cdate }
 
     // --- alarm ---
     ODBALM { dummy, data }

@@ -392,3 +392,238 @@ fn null_pointers_bad_handles_and_lengths() {
     }
     cnc_freelibhndl(h);
 }
+
+// --- program directory (cnc_rdprogdir, cnc_rdprogdir3), self-contained ---
+
+mod progdir {
+    use fwlib32::ew::*;
+    use fwlib32::sim::{Profile, Simulator};
+    use fwlib32::types::*;
+    use fwlib32::*;
+    use std::ffi::CString;
+    use std::os::raw::{c_long, c_short, c_ushort};
+    use std::ptr::null_mut;
+
+    fn start() -> (Simulator, Profile, c_ushort) {
+        let p = Profile::default();
+        let s = Simulator::start(p.clone(), "127.0.0.1:0").expect("simulator");
+        let ip = CString::new("127.0.0.1").unwrap();
+        let mut h: c_ushort = 0;
+        assert_eq!(
+            unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
+            EW_OK
+        );
+        (s, p, h)
+    }
+
+    /// (number, size, comment) of the profile's programs in number order.
+    fn programs(p: &Profile) -> Vec<(i32, i32, String)> {
+        let mut v: Vec<_> = p
+            .programs
+            .iter()
+            .map(|s| (s.number, s.text.len() as i32, format!("({})", s.comment)))
+            .collect();
+        v.sort();
+        v
+    }
+
+    fn dir3(
+        h: c_ushort,
+        t: c_short,
+        top: i32,
+        num: c_short,
+    ) -> (c_short, i32, c_short, Vec<PRGDIR3>) {
+        let fill = PRGDIR3 {
+            number: -1,
+            length: -1,
+            page: -1,
+            comment: [0x55; 52],
+            mdate: PRGDIR3_date {
+                year: -1,
+                ..PRGDIR3_date::default()
+            },
+            cdate: PRGDIR3_date {
+                year: -1,
+                ..PRGDIR3_date::default()
+            },
+        };
+        // One spare record past `num` to catch overruns.
+        let mut b = vec![fill; num.max(0) as usize + 1];
+        let (mut top, mut n) = (top, num);
+        let r = unsafe {
+            cnc_rdprogdir3(
+                h,
+                t,
+                (&raw mut top).cast::<c_long>(),
+                &mut n,
+                b.as_mut_ptr(),
+            )
+        };
+        assert_eq!(
+            b.last().copied(),
+            Some(fill),
+            "wrote past *num_prog records"
+        );
+        b.pop();
+        (r, top, n, b)
+    }
+
+    fn comment(c: &[std::os::raw::c_char]) -> String {
+        c.iter()
+            .take_while(|x| **x != 0)
+            .map(|x| *x as u8 as char)
+            .collect()
+    }
+
+    #[test]
+    fn rdprogdir3_each_type_lists_the_profile_programs() {
+        let (_s, p, h) = start();
+        let want = programs(&p);
+        assert!(want.len() >= 2);
+        for t in 0..=2 {
+            let (r, top, n, b) = dir3(h, t, 1, 10);
+            assert_eq!(r, EW_OK, "type {t}");
+            assert_eq!(n as usize, want.len());
+            assert_eq!(top, want[0].0);
+            for (rec, (num, len, com)) in b.iter().zip(&want) {
+                assert_eq!(rec.number, *num);
+                assert_eq!(rec.page, -1, "page is never written");
+                assert_eq!(rec.cdate.year, -1, "cdate is never written");
+                if t >= 1 {
+                    assert_eq!(&comment(&rec.comment), com);
+                } else {
+                    assert_eq!(rec.comment, [0x55; 52]);
+                }
+                if t == 2 {
+                    assert_eq!(rec.length, *len);
+                } else {
+                    assert_eq!(rec.length, -1);
+                    assert_eq!(rec.mdate.year, -1);
+                }
+            }
+            for rec in &b[want.len()..] {
+                assert_eq!(rec.number, -1, "records past *num_prog untouched");
+            }
+        }
+        // Modification dates of default.toml.
+        let (_, _, _, b) = dir3(h, 2, 1, 10);
+        let d = |r: &PRGDIR3| {
+            (
+                r.mdate.year,
+                r.mdate.month,
+                r.mdate.day,
+                r.mdate.hour,
+                r.mdate.minute,
+                r.mdate.dummy,
+            )
+        };
+        assert_eq!(d(&b[0]), (2023, 11, 2, 7, 30, 0));
+        assert_eq!(d(&b[1]), (2024, 5, 17, 13, 45, 0));
+        cnc_freelibhndl(h);
+    }
+
+    #[test]
+    fn rdprogdir3_top_and_num() {
+        let (_s, p, h) = start();
+        let want = programs(&p);
+        // num 1: only the first; then the next from the one after it.
+        let (r, top, n, b) = dir3(h, 0, 0, 1);
+        assert_eq!((r, top, n, b[0].number), (EW_OK, want[0].0, 1, want[0].0));
+        let (r, top, n, b) = dir3(h, 0, want[0].0 + 1, 1);
+        assert_eq!((r, top, n, b[0].number), (EW_OK, want[1].0, 1, want[1].0));
+        // num far larger than the programs (several exchanges of 19).
+        let (r, _, n, _) = dir3(h, 1, 1, 50);
+        assert_eq!((r, n as usize), (EW_OK, want.len()));
+        // Nothing from top on: *num_prog 0, *top_prog untouched.
+        let (r, top, n, b) = dir3(h, 2, 99_999_999, 5);
+        assert_eq!((r, top, n), (EW_OK, 99_999_999, 0));
+        assert!(b.iter().all(|x| x.number == -1));
+        // Local checks.
+        assert_eq!(dir3(h, 3, 1, 5).0, EW_ATTRIB);
+        assert_eq!(dir3(h, -1, 1, 5).0, EW_ATTRIB);
+        assert_eq!(dir3(h, 0, 1, 0).0, EW_LENGTH);
+        assert_eq!(dir3(h, 0, 1, -2).0, EW_LENGTH);
+        cnc_freelibhndl(h);
+    }
+
+    fn dir(h: c_ushort, t: c_short, s: c_short, e: c_short, len: c_ushort) -> (c_short, Vec<u8>) {
+        let mut b = vec![0xCCu8; len as usize + 16];
+        let r = unsafe { cnc_rdprogdir(h, t, s, e, len, b.as_mut_ptr().cast()) };
+        assert!(
+            b[len as usize..].iter().all(|x| *x == 0xCC),
+            "wrote past length"
+        );
+        let end = b.iter().rposition(|x| *x != 0xCC).map_or(0, |i| i + 1);
+        b.truncate(end);
+        (r, b)
+    }
+
+    #[test]
+    fn rdprogdir_text_of_each_type() {
+        let (_s, p, h) = start();
+        let w = programs(&p);
+        let t0: String = w
+            .iter()
+            .map(|(n, _, _)| format!("O{n}"))
+            .collect::<String>()
+            + "%";
+        let t1 = format!(
+            "%\n{}%",
+            w.iter()
+                .map(|(n, _, c)| format!("O{n}{c}\n"))
+                .collect::<String>()
+        );
+        let t2: String = w
+            .iter()
+            .map(|(n, l, c)| format!("O{n}{c}{l}"))
+            .collect::<String>()
+            + "%";
+        assert_eq!(dir(h, 0, 1, 9999, 256), (EW_OK, t0.clone().into_bytes()));
+        assert_eq!(dir(h, 1, 1, 9999, 256), (EW_OK, t1.into_bytes()));
+        assert_eq!(dir(h, 2, 1, 9999, 256), (EW_OK, t2.into_bytes()));
+        // Range: only the first program.
+        let first = format!("O{}%", w[0].0);
+        assert_eq!(
+            dir(h, 0, 1, w[0].0 as c_short, 256),
+            (EW_OK, first.clone().into_bytes())
+        );
+        // None in range: "%".
+        assert_eq!(dir(h, 1, 9000, 9999, 256), (EW_OK, b"%".to_vec()));
+        // Too small: the entries that fit, "%", EW_LENGTH; never past length.
+        let len = first.len() as c_ushort;
+        assert_eq!(dir(h, 0, 1, 9999, len), (EW_LENGTH, first.into_bytes()));
+        assert_eq!(dir(h, 0, 1, 9999, 1), (EW_LENGTH, b"%".to_vec()));
+        // Local checks.
+        assert_eq!(dir(h, 3, 1, 9999, 256), (EW_ATTRIB, vec![]));
+        assert_eq!(dir(h, 0, 10, 9, 256), (EW_NUMBER, vec![]));
+        assert_eq!(dir(h, 0, 1, 9999, 0), (EW_LENGTH, vec![]));
+        cnc_freelibhndl(h);
+    }
+
+    #[test]
+    fn progdir_null_pointers_and_bad_handle() {
+        let (_s, _p, h) = start();
+        let (mut top, mut n): (i32, c_short) = (1, 5);
+        let mut b = [PRGDIR3::default(); 5];
+        let tp = (&raw mut top).cast::<c_long>();
+        unsafe {
+            assert_eq!(
+                cnc_rdprogdir3(h, 0, null_mut(), &mut n, b.as_mut_ptr()),
+                EW_DATA
+            );
+            assert_eq!(
+                cnc_rdprogdir3(h, 0, tp, null_mut(), b.as_mut_ptr()),
+                EW_DATA
+            );
+            assert_eq!(cnc_rdprogdir3(h, 0, tp, &mut n, null_mut()), EW_DATA);
+            assert_eq!(cnc_rdprogdir(h, 0, 1, 9999, 256, null_mut()), EW_DATA);
+            assert_eq!(
+                cnc_rdprogdir3(0x7777, 0, tp, &mut n, b.as_mut_ptr()),
+                EW_HANDLE
+            );
+            let mut d = PRGDIR::default();
+            assert_eq!(cnc_rdprogdir(0x7777, 0, 1, 9999, 256, &mut d), EW_HANDLE);
+            cnc_freelibhndl(h);
+        }
+    }
+}

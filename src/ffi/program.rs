@@ -5,9 +5,11 @@
 use super::{ffi_boundary, nonnull, put};
 use crate::client::handles;
 use crate::error::Error;
-use crate::ew::{EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::program::{self as pp, AUX_ORDER, Clock, Modal, ModalCall, ModalKind};
-use crate::types::{IODBTIME, IODBTIMER, ODBEXEPRG, ODBMDL, ODBPRO, ODBSEQ, ODBTLIFE3, ODBTLIFE4};
+use crate::types::{
+    IODBTIME, IODBTIMER, ODBEXEPRG, ODBMDL, ODBPRO, ODBSEQ, ODBTLIFE3, ODBTLIFE4, PRGDIR, PRGDIR3,
+};
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// The low 16 bits, as FANUC's library stores 32-bit numbers in shorts.
@@ -390,6 +392,140 @@ pub unsafe extern "C" fn cnc_rdntool(
         unsafe {
             put(&raw mut (*out).datano, low16(t.datano));
             put(&raw mut (*out).data, t.data);
+        }
+        Ok(())
+    })
+}
+
+/// Reads the program directory as text: the programs numbered `datano_s`
+/// to `datano_e`, `type` 0 "O1O1000%", 1 "%\nO1\nO1000(COMMENT)\n%", 2
+/// "O1100O1000(COMMENT)2048%" (number, comment, size in bytes run
+/// together), at most `length` bytes, no NUL terminator (all as FANUC's
+/// library writes it, learnt from it against a fake CNC). An entry that does
+/// not fit ends the text ("%" still written) with EW_LENGTH. Type not 0..2:
+/// EW_ATTRIB, `datano_s` > `datano_e`: EW_NUMBER, `length` 0: EW_LENGTH, all
+/// without traffic. Asks the CNC for 19 programs per exchange, as FANUC's.
+///
+/// # Safety
+/// `prg_dir` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdprogdir(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    datano_s: c_short,
+    datano_e: c_short,
+    length: c_ushort,
+    prg_dir: *mut PRGDIR,
+) -> c_short {
+    ffi_boundary!("cnc_rdprogdir", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(prg_dir)?.cast::<u8>();
+        if !(0..=2).contains(&r#type) {
+            return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or 2"));
+        }
+        if datano_s > datano_e {
+            return Err(Error::local(EW_NUMBER, "datano_s is after datano_e"));
+        }
+        if length == 0 {
+            return Err(Error::local(EW_LENGTH, "length must be at least 1"));
+        }
+        let mut text = pp::DirText::new(r#type, length);
+        let mut start = i32::from(datano_s);
+        'exchanges: loop {
+            let d = h.call(&pp::progdir(start, pp::PROGDIR_CHUNK, i32::from(r#type)))?;
+            let Some(last) = d.0.last().map(|e| e.number) else {
+                break;
+            };
+            for e in d.0.iter().take(pp::PROGDIR_CHUNK as usize) {
+                if e.number > i32::from(datano_e) || !text.push(e) {
+                    break 'exchanges;
+                }
+            }
+            // Numbers must grow from one exchange to the next.
+            if last < start || last >= i32::from(datano_e) {
+                break;
+            }
+            start = last + 1;
+        }
+        let b = text.finish();
+        let n = b.len().min(length as usize);
+        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, n) };
+        if text.full {
+            return Err(Error::local(
+                EW_LENGTH,
+                "the directory does not fit in length bytes",
+            ));
+        }
+        Ok(())
+    })
+}
+
+/// Size of one PRGDIR3 record (l32).
+const PRGDIR3_SIZE: usize = std::mem::size_of::<PRGDIR3>();
+
+/// Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
+/// the numbers, 1 also the comments, 2 also size and modification date
+/// (`page` and `cdate` are never written). Out: `*num_prog` records read,
+/// `*top_prog` the number of the first (untouched when none was found, as
+/// FANUC's library). Never writes more than `*num_prog` records. Type not
+/// 0..2: EW_ATTRIB, `*num_prog` ≤ 0: EW_LENGTH, without traffic. Asks the
+/// CNC for 19 programs per exchange at most, as FANUC's library.
+///
+/// # Safety
+/// `top_prog` (4 bytes) and `num_prog` readable and writable; `buf` must
+/// have `*num_prog` writable PRGDIR3 records.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdprogdir3(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    top_prog: *mut c_long,
+    num_prog: *mut c_short,
+    buf: *mut PRGDIR3,
+) -> c_short {
+    ffi_boundary!("cnc_rdprogdir3", {
+        let h = handles::get(FlibHndl)?;
+        let top = nonnull(top_prog)?.cast::<i32>();
+        let num = nonnull(num_prog)?;
+        let out = nonnull(buf)?.cast::<u8>();
+        let code =
+            pp::progdir3_code(r#type).ok_or(Error::local(EW_ATTRIB, "type must be 0, 1 or 2"))?;
+        let want = unsafe { num.read_unaligned() };
+        if want <= 0 {
+            return Err(Error::local(EW_LENGTH, "*num_prog must be at least 1"));
+        }
+        let want = want as usize;
+        let mut start = unsafe { top.read_unaligned() };
+        let mut got: Vec<pp::DirEntry> = Vec::new();
+        while got.len() < want {
+            let ask = (want - got.len()).min(pp::PROGDIR_CHUNK as usize);
+            let d = h.call(&pp::progdir(start, ask as i32, code))?;
+            let n = d.0.len().min(ask);
+            got.extend_from_slice(&d.0[..n]);
+            match d.0[..n].last() {
+                Some(l) if n == ask && l.number >= start && l.number < i32::MAX => {
+                    start = l.number + 1
+                }
+                _ => break,
+            }
+        }
+        for (i, e) in got.iter().enumerate() {
+            let at = unsafe { out.add(i * PRGDIR3_SIZE) };
+            unsafe {
+                put(at.cast::<i32>(), e.number);
+                if r#type >= 1 {
+                    put(at.add(12).cast::<[u8; 52]>(), e.comment);
+                }
+                if r#type == 2 {
+                    put(at.add(4).cast::<i32>(), e.length);
+                    put(at.add(64).cast::<[u16; 6]>(), e.date);
+                }
+            }
+        }
+        unsafe {
+            put(num, got.len() as c_short);
+            if let Some(f) = got.first() {
+                put(top, f.number);
+            }
         }
         Ok(())
     })

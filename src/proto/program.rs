@@ -24,6 +24,12 @@ pub const EXEPRGNAME: u16 = 0x00cf;
 pub const EXEPRGNAME2: u16 = 0x00fc;
 pub const RDTIMER: u16 = 0x0120;
 pub const RDACTPT: u16 = 0x0162;
+/// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
+/// cnc_rdprogdir3).
+pub const RDPROGDIR: u16 = 0x0006;
+
+/// Records FANUC's library asks for per 0x0006 exchange.
+pub const PROGDIR_CHUNK: i32 = 19;
 
 wire_struct! {
     /// Payload of 0x0162 (cnc_rdactpt): program number and block pointer.
@@ -338,5 +344,149 @@ impl Call for ModalCall {
             ModalKind::G(_) => Modal::G(payload(resp, 0)?),
             _ => Modal::Aux(payload(resp, 0)?),
         })
+    }
+}
+
+/// One 72-byte record of 0x0006: number, size in bytes, comment (as the CNC
+/// sends it, with its parentheses), modification date (year, month, day,
+/// hour, minute, one more word).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DirEntry {
+    pub number: i32,
+    pub length: i32,
+    pub comment: [u8; 52],
+    pub date: [u16; 6],
+}
+
+impl Default for DirEntry {
+    fn default() -> Self {
+        DirEntry {
+            number: 0,
+            length: 0,
+            comment: [0; 52],
+            date: [0; 6],
+        }
+    }
+}
+
+impl DirEntry {
+    /// The comment up to its first NUL.
+    pub fn comment_text(&self) -> &[u8] {
+        self.comment.split(|c| *c == 0).next().unwrap_or(&[])
+    }
+}
+
+impl Wire for DirEntry {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.number);
+        w.i32(self.length);
+        w.bytes(&self.comment);
+        for d in self.date {
+            w.u16(d);
+        }
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let number = r.i32()?;
+        let length = r.i32()?;
+        let comment = r.array()?;
+        let mut date = [0u16; 6];
+        for d in &mut date {
+            *d = r.u16()?;
+        }
+        Ok(DirEntry {
+            number,
+            length,
+            comment,
+            date,
+        })
+    }
+}
+
+/// Payload of 0x0006: the records (empty: no program from `top` on).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct ProgDir(pub Vec<DirEntry>);
+
+impl Wire for ProgDir {
+    fn encode(&self, w: &mut Writer) {
+        self.0.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        Ok(ProgDir(Vec::decode(r)?))
+    }
+}
+
+/// One 0x0006 exchange: up to `count` programs numbered `top` or more.
+pub fn progdir(top: i32, count: i32, code: i32) -> Single<ProgDir> {
+    Single::new(ReqSub::cnc(RDPROGDIR, &[top, count, code]))
+}
+
+/// cnc_rdprogdir3's type → 0x0006 code (FANUC's library: 0→0, 1→1, 2→3).
+pub fn progdir3_code(kind: i16) -> Option<i32> {
+    match kind {
+        0 => Some(0),
+        1 => Some(1),
+        2 => Some(3),
+        _ => None,
+    }
+}
+
+/// cnc_rdprogdir's text (FANUC's library, learnt from it with a fake CNC):
+/// type 0 "O1O1000%", type 1 "%\nO1\nO1000(COMMENT)\n%" (the leading
+/// "%\n" only with at least one entry), type 2 "O1100O1000(COMMENT)2048%"
+/// (number, comment, size run together). No NUL terminator.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct DirText {
+    kind: i16,
+    room: usize,
+    body: Vec<u8>,
+    /// An entry did not fit.
+    pub full: bool,
+}
+
+impl DirText {
+    pub fn new(kind: i16, room: u16) -> Self {
+        DirText {
+            kind,
+            room: room as usize,
+            ..DirText::default()
+        }
+    }
+
+    fn prefix(&self) -> usize {
+        if self.kind == 1 { 2 } else { 0 }
+    }
+
+    /// Appends one entry if it and the final "%" fit in `room` bytes;
+    /// false (and `full`) when it does not.
+    pub fn push(&mut self, e: &DirEntry) -> bool {
+        let mut t = format!("O{}", e.number).into_bytes();
+        match self.kind {
+            0 => {}
+            1 => {
+                t.extend_from_slice(e.comment_text());
+                t.push(b'\n');
+            }
+            _ => {
+                t.extend_from_slice(e.comment_text());
+                t.extend_from_slice(e.length.to_string().as_bytes());
+            }
+        }
+        if self.prefix() + self.body.len() + t.len() + 1 > self.room {
+            self.full = true;
+            return false;
+        }
+        self.body.extend_from_slice(&t);
+        true
+    }
+
+    /// The finished text (at most `room` bytes when `room` ≥ 1).
+    pub fn finish(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(self.body.len() + 3);
+        if self.kind == 1 && !self.body.is_empty() {
+            out.extend_from_slice(b"%\n");
+        }
+        out.extend_from_slice(&self.body);
+        out.push(b'%');
+        out
     }
 }

@@ -276,6 +276,16 @@ impl CncService for Machine {
         self.sim_opmode(path)
     }
 
+    fn prog_dir(
+        &mut self,
+        _path: u16,
+        top: i32,
+        count: i32,
+        code: i32,
+    ) -> Reply<crate::proto::program::ProgDir> {
+        self.sim_prog_dir(top, count, code)
+    }
+
     // --- alarm ---
     fn alarm_messages(&mut self, path: u16, kind: i32, num: i32, text_len: i32) -> Reply<Vec<u8>> {
         self.sim_alarm_messages(path, kind, num, text_len)

@@ -8,8 +8,8 @@ use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::alarm::OpMsg;
 use crate::proto::program::{
-    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, OpMode,
-    PathName, Timer,
+    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, ExePrgName, ExecProg, GCode, GModal,
+    OpMode, PathName, ProgDir, Timer,
 };
 use crate::proto::wire::{Reader, Wire, Writer};
 use serde::Deserialize;
@@ -345,6 +345,89 @@ impl Machine {
                 text: Vec::new(),
             },
         })
+    }
+}
+
+/// A `[[program]]`'s date when the profile gives none.
+pub const DEFAULT_PROGRAM_DATE: [u16; 5] = [2024, 5, 17, 13, 45];
+
+/// A `[[program]]`'s modification date as year, month, day, hour, minute
+/// (`date = "YYYY-MM-DD HH:MM"`).
+pub fn program_date(p: &super::run::StoredProgram) -> Result<[u16; 5], String> {
+    let Some(d) = &p.date else {
+        return Ok(DEFAULT_PROGRAM_DATE);
+    };
+    let bad = || format!("date = {d:?} is not \"YYYY-MM-DD HH:MM\"");
+    let (day, time) = d.trim().split_once(' ').ok_or_else(bad)?;
+    let mut ymd = day.split('-').map(|x| x.parse::<u16>());
+    let mut hm = time.trim().split(':').map(|x| x.parse::<u16>());
+    let next = |it: &mut dyn Iterator<Item = Result<u16, _>>| -> Result<u16, String> {
+        it.next().and_then(|x| x.ok()).ok_or_else(bad)
+    };
+    let v = [
+        next(&mut ymd)?,
+        next(&mut ymd)?,
+        next(&mut ymd)?,
+        next(&mut hm)?,
+        next(&mut hm)?,
+    ];
+    if ymd.next().is_some()
+        || hm.next().is_some()
+        || !(1..=12).contains(&v[1])
+        || !(1..=31).contains(&v[2])
+        || v[3] > 23
+        || v[4] > 59
+    {
+        return Err(bad());
+    }
+    Ok(v)
+}
+
+/// Record codes of 0x0006: cnc_rdprogdir's types 0..2 and cnc_rdprogdir3's 0, 1, 3.
+const PROGDIR_CODES: std::ops::RangeInclusive<i32> = 0..=3;
+
+impl Machine {
+    /// 0x0006: up to `count` stored programs numbered `top` or more, in
+    /// number order, as full records whatever the code (a real CNC's reply
+    /// to FANUC's library carries all fields for every type): size = the
+    /// text's length in bytes, comment in parentheses (cut to 50
+    /// characters), the profile's date. No program: an empty payload.
+    pub(crate) fn sim_prog_dir(&self, top: i32, count: i32, code: i32) -> Reply<ProgDir> {
+        if !PROGDIR_CODES.contains(&code) {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        if count <= 0 {
+            return Err(err(ew::EW_LENGTH));
+        }
+        let mut progs: Vec<&super::run::StoredProgram> = self
+            .profile
+            .programs
+            .iter()
+            .filter(|p| p.number >= top)
+            .collect();
+        progs.sort_by_key(|p| p.number);
+        Ok(ProgDir(
+            progs
+                .into_iter()
+                .take(count as usize)
+                .map(|p| {
+                    let mut comment = [0u8; 52];
+                    if !p.comment.is_empty() {
+                        let c: String = p.comment.chars().take(50).collect();
+                        let t = format!("({c})");
+                        let n = t.len().min(51);
+                        comment[..n].copy_from_slice(&t.as_bytes()[..n]);
+                    }
+                    let d = program_date(p).unwrap_or(DEFAULT_PROGRAM_DATE);
+                    DirEntry {
+                        number: p.number,
+                        length: p.text.len() as i32,
+                        comment,
+                        date: [d[0], d[1], d[2], d[3], d[4], 0],
+                    }
+                })
+                .collect(),
+        ))
     }
 }
 

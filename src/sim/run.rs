@@ -26,6 +26,9 @@ pub struct StoredProgram {
     pub comment: String,
     /// The program text, one block per line ("N10 G01 X10. F500;" ...).
     pub text: String,
+    /// Last modification, "YYYY-MM-DD HH:MM" (cnc_rdprogdir3 type 2);
+    /// absent: 2024-05-17 13:45 (src/sim/program.rs).
+    pub date: Option<String>,
 }
 
 /// `[path.cycle]`: the program a path runs and how fast it goes.
@@ -803,6 +806,8 @@ impl Profile {
             if !p.text.is_ascii() {
                 return Err(format!("[[program]] O{:04}: text must be ASCII", p.number));
             }
+            super::program::program_date(p)
+                .map_err(|e| format!("[[program]] O{:04}: {e}", p.number))?;
         }
         for (i, p) in self.paths.iter().enumerate() {
             let c = &p.cycle;

@@ -189,6 +189,10 @@ pub trait CncService: Send {
     fn opmode(&mut self, path: u16) -> Reply<pprog::OpMode> {
         unsupported()
     }
+    /// 0x0006[top, count, code]: program directory records.
+    fn prog_dir(&mut self, path: u16, top: i32, count: i32, code: i32) -> Reply<pprog::ProgDir> {
+        unsupported()
+    }
 
     // --- alarm ---
     /// 0x0023[type, num, _, text_len]: active alarms, records already encoded.
@@ -388,6 +392,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
                 svc.set_clock(p, a[0], &sub.payload).map(|_| Vec::new())
             }
             (CLASS_CNC, pprog::RDOPMODE) => enc(svc.opmode(p)),
+            (CLASS_CNC, pprog::RDPROGDIR) => enc(svc.prog_dir(p, a[0], a[1], a[2])),
 
             // --- alarm ---
             (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),

@@ -154,3 +154,53 @@ pub struct ODBTLIFE4 {
     pub r#type: c_short,
     pub data: LONG,
 }
+
+/// cnc_rdprogdir: the program directory as text ("O1O1000%", see the function).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PRGDIR {
+    pub prg_data: [c_char; 256],
+}
+
+impl Default for PRGDIR {
+    fn default() -> Self {
+        PRGDIR { prg_data: [0; 256] }
+    }
+}
+
+/// A date of PRGDIR3 (`mdate`, `cdate`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PRGDIR3_date {
+    pub year: c_short,
+    pub month: c_short,
+    pub day: c_short,
+    pub hour: c_short,
+    pub minute: c_short,
+    pub dummy: c_short,
+}
+
+/// cnc_rdprogdir3: one program of the directory (88 bytes).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PRGDIR3 {
+    pub number: LONG,
+    pub length: LONG,
+    pub page: LONG,
+    pub comment: [c_char; 52],
+    pub mdate: PRGDIR3_date,
+    pub cdate: PRGDIR3_date,
+}
+
+impl Default for PRGDIR3 {
+    fn default() -> Self {
+        PRGDIR3 {
+            number: 0,
+            length: 0,
+            page: 0,
+            comment: [0; 52],
+            mdate: PRGDIR3_date::default(),
+            cdate: PRGDIR3_date::default(),
+        }
+    }
+}
