@@ -8,7 +8,7 @@ pub mod pair;
 pub mod upload;
 
 use crate::error::{Error, Result};
-use crate::proto::call::Call;
+use crate::proto::call::{Call, Ctx};
 use handles::Handle;
 
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
@@ -17,6 +17,12 @@ const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
 const PMC_DETAIL_CODES: [i16; 6] = [3, 5, 8, 13, 17, 18];
 
 impl Handle {
+    /// What calls know about the CNC on this handle's current path.
+    pub fn ctx(&self) -> Ctx {
+        let path = self.state.lock().path;
+        self.pair.info.ctx(path)
+    }
+
     /// Runs a call on this handle's pair with its path and timeout, and
     /// records the error detail.
     pub fn call<C: Call>(&self, c: &C) -> Result<C::Output> {

@@ -8,7 +8,6 @@ use super::{ffi_boundary, nonnull, put};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NOOPT, EW_NUMBER};
-use crate::proto::call::Ctx;
 use crate::proto::position::{
     ACTF, ACTS, AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData,
     actual, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
@@ -27,11 +26,6 @@ use std::os::raw::{c_char, c_short, c_ushort};
 /// `base + off .. + size_of::<T>()` must be writable.
 unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
     unsafe { put(base.add(off).cast::<T>(), v) }
-}
-
-fn ctx(h: &Handle) -> Ctx {
-    let path = h.state.lock().path;
-    h.pair.info.ctx(path)
 }
 
 /// The spindle functions of a 30i-class CNC need the open response's
@@ -661,7 +655,7 @@ fn axis_values(
         let length = length.max(0) as usize;
         // One value, or one per axis the CNC can have (all axes).
         let need = if axis == -1 {
-            data + 4 * usize::from(ctx(&h).max_axes).min(MAX_AXIS)
+            data + 4 * h.ctx().axes()
         } else {
             data + 4
         };

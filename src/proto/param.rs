@@ -296,11 +296,7 @@ pub struct ReadOne {
 
 impl ReadOne {
     fn count(&self, cx: &Ctx) -> usize {
-        if self.axis == -1 {
-            (cx.max_axes as usize).min(crate::types::MAX_AXIS)
-        } else {
-            1
-        }
+        if self.axis == -1 { cx.axes() } else { 1 }
     }
 }
 
@@ -673,7 +669,7 @@ impl Call for ReadExt {
             .collect()
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
-        let count = (cx.max_axes as usize).min(crate::types::MAX_AXIS);
+        let count = cx.axes();
         let mut out = Vec::with_capacity(self.numbers.len());
         for (k, n) in self.numbers.iter().enumerate() {
             let one = || -> Result<ExtRecord> {
@@ -868,7 +864,7 @@ impl Call for ReadRange {
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<Packed>> {
         let s = sub(resp, 0)?;
-        let axes = (cx.max_axes as usize).min(crate::types::MAX_AXIS);
+        let axes = cx.axes();
         let size = block_len(cx.max_axes as usize);
         if s.payload.len() < size {
             // FANUC's library then loops on a garbage number; we stop.
