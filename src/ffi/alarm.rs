@@ -2,9 +2,8 @@
 
 // --- alarm ---
 
-use super::offset::put_at;
 use super::program::low16;
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};

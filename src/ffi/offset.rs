@@ -5,7 +5,7 @@
 //! library against a fake CNC). Outputs are written field by field at their
 //! l32 offsets, and only on success.
 
-use super::{ffi_boundary, nonnull};
+use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
@@ -13,19 +13,6 @@ use crate::proto::offset as p;
 use crate::proto::value::Value;
 use crate::types::{IODBTO, IODBZOFS, IODBZOR, ODBTLINF, ODBTOFS};
 use std::os::raw::{c_long, c_short, c_ushort};
-
-/// Writes `v` at byte offset `off` of the caller's buffer.
-///
-/// # Safety
-/// `base + off .. + size_of::<T>()` must be writable.
-pub(crate) unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
-    unsafe { base.add(off).cast::<T>().write_unaligned(v) }
-}
-
-/// The caller's `length` as a byte count (negative counts as 0).
-pub(crate) fn len_of(length: c_short) -> usize {
-    length.max(0) as usize
-}
 
 /// Bytes IODBZOFS needs for `axis`, FANUC's local check: axis -1 all axes,
 /// axis > max → EW_ATTRIB, axis below -1 → EW_LENGTH (as FANUC's library).
@@ -44,10 +31,7 @@ fn first(v: &[Value]) -> Result<i32> {
 }
 
 fn short() -> Error {
-    Error::protocol(
-        crate::error::detail::SHORT_PAYLOAD,
-        "payload shorter than the answer needs",
-    )
+    Error::short("payload shorter than the answer needs")
 }
 
 /// Reads one tool offset value (`type`: offset kind, e.g. on a mill with

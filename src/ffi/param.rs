@@ -440,10 +440,7 @@ pub unsafe extern "C" fn cnc_rdparar(
                 last = Some(r.number as i32);
             }
             let Some(l) = last else {
-                return Err(Error::protocol(
-                    crate::error::detail::SHORT_PAYLOAD,
-                    "parameter range answer without a block",
-                ));
+                return Err(Error::short("parameter range answer without a block"));
             };
             // The CNC must move on; a number at or before the last request's
             // start would make us ask the same again forever.

@@ -4,7 +4,7 @@
 //! FANUC's library writes (so a caller's buffer of `length` bytes is never
 //! overrun), and only on success.
 
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NOOPT, EW_NUMBER};
@@ -19,14 +19,6 @@ use crate::types::{
 };
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_char, c_short, c_ushort};
-
-/// Writes `v` at byte offset `off` of the caller's buffer.
-///
-/// # Safety
-/// `base + off .. + size_of::<T>()` must be writable.
-unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
-    unsafe { put(base.add(off).cast::<T>(), v) }
-}
 
 /// The spindle functions of a 30i-class CNC need the open response's
 /// spindle word (SPEC.md §5.3): without it EW_NOOPT, without traffic.
@@ -667,10 +659,7 @@ fn axis_values(
         }
         let recs = h.call(&position(code, axis))?;
         if recs.is_empty() {
-            return Err(Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
-                "no position record",
-            ));
+            return Err(Error::short("no position record"));
         }
         let room = ((length - data) / 4).min(MAX_AXIS);
         let n = if axis == -1 { recs.len().min(room) } else { 1 };

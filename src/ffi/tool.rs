@@ -3,8 +3,7 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::offset::{len_of, put_at};
-use super::{ffi_boundary, nonnull};
+use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::EW_FUNC;

@@ -311,12 +311,7 @@ impl Call for ReadOne {
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Item> {
         let count = self.count(cx);
-        let short = || {
-            Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
-                "parameter answer carries fewer values than the axis count",
-            )
-        };
+        let short = || Error::short("parameter answer carries fewer values than the axis count");
         match cx.class {
             CncClass::Series30 => {
                 let p: Param30 = payload(resp, 0)?;
@@ -692,10 +687,7 @@ impl Call for ReadExt {
                 }
                 let p = Param30::from_bytes(&v.payload)?;
                 if p.values.len() < count {
-                    return Err(Error::protocol(
-                        crate::error::detail::SHORT_PAYLOAD,
-                        "fewer value records than the CNC's axes",
-                    ));
+                    return Err(Error::short("fewer value records than the CNC's axes"));
                 }
                 let (info, unit) = match self.table {
                     Table::Param => (t.ext_info_param(), t.ext_unit_param()),
@@ -813,8 +805,7 @@ impl Packed {
         let real = Self::elem(ptype) == Some(Elem::Real);
         let n = Self::count(b.axis as i8, axes);
         if b.values.len() < n {
-            return Err(Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
+            return Err(Error::short(
                 "parameter block carries fewer values than its axis word needs",
             ));
         }
@@ -868,8 +859,7 @@ impl Call for ReadRange {
         let size = block_len(cx.max_axes as usize);
         if s.payload.len() < size {
             // FANUC's library then loops on a garbage number; we stop.
-            return Err(Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
+            return Err(Error::short(
                 "parameter range answer shorter than one block",
             ));
         }
