@@ -9,6 +9,7 @@ pub mod upload;
 
 use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx};
+use crate::proto::status::SysInfo;
 use handles::Handle;
 
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
@@ -21,6 +22,13 @@ impl Handle {
     pub fn ctx(&self) -> Ctx {
         let path = self.state.lock().path;
         self.pair.info.ctx(path)
+    }
+
+    /// The sysinfo answer the CNC gave at connect time for this handle's
+    /// current path; None if the path has none.
+    pub fn sysinfo(&self) -> Option<SysInfo> {
+        let path = self.state.lock().path as usize;
+        self.pair.info.sysinfo.get(path - 1).copied().flatten()
     }
 
     /// Runs a call on this handle's pair with its path and timeout, and

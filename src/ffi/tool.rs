@@ -110,15 +110,7 @@ pub unsafe extern "C" fn cnc_rdtlctldata(FlibHndl: c_ushort, tlctl: *mut IODBTLC
     ffi_boundary!("cnc_rdtlctldata", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(tlctl)?.cast::<u8>();
-        let path = h.state.lock().path as usize;
-        let mt = h
-            .pair
-            .info
-            .sysinfo
-            .get(path - 1)
-            .copied()
-            .flatten()
-            .map(|s| s.mt_type);
+        let mt = h.sysinfo().map(|s| s.mt_type);
         if !matches!(mt, Some([b' ', b'P' | b'L'])) {
             return Err(Error::local(EW_FUNC, "not a punch press"));
         }
