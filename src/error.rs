@@ -66,6 +66,10 @@ impl Error {
             msg: msg.into(),
         }
     }
+    /// A payload shorter than the decoder needs: EW_PROTOCOL, never garbage.
+    pub fn short(msg: impl Into<String>) -> Error {
+        Error::protocol(detail::SHORT_PAYLOAD, msg)
+    }
     pub const fn local(code: c_short, msg: &'static str) -> Error {
         Error::Local { code, msg }
     }

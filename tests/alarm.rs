@@ -3,11 +3,12 @@
 //! cnc_alarm/alarm2/rdalmmsg/rdalmmsg2/rdalminfo/rdopmsg; NULL pointers,
 //! bad handles and lengths; nothing written past the caller's buffer.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 use std::ptr::null_mut;
 
@@ -61,15 +62,7 @@ const WANT: [Want; 3] = [
 ];
 
 fn start(profile: &str) -> (Simulator, c_ushort) {
-    let s = Simulator::start(Profile::parse(profile).expect("profile"), "127.0.0.1:0")
-        .expect("simulator");
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    (s, h)
+    sim::start_alloc(Profile::parse(profile).expect("profile"))
 }
 
 fn text(c: &[c_char], n: usize) -> String {
@@ -90,7 +83,7 @@ fn alarm_bits() {
     assert_eq!(unsafe { cnc_alarm(h, &mut a) }, EW_OK);
     assert_eq!(a.data, bits as u16 as i16, "low 16 bits");
     assert_eq!(a.dummy, [5, 5]);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -137,7 +130,7 @@ fn alarm_messages() {
     let w = &WANT[2];
     assert_eq!(recs2[2].msg_len as usize, w.message.len());
     assert_eq!(text(&recs2[2].alm_msg, w.message.len()), w.message);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -193,7 +186,7 @@ fn alarm_info() {
 
     let mut a = ALMINFO::default();
     assert_eq!(unsafe { cnc_rdalminfo(h, 0, -1, 4, &mut a) }, EW_LENGTH);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -214,7 +207,7 @@ fn no_alarms() {
     unsafe { a.u.alm1.alm[0].axis = 7 };
     assert_eq!(unsafe { cnc_rdalminfo(h, 0, -1, 44, &mut a) }, EW_OK);
     assert_eq!(unsafe { a.u.alm1.alm[0].axis }, -1);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -242,7 +235,7 @@ fn operator_messages() {
 
     assert_eq!(unsafe { cnc_rdopmsg(h, 0, 5, &mut m) }, EW_LENGTH);
     assert_eq!(unsafe { cnc_rdopmsg(h, -1, 1310, &mut m) }, EW_ATTRIB);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -270,5 +263,5 @@ fn null_pointers_and_bad_handles() {
         let mut o = OPMSG::default();
         assert_eq!(cnc_rdopmsg(bad, 0, 262, &mut o), EW_HANDLE);
     }
-    cnc_freelibhndl(h);
+    sim::free(h);
 }

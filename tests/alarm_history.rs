@@ -4,28 +4,19 @@
 //! mixed with good ones, an overrunning message length, a caller `length`
 //! too small, a negative count).
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::proto::alarm::{AlmHisRecord, AlmHistory};
 use fwlib32::proto::offset::Count;
 use fwlib32::proto::open::OpenBody;
 use fwlib32::proto::status::SysInfo;
 use fwlib32::sim::service::{CncService, Reply};
-use fwlib32::sim::{Machine, Profile, Shared, Simulator};
+use fwlib32::sim::{Machine, Profile, Shared};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::c_ushort;
 use std::time::{Duration, SystemTime};
-
-fn connect(port: u16) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), port, 5, &mut h) },
-        EW_OK
-    );
-    h
-}
 
 fn text(c: &[std::os::raw::c_char], n: usize) -> String {
     c[..n].iter().map(|x| *x as u8 as char).collect()
@@ -60,8 +51,8 @@ fn hisno(h: c_ushort) -> u16 {
 
 #[test]
 fn profile_history_reads_back_with_fanucs_year_quirks() {
-    let s = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
-    let h = connect(s.port());
+    let s = sim::start(Profile::default());
+    let h = sim::connect(s.port());
     let p = Profile::default();
     let want = &p.alarm_history.entries;
     assert_eq!(usize::from(hisno(h)), want.len());
@@ -111,14 +102,14 @@ fn profile_history_reads_back_with_fanucs_year_quirks() {
         assert_eq!(cnc_rdalmhisno(h, std::ptr::null_mut()), EW_DATA);
         assert_eq!(cnc_rdalmhisno(0, std::ptr::null_mut()), EW_HANDLE);
     }
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
 fn empty_history() {
     let p = Profile::parse("[[path]]\n[[path.axis]]\nname = \"X\"\n").unwrap();
-    let s = Simulator::start(p, "127.0.0.1:0").unwrap();
-    let h = connect(s.port());
+    let s = sim::start(p);
+    let h = sim::connect(s.port());
     assert_eq!(hisno(h), 0);
     let (r, b) = his(h, 1, 10, 486);
     assert_eq!(r, EW_OK);
@@ -128,7 +119,7 @@ fn empty_history() {
     let (r, b) = his2(h, 1, 10, 524);
     assert_eq!(r, EW_OK);
     assert_eq!((as_his2(&b).s_no, as_his2(&b).e_no), (1, 0));
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -176,8 +167,8 @@ fn full_ring_wraps_around() {
     assert_eq!(m.history_count().unwrap().value, 4);
 
     // The same through the C ABI: a simulator started from the wrapped ring.
-    let s = Simulator::start(m.profile.clone(), "127.0.0.1:0").unwrap();
-    let h = connect(s.port());
+    let s = sim::start(m.profile.clone());
+    let h = sim::connect(s.port());
     assert_eq!(hisno(h), 4);
     let (r, b) = his2(h, 1, 10, 524);
     assert_eq!(r, EW_OK);
@@ -186,7 +177,7 @@ fn full_ring_wraps_around() {
     let nos: Vec<i16> = a.alm_his[..4].iter().map(|x| x.alm_no).collect();
     assert_eq!(nos, [1009, 1008, 1007, 1006]);
     assert_eq!(text(&a.alm_his[0].alm_msg, 7), "ALARM 9");
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 // ---------------------------------------------------------------------------
@@ -288,7 +279,7 @@ fn malformed_entries_are_skipped_and_the_rest_kept() {
     }
     records.push(rec(2, [2099, 12, 31, 23, 59, 59], "GOOD 2"));
     let f = FakeCnc::start(records, 9);
-    let h = connect(f.port);
+    let h = sim::connect(f.port);
     let (r, b) = his(h, 1, 9, 486);
     assert_eq!(r, EW_OK);
     let a = as_his(&b);
@@ -301,7 +292,7 @@ fn malformed_entries_are_skipped_and_the_rest_kept() {
     let a = as_his2(&b);
     assert_eq!(a.e_no, 2);
     assert_eq!(a.alm_his[1].year, 0x33, "2099 = 0x0833: low byte 0x33");
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -310,7 +301,7 @@ fn an_overrunning_message_length_ends_the_list() {
     long.msg_len = 33;
     let records = vec![rec(1, T, "GOOD"), long, rec(3, T, "AFTER")];
     let f = FakeCnc::start(records, 3);
-    let h = connect(f.port);
+    let h = sim::connect(f.port);
     let (r, b) = his(h, 1, 3, 486);
     assert_eq!(r, EW_OK);
     let a = as_his(&b);
@@ -319,21 +310,21 @@ fn an_overrunning_message_length_ends_the_list() {
     assert!(b[6 + 48..].iter().all(|x| *x == 0xCC));
     let mut neg = rec(1, T, "X");
     neg.msg_len = -1;
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
     drop(f);
     let f = FakeCnc::start(vec![neg], 1);
-    let h2 = connect(f.port);
+    let h2 = sim::connect(f.port);
     let (r, b) = his2(h2, 1, 1, 524);
     assert_eq!(r, EW_OK);
     assert_eq!(as_his2(&b).e_no, 0);
-    assert_eq!(cnc_freelibhndl(h2), EW_OK);
+    sim::free(h2);
 }
 
 #[test]
 fn entries_beyond_the_callers_length_are_not_written() {
     let records: Vec<_> = (1..=5).map(|i| rec(i, T, "OT")).collect();
     let f = FakeCnc::start(records, 5);
-    let h = connect(f.port);
+    let h = sim::connect(f.port);
     // Room for two and a half records: two are written.
     let (r, b) = his(h, 1, 5, 6 + 2 * 48 + 30);
     assert_eq!(r, EW_OK);
@@ -350,16 +341,16 @@ fn entries_beyond_the_callers_length_are_not_written() {
     assert!(b.iter().all(|x| *x == 0xCC));
     let (r, _) = his2(h, 1, 5, 3);
     assert_eq!(r, EW_LENGTH);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
 fn a_negative_count_is_an_empty_history() {
     let f = FakeCnc::start(Vec::new(), -5);
-    let h = connect(f.port);
+    let h = sim::connect(f.port);
     assert_eq!(hisno(h), 0);
     let (r, b) = his(h, 1, 10, 486);
     assert_eq!(r, EW_OK);
     assert_eq!(as_his(&b).e_no, 0);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }

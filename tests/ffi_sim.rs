@@ -1,26 +1,17 @@
 //! The exported C functions, called as Rust functions, against an in-process
 //! simulator on 127.0.0.1:0. Values must equal the profile's.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
 use std::ffi::CString;
-use std::os::raw::{c_short, c_ulong, c_ushort};
-
-fn sim(profile: &str) -> Simulator {
-    Simulator::start(Profile::parse(profile).expect("profile"), "127.0.0.1:0").expect("simulator")
-}
+use std::os::raw::c_ulong;
 
 fn default_sim() -> Simulator {
-    Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator")
-}
-
-fn alloc(s: &Simulator) -> Result<c_ushort, c_short> {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    let r = unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) };
-    if r == EW_OK { Ok(h) } else { Err(r) }
+    sim::start(Profile::default())
 }
 
 fn text(c: &[std::os::raw::c_char]) -> String {
@@ -34,7 +25,7 @@ fn default_profile_reads_back() {
     // a move, so the status words are the profile's run 3 / motion 1.
     s.set_elapsed(std::time::Duration::from_millis(1250));
     let p = Profile::default();
-    let h = alloc(&s).expect("alloc");
+    let h = sim::try_alloc(&s).expect("alloc");
     assert_ne!(h, 0);
 
     let mut sys = ODBSYS::default();
@@ -117,9 +108,9 @@ axis = [{ name = "X" }, { name = "Y" }, { name = "Z" }, { name = "B" }]
 
 #[test]
 fn path_is_per_handle() {
-    let s = sim(TWO_PATHS);
-    let a = alloc(&s).unwrap();
-    let b = alloc(&s).unwrap();
+    let s = sim::start_toml(TWO_PATHS);
+    let a = sim::try_alloc(&s).unwrap();
+    let b = sim::try_alloc(&s).unwrap();
     assert_ne!(a, b);
     assert_eq!(cnc_setpath(a, 2), EW_OK);
     let (mut st_a, mut st_b) = (ODBST::default(), ODBST::default());
@@ -151,7 +142,8 @@ fn path_is_per_handle() {
 
 #[test]
 fn series16_class_profile() {
-    let s = sim(r#"
+    let s = sim::start_toml(
+        r#"
 [cnc]
 class = "16i"
 cnc_type = "16"
@@ -162,8 +154,9 @@ max_spindles = 4
 [[path]]
 status = { aut = 1, run = 1, edit = 2 }
 axis = [{ name = "X" }, { name = "Y" }, { name = "Z" }, { name = "A" }]
-"#);
-    let h = alloc(&s).unwrap();
+"#,
+    );
+    let h = sim::try_alloc(&s).unwrap();
     let mut sys = ODBSYS::default();
     assert_eq!(unsafe { cnc_sysinfo(h, &mut sys) }, EW_OK);
     assert_eq!(
@@ -179,7 +172,7 @@ axis = [{ name = "X" }, { name = "Y" }, { name = "Z" }, { name = "A" }]
 #[test]
 fn null_pointers_and_bad_handles() {
     let s = default_sim();
-    let h = alloc(&s).unwrap();
+    let h = sim::try_alloc(&s).unwrap();
     unsafe {
         assert_eq!(cnc_sysinfo(h, std::ptr::null_mut()), EW_DATA);
         assert_eq!(cnc_statinfo(h, std::ptr::null_mut()), EW_DATA);
@@ -212,7 +205,7 @@ fn null_pointers_and_bad_handles() {
 #[test]
 fn output_untouched_on_error() {
     let s = default_sim();
-    let h = alloc(&s).unwrap();
+    let h = sim::try_alloc(&s).unwrap();
     // Path 2 does not exist on the default machine: setpath refuses it,
     // and nothing is written by a failing call.
     assert_eq!(cnc_setpath(h, 2), EW_PATH);
@@ -228,10 +221,10 @@ fn output_untouched_on_error() {
 
 #[test]
 fn session_limit_is_enforced() {
-    let s = sim("[cnc]\nmax_sessions = 1\n[[path]]\n");
-    let h = alloc(&s).unwrap();
+    let s = sim::start_toml("[cnc]\nmax_sessions = 1\n[[path]]\n");
+    let h = sim::try_alloc(&s).unwrap();
     // Same host:port shares the pair, so a second handle is fine ...
-    let h2 = alloc(&s).unwrap();
+    let h2 = sim::try_alloc(&s).unwrap();
     // ... but a second connection pair (here: to "localhost") is refused by the CNC.
     let ip = CString::new("localhost").unwrap();
     let mut h3 = 0;
@@ -259,7 +252,7 @@ fn connection_refused_is_ew_socket() {
 #[test]
 fn handles_work_from_any_thread_in_parallel() {
     let s = default_sim();
-    let h = alloc(&s).unwrap();
+    let h = sim::try_alloc(&s).unwrap();
     std::thread::scope(|sc| {
         for _ in 0..8 {
             sc.spawn(|| {
@@ -282,7 +275,7 @@ fn many_handles_far_beyond_fanucs_1024() {
     let s = default_sim();
     let mut hs = Vec::new();
     for _ in 0..3000 {
-        hs.push(alloc(&s).expect("alloc"));
+        hs.push(sim::try_alloc(&s).expect("alloc"));
     }
     let mut sorted = hs.clone();
     sorted.sort();
@@ -295,7 +288,7 @@ fn many_handles_far_beyond_fanucs_1024() {
         assert_eq!(cnc_freelibhndl(*h), EW_OK);
     }
     // A freed number is not handed out again right away.
-    let again = alloc(&s).unwrap();
+    let again = sim::try_alloc(&s).unwrap();
     assert!(!hs.contains(&again));
     assert_eq!(cnc_freelibhndl(again), EW_OK);
 }
@@ -304,7 +297,7 @@ fn many_handles_far_beyond_fanucs_1024() {
 fn reconnects_after_the_simulator_restarts() {
     let s = default_sim();
     let port = s.port();
-    let h = alloc(&s).unwrap();
+    let h = sim::try_alloc(&s).unwrap();
     drop(s);
     let mut st = ODBST::default();
     assert_eq!(unsafe { cnc_statinfo(h, &mut st) }, EW_SOCKET);
@@ -319,7 +312,7 @@ fn reconnects_after_the_simulator_restarts() {
     assert_eq!(cnc_freelibhndl(h), EW_OK);
     // A new simulator on the same port (if still free) accepts a fresh connection.
     if let Ok(s2) = Simulator::start(Profile::default(), &format!("127.0.0.1:{port}")) {
-        let h2 = alloc(&s2).expect("reconnect");
+        let h2 = sim::try_alloc(&s2).expect("reconnect");
         assert_eq!(unsafe { cnc_statinfo(h2, &mut st) }, EW_OK);
         assert_eq!(cnc_freelibhndl(h2), EW_OK);
     }

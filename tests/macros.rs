@@ -3,11 +3,12 @@
 //! back, protection (a rejected write changes nothing), local checks, and
 //! the 16i class.
 
+mod sim;
+
 use fwlib32::ew::*;
-use fwlib32::sim::{Profile, Simulator};
+use fwlib32::sim::Profile;
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::{c_long, c_short, c_ushort};
 
 const PROFILE: &str = r#"
@@ -27,20 +28,6 @@ protected = [[990, 999]]
 995 = "3.25"
 "#;
 
-fn start(profile: &str) -> Simulator {
-    Simulator::start(Profile::parse(profile).expect("profile"), "127.0.0.1:0").expect("simulator")
-}
-
-fn alloc(s: &Simulator) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    h
-}
-
 /// cnc_rdmacro → (return, mcr_val, dec_val).
 fn rd(h: c_ushort, n: c_short) -> (c_short, i32, i16) {
     let mut m = ODBM::default();
@@ -57,32 +44,32 @@ fn wr(h: c_ushort, n: c_short, v: c_long, d: c_short) -> c_short {
 
 #[test]
 fn profile_values_read_back() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     assert_eq!(rd(h, 100), (EW_OK, 12345, 3));
     assert_eq!(rd(h, 150), (EW_OK, -7, 0));
     assert_eq!(rd(h, 101), (EW_OK, 0, -1), "vacant");
     assert_eq!(rd(h, 995), (EW_OK, 325, 2));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn default_profile_has_the_adapter_macro() {
-    let s = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
-    let h = alloc(&s);
+    let s = sim::start(Profile::default());
+    let h = sim::alloc(&s);
     // The MTConnect adapter reads #500 with length sizeof(ODBM).
     let mut m = ODBM::default();
     let len = std::mem::size_of::<ODBM>() as c_short;
     assert_eq!(unsafe { cnc_rdmacro(h, 500, len, &mut m) }, EW_OK);
     assert_eq!((m.datano, m.mcr_val, m.dec_val), (500, 25400, 3));
     assert_eq!(rd(h, 501), (EW_OK, -125, 3));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn written_values_read_back() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     for (n, v, d) in [
         (100, 123456, 3),
         (101, -25, 1),
@@ -100,13 +87,13 @@ fn written_values_read_back() {
     // A 64-bit long is taken as its low 32 bits (as FANUC's x86-64 library).
     assert_eq!(wr(h, 103, 0x1_0000_0007, 0), EW_OK);
     assert_eq!(rd(h, 103), (EW_OK, 7, 0));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn range_read_matches_single_reads() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     assert_eq!(wr(h, 101, -5, 2), EW_OK);
     let mut b = IODBMR::default();
     assert_eq!(
@@ -119,13 +106,13 @@ fn range_read_matches_single_reads() {
     for (i, n) in (100..=102).enumerate() {
         assert_eq!(rd(h, n), (EW_OK, got[i].0, got[i].1));
     }
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn range_read_writes_no_more_than_length() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     // Five variables asked for, room for two: the rest stays untouched.
     let mut buf = [0xCCu8; 64];
     let r = unsafe { cnc_rdmacror(h, 100, 104, 8 + 8 * 2, buf.as_mut_ptr().cast()) };
@@ -135,13 +122,13 @@ fn range_read_writes_no_more_than_length() {
     // Smaller than the header: refused before any traffic.
     let r = unsafe { cnc_rdmacror(h, 100, 104, 7, buf.as_mut_ptr().cast()) };
     assert_eq!(r, EW_LENGTH);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn protection_and_numbers() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     // Write-protected #990-#999: EW_PROT, value unchanged.
     assert_eq!(wr(h, 995, 1, 0), EW_PROT);
     assert_eq!(rd(h, 995), (EW_OK, 325, 2));
@@ -158,13 +145,13 @@ fn protection_and_numbers() {
     assert_eq!(wr(h, 100, 1, 12), EW_DATA);
     assert_eq!(wr(h, 100, 1, -2), EW_DATA);
     assert_eq!(rd(h, 100), (EW_OK, 12345, 3));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn local_checks_before_traffic() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     // Local variables (#1..#33, anything below 100): EW_NUMBER.
     assert_eq!(wr(h, 1, 1, 0), EW_NUMBER);
     assert_eq!(wr(h, 99, 1, 0), EW_NUMBER);
@@ -187,7 +174,7 @@ fn local_checks_before_traffic() {
         unsafe { cnc_rdmacror(h, 100, 101, 24, std::ptr::null_mut()) },
         EW_DATA
     );
-    cnc_freelibhndl(h);
+    sim::free(h);
     // A freed handle.
     assert_eq!(unsafe { cnc_rdmacro(h, 100, 10, &mut m) }, EW_HANDLE);
     assert_eq!(wr(h, 100, 1, 0), EW_HANDLE);
@@ -197,20 +184,20 @@ fn local_checks_before_traffic() {
 fn series16_round_trip() {
     // FANUC's library sends the 16i class its record with base word 2;
     // the simulated 16i takes it as digits and decimals and answers base 10.
-    let s = start(&PROFILE.replace("\"30i\"", "\"16i\""));
-    let h = alloc(&s);
+    let s = sim::start_toml(&PROFILE.replace("\"30i\"", "\"16i\""));
+    let h = sim::alloc(&s);
     assert_eq!(rd(h, 100), (EW_OK, 12345, 3));
     assert_eq!(wr(h, 500, -98765, 4), EW_OK);
     assert_eq!(rd(h, 500), (EW_OK, -98765, 4));
     assert_eq!(wr(h, 50, 1, 0), EW_NUMBER);
     assert_eq!(unsafe { cnc_wrmacro(h, 500, 9, 1, 0) }, EW_LENGTH);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn range_write_reads_back() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     let mut b = IODBMR {
         datano_s: 500,
         datano_e: 502,
@@ -252,24 +239,24 @@ fn range_write_reads_back() {
     b.datano_e = 990;
     assert_eq!(unsafe { cnc_wrmacror(h, 48, &mut b) }, EW_PROT);
     assert_eq!(rd(h, 988), (EW_OK, 0, -1));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn macro_info_counts_the_common_variables() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     let mut i = ODBMVINF::default();
     assert_eq!(unsafe { cnc_rdmacroinfo(h, &mut i) }, EW_OK);
     assert_eq!((i.use_no1, i.use_no2), (100, 500));
     assert_eq!(unsafe { cnc_rdmacroinfo(h, std::ptr::null_mut()) }, EW_DATA);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn doubles_round_trip() {
-    let s = start(PROFILE);
-    let h = alloc(&s);
+    let s = sim::start_toml(PROFILE);
+    let h = sim::alloc(&s);
     // 400 variables from #500: FANUC's library writes 177 per request and
     // reads 179 per request; both loops are exercised.
     let mut vals: Vec<f64> = (0..400).map(|i| f64::from(i) * 0.25 - 50.0).collect();
@@ -311,5 +298,5 @@ fn doubles_round_trip() {
     n[0] = 1;
     let r = unsafe { cnc_wrmacror2(h, 100, n.as_mut_ptr().cast(), nan.as_mut_ptr()) };
     assert_eq!(r, EW_DATA);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }

@@ -2,26 +2,16 @@
 //! simulator: reads equal the profile, writes read back (the write encoder
 //! is the read decoder reversed), protection, NULL pointers, bad lengths.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
 
-fn start(p: Profile) -> (Simulator, c_ushort) {
-    let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    (s, h)
-}
-
 fn default() -> (Simulator, c_ushort) {
-    start(Profile::default())
+    sim::start_alloc(Profile::default())
 }
 
 fn rdtofs(h: c_ushort, n: c_short, t: c_short) -> Result<i32, c_short> {
@@ -68,7 +58,7 @@ fn tool_offsets_read_the_profile() {
     assert_eq!(unsafe { cnc_rdtofsr(h, 1, -1, 2, 188, &mut r) }, EW_OK);
     let all: Vec<i32> = tool[..2].iter().flatten().copied().collect();
     assert_eq!(unsafe { &r.u.m_ofs_c[..8] }, &all[..]);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -85,7 +75,7 @@ fn tool_offset_write_then_read_every_type() {
     // A `long` is sent as its low 32 bits.
     assert_eq!(unsafe { cnc_wrtofs(h, 3, 3, 8, 0x1_0000_0007) }, EW_OK);
     assert_eq!(rdtofs(h, 3, 3), Ok(7));
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -115,7 +105,7 @@ fn tool_offset_protection() {
         assert_eq!(cnc_wrtofs(0, 1, 1, 8, 1), EW_HANDLE);
     }
     assert_eq!(rdtofs(h, 1, 1), Ok(before));
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -162,7 +152,7 @@ fn work_offsets_read_the_profile() {
     let ys: Vec<i32> = work[1..7].iter().map(|w| w[1]).collect();
     assert_eq!(&r.data[..6], &ys[..]);
     assert_eq!(r.datano_e, 6);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -198,7 +188,7 @@ fn work_offset_write_then_read_per_axis_and_all_axes() {
         &g54.data[..3],
         &[-100_000, p.paths[0].offset.work[1][1], 12_345]
     );
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -249,7 +239,7 @@ fn work_offset_protection() {
     }
     let after = rdzofs_all(h, 1).unwrap();
     assert_eq!(after, before, "rejected writes change nothing");
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
@@ -300,7 +290,7 @@ fn tool_life_groups() {
         assert_eq!(cnc_rdtlctldata(h, &mut c), EW_FUNC);
         assert_eq!(cnc_rdtlctldata(h, std::ptr::null_mut()), EW_DATA);
     }
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]

@@ -2,12 +2,13 @@
 //! every type read, write-then-read round trips, the CNC's write protection,
 //! local checks, and a 16i-class CNC.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
-use fwlib32::sim::{Machine, Profile, Simulator};
+use fwlib32::sim::{Machine, Profile};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
 
 /// The default profile with some text replaced.
@@ -32,17 +33,6 @@ const S16: &[(&str, &str)] = &[
     ("param_write_enable = false", "param_write_enable = true"),
     ("aut = 1 ", "aut = 0 "),
 ];
-
-fn start(p: Profile) -> (Simulator, c_ushort) {
-    let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    (s, h)
-}
 
 fn rd(h: c_ushort, number: c_short, axis: c_short, length: c_short) -> (c_short, IODBPSD) {
     let mut b = IODBPSD::default();
@@ -88,7 +78,7 @@ fn psd(number: c_short, axis: c_short, set: impl FnOnce(&mut IODBPSD_u)) -> IODB
 
 #[test]
 fn every_type_reads_as_the_profile_says() {
-    let (_s, h) = start(Profile::default());
+    let (_s, h) = sim::start_alloc(Profile::default());
     unsafe {
         assert_eq!(rd_ok(h, 0, 0).u.cdata, 0b10); // bit
         assert_eq!(rd_ok(h, 20, 0).u.cdata, 4); // byte
@@ -123,7 +113,7 @@ fn every_type_reads_as_the_profile_says() {
 
 #[test]
 fn read_errors() {
-    let (_s, h) = start(Profile::default());
+    let (_s, h) = sim::start_alloc(Profile::default());
     assert_eq!(rd(h, 9999, 0, 8).0, EW_NUMBER);
     let mut b = ODBDGN::default();
     assert_eq!(unsafe { cnc_diagnoss(h, 9999, 0, 8, &mut b) }, EW_NUMBER);
@@ -152,7 +142,7 @@ fn read_errors() {
 
 #[test]
 fn writes_read_back_for_every_type() {
-    let (_s, h) = start(profile(WRITABLE));
+    let (_s, h) = sim::start_alloc(profile(WRITABLE));
     // bit: all eight bits (0x81 reads back as the same char).
     assert_eq!(wr(h, 5, psd(1001, 0, |u| u.cdata = 0x81u8 as i8)), EW_OK);
     assert_eq!(unsafe { rd_ok(h, 1001, 0).u.cdata } as u8, 0x81);
@@ -214,12 +204,12 @@ fn protection_refuses_and_changes_nothing() {
     let count = |v| psd(6711, 0, move |u| u.ldata = v);
 
     // Parameter write enable off (the default profile): EW_PASSWD.
-    let (s, h) = start(profile(&[("aut = 1 ", "aut = 0 ")]));
+    let (s, h) = sim::start_alloc(profile(&[("aut = 1 ", "aut = 0 ")]));
     assert_eq!(wr(h, 8, count(1)), EW_PASSWD);
     assert_eq!(part(h), 1234);
     drop(s);
     // Enabled, but not in MDI mode: EW_PASSWD.
-    let (s, h) = start(profile(&[(
+    let (s, h) = sim::start_alloc(profile(&[(
         "param_write_enable = false",
         "param_write_enable = true",
     )]));
@@ -227,7 +217,7 @@ fn protection_refuses_and_changes_nothing() {
     assert_eq!(part(h), 1234);
     drop(s);
 
-    let (_s, h) = start(profile(WRITABLE));
+    let (_s, h) = sim::start_alloc(profile(WRITABLE));
     // Unknown number: the attribute read answers EW_NUMBER, nothing is written.
     assert_eq!(wr(h, 8, psd(9999, 0, |u| u.ldata = 1)), EW_NUMBER);
     // Length not 4 + the type's size: EW_LENGTH before the write.
@@ -253,7 +243,7 @@ fn protection_refuses_and_changes_nothing() {
 
 #[test]
 fn info_lists() {
-    let (_s, h) = start(Profile::default());
+    let (_s, h) = sim::start_alloc(Profile::default());
     let mut b = ODBPARAIF::default();
     assert_eq!(unsafe { cnc_rdparainfo(h, 6711, 3, &mut b) }, EW_OK);
     assert_eq!((b.info_no, b.prev_no, b.next_no), (3, 6710, 6750));
@@ -285,7 +275,7 @@ fn info_lists() {
 
 #[test]
 fn series_16i() {
-    let (_s, h) = start(profile(S16));
+    let (_s, h) = sim::start_alloc(profile(S16));
     unsafe {
         assert_eq!(rd_ok(h, 6711, 0).u.ldata, 1234);
         assert_eq!(rd_ok(h, 20, 0).u.cdata, 4);
@@ -324,7 +314,7 @@ fn the_machine_sets_parameters_itself() {
 
 #[test]
 fn ext_reads_and_number_ranges() {
-    let (_s, h) = start(Profile::default());
+    let (_s, h) = sim::start_alloc(Profile::default());
     // 32-bit numbers (FANUC's x86-64 library reads `long *` 4 bytes apart);
     // 10 numbers = two exchanges of 8 and 2; 9999 does not exist.
     let mut nos: Vec<i32> = vec![6711, 1320, 9999, 20, 0, 1001, 1005, 1020, 1420, 6712];
@@ -484,7 +474,7 @@ fn wrs(h: c_ushort, recs: &[Vec<u8>]) -> c_short {
 
 #[test]
 fn rdparar_reads_ranges() {
-    let (_s, h) = start(Profile::default());
+    let (_s, h) = sim::start_alloc(Profile::default());
     // 6700..6760: twelve parameters, answers of five, five and two;
     // padding is not written.
     let (r, e, len, buf) = rdr(h, 6700, 0, 6760, 200);
@@ -597,7 +587,7 @@ fn rdparar_reads_ranges() {
 
 #[test]
 fn rdparar_errors() {
-    let (_s, h) = start(Profile::default());
+    let (_s, h) = sim::start_alloc(Profile::default());
     // Start above end: EW_NUMBER without traffic; nothing written.
     let (r, e, len, buf) = rdr(h, 6711, 0, 6700, 100);
     assert_eq!((r, e, len), (EW_NUMBER, 6700, 100));
@@ -644,7 +634,7 @@ fn rdparar_errors() {
 
 #[test]
 fn wrparas_writes_every_type_and_reads_back() {
-    let (_s, h) = start(profile(WRITABLE));
+    let (_s, h) = sim::start_alloc(profile(WRITABLE));
     let mut bits = vec![0u8; 32];
     bits[..3].copy_from_slice(&[7, 8, 9]);
     // Six records: two exchanges (5 + 1).
@@ -685,13 +675,13 @@ fn wrparas_protection_and_local_checks() {
     let count = |v: i32| rec(6711, 3, 0, &v.to_le_bytes());
 
     // Parameter write enable off: EW_PASSWD, nothing written.
-    let (s, h) = start(profile(&[("aut = 1 ", "aut = 0 ")]));
+    let (s, h) = sim::start_alloc(profile(&[("aut = 1 ", "aut = 0 ")]));
     assert_eq!(wrs(h, &[count(1), rec(20, 1, 0, &[9])]), EW_PASSWD);
     assert_eq!(part(h), 1234);
     assert_eq!(unsafe { rd_ok(h, 20, 0).u.cdata }, 4);
     drop(s);
 
-    let (_s, h) = start(profile(WRITABLE));
+    let (_s, h) = sim::start_alloc(profile(WRITABLE));
     // One refused record in an exchange: the simulator checks every record
     // of the subpacket first and applies none (a real CNC writes the ones
     // before the refused one).
@@ -733,7 +723,7 @@ fn wrparas_protection_and_local_checks() {
 
 #[test]
 fn rdparar_wrparas_series_16i_unknown() {
-    let (_s, h) = start(profile(S16));
+    let (_s, h) = sim::start_alloc(profile(S16));
     assert_eq!(rdr(h, 6700, 0, 6760, 100).0, EW_FUNC);
     assert_eq!(wrs(h, &[rec(6711, 3, 0, &[1, 0, 0, 0])]), EW_FUNC);
     assert_eq!(unsafe { rd_ok(h, 6711, 0).u.ldata }, 1234);

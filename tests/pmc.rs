@@ -3,11 +3,12 @@
 //! words agree: big-endian on the wire), read-only areas, ranges, local
 //! checks and pmc_getdtailerr.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
 
 const G: c_short = 0;
@@ -20,17 +21,7 @@ const WORD: c_short = 1;
 const LONG: c_short = 2;
 
 fn start() -> Simulator {
-    Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator")
-}
-
-fn alloc(s: &Simulator) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    h
+    sim::start(Profile::default())
 }
 
 /// pmc_rdpmcrng into a 0xCC-filled buffer of `8 + room` bytes (plus slack
@@ -71,7 +62,7 @@ fn write(h: c_ushort, a: c_short, t: c_short, s: u16, e: u16, data: &[u8]) -> c_
 #[test]
 fn default_profile_signals() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     // As the MTConnect adapter reads them: one byte, length 8 + 1.
     let mut buf = IODBPMC::default();
     assert_eq!(
@@ -87,13 +78,13 @@ fn default_profile_signals() {
     assert_eq!(data(h, R, WORD, 500, 501), 42u16.to_le_bytes());
     assert_eq!(data(h, D, LONG, 0, 3), 1000i32.to_le_bytes());
     assert_eq!(data(h, F, BYTE, 0, 0), [0x20]);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn bytes_words_and_longs_agree() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     // Bytes in, words and a long out.
     assert_eq!(
         write(h, R, BYTE, 100, 103, &[0x01, 0x02, 0x03, 0x84]),
@@ -122,13 +113,13 @@ fn bytes_words_and_longs_agree() {
         data(h, D, BYTE, 1870, 1873),
         70000i32.to_be_bytes().to_vec()
     );
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn read_only_areas_and_ranges() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     // X and F are the machine's: EW_PROT, nothing changes.
     let x0 = data(h, X, BYTE, 0, 0);
     assert_eq!(write(h, X, BYTE, 0, 0, &[0x55]), EW_PROT);
@@ -150,13 +141,13 @@ fn read_only_areas_and_ranges() {
     assert_eq!(read(h, 99, BYTE, 0, 0, 1).0, EW_TYPE);
     assert_eq!(read(h, R, 3, 0, 3, 4).0, EW_TYPE);
     assert_eq!(write(h, R, 3, 0, 3, &[0; 4]), EW_TYPE);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn buffers_are_bounded_by_length() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     assert_eq!(
         write(h, R, BYTE, 0, 9, &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10]),
         EW_OK
@@ -186,20 +177,20 @@ fn buffers_are_bounded_by_length() {
         EW_LENGTH
     );
     assert_eq!(data(h, R, BYTE, 0, 3), [1, 2, 3, 4]);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn null_pointers_and_handles() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     assert_eq!(
         unsafe { pmc_rdpmcrng(h, R, BYTE, 0, 0, 9, std::ptr::null_mut()) },
         EW_DATA
     );
     assert_eq!(unsafe { pmc_wrpmcrng(h, 9, std::ptr::null_mut()) }, EW_DATA);
     assert_eq!(unsafe { pmc_getdtailerr(h, std::ptr::null_mut()) }, EW_DATA);
-    cnc_freelibhndl(h);
+    sim::free(h);
     let mut buf = IODBPMC::default();
     assert_eq!(
         unsafe { pmc_rdpmcrng(h, R, BYTE, 0, 0, 9, &mut buf) },
@@ -215,7 +206,7 @@ fn null_pointers_and_handles() {
 #[test]
 fn pmc_getdtailerr_reads_the_pmc_detail() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     let mut e = ODBPMCERR {
         err_no: 9,
         err_dtno: 9,
@@ -226,13 +217,13 @@ fn pmc_getdtailerr_reads_the_pmc_detail() {
     assert_eq!(read(h, R, BYTE, 9000, 9000, 1).0, EW_RANGE);
     assert_eq!(unsafe { pmc_getdtailerr(h, &mut e) }, EW_OK);
     assert_eq!((e.err_no, e.err_dtno), (0, 0));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
 fn pmc_info_lists_the_areas() {
     let s = start();
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     let mut i = ODBPMCINF::default();
     assert_eq!(unsafe { pmc_rdpmcinfo(h, 0, &mut i) }, EW_OK);
     let areas: Vec<(u8, u16, u16)> = i.info[..i.datano as usize]
@@ -246,5 +237,5 @@ fn pmc_info_lists_the_areas() {
         unsafe { pmc_rdpmcinfo(h, 0, std::ptr::null_mut()) },
         EW_DATA
     );
-    cnc_freelibhndl(h);
+    sim::free(h);
 }

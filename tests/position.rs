@@ -2,11 +2,12 @@
 //! function reads back the profile's values; all-axes answers carry
 //! max-axes records; length, NULL, handle and number checks.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_short, c_ushort};
 
@@ -88,14 +89,8 @@ impl Drop for Cnc {
 
 fn start(text: &str) -> Cnc {
     let p = Profile::parse(text).expect("profile");
-    let sim = Simulator::start(p.clone(), "127.0.0.1:0").expect("simulator");
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), sim.port(), 5, &mut h) },
-        EW_OK
-    );
-    Cnc { _sim: sim, h, p }
+    let (s, h) = sim::start_alloc(p.clone());
+    Cnc { _sim: s, h, p }
 }
 
 const FILL: u8 = 0xCC;

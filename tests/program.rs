@@ -2,11 +2,12 @@
 //! equal the profile's (or the running machine's), NULL pointers, bad
 //! handles, bad types and lengths.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 use std::ptr::null_mut;
 
@@ -16,14 +17,7 @@ fn start(profile: &str) -> (Simulator, c_ushort) {
     } else {
         Profile::parse(profile).expect("profile")
     };
-    let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    (s, h)
+    sim::start_alloc(p)
 }
 
 fn text(c: &[c_char]) -> String {
@@ -139,7 +133,7 @@ fn program_numbers_names_and_pointer() {
     let mut mode: c_short = -1;
     assert_eq!(unsafe { cnc_rdopmode(h, &mut mode) }, EW_OK);
     assert_eq!(mode, 3);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -155,7 +149,7 @@ fn program_numbers_keep_their_low_16_bits() {
     let mut full = [0 as c_char; 256];
     assert_eq!(unsafe { cnc_exeprgname2(h, full.as_mut_ptr()) }, EW_OK);
     assert_eq!(text(&full), "//CNC_MEM/USER/LIBRARY/O12345678");
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -173,7 +167,7 @@ fn an_idle_path_has_an_empty_executing_text() {
     );
     assert_eq!((len, blknum, buf[0]), (0, 0, 0));
     assert!(buf[1..].iter().all(|c| *c == 0x55));
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -231,7 +225,7 @@ fn modal_codes_equal_the_profile() {
     }
     assert_eq!(unsafe { cnc_modal(h, 200, 0, &mut o) }, EW_NUMBER);
     assert_eq!(unsafe { cnc_modal(h, 99, 0, &mut o) }, EW_NUMBER);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -299,7 +293,7 @@ fn timers_and_clock() {
         ..IODBTIMER::default()
     };
     assert_eq!(unsafe { cnc_gettimer(h, &mut c) }, EW_NUMBER);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -340,7 +334,7 @@ fn tool_life_groups() {
     }
     let mut n = ODBTLIFE3::default();
     assert_eq!(unsafe { cnc_rdntool(h, 99, &mut n) }, EW_NUMBER);
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 #[test]
@@ -390,7 +384,7 @@ fn null_pointers_bad_handles_and_lengths() {
         assert_eq!(cnc_rdtimer(bad, 0, &mut t), EW_HANDLE);
         assert_eq!(cnc_rdopmode(bad, &mut s), EW_HANDLE);
     }
-    cnc_freelibhndl(h);
+    sim::free(h);
 }
 
 // --- program directory (cnc_rdprogdir, cnc_rdprogdir3), self-contained ---

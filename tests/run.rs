@@ -3,11 +3,12 @@
 //! and through the C ABI against a simulator whose clock is set
 //! (Simulator::set_elapsed). No sleeps, no timed assertions.
 
+mod sim;
+
 use fwlib32::ew::*;
 use fwlib32::sim::{Machine, Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::ffi::CString;
 use std::os::raw::c_ushort;
 use std::time::Duration;
 
@@ -333,16 +334,6 @@ fn the_default_profile_runs() {
 
 // Through the C ABI: cnc_statinfo sees the machine at the simulator's clock.
 
-fn alloc(s: &Simulator) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    h
-}
-
 fn status(h: c_ushort) -> ODBST {
     let mut o = ODBST::default();
     assert_eq!(unsafe { cnc_statinfo(h, &mut o) }, EW_OK);
@@ -370,7 +361,7 @@ alarm = { number = 1001, type = 19, message = "COOLANT LEVEL LOW" }
     )
     .expect("simulator");
     s.set_elapsed(Duration::from_secs_f64(0.5));
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     let o = status(h);
     assert_eq!((o.run, o.motion, o.alarm), (3, 1, 0));
     s.set_elapsed(Duration::from_secs(12));
@@ -383,7 +374,7 @@ alarm = { number = 1001, type = 19, message = "COOLANT LEVEL LOW" }
     assert_eq!(status(h).alarm, 0);
     s.set_elapsed(Duration::from_secs(12));
     assert_eq!(status(h).run, 2, "the same time gives the same state");
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 fn rdparam_long(h: c_ushort, number: i16) -> i32 {
@@ -418,9 +409,9 @@ number = 6711
 kind = "2word"
 values = [100]
 "#;
-    let s = Simulator::start(profile(extra), "127.0.0.1:0").expect("simulator");
+    let s = sim::start(profile(extra));
     s.set_elapsed(Duration::from_secs_f64(1.5)); // N20 G01 X20. F300 S1000 M03
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     let mut f = ODBACT::default();
     assert_eq!(unsafe { cnc_actf(h, &mut f) }, EW_OK);
     assert_eq!(f.data, 300, "programmed feed while cutting");
@@ -444,5 +435,5 @@ values = [100]
     assert_eq!(rdparam_long(h, 6711), 100 + made, "one count per M30");
     s.set_elapsed(Duration::from_secs(21));
     assert_eq!(rdparam_long(h, 6711), 100 + made, "counted once");
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }

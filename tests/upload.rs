@@ -5,6 +5,7 @@
 //! API asks.
 
 mod common;
+mod sim;
 
 use fwlib32::ew::*;
 use fwlib32::sim::{Profile, Simulator};
@@ -45,20 +46,7 @@ fn profile(class: &str) -> Profile {
 
 fn sim(class: &str) -> (Simulator, Profile) {
     let p = profile(class);
-    (
-        Simulator::start(p.clone(), "127.0.0.1:0").expect("simulator"),
-        p,
-    )
-}
-
-fn alloc(s: &Simulator) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), s.port(), 5, &mut h) },
-        EW_OK
-    );
-    h
+    (sim::start(p.clone()), p)
 }
 
 /// What a CNC punches for these stored texts.
@@ -110,7 +98,7 @@ fn read_all(h: c_ushort, room: usize) -> Result<Vec<u8>, c_short> {
 fn every_stored_program_uploads_as_stored() {
     for class in ["30i", "16i"] {
         let (s, p) = sim(class);
-        let h = alloc(&s);
+        let h = sim::alloc(&s);
         for prog in &p.programs {
             assert_eq!(cnc_upstart(h, prog.number as c_short), EW_OK);
             let got = read_all(h, 1024).expect("upload");
@@ -123,14 +111,14 @@ fn every_stored_program_uploads_as_stored() {
             assert_eq!(upload3(h, 256).0, EW_RESET, "EW_RESET again after the end");
             assert_eq!(cnc_upend3(h), EW_OK);
         }
-        assert_eq!(cnc_freelibhndl(h), EW_OK);
+        sim::free(h);
     }
 }
 
 #[test]
 fn ranges_names_and_the_odbup_functions() {
     let (s, p) = sim("30i");
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     // A range: every program in it, ascending, between one pair of '%'.
     assert_eq!(cnc_upstart3(h, 0, 1, 9999), EW_OK);
     let want = punched(&[text_of(&p, 100), text_of(&p, 1234), text_of(&p, 7000)]);
@@ -174,13 +162,13 @@ fn ranges_names_and_the_odbup_functions() {
     }
     assert_eq!(got, punched(&[text_of(&p, 1234)]));
     assert_eq!(cnc_upend(h), EW_OK);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
 fn upend_before_the_end_aborts_and_the_next_upload_works() {
     let (s, p) = sim("30i");
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     assert_eq!(cnc_upstart(h, -5), EW_OK, "sent as \"O-5-O-5\"");
     assert_eq!(read_all(h, 256), Err(EW_DATA), "no such program");
     assert_eq!(cnc_upend3(h), EW_DATA, "the CNC's error, once more");
@@ -200,13 +188,13 @@ fn upend_before_the_end_aborts_and_the_next_upload_works() {
     assert_eq!(cnc_upstart3(h, 0, 7000, 7000), EW_OK);
     assert_eq!(read_all(h, 2000), Ok(punched(&[text_of(&p, 7000)])));
     assert_eq!(cnc_upend3(h), EW_OK);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
 fn missing_programs_and_bad_arguments() {
     let (s, _) = sim("30i");
-    let h = alloc(&s);
+    let h = sim::alloc(&s);
     // Nothing started.
     assert_eq!(upload3(h, 256).0, EW_FUNC);
     assert_eq!(cnc_upend3(h), EW_FUNC);
@@ -256,13 +244,13 @@ fn missing_programs_and_bad_arguments() {
         EW_HANDLE
     );
     assert_eq!(cnc_upend3(0x7777), EW_HANDLE);
-    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    sim::free(h);
 }
 
 #[test]
 fn two_handles_upload_in_turn() {
     let (s, p) = sim("30i");
-    let (h1, h2) = (alloc(&s), alloc(&s));
+    let (h1, h2) = (sim::alloc(&s), sim::alloc(&s));
     assert_eq!(s.sessions(), 1, "both handles share one connection pair");
     assert_eq!(cnc_upstart(h1, 100), EW_OK);
     assert_eq!(
@@ -281,17 +269,17 @@ fn two_handles_upload_in_turn() {
 
     // A handle freed in the middle of its upload: the next start aborts it.
     assert_eq!(cnc_upstart(h1, 7000), EW_OK);
-    assert_eq!(cnc_freelibhndl(h1), EW_OK);
+    sim::free(h1);
     assert_eq!(cnc_upstart(h2, 100), EW_OK);
     assert_eq!(read_all(h2, 512), Ok(punched(&[text_of(&p, 100)])));
     assert_eq!(cnc_upend3(h2), EW_OK);
-    assert_eq!(cnc_freelibhndl(h2), EW_OK);
+    sim::free(h2);
 }
 
 #[test]
 fn data_requests_go_on_during_an_upload() {
     let (s, p) = sim("30i");
-    let (h1, h2) = (alloc(&s), alloc(&s));
+    let (h1, h2) = (sim::alloc(&s), sim::alloc(&s));
     assert_eq!(cnc_upstart3(h1, 0, 7000, 7000), EW_OK);
     let mut got = Vec::new();
     let mut st = ODBST::default();
@@ -313,8 +301,8 @@ fn data_requests_go_on_during_an_upload() {
     }
     assert_eq!(got, punched(&[text_of(&p, 7000)]));
     assert_eq!(cnc_upend3(h1), EW_OK);
-    assert_eq!(cnc_freelibhndl(h1), EW_OK);
-    assert_eq!(cnc_freelibhndl(h2), EW_OK);
+    sim::free(h1);
+    sim::free(h2);
 }
 
 /// Against a replayed CNC that answers the start and then sends nothing:

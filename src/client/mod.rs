@@ -8,7 +8,8 @@ pub mod pair;
 pub mod upload;
 
 use crate::error::{Error, Result};
-use crate::proto::call::Call;
+use crate::proto::call::{Call, Ctx};
+use crate::proto::status::SysInfo;
 use handles::Handle;
 
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
@@ -17,6 +18,19 @@ const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
 const PMC_DETAIL_CODES: [i16; 6] = [3, 5, 8, 13, 17, 18];
 
 impl Handle {
+    /// What calls know about the CNC on this handle's current path.
+    pub fn ctx(&self) -> Ctx {
+        let path = self.state.lock().path;
+        self.pair.info.ctx(path)
+    }
+
+    /// The sysinfo answer the CNC gave at connect time for this handle's
+    /// current path; None if the path has none.
+    pub fn sysinfo(&self) -> Option<SysInfo> {
+        let path = self.state.lock().path as usize;
+        self.pair.info.sysinfo.get(path - 1).copied().flatten()
+    }
+
     /// Runs a call on this handle's pair with its path and timeout, and
     /// records the error detail.
     pub fn call<C: Call>(&self, c: &C) -> Result<C::Output> {

@@ -3,12 +3,12 @@
 // --- alarm ---
 
 use super::program::low16;
-use super::{ffi_boundary, nonnull, put};
-use crate::client::handles;
-use crate::error::Error;
-use crate::ew::EW_LENGTH;
-use crate::proto::alarm as pa;
-use crate::types::{ALMINFO, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG};
+use super::{ffi_boundary, nonnull, put, put_at};
+use crate::client::handles::{self, Handle};
+use crate::error::{Error, Result};
+use crate::ew::{EW_LENGTH, EW_NUMBER};
+use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
+use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG};
 use std::os::raw::{c_long, c_short, c_ushort};
 
 /// Reads the alarm status bits; `data` = their low 16 bits.
@@ -48,7 +48,7 @@ unsafe fn read_almmsg<const N: usize>(
     kind: c_short,
     num: *mut c_short,
     out: *mut u8,
-) -> crate::error::Result<()> {
+) -> Result<()> {
     let h = handles::get(FlibHndl)?;
     let num = nonnull(num)?;
     let out = nonnull(out)?;
@@ -184,33 +184,19 @@ pub unsafe extern "C" fn cnc_rdopmsg(
 
 // --- alarm history ---
 
-use crate::proto::alarm::{AlmHisRecord, rdalmhisno, rdalmhistry};
-
 /// Writes the checked history entries that fit in `length` (header `hdr`
 /// bytes, `rec` bytes per record) and returns how many.
-fn his_fit(
-    length: std::os::raw::c_ushort,
-    hdr: usize,
-    rec: usize,
-    have: usize,
-) -> crate::error::Result<usize> {
+fn his_fit(length: c_ushort, hdr: usize, rec: usize, have: usize) -> Result<usize> {
     let length = usize::from(length);
     if length < hdr {
-        return Err(crate::error::Error::length());
+        return Err(Error::length());
     }
     Ok(have.min((length - hdr) / rec))
 }
 
-fn his_call(
-    h: &crate::client::handles::Handle,
-    s_number: std::os::raw::c_ushort,
-    e_number: std::os::raw::c_ushort,
-) -> crate::error::Result<Vec<AlmHisRecord>> {
+fn his_call(h: &Handle, s_number: c_ushort, e_number: c_ushort) -> Result<Vec<AlmHisRecord>> {
     if s_number > e_number {
-        return Err(crate::error::Error::local(
-            crate::ew::EW_NUMBER,
-            "start number after end number",
-        ));
+        return Err(Error::local(EW_NUMBER, "start number after end number"));
     }
     Ok(h.call(&rdalmhistry(s_number, e_number))?.valid())
 }
@@ -226,16 +212,15 @@ fn his_call(
 /// `alm_hst` must point to `length` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdalmhistry(
-    FlibHndl: std::os::raw::c_ushort,
-    s_number: std::os::raw::c_ushort,
-    e_number: std::os::raw::c_ushort,
-    length: std::os::raw::c_ushort,
-    alm_hst: *mut crate::types::ODBAHIS,
-) -> std::os::raw::c_short {
-    use super::offset::put_at;
-    super::ffi_boundary!("cnc_rdalmhistry", {
-        let h = crate::client::handles::get(FlibHndl)?;
-        let out = super::nonnull(alm_hst)?.cast::<u8>();
+    FlibHndl: c_ushort,
+    s_number: c_ushort,
+    e_number: c_ushort,
+    length: c_ushort,
+    alm_hst: *mut ODBAHIS,
+) -> c_short {
+    ffi_boundary!("cnc_rdalmhistry", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
         let n = his_fit(length, 6, 48, recs.len())?;
         unsafe {
@@ -268,16 +253,15 @@ pub unsafe extern "C" fn cnc_rdalmhistry(
 /// `alm_hst` must point to `length` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdalmhistry2(
-    FlibHndl: std::os::raw::c_ushort,
-    s_number: std::os::raw::c_ushort,
-    e_number: std::os::raw::c_ushort,
-    length: std::os::raw::c_ushort,
-    alm_hst: *mut crate::types::ODBAHIS2,
-) -> std::os::raw::c_short {
-    use super::offset::put_at;
-    super::ffi_boundary!("cnc_rdalmhistry2", {
-        let h = crate::client::handles::get(FlibHndl)?;
-        let out = super::nonnull(alm_hst)?.cast::<u8>();
+    FlibHndl: c_ushort,
+    s_number: c_ushort,
+    e_number: c_ushort,
+    length: c_ushort,
+    alm_hst: *mut ODBAHIS2,
+) -> c_short {
+    ffi_boundary!("cnc_rdalmhistry2", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
         let n = his_fit(length, 4, 52, recs.len())?;
         unsafe {
@@ -308,15 +292,12 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
 /// # Safety
 /// `hisno` must point to a writable unsigned short.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdalmhisno(
-    FlibHndl: std::os::raw::c_ushort,
-    hisno: *mut std::os::raw::c_ushort,
-) -> std::os::raw::c_short {
-    super::ffi_boundary!("cnc_rdalmhisno", {
-        let h = crate::client::handles::get(FlibHndl)?;
-        let out = super::nonnull(hisno)?;
+pub unsafe extern "C" fn cnc_rdalmhisno(FlibHndl: c_ushort, hisno: *mut c_ushort) -> c_short {
+    ffi_boundary!("cnc_rdalmhisno", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(hisno)?;
         let c = h.call(&rdalmhisno())?;
-        unsafe { super::put(out, c.value.max(0) as u16) };
+        unsafe { put(out, c.value.max(0) as u16) };
         Ok(())
     })
 }

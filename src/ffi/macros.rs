@@ -1,7 +1,6 @@
 //! Custom macro variables.
 
-use super::put;
-use super::{ffi_boundary, nonnull};
+use super::{ffi_boundary, len_of, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_LENGTH, EW_NUMBER};
@@ -61,12 +60,8 @@ pub unsafe extern "C" fn cnc_rdmacro(
 }
 
 fn first(recs: &[Value]) -> Result<&Value> {
-    recs.first().ok_or_else(|| {
-        Error::protocol(
-            crate::error::detail::SHORT_PAYLOAD,
-            "macro reply carries no record",
-        )
-    })
+    recs.first()
+        .ok_or_else(|| Error::short("macro reply carries no record"))
 }
 
 /// Checks cnc_wrmacro / cnc_wrmacror make before any traffic (SPEC.md §5.2):
@@ -137,7 +132,7 @@ pub unsafe extern "C" fn cnc_rdmacror(
     ffi_boundary!("cnc_rdmacror", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(buf)?;
-        let room = (length.max(0) as usize).checked_sub(IODBMR_HEAD);
+        let room = len_of(length).checked_sub(IODBMR_HEAD);
         let Some(room) = room else {
             return Err(Error::length());
         };
@@ -193,7 +188,7 @@ pub unsafe extern "C" fn cnc_wrmacror(
         }
         let n = (e - s) as usize + 1;
         // FANUC's library requires the last dec_val to lie within `length`.
-        if (length.max(0) as usize) < IODBMR_REC * n + 6 {
+        if len_of(length) < IODBMR_REC * n + 6 {
             return Err(Error::length());
         }
         let data = unsafe { addr_of_mut!((*inp).data).cast::<IODBMR_data>() };

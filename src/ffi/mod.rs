@@ -70,6 +70,19 @@ pub(crate) unsafe fn put<T>(p: *mut T, v: T) {
     unsafe { p.write_unaligned(v) }
 }
 
+/// Writes `v` at byte offset `off` of the caller's buffer.
+///
+/// # Safety
+/// `base + off .. + size_of::<T>()` must be writable.
+pub(crate) unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
+    unsafe { put(base.add(off).cast::<T>(), v) }
+}
+
+/// The caller's `length` as a byte count (negative counts as 0).
+pub(crate) fn len_of(length: c_short) -> usize {
+    length.max(0) as usize
+}
+
 /// Reads a C string argument.
 ///
 /// # Safety

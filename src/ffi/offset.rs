@@ -5,38 +5,19 @@
 //! library against a fake CNC). Outputs are written field by field at their
 //! l32 offsets, and only on success.
 
-use super::{ffi_boundary, nonnull};
+use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::offset as p;
 use crate::proto::value::Value;
-use crate::types::{IODBTO, IODBZOFS, IODBZOR, MAX_AXIS, ODBTLINF, ODBTOFS};
+use crate::types::{IODBTO, IODBZOFS, IODBZOR, ODBTLINF, ODBTOFS};
 use std::os::raw::{c_long, c_short, c_ushort};
-
-/// Writes `v` at byte offset `off` of the caller's buffer.
-///
-/// # Safety
-/// `base + off .. + size_of::<T>()` must be writable.
-pub(crate) unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
-    unsafe { base.add(off).cast::<T>().write_unaligned(v) }
-}
-
-/// The caller's `length` as a byte count (negative counts as 0).
-pub(crate) fn len_of(length: c_short) -> usize {
-    length.max(0) as usize
-}
-
-/// Maximum axes of the handle's current path (record count of axis -1).
-fn max_axes(h: &Handle) -> usize {
-    let path = h.state.lock().path;
-    (h.pair.info.ctx(path).max_axes as usize).min(MAX_AXIS)
-}
 
 /// Bytes IODBZOFS needs for `axis`, FANUC's local check: axis -1 all axes,
 /// axis > max → EW_ATTRIB, axis below -1 → EW_LENGTH (as FANUC's library).
 fn zofs_needed(h: &Handle, axis: c_short) -> Result<usize> {
-    let max = max_axes(h);
+    let max = h.ctx().axes();
     match axis {
         -1 => Ok(4 + 4 * max),
         a if a < -1 => Err(Error::local(EW_LENGTH, "axis below -1")),
@@ -50,10 +31,7 @@ fn first(v: &[Value]) -> Result<i32> {
 }
 
 fn short() -> Error {
-    Error::protocol(
-        crate::error::detail::SHORT_PAYLOAD,
-        "payload shorter than the answer needs",
-    )
+    Error::short("payload shorter than the answer needs")
 }
 
 /// Reads one tool offset value (`type`: offset kind, e.g. on a mill with
@@ -194,7 +172,7 @@ pub unsafe extern "C" fn cnc_rdzofs(
             return Err(Error::length());
         }
         let v = h.call(&p::rdzofs(number, axis))?;
-        let n = if axis == -1 { max_axes(&h) } else { 1 };
+        let n = if axis == -1 { h.ctx().axes() } else { 1 };
         if v.len() < n {
             return Err(short());
         }
@@ -229,7 +207,7 @@ pub unsafe extern "C" fn cnc_wrzofs(
         if len_of(length) < zofs_needed(&h, axis)? {
             return Err(Error::length());
         }
-        let n = if axis == -1 { max_axes(&h) } else { 1 };
+        let n = if axis == -1 { h.ctx().axes() } else { 1 };
         let values: Vec<i32> = (0..n).map(|i| rd(4 + 4 * i)).collect();
         h.call(&p::wrzofs(number, axis, &values))?;
         Ok(())
@@ -261,7 +239,7 @@ pub unsafe extern "C" fn cnc_rdzofsr(
         if 8 + 4 * v.len() > len_of(length) {
             return Err(Error::length());
         }
-        let per = if axis == -1 { max_axes(&h).max(1) } else { 1 };
+        let per = if axis == -1 { h.ctx().axes().max(1) } else { 1 };
         let e = i32::from(s_number) + (v.len() / per) as i32 - 1;
         unsafe {
             put_at(out, 0, s_number);

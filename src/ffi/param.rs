@@ -10,7 +10,7 @@ use crate::proto::param::{
     ReadRange, Table, WRPARAS_PER_FRAME, WriteParam, WriteSeveral, check_length, rdnum,
 };
 use crate::types::{
-    IODBPRM, IODBPRM_data, IODBPSD, MAX_AXIS, ODBDGN, ODBDIAGIF, ODBDIAGNUM, ODBPARAIF, ODBPARANUM,
+    IODBPRM, IODBPRM_data, IODBPSD, ODBDGN, ODBDIAGIF, ODBDIAGNUM, ODBPARAIF, ODBPARANUM,
 };
 use std::os::raw::{c_long, c_short, c_ushort, c_void};
 
@@ -122,12 +122,7 @@ pub unsafe extern "C" fn cnc_wrparam(
         let number = i16::from_le_bytes([raw[0], raw[1]]) as i32;
         let axis = i16::from_le_bytes([raw[2], raw[3]]);
         let info = h.call(&ParamInfo { number })?;
-        let count = if axis == -1 {
-            let path = h.state.lock().path;
-            (h.pair.info.ctx(path).max_axes as usize).min(MAX_AXIS)
-        } else {
-            1
-        };
+        let count = if axis == -1 { h.ctx().axes() } else { 1 };
         let size = info.elem.size();
         if length as i32 != (4 + size * count) as i32 {
             return Err(Error::local(
@@ -367,13 +362,6 @@ pub unsafe extern "C" fn cnc_rddiagnum(FlibHndl: c_ushort, diagnum: *mut ODBDIAG
     })
 }
 
-/// The CNC's class and max-axes count (capped at 32) on the handle's path.
-fn class_axes(h: &Handle) -> (CncClass, usize) {
-    let path = h.state.lock().path;
-    let cx = h.pair.info.ctx(path);
-    (cx.class, (cx.max_axes as usize).min(MAX_AXIS))
-}
-
 /// Reads the parameters `*s_number..=*e_number` (those the CNC has) into
 /// `param` as packed records: i16 number, i16 type word `(type << 8) |
 /// (axis & 0xff)`, then one value (axis -1: one per axis of the CNC) of
@@ -412,7 +400,7 @@ pub unsafe extern "C" fn cnc_rdparar(
         if s > e {
             return Err(Error::local(EW_NUMBER, "start number above end number"));
         }
-        let (class, _) = class_axes(&h);
+        let class = h.ctx().class;
         if class != CncClass::Series30 {
             return Err(Error::local(
                 EW_FUNC,
@@ -452,10 +440,7 @@ pub unsafe extern "C" fn cnc_rdparar(
                 last = Some(r.number as i32);
             }
             let Some(l) = last else {
-                return Err(Error::protocol(
-                    crate::error::detail::SHORT_PAYLOAD,
-                    "parameter range answer without a block",
-                ));
+                return Err(Error::short("parameter range answer without a block"));
             };
             // The CNC must move on; a number at or before the last request's
             // start would make us ask the same again forever.
@@ -496,7 +481,8 @@ pub unsafe extern "C" fn cnc_wrparas(
         if length <= 0 {
             return Ok(());
         }
-        let (class, axes) = class_axes(&h);
+        let cx = h.ctx();
+        let (class, axes) = (cx.class, cx.axes());
         if class != CncClass::Series30 {
             return Err(Error::local(
                 EW_FUNC,

@@ -4,11 +4,10 @@
 //! FANUC's library writes (so a caller's buffer of `length` bytes is never
 //! overrun), and only on success.
 
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NOOPT, EW_NUMBER};
-use crate::proto::call::Ctx;
 use crate::proto::position::{
     ACTF, ACTS, AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData,
     actual, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
@@ -20,19 +19,6 @@ use crate::types::{
 };
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_char, c_short, c_ushort};
-
-/// Writes `v` at byte offset `off` of the caller's buffer.
-///
-/// # Safety
-/// `base + off .. + size_of::<T>()` must be writable.
-unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
-    unsafe { put(base.add(off).cast::<T>(), v) }
-}
-
-fn ctx(h: &Handle) -> Ctx {
-    let path = h.state.lock().path;
-    h.pair.info.ctx(path)
-}
 
 /// The spindle functions of a 30i-class CNC need the open response's
 /// spindle word (SPEC.md §5.3): without it EW_NOOPT, without traffic.
@@ -661,7 +647,7 @@ fn axis_values(
         let length = length.max(0) as usize;
         // One value, or one per axis the CNC can have (all axes).
         let need = if axis == -1 {
-            data + 4 * usize::from(ctx(&h).max_axes).min(MAX_AXIS)
+            data + 4 * h.ctx().axes()
         } else {
             data + 4
         };
@@ -673,10 +659,7 @@ fn axis_values(
         }
         let recs = h.call(&position(code, axis))?;
         if recs.is_empty() {
-            return Err(Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
-                "no position record",
-            ));
+            return Err(Error::short("no position record"));
         }
         let room = ((length - data) / 4).min(MAX_AXIS);
         let n = if axis == -1 { recs.len().min(room) } else { 1 };

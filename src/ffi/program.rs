@@ -197,13 +197,10 @@ pub unsafe extern "C" fn cnc_modal(
             (Modal::Aux(a), ModalKind::AuxAll) => {
                 let need = *AUX_ORDER.iter().max().unwrap_or(&0) as usize + 1;
                 if a.0.len() < need {
-                    return Err(Error::protocol(
-                        crate::error::detail::SHORT_PAYLOAD,
-                        format!(
-                            "modal −2: {} records, the raux1 order needs {need}",
-                            a.0.len()
-                        ),
-                    ));
+                    return Err(Error::short(format!(
+                        "modal −2: {} records, the raux1 order needs {need}",
+                        a.0.len()
+                    )));
                 }
                 AUX_ORDER.iter().map(|i| a.0[*i as usize]).collect()
             }

@@ -18,14 +18,8 @@ pub unsafe extern "C" fn cnc_sysinfo(FlibHndl: c_ushort, sysinfo: *mut ODBSYS) -
     ffi_boundary!("cnc_sysinfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(sysinfo)?;
-        let path = h.state.lock().path as usize;
         let s = h
-            .pair
-            .info
-            .sysinfo
-            .get(path - 1)
-            .copied()
-            .flatten()
+            .sysinfo()
             .ok_or(Error::local(EW_PATH, "path has no system information"))?;
         let v = ODBSYS {
             addinfo: s.addinfo as c_short,

@@ -3,8 +3,7 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::offset::{len_of, put_at};
-use super::{ffi_boundary, nonnull};
+use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::EW_FUNC;
@@ -111,15 +110,7 @@ pub unsafe extern "C" fn cnc_rdtlctldata(FlibHndl: c_ushort, tlctl: *mut IODBTLC
     ffi_boundary!("cnc_rdtlctldata", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(tlctl)?.cast::<u8>();
-        let path = h.state.lock().path as usize;
-        let mt = h
-            .pair
-            .info
-            .sysinfo
-            .get(path - 1)
-            .copied()
-            .flatten()
-            .map(|s| s.mt_type);
+        let mt = h.sysinfo().map(|s| s.mt_type);
         if !matches!(mt, Some([b' ', b'P' | b'L'])) {
             return Err(Error::local(EW_FUNC, "not a punch press"));
         }

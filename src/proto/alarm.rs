@@ -1,9 +1,11 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
 
 use super::call::Single;
+use super::offset::Count;
 use super::packet::ReqSub;
 use super::position::AlarmBits;
 use super::wire::{DecodeError, Reader, Wire, Writer};
+use crate::wire_struct;
 
 // --- alarm ---
 
@@ -133,7 +135,7 @@ pub const RDALMHISNO: u16 = 0x006b;
 /// Characters of a history record's message.
 pub const HIS_MSG_LEN: usize = 32;
 
-crate::wire_struct! {
+wire_struct! {
     /// One 60-byte alarm history record (SPEC.md §5.2).
     pub struct AlmHisRecord {
         pub alm_no: i32,
@@ -185,14 +187,14 @@ impl AlmHisRecord {
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct AlmHistory(pub Vec<AlmHisRecord>);
 
-impl super::wire::Wire for AlmHistory {
-    fn encode(&self, w: &mut super::wire::Writer) {
-        super::wire::Wire::encode(&self.0, w)
+impl Wire for AlmHistory {
+    fn encode(&self, w: &mut Writer) {
+        Wire::encode(&self.0, w)
     }
-    fn decode(r: &mut super::wire::Reader<'_>) -> Result<Self, super::wire::DecodeError> {
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         let mut v = Vec::new();
         while r.remaining() >= 60 {
-            v.push(<AlmHisRecord as super::wire::Wire>::decode(r)?);
+            v.push(<AlmHisRecord as Wire>::decode(r)?);
         }
         Ok(AlmHistory(v))
     }
@@ -217,13 +219,10 @@ impl AlmHistory {
     }
 }
 
-pub fn rdalmhistry(s: u16, e: u16) -> super::call::Single<AlmHistory> {
-    super::call::Single::new(super::packet::ReqSub::cnc(
-        RDALMHISTRY,
-        &[i32::from(s), i32::from(e), 1],
-    ))
+pub fn rdalmhistry(s: u16, e: u16) -> Single<AlmHistory> {
+    Single::new(ReqSub::cnc(RDALMHISTRY, &[i32::from(s), i32::from(e), 1]))
 }
 
-pub fn rdalmhisno() -> super::call::Single<super::offset::Count> {
-    super::call::Single::new(super::packet::ReqSub::cnc(RDALMHISNO, &[]))
+pub fn rdalmhisno() -> Single<Count> {
+    Single::new(ReqSub::cnc(RDALMHISNO, &[]))
 }

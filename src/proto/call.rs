@@ -16,6 +16,13 @@ pub struct Ctx {
     pub max_axes: u16,
 }
 
+impl Ctx {
+    /// `max_axes` as a record count, capped at MAX_AXIS (32).
+    pub fn axes(&self) -> usize {
+        (self.max_axes as usize).min(crate::types::MAX_AXIS)
+    }
+}
+
 impl Default for Ctx {
     fn default() -> Self {
         Ctx {

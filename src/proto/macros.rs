@@ -7,6 +7,7 @@ use super::packet::{ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Value};
 use super::wire::Wire;
 use crate::error::Result;
+use crate::wire_struct;
 
 /// Read custom macro variables s..e: args (s, e); payload: one record each.
 pub const RDMACRO: u16 = 0x0015;
@@ -87,7 +88,7 @@ pub const RDMACROR2_CHUNK: u32 = 179;
 /// Most doubles FANUC's library sends in one cnc_wrmacror2 request.
 pub const WRMACROR2_CHUNK: u32 = 177;
 
-crate::wire_struct! {
+wire_struct! {
     /// Payload of 0x0017: variable counts (only the low 16 bits reach ODBMVINF).
     pub struct MacroInfo {
         pub use_no1: i32,

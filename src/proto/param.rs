@@ -296,11 +296,7 @@ pub struct ReadOne {
 
 impl ReadOne {
     fn count(&self, cx: &Ctx) -> usize {
-        if self.axis == -1 {
-            (cx.max_axes as usize).min(crate::types::MAX_AXIS)
-        } else {
-            1
-        }
+        if self.axis == -1 { cx.axes() } else { 1 }
     }
 }
 
@@ -315,12 +311,7 @@ impl Call for ReadOne {
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Item> {
         let count = self.count(cx);
-        let short = || {
-            Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
-                "parameter answer carries fewer values than the axis count",
-            )
-        };
+        let short = || Error::short("parameter answer carries fewer values than the axis count");
         match cx.class {
             CncClass::Series30 => {
                 let p: Param30 = payload(resp, 0)?;
@@ -673,7 +664,7 @@ impl Call for ReadExt {
             .collect()
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
-        let count = (cx.max_axes as usize).min(crate::types::MAX_AXIS);
+        let count = cx.axes();
         let mut out = Vec::with_capacity(self.numbers.len());
         for (k, n) in self.numbers.iter().enumerate() {
             let one = || -> Result<ExtRecord> {
@@ -696,10 +687,7 @@ impl Call for ReadExt {
                 }
                 let p = Param30::from_bytes(&v.payload)?;
                 if p.values.len() < count {
-                    return Err(Error::protocol(
-                        crate::error::detail::SHORT_PAYLOAD,
-                        "fewer value records than the CNC's axes",
-                    ));
+                    return Err(Error::short("fewer value records than the CNC's axes"));
                 }
                 let (info, unit) = match self.table {
                     Table::Param => (t.ext_info_param(), t.ext_unit_param()),
@@ -817,8 +805,7 @@ impl Packed {
         let real = Self::elem(ptype) == Some(Elem::Real);
         let n = Self::count(b.axis as i8, axes);
         if b.values.len() < n {
-            return Err(Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
+            return Err(Error::short(
                 "parameter block carries fewer values than its axis word needs",
             ));
         }
@@ -868,12 +855,11 @@ impl Call for ReadRange {
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<Packed>> {
         let s = sub(resp, 0)?;
-        let axes = (cx.max_axes as usize).min(crate::types::MAX_AXIS);
+        let axes = cx.axes();
         let size = block_len(cx.max_axes as usize);
         if s.payload.len() < size {
             // FANUC's library then loops on a garbage number; we stop.
-            return Err(Error::protocol(
-                crate::error::detail::SHORT_PAYLOAD,
+            return Err(Error::short(
                 "parameter range answer shorter than one block",
             ));
         }

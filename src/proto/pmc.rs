@@ -4,6 +4,7 @@
 use super::call::{Call, Ctx, payload, sub};
 use super::packet::{ReqSub, RespSub};
 use crate::error::Result;
+use crate::wire_struct;
 
 /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
 pub const RDPMCRNG: u16 = 0x8001;
@@ -113,7 +114,7 @@ pub const RDPMCINFO: u16 = 0x8003;
 /// Records ODBPMCINF holds.
 pub const PMCINFO_MAX: usize = 64;
 
-crate::wire_struct! {
+wire_struct! {
     /// One area of the 0x8003 reply (only the low byte of `adr` / `attr`
     /// and the low 16 bits of `top` / `last` reach ODBPMCINF).
     pub struct PmcAreaInfo {

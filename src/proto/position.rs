@@ -10,7 +10,7 @@ use super::call::{Call, Ctx, Single, payload, sub};
 use super::packet::{ReqSub, RespSub};
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
-use crate::error::{Error, Result, detail};
+use crate::error::{Error, Result};
 use crate::wire_struct;
 
 /// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).
@@ -178,16 +178,11 @@ impl Wire for Figures {
     }
 }
 
-/// A payload without enough bytes for what the function must write.
-fn short(what: &'static str) -> Error {
-    Error::protocol(detail::SHORT_PAYLOAD, what)
-}
-
 /// The value records of subpacket `i`, at least `need` of them.
 fn records(resp: &[RespSub], i: usize, need: usize) -> Result<Vec<Value>> {
     let v: Vec<Value> = payload(resp, i)?;
     if v.len() < need {
-        return Err(short("fewer value records than the function needs"));
+        return Err(Error::short("fewer value records than the function needs"));
     }
     Ok(v)
 }
@@ -438,7 +433,7 @@ impl Call for AxisDataCall {
         let mut values = Vec::with_capacity(codes.len());
         for (code, recs) in codes.iter().zip(&got) {
             if recs.len() < count {
-                return Err(short("fewer value records than the count"));
+                return Err(Error::short("fewer value records than the count"));
             }
             let mut row = Vec::with_capacity(count);
             for (i, r) in recs.iter().take(count).enumerate() {
@@ -452,7 +447,9 @@ impl Call for AxisDataCall {
                         let (n, u1, u2, f) =
                             (n.axes.get(i), u1.get(i), u2.get(i), fl.get(i).copied());
                         let (Some(n), Some(u1), Some(u2), Some(f)) = (n, u1, u2, f) else {
-                            return Err(short("fewer name/unit/flag entries than the count"));
+                            return Err(Error::short(
+                                "fewer name/unit/flag entries than the count",
+                            ));
                         };
                         if is_machine(*code) {
                             v.name = n.machine;
@@ -470,7 +467,7 @@ impl Call for AxisDataCall {
                     }
                     None => {
                         let Some(n) = plain_names.get(i) else {
-                            return Err(short("fewer names than the count"));
+                            return Err(Error::short("fewer names than the count"));
                         };
                         v.name = n.bytes;
                     }
@@ -553,9 +550,9 @@ impl Call for Speed {
         let _: Count = payload(resp, at)?;
         let feed_unit = *units
             .first()
-            .ok_or_else(|| short("0x88 unit payload is empty"))?;
+            .ok_or_else(|| Error::short("0x88 unit payload is empty"))?;
         let name = match (self.spindle, count.n, name) {
-            (true, 1.., None) => return Err(short("no spindle name entry")),
+            (true, 1.., None) => return Err(Error::short("no spindle name entry")),
             (_, _, n) => n.unwrap_or_default(),
         };
         Ok(SpeedReply {

@@ -1,8 +1,7 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
 
-#[allow(unused_imports)]
-use super::{LONG, ULONG};
-use std::os::raw::{c_char, c_short};
+use super::LONG;
+use std::os::raw::{c_char, c_short, c_ushort};
 
 // --- alarm ---
 
@@ -143,19 +142,19 @@ impl Default for OPMSG {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct ODBAHIS_ALM {
-    pub dummy: std::os::raw::c_short,
-    pub alm_grp: std::os::raw::c_short,
-    pub alm_no: std::os::raw::c_short,
-    pub axis_no: std::os::raw::c_char,
-    pub year: std::os::raw::c_char,
-    pub month: std::os::raw::c_char,
-    pub day: std::os::raw::c_char,
-    pub hour: std::os::raw::c_char,
-    pub minute: std::os::raw::c_char,
-    pub second: std::os::raw::c_char,
-    pub dummy2: std::os::raw::c_char,
-    pub len_msg: std::os::raw::c_short,
-    pub alm_msg: [std::os::raw::c_char; 32],
+    pub dummy: c_short,
+    pub alm_grp: c_short,
+    pub alm_no: c_short,
+    pub axis_no: c_char,
+    pub year: c_char,
+    pub month: c_char,
+    pub day: c_char,
+    pub hour: c_char,
+    pub minute: c_char,
+    pub second: c_char,
+    pub dummy2: c_char,
+    pub len_msg: c_short,
+    pub alm_msg: [c_char; 32],
 }
 
 /// cnc_rdalmhistry: alarm history (10 records as declared; the caller's
@@ -163,9 +162,9 @@ pub struct ODBAHIS_ALM {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct ODBAHIS {
-    pub s_no: std::os::raw::c_ushort,
-    pub r#type: std::os::raw::c_short,
-    pub e_no: std::os::raw::c_ushort,
+    pub s_no: c_ushort,
+    pub r#type: c_short,
+    pub e_no: c_ushort,
     pub alm_his: [ODBAHIS_ALM; 10],
 }
 
@@ -173,24 +172,24 @@ pub struct ODBAHIS {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct ODBAHIS2_ALM {
-    pub alm_grp: std::os::raw::c_short,
-    pub alm_no: std::os::raw::c_short,
-    pub axis_no: std::os::raw::c_short,
-    pub year: std::os::raw::c_short,
-    pub month: std::os::raw::c_short,
-    pub day: std::os::raw::c_short,
-    pub hour: std::os::raw::c_short,
-    pub minute: std::os::raw::c_short,
-    pub second: std::os::raw::c_short,
-    pub len_msg: std::os::raw::c_short,
-    pub alm_msg: [std::os::raw::c_char; 32],
+    pub alm_grp: c_short,
+    pub alm_no: c_short,
+    pub axis_no: c_short,
+    pub year: c_short,
+    pub month: c_short,
+    pub day: c_short,
+    pub hour: c_short,
+    pub minute: c_short,
+    pub second: c_short,
+    pub len_msg: c_short,
+    pub alm_msg: [c_char; 32],
 }
 
 /// cnc_rdalmhistry2: alarm history, all fields as shorts.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct ODBAHIS2 {
-    pub s_no: std::os::raw::c_ushort,
-    pub e_no: std::os::raw::c_ushort,
+    pub s_no: c_ushort,
+    pub e_no: c_ushort,
     pub alm_his: [ODBAHIS2_ALM; 10],
 }
