@@ -300,3 +300,19 @@ fn profile_validation() {
     let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\nwork = [[1, 2]]\n";
     assert!(Profile::parse(bad).is_err());
 }
+
+/// Group 0 is the group in use (the simulator's first); the group number
+/// written is the one the CNC answered, as FANUC's library writes it.
+#[test]
+fn tool_life_group_numbers_come_from_the_answer() {
+    let p = Profile::default();
+    let first = p.paths[0].tool_groups[0].number as i16;
+    let (_s, h) = sim::start_alloc(p);
+    let mut l = ODBTLIFE3::default();
+    assert_eq!(unsafe { cnc_rdlife(h, 0, &mut l) }, EW_OK);
+    assert_eq!(l.datano, first);
+    let mut c = ODBTLIFE3::default();
+    assert_eq!(unsafe { cnc_rdcount(h, 0, &mut c) }, EW_OK);
+    assert_eq!(c.datano, first);
+    sim::free(h);
+}

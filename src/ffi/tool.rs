@@ -26,7 +26,8 @@ pub unsafe extern "C" fn cnc_rdlife(
         let out = nonnull(life)?.cast::<u8>();
         let g = h.call(&tlgroup(number))?;
         unsafe {
-            put_at(out, 0, number);
+            // The group number the CNC answered, as FANUC's library writes it.
+            put_at(out, 0, g.grp as c_short);
             put_at(out, 4, g.life.value);
         }
         Ok(())
@@ -48,7 +49,7 @@ pub unsafe extern "C" fn cnc_rdcount(
         let out = nonnull(count)?.cast::<u8>();
         let g = h.call(&tlgroup(number))?;
         unsafe {
-            put_at(out, 0, number);
+            put_at(out, 0, g.grp as c_short);
             put_at(out, 4, g.count.value);
         }
         Ok(())
@@ -78,12 +79,12 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
             return Err(Error::length());
         }
         let g = h.call(&tlgroup(number))?;
-        let t = h.call(&tltools(number, g.ntool.value))?;
+        let t = h.call(&tltools(g.grp, g.ntool.value))?;
         if 20 + 20 * t.tools.len() > room {
             return Err(Error::length());
         }
         unsafe {
-            put_at(out, 0, number);
+            put_at(out, 0, g.grp as c_short);
             put_at(out, 8, g.ntool.value);
             put_at(out, 12, g.life.value);
             put_at(out, 16, g.count.value);

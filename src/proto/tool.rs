@@ -72,8 +72,16 @@ impl Wire for ToolList {
     }
 }
 
-pub fn tltools(grp: i16, ntool: i32) -> Single<ToolList> {
-    Single::new(ReqSub::cnc(TLTOOLS, &[i32::from(grp), 1, ntool]))
+/// Most tools one 0x004d request asks for, as FANUC's library does.
+pub const TOOLS_PER_REQUEST: i32 = 89;
+
+/// Tools 1.. of group `grp` (the group number the 0x008b answer gave), at
+/// most [`TOOLS_PER_REQUEST`], as FANUC's cnc_rdtoolgrp asks.
+pub fn tltools(grp: i32, ntool: i32) -> Single<ToolList> {
+    Single::new(ReqSub::cnc(
+        TLTOOLS,
+        &[grp, 1, ntool.min(TOOLS_PER_REQUEST)],
+    ))
 }
 
 wire_struct! {
@@ -96,4 +104,18 @@ wire_struct! {
 
 pub fn tlctl() -> Single<ToolCtl> {
     Single::new(ReqSub::cnc(TLCTL, &[]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::proto::call::{Call, Ctx};
+
+    #[test]
+    fn the_tool_list_request_asks_the_answered_group_for_at_most_89_tools() {
+        let r = tltools(7, 100).request(&Ctx::default());
+        assert_eq!((r[0].cmd, &r[0].args[..3]), (TLTOOLS, &[7, 1, 89][..]));
+        let r = tltools(7, 3).request(&Ctx::default());
+        assert_eq!(&r[0].args[..3], &[7, 1, 3]);
+    }
 }
