@@ -1374,10 +1374,12 @@ short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBAL
 short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
 
 /*
- Reads several values of all axes (`cls` 1 positions, types 0..3), servo
- loads (`cls` 2, type 0) or spindles (`cls` 3, types 0 load, 1 speed):
- `num` types from `type`; `*len` in = axes room per type, out = axes
- written. Record (type k, axis i) is `axdata[k * len_in + i]`.
+ Reads several values of all axes (`cls` 1 positions etc., types 0..17),
+ servo loads (`cls` 2, type 0), spindles (`cls` 3 all spindles / `cls` 4
+ spindle 1, types 0..4: load, speed, ...) or speeds (`cls` 5, types 0
+ feed, 1 spindle speed, 2 a third value; one item): `num` (1..4) types from
+ `type`; `*len` in = axes room per type, out = axes written. Record (type
+ k, axis i) is `axdata[k * len_in + i]`.
 
  # Safety
  `type` must point to `num` shorts, `len` to a writable short, `axdata`
@@ -1818,9 +1820,11 @@ short cnc_rdtofsinfo(unsigned short FlibHndl, struct ODBTLINF *tlinf);
 
 /*
  Reads the tool offsets `s_number..=e_number` of one type (-1: all types
- of each offset), one 4-byte value each from offset 8. Values that do not
- fit in `length` are not written (FANUC's library writes every value the
- CNC sent).
+ of each offset), one value each from offset 8: 4 bytes, or the low 16
+ bits for types 9 and 20 (as FANUC's library). The length check before
+ traffic uses FANUC's bytes-per-number table; values that do not fit in
+ `length` are not written (FANUC's library writes every value the CNC
+ sent).
 
  # Safety
  `tofs` must point to `length` writable bytes.
@@ -1868,9 +1872,12 @@ short cnc_rdzofs(unsigned short FlibHndl,
 short cnc_rdzofsinfo(unsigned short FlibHndl, short *ofs_no);
 
 /*
- Reads the work zero offsets `s_number..` for one axis or all axes (-1).
- `datano_e` is set from the offsets received; more values than `length`
- holds give the code EW_LENGTH with nothing written (as FANUC's library).
+ Reads the work zero offsets `s_number..` for one axis or all axes (any
+ negative axis, as FANUC's library). `datano_e` is set from the offsets
+ received: for all axes only whole groups of max_axes values count and
+ are written (a partial group is dropped, as FANUC's library). More
+ values than `length` holds give the code EW_LENGTH with nothing written
+ (as FANUC's library).
 
  # Safety
  `zofsr` must point to `length` writable bytes.
@@ -2107,7 +2114,8 @@ short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length
 
 /*
  Writes a work zero offset for one axis (`type` = axis) or all axes
- (`type` = -1: one value per axis of the CNC).
+ (any negative `type`, sent as it is: one value per axis of the CNC, as
+ FANUC's library).
 
  # Safety
  `zofs` must point to `length` readable bytes (an IODBZOFS).
@@ -2127,7 +2135,11 @@ short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
  Reads the PMC's address areas (letter, attribute, first and last
  address). At most 64 areas, and no more than the reply holds, are
  written (FANUC's library trusts the reply's count and can read past its
- buffer).
+ buffer). `datano` is the reply's count (low 16 bits, as FANUC's library
+ writes it, a negative count included) whenever that many records were
+ written; when the count is larger than what was written (more than 64
+ areas, or fewer records than the count), `datano` is the number of
+ records written, so it never points past the data.
 
  # Safety
  `buf` must point to a writable ODBPMCINF.

@@ -207,7 +207,7 @@ fn work_offset_protection() {
         z.r#type = -1;
         assert_eq!(cnc_wrzofs(h, 131, &mut z), EW_LENGTH);
         z.r#type = -2;
-        assert_eq!(cnc_wrzofs(h, 132, &mut z), EW_LENGTH);
+        assert_eq!(cnc_wrzofs(h, 131, &mut z), EW_LENGTH);
         // Axis beyond the CNC's: local; beyond the machine's: the CNC's.
         z.r#type = 33;
         assert_eq!(cnc_wrzofs(h, 8, &mut z), EW_ATTRIB);
@@ -314,5 +314,132 @@ fn tool_life_group_numbers_come_from_the_answer() {
     let mut c = ODBTLIFE3::default();
     assert_eq!(unsafe { cnc_rdcount(h, 0, &mut c) }, EW_OK);
     assert_eq!(c.datano, first);
+    sim::free(h);
+}
+
+/// A profile whose tool offsets have 21 types (0..20), values 1000·type +
+/// number, so types 9 and 20 exist.
+fn wide_tool_profile() -> Profile {
+    let mut p = Profile::default();
+    p.paths[0].offset.tool = (1..=4)
+        .map(|n| (0..21).map(|t| 1000 * t + n).collect())
+        .collect();
+    p
+}
+
+/// cnc_rdtofsr types 9 and 20 are 2-byte values packed from offset 8, with
+/// FANUC's per-type length table (2 bytes per number for 9/20, 8 for -2,
+/// 16 for -3, 12 for -5, 20 for -6, 4 otherwise); nothing past `length`.
+#[test]
+fn tool_offsets_2_byte_types_and_length_table() {
+    let (_s, h) = sim::start_alloc(wide_tool_profile());
+    for t in [9, 20] {
+        let mut b = [0xCCu8; 32];
+        let r = unsafe { cnc_rdtofsr(h, 1, t, 4, 8 + 2 * 4, b.as_mut_ptr().cast()) };
+        assert_eq!(r, EW_OK, "type {t}");
+        let mut want = vec![1, 0, t as u8, 0, 4, 0, 0xCC, 0xCC];
+        for n in 1..=4i32 {
+            want.extend_from_slice(&((1000 * i32::from(t) + n) as i16).to_le_bytes());
+        }
+        want.resize(32, 0xCC);
+        assert_eq!(b, want[..], "type {t}");
+        // One byte short of 8 + 2·4: refused before traffic.
+        let r = unsafe { cnc_rdtofsr(h, 1, t, 4, 15, b.as_mut_ptr().cast()) };
+        assert_eq!(r, EW_LENGTH);
+    }
+    // 4-byte types are unchanged: 8 + 4·n.
+    let mut b = [0xCCu8; 32];
+    assert_eq!(
+        unsafe { cnc_rdtofsr(h, 1, 8, 2, 15, b.as_mut_ptr().cast()) },
+        EW_LENGTH
+    );
+    assert_eq!(
+        unsafe { cnc_rdtofsr(h, 1, 8, 2, 16, b.as_mut_ptr().cast()) },
+        EW_OK
+    );
+    assert_eq!(
+        &b[8..16],
+        [&8001i32.to_le_bytes()[..], &8002i32.to_le_bytes()].concat()
+    );
+    assert_eq!(b[16..], [0xCC; 16]);
+    // The "all" types' table: one byte short is refused locally (the
+    // simulator answers -2..-6 with EW_ATTRIB, so enough room reaches it).
+    for (t, k) in [(-2, 8), (-3, 16), (-4, 8), (-5, 12), (-6, 20)] {
+        let mut b = vec![0xCCu8; 8 + 2 * k];
+        let p = b.as_mut_ptr().cast();
+        let short = (8 + 2 * k - 1) as c_short;
+        assert_eq!(
+            unsafe { cnc_rdtofsr(h, 1, t, 2, short, p) },
+            EW_LENGTH,
+            "{t}"
+        );
+        assert_eq!(
+            unsafe { cnc_rdtofsr(h, 1, t, 2, short + 1, p) },
+            EW_ATTRIB,
+            "{t}"
+        );
+        assert!(b.iter().all(|&x| x == 0xCC));
+    }
+    // Type -1 (all 21 types of each number, 4 bytes each) with room for 8 +
+    // 4·n: only the values that fit are written.
+    let mut b = [0xCCu8; 40];
+    assert_eq!(
+        unsafe { cnc_rdtofsr(h, 1, -1, 2, 16, b.as_mut_ptr().cast()) },
+        EW_OK
+    );
+    assert_eq!(
+        &b[8..16],
+        [&1i32.to_le_bytes()[..], &1001i32.to_le_bytes()].concat()
+    );
+    assert_eq!(b[16..], [0xCC; 24]);
+    sim::free(h);
+}
+
+/// Every negative axis is "all axes" for cnc_rdzofs / cnc_wrzofs /
+/// cnc_rdzofsr, as in FANUC's library: -2 needs the all-axes length
+/// (4 + 4·max_axes) and is then sent as it is. The simulator treats only -1
+/// as all axes and answers -2 with EW_ATTRIB, which shows the request went
+/// out instead of the old local EW_LENGTH.
+#[test]
+fn work_offsets_negative_axes_are_all_axes() {
+    let (_s, h) = default();
+    unsafe {
+        let mut z = IODBZOFS {
+            datano: 1,
+            r#type: -2,
+            ..IODBZOFS::default()
+        };
+        assert_eq!(cnc_wrzofs(h, 131, &mut z), EW_LENGTH);
+        assert_eq!(cnc_wrzofs(h, 132, &mut z), EW_ATTRIB);
+        z.r#type = -3;
+        assert_eq!(cnc_wrzofs(h, 132, &mut z), EW_ATTRIB);
+        let mut o = IODBZOFS::default();
+        assert_eq!(cnc_rdzofs(h, 1, -2, 131, &mut o), EW_LENGTH);
+        assert_eq!(cnc_rdzofs(h, 1, -2, 132, &mut o), EW_ATTRIB);
+        assert_eq!(o, IODBZOFS::default());
+        let mut r: IODBZOR = std::mem::zeroed();
+        assert_eq!(cnc_rdzofsr(h, 1, -2, 2, 300, &mut r), EW_ATTRIB);
+    }
+    sim::free(h);
+}
+
+/// cnc_rdzofsr axis -1: whole groups of max_axes values, datano_e from the
+/// groups received; the length check (after the exchange) counts 8 + 4 ·
+/// values, and a length one byte short writes nothing.
+#[test]
+fn work_offsets_all_axes_range_groups_and_length() {
+    let (_s, h) = default();
+    let mut b = vec![0xCCu8; 8 + 2 * 128 + 16];
+    let p = b.as_mut_ptr().cast();
+    assert_eq!(
+        unsafe { cnc_rdzofsr(h, 1, -1, 2, 8 + 2 * 128 - 1, p) },
+        EW_LENGTH
+    );
+    assert!(b.iter().all(|&x| x == 0xCC));
+    assert_eq!(unsafe { cnc_rdzofsr(h, 1, -1, 2, 8 + 2 * 128, p) }, EW_OK);
+    assert_eq!(&b[..8], [1, 0, 0xff, 0xff, 2, 0, 0xCC, 0xCC]);
+    assert_eq!(&b[8..12], (-325400i32).to_le_bytes());
+    assert_eq!(&b[8 + 128..8 + 132], (-125000i32).to_le_bytes());
+    assert_eq!(b[8 + 256..], [0xCC; 16]);
     sim::free(h);
 }

@@ -239,3 +239,23 @@ fn pmc_info_lists_the_areas() {
     );
     sim::free(h);
 }
+
+/// datano is the reply's count, which (the simulator's count always fitting)
+/// equals the records written: those before it are written, the one after
+/// it keeps the caller's bytes (FANUC's library writes the count too; a
+/// count larger than the records written is capped, see NOTES.md).
+#[test]
+fn pmc_info_datano_is_the_count_of_records_written() {
+    let s = start();
+    let h = sim::alloc(&s);
+    let mut b = vec![0xCCu8; std::mem::size_of::<ODBPMCINF>()];
+    assert_eq!(unsafe { pmc_rdpmcinfo(h, 0, b.as_mut_ptr().cast()) }, EW_OK);
+    let n = i16::from_le_bytes([b[0], b[1]]) as usize;
+    assert!((1..64).contains(&n), "datano {n}");
+    for i in 0..n {
+        let r = &b[2 + 6 * i..8 + 6 * i];
+        assert!(r[0].is_ascii_uppercase(), "record {i}: {r:02x?}");
+    }
+    assert_eq!(&b[2 + 6 * n..], &vec![0xCC; b.len() - 2 - 6 * n][..]);
+    sim::free(h);
+}

@@ -411,7 +411,7 @@ fn axis_data_and_position() {
     assert_eq!((len, ax[1].data, ax[4 + 1].data), (2, 7, 1500));
     assert_eq!(
         unsafe { cnc_rdaxisdata(c.h, 7, t.as_mut_ptr(), 2, &mut len, ax.as_mut_ptr()) },
-        EW_ATTRIB
+        EW_NUMBER
     );
 
     let mut num: c_short = 8;
@@ -472,4 +472,112 @@ fn spindle_meters_need_the_spindle_word() {
     let mut a = ODBACT::default();
     assert_eq!(unsafe { cnc_acts(c.h, &mut a) }, EW_OK);
     assert_eq!(a.data, 0);
+}
+
+/// cnc_rdaxisdata with `types` into a 0xCC-filled buffer of `room` records
+/// per type: (code, *len out, buffer).
+fn axisdata(
+    h: c_ushort,
+    cls: c_short,
+    types: &[c_short],
+    room: c_short,
+) -> (c_short, c_short, Vec<u8>) {
+    let mut t = types.to_vec();
+    let mut len = room;
+    let mut b = vec![FILL; size_of::<ODBAXDT>() * (types.len().max(1) * room.max(1) as usize)];
+    let r = unsafe {
+        cnc_rdaxisdata(
+            h,
+            cls,
+            t.as_mut_ptr(),
+            types.len() as c_short,
+            &mut len,
+            b.as_mut_ptr().cast(),
+        )
+    };
+    (r, len, b)
+}
+
+/// ODBAXDT record `k` of a buffer: (name bytes, data, dec, unit, flag).
+fn axdt(b: &[u8], k: usize) -> ([u8; 4], i32, i16, i16, i16) {
+    let r = &b[16 * k..16 * k + 16];
+    let i16_at = |o: usize| i16::from_le_bytes([r[o], r[o + 1]]);
+    (
+        [r[0], r[1], r[2], r[3]],
+        i32::from_le_bytes([r[4], r[5], r[6], r[7]]),
+        i16_at(8),
+        i16_at(10),
+        i16_at(12),
+    )
+}
+
+/// Classes 4 and 5 and class-1 types 4..17 (FANUC's library's tables, see
+/// NOTES.md), and FANUC's local checks: *len < 1 → EW_LENGTH, num outside
+/// 1..4 → EW_ATTRIB, class outside 1..5 → EW_NUMBER, unknown type →
+/// EW_ATTRIB.
+#[test]
+fn axis_data_classes_4_5_and_more_position_types() {
+    let text = profile(32);
+    let c = start(&text);
+    let p = &c.p.paths[0];
+    // Class 1 types 4, 5, 17 (codes 11, 12, 39: the simulator answers 0)
+    // and 0: names and units as the other non-machine types.
+    let (r, len, b) = axisdata(c.h, 1, &[4, 5, 17, 0], 4);
+    assert_eq!((r, len), (EW_OK, 3));
+    for k in 0..3 {
+        let (name, data, _, unit, _) = axdt(&b, 4 * k + 2);
+        assert_eq!((name[0], data, unit), (b'B', 0, 2), "type index {k}");
+    }
+    assert_eq!(axdt(&b, 12 + 2).1, p.axes[2].absolute);
+    assert_eq!(axisdata(c.h, 1, &[18], 4).0, EW_ATTRIB);
+    assert_eq!(axisdata(c.h, 1, &[-1], 4).0, EW_ATTRIB);
+
+    // Class 5: always one item; type 0 feed 'F' (2 name bytes), unit from
+    // 0x88[3]; type 1 the first spindle's speed and name, unit 5, flag 1;
+    // type 2 'F', flag 2.
+    let (r, len, b) = axisdata(c.h, 5, &[0, 1, 2], 2);
+    assert_eq!((r, len), (EW_OK, 1));
+    assert_eq!(axdt(&b, 0), ([b'F', 0, FILL, FILL], p.feed, 0, 3, 0));
+    let (name, data, dec, unit, flag) = axdt(&b, 2);
+    assert_eq!(
+        (&name[..2], data, dec, unit, flag),
+        (&b"S1"[..], p.spindles[0].speed, 0, 5, 1)
+    );
+    assert_eq!(axdt(&b, 4), ([b'F', 0, FILL, FILL], 0, 0, 0, 2));
+    assert!(b[16..32].iter().all(|&x| x == FILL), "item 1 untouched");
+    assert_eq!(axisdata(c.h, 5, &[3], 2).0, EW_ATTRIB);
+
+    // Local checks, FANUC's order.
+    assert_eq!(axisdata(c.h, 1, &[0], 0).0, EW_LENGTH);
+    assert_eq!(axisdata(c.h, 6, &[0], 0).0, EW_LENGTH);
+    assert_eq!(axisdata(c.h, 1, &[0; 5], 4).0, EW_ATTRIB);
+    assert_eq!(axisdata(c.h, 6, &[0; 5], 4).0, EW_ATTRIB);
+    assert_eq!(axisdata(c.h, 1, &[], 4).0, EW_ATTRIB);
+    assert_eq!(axisdata(c.h, 0, &[0], 4).0, EW_NUMBER);
+    assert_eq!(axisdata(c.h, 6, &[0], 4).0, EW_NUMBER);
+
+    // Class 3 types 2..4 (0x40 codes 3, 7, 6): speed, 0, 0 with their units.
+    let (r, len, b) = axisdata(c.h, 3, &[2, 3, 4], 4);
+    assert_eq!((r, len), (EW_OK, 2));
+    assert_eq!(axdt(&b, 1).1, p.spindles[1].speed);
+    assert_eq!((axdt(&b, 4).3, axdt(&b, 8).3), (5, 8));
+    assert_eq!(axisdata(c.h, 3, &[5], 4).0, EW_ATTRIB);
+
+    // Class 4 asks 0x40[code, 1] for as many items as 0xa4[3] (the
+    // simulator: the path's spindles), so a one-spindle machine answers.
+    let one = text.replacen(
+        "[[path.spindle]]\nname = \"S2\"\nspeed = 1500\nload = 7\n",
+        "",
+        1,
+    );
+    assert_ne!(one, text);
+    let c1 = start(&one);
+    let (r, len, b) = axisdata(c1.h, 4, &[0, 1], 4);
+    assert_eq!((r, len), (EW_OK, 1));
+    assert_eq!(axdt(&b, 0), (*b"S1\0\0", 25, 0, 8, 0));
+    assert_eq!(axdt(&b, 4), (*b"S1\0\0", 3000, 0, 5, 0));
+    assert_eq!(axisdata(c1.h, 4, &[5], 4).0, EW_ATTRIB);
+    // Two spindles: 0xa4[3] = 2 but 0x40[code, 1] one record → EW_PROTOCOL
+    // (FANUC's library copies a stale record).
+    assert_eq!(axisdata(c.h, 4, &[0], 4).0, EW_PROTOCOL);
 }

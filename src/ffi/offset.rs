@@ -8,21 +8,36 @@
 use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
-use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_ATTRIB, EW_NUMBER};
 use crate::proto::offset as p;
 use crate::proto::value::Value;
 use crate::types::{IODBTO, IODBZOFS, IODBZOR, ODBTLINF, ODBTOFS};
 use std::os::raw::{c_long, c_short, c_ushort};
 
-/// Bytes IODBZOFS needs for `axis`, FANUC's local check: axis -1 all axes,
-/// axis > max → EW_ATTRIB, axis below -1 → EW_LENGTH (as FANUC's library).
+/// Bytes IODBZOFS needs for `axis`, FANUC's local check: every negative
+/// axis means all axes (4 + 4 · max_axes bytes; FANUC's library treats -2,
+/// -3 … as -1 and sends them as they are), axis > max → EW_ATTRIB.
 fn zofs_needed(h: &Handle, axis: c_short) -> Result<usize> {
     let max = h.ctx().axes();
     match axis {
-        -1 => Ok(4 + 4 * max),
-        a if a < -1 => Err(Error::local(EW_LENGTH, "axis below -1")),
+        a if a < 0 => Ok(4 + 4 * max),
         a if a as usize > max => Err(Error::local(EW_ATTRIB, "axis beyond the CNC's axes")),
         _ => Ok(8),
+    }
+}
+
+/// Bytes per value and per offset number in cnc_rdtofsr's output for
+/// `type`, FANUC's table: (value size, bytes per number for the length
+/// check). Types 9 and 20 are 2-byte values; the "all" types -2..-6 take
+/// several values per number.
+fn tofsr_sizes(r#type: c_short) -> (usize, usize) {
+    match r#type {
+        9 | 20 => (2, 2),
+        -2 | -4 => (4, 8),
+        -3 => (4, 16),
+        -5 => (4, 12),
+        -6 => (4, 20),
+        _ => (4, 4),
     }
 }
 
@@ -87,9 +102,11 @@ pub unsafe extern "C" fn cnc_wrtofs(
 }
 
 /// Reads the tool offsets `s_number..=e_number` of one type (-1: all types
-/// of each offset), one 4-byte value each from offset 8. Values that do not
-/// fit in `length` are not written (FANUC's library writes every value the
-/// CNC sent).
+/// of each offset), one value each from offset 8: 4 bytes, or the low 16
+/// bits for types 9 and 20 (as FANUC's library). The length check before
+/// traffic uses FANUC's bytes-per-number table; values that do not fit in
+/// `length` are not written (FANUC's library writes every value the CNC
+/// sent).
 ///
 /// # Safety
 /// `tofs` must point to `length` writable bytes.
@@ -110,17 +127,22 @@ pub unsafe extern "C" fn cnc_rdtofsr(
         }
         let room = len_of(length);
         let count = (i32::from(e_number) - i32::from(s_number) + 1) as usize;
-        if room < 8 + 4 * count {
+        let (size, per_number) = tofsr_sizes(r#type);
+        if room < 8 + per_number * count {
             return Err(Error::length());
         }
         let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?;
-        let n = v.len().min((room - 8) / 4);
+        let n = v.len().min((room - 8) / size);
         unsafe {
             put_at(out, 0, s_number);
             put_at(out, 2, r#type);
             put_at(out, 4, e_number);
             for (i, r) in v[..n].iter().enumerate() {
-                put_at(out, 8 + 4 * i, r.value);
+                if size == 2 {
+                    put_at(out, 8 + 2 * i, r.value as i16);
+                } else {
+                    put_at(out, 8 + 4 * i, r.value);
+                }
             }
         }
         Ok(())
@@ -172,7 +194,7 @@ pub unsafe extern "C" fn cnc_rdzofs(
             return Err(Error::length());
         }
         let v = h.call(&p::rdzofs(number, axis))?;
-        let n = if axis == -1 { h.ctx().axes() } else { 1 };
+        let n = if axis < 0 { h.ctx().axes() } else { 1 };
         if v.len() < n {
             return Err(short());
         }
@@ -188,7 +210,8 @@ pub unsafe extern "C" fn cnc_rdzofs(
 }
 
 /// Writes a work zero offset for one axis (`type` = axis) or all axes
-/// (`type` = -1: one value per axis of the CNC).
+/// (any negative `type`, sent as it is: one value per axis of the CNC, as
+/// FANUC's library).
 ///
 /// # Safety
 /// `zofs` must point to `length` readable bytes (an IODBZOFS).
@@ -207,16 +230,19 @@ pub unsafe extern "C" fn cnc_wrzofs(
         if len_of(length) < zofs_needed(&h, axis)? {
             return Err(Error::length());
         }
-        let n = if axis == -1 { h.ctx().axes() } else { 1 };
+        let n = if axis < 0 { h.ctx().axes() } else { 1 };
         let values: Vec<i32> = (0..n).map(|i| rd(4 + 4 * i)).collect();
         h.call(&p::wrzofs(number, axis, &values))?;
         Ok(())
     })
 }
 
-/// Reads the work zero offsets `s_number..` for one axis or all axes (-1).
-/// `datano_e` is set from the offsets received; more values than `length`
-/// holds give the code EW_LENGTH with nothing written (as FANUC's library).
+/// Reads the work zero offsets `s_number..` for one axis or all axes (any
+/// negative axis, as FANUC's library). `datano_e` is set from the offsets
+/// received: for all axes only whole groups of max_axes values count and
+/// are written (a partial group is dropped, as FANUC's library). More
+/// values than `length` holds give the code EW_LENGTH with nothing written
+/// (as FANUC's library).
 ///
 /// # Safety
 /// `zofsr` must point to `length` writable bytes.
@@ -236,16 +262,18 @@ pub unsafe extern "C" fn cnc_rdzofsr(
             return Err(Error::local(EW_NUMBER, "start number after end number"));
         }
         let v = h.call(&p::rdzofsr(s_number, axis, e_number))?;
-        if 8 + 4 * v.len() > len_of(length) {
+        let per = if axis < 0 { h.ctx().axes().max(1) } else { 1 };
+        let numbers = v.len() / per;
+        let values = &v[..numbers * per];
+        if 8 + 4 * values.len() > len_of(length) {
             return Err(Error::length());
         }
-        let per = if axis == -1 { h.ctx().axes().max(1) } else { 1 };
-        let e = i32::from(s_number) + (v.len() / per) as i32 - 1;
+        let e = i32::from(s_number) + numbers as i32 - 1;
         unsafe {
             put_at(out, 0, s_number);
             put_at(out, 2, axis);
             put_at(out, 4, e as i16);
-            for (i, r) in v.iter().enumerate() {
+            for (i, r) in values.iter().enumerate() {
                 put_at(out, 8 + 4 * i, r.value);
             }
         }

@@ -126,7 +126,11 @@ pub unsafe extern "C" fn pmc_getdtailerr(FlibHndl: c_ushort, err: *mut ODBPMCERR
 /// Reads the PMC's address areas (letter, attribute, first and last
 /// address). At most 64 areas, and no more than the reply holds, are
 /// written (FANUC's library trusts the reply's count and can read past its
-/// buffer).
+/// buffer). `datano` is the reply's count (low 16 bits, as FANUC's library
+/// writes it, a negative count included) whenever that many records were
+/// written; when the count is larger than what was written (more than 64
+/// areas, or fewer records than the count), `datano` is the number of
+/// records written, so it never points past the data.
 ///
 /// # Safety
 /// `buf` must point to a writable ODBPMCINF.
@@ -141,8 +145,13 @@ pub unsafe extern "C" fn pmc_rdpmcinfo(
         let out = nonnull(buf)?;
         let info = h.call_pmc(&rdpmcinfo(adr_type))?;
         let n = info.areas.len().min(PMCINFO_MAX);
+        let datano = if info.count <= n as i32 {
+            info.count as c_short
+        } else {
+            n as c_short
+        };
         unsafe {
-            put(addr_of_mut!((*out).datano), n as c_short);
+            put(addr_of_mut!((*out).datano), datano);
             let dst = addr_of_mut!((*out).info).cast::<ODBPMCINF_info>();
             for (i, a) in info.areas[..n].iter().enumerate() {
                 let rec = ODBPMCINF_info {

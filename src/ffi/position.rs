@@ -489,10 +489,20 @@ pub unsafe extern "C" fn cnc_rdspload(
 /// 1 machine, 2 relative, 3 distance to go (0x26 codes 0..3).
 const POS_TYPES: [i32; 4] = [pos::ABSOLUTE2, pos::MACHINE, pos::RELATIVE2, pos::DISTANCE2];
 
-/// Reads several values of all axes (`cls` 1 positions, types 0..3), servo
-/// loads (`cls` 2, type 0) or spindles (`cls` 3, types 0 load, 1 speed):
-/// `num` types from `type`; `*len` in = axes room per type, out = axes
-/// written. Record (type k, axis i) is `axdata[k * len_in + i]`.
+/// rdaxisdata class 1 types 4..17 → 0x26 codes (FANUC's library's table;
+/// what the codes mean is not recorded).
+const POS_TYPES_EXT: [i32; 14] = [11, 12, 13, 14, 15, 16, 17, 18, 8, 9, 10, 37, 38, 39];
+
+/// rdaxisdata classes 3/4 types 0..4 → (0x40 code, ODBAXDT unit), FANUC's
+/// library's table (unit 8 = %, 5 = min^-1).
+const SPINDLE_TYPES: [(i32, i16); 5] = [(4, 8), (5, 5), (3, 5), (7, 5), (6, 8)];
+
+/// Reads several values of all axes (`cls` 1 positions etc., types 0..17),
+/// servo loads (`cls` 2, type 0), spindles (`cls` 3 all spindles / `cls` 4
+/// spindle 1, types 0..4: load, speed, ...) or speeds (`cls` 5, types 0
+/// feed, 1 spindle speed, 2 a third value; one item): `num` (1..4) types from
+/// `type`; `*len` in = axes room per type, out = axes written. Record (type
+/// k, axis i) is `axdata[k * len_in + i]`.
 ///
 /// # Safety
 /// `type` must point to `num` shorts, `len` to a writable short, `axdata`
@@ -511,11 +521,15 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
         let types_p = nonnull(r#type)?;
         let room = read_count(len)?;
         let out = nonnull(axdata)?;
-        if !(1..=16).contains(&num) {
-            return Err(Error::local(EW_NUMBER, "num must be 1..16"));
-        }
+        // FANUC's order: *len, then num, then the class, then the types.
         if room < 1 {
             return Err(Error::length());
+        }
+        if !(1..=4).contains(&num) {
+            return Err(Error::local(EW_ATTRIB, "num must be 1..4"));
+        }
+        if !(1..=5).contains(&cls) {
+            return Err(Error::local(EW_NUMBER, "class must be 1..5"));
         }
         let types: Vec<c_short> = (0..num as usize)
             .map(|i| unsafe { types_p.add(i).read_unaligned() })
@@ -523,10 +537,16 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
         let bad = |ok: &dyn Fn(c_short) -> bool| types.iter().any(|t| !ok(*t));
         let (what, units): (AxisData, Vec<Option<i16>>) = match cls {
             1 => {
-                if bad(&|t| (0..4).contains(&t)) {
-                    return Err(Error::local(EW_ATTRIB, "class 1 types are 0..3"));
+                if bad(&|t| (0..18).contains(&t)) {
+                    return Err(Error::local(EW_ATTRIB, "class 1 types are 0..17"));
                 }
-                let codes = types.iter().map(|t| POS_TYPES[*t as usize]).collect();
+                let codes = types
+                    .iter()
+                    .map(|&t| match t {
+                        0..4 => POS_TYPES[t as usize],
+                        _ => POS_TYPES_EXT[t as usize - 4],
+                    })
+                    .collect();
                 (AxisData::Positions(codes), vec![None; types.len()])
             }
             2 => {
@@ -538,26 +558,38 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
                     vec![Some(8); types.len()],
                 )
             }
-            3 => {
-                if bad(&|t| t == 0 || t == 1) {
-                    return Err(Error::local(
-                        EW_ATTRIB,
-                        "class 3 types are 0 (load), 1 (speed)",
-                    ));
+            3 | 4 => {
+                if bad(&|t| (0..5).contains(&t)) {
+                    return Err(Error::local(EW_ATTRIB, "class 3/4 types are 0..4"));
                 }
                 need_spindle_info(&h)?;
-                let codes = types
-                    .iter()
-                    .map(|t| spdl::LOAD_METER + i32::from(*t))
-                    .collect();
-                // ODBAXDT unit codes: 8 = %, 5 = min^-1.
+                let codes = types.iter().map(|t| SPINDLE_TYPES[*t as usize].0).collect();
                 let units = types
                     .iter()
-                    .map(|t| Some(if *t == 0 { 8 } else { 5 }))
+                    .map(|t| Some(SPINDLE_TYPES[*t as usize].1))
                     .collect();
-                (AxisData::Spindle(codes), units)
+                if cls == 3 {
+                    (AxisData::Spindle(codes), units)
+                } else {
+                    (AxisData::FirstSpindle(codes), units)
+                }
             }
-            _ => return Err(Error::local(EW_ATTRIB, "class must be 1, 2 or 3")),
+            _ => {
+                if bad(&|t| (0..3).contains(&t)) {
+                    return Err(Error::local(EW_ATTRIB, "class 5 types are 0..2"));
+                }
+                let cmds = types
+                    .iter()
+                    .map(|t| {
+                        [
+                            crate::proto::position::ACTF,
+                            crate::proto::position::ACTS,
+                            crate::proto::position::SPEED_A5,
+                        ][*t as usize]
+                    })
+                    .collect();
+                (AxisData::Speed(cmds), vec![None; types.len()])
+            }
         };
         let r = h.call(&AxisDataCall { what, limit: room })?;
         for (k, (row, unit)) in r.values.iter().zip(&units).enumerate() {
@@ -568,7 +600,11 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
                     None => (v.unit, v.flag),
                 };
                 unsafe {
-                    put_at(b, offset_of!(ODBAXDT, name), v.name);
+                    if v.short_name {
+                        put_at(b, offset_of!(ODBAXDT, name), [v.name[0], v.name[1]]);
+                    } else {
+                        put_at(b, offset_of!(ODBAXDT, name), v.name);
+                    }
                     put_at(b, offset_of!(ODBAXDT, data), v.data);
                     put_at(b, offset_of!(ODBAXDT, dec), v.dec);
                     put_at(b, offset_of!(ODBAXDT, unit), unit);

@@ -180,6 +180,9 @@ impl CncService for Machine {
     fn actual(&mut self, path: u16, spindle: bool) -> Reply<crate::proto::value::Value> {
         self.pos_actual(path, spindle)
     }
+    fn speed_a5(&mut self, path: u16) -> Reply<crate::proto::value::Value> {
+        self.pos_speed_a5(path)
+    }
     fn positions(
         &mut self,
         path: u16,

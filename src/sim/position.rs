@@ -83,6 +83,13 @@ impl Machine {
         })
     }
 
+    /// 0xa5 (rdaxisdata class 5 type 2): its meaning is not known; the
+    /// simulator answers 0 with 0 decimals.
+    pub(crate) fn pos_speed_a5(&self, path: u16) -> Reply<Value> {
+        self.pos_path(path)?;
+        Ok(Value::decimal(0, 0))
+    }
+
     /// Feed rate of the path, or the speed of its first spindle.
     pub(crate) fn pos_actual(&self, path: u16, spindle: bool) -> Reply<Value> {
         let p = self.pos_path(path)?;
@@ -103,6 +110,9 @@ impl Machine {
             pos::MACHINE => |a| a.machine,
             pos::RELATIVE | pos::RELATIVE2 => |a| a.relative,
             pos::DISTANCE | pos::DISTANCE2 => |a| a.distance,
+            // rdaxisdata class 1 types 4..17: codes whose meaning is not
+            // recorded; the simulator answers 0 for every axis.
+            8..=18 | 37..=39 => |_| 0,
             _ => return Err(NUMBER),
         };
         let rec = |a: &Axis| Value::decimal(pick(a), a.decimals);
@@ -187,6 +197,8 @@ impl Machine {
         let pick: fn(&Spindle) -> i32 = match code {
             spdl::LOAD_SERIAL | spdl::LOAD_METER => |s| s.load,
             spdl::SPEED_ACT | spdl::SPEED_METER => |s| s.speed,
+            // rdaxisdata classes 3/4 types 3 and 4: meaning not recorded, 0.
+            6 | 7 => |_| 0,
             _ => return Err(NUMBER),
         };
         let rec = |s: &Spindle| Value::decimal(pick(s), 0);

@@ -97,6 +97,10 @@ pub trait CncService: Send {
     fn actual(&mut self, path: u16, spindle: bool) -> Reply<crate::proto::value::Value> {
         unsupported()
     }
+    /// 0xa5: rdaxisdata class 5 type 2 (meaning unknown).
+    fn speed_a5(&mut self, path: u16) -> Reply<crate::proto::value::Value> {
+        unsupported()
+    }
     /// 0x26[code, axis]: positions (axis -1: max-axes records).
     fn positions(
         &mut self,
@@ -365,6 +369,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, crate::proto::position::SEQNUM) => enc(svc.seq_num(p)),
             (CLASS_CNC, crate::proto::position::ACTF) => enc(svc.actual(p, false)),
             (CLASS_CNC, crate::proto::position::ACTS) => enc(svc.actual(p, true)),
+            (CLASS_CNC, crate::proto::position::SPEED_A5) => enc(svc.speed_a5(p)),
             (CLASS_CNC, crate::proto::position::POSITION) => enc(svc.positions(p, a[0], a[1])),
             (CLASS_CNC, crate::proto::position::GETFIGURE) => enc(svc.figures(p, a[0])),
             (CLASS_CNC, crate::proto::position::RDAXISNAME) if a[0] == -1 => {
