@@ -383,12 +383,14 @@ impl AxisDataCall {
         } else {
             usize::from(cx.max_spindles)
         };
-        let count = max.min(self.limit.max(0) as usize);
+        // FANUC reads max-axes/spindles records regardless of the payload
+        // size; we stop at the records actually answered (never garbage).
+        let answered = got.iter().map(Vec::len).chain([names.len()]).min();
+        let count = max
+            .min(self.limit.max(0) as usize)
+            .min(answered.unwrap_or(0));
         let mut values = Vec::with_capacity(codes.len());
         for recs in &got {
-            if recs.len() < count || names.len() < count {
-                return Err(Error::short("fewer records than the count"));
-            }
             let row = recs
                 .iter()
                 .zip(&names)
