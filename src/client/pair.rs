@@ -34,6 +34,7 @@ impl CncInfo {
         Ctx {
             class: self.open.class(),
             max_axes: self.open.max_axes(path as usize),
+            max_spindles: self.open.max_spindles(),
         }
     }
 }

@@ -6,7 +6,7 @@ use super::program::low16;
 use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
-use crate::ew::{EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_FUNC, EW_LENGTH, EW_NUMBER};
 use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
 use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG};
 use std::os::raw::{c_long, c_short, c_ushort};
@@ -261,6 +261,10 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
 ) -> c_short {
     ffi_boundary!("cnc_rdalmhistry2", {
         let h = handles::get(FlibHndl)?;
+        if h.ctx().class.is_16i() {
+            // FANUC's library: EW_FUNC without traffic for any arguments.
+            return Err(Error::local(EW_FUNC, "not available on a 16i-class CNC"));
+        }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
         let n = his_fit(length, 4, 52, recs.len())?;

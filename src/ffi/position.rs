@@ -7,7 +7,7 @@
 use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
-use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NOOPT, EW_NUMBER};
+use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NOOPT, EW_NUMBER};
 use crate::proto::position::{
     ACTF, ACTS, AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData,
     actual, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
@@ -287,13 +287,19 @@ pub unsafe extern "C" fn cnc_acts2(
     ffi_boundary!("cnc_acts2", {
         let h = handles::get(FlibHndl)?;
         let base = nonnull(actualspindle)?.cast::<u8>();
-        let (_, recs) = h.call(&SpindleData {
+        let (n, recs) = h.call(&SpindleData {
             code: spdl::SPEED_ACT,
             sp_no,
         })?;
+        // 16i class: FANUC writes only the open body's maximum spindles.
+        let room = if h.ctx().class.is_16i() {
+            usize::from(n).min(MAX_SPINDLE)
+        } else {
+            MAX_SPINDLE
+        };
         unsafe {
             put_at(base, offset_of!(ODBACT2, datano), sp_no);
-            for (i, r) in recs.iter().take(MAX_SPINDLE).enumerate() {
+            for (i, r) in recs.iter().take(room).enumerate() {
                 put_at(base, offset_of!(ODBACT2, data) + 4 * i, r.value);
             }
         }
@@ -424,11 +430,13 @@ pub unsafe extern "C" fn cnc_rdspmeter(
             _ => return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or -1")),
         };
         need_spindle_info(&h)?;
+        // 16i class: FANUC always asks load and speed (recorded with our fake CNC).
+        let both = h.ctx().class.is_16i();
         let mut codes = vec![];
-        if load {
+        if load || both {
             codes.push(spdl::LOAD_METER);
         }
-        if speed {
+        if speed || both {
             codes.push(spdl::SPEED_METER);
         }
         let r = h.call(&AxisDataCall {
@@ -436,8 +444,9 @@ pub unsafe extern "C" fn cnc_rdspmeter(
             limit,
         })?;
         let mut rows = r.values.iter();
-        if load {
-            for (i, v) in rows.next().into_iter().flatten().enumerate() {
+        if load || both {
+            let row = rows.next();
+            for (i, v) in row.into_iter().flatten().enumerate().filter(|_| load) {
                 unsafe { put_load(&raw mut (*out.add(i)).spload, v, 0) };
             }
         }
@@ -475,9 +484,14 @@ pub unsafe extern "C" fn cnc_rdspload(
         if sp_no > n as c_short {
             return Err(Error::local(EW_NUMBER, "the CNC has fewer spindles"));
         }
+        let room = if h.ctx().class.is_16i() {
+            usize::from(n).min(MAX_SPINDLE)
+        } else {
+            MAX_SPINDLE
+        };
         unsafe {
             put_at(base, offset_of!(ODBSPN, datano), sp_no);
-            for (i, r) in recs.iter().take(MAX_SPINDLE).enumerate() {
+            for (i, r) in recs.iter().take(room).enumerate() {
                 put_at(base, offset_of!(ODBSPN, data) + 2 * i, r.value as i16);
             }
         }
@@ -518,6 +532,10 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
 ) -> c_short {
     ffi_boundary!("cnc_rdaxisdata", {
         let h = handles::get(FlibHndl)?;
+        if h.ctx().class.is_16i() {
+            // FANUC's library: EW_FUNC without traffic for any arguments.
+            return Err(Error::local(EW_FUNC, "not available on a 16i-class CNC"));
+        }
         let types_p = nonnull(r#type)?;
         let room = read_count(len)?;
         let out = nonnull(axdata)?;

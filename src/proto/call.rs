@@ -14,6 +14,9 @@ pub struct Ctx {
     pub class: CncClass,
     /// Maximum axes of the current path (record count of all-axes answers).
     pub max_axes: u16,
+    /// Maximum spindles (open body); the 16i class uses it as the record
+    /// count of spindle answers (no 0xa4 count subpackets).
+    pub max_spindles: u16,
 }
 
 impl Ctx {
@@ -28,6 +31,7 @@ impl Default for Ctx {
         Ctx {
             class: CncClass::Series30,
             max_axes: 32,
+            max_spindles: 8,
         }
     }
 }

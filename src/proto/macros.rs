@@ -62,9 +62,50 @@ impl WriteMacros {
         };
         self.values
             .iter()
-            .map(|&(value, exp)| Value { value, base, exp })
+            .map(|&(value, exp)| {
+                if base == BASE_2 {
+                    let (value, exp) = to_base2(value, exp);
+                    Value { value, base, exp }
+                } else {
+                    Value { value, base, exp }
+                }
+            })
             .collect()
     }
+}
+
+/// 16i class: FANUC's library sends `value · 10^-dec` as a binary record
+/// m · 2^-e with m normalised to [2^30, 2^31) (negative: [-2^31, -2^30)),
+/// truncated toward zero; 0 → (0, 0). Recorded from FANUC's library with
+/// our fake CNC: 12345/3 → (0x62c28f5c, 27), 1/0 → (2^30, 30),
+/// -1/0 → (-2^31, 31), 1/9 → (0x44b82fa0, 60), i32::MAX/0 → (i32::MAX, 0).
+pub fn to_base2(value: i32, dec: i16) -> (i32, i16) {
+    if value == 0 {
+        return (0, 0);
+    }
+    let mut m = f64::from(value) / 10f64.powi(i32::from(dec));
+    let (lo, hi) = (2f64.powi(30), 2f64.powi(31));
+    let mut e: i32 = 0;
+    if m > 0.0 {
+        while m >= hi {
+            m /= 2.0;
+            e -= 1;
+        }
+        while m < lo {
+            m *= 2.0;
+            e += 1;
+        }
+    } else {
+        while m < -hi {
+            m /= 2.0;
+            e -= 1;
+        }
+        while m >= -lo {
+            m *= 2.0;
+            e += 1;
+        }
+    }
+    (m.trunc() as i32, e as i16)
 }
 
 impl Call for WriteMacros {

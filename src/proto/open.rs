@@ -27,6 +27,13 @@ pub enum CncClass {
     Series16 { kind: u16 },
 }
 
+impl CncClass {
+    /// True for the 16i class (open response frame version <= 2).
+    pub fn is_16i(&self) -> bool {
+        matches!(self, CncClass::Series16 { .. })
+    }
+}
+
 impl OpenBody {
     pub fn encode(&self, w: &mut Writer) {
         match self {

@@ -309,14 +309,19 @@ pub type SpindleReply = (u16, Vec<Value>);
 
 impl Call for SpindleData {
     type Output = SpindleReply;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![
-            ReqSub::cnc(COUNT, &[1]),
-            ReqSub::cnc(SPINDLE, &[self.code, i32::from(self.sp_no)]),
-            ReqSub::cnc(COUNT, &[1]),
-        ]
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let data = ReqSub::cnc(SPINDLE, &[self.code, i32::from(self.sp_no)]);
+        if cx.class.is_16i() {
+            // 16i class: no 0xa4 spindle counts (recorded from FANUC's library).
+            return vec![data];
+        }
+        vec![ReqSub::cnc(COUNT, &[1]), data, ReqSub::cnc(COUNT, &[1])]
     }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<SpindleReply> {
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<SpindleReply> {
+        if cx.class.is_16i() {
+            let v: Vec<Value> = payload(resp, 0)?;
+            return Ok((cx.max_spindles, v));
+        }
         let n: Count = payload(resp, 0)?;
         let v: Vec<Value> = payload(resp, 1)?;
         let _: Count = payload(resp, 2)?;
@@ -376,6 +381,51 @@ pub struct AxisDataCall {
 }
 
 impl AxisDataCall {
+    /// 16i class: count = maximum axes (servo) or spindles (spindle) of the
+    /// open body, limited by the caller; names from the last subpacket
+    /// (servo names: only the first two bytes, the third is 0).
+    fn decode16(&self, cx: &Ctx, codes: &[i32], resp: &[RespSub]) -> Result<AxisDataReply> {
+        let servo = matches!(self.what, AxisData::Servo(_));
+        let mut got = Vec::with_capacity(codes.len());
+        for k in 0..codes.len() {
+            got.push(payload::<Vec<Value>>(resp, k)?);
+        }
+        let names: Vec<Name> = payload(resp, codes.len())?;
+        let max = if servo {
+            cx.axes()
+        } else {
+            usize::from(cx.max_spindles)
+        };
+        // FANUC reads max-axes/spindles records regardless of the payload
+        // size; we stop at the records actually answered (never garbage).
+        let answered = got.iter().map(Vec::len).chain([names.len()]).min();
+        let count = max
+            .min(self.limit.max(0) as usize)
+            .min(answered.unwrap_or(0));
+        let mut values = Vec::with_capacity(codes.len());
+        for recs in &got {
+            let row = recs
+                .iter()
+                .zip(&names)
+                .take(count)
+                .map(|(r, n)| {
+                    let mut name = n.bytes;
+                    if servo {
+                        name[2] = 0;
+                    }
+                    AxisValue {
+                        name,
+                        data: r.value,
+                        dec: r.exp,
+                        ..AxisValue::default()
+                    }
+                })
+                .collect();
+            values.push(row);
+        }
+        Ok(AxisDataReply { count, values })
+    }
+
     fn count_arg(&self) -> i32 {
         match self.what {
             AxisData::Positions(_) => 0,
@@ -392,7 +442,32 @@ fn is_machine(code: i32) -> bool {
 
 impl Call for AxisDataCall {
     type Output = AxisDataReply;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        if cx.class.is_16i() {
+            // 16i class (recorded from FANUC's library): no 0xa4 counts, the
+            // data first, the names last (spindle names with arg 0).
+            match &self.what {
+                AxisData::Servo(codes) => {
+                    let mut v: Vec<ReqSub> = codes
+                        .iter()
+                        .map(|k| ReqSub::cnc(SERVO_LOAD, &[*k]))
+                        .collect();
+                    v.push(ReqSub::cnc(RDAXISNAME, &[]));
+                    return v;
+                }
+                AxisData::Spindle(codes) => {
+                    let mut v: Vec<ReqSub> = codes
+                        .iter()
+                        .map(|k| ReqSub::cnc(SPINDLE, &[*k, ALL]))
+                        .collect();
+                    v.push(ReqSub::cnc(RDSPDLNAME, &[]));
+                    return v;
+                }
+                // rdaxisdata (the only user of these) is EW_FUNC on a 16i
+                // before any request; rdposition keeps the 30i form (NOTES.md).
+                AxisData::Positions(_) | AxisData::FirstSpindle(_) | AxisData::Speed(_) => {}
+            }
+        }
         let c = ReqSub::cnc(COUNT, &[self.count_arg()]);
         let mut v = vec![c.clone()];
         match &self.what {
@@ -426,7 +501,12 @@ impl Call for AxisDataCall {
         v
     }
 
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<AxisDataReply> {
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<AxisDataReply> {
+        if cx.class.is_16i() {
+            if let AxisData::Servo(codes) | AxisData::Spindle(codes) = &self.what {
+                return self.decode16(cx, codes, resp);
+            }
+        }
         if let AxisData::Speed(cmds) = &self.what {
             return decode_speed(cmds, self.limit, resp);
         }

@@ -195,12 +195,20 @@ impl Machine {
         }
         let mut new = Vec::with_capacity(records.len());
         for r in records {
-            // FANUC's library sends the 16i class decimal digits with base
-            // word 2; a 30i-class record is value · base^-exp.
-            let (v, d) = if series16 || r.base == 10 {
+            // A record is value · base^-exp. FANUC's library sends the 16i
+            // class a normalised binary record (m · 2^-e, see
+            // proto::macros::to_base2); kept as the shortest decimal form.
+            let (v, d) = if r.base == 10 {
                 (r.value, r.exp)
             } else if r.base == 2 {
-                r.to_decimal()
+                let (mut v, mut d) = r.to_decimal();
+                if series16 {
+                    while d > 0 && v % 10 == 0 {
+                        v /= 10;
+                        d -= 1;
+                    }
+                }
+                (v, d)
             } else {
                 return Err(CncError::new(ew::EW_DATA));
             };
