@@ -1,0 +1,354 @@
+//! The case generator: every word of the probe, along dimensions.
+//!
+//! A word is described once, by its argument dimensions: each dimension
+//! lists its values, the first being the base. Cases are the base call, each
+//! dimension varied alone over its other values, explicit combinations, the
+//! base call on every CNC class, on path 2 and an absent path, and the base
+//! call with every reply shape. Each call is followed by `cnc_getdtailerr`
+//! (`pmc_getdtailerr` for PMC words), so the detail of every error is
+//! recorded too.
+
+use super::fake::{Fault, Shape};
+
+/// One generated case.
+#[derive(Debug, Clone)]
+pub struct Case {
+    pub name: String,
+    /// v3 (30i), v2 (16i), s15 (Series 15), v3p2 (30i, two paths).
+    pub profile: &'static str,
+    pub fault: Option<Fault>,
+    /// The calls after the connection; `Some(shape)` shapes that call's reply.
+    pub calls: Vec<(String, Option<Shape>)>,
+    /// Set-up calls made before the connection (settimeout, ...).
+    pub timeout: i64,
+}
+
+/// A word: its dimensions ("|"-separated values, base first) and
+/// explicit argument combinations.
+pub struct Word {
+    pub word: &'static str,
+    pub dims: &'static [&'static str],
+    pub combos: &'static [&'static str],
+    /// Calls made before the word in every case (a write before its read-back ...).
+    pub setup: &'static [&'static str],
+    /// Calls made after the word, before getdtailerr.
+    pub after: &'static [&'static str],
+}
+
+const fn w(word: &'static str, dims: &'static [&'static str]) -> Word {
+    Word {
+        word,
+        dims,
+        combos: &[],
+        setup: &[],
+        after: &[],
+    }
+}
+
+const fn wc(word: &'static str, dims: &'static [&'static str], combos: &'static [&'static str]) -> Word {
+    Word {
+        word,
+        dims,
+        combos,
+        setup: &[],
+        after: &[],
+    }
+}
+
+const AXIS: &str = "1|-1|2|3|0|4|32|33|-2";
+const AXLEN: &str = "8|4|7|12|0|-1|132|136";
+
+/// Every word the generator covers.
+pub const WORDS: &[Word] = &[
+    // Connection group and status.
+    w("sysinfo", &[]),
+    w("statinfo", &[]),
+    w("statinfo2", &[]),
+    w("rdcncid", &[]),
+    w("getpath", &[]),
+    Word { after: &["getpath", "statinfo", "sysinfo"], ..w("setpath", &["1|2|0|-1|3|11|32767"]) },
+    Word { after: &["statinfo"], ..w("settimeout", &["10|0|1|-1|100"]) },
+    // Position.
+    w("rdaxisname", &["4|1|0|-1|2|3|32|33"]),
+    w("rdspdlname", &["4|1|0|-1|2|8|9"]),
+    wc("rddynamic2", &["1|-1|0|2|3|4|33|-2", "44|8|20|28|43|0|-1|100|540"], &["-1 540", "-1 60", "-1 44", "2 540"]),
+    wc("rddynamic", &["1|-1|0|2|3|4|33|-2", "40|8|20|28|39|0|-1|100|536"], &["-1 536", "-1 56", "-1 40"]),
+    w("actf", &[]),
+    w("acts", &[]),
+    w("acts2", &["1|-1|0|2|3|8|9|-2"]),
+    w("rdspeed", &["-1|0|1|2|3"]),
+    w("rdspload", &["1|-1|0|2|9"]),
+    w("rdspmeter", &["0|1|-1|2|3", "4|1|0|2|8|9|-1"]),
+    w("rdsvmeter", &["4|1|0|2|3|32|33|-1"]),
+    wc(
+        "rdaxisdata",
+        &[],
+        &[
+            "1 1 0 8", "1 1 1 8", "1 1 2 8", "1 1 3 8", "1 1 4 8", "1 1 5 8", "1 1 6 8", "1 1 7 8",
+            "1 1 8 8", "1 1 9 8", "1 1 10 8", "1 1 17 8", "1 1 18 8", "1 1 -1 8", "1 4 0 1 2 3 8",
+            "1 5 0 1 2 3 4 8", "1 2 0 3 32", "1 1 0 0", "1 1 0 1", "1 1 0 3", "1 1 0 32", "1 1 0 33",
+            "1 1 0 -1", "1 0 8", "1 -1 8", "2 1 0 8", "2 1 1 8", "2 1 2 8", "2 1 3 8", "2 2 0 1 8",
+            "2 3 0 1 2 8", "3 1 0 8", "3 1 1 8", "3 1 2 8", "3 2 0 1 8", "3 1 0 1", "4 1 0 8",
+            "4 1 1 8", "5 1 0 8", "5 1 1 8", "5 1 2 8", "0 1 0 8", "6 1 0 8", "-1 1 0 8",
+        ],
+    ),
+    w("rdposition", &["-1|0|1|2|3|4|5|-2", "4|1|0|2|3|32|33|-1"]),
+    wc("absolute", &[AXIS, AXLEN], &["-1 132", "-1 16", "-1 20"]),
+    wc("absolute2", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
+    wc("machine", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
+    wc("relative", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
+    wc("relative2", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
+    wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
+    w("getfigure", &["0|1|-1|2|3"]),
+    // Program.
+    w("rdprgnum", &[]),
+    w("rdseqnum", &[]),
+    w("rdblkcount", &[]),
+    w("rdactpt", &[]),
+    w("exeprgname", &[]),
+    w("exeprgname2", &[]),
+    w("rdexecprog", &["256|0|1|10|100|1024|4096|65535"]),
+    w(
+        "modal",
+        &[
+            "0|1|2|3|20|21|26|-1|-2|-3|-4|-5|100|101|102|103|104|105|106|107|108|109|110|111|112|113|114|115|116|117|118|119|120|121|122|123|124|125|126|127|128|129|130|131|132|200|300|-100",
+            "0|1|2|3|-1",
+        ],
+    ),
+    w("rdtimer", &["0|1|2|3|4|-1|5"]),
+    w("gettimer", &["0|1|2|-1"]),
+    Word {
+        after: &["gettimer 0", "gettimer 1"],
+        ..wc("settimer", &[], &["0 2026 11 25", "1 12 30 45", "0 2026 13 1", "1 25 0 0", "2 0 0 0", "-1 0 0 0"])
+    },
+    w("rdopmode", &[]),
+    w("rdprogdir", &["0|1|2|-1|3", "1|0|-1|1234|9999", "9999|0|1|1234|-1", "520|0|10|40|100|4096|65535"]),
+    w("rdprogdir3", &["0|1|2|-1|3", "0|1|1234|-1|9999", "10|0|1|2|-1|100"]),
+    // Alarms and messages.
+    w("alarm", &[]),
+    w("alarm2", &[]),
+    w("rdalmmsg", &["-1|0|1|2|3|4|5|6|7|8|9|10|11|12|13|14|15|16|31|32", "10|0|1|2|-1|100"]),
+    w("rdalmmsg2", &["-1|0|1|2|3|4|5|6|7|8|9|10|11|12|13|14|15|16|31|32", "10|0|1|2|-1|100"]),
+    w("rdalminfo", &["0|1|2|-1", "-1|0|1|2|3|4|5|6|7|8|9|10|11|12|13|14|15|20", "204|4|8|0|-1|100|1000|4096"]),
+    w("rdopmsg", &["0|1|2|3|4|-1|5", "262|6|0|-1|100|1048|2000|4096"]),
+    w("rdalmhisno", &[]),
+    w("rdalmhistry", &["1|0|2|3|10|-1", "3|1|5|10|0|100", "486|4|60|100|200|0|4096"]),
+    w("rdalmhistry2", &["1|0|2|3|10|-1", "3|1|5|10|0|100", "524|4|60|100|200|0|4096"]),
+    // Parameters and diagnosis.
+    w(
+        "rdparam",
+        &[
+            "6711|1320|1420|1825|0|1|2|-1|9999|32767|3202|1020|1815",
+            "0|1|2|3|-1|4|32|33|-2",
+            "8|4|5|6|0|-1|12|16|40|136|260|264|500",
+        ],
+    ),
+    wc("rdparam_ext32", &[], &["1 6711", "2 6711 1320", "3 6711 1320 9999", "1 1320", "4 0 1 2 3", "1 -1", "0", "-1", "2 1320 1320", "7 1 2 3 4 5 6 7"]),
+    wc("rdparam_ext", &[], &["1 6711", "2 6711 1320", "1 9999"]),
+    wc("rddiag_ext32", &[], &["1 300", "2 300 301", "3 300 301 9999", "1 411", "0", "-1"]),
+    w("rdparar", &["6711|0|1320|-1|9999", "0|-1|1|2", "6711|6720|1320|0|-1|9999", "100|8|0|-1|1000|4096"]),
+    w("rdparainfo", &["6711|0|1|1320|-1|9999", "10|1|0|100|65535"]),
+    w("rdparanum", &[]),
+    w("diagnoss", &["300|301|0|-1|411|9999|1000", "0|1|-1|2|33", "8|4|5|0|-1|12|40|260|264"]),
+    w("rddiag", &["300|301|0|411", "0|1|-1", "8|4|0|-1"]),
+    w("rddiaginfo", &["300|0|1|-1|411|9999", "10|1|0|100|65535"]),
+    w("rddiagnum", &[]),
+    // Macros.
+    w("rdmacro", &["500|100|1|0|-1|999|1000|10000|32767|-32768", "10|8|9|0|-1|20"]),
+    Word {
+        after: &["rdmacro 500 10"],
+        ..wc(
+            "wrmacro",
+            &[],
+            &[
+                "500 10 12345 3", "500 10 -1 -2", "500 10 2147483647 0", "500 10 -2147483648 9",
+                "500 10 5 -1", "500 10 123 -3", "500 10 1 8", "500 10 1 10", "100 10 7 0",
+                "0 10 1 1", "999 10 5 0", "-1 10 5 0", "500 8 5 0", "500 0 5 0",
+            ],
+        )
+    },
+    w("rdmacror", &["500|1|100|0|-1|999", "505|500|1|100|-1|1000", "56|8|16|0|-1|1000"]),
+    w("rdmacror2", &["500|1|100|0|99999", "6|1|0|-1|100|1000"]),
+    w("rdmacroinfo", &[]),
+    // PMC.
+    w(
+        "pmc_rdpmcrng",
+        &["9|5|0|1|2|3|4|6|7|8|10|11|12|-1|20", "0|1|2|-1|3|4|5", "100|0|1|65535|9999", "105|100|0|200|9999", "14|8|9|10|0|300|1000"],
+    ),
+    w("pmc_rdpmcinfo", &["-1|0|1|5|9|20"]),
+    // Offsets and tools.
+    w("rdtofs", &["1|0|-1|2|99|400|401", "0|1|2|3|-1|4|20", "8|4|0|-1|12"]),
+    w("rdtofsr", &["1|0|-1|10", "-1|0|1|2|3|9|20", "5|1|0|-1|400", "188|8|12|0|-1|1000"]),
+    w("rdtofsinfo", &[]),
+    Word { after: &["rdtofs 1 0 8"], ..wc("wrtofs", &[], &["1 0 8 12345", "1 1 8 -5", "0 0 8 1", "1 0 4 1", "1 -1 8 1", "999 0 8 1"]) },
+    w("rdzofs", &["1|0|-1|2|6|7|48|49", "1|-1|0|2|33|-2", "8|12|0|-1|132|136"]),
+    w("rdzofsr", &["1|0|-1|2", "-1|1|0|2", "6|1|0|7|-1", "1032|8|0|-1|100|2000"]),
+    w("rdzofsinfo", &[]),
+    w("toolnum", &["1|0|-1|2|9999", "0|1|-1|2|99"]),
+    w("rdntool", &["1|0|-1|2|9999"]),
+    w("rdlife", &["1|0|-1|2|9999"]),
+    w("rdcount", &["1|0|-1|2|9999"]),
+    w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
+    w("rdtlctldata", &[]),
+];
+
+/// The C function a word calls.
+pub fn function(word: &str) -> String {
+    match word {
+        "rdparam_ext32" => "cnc_rdparam_ext".into(),
+        "rddiag_ext32" => "cnc_rddiag_ext".into(),
+        "alloc" | "thread_alloc" => "cnc_allclibhndl3".into(),
+        "alloc4" => "cnc_allclibhndl4".into(),
+        "free" | "thread_free" => "cnc_freelibhndl".into(),
+        "thread_statinfo" => "cnc_statinfo".into(),
+        "startup" => "cnc_startupprocess".into(),
+        "exitprocess" => "cnc_exitprocess".into(),
+        w if w.starts_with("pmc_") => w.into(),
+        w => format!("cnc_{w}"),
+    }
+}
+
+fn detail_word(word: &str) -> &'static str {
+    if word.starts_with("pmc_") {
+        "pmc_getdtailerr"
+    } else {
+        "getdtailerr"
+    }
+}
+
+/// The argument lists of a word: base, then each dimension varied alone,
+/// then the explicit combinations (duplicates left out).
+pub fn arg_lists(w: &Word) -> Vec<(String, String)> {
+    let dims: Vec<Vec<&str>> = w.dims.iter().map(|d| d.split('|').collect()).collect();
+    let base: Vec<&str> = dims.iter().map(|d| d[0]).collect();
+    let mut out: Vec<(String, String)> = Vec::new();
+    let mut push = |label: String, args: Vec<&str>| {
+        let a = args.join(" ");
+        if !out.iter().any(|(_, x)| *x == a) {
+            out.push((label, a));
+        }
+    };
+    if !dims.is_empty() || w.combos.is_empty() {
+        push("base".into(), base.clone());
+    }
+    for (i, d) in dims.iter().enumerate() {
+        for v in &d[1..] {
+            let mut a = base.clone();
+            a[i] = v;
+            push(format!("a{}_{}", i + 1, v.replace('-', "m")), a);
+        }
+    }
+    for c in w.combos {
+        push(format!("c_{}", c.replace(' ', "_").replace('-', "m")), c.split(' ').collect());
+    }
+    out
+}
+
+fn cmd(word: &str, args: &str) -> String {
+    if args.is_empty() {
+        word.to_string()
+    } else {
+        format!("{word} {args}")
+    }
+}
+
+/// The calls of one case of word `w` with `args`.
+fn calls_for(w: &Word, args: &str, shape: Option<Shape>, prefix: &[&str]) -> Vec<(String, Option<Shape>)> {
+    let mut v: Vec<(String, Option<Shape>)> = prefix.iter().map(|c| (c.to_string(), None)).collect();
+    v.extend(w.setup.iter().map(|c| (c.to_string(), None)));
+    v.push((cmd(w.word, args), shape));
+    v.push((detail_word(w.word).to_string(), None));
+    v.extend(w.after.iter().map(|c| (c.to_string(), None)));
+    v
+}
+
+/// The reply shapes every word's base call is recorded with.
+pub const SHAPES: &[(&str, Shape)] = &[
+    ("err1", Shape::Error(0, 1)),
+    ("err2", Shape::Error(0, 2)),
+    ("err3", Shape::Error(0, 3)),
+    ("err4", Shape::Error(0, 4)),
+    ("err5", Shape::Error(0, 5)),
+    ("err6", Shape::Error(0, 6)),
+    ("err7", Shape::Error(0, 7)),
+    ("errm1", Shape::Error(0, -1)),
+    ("err_sub2", Shape::Error(1, 5)),
+    ("err_sub3", Shape::Error(2, 5)),
+    ("empty", Shape::Empty(0)),
+    ("half", Shape::Half(0)),
+    ("short1", Shape::MinusOne(0)),
+    ("longer", Shape::Longer(0, 8)),
+    ("longer_sub2", Shape::Longer(1, 4)),
+    ("missing_sub2", Shape::Missing(1)),
+    ("half_sub2", Shape::Half(1)),
+];
+
+pub const CLASSES: &[&str] = &["v3", "v2", "s15"];
+
+/// Every case of one word.
+pub fn cases_of(w: &Word) -> Vec<Case> {
+    let mut out = Vec::new();
+    let mut case = |name: String, profile: &'static str, calls| {
+        out.push(Case {
+            name,
+            profile,
+            fault: None,
+            calls,
+            timeout: 10,
+        })
+    };
+    let lists = arg_lists(w);
+    for (pi, profile) in CLASSES.iter().enumerate() {
+        for (label, args) in &lists {
+            // Every variation on the 30i and 16i classes; Series 15 gets
+            // the base and the combinations.
+            if pi == 2 && label.starts_with('a') {
+                continue;
+            }
+            case(format!("{profile}_{label}"), profile, calls_for(w, args, None, &[]));
+        }
+    }
+    let base = &lists[0].1;
+    for profile in ["v3", "v2"] {
+        for (label, shape) in SHAPES {
+            case(format!("{profile}_shape_{label}"), profile, calls_for(w, base, Some(*shape), &[]));
+        }
+    }
+    if w.word != "setpath" {
+        case("v3p2_path2".into(), "v3p2", calls_for(w, base, None, &["setpath 2"]));
+        case("v3p2_path3".into(), "v3p2", calls_for(w, base, None, &["setpath 3"]));
+        case("v2p2_path2".into(), "v2p2", calls_for(w, base, None, &["setpath 2"]));
+    }
+    out
+}
+
+/// Connection set-up cases (cnc_allclibhndl3): every handshake step broken.
+pub fn connect_cases() -> Vec<Case> {
+    let faults: &[(&str, Fault)] = &[
+        ("refused", Fault::Refuse),
+        ("close_open1", Fault::CloseOpen(1)),
+        ("close_open2", Fault::CloseOpen(2)),
+        ("silent_open1", Fault::SilentOpen(1)),
+        ("silent_open2", Fault::SilentOpen(2)),
+        ("short_open1", Fault::ShortOpen(1)),
+        ("short_open2", Fault::ShortOpen(2)),
+        ("sysinfo_err1", Fault::SysinfoError(1)),
+        ("sysinfo_err6", Fault::SysinfoError(6)),
+        ("sysinfo_errm1", Fault::SysinfoError(-1)),
+        ("sysinfo_silent", Fault::SysinfoSilent),
+        ("sysinfo_close", Fault::SysinfoClose),
+    ];
+    let mut out = Vec::new();
+    for profile in CLASSES {
+        for (label, f) in faults {
+            out.push(Case {
+                name: format!("{profile}_{label}"),
+                profile,
+                fault: Some(*f),
+                calls: vec![("statinfo".into(), None), ("getdtailerr".into(), None)],
+                timeout: 1,
+            });
+        }
+    }
+    out
+}

@@ -1,0 +1,350 @@
+//! The differential oracle: FANUC's library against ours, call by call.
+//!
+//! ```text
+//! cargo run --example oracle -- record  --lib FANUC.so [--only WORD] [--out tests/vectors]
+//! cargo run --example oracle -- compare --lib FANUC.so [--ours OUR.so] [--only WORD]
+//! cargo run --example oracle -- verify  --lib LIB.so [FILE.json ...]
+//! cargo run --example oracle -- list    [--only WORD]
+//! ```
+//!
+//! `record` runs every generated case (tools/oracle/cases.rs) against a
+//! fake CNC (our simulator behind a recording, reply-shaping proxy) with the
+//! given library, and writes what crossed the wire and what the library
+//! returned and wrote as vector files. `compare` runs each case with both
+//! libraries against identical fake CNCs and prints every difference.
+//! `verify` replays committed vector files to a library. Nothing is
+//! downloaded: the library's path is given (or `ORACLE_LIB`).
+
+#[path = "../../tests/common/mod.rs"]
+mod common;
+
+mod cases;
+mod fake;
+mod probe;
+mod replay;
+
+use cases::Case;
+use fake::{Fake, Rec};
+use fwlib32::sim::Profile;
+use probe::{Answer, Probe};
+use serde_json::{Value, json};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+/// The simulator's clock for every case: both runs of a case see one state.
+const ELAPSED: Duration = Duration::from_millis(2500);
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The profiles by name: the built-in 30i mill and its 16i, Series 15 and
+/// two-path forms.
+fn profile(name: &str) -> Profile {
+    let base = fwlib32::sim::profile::DEFAULT_PROFILE;
+    let class16 = |kind: u16| base.replacen("class = \"30i\"", &format!("class = \"16i\"\nkind = {kind}"), 1);
+    let second_path = "\n[[path]]\nmachine = \"lathe\"\nfeed = 200\n[path.status]\naut = 0\nrun = 0\n\
+                       [[path.axis]]\nname = \"X\"\ndecimals = 3\nabsolute = 1000\n\
+                       [[path.axis]]\nname = \"Z\"\ndecimals = 3\nabsolute = -2000\n";
+    let text = match name {
+        "v3" => base.to_string(),
+        "v2" => class16(1),
+        "s15" => class16(2),
+        "v3p2" => format!("{base}{second_path}"),
+        "v2p2" => format!("{}{second_path}", class16(1)),
+        other => panic!("unknown profile {other}"),
+    };
+    Profile::parse(&text).unwrap_or_else(|e| panic!("profile {name}: {e}"))
+}
+
+/// One call as it ran live.
+struct Ran {
+    cmd: String,
+    answer: Answer,
+    frames: Vec<Rec>,
+}
+
+fn word(cmd: &str) -> &str {
+    cmd.split_whitespace().next().unwrap_or("")
+}
+
+/// Runs a case live against a fresh fake CNC; None when its reply shape
+/// changed nothing (a duplicate of the plain case).
+fn run_live(case: &Case, probe_exe: &Path, lib: &Path) -> Option<Vec<Ran>> {
+    let fake = Fake::start(profile(case.profile), ELAPSED, case.fault);
+    let mut p = Probe::spawn(probe_exe, lib, fake.port);
+    let alloc = if case.fault == Some(fake::Fault::Refuse) {
+        format!("alloc {} 127.0.0.1 {}", case.timeout, replay::DEAD_PORT)
+    } else {
+        format!("alloc {}", case.timeout)
+    };
+    let mut all: Vec<(String, Option<fake::Shape>)> = vec![("startup 1 fwlib.log".into(), None), (alloc, None)];
+    all.extend(case.calls.iter().cloned());
+    all.push(("free".into(), None));
+    let mut ran = Vec::new();
+    let mut shaped = false;
+    for (cmd, shape) in all {
+        fake.shape_next(shape);
+        let answer = p.call(&cmd);
+        shaped |= fake.shape_done();
+        // Sockets are closed as the call returns: let the proxy see it.
+        let settle = matches!(word(&cmd), "alloc" | "free" | "exitprocess" | "setpath");
+        let frames = fake.take(Duration::from_millis(if settle { 20 } else { 1 }));
+        let crashed = matches!(answer, Answer::Crashed(_));
+        ran.push(Ran { cmd, answer, frames });
+        if crashed {
+            break;
+        }
+    }
+    p.finish();
+    let wanted_shape = case.calls.iter().any(|c| c.1.is_some());
+    (!wanted_shape || shaped).then_some(ran)
+}
+
+fn hex(b: &[u8]) -> String {
+    b.iter().map(|x| format!("{x:02x}")).collect()
+}
+
+fn ranges(b: &[u8]) -> Vec<[usize; 2]> {
+    let mut out: Vec<[usize; 2]> = Vec::new();
+    for (i, x) in b.iter().enumerate() {
+        if *x != 0xCC {
+            match out.last_mut() {
+                Some(r) if r[1] == i => r[1] = i + 1,
+                _ => out.push([i, i + 1]),
+            }
+        }
+    }
+    out
+}
+
+fn call_json(r: &Ran) -> Value {
+    let frames: Vec<Value> = r
+        .frames
+        .iter()
+        .map(|f| {
+            let mut v = json!({"conn": f.conn, "dir": f.dir});
+            if !f.bytes.is_empty() {
+                v["type"] = json!(format!("{:02x}{:02x}", f.bytes[6], f.bytes[7]));
+                v["hex"] = json!(hex(&f.bytes));
+            }
+            v
+        })
+        .collect();
+    let mut v = json!({"probe_cmd": r.cmd, "frames": frames});
+    match &r.answer {
+        Answer::Done { ret, fields, b0, b1 } => {
+            v["return"] = json!(ret);
+            let (n0, n1) = probe::buffer_names(word(&r.cmd));
+            let mut outs = serde_json::Map::new();
+            for (name, b) in [(n0, b0), (n1, b1)] {
+                if !b.is_empty() {
+                    outs.insert(name.into(), json!({"written_ranges": ranges(b), "hex": hex(b)}));
+                }
+            }
+            v["outputs"] = Value::Object(outs);
+            for (k, x) in fields {
+                v[k] = json!(x);
+            }
+        }
+        Answer::Missing(f) => v["missing"] = json!(f),
+        Answer::Crashed(why) => {
+            v["crashed"] = json!(true);
+            v["notes"] = json!(why);
+        }
+    }
+    v
+}
+
+struct Args {
+    cmd: String,
+    lib: Option<PathBuf>,
+    ours: Option<PathBuf>,
+    only: Vec<String>,
+    out: PathBuf,
+    files: Vec<PathBuf>,
+}
+
+fn args() -> Args {
+    let mut a = std::env::args().skip(1);
+    let mut r = Args {
+        cmd: a.next().unwrap_or_default(),
+        lib: std::env::var_os("ORACLE_LIB").map(PathBuf::from),
+        ours: None,
+        only: Vec::new(),
+        out: root().join("tests/vectors"),
+        files: Vec::new(),
+    };
+    while let Some(x) = a.next() {
+        match x.as_str() {
+            "--lib" => r.lib = a.next().map(PathBuf::from),
+            "--ours" => r.ours = a.next().map(PathBuf::from),
+            "--only" => r.only.extend(a.next().into_iter().flat_map(|s| s.split(',').map(String::from).collect::<Vec<_>>())),
+            "--out" => r.out = a.next().map(PathBuf::from).unwrap_or(r.out),
+            f => r.files.push(PathBuf::from(f)),
+        }
+    }
+    r
+}
+
+/// Every generated case, by the C function its vector file is named after.
+fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
+    let mut by_fn: BTreeMap<String, Vec<Case>> = BTreeMap::new();
+    let keep = |w: &str| only.is_empty() || only.iter().any(|o| o == w);
+    for w in cases::WORDS.iter().filter(|w| keep(w.word)) {
+        by_fn.entry(cases::function(w.word)).or_default().extend(
+            cases::cases_of(w).into_iter().map(|mut c| {
+                c.name = format!("{}_{}", w.word, c.name);
+                c
+            }),
+        );
+    }
+    if keep("alloc") {
+        by_fn.entry("cnc_allclibhndl3".into()).or_default().extend(cases::connect_cases());
+    }
+    by_fn
+}
+
+fn our_lib() -> PathBuf {
+    let dir = root().join("target/debug");
+    let so = dir.join("libfwlib32.so");
+    let status = std::process::Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .args(["build", "--lib", "--manifest-path"])
+        .arg(root().join("Cargo.toml"))
+        .status();
+    assert!(status.is_ok_and(|s| s.success()), "cargo build --lib failed");
+    so
+}
+
+fn main() {
+    let a = args();
+    let probe_exe = probe::build(&root(), &std::env::temp_dir().join(format!("focas-oracle-{}", std::process::id())));
+    let need_lib = || {
+        a.lib
+            .clone()
+            .unwrap_or_else(|| panic!("give the library: --lib PATH or ORACLE_LIB=PATH"))
+    };
+    match a.cmd.as_str() {
+        "list" => {
+            let mut n = 0;
+            for (f, cs) in generated(&a.only) {
+                println!("{f}: {} cases", cs.len());
+                n += cs.len();
+            }
+            println!("{n} cases");
+        }
+        "record" => {
+            let lib = need_lib();
+            std::fs::create_dir_all(&a.out).expect("output directory");
+            let (mut total, mut skipped) = (0, 0);
+            for (function, cs) in generated(&a.only) {
+                let mut out = Vec::new();
+                for c in &cs {
+                    match run_live(c, &probe_exe, &lib) {
+                        Some(ran) if !ran.iter().any(|r| matches!(r.answer, Answer::Missing(_))) => {
+                            let crashed = ran.iter().any(|r| matches!(r.answer, Answer::Crashed(_)));
+                            if crashed {
+                                eprintln!("{function}/{}: the library crashed; not recorded", c.name);
+                                skipped += 1;
+                                continue;
+                            }
+                            out.push(json!({
+                                "name": c.name,
+                                "profile": c.profile,
+                                "calls": ran.iter().map(call_json).collect::<Vec<_>>(),
+                            }));
+                        }
+                        _ => skipped += 1,
+                    }
+                }
+                total += out.len();
+                if out.is_empty() {
+                    continue;
+                }
+                let file = json!({
+                    "function": function,
+                    "source": "recorded by tools/oracle from FANUC's Linux x86-64 library against focas-sim behind the oracle's reply-shaping proxy",
+                    "cases": out,
+                });
+                let path = a.out.join(format!("{function}.json"));
+                std::fs::write(&path, serde_json::to_string_pretty(&file).unwrap() + "\n").expect("write vector file");
+                println!("{}: {} cases", path.display(), out.len());
+            }
+            println!("recorded {total} cases ({skipped} left out: duplicates, crashes, missing functions)");
+        }
+        "compare" => {
+            let lib = need_lib();
+            let ours = a.ours.clone().unwrap_or_else(our_lib);
+            let (mut n, mut bad) = (0, 0);
+            for (function, cs) in generated(&a.only) {
+                for c in &cs {
+                    let (Some(f), Some(o)) = (run_live(c, &probe_exe, &lib), run_live(c, &probe_exe, &ours)) else {
+                        continue;
+                    };
+                    n += 1;
+                    let d = diff(&f, &o);
+                    if !d.is_empty() {
+                        bad += 1;
+                        println!("DIFF {function}/{} ({})\n{}", c.name, c.profile, d.join("\n"));
+                    }
+                }
+            }
+            println!("{n} cases compared, {bad} differ");
+        }
+        "verify" => {
+            let lib = need_lib();
+            let files = if a.files.is_empty() { vector_files(&a.out) } else { a.files.clone() };
+            let (mut n, mut bad) = (0, 0);
+            for f in files {
+                for c in common::load_file(&f).cases {
+                    n += 1;
+                    let m = replay::replay_case(&probe_exe, &lib, &c);
+                    if !m.is_empty() {
+                        bad += 1;
+                        println!("DIFF {}/{}\n{}", c.function, c.name, m.join("\n"));
+                    }
+                }
+            }
+            println!("{n} cases verified, {bad} differ");
+        }
+        _ => {
+            eprintln!("usage: oracle record|compare|verify|list [--lib PATH] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]");
+            std::process::exit(2);
+        }
+    }
+    let _ = std::fs::remove_dir_all(probe_exe.parent().unwrap());
+}
+
+pub fn vector_files(dir: &Path) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "json")).collect())
+        .unwrap_or_default();
+    v.sort();
+    v
+}
+
+/// Call by call: requests, return codes, outputs, counts.
+fn diff(fanuc: &[Ran], ours: &[Ran]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (f, o) in fanuc.iter().zip(ours) {
+        let reqs = |r: &Ran| r.frames.iter().filter(|x| x.dir == "req").map(|x| hex(&x.bytes)).collect::<Vec<_>>();
+        if reqs(f) != reqs(o) {
+            out.push(format!("  `{}`: requests differ\n    fanuc {:?}\n    ours  {:?}", f.cmd, reqs(f), reqs(o)));
+        }
+        if f.answer != o.answer {
+            out.push(format!("  `{}`: fanuc {:?}\n    ours  {:?}", f.cmd, short(&f.answer), short(&o.answer)));
+        }
+    }
+    if fanuc.len() != ours.len() {
+        out.push(format!("  {} calls ran with fanuc's, {} with ours", fanuc.len(), ours.len()));
+    }
+    out
+}
+
+fn short(a: &Answer) -> String {
+    match a {
+        Answer::Done { ret, fields, b0, b1 } => format!("ret {ret} {fields:?} b0 {} b1 {}", hex(b0), hex(b1)),
+        other => format!("{other:?}"),
+    }
+}
