@@ -8,9 +8,10 @@
 //! middle of its upload leaves it to be aborted by the next upload call of
 //! any handle of the pair (or closed with the pair by the last free).
 
+use super::conn::close_conn;
 use super::conn::{Conn, Deadline};
 use super::handles;
-use super::pair::{Pair, close_conn, dead, stream_broken};
+use super::pair::{Pair, dead, stream_broken};
 use crate::error::{Error, Result};
 use crate::ew::{EW_BUFFER, EW_BUSY, EW_FUNC, EW_LENGTH, EW_RESET};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
