@@ -3,8 +3,8 @@
 //! reference-counted by every handle to that CNC.
 
 use super::conn::{Conn, Deadline, close_conn};
+use super::conn1::Conn1;
 use super::log;
-use super::upload::Conn1;
 use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
