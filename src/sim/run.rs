@@ -4,7 +4,7 @@
 //! monitoring functions read, brought up to date by [`Machine::advance_to`]
 //! (the `CncService::advance` hook, once per request frame).
 
-use super::Machine;
+use super::pmc::Pmc;
 use super::profile::{Profile, StatusWords};
 use serde::Deserialize;
 use std::sync::Arc;
@@ -85,6 +85,38 @@ pub struct Event {
     pub action: String,
     pub value: i32,
     pub alarm: Option<Alarm>,
+}
+
+/// The simulated machine: the profile (with what writes change in it) and
+/// the live state of its paths. The areas (src/sim/param.rs, position.rs
+/// ...) add their methods; src/sim/machine.rs serves them as a CNC.
+pub struct Machine {
+    pub profile: Profile,
+    /// When the simulator started: the running program's clock.
+    pub started: std::time::Instant,
+    /// Live state per path (what a running machine changes).
+    pub run: Vec<PathRun>,
+}
+
+impl Machine {
+    pub fn new(profile: Profile) -> Machine {
+        Machine {
+            run: Machine::initial_run(&profile),
+            profile,
+            started: std::time::Instant::now(),
+        }
+    }
+
+    /// The PMC memory, for a running machine to set signals (F, X, Y ...)
+    /// whatever their FOCAS write protection: e.g.
+    /// `m.pmc_mut().area_by_letter_mut("F").unwrap().bytes_mut(0, 1)`.
+    pub fn pmc_mut(&mut self) -> &mut Pmc {
+        &mut self.profile.pmc
+    }
+
+    pub fn pmc(&self) -> &Pmc {
+        &self.profile.pmc
+    }
 }
 
 /// Live state of one path, what the monitoring functions read.
