@@ -1375,7 +1375,7 @@ short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBA
 
 /*
  Reads several values of all axes (`cls` 1 positions etc., types 0..17),
- servo loads (`cls` 2, type 0), spindles (`cls` 3 all spindles / `cls` 4
+ servo data (`cls` 2, types 0/1 load, 2 current), spindles (`cls` 3 all spindles / `cls` 4
  spindle 1, types 0..4: load, speed, ...) or speeds (`cls` 5, types 0
  feed, 1 spindle speed, 2 a third value; one item): `num` (1..4) types from
  `type`; `*len` in = axes room per type, out = axes written. Record (type
