@@ -1605,8 +1605,11 @@ short cnc_rdparainfo(unsigned short FlibHndl,
 
 /*
  Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
- (-1). `length` must be at least 4 + the size of one value (1 for bit and
- byte, 2 word, 4 2-word, 8 real), checked after the exchange as FANUC does.
+ (-1). The answer's axis word decides how many values come back: a
+ negative one max-axes values, any other one value (a non-axis parameter
+ read with -1). `length` must be at least 4 + their size (1 for bit and
+ byte, 2 word, 4 2-word, 8 real each), checked after the exchange as
+ FANUC does (EW_LENGTH with `datano` and `type` written).
 
  # Safety
  `param` must point to a writable IODBPSD.

@@ -263,3 +263,72 @@ fn distance_to_go_flag_as_fanuc() {
     assert_wrote("rdposition(3, 8)", &pos, &want);
     f.close();
 }
+
+const RDPARAM_6711_ALL_AXES: &str =
+    "a0a0a0a000012101001e0001001c00010001008d00001a3700001a37ffffffff0000000000000000";
+
+/// The fake CNC's answer to [`RDPARAM_6711_ALL_AXES`]: parameter 6711 with
+/// this axis word, type word and `n` records 0x11223344 + i (base 10, dec 0).
+fn rdparam_answer(axis_word: &str, ptype: &str, n: u32) -> String {
+    let mut recs = String::new();
+    for i in 0..n {
+        recs.push_str(&format!("{:08x}000a0000", 0x1122_3344 + i));
+    }
+    let sub_len = 16 + 8 + 8 * n as usize;
+    format!(
+        "a0a0a0a00003 2102 {:04x} 0001 {sub_len:04x} 0001 0001 008d 0000 0000 0000 {:04x} 00001a37 {axis_word} {ptype} {recs}",
+        sub_len + 2,
+        sub_len - 16
+    )
+}
+
+/// cnc_rdparam(h, 6711, -1 /*ALL_AXES*/, length, ..): FANUC's library counts
+/// the values by the answer's axis word, not by the axis asked. Axis word 0
+/// (a non-axis parameter): one value, length 8 is enough. Axis word -1:
+/// max-axes (32) values, so length must be 4 + 32 · size (132 for a 2-word,
+/// 68 for a word parameter), else EW_LENGTH with datano and the axis word
+/// written.
+#[test]
+fn rdparam_all_axes_values_by_the_answers_axis_word() {
+    let mut f = Fake::connect();
+    let h = f.h;
+    let rd = |length: c_short| {
+        let mut b = vec![FILL; 2 * size_of::<IODBPSD>()];
+        let r = unsafe { cnc_rdparam(h, 6711, -1, length, b.as_mut_ptr().cast()) };
+        (r, b)
+    };
+    let non_axis = rdparam_answer("0000", "0003", 1);
+    let (r, b) = f.exchange("non-axis, 8", RDPARAM_6711_ALL_AXES, &non_axis, || rd(8));
+    assert_eq!(r, EW_OK);
+    assert_wrote("non-axis, 8", &b, "371a0000 44332211");
+    let (r, b) = f.exchange("non-axis, 6", RDPARAM_6711_ALL_AXES, &non_axis, || rd(6));
+    assert_eq!(r, EW_LENGTH);
+    assert_wrote("non-axis, 6", &b, "371a0000");
+
+    let all = rdparam_answer("ffff", "0003", 32);
+    let (r, b) = f.exchange("all axes, 8", RDPARAM_6711_ALL_AXES, &all, || rd(8));
+    assert_eq!(r, EW_LENGTH);
+    assert_wrote("all axes, 8", &b, "371affff");
+    let (r, b) = f.exchange("all axes, 131", RDPARAM_6711_ALL_AXES, &all, || rd(131));
+    assert_eq!(r, EW_LENGTH);
+    assert_wrote("all axes, 131", &b, "371affff");
+    let (r, b) = f.exchange("all axes, 132", RDPARAM_6711_ALL_AXES, &all, || rd(132));
+    assert_eq!(r, EW_OK);
+    let mut want = String::from("371affff");
+    for i in 0..32u32 {
+        want.push_str(&hex(&(0x1122_3344 + i).to_le_bytes()));
+    }
+    assert_wrote("all axes, 132", &b, &want);
+
+    let words = rdparam_answer("ffff", "0002", 32);
+    let (r, _) = f.exchange("word, 67", RDPARAM_6711_ALL_AXES, &words, || rd(67));
+    assert_eq!(r, EW_LENGTH);
+    let (r, b) = f.exchange("word, 68", RDPARAM_6711_ALL_AXES, &words, || rd(68));
+    assert_eq!(r, EW_OK);
+    let mut want = String::from("371affff");
+    for i in 0..32u32 {
+        want.push_str(&hex(&((0x3344 + i) as u16).to_le_bytes()));
+    }
+    assert_wrote("word, 68", &b, &want);
+    f.close();
+}
