@@ -332,3 +332,70 @@ fn rdparam_all_axes_values_by_the_answers_axis_word() {
     assert_wrote("word, 68", &b, &want);
     f.close();
 }
+
+/// cnc_modal's all-codes types answered with fewer records than the struct
+/// holds: FANUC's library returns EW_OK. Type -2 writes every one of its 27
+/// raux1 slots, a record the CNC did not send as zeros (value and both flag
+/// bytes; bytes 6..7 untouched) — zeros even right after a complete answer
+/// carried non-zero values there, so not stale bytes; -3 and -1 write the
+/// records there are, none for an empty answer.
+#[test]
+fn modal_all_codes_with_fewer_records() {
+    let mut f = Fake::connect();
+    let h = f.h;
+    let modal = |t: c_short| {
+        let mut b = vec![FILL; 2 * size_of::<ODBMDL>()];
+        let r = unsafe { cnc_modal(h, t, 0, b.as_mut_ptr().cast()) };
+        (r, b)
+    };
+    // -2: records 0..4 (values 100..104, flag bytes 1).
+    let (r, b) = f.exchange(
+        "modal(-2), 5 records",
+        "a0a0a0a000012101001e0001001c000100010022ffffffff00000000000000000000000000000000",
+        "a0a0a0a000032102003a0001 0038000100010022000000000000 0028
+         0000006400010001 0000006500010001 0000006600010001 0000006700010001 0000006800010001",
+        || modal(-2),
+    );
+    assert_eq!(r, EW_OK);
+    // raux1[k] = record AUX_ORDER[k] = 1, 3, 4, 5, 6, 10, 11, 21, 22, 20, 18, 19, 0, 2, 7 ...
+    let z = "000000000000cccc";
+    let mut want = String::from("feff0000");
+    for rec in [
+        1, 3, 4, 5, 6, 10, 11, 21, 22, 20, 18, 19, 0, 2, 7, 8, 9, 16, 17, 23, 24, 25, 26, 27, 28,
+        12, 13,
+    ] {
+        if rec < 5 {
+            want.push_str(&format!("{:02x}0000000101cccc", 100 + rec));
+        } else {
+            want.push_str(z);
+        }
+    }
+    assert_wrote("modal(-2), 5 records", &b, want.trim_end_matches("cccc"));
+    // -3 and -1, empty answers: only datano and type.
+    let (r, b) = f.exchange(
+        "modal(-3), no record",
+        "a0a0a0a000012101001e0001001c000100010022fffffffe00000000000000000000000000000000",
+        "a0a0a0a0000321020012000100100001000100220000000000000000",
+        || modal(-3),
+    );
+    assert_eq!(r, EW_OK);
+    assert_wrote("modal(-3), no record", &b, "fdff0000");
+    let (r, b) = f.exchange(
+        "modal(-1), no pair",
+        "a0a0a0a000012101001e0001001c000100010021ffffffff00000000000000000000000000000000",
+        "a0a0a0a0000321020012000100100001000100210000000000000000",
+        || modal(-1),
+    );
+    assert_eq!(r, EW_OK);
+    assert_wrote("modal(-1), no pair", &b, "ffff0000");
+    // -1 with one pair {10, flag 0}: one G-code byte.
+    let (r, b) = f.exchange(
+        "modal(-1), one pair",
+        "a0a0a0a000012101001e0001001c000100010021ffffffff00000000000000000000000000000000",
+        "a0a0a0a00003210200140001001200010001002100000000000000020a00",
+        || modal(-1),
+    );
+    assert_eq!(r, EW_OK);
+    assert_wrote("modal(-1), one pair", &b, "ffff00000a");
+    f.close();
+}

@@ -260,13 +260,6 @@ const DEVIATIONS: &[Deviation] = &[
         treatment: Differs(&[NoOutput(0)]),
     },
     Deviation {
-        function: "cnc_modal",
-        case: "v3_aux_codes",
-        reason: "(a) type -2 fills raux1[23], raux1[24] from records 27 and 28, which this 27-record reply lacks: \
-                 FANUC copies stale receive-buffer bytes (zeros here); we return EW_PROTOCOL (-17) and write nothing",
-        treatment: Differs(&[Ret(10, EW_PROTOCOL), NoOutput(10)]),
-    },
-    Deviation {
         function: "cnc_rdexecprog",
         case: "v3_empty_payload",
         reason: "(a) empty payload: FANUC sets *length 65532 and reads past its receive buffer (the probe crashed); \
