@@ -66,6 +66,9 @@ enum Fix {
     /// After the call the connection pair is torn down: we close both
     /// connections, later calls send nothing, the final free sends no close frames.
     TornDown(usize),
+    /// The connect synthesized for a case that does not record its own gets
+    /// the open response's spindle word (30i body offset 20) set to 1.
+    SpindleWord,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -199,6 +202,28 @@ const DEVIATIONS: &[Deviation] = &[
         treatment: Differs(&[Ret(0, EW_PROTOCOL), NoOutput(0)]),
     },
     // Recordings that cannot be replayed as they are.
+    Deviation {
+        function: "cnc_rdaxisdata",
+        case: "v3_cls3_spindle",
+        reason: "recording: the case does not record its connect; it was recorded against an open response with \
+                 the spindle word (body offset 20) set, which class 3 needs (else EW_NOOPT without traffic), while \
+                 the synthesized handshake (v3_one_path) has it 0: replayed with it set to 1",
+        treatment: Recording(&[SpindleWord]),
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        case: "v3_both",
+        reason: "recording: as rdaxisdata/v3_cls3_spindle, the synthesized open response gets spindle word 1 \
+                 (the recording's CNC had it set; cnc_rdspmeter needs it)",
+        treatment: Recording(&[SpindleWord]),
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        case: "v3_load_only",
+        reason: "recording: as rdaxisdata/v3_cls3_spindle, the synthesized open response gets spindle word 1 \
+                 (the recording's CNC had it set; cnc_rdspmeter needs it)",
+        treatment: Recording(&[SpindleWord]),
+    },
     Deviation {
         function: "cnc_freelibhndl",
         case: "close_not_answered",
@@ -783,7 +808,7 @@ fn needs_two_paths(case: &Case) -> bool {
 
 /// The connect traffic of a case that does not record its own (SPEC.md §3),
 /// taken from the recorded cnc_allclibhndl3 cases.
-fn handshake(files: &[VectorFile], case: &Case) -> Vec<Event> {
+fn handshake(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<Event> {
     let name = match case.profile.as_str() {
         "v2" => "v2_kind1",
         _ if needs_two_paths(case) => "v3_two_paths",
@@ -792,7 +817,7 @@ fn handshake(files: &[VectorFile], case: &Case) -> Vec<Event> {
     let mut ev = find_case(files, "cnc_allclibhndl3", name).calls[0]
         .frames
         .clone();
-    if needs_spindle_word(case) {
+    if fixes.iter().any(|f| matches!(f, SpindleWord)) {
         set_spindle_word(&mut ev);
     }
     ev
@@ -881,7 +906,7 @@ fn run_case(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<String> {
     let mut pair_alive = false;
     if !case.records_connect() {
         let label = format!("{id} (connect, synthesized from cnc_allclibhndl3 vectors)");
-        let (o, m) = server.step(&label, handshake(files, case), || {
+        let (o, m) = server.step(&label, handshake(files, case, fixes), || {
             w_alloc(&mut probe, &[CASE_TIMEOUT.to_string()])
         });
         problems.extend(m);
@@ -1019,9 +1044,24 @@ fn plan(case: &Case) -> Result<Plan, String> {
     })
 }
 
-/// Every table entry names a recorded case, and its call indices exist.
+/// Every table entry names a recorded case, and its call indices exist;
+/// every case that needs the spindle word in a synthesized connect has a
+/// `SpindleWord` entry.
 fn check_table(files: &[VectorFile]) -> Vec<String> {
     let mut out = Vec::new();
+    for case in files.iter().flat_map(|f| &f.cases) {
+        let has = deviation(case).is_some_and(|d| match d.treatment {
+            Differs(f) | Recording(f) => f.iter().any(|x| matches!(x, SpindleWord)),
+            Dedicated(_) => false,
+        });
+        if needs_spindle_word(case) && !case.records_connect() && !has {
+            out.push(format!(
+                "{}/{}: its spindle calls need the open response's spindle word; add a Recording(&[SpindleWord]) \
+                 entry to DEVIATIONS",
+                case.function, case.name
+            ));
+        }
+    }
     for (k, d) in DEVIATIONS.iter().enumerate() {
         if DEVIATIONS[..k]
             .iter()
@@ -1046,6 +1086,7 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
         };
         for f in fixes {
             let idx = match *f {
+                SpindleWord => vec![],
                 Ret(i, _)
                 | NoOutput(i)
                 | NoTraffic(i)
@@ -1133,7 +1174,11 @@ fn golden_vectors_replay() {
 /// Connects a probe through the replay server with the synthesized
 /// handshake, with the given connect timeout.
 fn connect(server: &mut Replay, probe: &mut Probe, case: &Case, timeout: &str) {
-    let (o, m) = server.step("connect", handshake(vectors(), case), || {
+    let fixes = match deviation(case).map(|d| d.treatment) {
+        Some(Differs(f)) | Some(Recording(f)) => f,
+        _ => &[],
+    };
+    let (o, m) = server.step("connect", handshake(vectors(), case, fixes), || {
         w_alloc(probe, &[timeout.to_string()])
     });
     assert!(m.is_empty(), "{}", m.join("\n"));
