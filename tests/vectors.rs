@@ -1969,3 +1969,13 @@ fn w_upend3(p: &mut Probe, _: &[String]) -> Outcome {
 fn w_upend(p: &mut Probe, _: &[String]) -> Outcome {
     Outcome::ret(cnc_upend(p.h()))
 }
+
+/// Missing vectors skip the tests only outside CI.
+#[test]
+fn missing_vectors_fail_under_ci() {
+    assert_eq!(vectors_policy(true, false, Some("true")), Ok(true));
+    assert_eq!(vectors_policy(false, false, None), Ok(false));
+    assert_eq!(vectors_policy(false, false, Some("false")), Ok(false));
+    assert!(vectors_policy(false, false, Some("true")).is_err());
+    assert!(vectors_policy(false, true, None).is_err());
+}
