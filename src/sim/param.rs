@@ -48,15 +48,15 @@ impl Machine {
             .ok_or(CncError::PATH)
     }
 
-    /// The values answered for `axis`: one (no axis, or axis n) or max-axes (-1).
+    /// The values answered for `axis`: one (no axis, or axis n) or max-axes
+    /// (-1). A non-axis item asked for all axes answers its one value, with
+    /// axis word 0 ([`answer_axis`]): the axis does not apply to it.
     fn read_values(&self, path: u16, e: &Entry, axis: i16) -> Reply<Vec<i32>> {
         let n = self.axes(path)?;
         match (e.axis, axis) {
-            (false, 0) => Ok(vec![e.value(0)]),
-            // All axes: max_axes values. A non-axis item answers its value
-            // first and zeros (cnc_rdparam_ext reads every item this way).
-            (_, -1) => Ok((0..self.profile.cnc.max_axes as usize)
-                .map(|i| if e.axis || i == 0 { e.value(i) } else { 0 })
+            (false, 0 | -1) => Ok(vec![e.value(0)]),
+            (true, -1) => Ok((0..self.profile.cnc.max_axes as usize)
+                .map(|i| e.value(i))
                 .collect()),
             (true, a) if a >= 1 && (a as usize) <= n => Ok(vec![e.value(a as usize - 1)]),
             _ => Err(err(ew::EW_ATTRIB)),
@@ -98,7 +98,11 @@ impl Machine {
         };
         if s == e {
             let x = self.entry(t, s)?;
-            return Ok(block(x, axis, self.read_values(path, x, axis)?));
+            return Ok(block(
+                x,
+                answer_axis(x, axis),
+                self.read_values(path, x, axis)?,
+            ));
         }
         let n_axes = self.axes(path)?;
         if axis < -1 || axis as i32 > n_axes as i32 {
@@ -140,7 +144,7 @@ impl Machine {
         values.resize((self.profile.cnc.max_axes as usize).max(values.len()), 0);
         Ok(Param16 {
             number,
-            axis,
+            axis: answer_axis(x, axis),
             ptype: x.kind.code(t),
             values,
         })
@@ -327,4 +331,11 @@ fn rescale(v: i32, from: i16, to: i16) -> Option<i32> {
         return None;
     };
     i32::try_from(x).ok()
+}
+
+/// The axis word of the answer for an item asked with `axis`: a non-axis
+/// item asked for all axes (-1) answers as a non-axis item (0), which
+/// FANUC's library reads as one value; otherwise the axis asked.
+fn answer_axis(e: &Entry, axis: i16) -> i16 {
+    if !e.axis && axis == -1 { 0 } else { axis }
 }

@@ -182,6 +182,9 @@ pub struct Axis {
     // --- position ---
     /// Servo load meter, % (cnc_rdsvmeter, rdaxisdata class 2).
     pub servo_load: i32,
+    /// Rated servo current, A (default 10): rdaxisdata class 2 type 2
+    /// answers `servo_load` % of it.
+    pub rated_current: Option<f64>,
     /// Unit of the positions: 0 mm, 1 inch, 2 degree (rdaxisdata / rdposition `unit`).
     pub unit: i16,
     /// Input / output figures (cnc_getfigure); default `decimals`.

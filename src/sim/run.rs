@@ -761,13 +761,7 @@ impl Machine {
             self.profile
                 .programs
                 .iter()
-                .filter(|p| {
-                    !name.is_empty()
-                        && (p.display_name() == name
-                            || format!("O{:04}", p.number) == name
-                            || format!("O{}", p.number) == name
-                            || p.display_name().rsplit('/').next() == Some(name))
-                })
+                .filter(|p| !name.is_empty() && p.answers_to(name, req.path))
                 .collect()
         } else {
             let (s, e) = req.range().ok_or(CncError::new(EW_DATA))?;

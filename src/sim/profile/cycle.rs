@@ -87,6 +87,35 @@ impl StoredProgram {
             self.name.clone()
         }
     }
+
+    /// The full path name cnc_exeprgname2 reports for it on `path`: the
+    /// profile's name if it is a path, else "//CNC_MEM/USER/PATH<n>/<name>".
+    pub fn full_name(&self, path: u16) -> String {
+        let name = self.display_name();
+        if name.starts_with("//") {
+            name
+        } else {
+            format!("//CNC_MEM/USER/PATH{path}/{name}")
+        }
+    }
+
+    /// Whether an upload name ("N:" stripped) asked on `path` means this
+    /// program: its name, "O<number>" / "O%04d", the last element of its
+    /// path name, its full path name (what cnc_exeprgname2 reports), or its
+    /// folder followed by "O<number>" / "O%04d".
+    pub fn answers_to(&self, name: &str, path: u16) -> bool {
+        let o_forms = [format!("O{:04}", self.number), format!("O{}", self.number)];
+        let display = self.display_name();
+        let full = self.full_name(path);
+        let folder = &full[..full.rfind('/').map_or(0, |i| i + 1)];
+        display == name
+            || o_forms.iter().any(|o| o == name)
+            || display.rsplit('/').next() == Some(name)
+            || full == name
+            || name
+                .strip_prefix(folder)
+                .is_some_and(|leaf| o_forms.iter().any(|o| o == leaf))
+    }
 }
 
 /// Event actions the runner knows.
