@@ -1375,7 +1375,7 @@ short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBA
 
 /*
  Reads several values of all axes (`cls` 1 positions etc., types 0..17),
- servo loads (`cls` 2, type 0), spindles (`cls` 3 all spindles / `cls` 4
+ servo data (`cls` 2, types 0/1 load, 2 current), spindles (`cls` 3 all spindles / `cls` 4
  spindle 1, types 0..4: load, speed, ...) or speeds (`cls` 5, types 0
  feed, 1 spindle speed, 2 a third value; one item): `num` (1..4) types from
  `type`; `*len` in = axes room per type, out = axes written. Record (type
@@ -1605,8 +1605,11 @@ short cnc_rdparainfo(unsigned short FlibHndl,
 
 /*
  Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
- (-1). `length` must be at least 4 + the size of one value (1 for bit and
- byte, 2 word, 4 2-word, 8 real), checked after the exchange as FANUC does.
+ (-1). The answer's axis word decides how many values come back: a
+ negative one max-axes values, any other one value (a non-axis parameter
+ read with -1). `length` must be at least 4 + their size (1 for bit and
+ byte, 2 word, 4 2-word, 8 real each), checked after the exchange as
+ FANUC does (EW_LENGTH with `datano` and `type` written).
 
  # Safety
  `param` must point to a writable IODBPSD.

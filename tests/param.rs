@@ -728,3 +728,26 @@ fn rdparar_wrparas_series_16i_unknown() {
     assert_eq!(wrs(h, &[rec(6711, 3, 0, &[1, 0, 0, 0])]), EW_FUNC);
     assert_eq!(unsafe { rd_ok(h, 6711, 0).u.ldata }, 1234);
 }
+
+/// A non-axis parameter read for all axes (cnc_rdparam(h, 6711, -1, 8, ..),
+/// as MTConnect adapters read the part counter): the simulator answers it as
+/// a non-axis parameter (axis word 0, one value), which FANUC's library and
+/// ours read as one value, so length 8 is enough.
+#[test]
+fn non_axis_parameter_read_with_all_axes() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let (r, b) = rd(h, 6711, -1, 8);
+    assert_eq!(r, EW_OK);
+    assert_eq!((b.datano, b.r#type), (6711, 0));
+    assert_eq!(
+        unsafe { (b.u.ldata, rd_ok(h, 6711, 0).u.ldata) },
+        (1234, 1234)
+    );
+    // A diagnosis item the same way.
+    let mut d = ODBDGN::default();
+    assert_eq!(unsafe { cnc_diagnoss(h, 1000, -1, 5, &mut d) }, EW_OK);
+    assert_eq!((d.datano, d.r#type), (1000, 0));
+    // An axis parameter read for all axes needs room for every axis.
+    assert_eq!(rd(h, 1825, -1, 8).0, EW_LENGTH);
+    sim::free(h);
+}

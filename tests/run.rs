@@ -437,3 +437,37 @@ values = [100]
     assert_eq!(rdparam_long(h, 6711), 100 + made, "counted once");
     sim::free(h);
 }
+
+/// rdaxisdata class 2 through the C ABI: type 0 the servo load (%), type 2
+/// the servo current (A, one decimal: the load's share of the rated
+/// current), both following the motion.
+#[test]
+fn servo_load_and_current_follow_the_motion() {
+    let text = BASE.replacen(
+        "machine = 100000\nrelative = 0\n",
+        "machine = 100000\nrelative = 0\nservo_load = 30\nrated_current = 20.0\n",
+        1,
+    );
+    assert_ne!(text, BASE);
+    let s = sim::start(Profile::parse(&text).expect("profile"));
+    let h = sim::alloc(&s);
+    let read = || {
+        let mut t: [i16; 2] = [0, 2];
+        let mut len: i16 = 4;
+        let mut ax = [ODBAXDT::default(); 8];
+        assert_eq!(
+            unsafe { cnc_rdaxisdata(h, 2, t.as_mut_ptr(), 2, &mut len, ax.as_mut_ptr()) },
+            EW_OK
+        );
+        assert_eq!(len, 2);
+        let (load, cur) = (ax[0], ax[4]);
+        assert_eq!((load.name[0] as u8, load.unit, load.dec), (b'X', 8, 0));
+        assert_eq!((cur.name[0] as u8, cur.unit, cur.dec), (b'X', 9, 1));
+        (load.data, cur.data)
+    };
+    s.set_elapsed(Duration::from_secs_f64(1.5)); // N20 G01 X20.: moving
+    assert_eq!(read(), (30, 60), "30 % of 20 A = 6.0 A");
+    s.set_elapsed(Duration::from_secs_f64(3.5)); // N40 G04: at rest
+    assert_eq!(read(), (10, 20), "a third of the load at rest");
+    sim::free(h);
+}

@@ -420,3 +420,32 @@ fn room_in_whole_256s_frames_split_to_fit() {
     assert_eq!((r, m), (EW_OK, vec![]));
     assert_eq!(server.finish(), Vec::<String>::new());
 }
+
+/// cnc_upstart4 with the full path name cnc_exeprgname2 reports (as
+/// fanuc_driver uploads the running program), and "O<n>" in that folder.
+#[test]
+fn upstart4_takes_the_path_name_exeprgname2_reports() {
+    let (s, p) = sim("30i");
+    let h = sim::alloc(&s);
+    let mut pn = [0u8; 256];
+    assert_eq!(unsafe { cnc_exeprgname2(h, pn.as_mut_ptr().cast()) }, EW_OK);
+    let end = pn.iter().position(|b| *b == 0).unwrap();
+    let running = std::str::from_utf8(&pn[..end]).unwrap().to_string();
+    assert_eq!(running, "//CNC_MEM/USER/PATH1/O1234");
+    let by_name = |name: &str| {
+        let c = CString::new(name).unwrap();
+        assert_eq!(unsafe { cnc_upstart4(h, 0, c.as_ptr().cast_mut()) }, EW_OK);
+        let r = read_all(h, 4096);
+        assert_eq!(cnc_upend4(h), *r.as_ref().err().unwrap_or(&EW_OK));
+        r
+    };
+    assert_eq!(by_name(&running), Ok(punched(&[text_of(&p, 1234)])));
+    for name in ["//CNC_MEM/USER/PATH1/O100", "//CNC_MEM/USER/PATH1/O0100"] {
+        assert_eq!(by_name(name), Ok(punched(&[text_of(&p, 100)])), "{name}");
+    }
+    // Another folder, or a program the folder does not hold: EW_DATA.
+    for name in ["//CNC_MEM/USER/PATH2/O1234", "//CNC_MEM/USER/PATH1/O4321"] {
+        assert_eq!(by_name(name), Err(EW_DATA), "{name}");
+    }
+    sim::free(h);
+}

@@ -66,6 +66,9 @@ enum Fix {
     /// After the call the connection pair is torn down: we close both
     /// connections, later calls send nothing, the final free sends no close frames.
     TornDown(usize),
+    /// The connect synthesized for a case that does not record its own gets
+    /// the open response's spindle word (30i body offset 20) set to 1.
+    SpindleWord,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -160,10 +163,11 @@ const DEVIATIONS: &[Deviation] = &[
     Deviation {
         function: "cnc_startupprocess",
         case: "levels",
-        reason: "(e) levels 0..3 return 0 and others 3 as FANUC's (no log file for level 0 or a refused level); \
-                 but our cnc_exitprocess frees the still-allocated handle, which closes the pair politely \
-                 (0x0201 on conn 1 and 2) where FANUC's recorded exit sent nothing",
-        treatment: Differs(&[Script(
+        reason: "recording: levels 0..3 return 0 and others 3 as FANUC's (no log file for level 0 or a refused \
+                 level); FANUC's run had no connection, the replay synthesizes one, so the final \
+                 cnc_exitprocess closes it (0x0201 on conn 1 and 2): FANUC's library does the same with a handle \
+                 still allocated (observed against our fake CNC: close frames on both connections, then EOF)",
+        treatment: Recording(&[Script(
             3,
             &[
                 (1, "req", CLOSE_REQ),
@@ -199,6 +203,28 @@ const DEVIATIONS: &[Deviation] = &[
         treatment: Differs(&[Ret(0, EW_PROTOCOL), NoOutput(0)]),
     },
     // Recordings that cannot be replayed as they are.
+    Deviation {
+        function: "cnc_rdaxisdata",
+        case: "v3_cls3_spindle",
+        reason: "recording: the case does not record its connect; it was recorded against an open response with \
+                 the spindle word (body offset 20) set, which class 3 needs (else EW_NOOPT without traffic), while \
+                 the synthesized handshake (v3_one_path) has it 0: replayed with it set to 1",
+        treatment: Recording(&[SpindleWord]),
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        case: "v3_both",
+        reason: "recording: as rdaxisdata/v3_cls3_spindle, the synthesized open response gets spindle word 1 \
+                 (the recording's CNC had it set; cnc_rdspmeter needs it)",
+        treatment: Recording(&[SpindleWord]),
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        case: "v3_load_only",
+        reason: "recording: as rdaxisdata/v3_cls3_spindle, the synthesized open response gets spindle word 1 \
+                 (the recording's CNC had it set; cnc_rdspmeter needs it)",
+        treatment: Recording(&[SpindleWord]),
+    },
     Deviation {
         function: "cnc_freelibhndl",
         case: "close_not_answered",
@@ -258,13 +284,6 @@ const DEVIATIONS: &[Deviation] = &[
         reason: "(a) CNC error 3: FANUC has already written datano/type into the struct; we return the same 3 and \
                  write nothing (outputs only on success)",
         treatment: Differs(&[NoOutput(0)]),
-    },
-    Deviation {
-        function: "cnc_modal",
-        case: "v3_aux_codes",
-        reason: "(a) type -2 fills raux1[23], raux1[24] from records 27 and 28, which this 27-record reply lacks: \
-                 FANUC copies stale receive-buffer bytes (zeros here); we return EW_PROTOCOL (-17) and write nothing",
-        treatment: Differs(&[Ret(10, EW_PROTOCOL), NoOutput(10)]),
     },
     Deviation {
         function: "cnc_rdexecprog",
@@ -790,7 +809,7 @@ fn needs_two_paths(case: &Case) -> bool {
 
 /// The connect traffic of a case that does not record its own (SPEC.md §3),
 /// taken from the recorded cnc_allclibhndl3 cases.
-fn handshake(files: &[VectorFile], case: &Case) -> Vec<Event> {
+fn handshake(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<Event> {
     let name = match case.profile.as_str() {
         "v2" => "v2_kind1",
         _ if needs_two_paths(case) => "v3_two_paths",
@@ -799,7 +818,7 @@ fn handshake(files: &[VectorFile], case: &Case) -> Vec<Event> {
     let mut ev = find_case(files, "cnc_allclibhndl3", name).calls[0]
         .frames
         .clone();
-    if needs_spindle_word(case) {
+    if fixes.iter().any(|f| matches!(f, SpindleWord)) {
         set_spindle_word(&mut ev);
     }
     ev
@@ -888,7 +907,7 @@ fn run_case(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<String> {
     let mut pair_alive = false;
     if !case.records_connect() {
         let label = format!("{id} (connect, synthesized from cnc_allclibhndl3 vectors)");
-        let (o, m) = server.step(&label, handshake(files, case), || {
+        let (o, m) = server.step(&label, handshake(files, case, fixes), || {
             w_alloc(&mut probe, &[CASE_TIMEOUT.to_string()])
         });
         problems.extend(m);
@@ -1026,9 +1045,24 @@ fn plan(case: &Case) -> Result<Plan, String> {
     })
 }
 
-/// Every table entry names a recorded case, and its call indices exist.
+/// Every table entry names a recorded case, and its call indices exist;
+/// every case that needs the spindle word in a synthesized connect has a
+/// `SpindleWord` entry.
 fn check_table(files: &[VectorFile]) -> Vec<String> {
     let mut out = Vec::new();
+    for case in files.iter().flat_map(|f| &f.cases) {
+        let has = deviation(case).is_some_and(|d| match d.treatment {
+            Differs(f) | Recording(f) => f.iter().any(|x| matches!(x, SpindleWord)),
+            Dedicated(_) => false,
+        });
+        if needs_spindle_word(case) && !case.records_connect() && !has {
+            out.push(format!(
+                "{}/{}: its spindle calls need the open response's spindle word; add a Recording(&[SpindleWord]) \
+                 entry to DEVIATIONS",
+                case.function, case.name
+            ));
+        }
+    }
     for (k, d) in DEVIATIONS.iter().enumerate() {
         if DEVIATIONS[..k]
             .iter()
@@ -1053,6 +1087,7 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
         };
         for f in fixes {
             let idx = match *f {
+                SpindleWord => vec![],
                 Ret(i, _)
                 | NoOutput(i)
                 | NoTraffic(i)
@@ -1140,7 +1175,11 @@ fn golden_vectors_replay() {
 /// Connects a probe through the replay server with the synthesized
 /// handshake, with the given connect timeout.
 fn connect(server: &mut Replay, probe: &mut Probe, case: &Case, timeout: &str) {
-    let (o, m) = server.step("connect", handshake(vectors(), case), || {
+    let fixes = match deviation(case).map(|d| d.treatment) {
+        Some(Differs(f)) | Some(Recording(f)) => f,
+        _ => &[],
+    };
+    let (o, m) = server.step("connect", handshake(vectors(), case, fixes), || {
         w_alloc(probe, &[timeout.to_string()])
     });
     assert!(m.is_empty(), "{}", m.join("\n"));
@@ -1930,4 +1969,53 @@ fn w_upend3(p: &mut Probe, _: &[String]) -> Outcome {
 
 fn w_upend(p: &mut Probe, _: &[String]) -> Outcome {
     Outcome::ret(cnc_upend(p.h()))
+}
+
+/// Missing vectors skip the tests only outside CI.
+#[test]
+fn missing_vectors_fail_under_ci() {
+    assert_eq!(vectors_policy(true, false, Some("true")), Ok(true));
+    assert_eq!(vectors_policy(false, false, None), Ok(false));
+    assert_eq!(vectors_policy(false, false, Some("false")), Ok(false));
+    assert!(vectors_policy(false, false, Some("true")).is_err());
+    assert!(vectors_policy(false, true, None).is_err());
+}
+
+/// The README's "Where we differ" table covers every deviation of the
+/// table: a deviation's tag names its README row, an untagged one names its
+/// function there.
+#[test]
+fn readme_lists_every_deviation() {
+    const ROWS: &[(&str, &str)] = &[
+        ("(a)", "copies garbage into the caller's struct"),
+        ("(b)", "handles are bound to the creating thread"),
+        ("(c)", "after a bad magic"),
+        ("(d)", "timeout checked with whole-second granularity"),
+        ("(f)", "`cnc_rdmacro` writes `datano`"),
+    ];
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let section = readme
+        .split("## Where we differ from FANUC's library")
+        .nth(1)
+        .and_then(|s| s.split("\n## ").next())
+        .expect("README has the differences section");
+    let mut missing = Vec::new();
+    for d in DEVIATIONS {
+        if matches!(d.treatment, Recording(_)) || d.reason.starts_with("recording:") {
+            continue;
+        }
+        let ok = match ROWS.iter().find(|(tag, _)| d.reason.starts_with(tag)) {
+            Some((_, phrase)) => section.contains(phrase),
+            None => section.contains(&format!("`{}`", d.function)),
+        };
+        if !ok {
+            missing.push(format!("{}/{}: {}", d.function, d.case, d.reason));
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "not in README's differences table:\n{}",
+        missing.join("\n")
+    );
 }

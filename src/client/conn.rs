@@ -2,7 +2,7 @@
 
 use super::log;
 use crate::error::{Error, Result, detail};
-use crate::proto::frame::{Frame, FrameHeader, HEADER_LEN};
+use crate::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype};
 use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
 use std::time::{Duration, Instant};
@@ -193,4 +193,14 @@ impl Conn {
     pub fn shutdown(&self) {
         let _ = self.stream.shutdown(std::net::Shutdown::Both);
     }
+}
+
+/// The close handshake on one connection (0x0201, then its 0x02xx answer).
+pub(crate) fn close_conn(conn: &mut Conn, deadline: Deadline) -> Result<()> {
+    conn.send(
+        &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
+        deadline,
+    )?;
+    conn.recv_kind(0x02, deadline)?;
+    Ok(())
 }

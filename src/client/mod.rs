@@ -2,6 +2,7 @@
 //! Blocking std::net, no threads of its own.
 
 pub mod conn;
+pub mod conn1;
 pub mod handles;
 pub mod log;
 pub mod pair;
@@ -10,6 +11,7 @@ pub mod upload;
 use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx};
 use crate::proto::status::SysInfo;
+use crate::proto::upload::StartReq;
 use handles::Handle;
 
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
@@ -72,6 +74,26 @@ impl Handle {
             Error::Protocol { detail, .. } => s.detail = *detail,
             _ => {}
         }
+    }
+
+    /// cnc_upstart and relatives on this handle's pair; `h` is its number.
+    pub fn upload_start(&self, h: u16, req: &StartReq, timeout: i32) -> Result<()> {
+        self.pair.upload_start(h, req, timeout, |o| self.on_pair(o))
+    }
+
+    /// cnc_upload3 on this handle's pair (see [`pair::Pair::upload_read`]).
+    pub fn upload_read(&self, h: u16, out: &mut [u8], timeout: i32) -> Result<usize> {
+        self.pair.upload_read(h, out, timeout, |o| self.on_pair(o))
+    }
+
+    /// cnc_upend3 on this handle's pair.
+    pub fn upload_end(&self, h: u16, timeout: i32) -> Result<()> {
+        self.pair.upload_end(h, timeout, |o| self.on_pair(o))
+    }
+
+    /// Whether handle `o` still exists and is on this handle's pair.
+    fn on_pair(&self, o: u16) -> bool {
+        handles::get(o).is_ok_and(|x| std::ptr::eq(&*x.pair, &*self.pair))
     }
 
     /// Runs a PMC call (pmc_*): as [`Handle::call`], but the error detail

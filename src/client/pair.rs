@@ -2,9 +2,9 @@
 //! connection 1 (program transfer) and connection 2 (data), shared and
 //! reference-counted by every handle to that CNC.
 
-use super::conn::{Conn, Deadline};
+use super::conn::{Conn, Deadline, close_conn};
+use super::conn1::Conn1;
 use super::log;
-use super::upload::Conn1;
 use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
@@ -332,15 +332,6 @@ fn close(c: &mut Conns, deadline: Deadline) -> Result<()> {
     for conn in [&mut c.c1, &mut c.c2] {
         close_conn(conn, deadline)?;
     }
-    Ok(())
-}
-
-pub(crate) fn close_conn(conn: &mut Conn, deadline: Deadline) -> Result<()> {
-    conn.send(
-        &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
-        deadline,
-    )?;
-    conn.recv_kind(0x02, deadline)?;
     Ok(())
 }
 

@@ -8,92 +8,22 @@
 //! middle of its upload leaves it to be aborted by the next upload call of
 //! any handle of the pair (or closed with the pair by the last free).
 
-use super::conn::{Conn, Deadline};
-use super::handles;
-use super::pair::{Pair, close_conn, dead, stream_broken};
+use super::conn::Deadline;
+use super::conn1::{Conn1, Upload};
+use super::log;
+use super::pair::{Pair, dead, stream_broken};
 use crate::error::{Error, Result};
 use crate::ew::{EW_BUFFER, EW_BUSY, EW_FUNC, EW_LENGTH, EW_RESET};
-use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
+use crate::proto::frame::ftype;
 use crate::proto::upload::{
     ABORT_BODY, KIND_DATA, KIND_END, KIND_ERROR, KIND_START, MIN_READ, StartReq, decode_error,
 };
 use std::time::{Duration, Instant};
 
-/// Connection 1 with its read buffer (frames are taken from it whole, so
-/// a frame half-read by a non-blocking upload call is completed later).
-pub struct Conn1 {
-    pub(super) conn: Conn,
-    rbuf: Vec<u8>,
-    upload: Option<Upload>,
-}
-
-struct Upload {
-    /// The handle that started it.
-    owner: u16,
-    /// Text of the current 0x1604 frame not yet handed out, from `pos`.
-    text: Vec<u8>,
-    pos: usize,
-    /// How it ended: EW_RESET after the CNC's end frame, or the CNC's
-    /// error; every later upload call returns it.
-    ended: Option<Error>,
-    /// Since when upload calls have found nothing (the timeout runs from there).
-    empty_since: Option<Instant>,
-}
-
 /// Detail words of the upload stall timeout (FANUC's, [dis]).
 const STALL: (i16, i16) = (9, 4);
 
 impl Conn1 {
-    pub fn new(conn: Conn) -> Conn1 {
-        Conn1 {
-            conn,
-            rbuf: Vec::new(),
-            upload: None,
-        }
-    }
-
-    /// The next whole frame: with `wait` None only if it has fully arrived.
-    fn next_frame(&mut self, wait: Option<Deadline>) -> Result<Option<Frame>> {
-        loop {
-            if let Some((f, used)) = Frame::decode(&self.rbuf).map_err(Error::from)? {
-                self.rbuf.drain(..used);
-                return Ok(Some(f));
-            }
-            if self.conn.read_some(&mut self.rbuf, wait)? == 0 {
-                return Ok(None);
-            }
-        }
-    }
-
-    /// Waits for a frame of kind `kind`, discarding others (stale upload data).
-    fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
-        loop {
-            let f = self.next_frame(Some(deadline))?.expect("waited");
-            if (f.ftype >> 8) as u8 == kind {
-                return Ok(f);
-            }
-            crate::log_at!(
-                super::log::ERRORS,
-                "conn1 discarded a frame of type {:04x} while waiting for {kind:02x}xx",
-                f.ftype
-            );
-        }
-    }
-
-    fn send(&mut self, ftype: u16, body: Vec<u8>, deadline: Deadline) -> Result<()> {
-        self.conn
-            .send(&Frame::new(CLIENT_VERSION, ftype, body), deadline)
-    }
-
-    /// The close handshake, through the read buffer.
-    pub(super) fn close(&mut self, deadline: Deadline) -> Result<()> {
-        if self.rbuf.is_empty() {
-            return close_conn(&mut self.conn, deadline);
-        }
-        self.send(ftype::CLOSE_REQ, Vec::new(), deadline)?;
-        self.recv_kind(0x02, deadline).map(|_| ())
-    }
-
     /// Aborts an unfinished upload (0x1804, 8 zero bytes, no answer awaited).
     fn abort(&mut self, deadline: Deadline) -> Result<()> {
         match self.upload.take() {
@@ -128,28 +58,35 @@ impl Pair {
         r
     }
 
-    /// Whether handle `h` still exists on this pair.
-    fn owns(&self, h: u16) -> bool {
-        handles::get(h).is_ok_and(|x| std::ptr::eq(&*x.pair, self))
-    }
-
     /// Drops an upload whose handle was freed (aborting it), then checks
     /// that `h` may act on the pair's upload: Ok(true) when `h` owns the
-    /// running one, Ok(false) when there is none.
-    fn settle(&self, c1: &mut Conn1, h: u16, deadline: Deadline) -> Result<bool> {
+    /// running one, Ok(false) when there is none. `live(o)` says whether
+    /// handle `o` still exists on this pair (the handle table knows).
+    fn settle(
+        c1: &mut Conn1,
+        h: u16,
+        live: impl Fn(u16) -> bool,
+        deadline: Deadline,
+    ) -> Result<bool> {
         match &c1.upload {
             None => Ok(false),
             Some(u) if u.owner == h => Ok(true),
-            Some(u) if self.owns(u.owner) => Err(busy()),
+            Some(u) if live(u.owner) => Err(busy()),
             Some(_) => c1.abort(deadline).map(|_| false),
         }
     }
 
     /// cnc_upstart and relatives: 0x1501, then any 0x15xx answer.
-    pub fn upload_start(&self, h: u16, req: &StartReq, timeout: i32) -> Result<()> {
+    pub fn upload_start(
+        &self,
+        h: u16,
+        req: &StartReq,
+        timeout: i32,
+        live: impl Fn(u16) -> bool,
+    ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
-            if self.settle(c1, h, deadline)? {
+            if Self::settle(c1, h, live, deadline)? {
                 return Err(busy());
             }
             c1.send(ftype::UPLOAD_START_REQ, req.encode(), deadline)?;
@@ -170,10 +107,16 @@ impl Pair {
     /// 256 bytes; frames that have arrived are copied (one that does not
     /// fit is split, its rest comes next time) while 256 bytes or more of
     /// room are left. Nothing yet: EW_BUFFER; after the end: EW_RESET.
-    pub fn upload_read(&self, h: u16, out: &mut [u8], timeout: i32) -> Result<usize> {
+    pub fn upload_read(
+        &self,
+        h: u16,
+        out: &mut [u8],
+        timeout: i32,
+        live: impl Fn(u16) -> bool,
+    ) -> Result<usize> {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
-            if !self.settle(c1, h, deadline)? {
+            if !Self::settle(c1, h, live, deadline)? {
                 return Err(no_upload());
             }
             if out.len() < MIN_READ {
@@ -239,7 +182,7 @@ impl Pair {
                         });
                     }
                     _ => crate::log_at!(
-                        super::log::ERRORS,
+                        log::ERRORS,
                         "conn1 discarded a frame of type {:04x} during an upload",
                         f.ftype
                     ),
@@ -254,10 +197,10 @@ impl Pair {
 
     /// cnc_upend3: ends the handle's upload; before the CNC's end frame it
     /// sends the 0x1804 abort. After a CNC error frame, that error.
-    pub fn upload_end(&self, h: u16, timeout: i32) -> Result<()> {
+    pub fn upload_end(&self, h: u16, timeout: i32, live: impl Fn(u16) -> bool) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
-            if !self.settle(c1, h, deadline)? {
+            if !Self::settle(c1, h, live, deadline)? {
                 return Err(no_upload());
             }
             let u = c1.upload.as_ref().expect("settled");

@@ -37,7 +37,7 @@ unsafe fn read_one(
     head[..2].copy_from_slice(&(item.number as i16).to_le_bytes());
     head[2..].copy_from_slice(&item.axis.to_le_bytes());
     unsafe { put(out.cast::<[u8; 4]>(), head) };
-    check_length(length, item.elem)?;
+    check_length(length, &item)?;
     let data = item.data_bytes();
     debug_assert!(data.len() <= 256);
     unsafe { std::ptr::copy_nonoverlapping(data.as_ptr(), out.add(4), data.len()) };
@@ -45,8 +45,11 @@ unsafe fn read_one(
 }
 
 /// Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
-/// (-1). `length` must be at least 4 + the size of one value (1 for bit and
-/// byte, 2 word, 4 2-word, 8 real), checked after the exchange as FANUC does.
+/// (-1). The answer's axis word decides how many values come back: a
+/// negative one max-axes values, any other one value (a non-axis parameter
+/// read with -1). `length` must be at least 4 + their size (1 for bit and
+/// byte, 2 word, 4 2-word, 8 real each), checked after the exchange as
+/// FANUC does (EW_LENGTH with `datano` and `type` written).
 ///
 /// # Safety
 /// `param` must point to a writable IODBPSD.

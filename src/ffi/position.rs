@@ -507,12 +507,17 @@ const POS_TYPES: [i32; 4] = [pos::ABSOLUTE2, pos::MACHINE, pos::RELATIVE2, pos::
 /// what the codes mean is not recorded).
 const POS_TYPES_EXT: [i32; 14] = [11, 12, 13, 14, 15, 16, 17, 18, 8, 9, 10, 37, 38, 39];
 
+/// rdaxisdata class 2 types 0..2 → (0x56 code, ODBAXDT unit), FANUC's
+/// library's table: types 0 and 1 both ask 0x56[1] (servo load, unit 8 = %),
+/// type 2 asks 0x56[3] (servo current, unit 9 = A).
+const SERVO_TYPES: [(i32, i16); 3] = [(1, 8), (1, 8), (3, 9)];
+
 /// rdaxisdata classes 3/4 types 0..4 → (0x40 code, ODBAXDT unit), FANUC's
 /// library's table (unit 8 = %, 5 = min^-1).
 const SPINDLE_TYPES: [(i32, i16); 5] = [(4, 8), (5, 5), (3, 5), (7, 5), (6, 8)];
 
 /// Reads several values of all axes (`cls` 1 positions etc., types 0..17),
-/// servo loads (`cls` 2, type 0), spindles (`cls` 3 all spindles / `cls` 4
+/// servo data (`cls` 2, types 0/1 load, 2 current), spindles (`cls` 3 all spindles / `cls` 4
 /// spindle 1, types 0..4: load, speed, ...) or speeds (`cls` 5, types 0
 /// feed, 1 spindle speed, 2 a third value; one item): `num` (1..4) types from
 /// `type`; `*len` in = axes room per type, out = axes written. Record (type
@@ -568,13 +573,15 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
                 (AxisData::Positions(codes), vec![None; types.len()])
             }
             2 => {
-                if bad(&|t| t == 0) {
-                    return Err(Error::local(EW_ATTRIB, "class 2 type is 0 (servo load)"));
+                if bad(&|t| (0..3).contains(&t)) {
+                    return Err(Error::local(EW_ATTRIB, "class 2 types are 0..2"));
                 }
-                (
-                    AxisData::Servo(vec![1; types.len()]),
-                    vec![Some(8); types.len()],
-                )
+                let codes = types.iter().map(|t| SERVO_TYPES[*t as usize].0).collect();
+                let units = types
+                    .iter()
+                    .map(|t| Some(SERVO_TYPES[*t as usize].1))
+                    .collect();
+                (AxisData::Servo(codes), units)
             }
             3 | 4 => {
                 if bad(&|t| (0..5).contains(&t)) {

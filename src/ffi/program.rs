@@ -194,16 +194,13 @@ pub unsafe extern "C" fn cnc_modal(
         let base = out.cast::<u8>();
         // The other-code records to write, in raux order.
         let records: Vec<pp::AuxCode> = match (&m, kind) {
-            (Modal::Aux(a), ModalKind::AuxAll) => {
-                let need = *AUX_ORDER.iter().max().unwrap_or(&0) as usize + 1;
-                if a.0.len() < need {
-                    return Err(Error::short(format!(
-                        "modal −2: {} records, the raux1 order needs {need}",
-                        a.0.len()
-                    )));
-                }
-                AUX_ORDER.iter().map(|i| a.0[*i as usize]).collect()
-            }
+            // Every raux1 slot, in FANUC's order; a record the CNC did not
+            // send (a shorter answer) is written as zeros, as FANUC's library
+            // does.
+            (Modal::Aux(a), ModalKind::AuxAll) => AUX_ORDER
+                .iter()
+                .map(|i| a.0.get(*i as usize).copied().unwrap_or_default())
+                .collect(),
             (Modal::Aux(a), _) => a.0.iter().take(32).copied().collect(),
             (Modal::G(_), _) => Vec::new(),
         };

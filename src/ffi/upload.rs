@@ -48,17 +48,17 @@ fn start(h: &Arc<Handle>, handle: u16, dtype: c_short, name: String) -> Result<(
         start: name,
         end: String::new(),
     };
-    noted(h, h.pair.upload_start(handle, &req, timeout))
+    noted(h, h.upload_start(handle, &req, timeout))
 }
 
 fn read(h: &Handle, handle: u16, out: &mut [u8]) -> Result<usize> {
     let timeout = h.state.lock().timeout;
-    noted(h, h.pair.upload_read(handle, out, timeout))
+    noted(h, h.upload_read(handle, out, timeout))
 }
 
 fn end(h: &Handle, handle: u16) -> Result<()> {
     let timeout = h.state.lock().timeout;
-    noted(h, h.pair.upload_end(handle, timeout))
+    noted(h, h.upload_end(handle, timeout))
 }
 
 /// FANUC's cnc_cupload / cnc_upload / cnc_upend: EW_REJECT and EW_ALARM become EW_UNEXP.

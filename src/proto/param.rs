@@ -294,10 +294,12 @@ pub struct ReadOne {
     pub axis: i16,
 }
 
-impl ReadOne {
-    fn count(&self, cx: &Ctx) -> usize {
-        if self.axis == -1 { cx.axes() } else { 1 }
-    }
+/// How many values an answer block carries, by its axis word (FANUC's
+/// library): a negative axis word (all axes) max-axes values, any other one
+/// value — whatever axis was asked, so a non-axis parameter asked with
+/// axis -1 and answered with axis word 0 is one value.
+fn count_for(cx: &Ctx, axis_word: i16) -> usize {
+    if axis_word < 0 { cx.axes() } else { 1 }
 }
 
 impl Call for ReadOne {
@@ -310,11 +312,11 @@ impl Call for ReadOne {
         )]
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Item> {
-        let count = self.count(cx);
         let short = || Error::short("parameter answer carries fewer values than the axis count");
         match cx.class {
             CncClass::Series30 => {
                 let p: Param30 = payload(resp, 0)?;
+                let count = count_for(cx, p.axis);
                 let elem = self.table.elem(p.ptype);
                 let real = elem == Some(Elem::Real);
                 if p.values.len() < count {
@@ -332,6 +334,7 @@ impl Call for ReadOne {
             }
             CncClass::Series16 { .. } => {
                 let p: Param16 = payload(resp, 0)?;
+                let count = count_for(cx, p.axis);
                 let elem = self.table.elem(p.ptype);
                 // A 16i real takes two words: value, then decimals in the
                 // low half of the second (SPEC.md §5.2).
@@ -593,10 +596,16 @@ impl Call for WriteParam {
 
 /// The `length` cnc_rdparam / cnc_diagnoss need for one value of `elem`
 /// (FANUC checks it after the exchange).
-pub fn check_length(length: i16, elem: Option<Elem>) -> Result<()> {
-    let need = 4 + elem.map_or(0, Elem::size) as i32;
-    if (length as i32) < need {
-        return Err(Error::local(EW_LENGTH, "length below 4 + element size"));
+/// cnc_rdparam / cnc_diagnoss after the exchange (FANUC's library):
+/// `length` must hold 4 + the size of every value answered (one, or
+/// max-axes for an answer with a negative axis word).
+pub fn check_length(length: i16, item: &Item) -> Result<()> {
+    let need = 4 + item.elem.map_or(0, Elem::size) * item.values.len();
+    if (length as i32) < need as i32 {
+        return Err(Error::local(
+            EW_LENGTH,
+            "length below 4 + the size of the values answered",
+        ));
     }
     Ok(())
 }

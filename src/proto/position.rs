@@ -571,7 +571,13 @@ impl Call for AxisDataCall {
                             };
                             // Code 12 takes the second unit word (FANUC's library).
                             v.unit = if *code == 12 { u1.w1 } else { u1.w0 } as i16;
-                            v.flag = ((f >> 3) | ((f >> 1) & 1)) as i16;
+                            // FANUC's library: the distance to go takes bit 2
+                            // where the other positions take bit 1.
+                            v.flag = if *code == pos::DISTANCE2 {
+                                (f >> 3) | ((f >> 2) & 1)
+                            } else {
+                                (f >> 3) | ((f >> 1) & 1)
+                            } as i16;
                         }
                     }
                     None => {

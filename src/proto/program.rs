@@ -4,7 +4,7 @@ use super::call::{Call, Ctx, Single, payload};
 use super::packet::{ReqSub, RespSub};
 use super::position::{ProgNums, SeqNum};
 use super::wire::{DecodeError, Reader, Wire, Writer};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::wire_struct;
 
 // --- program ---
@@ -177,16 +177,8 @@ impl Wire for PathName {
     }
 }
 
-/// Non-empty list of records filling the payload (an empty one is too short).
-fn non_empty<T: Wire>(r: &mut Reader<'_>) -> Result<Vec<T>, DecodeError> {
-    if r.remaining() == 0 {
-        return Err(DecodeError::Short { need: 1, have: 0 });
-    }
-    Vec::<T>::decode(r)
-}
-
-/// Payload of 0x0021: one [code, flag] pair per group. A trailing odd byte
-/// is ignored.
+/// Payload of 0x0021: one [code, flag] pair per group (possibly none). A
+/// trailing odd byte is ignored.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct GModal(pub Vec<GCode>);
 
@@ -197,11 +189,11 @@ impl Wire for GModal {
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         let n = r.remaining() / 2;
         let mut whole = Reader::new(r.bytes(n * 2)?);
-        Ok(GModal(non_empty(&mut whole)?))
+        Ok(GModal(Vec::decode(&mut whole)?))
     }
 }
 
-/// Payload of 0x0022: 8-byte records.
+/// Payload of 0x0022: 8-byte records (possibly none).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct AuxModal(pub Vec<AuxCode>);
 
@@ -210,7 +202,7 @@ impl Wire for AuxModal {
         self.0.encode(w);
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        Ok(AuxModal(non_empty(r)?))
+        Ok(AuxModal(Vec::decode(r)?))
     }
 }
 
@@ -339,11 +331,23 @@ impl Call for ModalCall {
             ModalKind::AuxAll => ReqSub::cnc(MODAL_AUX, &[-1, b]),
         }]
     }
+    /// An all-codes answer (code < 0) with fewer records than the struct
+    /// holds, or none, is data (FANUC's library returns EW_OK); a one-code
+    /// answer without its record is too short.
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Modal> {
-        Ok(match self.kind {
+        let m = match self.kind {
             ModalKind::G(_) => Modal::G(payload(resp, 0)?),
             _ => Modal::Aux(payload(resp, 0)?),
-        })
+        };
+        let empty = match &m {
+            Modal::G(g) => g.0.is_empty(),
+            Modal::Aux(a) => a.0.is_empty(),
+        };
+        let one_code = matches!(self.kind, ModalKind::G(c) | ModalKind::Aux(c) if c >= 0);
+        if empty && one_code {
+            return Err(Error::short("cnc_modal: no record for the code asked"));
+        }
+        Ok(m)
     }
 }
 

@@ -1,19 +1,13 @@
-//! The simulated machine: state built from a profile, served through [`CncService`].
+//! The simulated machine served through [`CncService`]: each request goes to
+//! the area that answers it. The machine's state is [`Machine`] (src/sim/run.rs).
 
-use super::profile::{Class, MachineKind, Profile};
+use super::profile::{Class, MachineKind};
+pub use super::run::Machine;
 use super::service::{CncError, CncService, Reply};
 use crate::proto::OPTION_PARAM_16;
 use crate::proto::open::OpenBody;
 use crate::proto::param::{InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
-
-pub struct Machine {
-    pub profile: Profile,
-    /// When the simulator started: the running program's clock.
-    pub started: std::time::Instant,
-    /// Live state per path (what a running machine changes).
-    pub run: Vec<super::run::PathRun>,
-}
 
 fn fixed<const N: usize>(s: &str) -> [u8; N] {
     // Right-aligned and space-padded, as a CNC reports " M" or " 3".
@@ -25,14 +19,6 @@ fn fixed<const N: usize>(s: &str) -> [u8; N] {
 }
 
 impl Machine {
-    pub fn new(profile: Profile) -> Machine {
-        Machine {
-            run: Machine::initial_run(&profile),
-            profile,
-            started: std::time::Instant::now(),
-        }
-    }
-
     fn path(&self, path: u16) -> Reply<&super::profile::Path> {
         self.profile
             .paths

@@ -1,6 +1,12 @@
 //! `focas-sim`: a CNC simulator speaking the FOCAS2 Ethernet protocol,
 //! configured from a machine profile. It runs on its own threads with its
 //! own tokio runtime, so tests and tools can block while it serves.
+//!
+//! Layers, each using only those before it (tests/layers.rs checks it):
+//! service (the CncService trait, errors) and pmc → profile (pure data,
+//! with its sections in profile/) → run (the [`Machine`] and its live
+//! state) → the areas adding methods to it (param, macros, offset,
+//! program, position, history) → machine (the CncService impl) → server.
 
 pub mod history;
 pub mod machine;

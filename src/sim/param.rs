@@ -7,149 +7,15 @@
 //! write changes nothing.
 
 use super::machine::Machine;
+pub use super::profile::param::{Entry, Kind, Params};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::param::{
-    INFO_AXIS, InfoEntry, InfoList, NumRange, Param16, Param30, ParamType30, Table,
-    WRITE_RECORDS_30, WRITE_VALUES_16,
+    InfoEntry, InfoList, NumRange, Param16, Param30, ParamType30, Table, WRITE_RECORDS_30,
+    WRITE_VALUES_16,
 };
 use crate::proto::value::{BASE_10, Value};
 use crate::proto::wire::Wire;
-use serde::Deserialize;
-
-/// Data type of a parameter or diagnosis item.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-pub enum Kind {
-    #[serde(rename = "bit")]
-    Bit,
-    #[serde(rename = "byte")]
-    Byte,
-    #[serde(rename = "word")]
-    Word,
-    #[serde(rename = "2word")]
-    TwoWord,
-    #[serde(rename = "real")]
-    Real,
-}
-
-impl Kind {
-    /// The type word of read answers and writes.
-    pub fn code(self, table: Table) -> u16 {
-        match (table, self) {
-            (Table::Param, Kind::Bit) => 0,
-            (Table::Param, Kind::Byte) => 1,
-            (Table::Param, Kind::Word) => 2,
-            (Table::Param, Kind::TwoWord) => 3,
-            (Table::Param, Kind::Real) => 4,
-            (Table::Diag, Kind::Byte) => 0,
-            (Table::Diag, Kind::Word) => 1,
-            (Table::Diag, Kind::TwoWord) => 2,
-            (Table::Diag, Kind::Bit) => 3,
-            (Table::Diag, Kind::Real) => 5,
-        }
-    }
-    /// The attribute word of cnc_rdparainfo / cnc_rddiaginfo: bits 0-1 data
-    /// type (bit, byte, word, 2-word), bit 8 axis. Real items: 2-word with
-    /// bit 12 set (our choice; what a real CNC sends for reals is not known).
-    pub fn info(self, axis: bool) -> i32 {
-        let t = match self {
-            Kind::Bit => 0,
-            Kind::Byte => 1,
-            Kind::Word => 2,
-            Kind::TwoWord => 3,
-            Kind::Real => 3 | 0x1000,
-        };
-        t | if axis { INFO_AXIS } else { 0 }
-    }
-    /// The value as the CNC stores it (bit: 0..255, byte and word signed).
-    fn normalize(self, v: i32) -> i32 {
-        match self {
-            Kind::Bit => v as u8 as i32,
-            Kind::Byte => v as i8 as i32,
-            Kind::Word => v as i16 as i32,
-            Kind::TwoWord | Kind::Real => v,
-        }
-    }
-}
-
-/// One parameter or diagnosis item of the profile.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Entry {
-    pub number: i32,
-    pub kind: Kind,
-    /// An axis item: one value per axis of the path.
-    #[serde(default)]
-    pub axis: bool,
-    /// The value (one), or the values by axis (missing axes read 0).
-    #[serde(default)]
-    pub values: Vec<i32>,
-    /// Real items: decimals of every value.
-    #[serde(default)]
-    pub decimals: i16,
-    /// Writes are refused with EW_PROT.
-    #[serde(default)]
-    pub read_only: bool,
-}
-
-impl Entry {
-    fn value(&self, i: usize) -> i32 {
-        self.values.get(i).copied().unwrap_or(0)
-    }
-}
-
-/// Profile section `[param]`.
-#[derive(Debug, Clone, Default, Deserialize)]
-#[serde(try_from = "RawParams")]
-pub struct Params {
-    /// Parameter write enable (PWE, on the CNC's SETTING screen). Writes
-    /// also need MDI mode (status `aut` = 0).
-    pub param_write_enable: bool,
-    pub parameters: Vec<Entry>,
-    pub diagnostics: Vec<Entry>,
-}
-
-#[derive(Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-struct RawParams {
-    param_write_enable: bool,
-    #[serde(rename = "parameter")]
-    parameters: Vec<Entry>,
-    #[serde(rename = "diagnosis")]
-    diagnostics: Vec<Entry>,
-}
-
-impl TryFrom<RawParams> for Params {
-    type Error = String;
-    fn try_from(r: RawParams) -> Result<Params, String> {
-        for (what, list) in [("parameter", &r.parameters), ("diagnosis", &r.diagnostics)] {
-            let mut seen = std::collections::BTreeSet::new();
-            for e in list {
-                if !(0..=65535).contains(&e.number) || !seen.insert(e.number) {
-                    return Err(format!("{what} {}: number out of range or twice", e.number));
-                }
-                let most = if e.axis { crate::types::MAX_AXIS } else { 1 };
-                if e.values.len() > most {
-                    return Err(format!("{what} {}: more values than axes", e.number));
-                }
-                if e.values.iter().any(|v| e.kind.normalize(*v) != *v) {
-                    return Err(format!(
-                        "{what} {}: value out of its type's range",
-                        e.number
-                    ));
-                }
-            }
-        }
-        let mut p = Params {
-            param_write_enable: r.param_write_enable,
-            parameters: r.parameters,
-            diagnostics: r.diagnostics,
-        };
-        p.parameters.sort_by_key(|e| e.number);
-        p.diagnostics.sort_by_key(|e| e.number);
-        Ok(p)
-    }
-}
 
 /// Items per answer of a 30i range read (cnc_rdparar); our choice, the
 /// limit of a real CNC is not known.
@@ -182,15 +48,15 @@ impl Machine {
             .ok_or(CncError::PATH)
     }
 
-    /// The values answered for `axis`: one (no axis, or axis n) or max-axes (-1).
+    /// The values answered for `axis`: one (no axis, or axis n) or max-axes
+    /// (-1). A non-axis item asked for all axes answers its one value, with
+    /// axis word 0 ([`answer_axis`]): the axis does not apply to it.
     fn read_values(&self, path: u16, e: &Entry, axis: i16) -> Reply<Vec<i32>> {
         let n = self.axes(path)?;
         match (e.axis, axis) {
-            (false, 0) => Ok(vec![e.value(0)]),
-            // All axes: max_axes values. A non-axis item answers its value
-            // first and zeros (cnc_rdparam_ext reads every item this way).
-            (_, -1) => Ok((0..self.profile.cnc.max_axes as usize)
-                .map(|i| if e.axis || i == 0 { e.value(i) } else { 0 })
+            (false, 0 | -1) => Ok(vec![e.value(0)]),
+            (true, -1) => Ok((0..self.profile.cnc.max_axes as usize)
+                .map(|i| e.value(i))
                 .collect()),
             (true, a) if a >= 1 && (a as usize) <= n => Ok(vec![e.value(a as usize - 1)]),
             _ => Err(err(ew::EW_ATTRIB)),
@@ -232,7 +98,11 @@ impl Machine {
         };
         if s == e {
             let x = self.entry(t, s)?;
-            return Ok(block(x, axis, self.read_values(path, x, axis)?));
+            return Ok(block(
+                x,
+                answer_axis(x, axis),
+                self.read_values(path, x, axis)?,
+            ));
         }
         let n_axes = self.axes(path)?;
         if axis < -1 || axis as i32 > n_axes as i32 {
@@ -274,7 +144,7 @@ impl Machine {
         values.resize((self.profile.cnc.max_axes as usize).max(values.len()), 0);
         Ok(Param16 {
             number,
-            axis,
+            axis: answer_axis(x, axis),
             ptype: x.kind.code(t),
             values,
         })
@@ -461,4 +331,11 @@ fn rescale(v: i32, from: i16, to: i16) -> Option<i32> {
         return None;
     };
     i32::try_from(x).ok()
+}
+
+/// The axis word of the answer for an item asked with `axis`: a non-axis
+/// item asked for all axes (-1) answers as a non-axis item (0), which
+/// FANUC's library reads as one value; otherwise the axis asked.
+fn answer_axis(e: &Entry, axis: i16) -> i16 {
+    if !e.axis && axis == -1 { 0 } else { axis }
 }

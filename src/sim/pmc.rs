@@ -1,7 +1,6 @@
 //! Simulated PMC memory: the address areas of a 31i-B's first PMC, their
 //! valid address ranges, which ones FOCAS may write, and their bytes.
 
-use super::Machine;
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, elem_size};
@@ -256,18 +255,5 @@ impl Pmc {
             count: areas.len() as i32,
             areas,
         }
-    }
-}
-
-impl Machine {
-    /// The PMC memory, for a running machine to set signals (F, X, Y ...)
-    /// whatever their FOCAS write protection: e.g.
-    /// `m.pmc_mut().area_by_letter_mut("F").unwrap().bytes_mut(0, 1)`.
-    pub fn pmc_mut(&mut self) -> &mut Pmc {
-        &mut self.profile.pmc
-    }
-
-    pub fn pmc(&self) -> &Pmc {
-        &self.profile.pmc
     }
 }

@@ -19,6 +19,8 @@ use crate::proto::value::{BASE_10, Value};
 
 const ATTRIB: CncError = CncError::new(EW_ATTRIB);
 const NUMBER: CncError = CncError::new(EW_NUMBER);
+/// Rated servo current (A) of an axis whose profile gives none.
+const DEFAULT_RATED_CURRENT: f64 = 10.0;
 
 /// The 4-byte name entry of an axis: name, suffix, two zero bytes.
 fn axis_name(a: &Axis) -> [u8; 4] {
@@ -211,16 +213,23 @@ impl Machine {
         }
     }
 
-    /// 0x56[1]: servo load meter (%) of each axis of the path.
+    /// 0x56[1]: servo load meter (%) of each axis of the path; 0x56[3]:
+    /// servo current in amperes (one decimal), the load's share of the
+    /// axis's rated current, so it follows the motion as the load does.
     pub(crate) fn pos_servo_load(&self, path: u16, code: i32) -> Reply<Vec<Value>> {
-        if code != 1 {
-            return Err(NUMBER);
-        }
         let p = self.pos_path(path)?;
-        Ok(p.axes
-            .iter()
-            .map(|a| Value::decimal(a.servo_load, 0))
-            .collect())
+        let rec = |a: &Axis| match code {
+            1 => Value::decimal(a.servo_load, 0),
+            _ => {
+                let rated = a.rated_current.unwrap_or(DEFAULT_RATED_CURRENT);
+                let tenths = (rated * 10.0 * f64::from(a.servo_load) / 100.0).round();
+                Value::decimal(tenths as i32, 1)
+            }
+        };
+        match code {
+            1 | 3 => Ok(p.axes.iter().map(rec).collect()),
+            _ => Err(NUMBER),
+        }
     }
 
     /// 0x88: [1] and [2] two words per axis (FANUC's library reads word 0

@@ -1,5 +1,14 @@
 //! Machine profiles: the TOML file that says what the simulated CNC is and
 //! what it holds. Sections grow with the functions the simulator serves.
+//! Pure data: the areas' sections are in src/sim/profile/ (and pmc.rs);
+//! nothing here knows the running machine.
+
+pub mod cycle;
+pub mod history;
+pub mod macros;
+pub mod offset;
+pub mod param;
+pub mod program;
 
 use serde::Deserialize;
 
@@ -14,22 +23,22 @@ pub struct Profile {
     pub paths: Vec<Path>,
     /// Programs stored in memory (src/sim/run.rs).
     #[serde(default, rename = "program")]
-    pub programs: Vec<super::run::StoredProgram>,
+    pub programs: Vec<cycle::StoredProgram>,
     /// Scheduled events (src/sim/run.rs).
     #[serde(default, rename = "event")]
-    pub events: Vec<super::run::Event>,
+    pub events: Vec<cycle::Event>,
     // --- position ---
 
     // --- program ---
     /// cnc_rdtimer counters (src/sim/program.rs).
     #[serde(default)]
-    pub timers: super::program::Timers,
+    pub timers: program::Timers,
     // --- alarm ---
 
     // --- param ---
     /// Parameter and diagnosis tables, parameter write enable.
     #[serde(default)]
-    pub param: super::param::Params,
+    pub param: param::Params,
     // --- macros ---
 
     // --- pmc ---
@@ -39,7 +48,7 @@ pub struct Profile {
     // --- offset ---
     /// The alarm history (src/sim/history.rs).
     #[serde(default)]
-    pub alarm_history: super::history::History,
+    pub alarm_history: history::History,
     // --- tool ---
 
     // --- upload ---
@@ -107,39 +116,39 @@ pub struct Path {
     #[serde(rename = "spindle")]
     pub spindles: Vec<Spindle>,
     /// The program this path runs (src/sim/run.rs).
-    pub cycle: super::run::Cycle,
+    pub cycle: cycle::Cycle,
     /// Alarms active from the start.
     #[serde(rename = "alarm")]
-    pub alarms: Vec<super::run::Alarm>,
+    pub alarms: Vec<cycle::Alarm>,
     // --- position ---
     /// Actual feed rate (cnc_actf, rddynamic2 actf, rdspeed), mm/min; the
     /// program cycle (src/sim/run.rs) may change it while running.
     pub feed: i32,
     // --- program ---
     /// Modal codes (cnc_modal).
-    pub modal: super::program::Modal,
+    pub modal: program::Modal,
     /// Operation mode word (cnc_rdopmode).
     pub opmode: i16,
 
     // --- alarm ---
     /// Operator messages on display (cnc_rdopmsg).
     #[serde(rename = "opmsg")]
-    pub opmsgs: Vec<super::program::OperatorMessage>,
+    pub opmsgs: Vec<program::OperatorMessage>,
     // --- param ---
 
     // --- macros ---
     /// Custom macro variables (`[path.macros]`).
-    pub macros: super::macros::Macros,
+    pub macros: macros::Macros,
     // --- pmc ---
 
     // --- offset ---
     /// Tool and work offsets (src/sim/offset.rs).
-    pub offset: super::offset::Offsets,
+    pub offset: offset::Offsets,
 
     // --- tool ---
     /// Tool life groups (src/sim/offset.rs).
     #[serde(rename = "tool_group")]
-    pub tool_groups: Vec<super::offset::ToolGroupProfile>,
+    pub tool_groups: Vec<offset::ToolGroupProfile>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]
@@ -173,6 +182,9 @@ pub struct Axis {
     // --- position ---
     /// Servo load meter, % (cnc_rdsvmeter, rdaxisdata class 2).
     pub servo_load: i32,
+    /// Rated servo current, A (default 10): rdaxisdata class 2 type 2
+    /// answers `servo_load` % of it.
+    pub rated_current: Option<f64>,
     /// Unit of the positions: 0 mm, 1 inch, 2 degree (rdaxisdata / rdposition `unit`).
     pub unit: i16,
     /// Input / output figures (cnc_getfigure); default `decimals`.
@@ -277,5 +289,72 @@ impl Profile {
 impl Default for Profile {
     fn default() -> Self {
         Profile::parse(DEFAULT_PROFILE).expect("built-in profile is valid")
+    }
+}
+
+impl Profile {
+    /// The running-machine sections: programs, cycles, events.
+    fn validate_run(&self) -> Result<(), String> {
+        for (k, p) in self.programs.iter().enumerate() {
+            if !(1..=99_999_999).contains(&p.number) {
+                return Err(format!("[[program]] {}: number must be 1..99999999", k + 1));
+            }
+            if self.programs[..k].iter().any(|q| q.number == p.number) {
+                return Err(format!("[[program]] O{:04} is given twice", p.number));
+            }
+            if !p.text.is_ascii() {
+                return Err(format!("[[program]] O{:04}: text must be ASCII", p.number));
+            }
+            cycle::program_date(p).map_err(|e| format!("[[program]] O{:04}: {e}", p.number))?;
+        }
+        for (i, p) in self.paths.iter().enumerate() {
+            let c = &p.cycle;
+            if c.program != 0 && !self.programs.iter().any(|q| q.number == c.program) {
+                return Err(format!(
+                    "path {}: cycle.program = {} names no [[program]] with that number",
+                    i + 1,
+                    c.program
+                ));
+            }
+            if !(c.block_seconds.is_finite() && c.block_seconds > 0.0) {
+                return Err(format!(
+                    "path {}: cycle.block_seconds must be a positive number of seconds",
+                    i + 1
+                ));
+            }
+        }
+        for (k, e) in self.events.iter().enumerate() {
+            let what = format!("[[event]] {} ({:?})", k + 1, e.action);
+            if !cycle::ACTIONS.contains(&e.action.as_str()) {
+                return Err(format!(
+                    "{what}: action must be one of {}",
+                    cycle::ACTIONS.join(", ")
+                ));
+            }
+            if usize::from(e.path) > self.paths.len() {
+                return Err(format!(
+                    "{what}: path {} does not exist (the profile has {} path(s))",
+                    e.path,
+                    self.paths.len()
+                ));
+            }
+            for (name, v) in [("at", e.at), ("every", e.every), ("duration", e.duration)] {
+                if !(v.is_finite() && v >= 0.0) {
+                    return Err(format!("{what}: {name} must be a number of seconds >= 0"));
+                }
+            }
+            if e.every > 0.0 && e.every < 0.01 {
+                return Err(format!("{what}: every must be 0 (once) or at least 0.01 s"));
+            }
+            if e.action == "alarm" && e.alarm.is_none() {
+                return Err(format!(
+                    "{what}: an alarm event needs alarm = {{ number = .., message = .. }}"
+                ));
+            }
+            if e.action != "alarm" && e.alarm.is_some() {
+                return Err(format!("{what}: only an \"alarm\" event takes an alarm"));
+            }
+        }
+        Ok(())
     }
 }

@@ -4,6 +4,8 @@
 //! from [`super::run::PathRun`] at request time.
 
 use super::Machine;
+pub use super::profile::cycle::{DEFAULT_PROGRAM_DATE, program_date};
+pub use super::profile::program::{Modal, OperatorMessage, Timers};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::alarm::OpMsg;
@@ -12,44 +14,6 @@ use crate::proto::program::{
     OpMode, PathName, ProgDir, Timer,
 };
 use crate::proto::wire::{Reader, Wire, Writer};
-use serde::Deserialize;
-use std::collections::BTreeMap;
-
-/// `[timers]`: cnc_rdtimer's counters at simulator start, in minutes; they
-/// run on from there (operating and cutting only while path 1 runs / moves).
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-pub struct Timers {
-    pub power_on: i32,
-    pub operating: i32,
-    pub cutting: i32,
-    pub free: i32,
-    /// Seconds cnc_settimer moved the CNC clock from the system clock.
-    #[serde(skip)]
-    pub clock_offset: i64,
-}
-
-/// `[path.modal]`: what cnc_modal reads.
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-pub struct Modal {
-    /// Per G-code group (cnc_modal type 0, 1, ...): the code within the
-    /// group as the CNC encodes it (e.g. group 0: 0 G00, 1 G01, 2 G02 ...).
-    pub g: Vec<u8>,
-    /// Other modal codes by cnc_modal type (100..126) → value.
-    pub aux: BTreeMap<String, i32>,
-}
-
-/// `[[path.opmsg]]`: an operator message on display (cnc_rdopmsg).
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-pub struct OperatorMessage {
-    pub number: i32,
-    /// Message type 0..4 (cnc_rdopmsg `type`).
-    #[serde(rename = "type")]
-    pub kind: i16,
-    pub text: String,
-}
 
 /// G-code groups answered for type −1 (g_rdata[35]).
 const G_GROUPS: usize = 35;
@@ -346,41 +310,6 @@ impl Machine {
             },
         })
     }
-}
-
-/// A `[[program]]`'s date when the profile gives none.
-pub const DEFAULT_PROGRAM_DATE: [u16; 5] = [2024, 5, 17, 13, 45];
-
-/// A `[[program]]`'s modification date as year, month, day, hour, minute
-/// (`date = "YYYY-MM-DD HH:MM"`).
-pub fn program_date(p: &super::run::StoredProgram) -> Result<[u16; 5], String> {
-    let Some(d) = &p.date else {
-        return Ok(DEFAULT_PROGRAM_DATE);
-    };
-    let bad = || format!("date = {d:?} is not \"YYYY-MM-DD HH:MM\"");
-    let (day, time) = d.trim().split_once(' ').ok_or_else(bad)?;
-    let mut ymd = day.split('-').map(|x| x.parse::<u16>());
-    let mut hm = time.trim().split(':').map(|x| x.parse::<u16>());
-    let next = |it: &mut dyn Iterator<Item = Result<u16, _>>| -> Result<u16, String> {
-        it.next().and_then(|x| x.ok()).ok_or_else(bad)
-    };
-    let v = [
-        next(&mut ymd)?,
-        next(&mut ymd)?,
-        next(&mut ymd)?,
-        next(&mut hm)?,
-        next(&mut hm)?,
-    ];
-    if ymd.next().is_some()
-        || hm.next().is_some()
-        || !(1..=12).contains(&v[1])
-        || !(1..=31).contains(&v[2])
-        || v[3] > 23
-        || v[4] > 59
-    {
-        return Err(bad());
-    }
-    Ok(v)
 }
 
 /// Record codes of 0x0006: cnc_rdprogdir's types 0..2 and cnc_rdprogdir3's 0, 1, 3.

@@ -4,87 +4,45 @@
 //! monitoring functions read, brought up to date by [`Machine::advance_to`]
 //! (the `CncService::advance` hook, once per request frame).
 
-use super::Machine;
+use super::pmc::Pmc;
+pub use super::profile::cycle::{ACTIONS, Alarm, Cycle, Event, StoredProgram};
 use super::profile::{Profile, StatusWords};
-use serde::Deserialize;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// The parameter a FANUC CNC counts machined parts in.
 const PART_COUNT_PARAM: i32 = 6711;
 
-/// `[[program]]`: a program stored in the CNC's memory (uploadable; the
-/// one a path's `[path.cycle]` names is the one in cycle).
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-pub struct StoredProgram {
-    /// O number.
-    pub number: i32,
-    /// Program name as cnc_exeprgname2 reports it, e.g. "O1234" or a path
-    /// like "//CNC_MEM/USER/PATH1/O1234"; empty = "O<number>".
-    pub name: String,
-    pub comment: String,
-    /// The program text, one block per line ("N10 G01 X10. F500;" ...).
-    pub text: String,
-    /// Last modification, "YYYY-MM-DD HH:MM" (cnc_rdprogdir3 type 2);
-    /// absent: 2024-05-17 13:45 (src/sim/program.rs).
-    pub date: Option<String>,
+/// The simulated machine: the profile (with what writes change in it) and
+/// the live state of its paths. The areas (src/sim/param.rs, position.rs
+/// ...) add their methods; src/sim/machine.rs serves them as a CNC.
+pub struct Machine {
+    pub profile: Profile,
+    /// When the simulator started: the running program's clock.
+    pub started: std::time::Instant,
+    /// Live state per path (what a running machine changes).
+    pub run: Vec<PathRun>,
 }
 
-/// `[path.cycle]`: the program a path runs and how fast it goes.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Cycle {
-    /// O number of the `[[program]]` in cycle (0 = none: the path is idle).
-    pub program: i32,
-    /// Seconds per block (motion and block text advance at this rate).
-    pub block_seconds: f64,
-    /// Repeat the program when it ends (M30 and restart), counting parts.
-    pub repeat: bool,
-}
-
-impl Default for Cycle {
-    fn default() -> Self {
-        Cycle {
-            program: 0,
-            block_seconds: 1.0,
-            repeat: true,
+impl Machine {
+    pub fn new(profile: Profile) -> Machine {
+        Machine {
+            run: Machine::initial_run(&profile),
+            profile,
+            started: std::time::Instant::now(),
         }
     }
-}
 
-/// `[[path.alarm]]`: an alarm active from the start (more are raised by events).
-#[derive(Debug, Clone, Deserialize, Default, PartialEq, Eq)]
-#[serde(deny_unknown_fields, default)]
-pub struct Alarm {
-    /// Alarm number as the CNC reports it (e.g. 1001).
-    pub number: i32,
-    /// Alarm type code (cnc_rdalmmsg `type`: 0 SW, 1 PW, 2 IO, 3 PS, 4 OT,
-    /// 5 OH, 6 SV, 7 SR, 8 MC, 9 SP, 10 DS, 11 IE, 12 BG, 13 SN, 15 EX, 19 PC ...).
-    #[serde(rename = "type")]
-    pub kind: i16,
-    /// Axis number the alarm concerns (0 = none).
-    pub axis: i16,
-    pub message: String,
-}
+    /// The PMC memory, for a running machine to set signals (F, X, Y ...)
+    /// whatever their FOCAS write protection: e.g.
+    /// `m.pmc_mut().area_by_letter_mut("F").unwrap().bytes_mut(0, 1)`.
+    pub fn pmc_mut(&mut self) -> &mut Pmc {
+        &mut self.profile.pmc
+    }
 
-/// `[[event]]`: something that happens at a time, repeating with `every`.
-#[derive(Debug, Clone, Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-pub struct Event {
-    /// Seconds after the simulator starts.
-    pub at: f64,
-    /// Repeat period in seconds (0 = once).
-    pub every: f64,
-    /// How long the event's condition lasts, in seconds (0 = until changed).
-    pub duration: f64,
-    /// Path it concerns (1-based; 0 = path 1).
-    pub path: u16,
-    /// "alarm" (raise `alarm` for `duration`), "feed_hold", "mode" (set
-    /// status.aut to `value`), "emergency".
-    pub action: String,
-    pub value: i32,
-    pub alarm: Option<Alarm>,
+    pub fn pmc(&self) -> &Pmc {
+        &self.profile.pmc
+    }
 }
 
 /// Live state of one path, what the monitoring functions read.
@@ -779,88 +737,6 @@ impl Machine {
     }
 }
 
-impl StoredProgram {
-    /// The name CNCs report: the profile's, or "O<number>".
-    pub fn display_name(&self) -> String {
-        if self.name.is_empty() {
-            format!("O{:04}", self.number)
-        } else {
-            self.name.clone()
-        }
-    }
-}
-
-/// Event actions the runner knows.
-pub const ACTIONS: [&str; 4] = ["alarm", "feed_hold", "mode", "emergency"];
-
-impl Profile {
-    /// The running-machine sections: programs, cycles, events.
-    pub(super) fn validate_run(&self) -> Result<(), String> {
-        for (k, p) in self.programs.iter().enumerate() {
-            if !(1..=99_999_999).contains(&p.number) {
-                return Err(format!("[[program]] {}: number must be 1..99999999", k + 1));
-            }
-            if self.programs[..k].iter().any(|q| q.number == p.number) {
-                return Err(format!("[[program]] O{:04} is given twice", p.number));
-            }
-            if !p.text.is_ascii() {
-                return Err(format!("[[program]] O{:04}: text must be ASCII", p.number));
-            }
-            super::program::program_date(p)
-                .map_err(|e| format!("[[program]] O{:04}: {e}", p.number))?;
-        }
-        for (i, p) in self.paths.iter().enumerate() {
-            let c = &p.cycle;
-            if c.program != 0 && !self.programs.iter().any(|q| q.number == c.program) {
-                return Err(format!(
-                    "path {}: cycle.program = {} names no [[program]] with that number",
-                    i + 1,
-                    c.program
-                ));
-            }
-            if !(c.block_seconds.is_finite() && c.block_seconds > 0.0) {
-                return Err(format!(
-                    "path {}: cycle.block_seconds must be a positive number of seconds",
-                    i + 1
-                ));
-            }
-        }
-        for (k, e) in self.events.iter().enumerate() {
-            let what = format!("[[event]] {} ({:?})", k + 1, e.action);
-            if !ACTIONS.contains(&e.action.as_str()) {
-                return Err(format!(
-                    "{what}: action must be one of {}",
-                    ACTIONS.join(", ")
-                ));
-            }
-            if usize::from(e.path) > self.paths.len() {
-                return Err(format!(
-                    "{what}: path {} does not exist (the profile has {} path(s))",
-                    e.path,
-                    self.paths.len()
-                ));
-            }
-            for (name, v) in [("at", e.at), ("every", e.every), ("duration", e.duration)] {
-                if !(v.is_finite() && v >= 0.0) {
-                    return Err(format!("{what}: {name} must be a number of seconds >= 0"));
-                }
-            }
-            if e.every > 0.0 && e.every < 0.01 {
-                return Err(format!("{what}: every must be 0 (once) or at least 0.01 s"));
-            }
-            if e.action == "alarm" && e.alarm.is_none() {
-                return Err(format!(
-                    "{what}: an alarm event needs alarm = {{ number = .., message = .. }}"
-                ));
-            }
-            if e.action != "alarm" && e.alarm.is_some() {
-                return Err(format!("{what}: only an \"alarm\" event takes an alarm"));
-            }
-        }
-        Ok(())
-    }
-}
-
 impl Machine {
     /// What the CNC pushes for an upload request (0x1501): the stored
     /// programs of the O-number range ("O<s>-O<e>") or of the name
@@ -885,13 +761,7 @@ impl Machine {
             self.profile
                 .programs
                 .iter()
-                .filter(|p| {
-                    !name.is_empty()
-                        && (p.display_name() == name
-                            || format!("O{:04}", p.number) == name
-                            || format!("O{}", p.number) == name
-                            || p.display_name().rsplit('/').next() == Some(name))
-                })
+                .filter(|p| !name.is_empty() && p.answers_to(name, req.path))
                 .collect()
         } else {
             let (s, e) = req.range().ok_or(CncError::new(EW_DATA))?;

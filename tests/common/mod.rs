@@ -33,24 +33,44 @@ pub fn vectors_dir() -> PathBuf {
 }
 
 /// True when the vectors can be read. Without `FOCAS_PROTOCOL_DIR` a checkout
-/// lacking the shared directory skips the vector tests with a message; with
-/// it set, a wrong path is an error.
+/// lacking the shared directory skips the vector tests with a message —
+/// except under CI (`CI` set to anything but "" / "false" / "0"), where a
+/// missing directory fails them; with `FOCAS_PROTOCOL_DIR` set, a wrong path
+/// is an error.
 pub fn vectors_available() -> bool {
     let dir = vectors_dir();
-    if dir.is_dir() {
-        return true;
+    let ci = std::env::var("CI").ok();
+    match vectors_policy(
+        dir.is_dir(),
+        std::env::var_os("FOCAS_PROTOCOL_DIR").is_some(),
+        ci.as_deref(),
+    ) {
+        Ok(true) => true,
+        Ok(false) => {
+            eprintln!(
+                "SKIPPED: golden vectors not found at {} (set FOCAS_PROTOCOL_DIR to the focas-protocol directory)",
+                dir.display()
+            );
+            false
+        }
+        Err(why) => panic!("golden vectors not found at {}: {why}", dir.display()),
     }
-    if std::env::var_os("FOCAS_PROTOCOL_DIR").is_some() {
-        panic!(
-            "FOCAS_PROTOCOL_DIR is set but {} is not a directory",
-            dir.display()
+}
+
+/// [`vectors_available`]'s decision: Ok(true) run, Ok(false) skip, Err fail.
+pub fn vectors_policy(present: bool, dir_set: bool, ci: Option<&str>) -> Result<bool, String> {
+    if present {
+        return Ok(true);
+    }
+    if dir_set {
+        return Err("FOCAS_PROTOCOL_DIR is set but does not hold them".into());
+    }
+    if ci.is_some_and(|v| !matches!(v, "" | "false" | "0")) {
+        return Err(
+            "running under CI (CI is set): the vector tests must not be skipped; set FOCAS_PROTOCOL_DIR".into(),
         );
     }
-    eprintln!(
-        "SKIPPED: golden vectors not found at {} (set FOCAS_PROTOCOL_DIR to the focas-protocol directory)",
-        dir.display()
-    );
-    false
+    Ok(false)
 }
 
 // ---------------------------------------------------------------------------

@@ -1,0 +1,83 @@
+//! Connection 1 (program transfer) with its read buffer and the state of
+//! the upload running on it. The upload itself is src/client/upload.rs;
+//! the pair (src/client/pair.rs) only opens and closes connection 1.
+
+use super::conn::{Conn, Deadline, close_conn};
+use super::log;
+use crate::error::{Error, Result};
+use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
+use std::time::Instant;
+
+/// Connection 1 with its read buffer (frames are taken from it whole, so
+/// a frame half-read by a non-blocking upload call is completed later).
+pub struct Conn1 {
+    pub(super) conn: Conn,
+    rbuf: Vec<u8>,
+    /// The upload running on it (src/client/upload.rs).
+    pub(super) upload: Option<Upload>,
+}
+
+pub(super) struct Upload {
+    /// The handle that started it.
+    pub(super) owner: u16,
+    /// Text of the current 0x1604 frame not yet handed out, from `pos`.
+    pub(super) text: Vec<u8>,
+    pub(super) pos: usize,
+    /// How it ended: EW_RESET after the CNC's end frame, or the CNC's
+    /// error; every later upload call returns it.
+    pub(super) ended: Option<Error>,
+    /// Since when upload calls have found nothing (the timeout runs from there).
+    pub(super) empty_since: Option<Instant>,
+}
+
+impl Conn1 {
+    pub fn new(conn: Conn) -> Conn1 {
+        Conn1 {
+            conn,
+            rbuf: Vec::new(),
+            upload: None,
+        }
+    }
+
+    /// The next whole frame: with `wait` None only if it has fully arrived.
+    pub(super) fn next_frame(&mut self, wait: Option<Deadline>) -> Result<Option<Frame>> {
+        loop {
+            if let Some((f, used)) = Frame::decode(&self.rbuf).map_err(Error::from)? {
+                self.rbuf.drain(..used);
+                return Ok(Some(f));
+            }
+            if self.conn.read_some(&mut self.rbuf, wait)? == 0 {
+                return Ok(None);
+            }
+        }
+    }
+
+    /// Waits for a frame of kind `kind`, discarding others (stale upload data).
+    pub(super) fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
+        loop {
+            let f = self.next_frame(Some(deadline))?.expect("waited");
+            if (f.ftype >> 8) as u8 == kind {
+                return Ok(f);
+            }
+            crate::log_at!(
+                log::ERRORS,
+                "conn1 discarded a frame of type {:04x} while waiting for {kind:02x}xx",
+                f.ftype
+            );
+        }
+    }
+
+    pub(super) fn send(&mut self, ftype: u16, body: Vec<u8>, deadline: Deadline) -> Result<()> {
+        self.conn
+            .send(&Frame::new(CLIENT_VERSION, ftype, body), deadline)
+    }
+
+    /// The close handshake, through the read buffer.
+    pub(super) fn close(&mut self, deadline: Deadline) -> Result<()> {
+        if self.rbuf.is_empty() {
+            return close_conn(&mut self.conn, deadline);
+        }
+        self.send(ftype::CLOSE_REQ, Vec::new(), deadline)?;
+        self.recv_kind(0x02, deadline).map(|_| ())
+    }
+}

@@ -1,0 +1,76 @@
+//! Profile section `[alarm_history]`: the alarm history at start
+//! (kept and served by src/sim/history.rs).
+
+use serde::Deserialize;
+
+/// `[alarm_history]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct History {
+    /// Entries kept; the oldest is dropped when a new alarm arrives.
+    pub capacity: usize,
+    /// `[[alarm_history.entry]]`, newest first.
+    #[serde(rename = "entry")]
+    pub entries: Vec<HistoryEntry>,
+}
+
+impl Default for History {
+    fn default() -> Self {
+        History {
+            capacity: 50,
+            entries: Vec::new(),
+        }
+    }
+}
+
+/// One alarm in the history.
+#[derive(Debug, Clone, Deserialize, Default, PartialEq, Eq)]
+#[serde(deny_unknown_fields, default)]
+pub struct HistoryEntry {
+    pub number: i32,
+    /// Alarm type (group) code, as cnc_rdalmmsg's `type` (4 OT, 19 PC ...).
+    #[serde(rename = "type")]
+    pub kind: i16,
+    /// Axis number (0 = none).
+    pub axis: i16,
+    /// "YYYY-MM-DD hh:mm:ss", the CNC's clock.
+    pub time: String,
+    /// Up to 32 characters are reported.
+    pub message: String,
+}
+
+/// Parses "YYYY-MM-DD hh:mm:ss" into [year, month, day, hour, minute, second].
+pub fn parse_time(s: &str) -> Option<[u16; 6]> {
+    let (d, t) = s.trim().split_once([' ', 'T'])?;
+    let mut out = [0u16; 6];
+    let parts: Vec<&str> = d.split('-').chain(t.split(':')).collect();
+    if parts.len() != 6 {
+        return None;
+    }
+    for (o, p) in out.iter_mut().zip(parts) {
+        *o = p.parse().ok()?;
+    }
+    let [_, mo, da, h, mi, se] = out;
+    ((1..=12).contains(&mo) && (1..=31).contains(&da) && h < 24 && mi < 60 && se < 60)
+        .then_some(out)
+}
+
+impl History {
+    pub fn validate(&self) -> Result<(), String> {
+        if self.capacity == 0 {
+            return Err("alarm_history.capacity must be at least 1".into());
+        }
+        if self.entries.len() > self.capacity {
+            return Err("alarm_history has more entries than its capacity".into());
+        }
+        for e in &self.entries {
+            if parse_time(&e.time).is_none() {
+                return Err(format!(
+                    "alarm_history entry time {:?} is not \"YYYY-MM-DD hh:mm:ss\"",
+                    e.time
+                ));
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,73 @@
+//! Profile sections `[path.offset]` and `[[path.tool_group]]`: tool and
+//! work offsets, tool life groups (served by src/sim/offset.rs).
+
+use serde::Deserialize;
+
+/// `[path.offset]`: what cnc_rdtofs/cnc_rdzofs read and the writes change.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Offsets {
+    /// Decimals of every offset value (3: 0.001 mm).
+    pub decimals: i16,
+    /// cnc_rdtofsinfo `ofs_type`: tool offset memory (0 A, 1 B, 2 C).
+    pub memory: i16,
+    /// Tool offsets: row k is offset number k+1, one column per type
+    /// (mill, memory C: radius wear, radius geometry, length wear, length
+    /// geometry, types 0..3). Every row has the same number of columns.
+    pub tool: Vec<Vec<i32>>,
+    /// Work zero offsets: row 0 external, rows 1..6 G54..G59 (7.. G54.1 P1..),
+    /// one column per axis (missing columns read 0).
+    pub work: Vec<Vec<i32>>,
+}
+
+impl Default for Offsets {
+    fn default() -> Self {
+        Offsets {
+            decimals: 3,
+            memory: 2,
+            tool: Vec::new(),
+            work: Vec::new(),
+        }
+    }
+}
+
+impl Offsets {
+    pub fn validate(&self, axes: usize) -> Result<(), String> {
+        if let Some(w) = self.tool.first().map(Vec::len)
+            && self.tool.iter().any(|r| r.len() != w)
+        {
+            return Err("offset.tool rows must all have the same number of types".into());
+        }
+        if self.work.iter().any(|r| r.len() > axes) {
+            return Err("offset.work rows have at most one value per axis".into());
+        }
+        Ok(())
+    }
+}
+
+/// `[[path.tool_group]]`: a tool life group (cnc_rdlife, cnc_rdcount,
+/// cnc_rdtoolgrp, and the tool numbers of cnc_toolnum).
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct ToolGroupProfile {
+    pub number: i32,
+    /// Tool life (minutes or uses, as the CNC counts).
+    pub life: i32,
+    /// Tool life counter.
+    pub count: i32,
+    /// The group's tools in use order (tool-use number 1, 2, ...).
+    #[serde(rename = "tool")]
+    pub tools: Vec<ToolProfile>,
+}
+
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct ToolProfile {
+    /// T number.
+    pub number: i32,
+    /// Length (H) and radius (D) offset numbers.
+    pub length: i32,
+    pub radius: i32,
+    /// Tool information bits (skip, expired ...).
+    pub info: i32,
+}
