@@ -1,4 +1,4 @@
-//! Exchanges recorded from FANUC's library with throwaway probes (before tools/oracle existed),
+//! Exchanges recorded from FANUC's library (x86-64, 1.0.5) with throwaway probes against
 //! our own small fake CNC, replayed to our library: every request we send must
 //! equal the one FANUC's library sent, byte for byte, and every output buffer
 //! (pre-filled with 0xCC) must hold exactly the bytes FANUC's library wrote.

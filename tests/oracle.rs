@@ -31,7 +31,10 @@ fn vector_files() -> Vec<PathBuf> {
 #[test]
 fn oracle_vectors_replay() {
     let lib = toolchain::cdylib();
-    let probe_exe = probe::build(&toolchain::manifest_dir(), &toolchain::scratch("oracle-probe"));
+    let probe_exe = probe::build(
+        &toolchain::manifest_dir(),
+        &toolchain::scratch("oracle-probe"),
+    );
     let cases: Vec<common::Case> = vector_files()
         .iter()
         .flat_map(|f| common::load_file(f).cases)
@@ -40,7 +43,9 @@ fn oracle_vectors_replay() {
     let next = Mutex::new(0usize);
     let failures = Mutex::new(Vec::new());
     let (passed, deviated) = (Mutex::new(0usize), Mutex::new(0usize));
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get()).min(4);
+    let threads = std::thread::available_parallelism()
+        .map_or(2, |n| n.get())
+        .min(4);
     std::thread::scope(|s| {
         for _ in 0..threads {
             s.spawn(|| loop {

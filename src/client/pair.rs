@@ -185,9 +185,18 @@ impl Pair {
                 })
             }
             Err(e) => {
-                if !e.kills_connection() {
-                    // A CNC error at start-up: close politely, as FANUC's library does.
-                    let _ = close(&mut conns, deadline);
+                // Start-up failed: close politely, as FANUC's library does,
+                // each connection in its own exchange. A connection 2 that
+                // timed out or broke gets the close frame but no wait.
+                let fresh = Deadline::after_secs(timeout);
+                let _ = close_conn(&mut conns.c1, fresh);
+                if e.kills_connection() {
+                    let _ = conns.c2.send(
+                        &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
+                        fresh,
+                    );
+                } else {
+                    let _ = close_conn(&mut conns.c2, fresh);
                 }
                 Err(e)
             }
@@ -216,6 +225,10 @@ impl Pair {
         for (i, p) in paths.iter().enumerate() {
             sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(&resp, i)?);
         }
+        if class == (CncClass::Series16 { kind: 2 }) {
+            // Series 15: the companion's error fails the connect, as FANUC's library.
+            call::sub(&resp, paths.len())?;
+        }
         let option_param = match class {
             CncClass::Series30 => None,
             CncClass::Series16 { kind: 3 } => None,
@@ -227,10 +240,9 @@ impl Pair {
             let mut s = ReqSub::cnc(command, &[number, number]);
             s.path = 1;
             let resp = exchange(&mut conns.c2, &[s], deadline)?;
-            // A CNC that cannot say leaves the option off; it is not a connect failure.
-            if let Ok(p) = call::payload::<Param16>(&resp, 0) {
-                option = p.values.first().map_or(0, |v| (*v as u16) & 0xff & mask);
-            }
+            // An error here fails the connect, as in FANUC's library.
+            let p = call::payload::<Param16>(&resp, 0)?;
+            option = p.values.first().map_or(0, |v| (*v as u16) & 0xff & mask);
         }
         Ok((sysinfo, option))
     }
@@ -326,13 +338,6 @@ pub(crate) fn stream_broken(e: &Error) -> bool {
         Error::Protocol { detail: d, .. } => *d == detail::BAD_MAGIC || *d == detail::OVERSIZE,
         _ => false,
     }
-}
-
-fn close(c: &mut Conns, deadline: Deadline) -> Result<()> {
-    for conn in [&mut c.c1, &mut c.c2] {
-        close_conn(conn, deadline)?;
-    }
-    Ok(())
 }
 
 fn open_option(open: &OpenBody) -> u16 {

@@ -4,10 +4,11 @@
 use super::profile::{Class, MachineKind};
 pub use super::run::Machine;
 use super::service::{CncError, CncService, Reply};
-use crate::proto::OPTION_PARAM_16;
 use crate::proto::open::OpenBody;
 use crate::proto::param::{InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
+use crate::proto::wire::Wire;
+use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16};
 
 fn fixed<const N: usize>(s: &str) -> [u8; N] {
     // Right-aligned and space-padded, as a CNC reports " M" or " 3".
@@ -131,6 +132,16 @@ impl CncService for Machine {
         Ok(Word {
             value: self.path(path)?.status.tmmode,
         })
+    }
+
+    fn sysinfo15(&mut self, path: u16) -> Reply<()> {
+        // Series 15 (16i class, kind 2) answers its start-up companion of
+        // sysinfo; its contents are not known (empty, our choice).
+        self.path(path)?;
+        match (self.profile.cnc.class, self.profile.cnc.kind) {
+            (Class::Series16, 2) => Ok(()),
+            _ => Err(CncError::FUNC),
+        }
     }
 
     fn cnc_id(&mut self) -> Reply<CncId> {
@@ -293,7 +304,23 @@ impl CncService for Machine {
         e: i32,
         axis: i16,
     ) -> Reply<Vec<u8>> {
-        if self.profile.cnc.class != Class::Series30 {
+        let c = &self.profile.cnc;
+        if c.class == Class::Series16
+            && c.kind == 2
+            && table == Table::Param
+            && s == OPTION_PARAM_15
+        {
+            // The Series-15 FOCAS option probe (SPEC.md §3.4), in the
+            // 16i value form the library reads it in.
+            let p = Param16 {
+                number: s,
+                axis,
+                ptype: 0,
+                values: vec![i32::from(c.option), 0, 0, 0, 0, 0, 0, 0],
+            };
+            return Ok(p.to_bytes());
+        }
+        if c.class != Class::Series30 {
             return Err(CncError::FUNC);
         }
         self.table_read30(path, table, s, e, axis)

@@ -72,6 +72,10 @@ pub trait CncService: Send {
     fn tmmode(&mut self, path: u16) -> Reply<Word> {
         unsupported()
     }
+    /// 0x8c: the Series-15 start-up companion of sysinfo.
+    fn sysinfo15(&mut self, path: u16) -> Reply<()> {
+        unsupported()
+    }
     fn cnc_id(&mut self) -> Reply<CncId> {
         unsupported()
     }
@@ -360,6 +364,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, cmd::STATINFO2) => enc(svc.statinfo2(p)),
             (CLASS_CNC, cmd::HDCK) => enc(svc.hdck(p)),
             (CLASS_CNC, cmd::TMMODE) => enc(svc.tmmode(p)),
+            (CLASS_CNC, cmd::SYSINFO15) => svc.sysinfo15(p).map(|()| Vec::new()),
             (CLASS_CNC, cmd::RDCNCID) => enc(svc.cnc_id()),
             (CLASS_CNC, cmd::RDPARAM16) => enc(svc.param16(p, a[0], a[2] as i16)),
 

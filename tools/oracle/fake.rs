@@ -107,7 +107,11 @@ impl Fake {
             listener.set_nonblocking(true).unwrap();
             std::thread::spawn(move || accept_loop(listener, st, upstream));
         }
-        Fake { port, state, _sim: sim }
+        Fake {
+            port,
+            state,
+            _sim: sim,
+        }
     }
 
     /// The next data response gets this shape.
@@ -158,7 +162,11 @@ fn accept_loop(listener: TcpListener, st: Arc<State>, upstream: u16) {
                     continue;
                 };
                 sim.set_nodelay(true).ok();
-                let (c2, s2, st2) = (client.try_clone().unwrap(), sim.try_clone().unwrap(), st.clone());
+                let (c2, s2, st2) = (
+                    client.try_clone().unwrap(),
+                    sim.try_clone().unwrap(),
+                    st.clone(),
+                );
                 let dropped = Arc::new(AtomicBool::new(false));
                 let d2 = dropped.clone();
                 let st1 = st.clone();
@@ -188,7 +196,13 @@ fn ftype(f: &[u8]) -> u16 {
 }
 
 /// Client to CNC: log each request, then forward it, swallow it or hang up.
-fn upward(conn: u8, mut client: TcpStream, mut sim: TcpStream, st: Arc<State>, dropped: Arc<AtomicBool>) {
+fn upward(
+    conn: u8,
+    mut client: TcpStream,
+    mut sim: TcpStream,
+    st: Arc<State>,
+    dropped: Arc<AtomicBool>,
+) {
     let open_no = |f: &[u8]| (f.len() >= 12).then(|| f[11]);
     let mut silent = false;
     while let Some(f) = read_frame(&mut client) {
@@ -230,7 +244,13 @@ fn upward(conn: u8, mut client: TcpStream, mut sim: TcpStream, st: Arc<State>, d
 }
 
 /// CNC to client: shape the response if asked, log it, forward it.
-fn downward(conn: u8, mut sim: TcpStream, mut client: TcpStream, st: Arc<State>, dropped: Arc<AtomicBool>) {
+fn downward(
+    conn: u8,
+    mut sim: TcpStream,
+    mut client: TcpStream,
+    st: Arc<State>,
+    dropped: Arc<AtomicBool>,
+) {
     let mut data_resps = 0usize;
     let mut closed = false;
     while let Some(mut f) = read_frame(&mut sim) {
@@ -310,7 +330,10 @@ fn reshape(frame: &[u8], f: impl FnOnce(&mut Vec<Sub>)) -> Vec<u8> {
         if at + 16 + plen > body.len() {
             return frame.to_vec();
         }
-        subs.push((body[at..at + 16].to_vec(), body[at + 16..at + 16 + plen].to_vec()));
+        subs.push((
+            body[at..at + 16].to_vec(),
+            body[at + 16..at + 16 + plen].to_vec(),
+        ));
         at += 16 + plen;
     }
     f(&mut subs);

@@ -43,7 +43,13 @@ fn root() -> PathBuf {
 /// two-path forms.
 fn profile(name: &str) -> Profile {
     let base = fwlib32::sim::profile::DEFAULT_PROFILE;
-    let class16 = |kind: u16| base.replacen("class = \"30i\"", &format!("class = \"16i\"\nkind = {kind}"), 1);
+    let class16 = |kind: u16| {
+        base.replacen(
+            "class = \"30i\"",
+            &format!("class = \"16i\"\nkind = {kind}"),
+            1,
+        )
+    };
     let second_path = "\n[[path]]\nmachine = \"lathe\"\nfeed = 200\n[path.status]\naut = 0\nrun = 0\n\
                        [[path.axis]]\nname = \"X\"\ndecimals = 3\nabsolute = 1000\n\
                        [[path.axis]]\nname = \"Z\"\ndecimals = 3\nabsolute = -2000\n";
@@ -79,7 +85,8 @@ fn run_live(case: &Case, probe_exe: &Path, lib: &Path) -> Option<Vec<Ran>> {
     } else {
         format!("alloc {}", case.timeout)
     };
-    let mut all: Vec<(String, Option<fake::Shape>)> = vec![("startup 1 fwlib.log".into(), None), (alloc, None)];
+    let mut all: Vec<(String, Option<fake::Shape>)> =
+        vec![("startup 1 fwlib.log".into(), None), (alloc, None)];
     all.extend(case.calls.iter().cloned());
     all.push(("free".into(), None));
     let mut ran = Vec::new();
@@ -92,7 +99,11 @@ fn run_live(case: &Case, probe_exe: &Path, lib: &Path) -> Option<Vec<Ran>> {
         let settle = matches!(word(&cmd), "alloc" | "free" | "exitprocess" | "setpath");
         let frames = fake.take(Duration::from_millis(if settle { 20 } else { 1 }));
         let crashed = matches!(answer, Answer::Crashed(_));
-        ran.push(Ran { cmd, answer, frames });
+        ran.push(Ran {
+            cmd,
+            answer,
+            frames,
+        });
         if crashed {
             break;
         }
@@ -134,13 +145,21 @@ fn call_json(r: &Ran) -> Value {
         .collect();
     let mut v = json!({"probe_cmd": r.cmd, "frames": frames});
     match &r.answer {
-        Answer::Done { ret, fields, b0, b1 } => {
+        Answer::Done {
+            ret,
+            fields,
+            b0,
+            b1,
+        } => {
             v["return"] = json!(ret);
             let (n0, n1) = probe::buffer_names(word(&r.cmd));
             let mut outs = serde_json::Map::new();
             for (name, b) in [(n0, b0), (n1, b1)] {
                 if !b.is_empty() {
-                    outs.insert(name.into(), json!({"written_ranges": ranges(b), "hex": hex(b)}));
+                    outs.insert(
+                        name.into(),
+                        json!({"written_ranges": ranges(b), "hex": hex(b)}),
+                    );
                 }
             }
             v["outputs"] = Value::Object(outs);
@@ -180,7 +199,11 @@ fn args() -> Args {
         match x.as_str() {
             "--lib" => r.lib = a.next().map(PathBuf::from),
             "--ours" => r.ours = a.next().map(PathBuf::from),
-            "--only" => r.only.extend(a.next().into_iter().flat_map(|s| s.split(',').map(String::from).collect::<Vec<_>>())),
+            "--only" => r.only.extend(
+                a.next()
+                    .into_iter()
+                    .flat_map(|s| s.split(',').map(String::from).collect::<Vec<_>>()),
+            ),
             "--out" => r.out = a.next().map(PathBuf::from).unwrap_or(r.out),
             f => r.files.push(PathBuf::from(f)),
         }
@@ -201,7 +224,10 @@ fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
         );
     }
     if keep("alloc") {
-        by_fn.entry("cnc_allclibhndl3".into()).or_default().extend(cases::connect_cases());
+        by_fn
+            .entry("cnc_allclibhndl3".into())
+            .or_default()
+            .extend(cases::connect_cases());
     }
     by_fn
 }
@@ -209,17 +235,24 @@ fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
 fn our_lib() -> PathBuf {
     let dir = root().join("target/debug");
     let so = dir.join("libfwlib32.so");
-    let status = std::process::Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-        .args(["build", "--lib", "--manifest-path"])
-        .arg(root().join("Cargo.toml"))
-        .status();
-    assert!(status.is_ok_and(|s| s.success()), "cargo build --lib failed");
+    let status =
+        std::process::Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+            .args(["build", "--lib", "--manifest-path"])
+            .arg(root().join("Cargo.toml"))
+            .status();
+    assert!(
+        status.is_ok_and(|s| s.success()),
+        "cargo build --lib failed"
+    );
     so
 }
 
 fn main() {
     let a = args();
-    let probe_exe = probe::build(&root(), &std::env::temp_dir().join(format!("focas-oracle-{}", std::process::id())));
+    let probe_exe = probe::build(
+        &root(),
+        &std::env::temp_dir().join(format!("focas-oracle-{}", std::process::id())),
+    );
     let need_lib = || {
         a.lib
             .clone()
@@ -242,10 +275,16 @@ fn main() {
                 let mut out = Vec::new();
                 for c in &cs {
                     match run_live(c, &probe_exe, &lib) {
-                        Some(ran) if !ran.iter().any(|r| matches!(r.answer, Answer::Missing(_))) => {
-                            let crashed = ran.iter().any(|r| matches!(r.answer, Answer::Crashed(_)));
+                        Some(ran)
+                            if !ran.iter().any(|r| matches!(r.answer, Answer::Missing(_))) =>
+                        {
+                            let crashed =
+                                ran.iter().any(|r| matches!(r.answer, Answer::Crashed(_)));
                             if crashed {
-                                eprintln!("{function}/{}: the library crashed; not recorded", c.name);
+                                eprintln!(
+                                    "{function}/{}: the library crashed; not recorded",
+                                    c.name
+                                );
                                 skipped += 1;
                                 continue;
                             }
@@ -268,10 +307,13 @@ fn main() {
                     "cases": out,
                 });
                 let path = a.out.join(format!("{function}.json"));
-                std::fs::write(&path, serde_json::to_string_pretty(&file).unwrap() + "\n").expect("write vector file");
+                std::fs::write(&path, serde_json::to_string_pretty(&file).unwrap() + "\n")
+                    .expect("write vector file");
                 println!("{}: {} cases", path.display(), out.len());
             }
-            println!("recorded {total} cases ({skipped} left out: duplicates, crashes, missing functions)");
+            println!(
+                "recorded {total} cases ({skipped} left out: duplicates, crashes, missing functions)"
+            );
         }
         "compare" => {
             let lib = need_lib();
@@ -279,14 +321,22 @@ fn main() {
             let (mut n, mut bad) = (0, 0);
             for (function, cs) in generated(&a.only) {
                 for c in &cs {
-                    let (Some(f), Some(o)) = (run_live(c, &probe_exe, &lib), run_live(c, &probe_exe, &ours)) else {
+                    let (Some(f), Some(o)) = (
+                        run_live(c, &probe_exe, &lib),
+                        run_live(c, &probe_exe, &ours),
+                    ) else {
                         continue;
                     };
                     n += 1;
                     let d = diff(&f, &o);
                     if !d.is_empty() {
                         bad += 1;
-                        println!("DIFF {function}/{} ({})\n{}", c.name, c.profile, d.join("\n"));
+                        println!(
+                            "DIFF {function}/{} ({})\n{}",
+                            c.name,
+                            c.profile,
+                            d.join("\n")
+                        );
                     }
                 }
             }
@@ -294,7 +344,11 @@ fn main() {
         }
         "verify" => {
             let lib = need_lib();
-            let files = if a.files.is_empty() { vector_files(&a.out) } else { a.files.clone() };
+            let files = if a.files.is_empty() {
+                vector_files(&a.out)
+            } else {
+                a.files.clone()
+            };
             let (mut n, mut bad) = (0, 0);
             for f in files {
                 for c in common::load_file(&f).cases {
@@ -309,7 +363,9 @@ fn main() {
             println!("{n} cases verified, {bad} differ");
         }
         _ => {
-            eprintln!("usage: oracle record|compare|verify|list [--lib PATH] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]");
+            eprintln!(
+                "usage: oracle record|compare|verify|list [--lib PATH] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]"
+            );
             std::process::exit(2);
         }
     }
@@ -318,7 +374,11 @@ fn main() {
 
 pub fn vector_files(dir: &Path) -> Vec<PathBuf> {
     let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "json")).collect())
+        .map(|d| {
+            d.filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "json"))
+                .collect()
+        })
         .unwrap_or_default();
     v.sort();
     v
@@ -328,23 +388,48 @@ pub fn vector_files(dir: &Path) -> Vec<PathBuf> {
 fn diff(fanuc: &[Ran], ours: &[Ran]) -> Vec<String> {
     let mut out = Vec::new();
     for (f, o) in fanuc.iter().zip(ours) {
-        let reqs = |r: &Ran| r.frames.iter().filter(|x| x.dir == "req").map(|x| hex(&x.bytes)).collect::<Vec<_>>();
+        let reqs = |r: &Ran| {
+            r.frames
+                .iter()
+                .filter(|x| x.dir == "req")
+                .map(|x| hex(&x.bytes))
+                .collect::<Vec<_>>()
+        };
         if reqs(f) != reqs(o) {
-            out.push(format!("  `{}`: requests differ\n    fanuc {:?}\n    ours  {:?}", f.cmd, reqs(f), reqs(o)));
+            out.push(format!(
+                "  `{}`: requests differ\n    fanuc {:?}\n    ours  {:?}",
+                f.cmd,
+                reqs(f),
+                reqs(o)
+            ));
         }
         if f.answer != o.answer {
-            out.push(format!("  `{}`: fanuc {:?}\n    ours  {:?}", f.cmd, short(&f.answer), short(&o.answer)));
+            out.push(format!(
+                "  `{}`: fanuc {:?}\n    ours  {:?}",
+                f.cmd,
+                short(&f.answer),
+                short(&o.answer)
+            ));
         }
     }
     if fanuc.len() != ours.len() {
-        out.push(format!("  {} calls ran with fanuc's, {} with ours", fanuc.len(), ours.len()));
+        out.push(format!(
+            "  {} calls ran with fanuc's, {} with ours",
+            fanuc.len(),
+            ours.len()
+        ));
     }
     out
 }
 
 fn short(a: &Answer) -> String {
     match a {
-        Answer::Done { ret, fields, b0, b1 } => format!("ret {ret} {fields:?} b0 {} b1 {}", hex(b0), hex(b1)),
+        Answer::Done {
+            ret,
+            fields,
+            b0,
+            b1,
+        } => format!("ret {ret} {fields:?} b0 {} b1 {}", hex(b0), hex(b1)),
         other => format!("{other:?}"),
     }
 }

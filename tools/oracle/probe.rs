@@ -13,7 +13,14 @@ pub fn build(root: &Path, dir: &Path) -> PathBuf {
     let src = root.join("tools/oracle/probe.c");
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
     let out = Command::new(&cc)
-        .args(["-std=gnu11", "-O1", "-Wall", "-Werror", "-Wno-unused-parameter", "-I"])
+        .args([
+            "-std=gnu11",
+            "-O1",
+            "-Wall",
+            "-Werror",
+            "-Wno-unused-parameter",
+            "-I",
+        ])
         .arg(root.join("include"))
         .arg(&src)
         .arg("-o")

@@ -18,7 +18,13 @@ pub fn replay_case(probe_exe: &Path, lib: &Path, case: &Case) -> Vec<String> {
     let mut probe = Probe::spawn(probe_exe, lib, server.port);
     let mut out = Vec::new();
     for (i, call) in case.calls.iter().enumerate() {
-        let label = format!("{}/{} call {} `{}`", case.function, case.name, i + 1, call.probe_cmd);
+        let label = format!(
+            "{}/{} call {} `{}`",
+            case.function,
+            case.name,
+            i + 1,
+            call.probe_cmd
+        );
         server.begin(&label, call.frames.clone());
         let answer = probe.call(&call.probe_cmd);
         out.extend(server.end());
@@ -36,7 +42,12 @@ pub fn replay_case(probe_exe: &Path, lib: &Path, case: &Case) -> Vec<String> {
 pub fn compare(label: &str, call: &super::common::Call, answer: &Answer) -> Vec<String> {
     let mut out = Vec::new();
     let (ret, fields, b0, b1) = match answer {
-        Answer::Done { ret, fields, b0, b1 } => (ret, fields, b0, b1),
+        Answer::Done {
+            ret,
+            fields,
+            b0,
+            b1,
+        } => (ret, fields, b0, b1),
         Answer::Missing(f) => return vec![format!("{label}: the library lacks {f}")],
         Answer::Crashed(why) => return vec![format!("{label}: {why}")],
     };
@@ -52,7 +63,11 @@ pub fn compare(label: &str, call: &super::common::Call, answer: &Answer) -> Vec<
     }
     let (n0, n1) = buffer_names(call.word());
     for (name, got) in [(n0, b0), (n1, b1)] {
-        let want = call.outputs.get(name).map(|o| o.hex.as_slice()).unwrap_or(&[]);
+        let want = call
+            .outputs
+            .get(name)
+            .map(|o| o.hex.as_slice())
+            .unwrap_or(&[]);
         if want != got.as_slice() {
             out.push(format!(
                 "{label}: output {name} differs\n    recorded {}\n    got      {}",
