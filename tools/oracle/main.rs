@@ -214,7 +214,10 @@ fn args() -> Args {
 /// Every generated case, by the C function its vector file is named after.
 fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
     let mut by_fn: BTreeMap<String, Vec<Case>> = BTreeMap::new();
-    let keep = |w: &str| only.is_empty() || only.iter().any(|o| o == w);
+    // A vector file holds every word of its function: asking for one word
+    // records its function's other words too (rdparam_ext and rdparam_ext32).
+    let functions: Vec<String> = only.iter().map(|w| cases::function(w)).collect();
+    let keep = |w: &str| only.is_empty() || functions.contains(&cases::function(w));
     for w in cases::WORDS.iter().filter(|w| keep(w.word)) {
         by_fn.entry(cases::function(w.word)).or_default().extend(
             cases::cases_of(w).into_iter().map(|mut c| {
