@@ -811,14 +811,17 @@ fn needs_two_paths(case: &Case) -> bool {
 /// taken from the recorded cnc_allclibhndl3 cases.
 fn handshake(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<Event> {
     let name = match case.profile.as_str() {
-        "v2" => "v2_kind1",
+        "v2" | "v2_kind1" => "v2_kind1",
+        "s15" | "v2_kind2" | "v2k2" => "v2_kind2",
+        "v2_kind3" | "v2k3" => "v2_kind3",
         _ if needs_two_paths(case) => "v3_two_paths",
         _ => "v3_one_path",
     };
     let mut ev = find_case(files, "cnc_allclibhndl3", name).calls[0]
         .frames
         .clone();
-    if fixes.iter().any(|f| matches!(f, SpindleWord)) {
+    let listed = fixes.iter().any(|f| matches!(f, SpindleWord));
+    if listed || (foreign_set() && needs_spindle_word(case) && name.starts_with("v3")) {
         set_spindle_word(&mut ev);
     }
     ev
@@ -1048,6 +1051,17 @@ fn plan(case: &Case) -> Result<Plan, String> {
 /// Every table entry names a recorded case, and its call indices exist;
 /// every case that needs the spindle word in a synthesized connect has a
 /// `SpindleWord` entry.
+/// True when `FOCAS_PROTOCOL_DIR` names another set of vectors than the
+/// shared one: the table's entries name the shared set's cases, so an entry
+/// without its case is not an error there, and a spindle case without an
+/// entry gets the spindle word as the shared set's spindle cases do.
+fn foreign_set() -> bool {
+    std::env::var_os("FOCAS_PROTOCOL_DIR").is_some_and(|d| {
+        let shared = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/focas-protocol");
+        std::fs::canonicalize(&d).ok() != std::fs::canonicalize(shared).ok()
+    })
+}
+
 fn check_table(files: &[VectorFile]) -> Vec<String> {
     let mut out = Vec::new();
     for case in files.iter().flat_map(|f| &f.cases) {
@@ -1055,7 +1069,7 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
             Differs(f) | Recording(f) => f.iter().any(|x| matches!(x, SpindleWord)),
             Dedicated(_) => false,
         });
-        if needs_spindle_word(case) && !case.records_connect() && !has {
+        if needs_spindle_word(case) && !case.records_connect() && !has && !foreign_set() {
             out.push(format!(
                 "{}/{}: its spindle calls need the open response's spindle word; add a Recording(&[SpindleWord]) \
                  entry to DEVIATIONS",
@@ -1075,6 +1089,9 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
             .flat_map(|f| &f.cases)
             .find(|c| c.function == d.function && c.name == d.case)
         else {
+            if foreign_set() {
+                continue; // another set of vectors: our table names the shared set's cases
+            }
             out.push(format!(
                 "DEVIATIONS names {}/{}, which is not a recorded case",
                 d.function, d.case

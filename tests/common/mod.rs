@@ -376,6 +376,15 @@ pub fn find_case<'a>(files: &'a [VectorFile], function: &str, name: &str) -> &'a
 
 /// Bound on every single wait of the replay server (accept, read, EOF).
 pub const IO_TIMEOUT: Duration = Duration::from_secs(10);
+
+/// [`IO_TIMEOUT`], or `FOCAS_REPLAY_TIMEOUT_MS` (a shorter wait makes a run
+/// with many differences, such as an oracle triage, finish sooner).
+pub fn io_timeout() -> Duration {
+    std::env::var("FOCAS_REPLAY_TIMEOUT_MS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .map_or(IO_TIMEOUT, Duration::from_millis)
+}
 /// Bound on the harness' wait for the server to finish one step.
 const STEP_TIMEOUT: Duration = Duration::from_secs(60);
 
@@ -650,17 +659,18 @@ impl Server {
         match &e.ev {
             Ev::Accept => {
                 use std::os::fd::AsRawFd;
-                if !readable(self.listener.as_raw_fd(), IO_TIMEOUT) {
+                if !readable(self.listener.as_raw_fd(), io_timeout()) {
                     return Err(format!(
-                        "expected a connection for conn {c}, none within {IO_TIMEOUT:?}"
+                        "expected a connection for conn {c}, none within {:?}",
+                        io_timeout()
                     ));
                 }
                 let (s, _) = self
                     .listener
                     .accept()
                     .map_err(|e| format!("accept conn {c}: {e}"))?;
-                s.set_read_timeout(Some(IO_TIMEOUT)).ok();
-                s.set_write_timeout(Some(IO_TIMEOUT)).ok();
+                s.set_read_timeout(Some(io_timeout())).ok();
+                s.set_write_timeout(Some(io_timeout())).ok();
                 s.set_nodelay(true).ok();
                 self.conns.insert(c, s);
             }
@@ -719,7 +729,8 @@ impl Server {
                     }
                     if !eof {
                         return Err(format!(
-                            "conn {c}: the client did not close it within {IO_TIMEOUT:?}"
+                            "conn {c}: the client did not close it within {:?}",
+                            io_timeout()
                         ));
                     }
                 }

@@ -33,6 +33,9 @@ pub struct Word {
     pub setup: &'static [&'static str],
     /// Calls made after the word, before getdtailerr.
     pub after: &'static [&'static str],
+    /// A write: its cases run on the write-enabled profiles too (v3w, v2w:
+    /// parameter write enable on, MDI mode).
+    pub writes: bool,
 }
 
 const fn w(word: &'static str, dims: &'static [&'static str]) -> Word {
@@ -42,6 +45,7 @@ const fn w(word: &'static str, dims: &'static [&'static str]) -> Word {
         combos: &[],
         setup: &[],
         after: &[],
+        writes: false,
     }
 }
 
@@ -56,6 +60,7 @@ const fn wc(
         combos,
         setup: &[],
         after: &[],
+        writes: false,
     }
 }
 
@@ -391,6 +396,96 @@ pub const WORDS: &[Word] = &[
     w("rdcount", &["1|0|-1|2|9999"]),
     w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
     w("rdtlctldata", &[]),
+    // Writes (each followed by its read-back).
+    Word {
+        after: &["rdparam 6711 0 8", "rdparam 1320 -1 132"],
+        writes: true,
+        ..wc(
+            "wrparam",
+            &[],
+            &[
+                "8 hex:371a0000e8030000", "8 hex:371a0000ffffffff", "6 hex:371a0000e803", "12 hex:371a0000e8030000",
+                "4 hex:371a0000", "0 hex:371a0000e8030000", "-1 hex:371a0000e8030000",
+                "8 hex:0f270000e8030000", "8 hex:28050100e8030000", "132 hex:28050000a0860100a0860100a0860100",
+                "8 hex:00000000e8030000",
+            ],
+        )
+    },
+    Word {
+        after: &["rdmacror 500 502 32"],
+        ..wc(
+            "wrmacror",
+            &[],
+            &[
+                "32 hex:f401f601000039300000030000000000000000000000000000000000000000000000",
+                "24 hex:f401f5010000393000000300000001000000000000",
+                "16 hex:f401f4010000393000000300",
+                "8 hex:f401f4010000",
+                "0 hex:f401f4010000",
+                "32 hex:0100030000000100000000000000010000000000000001000000000000",
+                "32 hex:e703e9030000010000000000000001000000000000000100000000000000",
+            ],
+        )
+    },
+    Word {
+        after: &["rdmacror2 500 3"],
+        ..wc(
+            "wrmacror2",
+            &[],
+            &[
+                "500 1 hex:0000000000c05e40",
+                "500 3 hex:0000000000c05e40000000000000f03f182d4454fb210940",
+                "500 0 hex:0000000000c05e40",
+                "100 1 hex:0000000000000000",
+                "999 2 hex:0000000000c05e400000000000c05e40",
+                "0 1 hex:0000000000c05e40",
+            ],
+        )
+    },
+    Word {
+        after: &["rdzofs 1 1 8", "rdzofs 1 -1 132"],
+        ..wc(
+            "wrzofs",
+            &[],
+            &[
+                "8 hex:010001003930000000", "8 hex:01000100c7cfffff", "132 hex:0100ffff393000003a3000003b300000",
+                "12 hex:0100010039300000", "4 hex:01000100", "0 hex:01000100", "8 hex:00000100", "8 hex:07000100",
+                "8 hex:01002100", "8 hex:0100feff",
+            ],
+        )
+    },
+    Word {
+        after: &["pmc_rdpmcrng 9 0 100 103 12"],
+        ..wc(
+            "pmc_wrpmcrng",
+            &[],
+            &[
+                "12 hex:0900000064006700010203040000", "10 hex:09000000640065000102", "9 hex:090000006400640005",
+                "12 hex:090001006400670001020304", "16 hex:0900020064006700010203040506", "12 hex:0300000000000300010203",
+                "12 hex:0100000000000300010203", "8 hex:0900000064006400", "0 hex:0900000064006700", "12 hex:1400000064006700010203",
+            ],
+        )
+    },
+    // Connection group: the calls around the handle's life.
+    Word { after: &["statinfo", "alloc 10", "statinfo"], ..w("free", &[]) },
+    Word { after: &["statinfo", "free"], ..w("exitprocess", &[]) },
+    w("getdtailerr", &[]),
+    w("pmc_getdtailerr", &[]),
+    Word { after: &["statinfo", "free"], ..wc("alloc4", &[], &["10 0", "10 1", "10 305419896"]) },
+    Word { after: &["statinfo"], ..wc("startup", &[], &["0 f.log", "1 f.log", "2 f.log", "3 f.log", "4 f.log", "-1 f.log"]) },
+    // Program upload on connection 1.
+    Word { after: &["upload 300", "upload 300", "upload 300", "upend"], ..wc("upstart", &[], &["1234", "1", "0", "-1", "9999"]) },
+    Word {
+        after: &["upload3 256", "upload3 256", "upload3 4096", "upend3"],
+        ..wc("upstart3", &[], &["0 1234 1234", "0 1 9999", "0 0 0", "1 1234 1234", "-1 1234 1234", "0 1234 1", "0 9999 9999"])
+    },
+    Word {
+        after: &["upload4 256", "upload4 4096", "upend4"],
+        ..wc("upstart4", &[], &["0 O1234", "0 //CNC_MEM/USER/PATH1/O1234", "0 O9999", "1 O1234", "0 1234", "-1 O1234"])
+    },
+    Word { setup: &["upstart 1234"], after: &["cupload 256", "cupload 256", "upend"], ..wc("cupload", &[], &["256", "0", "4"]) },
+    wc("upload", &[], &["256"]),
+    wc("upend", &[], &[""]),
 ];
 
 /// The C function a word calls.
@@ -508,6 +603,12 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
         })
     };
     let lists = arg_lists(w);
+    let write_profiles: &[&'static str] = if w.writes { &["v3w", "v2w"] } else { &[] };
+    for profile in write_profiles {
+        for (label, args) in &lists {
+            case(format!("{profile}_{label}"), profile, calls_for(w, args, None, &[]));
+        }
+    }
     for (pi, profile) in CLASSES.iter().enumerate() {
         for (label, args) in &lists {
             // Every variation on the 30i and 16i classes; Series 15 gets

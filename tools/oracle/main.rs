@@ -53,7 +53,13 @@ fn profile(name: &str) -> Profile {
     let second_path = "\n[[path]]\nmachine = \"lathe\"\nfeed = 200\n[path.status]\naut = 0\nrun = 0\n\
                        [[path.axis]]\nname = \"X\"\ndecimals = 3\nabsolute = 1000\n\
                        [[path.axis]]\nname = \"Z\"\ndecimals = 3\nabsolute = -2000\n";
+    let writable = |t: String| {
+        t.replacen("param_write_enable = false", "param_write_enable = true", 1)
+            .replacen("aut = 1  ", "aut = 0  ", 1)
+    };
     let text = match name {
+        "v3w" => writable(base.to_string()),
+        "v2w" => writable(class16(1)),
         "v3" => base.to_string(),
         "v2" => class16(1),
         "s15" => class16(2),
