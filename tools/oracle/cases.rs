@@ -404,9 +404,16 @@ pub const WORDS: &[Word] = &[
             "wrparam",
             &[],
             &[
-                "8 hex:371a0000e8030000", "8 hex:371a0000ffffffff", "6 hex:371a0000e803", "12 hex:371a0000e8030000",
-                "4 hex:371a0000", "0 hex:371a0000e8030000", "-1 hex:371a0000e8030000",
-                "8 hex:0f270000e8030000", "8 hex:28050100e8030000", "132 hex:28050000a0860100a0860100a0860100",
+                "8 hex:371a0000e8030000",
+                "8 hex:371a0000ffffffff",
+                "6 hex:371a0000e803",
+                "12 hex:371a0000e8030000",
+                "4 hex:371a0000",
+                "0 hex:371a0000e8030000",
+                "-1 hex:371a0000e8030000",
+                "8 hex:0f270000e8030000",
+                "8 hex:28050100e8030000",
+                "132 hex:28050000a0860100a0860100a0860100",
                 "8 hex:00000000e8030000",
             ],
         )
@@ -448,9 +455,16 @@ pub const WORDS: &[Word] = &[
             "wrzofs",
             &[],
             &[
-                "8 hex:010001003930000000", "8 hex:01000100c7cfffff", "132 hex:0100ffff393000003a3000003b300000",
-                "12 hex:0100010039300000", "4 hex:01000100", "0 hex:01000100", "8 hex:00000100", "8 hex:07000100",
-                "8 hex:01002100", "8 hex:0100feff",
+                "8 hex:010001003930000000",
+                "8 hex:01000100c7cfffff",
+                "132 hex:0100ffff393000003a3000003b300000",
+                "12 hex:0100010039300000",
+                "4 hex:01000100",
+                "0 hex:01000100",
+                "8 hex:00000100",
+                "8 hex:07000100",
+                "8 hex:01002100",
+                "8 hex:0100feff",
             ],
         )
     },
@@ -460,30 +474,85 @@ pub const WORDS: &[Word] = &[
             "pmc_wrpmcrng",
             &[],
             &[
-                "12 hex:0900000064006700010203040000", "10 hex:09000000640065000102", "9 hex:090000006400640005",
-                "12 hex:090001006400670001020304", "16 hex:0900020064006700010203040506", "12 hex:0300000000000300010203",
-                "12 hex:0100000000000300010203", "8 hex:0900000064006400", "0 hex:0900000064006700", "12 hex:1400000064006700010203",
+                "12 hex:0900000064006700010203040000",
+                "10 hex:09000000640065000102",
+                "9 hex:090000006400640005",
+                "12 hex:090001006400670001020304",
+                "16 hex:0900020064006700010203040506",
+                "12 hex:0300000000000300010203",
+                "12 hex:0100000000000300010203",
+                "8 hex:0900000064006400",
+                "0 hex:0900000064006700",
+                "12 hex:1400000064006700010203",
             ],
         )
     },
     // Connection group: the calls around the handle's life.
-    Word { after: &["statinfo", "alloc 10", "statinfo"], ..w("free", &[]) },
-    Word { after: &["statinfo", "free"], ..w("exitprocess", &[]) },
+    Word {
+        after: &["statinfo", "alloc 10", "statinfo"],
+        ..w("free", &[])
+    },
+    Word {
+        after: &["statinfo", "free"],
+        ..w("exitprocess", &[])
+    },
     w("getdtailerr", &[]),
     w("pmc_getdtailerr", &[]),
-    Word { after: &["statinfo", "free"], ..wc("alloc4", &[], &["10 0", "10 1", "10 305419896"]) },
-    Word { after: &["statinfo"], ..wc("startup", &[], &["0 f.log", "1 f.log", "2 f.log", "3 f.log", "4 f.log", "-1 f.log"]) },
+    Word {
+        after: &["statinfo", "free"],
+        ..wc("alloc4", &[], &["10 0", "10 1", "10 305419896"])
+    },
+    Word {
+        after: &["statinfo"],
+        ..wc(
+            "startup",
+            &[],
+            &[
+                "0 f.log", "1 f.log", "2 f.log", "3 f.log", "4 f.log", "-1 f.log",
+            ],
+        )
+    },
     // Program upload on connection 1.
-    Word { after: &["upload 300", "upload 300", "upload 300", "upend"], ..wc("upstart", &[], &["1234", "1", "0", "-1", "9999"]) },
+    Word {
+        after: &["upload 300", "upload 300", "upload 300", "upend"],
+        ..wc("upstart", &[], &["1234", "1", "0", "-1", "9999"])
+    },
     Word {
         after: &["upload3 256", "upload3 256", "upload3 4096", "upend3"],
-        ..wc("upstart3", &[], &["0 1234 1234", "0 1 9999", "0 0 0", "1 1234 1234", "-1 1234 1234", "0 1234 1", "0 9999 9999"])
+        ..wc(
+            "upstart3",
+            &[],
+            &[
+                "0 1234 1234",
+                "0 1 9999",
+                "0 0 0",
+                "1 1234 1234",
+                "-1 1234 1234",
+                "0 1234 1",
+                "0 9999 9999",
+            ],
+        )
     },
     Word {
         after: &["upload4 256", "upload4 4096", "upend4"],
-        ..wc("upstart4", &[], &["0 O1234", "0 //CNC_MEM/USER/PATH1/O1234", "0 O9999", "1 O1234", "0 1234", "-1 O1234"])
+        ..wc(
+            "upstart4",
+            &[],
+            &[
+                "0 O1234",
+                "0 //CNC_MEM/USER/PATH1/O1234",
+                "0 O9999",
+                "1 O1234",
+                "0 1234",
+                "-1 O1234",
+            ],
+        )
     },
-    Word { setup: &["upstart 1234"], after: &["cupload 256", "cupload 256", "upend"], ..wc("cupload", &[], &["256", "0", "4"]) },
+    Word {
+        setup: &["upstart 1234"],
+        after: &["cupload 256", "cupload 256", "upend"],
+        ..wc("cupload", &[], &["256", "0", "4"])
+    },
     wc("upload", &[], &["256"]),
     wc("upend", &[], &[""]),
 ];
@@ -606,7 +675,11 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
     let write_profiles: &[&'static str] = if w.writes { &["v3w", "v2w"] } else { &[] };
     for profile in write_profiles {
         for (label, args) in &lists {
-            case(format!("{profile}_{label}"), profile, calls_for(w, args, None, &[]));
+            case(
+                format!("{profile}_{label}"),
+                profile,
+                calls_for(w, args, None, &[]),
+            );
         }
     }
     for (pi, profile) in CLASSES.iter().enumerate() {
@@ -668,10 +741,16 @@ pub fn connect_cases() -> Vec<Case> {
         ("sysinfo_errm1", Fault::SysinfoError(-1)),
         ("sysinfo_silent", Fault::SysinfoSilent),
         ("sysinfo_close", Fault::SysinfoClose),
+        ("probe_err1", Fault::ProbeError(1)),
+        ("probe_err6", Fault::ProbeError(6)),
+        ("probe_half", Fault::ProbeHalf),
     ];
     let mut out = Vec::new();
     for profile in CLASSES {
         for (label, f) in faults {
+            if label.starts_with("probe") && *profile == "v3" {
+                continue; // the 30i class makes no option probe
+            }
             out.push(Case {
                 name: format!("{profile}_{label}"),
                 profile,

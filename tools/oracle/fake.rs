@@ -48,6 +48,11 @@ pub enum Fault {
     ShortOpen(u8),
     /// The start-up sysinfo frame is answered with this error in every subpacket.
     SysinfoError(i16),
+    /// The 16i-class option probe (the second start-up frame) is answered
+    /// with this error.
+    ProbeError(i16),
+    /// The option probe's payload is cut to half.
+    ProbeHalf,
     /// The start-up sysinfo frame is never answered.
     SysinfoSilent,
     /// The start-up sysinfo frame is answered by closing the connection.
@@ -274,6 +279,13 @@ fn downward(
                                 set_error(s, code);
                             }
                         });
+                    }
+                }
+                if conn == 2 && data_resps == 2 {
+                    match st.fault {
+                        Some(Fault::ProbeError(code)) => f = apply(&f, Shape::Error(0, code)),
+                        Some(Fault::ProbeHalf) => f = apply(&f, Shape::Half(0)),
+                        _ => {}
                     }
                 }
                 if let Some(shape) = st.shape.lock().unwrap().take() {
