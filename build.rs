@@ -27,6 +27,11 @@ fn main() {
         println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libfwlib32.so.{major}");
     }
 
+    // The target triple, for the tests: they run the C programs they build
+    // through cargo's runner for it (`CARGO_TARGET_<TRIPLE>_RUNNER`, e.g. qemu).
+    let target = env::var("TARGET").expect("TARGET");
+    println!("cargo:rustc-env=FWLIB32_TARGET={target}");
+
     let header = generate_header(&manifest_dir);
     let generated = out_dir.join("fwlib32.h");
     write_if_changed(&generated, &header);

@@ -6,7 +6,8 @@ mod toolchain;
 use std::collections::BTreeSet;
 use std::process::Command;
 use toolchain::{
-    cc, cdylib, ffi_functions, header_functions, header_path, header_text, run, scratch,
+    cc, cdylib, ffi_functions, header_functions, header_path, header_text, nm, readelf, run,
+    scratch, target_command,
 };
 
 fn expected_soname() -> String {
@@ -16,7 +17,7 @@ fn expected_soname() -> String {
 #[test]
 fn soname_is_libfwlib32_so_major() {
     let lib = cdylib();
-    let out = run(Command::new("readelf").arg("-d").arg(&lib));
+    let out = run(Command::new(readelf()).arg("-d").arg(&lib));
     let text = String::from_utf8_lossy(&out.stdout);
     let sonames: Vec<&str> = text
         .lines()
@@ -33,7 +34,7 @@ fn soname_is_libfwlib32_so_major() {
 
 /// `(type, name)` of the defined dynamic symbols of the library.
 fn exported(lib: &std::path::Path) -> Vec<(String, String)> {
-    let out = run(Command::new("nm").args(["-D", "--defined-only"]).arg(lib));
+    let out = run(Command::new(nm()).args(["-D", "--defined-only"]).arg(lib));
     String::from_utf8_lossy(&out.stdout)
         .lines()
         .filter_map(|l| {
@@ -146,6 +147,6 @@ fn c_program_links_and_runs_against_the_library() {
         .arg(&dir)
         .arg("-lfwlib32")
         .arg(format!("-Wl,-rpath,{}", dir.display())));
-    let out = run(&mut Command::new(&exe));
+    let out = run(&mut target_command(&exe));
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "ok");
 }
