@@ -24,8 +24,9 @@ fn make(dest: &Path, goal: &str) {
         .arg(format!("DESTDIR={}", dest.display()))
         .arg(format!("PREFIX={PREFIX}"));
     // A cross build (`cargo test --target X`) installs for X.
-    if env!("FWLIB32_TARGET") != env!("FWLIB32_HOST") {
-        cmd.arg(format!("TARGET={}", env!("FWLIB32_TARGET")));
+    let (target, host) = (env!("FWLIB32_TARGET"), env!("FWLIB32_HOST"));
+    if target != host {
+        cmd.arg(format!("TARGET={target}"));
     }
     run(&mut cmd);
 }
