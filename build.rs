@@ -27,6 +27,14 @@ fn main() {
         println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libfwlib32.so.{major}");
     }
 
+    // The target and host triples, for the tests: they run the C programs they
+    // build through cargo's runner for the target (`CARGO_TARGET_<TRIPLE>_RUNNER`,
+    // e.g. qemu), and tests/install.rs installs for the target.
+    let target = env::var("TARGET").expect("TARGET");
+    println!("cargo:rustc-env=FWLIB32_TARGET={target}");
+    let host = env::var("HOST").expect("HOST");
+    println!("cargo:rustc-env=FWLIB32_HOST={host}");
+
     let header = generate_header(&manifest_dir);
     let generated = out_dir.join("fwlib32.h");
     write_if_changed(&generated, &header);

@@ -1148,6 +1148,14 @@ short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
 short cnc_alarm2(unsigned short FlibHndl, long *alarm);
 
 /*
+ The same as cnc_allclibhndl3 (an alias some programs use).
+
+ # Safety
+ `ip` must be a NUL-terminated string, `FlibHndl` writable.
+ */
+short cnc_allclibhdl3(const char *ip, unsigned short port, long timeout, unsigned short *FlibHndl);
+
+/*
  Connects to the CNC at `ip:port` (or shares the existing connection to
  it) and returns a handle in `*FlibHndl`. `timeout` is in seconds; 0 or
  less waits forever.

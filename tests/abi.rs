@@ -13,7 +13,9 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::process::Command;
-use toolchain::{cc, header_path, header_text, header_typedefs, manifest_dir, run, scratch};
+use toolchain::{
+    cc, header_path, header_text, header_typedefs, manifest_dir, run, scratch, target_command,
+};
 
 fn layouts() -> Value {
     let dir = std::env::var_os("FOCAS_PROTOCOL_DIR")
@@ -204,7 +206,7 @@ fn header_structs_match_l32_layouts() {
         .arg("-I")
         .arg(header_path().parent().unwrap())
         .arg(&src));
-    let out = run(&mut Command::new(&exe));
+    let out = run(&mut target_command(&exe));
     let stdout = String::from_utf8(out.stdout).unwrap();
     let actual: Vec<(String, [u64; 3])> = stdout
         .lines()

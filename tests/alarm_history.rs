@@ -74,7 +74,11 @@ fn profile_history_reads_back_with_fanucs_year_quirks() {
         );
         assert_eq!(x.len_msg as usize, w.message.len());
         assert_eq!(text(&x.alm_msg, w.message.len()), w.message);
-        assert_eq!((x.dummy, x.dummy2), (-13108, -52), "dummies untouched");
+        assert_eq!(
+            (x.dummy, x.dummy2 as u8),
+            (-13108, 0xCC),
+            "dummies untouched"
+        );
     }
     // Only the entries that exist are written.
     assert!(b[6 + 48 * want.len()..].iter().all(|x| *x == 0xCC));

@@ -6,7 +6,8 @@ mod toolchain;
 use std::collections::BTreeSet;
 use std::process::Command;
 use toolchain::{
-    cc, cdylib, ffi_functions, header_functions, header_path, header_text, run, scratch,
+    cc, cdylib, ffi_functions, header_functions, header_path, header_text, nm, readelf, run,
+    scratch, target_command,
 };
 
 fn expected_soname() -> String {
@@ -16,7 +17,7 @@ fn expected_soname() -> String {
 #[test]
 fn soname_is_libfwlib32_so_major() {
     let lib = cdylib();
-    let out = run(Command::new("readelf").arg("-d").arg(&lib));
+    let out = run(Command::new(readelf()).arg("-d").arg(&lib));
     let text = String::from_utf8_lossy(&out.stdout);
     let sonames: Vec<&str> = text
         .lines()
@@ -33,7 +34,7 @@ fn soname_is_libfwlib32_so_major() {
 
 /// `(type, name)` of the defined dynamic symbols of the library.
 fn exported(lib: &std::path::Path) -> Vec<(String, String)> {
-    let out = run(Command::new("nm").args(["-D", "--defined-only"]).arg(lib));
+    let out = run(Command::new(nm()).args(["-D", "--defined-only"]).arg(lib));
     String::from_utf8_lossy(&out.stdout)
         .lines()
         .filter_map(|l| {
@@ -146,6 +147,74 @@ fn c_program_links_and_runs_against_the_library() {
         .arg(&dir)
         .arg("-lfwlib32")
         .arg(format!("-Wl,-rpath,{}", dir.display())));
-    let out = run(&mut Command::new(&exe));
+    let out = run(&mut target_command(&exe));
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), "ok");
+}
+
+/// `cnc_allclibhdl3`, the alias of `cnc_allclibhndl3` some programs call, from
+/// C against a simulator: it connects, and the handle it gives works.
+const ALIAS: &str = r#"
+#include <stdio.h>
+#include <stdlib.h>
+#include "fwlib32.h"
+
+int main(int argc, char **argv)
+{
+    unsigned short h = 0;
+    ODBSYS sys;
+    short r;
+    if (argc != 2)
+        return 2;
+    r = cnc_allclibhdl3(NULL, 8193, 1, &h);
+    if (r != EW_DATA || h != 0) {
+        printf("cnc_allclibhdl3(NULL) returned %d, handle %u\n", r, h);
+        return 1;
+    }
+    r = cnc_allclibhdl3("127.0.0.1", (unsigned short)atoi(argv[1]), 5, &h);
+    if (r != EW_OK || h == 0) {
+        printf("cnc_allclibhdl3 returned %d, handle %u\n", r, h);
+        return 1;
+    }
+    r = cnc_sysinfo(h, &sys);
+    if (r != EW_OK) {
+        printf("cnc_sysinfo returned %d\n", r);
+        return 1;
+    }
+    printf("series=%.4s\n", sys.series);
+    r = cnc_freelibhndl(h);
+    if (r != EW_OK) {
+        printf("cnc_freelibhndl returned %d\n", r);
+        return 1;
+    }
+    return 0;
+}
+"#;
+
+#[test]
+fn cnc_allclibhdl3_is_cnc_allclibhndl3_from_c() {
+    use fwlib32::sim::{Profile, Simulator};
+    let lib = cdylib();
+    let dir = scratch("artifacts-alias");
+    std::os::unix::fs::symlink(&lib, dir.join(expected_soname())).unwrap();
+    std::os::unix::fs::symlink(&lib, dir.join("libfwlib32.so")).unwrap();
+    let src = dir.join("alias.c");
+    let exe = dir.join("alias");
+    std::fs::write(&src, ALIAS).unwrap();
+    run(Command::new(cc())
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-o"])
+        .arg(&exe)
+        .arg("-I")
+        .arg(header_path().parent().unwrap())
+        .arg(&src)
+        .arg("-L")
+        .arg(&dir)
+        .arg("-lfwlib32")
+        .arg(format!("-Wl,-rpath,{}", dir.display())));
+    let profile = Profile::default();
+    let sim = Simulator::start(profile.clone(), "127.0.0.1:0").unwrap();
+    let out = run(target_command(&exe).arg(sim.port().to_string()));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).trim(),
+        format!("series={}", profile.cnc.series)
+    );
 }

@@ -26,7 +26,7 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn cc(args: &[&str]) {
-    let out = Command::new("cc")
+    let out = Command::new(toolchain::cc())
         .args(args)
         .output()
         .expect("cc (the system C compiler) must be installed");
@@ -93,7 +93,7 @@ fn status_example_reads_the_profile() {
     let dir = scratch("status");
     let exe = build_example("status", &dir);
     let sim = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
-    let out = Command::new(&exe)
+    let out = toolchain::target_command(&exe)
         .args(["127.0.0.1", &sim.port().to_string()])
         .env("LD_LIBRARY_PATH", &dir)
         .output()
@@ -134,7 +134,7 @@ fn ld_preload_replaces_another_libfwlib32() {
     let port = sim.port().to_string();
 
     // Against the stub alone the program fails ...
-    let out = Command::new(&exe)
+    let out = toolchain::target_command(&exe)
         .args(["127.0.0.1", &port])
         .env("LD_LIBRARY_PATH", &stub_dir)
         .output()
@@ -142,7 +142,7 @@ fn ld_preload_replaces_another_libfwlib32() {
     assert!(!out.status.success(), "the stub must not reach the CNC");
 
     // ... with ours preloaded it talks to the simulator.
-    let out = Command::new(&exe)
+    let out = toolchain::target_command(&exe)
         .args(["127.0.0.1", &port])
         .env("LD_LIBRARY_PATH", &stub_dir)
         .env("LD_PRELOAD", dir.join("libfwlib32.so.1"))
@@ -172,7 +172,7 @@ fn adapter_example_polls_the_running_machine() {
     let p = Profile::default();
     let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
     let polls = 4;
-    let out = Command::new(&exe)
+    let out = toolchain::target_command(&exe)
         .args([
             "127.0.0.1",
             &sim.port().to_string(),
@@ -303,7 +303,7 @@ fn data_example_writes_and_reads_back() {
     let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
     let port = sim.port().to_string();
     let run = |mode: &str| {
-        let out = Command::new(&exe)
+        let out = toolchain::target_command(&exe)
             .args(["127.0.0.1", &port, mode])
             .env("LD_LIBRARY_PATH", &dir)
             .output()
@@ -354,7 +354,7 @@ fn data_example_writes_and_reads_back() {
 
     // Without parameter write enable the same program is refused with EW_PASSWD.
     let locked = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
-    let out = Command::new(&exe)
+    let out = toolchain::target_command(&exe)
         .args(["127.0.0.1", &locked.port().to_string(), "write"])
         .env("LD_LIBRARY_PATH", &dir)
         .output()

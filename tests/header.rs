@@ -223,3 +223,36 @@ fn ew_codes_match_src_ew() {
     assert!(n >= 40, "src/ew.rs has only {n} EW_ constants?");
     assert_eq!(fwlib32::ew::EW_HANDLE, -8);
 }
+
+/// include/fwlib32_ext.h (our `fwlib_` extensions) includes fwlib32.h and
+/// compiles from C99 and C++, alone and after fwlib32.h.
+#[test]
+fn ext_header_compiles_as_c99_and_cxx() {
+    let dir = scratch("header-ext");
+    let unit = "#include \"fwlib32_ext.h\"\n#include \"fwlib32.h\"\n#include \"fwlib32_ext.h\"\n\
+                int ok(unsigned short h, ODBST *st) { return cnc_statinfo(h, st) == EW_OK; }\n";
+    let c = dir.join("ext.c");
+    let cpp = dir.join("ext.cpp");
+    std::fs::write(&c, unit).unwrap();
+    std::fs::write(&cpp, unit).unwrap();
+    run(Command::new(cc())
+        .args([
+            "-std=c99",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-pedantic",
+            "-c",
+            "-o",
+        ])
+        .arg(dir.join("ext_c.o"))
+        .arg("-I")
+        .arg(include_dir())
+        .arg(&c));
+    run(Command::new(cxx())
+        .args(["-Wall", "-Wextra", "-Werror", "-pedantic", "-c", "-o"])
+        .arg(dir.join("ext_cpp.o"))
+        .arg("-I")
+        .arg(include_dir())
+        .arg(&cpp));
+}

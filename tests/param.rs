@@ -9,7 +9,7 @@ use fwlib32::sim::profile::DEFAULT_PROFILE;
 use fwlib32::sim::{Machine, Profile};
 use fwlib32::types::*;
 use fwlib32::*;
-use std::os::raw::{c_short, c_ushort};
+use std::os::raw::{c_char, c_short, c_ushort};
 
 /// The default profile with some text replaced.
 fn profile(edits: &[(&str, &str)]) -> Profile {
@@ -144,11 +144,14 @@ fn read_errors() {
 fn writes_read_back_for_every_type() {
     let (_s, h) = sim::start_alloc(profile(WRITABLE));
     // bit: all eight bits (0x81 reads back as the same char).
-    assert_eq!(wr(h, 5, psd(1001, 0, |u| u.cdata = 0x81u8 as i8)), EW_OK);
+    assert_eq!(
+        wr(h, 5, psd(1001, 0, |u| u.cdata = 0x81u8 as c_char)),
+        EW_OK
+    );
     assert_eq!(unsafe { rd_ok(h, 1001, 0).u.cdata } as u8, 0x81);
     // byte, negative
-    assert_eq!(wr(h, 5, psd(20, 0, |u| u.cdata = -5)), EW_OK);
-    assert_eq!(unsafe { rd_ok(h, 20, 0).u.cdata }, -5);
+    assert_eq!(wr(h, 5, psd(20, 0, |u| u.cdata = -5i8 as c_char)), EW_OK);
+    assert_eq!(unsafe { rd_ok(h, 20, 0).u.cdata }, -5i8 as c_char);
     // word, one axis; the other axes keep theirs
     assert_eq!(wr(h, 6, psd(1825, 2, |u| u.idata = -1234)), EW_OK);
     assert_eq!(
@@ -649,7 +652,7 @@ fn wrparas_writes_every_type_and_reads_back() {
     assert_eq!(wrs(h, &recs), EW_OK);
     unsafe {
         assert_eq!(rd_ok(h, 1001, 0).u.cdata as u8, 0x81);
-        assert_eq!(rd_ok(h, 20, 0).u.cdata, -5);
+        assert_eq!(rd_ok(h, 20, 0).u.cdata, -5i8 as c_char);
         assert_eq!(&rd_ok(h, 1825, -1).u.idatas[..3], &[3000, -1234, 3000]);
         assert_eq!(rd_ok(h, 6711, 0).u.ldata, 987654321);
         let r = rd_ok(h, 1320, 1).u.rdata;

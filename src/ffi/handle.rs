@@ -93,6 +93,20 @@ pub unsafe extern "C" fn cnc_allclibhndl3(
     })
 }
 
+/// The same as cnc_allclibhndl3 (an alias some programs use).
+///
+/// # Safety
+/// `ip` must be a NUL-terminated string, `FlibHndl` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_allclibhdl3(
+    ip: *const c_char,
+    port: c_ushort,
+    timeout: c_long,
+    FlibHndl: *mut c_ushort,
+) -> c_short {
+    unsafe { cnc_allclibhndl3(ip, port, timeout, FlibHndl) }
+}
+
 /// As cnc_allclibhndl3; a non-zero `id` is presented to the CNC (frame 0xf501)
 /// before the open on each connection.
 ///

@@ -1,6 +1,7 @@
-//! Helpers shared by tests/header.rs, tests/abi.rs and tests/artifacts.rs: the
-//! C toolchain (cc, c++, nm, readelf), scratch directories, and reading
-//! include/fwlib32.h. A missing tool fails the test with a clear message;
+//! Helpers shared by the tests that build and run C programs: the C toolchain
+//! (cc, c++, nm, readelf, each overridable through $CC, $CXX, $NM, $READELF for
+//! a cross build), cargo's runner for the target, scratch directories, and
+//! reading include/fwlib32.h. A missing tool fails the test with a clear message;
 //! nothing is skipped.
 
 #![allow(dead_code)]
@@ -36,6 +37,44 @@ pub fn cc() -> String {
 /// The C++ compiler: `$CXX`, else `c++`.
 pub fn cxx() -> String {
     std::env::var("CXX").unwrap_or_else(|_| "c++".to_owned())
+}
+
+/// `nm`: `$NM`, else `nm` (a cross build names its target's, e.g.
+/// `aarch64-linux-gnu-nm`).
+pub fn nm() -> String {
+    std::env::var("NM").unwrap_or_else(|_| "nm".to_owned())
+}
+
+/// `readelf`: `$READELF`, else `readelf`.
+pub fn readelf() -> String {
+    std::env::var("READELF").unwrap_or_else(|_| "readelf".to_owned())
+}
+
+/// cargo's runner for the target these tests were built for
+/// (`CARGO_TARGET_<TRIPLE>_RUNNER`, e.g. `qemu-aarch64 -L /` for a cross build),
+/// split on whitespace; empty when unset.
+pub fn runner() -> Vec<String> {
+    let triple = env!("FWLIB32_TARGET")
+        .to_uppercase()
+        .replace(['-', '.'], "_");
+    std::env::var(format!("CARGO_TARGET_{triple}_RUNNER"))
+        .map(|r| r.split_whitespace().map(str::to_owned).collect())
+        .unwrap_or_default()
+}
+
+/// A command running `exe`, a program built for the target (a C program the
+/// test compiled, or one of the crate's binaries): directly, or through cargo's
+/// runner for the target when one is set.
+pub fn target_command(exe: impl AsRef<std::ffi::OsStr>) -> Command {
+    let runner = runner();
+    match runner.split_first() {
+        None => Command::new(exe),
+        Some((prog, args)) => {
+            let mut cmd = Command::new(prog);
+            cmd.args(args).arg(exe);
+            cmd
+        }
+    }
 }
 
 /// Runs a command to completion; panics with its output unless it succeeds.

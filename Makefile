@@ -1,0 +1,133 @@
+# make [build]                 cargo build --release (the library and focas-sim)
+# make install [PREFIX=/usr/local] [DESTDIR=]
+# make uninstall [PREFIX=/usr/local] [DESTDIR=]
+#
+# Installs, under $(DESTDIR)$(PREFIX):
+#   lib/libfwlib32.so.$(VERSION)        stripped, with a .gnu_debuglink
+#   lib/libfwlib32.so.$(MAJOR)          -> libfwlib32.so.$(VERSION) (the soname)
+#   lib/libfwlib32.so                   -> libfwlib32.so.$(MAJOR) (for -lfwlib32)
+#   lib/libfwlib32.a                    debug sections stripped
+#   lib/pkgconfig/fwlib32.pc
+#   include/fwlib32.h, include/fwlib32_ext.h
+#   bin/focas-sim                       stripped, with a .gnu_debuglink
+#   lib/debug/<installed path>.debug    the debug info (zlib-compressed), kept
+#                                       apart as distributions do, and
+#   lib/debug/.build-id/xx/yyyy.debug   -> it, for gdb and debuginfod
+#
+# gdb finds the debug files with `set debug-file-directory $(PREFIX)/lib/debug`
+# (its default, /usr/lib/debug, for PREFIX=/usr).
+#
+# TARGET=aarch64-unknown-linux-gnu builds and installs for that target (set
+# STRIP, OBJCOPY and READELF to its binutils, e.g. aarch64-linux-gnu-strip).
+# NO_BUILD=1 installs what is already built (e.g. `sudo make install NO_BUILD=1`
+# after `make` as yourself).
+
+PREFIX     ?= /usr/local
+DESTDIR    ?=
+BINDIR     ?= $(PREFIX)/bin
+LIBDIR     ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+DEBUGDIR   ?= $(LIBDIR)/debug
+
+CARGO      ?= cargo
+CARGO_TARGET_DIR ?= target
+TARGET     ?= $(CARGO_BUILD_TARGET)
+STRIP      ?= strip
+OBJCOPY    ?= objcopy
+READELF    ?= readelf
+INSTALL    ?= install
+
+VERSION := $(shell sed -n 's/^version *= *"\([^"]*\)".*/\1/p' Cargo.toml | head -n 1)
+MAJOR   := $(firstword $(subst ., ,$(VERSION)))
+SONAME  := libfwlib32.so.$(MAJOR)
+REALNAME := libfwlib32.so.$(VERSION)
+
+ifeq ($(TARGET),)
+OUT := $(CARGO_TARGET_DIR)/release
+TARGET_FLAG :=
+else
+OUT := $(CARGO_TARGET_DIR)/$(TARGET)/release
+TARGET_FLAG := --target $(TARGET)
+endif
+
+# What the static library needs besides libc (`rustc --print native-static-libs`).
+LIBS_PRIVATE := -lgcc_s -lutil -lrt -lpthread -lm -ldl -lc
+
+D := $(DESTDIR)
+
+.PHONY: all build install uninstall
+
+all: build
+
+build:
+ifeq ($(NO_BUILD),)
+	$(CARGO) build --release --locked --lib --bins $(TARGET_FLAG)
+endif
+	@test -n "$(VERSION)" || { echo "no version in Cargo.toml" >&2; exit 1; }
+	@for f in libfwlib32.so libfwlib32.a focas-sim; do \
+	    test -f "$(OUT)/$$f" || { echo "$(OUT)/$$f is missing: run make first" >&2; exit 1; }; \
+	done
+
+# $(call strip_install,SOURCE,DEST,MODE): DEST gets SOURCE stripped, its debug
+# info goes to $(DEBUGDIR)/DEST.debug (DEST without DESTDIR), with a build-id link.
+define strip_install
+	$(INSTALL) -d "$(D)$(dir $(2))" "$(D)$(DEBUGDIR)$(dir $(2))"
+	$(OBJCOPY) --only-keep-debug --compress-debug-sections=zlib "$(1)" "$(D)$(DEBUGDIR)$(2).debug"
+	chmod 644 "$(D)$(DEBUGDIR)$(2).debug"
+	$(STRIP) --strip-unneeded --remove-section=.comment -o "$(D)$(2).tmp" "$(1)"
+	$(OBJCOPY) --add-gnu-debuglink="$(D)$(DEBUGDIR)$(2).debug" "$(D)$(2).tmp"
+	chmod $(3) "$(D)$(2).tmp"
+	mv -f "$(D)$(2).tmp" "$(D)$(2)"
+	@id=$$($(READELF) -n "$(D)$(2)" | sed -n 's/.*Build ID: *\([0-9a-f]*\).*/\1/p'); \
+	if [ -n "$$id" ]; then \
+	    dir="$(D)$(DEBUGDIR)/.build-id/$$(echo $$id | cut -c1-2)"; \
+	    link="$$dir/$$(echo $$id | cut -c3-).debug"; \
+	    echo "ln -sf ../..$(2).debug $$link"; \
+	    $(INSTALL) -d "$$dir" && ln -sf "../..$(2).debug" "$$link"; \
+	fi
+endef
+
+install: build
+	$(call strip_install,$(OUT)/libfwlib32.so,$(LIBDIR)/$(REALNAME),755)
+	ln -sf $(REALNAME) "$(D)$(LIBDIR)/$(SONAME)"
+	ln -sf $(SONAME) "$(D)$(LIBDIR)/libfwlib32.so"
+	$(INSTALL) -m 644 "$(OUT)/libfwlib32.a" "$(D)$(LIBDIR)/libfwlib32.a"
+	$(STRIP) --strip-debug "$(D)$(LIBDIR)/libfwlib32.a"
+	$(INSTALL) -d "$(D)$(INCLUDEDIR)" "$(D)$(PKGCONFIGDIR)"
+	$(INSTALL) -m 644 include/fwlib32.h include/fwlib32_ext.h "$(D)$(INCLUDEDIR)/"
+	printf '%s\n' \
+	    'prefix=$(PREFIX)' \
+	    'libdir=$(LIBDIR)' \
+	    'includedir=$(INCLUDEDIR)' \
+	    '' \
+	    'Name: fwlib32' \
+	    'Description: FOCAS2 Ethernet library (fwlib32-rs, a replacement for FANUC'"'"'s libfwlib32)' \
+	    'Version: $(VERSION)' \
+	    'Libs: -L$${libdir} -lfwlib32' \
+	    'Libs.private: $(LIBS_PRIVATE)' \
+	    'Cflags: -I$${includedir}' \
+	    > "$(D)$(PKGCONFIGDIR)/fwlib32.pc"
+	chmod 644 "$(D)$(PKGCONFIGDIR)/fwlib32.pc"
+	$(call strip_install,$(OUT)/focas-sim,$(BINDIR)/focas-sim,755)
+	@if [ -z "$(DESTDIR)" ] && [ -w /etc/ld.so.cache ] && command -v ldconfig >/dev/null; then \
+	    echo ldconfig; ldconfig; \
+	fi
+
+uninstall:
+	@for f in "$(LIBDIR)/$(REALNAME)" "$(BINDIR)/focas-sim"; do \
+	    id=$$($(READELF) -n "$(D)$$f" 2>/dev/null | sed -n 's/.*Build ID: *\([0-9a-f]*\).*/\1/p'); \
+	    if [ -n "$$id" ]; then \
+	        l="$(D)$(DEBUGDIR)/.build-id/$$(echo $$id | cut -c1-2)/$$(echo $$id | cut -c3-).debug"; \
+	        echo "rm -f $$l"; rm -f "$$l"; \
+	        rmdir "$$(dirname "$$l")" 2>/dev/null || true; \
+	    fi; \
+	done
+	rm -f "$(D)$(LIBDIR)/$(REALNAME)" "$(D)$(LIBDIR)/$(SONAME)" "$(D)$(LIBDIR)/libfwlib32.so" \
+	    "$(D)$(LIBDIR)/libfwlib32.a" "$(D)$(PKGCONFIGDIR)/fwlib32.pc" \
+	    "$(D)$(INCLUDEDIR)/fwlib32.h" "$(D)$(INCLUDEDIR)/fwlib32_ext.h" \
+	    "$(D)$(BINDIR)/focas-sim" \
+	    "$(D)$(DEBUGDIR)$(LIBDIR)/$(REALNAME).debug" "$(D)$(DEBUGDIR)$(BINDIR)/focas-sim.debug"
+	@if [ -z "$(DESTDIR)" ] && [ -w /etc/ld.so.cache ] && command -v ldconfig >/dev/null; then \
+	    echo ldconfig; ldconfig; \
+	fi
