@@ -85,7 +85,7 @@ fn word(cmd: &str) -> &str {
 /// changed nothing (a duplicate of the plain case).
 fn run_live(case: &Case, probe_exe: &Path, lib: &Path) -> Option<Vec<Ran>> {
     let fake = Fake::start(profile(case.profile), ELAPSED, case.fault);
-    let mut p = Probe::spawn(probe_exe, lib, fake.port);
+    let mut p = Probe::spawn(std::process::Command::new(probe_exe), lib, fake.port);
     let alloc = if case.fault == Some(fake::Fault::Refuse) {
         format!("alloc {} 127.0.0.1 {}", case.timeout, replay::DEAD_PORT)
     } else {
@@ -362,7 +362,7 @@ fn main() {
             for f in files {
                 for c in common::load_file(&f).cases {
                     n += 1;
-                    let m = replay::replay_case(&probe_exe, &lib, &c);
+                    let m = replay::replay_case(|| std::process::Command::new(&probe_exe), &lib, &c);
                     if !m.is_empty() {
                         bad += 1;
                         println!("DIFF {}/{}\n{}", c.function, c.name, m.join("\n"));

@@ -62,8 +62,10 @@ pub struct Probe {
 }
 
 impl Probe {
-    pub fn spawn(exe: &Path, lib: &Path, port: u16) -> Probe {
-        let mut child = Command::new(exe)
+    /// Starts the probe: `cmd` runs its executable (directly, or through a
+    /// runner such as qemu for another target).
+    pub fn spawn(mut cmd: Command, lib: &Path, port: u16) -> Probe {
+        let mut child = cmd
             .arg(lib)
             .arg("127.0.0.1")
             .arg(port.to_string())
@@ -71,7 +73,7 @@ impl Probe {
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn()
-            .unwrap_or_else(|e| panic!("cannot start {}: {e}", exe.display()));
+            .unwrap_or_else(|e| panic!("cannot start the probe {cmd:?}: {e}"));
         let stdin = child.stdin.take();
         let stdout = BufReader::new(child.stdout.take().unwrap());
         Probe {

@@ -6,6 +6,7 @@
 use super::common::{Case, Replay};
 use super::probe::{Answer, Probe, buffer_names};
 use std::path::Path;
+use std::process::Command;
 
 /// Port in a recorded `alloc T 127.0.0.1 1`: nothing listens there, so the
 /// connection is refused (the refused-connection cases).
@@ -13,9 +14,9 @@ pub const DEAD_PORT: &str = "1";
 
 /// The differences between the library's behaviour and the recorded case;
 /// empty when they agree.
-pub fn replay_case(probe_exe: &Path, lib: &Path, case: &Case) -> Vec<String> {
+pub fn replay_case(probe: impl Fn() -> Command, lib: &Path, case: &Case) -> Vec<String> {
     let mut server = Replay::start();
-    let mut probe = Probe::spawn(probe_exe, lib, server.port);
+    let mut probe = Probe::spawn(probe(), lib, server.port);
     let mut out = Vec::new();
     for (i, call) in case.calls.iter().enumerate() {
         let label = format!(
