@@ -83,13 +83,18 @@ fn mutate(rng: &mut Rng, mut r: RespSub) -> Option<RespSub> {
     Some(r)
 }
 
-/// Serves one connection: the open and the start-up sysinfo as the
-/// simulator answers them, then mutated answers.
+/// Serves one connection: the open and the start-up frames (sysinfo; on a
+/// 16i also the option probe) as the simulator answers them, then mutated
+/// answers.
 fn serve(mut s: TcpStream, machine: Arc<Mutex<Machine>>, seed: u64) {
     let mut rng = Rng(seed | 1);
     let mut buf = Vec::new();
     let mut chunk = [0u8; 4096];
-    let version = machine.lock().open_body().frame_version();
+    let (version, startup) = {
+        let open = machine.lock().open_body();
+        let frames = if open.class().is_16i() { 2 } else { 1 };
+        (open.frame_version(), frames)
+    };
     let mut data_frames = 0;
     loop {
         let (frame, used) = loop {
@@ -121,7 +126,7 @@ fn serve(mut s: TcpStream, machine: Arc<Mutex<Machine>>, seed: u64) {
                 data_frames += 1;
                 let mut m = machine.lock();
                 let mut resp: Vec<RespSub> = subs.iter().map(|q| dispatch(&mut *m, q)).collect();
-                if data_frames > 1 {
+                if data_frames > startup {
                     resp = resp
                         .into_iter()
                         .filter_map(|r| mutate(&mut rng, r))
