@@ -70,9 +70,10 @@ pub fn payload<T: Wire>(resp: &[RespSub], i: usize) -> Result<T> {
 }
 
 /// The payload of subpacket `i` decoded as `T` after zero-extending it to
-/// `len` bytes: FANUC's library reads a short answer's missing bytes as
-/// zeros (its receive buffer is cleared), so a fixed-size answer cut short
-/// gives zeros in the fields it lacks.
+/// `len` bytes: FANUC's library reads a short answer's missing fields from
+/// what follows in its buffer, zeros in every one-subpacket case recorded
+/// (src/proto/NOTES.md), so a fixed-size answer cut short gives zeros in the
+/// fields it lacks.
 pub fn payload_padded<T: Wire>(resp: &[RespSub], i: usize, len: usize) -> Result<T> {
     let p = &sub(resp, i)?.payload;
     if p.len() >= len {
