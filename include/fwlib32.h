@@ -1288,9 +1288,10 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
  Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
  300..) or other codes (100..126, 200..299, −2 all in raux1 order, −3 all
  as sent), of `block` (0 active, 1 next ...). `datano` = `type`, `type` =
- `block`. Writes never exceed the union (35 G-code bytes, 32 records),
- where FANUC's library writes whatever arrives. Other types: EW_NUMBER
- without traffic.
+ `block`, written whatever the result. Writes never exceed the union (35
+ G-code bytes, 32 records), where FANUC's library writes whatever arrives;
+ an answer without records writes only the header. Other types:
+ EW_NUMBER without traffic.
 
  # Safety
  `modal` must point to a writable ODBMDL.
@@ -1320,8 +1321,9 @@ short cnc_rdalmhisno(unsigned short FlibHndl, unsigned short *hisno);
  ODBAHIS: year as year mod 100, the other time fields as bytes, as
  FANUC's library writes them. `e_no` = `s_no` + entries written - 1.
  Entries with an impossible time stamp are skipped; an entry whose message
- length runs past its text ends the list; entries that do not fit in
- `length` are not written.
+ length runs past its text ends the list. At most 23 entries are asked
+ for (one answer); when they do not all fit in `length`: EW_LENGTH,
+ nothing written. Not on a Series 15 (EW_FUNC without traffic).
 
  # Safety
  `alm_hst` must point to `length` writable bytes.
@@ -1335,7 +1337,9 @@ short cnc_rdalmhistry(unsigned short FlibHndl,
 /*
  Reads the alarm history into ODBAHIS2 (all fields shorts). The year is
  FANUC's: the low byte of the year, sign-extended (2024 → -24). Entry
- checks and `length` as cnc_rdalmhistry.
+ checks and `length` as cnc_rdalmhistry (checked with the 52-byte
+ ODBAHIS2 record). Not on a 16i (EW_FUNC without traffic); a Series 15
+ answers.
 
  # Safety
  `alm_hst` must point to `length` writable bytes.
@@ -1352,8 +1356,10 @@ short cnc_rdalmhistry2(unsigned short FlibHndl,
  after the last record −1 is written into the next record's place (the
  `data_end` slot when there are 5). `length` is the caller's buffer size:
  at most 5 records and never more than `length` bytes are written (FANUC's
- library writes every record the CNC sends). `length` ≤ 4: EW_LENGTH
- without traffic.
+ library writes every record the CNC sends). A `length` without room for
+ one record: EW_LENGTH without traffic. At most 29 records are asked for
+ (what fits in one answer). A CNC answering EW_LENGTH: −1 at the first
+ slot and EW_LENGTH, as FANUC's library.
 
  # Safety
  `almmsg` must have `length` writable bytes.
@@ -1366,7 +1372,10 @@ short cnc_rdalminfo(unsigned short FlibHndl,
 
 /*
  Reads up to `*num` active alarms of `type` (−1: all) with 32-character
- messages; `*num` becomes the number read.
+ messages; `*num` becomes the number read. `*num` ≤ 0: EW_LENGTH without
+ traffic; at most 29 (cnc_rdalmmsg2: 17) are asked for, what fits in one
+ answer; a CNC answering EW_LENGTH gives `*num` 0 and EW_OK (as FANUC's
+ library).
 
  # Safety
  `num` readable and writable; `almmsg` must have room for `*num` records.
@@ -1424,7 +1433,8 @@ short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
  The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
  FANUC's x86-64 library does, four 4-byte words are written (16 bytes):
  pass a `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words).
- Only the words the CNC sent are written.
+ Only the words the CNC sent are written, at most four (FANUC's library
+ writes every word of a longer answer, past the four).
 
  # Safety
  `cncid` must point to 16 writable bytes.
@@ -1505,9 +1515,12 @@ short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct O
  Reads the text of the block being executed and the blocks after it.
  `*length` in: size of `data` in bytes; out: characters read (the text
  is NUL-terminated and, unlike FANUC's library, never longer than
- `*length - 1` characters, so `data` is never overrun). A CNC answering
+ `*length - 1` characters, so `data` is never overrun). At most 1428
+ bytes are asked for (one answer), as FANUC's library. A CNC answering
  with no text gives `*length` 0, an empty string and `*blknum` 0 (FANUC's
- library reads past its receive buffer there).
+ library reads past its receive buffer there). `*length` 0 is sent as
+ is; then only `*blknum` and `*length` 0 are written (FANUC's library
+ writes `*length` 65535 and text past the buffer).
 
  # Safety
  `length`, `blknum` writable; `data` must have `*length` writable bytes.
@@ -1579,7 +1592,9 @@ short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
 short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool);
 
 /*
- Reads the operation mode word.
+ Reads the operation mode word. An answer without a whole word writes
+ nothing (EW_OK), as FANUC's library; further words are not written
+ (FANUC's library writes them all, past the short).
 
  # Safety
  `mode` must point to a writable short.
@@ -1587,12 +1602,15 @@ short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool
 short cnc_rdopmode(unsigned short FlibHndl, short *mode);
 
 /*
- Reads the operator message of `type` (0..4): number, type, length and
- text, zero-filled to `length` bytes (at most the 262 of OPMSG).
- `length` < 6: EW_LENGTH without traffic.
+ Reads the operator message of `type` 0 into OPMSG: number, type,
+ character count as the CNC sent them, then the text as sent (at most 256
+ bytes), zero-filled: always the 262 bytes of OPMSG, as FANUC's library.
+ Before any traffic: another `type`: EW_ATTRIB (4); `length` (unsigned)
+ below 262: EW_LENGTH (2). A Series 15's answer writes nothing (FANUC's
+ library). A short answer reads as zeros.
 
  # Safety
- `opmsg` must have `length` writable bytes.
+ `opmsg` must have 262 writable bytes.
  */
 short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMSG *opmsg);
 
@@ -1950,6 +1968,8 @@ short cnc_startupprocess(long level, const char *logfile);
 
 /*
  Reads the CNC status (mode, run state, motion, alarm, emergency ...).
+ hdck and tmmode are written even when the status answers an error; a
+ short answer writes the words there are (as FANUC's library).
 
  # Safety
  `statinfo` must point to a writable ODBST.
@@ -1957,7 +1977,8 @@ short cnc_startupprocess(long level, const char *logfile);
 short cnc_statinfo(unsigned short FlibHndl, struct ODBST *statinfo);
 
 /*
- Reads the CNC status, extended form (adds warning, o3dchk, ext_opt, restart).
+ Reads the CNC status, extended form (adds warning, o3dchk, ext_opt,
+ restart); as cnc_statinfo.
 
  # Safety
  `statinfo` must point to a writable ODBST2.

@@ -16,6 +16,9 @@ pub mod detail {
     pub const SUBLEN_TOO_BIG: (i16, i16) = (7, 4);
     pub const SUBLEN_TOO_SMALL: (i16, i16) = (7, 5);
     pub const COUNT_ZERO: (i16, i16) = (3, 0);
+    /// An answer with fewer subpackets than the request (FANUC's library's
+    /// detail for it, as for a zero count).
+    pub const SUB_MISSING: (i16, i16) = (3, 0);
     pub const CONNECT: (i16, i16) = (1, 0);
     pub const SEND: (i16, i16) = (2, 0);
     pub const SHORT_PAYLOAD: (i16, i16) = (8, 0);

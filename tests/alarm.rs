@@ -175,14 +175,14 @@ fn alarm_info() {
     assert_eq!(&b[8..12], &(-1i32).to_le_bytes());
     assert!(b[12..].iter().all(|x| *x == 0xcc));
 
-    // Type 1 in 43 bytes: one record and the end mark do not fit, only the end mark.
+    // Type 1 in 43 bytes: no room for one record: EW_LENGTH before any
+    // traffic, nothing written (FANUC's library).
     let mut b = [0xccu8; 64];
     assert_eq!(
         unsafe { cnc_rdalminfo(h, 1, -1, 43, b.as_mut_ptr().cast()) },
-        EW_OK
+        EW_LENGTH
     );
-    assert_eq!(&b[..4], &(-1i32).to_le_bytes());
-    assert!(b[4..].iter().all(|x| *x == 0xcc));
+    assert!(b.iter().all(|x| *x == 0xcc));
 
     let mut a = ALMINFO::default();
     assert_eq!(unsafe { cnc_rdalminfo(h, 0, -1, 4, &mut a) }, EW_LENGTH);
@@ -220,21 +220,22 @@ fn operator_messages() {
     assert_eq!(text(&m.data, 11), "DOOR OPEN !");
     assert!(m.data[11..].iter().all(|c| *c == 0), "zero-filled");
 
-    // No message of that type.
-    assert_eq!(unsafe { cnc_rdopmsg(h, 2, 262, &mut m) }, EW_OK);
-    assert_eq!((m.datano, m.r#type, m.char_num), (-1, 2, 0));
+    // Only type 0 (FANUC's library refuses the others before any traffic).
+    assert_eq!(unsafe { cnc_rdopmsg(h, 2, 262, &mut m) }, EW_ATTRIB);
+    assert_eq!(unsafe { cnc_rdopmsg(h, -1, 1310, &mut m) }, EW_ATTRIB);
 
-    // At most `length` bytes written.
+    // Always the 262 bytes of OPMSG, whatever `length` (at least 262).
     let mut b = [0xccu8; 300];
     assert_eq!(
-        unsafe { cnc_rdopmsg(h, 0, 10, b.as_mut_ptr().cast()) },
+        unsafe { cnc_rdopmsg(h, 0, 1000, b.as_mut_ptr().cast()) },
         EW_OK
     );
-    assert_eq!(&b[6..10], b"DOOR");
-    assert!(b[10..].iter().all(|x| *x == 0xcc));
+    assert_eq!(&b[6..17], b"DOOR OPEN !");
+    assert!(b[17..262].iter().all(|x| *x == 0));
+    assert!(b[262..].iter().all(|x| *x == 0xcc));
 
+    assert_eq!(unsafe { cnc_rdopmsg(h, 0, 10, &mut m) }, EW_LENGTH);
     assert_eq!(unsafe { cnc_rdopmsg(h, 0, 5, &mut m) }, EW_LENGTH);
-    assert_eq!(unsafe { cnc_rdopmsg(h, -1, 1310, &mut m) }, EW_ATTRIB);
     sim::free(h);
 }
 

@@ -325,20 +325,22 @@ fn an_overrunning_message_length_ends_the_list() {
 }
 
 #[test]
-fn entries_beyond_the_callers_length_are_not_written() {
+fn entries_that_do_not_all_fit_in_length_give_ew_length() {
     let records: Vec<_> = (1..=5).map(|i| rec(i, T, "OT")).collect();
     let f = FakeCnc::start(records, 5);
     let h = sim::connect(f.port);
-    // Room for two and a half records: two are written.
+    // Room for two and a half records: EW_LENGTH after the exchange,
+    // nothing written (FANUC's library).
     let (r, b) = his(h, 1, 5, 6 + 2 * 48 + 30);
-    assert_eq!(r, EW_OK);
-    let a = as_his(&b);
-    assert_eq!((a.s_no, a.e_no), (1, 2));
-    assert!(b[6 + 2 * 48..].iter().all(|x| *x == 0xCC));
+    assert_eq!(r, EW_LENGTH);
+    assert!(b.iter().all(|x| *x == 0xCC));
     let (r, b) = his2(h, 1, 5, 4 + 52);
+    assert_eq!(r, EW_LENGTH);
+    assert!(b.iter().all(|x| *x == 0xCC));
+    // Room for all five: written.
+    let (r, b) = his2(h, 1, 5, 4 + 5 * 52);
     assert_eq!(r, EW_OK);
-    assert_eq!(as_his2(&b).e_no, 1);
-    assert!(b[4 + 52..].iter().all(|x| *x == 0xCC));
+    assert_eq!(as_his2(&b).e_no, 5);
     // Not even the head fits: EW_LENGTH, nothing written.
     let (r, b) = his(h, 1, 5, 5);
     assert_eq!(r, EW_LENGTH);

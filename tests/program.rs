@@ -368,11 +368,12 @@ fn null_pointers_bad_handles_and_lengths() {
         assert_eq!(cnc_rdopmode(h, null_mut()), EW_DATA);
         assert_eq!(cnc_toolnum(h, 1, 1, null_mut()), EW_DATA);
         assert_eq!(cnc_rdntool(h, 1, null_mut()), EW_DATA);
+        // *length 0 is sent (FANUC's library): *blknum and *length 0 come
+        // back, the buffer is not touched.
         let mut zero: c_ushort = 0;
-        assert_eq!(
-            cnc_rdexecprog(h, &mut zero, &mut s, b.as_mut_ptr()),
-            EW_LENGTH
-        );
+        b[0] = 0x55;
+        assert_eq!(cnc_rdexecprog(h, &mut zero, &mut s, b.as_mut_ptr()), EW_OK);
+        assert_eq!((zero, b[0]), (0, 0x55));
 
         let bad = 0x7777;
         let mut p = ODBPRO::default();

@@ -6,8 +6,9 @@ use super::program::low16;
 use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
-use crate::ew::{EW_FUNC, EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
 use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
+use crate::proto::open::CncClass;
 use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG};
 use std::os::raw::{c_long, c_short, c_ushort};
 
@@ -53,8 +54,18 @@ unsafe fn read_almmsg<const N: usize>(
     let num = nonnull(num)?;
     let out = nonnull(out)?;
     let want = unsafe { num.read_unaligned() };
-    let recs = h.call(&pa::rdalmmsg::<N>(kind, want))?;
-    let n = recs.len().min(want.max(0) as usize);
+    if want <= 0 {
+        return Err(Error::local(EW_LENGTH, "num must be at least 1"));
+    }
+    let recs = match h.call(&pa::rdalmmsg::<N>(kind, want)) {
+        Ok(r) => r.0,
+        // The CNC's EW_LENGTH reads as no alarm (FANUC's library).
+        Err(Error::Cnc {
+            code: EW_LENGTH, ..
+        }) => Vec::new(),
+        Err(e) => return Err(e),
+    };
+    let n = recs.len().min(want as usize);
     let size = 12 + N;
     for (i, r) in recs.iter().take(n).enumerate() {
         let at = unsafe { out.add(i * size) };
@@ -72,7 +83,10 @@ unsafe fn read_almmsg<const N: usize>(
 }
 
 /// Reads up to `*num` active alarms of `type` (−1: all) with 32-character
-/// messages; `*num` becomes the number read.
+/// messages; `*num` becomes the number read. `*num` ≤ 0: EW_LENGTH without
+/// traffic; at most 29 (cnc_rdalmmsg2: 17) are asked for, what fits in one
+/// answer; a CNC answering EW_LENGTH gives `*num` 0 and EW_OK (as FANUC's
+/// library).
 ///
 /// # Safety
 /// `num` readable and writable; `almmsg` must have room for `*num` records.
@@ -109,8 +123,10 @@ pub unsafe extern "C" fn cnc_rdalmmsg2(
 /// after the last record −1 is written into the next record's place (the
 /// `data_end` slot when there are 5). `length` is the caller's buffer size:
 /// at most 5 records and never more than `length` bytes are written (FANUC's
-/// library writes every record the CNC sends). `length` ≤ 4: EW_LENGTH
-/// without traffic.
+/// library writes every record the CNC sends). A `length` without room for
+/// one record: EW_LENGTH without traffic. At most 29 records are asked for
+/// (what fits in one answer). A CNC answering EW_LENGTH: −1 at the first
+/// slot and EW_LENGTH, as FANUC's library.
 ///
 /// # Safety
 /// `almmsg` must have `length` writable bytes.
@@ -130,7 +146,26 @@ pub unsafe extern "C" fn cnc_rdalminfo(
         }
         let rec = if r#type == 0 { 8 } else { 40 };
         let fit = (length as usize - 4) / rec;
-        let recs = h.call(&pa::rdalminfo(r#type, alm_type, fit.max(1) as i32))?;
+        if fit == 0 {
+            return Err(Error::local(EW_LENGTH, "length holds no record"));
+        }
+        let recs = match h.call(&pa::rdalminfo(r#type, alm_type, fit as i32)) {
+            Ok(r) => r.0,
+            Err(e) => {
+                // The CNC's EW_LENGTH: the end mark is written at the first
+                // slot and the error returned (FANUC's library).
+                if matches!(
+                    e,
+                    Error::Cnc {
+                        code: EW_LENGTH,
+                        ..
+                    }
+                ) {
+                    unsafe { put(out.cast::<i32>(), -1) };
+                }
+                return Err(e);
+            }
+        };
         let n = recs.len().min(fit).min(5);
         for (i, r) in recs.iter().take(n).enumerate() {
             let at = unsafe { out.add(i * rec) };
@@ -148,12 +183,15 @@ pub unsafe extern "C" fn cnc_rdalminfo(
     })
 }
 
-/// Reads the operator message of `type` (0..4): number, type, length and
-/// text, zero-filled to `length` bytes (at most the 262 of OPMSG).
-/// `length` < 6: EW_LENGTH without traffic.
+/// Reads the operator message of `type` 0 into OPMSG: number, type,
+/// character count as the CNC sent them, then the text as sent (at most 256
+/// bytes), zero-filled: always the 262 bytes of OPMSG, as FANUC's library.
+/// Before any traffic: another `type`: EW_ATTRIB (4); `length` (unsigned)
+/// below 262: EW_LENGTH (2). A Series 15's answer writes nothing (FANUC's
+/// library). A short answer reads as zeros.
 ///
 /// # Safety
-/// `opmsg` must have `length` writable bytes.
+/// `opmsg` must have 262 writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdopmsg(
     FlibHndl: c_ushort,
@@ -164,34 +202,38 @@ pub unsafe extern "C" fn cnc_rdopmsg(
     ffi_boundary!("cnc_rdopmsg", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(opmsg)?.cast::<u8>();
-        if length < 6 {
-            return Err(Error::local(EW_LENGTH, "length must be at least 6"));
+        if r#type != 0 {
+            return Err(Error::local(EW_ATTRIB, "operator message type must be 0"));
+        }
+        const SIZE: usize = std::mem::size_of::<OPMSG>();
+        if usize::from(length as u16) < SIZE {
+            return Err(Error::local(EW_LENGTH, "length must be at least 262"));
         }
         let m = h.call(&pa::rdopmsg(r#type))?;
-        let room = (length as usize).min(std::mem::size_of::<OPMSG>()) - 6;
-        let mut text = vec![0u8; room];
-        let n = m.text.len().min(room).min(m.char_num.max(0) as usize);
-        text[..n].copy_from_slice(&m.text[..n]);
-        unsafe {
-            put(out.cast::<c_short>(), low16(m.datano));
-            put(out.add(2).cast::<c_short>(), low16(m.kind));
-            put(out.add(4).cast::<c_short>(), low16(m.char_num));
-            std::ptr::copy_nonoverlapping(text.as_ptr(), out.add(6), room);
+        if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
+            return Ok(());
         }
+        let mut b = [0u8; SIZE];
+        b[0..2].copy_from_slice(&low16(m.datano).to_ne_bytes());
+        b[2..4].copy_from_slice(&low16(m.kind).to_ne_bytes());
+        b[4..6].copy_from_slice(&low16(m.char_num).to_ne_bytes());
+        let n = m.text.len().min(SIZE - 6);
+        b[6..6 + n].copy_from_slice(&m.text[..n]);
+        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, SIZE) };
         Ok(())
     })
 }
 
 // --- alarm history ---
 
-/// Writes the checked history entries that fit in `length` (header `hdr`
-/// bytes, `rec` bytes per record) and returns how many.
+/// The number of checked history entries, when all of them fit in `length`
+/// (header `hdr` bytes, `rec` bytes per record); else EW_LENGTH, nothing
+/// written (FANUC's library checks this after the exchange).
 fn his_fit(length: c_ushort, hdr: usize, rec: usize, have: usize) -> Result<usize> {
-    let length = usize::from(length);
-    if length < hdr {
+    if usize::from(length) < hdr + rec * have {
         return Err(Error::length());
     }
-    Ok(have.min((length - hdr) / rec))
+    Ok(have)
 }
 
 fn his_call(h: &Handle, s_number: c_ushort, e_number: c_ushort) -> Result<Vec<AlmHisRecord>> {
@@ -205,8 +247,9 @@ fn his_call(h: &Handle, s_number: c_ushort, e_number: c_ushort) -> Result<Vec<Al
 /// ODBAHIS: year as year mod 100, the other time fields as bytes, as
 /// FANUC's library writes them. `e_no` = `s_no` + entries written - 1.
 /// Entries with an impossible time stamp are skipped; an entry whose message
-/// length runs past its text ends the list; entries that do not fit in
-/// `length` are not written.
+/// length runs past its text ends the list. At most 23 entries are asked
+/// for (one answer); when they do not all fit in `length`: EW_LENGTH,
+/// nothing written. Not on a Series 15 (EW_FUNC without traffic).
 ///
 /// # Safety
 /// `alm_hst` must point to `length` writable bytes.
@@ -220,6 +263,10 @@ pub unsafe extern "C" fn cnc_rdalmhistry(
 ) -> c_short {
     ffi_boundary!("cnc_rdalmhistry", {
         let h = handles::get(FlibHndl)?;
+        if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
+            // FANUC's library: EW_FUNC without traffic on a Series 15.
+            return Err(Error::local(EW_FUNC, "not available on a Series 15"));
+        }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
         let n = his_fit(length, 6, 48, recs.len())?;
@@ -247,7 +294,9 @@ pub unsafe extern "C" fn cnc_rdalmhistry(
 
 /// Reads the alarm history into ODBAHIS2 (all fields shorts). The year is
 /// FANUC's: the low byte of the year, sign-extended (2024 → -24). Entry
-/// checks and `length` as cnc_rdalmhistry.
+/// checks and `length` as cnc_rdalmhistry (checked with the 52-byte
+/// ODBAHIS2 record). Not on a 16i (EW_FUNC without traffic); a Series 15
+/// answers.
 ///
 /// # Safety
 /// `alm_hst` must point to `length` writable bytes.
@@ -261,9 +310,10 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
 ) -> c_short {
     ffi_boundary!("cnc_rdalmhistry2", {
         let h = handles::get(FlibHndl)?;
-        if h.ctx().class.is_16i() {
-            // FANUC's library: EW_FUNC without traffic for any arguments.
-            return Err(Error::local(EW_FUNC, "not available on a 16i-class CNC"));
+        if matches!(h.ctx().class, CncClass::Series16 { kind } if kind != 2) {
+            // FANUC's library: EW_FUNC without traffic for any arguments on
+            // a 16i (a Series 15 answers).
+            return Err(Error::local(EW_FUNC, "not available on a 16i"));
         }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;

@@ -137,9 +137,12 @@ pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_c
 /// Reads the text of the block being executed and the blocks after it.
 /// `*length` in: size of `data` in bytes; out: characters read (the text
 /// is NUL-terminated and, unlike FANUC's library, never longer than
-/// `*length - 1` characters, so `data` is never overrun). A CNC answering
+/// `*length - 1` characters, so `data` is never overrun). At most 1428
+/// bytes are asked for (one answer), as FANUC's library. A CNC answering
 /// with no text gives `*length` 0, an empty string and `*blknum` 0 (FANUC's
-/// library reads past its receive buffer there).
+/// library reads past its receive buffer there). `*length` 0 is sent as
+/// is; then only `*blknum` and `*length` 0 are written (FANUC's library
+/// writes `*length` 65535 and text past the buffer).
 ///
 /// # Safety
 /// `length`, `blknum` writable; `data` must have `*length` writable bytes.
@@ -154,14 +157,13 @@ pub unsafe extern "C" fn cnc_rdexecprog(
         let h = handles::get(FlibHndl)?;
         let (len, blk, out) = (nonnull(length)?, nonnull(blknum)?, nonnull(data)?);
         let room = unsafe { len.read_unaligned() };
-        if room == 0 {
-            return Err(Error::local(EW_LENGTH, "length must be at least 1"));
-        }
         let e = h.call(&pp::rdexecprog(room))?;
-        let n = e.text.len().min(room as usize - 1);
+        let n = e.text.len().min((room as usize).saturating_sub(1));
         unsafe {
-            std::ptr::copy_nonoverlapping(e.text.as_ptr(), out.cast::<u8>(), n);
-            put(out.add(n), 0);
+            if room > 0 {
+                std::ptr::copy_nonoverlapping(e.text.as_ptr(), out.cast::<u8>(), n);
+                put(out.add(n), 0);
+            }
             put(len, n as c_ushort);
             put(blk, low16(e.blknum.unwrap_or(0)));
         }
@@ -172,9 +174,10 @@ pub unsafe extern "C" fn cnc_rdexecprog(
 /// Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
 /// 300..) or other codes (100..126, 200..299, −2 all in raux1 order, −3 all
 /// as sent), of `block` (0 active, 1 next ...). `datano` = `type`, `type` =
-/// `block`. Writes never exceed the union (35 G-code bytes, 32 records),
-/// where FANUC's library writes whatever arrives. Other types: EW_NUMBER
-/// without traffic.
+/// `block`, written whatever the result. Writes never exceed the union (35
+/// G-code bytes, 32 records), where FANUC's library writes whatever arrives;
+/// an answer without records writes only the header. Other types:
+/// EW_NUMBER without traffic.
 ///
 /// # Safety
 /// `modal` must point to a writable ODBMDL.
@@ -188,6 +191,12 @@ pub unsafe extern "C" fn cnc_modal(
     ffi_boundary!("cnc_modal", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(modal)?;
+        // The header is written first, whatever follows (an unknown type,
+        // an error from the CNC), as FANUC's library does.
+        unsafe {
+            put(&raw mut (*out).datano, r#type);
+            put(&raw mut (*out).r#type, block);
+        }
         let kind =
             pp::modal_kind(r#type).ok_or(Error::local(EW_NUMBER, "no such modal data type"))?;
         let m = h.call(&ModalCall { kind, block })?;
@@ -205,8 +214,6 @@ pub unsafe extern "C" fn cnc_modal(
             (Modal::G(_), _) => Vec::new(),
         };
         unsafe {
-            put(&raw mut (*out).datano, r#type);
-            put(&raw mut (*out).r#type, block);
             match &m {
                 Modal::G(g) => {
                     for (i, c) in g.0.iter().take(35).enumerate() {
@@ -329,7 +336,9 @@ pub unsafe extern "C" fn cnc_settimer(FlibHndl: c_ushort, time: *mut IODBTIMER) 
     })
 }
 
-/// Reads the operation mode word.
+/// Reads the operation mode word. An answer without a whole word writes
+/// nothing (EW_OK), as FANUC's library; further words are not written
+/// (FANUC's library writes them all, past the short).
 ///
 /// # Safety
 /// `mode` must point to a writable short.
@@ -339,7 +348,9 @@ pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) ->
         let h = handles::get(FlibHndl)?;
         let out = nonnull(mode)?;
         let m = h.call(&pp::rdopmode())?;
-        unsafe { put(out, m.mode) };
+        if let Some(w) = m.0.first() {
+            unsafe { put(out, *w) };
+        }
         Ok(())
     })
 }

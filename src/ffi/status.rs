@@ -1,10 +1,10 @@
 //! System and status information.
 
-use super::{ffi_boundary, nonnull, put};
-use crate::client::handles;
-use crate::error::Error;
+use super::{ffi_boundary, nonnull, put, put_at};
+use crate::client::handles::{self, Handle};
+use crate::error::{Error, Result};
 use crate::ew::EW_PATH;
-use crate::proto::status::{StatInfo, Status, Status2, rdcncid};
+use crate::proto::status::{StatInfo, Status, Status2, StatusWords, rdcncid};
 use crate::types::{ODBST, ODBST2, ODBSYS, chars};
 use std::os::raw::{c_short, c_ulong, c_ushort};
 
@@ -35,7 +35,25 @@ pub unsafe extern "C" fn cnc_sysinfo(FlibHndl: c_ushort, sysinfo: *mut ODBSYS) -
     })
 }
 
+/// The common part of cnc_statinfo / cnc_statinfo2: hdck and tmmode, then
+/// the status words the CNC sent, at most `N` (FANUC's library writes every
+/// word sent, past the struct).
+unsafe fn read_status<T: StatusWords, const N: usize>(h: &Handle, out: *mut u8) -> Result<()> {
+    let r = h.call(&StatInfo::<T>::new())?;
+    unsafe {
+        put_at(out, 0, r.hdck);
+        put_at(out, 2, r.tmmode);
+    }
+    let words = r.words.inspect_err(|e| h.note(e))?;
+    for (i, w) in words.iter().take(N).enumerate() {
+        unsafe { put_at(out, 4 + 2 * i, *w) };
+    }
+    Ok(())
+}
+
 /// Reads the CNC status (mode, run state, motion, alarm, emergency ...).
+/// hdck and tmmode are written even when the status answers an error; a
+/// short answer writes the words there are (as FANUC's library).
 ///
 /// # Safety
 /// `statinfo` must point to a writable ODBST.
@@ -43,25 +61,13 @@ pub unsafe extern "C" fn cnc_sysinfo(FlibHndl: c_ushort, sysinfo: *mut ODBSYS) -
 pub unsafe extern "C" fn cnc_statinfo(FlibHndl: c_ushort, statinfo: *mut ODBST) -> c_short {
     ffi_boundary!("cnc_statinfo", {
         let h = handles::get(FlibHndl)?;
-        let out = nonnull(statinfo)?;
-        let (hdck, tmmode, s) = h.call(&StatInfo::<Status>::new())?;
-        let v = ODBST {
-            hdck,
-            tmmode,
-            aut: s.aut,
-            run: s.run,
-            motion: s.motion,
-            mstb: s.mstb,
-            emergency: s.emergency,
-            alarm: s.alarm,
-            edit: s.edit,
-        };
-        unsafe { put(out, v) };
-        Ok(())
+        let out = nonnull(statinfo)?.cast::<u8>();
+        unsafe { read_status::<Status, 7>(&h, out) }
     })
 }
 
-/// Reads the CNC status, extended form (adds warning, o3dchk, ext_opt, restart).
+/// Reads the CNC status, extended form (adds warning, o3dchk, ext_opt,
+/// restart); as cnc_statinfo.
 ///
 /// # Safety
 /// `statinfo` must point to a writable ODBST2.
@@ -69,25 +75,8 @@ pub unsafe extern "C" fn cnc_statinfo(FlibHndl: c_ushort, statinfo: *mut ODBST) 
 pub unsafe extern "C" fn cnc_statinfo2(FlibHndl: c_ushort, statinfo: *mut ODBST2) -> c_short {
     ffi_boundary!("cnc_statinfo2", {
         let h = handles::get(FlibHndl)?;
-        let out = nonnull(statinfo)?;
-        let (hdck, tmmode, s) = h.call(&StatInfo::<Status2>::new())?;
-        let v = ODBST2 {
-            hdck,
-            tmmode,
-            aut: s.aut,
-            run: s.run,
-            motion: s.motion,
-            mstb: s.mstb,
-            emergency: s.emergency,
-            alarm: s.alarm,
-            edit: s.edit,
-            warning: s.warning,
-            o3dchk: s.o3dchk,
-            ext_opt: s.ext_opt,
-            restart: s.restart,
-        };
-        unsafe { put(out, v) };
-        Ok(())
+        let out = nonnull(statinfo)?.cast::<u8>();
+        unsafe { read_status::<Status2, 11>(&h, out) }
     })
 }
 
@@ -96,7 +85,8 @@ pub unsafe extern "C" fn cnc_statinfo2(FlibHndl: c_ushort, statinfo: *mut ODBST2
 /// The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
 /// FANUC's x86-64 library does, four 4-byte words are written (16 bytes):
 /// pass a `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words).
-/// Only the words the CNC sent are written.
+/// Only the words the CNC sent are written, at most four (FANUC's library
+/// writes every word of a longer answer, past the four).
 ///
 /// # Safety
 /// `cncid` must point to 16 writable bytes.
@@ -106,7 +96,7 @@ pub unsafe extern "C" fn cnc_rdcncid(FlibHndl: c_ushort, cncid: *mut c_ulong) ->
         let h = handles::get(FlibHndl)?;
         let out = nonnull(cncid)?.cast::<u32>();
         let id = h.call(&rdcncid())?;
-        for (i, w) in id.0.iter().enumerate() {
+        for (i, w) in id.0.iter().take(4).enumerate() {
             unsafe { put(out.add(i), *w) };
         }
         Ok(())

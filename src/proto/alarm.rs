@@ -2,7 +2,7 @@
 
 use super::call::Single;
 use super::offset::Count;
-use super::packet::ReqSub;
+use super::packet::{ReqSub, answer_records};
 use super::position::AlarmBits;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
@@ -101,28 +101,59 @@ impl Wire for OpMsg {
     }
 }
 
+/// Payload of 0x0023: whole records of 16 + N bytes; a ragged tail is
+/// ignored, as FANUC's library ignores it.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct AlmMsgs<const N: usize>(pub Vec<AlmMsg<N>>);
+
+impl<const N: usize> Wire for AlmMsgs<N> {
+    fn encode(&self, w: &mut Writer) {
+        self.0.encode(w)
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let n = r.remaining() / (16 + N);
+        (0..n)
+            .map(|_| AlmMsg::decode(r))
+            .collect::<Result<_, _>>()
+            .map(AlmMsgs)
+    }
+}
+
 pub fn alarm() -> Single<AlarmBits> {
-    Single::new(ReqSub::cnc(ALARM, &[]))
+    Single::padded(ReqSub::cnc(ALARM, &[]))
 }
 
-/// cnc_rdalmmsg (N = 32) / cnc_rdalmmsg2 (N = 64): (1,0x23)[type, num, 2, N].
-pub fn rdalmmsg<const N: usize>(kind: i16, num: i16) -> Single<Vec<AlmMsg<N>>> {
+/// cnc_rdalmmsg (N = 32) / cnc_rdalmmsg2 (N = 64): (1,0x23)[type, num, 2,
+/// N], num cut to the records that fit in one answer.
+pub fn rdalmmsg<const N: usize>(kind: i16, num: i16) -> Single<AlmMsgs<N>> {
     Single::new(ReqSub::cnc(
         RDALMMSG,
-        &[i32::from(kind), i32::from(num), 2, N as i32],
+        &[
+            i32::from(kind),
+            answer_records(i32::from(num), 16 + N),
+            2,
+            N as i32,
+        ],
     ))
 }
 
-/// cnc_rdalminfo: (1,0x23)[alm_type, n, type, 32], 48-byte records.
-pub fn rdalminfo(kind: i16, alm_type: i16, n: i32) -> Single<Vec<AlmMsg<32>>> {
+/// cnc_rdalminfo: (1,0x23)[alm_type, n, type, 32], 48-byte records, n cut
+/// to the records that fit in one answer.
+pub fn rdalminfo(kind: i16, alm_type: i16, n: i32) -> Single<AlmMsgs<32>> {
     Single::new(ReqSub::cnc(
         RDALMMSG,
-        &[i32::from(alm_type), n, i32::from(kind), 32],
+        &[
+            i32::from(alm_type),
+            answer_records(n, 48),
+            i32::from(kind),
+            32,
+        ],
     ))
 }
 
+/// (1,0x34)[type]; a short answer reads as zeros (FANUC's library).
 pub fn rdopmsg(kind: i16) -> Single<OpMsg> {
-    Single::new(ReqSub::cnc(RDOPMSG, &[i32::from(kind)]))
+    Single::padded(ReqSub::cnc(RDOPMSG, &[i32::from(kind)]))
 }
 
 // --- alarm history ---
@@ -219,10 +250,14 @@ impl AlmHistory {
     }
 }
 
+/// (1,0x6c)[s, e, 1], `e` cut to the entries that fit in one answer (23
+/// from `s` on), as FANUC's library asks.
 pub fn rdalmhistry(s: u16, e: u16) -> Single<AlmHistory> {
-    Single::new(ReqSub::cnc(RDALMHISTRY, &[i32::from(s), i32::from(e), 1]))
+    let (s, e) = (i32::from(s), i32::from(e));
+    let e = s + answer_records(e - s + 1, 60) - 1;
+    Single::new(ReqSub::cnc(RDALMHISTRY, &[s, e, 1]))
 }
 
 pub fn rdalmhisno() -> Single<Count> {
-    Single::new(ReqSub::cnc(RDALMHISNO, &[]))
+    Single::padded(ReqSub::cnc(RDALMHISNO, &[]))
 }

@@ -46,7 +46,7 @@ pub trait Call {
 pub fn sub(resp: &[RespSub], i: usize) -> Result<&RespSub> {
     let s = resp.get(i).ok_or_else(|| {
         Error::protocol(
-            crate::error::detail::SUBLEN_TOO_SMALL,
+            crate::error::detail::SUB_MISSING,
             format!(
                 "response has {} subpackets, expected at least {}",
                 resp.len(),
@@ -69,10 +69,28 @@ pub fn payload<T: Wire>(resp: &[RespSub], i: usize) -> Result<T> {
     Ok(T::from_bytes(&sub(resp, i)?.payload)?)
 }
 
+/// The payload of subpacket `i` decoded as `T` after zero-extending it to
+/// `len` bytes: FANUC's library reads a short answer's missing fields from
+/// what follows in its buffer, zeros in every one-subpacket case recorded
+/// (src/proto/NOTES.md), so a fixed-size answer cut short gives zeros in the
+/// fields it lacks.
+pub fn payload_padded<T: Wire>(resp: &[RespSub], i: usize, len: usize) -> Result<T> {
+    let p = &sub(resp, i)?.payload;
+    if p.len() >= len {
+        return Ok(T::from_bytes(p)?);
+    }
+    let mut b = p.clone();
+    b.resize(len, 0);
+    Ok(T::from_bytes(&b)?)
+}
+
 /// The commonest call: one subpacket whose payload decodes as `T`.
 #[derive(Debug, Clone)]
 pub struct Single<T> {
     pub sub: ReqSub,
+    /// Zero-extend a shorter payload to this many bytes before decoding
+    /// ([`Single::padded`]); 0: a short payload is EW_PROTOCOL.
+    pad: usize,
     _out: PhantomData<fn() -> T>,
 }
 
@@ -80,6 +98,19 @@ impl<T: Wire> Single<T> {
     pub fn new(sub: ReqSub) -> Self {
         Single {
             sub,
+            pad: 0,
+            _out: PhantomData,
+        }
+    }
+}
+
+impl<T: Wire + Default> Single<T> {
+    /// A fixed-size answer read as FANUC's library reads it: missing bytes
+    /// are zeros (see [`payload_padded`]).
+    pub fn padded(sub: ReqSub) -> Self {
+        Single {
+            sub,
+            pad: T::default().to_bytes().len(),
             _out: PhantomData,
         }
     }
@@ -91,6 +122,6 @@ impl<T: Wire> Call for Single<T> {
         vec![self.sub.clone()]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<T> {
-        payload(resp, 0)
+        payload_padded(resp, 0, self.pad)
     }
 }

@@ -6,6 +6,17 @@ use super::wire::{DecodeError, Reader, Writer};
 pub const CLASS_CNC: u16 = 1;
 pub const CLASS_PMC: u16 = 2;
 
+/// The most answer payload FANUC's library asks a CNC for in one subpacket
+/// (1428 bytes): record counts and byte lengths sent in a request are cut
+/// to what fits in it (cnc_rdalmmsg, cnc_rdalminfo, cnc_rdalmhistry,
+/// cnc_rdexecprog).
+pub const MAX_ANSWER: usize = 1428;
+
+/// `n` records of `size` bytes, cut to what fits in [`MAX_ANSWER`].
+pub fn answer_records(n: i32, size: usize) -> i32 {
+    n.min((MAX_ANSWER / size) as i32)
+}
+
 const REQ_FIXED: usize = 28;
 const RESP_FIXED: usize = 16;
 

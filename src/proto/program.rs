@@ -4,7 +4,7 @@ use super::call::{Call, Ctx, Single, payload};
 use super::packet::{ReqSub, RespSub};
 use super::position::{ProgNums, SeqNum};
 use super::wire::{DecodeError, Reader, Wire, Writer};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::wire_struct;
 
 // --- program ---
@@ -207,39 +207,41 @@ impl Wire for AuxModal {
 }
 
 pub fn rdprgnum() -> Single<ProgNums> {
-    Single::new(ReqSub::cnc(RDPRGNUM, &[]))
+    Single::padded(ReqSub::cnc(RDPRGNUM, &[]))
 }
 
 pub fn rdseqnum() -> Single<SeqNum> {
-    Single::new(ReqSub::cnc(RDSEQNUM, &[]))
+    Single::padded(ReqSub::cnc(RDSEQNUM, &[]))
 }
 
 pub fn rdblkcount() -> Single<i32> {
-    Single::new(ReqSub::cnc(RDBLKCOUNT, &[]))
+    Single::padded(ReqSub::cnc(RDBLKCOUNT, &[]))
 }
 
 pub fn rdactpt() -> Single<ActPt> {
-    Single::new(ReqSub::cnc(RDACTPT, &[]))
+    Single::padded(ReqSub::cnc(RDACTPT, &[]))
 }
 
 pub fn exeprgname() -> Single<ExePrgName> {
-    Single::new(ReqSub::cnc(EXEPRGNAME, &[]))
+    Single::padded(ReqSub::cnc(EXEPRGNAME, &[]))
 }
 
 pub fn exeprgname2() -> Single<PathName> {
     Single::new(ReqSub::cnc(EXEPRGNAME2, &[]))
 }
 
+/// (1,0x20)[length], cut to what fits in one answer.
 pub fn rdexecprog(length: u16) -> Single<ExecProg> {
-    Single::new(ReqSub::cnc(RDEXECPROG, &[i32::from(length)]))
+    let n = i32::from(length).min(super::packet::MAX_ANSWER as i32);
+    Single::new(ReqSub::cnc(RDEXECPROG, &[n]))
 }
 
 pub fn rdtimer(kind: i16) -> Single<Timer> {
-    Single::new(ReqSub::cnc(RDTIMER, &[i32::from(kind)]))
+    Single::padded(ReqSub::cnc(RDTIMER, &[i32::from(kind)]))
 }
 
 pub fn gettimer(kind: i16) -> Single<Clock> {
-    Single::new(ReqSub::cnc(GETTIMER, &[i32::from(kind)]))
+    Single::padded(ReqSub::cnc(GETTIMER, &[i32::from(kind)]))
 }
 
 /// cnc_settimer: the six words with the half of `kind` filled (0 date, 1 time)
@@ -270,7 +272,26 @@ pub fn rdntool(grp: i16) -> Single<NTool> {
     Single::new(ReqSub::cnc(RDNTOOL, &[g, g]))
 }
 
-pub fn rdopmode() -> Single<OpMode> {
+/// Answer of 0x0057 as FANUC's library reads it: every whole i16 word
+/// (possibly none; a CNC sends one, [`OpMode`]); an odd trailing byte is
+/// ignored.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct OpModeWords(pub Vec<i16>);
+
+impl Wire for OpModeWords {
+    fn encode(&self, w: &mut Writer) {
+        self.0.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let n = r.remaining() / 2;
+        (0..n)
+            .map(|_| r.i16())
+            .collect::<Result<_, _>>()
+            .map(OpModeWords)
+    }
+}
+
+pub fn rdopmode() -> Single<OpModeWords> {
     Single::new(ReqSub::cnc(RDOPMODE, &[]))
 }
 
@@ -331,23 +352,13 @@ impl Call for ModalCall {
             ModalKind::AuxAll => ReqSub::cnc(MODAL_AUX, &[-1, b]),
         }]
     }
-    /// An all-codes answer (code < 0) with fewer records than the struct
-    /// holds, or none, is data (FANUC's library returns EW_OK); a one-code
-    /// answer without its record is too short.
+    /// An answer with fewer records than asked, or none, is data (FANUC's
+    /// library returns EW_OK and writes what there is).
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Modal> {
-        let m = match self.kind {
+        Ok(match self.kind {
             ModalKind::G(_) => Modal::G(payload(resp, 0)?),
             _ => Modal::Aux(payload(resp, 0)?),
-        };
-        let empty = match &m {
-            Modal::G(g) => g.0.is_empty(),
-            Modal::Aux(a) => a.0.is_empty(),
-        };
-        let one_code = matches!(self.kind, ModalKind::G(c) | ModalKind::Aux(c) if c >= 0);
-        if empty && one_code {
-            return Err(Error::short("cnc_modal: no record for the code asked"));
-        }
-        Ok(m)
+        })
     }
 }
 
@@ -406,7 +417,8 @@ impl Wire for DirEntry {
     }
 }
 
-/// Payload of 0x0006: the records (empty: no program from `top` on).
+/// Payload of 0x0006: the records (empty: no program from `top` on); a
+/// ragged tail is ignored, as FANUC's library ignores it.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct ProgDir(pub Vec<DirEntry>);
 
@@ -415,7 +427,11 @@ impl Wire for ProgDir {
         self.0.encode(w);
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        Ok(ProgDir(Vec::decode(r)?))
+        let n = r.remaining() / 72;
+        (0..n)
+            .map(|_| DirEntry::decode(r))
+            .collect::<Result<_, _>>()
+            .map(ProgDir)
     }
 }
 

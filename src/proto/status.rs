@@ -1,10 +1,10 @@
 //! Connection-group and status structures: sysinfo, statinfo, statinfo2, CNC id.
 
-use super::call::{Call, Ctx, Single, payload, sub};
+use super::call::{Call, Ctx, Single, sub};
 use super::cmd;
 use super::packet::{ReqSub, RespSub};
 use super::wire::{DecodeError, Reader, Wire, Writer};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::wire_struct;
 
 wire_struct! {
@@ -72,7 +72,8 @@ wire_struct! {
     }
 }
 
-/// Payload of 0x00e8 (cnc_rdcncid): up to four 32-bit words.
+/// Payload of 0x00e8 (cnc_rdcncid): 32-bit words (a CNC sends four); a
+/// ragged tail is ignored, as FANUC's library ignores it.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct CncId(pub Vec<u32>);
 
@@ -81,17 +82,17 @@ impl Wire for CncId {
         self.0.iter().for_each(|x| w.u32(*x));
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        if r.remaining() % 4 != 0 || r.remaining() > 16 {
-            return Err(DecodeError::Invalid("CNC id payload is not 1 to 4 words"));
-        }
-        Ok(CncId(Vec::<u32>::decode(r)?))
+        let n = r.remaining() / 4;
+        (0..n).map(|_| r.u32()).collect::<Result<_, _>>().map(CncId)
     }
 }
 
 /// cnc_statinfo / cnc_statinfo2: the main status subpacket plus handle
-/// retrace (0xe1) and T/M mode (0x98). Only the first subpacket's error
-/// counts; a CNC without the other two answers them with an error and
-/// they read as 0.
+/// retrace (0xe1) and T/M mode (0x98), read as FANUC's library reads them:
+/// hdck and tmmode come first (0 from a subpacket answering an error); the
+/// main subpacket's error is the call's, else its whole words are the
+/// status words (fewer when the answer is short). An answer without all
+/// three subpackets: hdck and tmmode 0, the status EW_PROTOCOL.
 #[derive(Debug, Clone, Copy)]
 pub struct StatInfo<T>(std::marker::PhantomData<T>);
 
@@ -117,11 +118,23 @@ impl<T> Default for StatInfo<T> {
     }
 }
 
-/// Decoded statinfo: (hdck, tmmode, status words).
-pub type StatReply<T> = (i16, i16, T);
+/// Decoded statinfo: hdck, tmmode, and the main subpacket's whole words or
+/// its error.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StatReply {
+    pub hdck: i16,
+    pub tmmode: i16,
+    pub words: Result<Vec<i16>>,
+}
+
+fn words(p: &[u8]) -> Vec<i16> {
+    p.chunks_exact(2)
+        .map(|w| i16::from_be_bytes([w[0], w[1]]))
+        .collect()
+}
 
 impl<T: StatusWords> Call for StatInfo<T> {
-    type Output = StatReply<T>;
+    type Output = StatReply;
     fn request(&self, _: &Ctx) -> Vec<ReqSub> {
         vec![
             ReqSub::cnc(T::CMD, &[]),
@@ -129,15 +142,33 @@ impl<T: StatusWords> Call for StatInfo<T> {
             ReqSub::cnc(cmd::TMMODE, &[]),
         ]
     }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
-        let words: T = payload(resp, 0)?;
-        let optional = |i| {
-            sub(resp, i)
-                .ok()
-                .and_then(|s| Word::from_bytes(&s.payload).ok())
-                .map_or(0, |w| w.value)
+    /// An hdck or tmmode subpacket answering without error but without its
+    /// word (FANUC's library then reads the bytes after it: the next
+    /// subpacket's, or its own request's) is EW_PROTOCOL — or the main
+    /// subpacket's error — with nothing written.
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<StatReply> {
+        if resp.len() < 3 {
+            return Ok(StatReply {
+                hdck: 0,
+                tmmode: 0,
+                words: sub(resp, 2).map(|_| Vec::new()),
+            });
+        }
+        let word = |i| match sub(resp, i) {
+            Err(_) => Some(0),
+            Ok(s) => Word::from_bytes(&s.payload).ok().map(|w| w.value),
         };
-        Ok((optional(1), optional(2), words))
+        let (Some(hdck), Some(tmmode)) = (word(1), word(2)) else {
+            sub(resp, 0)?;
+            return Err(Error::short(
+                "statinfo: handle-retrace or T/M mode answer without its word",
+            ));
+        };
+        Ok(StatReply {
+            hdck,
+            tmmode,
+            words: sub(resp, 0).map(|s| words(&s.payload)),
+        })
     }
 }
 

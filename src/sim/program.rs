@@ -130,9 +130,10 @@ impl Machine {
             .ok_or(CncError::PATH)
     }
 
-    /// Milliseconds since the simulator started.
+    /// Milliseconds from the simulator's start to the instant it was last
+    /// advanced to (the frame being answered).
     fn elapsed_ms(&self) -> i64 {
-        self.started.elapsed().as_millis() as i64
+        self.now.saturating_duration_since(self.started).as_millis() as i64
     }
 
     /// cnc_rdtimer: 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free.

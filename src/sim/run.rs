@@ -20,16 +20,21 @@ pub struct Machine {
     pub profile: Profile,
     /// When the simulator started: the running program's clock.
     pub started: std::time::Instant,
+    /// The instant the state was last brought up to ([`Machine::advance_to`]):
+    /// what the timers read, so a frozen clock gives the same answers.
+    pub now: std::time::Instant,
     /// Live state per path (what a running machine changes).
     pub run: Vec<PathRun>,
 }
 
 impl Machine {
     pub fn new(profile: Profile) -> Machine {
+        let started = std::time::Instant::now();
         Machine {
             run: Machine::initial_run(&profile),
             profile,
-            started: std::time::Instant::now(),
+            started,
+            now: started,
         }
     }
 
@@ -475,6 +480,7 @@ impl Machine {
     /// Brings the live state up to `now`: a pure function of the time
     /// since [`Machine::started`] (a `now` before it counts as 0).
     pub fn advance_to(&mut self, now: Instant) {
+        self.now = now;
         let since = now.saturating_duration_since(self.started);
         let t = since.as_secs_f64();
         let mut raised: Vec<(u16, Alarm, Duration)> = Vec::new();
