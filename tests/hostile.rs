@@ -491,7 +491,11 @@ fn run_against(profile: Profile, seed: u64) {
             codes.entry(name).or_default().insert(r);
             if r == EW_SOCKET {
                 let _ = cnc_freelibhndl(h);
-                h = sim::connect(port);
+                // The hostile CNC may mutate the start-up answers too: a
+                // refused start-up is fine, a few attempts get through.
+                h = (0..20)
+                    .find_map(|_| sim::try_connect(port).ok())
+                    .expect("a reconnect to the hostile CNC succeeds");
             }
         }
     }

@@ -180,13 +180,6 @@ const DEVIATIONS: &[Deviation] = &[
     // position: cnc_rddynamic2.
     Deviation {
         function: "cnc_rddynamic2",
-        case: "v3_error_in_one_subpacket",
-        reason: "(a) error 6 in the 0x25 subpacket: FANUC returns 6 but has already written the fields decoded \
-                 before it (alarm .. actf); we return the same 6 and write nothing",
-        treatment: Differs(&[NoOutput(0)]),
-    },
-    Deviation {
-        function: "cnc_rddynamic2",
         case: "v3_all_axes_3",
         reason: "all axes with 3 records per position type: FANUC packs absolute[0..2], machine[0..2], ... \
                  back to back (stride = records received, the header's layout only for MAX_AXIS records); \

@@ -58,8 +58,11 @@ pub unsafe extern "C" fn cnc_rdaxisname(
         let h = handles::get(FlibHndl)?;
         let room = read_count(data_num)?;
         let out = nonnull(axisname)?;
+        if room <= 0 {
+            return Err(Error::length());
+        }
         let names = h.call(&rdaxisname())?;
-        let n = names.len().min(room.max(0) as usize);
+        let n = names.len().min(room as usize);
         for (i, e) in names.iter().take(n).enumerate() {
             let v = ODBAXISNAME {
                 name: e.bytes[0] as c_char,
@@ -88,8 +91,11 @@ pub unsafe extern "C" fn cnc_rdspdlname(
         let h = handles::get(FlibHndl)?;
         let room = read_count(data_num)?;
         let out = nonnull(spdlname)?;
+        if room <= 0 {
+            return Err(Error::length());
+        }
         let names = h.call(&rdspdlname())?;
-        let n = names.len().min(room.max(0) as usize);
+        let n = names.len().min(room as usize);
         for (i, e) in names.iter().take(n).enumerate() {
             let [name, suff1, suff2, suff3] = e.bytes.map(|b| b as c_char);
             let v = ODBSPDLNAME {
@@ -164,44 +170,81 @@ const FAXIS: [usize; 4] = [
     offset_of!(ODBDY_FAXIS, distance),
 ];
 
+/// FANUC's order: axis 0 or below -1 is EW_ATTRIB and a `length` (read as
+/// an unsigned short) below the one-axis or all-axes size EW_LENGTH, both
+/// before any traffic; an axis beyond the CNC's goes to it. The fields are
+/// written group by group as their subpackets are read: a CNC error in a
+/// later subpacket is returned with the earlier groups written.
 fn dynamic(l: &DynLayout, h: c_ushort, axis: c_short, length: c_short, out: *mut u8) -> Result<()> {
     {
         let h = handles::get(h)?;
         let base = nonnull(out)?;
+        if axis == 0 || axis < -1 {
+            return Err(Error::local(EW_ATTRIB, "axis must be -1 or 1.."));
+        }
         let need = if axis == -1 { l.all } else { l.one };
-        if (length as i32) < need as i32 {
+        if (length as c_ushort as usize) < need {
             return Err(Error::length());
         }
         let d: DynamicData = h.call(&Dynamic { axis })?;
         unsafe {
-            put_at(base, l.axis, axis);
-            let nums = [d.alarm as i32, d.prgnum, d.prgmnum];
-            for (off, v) in l.numbers.iter().zip(nums) {
-                // FANUC takes the low 16 bits, sign-extended.
-                if l.wide {
-                    put_at(base, *off, low16(v));
-                } else {
-                    put_at(base, *off, v as i16);
-                }
+            if let Some(alarm) = d.alarm {
+                put_number(l, base, 0, alarm as i32);
             }
-            put_at(base, l.seqnum, d.seqnum);
-            put_at(base, l.actf, d.actf);
-            put_at(base, l.acts, d.acts);
-            if axis == -1 {
-                // Every record at its struct offset (FANUC packs them by the
-                // number received: the same bytes for MAX_AXIS records).
-                for (k, vals) in d.pos.iter().enumerate() {
-                    for (i, v) in vals.iter().take(MAX_AXIS).enumerate() {
-                        put_at(base, l.pos + FAXIS[k] + 4 * i, *v);
+            if let Some((prgnum, prgmnum)) = d.prgnum {
+                put_number(l, base, 1, prgnum);
+                put_number(l, base, 2, prgmnum);
+            }
+            if let Some(v) = d.seqnum {
+                put_at(base, l.seqnum, v);
+            }
+            if let Some(v) = d.actf {
+                put_at(base, l.actf, v);
+            }
+            if let Some(v) = d.acts {
+                put_at(base, l.acts, v);
+            }
+            if d.axis {
+                put_at(base, l.axis, axis);
+            }
+            if let Some(pos) = &d.pos {
+                if axis == -1 {
+                    // Every record at its struct offset (FANUC packs them by
+                    // the number received: the same bytes for MAX_AXIS records).
+                    for (k, vals) in pos.iter().enumerate() {
+                        for (i, v) in vals.iter().take(MAX_AXIS).enumerate() {
+                            put_at(base, l.pos + FAXIS[k] + 4 * i, *v);
+                        }
                     }
-                }
-            } else {
-                for (k, vals) in d.pos.iter().enumerate() {
-                    put_at(base, l.pos + 4 * k, vals[0]);
+                } else {
+                    for (k, vals) in pos.iter().enumerate() {
+                        put_at(base, l.pos + 4 * k, vals[0]);
+                    }
                 }
             }
         }
-        Ok(())
+        match d.error {
+            Some(e) => {
+                h.note(&e);
+                Err(e)
+            }
+            None => Ok(()),
+        }
+    }
+}
+
+/// Alarm, program or main program number `k`: FANUC takes the low 16 bits,
+/// sign-extended (4 bytes in ODBDY2, 2 in ODBDY).
+///
+/// # Safety
+/// `base` must point to a writable struct of layout `l`.
+unsafe fn put_number(l: &DynLayout, base: *mut u8, k: usize, v: i32) {
+    unsafe {
+        if l.wide {
+            put_at(base, l.numbers[k], low16(v));
+        } else {
+            put_at(base, l.numbers[k], v as i16);
+        }
     }
 }
 
@@ -251,7 +294,7 @@ fn act(cmd: u16, h: c_ushort, out: *mut ODBACT) -> Result<()> {
     let h = handles::get(h)?;
     let out = nonnull(out)?;
     let v = h.call(&actual(cmd))?;
-    unsafe { put_at(out.cast::<u8>(), offset_of!(ODBACT, data), v.value) };
+    unsafe { put_at(out.cast::<u8>(), offset_of!(ODBACT, data), v) };
     Ok(())
 }
 
@@ -287,6 +330,9 @@ pub unsafe extern "C" fn cnc_acts2(
     ffi_boundary!("cnc_acts2", {
         let h = handles::get(FlibHndl)?;
         let base = nonnull(actualspindle)?.cast::<u8>();
+        if sp_no > MAX_SPINDLE as c_short {
+            return Err(Error::local(EW_NUMBER, "spindle number above 8"));
+        }
         let (n, recs) = h.call(&SpindleData {
             code: spdl::SPEED_ACT,
             sp_no,
@@ -300,7 +346,13 @@ pub unsafe extern "C" fn cnc_acts2(
         unsafe {
             put_at(base, offset_of!(ODBACT2, datano), sp_no);
             for (i, r) in recs.iter().take(room).enumerate() {
-                put_at(base, offset_of!(ODBACT2, data) + 4 * i, r.value);
+                // 16i class: the low 16 bits (a record of 0x5a bytes gave 0x5a5a).
+                let v = if h.ctx().class.is_16i() {
+                    low16(r.value)
+                } else {
+                    r.value
+                };
+                put_at(base, offset_of!(ODBACT2, data) + 4 * i, v);
             }
         }
         Ok(())
@@ -694,6 +746,11 @@ pub unsafe extern "C" fn cnc_rdposition(
 // Positions (ODBAXIS)
 // ---------------------------------------------------------------------------
 
+/// FANUC's order: an axis above MAX_AXIS is EW_ATTRIB before any traffic
+/// (0, -2 ... go to the CNC); after the exchange `length`, read as an
+/// unsigned short, must hold the header and every whole record received
+/// (else EW_LENGTH, nothing written). Then `type` = axis and the values;
+/// an empty answer writes `type` alone.
 fn axis_values(
     code: i32,
     h: c_ushort,
@@ -704,29 +761,21 @@ fn axis_values(
     {
         let h = handles::get(h)?;
         let base = nonnull(out)?.cast::<u8>();
+        if axis > MAX_AXIS as c_short {
+            return Err(Error::local(EW_ATTRIB, "axis beyond MAX_AXIS"));
+        }
         let data = offset_of!(ODBAXIS, data);
-        let length = length.max(0) as usize;
-        // One value, or one per axis the CNC can have (all axes).
-        let need = if axis == -1 {
-            data + 4 * h.ctx().axes()
-        } else {
-            data + 4
-        };
-        if length < need {
+        let recs = h.call(&position(code, axis))?;
+        if (length as c_ushort as usize) < data + 4 * recs.len() {
             return Err(Error::local(
                 EW_LENGTH,
-                "length too small for the axes asked",
+                "length too small for the values received",
             ));
         }
-        let recs = h.call(&position(code, axis))?;
-        if recs.is_empty() {
-            return Err(Error::short("no position record"));
-        }
-        let room = ((length - data) / 4).min(MAX_AXIS);
-        let n = if axis == -1 { recs.len().min(room) } else { 1 };
         unsafe {
             put_at(base, offset_of!(ODBAXIS, r#type), axis);
-            for (i, r) in recs.iter().take(n).enumerate() {
+            // Never past the struct (FANUC writes every record received).
+            for (i, r) in recs.iter().take(MAX_AXIS).enumerate() {
                 put_at(base, data + 4 * i, r.value);
             }
         }

@@ -6,11 +6,12 @@
 //! cnc_rdprgnum and cnc_rdseqnum read: they are shared with the program and
 //! alarm areas.
 
-use super::call::{Call, Ctx, Single, payload, sub};
+use super::call::{Call, Ctx, payload, sub};
 use super::packet::{ReqSub, RespSub};
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::{Error, Result};
+use crate::ew::EW_NOOPT;
 use crate::wire_struct;
 
 /// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).
@@ -201,29 +202,139 @@ pub fn low16(v: i32) -> i32 {
 // Simple calls
 // ---------------------------------------------------------------------------
 
+/// The whole `size`-byte entries of a payload: a ragged tail is no entry,
+/// as FANUC's library counts them (payload / size).
+pub fn whole<T: Wire>(p: &[u8], size: usize) -> Result<Vec<T>> {
+    Ok(Vec::<T>::from_bytes(&p[..p.len() / size * size])?)
+}
+
+/// The first `N` bytes of a payload, zero-extended when it is shorter: FANUC's
+/// library reads fixed fields of the last subpacket of a frame that way
+/// (its receive buffer is zero past the frame; recorded with an earlier call
+/// leaving other bytes there).
+pub fn zext<const N: usize>(p: &[u8]) -> [u8; N] {
+    let mut b = [0u8; N];
+    let n = p.len().min(N);
+    b[..n].copy_from_slice(&p[..n]);
+    b
+}
+
+/// The subpackets of a frame must all be there: a missing one (the later
+/// ones shifted) is EW_PROTOCOL with detail 3, as FANUC's library reports it.
+pub fn expect_subs(resp: &[RespSub], n: usize) -> Result<()> {
+    if resp.len() < n {
+        return Err(Error::protocol(
+            crate::error::detail::COUNT_ZERO,
+            format!("response has {} subpackets, expected {n}", resp.len()),
+        ));
+    }
+    Ok(())
+}
+
+/// cnc_rdaxisname / cnc_rdspdlname: one subpacket of 4-byte name entries
+/// (whole entries only).
+#[derive(Debug, Clone, Copy)]
+pub struct Names {
+    pub cmd: u16,
+}
+
+impl Call for Names {
+    type Output = Vec<Name>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(self.cmd, &[])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Name>> {
+        whole(&sub(resp, 0)?.payload, 4)
+    }
+}
+
 /// cnc_rdaxisname: 4-byte entries.
-pub fn rdaxisname() -> Single<Vec<Name>> {
-    Single::new(ReqSub::cnc(RDAXISNAME, &[]))
+pub fn rdaxisname() -> Names {
+    Names { cmd: RDAXISNAME }
 }
 
 /// cnc_rdspdlname: 4-byte entries.
-pub fn rdspdlname() -> Single<Vec<Name>> {
-    Single::new(ReqSub::cnc(RDSPDLNAME, &[]))
+pub fn rdspdlname() -> Names {
+    Names { cmd: RDSPDLNAME }
 }
 
-/// cnc_actf / cnc_acts: one value record.
-pub fn actual(cmd: u16) -> Single<Value> {
-    Single::new(ReqSub::cnc(cmd, &[]))
+/// cnc_actf / cnc_acts: the value word of one value record (zero-extended
+/// from a shorter payload, as FANUC's library reads it).
+#[derive(Debug, Clone, Copy)]
+pub struct Actual {
+    pub cmd: u16,
+}
+
+impl Call for Actual {
+    type Output = i32;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(self.cmd, &[])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<i32> {
+        Ok(i32::from_be_bytes(zext(&sub(resp, 0)?.payload)))
+    }
+}
+
+pub fn actual(cmd: u16) -> Actual {
+    Actual { cmd }
+}
+
+/// The whole value records of subpacket `i`: a ragged tail (fewer than 8
+/// bytes) is no record, as FANUC's library counts them (payload / 8).
+pub fn whole_records(resp: &[RespSub], i: usize) -> Result<Vec<Value>> {
+    whole(&sub(resp, i)?.payload, 8)
 }
 
 /// cnc_absolute & co.: 0x26[code, axis], value records.
-pub fn position(code: i32, axis: i16) -> Single<Vec<Value>> {
-    Single::new(ReqSub::cnc(POSITION, &[code, i32::from(axis)]))
+#[derive(Debug, Clone, Copy)]
+pub struct AxisPositions {
+    pub code: i32,
+    pub axis: i16,
 }
 
-/// cnc_getfigure.
-pub fn getfigure(data_type: i16) -> Single<Figures> {
-    Single::new(ReqSub::cnc(GETFIGURE, &[i32::from(data_type)]))
+impl Call for AxisPositions {
+    type Output = Vec<Value>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(POSITION, &[self.code, i32::from(self.axis)])]
+    }
+    /// Every whole record (none from an empty or short payload): the
+    /// function checks the count against `length`.
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Value>> {
+        whole_records(resp, 0)
+    }
+}
+
+pub fn position(code: i32, axis: i16) -> AxisPositions {
+    AxisPositions { code, axis }
+}
+
+/// cnc_getfigure: FANUC's library sends type 3 as 5, others as given.
+#[derive(Debug, Clone, Copy)]
+pub struct GetFigure {
+    pub data_type: i16,
+}
+
+impl Call for GetFigure {
+    type Output = Figures;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let t = match self.data_type {
+            3 => 5,
+            t => i32::from(t),
+        };
+        vec![ReqSub::cnc(GETFIGURE, &[t])]
+    }
+    /// The count zero-extended, then every whole 4-byte figure entry.
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Figures> {
+        let p = &sub(resp, 0)?.payload;
+        Ok(Figures {
+            count: i32::from_be_bytes(zext(p)),
+            axes: whole(p.get(4..).unwrap_or(&[]), 4)?,
+        })
+    }
+}
+
+pub fn getfigure(data_type: i16) -> GetFigure {
+    GetFigure { data_type }
 }
 
 // ---------------------------------------------------------------------------
@@ -236,17 +347,24 @@ pub struct Dynamic {
     pub axis: i16,
 }
 
-/// What the frame carries. `pos` = absolute, machine, relative, distance
-/// values (one per record received).
+/// What the frame carries, as far as it was read: FANUC's library writes
+/// each group of fields as it reads its subpacket, so an error in a later
+/// subpacket leaves the earlier fields written. `pos` = absolute, machine,
+/// relative, distance values (one per record received).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct DynamicData {
-    pub alarm: u32,
-    pub prgnum: i32,
-    pub prgmnum: i32,
-    pub seqnum: i32,
-    pub actf: i32,
-    pub acts: i32,
-    pub pos: [Vec<i32>; 4],
+    pub alarm: Option<u32>,
+    /// Running and main program numbers.
+    pub prgnum: Option<(i32, i32)>,
+    pub seqnum: Option<i32>,
+    pub actf: Option<i32>,
+    pub acts: Option<i32>,
+    /// Set once the position subpackets are reached (FANUC writes the axis
+    /// word then, even when the first of them is an error).
+    pub axis: bool,
+    pub pos: Option<[Vec<i32>; 4]>,
+    /// The CNC's error in the subpacket where reading stopped.
+    pub error: Option<Error>,
 }
 
 /// The four 0x26 codes of the dynamic frame, in the struct's order.
@@ -266,30 +384,52 @@ impl Call for Dynamic {
         v.extend(DYNAMIC_POS.map(|c| ReqSub::cnc(POSITION, &[c, a])));
         v
     }
+    /// A frame cut short or a payload shorter than its fields is
+    /// EW_PROTOCOL with nothing to write (FANUC's library reads the next
+    /// subpacket's bytes as the fields); a CNC error ends the reading with
+    /// the fields before it kept.
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<DynamicData> {
-        let alarm: AlarmBits = payload(resp, 0)?;
-        let prg: ProgNums = payload(resp, 1)?;
-        let seq: SeqNum = payload(resp, 2)?;
-        let actf: Value = payload(resp, 3)?;
-        let acts: Value = payload(resp, 4)?;
+        expect_subs(resp, 9)?;
+        let mut d = DynamicData::default();
+        let cnc = |i: usize| -> Result<Option<Error>> {
+            match sub(resp, i) {
+                Ok(_) => Ok(None),
+                Err(e @ Error::Cnc { .. }) => Ok(Some(e)),
+                Err(e) => Err(e),
+            }
+        };
+        macro_rules! step {
+            ($i:expr, $body:expr) => {
+                if let Some(e) = cnc($i)? {
+                    d.error = Some(e);
+                    return Ok(d);
+                }
+                $body;
+            };
+        }
+        step!(0, d.alarm = Some(payload::<AlarmBits>(resp, 0)?.bits));
+        step!(1, {
+            let p: ProgNums = payload(resp, 1)?;
+            d.prgnum = Some((p.data, p.mdata));
+        });
+        step!(2, d.seqnum = Some(payload::<SeqNum>(resp, 2)?.data));
+        step!(3, d.actf = Some(payload::<Value>(resp, 3)?.value));
+        step!(4, d.acts = Some(payload::<Value>(resp, 4)?.value));
+        d.axis = true;
         // One axis needs its record; all axes take what came.
         let need = usize::from(self.axis != -1);
         let mut pos: [Vec<i32>; 4] = Default::default();
         for (k, p) in pos.iter_mut().enumerate() {
-            *p = records(resp, 5 + k, need)?
-                .iter()
-                .map(|v| v.value)
-                .collect();
+            step!(
+                5 + k,
+                *p = records(resp, 5 + k, need)?
+                    .iter()
+                    .map(|v| v.value)
+                    .collect()
+            );
         }
-        Ok(DynamicData {
-            alarm: alarm.bits,
-            prgnum: prg.data,
-            prgmnum: prg.mdata,
-            seqnum: seq.data,
-            actf: actf.value,
-            acts: acts.value,
-            pos,
-        })
+        d.pos = Some(pos);
+        Ok(d)
     }
 }
 
@@ -317,15 +457,27 @@ impl Call for SpindleData {
         }
         vec![ReqSub::cnc(COUNT, &[1]), data, ReqSub::cnc(COUNT, &[1])]
     }
+    /// 30i class: the first count must be readable (an empty or 1-byte
+    /// payload: FANUC's library reads the next subpacket's header as the
+    /// count; ours EW_PROTOCOL); 0 spindles is EW_NOOPT before the data's
+    /// own error; the data are the whole records; the last count's error is
+    /// the result.
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<SpindleReply> {
         if cx.class.is_16i() {
-            let v: Vec<Value> = payload(resp, 0)?;
-            return Ok((cx.max_spindles, v));
+            return Ok((cx.max_spindles, whole_records(resp, 0)?));
         }
-        let n: Count = payload(resp, 0)?;
-        let v: Vec<Value> = payload(resp, 1)?;
-        let _: Count = payload(resp, 2)?;
-        Ok((n.n, v))
+        expect_subs(resp, 3)?;
+        let p = &sub(resp, 0)?.payload;
+        let Some(n) = p.get(..2) else {
+            return Err(Error::short("no spindle count"));
+        };
+        let n = u16::from_be_bytes([n[0], n[1]]);
+        if n == 0 {
+            return Err(Error::local(EW_NOOPT, "the path has no spindle"));
+        }
+        let v = whole_records(resp, 1)?;
+        sub(resp, 2)?;
+        Ok((n, v))
     }
 }
 
