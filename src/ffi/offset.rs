@@ -192,10 +192,21 @@ pub unsafe extern "C" fn cnc_rdzofs(
     ffi_boundary!("cnc_rdzofs", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(zofs)?.cast::<u8>();
-        if len_of(length) < zofs_needed(&h, axis)? {
+        // Compared unsigned, as FANUC's library does (-1 is 65535).
+        if (length as u16 as usize) < zofs_needed(&h, axis)? {
             return Err(Error::length());
         }
-        let v = h.call(&p::rdzofs(number, axis))?;
+        // When the CNC answers an error, FANUC's library has already
+        // written the header and a zero first value: so do we.
+        let v = h.call(&p::rdzofs(number, axis)).inspect_err(|e| {
+            if matches!(e, Error::Cnc { .. }) {
+                unsafe {
+                    put_at(out, 0, number);
+                    put_at(out, 2, axis);
+                    put_at(out, 4, 0i32);
+                }
+            }
+        })?;
         let n = if axis < 0 { h.ctx().axes() } else { 1 };
         if v.len() < n {
             return Err(short());
