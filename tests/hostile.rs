@@ -121,7 +121,9 @@ fn serve(mut s: TcpStream, machine: Arc<Mutex<Machine>>, seed: u64) {
                 data_frames += 1;
                 let mut m = machine.lock();
                 let mut resp: Vec<RespSub> = subs.iter().map(|q| dispatch(&mut *m, q)).collect();
-                if data_frames > 1 {
+                // The start-up exchanges (sysinfo, and a 16i's option probe)
+                // are answered intact, so every reconnect succeeds.
+                if data_frames > 2 {
                     resp = resp
                         .into_iter()
                         .filter_map(|r| mutate(&mut rng, r))
