@@ -3,7 +3,6 @@
 //! request byte, return code, in-out count and output byte must be FANUC's,
 //! except where the DEVIATIONS table of tests/deviations/mod.rs says why not.
 
-#[allow(dead_code)]
 mod common;
 mod deviations;
 #[allow(dead_code)]

@@ -87,18 +87,7 @@ fn first(recs: &[Value]) -> Result<&Value> {
         .ok_or_else(|| Error::short("macro reply carries no record"))
 }
 
-/// Checks cnc_wrmacro / cnc_wrmacror make before any traffic (SPEC.md §5.2):
-/// local variables (#1..#33, any number below 100) cannot be written
-/// (EW_NUMBER), dec_val 32767 is refused (EW_DATA).
-fn check_write(number: c_short, dec_val: c_short) -> Result<()> {
-    if number < FIRST_WRITABLE {
-        return Err(Error::local(EW_NUMBER, "local variables cannot be written"));
-    }
-    check_dec(dec_val)
-}
-
-/// FANUC's library refuses dec_val 32767 (cnc_wrmacro, cnc_wrmacror) and
-/// -32768 / -13108 (cnc_wrmacror) with EW_DATA, accepts -1 (vacant), 3, 16;
+/// FANUC's library refuses dec_val 32767 and -32768 / -13108 (cnc_wrmacror) with EW_DATA, accepts -1 (vacant), 3, 16;
 /// the exact range is not known: we refuse 32767 and anything below -1.
 fn check_dec(dec_val: c_short) -> Result<()> {
     if dec_val == DEC_FORBIDDEN || dec_val < -1 {
@@ -129,7 +118,14 @@ pub unsafe extern "C" fn cnc_wrmacro(
         if length != ODBM_LEN {
             return Err(Error::local(EW_LENGTH, "length must be 10"));
         }
-        check_write(number, dec_val)?;
+        // Only dec_val 32767 is refused; other values (-2 ...) are sent
+        // as they are, as by FANUC's library.
+        if number < FIRST_WRITABLE {
+            return Err(Error::local(EW_NUMBER, "local variables cannot be written"));
+        }
+        if dec_val == DEC_FORBIDDEN {
+            return Err(Error::local(EW_DATA, "dec_val 32767"));
+        }
         h.call(&WriteMacros {
             s: i32::from(number),
             values: vec![(mcr_val as i32, dec_val)],

@@ -56,9 +56,10 @@ impl WriteMacros {
 
     /// The records sent to a CNC of `cx`'s class.
     pub fn records(&self, cx: &Ctx) -> Vec<Value> {
+        // A Series 15 (kind 2) gets base-10 records as the 30i class.
         let base = match cx.class {
+            CncClass::Series16 { kind: 2 } | CncClass::Series30 => BASE_10,
             CncClass::Series16 { .. } => BASE_2,
-            CncClass::Series30 => BASE_10,
         };
         self.values
             .iter()
