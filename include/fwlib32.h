@@ -1557,8 +1557,11 @@ short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
 /*
  Reads the custom macro variables `s_no`..`e_no` into `buf->data`
  (8 bytes per variable, as FANUC's x86-64 library writes them).
- `length` is the buffer's size: `8 + 8 · count`; no more variables than
- fit are written. `datano_s`/`datano_e` are set from the request.
+ `e_no < s_no` is EW_NUMBER without traffic; the request stops at the end
+ of `s_no`'s range (#99, #499, #999) and after 179 variables. Every
+ variable the CNC sends must fit in `length` (`8 + 8 · count`, compared
+ unsigned, after the exchange), else EW_LENGTH and nothing is written.
+ `datano_s` = `s_no`, `datano_e` = `s_no` + variables received - 1.
 
  # Safety
  `buf` must point to `length` writable bytes.
@@ -1635,7 +1638,8 @@ short cnc_rdparainfo(unsigned short FlibHndl,
  negative one max-axes values, any other one value (a non-axis parameter
  read with -1). `length` must be at least 4 + their size (1 for bit and
  byte, 2 word, 4 2-word, 8 real each), checked after the exchange as
- FANUC does (EW_LENGTH with `datano` and `type` written).
+ FANUC does (EW_LENGTH with `datano` and `type` written; below 4 nothing
+ is written). A Series 15 is asked with the 30i command (0x8d).
 
  # Safety
  `param` must point to a writable IODBPSD.

@@ -113,15 +113,17 @@ fn range_read_matches_single_reads() {
 fn range_read_writes_no_more_than_length() {
     let s = sim::start_toml(PROFILE);
     let h = sim::alloc(&s);
-    // Five variables asked for, room for two: the rest stays untouched.
+    // Five variables asked for, room for two: EW_LENGTH after the
+    // exchange, nothing written (as FANUC's library).
     let mut buf = [0xCCu8; 64];
     let r = unsafe { cnc_rdmacror(h, 100, 104, 8 + 8 * 2, buf.as_mut_ptr().cast()) };
-    assert_eq!(r, EW_OK);
-    assert!(buf[8 + 8 * 2..].iter().all(|b| *b == 0xCC), "{buf:?}");
-    assert_eq!(&buf[8..12], &12345i32.to_le_bytes());
-    // Smaller than the header: refused before any traffic.
-    let r = unsafe { cnc_rdmacror(h, 100, 104, 7, buf.as_mut_ptr().cast()) };
     assert_eq!(r, EW_LENGTH);
+    assert!(buf.iter().all(|b| *b == 0xCC), "{buf:?}");
+    // Room for all five: written, and nothing after them.
+    let r = unsafe { cnc_rdmacror(h, 100, 104, 8 + 8 * 5, buf.as_mut_ptr().cast()) };
+    assert_eq!(r, EW_OK);
+    assert!(buf[8 + 8 * 5..].iter().all(|b| *b == 0xCC), "{buf:?}");
+    assert_eq!(&buf[8..12], &12345i32.to_le_bytes());
     sim::free(h);
 }
 

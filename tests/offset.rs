@@ -227,9 +227,12 @@ fn work_offset_protection() {
         assert_eq!(cnc_rdzofs(h, 1, 1, 7, &mut o), EW_LENGTH);
         assert_eq!(cnc_rdzofs(h, 1, -1, 131, &mut o), EW_LENGTH);
         assert_eq!(cnc_rdzofs(h, 1, 33, 8, &mut o), EW_ATTRIB);
-        assert_eq!(cnc_rdzofs(h, 9, 1, 8, &mut o), EW_NUMBER);
         assert_eq!(cnc_rdzofs(h, 1, 1, 8, std::ptr::null_mut()), EW_DATA);
-        assert_eq!(o, IODBZOFS::default(), "nothing written on errors");
+        assert_eq!(o, IODBZOFS::default(), "nothing written on local errors");
+        // The CNC's error: the header and a zero first value are written
+        // (as FANUC's library).
+        assert_eq!(cnc_rdzofs(h, 9, 1, 8, &mut o), EW_NUMBER);
+        assert_eq!((o.datano, o.r#type, o.data[0]), (9, 1, 0));
         let mut r: IODBZOR = std::mem::zeroed();
         assert_eq!(cnc_rdzofsr(h, 3, 1, 1, 100, &mut r), EW_NUMBER);
         // More values than `length` holds: EW_LENGTH after the exchange, nothing written.
@@ -415,8 +418,10 @@ fn work_offsets_negative_axes_are_all_axes() {
         assert_eq!(cnc_wrzofs(h, 132, &mut z), EW_ATTRIB);
         let mut o = IODBZOFS::default();
         assert_eq!(cnc_rdzofs(h, 1, -2, 131, &mut o), EW_LENGTH);
-        assert_eq!(cnc_rdzofs(h, 1, -2, 132, &mut o), EW_ATTRIB);
         assert_eq!(o, IODBZOFS::default());
+        // The CNC's EW_ATTRIB: header written, as by FANUC's library.
+        assert_eq!(cnc_rdzofs(h, 1, -2, 132, &mut o), EW_ATTRIB);
+        assert_eq!((o.datano, o.r#type), (1, -2));
         let mut r: IODBZOR = std::mem::zeroed();
         assert_eq!(cnc_rdzofsr(h, 1, -2, 2, 300, &mut r), EW_ATTRIB);
     }

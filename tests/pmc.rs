@@ -152,16 +152,19 @@ fn buffers_are_bounded_by_length() {
         write(h, R, BYTE, 0, 9, &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10]),
         EW_OK
     );
-    // Ten bytes asked for, room for four: four written, nothing more.
+    // Ten bytes asked for, room for four: EW_LENGTH before any traffic
+    // (as FANUC's library), nothing written.
     let (r, b) = read(h, R, BYTE, 0, 9, 4);
+    assert_eq!(r, EW_LENGTH);
+    assert!(b.iter().all(|x| *x == 0xCC));
+    let (r, b) = read(h, R, WORD, 0, 9, 3);
+    assert_eq!(r, EW_LENGTH);
+    assert!(b.iter().all(|x| *x == 0xCC));
+    // Room for the range: the range written, nothing more.
+    let (r, b) = read(h, R, BYTE, 0, 3, 4);
     assert_eq!(r, EW_OK);
     assert_eq!(&b[8..12], &[1, 2, 3, 4]);
     assert!(b[12..].iter().all(|x| *x == 0xCC));
-    // Room for three bytes of words: one whole word.
-    let (r, b) = read(h, R, WORD, 0, 9, 3);
-    assert_eq!(r, EW_OK);
-    assert_eq!(&b[8..10], &0x0102u16.to_le_bytes());
-    assert!(b[10..].iter().all(|x| *x == 0xCC));
     // length below the header: EW_LENGTH before any traffic.
     let mut buf = [0xCCu8; 16];
     assert_eq!(

@@ -17,6 +17,8 @@ use std::ptr::addr_of_mut;
 const ODBM_LEN: c_short = 10;
 /// Bytes of IODBMR before the records, and per record (l32).
 const IODBMR_HEAD: usize = 8;
+/// Variables one cnc_rdmacror request asks for at most.
+const RDMACROR_MAX: i32 = 179;
 const IODBMR_REC: usize = std::mem::size_of::<IODBMR_data>();
 
 /// Writes one field of a caller's structure.
@@ -59,23 +61,33 @@ pub unsafe extern "C" fn cnc_rdmacro(
     })
 }
 
+/// The end number cnc_rdmacror asks for (as FANUC's library): `e_no`, but
+/// not past the end of the start's range (#0..#99, #100..#499, #500..#999)
+/// and at most 179 variables.
+fn rdmacror_end(s_no: c_short, e_no: c_short) -> i32 {
+    let (s, e) = (i32::from(s_no), i32::from(e_no));
+    e.min(range_end(i64::from(s)) as i32)
+        .min(s + RDMACROR_MAX - 1)
+}
+
+/// The last variable of the range `s` is in, as FANUC's library splits
+/// cnc_rdmacror / cnc_rdmacror2 requests: #0..#99, #100..#499, #500..#999;
+/// other numbers have no end.
+fn range_end(s: i64) -> i64 {
+    match s {
+        0..=99 => 99,
+        100..=499 => 499,
+        500..=999 => 999,
+        _ => i64::from(i32::MAX),
+    }
+}
+
 fn first(recs: &[Value]) -> Result<&Value> {
     recs.first()
         .ok_or_else(|| Error::short("macro reply carries no record"))
 }
 
-/// Checks cnc_wrmacro / cnc_wrmacror make before any traffic (SPEC.md §5.2):
-/// local variables (#1..#33, any number below 100) cannot be written
-/// (EW_NUMBER), dec_val 32767 is refused (EW_DATA).
-fn check_write(number: c_short, dec_val: c_short) -> Result<()> {
-    if number < FIRST_WRITABLE {
-        return Err(Error::local(EW_NUMBER, "local variables cannot be written"));
-    }
-    check_dec(dec_val)
-}
-
-/// FANUC's library refuses dec_val 32767 (cnc_wrmacro, cnc_wrmacror) and
-/// -32768 / -13108 (cnc_wrmacror) with EW_DATA, accepts -1 (vacant), 3, 16;
+/// FANUC's library refuses dec_val 32767 and -32768 / -13108 (cnc_wrmacror) with EW_DATA, accepts -1 (vacant), 3, 16;
 /// the exact range is not known: we refuse 32767 and anything below -1.
 fn check_dec(dec_val: c_short) -> Result<()> {
     if dec_val == DEC_FORBIDDEN || dec_val < -1 {
@@ -106,7 +118,14 @@ pub unsafe extern "C" fn cnc_wrmacro(
         if length != ODBM_LEN {
             return Err(Error::local(EW_LENGTH, "length must be 10"));
         }
-        check_write(number, dec_val)?;
+        // Only dec_val 32767 is refused; other values (-2 ...) are sent
+        // as they are, as by FANUC's library.
+        if number < FIRST_WRITABLE {
+            return Err(Error::local(EW_NUMBER, "local variables cannot be written"));
+        }
+        if dec_val == DEC_FORBIDDEN {
+            return Err(Error::local(EW_DATA, "dec_val 32767"));
+        }
         h.call(&WriteMacros {
             s: i32::from(number),
             values: vec![(mcr_val as i32, dec_val)],
@@ -116,8 +135,11 @@ pub unsafe extern "C" fn cnc_wrmacro(
 
 /// Reads the custom macro variables `s_no`..`e_no` into `buf->data`
 /// (8 bytes per variable, as FANUC's x86-64 library writes them).
-/// `length` is the buffer's size: `8 + 8 · count`; no more variables than
-/// fit are written. `datano_s`/`datano_e` are set from the request.
+/// `e_no < s_no` is EW_NUMBER without traffic; the request stops at the end
+/// of `s_no`'s range (#99, #499, #999) and after 179 variables. Every
+/// variable the CNC sends must fit in `length` (`8 + 8 · count`, compared
+/// unsigned, after the exchange), else EW_LENGTH and nothing is written.
+/// `datano_s` = `s_no`, `datano_e` = `s_no` + variables received - 1.
 ///
 /// # Safety
 /// `buf` must point to `length` writable bytes.
@@ -132,21 +154,28 @@ pub unsafe extern "C" fn cnc_rdmacror(
     ffi_boundary!("cnc_rdmacror", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(buf)?;
-        let room = len_of(length).checked_sub(IODBMR_HEAD);
-        let Some(room) = room else {
-            return Err(Error::length());
-        };
+        if e_no < s_no {
+            return Err(Error::local(EW_NUMBER, "end number below start number"));
+        }
+        if s_no < 0 && h.ctx().class.is_16i() {
+            return Err(Error::local(EW_NUMBER, "negative start number (16i class)"));
+        }
         let recs = h.call(&ReadMacros {
             s: i32::from(s_no),
-            e: i32::from(e_no),
+            e: rdmacror_end(s_no, e_no),
         })?;
-        let want = (i32::from(e_no) - i32::from(s_no) + 1).max(0) as usize;
-        let n = recs.len().min(want).min(room / IODBMR_REC);
+        // `length` is compared unsigned after the exchange, as FANUC's
+        // library does (-1 is 65535 bytes).
+        let n = recs.len();
+        if IODBMR_HEAD + n * IODBMR_REC > length as u16 as usize {
+            return Err(Error::local(EW_LENGTH, "the records do not fit in length"));
+        }
+        let e_no = (i32::from(s_no) + n as i32 - 1) as c_short;
         unsafe {
             set(addr_of_mut!((*out).datano_s), s_no);
             set(addr_of_mut!((*out).datano_e), e_no);
             let data = addr_of_mut!((*out).data).cast::<IODBMR_data>();
-            for (i, r) in recs[..n].iter().enumerate() {
+            for (i, r) in recs.iter().enumerate() {
                 let (v, d) = r.to_decimal();
                 let p = data.add(i);
                 set(addr_of_mut!((*p).mcr_val), v);
@@ -262,12 +291,15 @@ pub unsafe extern "C" fn cnc_rdmacror2(
         }
         let mut got: Vec<f64> = Vec::new();
         let mut s = s_no as u32;
+        // The requests stop at the end of the start's range (#999 ...).
+        let end = range_end(i64::from(s));
         while (got.len() as u32) < want {
-            let n = (want - got.len() as u32).min(RDMACROR2_CHUNK);
+            let left = (end - i64::from(s) + 1).clamp(1, i64::from(u32::MAX)) as u32;
+            let n = (want - got.len() as u32).min(RDMACROR2_CHUNK).min(left);
             let part = h.call(&ReadMacrosDouble { s, n })?;
             let full = part.len() as u32 >= n;
             got.extend(part.iter().take(n as usize).map(|d| d.0));
-            if !full {
+            if !full || i64::from(s) + i64::from(n) > end {
                 break;
             }
             s = s.wrapping_add(n);

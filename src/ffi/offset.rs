@@ -65,7 +65,8 @@ pub unsafe extern "C" fn cnc_rdtofs(
     ffi_boundary!("cnc_rdtofs", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(tofs)?.cast::<u8>();
-        if len_of(length) < 8 {
+        // Compared unsigned, as FANUC's library does (-1 is 65535).
+        if (length as u16) < 8 {
             return Err(Error::length());
         }
         let v = first(&h.call(&p::rdtofs(number, r#type))?)?;
@@ -125,7 +126,8 @@ pub unsafe extern "C" fn cnc_rdtofsr(
         if s_number > e_number {
             return Err(Error::local(EW_NUMBER, "start number after end number"));
         }
-        let room = len_of(length);
+        // Compared unsigned, as FANUC's library does (-1 is 65535).
+        let room = length as u16 as usize;
         let count = (i32::from(e_number) - i32::from(s_number) + 1) as usize;
         let (size, per_number) = tofsr_sizes(r#type);
         if room < 8 + per_number * count {
@@ -190,10 +192,21 @@ pub unsafe extern "C" fn cnc_rdzofs(
     ffi_boundary!("cnc_rdzofs", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(zofs)?.cast::<u8>();
-        if len_of(length) < zofs_needed(&h, axis)? {
+        // Compared unsigned, as FANUC's library does (-1 is 65535).
+        if (length as u16 as usize) < zofs_needed(&h, axis)? {
             return Err(Error::length());
         }
-        let v = h.call(&p::rdzofs(number, axis))?;
+        // When the CNC answers an error, FANUC's library has already
+        // written the header and a zero first value: so do we.
+        let v = h.call(&p::rdzofs(number, axis)).inspect_err(|e| {
+            if matches!(e, Error::Cnc { .. }) {
+                unsafe {
+                    put_at(out, 0, number);
+                    put_at(out, 2, axis);
+                    put_at(out, 4, 0i32);
+                }
+            }
+        })?;
         let n = if axis < 0 { h.ctx().axes() } else { 1 };
         if v.len() < n {
             return Err(short());

@@ -33,9 +33,19 @@ unsafe fn read_one(
         number: number as i32,
         axis,
     })?;
+    // A `length` below the header's 4 bytes: nothing is written.
+    if length < 4 {
+        return Err(Error::local(EW_LENGTH, "length is below the 4-byte header"));
+    }
     let mut head = [0u8; 4];
     head[..2].copy_from_slice(&(item.number as i16).to_le_bytes());
-    head[2..].copy_from_slice(&item.axis.to_le_bytes());
+    // The `type` field: the answer's axis word; from a Series 15, FANUC's
+    // library writes (type << 8) | (axis & 0xff) there, as cnc_rdparar does.
+    let type_field = match h.ctx().class {
+        CncClass::Series16 { kind: 2 } => ((item.ptype & 0xff) << 8) as i16 | (item.axis & 0xff),
+        _ => item.axis,
+    };
+    head[2..].copy_from_slice(&type_field.to_le_bytes());
     unsafe { put(out.cast::<[u8; 4]>(), head) };
     check_length(length, &item)?;
     let data = item.data_bytes();
@@ -49,7 +59,8 @@ unsafe fn read_one(
 /// negative one max-axes values, any other one value (a non-axis parameter
 /// read with -1). `length` must be at least 4 + their size (1 for bit and
 /// byte, 2 word, 4 2-word, 8 real each), checked after the exchange as
-/// FANUC does (EW_LENGTH with `datano` and `type` written).
+/// FANUC does (EW_LENGTH with `datano` and `type` written; below 4 nothing
+/// is written). A Series 15 is asked with the 30i command (0x8d).
 ///
 /// # Safety
 /// `param` must point to a writable IODBPSD.
@@ -165,12 +176,42 @@ unsafe fn put_info(l: &InfoList, read_no: c_ushort, out: *mut u8) {
     unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, b.len()) };
 }
 
-fn read_info(h: &Handle, table: Table, s_number: c_short, read_no: c_ushort) -> Result<InfoList> {
-    h.call(&ReadInfo {
-        table,
-        start: s_number as i32,
-        count: read_no as i32,
-    })
+/// Reads an info list into `out` (ODBPARAIF / ODBDIAGIF). `read_no` 0 is
+/// EW_LENGTH without traffic; at most 178 entries are asked for. When the
+/// CNC answers an error, `info_no` 0 and `prev_no` = `next_no` = `s_number`
+/// are written before it is returned (as FANUC's library does).
+///
+/// # Safety
+/// `out` must point to 6 + 4 · read_no writable bytes.
+unsafe fn read_info(
+    h: &Handle,
+    table: Table,
+    s_number: c_short,
+    read_no: c_ushort,
+    out: *mut u8,
+) -> Result<()> {
+    if read_no == 0 {
+        return Err(Error::local(EW_LENGTH, "read_no is 0"));
+    }
+    let l = h
+        .call(&ReadInfo {
+            table,
+            start: s_number as i32,
+            count: read_no as i32,
+        })
+        .inspect_err(|e| {
+            if matches!(e, Error::Cnc { .. }) {
+                let s = s_number as i32;
+                let empty = InfoList {
+                    prev: s,
+                    next: s,
+                    entries: Vec::new(),
+                };
+                unsafe { put_info(&empty, read_no, out) };
+            }
+        })?;
+    unsafe { put_info(&l, read_no, out) };
+    Ok(())
 }
 
 /// Reads the numbers and attributes of up to `read_no` parameters from
@@ -191,9 +232,7 @@ pub unsafe extern "C" fn cnc_rdparainfo(
     ffi_boundary!("cnc_rdparainfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(paraif)?;
-        let l = read_info(&h, Table::Param, s_number, read_no)?;
-        unsafe { put_info(&l, read_no, out.cast()) };
-        Ok(())
+        unsafe { read_info(&h, Table::Param, s_number, read_no, out.cast()) }
     })
 }
 
@@ -212,9 +251,7 @@ pub unsafe extern "C" fn cnc_rddiaginfo(
     ffi_boundary!("cnc_rddiaginfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(diagif)?;
-        let l = read_info(&h, Table::Diag, s_number, read_no)?;
-        unsafe { put_info(&l, read_no, out.cast()) };
-        Ok(())
+        unsafe { read_info(&h, Table::Diag, s_number, read_no, out.cast()) }
     })
 }
 

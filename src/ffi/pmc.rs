@@ -3,7 +3,7 @@
 use super::{ffi_boundary, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::EW_LENGTH;
+use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::pmc::{
     PMCINFO_MAX, PmcRange, ReadPmc, WritePmc, elem_size, rdpmcinfo, swap_elements,
 };
@@ -46,13 +46,25 @@ pub unsafe extern "C" fn pmc_rdpmcrng(
     ffi_boundary!("pmc_rdpmcrng", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(buf)?;
-        let room = room(length)?;
+        // FANUC's library checks before any traffic: the data type, the
+        // order of the numbers, then that `length` holds the header and
+        // every address of the range (one byte each).
+        if elem_size(data_type).is_none() {
+            return Err(Error::local(EW_ATTRIB, "unknown PMC data type"));
+        }
+        if e_number < s_number {
+            return Err(Error::local(EW_NUMBER, "end address below start address"));
+        }
         let range = PmcRange {
             adr_type,
             data_type,
             s: s_number,
             e: e_number,
         };
+        if (length as usize) < HEAD + range.span() {
+            return Err(Error::local(EW_LENGTH, "length does not hold the range"));
+        }
+        let room = room(length)?;
         let mut data = h.call_pmc(&ReadPmc(range))?;
         let size = elem_size(data_type).unwrap_or(1);
         let n = data.len().min(range.span()).min(room) / size * size;

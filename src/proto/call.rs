@@ -125,3 +125,13 @@ impl<T: Wire> Call for Single<T> {
         payload_padded(resp, 0, self.pad)
     }
 }
+
+/// The whole records of subpacket `i`'s payload; a ragged tail (part of a
+/// record) is ignored, as FANUC's library ignores it.
+pub fn records<T: Wire + Default>(resp: &[RespSub], i: usize) -> Result<Vec<T>> {
+    let p = &sub(resp, i)?.payload;
+    let size = T::default().to_bytes().len().max(1);
+    p.chunks_exact(size)
+        .map(|c| T::from_bytes(c).map_err(Into::into))
+        .collect()
+}

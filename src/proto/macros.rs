@@ -1,7 +1,7 @@
 //! Custom macro variables (SPEC.md §5.2): read and write 8-byte value
 //! records ([`Value`]) with command 0x0015 / 0x0016.
 
-use super::call::{Call, Ctx, payload, sub};
+use super::call::{Call, Ctx, payload, records, sub};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Value};
@@ -34,7 +34,7 @@ impl Call for ReadMacros {
         vec![ReqSub::cnc(RDMACRO, &[self.s, self.e])]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Value>> {
-        payload(resp, 0)
+        records(resp, 0)
     }
 }
 
@@ -56,9 +56,10 @@ impl WriteMacros {
 
     /// The records sent to a CNC of `cx`'s class.
     pub fn records(&self, cx: &Ctx) -> Vec<Value> {
+        // A Series 15 (kind 2) gets base-10 records as the 30i class.
         let base = match cx.class {
+            CncClass::Series16 { kind: 2 } | CncClass::Series30 => BASE_10,
             CncClass::Series16 { .. } => BASE_2,
-            CncClass::Series30 => BASE_10,
         };
         self.values
             .iter()
@@ -174,7 +175,7 @@ impl Call for ReadMacrosDouble {
         vec![ReqSub::cnc(RDMACROR2, &[self.s as i32, self.n as i32])]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Double>> {
-        payload(resp, 0)
+        records(resp, 0)
     }
 }
 

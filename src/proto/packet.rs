@@ -36,8 +36,13 @@ impl ReqSub {
     pub fn cnc(cmd: u16, args: &[i32]) -> ReqSub {
         ReqSub::with_class(CLASS_CNC, cmd, args)
     }
+    /// A PMC-class subpacket: always path 1 (the PMC is not per path; FANUC's
+    /// library sends path 1 whatever the handle's current path).
     pub fn pmc(cmd: u16, args: &[i32]) -> ReqSub {
-        ReqSub::with_class(CLASS_PMC, cmd, args)
+        ReqSub {
+            path: 1,
+            ..ReqSub::with_class(CLASS_PMC, cmd, args)
+        }
     }
     fn with_class(class: u16, cmd: u16, args: &[i32]) -> ReqSub {
         let mut a = [0i32; 5];

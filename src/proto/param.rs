@@ -35,6 +35,12 @@ pub const DIAGNOSS16: u16 = 0x0030;
 pub const RDDIAGINFO: u16 = 0x0031;
 /// 30i: the attribute record of one diagnosis item [number, 1] (28 bytes).
 pub const DIAGTYPE: u16 = 0x00a2;
+/// Series 15: parameter numbers and attributes [s, n] (cnc_rdparainfo).
+pub const RDPARAINFO15: u16 = 0x008f;
+/// Series 15: diagnosis numbers and attributes [s, n] (cnc_rddiaginfo).
+pub const RDDIAGINFO15: u16 = 0x0094;
+/// Entries one cnc_rdparainfo / cnc_rddiaginfo request asks for at most.
+pub const INFO_MAX: i32 = 178;
 /// cnc_rdparanum: smallest, largest and count of parameter numbers.
 pub const RDPARANUM: u16 = 0x0011;
 /// cnc_rddiagnum: the same for diagnosis data.
@@ -241,9 +247,11 @@ pub enum Table {
 impl Table {
     pub fn read_cmd(self, class: CncClass) -> u16 {
         match (self, class) {
-            (Table::Param, CncClass::Series30) => RDPARAM,
+            // A Series 15 (kind 2) is asked with the 30i commands and
+            // answers in the 16i value form.
+            (Table::Param, CncClass::Series30 | CncClass::Series16 { kind: 2 }) => RDPARAM,
             (Table::Param, CncClass::Series16 { .. }) => RDPARAM16,
-            (Table::Diag, CncClass::Series30) => DIAGNOSS,
+            (Table::Diag, CncClass::Series30 | CncClass::Series16 { kind: 2 }) => DIAGNOSS,
             (Table::Diag, CncClass::Series16 { .. }) => DIAGNOSS16,
         }
     }
@@ -253,10 +261,13 @@ impl Table {
             Table::Diag => Elem::of_diag(t),
         }
     }
-    pub fn info_cmd(self) -> u16 {
-        match self {
-            Table::Param => RDPARAINFO,
-            Table::Diag => RDDIAGINFO,
+    /// The info-list command; a Series 15 (kind 2) has its own.
+    pub fn info_cmd(self, class: CncClass) -> u16 {
+        match (self, class) {
+            (Table::Param, CncClass::Series16 { kind: 2 }) => RDPARAINFO15,
+            (Table::Diag, CncClass::Series16 { kind: 2 }) => RDDIAGINFO15,
+            (Table::Param, _) => RDPARAINFO,
+            (Table::Diag, _) => RDDIAGINFO,
         }
     }
 }
@@ -267,6 +278,8 @@ impl Table {
 pub struct Item {
     pub number: i32,
     pub axis: i16,
+    /// The answer's type word.
+    pub ptype: u16,
     /// None: a type code the library writes no value for.
     pub elem: Option<Elem>,
     pub values: Vec<Num>,
@@ -325,6 +338,7 @@ impl Call for ReadOne {
                 Ok(Item {
                     number: p.number,
                     axis: p.axis,
+                    ptype: p.ptype,
                     elem,
                     values: p.values[..count]
                         .iter()
@@ -355,6 +369,7 @@ impl Call for ReadOne {
                 Ok(Item {
                     number: p.number,
                     axis: p.axis,
+                    ptype: p.ptype,
                     elem,
                     values: values[..count].to_vec(),
                 })
@@ -463,10 +478,10 @@ pub struct ReadInfo {
 
 impl Call for ReadInfo {
     type Output = InfoList;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
         vec![ReqSub::cnc(
-            self.table.info_cmd(),
-            &[self.start, self.count],
+            self.table.info_cmd(cx.class),
+            &[self.start, self.count.min(INFO_MAX)],
         )]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<InfoList> {

@@ -320,6 +320,14 @@ impl CncService for Machine {
             };
             return Ok(p.to_bytes());
         }
+        if c.class == Class::Series16 && c.kind == 2 && s == e {
+            // A Series 15 reads parameters and diagnosis data with the 30i
+            // commands, answered in the 16i value form (as FANUC's library
+            // reads them).
+            return self
+                .table_read16(path, table, s, axis)
+                .map(|p| p.to_bytes());
+        }
         if c.class != Class::Series30 {
             return Err(CncError::FUNC);
         }
