@@ -504,11 +504,16 @@ fn run_against(profile: Profile, seed: u64) {
         println!("{name:20} {c:?}");
     }
     // The mutations reached the decoders: most functions saw both success
-    // and a protocol error.
+    // and an error (many read a short answer as FANUC's library does, so
+    // the error is not always EW_PROTOCOL), and some saw EW_PROTOCOL.
     let both = codes
         .values()
-        .filter(|c| c.contains(&EW_OK) && c.contains(&EW_PROTOCOL))
+        .filter(|c| c.contains(&EW_OK) && c.iter().any(|r| *r != EW_OK))
         .count();
+    assert!(
+        codes.values().any(|c| c.contains(&EW_PROTOCOL)),
+        "no mutation reached a decoder's length checks: {codes:?}"
+    );
     assert!(both * 2 > PROBES.len(), "mutations too mild: {codes:?}");
 }
 

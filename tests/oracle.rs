@@ -49,7 +49,11 @@ fn oracle_vectors_replay() {
         .filter(|(i, _)| toolchain::runner().is_empty() || i % 8 == 0)
         .map(|(_, c)| c)
         .collect();
-    assert!(!cases.is_empty(), "no recorded case in tests/vectors");
+    assert!(
+        !only.is_empty() || cases.len() >= 1000,
+        "only {} recorded cases in tests/vectors",
+        cases.len()
+    );
     let next = Mutex::new(0usize);
     let failures = Mutex::new(Vec::new());
     let (passed, deviated) = (Mutex::new(0usize), Mutex::new(0usize));

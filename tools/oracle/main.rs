@@ -362,7 +362,8 @@ fn main() {
             for f in files {
                 for c in common::load_file(&f).cases {
                     n += 1;
-                    let m = replay::replay_case(|| std::process::Command::new(&probe_exe), &lib, &c);
+                    let m =
+                        replay::replay_case(|| std::process::Command::new(&probe_exe), &lib, &c);
                     if !m.is_empty() {
                         bad += 1;
                         println!("DIFF {}/{}\n{}", c.function, c.name, m.join("\n"));
