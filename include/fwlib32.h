@@ -392,6 +392,19 @@ typedef struct ODBALMMSG2 {
 } ODBALMMSG2;
 
 /*
+ cnc_rdalmmsg3: one alarm with a 256-character message (declared for
+ programs that call it; no FANUC Ethernet library implements it).
+ */
+typedef struct ODBALMMSG3 {
+    LONG alm_no;
+    short type;
+    short axis;
+    short dummy;
+    short msg_len;
+    char alm_msg[256];
+} ODBALMMSG3;
+
+/*
  cnc_rdaxisdata: one value of one axis or spindle.
  */
 typedef struct ODBAXDT {
@@ -525,6 +538,15 @@ typedef struct ODBDY2 {
     LONG acts;
     union ODBDY_POS pos;
 } ODBDY2;
+
+/*
+ cnc_rdexecpt: a program pointer (declared for programs that call it; no
+ FANUC Ethernet library implements it).
+ */
+typedef struct PRGPNT {
+    LONG prog_no;
+    LONG blk_no;
+} PRGPNT;
 
 /*
  cnc_rdmacro: one custom macro variable. The value is
@@ -1156,6 +1178,16 @@ short cnc_alarm2(unsigned short FlibHndl, long *alarm);
 short cnc_allclibhdl3(const char *ip, unsigned short port, long timeout, unsigned short *FlibHndl);
 
 /*
+ Allocates a handle on FANUC's HSSB (optical fibre) driver, which an
+ Ethernet machine does not have: `EW_MMCSYS` (-3), as FANUC's library
+ answers without it. `*FlibHndl` is left as it was.
+
+ # Safety
+ Nothing is written through the pointer.
+ */
+short cnc_allclibhndl(unsigned short *FlibHndl);
+
+/*
  Connects to the CNC at `ip:port` (or shares the existing connection to
  it) and returns a handle in `*FlibHndl`. `timeout` is in seconds; 0 or
  less waits forever.
@@ -1391,6 +1423,14 @@ short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBAL
 short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
 
 /*
+ Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on Ethernet.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short cnc_rdalmmsg3(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG3 *almmsg);
+
+/*
  Reads several values of all axes (`cls` 1 positions etc., types 0..17),
  servo data (`cls` 2, types 0/1 load, 2 current), spindles (`cls` 3 all spindles / `cls` 4
  spindle 1, types 0..4: load, speed, ...) or speeds (`cls` 5, types 0
@@ -1526,6 +1566,14 @@ short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct O
  `length`, `blknum` writable; `data` must have `*length` writable bytes.
  */
 short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blknum, char *data);
+
+/*
+ Reads the execution pointer: HSSB only; `EW_VERSION` (-7) on Ethernet.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
 
 /*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched).
@@ -1755,6 +1803,19 @@ short cnc_rdprogdir3(unsigned short FlibHndl,
                      struct PRGDIR3 *buf);
 
 /*
+ Reads program lines: HSSB only; `EW_VERSION` (-7) on Ethernet.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short cnc_rdprogline(unsigned short FlibHndl,
+                     long prog_no,
+                     unsigned long line_no,
+                     char *prog_data,
+                     unsigned long *line_len,
+                     unsigned long *data_len);
+
+/*
  Reads the sequence number of the block being executed.
 
  # Safety
@@ -1771,6 +1832,14 @@ short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
  writable ODBSPDLNAME.
  */
 short cnc_rdspdlname(unsigned short FlibHndl, short *data_num, struct ODBSPDLNAME *spdlname);
+
+/*
+ Reads spindle names (multi-path form): `EW_VERSION` (-7) on Ethernet.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short cnc_rdspdlnamem(unsigned short FlibHndl, short *data_num, struct ODBSPDLNAME *spdlname);
 
 /*
  Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
@@ -1988,6 +2057,24 @@ short cnc_statinfo(unsigned short FlibHndl, struct ODBST *statinfo);
  `statinfo` must point to a writable ODBST2.
  */
 short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
+
+/*
+ Ends reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
+ */
+short cnc_svdtendrd(unsigned short FlibHndl);
+
+/*
+ Reads servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short cnc_svdtrddata(unsigned short FlibHndl, short *stat, long *length, void *data);
+
+/*
+ Starts reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
+ */
+short cnc_svdtstartrd(unsigned short FlibHndl, short axis);
 
 /*
  Reads the CNC's system information (series, version, axes) of the

@@ -19,6 +19,6 @@ pub mod types;
 // The exported C functions, callable from Rust too. Areas fill in one at a time.
 #[allow(unused_imports)]
 pub use ffi::{
-    alarm::*, handle::*, macros::*, offset::*, param::*, pmc::*, position::*, program::*,
-    status::*, tool::*, upload::*,
+    absent::*, alarm::*, handle::*, macros::*, offset::*, param::*, pmc::*, position::*,
+    program::*, status::*, tool::*, upload::*,
 };

@@ -330,6 +330,8 @@ rust_layouts! {
     ODBALM { dummy, data }
     ODBALMMSG { alm_no, r#type, axis, dummy, msg_len, alm_msg }
     ODBALMMSG2 { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ODBALMMSG3 { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    PRGPNT { prog_no, blk_no }
     ALMINFO { u }
     OPMSG { datano, r#type, char_num, data }
 

@@ -1,6 +1,7 @@
 //! The C ABI: one module per API area. Every exported body runs inside
 //! [`ffi_boundary!`], so a panic becomes `EW_UNEXP` instead of crossing into C.
 
+pub mod absent;
 pub mod alarm;
 pub mod handle;
 pub mod macros;

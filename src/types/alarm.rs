@@ -50,6 +50,19 @@ impl Default for ODBALMMSG2 {
     }
 }
 
+/// cnc_rdalmmsg3: one alarm with a 256-character message (declared for
+/// programs that call it; no FANUC Ethernet library implements it).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBALMMSG3 {
+    pub alm_no: LONG,
+    pub r#type: c_short,
+    pub axis: c_short,
+    pub dummy: c_short,
+    pub msg_len: c_short,
+    pub alm_msg: [c_char; 256],
+}
+
 /// ALMINFO type 0 record: axis bits and alarm number.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -6,6 +6,15 @@ use std::os::raw::{c_char, c_short};
 
 // --- program ---
 
+/// cnc_rdexecpt: a program pointer (declared for programs that call it; no
+/// FANUC Ethernet library implements it).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PRGPNT {
+    pub prog_no: LONG,
+    pub blk_no: LONG,
+}
+
 /// cnc_rdprgnum: running and main program numbers (low 16 bits, as FANUC's).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
