@@ -13,7 +13,7 @@ use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
 
 /// One call on a handle.
-type Call = Box<dyn Fn(c_ushort) -> c_short>;
+type Call<'a> = Box<dyn Fn(c_ushort) -> c_short + 'a>;
 
 #[test]
 fn declared_but_not_on_ethernet() {
@@ -45,7 +45,7 @@ fn declared_but_not_on_ethernet() {
     let mut buf = [0xCCu8; 512];
     let b = buf.as_mut_ptr();
     let np: *mut c_short = Box::into_raw(Box::new(4));
-    let calls: [(&str, Call); 7] = [
+    let calls: [(&str, Call<'_>); 7] = [
         (
             "cnc_rdexecpt",
             Box::new(|h| unsafe { cnc_rdexecpt(h, b.cast(), b.add(8).cast()) }),
