@@ -478,6 +478,9 @@ pub unsafe extern "C" fn cnc_rdspmeter(
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(loadmeter)?;
+        if limit <= 0 {
+            return Err(Error::length());
+        }
         let (load, speed) = match r#type {
             0 => (true, false),
             1 => (false, true),
