@@ -446,6 +446,9 @@ pub unsafe extern "C" fn cnc_rdsvmeter(
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(loadmeter)?;
+        if limit <= 0 {
+            return Err(Error::length());
+        }
         let r = h.call(&AxisDataCall {
             what: AxisData::Servo(vec![1]),
             limit,
@@ -454,7 +457,7 @@ pub unsafe extern "C" fn cnc_rdsvmeter(
             unsafe { put_load(&raw mut (*out.add(i)).svload, v, 0) };
         }
         unsafe { put(data_num, r.count as c_short) };
-        Ok(())
+        r.error.map_or(Ok(()), Err)
     })
 }
 
@@ -475,6 +478,9 @@ pub unsafe extern "C" fn cnc_rdspmeter(
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(loadmeter)?;
+        if limit <= 0 {
+            return Err(Error::length());
+        }
         let (load, speed) = match r#type {
             0 => (true, false),
             1 => (false, true),
@@ -508,7 +514,7 @@ pub unsafe extern "C" fn cnc_rdspmeter(
             }
         }
         unsafe { put(data_num, r.count as c_short) };
-        Ok(())
+        r.error.map_or(Ok(()), Err)
     })
 }
 
@@ -690,7 +696,7 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
             }
         }
         unsafe { put(len, r.count as c_short) };
-        Ok(())
+        r.error.map_or(Ok(()), Err)
     })
 }
 
@@ -738,7 +744,7 @@ pub unsafe extern "C" fn cnc_rdposition(
             }
         }
         unsafe { put(data_num, r.count as c_short) };
-        Ok(())
+        r.error.map_or(Ok(()), Err)
     })
 }
 

@@ -131,10 +131,14 @@ impl Wire for AxisNames {
         self.axes.encode(w);
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        Ok(AxisNames {
-            count: r.i32()?,
-            axes: Vec::decode(r)?,
-        })
+        // Whole entries only (FANUC's library ignores a longer tail).
+        let count = r.i32()?;
+        let n = r.remaining() / 16;
+        let axes = (0..n)
+            .map(|_| PosNames::decode(r))
+            .collect::<Result<_, _>>()?;
+        r.bytes(r.remaining())?;
+        Ok(AxisNames { count, axes })
     }
 }
 
@@ -523,6 +527,9 @@ pub struct AxisValue {
 pub struct AxisDataReply {
     pub count: usize,
     pub values: Vec<Vec<AxisValue>>,
+    /// A CNC error in a subpacket after the first count: FANUC's library
+    /// still writes the count (and nothing else) before returning it.
+    pub error: Option<Error>,
 }
 
 /// The frame plus the caller's limit (`*len` / `*num`).
@@ -540,20 +547,29 @@ impl AxisDataCall {
         let servo = matches!(self.what, AxisData::Servo(_));
         let mut got = Vec::with_capacity(codes.len());
         for k in 0..codes.len() {
-            got.push(payload::<Vec<Value>>(resp, k)?);
+            got.push(whole_records(resp, k)?);
         }
-        let names: Vec<Name> = payload(resp, codes.len())?;
+        // The names are the frame's last subpacket: FANUC's library reads
+        // the entries past its payload as zeros (its receive buffer is zero
+        // past the frame).
+        let names_p = &sub(resp, codes.len())?.payload;
         let max = if servo {
             cx.axes()
         } else {
             usize::from(cx.max_spindles)
         };
         // FANUC reads max-axes/spindles records regardless of the payload
-        // size; we stop at the records actually answered (never garbage).
-        let answered = got.iter().map(Vec::len).chain([names.len()]).min();
+        // size (a real CNC answers that many); we stop at the whole records
+        // actually answered (never garbage).
+        let answered = got.iter().map(Vec::len).min();
         let count = max
             .min(self.limit.max(0) as usize)
             .min(answered.unwrap_or(0));
+        let names: Vec<Name> = (0..count)
+            .map(|i| Name {
+                bytes: zext(names_p.get(4 * i..).unwrap_or(&[])),
+            })
+            .collect();
         let mut values = Vec::with_capacity(codes.len());
         for recs in &got {
             let row = recs
@@ -575,7 +591,11 @@ impl AxisDataCall {
                 .collect();
             values.push(row);
         }
-        Ok(AxisDataReply { count, values })
+        Ok(AxisDataReply {
+            count,
+            values,
+            error: None,
+        })
     }
 
     fn count_arg(&self) -> i32 {
@@ -662,12 +682,24 @@ impl Call for AxisDataCall {
         if let AxisData::Speed(cmds) = &self.what {
             return decode_speed(cmds, self.limit, resp);
         }
-        let first: Count = payload(resp, 0)?;
         let (codes, data_at) = match &self.what {
             AxisData::Positions(c) => (c, 5),
             AxisData::Servo(c) | AxisData::Spindle(c) | AxisData::FirstSpindle(c) => (c, 2),
             AxisData::Speed(_) => unreachable!("decoded above"),
         };
+        expect_subs(resp, data_at + codes.len() + 1)?;
+        let first: Count = payload(resp, 0)?;
+        // A CNC error after the first count: the count is still written.
+        let limited = usize::from(first.n).min(self.limit.max(0) as usize);
+        for i in 1..resp.len() {
+            if let Err(e @ Error::Cnc { .. }) = sub(resp, i) {
+                return Ok(AxisDataReply {
+                    count: limited,
+                    values: vec![vec![]; codes.len()],
+                    error: Some(e),
+                });
+            }
+        }
         // Errors count in subpacket order.
         let mut got = Vec::with_capacity(codes.len());
         let names = match &self.what {
@@ -743,7 +775,11 @@ impl Call for AxisDataCall {
             }
             values.push(row);
         }
-        Ok(AxisDataReply { count, values })
+        Ok(AxisDataReply {
+            count,
+            values,
+            error: None,
+        })
     }
 }
 
@@ -806,7 +842,11 @@ fn decode_speed(cmds: &[u16], limit: i16, resp: &[RespSub]) -> Result<AxisDataRe
         }
         values.push(if count == 1 { vec![v] } else { Vec::new() });
     }
-    Ok(AxisDataReply { count, values })
+    Ok(AxisDataReply {
+        count,
+        values,
+        error: None,
+    })
 }
 
 // ---------------------------------------------------------------------------

@@ -205,7 +205,11 @@ impl Machine {
         };
         let rec = |s: &Spindle| Value::decimal(pick(s), 0);
         match sp_no {
-            -1 => Ok(p.spindles.iter().map(rec).collect()),
+            -1 => {
+                let mut v: Vec<Value> = p.spindles.iter().map(rec).collect();
+                self.pad_16i(&mut v, self.profile.cnc.max_spindles);
+                Ok(v)
+            }
             n if n >= 1 && (n as usize) <= p.spindles.len() => {
                 Ok(vec![rec(&p.spindles[n as usize - 1])])
             }
@@ -227,8 +231,21 @@ impl Machine {
             }
         };
         match code {
-            1 | 3 => Ok(p.axes.iter().map(rec).collect()),
+            1 | 3 => {
+                let mut v: Vec<Value> = p.axes.iter().map(rec).collect();
+                self.pad_16i(&mut v, self.profile.cnc.max_axes);
+                Ok(v)
+            }
             _ => Err(NUMBER),
+        }
+    }
+
+    /// A 16i-class CNC answers all-axes / all-spindles data with a record
+    /// for every axis (spindle) it can have, the unused ones zero: FANUC's
+    /// library reads that many records.
+    fn pad_16i(&self, v: &mut Vec<Value>, max: u16) {
+        if self.profile.cnc.class == super::profile::Class::Series16 {
+            v.resize(usize::from(max).max(v.len()), UNUSED);
         }
     }
 

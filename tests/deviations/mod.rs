@@ -128,6 +128,39 @@ pub const ORACLE: &[Deviation] = &[
         reason: COUNT_PAST_PAYLOAD,
     },
     Deviation {
+        function: "cnc_rdaxisdata",
+        cases: &[
+            "rdaxisdata_v3_shape_empty",
+            "rdaxisdata_v3_shape_half",
+            "rdaxisdata_v3_shape_short1",
+        ],
+        reason: AXIS_COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdaxisdata",
+        cases: &["rdaxisdata_v3_shape_half_sub2"],
+        reason: NAMES_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdsvmeter",
+        cases: &[
+            "rdsvmeter_v3_shape_empty",
+            "rdsvmeter_v3_shape_half",
+            "rdsvmeter_v3_shape_short1",
+        ],
+        reason: AXIS_COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdsvmeter",
+        cases: &["rdsvmeter_v3_shape_half_sub2"],
+        reason: NAMES_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdsvmeter",
+        cases: &["rdsvmeter_v2_shape_empty"],
+        reason: "on the 16i class FANUC's library reads max-axes load records whatever the answer holds, from an empty answer the next subpackets' bytes; ours writes the whole records answered (none)",
+    },
+    Deviation {
         function: "cnc_rdcount",
         cases: &[
             "rdcount_v2_shape_empty",
@@ -353,6 +386,12 @@ pub const ORACLE: &[Deviation] = &[
 
 /// cnc_acts2 / cnc_rdspload on the 30i class.
 const COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the spindle count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing";
+
+/// cnc_rdaxisdata / cnc_rdsvmeter on the 30i class.
+const AXIS_COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the axis count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing";
+
+/// cnc_rdaxisdata / cnc_rdsvmeter on the 30i class.
+const NAMES_PAST_PAYLOAD: &str = "FANUC's library reads the axis names a short 0x89 answer lacks from the next subpacket's header; ours returns EW_PROTOCOL (-17) and writes nothing";
 
 /// cnc_rddynamic / cnc_rddynamic2.
 const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload shorter than them from the next subpacket's header, and with a subpacket missing reads the later ones shifted, writing that into the caller's struct; ours returns EW_PROTOCOL (-17) and writes nothing";
