@@ -2178,7 +2178,8 @@ short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_
 /*
  Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
  `buf->data` (8 bytes per variable, l32) in one request. `length` must
- cover the records (at least `8 · count + 6`); numbers below 100 or a
+ cover the records (at least `8 · count + 6`, and 8 before anything else
+ is checked); numbers below 100 or a
  reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
  all before any traffic.
 
@@ -2191,7 +2192,9 @@ short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
  Writes `*num` custom macro variables from `s_no` as IEEE doubles;
  `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
  as in FANUC's x86-64 library. Requests carry at most 177 variables; the
- next is sent only when the CNC wrote the whole previous one.
+ next is sent only when the CNC wrote the whole previous one. As FANUC's
+ library, the variables past the end of the start's range (#99, #499,
+ #999) are left out, and a count cut short in the reply reads as 0.
 
  # Safety
  `num` must point to a 4-byte count, `data` to `*num` readable doubles.
@@ -2204,7 +2207,10 @@ short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
  (one value, or one per axis of the path for `type` -1), else EW_LENGTH
  and nothing is written. The input is read with the l32 layout (values
  from offset 4). The write is sent once; the CNC decides whether it is
- allowed (parameter write enable, MDI mode ...).
+ allowed (parameter write enable, MDI mode ...). A 16i-class write
+ carries one value slot per axis of the CNC's maximum (as FANUC's library);
+ a Series 15 gets EW_LENGTH without traffic for every length, as from
+ FANUC's library.
 
  # Safety
  `param` must point to a readable IODBPSD.

@@ -186,8 +186,33 @@ fn num(s: &str) -> i64 {
     }
 }
 
+/// The open answer a case that records no connect of its own was made
+/// with: the recorded cnc_allclibhndl3 case of its class.
+fn handshake_open(files: &[VectorFile], case: &Case) -> Option<OpenBody> {
+    let name = match case.profile.as_str() {
+        "v2" => "v2_kind1",
+        "v3" => "v3_one_path",
+        _ => return None,
+    };
+    let c = files
+        .iter()
+        .filter(|f| f.function == "cnc_allclibhndl3")
+        .flat_map(|f| &f.cases)
+        .find(|c| c.name == name)?;
+    c.calls
+        .iter()
+        .flat_map(|c| &c.frames)
+        .find_map(|e| match &e.ev {
+            Ev::Resp(b) if e.ftype() == Some(ftype::OPEN_RESP) => {
+                let (f, _) = Frame::decode(b).ok()??;
+                OpenBody::decode(f.version, &f.body).ok()
+            }
+            _ => None,
+        })
+}
+
 /// Checks one case's request frames; (frames checked, mismatches).
-fn check_requests(case: &Case) -> (usize, Vec<String>) {
+fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<String>) {
     let id = format!("{}/{}", case.function, case.name);
     let mut cx = Ctx {
         class: if case.profile == "v2" {
@@ -197,6 +222,11 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
         },
         ..Ctx::default()
     };
+    if let Some(o) = handshake {
+        cx.class = o.class();
+        cx.max_axes = o.max_axes(1);
+        cx.max_spindles = o.max_spindles();
+    }
     let mut path: u16 = 1;
     let (mut n, mut bad) = (0, Vec::new());
     for (i, call) in case.calls.iter().enumerate() {
@@ -215,6 +245,8 @@ fn check_requests(case: &Case) -> (usize, Vec<String>) {
                     let (f, _) = Frame::decode(b).unwrap().unwrap();
                     if let Ok(o) = OpenBody::decode(f.version, &f.body) {
                         cx.class = o.class();
+                        cx.max_axes = o.max_axes(path as usize);
+                        cx.max_spindles = o.max_spindles();
                         open = Some(o);
                     }
                 }
@@ -512,7 +544,8 @@ fn request_frames_equal_fanuc() {
         return;
     }
     let (mut frames, mut cases, mut bad) = (0, 0, Vec::new());
-    for f in load_vectors() {
+    let files = load_vectors();
+    for f in &files {
         for case in &f.cases {
             if let Some(c) = case.calls.iter().find(|c| !KNOWN.contains(&c.word())) {
                 bad.push(format!(
@@ -524,7 +557,7 @@ fn request_frames_equal_fanuc() {
                 continue;
             }
             cases += 1;
-            let (n, b) = check_requests(case);
+            let (n, b) = check_requests(case, handshake_open(&files, case).as_ref());
             frames += n;
             bad.extend(b);
         }
@@ -1017,13 +1050,13 @@ mod param_codec {
                                     values in vec((any::<i32>(), -9i32..=9), 1..=8)) {
             let nums: Vec<Num> = values.iter().map(|(v, d)| Num { value: *v, dec: if ptype == 4 { *d } else { 0 } }).collect();
             let w = WriteParam { number: number as i32, axis, ptype, values: nums.clone() };
-            let p = Param30::from_bytes(&w.payload(CncClass::Series30))?;
+            let p = Param30::from_bytes(&w.payload(CncClass::Series30, WRITE_RECORDS_30))?;
             prop_assert_eq!((p.number, p.axis, p.ptype, p.values.len()), (number as i32, axis, ptype, WRITE_RECORDS_30));
             let back: Vec<Num> = p.values[..nums.len()].iter().map(|v| num_of_value(*v, ptype == 4)).collect();
             prop_assert_eq!(back, nums.clone());
             if ptype != 4 {
-                let p = Param16::from_bytes(&w.payload(CncClass::Series16 { kind: 1 }))?;
-                prop_assert_eq!(p.values.len(), WRITE_VALUES_16);
+                let p = Param16::from_bytes(&w.payload(CncClass::Series16 { kind: 1 }, 8))?;
+                prop_assert_eq!(p.values.len(), 8);
                 prop_assert_eq!(&p.values[..nums.len()], &nums.iter().map(|n| n.value).collect::<Vec<_>>()[..]);
             }
         }

@@ -188,7 +188,8 @@ pub unsafe extern "C" fn cnc_rdmacror(
 
 /// Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
 /// `buf->data` (8 bytes per variable, l32) in one request. `length` must
-/// cover the records (at least `8 · count + 6`); numbers below 100 or a
+/// cover the records (at least `8 · count + 6`, and 8 before anything else
+/// is checked); numbers below 100 or a
 /// reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
 /// all before any traffic.
 ///
@@ -209,6 +210,11 @@ pub unsafe extern "C" fn cnc_wrmacror(
                 addr_of_mut!((*inp).datano_e).read_unaligned(),
             )
         };
+        // FANUC's library refuses a length below 8 before looking at the
+        // numbers.
+        if len_of(length) < 8 {
+            return Err(Error::length());
+        }
         if s < FIRST_WRITABLE || e < s {
             return Err(Error::local(
                 EW_NUMBER,
@@ -317,7 +323,9 @@ pub unsafe extern "C" fn cnc_rdmacror2(
 /// Writes `*num` custom macro variables from `s_no` as IEEE doubles;
 /// `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
 /// as in FANUC's x86-64 library. Requests carry at most 177 variables; the
-/// next is sent only when the CNC wrote the whole previous one.
+/// next is sent only when the CNC wrote the whole previous one. As FANUC's
+/// library, the variables past the end of the start's range (#99, #499,
+/// #999) are left out, and a count cut short in the reply reads as 0.
 ///
 /// # Safety
 /// `num` must point to a 4-byte count, `data` to `*num` readable doubles.
@@ -336,6 +344,10 @@ pub unsafe extern "C" fn cnc_wrmacror2(
         if want == 0 {
             return Err(Error::length());
         }
+        // As the read side, the write stops at the end of the start's
+        // range (#99, #499, #999).
+        let left = (range_end(i64::from(s_no as u32)) - i64::from(s_no as u32) + 1).max(1);
+        let want = want.min(usize::try_from(left).unwrap_or(usize::MAX));
         let values: Vec<Double> = (0..want)
             .map(|i| Double(unsafe { data.add(i).read_unaligned() }))
             .collect();

@@ -119,7 +119,10 @@ pub unsafe extern "C" fn cnc_rddiag(
 /// (one value, or one per axis of the path for `type` -1), else EW_LENGTH
 /// and nothing is written. The input is read with the l32 layout (values
 /// from offset 4). The write is sent once; the CNC decides whether it is
-/// allowed (parameter write enable, MDI mode ...).
+/// allowed (parameter write enable, MDI mode ...). A 16i-class write
+/// carries one value slot per axis of the CNC's maximum (as FANUC's library);
+/// a Series 15 gets EW_LENGTH without traffic for every length, as from
+/// FANUC's library.
 ///
 /// # Safety
 /// `param` must point to a readable IODBPSD.
@@ -132,6 +135,11 @@ pub unsafe extern "C" fn cnc_wrparam(
     ffi_boundary!("cnc_wrparam", {
         let h = handles::get(FlibHndl)?;
         let inp = nonnull(param)?.cast::<u8>();
+        // FANUC's library refuses every length for a Series 15 before any
+        // traffic (the lengths it would take are not known).
+        if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
+            return Err(Error::local(EW_LENGTH, "Series 15: length refused"));
+        }
         let raw: [u8; 260] = unsafe { inp.cast::<[u8; 260]>().read_unaligned() };
         let number = i16::from_le_bytes([raw[0], raw[1]]) as i32;
         let axis = i16::from_le_bytes([raw[2], raw[3]]);

@@ -1,7 +1,7 @@
 //! Custom macro variables (SPEC.md §5.2): read and write 8-byte value
 //! records ([`Value`]) with command 0x0015 / 0x0016.
 
-use super::call::{Call, Ctx, payload, records, sub};
+use super::call::{Call, Ctx, records, sub};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Value};
@@ -193,6 +193,7 @@ impl Call for WriteMacrosDouble {
         vec![ReqSub::cnc(WRMACROR2, &[self.s as i32]).with_payload(self.values.to_bytes())]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<i32> {
-        payload(resp, 0)
+        // FANUC's library reads a count cut short as 0 (zeros follow it).
+        super::call::payload_padded(resp, 0, 4)
     }
 }

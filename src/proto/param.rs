@@ -50,8 +50,6 @@ pub const EXT_PER_FRAME: usize = 8;
 
 /// Records of a 30i write payload (and of an all-axes 30i answer at most).
 pub const WRITE_RECORDS_30: usize = 32;
-/// Values of a 16i write payload.
-pub const WRITE_VALUES_16: usize = 8;
 
 /// A value slot of a parameter payload: a 30i record or a 16i word.
 pub trait Slot: Wire + Copy + Default + PartialEq + std::fmt::Debug {
@@ -535,7 +533,12 @@ impl Call for ParamInfo {
             }
             CncClass::Series16 { .. } => {
                 let l = InfoList::from_bytes(&s.payload).map_err(|_| bad())?;
-                let e = l.entries.first().ok_or_else(bad)?;
+                // FANUC's library wants exactly the one entry asked for (a
+                // longer answer is EW_NUMBER, nothing written).
+                if l.entries.len() != 1 {
+                    return Err(bad());
+                }
+                let e = &l.entries[0];
                 let ptype = (e.ptype & 3) as u16;
                 Ok(WriteInfo {
                     ptype,
@@ -557,8 +560,10 @@ pub struct WriteParam {
 }
 
 impl WriteParam {
-    /// The write payload of the class.
-    pub fn payload(&self, class: CncClass) -> Vec<u8> {
+    /// The write payload of the class. A 16i-class payload has one value
+    /// word per axis of `max_axes` (the CNC's maximum: 8 + 4 · max_axes
+    /// bytes, as FANUC's library sends it).
+    pub fn payload(&self, class: CncClass, max_axes: usize) -> Vec<u8> {
         let real = Elem::of_param(self.ptype) == Some(Elem::Real);
         match class {
             CncClass::Series30 => {
@@ -582,7 +587,7 @@ impl WriteParam {
                 } else {
                     self.values.iter().map(|n| n.value).collect()
                 };
-                values.resize(WRITE_VALUES_16, 0);
+                values.resize(max_axes, 0);
                 Param16 {
                     number: self.number,
                     axis: self.axis,
@@ -602,7 +607,7 @@ impl Call for WriteParam {
             CncClass::Series30 => WRPARAM,
             CncClass::Series16 { .. } => WRPARAM16,
         };
-        vec![ReqSub::cnc(cmd, &[]).with_payload(self.payload(cx.class))]
+        vec![ReqSub::cnc(cmd, &[]).with_payload(self.payload(cx.class, cx.axes()))]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
         sub(resp, 0).map(|_| ())
@@ -851,7 +856,7 @@ impl Packed {
             ptype: self.ptype as u16,
             values: self.values.clone(),
         }
-        .payload(CncClass::Series30)
+        .payload(CncClass::Series30, WRITE_RECORDS_30)
     }
 }
 

@@ -12,7 +12,6 @@ use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::param::{
     InfoEntry, InfoList, NumRange, Param16, Param30, ParamType30, Table, WRITE_RECORDS_30,
-    WRITE_VALUES_16,
 };
 use crate::proto::value::{BASE_10, Value};
 use crate::proto::wire::Wire;
@@ -197,7 +196,7 @@ impl Machine {
         })
     }
 
-    /// 0x008e (30i) / 0x000f (16i, 40 bytes): write parameters. A 30i
+    /// 0x008e (30i) / 0x000f (16i, 8 + 4 · max_axes bytes): write parameters. A 30i
     /// payload is one 264-byte block (cnc_wrparam) or several (cnc_wrparas
     /// sends up to 5). Every block is checked before any is applied, so a
     /// refused subpacket changes nothing and answers the first refusal (a
@@ -206,7 +205,7 @@ impl Machine {
     pub fn table_write(&mut self, path: u16, class16: bool, payload: &[u8]) -> Reply<Vec<u8>> {
         let size = 8 + 8 * WRITE_RECORDS_30;
         let blocks: Vec<&[u8]> = if class16 {
-            if payload.len() != 8 + 4 * WRITE_VALUES_16 {
+            if payload.len() != 8 + 4 * self.profile.cnc.max_axes as usize {
                 return Err(err(ew::EW_LENGTH));
             }
             vec![payload]
