@@ -1132,7 +1132,7 @@ short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct OD
  Reads the actual feed rate (F).
 
  # Safety
- `actualfeed` must point to a writable ODBACT.
+ `actualfeed` must be NULL or point to a writable ODBACT.
  */
 short cnc_actf(unsigned short FlibHndl, struct ODBACT *actualfeed);
 
@@ -1140,7 +1140,7 @@ short cnc_actf(unsigned short FlibHndl, struct ODBACT *actualfeed);
  Reads the actual spindle speed (S).
 
  # Safety
- `actualspindle` must point to a writable ODBACT.
+ `actualspindle` must be NULL or point to a writable ODBACT.
  */
 short cnc_acts(unsigned short FlibHndl, struct ODBACT *actualspindle);
 
@@ -1331,11 +1331,12 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
 short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
 
 /*
- Reads the execution pointer: program number and block number. Writes 4
- bytes into each `long`.
+ Reads the execution pointer: program number and block number (4 bytes
+ written into each `long`).
 
  # Safety
- Both pointers must point to 4 writable bytes.
+ `prog_no` must be NULL or point to a writable long.
+ `blk_no` must be NULL or point to a writable long.
  */
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
 
@@ -1460,10 +1461,10 @@ short cnc_rdaxisdata(unsigned short FlibHndl,
 short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAME *axisname);
 
 /*
- Reads the number of blocks executed. Writes 4 bytes into the `long`.
+ Reads the number of blocks executed (4 bytes written into the `long`).
 
  # Safety
- `prog_bc` must point to 4 writable bytes.
+ `prog_bc` must be NULL or point to a writable long.
  */
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 
@@ -1598,7 +1599,7 @@ short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct OD
  `use_no2` (#500..).
 
  # Safety
- `buf` must point to a writable ODBMVINF.
+ `buf` must be NULL or point to a writable ODBMVINF.
  */
 short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
 
@@ -1755,11 +1756,11 @@ short cnc_rdparar(unsigned short FlibHndl,
 short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struct ODBPOS *position);
 
 /*
- Reads the running and main program numbers (low 16 bits of each, as
+ Reads the running and main program numbers (the low 16 bits of each, as
  FANUC's library stores them in the default ODBPRO's shorts).
 
  # Safety
- `prgnum` must point to a writable ODBPRO.
+ `prgnum` must be NULL or point to a writable ODBPRO.
  */
 short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
 
@@ -1819,7 +1820,7 @@ short cnc_rdprogline(unsigned short FlibHndl,
  Reads the sequence number of the block being executed.
 
  # Safety
- `seqnum` must point to a writable ODBSEQ.
+ `seqnum` must be NULL or point to a writable ODBSEQ.
  */
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 
@@ -1916,7 +1917,7 @@ short cnc_rdtofs(unsigned short FlibHndl,
  Reads the tool offset memory type and the number of offsets.
 
  # Safety
- `tlinf` must point to a writable ODBTLINF.
+ `tlinf` must be NULL or point to a writable ODBTLINF.
  */
 short cnc_rdtofsinfo(unsigned short FlibHndl, struct ODBTLINF *tlinf);
 
@@ -1969,7 +1970,7 @@ short cnc_rdzofs(unsigned short FlibHndl,
  Reads the number of work zero offsets.
 
  # Safety
- `ofs_no` must point to a writable short.
+ `ofs_no` must be NULL or point to a writable short.
  */
 short cnc_rdzofsinfo(unsigned short FlibHndl, short *ofs_no);
 

@@ -1,6 +1,7 @@
 //! fwlib32-rs: a Rust-native, drop-in replacement for FANUC's FOCAS2 Ethernet
 //! library, and a CNC simulator speaking the same protocol.
 //!
+//! * [`spec`]: every FOCAS function described as data, read by all the layers above.
 //! * [`proto`]: the sans-IO codec shared by the client and the simulator.
 //! * [`client`]: connection pairs, sessions, the handle table (blocking std::net).
 //! * [`ffi`]: the exported C functions of `fwlib32.h`.
@@ -14,11 +15,12 @@ pub mod ew;
 pub mod ffi;
 pub mod proto;
 pub mod sim;
+pub mod spec;
 pub mod types;
 
 // The exported C functions, callable from Rust too. Areas fill in one at a time.
 #[allow(unused_imports)]
 pub use ffi::{
-    absent::*, alarm::*, handle::*, macros::*, offset::*, param::*, pmc::*, position::*,
-    program::*, status::*, tool::*, upload::*,
+    absent::*, alarm::*, described::*, handle::*, macros::*, offset::*, param::*, pmc::*,
+    position::*, program::*, status::*, tool::*, upload::*,
 };

@@ -11,6 +11,7 @@ mod common;
 
 use common::*;
 use fwlib32::proto::call::{Call, Ctx};
+use fwlib32::proto::described::Described;
 use fwlib32::proto::frame::{
     CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, MAGIC, ftype, max_body_len,
 };
@@ -338,6 +339,13 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     swap_elements(range.data_type, &mut data);
                                     stamped(&WritePmc { range, data }, &cx, path)
                                 }
+                                // --- described as data (src/spec) ---
+                                w if described(w).is_some() => {
+                                    let nums: Vec<i32> =
+                                        args.iter().map(|a| num(a) as i32).collect();
+                                    let f = described(w).unwrap();
+                                    stamped(&Described { f, args: &nums }, &cx, path)
+                                }
                                 // --- offset ---
                                 "rdtofs" | "rdzofs" | "rdalmhistry" | "rdalmhistry2" => {
                                     offset_request(call.word(), &args, &cx, path)
@@ -346,10 +354,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
                                 }
                                 // --- program ---
-                                "rdprgnum" => stamped(&pp::rdprgnum(), &cx, path),
-                                "rdseqnum" => stamped(&pp::rdseqnum(), &cx, path),
-                                "rdblkcount" => stamped(&pp::rdblkcount(), &cx, path),
-                                "rdactpt" => stamped(&pp::rdactpt(), &cx, path),
                                 "exeprgname" => stamped(&pp::exeprgname(), &cx, path),
                                 "exeprgname2" => stamped(&pp::exeprgname2(), &cx, path),
                                 "rdexecprog" => {
@@ -1243,6 +1247,11 @@ impl Call for Raw {
     }
 }
 
+/// The described function (src/spec) of a probe word.
+fn described(word: &str) -> Option<&'static fwlib32::spec::Func> {
+    fwlib32::spec::FUNCS.iter().find(|f| f.word() == word)
+}
+
 /// The request of a position-area probe word, as src/ffi/position.rs builds it.
 fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
     use fwlib32::proto::position::*;
@@ -1264,8 +1273,6 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
         "rdaxisname" => rdaxisname().request(&cx),
         "rdspdlname" => rdspdlname().request(&cx),
         "rddynamic2" | "rddynamic" => Dynamic { axis: n(0) as i16 }.request(&cx),
-        "actf" => actual(ACTF).request(&cx),
-        "acts" => actual(ACTS).request(&cx),
         "acts2" => SpindleData {
             code: spdl::SPEED_ACT,
             sp_no: n(0) as i16,

@@ -6,10 +6,10 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_LENGTH, EW_NUMBER};
 use crate::proto::macros::{
     DEC_FORBIDDEN, Double, FIRST_WRITABLE, RDMACROR2_CHUNK, ReadMacros, ReadMacrosDouble,
-    WRMACROR2_CHUNK, WriteMacros, WriteMacrosDouble, rdmacroinfo,
+    WRMACROR2_CHUNK, WriteMacros, WriteMacrosDouble,
 };
 use crate::proto::value::Value;
-use crate::types::{IODBMR, IODBMR_data, ODBM, ODBMVINF};
+use crate::types::{IODBMR, IODBMR_data, ODBM};
 use std::os::raw::{c_long, c_short, c_ulong, c_ushort};
 use std::ptr::addr_of_mut;
 
@@ -243,30 +243,6 @@ pub unsafe extern "C" fn cnc_wrmacror(
             s: i32::from(s),
             values,
         })
-    })
-}
-
-/// Reads how many common variables the CNC has: `use_no1` (#100..),
-/// `use_no2` (#500..).
-///
-/// # Safety
-/// `buf` must point to a writable ODBMVINF.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdmacroinfo(FlibHndl: c_ushort, buf: *mut ODBMVINF) -> c_short {
-    ffi_boundary!("cnc_rdmacroinfo", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(buf)?;
-        let i = h.call(&rdmacroinfo())?;
-        unsafe {
-            put(
-                out,
-                ODBMVINF {
-                    use_no1: i.use_no1 as c_short,
-                    use_no2: i.use_no2 as c_short,
-                },
-            )
-        };
-        Ok(())
     })
 }
 

@@ -3,6 +3,7 @@
 
 pub mod absent;
 pub mod alarm;
+pub mod described;
 pub mod handle;
 pub mod macros;
 pub mod offset;

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
 use crate::proto::offset as p;
 use crate::proto::value::Value;
-use crate::types::{IODBTO, IODBZOFS, IODBZOR, ODBTLINF, ODBTOFS};
+use crate::types::{IODBTO, IODBZOFS, IODBZOR, ODBTOFS};
 use std::os::raw::{c_long, c_short, c_ushort};
 
 /// Bytes IODBZOFS needs for `axis`, FANUC's local check: every negative
@@ -151,29 +151,6 @@ pub unsafe extern "C" fn cnc_rdtofsr(
     })
 }
 
-/// Reads the tool offset memory type and the number of offsets.
-///
-/// # Safety
-/// `tlinf` must point to a writable ODBTLINF.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdtofsinfo(FlibHndl: c_ushort, tlinf: *mut ODBTLINF) -> c_short {
-    ffi_boundary!("cnc_rdtofsinfo", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(tlinf)?;
-        let i = h.call(&p::rdtofsinfo())?;
-        unsafe {
-            super::put(
-                out,
-                ODBTLINF {
-                    ofs_type: i.ofs_type,
-                    use_no: i.use_no,
-                },
-            )
-        };
-        Ok(())
-    })
-}
-
 /// Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
 /// P1..) for one axis or all axes (-1). An all-axes answer must carry a
 /// value per axis (FANUC's library writes uninitialised memory otherwise;
@@ -290,21 +267,6 @@ pub unsafe extern "C" fn cnc_rdzofsr(
                 put_at(out, 8 + 4 * i, r.value);
             }
         }
-        Ok(())
-    })
-}
-
-/// Reads the number of work zero offsets.
-///
-/// # Safety
-/// `ofs_no` must point to a writable short.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdzofsinfo(FlibHndl: c_ushort, ofs_no: *mut c_short) -> c_short {
-    ffi_boundary!("cnc_rdzofsinfo", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(ofs_no)?;
-        let c = h.call(&p::rdzofsinfo())?;
-        unsafe { super::put(out, c.value as i16) };
         Ok(())
     })
 }

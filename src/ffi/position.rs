@@ -9,13 +9,13 @@ use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NOOPT, EW_NUMBER};
 use crate::proto::position::{
-    ACTF, ACTS, AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData,
-    actual, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
+    AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData, getfigure, low16,
+    pos, position, rdaxisname, rdspdlname, spdl,
 };
 use crate::types::{
-    LOADELM, MAX_AXIS, MAX_SPINDLE, ODBACT, ODBACT2, ODBAXDT, ODBAXIS, ODBAXISNAME, ODBDY,
-    ODBDY_FAXIS, ODBDY_OAXIS, ODBDY2, ODBPOS, ODBSPDLNAME, ODBSPEED, ODBSPLOAD, ODBSPN, ODBSVLOAD,
-    POSELM, SPEEDELM,
+    LOADELM, MAX_AXIS, MAX_SPINDLE, ODBACT2, ODBAXDT, ODBAXIS, ODBAXISNAME, ODBDY, ODBDY_FAXIS,
+    ODBDY_OAXIS, ODBDY2, ODBPOS, ODBSPDLNAME, ODBSPEED, ODBSPLOAD, ODBSPN, ODBSVLOAD, POSELM,
+    SPEEDELM,
 };
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_char, c_short, c_ushort};
@@ -289,32 +289,6 @@ pub unsafe extern "C" fn cnc_rddynamic(
 // ---------------------------------------------------------------------------
 // Feed and speed
 // ---------------------------------------------------------------------------
-
-fn act(cmd: u16, h: c_ushort, out: *mut ODBACT) -> Result<()> {
-    let h = handles::get(h)?;
-    let out = nonnull(out)?;
-    let v = h.call(&actual(cmd))?;
-    unsafe { put_at(out.cast::<u8>(), offset_of!(ODBACT, data), v) };
-    Ok(())
-}
-
-/// Reads the actual feed rate (F).
-///
-/// # Safety
-/// `actualfeed` must point to a writable ODBACT.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_actf(FlibHndl: c_ushort, actualfeed: *mut ODBACT) -> c_short {
-    ffi_boundary!("cnc_actf", { act(ACTF, FlibHndl, actualfeed) })
-}
-
-/// Reads the actual spindle speed (S).
-///
-/// # Safety
-/// `actualspindle` must point to a writable ODBACT.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_acts(FlibHndl: c_ushort, actualspindle: *mut ODBACT) -> c_short {
-    ffi_boundary!("cnc_acts", { act(ACTS, FlibHndl, actualspindle) })
-}
 
 /// Reads the actual speed of spindle `sp_no` (1..) or of all spindles (-1):
 /// `datano` = sp_no, `data[i]` per spindle.

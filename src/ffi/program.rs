@@ -7,89 +7,12 @@ use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::program::{self as pp, AUX_ORDER, Clock, Modal, ModalCall, ModalKind};
-use crate::types::{
-    IODBTIME, IODBTIMER, ODBEXEPRG, ODBMDL, ODBPRO, ODBSEQ, ODBTLIFE3, ODBTLIFE4, PRGDIR, PRGDIR3,
-};
+use crate::types::{IODBTIME, IODBTIMER, ODBEXEPRG, ODBMDL, ODBTLIFE3, ODBTLIFE4, PRGDIR, PRGDIR3};
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// The low 16 bits, as FANUC's library stores 32-bit numbers in shorts.
 pub(crate) fn low16(v: i32) -> c_short {
     v as u32 as u16 as c_short
-}
-
-/// Reads the running and main program numbers (low 16 bits of each, as
-/// FANUC's library stores them in the default ODBPRO's shorts).
-///
-/// # Safety
-/// `prgnum` must point to a writable ODBPRO.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdprgnum(FlibHndl: c_ushort, prgnum: *mut ODBPRO) -> c_short {
-    ffi_boundary!("cnc_rdprgnum", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(prgnum)?;
-        let p = h.call(&pp::rdprgnum())?;
-        unsafe {
-            put(&raw mut (*out).data, low16(p.data));
-            put(&raw mut (*out).mdata, low16(p.mdata));
-        }
-        Ok(())
-    })
-}
-
-/// Reads the sequence number of the block being executed.
-///
-/// # Safety
-/// `seqnum` must point to a writable ODBSEQ.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdseqnum(FlibHndl: c_ushort, seqnum: *mut ODBSEQ) -> c_short {
-    ffi_boundary!("cnc_rdseqnum", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(seqnum)?;
-        let s = h.call(&pp::rdseqnum())?;
-        unsafe { put(&raw mut (*out).data, s.data) };
-        Ok(())
-    })
-}
-
-/// Reads the number of blocks executed. Writes 4 bytes into the `long`.
-///
-/// # Safety
-/// `prog_bc` must point to 4 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdblkcount(FlibHndl: c_ushort, prog_bc: *mut c_long) -> c_short {
-    ffi_boundary!("cnc_rdblkcount", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(prog_bc)?.cast::<i32>();
-        let n = h.call(&pp::rdblkcount())?;
-        unsafe { put(out, n) };
-        Ok(())
-    })
-}
-
-/// Reads the execution pointer: program number and block number. Writes 4
-/// bytes into each `long`.
-///
-/// # Safety
-/// Both pointers must point to 4 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdactpt(
-    FlibHndl: c_ushort,
-    prog_no: *mut c_long,
-    blk_no: *mut c_long,
-) -> c_short {
-    ffi_boundary!("cnc_rdactpt", {
-        let h = handles::get(FlibHndl)?;
-        let (p, b) = (
-            nonnull(prog_no)?.cast::<i32>(),
-            nonnull(blk_no)?.cast::<i32>(),
-        );
-        let a = h.call(&pp::rdactpt())?;
-        unsafe {
-            put(p, a.prog_no);
-            put(b, a.blk_no);
-        }
-        Ok(())
-    })
 }
 
 /// Reads the name and O number of the running program.

@@ -138,10 +138,6 @@ wire_struct! {
     }
 }
 
-pub fn rdmacroinfo() -> super::call::Single<MacroInfo> {
-    super::call::Single::new(ReqSub::cnc(RDMACROINFO, &[]))
-}
-
 /// A big-endian IEEE double: the element of the rdmacror2/wrmacror2
 /// payloads (bit-exact both ways, NaN included).
 #[derive(Debug, Clone, Copy, Default)]

@@ -3,6 +3,7 @@
 
 pub mod alarm;
 pub mod call;
+pub mod described;
 pub mod frame;
 pub mod macros;
 pub mod offset;

@@ -84,10 +84,6 @@ wire_struct! {
     }
 }
 
-pub fn rdtofsinfo() -> Single<TofsInfo> {
-    Single::new(ReqSub::cnc(RDTOFSINFO, &[]))
-}
-
 pub fn rdzofs(number: i16, axis: i16) -> Single<Values> {
     let n = i32::from(number);
     Single::new(ReqSub::cnc(RDZOFS, &[n, n, i32::from(axis)]))
@@ -113,8 +109,4 @@ wire_struct! {
     pub struct Count {
         pub value: i32,
     }
-}
-
-pub fn rdzofsinfo() -> Single<Count> {
-    Single::new(ReqSub::cnc(RDZOFSINFO, &[]))
 }

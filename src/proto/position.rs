@@ -262,27 +262,6 @@ pub fn rdspdlname() -> Names {
     Names { cmd: RDSPDLNAME }
 }
 
-/// cnc_actf / cnc_acts: the value word of one value record (zero-extended
-/// from a shorter payload, as FANUC's library reads it).
-#[derive(Debug, Clone, Copy)]
-pub struct Actual {
-    pub cmd: u16,
-}
-
-impl Call for Actual {
-    type Output = i32;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(self.cmd, &[])]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<i32> {
-        Ok(i32::from_be_bytes(zext(&sub(resp, 0)?.payload)))
-    }
-}
-
-pub fn actual(cmd: u16) -> Actual {
-    Actual { cmd }
-}
-
 /// The whole value records of subpacket `i`: a ragged tail (fewer than 8
 /// bytes) is no record, as FANUC's library counts them (payload / 8).
 pub fn whole_records(resp: &[RespSub], i: usize) -> Result<Vec<Value>> {

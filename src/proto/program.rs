@@ -2,7 +2,6 @@
 
 use super::call::{Call, Ctx, Single, payload};
 use super::packet::{ReqSub, RespSub};
-use super::position::{ProgNums, SeqNum};
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::Result;
 use crate::wire_struct;
@@ -204,22 +203,6 @@ impl Wire for AuxModal {
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
         Ok(AuxModal(Vec::decode(r)?))
     }
-}
-
-pub fn rdprgnum() -> Single<ProgNums> {
-    Single::padded(ReqSub::cnc(RDPRGNUM, &[]))
-}
-
-pub fn rdseqnum() -> Single<SeqNum> {
-    Single::padded(ReqSub::cnc(RDSEQNUM, &[]))
-}
-
-pub fn rdblkcount() -> Single<i32> {
-    Single::padded(ReqSub::cnc(RDBLKCOUNT, &[]))
-}
-
-pub fn rdactpt() -> Single<ActPt> {
-    Single::padded(ReqSub::cnc(RDACTPT, &[]))
 }
 
 pub fn exeprgname() -> Single<ExePrgName> {

@@ -9,6 +9,7 @@ use crate::proto::param::{InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
 use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16};
+use crate::spec::Func;
 
 fn fixed<const N: usize>(s: &str) -> [u8; N] {
     // Right-aligned and space-padded, as a CNC reports " M" or " 3".
@@ -222,14 +223,6 @@ impl CncService for Machine {
     }
 
     // --- program ---
-    fn block_count(&mut self, path: u16) -> Reply<i32> {
-        self.sim_block_count(path)
-    }
-
-    fn actpt(&mut self, path: u16) -> Reply<crate::proto::program::ActPt> {
-        self.sim_actpt(path)
-    }
-
     fn exe_prgname(&mut self, path: u16) -> Reply<crate::proto::program::ExePrgName> {
         self.sim_exe_prgname(path)
     }
@@ -373,10 +366,6 @@ impl CncService for Machine {
         self.sim_write_macros(path, s, e, records)
     }
 
-    fn macro_info(&mut self, path: u16) -> Reply<crate::proto::macros::MacroInfo> {
-        self.sim_macro_info(path)
-    }
-
     fn read_macros_double(
         &mut self,
         path: u16,
@@ -427,9 +416,6 @@ impl CncService for Machine {
     ) -> Reply<crate::proto::offset::Ack> {
         self.tofs_write(path, n, kind, payload)
     }
-    fn rdtofsinfo(&mut self, path: u16) -> Reply<crate::proto::offset::TofsInfo> {
-        self.tofs_info(path)
-    }
     fn rdzofs(
         &mut self,
         path: u16,
@@ -448,14 +434,34 @@ impl CncService for Machine {
     ) -> Reply<crate::proto::offset::Ack> {
         self.zofs_write(path, n, axis, payload)
     }
-    fn rdzofsinfo(&mut self, path: u16) -> Reply<crate::proto::offset::Count> {
-        self.zofs_info(path)
-    }
     fn rdalmhistry(&mut self, s: i32, e: i32) -> Reply<crate::proto::alarm::AlmHistory> {
         self.history_read(s, e)
     }
     fn rdalmhisno(&mut self) -> Reply<crate::proto::offset::Count> {
         self.history_count()
+    }
+
+    // --- described functions ---
+    fn described(&mut self, f: &'static Func, path: u16, _args: &[i32]) -> Reply<Vec<i64>> {
+        let v = |x: i32| i64::from(x);
+        match f.name {
+            "cnc_rdblkcount" => Ok(vec![v(self.sim_block_count(path)?)]),
+            "cnc_rdactpt" => self
+                .sim_actpt(path)
+                .map(|a| vec![v(a.prog_no), v(a.blk_no)]),
+            "cnc_rdmacroinfo" => self
+                .sim_macro_info(path)
+                .map(|m| vec![v(m.use_no1), v(m.use_no2)]),
+            "cnc_rdtofsinfo" => self.tofs_info(path).map(|t| {
+                vec![
+                    i64::from(t.reserved),
+                    i64::from(t.use_no),
+                    i64::from(t.ofs_type),
+                ]
+            }),
+            "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
+            _ => Err(CncError::FUNC),
+        }
     }
 
     // --- tool ---

@@ -4,14 +4,16 @@
 
 use crate::ew;
 use crate::proto::cmd;
+use crate::proto::described;
 use crate::proto::open::OpenBody;
 use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
 use crate::proto::param::{self, InfoList, NumRange, Param16, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
+use crate::spec::Func;
 // --- offset ---
 use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
-use crate::proto::offset::{self as ofs, Ack, Count, TofsInfo};
+use crate::proto::offset::{self as ofs, Ack, Count};
 use crate::proto::tool::{TLGROUP, TLTOOLS, ToolGroup, ToolList};
 use crate::proto::value::Value;
 // --- position ---
@@ -157,12 +159,6 @@ pub trait CncService: Send {
     }
 
     // --- program ---
-    fn block_count(&mut self, path: u16) -> Reply<i32> {
-        unsupported()
-    }
-    fn actpt(&mut self, path: u16) -> Reply<pprog::ActPt> {
-        unsupported()
-    }
     fn exe_prgname(&mut self, path: u16) -> Reply<pprog::ExePrgName> {
         unsupported()
     }
@@ -260,10 +256,6 @@ pub trait CncService: Send {
     ) -> Reply<()> {
         unsupported()
     }
-    /// Counts of common variables (0x0017).
-    fn macro_info(&mut self, path: u16) -> Reply<crate::proto::macros::MacroInfo> {
-        unsupported()
-    }
     /// `n` variables from `s` as doubles (0x00a7).
     fn read_macros_double(
         &mut self,
@@ -306,18 +298,12 @@ pub trait CncService: Send {
     fn wrtofs(&mut self, path: u16, n: i32, kind: i32, payload: &[u8]) -> Reply<Ack> {
         unsupported()
     }
-    fn rdtofsinfo(&mut self, path: u16) -> Reply<TofsInfo> {
-        unsupported()
-    }
     /// 0x000b [s, e, axis].
     fn rdzofs(&mut self, path: u16, s: i32, e: i32, axis: i32) -> Reply<Vec<Value>> {
         unsupported()
     }
     /// 0x000c [n, n, axis] + records.
     fn wrzofs(&mut self, path: u16, n: i32, axis: i32, payload: &[u8]) -> Reply<Ack> {
-        unsupported()
-    }
-    fn rdzofsinfo(&mut self, path: u16) -> Reply<Count> {
         unsupported()
     }
     /// 0x006c [s, e, 1]: alarm history entries s..=e (1 = newest).
@@ -338,6 +324,14 @@ pub trait CncService: Send {
         unsupported()
     }
 
+    // --- described functions (crate::spec) ---
+    /// A function described as data: the reply's integers in the order of
+    /// its layout (the codec encodes them). `args` are the caller's number
+    /// arguments the request carried.
+    fn described(&mut self, f: &'static Func, path: u16, args: &[i32]) -> Reply<Vec<i64>> {
+        unsupported()
+    }
+
     // --- upload ---
     /// Program upload on connection 1 (0x1501): the text to push in 0x1604
     /// frames, or the error for the CNC's error frame.
@@ -354,7 +348,8 @@ fn enc<T: Wire>(r: Reply<T>) -> Reply<Vec<u8>> {
 pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
     let p = sub.path;
     let a = sub.args;
-    let paths = svc.open_body().path_count() as u16;
+    let open = svc.open_body();
+    let (paths, class) = (open.path_count() as u16, open.class());
     let r = if sub.class == CLASS_CNC && (p == 0 || p > paths) {
         Err(CncError::PATH)
     } else {
@@ -389,8 +384,6 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, crate::proto::position::COUNT) => enc(svc.counts(p, a[0])),
 
             // --- program ---
-            (CLASS_CNC, pprog::RDBLKCOUNT) => enc(svc.block_count(p)),
-            (CLASS_CNC, pprog::RDACTPT) => enc(svc.actpt(p)),
             (CLASS_CNC, pprog::EXEPRGNAME) => enc(svc.exe_prgname(p)),
             (CLASS_CNC, pprog::EXEPRGNAME2) => enc(svc.exe_prgname2(p)),
             (CLASS_CNC, pprog::RDEXECPROG) => enc(svc.exec_prog(p, a[0])),
@@ -433,7 +426,6 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
                     Err(_) => Err(CncError::new(ew::EW_LENGTH)),
                 }
             }
-            (CLASS_CNC, crate::proto::macros::RDMACROINFO) => enc(svc.macro_info(p)),
             (CLASS_CNC, crate::proto::macros::RDMACROR2) => {
                 enc(svc.read_macros_double(p, a[0], a[1]))
             }
@@ -458,17 +450,20 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             // --- offset ---
             (CLASS_CNC, ofs::RDTOFS) => enc(svc.rdtofs(p, a[0], a[1], a[2])),
             (CLASS_CNC, ofs::WRTOFS) => enc(svc.wrtofs(p, a[0], a[2], &sub.payload)),
-            (CLASS_CNC, ofs::RDTOFSINFO) => enc(svc.rdtofsinfo(p)),
             (CLASS_CNC, ofs::RDZOFS) => enc(svc.rdzofs(p, a[0], a[1], a[2])),
             (CLASS_CNC, ofs::WRZOFS) => enc(svc.wrzofs(p, a[0], a[2], &sub.payload)),
-            (CLASS_CNC, ofs::RDZOFSINFO) => enc(svc.rdzofsinfo(p)),
             (CLASS_CNC, RDALMHISTRY) => enc(svc.rdalmhistry(a[0], a[1])),
             (CLASS_CNC, RDALMHISNO) => enc(svc.rdalmhisno()),
 
             // --- tool ---
             (CLASS_CNC, TLGROUP) => enc(svc.tool_group(p, a[0])),
             (CLASS_CNC, TLTOOLS) => enc(svc.tool_list(p, a[0], a[1], a[2])),
-            _ => Err(CncError::FUNC),
+            _ => match described::for_request(sub, class) {
+                Some(f) => svc
+                    .described(f, p, &described::args_of(f, class, sub))
+                    .and_then(|v| described::encode(f, &v).map_err(|_| CncError::FUNC)),
+                None => Err(CncError::FUNC),
+            },
         }
     };
     match r {

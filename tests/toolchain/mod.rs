@@ -155,7 +155,8 @@ pub fn header_functions(header: &str) -> BTreeSet<String> {
         .collect()
 }
 
-/// Names of the `pub ... extern "C" fn` items of src/ffi/*.rs.
+/// Names of the `pub ... extern "C" fn` items of src/ffi/*.rs and of the
+/// functions described in src/spec/table.rs (build.rs writes their exports).
 pub fn ffi_functions() -> BTreeSet<String> {
     let dir = manifest_dir().join("src").join("ffi");
     let mut names = BTreeSet::new();
@@ -181,6 +182,8 @@ pub fn ffi_functions() -> BTreeSet<String> {
             }
         }
     }
+    // The functions described as data: build.rs writes their exports.
+    names.extend(fwlib32::spec::FUNCS.iter().map(|f| f.name.to_string()));
     names
 }
 

@@ -13,9 +13,10 @@
  * Output buffers (b0, b1) are 4096 bytes pre-filled with 0xCC; each is
  * printed as hex up to its last byte that is not 0xCC. In-out counts come
  * back as named fields. Relative file names (cnc_startupprocess's log) are
- * created in a private temporary directory.
+ * created in a private temporary directory, removed when the probe exits.
  */
 #define _GNU_SOURCE
+#include <dirent.h>
 #include <dlfcn.h>
 #include <pthread.h>
 #include <setjmp.h>
@@ -292,6 +293,22 @@ static const struct { const char *name; short (*fn)(void); } table[] = {
 #undef WORD
 };
 
+/* Removes the private directory and what the library wrote into it. */
+static char tmpdir[] = "/tmp/focas-probe-XXXXXX";
+static void remove_tmpdir(void) {
+    DIR *d = opendir(tmpdir);
+    if (d) {
+        for (struct dirent *e; (e = readdir(d));) {
+            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+            char path[sizeof tmpdir + 256];
+            snprintf(path, sizeof path, "%s/%s", tmpdir, e->d_name);
+            unlink(path);
+        }
+        closedir(d);
+    }
+    if (chdir("/") == 0) rmdir(tmpdir);
+}
+
 static void print_hex(const char *name, const unsigned char *b) {
     int end = BUF;
     while (end > 0 && b[end - 1] == FILL) end--;
@@ -312,8 +329,8 @@ int main(int argc, char **argv) {
     }
     host = argv[2];
     port = (unsigned short)atoi(argv[3]);
-    char dir[] = "/tmp/focas-probe-XXXXXX";
-    if (!mkdtemp(dir) || chdir(dir) != 0) return 2;
+    if (!mkdtemp(tmpdir) || chdir(tmpdir) != 0) return 2;
+    atexit(remove_tmpdir);
     setvbuf(stdout, NULL, _IOLBF, 0);
     for (int i = 0; i < 16; i++) slots[i] = 0xCCCC;
 
@@ -343,6 +360,5 @@ int main(int argc, char **argv) {
         }
         if (!found) printf("{\"unknown\":\"%s\"}\n", argv_[0]);
     }
-    /* The log directory is left for the caller to inspect; it is tiny. */
     return 0;
 }

@@ -1,0 +1,137 @@
+//! The codec of the functions described as data (crate::spec): the request
+//! from a [`Func`]'s form, the reply decoded (client) or encoded (simulator)
+//! by its reply layout. Decoding and encoding are exact inverses: the
+//! payload is the layout's big-endian integers, one after another.
+
+use super::call::{Call, Ctx, sub};
+use super::open::CncClass;
+use super::packet::{CLASS_CNC, ReqSub, RespSub};
+use super::wire::{DecodeError, Reader, Writer};
+use crate::error::Result;
+use crate::spec::{Form, Func, Int, Short, Word};
+
+/// The request form for the CNC's class, if the function has one.
+pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
+    f.form(
+        class.is_16i(),
+        matches!(class, CncClass::Series16 { kind: 2 }),
+    )
+}
+
+/// One call of a described function with the caller's number arguments.
+pub struct Described<'a> {
+    pub f: &'static Func,
+    pub args: &'a [i32],
+}
+
+impl Call for Described<'_> {
+    /// The reply's integers, in layout order (each field's `n` elements).
+    type Output = Vec<i64>;
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        // The caller checked that a form exists for this class.
+        let Some(form) = form(self.f, cx.class) else {
+            return Vec::new();
+        };
+        let words: Vec<i32> = form
+            .words
+            .iter()
+            .map(|w| match *w {
+                Word::Arg(i) => self.args.get(i as usize).copied().unwrap_or(0),
+                Word::Const(c) => c,
+            })
+            .collect();
+        vec![ReqSub::cnc(form.cmd, &words)]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
+        decode(self.f, &sub(resp, 0)?.payload)
+    }
+}
+
+/// The reply payload's integers (client side).
+pub fn decode(f: &Func, payload: &[u8]) -> Result<Vec<i64>> {
+    let need = f.reply_len();
+    let mut padded;
+    let mut p = payload;
+    if p.len() < need {
+        match f.short {
+            Short::Error => {
+                return Err(DecodeError::Short {
+                    need,
+                    have: p.len(),
+                }
+                .into());
+            }
+            Short::Zeros => {
+                padded = p.to_vec();
+                padded.resize(need, 0);
+                p = &padded;
+            }
+        }
+    }
+    let mut r = Reader::new(p);
+    let mut out = Vec::new();
+    for field in f.reply {
+        for _ in 0..field.n {
+            out.push(match field.wire {
+                Int::I8 => i64::from(r.u8()? as i8),
+                Int::U8 => i64::from(r.u8()?),
+                Int::I16 => i64::from(r.i16()?),
+                Int::U16 => i64::from(r.u16()?),
+                Int::I32 => i64::from(r.i32()?),
+                Int::U32 => i64::from(r.u32()?),
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// The reply payload for these integers (simulator side): each is cut to
+/// its wire width, as the CNC sends it.
+pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeError> {
+    let n: usize = f.reply.iter().map(|x| x.n as usize).sum();
+    if values.len() != n {
+        return Err(DecodeError::Invalid(
+            "value count differs from the reply layout",
+        ));
+    }
+    let mut w = Writer::new();
+    let mut v = values.iter();
+    for field in f.reply {
+        for x in v.by_ref().take(field.n as usize) {
+            match field.wire {
+                Int::I8 | Int::U8 => w.u8(*x as u8),
+                Int::I16 | Int::U16 => w.u16(*x as u16),
+                Int::I32 | Int::U32 => w.u32(*x as u32),
+            }
+        }
+    }
+    Ok(w.into_vec())
+}
+
+/// The described function a CNC-class request subpacket asks for, on a CNC
+/// of this class (simulator dispatch).
+pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
+    (sub.class == CLASS_CNC)
+        .then(|| {
+            crate::spec::FUNCS
+                .iter()
+                .find(|f| form(f, class).is_some_and(|form| form.cmd == sub.cmd))
+        })
+        .flatten()
+}
+
+/// The number arguments the request carries (inverse of the form's words:
+/// `Arg(i)` words give argument i back; simulator side).
+pub fn args_of(f: &Func, class: CncClass, sub: &ReqSub) -> Vec<i32> {
+    let mut args = vec![0; f.numbers().count()];
+    if let Some(form) = form(f, class) {
+        for (k, w) in form.words.iter().enumerate() {
+            if let (Word::Arg(i), Some(v)) = (w, sub.args.get(k)) {
+                if let Some(a) = args.get_mut(*i as usize) {
+                    *a = *v;
+                }
+            }
+        }
+    }
+    args
+}

@@ -1,0 +1,217 @@
+//! What a FOCAS function is, as data: its C parameters, local checks,
+//! request form per CNC class, and reply layout.
+//!
+//! One [`Func`] per function (src/spec/table.rs) is read by every layer:
+//! build.rs writes the exported C function (and so its header declaration)
+//! from it, the codec builds the request and decodes or encodes the reply
+//! with it (src/proto/described.rs), the simulator dispatches its command by
+//! it, and the oracle generates the probe's call and the cases from it.
+//!
+//! This file is compiled into build.rs too (`#[path]`): plain data only, no
+//! `crate::` paths.
+
+/// A C parameter after the handle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Param {
+    /// `short NAME`: a number the caller passes.
+    Short(&'static str),
+    /// `long NAME`: a number the caller passes (32 bits go on the wire).
+    Long(&'static str),
+    /// `TYPE *NAME`: an output the reply fills. TYPE is a struct of
+    /// src/types, or `short`, `unsigned short` or `long` (4 bytes written,
+    /// as FANUC's x86-64 library writes a `long *`).
+    Out(&'static str, &'static str),
+}
+
+impl Param {
+    pub const fn name(&self) -> &'static str {
+        match *self {
+            Param::Short(n) | Param::Long(n) | Param::Out(n, _) => n,
+        }
+    }
+}
+
+/// The CNC classes a request form is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Classes {
+    /// Every class.
+    All,
+    /// The 30i class (open version 3).
+    S30,
+    /// The 16i class (open version 2), Series 15 included.
+    S16,
+    /// Series 15 alone (16i class, kind 2).
+    S15,
+}
+
+/// One word of a request's argument block.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Word {
+    /// The value of number parameter `n` (index into `params`).
+    Arg(u8),
+    /// A constant.
+    Const(i32),
+}
+
+/// How the request is formed on some classes.
+#[derive(Debug, Clone, Copy)]
+pub struct Form {
+    pub classes: Classes,
+    pub cmd: u16,
+    /// Up to five argument words; the rest are 0.
+    pub words: &'static [Word],
+}
+
+/// A check FANUC's library makes before any traffic: number parameter
+/// `arg` outside `lo..=hi` returns `code`.
+#[derive(Debug, Clone, Copy)]
+pub struct Check {
+    pub arg: u8,
+    pub lo: i32,
+    pub hi: i32,
+    pub code: i16,
+}
+
+/// An integer of the wire (big-endian) or of a C struct (native).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Int {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+}
+
+impl Int {
+    pub const fn size(self) -> usize {
+        match self {
+            Int::I8 | Int::U8 => 1,
+            Int::I16 | Int::U16 => 2,
+            Int::I32 | Int::U32 => 4,
+        }
+    }
+    /// The Rust type of a C field of this width.
+    pub const fn rust(self) -> &'static str {
+        match self {
+            Int::I8 => "i8",
+            Int::U8 => "u8",
+            Int::I16 => "i16",
+            Int::U16 => "u16",
+            Int::I32 => "i32",
+            Int::U32 => "u32",
+        }
+    }
+}
+
+/// `n` consecutive integers of the reply payload. Each is written, converted
+/// as a C cast converts it, to output `out` (index among the `Out`
+/// parameters) at member `to` (`""`: the pointee itself) and the `n - 1`
+/// elements after it; `to: None` skips them.
+#[derive(Debug, Clone, Copy)]
+pub struct Field {
+    pub wire: Int,
+    pub n: u16,
+    pub out: u8,
+    pub to: Option<&'static str>,
+    pub c: Int,
+}
+
+/// What a payload shorter than the reply layout means.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Short {
+    /// The missing bytes read as zeros, as FANUC's library reads them from
+    /// its zeroed buffer.
+    Zeros,
+    /// EW_PROTOCOL, nothing written.
+    Error,
+}
+
+/// One FOCAS function.
+#[derive(Debug, Clone, Copy)]
+pub struct Func {
+    /// The C name (`cnc_rdseqnum`).
+    pub name: &'static str,
+    /// One line for the header and rustdoc.
+    pub doc: &'static str,
+    /// The C parameters after `unsigned short FlibHndl`.
+    pub params: &'static [Param],
+    pub checks: &'static [Check],
+    /// The request: the first form whose classes match the CNC's.
+    pub forms: &'static [Form],
+    pub reply: &'static [Field],
+    pub short: Short,
+    /// The oracle's dimensions, one per number parameter: "|"-separated
+    /// values, the base first.
+    pub dims: &'static [&'static str],
+}
+
+impl Func {
+    /// The probe word the oracle and the vectors call this function by.
+    pub fn word(&self) -> &'static str {
+        self.name.strip_prefix("cnc_").unwrap_or(self.name)
+    }
+    /// The number parameters, in order (the values a caller passes).
+    pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.params.iter().filter_map(|p| match *p {
+            Param::Short(n) | Param::Long(n) => Some(n),
+            Param::Out(..) => None,
+        })
+    }
+    /// The output parameters, in order: (name, C type).
+    pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
+        self.params.iter().filter_map(|p| match *p {
+            Param::Out(n, t) => Some((n, t)),
+            _ => None,
+        })
+    }
+    /// The reply payload's length in bytes.
+    pub fn reply_len(&self) -> usize {
+        self.reply
+            .iter()
+            .map(|f| f.wire.size() * f.n as usize)
+            .sum()
+    }
+}
+
+/// A reply field written to output 0's member `to`.
+pub const fn to(wire: Int, to: &'static str, c: Int) -> Field {
+    Field {
+        wire,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c,
+    }
+}
+
+/// A reply field written to output `out`'s member `to`.
+pub const fn to_out(out: u8, wire: Int, to: &'static str, c: Int) -> Field {
+    Field {
+        wire,
+        n: 1,
+        out,
+        to: Some(to),
+        c,
+    }
+}
+
+/// A reply field nobody reads.
+pub const fn skip(wire: Int) -> Field {
+    Field {
+        wire,
+        n: 1,
+        out: 0,
+        to: None,
+        c: wire,
+    }
+}
+
+/// The one request form of a function that sends the same on every class.
+pub const fn every_class(cmd: u16, words: &'static [Word]) -> Form {
+    Form {
+        classes: Classes::All,
+        cmd,
+        words,
+    }
+}
