@@ -67,8 +67,23 @@ const fn wc(
 const AXIS: &str = "1|-1|2|3|0|4|32|33|-2";
 const AXLEN: &str = "8|4|7|12|0|-1|132|136";
 
-/// Every word the generator covers.
-pub const WORDS: &[Word] = &[
+/// Every word the generator covers: the functions described as data
+/// (src/spec/table.rs, their dimensions there) and the words below.
+pub fn words() -> Vec<Word> {
+    let described = fwlib32::spec::FUNCS.iter().map(|f| Word {
+        word: f.word(),
+        dims: f.dims,
+        ..w("", &[])
+    });
+    described.chain(WORDS.iter().map(copy)).collect()
+}
+
+fn copy(x: &Word) -> Word {
+    Word { ..*x }
+}
+
+/// The words written by hand: functions not (yet) described as data.
+const WORDS: &[Word] = &[
     // Connection group and status.
     w("sysinfo", &[]),
     w("statinfo", &[]),
@@ -96,8 +111,6 @@ pub const WORDS: &[Word] = &[
         &["1|-1|0|2|3|4|33|-2", "40|8|20|28|39|0|-1|100|536"],
         &["-1 536", "-1 56", "-1 40"],
     ),
-    w("actf", &[]),
-    w("acts", &[]),
     w("acts2", &["1|-1|0|2|3|8|9|-2"]),
     w("rdspeed", &["-1|0|1|2|3"]),
     w("rdspload", &["1|-1|0|2|9"]),
@@ -162,10 +175,6 @@ pub const WORDS: &[Word] = &[
     wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     w("getfigure", &["0|1|-1|2|3"]),
     // Program.
-    w("rdprgnum", &[]),
-    w("rdseqnum", &[]),
-    w("rdblkcount", &[]),
-    w("rdactpt", &[]),
     w("exeprgname", &[]),
     w("exeprgname2", &[]),
     w("rdexecprog", &["256|0|1|10|100|1024|4096|65535"]),
@@ -338,7 +347,6 @@ pub const WORDS: &[Word] = &[
         ],
     ),
     w("rdmacror2", &["500|1|100|0|99999", "6|1|0|-1|100|1000"]),
-    w("rdmacroinfo", &[]),
     // PMC.
     w(
         "pmc_rdpmcrng",
@@ -365,7 +373,6 @@ pub const WORDS: &[Word] = &[
             "188|8|12|0|-1|1000",
         ],
     ),
-    w("rdtofsinfo", &[]),
     Word {
         after: &["rdtofs 1 0 8"],
         ..wc(
@@ -389,7 +396,6 @@ pub const WORDS: &[Word] = &[
         "rdzofsr",
         &["1|0|-1|2", "-1|1|0|2", "6|1|0|7|-1", "1032|8|0|-1|100|2000"],
     ),
-    w("rdzofsinfo", &[]),
     w("toolnum", &["1|0|-1|2|9999", "0|1|-1|2|99"]),
     w("rdntool", &["1|0|-1|2|9999"]),
     w("rdlife", &["1|0|-1|2|9999"]),

@@ -224,7 +224,7 @@ fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
     // records its function's other words too (rdparam_ext and rdparam_ext32).
     let functions: Vec<String> = only.iter().map(|w| cases::function(w)).collect();
     let keep = |w: &str| only.is_empty() || functions.contains(&cases::function(w));
-    for w in cases::WORDS.iter().filter(|w| keep(w.word)) {
+    for w in cases::words().iter().filter(|w| keep(w.word)) {
         by_fn.entry(cases::function(w.word)).or_default().extend(
             cases::cases_of(w).into_iter().map(|mut c| {
                 c.name = format!("{}_{}", w.word, c.name);

@@ -27,6 +27,9 @@
 #include <unistd.h>
 
 #include "fwlib32.h"
+/* GENERATED_WORDS: one WORD per function of src/spec/table.rs, written by
+ * tools/oracle/probe.rs from the same descriptions as the exports. */
+#include "words.gen.h"
 
 #define BUF 4096
 #define FILL 0xCC
@@ -153,6 +156,7 @@ static short in_thread(void *(*f)(void *)) {
  * Every word: WORD(name, body). The body returns the call's result.
  */
 #define WORDS                                                                                     \
+    GENERATED_WORDS /* the functions described as data: words.gen.h */                            \
     WORD(slot, return w_slot())                                                                   \
     WORD(seth, return w_seth())                                                                   \
     WORD(startup, return w_startup())                                                             \
@@ -176,8 +180,6 @@ static short in_thread(void *(*f)(void *)) {
     WORD(rdspdlname, SHORT_IO(num, 1, F(cnc_rdspdlname)(H, &num, B0)))                            \
     WORD(rddynamic2, return F(cnc_rddynamic2)(H, N(1), N(2), B0))                                 \
     WORD(rddynamic, return F(cnc_rddynamic)(H, N(1), N(2), B0))                                   \
-    WORD(actf, return F(cnc_actf)(H, B0))                                                         \
-    WORD(acts, return F(cnc_acts)(H, B0))                                                         \
     WORD(acts2, return F(cnc_acts2)(H, N(1), B0))                                                 \
     WORD(rdspeed, return F(cnc_rdspeed)(H, N(1), B0))                                             \
     WORD(rdspload, return F(cnc_rdspload)(H, N(1), B0))                                           \
@@ -196,10 +198,6 @@ static short in_thread(void *(*f)(void *)) {
     WORD(getfigure, { short v = (short)0xCCCC; short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);   \
                       field("valid_fig", v); return r; })                                         \
     /* program */                                                                                 \
-    WORD(rdprgnum, return F(cnc_rdprgnum)(H, B0))                                                 \
-    WORD(rdseqnum, return F(cnc_rdseqnum)(H, B0))                                                 \
-    WORD(rdblkcount, return F(cnc_rdblkcount)(H, B0))                                             \
-    WORD(rdactpt, return F(cnc_rdactpt)(H, B0, B1))                                               \
     WORD(exeprgname, return F(cnc_exeprgname)(H, B0))                                             \
     WORD(exeprgname2, return F(cnc_exeprgname2)(H, B0))                                          \
     WORD(rdexecprog, { unsigned short l = (unsigned short)N(1); short blk = (short)0xCCCC;        \
@@ -250,7 +248,6 @@ static short in_thread(void *(*f)(void *)) {
     WORD(rdmacror2, LONG_IO(num, 2, F(cnc_rdmacror2)(H, N(1), (unsigned long *)num, B0)))         \
     WORD(wrmacror2, { fill_hex(b0, 3);                                                            \
                       LONG_IO(num, 2, F(cnc_wrmacror2)(H, N(1), (unsigned long *)num, B0)); })    \
-    WORD(rdmacroinfo, return F(cnc_rdmacroinfo)(H, B0))                                           \
     /* pmc */                                                                                     \
     WORD(pmc_rdpmcrng, return F(pmc_rdpmcrng)(H, N(1), N(2), N(3), N(4), N(5), B0))               \
     WORD(pmc_wrpmcrng, { fill_hex(b0, 2); return F(pmc_wrpmcrng)(H, N(1), B0); })                 \
@@ -260,11 +257,9 @@ static short in_thread(void *(*f)(void *)) {
     WORD(rdtofs, return F(cnc_rdtofs)(H, N(1), N(2), N(3), B0))                                   \
     WORD(wrtofs, return F(cnc_wrtofs)(H, N(1), N(2), N(3), N(4)))                                 \
     WORD(rdtofsr, return F(cnc_rdtofsr)(H, N(1), N(2), N(3), N(4), B0))                           \
-    WORD(rdtofsinfo, return F(cnc_rdtofsinfo)(H, B0))                                             \
     WORD(rdzofs, return F(cnc_rdzofs)(H, N(1), N(2), N(3), B0))                                   \
     WORD(wrzofs, { fill_hex(b0, 2); return F(cnc_wrzofs)(H, N(1), B0); })                         \
     WORD(rdzofsr, return F(cnc_rdzofsr)(H, N(1), N(2), N(3), N(4), B0))                           \
-    WORD(rdzofsinfo, return F(cnc_rdzofsinfo)(H, B0))                                             \
     WORD(toolnum, return F(cnc_toolnum)(H, N(1), N(2), B0))                                       \
     WORD(rdntool, return F(cnc_rdntool)(H, N(1), B0))                                             \
     WORD(rdlife, return F(cnc_rdlife)(H, N(1), B0))                                               \
