@@ -1486,7 +1486,7 @@ short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
  Reads the tool life counter of tool group `number`.
 
  # Safety
- `count` must point to a writable ODBTLIFE3.
+ `count` must be NULL or point to a writable ODBTLIFE3.
  */
 short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
 
@@ -1577,10 +1577,11 @@ short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blk
 short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
 
 /*
- Reads the tool life of tool group `number` (`data`; `dummy` untouched).
+ Reads the tool life of tool group `number` (`data`; `dummy` untouched;
+ `datano` the group number the CNC answered).
 
  # Safety
- `life` must point to a writable ODBTLIFE3.
+ `life` must be NULL or point to a writable ODBTLIFE3.
  */
 short cnc_rdlife(unsigned short FlibHndl, short number, struct ODBTLIFE3 *life);
 
@@ -1639,7 +1640,7 @@ short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
  Reads the number of tools in tool-life group `grp_num`.
 
  # Safety
- `tool` must point to a writable ODBTLIFE3.
+ `tool` must be NULL or point to a writable ODBTLIFE3.
  */
 short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool);
 
@@ -1887,7 +1888,7 @@ short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *
  free) as minutes and milliseconds.
 
  # Safety
- `time` must point to a writable IODBTIME.
+ `time` must be NULL or point to a writable IODBTIME.
  */
 short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
 
@@ -2087,10 +2088,11 @@ short cnc_svdtstartrd(unsigned short FlibHndl, short axis);
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
 
 /*
- Reads the tool number of the `tuse_num`-th tool of tool-life group `grp_num`.
+ Reads the tool number of the `tuse_num`-th tool of tool-life group
+ `grp_num`.
 
  # Safety
- `toolnum` must point to a writable ODBTLIFE4.
+ `toolnum` must be NULL or point to a writable ODBTLIFE4.
  */
 short cnc_toolnum(unsigned short FlibHndl,
                   short grp_num,

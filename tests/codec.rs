@@ -341,9 +341,8 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                 }
                                 // --- described as data (src/spec) ---
                                 w if described(w).is_some() => {
-                                    let nums: Vec<i32> =
-                                        args.iter().map(|a| num(a) as i32).collect();
                                     let f = described(w).unwrap();
+                                    let nums = c_args(f, &args);
                                     stamped(&Described { f, args: &nums }, &cx, path)
                                 }
                                 // --- offset ---
@@ -364,16 +363,9 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     let block = num(&args[1]) as i16;
                                     stamped(&pp::ModalCall { kind, block }, &cx, path)
                                 }
-                                "rdtimer" => stamped(&pp::rdtimer(num(&args[0]) as i16), &cx, path),
                                 "gettimer" => {
                                     stamped(&pp::gettimer(num(&args[0]) as i16), &cx, path)
                                 }
-                                "toolnum" => stamped(
-                                    &pp::toolnum(num(&args[0]) as i16, num(&args[1]) as i16),
-                                    &cx,
-                                    path,
-                                ),
-                                "rdntool" => stamped(&pp::rdntool(num(&args[0]) as i16), &cx, path),
                                 // --- alarm ---
                                 "alarm" | "alarm2" => stamped(&pa::alarm(), &cx, path),
                                 "rdalmmsg" => stamped(
@@ -1245,6 +1237,27 @@ impl Call for Raw {
     fn decode(&self, _: &Ctx, _: &[RespSub]) -> fwlib32::error::Result<()> {
         Ok(())
     }
+}
+
+/// A described function's number arguments as its C parameters pass them
+/// (a `short` cut to 16 bits).
+fn c_args(f: &fwlib32::spec::Func, args: &[String]) -> Vec<i32> {
+    use fwlib32::spec::Param;
+    let shorts = f.params.iter().filter_map(|p| match p {
+        Param::Short(_) => Some(true),
+        Param::Long(_) => Some(false),
+        Param::Out(..) => None,
+    });
+    args.iter()
+        .zip(shorts)
+        .map(|(a, short)| {
+            if short {
+                num(a) as i16 as i32
+            } else {
+                num(a) as i32
+            }
+        })
+        .collect()
 }
 
 /// The described function (src/spec) of a probe word.

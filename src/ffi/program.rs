@@ -7,7 +7,7 @@ use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::program::{self as pp, AUX_ORDER, Clock, Modal, ModalCall, ModalKind};
-use crate::types::{IODBTIME, IODBTIMER, ODBEXEPRG, ODBMDL, ODBTLIFE3, ODBTLIFE4, PRGDIR, PRGDIR3};
+use crate::types::{IODBTIMER, ODBEXEPRG, ODBMDL, PRGDIR, PRGDIR3};
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// The low 16 bits, as FANUC's library stores 32-bit numbers in shorts.
@@ -162,34 +162,6 @@ pub unsafe extern "C" fn cnc_modal(
     })
 }
 
-/// Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4
-/// free) as minutes and milliseconds.
-///
-/// # Safety
-/// `time` must point to a writable IODBTIME.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdtimer(
-    FlibHndl: c_ushort,
-    r#type: c_short,
-    time: *mut IODBTIME,
-) -> c_short {
-    ffi_boundary!("cnc_rdtimer", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(time)?;
-        let t = h.call(&pp::rdtimer(r#type))?;
-        unsafe {
-            put(
-                out,
-                IODBTIME {
-                    minute: t.minute,
-                    msec: t.msec,
-                },
-            )
-        };
-        Ok(())
-    })
-}
-
 fn timer_type(t: c_short) -> crate::error::Result<c_short> {
     if t == 0 || t == 1 {
         Ok(t)
@@ -273,53 +245,6 @@ pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) ->
         let m = h.call(&pp::rdopmode())?;
         if let Some(w) = m.0.first() {
             unsafe { put(out, *w) };
-        }
-        Ok(())
-    })
-}
-
-/// Reads the tool number of the `tuse_num`-th tool of tool-life group `grp_num`.
-///
-/// # Safety
-/// `toolnum` must point to a writable ODBTLIFE4.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_toolnum(
-    FlibHndl: c_ushort,
-    grp_num: c_short,
-    tuse_num: c_short,
-    toolnum: *mut ODBTLIFE4,
-) -> c_short {
-    ffi_boundary!("cnc_toolnum", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(toolnum)?;
-        let t = h.call(&pp::toolnum(grp_num, tuse_num))?;
-        let v = ODBTLIFE4 {
-            datano: low16(t.datano),
-            r#type: low16(t.kind),
-            data: t.data,
-        };
-        unsafe { put(out, v) };
-        Ok(())
-    })
-}
-
-/// Reads the number of tools in tool-life group `grp_num`.
-///
-/// # Safety
-/// `tool` must point to a writable ODBTLIFE3.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdntool(
-    FlibHndl: c_ushort,
-    grp_num: c_short,
-    tool: *mut ODBTLIFE3,
-) -> c_short {
-    ffi_boundary!("cnc_rdntool", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(tool)?;
-        let t = h.call(&pp::rdntool(grp_num))?;
-        unsafe {
-            put(&raw mut (*out).datano, low16(t.datano));
-            put(&raw mut (*out).data, t.data);
         }
         Ok(())
     })

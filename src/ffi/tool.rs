@@ -8,53 +8,8 @@ use crate::client::handles;
 use crate::error::Error;
 use crate::ew::EW_FUNC;
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tltools};
-use crate::types::{IODBTLCTL, ODBTG, ODBTLIFE3};
+use crate::types::{IODBTLCTL, ODBTG};
 use std::os::raw::{c_short, c_ushort};
-
-/// Reads the tool life of tool group `number` (`data`; `dummy` untouched).
-///
-/// # Safety
-/// `life` must point to a writable ODBTLIFE3.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdlife(
-    FlibHndl: c_ushort,
-    number: c_short,
-    life: *mut ODBTLIFE3,
-) -> c_short {
-    ffi_boundary!("cnc_rdlife", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(life)?.cast::<u8>();
-        let g = h.call(&tlgroup(number))?;
-        unsafe {
-            // The group number the CNC answered, as FANUC's library writes it.
-            put_at(out, 0, g.grp as c_short);
-            put_at(out, 4, g.life.value);
-        }
-        Ok(())
-    })
-}
-
-/// Reads the tool life counter of tool group `number`.
-///
-/// # Safety
-/// `count` must point to a writable ODBTLIFE3.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdcount(
-    FlibHndl: c_ushort,
-    number: c_short,
-    count: *mut ODBTLIFE3,
-) -> c_short {
-    ffi_boundary!("cnc_rdcount", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(count)?.cast::<u8>();
-        let g = h.call(&tlgroup(number))?;
-        unsafe {
-            put_at(out, 0, g.grp as c_short);
-            put_at(out, 4, g.count.value);
-        }
-        Ok(())
-    })
-}
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
 /// then per tool its use number (1, 2, ...), tool number, length and radius

@@ -119,8 +119,6 @@ impl Call for WriteMacros {
     }
 }
 
-/// cnc_rdmacroinfo: (1,0x0017), payload 2 × i32 (low 16 bits used).
-pub const RDMACROINFO: u16 = 0x0017;
 /// cnc_rdmacror2: (1,0x00a7)[s, n], payload n IEEE doubles big-endian.
 pub const RDMACROR2: u16 = 0x00a7;
 /// cnc_wrmacror2: (1,0x00a8)[s, 0, 0, 0, 8n] + n doubles; reply i32 count.

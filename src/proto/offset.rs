@@ -18,14 +18,10 @@ use crate::wire_struct;
 pub const RDTOFS: u16 = 0x0008;
 /// Write one tool offset: args [n, n, 1000 + type, 0, 8] + one record.
 pub const WRTOFS: u16 = 0x0009;
-/// Tool offset memory information.
-pub const RDTOFSINFO: u16 = 0x000a;
 /// Read work zero offsets: args [s, e, axis].
 pub const RDZOFS: u16 = 0x000b;
 /// Write one work zero offset: args [n, n, axis, 0, 8 · records] + records.
 pub const WRZOFS: u16 = 0x000c;
-/// Number of work zero offsets.
-pub const RDZOFSINFO: u16 = 0x000d;
 
 /// cnc_rdtofs adds this to the type word (cnc_rdtofsr sends the type as is).
 pub const TOFS_SINGLE: i32 = 1000;

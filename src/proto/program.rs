@@ -8,21 +8,15 @@ use crate::wire_struct;
 
 // --- program ---
 
-pub const RDPRGNUM: u16 = 0x001c;
-pub const RDSEQNUM: u16 = 0x001d;
 pub const RDEXECPROG: u16 = 0x0020;
 pub const MODAL_G: u16 = 0x0021;
 pub const MODAL_AUX: u16 = 0x0022;
-pub const RDBLKCOUNT: u16 = 0x0035;
 pub const GETTIMER: u16 = 0x0045;
 pub const SETTIMER: u16 = 0x0046;
-pub const TOOLNUM: u16 = 0x004d;
 pub const RDOPMODE: u16 = 0x0057;
-pub const RDNTOOL: u16 = 0x008b;
 pub const EXEPRGNAME: u16 = 0x00cf;
 pub const EXEPRGNAME2: u16 = 0x00fc;
 pub const RDTIMER: u16 = 0x0120;
-pub const RDACTPT: u16 = 0x0162;
 /// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
 /// cnc_rdprogdir3).
 pub const RDPROGDIR: u16 = 0x0006;
@@ -219,10 +213,6 @@ pub fn rdexecprog(length: u16) -> Single<ExecProg> {
     Single::new(ReqSub::cnc(RDEXECPROG, &[n]))
 }
 
-pub fn rdtimer(kind: i16) -> Single<Timer> {
-    Single::padded(ReqSub::cnc(RDTIMER, &[i32::from(kind)]))
-}
-
 pub fn gettimer(kind: i16) -> Single<Clock> {
     Single::padded(ReqSub::cnc(GETTIMER, &[i32::from(kind)]))
 }
@@ -243,16 +233,6 @@ impl Call for SetTimer {
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
         super::call::sub(resp, 0).map(|_| ())
     }
-}
-
-pub fn toolnum(grp: i16, tuse: i16) -> Single<ToolNum> {
-    let (g, t) = (i32::from(grp), i32::from(tuse));
-    Single::new(ReqSub::cnc(TOOLNUM, &[g, t, t]))
-}
-
-pub fn rdntool(grp: i16) -> Single<NTool> {
-    let g = i32::from(grp);
-    Single::new(ReqSub::cnc(RDNTOOL, &[g, g]))
 }
 
 /// Answer of 0x0057 as FANUC's library reads it: every whole i16 word

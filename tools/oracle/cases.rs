@@ -185,7 +185,6 @@ const WORDS: &[Word] = &[
             "0|1|2|3|-1",
         ],
     ),
-    w("rdtimer", &["0|1|2|3|4|-1|5"]),
     w("gettimer", &["0|1|2|-1"]),
     Word {
         after: &["gettimer 0", "gettimer 1"],
@@ -396,10 +395,6 @@ const WORDS: &[Word] = &[
         "rdzofsr",
         &["1|0|-1|2", "-1|1|0|2", "6|1|0|7|-1", "1032|8|0|-1|100|2000"],
     ),
-    w("toolnum", &["1|0|-1|2|9999", "0|1|-1|2|99"]),
-    w("rdntool", &["1|0|-1|2|9999"]),
-    w("rdlife", &["1|0|-1|2|9999"]),
-    w("rdcount", &["1|0|-1|2|9999"]),
     w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
     w("rdtlctldata", &[]),
     // Writes (each followed by its read-back).

@@ -204,7 +204,6 @@ static short in_thread(void *(*f)(void *)) {
                        short r = F(cnc_rdexecprog)(H, &l, &blk, B0);                              \
                        field("length", l); field("blknum", blk); return r; })                     \
     WORD(modal, return F(cnc_modal)(H, N(1), N(2), B0))                                           \
-    WORD(rdtimer, return F(cnc_rdtimer)(H, N(1), B0))                                             \
     WORD(gettimer, { short t = (short)N(1); memcpy(b0, &t, 2); return F(cnc_gettimer)(H, B0); })  \
     WORD(settimer, { for (int k = 0; k < 4; k++) { short v = (short)N(1 + k);                     \
                          memcpy(b0 + (k ? 2 + 2 * k : 0), &v, 2); }                               \
@@ -260,10 +259,6 @@ static short in_thread(void *(*f)(void *)) {
     WORD(rdzofs, return F(cnc_rdzofs)(H, N(1), N(2), N(3), B0))                                   \
     WORD(wrzofs, { fill_hex(b0, 2); return F(cnc_wrzofs)(H, N(1), B0); })                         \
     WORD(rdzofsr, return F(cnc_rdzofsr)(H, N(1), N(2), N(3), N(4), B0))                           \
-    WORD(toolnum, return F(cnc_toolnum)(H, N(1), N(2), B0))                                       \
-    WORD(rdntool, return F(cnc_rdntool)(H, N(1), B0))                                             \
-    WORD(rdlife, return F(cnc_rdlife)(H, N(1), B0))                                               \
-    WORD(rdcount, return F(cnc_rdcount)(H, N(1), B0))                                             \
     WORD(rdtoolgrp, return F(cnc_rdtoolgrp)(H, N(1), N(2), B0))                                   \
     WORD(rdtlctldata, return F(cnc_rdtlctldata)(H, B0))                                           \
     /* upload */                                                                                  \
