@@ -1553,6 +1553,15 @@ short cnc_rddynamic(unsigned short FlibHndl, short axis, short length, struct OD
 short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct ODBDY2 *buf);
 
 /*
+ Reads the Ethernet board's type and device.
+
+ # Safety
+ `type` must be NULL or point to a writable short.
+ `device` must be NULL or point to a writable short.
+ */
+short cnc_rdetherinfo(unsigned short FlibHndl, short *type, short *device);
+
+/*
  Reads the text of the block being executed and the blocks after it.
  `*length` in: size of `data` in bytes; out: characters read (the text
  is NUL-terminated and, unlike FANUC's library, never longer than

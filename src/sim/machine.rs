@@ -460,6 +460,10 @@ impl CncService for Machine {
                 ]
             }),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
+            "cnc_rdetherinfo" => {
+                let c = &self.profile.cnc;
+                Ok(vec![c.ether_type.into(), c.ether_device.into()])
+            }
             _ => Err(CncError::FUNC),
         }
     }

@@ -78,6 +78,10 @@ pub struct Cnc {
     pub cnc_id: Vec<u32>,
     /// FOCAS option flags (30i: open-response word 14; 16i: parameter 9968).
     pub option: u16,
+    /// cnc_rdetherinfo: the Ethernet board (0 embedded, 1 Fast Ethernet
+    /// board, 2 Data Server) and the device in use (0 embedded, 1 PCMCIA card).
+    pub ether_type: i16,
+    pub ether_device: i16,
 }
 
 impl Default for Cnc {
@@ -94,6 +98,8 @@ impl Default for Cnc {
             max_sessions: 5,
             cnc_id: vec![0, 0, 0, 0],
             option: 1,
+            ether_type: 0,
+            ether_device: 0,
         }
     }
 }

@@ -53,7 +53,7 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdtimer",
         doc: "Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free) as minutes and milliseconds.",
-        params: &[Param::Short("r#type"), Param::Out("time", "IODBTIME")],
+        params: &[Param::Short("type"), Param::Out("time", "IODBTIME")],
         checks: &[],
         forms: &[every_class(0x0120, &[Word::Arg(0)])],
         reply: &[to(I32, "minute", I32), to(I32, "msec", I32)],
@@ -112,6 +112,17 @@ pub const FUNCS: &[Func] = &[
         short: Short::Error,
         dims: &[],
     },
+    // --- machine information ---
+    Func {
+        name: "cnc_rdetherinfo",
+        doc: "Reads the Ethernet board's type and device.",
+        params: &[Param::Out("type", "short"), Param::Out("device", "short")],
+        checks: &[],
+        forms: &[every_class(0x0159, &[])],
+        reply: &[to_out(0, I16, "", I16), to_out(1, I16, "", I16)],
+        short: Short::Zeros,
+        dims: &[],
+    },
     // --- tool life ---
     Func {
         name: "cnc_toolnum",
@@ -128,7 +139,7 @@ pub const FUNCS: &[Func] = &[
         )],
         reply: &[
             to(I32, "datano", I16),
-            to(I32, "r#type", I16),
+            to(I32, "type", I16),
             to(I32, "data", I32),
         ],
         short: Short::Error,
