@@ -259,6 +259,41 @@ fn described_exports(funcs: &[types::Func]) -> String {
             }
             offsets.push(off);
         }
+        // Records: where the array starts, one element's size, each field's
+        // member in the element; the whole array must fit in a struct output.
+        let records = match &f.records {
+            None => "RecordsAt { base: 0, stride: 0, offsets: &[] }".to_string(),
+            Some(r) => {
+                let (_, ty) = outs[r.out as usize];
+                let base = if r.to.is_empty() {
+                    "0".to_string()
+                } else {
+                    format!("offset_of!({}, {})", rust_type(ty), ident(r.to))
+                };
+                let stride = match c_size(r.elem) {
+                    Some(n) => n.to_string(),
+                    None => format!("size_of::<{}>()", r.elem),
+                };
+                let offs: Vec<String> = r
+                    .fields
+                    .iter()
+                    .map(|x| match x.to {
+                        Some(m) if !m.is_empty() => format!("offset_of!({}, {})", r.elem, ident(m)),
+                        _ => "0".to_string(),
+                    })
+                    .collect();
+                if c_size(ty).is_none() {
+                    checks.push(format!(
+                        "const _: () = if {base} + {} * {stride} > size_of::<{ty}>() {{\n    panic!(\"{}: the records do not fit in {ty}\")\n}};\n",
+                        r.max, f.name
+                    ));
+                }
+                format!(
+                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}] }}",
+                    offs.join(", ")
+                )
+            }
+        };
         let safety: Vec<String> = outs
             .iter()
             .map(|(n, t)| format!("/// `{n}` must be NULL or point to a writable {t}."))
@@ -279,6 +314,7 @@ pub unsafe extern "C" fn {name}(FlibHndl: c_ushort, {params}) -> c_short {{
                 &[{numbers}],
                 &[{out_ptrs}],
                 &[{offsets}],
+                {records},
             )
         }}
     }})
@@ -292,6 +328,7 @@ pub unsafe extern "C" fn {name}(FlibHndl: c_ushort, {params}) -> c_short {{
             numbers = numbers.join(", "),
             out_ptrs = out_ptrs.join(", "),
             offsets = offsets.join(", "),
+            records = records,
         ));
     }
     s

@@ -8,13 +8,23 @@ use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
 use crate::proto::described::{Described, form};
-use crate::spec::{Func, Int};
+use crate::proto::packet::CLASS_PMC;
+use crate::spec::{Field, Func, Int};
 #[allow(unused_imports)]
 use crate::types::*;
 #[allow(unused_imports)]
 use std::mem::offset_of;
 #[allow(unused_imports)]
 use std::os::raw::{c_long, c_short, c_ushort};
+
+/// Where a described function's records go: the byte offset of the array
+/// in its output, the size of one element, and the offset of each record
+/// field's member in the element.
+pub(crate) struct RecordsAt<'a> {
+    pub base: usize,
+    pub stride: usize,
+    pub offsets: &'a [usize],
+}
 
 /// Runs described function `f`: the handle, its checks and NULL outputs
 /// before any traffic, the request for the CNC's class, then the reply's
@@ -23,14 +33,16 @@ use std::os::raw::{c_long, c_short, c_ushort};
 /// # Safety
 /// Each `outs[i]` is NULL or points to writable memory of output i's C
 /// type; `offsets[k]` is the byte offset of reply field k's member in its
-/// output, and its `n` elements fit there (build.rs asserts it at compile
-/// time).
+/// output, and its `n` elements fit there; `rec` places `f.records`' at
+/// most `max` records inside their output (build.rs asserts both at
+/// compile time where the output is a struct).
 pub(crate) unsafe fn exec(
     f: &'static Func,
     h: c_ushort,
     args: &[i32],
     outs: &[*mut u8],
     offsets: &[usize],
+    rec: RecordsAt<'_>,
 ) -> Result<()> {
     let h = handles::get(h)?;
     for c in f.checks {
@@ -43,20 +55,50 @@ pub(crate) unsafe fn exec(
         .iter()
         .map(|p| nonnull(*p))
         .collect::<Result<Vec<_>>>()?;
-    if form(f, h.ctx().class).is_none() {
+    let Some(form) = form(f, h.ctx().class) else {
         return Err(Error::local(EW_FUNC, "not on this CNC class"));
-    }
-    let values = h.call(&Described { f, args })?;
+    };
+    let call = Described { f, args };
+    let values = if form.class == CLASS_PMC {
+        h.call_pmc(&call)?
+    } else {
+        h.call(&call)?
+    };
     let mut v = values.into_iter();
-    for (field, off) in f.reply.iter().zip(offsets) {
-        for k in 0..field.n as usize {
+    // SAFETY: the caller's contract (offsets and elements in the outputs).
+    unsafe { write_fields(f.reply, &outs, |k| offsets[k], &mut v) };
+    if let Some(r) = &f.records {
+        let per = r.values();
+        let mut i = 0;
+        while v.len() >= per && per > 0 {
+            let at = |k: usize| rec.base + i * rec.stride + rec.offsets[k];
+            // SAFETY: as above; decode returned at most `max` records.
+            unsafe { write_fields(r.fields, &outs, at, &mut v) };
+            i += 1;
+        }
+    }
+    Ok(())
+}
+
+/// Writes `fields`' integers, field k's elements from byte `at(k)` of its
+/// output on, each converted as a C cast converts it.
+///
+/// # Safety
+/// Every element written must lie in writable memory of its output.
+unsafe fn write_fields(
+    fields: &[Field],
+    outs: &[*mut u8],
+    at: impl Fn(usize) -> usize,
+    v: &mut impl Iterator<Item = i64>,
+) {
+    for (k, field) in fields.iter().enumerate() {
+        for e in 0..field.n as usize {
             let x = v.next().unwrap_or(0);
             if field.to.is_none() {
                 continue;
             }
-            // SAFETY: the caller's contract (offset and element in the output).
             unsafe {
-                let p = outs[field.out as usize].add(off + k * field.c.size());
+                let p = outs[field.out as usize].add(at(k) + e * field.c.size());
                 match field.c {
                     Int::I8 => put(p.cast::<i8>(), x as i8),
                     Int::U8 => put(p, x as u8),
@@ -68,7 +110,6 @@ pub(crate) unsafe fn exec(
             }
         }
     }
-    Ok(())
 }
 
 include!(concat!(env!("OUT_DIR"), "/described.rs"));

@@ -5,10 +5,10 @@
 
 use super::call::{Call, Ctx, sub};
 use super::open::CncClass;
-use super::packet::{CLASS_CNC, ReqSub, RespSub};
+use super::packet::{CLASS_PMC, ReqSub, RespSub};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Form, Func, Int, Short, Word};
+use crate::spec::{Field, Form, Func, Int, Short, Word};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -40,7 +40,11 @@ impl Call for Described<'_> {
                 Word::Const(c) => c,
             })
             .collect();
-        vec![ReqSub::cnc(form.cmd, &words)]
+        if form.class == CLASS_PMC {
+            vec![ReqSub::pmc(form.cmd, &words)]
+        } else {
+            vec![ReqSub::cnc(form.cmd, &words)]
+        }
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
         decode(self.f, &sub(resp, 0)?.payload)
@@ -70,7 +74,18 @@ pub fn decode(f: &Func, payload: &[u8]) -> Result<Vec<i64>> {
     }
     let mut r = Reader::new(p);
     let mut out = Vec::new();
-    for field in f.reply {
+    read_fields(&mut r, f.reply, &mut out)?;
+    if let Some(rec) = &f.records {
+        let size = rec.wire_len().max(1);
+        for _ in 0..(r.remaining() / size).min(rec.max as usize) {
+            read_fields(&mut r, rec.fields, &mut out)?;
+        }
+    }
+    Ok(out)
+}
+
+fn read_fields(r: &mut Reader<'_>, fields: &[Field], out: &mut Vec<i64>) -> Result<()> {
+    for field in fields {
         for _ in 0..field.n {
             out.push(match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
@@ -82,21 +97,40 @@ pub fn decode(f: &Func, payload: &[u8]) -> Result<Vec<i64>> {
             });
         }
     }
-    Ok(out)
+    Ok(())
 }
 
-/// The reply payload for these integers (simulator side): each is cut to
-/// its wire width, as the CNC sends it.
+/// The reply payload for these integers (simulator side): the fixed
+/// fields, then whole records; each integer cut to its wire width, as the
+/// CNC sends it.
 pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeError> {
-    let n: usize = f.reply.iter().map(|x| x.n as usize).sum();
-    if values.len() != n {
-        return Err(DecodeError::Invalid(
-            "value count differs from the reply layout",
-        ));
-    }
+    let bad = DecodeError::Invalid("value count differs from the reply layout");
+    let fixed: usize = f.reply.iter().map(|x| x.n as usize).sum();
+    let extra = values.len().checked_sub(fixed).ok_or(bad)?;
+    let records = match f.records {
+        None if extra == 0 => 0,
+        Some(r)
+            if r.values() > 0
+                && extra % r.values() == 0
+                && extra / r.values() <= r.max as usize =>
+        {
+            extra / r.values()
+        }
+        _ => return Err(bad),
+    };
     let mut w = Writer::new();
     let mut v = values.iter();
-    for field in f.reply {
+    write_fields(&mut w, f.reply, &mut v);
+    if let Some(rec) = &f.records {
+        for _ in 0..records {
+            write_fields(&mut w, rec.fields, &mut v);
+        }
+    }
+    Ok(w.into_vec())
+}
+
+fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item = &'a i64>) {
+    for field in fields {
         for x in v.by_ref().take(field.n as usize) {
             match field.wire {
                 Int::I8 | Int::U8 => w.u8(*x as u8),
@@ -105,19 +139,14 @@ pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeEr
             }
         }
     }
-    Ok(w.into_vec())
 }
 
-/// The described function a CNC-class request subpacket asks for, on a CNC
-/// of this class (simulator dispatch).
+/// The described function a request subpacket asks for, on a CNC of this
+/// class (simulator dispatch).
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
-    (sub.class == CLASS_CNC)
-        .then(|| {
-            crate::spec::FUNCS
-                .iter()
-                .find(|f| form(f, class).is_some_and(|form| form.cmd == sub.cmd))
-        })
-        .flatten()
+    crate::spec::FUNCS
+        .iter()
+        .find(|f| form(f, class).is_some_and(|form| form.cmd == sub.cmd && form.class == sub.class))
 }
 
 /// The number arguments the request carries (inverse of the form's words:

@@ -57,6 +57,8 @@ pub enum Word {
 #[derive(Debug, Clone, Copy)]
 pub struct Form {
     pub classes: Classes,
+    /// The subpacket class: 1 CNC (the handle's path), 2 PMC (path 1).
+    pub class: u16,
     pub cmd: u16,
     /// Up to five argument words; the rest are 0.
     pub words: &'static [Word],
@@ -117,6 +119,34 @@ pub struct Field {
     pub c: Int,
 }
 
+/// An array of records after the fixed fields of the reply: as many whole
+/// records as the rest of the payload holds, at most `max`, written from
+/// output `out`'s member `to` (`""`: the output itself is the array) on,
+/// one `elem` (a struct of src/types, or `short`/`long`) per record. The
+/// `to` of each field names a member of `elem` (`""`: the element itself).
+#[derive(Debug, Clone, Copy)]
+pub struct Records {
+    pub fields: &'static [Field],
+    pub out: u8,
+    pub to: &'static str,
+    pub elem: &'static str,
+    pub max: u16,
+}
+
+impl Records {
+    /// The bytes of one record on the wire.
+    pub fn wire_len(&self) -> usize {
+        self.fields
+            .iter()
+            .map(|f| f.wire.size() * f.n as usize)
+            .sum()
+    }
+    /// The integers of one record.
+    pub fn values(&self) -> usize {
+        self.fields.iter().map(|f| f.n as usize).sum()
+    }
+}
+
 /// What a payload shorter than the reply layout means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Short {
@@ -140,6 +170,8 @@ pub struct Func {
     /// The request: the first form whose classes match the CNC's.
     pub forms: &'static [Form],
     pub reply: &'static [Field],
+    /// Records after `reply`'s fields, if any.
+    pub records: Option<Records>,
     pub short: Short,
     /// The oracle's dimensions, one per number parameter: "|"-separated
     /// values, the base first.
@@ -211,6 +243,17 @@ pub const fn skip(wire: Int) -> Field {
 pub const fn every_class(cmd: u16, words: &'static [Word]) -> Form {
     Form {
         classes: Classes::All,
+        class: 1,
+        cmd,
+        words,
+    }
+}
+
+/// The one request form of a PMC function (subpacket class 2, path 1).
+pub const fn pmc(cmd: u16, words: &'static [Word]) -> Form {
+    Form {
+        classes: Classes::All,
+        class: 2,
         cmd,
         words,
     }
