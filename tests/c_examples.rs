@@ -13,18 +13,6 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// A scratch dir holding libfwlib32.so.1 -> the built library (the SONAME
-/// a program linked with -lfwlib32 asks the loader for).
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fwlib32-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    let so = toolchain::cdylib();
-    std::fs::copy(&so, d.join("libfwlib32.so.1")).unwrap();
-    std::os::unix::fs::symlink("libfwlib32.so.1", d.join("libfwlib32.so")).unwrap();
-    d
-}
-
 fn cc(args: &[&str]) {
     let out = Command::new(toolchain::cc())
         .args(args)
@@ -90,7 +78,7 @@ fn check_status_output(out: &std::process::Output, p: &Profile) {
 
 #[test]
 fn status_example_reads_the_profile() {
-    let dir = scratch("status");
+    let dir = toolchain::lib_dir("status");
     let exe = build_example("status", &dir);
     let sim = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
     let out = toolchain::target_command(&exe)
@@ -105,7 +93,7 @@ fn status_example_reads_the_profile() {
 /// stub standing in for FANUC's) runs against ours with LD_PRELOAD.
 #[test]
 fn ld_preload_replaces_another_libfwlib32() {
-    let dir = scratch("preload");
+    let dir = toolchain::lib_dir("preload");
     let stub_dir = dir.join("stub");
     std::fs::create_dir_all(&stub_dir).unwrap();
     let stub_c = stub_dir.join("stub.c");
@@ -167,7 +155,7 @@ fn program_coordinates(text: &str, axis: char, decimals: i16) -> Vec<i64> {
 /// profile allows at some point of the cycle, and the machine must move.
 #[test]
 fn adapter_example_polls_the_running_machine() {
-    let dir = scratch("adapter");
+    let dir = toolchain::lib_dir("adapter");
     let exe = build_example("adapter", &dir);
     let p = Profile::default();
     let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
@@ -293,7 +281,7 @@ fn adapter_example_polls_the_running_machine() {
 /// was written. Parameter writes need MDI mode and parameter write enable.
 #[test]
 fn data_example_writes_and_reads_back() {
-    let dir = scratch("data");
+    let dir = toolchain::lib_dir("data");
     let exe = build_example("data", &dir);
     let text = fwlib32::sim::profile::DEFAULT_PROFILE
         .replace("param_write_enable = false", "param_write_enable = true")

@@ -125,6 +125,19 @@ pub fn scratch(name: &str) -> PathBuf {
     dir
 }
 
+/// A fresh scratch directory holding the built library as `libfwlib32.so.1`
+/// (the SONAME a program linked with `-lfwlib32` asks the loader for) and
+/// `libfwlib32.so` -> it (the name `-lfwlib32` links): for `-L` and
+/// `LD_LIBRARY_PATH`.
+pub fn lib_dir(name: &str) -> PathBuf {
+    let dir = scratch(name);
+    let so = cdylib();
+    std::fs::copy(&so, dir.join("libfwlib32.so.1"))
+        .unwrap_or_else(|e| panic!("copy {}: {e}", so.display()));
+    std::os::unix::fs::symlink("libfwlib32.so.1", dir.join("libfwlib32.so")).unwrap();
+    dir
+}
+
 /// `(kind, name)` of every `typedef struct X {` / `typedef union X {` in a header.
 pub fn header_typedefs(header: &str) -> Vec<(String, String)> {
     header

@@ -1,0 +1,3 @@
+module fwlib32-rs/examples/go
+
+go 1.19
