@@ -88,6 +88,11 @@ namespace Fwlib32 {
 #define MAX_AXIS 32
 
 /*
+ Maximum number of paths (ODBSYSEX).
+ */
+#define MAX_CNCPATH 15
+
+/*
  Maximum number of spindles.
  */
 #define MAX_SPINDLE 8
@@ -609,6 +614,14 @@ typedef struct IODBMR {
 } IODBMR;
 
 /*
+ cnc_rdngrp: the number of tool life groups.
+ */
+typedef struct ODBTLIFE2 {
+    short dummy[2];
+    LONG data;
+} ODBTLIFE2;
+
+/*
  cnc_rdopmsg: one operator message (256-character variant).
  */
 typedef struct OPMSG {
@@ -854,6 +867,16 @@ typedef struct ODBTLINF {
     short ofs_type;
     short use_no;
 } ODBTLINF;
+
+/*
+ cnc_rdtofsinfo2: tool offset memory type, number of offsets, and which
+ offsets are enabled.
+ */
+typedef struct ODBTLINF2 {
+    short ofs_type;
+    short use_no;
+    short ofs_enable;
+} ODBTLINF2;
 
 /*
  A tool offset with its imaginary tip number and 1 value (IODBTO.u.m_ofs_at).
@@ -1107,6 +1130,42 @@ typedef struct IODBPMC {
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
+
+/*
+ One path of ODBSYSEX.
+ */
+typedef struct ODBSYSEX_PATH {
+    /*
+     Machine type as two ASCII characters (" M", " T", ...).
+     */
+    short system;
+    short group;
+    short attrib;
+    short ctrl_axis;
+    short ctrl_srvo;
+    short ctrl_spdl;
+    short mchn_no;
+    short reserved;
+} ODBSYSEX_PATH;
+
+/*
+ cnc_sysinfo_ex: the CNC's maximum and controlled axes, spindles, paths
+ and machine groups, and per path.
+ */
+typedef struct ODBSYSEX {
+    short max_axis;
+    short max_spdl;
+    short max_path;
+    short max_mchn;
+    short ctrl_axis;
+    short ctrl_srvo;
+    short ctrl_spdl;
+    short ctrl_path;
+    short ctrl_mchn;
+    short addinfo;
+    short reserved[2];
+    struct ODBSYSEX_PATH path[MAX_CNCPATH];
+} ODBSYSEX;
 
 #ifdef __cplusplus
 extern "C" {
@@ -1491,6 +1550,14 @@ short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
 short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
 
 /*
+ Reads the actual servo current of each axis.
+
+ # Safety
+ `data` must be NULL or point to a writable short.
+ */
+short cnc_rdcurrent(unsigned short FlibHndl, short *data);
+
+/*
  The same as cnc_diagnoss (an alias some programs use).
 
  # Safety
@@ -1595,6 +1662,14 @@ short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *
 short cnc_rdlife(unsigned short FlibHndl, short number, struct ODBTLIFE3 *life);
 
 /*
+ Reads the servo loop gain of each axis (4 bytes written per `long`).
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdloopgain(unsigned short FlibHndl, long *data);
+
+/*
  Reads the custom macro variable `number` (common #100.., #500.., system
  variables): `mcr_val · 10^-dec_val`; a vacant variable reads as
  mcr_val 0, dec_val -1. `length` must be at least 10 (the l32 ODBM).
@@ -1644,6 +1719,14 @@ short cnc_rdmacror(unsigned short FlibHndl,
  `num` must point to a 4-byte count, `data` to `*num` writable doubles.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
+ Reads the number of tool life groups.
+
+ # Safety
+ `grp` must be NULL or point to a writable ODBTLIFE2.
+ */
+short cnc_rdngrp(unsigned short FlibHndl, struct ODBTLIFE2 *grp);
 
 /*
  Reads the number of tools in tool-life group `grp_num`.
@@ -1884,6 +1967,15 @@ short cnc_rdspmeter(unsigned short FlibHndl,
                     struct ODBSPLOAD *loadmeter);
 
 /*
+ Reads the actual servo motor speed of each axis (4 bytes written per
+ `long`).
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdsrvspeed(unsigned short FlibHndl, long *data);
+
+/*
  Reads the servo load meters: `*data_num` in = room, out = axes written.
 
  # Safety
@@ -1930,6 +2022,15 @@ short cnc_rdtofs(unsigned short FlibHndl,
  `tlinf` must be NULL or point to a writable ODBTLINF.
  */
 short cnc_rdtofsinfo(unsigned short FlibHndl, struct ODBTLINF *tlinf);
+
+/*
+ Reads the tool offset memory type, the number of offsets and which
+ offsets are enabled.
+
+ # Safety
+ `tlinf` must be NULL or point to a writable ODBTLINF2.
+ */
+short cnc_rdtofsinfo2(unsigned short FlibHndl, struct ODBTLINF2 *tlinf);
 
 /*
  Reads the tool offsets `s_number..=e_number` of one type (-1: all types

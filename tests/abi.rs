@@ -369,6 +369,12 @@ rust_layouts! {
     // --- tool ---
     ODBTLIFE3 { datano, dummy, data }
     ODBTG { grp_num, dummy, ntool, life, count, data }
+    ODBTLIFE2 { dummy, data }
+    ODBTLINF2 { ofs_type, use_no, ofs_enable }
+    ODBSYSEX {
+        max_axis, max_spdl, max_path, max_mchn, ctrl_axis, ctrl_srvo, ctrl_spdl, ctrl_path,
+        ctrl_mchn, addinfo, reserved, path,
+    }
     IODBTLCTL {
         slct, used_tool, turret_indx, zero_tl_no, t_axis_move, total_punch,
         t_axis_dec, reserve, reserves,

@@ -30,3 +30,120 @@ fn ether_info_is_the_profiles_board() {
         assert_eq!(unsafe { cnc_rdetherinfo(h, &mut t, &mut d) }, EW_HANDLE);
     }
 }
+
+/// A two-axis machine running O0001 one block a second: N10 rapid to X10
+/// (10 mm in 1 s), N20 X20 at F300 (10 mm), N30 Y+5, N40 a dwell.
+const RUNNING: &str = r#"
+[cnc]
+class = "30i"
+
+[[path]]
+[path.status]
+aut = 1
+run = 3
+motion = 1
+
+[path.cycle]
+program = 1
+block_seconds = 1.0
+repeat = true
+
+[path.offset]
+memory = 1
+enable = 0
+tool = [[10, 20], [30, 40], [50, 60]]
+
+[[path.tool_group]]
+number = 1
+life = 100
+count = 5
+tool = [{ number = 11, length = 1, radius = 1 }]
+
+[[path.tool_group]]
+number = 7
+life = 10
+count = 0
+tool = [{ number = 12, length = 2, radius = 2 }]
+
+[[path.axis]]
+name = "X"
+decimals = 3
+servo_load = 30
+loop_gain = 2500
+lead = 5.0
+
+[[path.axis]]
+name = "Y"
+decimals = 3
+servo_load = 12
+
+[[program]]
+number = 1
+text = """
+O0001 (TEST);
+N10 G90 G00 X10. Y0.;
+N20 G01 X20. F300;
+N30 G91 Y5.;
+N40 G04 X1.;
+N50 M30;
+%
+"""
+"#;
+
+fn servo(h: u16, f: unsafe extern "C" fn(u16, *mut std::os::raw::c_long) -> i16) -> [i32; 2] {
+    let mut v = [-1i32; 32];
+    assert_eq!(unsafe { f(h, v.as_mut_ptr().cast()) }, EW_OK);
+    assert!(
+        v[2..].iter().all(|x| *x == -1),
+        "one value per axis of the path"
+    );
+    [v[0], v[1]]
+}
+
+#[test]
+fn servo_figures_follow_the_running_program() {
+    let s = sim::start_toml(RUNNING);
+    let h = sim::alloc(&s);
+    assert_eq!(servo(h, cnc_rdloopgain), [2500, 3000], "profile, else 3000");
+
+    // N10: X moves 10 mm in 1 s = 600 mm/min; over a 5 mm lead 120 rpm.
+    s.set_elapsed(std::time::Duration::from_secs_f64(0.5));
+    assert_eq!(servo(h, cnc_rdsrvspeed), [120, 0]);
+    // N30: Y moves 5 mm in 1 s over the default 10 mm lead: 30 rpm.
+    s.set_elapsed(std::time::Duration::from_secs_f64(2.5));
+    assert_eq!(servo(h, cnc_rdsrvspeed), [0, 30]);
+    let current = || {
+        let mut cur = [-1i16; 32];
+        assert_eq!(unsafe { cnc_rdcurrent(h, cur.as_mut_ptr()) }, EW_OK);
+        assert!(cur[2..].iter().all(|x| *x == -1));
+        [cur[0], cur[1]]
+    };
+    assert_eq!(
+        current(),
+        [30, 12],
+        "the profile's loads while the path moves"
+    );
+    // N40: the dwell, nothing turns; a third of the load at rest.
+    s.set_elapsed(std::time::Duration::from_secs_f64(3.5));
+    assert_eq!(servo(h, cnc_rdsrvspeed), [0, 0]);
+    assert_eq!(current(), [10, 4]);
+
+    for f in [cnc_rdloopgain, cnc_rdsrvspeed] {
+        assert_eq!(unsafe { f(h, std::ptr::null_mut()) }, EW_DATA);
+    }
+    assert_eq!(unsafe { cnc_rdcurrent(h, std::ptr::null_mut()) }, EW_DATA);
+}
+
+#[test]
+fn offset_and_tool_life_sizes_are_the_profiles() {
+    let s = sim::start_toml(RUNNING);
+    let h = sim::alloc(&s);
+    let mut i = fwlib32::types::ODBTLINF2::default();
+    assert_eq!(unsafe { cnc_rdtofsinfo2(h, &mut i) }, EW_OK);
+    assert_eq!((i.ofs_type, i.use_no, i.ofs_enable), (1, 3, 0));
+    let mut g = fwlib32::types::ODBTLIFE2::default();
+    assert_eq!(unsafe { cnc_rdngrp(h, &mut g) }, EW_OK);
+    assert_eq!(g.data, 2);
+    assert_eq!(unsafe { cnc_rdngrp(h, std::ptr::null_mut()) }, EW_DATA);
+    assert_eq!(unsafe { cnc_rdtofsinfo2(h, std::ptr::null_mut()) }, EW_DATA);
+}

@@ -142,11 +142,17 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
 }
 
 /// The described function a request subpacket asks for, on a CNC of this
-/// class (simulator dispatch).
+/// class (simulator dispatch). A CNC sends one answer per command: where
+/// functions share a command (cnc_rdtofsinfo and cnc_rdtofsinfo2), the one
+/// with the longest reply layout describes the whole answer and the others
+/// read a prefix of it.
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
     crate::spec::FUNCS
         .iter()
-        .find(|f| form(f, class).is_some_and(|form| form.cmd == sub.cmd && form.class == sub.class))
+        .filter(|f| {
+            form(f, class).is_some_and(|form| form.cmd == sub.cmd && form.class == sub.class)
+        })
+        .max_by_key(|f| f.reply_len())
 }
 
 /// The number arguments the request carries (inverse of the form's words:

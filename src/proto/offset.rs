@@ -70,13 +70,15 @@ pub fn wrtofs(number: i16, kind: i16, value: i32) -> Single<Ack> {
 }
 
 wire_struct! {
-    /// Payload of 0x000a (cnc_rdtofsinfo). FANUC's library reads `use_no`
-    /// from bytes 2..4 and `ofs_type` from bytes 4..6; what a real CNC puts
+    /// Payload of 0x000a (cnc_rdtofsinfo, cnc_rdtofsinfo2). FANUC's library
+    /// reads `use_no` from bytes 2..4, `ofs_type` from bytes 4..6 and
+    /// (cnc_rdtofsinfo2) `ofs_enable` from bytes 6..8; what a real CNC puts
     /// in bytes 0..2 is unknown (not recorded from a real CNC).
     pub struct TofsInfo {
         pub reserved: i16,
         pub use_no: i16,
         pub ofs_type: i16,
+        pub enable: i16,
     }
 }
 

@@ -452,13 +452,11 @@ impl CncService for Machine {
             "cnc_rdmacroinfo" => self
                 .sim_macro_info(path)
                 .map(|m| vec![v(m.use_no1), v(m.use_no2)]),
-            "cnc_rdtofsinfo" => self.tofs_info(path).map(|t| {
-                vec![
-                    i64::from(t.reserved),
-                    i64::from(t.use_no),
-                    i64::from(t.ofs_type),
-                ]
+            "cnc_rdtofsinfo2" => self.tofs_info(path).map(|t| {
+                let w = [t.reserved, t.use_no, t.ofs_type, t.enable];
+                w.map(i64::from).to_vec()
             }),
+            "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
             "cnc_rdetherinfo" => {
                 let c = &self.profile.cnc;

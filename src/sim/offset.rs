@@ -92,6 +92,7 @@ impl Machine {
             reserved: 0,
             use_no: o.tool.len() as i16,
             ofs_type: o.memory,
+            enable: o.enable,
         })
     }
 
@@ -163,6 +164,14 @@ impl Machine {
             return groups.first().ok_or(NUMBER);
         }
         groups.iter().find(|g| g.number == grp).ok_or(NUMBER)
+    }
+
+    /// 0x004a: how many tool life groups the path has.
+    pub fn tl_group_count(&self, path: u16) -> Reply<i32> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        Ok(p.tool_groups.len() as i32)
     }
 
     /// 0x008b [grp, grp].

@@ -21,6 +21,8 @@ const ATTRIB: CncError = CncError::new(EW_ATTRIB);
 const NUMBER: CncError = CncError::new(EW_NUMBER);
 /// Rated servo current (A) of an axis whose profile gives none.
 const DEFAULT_RATED_CURRENT: f64 = 10.0;
+/// Position loop gain when the profile gives none, 0.01/s.
+const DEFAULT_LOOP_GAIN: i32 = 3000;
 
 /// The 4-byte name entry of an axis: name, suffix, two zero bytes.
 fn axis_name(a: &Axis) -> [u8; 4] {
@@ -230,8 +232,13 @@ impl Machine {
                 Value::decimal(tenths as i32, 1)
             }
         };
+        let rec = |a: &Axis| match code {
+            0 => Value::decimal(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN), 0),
+            2 => Value::decimal(a.servo_speed, 0),
+            _ => rec(a),
+        };
         match code {
-            1 | 3 => {
+            0..=3 => {
                 let mut v: Vec<Value> = p.axes.iter().map(rec).collect();
                 self.pad_16i(&mut v, self.profile.cnc.max_axes);
                 Ok(v)

@@ -191,6 +191,13 @@ pub struct Axis {
     /// Rated servo current, A (default 10): rdaxisdata class 2 type 2
     /// answers `servo_load` % of it.
     pub rated_current: Option<f64>,
+    /// Position loop gain, 0.01/s (cnc_rdloopgain); default 3000.
+    pub loop_gain: Option<i32>,
+    /// Ball screw lead, mm per motor turn (default 10): the servo motor speed
+    /// (cnc_rdsrvspeed, rpm) is the axis feed divided by it.
+    pub lead: Option<f64>,
+    /// Servo motor speed, rpm (cnc_rdsrvspeed): set by the running program.
+    pub servo_speed: i32,
     /// Unit of the positions: 0 mm, 1 inch, 2 degree (rdaxisdata / rdposition `unit`).
     pub unit: i16,
     /// Input / output figures (cnc_getfigure); default `decimals`.

@@ -12,6 +12,8 @@ use std::time::{Duration, Instant};
 
 /// The parameter a FANUC CNC counts machined parts in.
 const PART_COUNT_PARAM: i32 = 6711;
+/// Ball screw lead when the profile gives none, mm per motor turn.
+pub(crate) const DEFAULT_LEAD: f64 = 10.0;
 
 /// The simulated machine: the profile (with what writes change in it) and
 /// the live state of its paths. The areas (src/sim/param.rs, position.rs
@@ -667,6 +669,13 @@ impl Machine {
             };
             let mm = (to - from) as f64 / plan.scale[j];
             dist2 += mm * mm;
+            // The motor turns while the axis moves: its feed over the lead.
+            ax.servo_speed = if moving {
+                let lead = ax.lead.unwrap_or(DEFAULT_LEAD);
+                (mm.abs() * 60.0 / plan.block_seconds / lead).round() as i32
+            } else {
+                0
+            };
             let clamp = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
             ax.absolute = clamp(cur);
             ax.machine = clamp(cur + base[1] - base[0]);

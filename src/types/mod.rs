@@ -33,6 +33,8 @@ pub type ULONG = u32;
 
 /// Maximum number of axes (Linux Ethernet build).
 pub const MAX_AXIS: usize = 32;
+/// Maximum number of paths (ODBSYSEX).
+pub const MAX_CNCPATH: usize = 15;
 /// Maximum number of spindles.
 pub const MAX_SPINDLE: usize = 8;
 /// The axis argument meaning "every axis".

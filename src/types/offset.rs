@@ -118,3 +118,13 @@ pub struct IODBZOR {
     pub datano_e: c_short,
     pub data: [LONG; 256], // 8 * MAX_AXIS
 }
+
+/// cnc_rdtofsinfo2: tool offset memory type, number of offsets, and which
+/// offsets are enabled.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLINF2 {
+    pub ofs_type: c_short,
+    pub use_no: c_short,
+    pub ofs_enable: c_short,
+}

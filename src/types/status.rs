@@ -1,5 +1,6 @@
 //! Connection group and status structures.
 
+use super::MAX_CNCPATH;
 use std::os::raw::{c_char, c_short};
 
 /// cnc_sysinfo: CNC system information.
@@ -55,4 +56,38 @@ pub struct ODBST2 {
 pub struct ODBERR {
     pub err_no: c_short,
     pub err_dtno: c_short,
+}
+
+/// One path of ODBSYSEX.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSYSEX_PATH {
+    /// Machine type as two ASCII characters (" M", " T", ...).
+    pub system: c_short,
+    pub group: c_short,
+    pub attrib: c_short,
+    pub ctrl_axis: c_short,
+    pub ctrl_srvo: c_short,
+    pub ctrl_spdl: c_short,
+    pub mchn_no: c_short,
+    pub reserved: c_short,
+}
+
+/// cnc_sysinfo_ex: the CNC's maximum and controlled axes, spindles, paths
+/// and machine groups, and per path.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSYSEX {
+    pub max_axis: c_short,
+    pub max_spdl: c_short,
+    pub max_path: c_short,
+    pub max_mchn: c_short,
+    pub ctrl_axis: c_short,
+    pub ctrl_srvo: c_short,
+    pub ctrl_spdl: c_short,
+    pub ctrl_path: c_short,
+    pub ctrl_mchn: c_short,
+    pub addinfo: c_short,
+    pub reserved: [c_short; 2],
+    pub path: [ODBSYSEX_PATH; MAX_CNCPATH],
 }

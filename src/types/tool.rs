@@ -51,3 +51,11 @@ pub struct IODBTLCTL {
     pub reserve: c_char,
     pub reserves: [c_short; 10],
 }
+
+/// cnc_rdngrp: the number of tool life groups.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLIFE2 {
+    pub dummy: [c_short; 2],
+    pub data: LONG,
+}

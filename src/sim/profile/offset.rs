@@ -11,6 +11,8 @@ pub struct Offsets {
     pub decimals: i16,
     /// cnc_rdtofsinfo `ofs_type`: tool offset memory (0 A, 1 B, 2 C).
     pub memory: i16,
+    /// cnc_rdtofsinfo2 `ofs_enable`: 1 when tool offsets are in use.
+    pub enable: i16,
     /// Tool offsets: row k is offset number k+1, one column per type
     /// (mill, memory C: radius wear, radius geometry, length wear, length
     /// geometry, types 0..3). Every row has the same number of columns.
@@ -25,6 +27,7 @@ impl Default for Offsets {
         Offsets {
             decimals: 3,
             memory: 2,
+            enable: 1,
             tool: Vec::new(),
             work: Vec::new(),
         }
