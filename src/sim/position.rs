@@ -219,23 +219,21 @@ impl Machine {
         }
     }
 
-    /// 0x56[1]: servo load meter (%) of each axis of the path; 0x56[3]:
-    /// servo current in amperes (one decimal), the load's share of the
-    /// axis's rated current, so it follows the motion as the load does.
+    /// 0x56, per axis of the path: [0] position loop gain, [1] servo load
+    /// meter (%), [2] motor speed (rpm), [3] servo current in amperes (one
+    /// decimal), the load's share of the axis's rated current, so it follows
+    /// the motion as the load does.
     pub(crate) fn pos_servo_load(&self, path: u16, code: i32) -> Reply<Vec<Value>> {
         let p = self.pos_path(path)?;
         let rec = |a: &Axis| match code {
+            0 => Value::decimal(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN), 0),
             1 => Value::decimal(a.servo_load, 0),
+            2 => Value::decimal(a.servo_speed, 0),
             _ => {
                 let rated = a.rated_current.unwrap_or(DEFAULT_RATED_CURRENT);
                 let tenths = (rated * 10.0 * f64::from(a.servo_load) / 100.0).round();
                 Value::decimal(tenths as i32, 1)
             }
-        };
-        let rec = |a: &Axis| match code {
-            0 => Value::decimal(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN), 0),
-            2 => Value::decimal(a.servo_speed, 0),
-            _ => rec(a),
         };
         match code {
             0..=3 => {
