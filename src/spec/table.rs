@@ -8,6 +8,26 @@
 use super::types::Int::*;
 use super::types::*;
 
+/// A servo figure of each axis into `long data[]`: the value word of each
+/// 0x0056 value record (value, then base and exponent).
+const SERVO_LONGS: Func = Func {
+    name: "",
+    doc: "",
+    params: &[Param::Out("data", "long")],
+    checks: &[],
+    forms: &[],
+    reply: &[],
+    records: Some(Records {
+        fields: &[to(I32, "", I32), skip(I32)],
+        out: 0,
+        to: "",
+        elem: "long",
+        max: 32,
+    }),
+    short: Short::Zeros,
+    dims: &[],
+};
+
 pub const FUNCS: &[Func] = &[
     // --- program ---
     Func {
@@ -138,36 +158,14 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdloopgain",
         doc: "Reads the servo loop gain of each axis (4 bytes written per `long`).",
-        params: &[Param::Out("data", "long")],
-        checks: &[],
         forms: &[every_class(0x0056, &[Word::Const(0)])],
-        reply: &[],
-        records: Some(Records {
-            fields: &[to(I32, "", I32), skip(I32)],
-            out: 0,
-            to: "",
-            elem: "long",
-            max: 32,
-        }),
-        short: Short::Zeros,
-        dims: &[],
+        ..SERVO_LONGS
     },
     Func {
         name: "cnc_rdsrvspeed",
         doc: "Reads the actual servo motor speed of each axis (4 bytes written per `long`).",
-        params: &[Param::Out("data", "long")],
-        checks: &[],
         forms: &[every_class(0x0056, &[Word::Const(2)])],
-        reply: &[],
-        records: Some(Records {
-            fields: &[to(I32, "", I32), skip(I32)],
-            out: 0,
-            to: "",
-            elem: "long",
-            max: 32,
-        }),
-        short: Short::Zeros,
-        dims: &[],
+        ..SERVO_LONGS
     },
     Func {
         name: "cnc_rdcurrent",
