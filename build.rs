@@ -262,7 +262,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
-            None => "RecordsAt { base: 0, stride: 0, offsets: &[] }".to_string(),
+            None => "RecordsAt { base: 0, stride: 0, offsets: &[], count: None }".to_string(),
             Some(r) => {
                 let (_, ty) = outs[r.out as usize];
                 let base = if r.to.is_empty() {
@@ -288,8 +288,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                         r.max, f.name
                     ));
                 }
+                let count = match r.count {
+                    Some(m) => format!("Some(offset_of!({}, {}))", rust_type(ty), ident(m)),
+                    None => "None".to_string(),
+                };
                 format!(
-                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}] }}",
+                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {count} }}",
                     offs.join(", ")
                 )
             }

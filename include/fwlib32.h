@@ -723,6 +723,24 @@ typedef struct ODBPRO {
 } ODBPRO;
 
 /*
+ One program of ODBPTIME: its number and machining time.
+ */
+typedef struct ODBPTIME_DATA {
+    LONG prg_no;
+    short hour;
+    char minute;
+    char second;
+} ODBPTIME_DATA;
+
+/*
+ cnc_rdproctime: the machining times of the last programs run.
+ */
+typedef struct ODBPTIME {
+    short num;
+    struct ODBPTIME_DATA data[10];
+} ODBPTIME;
+
+/*
  cnc_rdprogdir: the program directory as text ("O1O1000%", see the function).
  */
 typedef struct PRGDIR {
@@ -1125,6 +1143,16 @@ typedef struct IODBPMC {
     short datano_e;
     union IODBPMC_u u;
 } IODBPMC;
+
+/*
+ cnc_rdomhisinfo: the operator message history's size: most entries,
+ entries held, characters per message.
+ */
+typedef struct ODBOMIF {
+    unsigned short om_max;
+    unsigned short om_sum;
+    unsigned short om_char;
+} ODBOMIF;
 
 /*
  FANUC's ULONG: 32 bits on every platform.
@@ -1856,6 +1884,14 @@ short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struc
  `prgnum` must be NULL or point to a writable ODBPRO.
  */
 short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
+
+/*
+ Reads the machining times of the last programs run.
+
+ # Safety
+ `proc_time` must be NULL or point to a writable ODBPTIME.
+ */
+short cnc_rdproctime(unsigned short FlibHndl, struct ODBPTIME *proc_time);
 
 /*
  Reads the program directory as text: the programs numbered `datano_s`

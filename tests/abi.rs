@@ -370,6 +370,8 @@ rust_layouts! {
     ODBTLIFE3 { datano, dummy, data }
     ODBTG { grp_num, dummy, ntool, life, count, data }
     ODBTLIFE2 { dummy, data }
+    ODBPTIME { num, data }
+    ODBOMIF { om_max, om_sum, om_char }
     ODBTLINF2 { ofs_type, use_no, ofs_enable }
     ODBSYSEX {
         max_axis, max_spdl, max_path, max_mchn, ctrl_axis, ctrl_srvo, ctrl_spdl, ctrl_path,

@@ -147,3 +147,34 @@ fn offset_and_tool_life_sizes_are_the_profiles() {
     assert_eq!(unsafe { cnc_rdngrp(h, std::ptr::null_mut()) }, EW_DATA);
     assert_eq!(unsafe { cnc_rdtofsinfo2(h, std::ptr::null_mut()) }, EW_DATA);
 }
+
+#[test]
+fn machining_times_are_the_runs_completed_then_the_profiles() {
+    let text = RUNNING.replacen(
+        "[path.status]",
+        "proc_times = [[77, 1, 2, 3], [78, 0, 59, 59]]\n[path.status]",
+        1,
+    );
+    let s = sim::start_toml(&text);
+    let h = sim::alloc(&s);
+    let read = || {
+        let mut t = fwlib32::types::ODBPTIME::default();
+        assert_eq!(unsafe { cnc_rdproctime(h, &mut t) }, EW_OK);
+        let d = &t.data[..t.num as usize];
+        d.iter()
+            .map(|x| (x.prg_no, x.hour, x.minute as u8, x.second as u8))
+            .collect::<Vec<_>>()
+    };
+    // Before the first run ends: the profile's earlier runs.
+    s.set_elapsed(std::time::Duration::from_secs_f64(2.0));
+    assert_eq!(read(), [(77, 1, 2, 3), (78, 0, 59, 59)]);
+    // O0001 is 5 blocks of 1 s: after 4 runs, four 5-second runs first, at most 10.
+    s.set_elapsed(std::time::Duration::from_secs_f64(24.5));
+    let r = read();
+    assert_eq!(r.len(), 6);
+    assert!(r[..4].iter().all(|x| *x == (1, 0, 0, 5)), "{r:?}");
+    assert_eq!(r[4], (77, 1, 2, 3));
+    s.set_elapsed(std::time::Duration::from_secs_f64(600.0));
+    assert_eq!(read(), vec![(1, 0, 0, 5); 10]);
+    assert_eq!(unsafe { cnc_rdproctime(h, std::ptr::null_mut()) }, EW_DATA);
+}

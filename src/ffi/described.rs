@@ -24,6 +24,8 @@ pub(crate) struct RecordsAt<'a> {
     pub base: usize,
     pub stride: usize,
     pub offsets: &'a [usize],
+    /// Where the number of records goes (a `short`), if anywhere.
+    pub count: Option<usize>,
 }
 
 /// Runs described function `f`: the handle, its checks and NULL outputs
@@ -75,6 +77,10 @@ pub(crate) unsafe fn exec(
             // SAFETY: as above; decode returned at most `max` records.
             unsafe { write_fields(r.fields, &outs, at, &mut v) };
             i += 1;
+        }
+        if let Some(c) = rec.count {
+            // SAFETY: the count member lies in its output (build.rs).
+            unsafe { put(outs[r.out as usize].add(c).cast::<i16>(), i as i16) };
         }
     }
     Ok(())

@@ -456,6 +456,14 @@ impl CncService for Machine {
                 let w = [t.reserved, t.use_no, t.ofs_type, t.enable];
                 w.map(i64::from).to_vec()
             }),
+            "cnc_rdproctime" => {
+                let max = f.records.map_or(0, |r| usize::from(r.max));
+                let runs = self.sim_proc_times(path, max)?;
+                Ok(runs
+                    .iter()
+                    .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
+                    .collect())
+            }
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
             "cnc_rdetherinfo" => {

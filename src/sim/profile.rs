@@ -135,6 +135,10 @@ pub struct Path {
     pub modal: program::Modal,
     /// Operation mode word (cnc_rdopmode).
     pub opmode: i16,
+    /// Machining times of programs run before the simulator started, newest
+    /// first, as [program, hours, minutes, seconds] (cnc_rdproctime; the
+    /// runs the simulated machine completes come before them).
+    pub proc_times: Vec<[i32; 4]>,
 
     // --- alarm ---
     /// Operator messages on display (cnc_rdopmsg).

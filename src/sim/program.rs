@@ -31,6 +31,20 @@ impl Machine {
         self.run.get(path as usize - 1).ok_or(CncError::PATH)
     }
 
+    /// cnc_rdproctime: the runs of the program completed, newest first (at
+    /// most `max`): program number and its time as hours, minutes, seconds.
+    pub(crate) fn sim_proc_times(&self, path: u16, max: usize) -> Reply<Vec<[i64; 4]>> {
+        let r = self.live(path)?;
+        let secs = r.run_seconds.round() as i64;
+        let n = (r.runs_done as usize).min(max);
+        let one = [i64::from(r.program), secs / 3600, secs / 60 % 60, secs % 60];
+        let earlier = self.profile.paths[path as usize - 1].proc_times.iter();
+        Ok(std::iter::repeat_n(one, n)
+            .chain(earlier.map(|t| t.map(i64::from)))
+            .take(max)
+            .collect())
+    }
+
     pub(crate) fn sim_block_count(&self, path: u16) -> Reply<i32> {
         Ok(self.live(path)?.block_count)
     }

@@ -88,6 +88,10 @@ pub struct PathRun {
     pub spindle_speed: i32,
     /// The program ended and does not repeat (status run 0).
     pub finished: bool,
+    /// Runs of the program completed (cnc_rdproctime), and the program
+    /// time one run takes, in seconds (holds not counted).
+    pub runs_done: u64,
+    pub run_seconds: f64,
     /// Feed hold (an event) is active on the path.
     pub held: bool,
     /// What the clock needs: parsed program, profile base values, caches.
@@ -723,6 +727,8 @@ impl Machine {
         run.finished = finished;
         run.block_count = i32::try_from(if finished { n } else { done }).unwrap_or(i32::MAX);
         let ends_before = plan.blocks[..k].iter().filter(|x| x.end_of_program).count() as i64;
+        run.runs_done = if finished { 1 } else { pass };
+        run.run_seconds = n as f64 * plan.block_seconds;
         run.parts = if finished {
             plan.parts_per_pass
         } else {

@@ -23,6 +23,7 @@ const SERVO_LONGS: Func = Func {
         to: "",
         elem: "long",
         max: 32,
+        count: None,
     }),
     short: Short::Zeros,
     dims: &[],
@@ -144,6 +145,31 @@ pub const FUNCS: &[Func] = &[
     },
     // --- machine information ---
     Func {
+        name: "cnc_rdproctime",
+        doc: "Reads the machining times of the last programs run.",
+        params: &[Param::Out("proc_time", "ODBPTIME")],
+        checks: &[],
+        forms: &[every_class(0x0075, &[])],
+        reply: &[],
+        // Whole 12-byte records, their number written to `num`.
+        records: Some(Records {
+            fields: &[
+                to(I32, "prg_no", I32),
+                to(I16, "hour", I16),
+                to(I16, "minute", I8),
+                to(I16, "second", I8),
+                skip(I16),
+            ],
+            out: 0,
+            to: "data",
+            elem: "ODBPTIME_DATA",
+            max: 10,
+            count: Some("num"),
+        }),
+        short: Short::Zeros,
+        dims: &[],
+    },
+    Func {
         name: "cnc_rdetherinfo",
         doc: "Reads the Ethernet board's type and device.",
         params: &[Param::Out("type", "short"), Param::Out("device", "short")],
@@ -180,6 +206,7 @@ pub const FUNCS: &[Func] = &[
             to: "",
             elem: "short",
             max: 32,
+            count: None,
         }),
         short: Short::Zeros,
         dims: &[],

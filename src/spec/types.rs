@@ -131,6 +131,9 @@ pub struct Records {
     pub to: &'static str,
     pub elem: &'static str,
     pub max: u16,
+    /// The `short` member of output `out` the number of records written
+    /// goes to, if any.
+    pub count: Option<&'static str>,
 }
 
 impl Records {

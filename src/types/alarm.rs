@@ -206,3 +206,13 @@ pub struct ODBAHIS2 {
     pub e_no: c_ushort,
     pub alm_his: [ODBAHIS2_ALM; 10],
 }
+
+/// cnc_rdomhisinfo: the operator message history's size: most entries,
+/// entries held, characters per message.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBOMIF {
+    pub om_max: c_ushort,
+    pub om_sum: c_ushort,
+    pub om_char: c_ushort,
+}

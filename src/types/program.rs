@@ -213,3 +213,21 @@ impl Default for PRGDIR3 {
         }
     }
 }
+
+/// One program of ODBPTIME: its number and machining time.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPTIME_DATA {
+    pub prg_no: LONG,
+    pub hour: c_short,
+    pub minute: c_char,
+    pub second: c_char,
+}
+
+/// cnc_rdproctime: the machining times of the last programs run.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPTIME {
+    pub num: c_short,
+    pub data: [ODBPTIME_DATA; 10],
+}
