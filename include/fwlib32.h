@@ -1981,6 +1981,15 @@ short cnc_rdspdlnamem(unsigned short FlibHndl, short *data_num, struct ODBSPDLNA
 short cnc_rdspeed(unsigned short FlibHndl, short type, struct ODBSPEED *speed);
 
 /*
+ Reads the gear ratio of serial spindle `sp_no` (1..8, or -1 all), as
+ cnc_rdspload reads the load.
+
+ # Safety
+ `serialspindle` must point to a writable ODBSPN.
+ */
+short cnc_rdspgear(unsigned short FlibHndl, short sp_no, struct ODBSPN *serialspindle);
+
+/*
  Reads the load of serial spindle `sp_no` (1..8, or -1 all): `datano` =
  sp_no, `data[i]` = low 16 bits of each value (`type` not written).
 
@@ -1988,6 +1997,15 @@ short cnc_rdspeed(unsigned short FlibHndl, short type, struct ODBSPEED *speed);
  `serialspindle` must point to a writable ODBSPN.
  */
 short cnc_rdspload(unsigned short FlibHndl, short sp_no, struct ODBSPN *serialspindle);
+
+/*
+ Reads the maximum r.p.m. ratio of serial spindle `sp_no` (1..8, or -1
+ all), as cnc_rdspload reads the load.
+
+ # Safety
+ `serialspindle` must point to a writable ODBSPN.
+ */
+short cnc_rdspmaxrpm(unsigned short FlibHndl, short sp_no, struct ODBSPN *serialspindle);
 
 /*
  Reads the spindle load meters (`type` 0), motor speeds (1) or both (-1):

@@ -178,3 +178,25 @@ fn machining_times_are_the_runs_completed_then_the_profiles() {
     assert_eq!(read(), vec![(1, 0, 0, 5); 10]);
     assert_eq!(unsafe { cnc_rdproctime(h, std::ptr::null_mut()) }, EW_DATA);
 }
+
+#[test]
+fn serial_spindle_ratios_are_the_profiles() {
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE
+        .replacen("max_rpm_ratio = 12000", "max_rpm_ratio = 9000", 1)
+        .replacen("gear_ratio = 2", "gear_ratio = 3", 1);
+    let (_s, h) = sim::start_alloc(Profile::parse(&text).unwrap());
+    for (f, want) in [
+        (cnc_rdspmaxrpm as unsafe extern "C" fn(_, _, _) -> _, 9000),
+        (cnc_rdspgear, 3),
+    ] {
+        let mut o = fwlib32::types::ODBSPN::default();
+        assert_eq!(unsafe { f(h, -1, &mut o) }, EW_OK);
+        assert_eq!((o.datano, o.data[0]), (-1, want));
+        let mut o = fwlib32::types::ODBSPN::default();
+        assert_eq!(unsafe { f(h, 1, &mut o) }, EW_OK);
+        assert_eq!((o.datano, o.data[0]), (1, want));
+        assert_eq!(unsafe { f(h, 2, &mut o) }, EW_NUMBER, "one spindle");
+        assert_eq!(unsafe { f(h, 9, &mut o) }, EW_NUMBER);
+        assert_eq!(unsafe { f(h, 1, std::ptr::null_mut()) }, EW_DATA);
+    }
+}

@@ -492,6 +492,33 @@ pub unsafe extern "C" fn cnc_rdspmeter(
     })
 }
 
+/// A serial-spindle figure (0x40 `code`) of spindle `sp_no` (1..8, or -1
+/// all) into ODBSPN: `datano` = sp_no, `data[i]` = low 16 bits of each
+/// value (`type` not written).
+fn serial_spindle(code: i32, h: c_ushort, sp_no: c_short, out: *mut ODBSPN) -> Result<()> {
+    let h = handles::get(h)?;
+    let base = nonnull(out)?.cast::<u8>();
+    if sp_no > MAX_SPINDLE as c_short {
+        return Err(Error::local(EW_NUMBER, "spindle number above 8"));
+    }
+    let (n, recs) = h.call(&SpindleData { code, sp_no })?;
+    if sp_no > n as c_short {
+        return Err(Error::local(EW_NUMBER, "the CNC has fewer spindles"));
+    }
+    let room = if h.ctx().class.is_16i() {
+        usize::from(n).min(MAX_SPINDLE)
+    } else {
+        MAX_SPINDLE
+    };
+    unsafe {
+        put_at(base, offset_of!(ODBSPN, datano), sp_no);
+        for (i, r) in recs.iter().take(room).enumerate() {
+            put_at(base, offset_of!(ODBSPN, data) + 2 * i, r.value as i16);
+        }
+    }
+    Ok(())
+}
+
 /// Reads the load of serial spindle `sp_no` (1..8, or -1 all): `datano` =
 /// sp_no, `data[i]` = low 16 bits of each value (`type` not written).
 ///
@@ -504,30 +531,39 @@ pub unsafe extern "C" fn cnc_rdspload(
     serialspindle: *mut ODBSPN,
 ) -> c_short {
     ffi_boundary!("cnc_rdspload", {
-        let h = handles::get(FlibHndl)?;
-        let base = nonnull(serialspindle)?.cast::<u8>();
-        if sp_no > MAX_SPINDLE as c_short {
-            return Err(Error::local(EW_NUMBER, "spindle number above 8"));
-        }
-        let (n, recs) = h.call(&SpindleData {
-            code: spdl::LOAD_SERIAL,
-            sp_no,
-        })?;
-        if sp_no > n as c_short {
-            return Err(Error::local(EW_NUMBER, "the CNC has fewer spindles"));
-        }
-        let room = if h.ctx().class.is_16i() {
-            usize::from(n).min(MAX_SPINDLE)
-        } else {
-            MAX_SPINDLE
-        };
-        unsafe {
-            put_at(base, offset_of!(ODBSPN, datano), sp_no);
-            for (i, r) in recs.iter().take(room).enumerate() {
-                put_at(base, offset_of!(ODBSPN, data) + 2 * i, r.value as i16);
-            }
-        }
-        Ok(())
+        serial_spindle(spdl::LOAD_SERIAL, FlibHndl, sp_no, serialspindle)
+    })
+}
+
+/// Reads the maximum r.p.m. ratio of serial spindle `sp_no` (1..8, or -1
+/// all), as cnc_rdspload reads the load.
+///
+/// # Safety
+/// `serialspindle` must point to a writable ODBSPN.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdspmaxrpm(
+    FlibHndl: c_ushort,
+    sp_no: c_short,
+    serialspindle: *mut ODBSPN,
+) -> c_short {
+    ffi_boundary!("cnc_rdspmaxrpm", {
+        serial_spindle(spdl::MAX_RPM_RATIO, FlibHndl, sp_no, serialspindle)
+    })
+}
+
+/// Reads the gear ratio of serial spindle `sp_no` (1..8, or -1 all), as
+/// cnc_rdspload reads the load.
+///
+/// # Safety
+/// `serialspindle` must point to a writable ODBSPN.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdspgear(
+    FlibHndl: c_ushort,
+    sp_no: c_short,
+    serialspindle: *mut ODBSPN,
+) -> c_short {
+    ffi_boundary!("cnc_rdspgear", {
+        serial_spindle(spdl::GEAR_RATIO, FlibHndl, sp_no, serialspindle)
     })
 }
 

@@ -65,6 +65,10 @@ pub mod pos {
 pub mod spdl {
     /// cnc_rdspload: serial spindle load.
     pub const LOAD_SERIAL: i32 = 0;
+    /// cnc_rdspmaxrpm: maximum r.p.m. ratio.
+    pub const MAX_RPM_RATIO: i32 = 1;
+    /// cnc_rdspgear: gear ratio.
+    pub const GEAR_RATIO: i32 = 2;
     /// cnc_acts2: actual speed.
     pub const SPEED_ACT: i32 = 3;
     /// cnc_rdspmeter / rdaxisdata cls 3 type 0: load meter (%).

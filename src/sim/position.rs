@@ -200,6 +200,8 @@ impl Machine {
         let p = self.pos_path(path)?;
         let pick: fn(&Spindle) -> i32 = match code {
             spdl::LOAD_SERIAL | spdl::LOAD_METER => |s| s.load,
+            spdl::MAX_RPM_RATIO => |s| s.max_rpm_ratio,
+            spdl::GEAR_RATIO => |s| s.gear_ratio,
             spdl::SPEED_ACT | spdl::SPEED_METER => |s| s.speed,
             // rdaxisdata classes 3/4 types 3 and 4: meaning not recorded, 0.
             6 | 7 => |_| 0,

@@ -217,6 +217,10 @@ pub struct Spindle {
     // --- position ---
     /// Spindle load, % (cnc_rdspmeter, rdaxisdata class 3, cnc_rdspload).
     pub load: i32,
+    /// Maximum r.p.m. ratio and gear ratio of the serial spindle, as the CNC
+    /// reports them (cnc_rdspmaxrpm, cnc_rdspgear).
+    pub max_rpm_ratio: i32,
+    pub gear_ratio: i32,
 }
 
 #[derive(Debug, thiserror::Error)]

@@ -128,6 +128,24 @@ pub const ORACLE: &[Deviation] = &[
         reason: COUNT_PAST_PAYLOAD,
     },
     Deviation {
+        function: "cnc_rdspmaxrpm",
+        cases: &[
+            "rdspmaxrpm_v3_shape_empty",
+            "rdspmaxrpm_v3_shape_half",
+            "rdspmaxrpm_v3_shape_short1",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdspgear",
+        cases: &[
+            "rdspgear_v3_shape_empty",
+            "rdspgear_v3_shape_half",
+            "rdspgear_v3_shape_short1",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
         function: "cnc_rdaxisdata",
         cases: &[
             "rdaxisdata_v3_shape_empty",

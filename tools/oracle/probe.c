@@ -183,6 +183,8 @@ static short in_thread(void *(*f)(void *)) {
     WORD(acts2, return F(cnc_acts2)(H, N(1), B0))                                                 \
     WORD(rdspeed, return F(cnc_rdspeed)(H, N(1), B0))                                             \
     WORD(rdspload, return F(cnc_rdspload)(H, N(1), B0))                                           \
+    WORD(rdspmaxrpm, return F(cnc_rdspmaxrpm)(H, N(1), B0))                                       \
+    WORD(rdspgear, return F(cnc_rdspgear)(H, N(1), B0))                                           \
     WORD(rdspmeter, SHORT_IO(num, 2, F(cnc_rdspmeter)(H, N(1), &num, B0)))                        \
     WORD(rdsvmeter, SHORT_IO(num, 1, F(cnc_rdsvmeter)(H, &num, B0)))                              \
     WORD(rdaxisdata, { short t[MAXARG]; int n = (int)N(2);                                        \
