@@ -472,6 +472,45 @@ const PROBES: &[Probe] = &[
     ("cnc_rdprogdir", |h| {
         one(256, |o| unsafe { cnc_rdprogdir(h, 2, 0, 9999, 256, o.p()) })
     }),
+    // --- machine information, servo, tool life sizes ---
+    ("cnc_rdetherinfo", |h| {
+        let mut a = Out::new(2);
+        let mut b = Out::new(2);
+        let r = unsafe { cnc_rdetherinfo(h, a.p(), b.p()) };
+        (r, vec![a, b])
+    }),
+    ("cnc_rdproctime", |h| {
+        one(size::<ODBPTIME>(), |o| unsafe { cnc_rdproctime(h, o.p()) })
+    }),
+    ("cnc_rdloopgain", |h| {
+        one(4 * MAX_AXIS, |o| unsafe {
+            cnc_rdloopgain(h, o.p::<c_long>())
+        })
+    }),
+    ("cnc_rdsrvspeed", |h| {
+        one(4 * MAX_AXIS, |o| unsafe {
+            cnc_rdsrvspeed(h, o.p::<c_long>())
+        })
+    }),
+    ("cnc_rdcurrent", |h| {
+        one(2 * MAX_AXIS, |o| unsafe { cnc_rdcurrent(h, o.p()) })
+    }),
+    ("cnc_rdspmaxrpm", |h| {
+        one(size::<ODBSPN>(), |o| unsafe {
+            cnc_rdspmaxrpm(h, -1, o.p())
+        })
+    }),
+    ("cnc_rdspgear", |h| {
+        one(size::<ODBSPN>(), |o| unsafe { cnc_rdspgear(h, -1, o.p()) })
+    }),
+    ("cnc_rdtofsinfo2", |h| {
+        one(size::<ODBTLINF2>(), |o| unsafe {
+            cnc_rdtofsinfo2(h, o.p())
+        })
+    }),
+    ("cnc_rdngrp", |h| {
+        one(size::<ODBTLIFE2>(), |o| unsafe { cnc_rdngrp(h, o.p()) })
+    }),
 ];
 
 fn run_against(profile: Profile, seed: u64) {
