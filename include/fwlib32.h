@@ -1058,6 +1058,42 @@ typedef struct ODBSYS {
 } ODBSYS;
 
 /*
+ One path of ODBSYSEX.
+ */
+typedef struct ODBSYSEX_PATH {
+    /*
+     Machine type as two ASCII characters (" M", " T", ...).
+     */
+    short system;
+    short group;
+    short attrib;
+    short ctrl_axis;
+    short ctrl_srvo;
+    short ctrl_spdl;
+    short mchn_no;
+    short reserved;
+} ODBSYSEX_PATH;
+
+/*
+ cnc_sysinfo_ex: the CNC's maximum and controlled axes, spindles, paths
+ and machine groups, and per path.
+ */
+typedef struct ODBSYSEX {
+    short max_axis;
+    short max_spdl;
+    short max_path;
+    short max_mchn;
+    short ctrl_axis;
+    short ctrl_srvo;
+    short ctrl_spdl;
+    short ctrl_path;
+    short ctrl_mchn;
+    short addinfo;
+    short reserved[2];
+    struct ODBSYSEX_PATH path[MAX_CNCPATH];
+} ODBSYSEX;
+
+/*
  cnc_toolnum: tool number of a tool in a tool-life group.
  */
 typedef struct ODBTLIFE4 {
@@ -1158,42 +1194,6 @@ typedef struct ODBOMIF {
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
-
-/*
- One path of ODBSYSEX.
- */
-typedef struct ODBSYSEX_PATH {
-    /*
-     Machine type as two ASCII characters (" M", " T", ...).
-     */
-    short system;
-    short group;
-    short attrib;
-    short ctrl_axis;
-    short ctrl_srvo;
-    short ctrl_spdl;
-    short mchn_no;
-    short reserved;
-} ODBSYSEX_PATH;
-
-/*
- cnc_sysinfo_ex: the CNC's maximum and controlled axes, spindles, paths
- and machine groups, and per path.
- */
-typedef struct ODBSYSEX {
-    short max_axis;
-    short max_spdl;
-    short max_path;
-    short max_mchn;
-    short ctrl_axis;
-    short ctrl_srvo;
-    short ctrl_spdl;
-    short ctrl_path;
-    short ctrl_mchn;
-    short addinfo;
-    short reserved[2];
-    struct ODBSYSEX_PATH path[MAX_CNCPATH];
-} ODBSYSEX;
 
 #ifdef __cplusplus
 extern "C" {
@@ -2250,6 +2250,17 @@ short cnc_svdtstartrd(unsigned short FlibHndl, short axis);
  `sysinfo` must point to a writable ODBSYS.
  */
 short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
+
+/*
+ Reads the CNC's maximum and controlled axes, spindles, paths and machine
+ groups, and each path's, as the CNC reported them when the connection
+ opened (no traffic, as FANUC's library). All MAX_CNCPATH path entries are
+ written (zeros past the CNC's paths); the `reserved` words are not.
+
+ # Safety
+ `sysinfoex` must point to a writable ODBSYSEX.
+ */
+short cnc_sysinfo_ex(unsigned short FlibHndl, struct ODBSYSEX *sysinfoex);
 
 /*
  Reads the tool number of the `tuse_num`-th tool of tool-life group

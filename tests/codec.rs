@@ -1499,7 +1499,7 @@ proptest! {
                     Int::U32 => i64::from(*s),
                 })
                 .collect();
-            if seed.is_empty() && !values.is_empty() {
+            if seed.is_empty() && !all.is_empty() {
                 continue;
             }
             let bytes = encode(f, &values).expect("encode");

@@ -200,3 +200,41 @@ fn serial_spindle_ratios_are_the_profiles() {
         assert_eq!(unsafe { f(h, 1, std::ptr::null_mut()) }, EW_DATA);
     }
 }
+
+#[test]
+fn sysinfo_ex_is_the_open_response() {
+    // Two paths: a 3-axis mill with a spindle, a 2-axis lathe without.
+    let text = format!(
+        "{}\n[[path]]\nmachine = \"lathe\"\n[[path.axis]]\nname = \"X\"\n[[path.axis]]\nname = \"Z\"\n",
+        fwlib32::sim::profile::DEFAULT_PROFILE
+    );
+    let (_s, h) = sim::start_alloc(Profile::parse(&text).unwrap());
+    let mut x: fwlib32::types::ODBSYSEX = unsafe { std::mem::zeroed() };
+    x.reserved = [-1, -1];
+    x.path[14].reserved = -1;
+    assert_eq!(unsafe { cnc_sysinfo_ex(h, &mut x) }, EW_OK);
+    assert_eq!((x.max_axis, x.max_spdl, x.max_path), (32, 8, 2));
+    assert_eq!(
+        (x.ctrl_axis, x.ctrl_srvo, x.ctrl_spdl, x.ctrl_path),
+        (5, 5, 1, 2)
+    );
+    assert_eq!((x.max_mchn, x.ctrl_mchn, x.reserved), (1, 1, [-1, -1]));
+    let p = |k: usize| {
+        let p = x.path[k];
+        (
+            p.system.to_le_bytes(),
+            p.group,
+            p.ctrl_axis,
+            p.ctrl_spdl,
+            p.mchn_no,
+        )
+    };
+    assert_eq!(p(0), (*b"M ", 1, 3, 1, 1));
+    assert_eq!(p(1), (*b"T ", 1, 2, 0, 1));
+    assert_eq!(p(2), ([0, 0], 0, 0, 0, 0));
+    assert_eq!(
+        x.path[14].reserved, -1,
+        "the reserved words are not written"
+    );
+    assert_eq!(unsafe { cnc_sysinfo_ex(h, std::ptr::null_mut()) }, EW_DATA);
+}

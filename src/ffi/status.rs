@@ -5,7 +5,8 @@ use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::EW_PATH;
 use crate::proto::status::{StatInfo, Status, Status2, StatusWords, rdcncid};
-use crate::types::{ODBST, ODBST2, ODBSYS, chars};
+use crate::types::{MAX_CNCPATH, ODBST, ODBST2, ODBSYS, ODBSYSEX, ODBSYSEX_PATH, chars};
+use std::mem::{offset_of, size_of};
 use std::os::raw::{c_short, c_ulong, c_ushort};
 
 /// Reads the CNC's system information (series, version, axes) of the
@@ -31,6 +32,41 @@ pub unsafe extern "C" fn cnc_sysinfo(FlibHndl: c_ushort, sysinfo: *mut ODBSYS) -
             axes: chars(s.axes),
         };
         unsafe { put(out, v) };
+        Ok(())
+    })
+}
+
+/// Path entries cnc_sysinfo_ex writes, as FANUC's library [oracle].
+const PATHS_WRITTEN: usize = 10;
+const _: () = assert!(PATHS_WRITTEN <= MAX_CNCPATH);
+
+/// Reads the CNC's maximum and controlled axes, spindles, paths and machine
+/// groups, and each path's, as the CNC reported them when the connection
+/// opened (no traffic, as FANUC's library). The first 10 path entries are
+/// written, zeros past the CNC's paths, as FANUC's library writes them (its
+/// Ethernet build has 10 paths; the struct holds MAX_CNCPATH = 15); the
+/// `reserved` words are not.
+///
+/// # Safety
+/// `sysinfoex` must point to a writable ODBSYSEX.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_sysinfo_ex(FlibHndl: c_ushort, sysinfoex: *mut ODBSYSEX) -> c_short {
+    ffi_boundary!("cnc_sysinfo_ex", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(sysinfoex)?.cast::<u8>();
+        let (head, paths) = h.pair.info.open.system_ex();
+        let path_at = |k: usize| offset_of!(ODBSYSEX, path) + k * size_of::<ODBSYSEX_PATH>();
+        unsafe {
+            for (i, w) in head.iter().enumerate() {
+                put_at(out, 2 * i, *w);
+            }
+            for k in 0..PATHS_WRITTEN {
+                let p = paths.get(k).copied().unwrap_or_default();
+                for (i, w) in p.iter().enumerate() {
+                    put_at(out, path_at(k) + 2 * i, *w);
+                }
+            }
+        }
         Ok(())
     })
 }

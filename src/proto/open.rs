@@ -125,6 +125,35 @@ impl OpenBody {
         }
     }
 
+    /// What cnc_sysinfo_ex reports, from the open response alone (FANUC's
+    /// library sends nothing for it) [oracle]: max_axis, max_spdl, max_path,
+    /// max_mchn, ctrl_axis, ctrl_srvo, ctrl_spdl, ctrl_path, ctrl_mchn,
+    /// addinfo; then per path system, group, attrib, ctrl_axis, ctrl_srvo,
+    /// ctrl_spdl, mchn_no. The 30i body has them all (a path's ctrl_srvo is
+    /// its ctrl_axis word again, as FANUC's library reads it); the 16i body
+    /// has no machine groups, the group is the path's number.
+    pub fn system_ex(&self) -> ([u16; 10], Vec<[u16; 7]>) {
+        match self {
+            OpenBody::Series30 { header: h, paths } => (
+                [
+                    h[3], h[4], h[5], h[6], h[8], h[9], h[10], h[11], h[12], h[15],
+                ],
+                paths
+                    .iter()
+                    .map(|p| [p[0], p[1], p[2], p[3], p[3], p[5], p[6]])
+                    .collect(),
+            ),
+            OpenBody::Series16 { header: h, paths } => (
+                [h[2], h[3], h[4], 0, 0, 0, 0, h[5], 0, 0],
+                paths
+                    .iter()
+                    .zip(1..)
+                    .map(|(p, k)| [p[0], k, p[1], p[2], p[2], p[3], 0])
+                    .collect(),
+            ),
+        }
+    }
+
     /// What `cnc_getpath` returns as `maxpath_no`.
     pub fn maxpath_no(&self) -> u16 {
         match self {

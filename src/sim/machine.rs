@@ -40,16 +40,24 @@ impl CncService for Machine {
     fn open_body(&self) -> OpenBody {
         let c = &self.profile.cnc;
         let n = self.profile.paths.len() as u16;
-        let has_spindles = self.profile.paths.iter().any(|p| !p.spindles.is_empty());
+        let axes = |p: &super::profile::Path| p.axes.len() as u16;
+        let spindles = |p: &super::profile::Path| p.spindles.len() as u16;
         match c.class {
             Class::Series30 => {
+                // The words cnc_sysinfo_ex reports (src/proto/open.rs): one
+                // machine group; the controlled axes (all servo) and spindles.
                 let mut header = [0u16; 20];
                 header[2] = 3;
                 header[3] = c.max_axes;
                 header[4] = c.max_spindles;
                 header[5] = n;
-                header[10] = u16::from(has_spindles);
+                header[6] = 1;
+                header[8] = self.profile.paths.iter().map(axes).sum();
+                header[9] = header[8];
+                // Non-zero: the CNC reports spindle information (SPEC.md §5.3).
+                header[10] = self.profile.paths.iter().map(spindles).sum();
                 header[11] = n;
+                header[12] = 1;
                 header[14] = c.option;
                 let paths = self
                     .profile
@@ -58,6 +66,10 @@ impl CncService for Machine {
                     .map(|p| {
                         let mut e = [0u16; 16];
                         e[0] = Self::mt_word(p.machine);
+                        e[1] = 1;
+                        e[3] = axes(p);
+                        e[5] = spindles(p);
+                        e[6] = 1;
                         e
                     })
                     .collect();

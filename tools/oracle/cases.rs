@@ -86,6 +86,7 @@ fn copy(x: &Word) -> Word {
 const WORDS: &[Word] = &[
     // Connection group and status.
     w("sysinfo", &[]),
+    w("sysinfo_ex", &[]),
     w("statinfo", &[]),
     w("statinfo2", &[]),
     w("rdcncid", &[]),

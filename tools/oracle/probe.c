@@ -172,6 +172,7 @@ static short in_thread(void *(*f)(void *)) {
     WORD(getpath, return F(cnc_getpath)(H, B0, B1))                                               \
     WORD(getdtailerr, return F(cnc_getdtailerr)(H, B0))                                           \
     WORD(sysinfo, return F(cnc_sysinfo)(H, B0))                                                   \
+    WORD(sysinfo_ex, return F(cnc_sysinfo_ex)(H, B0))                                             \
     WORD(statinfo, return F(cnc_statinfo)(H, B0))                                                 \
     WORD(statinfo2, return F(cnc_statinfo2)(H, B0))                                               \
     WORD(rdcncid, return F(cnc_rdcncid)(H, B0))                                                   \
