@@ -2254,8 +2254,10 @@ short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
 /*
  Reads the CNC's maximum and controlled axes, spindles, paths and machine
  groups, and each path's, as the CNC reported them when the connection
- opened (no traffic, as FANUC's library). All MAX_CNCPATH path entries are
- written (zeros past the CNC's paths); the `reserved` words are not.
+ opened (no traffic, as FANUC's library). The first 10 path entries are
+ written, zeros past the CNC's paths, as FANUC's library writes them (its
+ Ethernet build has 10 paths; the struct holds MAX_CNCPATH = 15); the
+ `reserved` words are not.
 
  # Safety
  `sysinfoex` must point to a writable ODBSYSEX.
