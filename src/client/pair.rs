@@ -9,7 +9,7 @@ use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use crate::proto::open::{CncClass, OpenBody};
-use crate::proto::packet::{ReqSub, RespSub, decode_response, encode_request};
+use crate::proto::packet::{ReqSub, RespSub, decode_response};
 use crate::proto::param::Param16;
 use crate::proto::status::{SysInfo, sysinfo_at_connect};
 use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
@@ -350,10 +350,6 @@ fn open_option(open: &OpenBody) -> u16 {
 
 /// One data request and its response on a connection.
 fn exchange(conn: &mut Conn, subs: &[ReqSub], deadline: Deadline) -> Result<Vec<RespSub>> {
-    conn.send(
-        &Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(subs)),
-        deadline,
-    )?;
-    let f = conn.recv_kind(0x21, deadline)?;
-    Ok(decode_response(&f.body)?)
+    conn.send_data(subs, deadline)?;
+    Ok(conn.recv_kind_with(0x21, deadline, |_, body| decode_response(body))??)
 }

@@ -105,6 +105,12 @@ impl RespSub {
 /// Encodes a request body: u16 count, then the subpackets.
 pub fn encode_request(subs: &[ReqSub]) -> Vec<u8> {
     let mut w = Writer::with_capacity(2 + subs.len() * REQ_FIXED);
+    encode_request_into(subs, &mut w);
+    w.into_vec()
+}
+
+/// [`encode_request`], appended to `w` (a frame being built in a reused buffer).
+pub fn encode_request_into(subs: &[ReqSub], w: &mut Writer) {
     w.u16(subs.len() as u16);
     for s in subs {
         w.u16((REQ_FIXED + s.payload.len()) as u16);
@@ -116,7 +122,6 @@ pub fn encode_request(subs: &[ReqSub]) -> Vec<u8> {
         }
         w.bytes(&s.payload);
     }
-    w.into_vec()
 }
 
 /// Decodes a request body (the simulator's side).
@@ -204,7 +209,6 @@ fn decode_list<T>(
     }
     // Lengths are checked against the body before anything is parsed, so a
     // lie in one length word cannot make us read another subpacket's bytes.
-    let mut lens = Vec::with_capacity(count as usize);
     let mut at = 2usize;
     for _ in 0..count {
         if body.len() < at + 2 {
@@ -220,14 +224,14 @@ fn decode_list<T>(
         if at > body.len() {
             return Err(DecodeError::SubLenTooBig);
         }
-        lens.push(len);
     }
     if at != body.len() {
         return Err(DecodeError::SubLenTooSmall);
     }
     let mut out = Vec::with_capacity(count as usize);
-    for len in lens {
-        r.u16()?;
+    for _ in 0..count {
+        // The length word, checked above.
+        let len = r.u16()? as usize;
         let start = r.position();
         let item = one(&mut r, len)?;
         debug_assert_eq!(r.position() - start, len - 2);
