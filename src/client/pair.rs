@@ -47,8 +47,11 @@ struct Conns {
 pub struct Pair {
     pub key: String,
     pub info: CncInfo,
-    /// Connection 2, the data requests. One exchange at a time.
-    io: Mutex<Option<Conn>>,
+    /// Connection 2, the data requests. One exchange at a time: std's
+    /// futex mutex, as a C client's would be (under many threads on one
+    /// CNC it kept throughput at the plain-socket floor more steadily than
+    /// parking_lot's, benches/floor.rs); see [`Pair::io`].
+    io: std::sync::Mutex<Option<Conn>>,
     /// Connection 1 and the program upload on it (src/client/upload.rs).
     /// Its own lock, never held together with `io`: an upload never holds
     /// up the data requests of other handles.
@@ -178,7 +181,7 @@ impl Pair {
                         sysinfo,
                         option,
                     },
-                    io: Mutex::new(Some(conns.c2)),
+                    io: std::sync::Mutex::new(Some(conns.c2)),
                     c1: Mutex::new(Some(Conn1::new(conns.c1))),
                     refs: Mutex::new(1),
                     dead: AtomicBool::new(false),
@@ -247,6 +250,13 @@ impl Pair {
         Ok((sysinfo, option))
     }
 
+    /// Connection 2, locked. A panic while it was held (a bug, caught at the
+    /// C boundary) is no reason to fail every later call on the pair: the
+    /// poison is ignored, as parking_lot's locks have none.
+    fn io(&self) -> std::sync::MutexGuard<'_, Option<Conn>> {
+        self.io.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
     pub fn is_dead(&self) -> bool {
         self.dead.load(Ordering::Acquire)
     }
@@ -258,7 +268,7 @@ impl Pair {
         if let Some(c) = self.c1.lock().take() {
             c.conn.shutdown();
         }
-        if let Some(c) = self.io.lock().take() {
+        if let Some(c) = self.io().take() {
             c.shutdown();
         }
     }
@@ -278,7 +288,7 @@ impl Pair {
     }
 
     pub fn exchange(&self, subs: &[ReqSub], timeout: i32) -> Result<Vec<RespSub>> {
-        let mut io = self.io.lock();
+        let mut io = self.io();
         let Some(c2) = io.as_mut() else {
             return Err(dead());
         };
@@ -302,7 +312,7 @@ impl Pair {
             return Ok(());
         }
         let c1 = self.c1.lock().take();
-        let c2 = self.io.lock().take();
+        let c2 = self.io().take();
         self.dead.store(true, Ordering::Release);
         match (c1, c2) {
             (Some(mut c1), Some(mut c2)) => {
