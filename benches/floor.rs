@@ -1,6 +1,8 @@
 //! The library's per-call cost against the floor: a plain-socket client
 //! sending the same bytes to the same simulator, measured in the same run
-//! (ratios, never timed assertions). Run with `cargo bench --bench floor`.
+//! (ratios, never timed assertions). Run with `cargo bench --bench floor`
+//! (about 25 s), or some sections: `cargo bench --bench floor -- threads`
+//! (pinned, syscalls, threads, loading).
 //!
 //! The **floor** is the least any client can do for `cnc_statinfo`: one
 //! pre-encoded data frame (3 subpackets) written to a std `TcpStream` with
@@ -20,7 +22,9 @@
 //! 3. Threads: 1 … 64 threads, each on its own simulated CNC, then all on
 //!    one CNC; aggregate calls/s against plain-socket threads doing the
 //!    same (on one CNC: sharing one socket under a mutex, as the library
-//!    shares one connection pair per CNC, as FANUC's does).
+//!    shares one connection pair per CNC, as FANUC's does). The same
+//!    threads run 25 ms of floor and 25 ms of library calls in turn, 30
+//!    times; the ratio is the median of the 30 ratios.
 //! 4. Loading: a C host (benches/load.c, built with `cc`) timing `dlopen`,
 //!    the first `cnc_allclibhndl3`, `cnc_freelibhndl` and `dlclose` of the
 //!    library this bench was built with, one fresh process per sample,
@@ -318,7 +322,7 @@ fn alternate(
     floor: &(dyn Fn(usize) + Sync),
     ours: &(dyn Fn(usize) + Sync),
 ) -> (f64, f64, f64) {
-    let (rounds, dur) = (count(20, 1), Duration::from_millis(count(25, 2) as u64));
+    let (rounds, dur) = (count(30, 1), Duration::from_millis(count(25, 2) as u64));
     let barrier = Barrier::new(n);
     let run = |i: usize, f: &(dyn Fn(usize) + Sync)| {
         barrier.wait();
