@@ -11,7 +11,7 @@
 use super::log;
 use crate::error::{Error, Result, detail};
 use crate::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype, max_body_len};
-use crate::proto::packet::{ReqSub, encode_request_into};
+use crate::proto::packet::{ReqSub, RespSub, decode_response_into, encode_request_into};
 use crate::proto::wire::Writer;
 use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
@@ -104,6 +104,8 @@ pub struct Conn {
     wbuf: Vec<u8>,
     read_timeout: Armed,
     write_timeout: Armed,
+    /// The last data answer's subpackets, reused by the next.
+    resp: Vec<RespSub>,
 }
 
 impl Conn {
@@ -128,6 +130,7 @@ impl Conn {
                         wbuf: Vec::new(),
                         read_timeout: Armed::Forever,
                         write_timeout: Armed::Forever,
+                        resp: Vec::new(),
                     });
                 }
                 Err(e) => last = Some(e),
@@ -205,6 +208,19 @@ impl Conn {
         w.patch_u16(HEADER_LEN - 2, len);
         self.wbuf = w.buf;
         self.send_wbuf(deadline)
+    }
+
+    /// One data request and its answer: `subs` sent as a 0x2101 frame, the
+    /// 0x21xx answer's subpackets (valid until the next exchange).
+    pub fn exchange(&mut self, subs: &[ReqSub], deadline: Deadline) -> Result<&[RespSub]> {
+        self.send_data(subs, deadline)?;
+        let mut resp = std::mem::take(&mut self.resp);
+        let r = self.recv_kind_with(0x21, deadline, |_, body| {
+            decode_response_into(body, &mut resp)
+        });
+        self.resp = resp;
+        r??;
+        Ok(&self.resp)
     }
 
     /// Writes `wbuf` whole before the deadline.

@@ -9,7 +9,7 @@ use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use crate::proto::open::{CncClass, OpenBody};
-use crate::proto::packet::{ReqSub, RespSub, decode_response};
+use crate::proto::packet::ReqSub;
 use crate::proto::param::Param16;
 use crate::proto::status::{SysInfo, sysinfo_at_connect};
 use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
@@ -223,14 +223,14 @@ impl Pair {
             s.path = 1;
             subs.push(s);
         }
-        let resp = exchange(&mut conns.c2, &subs, deadline)?;
+        let resp = conns.c2.exchange(&subs, deadline)?;
         let mut sysinfo = vec![None; words.len()];
         for (i, p) in paths.iter().enumerate() {
-            sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(&resp, i)?);
+            sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(resp, i)?);
         }
         if class == (CncClass::Series16 { kind: 2 }) {
             // Series 15: the companion's error fails the connect, as FANUC's library.
-            call::sub(&resp, paths.len())?;
+            call::sub(resp, paths.len())?;
         }
         let option_param = match class {
             CncClass::Series30 => None,
@@ -242,9 +242,9 @@ impl Pair {
         if let Some((command, number, mask)) = option_param {
             let mut s = ReqSub::cnc(command, &[number, number]);
             s.path = 1;
-            let resp = exchange(&mut conns.c2, &[s], deadline)?;
+            let resp = conns.c2.exchange(&[s], deadline)?;
             // An error here fails the connect, as in FANUC's library.
-            let p = call::payload::<Param16>(&resp, 0)?;
+            let p = call::payload::<Param16>(resp, 0)?;
             option = p.values.first().map_or(0, |v| (*v as u16) & 0xff & mask);
         }
         Ok((sysinfo, option))
@@ -274,7 +274,8 @@ impl Pair {
     }
 
     /// Sends `c`'s subpackets on connection 2 with the handle's path and
-    /// decodes the answer. One exchange at a time per pair.
+    /// decodes the answer (still holding the connection: the answer is
+    /// read into its reused buffers). One exchange at a time per pair.
     pub fn call<C: Call>(&self, c: &C, path: u16, timeout: i32) -> Result<C::Output> {
         let cx = self.info.ctx(path);
         let mut subs = c.request(&cx);
@@ -283,17 +284,12 @@ impl Pair {
                 s.path = path;
             }
         }
-        let resp = self.exchange(&subs, timeout)?;
-        c.decode(&cx, &resp)
-    }
-
-    pub fn exchange(&self, subs: &[ReqSub], timeout: i32) -> Result<Vec<RespSub>> {
         let mut io = self.io();
         let Some(c2) = io.as_mut() else {
             return Err(dead());
         };
-        match exchange(c2, subs, Deadline::after_secs(timeout)) {
-            Ok(r) => Ok(r),
+        match c2.exchange(&subs, Deadline::after_secs(timeout)) {
+            Ok(resp) => c.decode(&cx, resp),
             Err(e) => {
                 if stream_broken(&e) {
                     drop(io);
@@ -356,10 +352,4 @@ fn open_option(open: &OpenBody) -> u16 {
         OpenBody::Series16 { header, .. } if header[1] == 3 => 1,
         OpenBody::Series16 { .. } => 0,
     }
-}
-
-/// One data request and its response on a connection.
-fn exchange(conn: &mut Conn, subs: &[ReqSub], deadline: Deadline) -> Result<Vec<RespSub>> {
-    conn.send_data(subs, deadline)?;
-    Ok(conn.recv_kind_with(0x21, deadline, |_, body| decode_response(body))??)
 }
