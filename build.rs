@@ -87,8 +87,12 @@ fn static_unwinder(out_dir: &Path) {
         && env::var("CARGO_CFG_TARGET_ENV").as_deref() == Ok("gnu");
     let archives = gnu_linux
         .then(|| {
-            // The driver rustc links with, asked where its archives are.
-            let cc = env::var("RUSTC_LINKER").unwrap_or_else(|_| "cc".to_string());
+            // The driver rustc links with, asked where its archives are
+            // (when cross-building, only a linker named for the target
+            // knows the target's).
+            let cc = env::var("RUSTC_LINKER").ok().or_else(|| {
+                (env::var("TARGET").ok() == env::var("HOST").ok()).then(|| "cc".to_string())
+            })?;
             let ask = |arg: &str| -> Option<PathBuf> {
                 let out = std::process::Command::new(&cc).arg(arg).output().ok()?;
                 let p = PathBuf::from(String::from_utf8(out.stdout).ok()?.trim());
