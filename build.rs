@@ -1,6 +1,8 @@
 //! Build script:
 //!
 //! * gives the cdylib FANUC's soname, `libfwlib32.so.<major>`;
+//! * links the cdylib's unwinder statically, so that loading it does not
+//!   load libgcc_s.so too (see `static_unwinder`);
 //! * generates the C header `fwlib32.h` into `$OUT_DIR` with cbindgen (and into
 //!   `include/fwlib32.h` when `FWLIB32_UPDATE_HEADER=1`), with the `EW_*` block
 //!   generated here from src/ew.rs.
@@ -36,6 +38,8 @@ fn main() {
         println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libfwlib32.so.{major}");
     }
 
+    static_unwinder(&out_dir);
+
     // The target and host triples, for the tests: they run the C programs they
     // build through cargo's runner for the target (`CARGO_TARGET_<TRIPLE>_RUNNER`,
     // e.g. qemu), and tests/install.rs installs for the target.
@@ -60,6 +64,62 @@ fn main() {
         fs::create_dir_all(committed.parent().unwrap()).expect("create include/");
         write_if_changed(&committed, &header);
     }
+}
+
+/// On GNU/Linux, links the cdylib's unwinder (the `_Unwind_*` functions
+/// that panics and `catch_unwind` use) from gcc's static `libgcc_eh.a`
+/// instead of `libgcc_s.so.1`: a C host that loads the library then loads
+/// one shared object, not two (libgcc_s was most of dlopen's time).
+///
+/// Rust's std asks the linker for `-lgcc_s`; the cdylib's link searches
+/// first a directory of ours where `libgcc_s.so` is a linker script naming
+/// the static archives, so nothing in the library refers to libgcc_s.so.1
+/// and `--as-needed` drops it. The unwinder's symbols stay local (the
+/// cdylib exports only the C functions), and panics never leave the library,
+/// so it never meets the host's unwinder. Where the C compiler has no
+/// `libgcc_eh.a` the library links libgcc_s.so.1 as before. The tests and
+/// binaries are linked as usual (the link arguments are the cdylib's only).
+///
+/// `FWLIB32_STATIC_UNWINDER` is set to 1 or 0 for the tests.
+fn static_unwinder(out_dir: &Path) {
+    println!("cargo:rerun-if-env-changed=RUSTC_LINKER");
+    let gnu_linux = env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("linux")
+        && env::var("CARGO_CFG_TARGET_ENV").as_deref() == Ok("gnu");
+    let archives = gnu_linux
+        .then(|| {
+            // The driver rustc links with, asked where its archives are
+            // (when cross-building, only a linker named for the target
+            // knows the target's).
+            let cc = env::var("RUSTC_LINKER").ok().or_else(|| {
+                (env::var("TARGET").ok() == env::var("HOST").ok()).then(|| "cc".to_string())
+            })?;
+            let ask = |arg: &str| -> Option<PathBuf> {
+                let out = std::process::Command::new(&cc).arg(arg).output().ok()?;
+                let p = PathBuf::from(String::from_utf8(out.stdout).ok()?.trim());
+                (out.status.success() && p.is_absolute() && p.is_file()).then_some(p)
+            };
+            Some((
+                ask("-print-file-name=libgcc_eh.a")?,
+                ask("-print-libgcc-file-name")?,
+            ))
+        })
+        .flatten();
+    let Some((eh, gcc)) = archives else {
+        println!("cargo:rustc-env=FWLIB32_STATIC_UNWINDER=0");
+        return;
+    };
+    let dir = out_dir.join("static-unwinder");
+    fs::create_dir_all(&dir).expect("create static-unwinder/");
+    write_if_changed(
+        &dir.join("libgcc_s.so"),
+        &format!(
+            "/* Written by build.rs: the unwinder from gcc's static archives. */\nGROUP ( \"{}\" \"{}\" )\n",
+            eh.display(),
+            gcc.display()
+        ),
+    );
+    println!("cargo:rustc-cdylib-link-arg=-L{}", dir.display());
+    println!("cargo:rustc-env=FWLIB32_STATIC_UNWINDER=1");
 }
 
 fn generate_header(root: &Path, described: &Path) -> String {

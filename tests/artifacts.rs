@@ -91,6 +91,32 @@ fn exports_are_exactly_the_ffi_functions() {
     );
 }
 
+/// Loading the library loads nothing but libc (and the dynamic loader):
+/// no libm, and no libgcc_s where build.rs linked the unwinder statically
+/// (every GNU toolchain with gcc's libgcc_eh.a).
+#[test]
+fn the_library_needs_only_libc() {
+    let lib = cdylib();
+    let out = run(Command::new(readelf()).arg("-d").arg(&lib));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let needed: Vec<&str> = text
+        .lines()
+        .filter(|l| l.contains("(NEEDED)"))
+        .filter_map(|l| l.split_once('[')?.1.split_once(']').map(|x| x.0))
+        .collect();
+    let allowed = |n: &&str| {
+        n.starts_with("libc.so")
+            || n.starts_with("ld-linux")
+            || (n.starts_with("libgcc_s.so") && env!("FWLIB32_STATIC_UNWINDER") == "0")
+    };
+    let strays: Vec<&&str> = needed.iter().filter(|n| !allowed(n)).collect();
+    assert!(
+        strays.is_empty(),
+        "{} needs {strays:?} (readelf -d):\n{text}",
+        lib.display()
+    );
+}
+
 /// Linked by soname, as a program built against FANUC's library is; only
 /// calls that need no CNC.
 const SMOKE: &str = r#"

@@ -1,10 +1,22 @@
 //! One TCP connection to a CNC, blocking std::net, every wait bounded by a deadline.
+//!
+//! The per-call cost is kept at what the bytes need: a request is encoded
+//! into a reused buffer and sent with one `send`; answers are read into a
+//! reused buffer, as much as has arrived (one `recv` when the whole frame
+//! is there), and frames are taken from it whole, leftovers kept for the
+//! next one. The socket timeouts that bound each wait are set only when the
+//! one already set does not fit the call's deadline (see [`Armed`]), not
+//! before every `send` and `recv`.
 
 use super::log;
 use crate::error::{Error, Result, detail};
-use crate::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype};
+use crate::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype, max_body_len};
+use crate::proto::packet::{ReqSub, RespSub, decode_response_into, encode_request_into};
+use crate::proto::wire::Writer;
 use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
+use std::ops::Range;
+use std::os::fd::AsRawFd;
 use std::time::{Duration, Instant};
 
 /// When a wait gives up. `None` waits forever (a timeout of 0 or less).
@@ -15,6 +27,7 @@ impl Deadline {
     pub fn after_secs(timeout: i32) -> Deadline {
         Deadline((timeout > 0).then(|| Instant::now() + Duration::from_secs(timeout as u64)))
     }
+    /// None once passed; Some(None) for no limit; else the time left.
     fn remaining(&self) -> Option<Option<Duration>> {
         match self.0 {
             None => Some(None),
@@ -26,11 +39,73 @@ impl Deadline {
     }
 }
 
+/// A socket timeout (SO_RCVTIMEO or SO_SNDTIMEO) as last set.
+///
+/// A wait must end by the call's deadline, so the timeout set must not be
+/// longer than the time left; it is set a sixteenth shorter than that, so
+/// that the next calls, whose deadlines are as far, find it short enough
+/// and need not set it again. A wait it cuts short before the deadline is
+/// simply resumed (with a timeout that fits what is left then). One that
+/// is less than half the time left is set again, so that a slow answer does
+/// not mean many wake-ups.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Armed {
+    /// No timeout (blocks until the peer acts): how a socket starts.
+    Forever,
+    After(Duration),
+}
+
+impl Armed {
+    /// Whether this timeout bounds a wait that must end within `left`
+    /// (None: no limit) and is not needlessly short.
+    fn fits(self, left: Option<Duration>) -> bool {
+        match (self, left) {
+            (Armed::Forever, None) => true,
+            // No limit: waking up once a second to wait again costs nothing.
+            (Armed::After(d), None) => d >= Duration::from_secs(1),
+            (Armed::Forever, Some(_)) => false,
+            (Armed::After(d), Some(l)) => d <= l && d >= l / 2,
+        }
+    }
+
+    /// The timeout to set for a wait that must end within `left`.
+    fn for_wait(left: Option<Duration>) -> Armed {
+        match left {
+            None => Armed::Forever,
+            Some(l) => Armed::After(l - l / 16),
+        }
+    }
+
+    fn as_option(self) -> Option<Duration> {
+        match self {
+            Armed::Forever => None,
+            Armed::After(d) => Some(d),
+        }
+    }
+}
+
+/// The largest frame any version may carry.
+const MAX_FRAME: usize = HEADER_LEN + 4950;
+/// The read buffer: room for a whole frame after what is left of the last.
+const RBUF: usize = 8192;
+const _: () = assert!(max_body_len(u16::MAX) + HEADER_LEN == MAX_FRAME && RBUF >= MAX_FRAME);
+
 pub struct Conn {
     stream: TcpStream,
     /// 1 or 2, for logs.
     pub number: u8,
     peer: String,
+    /// Bytes read and not yet taken: `rbuf[rstart..rend]`. Allocated at
+    /// the first read.
+    rbuf: Vec<u8>,
+    rstart: usize,
+    rend: usize,
+    /// The frame being sent, reused.
+    wbuf: Vec<u8>,
+    read_timeout: Armed,
+    write_timeout: Armed,
+    /// The last data answer's subpackets, reused by the next.
+    resp: Vec<RespSub>,
 }
 
 impl Conn {
@@ -49,6 +124,13 @@ impl Conn {
                         stream,
                         number,
                         peer: a.to_string(),
+                        rbuf: Vec::new(),
+                        rstart: 0,
+                        rend: 0,
+                        wbuf: Vec::new(),
+                        read_timeout: Armed::Forever,
+                        write_timeout: Armed::Forever,
+                        resp: Vec::new(),
                     });
                 }
                 Err(e) => last = Some(e),
@@ -63,87 +145,227 @@ impl Conn {
         ))
     }
 
-    pub fn send(&mut self, frame: &Frame, deadline: Deadline) -> Result<()> {
-        let bytes = frame.encode();
-        log::bytes("send", self.number, &self.peer, &bytes);
-        let t = match deadline.remaining() {
-            Some(t) => t,
-            None => return Err(Error::socket(detail::SEND, "send: timed out")),
+    /// Sets SO_RCVTIMEO (`read`) or SO_SNDTIMEO unless the one set fits a
+    /// wait that must end within `left`.
+    fn arm(&mut self, read: bool, left: Option<Duration>) {
+        let armed = if read {
+            self.read_timeout
+        } else {
+            self.write_timeout
         };
-        let _ = self.stream.set_write_timeout(t);
-        self.stream
-            .write_all(&bytes)
-            .map_err(|e| Error::socket(detail::SEND, format!("send: {e}")))
+        if armed.fits(left) {
+            return;
+        }
+        let want = Armed::for_wait(left);
+        let r = if read {
+            self.stream.set_read_timeout(want.as_option())
+        } else {
+            self.stream.set_write_timeout(want.as_option())
+        };
+        // Should it fail, the next wait tries again.
+        let now = if r.is_ok() {
+            want
+        } else {
+            Armed::After(Duration::ZERO)
+        };
+        if read {
+            self.read_timeout = now;
+        } else {
+            self.write_timeout = now;
+        }
     }
 
-    fn read_exact(
-        &mut self,
-        buf: &mut [u8],
-        deadline: Deadline,
-        on_timeout: (i16, i16),
-    ) -> Result<()> {
-        let mut got = 0;
-        while got < buf.len() {
-            let t = deadline
+    pub fn send(&mut self, frame: &Frame, deadline: Deadline) -> Result<()> {
+        let mut w = Writer {
+            buf: std::mem::take(&mut self.wbuf),
+        };
+        w.buf.clear();
+        FrameHeader {
+            version: frame.version,
+            ftype: frame.ftype,
+            len: frame.body.len() as u16,
+        }
+        .encode(&mut w);
+        w.bytes(&frame.body);
+        self.wbuf = w.buf;
+        self.send_wbuf(deadline)
+    }
+
+    /// Sends a data request (0x2101) of `subs`, encoded in place.
+    pub fn send_data(&mut self, subs: &[ReqSub], deadline: Deadline) -> Result<()> {
+        let mut w = Writer {
+            buf: std::mem::take(&mut self.wbuf),
+        };
+        w.buf.clear();
+        FrameHeader {
+            version: CLIENT_VERSION,
+            ftype: ftype::DATA_REQ,
+            len: 0,
+        }
+        .encode(&mut w);
+        encode_request_into(subs, &mut w);
+        let len = (w.len() - HEADER_LEN) as u16;
+        w.patch_u16(HEADER_LEN - 2, len);
+        self.wbuf = w.buf;
+        self.send_wbuf(deadline)
+    }
+
+    /// One data request and its answer: `subs` sent as a 0x2101 frame, the
+    /// 0x21xx answer's subpackets (valid until the next exchange).
+    pub fn exchange(&mut self, subs: &[ReqSub], deadline: Deadline) -> Result<&[RespSub]> {
+        self.send_data(subs, deadline)?;
+        let mut resp = std::mem::take(&mut self.resp);
+        let r = self.recv_kind_with(0x21, deadline, |_, body| {
+            decode_response_into(body, &mut resp)
+        });
+        self.resp = resp;
+        r??;
+        Ok(&self.resp)
+    }
+
+    /// Writes `wbuf` whole before the deadline.
+    fn send_wbuf(&mut self, deadline: Deadline) -> Result<()> {
+        log::bytes("send", self.number, &self.peer, &self.wbuf);
+        let mut sent = 0;
+        while sent < self.wbuf.len() {
+            let left = deadline
+                .remaining()
+                .ok_or_else(|| Error::socket(detail::SEND, "send: timed out"))?;
+            self.arm(false, left);
+            match (&self.stream).write(&self.wbuf[sent..]) {
+                Ok(0) => {
+                    return Err(Error::socket(
+                        detail::SEND,
+                        "send: the connection accepts no more bytes",
+                    ));
+                }
+                Ok(n) => sent += n,
+                // Cut short by a socket timeout before the deadline: go on.
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        ErrorKind::WouldBlock | ErrorKind::TimedOut | ErrorKind::Interrupted
+                    ) => {}
+                Err(e) => return Err(Error::socket(detail::SEND, format!("send: {e}"))),
+            }
+        }
+        Ok(())
+    }
+
+    /// Reads at least one more byte into the read buffer, as many as have
+    /// arrived (up to the room left), before the deadline.
+    fn fill(&mut self, deadline: Deadline, on_timeout: (i16, i16)) -> Result<()> {
+        if self.rbuf.is_empty() {
+            self.rbuf = vec![0; RBUF];
+        }
+        if self.rstart == self.rend {
+            (self.rstart, self.rend) = (0, 0);
+        } else if self.rbuf.len() - self.rstart < MAX_FRAME {
+            // Make room for the rest of the frame begun at rstart.
+            self.rbuf.copy_within(self.rstart..self.rend, 0);
+            (self.rstart, self.rend) = (0, self.rend - self.rstart);
+        }
+        loop {
+            let left = deadline
                 .remaining()
                 .ok_or_else(|| Error::socket(on_timeout, "receive: timed out"))?;
-            let _ = self.stream.set_read_timeout(t);
-            match self.stream.read(&mut buf[got..]) {
+            self.arm(true, left);
+            match (&self.stream).read(&mut self.rbuf[self.rend..]) {
                 Ok(0) => {
                     return Err(Error::socket(
                         detail::EOF,
                         "receive: connection closed by the CNC",
                     ));
                 }
-                Ok(n) => got += n,
-                Err(e) if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut) => {
-                    return Err(Error::socket(on_timeout, "receive: timed out"));
+                Ok(n) => {
+                    self.rend += n;
+                    return Ok(());
                 }
-                Err(e) if e.kind() == ErrorKind::Interrupted => {}
+                // Cut short by a socket timeout before the deadline: go on.
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        ErrorKind::WouldBlock | ErrorKind::TimedOut | ErrorKind::Interrupted
+                    ) => {}
                 Err(e) => return Err(Error::socket(detail::EOF, format!("receive: {e}"))),
             }
         }
-        Ok(())
     }
 
-    /// Reads one whole frame. A bad header is a protocol error after which
-    /// the stream is out of step (the caller tears the connection down).
-    pub fn recv(&mut self, deadline: Deadline) -> Result<Frame> {
-        let mut head = [0u8; HEADER_LEN];
-        self.read_exact(&mut head, deadline, detail::RECV_TIMEOUT_HEADER)?;
-        let h = match FrameHeader::decode(&head) {
-            Ok(h) => h,
-            Err(e) => {
-                log::bytes("recv-bad", self.number, &self.peer, &head);
-                return Err(e.into());
-            }
-        };
-        let mut body = vec![0u8; h.len as usize];
-        self.read_exact(&mut body, deadline, detail::RECV_TIMEOUT_BODY)?;
-        if log::enabled(log::BYTES) {
-            let mut all = head.to_vec();
-            all.extend_from_slice(&body);
-            log::bytes("recv", self.number, &self.peer, &all);
-        }
-        Ok(Frame::new(h.version, h.ftype, body))
-    }
-
-    /// Reads frames until one of the kind `kind` (high type byte) arrives;
-    /// frames of other kinds are logged and discarded, as FANUC's library does.
-    pub fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
+    /// The next whole frame, read as needed: its header and where its body
+    /// is in the read buffer (valid until the next read). A bad header is a
+    /// protocol error after which the stream is out of step (the caller
+    /// tears the connection down).
+    fn next_frame(&mut self, deadline: Deadline) -> Result<(FrameHeader, Range<usize>)> {
         loop {
-            let f = self.recv(deadline)?;
-            if (f.ftype >> 8) as u8 == kind {
-                return Ok(f);
+            let have = self.rend - self.rstart;
+            if have < HEADER_LEN {
+                self.fill(deadline, detail::RECV_TIMEOUT_HEADER)?;
+                continue;
+            }
+            let at = self.rstart;
+            let h = match FrameHeader::decode(&self.rbuf[at..at + HEADER_LEN]) {
+                Ok(h) => h,
+                Err(e) => {
+                    let head = &self.rbuf[at..at + HEADER_LEN];
+                    log::bytes("recv-bad", self.number, &self.peer, head);
+                    return Err(e.into());
+                }
+            };
+            let total = HEADER_LEN + h.len as usize;
+            if have < total {
+                self.fill(deadline, detail::RECV_TIMEOUT_BODY)?;
+                continue;
+            }
+            self.rstart += total;
+            log::bytes("recv", self.number, &self.peer, &self.rbuf[at..at + total]);
+            return Ok((h, at + HEADER_LEN..at + total));
+        }
+    }
+
+    /// Reads one whole frame.
+    pub fn recv(&mut self, deadline: Deadline) -> Result<Frame> {
+        let (h, body) = self.next_frame(deadline)?;
+        Ok(Frame::new(h.version, h.ftype, self.rbuf[body].to_vec()))
+    }
+
+    /// Reads frames until one of the kind `kind` (high type byte) arrives,
+    /// and hands its body to `f`; frames of other kinds are logged and
+    /// discarded, as FANUC's library does.
+    pub fn recv_kind_with<T>(
+        &mut self,
+        kind: u8,
+        deadline: Deadline,
+        f: impl FnOnce(&FrameHeader, &[u8]) -> T,
+    ) -> Result<T> {
+        loop {
+            let (h, body) = self.next_frame(deadline)?;
+            if h.kind() == kind {
+                return Ok(f(&h, &self.rbuf[body]));
             }
             crate::log_at!(
                 log::ERRORS,
                 "conn{} discarded a frame of type {:04x} while waiting for {:02x}xx",
                 self.number,
-                f.ftype,
+                h.ftype,
                 kind
             );
         }
+    }
+
+    /// As [`Conn::recv_kind_with`], the frame returned whole.
+    pub fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
+        self.recv_kind_with(kind, deadline, |h, body| {
+            Frame::new(h.version, h.ftype, body.to_vec())
+        })
+    }
+
+    /// Takes the bytes read and not yet taken as frames (connection 1
+    /// hands them to its own buffer when it takes over the connection).
+    pub fn take_buffered(&mut self) -> Vec<u8> {
+        let v = self.rbuf[self.rstart..self.rend].to_vec();
+        (self.rstart, self.rend) = (0, 0);
+        v
     }
 
     /// Appends bytes from the socket to `buf` and returns how many: with
@@ -153,21 +375,36 @@ impl Conn {
         let mut tmp = [0u8; 8192];
         let r = match wait {
             None => {
-                let _ = self.stream.set_nonblocking(true);
-                let r = self.stream.read(&mut tmp);
-                let _ = self.stream.set_nonblocking(false);
-                match r {
-                    Err(e) if e.kind() == ErrorKind::WouldBlock => return Ok(0),
-                    r => r,
+                let n = unsafe {
+                    libc::recv(
+                        self.stream.as_raw_fd(),
+                        tmp.as_mut_ptr().cast(),
+                        tmp.len(),
+                        libc::MSG_DONTWAIT,
+                    )
+                };
+                if n < 0 {
+                    match std::io::Error::last_os_error() {
+                        e if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::Interrupted) => {
+                            return Ok(0);
+                        }
+                        e => Err(e),
+                    }
+                } else {
+                    Ok(n as usize)
                 }
             }
             Some(deadline) => loop {
-                let t = deadline.remaining().ok_or_else(|| {
+                let left = deadline.remaining().ok_or_else(|| {
                     Error::socket(detail::RECV_TIMEOUT_HEADER, "receive: timed out")
                 })?;
-                let _ = self.stream.set_read_timeout(t);
-                match self.stream.read(&mut tmp) {
-                    Err(e) if e.kind() == ErrorKind::Interrupted => {}
+                self.arm(true, left);
+                match (&self.stream).read(&mut tmp) {
+                    Err(e)
+                        if matches!(
+                            e.kind(),
+                            ErrorKind::WouldBlock | ErrorKind::TimedOut | ErrorKind::Interrupted
+                        ) => {}
                     r => break r,
                 }
             },
@@ -182,10 +419,6 @@ impl Conn {
                 buf.extend_from_slice(&tmp[..n]);
                 Ok(n)
             }
-            Err(e) if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut) => Err(
-                Error::socket(detail::RECV_TIMEOUT_HEADER, "receive: timed out"),
-            ),
-            Err(e) if e.kind() == ErrorKind::Interrupted => Ok(0),
             Err(e) => Err(Error::socket(detail::EOF, format!("receive: {e}"))),
         }
     }
@@ -201,6 +434,41 @@ pub(crate) fn close_conn(conn: &mut Conn, deadline: Deadline) -> Result<()> {
         &Frame::new(CLIENT_VERSION, ftype::CLOSE_REQ, Vec::new()),
         deadline,
     )?;
-    conn.recv_kind(0x02, deadline)?;
-    Ok(())
+    conn.recv_kind_with(0x02, deadline, |_, _| ())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const S: Duration = Duration::from_secs(1);
+
+    #[test]
+    fn a_timeout_set_fits_while_it_is_no_longer_than_what_is_left() {
+        let armed = Armed::for_wait(Some(10 * S));
+        assert_eq!(armed, Armed::After(10 * S - 10 * S / 16));
+        // The next calls' deadlines are as far: nothing to set.
+        assert!(armed.fits(Some(10 * S)));
+        assert!(armed.fits(Some(10 * S - Duration::from_millis(1))));
+        // Less time left than the timeout: set again.
+        assert!(!armed.fits(Some(9 * S)));
+        // Far shorter than the time left (another handle's timeout): set again.
+        assert!(!armed.fits(Some(60 * S)));
+        // No limit: a timeout of a second or more only means wake-ups.
+        assert!(armed.fits(None));
+        assert!(!Armed::After(Duration::from_millis(10)).fits(None));
+        assert!(Armed::Forever.fits(None));
+        assert!(!Armed::Forever.fits(Some(S)));
+    }
+
+    #[test]
+    fn the_timeout_for_a_tiny_wait_is_not_zero() {
+        for ns in [1, 2, 15, 16, 17, 1000] {
+            let left = Duration::from_nanos(ns);
+            let Armed::After(d) = Armed::for_wait(Some(left)) else {
+                panic!("finite");
+            };
+            assert!(!d.is_zero() && d <= left, "{ns} ns");
+        }
+    }
 }

@@ -31,10 +31,12 @@ pub(super) struct Upload {
 }
 
 impl Conn1 {
-    pub fn new(conn: Conn) -> Conn1 {
+    pub fn new(mut conn: Conn) -> Conn1 {
+        // Whatever arrived after the open answer is the start of the next frame.
+        let rbuf = conn.take_buffered();
         Conn1 {
             conn,
-            rbuf: Vec::new(),
+            rbuf,
             upload: None,
         }
     }

@@ -9,7 +9,7 @@ use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use crate::proto::open::{CncClass, OpenBody};
-use crate::proto::packet::{ReqSub, RespSub, decode_response, encode_request};
+use crate::proto::packet::ReqSub;
 use crate::proto::param::Param16;
 use crate::proto::status::{SysInfo, sysinfo_at_connect};
 use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
@@ -47,8 +47,11 @@ struct Conns {
 pub struct Pair {
     pub key: String,
     pub info: CncInfo,
-    /// Connection 2, the data requests. One exchange at a time.
-    io: Mutex<Option<Conn>>,
+    /// Connection 2, the data requests. One exchange at a time: std's
+    /// futex mutex, as a C client's would be (under many threads on one
+    /// CNC it kept throughput at the plain-socket floor more steadily than
+    /// parking_lot's, benches/floor.rs); see [`Pair::io`].
+    io: std::sync::Mutex<Option<Conn>>,
     /// Connection 1 and the program upload on it (src/client/upload.rs).
     /// Its own lock, never held together with `io`: an upload never holds
     /// up the data requests of other handles.
@@ -178,7 +181,7 @@ impl Pair {
                         sysinfo,
                         option,
                     },
-                    io: Mutex::new(Some(conns.c2)),
+                    io: std::sync::Mutex::new(Some(conns.c2)),
                     c1: Mutex::new(Some(Conn1::new(conns.c1))),
                     refs: Mutex::new(1),
                     dead: AtomicBool::new(false),
@@ -220,14 +223,14 @@ impl Pair {
             s.path = 1;
             subs.push(s);
         }
-        let resp = exchange(&mut conns.c2, &subs, deadline)?;
+        let resp = conns.c2.exchange(&subs, deadline)?;
         let mut sysinfo = vec![None; words.len()];
         for (i, p) in paths.iter().enumerate() {
-            sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(&resp, i)?);
+            sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(resp, i)?);
         }
         if class == (CncClass::Series16 { kind: 2 }) {
             // Series 15: the companion's error fails the connect, as FANUC's library.
-            call::sub(&resp, paths.len())?;
+            call::sub(resp, paths.len())?;
         }
         let option_param = match class {
             CncClass::Series30 => None,
@@ -239,12 +242,19 @@ impl Pair {
         if let Some((command, number, mask)) = option_param {
             let mut s = ReqSub::cnc(command, &[number, number]);
             s.path = 1;
-            let resp = exchange(&mut conns.c2, &[s], deadline)?;
+            let resp = conns.c2.exchange(&[s], deadline)?;
             // An error here fails the connect, as in FANUC's library.
-            let p = call::payload::<Param16>(&resp, 0)?;
+            let p = call::payload::<Param16>(resp, 0)?;
             option = p.values.first().map_or(0, |v| (*v as u16) & 0xff & mask);
         }
         Ok((sysinfo, option))
+    }
+
+    /// Connection 2, locked. A panic while it was held (a bug, caught at the
+    /// C boundary) is no reason to fail every later call on the pair: the
+    /// poison is ignored, as parking_lot's locks have none.
+    fn io(&self) -> std::sync::MutexGuard<'_, Option<Conn>> {
+        self.io.lock().unwrap_or_else(|e| e.into_inner())
     }
 
     pub fn is_dead(&self) -> bool {
@@ -258,13 +268,14 @@ impl Pair {
         if let Some(c) = self.c1.lock().take() {
             c.conn.shutdown();
         }
-        if let Some(c) = self.io.lock().take() {
+        if let Some(c) = self.io().take() {
             c.shutdown();
         }
     }
 
     /// Sends `c`'s subpackets on connection 2 with the handle's path and
-    /// decodes the answer. One exchange at a time per pair.
+    /// decodes the answer (still holding the connection: the answer is
+    /// read into its reused buffers). One exchange at a time per pair.
     pub fn call<C: Call>(&self, c: &C, path: u16, timeout: i32) -> Result<C::Output> {
         let cx = self.info.ctx(path);
         let mut subs = c.request(&cx);
@@ -273,17 +284,12 @@ impl Pair {
                 s.path = path;
             }
         }
-        let resp = self.exchange(&subs, timeout)?;
-        c.decode(&cx, &resp)
-    }
-
-    pub fn exchange(&self, subs: &[ReqSub], timeout: i32) -> Result<Vec<RespSub>> {
-        let mut io = self.io.lock();
+        let mut io = self.io();
         let Some(c2) = io.as_mut() else {
             return Err(dead());
         };
-        match exchange(c2, subs, Deadline::after_secs(timeout)) {
-            Ok(r) => Ok(r),
+        match c2.exchange(&subs, Deadline::after_secs(timeout)) {
+            Ok(resp) => c.decode(&cx, resp),
             Err(e) => {
                 if stream_broken(&e) {
                     drop(io);
@@ -302,7 +308,7 @@ impl Pair {
             return Ok(());
         }
         let c1 = self.c1.lock().take();
-        let c2 = self.io.lock().take();
+        let c2 = self.io().take();
         self.dead.store(true, Ordering::Release);
         match (c1, c2) {
             (Some(mut c1), Some(mut c2)) => {
@@ -346,14 +352,4 @@ fn open_option(open: &OpenBody) -> u16 {
         OpenBody::Series16 { header, .. } if header[1] == 3 => 1,
         OpenBody::Series16 { .. } => 0,
     }
-}
-
-/// One data request and its response on a connection.
-fn exchange(conn: &mut Conn, subs: &[ReqSub], deadline: Deadline) -> Result<Vec<RespSub>> {
-    conn.send(
-        &Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(subs)),
-        deadline,
-    )?;
-    let f = conn.recv_kind(0x21, deadline)?;
-    Ok(decode_response(&f.body)?)
 }

@@ -30,7 +30,7 @@ pub mod ftype {
 pub const CLIENT_VERSION: u16 = 1;
 
 /// Largest body a frame of this version may carry (SPEC.md §2).
-pub fn max_body_len(version: u16) -> usize {
+pub const fn max_body_len(version: u16) -> usize {
     match version {
         0..=2 => 1450,
         3 => 2910,

@@ -105,6 +105,12 @@ impl RespSub {
 /// Encodes a request body: u16 count, then the subpackets.
 pub fn encode_request(subs: &[ReqSub]) -> Vec<u8> {
     let mut w = Writer::with_capacity(2 + subs.len() * REQ_FIXED);
+    encode_request_into(subs, &mut w);
+    w.into_vec()
+}
+
+/// [`encode_request`], appended to `w` (a frame being built in a reused buffer).
+pub fn encode_request_into(subs: &[ReqSub], w: &mut Writer) {
     w.u16(subs.len() as u16);
     for s in subs {
         w.u16((REQ_FIXED + s.payload.len()) as u16);
@@ -116,7 +122,6 @@ pub fn encode_request(subs: &[ReqSub]) -> Vec<u8> {
         }
         w.bytes(&s.payload);
     }
-    w.into_vec()
 }
 
 /// Decodes a request body (the simulator's side).
@@ -167,29 +172,52 @@ pub fn encode_response(subs: &[RespSub]) -> Vec<u8> {
 /// lengths add up to the body exactly. The payload-length word bounds the
 /// payload (FANUC's library uses no more than it announces).
 pub fn decode_response(body: &[u8]) -> Result<Vec<RespSub>, DecodeError> {
-    decode_list(body, RESP_FIXED, |r, len| {
-        let class = r.u16()?;
-        let path = r.u16()?;
-        let cmd = r.u16()?;
-        let error = r.i16()?;
-        let detail1 = r.u16()?;
-        let detail2 = r.u16()?;
+    let mut out = Vec::new();
+    decode_response_into(body, &mut out)?;
+    Ok(out)
+}
+
+/// [`decode_response`] into `out`, reusing its entries and their payload
+/// buffers (a connection decodes every answer into the same list, so a
+/// call allocates nothing for its answer once the list has grown). After
+/// an error `out` holds nothing meaningful.
+pub fn decode_response_into(body: &[u8], out: &mut Vec<RespSub>) -> Result<(), DecodeError> {
+    // What a hostile answer can leave behind stays small.
+    out.truncate(32);
+    let mut n = 0;
+    for_each_sub(body, RESP_FIXED, |r, len| {
+        let head = RespSub {
+            class: r.u16()?,
+            path: r.u16()?,
+            cmd: r.u16()?,
+            error: r.i16()?,
+            detail1: r.u16()?,
+            detail2: r.u16()?,
+            payload: Vec::new(),
+        };
         let plen = r.u16()? as usize;
         let room = len - RESP_FIXED;
         let all = r.bytes(room)?;
         if plen > room {
             return Err(DecodeError::Invalid("payload length exceeds its subpacket"));
         }
-        Ok(RespSub {
-            class,
-            path,
-            cmd,
-            error,
-            detail1,
-            detail2,
-            payload: all[..plen].to_vec(),
-        })
-    })
+        match out.get_mut(n) {
+            Some(s) => {
+                let mut payload = std::mem::take(&mut s.payload);
+                payload.clear();
+                payload.extend_from_slice(&all[..plen]);
+                *s = RespSub { payload, ..head };
+            }
+            None => out.push(RespSub {
+                payload: all[..plen].to_vec(),
+                ..head
+            }),
+        }
+        n += 1;
+        Ok(())
+    })?;
+    out.truncate(n);
+    Ok(())
 }
 
 fn decode_list<T>(
@@ -197,6 +225,22 @@ fn decode_list<T>(
     fixed: usize,
     mut one: impl FnMut(&mut Reader<'_>, usize) -> Result<T, DecodeError>,
 ) -> Result<Vec<T>, DecodeError> {
+    let mut out = Vec::new();
+    for_each_sub(body, fixed, |r, len| {
+        out.push(one(r, len)?);
+        Ok(())
+    })?;
+    Ok(out)
+}
+
+/// Checks a counted list of subpackets (the count is not zero, the length
+/// words add up to the body exactly), then runs `one` on each subpacket,
+/// positioned after its length word, with that length.
+fn for_each_sub(
+    body: &[u8],
+    fixed: usize,
+    mut one: impl FnMut(&mut Reader<'_>, usize) -> Result<(), DecodeError>,
+) -> Result<(), DecodeError> {
     let mut r = Reader::new(body);
     let count = r.u16()?;
     if count == 0 {
@@ -204,7 +248,6 @@ fn decode_list<T>(
     }
     // Lengths are checked against the body before anything is parsed, so a
     // lie in one length word cannot make us read another subpacket's bytes.
-    let mut lens = Vec::with_capacity(count as usize);
     let mut at = 2usize;
     for _ in 0..count {
         if body.len() < at + 2 {
@@ -220,18 +263,16 @@ fn decode_list<T>(
         if at > body.len() {
             return Err(DecodeError::SubLenTooBig);
         }
-        lens.push(len);
     }
     if at != body.len() {
         return Err(DecodeError::SubLenTooSmall);
     }
-    let mut out = Vec::with_capacity(count as usize);
-    for len in lens {
-        r.u16()?;
+    for _ in 0..count {
+        // The length word, checked above.
+        let len = r.u16()? as usize;
         let start = r.position();
-        let item = one(&mut r, len)?;
+        one(&mut r, len)?;
         debug_assert_eq!(r.position() - start, len - 2);
-        out.push(item);
     }
-    Ok(out)
+    Ok(())
 }

@@ -69,12 +69,13 @@ fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
         // Underflow (a huge exponent): nothing left to show.
         return (0, 0);
     }
-    let mut dec = 8 - x.abs().log10().floor() as i32;
     // 10^dec in two halves: a subnormal x needs dec up to ~332, past f64's range.
-    let digits = |dec: i32| {
+    let scaled = |dec: i32| {
         let h = dec / 2;
-        (x * 10f64.powi(h) * 10f64.powi(dec - h)).round()
+        x * 10f64.powi(h) * 10f64.powi(dec - h)
     };
+    let digits = |dec: i32| scaled(dec).round();
+    let mut dec = 8 - floor_log10(x, scaled);
     let mut m = digits(dec);
     if m.abs() >= 1e9 {
         dec -= 1;
@@ -86,9 +87,113 @@ fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
     (m as i32, dec as i16)
 }
 
+/// ⌊log10 |x|⌋ for a finite non-zero `x`, without libm's log10 (the
+/// library then needs no libm.so, one library less to load): from x's
+/// binary exponent e, ⌊log10 |x|⌋ is k = ⌊e·log10 2⌋ or k + 1, and
+/// `scaled(d)` (x·10^d) tells which. Near a power of ten this may be one
+/// off where log10 is too (both round there); the caller's correction step
+/// turns either into the same digits.
+fn floor_log10(x: f64, scaled: impl Fn(i32) -> f64) -> i32 {
+    let a = x.abs();
+    // A subnormal's exponent is read after scaling it into the normal range.
+    let (normal, shift) = if a < f64::MIN_POSITIVE {
+        (a * 2f64.powi(64), 64)
+    } else {
+        (a, 0)
+    };
+    let e = ((normal.to_bits() >> 52) & 0x7ff) as i32 - 1023 - shift;
+    let k = (f64::from(e) * std::f64::consts::LOG10_2).floor() as i32;
+    if scaled(-(k + 1)).abs() >= 1.0 {
+        k + 1
+    } else {
+        k
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// binary_to_decimal as it was, with libm's log10.
+    fn with_log10(value: i32, exp: i16) -> (i32, i16) {
+        if value == 0 {
+            return (0, exp);
+        }
+        let x = f64::from(value) * 2f64.powi(-i32::from(exp));
+        if !x.is_finite() {
+            return (999_999_999 * value.signum(), -300);
+        }
+        let x = if x.abs() >= 1e-9 && x.abs() < 1e9 {
+            (x * 1e9).round() / 1e9
+        } else {
+            x
+        };
+        if x == 0.0 {
+            return (0, 0);
+        }
+        let mut dec = 8 - x.abs().log10().floor() as i32;
+        let digits = |dec: i32| {
+            let h = dec / 2;
+            (x * 10f64.powi(h) * 10f64.powi(dec - h)).round()
+        };
+        let mut m = digits(dec);
+        if m.abs() >= 1e9 {
+            dec -= 1;
+            m = digits(dec);
+        } else if m.abs() < 1e8 {
+            dec += 1;
+            m = digits(dec);
+        }
+        (m as i32, dec as i16)
+    }
+
+    #[test]
+    fn the_digits_are_those_log10_gave() {
+        let mut values = vec![
+            1,
+            -1,
+            2,
+            3,
+            5,
+            7,
+            9,
+            10,
+            99,
+            100,
+            999,
+            1000,
+            i32::MAX,
+            i32::MIN,
+        ];
+        // Powers of ten and their neighbours, and the digits of 9s.
+        let mut p = 1i64;
+        while p <= i32::MAX as i64 {
+            for d in [-2, -1, 0, 1, 2] {
+                if let Ok(v) = i32::try_from(p + d) {
+                    values.extend([v, -v]);
+                }
+            }
+            values.push((p * 10 - 1).min(i32::MAX as i64) as i32);
+            p *= 10;
+        }
+        // And a spread of others (a fixed LCG).
+        let mut r = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..2000 {
+            r = r
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            values.push((r >> 32) as i32 >> (r % 31));
+        }
+        for exp in -1100i16..=1100 {
+            for &value in &values {
+                assert_eq!(
+                    binary_to_decimal(value, exp),
+                    with_log10(value, exp),
+                    "{value}·2^-{exp}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn extreme_binary_exponents_neither_panic_nor_wrap() {
