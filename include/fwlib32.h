@@ -2140,12 +2140,16 @@ short cnc_rdzofs(unsigned short FlibHndl,
 short cnc_rdzofsinfo(unsigned short FlibHndl, short *ofs_no);
 
 /*
- Reads the work zero offsets `s_number..` for one axis or all axes (any
- negative axis, as FANUC's library). `datano_e` is set from the offsets
- received: for all axes only whole groups of max_axes values count and
- are written (a partial group is dropped, as FANUC's library). More
- values than `length` holds give the code EW_LENGTH with nothing written
- (as FANUC's library).
+ Reads the work zero offsets `s_number..=e_number` for one axis or all
+ axes (any negative axis, sent as it is), as FANUC's library: requests of
+ at most 179 value records each (5 numbers of 32 axes, 179 of one axis),
+ a number's values packed from offset 8 (max_axes of them for all axes).
+ Each answer's whole numbers are checked against `length` (unsigned:
+ 8 + 4 · values so far, else EW_LENGTH) and written; a shorter answer
+ ends the read, and so does the CNC's EW_NUMBER after the first request
+ (a range past the table). Then `datano_s`, `type` and `datano_e` (the
+ last number read) are written. On an error after the first answer, the
+ values already written stay (as FANUC's library; all within `length`).
 
  # Safety
  `zofsr` must point to `length` writable bytes.

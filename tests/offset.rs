@@ -448,3 +448,42 @@ fn work_offsets_all_axes_range_groups_and_length() {
     assert_eq!(b[8 + 256..], [0xCC; 16]);
     sim::free(h);
 }
+
+/// cnc_rdzofsr reads all axes 5 numbers a request (179 value records at
+/// most), as FANUC's library: each answer is checked against `length` and
+/// written before the next, the header only at the end; the CNC's
+/// EW_NUMBER on a later request (the range runs past the table) ends the
+/// read with what the earlier ones got.
+#[test]
+fn work_offsets_range_in_pieces() {
+    let (_s, h) = default();
+    let g = |n: usize| 8 + 128 * n;
+    let mut b = vec![0xCCu8; g(7)];
+    let p = b.as_mut_ptr().cast();
+    // G54..G59: the first piece (5 numbers) fits, the second does not.
+    assert_eq!(
+        unsafe { cnc_rdzofsr(h, 1, -1, 6, (g(6) - 1) as c_short, p) },
+        EW_LENGTH
+    );
+    assert_eq!(&b[..8], [0xCC; 8], "no header on EW_LENGTH");
+    assert_eq!(&b[8..12], (-325400i32).to_le_bytes());
+    assert_eq!(b[g(5)..], [0xCC; 128 * 2]);
+    assert_eq!(
+        unsafe { cnc_rdzofsr(h, 1, -1, 6, g(6) as c_short, p) },
+        EW_OK
+    );
+    assert_eq!(&b[..8], [1, 0, 0xff, 0xff, 6, 0, 0xCC, 0xCC]);
+    assert_eq!(b[g(6)..], [0xCC; 128]);
+    // 1..20: [1, 5] is read, [6, 10] is past the table: datano_e 5.
+    let mut b = vec![0xCCu8; 2000];
+    let p = b.as_mut_ptr().cast();
+    assert_eq!(unsafe { cnc_rdzofsr(h, 1, -1, 20, 2000, p) }, EW_OK);
+    assert_eq!(&b[..8], [1, 0, 0xff, 0xff, 5, 0, 0xCC, 0xCC]);
+    assert_eq!(b[g(5)..], [0xCC; 2000 - 8 - 128 * 5]);
+    // The first request past the table: the CNC's code, nothing written.
+    let mut b = vec![0xCCu8; 2000];
+    let p = b.as_mut_ptr().cast();
+    assert_eq!(unsafe { cnc_rdzofsr(h, 7, -1, 20, 2000, p) }, EW_NUMBER);
+    assert!(b.iter().all(|&x| x == 0xCC));
+    sim::free(h);
+}

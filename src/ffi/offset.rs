@@ -3,7 +3,7 @@
 //! Requests, local checks and output bytes as FANUC's library (vectors
 //! cnc_rdtofs / cnc_rdzofs; the other functions recorded from FANUC's
 //! library against a fake CNC). Outputs are written field by field at their
-//! l32 offsets, and only on success.
+//! l32 offsets, and only on success (cnc_rdzofsr: see there).
 
 use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles::{self, Handle};
@@ -227,12 +227,16 @@ pub unsafe extern "C" fn cnc_wrzofs(
     })
 }
 
-/// Reads the work zero offsets `s_number..` for one axis or all axes (any
-/// negative axis, as FANUC's library). `datano_e` is set from the offsets
-/// received: for all axes only whole groups of max_axes values count and
-/// are written (a partial group is dropped, as FANUC's library). More
-/// values than `length` holds give the code EW_LENGTH with nothing written
-/// (as FANUC's library).
+/// Reads the work zero offsets `s_number..=e_number` for one axis or all
+/// axes (any negative axis, sent as it is), as FANUC's library: requests of
+/// at most 179 value records each (5 numbers of 32 axes, 179 of one axis),
+/// a number's values packed from offset 8 (max_axes of them for all axes).
+/// Each answer's whole numbers are checked against `length` (unsigned:
+/// 8 + 4 · values so far, else EW_LENGTH) and written; a shorter answer
+/// ends the read, and so does the CNC's EW_NUMBER after the first request
+/// (a range past the table). Then `datano_s`, `type` and `datano_e` (the
+/// last number read) are written. On an error after the first answer, the
+/// values already written stay (as FANUC's library; all within `length`).
 ///
 /// # Safety
 /// `zofsr` must point to `length` writable bytes.
@@ -251,21 +255,41 @@ pub unsafe extern "C" fn cnc_rdzofsr(
         if s_number > e_number {
             return Err(Error::local(EW_NUMBER, "start number after end number"));
         }
-        let v = h.call(&p::rdzofsr(s_number, axis, e_number))?;
+        // Compared unsigned, as FANUC's library does (-1 is 65535).
+        let room = length as u16 as usize;
         let per = if axis < 0 { h.ctx().axes().max(1) } else { 1 };
-        let numbers = v.len() / per;
-        let values = &v[..numbers * per];
-        if 8 + 4 * values.len() > len_of(length) {
-            return Err(Error::length());
+        let chunk = (p::RDZOFSR_RECORDS / per).max(1) as i32;
+        let (first, e) = (i32::from(s_number), i32::from(e_number));
+        let mut s = first;
+        let mut numbers = 0usize;
+        while s <= e {
+            let last = e.min(s + chunk - 1);
+            let v = match h.call(&p::ReadZofsRange { s, e: last, axis }) {
+                Ok(v) => v,
+                Err(Error::Cnc {
+                    code: EW_NUMBER, ..
+                }) if s > first => break,
+                Err(err) => return Err(err),
+            };
+            let n = v.len() / per;
+            if 8 + 4 * per * (numbers + n) > room {
+                return Err(Error::length());
+            }
+            unsafe {
+                for (i, r) in v[..n * per].iter().enumerate() {
+                    put_at(out, 8 + 4 * (per * numbers + i), r.value);
+                }
+            }
+            numbers += n;
+            if n < (last - s + 1) as usize {
+                break;
+            }
+            s = last + 1;
         }
-        let e = i32::from(s_number) + numbers as i32 - 1;
         unsafe {
             put_at(out, 0, s_number);
             put_at(out, 2, axis);
-            put_at(out, 4, e as i16);
-            for (i, r) in values.iter().enumerate() {
-                put_at(out, 8 + 4 * i, r.value);
-            }
+            put_at(out, 4, (first + numbers as i32 - 1) as i16);
         }
         Ok(())
     })

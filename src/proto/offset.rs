@@ -8,8 +8,8 @@
 //! answer records with base 10 and the decimals of the offset; writes send
 //! base 0 and decimals -1 (FANUC's library: "integer, no decimals").
 
-use super::call::Single;
-use super::packet::ReqSub;
+use super::call::{Call, Ctx, Single, records};
+use super::packet::{ReqSub, RespSub};
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
@@ -87,11 +87,29 @@ pub fn rdzofs(number: i16, axis: i16) -> Single<Values> {
     Single::new(ReqSub::cnc(RDZOFS, &[n, n, i32::from(axis)]))
 }
 
-pub fn rdzofsr(s: i16, axis: i16, e: i16) -> Single<Values> {
-    Single::new(ReqSub::cnc(
-        RDZOFS,
-        &[i32::from(s), i32::from(e), i32::from(axis)],
-    ))
+/// Most value records one cnc_rdzofsr request asks for: FANUC's library
+/// asks for 179 / (records per number) numbers at a time (5 numbers of 32
+/// axes, 179 of one axis; 25 of 7 axes with max_axes 7).
+pub const RDZOFSR_RECORDS: usize = 179;
+
+/// One cnc_rdzofsr request: `(1,0x000b)[s, e, axis]`. The answer is its
+/// whole value records (a ragged tail is ignored, as FANUC's library
+/// ignores it); how many numbers they make is the caller's business.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ReadZofsRange {
+    pub s: i32,
+    pub e: i32,
+    pub axis: i16,
+}
+
+impl Call for ReadZofsRange {
+    type Output = Values;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(RDZOFS, &[self.s, self.e, i32::from(self.axis)])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> crate::error::Result<Values> {
+        records(resp, 0)
+    }
 }
 
 /// cnc_wrzofs: one record (axis ≥ 0) or one per axis (axis -1).
