@@ -59,10 +59,19 @@ fn main() {
         generated.display()
     );
 
+    let ext = generate_ext_header(&manifest_dir);
+    let generated_ext = out_dir.join("fwlib32_ext.h");
+    write_if_changed(&generated_ext, &ext);
+    println!(
+        "cargo:rustc-env=FWLIB32_GENERATED_EXT_HEADER={}",
+        generated_ext.display()
+    );
+
     if env::var(UPDATE_VAR).as_deref() == Ok("1") {
-        let committed = manifest_dir.join("include").join("fwlib32.h");
-        fs::create_dir_all(committed.parent().unwrap()).expect("create include/");
-        write_if_changed(&committed, &header);
+        let include = manifest_dir.join("include");
+        fs::create_dir_all(&include).expect("create include/");
+        write_if_changed(&include.join("fwlib32.h"), &header);
+        write_if_changed(&include.join("fwlib32_ext.h"), &ext);
     }
 }
 
@@ -166,6 +175,9 @@ fn generate_header(root: &Path, described: &Path) -> String {
         }
     }
 
+    // Our fwlib_* extensions go into fwlib32_ext.h only.
+    config.export.exclude.extend(ext_functions(root));
+
     let mut out = Vec::new();
     cbindgen::Builder::new()
         .with_config(config)
@@ -187,6 +199,57 @@ fn generate_header(root: &Path, described: &Path) -> String {
         .collect::<Vec<_>>()
         .join("\n")
         + "\n"
+}
+
+const EXT_SRC: &str = "src/ffi/ext.rs";
+const EXT_GUARD: &str = "_FWLIB32_EXT_H";
+
+/// The names of the `fwlib_*` functions of src/ffi/ext.rs.
+fn ext_functions(root: &Path) -> Vec<String> {
+    let src = fs::read_to_string(root.join(EXT_SRC)).expect("read src/ffi/ext.rs");
+    src.lines()
+        .filter_map(|l| l.split("extern \"C\" fn ").nth(1))
+        .map(|r| r.split('(').next().unwrap_or("").trim().to_string())
+        .filter(|n| n.starts_with("fwlib_"))
+        .collect()
+}
+
+/// include/fwlib32_ext.h: the `fwlib_*` functions of src/ffi/ext.rs, after
+/// `#include "fwlib32.h"`.
+fn generate_ext_header(root: &Path) -> String {
+    let mut config = cbindgen::Config::from_file(root.join("cbindgen.toml"))
+        .unwrap_or_else(|e| panic!("cbindgen.toml: {e}"));
+    config.header = Some(format!(
+        "/*
+ * fwlib32_ext.h: extensions of fwlib32-rs beyond FANUC's FOCAS2 interface.
+ *
+ * GENERATED FILE: do not edit. build.rs writes it with cbindgen from
+ * {EXT_SRC}; refresh the committed copy with
+ *     FWLIB32_UPDATE_HEADER=1 cargo build
+ *
+ * FANUC's functions are declared in fwlib32.h (included here) under FANUC's
+ * names. Functions of our own, which FANUC's library does not have, are named
+ * fwlib_* and are declared in this header only: a program that includes just
+ * fwlib32.h stays buildable against FANUC's library, and one that uses an
+ * extension says so by including fwlib32_ext.h.
+ */
+
+#ifndef {EXT_GUARD}
+#define {EXT_GUARD}"
+    ));
+    config.sys_includes = Vec::new();
+    config.includes = vec!["fwlib32.h".to_string()];
+    config.after_includes = None;
+    config.trailer = Some(format!("#endif  /* {EXT_GUARD} */"));
+    config.export.include = Vec::new();
+    let mut out = Vec::new();
+    cbindgen::Builder::new()
+        .with_config(config)
+        .with_src(root.join(EXT_SRC))
+        .generate()
+        .unwrap_or_else(|e| panic!("cbindgen failed to generate fwlib32_ext.h: {e}"))
+        .write(&mut out);
+    String::from_utf8(out).expect("cbindgen wrote UTF-8")
 }
 
 /// `pub const EW_NAME: c_short = VALUE; // comment` lines of src/ew.rs, as

@@ -55,11 +55,16 @@ fn exports_are_exactly_the_ffi_functions() {
     let symbols = exported(&lib);
     let strays: Vec<_> = symbols
         .iter()
-        .filter(|(ty, name)| ty != "T" || !(name.starts_with("cnc_") || name.starts_with("pmc_")))
+        .filter(|(ty, name)| {
+            ty != "T"
+                || !(name.starts_with("cnc_")
+                    || name.starts_with("pmc_")
+                    || name.starts_with("fwlib_"))
+        })
         .collect();
     assert!(
         strays.is_empty(),
-        "{} exports symbols other than cnc_*/pmc_* functions: {strays:?}",
+        "{} exports symbols other than cnc_*/pmc_*/fwlib_* functions: {strays:?}",
         lib.display()
     );
 
@@ -81,11 +86,22 @@ fn exports_are_exactly_the_ffi_functions() {
         "exported but not a `pub extern \"C\" fn` of src/ffi/*.rs: {unknown:?}"
     );
 
+    // FANUC's API in fwlib32.h, our fwlib_* extensions in fwlib32_ext.h only.
     let declared = header_functions(&header_text());
+    let ext_text = std::fs::read_to_string(toolchain::ext_header_path()).unwrap();
+    let ext = header_functions(&ext_text);
+    assert!(
+        declared.iter().all(|n| !n.starts_with("fwlib_")),
+        "fwlib_* in fwlib32.h"
+    );
+    assert!(
+        ext.iter().all(|n| n.starts_with("fwlib_")),
+        "FANUC's names in fwlib32_ext.h"
+    );
     assert_eq!(
-        declared,
+        declared.union(&ext).cloned().collect::<BTreeSet<_>>(),
         exported,
-        "functions declared by {} vs exported by {}",
+        "functions declared by {} and fwlib32_ext.h vs exported by {}",
         header_path().display(),
         lib.display()
     );

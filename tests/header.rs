@@ -28,6 +28,18 @@ fn committed_header_is_fresh() {
     }
 }
 
+/// The same for include/fwlib32_ext.h.
+#[test]
+fn committed_ext_header_is_fresh() {
+    let generated = env!("FWLIB32_GENERATED_EXT_HEADER");
+    let generated = std::fs::read(generated).unwrap();
+    let committed = std::fs::read(toolchain::ext_header_path()).unwrap_or_default();
+    assert!(
+        generated == committed,
+        "include/fwlib32_ext.h is stale: run `FWLIB32_UPDATE_HEADER=1 cargo build` and commit it"
+    );
+}
+
 /// Uses a few structures, constants and calls, in plain C; also includes the
 /// header twice (include guard) and checks LONG/ULONG are 32 bits.
 const C_UNIT: &str = r#"

@@ -34,7 +34,7 @@ fn function_table_matches_the_exports() {
         .lines()
         .filter_map(|l| l.strip_prefix("| "))
         .map(|l| l.split(' ').next().unwrap().to_string())
-        .filter(|n| n.starts_with("cnc_") || n.starts_with("pmc_"))
+        .filter(|n| n.starts_with("cnc_") || n.starts_with("pmc_") || n.starts_with("fwlib_"))
         .collect();
     let exported = exported();
     assert!(exported.len() >= 13);

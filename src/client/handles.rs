@@ -28,6 +28,10 @@ pub struct HandleState {
     pub detail_frozen: bool,
     /// (err_no, err_dtno) for pmc_getdtailerr, kept apart from the CNC's.
     pub pmc_detail: (i16, i16),
+    /// fwlib_set_reconnect: a call after the pair was torn down reconnects
+    /// it first (FANUC's library, and ours by default, answer EW_SOCKET
+    /// until every handle is freed).
+    pub reconnect: bool,
 }
 
 pub struct Handle {
@@ -66,6 +70,7 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
                 detail: (0, 0),
                 detail_frozen: false,
                 pmc_detail: (0, 0),
+                reconnect: false,
             }),
         }),
     );

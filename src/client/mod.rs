@@ -12,6 +12,7 @@ use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx};
 use crate::proto::status::SysInfo;
 use crate::proto::upload::StartReq;
+use conn::Deadline;
 use handles::Handle;
 
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2).
@@ -36,16 +37,29 @@ impl Handle {
     /// Runs a call on this handle's pair with its path and timeout, and
     /// records the error detail.
     pub fn call<C: Call>(&self, c: &C) -> Result<C::Output> {
-        let (path, timeout) = {
-            let s = self.state.lock();
-            (s.path, s.timeout)
-        };
-        let r = self.pair.call(c, path, timeout);
+        let r = self.exchange(c);
         match &r {
             Ok(_) => self.clear_detail(),
             Err(e) => self.note(e),
         }
         r
+    }
+
+    /// One exchange on the pair with the handle's path, by its timeout; a
+    /// torn-down pair is first reconnected within that same time when the
+    /// handle asked for it (fwlib_set_reconnect).
+    fn exchange<C: Call>(&self, c: &C) -> Result<C::Output> {
+        let (path, timeout, reconnect) = {
+            let s = self.state.lock();
+            (s.path, s.timeout, s.reconnect)
+        };
+        let deadline = Deadline::after_secs(timeout);
+        if reconnect && self.pair.is_dead() {
+            self.pair.revive(deadline, timeout)?;
+            // A new connection: cnc_getdtailerr reports again.
+            self.state.lock().detail_frozen = false;
+        }
+        self.pair.call(c, path, deadline)
     }
 
     fn clear_detail(&self) {
@@ -99,11 +113,7 @@ impl Handle {
     /// Runs a PMC call (pmc_*): as [`Handle::call`], but the error detail
     /// goes to pmc_getdtailerr's words, not cnc_getdtailerr's.
     pub fn call_pmc<C: Call>(&self, c: &C) -> Result<C::Output> {
-        let (path, timeout) = {
-            let s = self.state.lock();
-            (s.path, s.timeout)
-        };
-        let r = self.pair.call(c, path, timeout);
+        let r = self.exchange(c);
         let mut s = self.state.lock();
         match &r {
             Ok(_) => s.pmc_detail = (0, 0),

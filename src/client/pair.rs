@@ -46,6 +46,12 @@ struct Conns {
 
 pub struct Pair {
     pub key: String,
+    /// Where and as whom the pair connected, for [`Pair::revive`].
+    host: String,
+    port: u16,
+    id: u32,
+    /// Serialises revivals: one reconnect at a time per pair.
+    revive: Mutex<()>,
     pub info: CncInfo,
     /// Connection 2, the data requests. One exchange at a time: std's
     /// futex mutex, as a C client's would be (under many threads on one
@@ -87,7 +93,8 @@ pub fn acquire(host: &str, port: u16, timeout: i32, id: u32) -> Result<Arc<Pair>
             return Ok(p.clone());
         }
     }
-    let pair = Arc::new(Pair::connect(key, host, port, timeout, id)?);
+    let deadline = Deadline::after_secs(timeout);
+    let pair = Arc::new(Pair::connect(key, host, port, deadline, timeout, id)?);
     *cur = Some(pair.clone());
     Ok(pair)
 }
@@ -154,8 +161,16 @@ fn open(conn: &mut Conn, number: u16, id: u32, deadline: Deadline) -> Result<Fra
 }
 
 impl Pair {
-    fn connect(key: String, host: &str, port: u16, timeout: i32, id: u32) -> Result<Pair> {
-        let deadline = Deadline::after_secs(timeout);
+    /// Opens both connections and makes the start-up exchanges by
+    /// `deadline`; a failed start-up is closed within a fresh `timeout`.
+    fn connect(
+        key: String,
+        host: &str,
+        port: u16,
+        deadline: Deadline,
+        timeout: i32,
+        id: u32,
+    ) -> Result<Pair> {
         let addrs = resolve(host, port)?;
         let mut c1 = Conn::connect(&addrs, 1, deadline)?;
         // FANUC's library checks the conn-1 answer's size before connecting
@@ -176,6 +191,10 @@ impl Pair {
                 );
                 Ok(Pair {
                     key,
+                    host: host.to_string(),
+                    port,
+                    id,
+                    revive: Mutex::new(()),
                     info: CncInfo {
                         open: open_body,
                         sysinfo,
@@ -273,10 +292,45 @@ impl Pair {
         }
     }
 
+    /// Reconnects a pair torn down by a failure (fwlib_set_reconnect): the
+    /// open on both connections and the start-up exchanges again, by
+    /// `deadline`. The CNC must answer the open as before (the handles keep
+    /// what they learnt at connect time); a pair its handles freed stays
+    /// dead. Nothing sent before is sent again.
+    pub fn revive(&self, deadline: Deadline, timeout: i32) -> Result<()> {
+        let _one = self.revive.lock();
+        if !self.is_dead() {
+            return Ok(());
+        }
+        if *self.refs.lock() == 0 {
+            return Err(dead());
+        }
+        let fresh = Pair::connect(
+            self.key.clone(),
+            &self.host,
+            self.port,
+            deadline,
+            timeout,
+            self.id,
+        )?;
+        if fresh.info.open != self.info.open {
+            fresh.kill();
+            return Err(Error::socket(
+                detail::CONNECT,
+                "the CNC answered the open as another machine",
+            ));
+        }
+        *self.c1.lock() = fresh.c1.lock().take();
+        *self.io() = fresh.io().take();
+        self.dead.store(false, Ordering::Release);
+        crate::log_at!(log::CALLS, "reconnected to {}", self.key);
+        Ok(())
+    }
+
     /// Sends `c`'s subpackets on connection 2 with the handle's path and
     /// decodes the answer (still holding the connection: the answer is
     /// read into its reused buffers). One exchange at a time per pair.
-    pub fn call<C: Call>(&self, c: &C, path: u16, timeout: i32) -> Result<C::Output> {
+    pub fn call<C: Call>(&self, c: &C, path: u16, deadline: Deadline) -> Result<C::Output> {
         let cx = self.info.ctx(path);
         let mut subs = c.request(&cx);
         for s in &mut subs {
@@ -288,7 +342,7 @@ impl Pair {
         let Some(c2) = io.as_mut() else {
             return Err(dead());
         };
-        match c2.exchange(&subs, Deadline::after_secs(timeout)) {
+        match c2.exchange(&subs, deadline) {
             Ok(resp) => c.decode(&cx, resp),
             Err(e) => {
                 if stream_broken(&e) {

@@ -19,6 +19,11 @@ pub fn header_path() -> PathBuf {
     manifest_dir().join("include").join("fwlib32.h")
 }
 
+/// include/fwlib32_ext.h: our `fwlib_*` extensions.
+pub fn ext_header_path() -> PathBuf {
+    manifest_dir().join("include").join("fwlib32_ext.h")
+}
+
 pub fn header_text() -> String {
     let p = header_path();
     std::fs::read_to_string(&p).unwrap_or_else(|e| {
@@ -163,7 +168,8 @@ pub fn header_functions(header: &str) -> BTreeSet<String> {
         .filter_map(|l| {
             let before = l.split_once('(')?.0;
             let name = before.split_whitespace().last()?.trim_start_matches('*');
-            (name.starts_with("cnc_") || name.starts_with("pmc_")).then(|| name.to_owned())
+            (name.starts_with("cnc_") || name.starts_with("pmc_") || name.starts_with("fwlib_"))
+                .then(|| name.to_owned())
         })
         .collect()
 }
