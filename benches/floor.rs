@@ -30,16 +30,15 @@
 //!    library this bench was built with, one fresh process per sample,
 //!    against `dlopen` + `dlclose` of an empty C library.
 
+mod common;
+use common::{alloc, data_frame, start};
 use fwlib32::ew::EW_OK;
-use fwlib32::proto::call::{Call, Ctx};
 use fwlib32::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype};
-use fwlib32::proto::packet::{ReqSub, encode_request};
 use fwlib32::proto::status::{StatInfo, Status};
-use fwlib32::sim::{Profile, Simulator};
+use fwlib32::sim::Simulator;
 use fwlib32::types::ODBST;
-use fwlib32::{cnc_allclibhndl3, cnc_freelibhndl, cnc_statinfo};
+use fwlib32::{cnc_freelibhndl, cnc_statinfo};
 use std::collections::BTreeMap;
-use std::ffi::CString;
 use std::io::{Read, Write};
 use std::net::{SocketAddr, TcpStream};
 use std::os::raw::{c_short, c_ushort};
@@ -113,31 +112,8 @@ impl Plain {
     }
 }
 
-/// cnc_statinfo's data frame for path 1, encoded once.
-fn statinfo_frame() -> Vec<u8> {
-    let mut subs: Vec<ReqSub> = StatInfo::<Status>::new().request(&Ctx::default());
-    for s in &mut subs {
-        s.path = 1;
-    }
-    Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(&subs)).encode()
-}
-
 // ---------------------------------------------------------------------------
 // The library, through its C ABI
-
-fn start() -> Simulator {
-    Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator")
-}
-
-fn alloc(sim: &Simulator) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), sim.port(), 10, &mut h) },
-        EW_OK
-    );
-    h
-}
 
 fn statinfo(h: c_ushort) -> c_short {
     let mut st: ODBST = unsafe { std::mem::zeroed() };
@@ -237,7 +213,7 @@ const SYSCALLS_CHILD: &str = "--syscalls-child";
 /// marker getppid calls, all on the main thread.
 fn syscalls_child(n: usize) {
     let sim = start();
-    let frame = statinfo_frame();
+    let frame = data_frame(&StatInfo::<Status>::new());
     let mut plain = Plain::open(sim.addr());
     let h = alloc(&sim);
     for _ in 0..10 {
@@ -531,7 +507,7 @@ fn main() {
     let t0 = Instant::now();
     let dir = std::env::temp_dir().join(format!("fwlib32-floor-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("scratch directory");
-    let frame = statinfo_frame();
+    let frame = data_frame(&StatInfo::<Status>::new());
     // The simulators start before any thread is pinned: their threads must
     // not inherit the pinning.
     let sims: Vec<Simulator> = (0..64).map(|_| start()).collect();

@@ -9,17 +9,16 @@
 //! (the machine is shared); the ratio reported is the median over rounds of
 //! candidate / baseline, the times are medians of the per-round means.
 
+mod common;
+use common::{alloc, data_frame, start};
 use fwlib32::ew::EW_OK;
-use fwlib32::proto::call::{Call, Ctx};
 use fwlib32::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype};
-use fwlib32::proto::packet::{ReqSub, encode_request};
 use fwlib32::proto::position::Dynamic;
 use fwlib32::proto::status::{StatInfo, Status};
-use fwlib32::sim::{Profile, Simulator};
+use fwlib32::sim::Simulator;
 use fwlib32::types::*;
 use fwlib32::*;
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::ffi::CString;
 use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::os::raw::{c_char, c_short, c_ushort};
@@ -151,31 +150,8 @@ impl Raw {
     }
 }
 
-/// A data frame of `call`'s request for path 1, encoded once.
-fn data_frame(call: &impl Call) -> Vec<u8> {
-    let mut subs: Vec<ReqSub> = call.request(&Ctx::default());
-    for s in &mut subs {
-        s.path = 1;
-    }
-    Frame::new(CLIENT_VERSION, ftype::DATA_REQ, encode_request(&subs)).encode()
-}
-
 // ---------------------------------------------------------------------------
 // Through the C ABI
-
-fn start() -> Simulator {
-    Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator")
-}
-
-fn alloc(sim: &Simulator) -> c_ushort {
-    let ip = CString::new("127.0.0.1").unwrap();
-    let mut h: c_ushort = 0;
-    assert_eq!(
-        unsafe { cnc_allclibhndl3(ip.as_ptr(), sim.port(), 10, &mut h) },
-        EW_OK
-    );
-    h
-}
 
 /// All-zero plain C structs (every type passed here is `repr(C)` data).
 fn zeroed<T: Copy>() -> T {
