@@ -49,6 +49,13 @@ pub struct Alarm {
     pub message: String,
 }
 
+impl Alarm {
+    /// The number as the CNC shows it: "OT0500" (or "500 (type 21)").
+    pub fn code(&self) -> String {
+        shown(self.kind, self.number)
+    }
+}
+
 impl fmt::Display for Alarm {
     /// `OT0500 OVER TRAVEL ( SOFT 1 ) +X`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -87,6 +94,13 @@ pub struct HistoryEntry {
     /// When the alarm was raised, by the CNC's clock.
     pub time: Timestamp,
     pub message: String,
+}
+
+impl HistoryEntry {
+    /// The number as the CNC shows it: "OT0500" (or "500 (type 21)").
+    pub fn code(&self) -> String {
+        shown(self.kind, self.number)
+    }
 }
 
 impl fmt::Display for HistoryEntry {

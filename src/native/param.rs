@@ -136,7 +136,7 @@ impl FromValue for Decimal {
 pub struct Param {
     pub number: u32,
     pub kind: Kind,
-    /// One value per axis of the path.
+    /// A value per axis (all of them, or the one asked for).
     pub per_axis: bool,
     /// One value, or one per axis (axis 1 first) when `per_axis`.
     pub values: Vec<Value>,
@@ -167,8 +167,9 @@ fn param_of(table: Table, number: u32, item: Item, axes: usize) -> Result<Param>
         let msg = format!("{} {number} has type {}", n.what, item.ptype);
         Error::invalid(n.call, Ew::ATTRIB, msg)
     })?;
-    let per_axis = item.axis < 0;
-    let take = if per_axis { axes } else { 1 };
+    // The answer's axis word: negative all axes, n one axis, 0 none.
+    let per_axis = item.axis != 0;
+    let take = if item.axis < 0 { axes } else { 1 };
     let values = item
         .values
         .iter()
@@ -221,22 +222,37 @@ fn one<T: FromValue>(table: Table, p: Param) -> Result<T> {
     })
 }
 
+/// The axis word for `axis` (None: 0, the whole item); `none` for None.
+fn axis_word(table: Table, axis: Option<u16>, none: i16) -> Result<i16> {
+    match axis.map(i16::try_from) {
+        None => Ok(none),
+        Some(Ok(a)) if a >= 1 => Ok(a),
+        _ => {
+            let n = names(table);
+            Err(Error::invalid(n.call, Ew::ATTRIB, "axes are numbered 1.."))
+        }
+    }
+}
+
 fn typed_part<T: FromValue + Send + 'static>(
     cnc: &Cnc,
     table: Table,
     number: u32,
     axis: Option<u16>,
 ) -> Result<impl Part<Out = T> + Send + 'static> {
-    let axis = match axis.map(i16::try_from) {
-        None => 0,
-        Some(Ok(a)) if a >= 1 => a,
-        _ => {
-            let n = names(table);
-            return Err(Error::invalid(n.call, Ew::ATTRIB, "axes are numbered 1.."));
-        }
-    };
-    let p = read_part(table, number, axis, path_axes(cnc));
+    let p = read_part(table, number, axis_word(table, axis, 0)?, path_axes(cnc));
     Ok(Then(p, move |p| one::<T>(table, p)))
+}
+
+/// The whole item (axis word -1) or one axis of it, as a [`Param`].
+fn values_part(
+    cnc: &Cnc,
+    table: Table,
+    number: u32,
+    axis: Option<u16>,
+) -> Result<impl Part<Out = Param> + Send + 'static> {
+    let word = axis_word(table, axis, -1)?;
+    Ok(read_part(table, number, word, path_axes(cnc)))
 }
 
 /// The controlled axes of the current path.
@@ -272,19 +288,22 @@ impl Cnc {
         self.run(typed_part(self, Table::Param, number, axis)?)
     }
 
-    /// Parameter `number` whole: its one value, or one per axis of the path.
+    /// Parameter `number` with its kind: with `axis` None the whole
+    /// parameter (its one value, or one per axis of the path), with
+    /// `Some(n)` the value of axis `n` alone (`per_axis` stays true).
     ///
     /// ```
-    /// # use fwlib32::native::{Cnc, Kind};
+    /// # use fwlib32::native::{Cnc, Kind, Value};
     /// # use fwlib32::sim::{Profile, Simulator};
     /// # let sim = Simulator::start(Profile::default(), "127.0.0.1:0")?;
     /// # let cnc = Cnc::connect(&sim.addr().to_string(), std::time::Duration::from_secs(5))?;
-    /// let p = cnc.param_values(1825)?; // servo loop gain, per axis
+    /// let p = cnc.param_values(1825, None)?; // servo loop gain, per axis
     /// assert_eq!((p.kind, p.per_axis, p.values.len()), (Kind::Word, true, 3));
+    /// assert_eq!(cnc.param_values(1825, Some(3))?.values, [Value::Int(3000)]);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn param_values(&self, number: u32) -> Result<Param> {
-        self.run(read_part(Table::Param, number, -1, path_axes(self)))
+    pub fn param_values(&self, number: u32, axis: Option<u16>) -> Result<Param> {
+        self.run(values_part(self, Table::Param, number, axis)?)
     }
 
     /// One value of diagnosis item `number` (as [`Cnc::param`]).
@@ -292,9 +311,9 @@ impl Cnc {
         self.run(typed_part(self, Table::Diag, number, axis)?)
     }
 
-    /// Diagnosis item `number` whole (as [`Cnc::param_values`]).
-    pub fn diag_values(&self, number: u32) -> Result<Param> {
-        self.run(read_part(Table::Diag, number, -1, path_axes(self)))
+    /// Diagnosis item `number` with its kind (as [`Cnc::param_values`]).
+    pub fn diag_values(&self, number: u32, axis: Option<u16>) -> Result<Param> {
+        self.run(values_part(self, Table::Diag, number, axis)?)
     }
 }
 
@@ -309,9 +328,19 @@ impl Batch<'_> {
     }
 
     /// [`Cnc::param_values`] in the batch.
-    pub fn param_values(&mut self, number: u32) -> Ticket<Param> {
-        let p = read_part(Table::Param, number, -1, path_axes(self.cnc()));
-        self.push(p)
+    pub fn param_values(&mut self, number: u32, axis: Option<u16>) -> Ticket<Param> {
+        match values_part(self.cnc(), Table::Param, number, axis) {
+            Ok(p) => self.push(p),
+            Err(e) => self.push(Failed::new(e)),
+        }
+    }
+
+    /// [`Cnc::diag_values`] in the batch.
+    pub fn diag_values(&mut self, number: u32, axis: Option<u16>) -> Ticket<Param> {
+        match values_part(self.cnc(), Table::Diag, number, axis) {
+            Ok(p) => self.push(p),
+            Err(e) => self.push(Failed::new(e)),
+        }
     }
 
     /// [`Cnc::diag`] in the batch.

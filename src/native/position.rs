@@ -5,7 +5,7 @@ use super::cnc::Cnc;
 use super::decimal::Decimal;
 use super::error::{Error, Result};
 use super::part::{Part, via};
-use crate::proto::position::{AxisData, AxisDataCall, AxisValue, pos};
+use crate::proto::position::{AxisData, AxisDataCall, AxisValue, pos, rdaxisname};
 use std::fmt;
 
 /// The unit of an axis's positions.
@@ -126,9 +126,26 @@ impl Cnc {
     pub fn positions(&self) -> Result<Vec<AxisPosition>> {
         self.run(positions_part(self))
     }
+
+    /// The names of the current path's axes ("X", "Y", "Z" ...; cnc_rdaxisname).
+    pub fn axis_names(&self) -> Result<Vec<String>> {
+        self.run(names_part())
+    }
+}
+
+fn names_part() -> impl Part<Out = Vec<String>> + Send + 'static {
+    let n = crate::types::MAX_AXIS;
+    via("cnc_rdaxisname", rdaxisname(), 4 * n, |v| {
+        Ok(v.iter().map(|e| name(&e.bytes)).collect())
+    })
 }
 
 impl Batch<'_> {
+    /// [`Cnc::axis_names`] in the batch.
+    pub fn axis_names(&mut self) -> Ticket<Vec<String>> {
+        self.push(names_part())
+    }
+
     /// [`Cnc::positions`] in the batch.
     pub fn positions(&mut self) -> Ticket<Vec<AxisPosition>> {
         let p = positions_part(self.cnc());
