@@ -8,8 +8,9 @@ use std::any::Any;
 use std::marker::PhantomData;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Most subpackets one request frame carries: the most FANUC's library puts
-/// in one (cnc_rdparam_ext's 8 numbers, 16 subpackets).
+/// Most subpackets one request frame carries: the most any function of
+/// FANUC's library recorded puts in one (cnc_rdparam_ext: 8 numbers, 16
+/// subpackets; src/proto/NOTES.md).
 pub const MAX_SUBPACKETS: usize = 16;
 
 static NEXT_BATCH: AtomicU64 = AtomicU64::new(1);

@@ -189,7 +189,10 @@ impl Cnc {
         if parts.iter().all(|p| p.subs(&cx).is_empty()) {
             return Ok(parts.iter().map(|p| p.decode_any(&cx, &[])).collect());
         }
-        let call = parts.first().map_or("", |p| p.call());
+        let call = parts
+            .iter()
+            .find(|p| !p.subs(&cx).is_empty())
+            .map_or("", |p| p.call());
         self.handle
             .call(&Frame(parts))
             .map_err(|e| Error::of(call, e))
