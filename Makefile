@@ -1,4 +1,4 @@
-# make [build]                 cargo build --release (the library and focas-sim)
+# make [build]                 cargo build --release (the library, focas-sim and focas)
 # make install [PREFIX=/usr/local] [DESTDIR=]
 # make uninstall [PREFIX=/usr/local] [DESTDIR=]
 #
@@ -10,6 +10,7 @@
 #   lib/pkgconfig/fwlib32.pc
 #   include/fwlib32.h, include/fwlib32_ext.h
 #   bin/focas-sim                       stripped, with a .gnu_debuglink
+#   bin/focas                           the command-line client, likewise
 #   lib/debug/<installed path>.debug    the debug info (zlib-compressed), kept
 #                                       apart as distributions do, and
 #   lib/debug/.build-id/xx/yyyy.debug   -> it, for gdb and debuginfod
@@ -65,7 +66,7 @@ ifeq ($(NO_BUILD),)
 	$(CARGO) build --release --locked --lib --bins $(TARGET_FLAG)
 endif
 	@test -n "$(VERSION)" || { echo "no version in Cargo.toml" >&2; exit 1; }
-	@for f in libfwlib32.so libfwlib32.a focas-sim; do \
+	@for f in libfwlib32.so libfwlib32.a focas-sim focas; do \
 	    test -f "$(OUT)/$$f" || { echo "$(OUT)/$$f is missing: run make first" >&2; exit 1; }; \
 	done
 
@@ -110,12 +111,13 @@ install: build
 	    > "$(D)$(PKGCONFIGDIR)/fwlib32.pc"
 	chmod 644 "$(D)$(PKGCONFIGDIR)/fwlib32.pc"
 	$(call strip_install,$(OUT)/focas-sim,$(BINDIR)/focas-sim,755)
+	$(call strip_install,$(OUT)/focas,$(BINDIR)/focas,755)
 	@if [ -z "$(DESTDIR)" ] && [ -w /etc/ld.so.cache ] && command -v ldconfig >/dev/null; then \
 	    echo ldconfig; ldconfig; \
 	fi
 
 uninstall:
-	@for f in "$(LIBDIR)/$(REALNAME)" "$(BINDIR)/focas-sim"; do \
+	@for f in "$(LIBDIR)/$(REALNAME)" "$(BINDIR)/focas-sim" "$(BINDIR)/focas"; do \
 	    id=$$($(READELF) -n "$(D)$$f" 2>/dev/null | sed -n 's/.*Build ID: *\([0-9a-f]*\).*/\1/p'); \
 	    if [ -n "$$id" ]; then \
 	        l="$(D)$(DEBUGDIR)/.build-id/$$(echo $$id | cut -c1-2)/$$(echo $$id | cut -c3-).debug"; \
@@ -126,8 +128,9 @@ uninstall:
 	rm -f "$(D)$(LIBDIR)/$(REALNAME)" "$(D)$(LIBDIR)/$(SONAME)" "$(D)$(LIBDIR)/libfwlib32.so" \
 	    "$(D)$(LIBDIR)/libfwlib32.a" "$(D)$(PKGCONFIGDIR)/fwlib32.pc" \
 	    "$(D)$(INCLUDEDIR)/fwlib32.h" "$(D)$(INCLUDEDIR)/fwlib32_ext.h" \
-	    "$(D)$(BINDIR)/focas-sim" \
-	    "$(D)$(DEBUGDIR)$(LIBDIR)/$(REALNAME).debug" "$(D)$(DEBUGDIR)$(BINDIR)/focas-sim.debug"
+	    "$(D)$(BINDIR)/focas-sim" "$(D)$(BINDIR)/focas" \
+	    "$(D)$(DEBUGDIR)$(LIBDIR)/$(REALNAME).debug" "$(D)$(DEBUGDIR)$(BINDIR)/focas-sim.debug" \
+	    "$(D)$(DEBUGDIR)$(BINDIR)/focas.debug"
 	@if [ -z "$(DESTDIR)" ] && [ -w /etc/ld.so.cache ] && command -v ldconfig >/dev/null; then \
 	    echo ldconfig; ldconfig; \
 	fi

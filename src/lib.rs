@@ -5,6 +5,7 @@
 //! * [`proto`]: the sans-IO codec shared by the client and the simulator.
 //! * [`client`]: connection pairs, sessions, the handle table (blocking std::net).
 //! * [`ffi`]: the exported C functions of `fwlib32.h`.
+//! * [`native`]: the safe Rust API over the same client and codec ([`native::Cnc`]).
 //! * [`sim`]: the simulator (tokio), behind `focas-sim`.
 
 #![allow(non_snake_case)]
@@ -13,6 +14,7 @@ pub mod client;
 pub mod error;
 pub mod ew;
 pub mod ffi;
+pub mod native;
 pub mod proto;
 pub mod sim;
 pub mod spec;

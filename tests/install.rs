@@ -1,7 +1,8 @@
 //! `make install` into a DESTDIR: the files and links it installs, the debug
 //! info kept apart, then `c-examples/status.c` built with nothing but
 //! `pkg-config --cflags --libs fwlib32` and run against the installed
-//! `focas-sim`; `make uninstall` removes every file again.
+//! `focas-sim`, with the installed `focas` too; `make uninstall` removes
+//! every file again.
 //!
 //! `make install` runs `cargo build --release` (a no-op when cargo's release
 //! artifacts are fresh), so the first run of this test builds the release
@@ -143,9 +144,20 @@ fn make_install_then_build_and_run_status_c_with_pkg_config() {
         "usr/lib/pkgconfig/fwlib32.pc",
         "usr/bin/focas-sim",
         "usr/lib/debug/usr/bin/focas-sim.debug",
+        "usr/bin/focas",
+        "usr/lib/debug/usr/bin/focas.debug",
     ] {
         assert!(dest.join(f).is_file(), "{f} not installed");
     }
+    // Stripped of its debug info (rustc's .debug_gdb_scripts is loaded data, kept).
+    let focas = dest.join("usr/bin/focas");
+    let sections = section_names(&focas);
+    assert!(
+        !sections.iter().any(|s| s == ".debug_info")
+            && sections.iter().any(|s| s == ".gnu_debuglink"),
+        "{} is not stripped with a debuglink: {sections:?}",
+        focas.display()
+    );
 
     // status.c, built with the pkg-config flags alone.
     let pc = output(
@@ -187,7 +199,16 @@ fn make_install_then_build_and_run_status_c_with_pkg_config() {
     let out = run(target_command(&exe)
         .args([host, port])
         .env("LD_LIBRARY_PATH", &lib));
+    // The installed command-line client against it.
+    let cli = run(target_command(&focas)
+        .args(["--host", host, "--port", port, "--json", "info"])
+        .env_remove("FOCAS_HOST"));
     drop(sim);
+    let info = String::from_utf8_lossy(&cli.stdout);
+    assert!(
+        info.contains("\"series\":\"G421\""),
+        "focas --json info printed {info}"
+    );
     let text = String::from_utf8_lossy(&out.stdout);
     let profile = fwlib32::sim::Profile::default();
     for want in [

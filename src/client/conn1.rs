@@ -54,6 +54,14 @@ impl Conn1 {
         }
     }
 
+    /// Waits until a whole frame has arrived (not taking it), or the deadline.
+    pub(super) fn wait_frame(&mut self, deadline: Deadline) -> Result<()> {
+        while Frame::decode(&self.rbuf).map_err(Error::from)?.is_none() {
+            self.conn.read_some(&mut self.rbuf, Some(deadline))?;
+        }
+        Ok(())
+    }
+
     /// Waits for a frame of kind `kind`, discarding others (stale upload data).
     pub(super) fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
         loop {

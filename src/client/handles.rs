@@ -93,6 +93,20 @@ pub fn remove(h: u16) -> Result<Arc<Handle>> {
         .ok_or_else(Error::handle)
 }
 
+/// Removes handle `h` if it is still `which` (not a number handed out again
+/// after cnc_exitprocess removed it); true when it was removed.
+pub fn remove_exact(h: u16, which: &Arc<Handle>) -> bool {
+    let mut g = TABLE.write();
+    let Some(t) = g.as_mut() else {
+        return false;
+    };
+    if t.map.get(&h).is_some_and(|x| Arc::ptr_eq(x, which)) {
+        t.map.remove(&h);
+        return true;
+    }
+    false
+}
+
 /// Removes every handle (cnc_exitprocess); returns them for closing.
 pub fn drain() -> Vec<Arc<Handle>> {
     TABLE

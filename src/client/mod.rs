@@ -100,6 +100,12 @@ impl Handle {
         self.pair.upload_read(h, out, timeout, |o| self.on_pair(o))
     }
 
+    /// Blocks until the handle's upload has something to read (see
+    /// [`pair::Pair::upload_wait`]).
+    pub fn upload_wait(&self, h: u16, timeout: i32) -> Result<()> {
+        self.pair.upload_wait(h, timeout)
+    }
+
     /// cnc_upend3 on this handle's pair.
     pub fn upload_end(&self, h: u16, timeout: i32) -> Result<()> {
         self.pair.upload_end(h, timeout, |o| self.on_pair(o))

@@ -276,6 +276,18 @@ impl Pair {
         self.io.lock().unwrap_or_else(|e| e.into_inner())
     }
 
+    /// Takes one more reference for a new handle on this live pair (the
+    /// Rust API's `Cnc::try_clone`); a pair already closed or torn down
+    /// gives EW_SOCKET.
+    pub fn share(&self) -> Result<()> {
+        let mut refs = self.refs.lock();
+        if *refs == 0 || self.is_dead() {
+            return Err(dead());
+        }
+        *refs += 1;
+        Ok(())
+    }
+
     pub fn is_dead(&self) -> bool {
         self.dead.load(Ordering::Acquire)
     }

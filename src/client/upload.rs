@@ -195,6 +195,25 @@ impl Pair {
         })
     }
 
+    /// Waits until `h`'s upload has something for [`Pair::upload_read`]
+    /// (text, its end or an error), at most `timeout` seconds: the Rust
+    /// API's blocking read, where cnc_upload polls. A stall past the timeout
+    /// is EW_SOCKET and tears the pair down, as a stalled cnc_upload does.
+    pub fn upload_wait(&self, h: u16, timeout: i32) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            match &c1.upload {
+                Some(u) if u.owner == h => {
+                    if u.ended.is_some() || u.pos < u.text.len() {
+                        return Ok(());
+                    }
+                }
+                _ => return Err(no_upload()),
+            }
+            c1.wait_frame(deadline)
+        })
+    }
+
     /// cnc_upend3: ends the handle's upload; before the CNC's end frame it
     /// sends the 0x1804 abort. After a CNC error frame, that error.
     pub fn upload_end(&self, h: u16, timeout: i32, live: impl Fn(u16) -> bool) -> Result<()> {

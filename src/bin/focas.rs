@@ -1,0 +1,169 @@
+//! focas: read a FANUC CNC from the command line, over FOCAS2 Ethernet
+//! (the crate's Rust API, `fwlib32::native`).
+//!
+//! Text output is aligned for people; `--json` prints one JSON object (one
+//! per line for `watch`) whose keys are stable. Any failure prints one line
+//! on stderr (`focas: HOST:PORT: FUNCTION: EW_CODE (n): meaning ...`) and
+//! exits with status 1; usage errors exit with 2.
+
+#[path = "focas/data.rs"]
+mod data;
+#[path = "focas/out.rs"]
+mod out;
+#[path = "focas/prog.rs"]
+mod prog;
+#[path = "focas/show.rs"]
+mod show;
+#[path = "focas/watch.rs"]
+mod watch;
+
+use clap::{Parser, Subcommand};
+use fwlib32::native::Cnc;
+use out::Fail;
+use std::process::ExitCode;
+use std::time::Duration;
+
+#[derive(Parser)]
+#[command(
+    name = "focas",
+    version,
+    about = "Read a FANUC CNC over FOCAS2 Ethernet",
+    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  FOCAS_HOST=10.0.0.5 focas --json pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc"
+)]
+struct Cli {
+    /// The CNC's host name or address
+    #[arg(long, short = 'H', env = "FOCAS_HOST")]
+    host: String,
+    /// FOCAS2 TCP port
+    #[arg(long, short = 'p', env = "FOCAS_PORT", default_value_t = fwlib32::native::DEFAULT_PORT)]
+    port: u16,
+    /// Seconds to wait for each answer (0: for ever)
+    #[arg(long, short = 't', default_value_t = 10.0, value_parser = seconds)]
+    timeout: f64,
+    /// The CNC path to read (default 1)
+    #[arg(long)]
+    path: Option<u16>,
+    /// Print JSON (stable keys) instead of text
+    #[arg(long, global = true)]
+    json: bool,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// System information, CNC id and paths
+    Info,
+    /// Mode, run state, alarms, program and speeds
+    Status,
+    /// Axis positions: absolute, machine, relative, distance to go
+    Pos,
+    /// Active alarms, or the alarm history
+    Alarms {
+        /// The alarm history, newest first
+        #[arg(long)]
+        history: bool,
+    },
+    /// A parameter: its value, or one per axis
+    Param {
+        number: u32,
+        /// One axis (1..)
+        #[arg(long, short = 'a')]
+        axis: Option<u16>,
+    },
+    /// A diagnosis item: its value, or one per axis
+    Diag {
+        number: u32,
+        /// One axis (1..)
+        #[arg(long, short = 'a')]
+        axis: Option<u16>,
+    },
+    /// A custom macro variable; N=V writes it (V a number, or "vacant")
+    Macro {
+        /// N, or N=V to write
+        spec: String,
+    },
+    /// PMC data: ADDR (D100), a range (D100..D120) or a bit (R0.3)
+    Pmc {
+        address: String,
+        /// Element type of a range
+        #[arg(long = "type", short = 'T', value_enum, default_value_t = data::PmcKind::Byte)]
+        kind: data::PmcKind,
+    },
+    /// NC programs: ls, get N [FILE], put FILE, rm N
+    #[command(subcommand)]
+    Prog(prog::Prog),
+    /// A live status line (one JSON object per line with --json)
+    Watch {
+        /// Seconds between samples
+        #[arg(long, short = 'i', default_value_t = 1.0, value_parser = seconds)]
+        interval: f64,
+        /// Stop after this many samples (default: run until interrupted)
+        #[arg(long, short = 'n')]
+        count: Option<u64>,
+    },
+}
+
+fn seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v.is_finite() && (0.0..=86400.0).contains(&v) => Ok(v),
+        _ => Err(format!("{s:?} is not a number of seconds (0 to 86400)")),
+    }
+}
+
+fn run(cli: Cli) -> Result<(), Fail> {
+    let addr = if cli.host.contains(':') && !cli.host.starts_with('[') {
+        format!("[{}]:{}", cli.host, cli.port)
+    } else {
+        format!("{}:{}", cli.host, cli.port)
+    };
+    let at = |e| Fail::Focas(addr.clone(), e);
+    // Program upload and download need no connection to fail clearly.
+    if let Command::Prog(p) = &cli.command {
+        p.check()?;
+    }
+    let cnc = Cnc::connect(&addr, Duration::from_secs_f64(cli.timeout)).map_err(at)?;
+    if let Some(p) = cli.path {
+        cnc.set_path(p).map_err(at)?;
+    }
+    let json = cli.json;
+    let r = match cli.command {
+        Command::Info => show::info(&cnc, json),
+        Command::Status => show::status(&cnc, json),
+        Command::Pos => show::positions(&cnc, json),
+        Command::Alarms { history } => show::alarms(&cnc, history, json),
+        Command::Param { number, axis } => data::param(&cnc, false, number, axis, json),
+        Command::Diag { number, axis } => data::param(&cnc, true, number, axis, json),
+        Command::Macro { spec } => data::macro_var(&cnc, &spec, json),
+        Command::Pmc { address, kind } => data::pmc(&cnc, &address, kind, json),
+        Command::Prog(p) => prog::run(&cnc, p, json),
+        Command::Watch { interval, count } => watch::run(&cnc, interval, count, json),
+    };
+    r.map_err(|f| match f {
+        Fail::Api(e) => at(e),
+        f => f,
+    })
+}
+
+fn main() -> ExitCode {
+    // Never a backtrace: a bug is one line too.
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        eprintln!("focas: internal error: {msg}");
+        std::process::exit(70);
+    }));
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Fail::Quiet) => ExitCode::SUCCESS,
+        Err(f) => {
+            eprintln!("focas: {f}");
+            ExitCode::from(1)
+        }
+    }
+}

@@ -1,0 +1,112 @@
+//! Output: failures as one line, aligned text, JSON.
+
+use fwlib32::native::{Decimal, Error};
+use serde_json::{Value as Json, json};
+use std::fmt;
+use std::io::{ErrorKind, Write};
+
+/// Why the command failed.
+pub enum Fail {
+    /// A FOCAS call failed, at this address.
+    Focas(String, Error),
+    /// A FOCAS call failed (the address is added by main).
+    Api(Error),
+    /// Bad input or a local problem (a file ...).
+    Other(String),
+    /// Stdout was closed (`focas pos | head`): stop, successfully.
+    Quiet,
+}
+
+impl From<Error> for Fail {
+    fn from(e: Error) -> Fail {
+        Fail::Api(e)
+    }
+}
+
+impl fmt::Display for Fail {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Fail::Focas(addr, e) => write!(f, "{addr}: {e}"),
+            Fail::Api(e) => write!(f, "{e}"),
+            Fail::Other(m) => f.write_str(m),
+            Fail::Quiet => Ok(()),
+        }
+    }
+}
+
+/// Writes `text` to stdout (a closed stdout ends the command quietly).
+pub fn print(text: &str) -> Result<(), Fail> {
+    let mut o = std::io::stdout().lock();
+    match o.write_all(text.as_bytes()).and_then(|_| o.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => Err(Fail::Quiet),
+        Err(e) => Err(Fail::Other(format!("stdout: {e}"))),
+    }
+}
+
+/// Prints one JSON value on one line.
+pub fn json_line(v: &Json) -> Result<(), Fail> {
+    print(&format!("{v}\n"))
+}
+
+/// Rows as aligned columns: text columns left, the others (numbers) right.
+pub struct Table {
+    rows: Vec<Vec<String>>,
+    right: Vec<bool>,
+}
+
+impl Table {
+    /// A table whose column `i` is right-aligned where `right[i]`.
+    pub fn new(right: &[bool]) -> Table {
+        Table {
+            rows: Vec::new(),
+            right: right.to_vec(),
+        }
+    }
+
+    pub fn row<S: ToString>(&mut self, cells: impl IntoIterator<Item = S>) {
+        self.rows
+            .push(cells.into_iter().map(|c| c.to_string()).collect());
+    }
+
+    /// The text, columns two spaces apart, no trailing spaces.
+    pub fn render(&self) -> String {
+        let cols = self.rows.iter().map(Vec::len).max().unwrap_or(0);
+        let width: Vec<usize> = (0..cols)
+            .map(|c| {
+                let w = |r: &Vec<String>| r.get(c).map_or(0, |s| s.chars().count());
+                self.rows.iter().map(w).max().unwrap_or(0)
+            })
+            .collect();
+        let mut out = String::new();
+        for r in &self.rows {
+            let mut line = String::new();
+            for (c, cell) in r.iter().enumerate() {
+                if c > 0 {
+                    line.push_str("  ");
+                }
+                let pad = width[c] - cell.chars().count();
+                if self.right.get(c).copied().unwrap_or(false) {
+                    line.push_str(&" ".repeat(pad));
+                    line.push_str(cell);
+                } else {
+                    line.push_str(cell);
+                    line.push_str(&" ".repeat(pad));
+                }
+            }
+            out.push_str(line.trim_end());
+            out.push('\n');
+        }
+        out
+    }
+}
+
+/// A decimal as a JSON number (the nearest double: 125.0, -0.125).
+pub fn num(d: Decimal) -> Json {
+    json!(d.to_f64())
+}
+
+/// A status word: `{"code": 1, "name": "MEM"}`.
+pub fn word(code: i16, name: impl fmt::Display) -> Json {
+    json!({ "code": code, "name": name.to_string() })
+}

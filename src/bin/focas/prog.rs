@@ -1,0 +1,130 @@
+//! prog ls | get N [FILE] | put FILE | rm N.
+
+use crate::out::{Fail, Table, json_line, print};
+use fwlib32::native::Cnc;
+use indicatif::{ProgressBar, ProgressStyle};
+use serde_json::{Value as Json, json};
+use std::path::PathBuf;
+
+#[derive(clap::Subcommand)]
+pub enum Prog {
+    /// The program directory: numbers, sizes, dates, comments
+    Ls,
+    /// Upload program N, to FILE or stdout
+    Get { number: u32, file: Option<PathBuf> },
+    /// Download FILE to the CNC (needs program download: not yet in the library)
+    Put { file: PathBuf },
+    /// Delete program N (needs cnc_delete: not yet in the library)
+    Rm { number: u32 },
+}
+
+impl Prog {
+    /// Fails the commands the library cannot do yet, naming what is missing.
+    pub fn check(&self) -> Result<(), Fail> {
+        let missing = match self {
+            Prog::Put { .. } => Some((
+                "put",
+                "program download (cnc_dwnstart4, cnc_download4, cnc_dwnend4)",
+            )),
+            Prog::Rm { .. } => Some(("rm", "program deletion (cnc_delete)")),
+            _ => None,
+        };
+        match missing {
+            Some((cmd, what)) => Err(Fail::Other(format!(
+                "prog {cmd}: not available: {what} is not implemented in this library yet"
+            ))),
+            None => Ok(()),
+        }
+    }
+}
+
+pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
+    match p {
+        Prog::Ls => ls(cnc, json),
+        Prog::Get { number, file } => get(cnc, number, file, json),
+        Prog::Put { .. } | Prog::Rm { .. } => p.check(),
+    }
+}
+
+fn ls(cnc: &Cnc, json: bool) -> Result<(), Fail> {
+    let progs = cnc.programs()?;
+    if json {
+        let list: Vec<Json> = progs
+            .iter()
+            .map(|p| {
+                let m = p.modified.map(|t| {
+                    format!(
+                        "{:04}-{:02}-{:02}T{:02}:{:02}:{:02}",
+                        t.year, t.month, t.day, t.hour, t.minute, t.second
+                    )
+                });
+                json!({ "number": p.number, "length": p.length, "comment": p.comment, "modified": m })
+            })
+            .collect();
+        return json_line(&json!({ "programs": list }));
+    }
+    if progs.is_empty() {
+        return print("no program\n");
+    }
+    let mut t = Table::new(&[false, true, false, false]);
+    for p in &progs {
+        let m = p.modified.map_or(String::new(), |t| {
+            let s = t.to_string();
+            s[..s.len().saturating_sub(3)].to_string()
+        });
+        t.row([
+            format!("O{:04}", p.number),
+            p.length.to_string(),
+            m,
+            p.comment.clone(),
+        ]);
+    }
+    print(&t.render())
+}
+
+fn get(cnc: &Cnc, number: u32, file: Option<PathBuf>, json: bool) -> Result<(), Fail> {
+    // The directory's size of the program, for the bar (the upload's text
+    // differs a little: the CNC punches it).
+    let total = cnc
+        .programs()
+        .ok()
+        .and_then(|ps| {
+            ps.into_iter()
+                .find(|p| p.number as i64 == i64::from(number))
+        })
+        .map_or(0, |p| p.length.max(0) as u64);
+    let bar = ProgressBar::new(total);
+    bar.set_style(
+        ProgressStyle::with_template("O{msg} {bar:30} {bytes}/{total_bytes}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    bar.set_message(number.to_string());
+    let text = cnc.program_with(number, |n| {
+        let n = n as u64;
+        if n > bar.length().unwrap_or(0) {
+            bar.set_length(n);
+        }
+        bar.set_position(n);
+    });
+    bar.finish_and_clear();
+    let text = text?;
+    match (file, json) {
+        (Some(f), json) => {
+            std::fs::write(&f, &text).map_err(|e| Fail::Other(format!("{}: {e}", f.display())))?;
+            if json {
+                json_line(&json!({ "number": number, "bytes": text.len(), "file": f }))
+            } else {
+                print(&format!(
+                    "O{number}: {} bytes to {}\n",
+                    text.len(),
+                    f.display()
+                ))
+            }
+        }
+        (None, true) => json_line(&json!({ "number": number, "bytes": text.len(), "text": text })),
+        (None, false) => {
+            let nl = if text.ends_with('\n') { "" } else { "\n" };
+            print(&format!("{text}{nl}"))
+        }
+    }
+}

@@ -1,0 +1,292 @@
+//! The Rust API's error: which FOCAS function failed, its `EW_*` code and the
+//! detail words `cnc_getdtailerr` would report.
+
+use crate::error::Error as Internal;
+use std::fmt;
+
+/// Results of the Rust API.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// An `EW_*` result code of FANUC's library (`Ew::NUMBER` is `EW_NUMBER`, 3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Ew(pub i16);
+
+/// Defines the `Ew` constants and the table of names and meanings from
+/// one list (tests check it against `src/ew.rs`, where the C header's
+/// codes come from).
+macro_rules! ew_table {
+    ($($konst:ident = $value:literal, $name:literal, $meaning:literal;)*) => {
+        impl Ew {
+            $(
+                #[doc = concat!("`", $name, "` (", stringify!($value), "): ", $meaning, ".")]
+                pub const $konst: Ew = Ew($value);
+            )*
+        }
+        /// (code, name, meaning); the first name of a shared code wins.
+        const TABLE: &[(i16, &str, &str)] = &[$(($value, $name, $meaning)),*];
+    };
+}
+
+ew_table! {
+    PROTOCOL = -17, "EW_PROTOCOL", "protocol error: the CNC's answer is not valid FOCAS2";
+    SOCKET = -16, "EW_SOCKET", "socket error: no connection, or it broke or timed out";
+    NODLL = -15, "EW_NODLL", "library for this CNC not found";
+    INIERR = -14, "EW_INIERR", "error in the library's initial value file";
+    ITLOW = -13, "EW_ITLOW", "low temperature alarm of the intelligent terminal";
+    ITHIGHT = -12, "EW_ITHIGHT", "high temperature alarm of the intelligent terminal";
+    BUS = -11, "EW_BUS", "bus error";
+    SYSTEM2 = -10, "EW_SYSTEM2", "system error";
+    HSSB = -9, "EW_HSSB", "HSSB communication error";
+    HANDLE = -8, "EW_HANDLE", "library handle error";
+    VERSION = -7, "EW_VERSION", "CNC or PMC version mismatch: not available on this CNC";
+    UNEXP = -6, "EW_UNEXP", "abnormal error";
+    SYSTEM = -5, "EW_SYSTEM", "system error";
+    PARITY = -4, "EW_PARITY", "shared RAM parity error";
+    MMCSYS = -3, "EW_MMCSYS", "emm386 or mmcsys install error";
+    RESET = -2, "EW_RESET", "reset or stop occurred";
+    BUSY = -1, "EW_BUSY", "busy: the CNC or the connection is doing something else";
+    OK = 0, "EW_OK", "no error";
+    FUNC = 1, "EW_FUNC", "function not available on this CNC (command prepare error)";
+    NOPMC = 1, "EW_NOPMC", "PMC does not exist";
+    LENGTH = 2, "EW_LENGTH", "data block length error";
+    NUMBER = 3, "EW_NUMBER", "data number error: no such number";
+    RANGE = 3, "EW_RANGE", "address range error";
+    ATTRIB = 4, "EW_ATTRIB", "data attribute error: wrong type or axis";
+    TYPE = 4, "EW_TYPE", "data type error";
+    DATA = 5, "EW_DATA", "data error";
+    NOOPT = 6, "EW_NOOPT", "option not installed";
+    PROT = 7, "EW_PROT", "write protected";
+    OVRFLOW = 8, "EW_OVRFLOW", "memory overflow";
+    PARAM = 9, "EW_PARAM", "CNC parameter not correct";
+    BUFFER = 10, "EW_BUFFER", "buffer empty or full";
+    PATH = 11, "EW_PATH", "no such path";
+    MODE = 12, "EW_MODE", "not possible in the CNC's current mode";
+    REJECT = 13, "EW_REJECT", "execution rejected by the CNC";
+    DTSRVR = 14, "EW_DTSRVR", "data server error";
+    ALARM = 15, "EW_ALARM", "the CNC is in alarm";
+    STOP = 16, "EW_STOP", "the CNC is not running";
+    PASSWD = 17, "EW_PASSWD", "protected: parameter write or password needed";
+    PMC = 18, "EW_PMC", "error reported by the PMC";
+    PMCHANDLE = 19, "EW_PMCHANDLE", "PMC handle error";
+    RD_OVWSTP = 20, "EW_RD_OVWSTP", "overwrite stop in program read";
+    RD_RSTFIN = 21, "EW_RD_RSTFIN", "reset interrupt in program read";
+}
+
+impl Ew {
+    /// The code's name, e.g. `"EW_NUMBER"`; `"EW_?"` for a code FANUC's
+    /// header does not define.
+    pub fn name(self) -> &'static str {
+        TABLE.iter().find(|e| e.0 == self.0).map_or("EW_?", |e| e.1)
+    }
+
+    /// What the code means, for people.
+    pub fn meaning(self) -> &'static str {
+        TABLE
+            .iter()
+            .find(|e| e.0 == self.0)
+            .map_or("unknown result code", |e| e.2)
+    }
+}
+
+impl fmt::Display for Ew {
+    /// `EW_NUMBER (3)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} ({})", self.name(), self.0)
+    }
+}
+
+/// The two detail words of an error, as `cnc_getdtailerr` (`pmc_getdtailerr`
+/// for PMC reads) reports them after the call: the CNC's own words for a
+/// code the CNC answered, the library's location codes for a socket or
+/// protocol error, zeros for a check made before any traffic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub struct Detail {
+    /// `ODBERR.err_no`.
+    pub err_no: i16,
+    /// `ODBERR.err_dtno`.
+    pub err_dtno: i16,
+}
+
+impl Detail {
+    fn suffix(&self) -> String {
+        if *self == Detail::default() {
+            String::new()
+        } else {
+            format!(" [detail {}/{}]", self.err_no, self.err_dtno)
+        }
+    }
+}
+
+/// Why a call failed. Every variant names the FOCAS function (`call`, e.g.
+/// `"cnc_rdparam"`); [`Error::code`] gives its `EW_*` code and
+/// [`Error::detail`] the detail words.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// No connection: refused, unreachable, closed by the CNC, timed out
+    /// (`EW_SOCKET`). The connection is closed; connect again.
+    #[error("{call}: {}: {}: {msg}{}", Ew::SOCKET, Ew::SOCKET.meaning(), .detail.suffix())]
+    Socket {
+        call: &'static str,
+        detail: Detail,
+        msg: String,
+    },
+    /// The CNC sent something that is not FOCAS2 (`EW_PROTOCOL`).
+    #[error("{call}: {}: {}: {msg}{}", Ew::PROTOCOL, Ew::PROTOCOL.meaning(), .detail.suffix())]
+    Protocol {
+        call: &'static str,
+        detail: Detail,
+        msg: String,
+    },
+    /// The CNC answered with an error code (no such number, write
+    /// protected, not in this mode ...).
+    #[error("{call}: {code}: {}{}", .code.meaning(), .detail.suffix())]
+    Cnc {
+        call: &'static str,
+        code: Ew,
+        detail: Detail,
+    },
+    /// Refused by the library before any traffic, or an answer that does not
+    /// fit what was asked (a real parameter read as `i16` ...).
+    #[error("{call}: {code}: {}: {msg}", .code.meaning())]
+    Invalid {
+        call: &'static str,
+        code: Ew,
+        msg: String,
+    },
+}
+
+impl Error {
+    /// The FOCAS function that failed.
+    pub fn call(&self) -> &'static str {
+        match self {
+            Error::Socket { call, .. }
+            | Error::Protocol { call, .. }
+            | Error::Cnc { call, .. }
+            | Error::Invalid { call, .. } => call,
+        }
+    }
+
+    /// The `EW_*` code a C program would have got.
+    pub fn code(&self) -> Ew {
+        match self {
+            Error::Socket { .. } => Ew::SOCKET,
+            Error::Protocol { .. } => Ew::PROTOCOL,
+            Error::Cnc { code, .. } | Error::Invalid { code, .. } => *code,
+        }
+    }
+
+    /// The detail words `cnc_getdtailerr` reports after the call.
+    pub fn detail(&self) -> Detail {
+        match self {
+            Error::Socket { detail, .. }
+            | Error::Protocol { detail, .. }
+            | Error::Cnc { detail, .. } => *detail,
+            Error::Invalid { .. } => Detail::default(),
+        }
+    }
+
+    /// An error found by this API before or after the exchange.
+    pub(crate) fn invalid(call: &'static str, code: Ew, msg: impl Into<String>) -> Error {
+        Error::Invalid {
+            call,
+            code,
+            msg: msg.into(),
+        }
+    }
+
+    /// The library's internal error, for `call`.
+    pub(crate) fn of(call: &'static str, e: Internal) -> Error {
+        let d = |(err_no, err_dtno): (i16, i16)| Detail { err_no, err_dtno };
+        match e {
+            Internal::Socket { detail, msg } => Error::Socket {
+                call,
+                detail: d(detail),
+                msg,
+            },
+            Internal::Protocol { detail, msg } => Error::Protocol {
+                call,
+                detail: d(detail),
+                msg,
+            },
+            Internal::Cnc {
+                code,
+                detail1,
+                detail2,
+            } => Error::Cnc {
+                call,
+                code: Ew(code),
+                detail: d((detail1 as i16, detail2 as i16)),
+            },
+            Internal::Local { code, msg } => Error::invalid(call, Ew(code), msg),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every `pub const EW_*` of src/ew.rs (the header's codes) is in the
+    /// table under its name and value, and nothing else is.
+    #[test]
+    fn the_table_is_the_headers() {
+        let src = include_str!("../ew.rs");
+        let mut n = 0;
+        for line in src.lines() {
+            let Some(rest) = line.strip_prefix("pub const ") else {
+                continue;
+            };
+            let (name, rest) = rest.split_once(':').unwrap();
+            let value: i16 = rest
+                .split_once('=')
+                .unwrap()
+                .1
+                .split(';')
+                .next()
+                .unwrap()
+                .trim()
+                .parse()
+                .unwrap();
+            assert!(
+                TABLE.iter().any(|e| e.0 == value && e.1 == name),
+                "{name} = {value} missing"
+            );
+            n += 1;
+        }
+        assert_eq!(n, TABLE.len());
+    }
+
+    #[test]
+    fn messages_name_call_code_and_meaning() {
+        let e = Error::of(
+            "cnc_rdparam",
+            Internal::Cnc {
+                code: 3,
+                detail1: 0,
+                detail2: 0,
+            },
+        );
+        assert_eq!(e.code(), Ew::NUMBER);
+        assert_eq!(
+            e.to_string(),
+            "cnc_rdparam: EW_NUMBER (3): data number error: no such number"
+        );
+        let e = Error::of(
+            "cnc_allclibhndl3",
+            Internal::socket((1, 0), "connect: refused"),
+        );
+        assert_eq!(
+            e.detail(),
+            Detail {
+                err_no: 1,
+                err_dtno: 0
+            }
+        );
+        assert!(
+            e.to_string()
+                .starts_with("cnc_allclibhndl3: EW_SOCKET (-16): ")
+        );
+        assert_eq!(Ew(99).name(), "EW_?");
+    }
+}

@@ -1,0 +1,365 @@
+//! The `focas` binary against an in-process simulator (the built-in
+//! profile, a 31i mill, its clock stopped where a test needs it): every
+//! command as text and as `--json`, checked against the profile; a dead
+//! port, a bad address, a CNC that never answers and an absent parameter
+//! each give one line on stderr and exit status 1.
+
+use fwlib32::sim::{Profile, Simulator};
+use serde_json::Value;
+use std::process::{Command, Output};
+use std::time::Duration;
+
+fn sim() -> Simulator {
+    let s = Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator");
+    s.set_elapsed(Duration::ZERO);
+    s
+}
+
+/// `focas --host 127.0.0.1 --port PORT ARGS...`.
+fn run_port(port: u16, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_focas"))
+        .env_remove("FOCAS_HOST")
+        .env_remove("FOCAS_PORT")
+        .args([
+            "--host",
+            "127.0.0.1",
+            "--port",
+            &port.to_string(),
+            "--timeout",
+            "5",
+        ])
+        .args(args)
+        .output()
+        .expect("run focas")
+}
+
+/// The command's stdout; it must succeed with nothing on stderr.
+fn ok(s: &Simulator, args: &[&str]) -> String {
+    let o = run_port(s.port(), args);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "focas {args:?}: {:?}: {err}", o.status);
+    assert!(err.is_empty(), "focas {args:?} wrote to stderr: {err}");
+    String::from_utf8(o.stdout).unwrap()
+}
+
+/// The command's one JSON line.
+fn json(s: &Simulator, args: &[&str]) -> Value {
+    let mut a = vec!["--json"];
+    a.extend_from_slice(args);
+    let out = ok(s, &a);
+    assert_eq!(out.lines().count(), 1, "{out}");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// A failure: exit status 1 and exactly one line on stderr, containing `want`.
+fn fails(o: Output, want: &[&str]) -> String {
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert_eq!(err.lines().count(), 1, "one line: {err}");
+    assert!(err.starts_with("focas: "), "{err}");
+    assert!(
+        !err.contains("panicked") && !err.contains("backtrace"),
+        "{err}"
+    );
+    for w in want {
+        assert!(err.contains(w), "{err:?} lacks {w:?}");
+    }
+    assert!(o.stdout.is_empty());
+    err
+}
+
+#[test]
+fn info() {
+    let s = sim();
+    let t = ok(&s, &["info"]);
+    assert!(t.contains("0a0b0c0d-12345678-9abcdef0-00c0ffee"), "{t}");
+    assert!(
+        t.contains("path 1  31M series G421 version 08.0, 3 axes (max 32)"),
+        "{t}"
+    );
+    let j = json(&s, &["info"]);
+    assert_eq!(j["cnc_id"], "0a0b0c0d-12345678-9abcdef0-00c0ffee");
+    let p = &j["paths"][0];
+    assert_eq!(
+        (p["cnc_type"].as_str(), p["mt_type"].as_str()),
+        (Some("31"), Some("M"))
+    );
+    assert_eq!(
+        (p["series"].as_str(), p["version"].as_str()),
+        (Some("G421"), Some("08.0"))
+    );
+    assert_eq!(
+        (p["axes"].as_u64(), p["max_axes"].as_u64()),
+        (Some(3), Some(32))
+    );
+}
+
+#[test]
+fn status() {
+    let s = sim();
+    let t = ok(&s, &["status"]);
+    for line in [
+        "mode       MEM",
+        "run        STRT",
+        "program    O1234 (main O1234)",
+    ] {
+        assert!(t.lines().any(|l| l == line), "{line:?} in {t}");
+    }
+    let j = json(&s, &["status"]);
+    assert_eq!(j["mode"], serde_json::json!({"code": 1, "name": "MEM"}));
+    assert_eq!(j["run"]["name"], "STRT");
+    assert_eq!(j["emergency"]["code"], 0);
+    assert_eq!(j["program"], 1234);
+    assert_eq!(j["spindle_speed"], 12000);
+}
+
+#[test]
+fn positions() {
+    let s = sim();
+    let t = ok(&s, &["pos"]);
+    let lines: Vec<&str> = t.lines().collect();
+    assert_eq!(
+        lines[0],
+        "axis  absolute  machine  relative  distance  unit"
+    );
+    assert_eq!(lines[1], "X      125.000  125.000   125.000     0.000  mm");
+    assert_eq!(lines[2], "Y      -42.500  -42.500   -42.500     0.000  mm");
+    let j = json(&s, &["pos"]);
+    let z = &j["axes"][2];
+    assert_eq!(
+        (z["name"].as_str(), z["absolute"].as_f64()),
+        (Some("Z"), Some(10.0))
+    );
+    assert_eq!(
+        (z["decimals"].as_i64(), z["unit"].as_str()),
+        (Some(3), Some("mm"))
+    );
+}
+
+#[test]
+fn alarms_and_history() {
+    let s = sim();
+    // The history first: a raised alarm joins it.
+    let t = ok(&s, &["alarms", "--history"]);
+    assert!(
+        t.starts_with("2024-05-17 13:45:30  PC1001          COOLANT LEVEL LOW\n"),
+        "{t}"
+    );
+    let h = json(&s, &["alarms", "--history"]);
+    assert_eq!(h["history"][1]["time"], "2024-05-16T09:12:05");
+    assert_eq!(h["history"][2]["message"], "SERVO ALARM: EXCESS ERROR");
+    assert_eq!(ok(&s, &["alarms"]), "no alarm\n");
+    assert_eq!(json(&s, &["alarms"])["alarms"], serde_json::json!([]));
+    s.set_elapsed(Duration::from_secs(35)); // the profile's event: 30 s, for 10 s
+    let t = ok(&s, &["alarms"]);
+    assert_eq!(t, "OT0500  axis 1  OVER TRAVEL ( SOFT 1 ) +X\n");
+    let a = &json(&s, &["alarms"])["alarms"][0];
+    assert_eq!(
+        (a["number"].as_i64(), a["prefix"].as_str()),
+        (Some(500), Some("OT"))
+    );
+}
+
+#[test]
+fn params_and_diagnosis() {
+    let s = sim();
+    assert_eq!(ok(&s, &["param", "6711"]), "6711  2word  1234\n");
+    assert_eq!(ok(&s, &["param", "0"]), "0  bit  00000010\n");
+    assert_eq!(
+        ok(&s, &["param", "1320"]),
+        "1320  real  X  800.000\n            Y  500.000\n            Z    0.000\n"
+    );
+    assert_eq!(
+        ok(&s, &["param", "1320", "--axis", "2"]),
+        "1320  real  Y  500.000\n"
+    );
+    let j = json(&s, &["param", "1320"]);
+    assert_eq!(j["values"], serde_json::json!([800.0, 500.0, 0.0]));
+    assert_eq!(j["axes"], serde_json::json!(["X", "Y", "Z"]));
+    assert_eq!(
+        (j["kind"].as_str(), j["per_axis"].as_bool()),
+        (Some("real"), Some(true))
+    );
+    let j = json(&s, &["param", "6711"]);
+    assert_eq!(
+        (j["values"][0].as_i64(), j["per_axis"].as_bool()),
+        (Some(1234), Some(false))
+    );
+    let j = json(&s, &["diag", "411", "--axis", "3"]);
+    assert_eq!(
+        (j["kind"].as_str(), j["values"][0].as_i64()),
+        (Some("word"), Some(35))
+    );
+    assert!(ok(&s, &["diag", "300"]).contains("Y  -8\n"));
+}
+
+#[test]
+fn macro_variables() {
+    let s = sim();
+    assert_eq!(ok(&s, &["macro", "500"]), "#500  25.400\n");
+    assert_eq!(ok(&s, &["macro", "150"]), "#150  vacant\n");
+    assert_eq!(ok(&s, &["macro", "150=-2.50"]), "#150  -2.50\n");
+    let j = json(&s, &["macro", "150"]);
+    assert_eq!(
+        (j["value"].as_f64(), j["decimals"].as_i64()),
+        (Some(-2.5), Some(2))
+    );
+    let j = json(&s, &["macro", "150=vacant"]);
+    assert!(j["value"].is_null());
+}
+
+#[test]
+fn pmc() {
+    let s = sim();
+    assert_eq!(ok(&s, &["pmc", "D0", "--type", "long"]), "D0  1000\n");
+    assert_eq!(ok(&s, &["pmc", "G30"]), "G30  100\n");
+    assert_eq!(ok(&s, &["pmc", "F0.5"]), "F0.5  1\n");
+    let t = ok(&s, &["pmc", "R500..R501", "--type", "word"]);
+    assert_eq!(t, "R500  42\n");
+    let j = json(&s, &["pmc", "D100..D120", "--type", "word"]);
+    let v = j["values"].as_array().unwrap();
+    assert_eq!((v.len(), v[10]["address"].as_u64()), (11, Some(120)));
+    let j = json(&s, &["pmc", "R0.3"]);
+    assert_eq!(
+        (j["area"].as_str(), j["value"].as_bool()),
+        (Some("R"), Some(false))
+    );
+    fails(run_port(s.port(), &["pmc", "Q1"]), &["no PMC area \"Q\""]);
+}
+
+#[test]
+fn programs() {
+    let s = sim();
+    let t = ok(&s, &["prog", "ls"]);
+    assert!(t.contains("O0100") && t.contains("O1234"), "{t}");
+    assert!(t.contains("2024-05-17 13:45  POCKET DEMO"), "{t}");
+    let j = json(&s, &["prog", "ls"]);
+    assert_eq!(j["programs"][1]["comment"], "POCKET DEMO");
+    assert_eq!(j["programs"][0]["number"], 100);
+
+    let text = ok(&s, &["prog", "get", "1234"]);
+    assert!(
+        text.starts_with("%\nO1234 (POCKET DEMO)\nN10 G90 G17 G40 G49 G80\n"),
+        "{text}"
+    );
+    assert!(text.ends_with("N130 M30\n%\n"), "{text}");
+    let j = json(&s, &["prog", "get", "100"]);
+    assert!(j["text"].as_str().unwrap().contains("N30 G04 X60."));
+
+    let dir = std::env::temp_dir().join(format!("focas-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("O1234.nc");
+    let t = ok(&s, &["prog", "get", "1234", file.to_str().unwrap()]);
+    assert!(t.starts_with("O1234: "), "{t}");
+    assert_eq!(
+        std::fs::read_to_string(&file).unwrap().trim_end(),
+        text.trim_end()
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+
+    fails(
+        run_port(s.port(), &["prog", "get", "4242"]),
+        &["cnc_upload3", "EW_"],
+    );
+    fails(
+        run_port(s.port(), &["prog", "put", "x.nc"]),
+        &["cnc_download4"],
+    );
+    fails(run_port(s.port(), &["prog", "rm", "1234"]), &["cnc_delete"]);
+}
+
+#[test]
+fn watch() {
+    let s = sim();
+    let t = ok(&s, &["watch", "--count", "2", "--interval", "0"]);
+    let lines: Vec<&str> = t.lines().collect();
+    assert_eq!(lines.len(), 2, "{t}");
+    assert!(lines[0].starts_with("MEM STRT "), "{t}");
+    assert!(lines[0].contains("O1234") && lines[0].contains("X125.000 Y-42.500 Z10.000"));
+    let out = ok(&s, &["--json", "watch", "-n", "3", "-i", "0"]);
+    assert_eq!(out.lines().count(), 3);
+    for l in out.lines() {
+        let j: Value = serde_json::from_str(l).unwrap();
+        assert_eq!(j["status"]["mode"]["name"], "MEM");
+        assert_eq!(j["axes"][1]["absolute"], -42.5);
+        assert!(j["time"].as_f64().unwrap() > 0.0);
+    }
+}
+
+#[test]
+fn a_dead_port_is_one_line() {
+    let port = {
+        let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+        l.local_addr().unwrap().port()
+    };
+    let e = fails(
+        run_port(port, &["status"]),
+        &["cnc_allclibhndl3", "EW_SOCKET (-16)"],
+    );
+    assert!(e.contains("refused"), "{e}");
+}
+
+#[test]
+fn a_bad_address_is_one_line() {
+    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+        .args(["--host", "no.such.host.invalid", "--timeout", "2", "info"])
+        .output()
+        .unwrap();
+    fails(
+        o,
+        &["no.such.host.invalid", "cnc_allclibhndl3", "EW_SOCKET"],
+    );
+}
+
+#[test]
+fn a_silent_cnc_times_out() {
+    // Accepts the connection, never answers.
+    let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = l.local_addr().unwrap().port();
+    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+        .args(["--host", "127.0.0.1", "--port", &port.to_string()])
+        .args(["--timeout", "1", "status"])
+        .output()
+        .unwrap();
+    drop(l);
+    fails(o, &["cnc_allclibhndl3", "EW_SOCKET", "timed out"]);
+}
+
+#[test]
+fn an_absent_parameter_is_the_cncs_ew_number() {
+    let s = sim();
+    let e = fails(
+        run_port(s.port(), &["param", "9999"]),
+        &["cnc_rdparam", "EW_NUMBER (3)"],
+    );
+    assert!(e.contains(&format!("127.0.0.1:{}", s.port())), "{e}");
+    let e = fails(
+        run_port(s.port(), &["--json", "macro", "1=5"]),
+        &["cnc_wrmacro"],
+    );
+    assert!(e.contains("EW_NUMBER"), "{e}");
+}
+
+#[test]
+fn no_host_is_a_usage_error() {
+    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+        .env_remove("FOCAS_HOST")
+        .arg("status")
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--host"));
+}
+
+#[test]
+fn the_host_comes_from_focas_host() {
+    let s = sim();
+    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+        .env("FOCAS_HOST", "127.0.0.1")
+        .args(["--port", &s.port().to_string(), "--json", "status"])
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let j: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(j["program"], 1234);
+}
