@@ -2280,8 +2280,10 @@ short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
- `length` must be 10; `mcr_val` is taken as 32 bits (FANUC's x86-64
- library truncates a 64-bit `long` the same way).
+ `length` must be at least 10 (checked first, as FANUC's library does,
+ before the handle); `mcr_val` is taken as 32 bits (FANUC's x86-64
+ library truncates a 64-bit `long` the same way); `dec_val` outside
+ -128..=127 is EW_DATA.
 
  # Safety
  No pointers.

@@ -21,6 +21,7 @@ fn cx16() -> Ctx {
         class: CncClass::Series16 { kind: 1 },
         max_axes: 8,
         max_spindles: 4,
+        ..Ctx::default()
     }
 }
 
@@ -96,7 +97,24 @@ fn request_bytes_recorded_from_fanuc() {
 #[test]
 fn wrmacro_binary_records_as_fanuc() {
     // (mcr_val, dec_val) -> record words sent by FANUC's library (recorded).
-    let cases: [((i32, i16), (u32, i16)); 14] = [
+    // Past dec 9 FANUC's library multiplies by its truncated 10^-9 and then
+    // 10^(9 - rest) (src/proto/NOTES.md), so it loses a few units: 1 dec 10
+    // is 0x6df37f63 where the exact value is 0x6df37f67.5.
+    let cases: [((i32, i16), (u32, i16)); 28] = [
+        ((1, 10), (0x6df37f63, 64)),
+        ((-1, 10), (0x920c809a, 64)),
+        ((3, 10), (0x52769f8b, 62)),
+        ((i32::MAX, 10), (0x6df37f62, 33)),
+        ((1, 20), (0x5e72842d, 97)),
+        ((-1, 59), (0xbfb8f457, 226)),
+        ((7, -10), (0x4131_4cf0, -6)),
+        ((-7, -18), (0x9edb_0116, -32)),
+        ((1, 127), (0x4551_15f7, 452)),
+        ((1, -128), (0x49dd_23df, -395)),
+        ((0, 3), (0, 3)),
+        ((-12345, -9), (0xa62d_a548, -13)),
+        ((-1, 1), (0x9999999a, 34)),
+        ((12345, -9), (0x59d2_5ab7, -13)),
         ((12345, 3), (0x62c28f5c, 27)),
         ((1, 0), (0x40000000, 30)),
         ((-5, 1), (0x80000000, 32)),
@@ -188,3 +206,4 @@ fn through_the_c_abi_against_a_16i_simulator() {
     );
     sim::free(h);
 }
+
