@@ -1868,7 +1868,10 @@ short cnc_rdparar(unsigned short FlibHndl,
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,
  1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
- room, out = axes written.
+ room (at least 1), out = axes written. As FANUC's library, a 16i-class
+ CNC gives its maximum axes per path (at most `*data_num`), a Series 15
+ the count of its sysinfo companion; on the 16i class the distance to go
+ outside MDI, MEM and remote mode reads 0 with `dec` -1.
 
  # Safety
  `data_num` must point to a writable short, `position` to `*data_num`
@@ -1974,6 +1977,8 @@ short cnc_rdspdlnamem(unsigned short FlibHndl, short *data_num, struct ODBSPDLNA
 /*
  Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
  with decimals, units and names (ODBSPEED). Other types: EW_ATTRIB.
+ Units: feed 0 mm/min, 1 inch/min, 3 mm/rev, 4 inch/rev (on the 30i
+ class the CNC's feed unit word minus 3); spindle 2.
 
  # Safety
  `speed` must point to a writable ODBSPEED.
@@ -2351,8 +2356,10 @@ short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
- `length` must be 10; `mcr_val` is taken as 32 bits (FANUC's x86-64
- library truncates a 64-bit `long` the same way).
+ `length` must be at least 10 (checked first, as FANUC's library does,
+ before the handle); `mcr_val` is taken as 32 bits (FANUC's x86-64
+ library truncates a 64-bit `long` the same way); `dec_val` outside
+ -128..=127 is EW_DATA.
 
  # Safety
  No pointers.

@@ -158,12 +158,16 @@ fn local_checks_before_traffic() {
     assert_eq!(wr(h, 1, 1, 0), EW_NUMBER);
     assert_eq!(wr(h, 99, 1, 0), EW_NUMBER);
     assert_eq!(wr(h, -1, 1, 0), EW_NUMBER);
-    // dec_val 32767: EW_DATA.
+    // dec_val outside -128..127: EW_DATA (FANUC's library, every class).
     assert_eq!(wr(h, 100, 1, 32767), EW_DATA);
-    // length must be 10.
+    assert_eq!(wr(h, 100, 1, 128), EW_DATA);
+    assert_eq!(wr(h, 100, 1, -129), EW_DATA);
+    // length must be at least 10.
     assert_eq!(unsafe { cnc_wrmacro(h, 100, 8, 1, 0) }, EW_LENGTH);
-    assert_eq!(unsafe { cnc_wrmacro(h, 100, 12, 1, 0) }, EW_LENGTH);
+    assert_eq!(unsafe { cnc_wrmacro(h, 100, 9, 1, 0) }, EW_LENGTH);
     assert_eq!(rd(h, 100), (EW_OK, 12345, 3), "nothing was written");
+    // A longer length is accepted, as by FANUC's library.
+    assert_eq!(unsafe { cnc_wrmacro(h, 100, 12, 12345, 3) }, EW_OK);
     // rdmacro: length at least 10; NULL buffers.
     let mut m = ODBM::default();
     assert_eq!(unsafe { cnc_rdmacro(h, 100, 9, &mut m) }, EW_LENGTH);
@@ -180,6 +184,8 @@ fn local_checks_before_traffic() {
     // A freed handle.
     assert_eq!(unsafe { cnc_rdmacro(h, 100, 10, &mut m) }, EW_HANDLE);
     assert_eq!(wr(h, 100, 1, 0), EW_HANDLE);
+    // FANUC's library checks cnc_wrmacro's length before the handle.
+    assert_eq!(unsafe { cnc_wrmacro(h, 100, 8, 1, 0) }, EW_LENGTH);
 }
 
 #[test]

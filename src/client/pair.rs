@@ -35,6 +35,13 @@ impl CncInfo {
             class: self.open.class(),
             max_axes: self.open.max_axes(path as usize),
             max_spindles: self.open.max_spindles(),
+            path,
+            mt_type: self
+                .sysinfo
+                .get(usize::from(path).wrapping_sub(1))
+                .copied()
+                .flatten()
+                .map_or([0; 2], |s| s.mt_type),
         }
     }
 }

@@ -100,8 +100,10 @@ fn check_dec(dec_val: c_short) -> Result<()> {
 }
 
 /// Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
-/// `length` must be 10; `mcr_val` is taken as 32 bits (FANUC's x86-64
-/// library truncates a 64-bit `long` the same way).
+/// `length` must be at least 10 (checked first, as FANUC's library does,
+/// before the handle); `mcr_val` is taken as 32 bits (FANUC's x86-64
+/// library truncates a 64-bit `long` the same way); `dec_val` outside
+/// -128..=127 is EW_DATA.
 ///
 /// # Safety
 /// No pointers.
@@ -114,17 +116,16 @@ pub unsafe extern "C" fn cnc_wrmacro(
     dec_val: c_short,
 ) -> c_short {
     ffi_boundary!("cnc_wrmacro", {
-        let h = handles::get(FlibHndl)?;
-        if length != ODBM_LEN {
-            return Err(Error::local(EW_LENGTH, "length must be 10"));
+        if length < ODBM_LEN {
+            return Err(Error::local(EW_LENGTH, "length must be at least 10"));
         }
-        // Only dec_val 32767 is refused; other values (-2 ...) are sent
-        // as they are, as by FANUC's library.
+        let h = handles::get(FlibHndl)?;
         if number < FIRST_WRITABLE {
             return Err(Error::local(EW_NUMBER, "local variables cannot be written"));
         }
-        if dec_val == DEC_FORBIDDEN {
-            return Err(Error::local(EW_DATA, "dec_val 32767"));
+        // FANUC's library refuses decimals outside a byte's range.
+        if i8::try_from(dec_val).is_err() {
+            return Err(Error::local(EW_DATA, "dec_val outside -128..127"));
         }
         h.call(&WriteMacros {
             s: i32::from(number),

@@ -8,9 +8,10 @@ use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NOOPT, EW_NUMBER};
+use crate::proto::open::CncClass;
 use crate::proto::position::{
-    AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Speed, SpindleData, getfigure, low16,
-    pos, position, rdaxisname, rdspdlname, spdl,
+    AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Position16, Speed, SpeedValue,
+    SpindleData, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
 };
 use crate::types::{
     LOADELM, MAX_AXIS, MAX_SPINDLE, ODBACT2, ODBAXDT, ODBAXIS, ODBAXISNAME, ODBDY, ODBDY_FAXIS,
@@ -335,6 +336,8 @@ pub unsafe extern "C" fn cnc_acts2(
 
 /// Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
 /// with decimals, units and names (ODBSPEED). Other types: EW_ATTRIB.
+/// Units: feed 0 mm/min, 1 inch/min, 3 mm/rev, 4 inch/rev (on the 30i
+/// class the CNC's feed unit word minus 3); spindle 2.
 ///
 /// # Safety
 /// `speed` must point to a writable ODBSPEED.
@@ -354,32 +357,19 @@ pub unsafe extern "C" fn cnc_rdspeed(
             _ => return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or -1")),
         };
         let r = h.call(&Speed { feed, spindle })?;
+        let elem = |v: SpeedValue| SPEEDELM {
+            data: v.data,
+            dec: v.dec,
+            unit: v.unit,
+            disp: v.disp,
+            name: v.name as c_char,
+            suff: v.suff as c_char,
+        };
         if let Some(f) = r.actf {
-            let v = SPEEDELM {
-                data: f.value,
-                dec: f.exp,
-                unit: (r.feed_unit as i16).wrapping_sub(3),
-                disp: 0,
-                name: b'F' as c_char,
-                suff: 0,
-            };
-            unsafe { put(&raw mut (*out).actf, v) };
+            unsafe { put(&raw mut (*out).actf, elem(f)) };
         }
         if let Some(s) = r.acts {
-            let (disp, name, suff) = if r.count == 0 {
-                (0, b'S', 0)
-            } else {
-                (1, r.name[0], r.name[1])
-            };
-            let v = SPEEDELM {
-                data: s.value,
-                dec: s.exp,
-                unit: 2,
-                disp,
-                name: name as c_char,
-                suff: suff as c_char,
-            };
-            unsafe { put(&raw mut (*out).acts, v) };
+            unsafe { put(&raw mut (*out).acts, elem(s)) };
         }
         Ok(())
     })
@@ -712,7 +702,10 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
 
 /// Reads positions with decimals, units and names: `type` 0 absolute,
 /// 1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
-/// room, out = axes written.
+/// room (at least 1), out = axes written. As FANUC's library, a 16i-class
+/// CNC gives its maximum axes per path (at most `*data_num`), a Series 15
+/// the count of its sysinfo companion; on the 16i class the distance to go
+/// outside MDI, MEM and remote mode reads 0 with `dec` -1.
 ///
 /// # Safety
 /// `data_num` must point to a writable short, `position` to `*data_num`
@@ -728,11 +721,57 @@ pub unsafe extern "C" fn cnc_rdposition(
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(position)?;
-        let slots: Vec<usize> = match r#type {
-            -1 => vec![0, 1, 2, 3],
-            0..=3 => vec![r#type as usize],
-            _ => return Err(Error::local(EW_ATTRIB, "type must be -1..3")),
+        let class = h.ctx().class;
+        // FANUC's order: the 30i class checks the type first, the 16i
+        // class and the Series 15 `*data_num` first.
+        let slots = || -> Result<Vec<usize>> {
+            match r#type {
+                -1 => Ok(vec![0, 1, 2, 3]),
+                0..=3 => Ok(vec![r#type as usize]),
+                _ => Err(Error::local(EW_ATTRIB, "type must be -1..3")),
+            }
         };
+        let room = || {
+            if limit < 1 {
+                Err(Error::length())
+            } else {
+                Ok(())
+            }
+        };
+        let slots = if class.is_16i() {
+            room()?;
+            slots()?
+        } else {
+            let s = slots()?;
+            room()?;
+            s
+        };
+        let put_elem = |i: usize, slot: usize, e: POSELM| {
+            let p = unsafe { out.add(i).cast::<POSELM>().add(slot) };
+            unsafe { put(p, e) };
+        };
+        if class.is_16i() {
+            let axes = h.call(&Position16 {
+                s15: class == CncClass::Series16 { kind: 2 },
+                limit,
+            })?;
+            for (i, axis) in axes.iter().enumerate() {
+                for &slot in &slots {
+                    let v = axis[slot];
+                    let e = POSELM {
+                        data: v.data,
+                        dec: v.dec,
+                        unit: v.unit,
+                        disp: v.disp,
+                        name: v.name[0] as c_char,
+                        suff: v.name[1] as c_char,
+                    };
+                    put_elem(i, slot, e);
+                }
+            }
+            unsafe { put(data_num, axes.len() as c_short) };
+            return Ok(());
+        }
         let codes = slots.iter().map(|s| POS_TYPES[*s]).collect();
         let r = h.call(&AxisDataCall {
             what: AxisData::Positions(codes),
@@ -744,13 +783,12 @@ pub unsafe extern "C" fn cnc_rdposition(
                     data: v.data,
                     dec: v.dec,
                     unit: v.unit,
-                    // Unverified reading: the flag's display bit.
+                    // Bit 0 of FANUC's display flag (cnc_rdaxisdata's flag).
                     disp: v.flag & 1,
                     name: v.name[0] as c_char,
                     suff: v.name[1] as c_char,
                 };
-                let p = unsafe { out.add(i).cast::<POSELM>().add(*slot) };
-                unsafe { put(p, e) };
+                put_elem(i, *slot, e);
             }
         }
         unsafe { put(data_num, r.count as c_short) };

@@ -17,9 +17,19 @@ pub struct Ctx {
     /// Maximum spindles (open body); the 16i class uses it as the record
     /// count of spindle answers (no 0xa4 count subpackets).
     pub max_spindles: u16,
+    /// The handle's current path (1-based).
+    pub path: u16,
+    /// The machine type of the current path from the start-up sysinfo
+    /// (" M", " T", " W" wire cut ...).
+    pub mt_type: [u8; 2],
 }
 
 impl Ctx {
+    /// The current path is a wire-cut machine (mt_type " W").
+    pub fn wire_cut(&self) -> bool {
+        self.mt_type == *b" W"
+    }
+
     /// `max_axes` as a record count, capped at MAX_AXIS (32).
     pub fn axes(&self) -> usize {
         (self.max_axes as usize).min(crate::types::MAX_AXIS)
@@ -32,6 +42,8 @@ impl Default for Ctx {
             class: CncClass::Series30,
             max_axes: 32,
             max_spindles: 8,
+            path: 1,
+            mt_type: *b" M",
         }
     }
 }

@@ -54,13 +54,18 @@ impl WriteMacros {
         self.s + self.values.len().max(1) as i32 - 1
     }
 
-    /// The records sent to a CNC of `cx`'s class.
+    /// The records sent to a CNC of `cx`'s class. FANUC's library converts
+    /// to binary records (16i class, not the Series 15) when the first
+    /// number is at most 999, or on a wire-cut machine 13000..=13999;
+    /// other variables get base-10 records as on the 30i class.
     pub fn records(&self, cx: &Ctx) -> Vec<Value> {
-        // A Series 15 (kind 2) gets base-10 records as the 30i class.
-        let base = match cx.class {
-            CncClass::Series16 { kind: 2 } | CncClass::Series30 => BASE_10,
-            CncClass::Series16 { .. } => BASE_2,
+        let binary = match cx.class {
+            CncClass::Series16 { kind: 2 } | CncClass::Series30 => false,
+            CncClass::Series16 { .. } => {
+                self.s <= 999 || (cx.wire_cut() && (13000..=13999).contains(&self.s))
+            }
         };
+        let base = if binary { BASE_2 } else { BASE_10 };
         self.values
             .iter()
             .map(|&(value, exp)| {
@@ -76,37 +81,114 @@ impl WriteMacros {
 }
 
 /// 16i class: FANUC's library sends `value · 10^-dec` as a binary record
-/// m · 2^-e with m normalised to [2^30, 2^31) (negative: [-2^31, -2^30)),
-/// truncated toward zero; 0 → (0, 0). Recorded from FANUC's library with
-/// our fake CNC: 12345/3 → (0x62c28f5c, 27), 1/0 → (2^30, 30),
-/// -1/0 → (-2^31, 31), 1/9 → (0x44b82fa0, 60), i32::MAX/0 → (i32::MAX, 0).
+/// m · 2^-e, computed with its own 32-bit floating point (learnt from its
+/// code, checked against 750 recorded conversions): m normalised to
+/// [2^30, 2^31) (negative: [-2^31, -2^30)); dec 1..9 is one division by
+/// 10^dec, dec -9..-1 one multiplication; larger |dec| multiply by 10^9
+/// (10^-9) first, as often as needed, then by 10^rest, each product
+/// truncated (so 1 with dec 10 is 0x6df37f63, 4 units below the exact
+/// 0x6df37f67). A value 0 is sent as (0, dec).
 pub fn to_base2(value: i32, dec: i16) -> (i32, i16) {
     if value == 0 {
-        return (0, 0);
+        return (0, dec);
     }
-    let mut m = f64::from(value) / 10f64.powi(i32::from(dec));
-    let (lo, hi) = (2f64.powi(30), 2f64.powi(31));
-    let mut e: i32 = 0;
-    if m > 0.0 {
-        while m >= hi {
-            m /= 2.0;
-            e -= 1;
+    let f = Float::from_int(value);
+    let pow10 = |k: i32| Float::from_int(10i32.pow(k as u32));
+    let r = match i32::from(dec) {
+        0 => f,
+        d @ 1..=9 => f.div(pow10(d)),
+        d if d < -9 => {
+            // ×10^9 until at most 9 are left, then ×10^rest.
+            let mut f = f;
+            let mut d = d;
+            while d < -9 {
+                d += 9;
+                f = f.mul(Float::E9);
+            }
+            f.mul(pow10(-d))
         }
-        while m < lo {
-            m *= 2.0;
+        d if d < 0 => f.mul(pow10(-d)),
+        d => {
+            // ×10^-9 while 9 or more are left, then ×10^(9 - rest).
+            let mut f = f;
+            let mut d = d;
+            loop {
+                f = f.mul(Float::E_9);
+                d -= 9;
+                if d < 0 {
+                    break;
+                }
+            }
+            f.mul(pow10(-d))
+        }
+    };
+    (r.m, r.e as i16)
+}
+
+/// FANUC's library's binary float: m · 2^-e, m normalised (see [`to_base2`]).
+#[derive(Debug, Clone, Copy)]
+struct Float {
+    m: i32,
+    e: i32,
+}
+
+impl Float {
+    /// 10^9 = 2000000000 · 2^-1.
+    const E9: Float = Float {
+        m: 2_000_000_000,
+        e: 1,
+    };
+    /// 10^-9, truncated: 0x44b82fa0 · 2^-60.
+    const E_9: Float = Float {
+        m: 0x44b8_2fa0,
+        e: 60,
+    };
+
+    fn normalized(mut m: i32, mut e: i32) -> Float {
+        if m == 0 {
+            return Float { m: 0, e: 0 };
+        }
+        // Normalised when m + 2^30 overflows (m ≥ 2^30) or stays below 0
+        // (m < -2^30).
+        while m.wrapping_add(0x4000_0000) >= 0 {
+            m = m.wrapping_add(m);
             e += 1;
         }
-    } else {
-        while m < -hi {
-            m /= 2.0;
-            e -= 1;
+        Float { m, e }
+    }
+
+    fn from_int(v: i32) -> Float {
+        Float::normalized(v, 0)
+    }
+
+    /// The 64-bit product shifted up to 62 significant bits, its high word
+    /// (an arithmetic shift: floor).
+    fn mul(self, o: Float) -> Float {
+        let mut p = i64::from(self.m) * i64::from(o.m);
+        if p >> 32 == 0 {
+            return Float { m: 0, e: 0 };
         }
-        while m >= -lo {
-            m *= 2.0;
+        let mut e = self.e + o.e - 32;
+        while p.wrapping_add(0x4000_0000_0000_0000) >= 0 {
+            p = p.wrapping_add(p);
             e += 1;
         }
+        Float::normalized((p >> 32) as i32, e)
     }
-    (m.trunc() as i32, e as i16)
+
+    /// (m << 31) / o.m when |m| < |o.m|, else (m << 30) / o.m, truncated
+    /// toward zero.
+    fn div(self, o: Float) -> Float {
+        if o.m == 0 {
+            return self;
+        }
+        let (num, e) = if self.m.unsigned_abs() < o.m.unsigned_abs() {
+            (i64::from(self.m) << 31, self.e - o.e + 31)
+        } else {
+            (i64::from(self.m) << 30, self.e - o.e + 30)
+        };
+        Float::normalized((num / i64::from(o.m)) as i32, e)
+    }
 }
 
 impl Call for WriteMacros {

@@ -7,6 +7,7 @@
 //! alarm areas.
 
 use super::call::{Call, Ctx, payload, sub};
+use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
@@ -619,7 +620,8 @@ impl Call for AxisDataCall {
                     return v;
                 }
                 // rdaxisdata (the only user of these) is EW_FUNC on a 16i
-                // before any request; rdposition keeps the 30i form (NOTES.md).
+                // before any request; rdposition has its own 16i form
+                // ([`Position16`]).
                 AxisData::Positions(_) | AxisData::FirstSpindle(_) | AxisData::Speed(_) => {}
             }
         }
@@ -833,50 +835,124 @@ fn decode_speed(cmds: &[u16], limit: i16, resp: &[RespSub]) -> Result<AxisDataRe
 }
 
 // ---------------------------------------------------------------------------
-// cnc_rdspeed: 0xa4[3], 0x8a[1], 0x88[3], 0x88[4], 0x24 and/or 0x25, 0xa4[3]
-// (/tmp/orc/findings/cnc_rdspeed.md, recorded with FANUC's library)
+// cnc_rdspeed (recorded with FANUC's library, src/proto/NOTES.md)
+// 30i: 0xa4[3], 0x8a[1], 0x88[3], 0x88[4], 0x24 and/or 0x25, 0xa4[3]
+// 16i: 0x24, 0x25, 0x88[0], 0x0e[3106], 0x0e[3107], 0x0e[9936], 0x21[4],
+//      PMC G28 of the path; Series 15: 0x24, 0x25, 0x88[0], 0x95, 0x8a
 // ---------------------------------------------------------------------------
 
-/// cnc_rdspeed's frame: `feed` asks 0x24, `spindle` 0x25.
+/// Series 15: which spindle's name is shown with the speed (1-based; its
+/// entry of 0x8a names the actual speed).
+pub const SPINDLE_SHOWN15: u16 = 0x0095;
+/// 16i class: parameters FANUC's library reads with the speeds. 3107 bit 3
+/// shows the actual feed per revolution under G95; what it takes from 3106
+/// and 9936 was not seen (no bit of either changed an output).
+pub const PARAM_SPEED_DISPLAY: [i32; 3] = [3106, 3107, 9936];
+/// 16i class: the PMC G byte FANUC's library reads with the speeds (G28 of
+/// path 1, G1028 of path 2 ...); no bit of it changed an output.
+pub const SPEED_PMC_G: i32 = 28;
+/// 16i class: the modal G group (0x21 code) whose code 1 (G95, feed per
+/// revolution) makes the feed unit per revolution when 3107 bit 3 is set.
+pub const FEED_GROUP: i32 = 4;
+
+/// cnc_rdspeed: `feed` (type 0 or -1), `spindle` (1 or -1).
 #[derive(Debug, Clone, Copy)]
 pub struct Speed {
     pub feed: bool,
     pub spindle: bool,
 }
 
-/// Decoded rdspeed: display count, first spindle name entry, feed unit
-/// word, feed record, speed record.
+/// One SPEEDELM as FANUC's library fills it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct SpeedValue {
+    pub data: i32,
+    pub dec: i16,
+    pub unit: i16,
+    pub disp: i16,
+    pub name: u8,
+    pub suff: u8,
+}
+
+/// The elements asked: `actf` for the feed, `acts` for the spindle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct SpeedReply {
-    pub count: u16,
-    pub name: [u8; 4],
-    pub feed_unit: u16,
-    pub actf: Option<Value>,
-    pub acts: Option<Value>,
+    pub actf: Option<SpeedValue>,
+    pub acts: Option<SpeedValue>,
+}
+
+fn speed_value(v: Value, unit: i16, disp: i16, name: u8, suff: u8) -> SpeedValue {
+    SpeedValue {
+        data: v.value,
+        dec: v.exp,
+        unit,
+        disp,
+        name,
+        suff,
+    }
 }
 
 impl Call for Speed {
     type Output = SpeedReply;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        let c = ReqSub::cnc(COUNT, &[3]);
-        let mut v = vec![
-            c.clone(),
-            ReqSub::cnc(RDSPDLNAME, &[1]),
-            ReqSub::cnc(UNITS, &[3]),
-            ReqSub::cnc(UNITS, &[4]),
-        ];
-        if self.feed {
-            v.push(ReqSub::cnc(ACTF, &[]));
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        match cx.class {
+            CncClass::Series30 => {
+                let c = ReqSub::cnc(COUNT, &[3]);
+                let mut v = vec![
+                    c.clone(),
+                    ReqSub::cnc(RDSPDLNAME, &[1]),
+                    ReqSub::cnc(UNITS, &[3]),
+                    ReqSub::cnc(UNITS, &[4]),
+                ];
+                if self.feed {
+                    v.push(ReqSub::cnc(ACTF, &[]));
+                }
+                if self.spindle {
+                    v.push(ReqSub::cnc(ACTS, &[]));
+                }
+                v.push(c);
+                v
+            }
+            CncClass::Series16 { kind: 2 } => vec![
+                ReqSub::cnc(ACTF, &[]),
+                ReqSub::cnc(ACTS, &[]),
+                ReqSub::cnc(UNITS, &[0]),
+                ReqSub::cnc(SPINDLE_SHOWN15, &[]),
+                ReqSub::cnc(RDSPDLNAME, &[]),
+            ],
+            CncClass::Series16 { .. } => {
+                let mut v = vec![
+                    ReqSub::cnc(ACTF, &[]),
+                    ReqSub::cnc(ACTS, &[]),
+                    ReqSub::cnc(UNITS, &[0]),
+                ];
+                v.extend(
+                    PARAM_SPEED_DISPLAY.map(|n| ReqSub::cnc(crate::proto::cmd::RDPARAM16, &[n, n])),
+                );
+                v.push(ReqSub::cnc(super::program::MODAL_G, &[FEED_GROUP]));
+                let g = SPEED_PMC_G + 1000 * (i32::from(cx.path.max(1)) - 1);
+                v.push(ReqSub::pmc(super::pmc::RDPMCRNG, &[g, g, 0, 0]));
+                v
+            }
         }
-        if self.spindle {
-            v.push(ReqSub::cnc(ACTS, &[]));
-        }
-        v.push(c);
-        v
     }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<SpeedReply> {
+
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<SpeedReply> {
+        match cx.class {
+            CncClass::Series30 => self.decode30(resp),
+            CncClass::Series16 { kind } => self.decode16(kind == 2, resp),
+        }
+    }
+}
+
+impl Speed {
+    /// 30i: actf unit = word 0 of 0x88[3] minus 3, disp 0, name 'F'; acts
+    /// unit 2, and with a display count of 0 disp 0 and name 'S', else disp
+    /// 1 and the first 0x8a entry's name and suffix. FANUC ignores an error
+    /// in 0x8a when only the feed is asked.
+    fn decode30(&self, resp: &[RespSub]) -> Result<SpeedReply> {
+        let n = 5 + usize::from(self.feed) + usize::from(self.spindle);
+        expect_subs(resp, n)?;
         let count: Count = payload(resp, 0)?;
-        // FANUC ignores an error in 0x8a when only the feed is asked.
         let name = if self.spindle {
             let n: Vec<Name> = payload(resp, 1)?;
             n.first().map(|n| n.bytes)
@@ -908,11 +984,230 @@ impl Call for Speed {
             (_, _, n) => n.unwrap_or_default(),
         };
         Ok(SpeedReply {
-            count: count.n,
-            name,
-            feed_unit,
-            actf,
-            acts,
+            actf: actf.map(|f| speed_value(f, (feed_unit as i16).wrapping_sub(3), 0, b'F', 0)),
+            acts: acts.map(|s| {
+                if count.n == 0 {
+                    speed_value(s, 2, 0, b'S', 0)
+                } else {
+                    speed_value(s, 2, 1, name[0], name[1])
+                }
+            }),
         })
     }
+
+    /// 16i class and Series 15: any CNC error (first in subpacket order) is
+    /// the result. actf: disp 1, name 'F', unit 1 (inch) when word 0 of
+    /// 0x88[0] is not 0, else 0, plus 3 (per revolution) on the 16i when
+    /// parameter 3107 bit 3 is set and the group of 0x21[4] is code 1 (G95).
+    /// acts: unit 2, disp 1; name 'S' (16i), or on a Series 15 the name and
+    /// suffix of the 0x8a entry that 0x95 word 0 numbers (1-based; none:
+    /// zeros).
+    fn decode16(&self, s15: bool, resp: &[RespSub]) -> Result<SpeedReply> {
+        let n = if s15 { 5 } else { 8 };
+        expect_subs(resp, n)?;
+        for i in 0..n {
+            sub(resp, i)?;
+        }
+        let p = |i: usize| &resp[i].payload;
+        let mut out = SpeedReply::default();
+        if self.feed {
+            let f: Value = payload(resp, 0)?;
+            need(p(2), 2, "0x88[0]")?;
+            let mut unit = i16::from(be16(p(2), 0) != 0);
+            if !s15 {
+                let par = p(4);
+                need(par, 12, "parameter 3107")?;
+                need(p(6), 1, "modal group")?;
+                let bit3 = i32::from_be_bytes([par[8], par[9], par[10], par[11]]) & 8 != 0;
+                if bit3 && p(6)[0] == 1 {
+                    unit += 3;
+                }
+            }
+            out.actf = Some(speed_value(f, unit, 1, b'F', 0));
+        }
+        if self.spindle {
+            let s: Value = payload(resp, 1)?;
+            let (name, suff) = if s15 {
+                need(p(3), 2, "0x95")?;
+                let k = be16(p(3), 0) as i16;
+                let names = p(4);
+                if k >= 1 {
+                    let e: [u8; 2] = zext(names.get(4 * (k as usize - 1)..).unwrap_or(&[]));
+                    (e[0], e[1])
+                } else {
+                    (0, 0)
+                }
+            } else {
+                (b'S', 0)
+            };
+            out.acts = Some(speed_value(s, 2, 1, name, suff));
+        }
+        Ok(out)
+    }
 }
+
+// ---------------------------------------------------------------------------
+// cnc_rdposition on the 16i class and the Series 15
+// (learnt from FANUC's library with the oracle, src/proto/NOTES.md)
+// ---------------------------------------------------------------------------
+
+/// 16i class: the per-axis parameter whose bits hide positions on the
+/// screen (bit 0: every position, bit 1: absolute, relative and distance to
+/// go); cnc_rdposition's `disp` is their inverse.
+pub const PARAM_POS_DISPLAY: i32 = 3115;
+
+/// The mode words (first word of 0x19) with which FANUC's library takes
+/// the distance to go from the CNC: MDI, MEM and RMT. In any other mode
+/// (EDIT, JOG, HND ...) it writes data 0 with `dec` -1.
+pub const DISTANCE_MODES: [u16; 3] = [0, 1, 10];
+
+/// One ODBPOS element as FANUC's library fills it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct PosValue {
+    pub data: i32,
+    pub dec: i16,
+    pub unit: i16,
+    pub disp: i16,
+    /// Name and suffix.
+    pub name: [u8; 2],
+}
+
+/// cnc_rdposition's frame on a 16i-class CNC (`s15` false):
+/// `0x19`, `0x26[k, -1]` for k = 0..3, `0x89[-1]`, `0x0e[3115, 3115, -1]`,
+/// `0x88[2]`, `0x19`; on a Series 15: the four `0x26`, `0x89[-1]`,
+/// `0x88[2]`, `0x8c`. Always all four positions, whatever type is asked.
+#[derive(Debug, Clone, Copy)]
+pub struct Position16 {
+    pub s15: bool,
+    /// The caller's `*data_num` (at least 1).
+    pub limit: i16,
+}
+
+/// `axes[i][k]`: axis i, position k (absolute, machine, relative,
+/// distance to go).
+pub type Positions16 = Vec<[PosValue; 4]>;
+
+/// The first `n` bytes of a middle subpacket's payload: FANUC's library
+/// reads what a shorter one lacks from the next subpacket (ours:
+/// EW_PROTOCOL).
+fn need(p: &[u8], n: usize, what: &str) -> Result<()> {
+    if p.len() < n {
+        return Err(Error::short(format!(
+            "{what}: {} bytes, {n} needed",
+            p.len()
+        )));
+    }
+    Ok(())
+}
+
+fn be16(p: &[u8], at: usize) -> u16 {
+    u16::from_be_bytes([p[at], p[at + 1]])
+}
+
+impl Call for Position16 {
+    type Output = Positions16;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let mut v = Vec::with_capacity(9);
+        if !self.s15 {
+            v.push(ReqSub::cnc(crate::proto::cmd::STATINFO, &[]));
+        }
+        v.extend(DYNAMIC_POS_2.map(|k| ReqSub::cnc(POSITION, &[k, ALL])));
+        v.push(ReqSub::cnc(RDAXISNAME, &[ALL]));
+        if self.s15 {
+            v.push(ReqSub::cnc(UNITS, &[2]));
+            v.push(ReqSub::cnc(crate::proto::cmd::SYSINFO15, &[]));
+        } else {
+            let n = PARAM_POS_DISPLAY;
+            v.push(ReqSub::cnc(crate::proto::cmd::RDPARAM16, &[n, n, ALL]));
+            v.push(ReqSub::cnc(UNITS, &[2]));
+            v.push(ReqSub::cnc(crate::proto::cmd::STATINFO, &[]));
+        }
+        v
+    }
+
+    /// The first CNC error in subpacket order is the result (nothing
+    /// written). The count: 16i, min(`limit`, the path's maximum axes of
+    /// the open response); Series 15, min(`limit`, word 0 of 0x8c). Every
+    /// axis counted must have its record, name entry, unit pair and
+    /// display word in the answer (FANUC's library reads past a shorter
+    /// one; ours: EW_PROTOCOL); the last subpacket reads as zeros past its
+    /// payload, as FANUC's buffer does past the frame.
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Positions16> {
+        let n_subs = if self.s15 { 7 } else { 9 };
+        expect_subs(resp, n_subs)?;
+        for i in 0..n_subs {
+            sub(resp, i)?;
+        }
+        let p = |i: usize| &resp[i].payload;
+        let first = usize::from(!self.s15);
+        let last = p(n_subs - 1);
+        let limit = self.limit.max(0) as usize;
+        let (count, auto, disp): (usize, bool, Vec<i16>) = if self.s15 {
+            // 0x8c: u16 count, a word not used, then one display word per axis.
+            let count = limit
+                .min(usize::from(u16::from_be_bytes(zext(last))))
+                .min(crate::types::MAX_AXIS);
+            let disp = (0..count)
+                .map(|i| i16::from_be_bytes(zext(last.get(4 + 2 * i..).unwrap_or(&[]))))
+                .collect();
+            (count, true, disp)
+        } else {
+            let count = limit.min(cx.axes());
+            let st = p(0);
+            need(st, 2, "status")?;
+            let mode_ok = |w: u16| DISTANCE_MODES.contains(&w);
+            let auto = mode_ok(be16(st, 0)) && mode_ok(u16::from_be_bytes(zext(last)));
+            let par = p(6);
+            need(par, 8 + 4 * count, "parameter 3115")?;
+            let disp = (0..count)
+                .map(|i| i32::from_be_bytes(zext(&par[8 + 4 * i..])) as i16)
+                .collect();
+            (count, auto, disp)
+        };
+        let mut recs = Vec::with_capacity(4);
+        for k in 0..4 {
+            let r = whole_records(resp, first + k)?;
+            if r.len() < count {
+                return Err(Error::short("fewer position records than the count"));
+            }
+            recs.push(r);
+        }
+        let names = p(first + 4);
+        need(names, 4 + 16 * count, "axis names")?;
+        let units = p(first + 5 + usize::from(!self.s15));
+        need(units, 4 * count, "unit words")?;
+        let mut out = Vec::with_capacity(count);
+        for i in 0..count {
+            let e = &names[4 + 16 * i..];
+            let (u0, u1) = (be16(units, 4 * i) as i16, be16(units, 4 * i + 2) as i16);
+            let mut axis = [PosValue::default(); 4];
+            for (k, v) in axis.iter_mut().enumerate() {
+                let r = recs[k][i];
+                let at = [0, 4, 8, 0][k];
+                *v = PosValue {
+                    data: r.value,
+                    dec: r.exp,
+                    unit: if k == 1 { u1 } else { u0 },
+                    disp: if self.s15 {
+                        disp[i]
+                    } else {
+                        // Bit 0 hides every position, bit 1 all but the
+                        // machine position.
+                        let mask = if k == 1 { 1 } else { 3 };
+                        i16::from(disp[i] & mask == 0)
+                    },
+                    name: [e[at], e[at + 1]],
+                };
+                if k == 3 && !auto {
+                    v.data = 0;
+                    v.dec = -1;
+                }
+            }
+            out.push(axis);
+        }
+        Ok(out)
+    }
+}
+
+/// The 0x26 codes of cnc_rdposition's types 0..3.
+pub const DYNAMIC_POS_2: [i32; 4] = [pos::ABSOLUTE2, pos::MACHINE, pos::RELATIVE2, pos::DISTANCE2];

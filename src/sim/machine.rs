@@ -147,16 +147,18 @@ impl CncService for Machine {
         })
     }
 
-    fn sysinfo15(&mut self, path: u16) -> Reply<()> {
+    fn sysinfo15(&mut self, path: u16) -> Reply<Vec<u16>> {
         // Series 15 (16i class, kind 2) answers its start-up companion of
-        // sysinfo; its contents are not known (empty, our choice).
-        self.path(path)?;
-        match (self.profile.cnc.class, self.profile.cnc.kind) {
-            (Class::Series16, 2) => Ok(()),
-            _ => Err(CncError::FUNC),
-        }
+        // sysinfo; the words cnc_rdposition reads from it are known, the
+        // rest are not (src/sim/position.rs).
+        self.series15()?;
+        self.pos_sysinfo15(path)
     }
 
+    fn spindle_shown15(&mut self, path: u16) -> Reply<Vec<u16>> {
+        self.series15()?;
+        self.pos_spindle_shown15(path)
+    }
     fn cnc_id(&mut self) -> Reply<CncId> {
         Ok(CncId(self.profile.cnc.cnc_id.clone()))
     }

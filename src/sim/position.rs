@@ -163,24 +163,33 @@ impl Machine {
     }
 
     /// 0x89[-1]: the same name for the absolute, machine and relative
-    /// displays (the fourth entry is unused).
+    /// displays (the fourth entry is unused). A 16i-class CNC (not the
+    /// Series 15) adds empty entries up to its maximum axes: FANUC's
+    /// library reads that many (cnc_rdposition).
     pub(crate) fn pos_axis_pos_names(&self, path: u16) -> Reply<AxisNames> {
         let p = self.pos_path(path)?;
+        let mut axes: Vec<PosNames> = p
+            .axes
+            .iter()
+            .map(|a| {
+                let n = axis_name(a);
+                PosNames {
+                    absolute: n,
+                    machine: n,
+                    relative: n,
+                    other: [0; 4],
+                }
+            })
+            .collect();
+        if self.is_16i_proper() {
+            axes.resize(
+                usize::from(self.profile.cnc.max_axes).max(axes.len()),
+                PosNames::default(),
+            );
+        }
         Ok(AxisNames {
             count: p.axes.len() as i32,
-            axes: p
-                .axes
-                .iter()
-                .map(|a| {
-                    let n = axis_name(a);
-                    PosNames {
-                        absolute: n,
-                        machine: n,
-                        relative: n,
-                        other: [0; 4],
-                    }
-                })
-                .collect(),
+            axes,
         })
     }
 
@@ -247,6 +256,11 @@ impl Machine {
         }
     }
 
+    /// A 16i-class CNC other than the Series 15 (kind 2).
+    fn is_16i_proper(&self) -> bool {
+        self.profile.cnc.class == super::profile::Class::Series16 && self.profile.cnc.kind != 2
+    }
+
     /// A 16i-class CNC answers all-axes / all-spindles data with a record
     /// for every axis (spindle) it can have, the unused ones zero: FANUC's
     /// library reads that many records.
@@ -259,21 +273,59 @@ impl Machine {
     /// 0x88: [1] and [2] two words per axis (FANUC's library reads word 0
     /// of [1] as the position unit, word 1 of [2] as the machine-position
     /// unit; both words carry the axis unit here); [3] word 0 = feed unit
-    /// in ODBAXDT codes (3 = mm/min); [4] meaning unknown: zeros.
+    /// in ODBAXDT codes (3 = mm/min); [4] meaning unknown: zeros. [0] (the
+    /// 16i class's cnc_rdspeed): two words per axis, 1 for an inch axis
+    /// (FANUC's library shows the feed in inches when word 0 is not 0). A
+    /// 16i-class CNC (not the Series 15) answers [0], [1], [2] for its
+    /// maximum axes, the unused ones zero (cnc_rdposition reads that many).
     pub(crate) fn pos_units(&self, path: u16, kind: i32) -> Reply<Vec<u16>> {
         let p = self.pos_path(path)?;
+        let per_axis = |f: fn(&Axis) -> u16| {
+            let mut v: Vec<u16> = p.axes.iter().flat_map(|a| [f(a), f(a)]).collect();
+            if self.is_16i_proper() {
+                v.resize((2 * usize::from(self.profile.cnc.max_axes)).max(v.len()), 0);
+            }
+            v
+        };
         match kind {
-            1 | 2 => Ok(p
-                .axes
-                .iter()
-                .flat_map(|a| [a.unit as u16, a.unit as u16])
-                .collect()),
+            0 => Ok(per_axis(|a| u16::from(a.unit == 1))),
+            1 | 2 => Ok(per_axis(|a| a.unit as u16)),
             3 => Ok(vec![3, 0, 0, 0]),
             4 => Ok(vec![0; 4]),
             _ => Err(NUMBER),
         }
     }
 
+    /// 0x8c (Series 15): the path's axis count, a word whose meaning is not
+    /// known (0), then one display word per axis, which cnc_rdposition
+    /// copies as `disp`: 1, or 0 for an axis whose position parameter 3115
+    /// hides (bit 0, as on the 16i class).
+    pub(crate) fn pos_sysinfo15(&self, path: u16) -> Reply<Vec<u16>> {
+        let p = self.pos_path(path)?;
+        let mut v = vec![p.axes.len() as u16, 0];
+        v.extend((1..=p.axes.len()).map(|i| {
+            let hidden = self
+                .param_value(crate::proto::position::PARAM_POS_DISPLAY, i as i16)
+                .is_some_and(|x| x & 1 != 0);
+            u16::from(!hidden)
+        }));
+        Ok(v)
+    }
+
+    /// 0x95 (Series 15): the spindle (1-based) whose name is shown with the
+    /// actual speed: the first, or 0 for a path without spindles.
+    pub(crate) fn pos_spindle_shown15(&self, path: u16) -> Reply<Vec<u16>> {
+        let p = self.pos_path(path)?;
+        Ok(vec![u16::from(!p.spindles.is_empty())])
+    }
+
+    /// Errors unless this is a Series 15 (16i class, kind 2).
+    pub(crate) fn series15(&self) -> Reply<()> {
+        match (self.profile.cnc.class, self.profile.cnc.kind) {
+            (super::profile::Class::Series16, 2) => Ok(()),
+            _ => Err(CncError::FUNC),
+        }
+    }
     /// 0xa3: per axis, bits 0 and 1 set (FANUC's library derives the
     /// machine and absolute display flags from them; the other bits'
     /// meaning is not known).

@@ -74,8 +74,13 @@ pub trait CncService: Send {
     fn tmmode(&mut self, path: u16) -> Reply<Word> {
         unsupported()
     }
-    /// 0x8c: the Series-15 start-up companion of sysinfo.
-    fn sysinfo15(&mut self, path: u16) -> Reply<()> {
+    /// 0x8c: the Series-15 start-up companion of sysinfo (words; also
+    /// read by cnc_rdposition: axis count and display words).
+    fn sysinfo15(&mut self, path: u16) -> Reply<Vec<u16>> {
+        unsupported()
+    }
+    /// 0x95: the Series-15 spindle whose name the speed display shows.
+    fn spindle_shown15(&mut self, path: u16) -> Reply<Vec<u16>> {
         unsupported()
     }
     fn cnc_id(&mut self) -> Reply<CncId> {
@@ -359,7 +364,8 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, cmd::STATINFO2) => enc(svc.statinfo2(p)),
             (CLASS_CNC, cmd::HDCK) => enc(svc.hdck(p)),
             (CLASS_CNC, cmd::TMMODE) => enc(svc.tmmode(p)),
-            (CLASS_CNC, cmd::SYSINFO15) => svc.sysinfo15(p).map(|()| Vec::new()),
+            (CLASS_CNC, cmd::SYSINFO15) => enc(svc.sysinfo15(p)),
+            (CLASS_CNC, crate::proto::position::SPINDLE_SHOWN15) => enc(svc.spindle_shown15(p)),
             (CLASS_CNC, cmd::RDCNCID) => enc(svc.cnc_id()),
             (CLASS_CNC, cmd::RDPARAM16) => enc(svc.param16(p, a[0], a[2] as i16)),
 

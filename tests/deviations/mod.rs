@@ -179,6 +179,73 @@ pub const ORACLE: &[Deviation] = &[
         reason: "on the 16i class FANUC's library reads max-axes load records whatever the answer holds, from an empty answer the next subpackets' bytes; ours writes the whole records answered (none)",
     },
     Deviation {
+        function: "cnc_rdposition",
+        cases: &[
+            "rdposition_v3_shape_empty",
+            "rdposition_v3_shape_half",
+            "rdposition_v3_shape_short1",
+        ],
+        reason: AXIS_COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdposition",
+        cases: &["rdposition_v3_shape_half_sub2"],
+        reason: NAMES_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdposition",
+        cases: &["rdposition_v2a8_shape_empty"],
+        reason: "on the 16i class FANUC's library reads the mode word of an empty status answer from the next subpacket's header (and so drops the distance to go); ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdspeed",
+        cases: &[
+            "rdspeed_v3_shape_empty",
+            "rdspeed_v3_shape_half",
+            "rdspeed_v3_shape_short1",
+        ],
+        reason: "FANUC's library reads the display count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header) and names the spindle speed by it; ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdspeed",
+        cases: &["rdspeed_v3_shape_half_sub2"],
+        reason: "FANUC's library reads the spindle name a short 0x8a answer lacks from the next subpacket's header; ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdspeed",
+        cases: &[
+            "rdspeed_v2_shape_empty",
+            "rdspeed_v2_shape_half",
+            "rdspeed_v2_shape_short1",
+            "rdspeed_v2_shape_half_sub2",
+        ],
+        reason: "on the 16i class FANUC's library reads the value and decimals a short speed record lacks from the next subpacket's header; ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        cases: &[
+            "rdspmeter_v3_shape_empty",
+            "rdspmeter_v3_shape_half",
+            "rdspmeter_v3_shape_short1",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        cases: &["rdspmeter_v3_shape_half_sub2"],
+        reason: "FANUC's library reads the spindle names a short 0x8a answer lacks from the next subpacket's header; ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        cases: &["rdspmeter_v2_shape_empty"],
+        reason: "on the 16i class FANUC's library reads max-spindles load records whatever the answer holds, from an empty answer the next subpackets' bytes; ours writes the whole records answered (none)",
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        cases: &["rdspmeter_v2_shape_err4"],
+        reason: "when a 16i-class CNC refuses the load-meter code with EW_ATTRIB, FANUC's library retries with an older form (serial spindle codes 0 and 1 scaled by parameters 4127, 4274, 4020, 4196, a scaling not learnt); ours returns the CNC's EW_ATTRIB",
+    },
+    Deviation {
         function: "cnc_rdcount",
         cases: &[
             "rdcount_v2_shape_empty",

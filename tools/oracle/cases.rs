@@ -337,6 +337,13 @@ const WORDS: &[Word] = &[
                 "-1 10 5 0",
                 "500 8 5 0",
                 "500 0 5 0",
+                "500 12 5 0",
+                "500 10 1 128",
+                "500 10 1 -129",
+                "500 10 7 -10",
+                "500 10 -3 19",
+                "500 10 0 3",
+                "1000 10 5 1",
             ],
         )
     },
@@ -681,6 +688,20 @@ pub const SHAPES: &[(&str, Shape)] = &[
 
 pub const CLASSES: &[&str] = &["v3", "v2", "s15"];
 
+/// The profile a word's cases of a class run on. FANUC's 16i form of
+/// cnc_rdposition reads a name entry (16 bytes) and a unit pair for every
+/// axis of the path's maximum, with four 0x26 answers of that many records,
+/// all in one frame of at most 1450 bytes: a 16i with 32 axes per path (the
+/// built-in profile's maximum) cannot answer it (at most 5 name entries fit),
+/// so its 16i-class cases run on a 16i with 8 axes per path.
+fn class_profile(word: &str, profile: &'static str) -> &'static str {
+    match (word, profile) {
+        ("rdposition", "v2") => "v2a8",
+        ("rdposition", "v2p2") => "v2p2a8",
+        _ => profile,
+    }
+}
+
 /// Every case of one word.
 pub fn cases_of(w: &Word) -> Vec<Case> {
     let mut out = Vec::new();
@@ -705,6 +726,7 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
         }
     }
     for (pi, profile) in CLASSES.iter().enumerate() {
+        let profile = class_profile(w.word, profile);
         for (label, args) in &lists {
             // Every variation on the 30i and 16i classes; Series 15 gets
             // the base and the combinations.
@@ -720,6 +742,7 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
     }
     let base = &lists[0].1;
     for profile in ["v3", "v2"] {
+        let profile = class_profile(w.word, profile);
         for (label, shape) in SHAPES {
             case(
                 format!("{profile}_shape_{label}"),
@@ -739,9 +762,10 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
             "v3p2",
             calls_for(w, base, None, &["setpath 3"]),
         );
+        let p2 = class_profile(w.word, "v2p2");
         case(
-            "v2p2_path2".into(),
-            "v2p2",
+            format!("{p2}_path2"),
+            p2,
             calls_for(w, base, None, &["setpath 2"]),
         );
     }

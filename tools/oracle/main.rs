@@ -40,7 +40,7 @@ fn root() -> PathBuf {
 }
 
 /// The profiles by name: the built-in 30i mill and its 16i, Series 15 and
-/// two-path forms.
+/// two-path forms, and the 16i forms with 8 axes per path.
 fn profile(name: &str) -> Profile {
     let base = fwlib32::sim::profile::DEFAULT_PROFILE;
     let class16 = |kind: u16| {
@@ -57,6 +57,7 @@ fn profile(name: &str) -> Profile {
         t.replacen("param_write_enable = false", "param_write_enable = true", 1)
             .replacen("aut = 1  ", "aut = 0  ", 1)
     };
+    let axes8 = |t: String| t.replacen("max_axes = 32", "max_axes = 8", 1);
     let text = match name {
         "v3w" => writable(base.to_string()),
         "v2w" => writable(class16(1)),
@@ -65,6 +66,9 @@ fn profile(name: &str) -> Profile {
         "s15" => class16(2),
         "v3p2" => format!("{base}{second_path}"),
         "v2p2" => format!("{}{second_path}", class16(1)),
+        // A 16i with 8 axes per path (cases.rs: `class_profile`).
+        "v2a8" => axes8(class16(1)),
+        "v2p2a8" => format!("{}{second_path}", axes8(class16(1))),
         other => panic!("unknown profile {other}"),
     };
     Profile::parse(&text).unwrap_or_else(|e| panic!("profile {name}: {e}"))
