@@ -2332,13 +2332,15 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 /*
  Writes several parameters given as packed records (the format
- cnc_rdparar reads) in `length` bytes, 5 per exchange, without reading
- their attributes first. `length` ≤ 0 writes nothing. A record that does
- not fit in `length` is EW_LENGTH and a type other than 0..4 EW_ATTRIB,
- both before any traffic (FANUC's library sends unknown types as
- 4-byte records of stale data). The CNC checks each write as for
- cnc_wrparam; the first refused exchange ends the call with its error
- (earlier exchanges stay written).
+ cnc_rdparar reads) in `length` bytes, without reading their attributes
+ first: one write block of the CNC's max axes per record, as many per
+ exchange as fit FANUC's budget (5 on a 30i with 32 axes, 10 on a 16i).
+ `length` ≤ 0 writes nothing. A record that does not fit in `length` is
+ EW_LENGTH before any traffic. A record of a type other than 0..4 is its
+ 4-byte header alone, sent without values (zeros; FANUC's library sends
+ the values of its previous block there). The CNC checks each write as
+ for cnc_wrparam; the first refused exchange ends the call with its
+ error (earlier exchanges stay written).
 
  # Safety
  `param` must point to `length` readable bytes.
