@@ -181,7 +181,10 @@ impl Machine {
         let mut out = Vec::new();
         for x in items {
             let a = range_axis(x, axis);
-            let bytes = self.table_read16(path, t, x.number, a)?.to_bytes();
+            // The axis word is the axis answered for, as in a 30i range.
+            let mut p = self.table_read16(path, t, x.number, a)?;
+            p.axis = a;
+            let bytes = p.to_bytes();
             let long = bytes.len() > block;
             out.extend(bytes);
             if long {
