@@ -1796,7 +1796,8 @@ short cnc_rdparam(unsigned short FlibHndl,
  Reads several parameters, all axes each, with their attributes. The
  numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
  x86-64 library does). A number the CNC does not know gets `type` -1 and
- nothing else. 8 parameters per exchange.
+ nothing else. As many parameters per exchange as FANUC's library asks
+ (8 on a 30i with 32 axes, 7 on a 16i, 4 on a Series 15).
 
  # Safety
  `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
