@@ -1824,7 +1824,8 @@ short cnc_rdparam(unsigned short FlibHndl,
  Reads several parameters, all axes each, with their attributes. The
  numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
  x86-64 library does). A number the CNC does not know gets `type` -1 and
- nothing else. 8 parameters per exchange.
+ nothing else. As many parameters per exchange as FANUC's library asks
+ (8 on a 30i with 32 axes, 7 on a 16i, 4 on a Series 15).
 
  # Safety
  `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
@@ -2410,13 +2411,15 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 /*
  Writes several parameters given as packed records (the format
- cnc_rdparar reads) in `length` bytes, 5 per exchange, without reading
- their attributes first. `length` ≤ 0 writes nothing. A record that does
- not fit in `length` is EW_LENGTH and a type other than 0..4 EW_ATTRIB,
- both before any traffic (FANUC's library sends unknown types as
- 4-byte records of stale data). The CNC checks each write as for
- cnc_wrparam; the first refused exchange ends the call with its error
- (earlier exchanges stay written).
+ cnc_rdparar reads) in `length` bytes, without reading their attributes
+ first: one write block of the CNC's max axes per record, as many per
+ exchange as fit FANUC's budget (5 on a 30i with 32 axes, 10 on a 16i).
+ `length` ≤ 0 writes nothing. A record that does not fit in `length` is
+ EW_LENGTH before any traffic. A record of a type other than 0..4 is its
+ 4-byte header alone, sent without values (zeros; FANUC's library sends
+ the values of its previous block there). The CNC checks each write as
+ for cnc_wrparam; the first refused exchange ends the call with its
+ error (earlier exchanges stay written).
 
  # Safety
  `param` must point to `length` readable bytes.

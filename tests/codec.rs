@@ -20,7 +20,7 @@ use fwlib32::proto::packet::{
     ReqSub, RespSub, decode_request, decode_response, encode_request, encode_response,
 };
 use fwlib32::proto::param::{
-    EXT_PER_FRAME, Param16, ParamInfo, ReadExt, ReadInfo, ReadOne, Table, WriteParam,
+    Param16, ParamInfo, ReadExt, ReadInfo, ReadOne, Table, WriteParam, ext_per_frame,
 };
 // --- program ---
 use fwlib32::proto::alarm::{self as pa, AlmMsg, OpMsg};
@@ -417,7 +417,7 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                         given.into_iter().take(n).collect()
                                     };
                                     let chunk = numbers
-                                        .chunks(EXT_PER_FRAME)
+                                        .chunks(ext_per_frame(&cx))
                                         .nth(req_k - 1)
                                         .unwrap_or(&[])
                                         .to_vec();
@@ -1085,9 +1085,16 @@ mod param_codec {
             for k in 0..c.len() {
                 prop_assert!(Packed::from_c(&c[..k], axes).is_err());
             }
-            let block = Param30::from_bytes(&r.to_block())?;
+            let block = Param30::from_bytes(&r.to_block(CncClass::Series30, WRITE_RECORDS_30))?;
             prop_assert_eq!(block.values.len(), WRITE_RECORDS_30);
-            prop_assert_eq!(Packed::of_block(&block, axes)?, r);
+            prop_assert_eq!(&Packed::of_block(&block, axes)?, &r);
+            // The 16i word block: 8 + 4 · max-axes bytes (a real for all
+            // axes needs two words a value: more than one block holds).
+            let block16 = r.to_block(CncClass::Series16 { kind: 1 }, WRITE_RECORDS_30);
+            prop_assert_eq!(block16.len(), 8 + 4 * WRITE_RECORDS_30);
+            if ptype != 4 || 2 * n <= WRITE_RECORDS_30 {
+                prop_assert_eq!(Packed::of_block16(&block16, axes)?, r);
+            }
         }
 
         #[test]

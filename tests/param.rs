@@ -716,20 +716,44 @@ fn wrparas_protection_and_local_checks() {
         unsafe { cnc_wrparas(h, 12, two.as_mut_ptr().cast()) },
         EW_LENGTH
     );
+    // A record of an unknown type is its 4-byte header alone (as FANUC's
+    // library reads it): the next 4 bytes are a bit record needing 5.
     let mut bad = rec(6711, 5, 0, &[0; 4]);
     assert_eq!(
         unsafe { cnc_wrparas(h, 8, bad.as_mut_ptr().cast()) },
-        EW_ATTRIB
+        EW_LENGTH
     );
     assert_eq!(part(h), 77);
 }
 
 #[test]
-fn rdparar_wrparas_series_16i_unknown() {
-    let (_s, h) = sim::start_alloc(profile(S16));
-    assert_eq!(rdr(h, 6700, 0, 6760, 100).0, EW_FUNC);
-    assert_eq!(wrs(h, &[rec(6711, 3, 0, &[1, 0, 0, 0])]), EW_FUNC);
-    assert_eq!(unsafe { rd_ok(h, 6711, 0).u.ldata }, 1234);
+fn rdparar_wrparas_series_16i() {
+    // The 16i word blocks (0x000e / 0x000f) carry what the 30i record
+    // blocks (0x008d / 0x008e) carry: the same packed records on both.
+    let s30: &[(&str, &str)] = &[
+        ("max_axes = 32", "max_axes = 8"),
+        ("param_write_enable = false", "param_write_enable = true"),
+        ("aut = 1 ", "aut = 0 "),
+    ];
+    let (_a, h30) = sim::start_alloc(profile(s30));
+    let (_b, h16) = sim::start_alloc(profile(S16));
+    for (s, axis, e, ok) in [
+        (6700, 0, 6760, true),
+        (1001, -1, 1500, true),
+        (1320, 1, 1330, true),
+        (0, 0, 9999, true),
+    ] {
+        // Room for the whole built-in table.
+        let a = rdr(h30, s, axis, e, 1000);
+        assert_eq!(a, rdr(h16, s, axis, e, 1000), "{s}..{e} axis {axis}");
+        assert_eq!(a.0 == EW_OK, ok, "{s}..{e} axis {axis}: {}", a.0);
+    }
+    // Writes: two 0x000f blocks of 8 + 4 · 8 bytes in one exchange.
+    let count = |v: i32| rec(6711, 3, 0, &v.to_le_bytes());
+    let seven = rec(6712, 3, 0, &7i32.to_le_bytes());
+    assert_eq!(wrs(h16, &[count(42), seven]), EW_OK);
+    assert_eq!(unsafe { rd_ok(h16, 6711, 0).u.ldata }, 42);
+    assert_eq!(unsafe { rd_ok(h16, 6712, 0).u.ldata }, 7);
 }
 
 /// A non-axis parameter read for all axes (cnc_rdparam(h, 6711, -1, 8, ..),

@@ -3,11 +3,11 @@
 use super::{ffi_boundary, nonnull, put};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
-use crate::ew::{EW_FUNC, EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_LENGTH, EW_NUMBER};
 use crate::proto::open::CncClass;
 use crate::proto::param::{
-    EXT_PER_FRAME, ExtRecord, InfoList, Item, Packed, ParamInfo, ReadExt, ReadInfo, ReadOne,
-    ReadRange, Table, WRPARAS_PER_FRAME, WriteParam, WriteSeveral, check_length, rdnum,
+    ExtRecord, InfoList, Item, Packed, ParamInfo, ReadExt, ReadInfo, ReadOne, ReadRange, Table,
+    WriteParam, WriteSeveral, block_len, check_length, ext_per_frame, rdnum, wrparas_per_frame,
 };
 use crate::types::{
     IODBPRM, IODBPRM_data, IODBPSD, ODBDGN, ODBDIAGIF, ODBDIAGNUM, ODBPARAIF, ODBPARANUM,
@@ -264,7 +264,8 @@ pub unsafe extern "C" fn cnc_rddiaginfo(
 }
 
 /// Reads `num` parameters (`table` Param) or diagnosis items into IODBPRM
-/// records: 8 numbers per exchange, each with its attributes and all-axes values.
+/// records: per number its attributes and all-axes values, as many numbers per
+/// exchange as FANUC's library asks ([`ext_per_frame`]: 8 on a 30i with 32 axes).
 ///
 /// # Safety
 /// `nos` must point to `num` 4-byte numbers, `out` to `num` IODBPRM records.
@@ -279,13 +280,14 @@ unsafe fn read_ext(
     let numbers: Vec<i32> = (0..num)
         .map(|i| unsafe { nos.add(i).read_unaligned() })
         .collect();
-    for (c, chunk) in numbers.chunks(EXT_PER_FRAME).enumerate() {
+    let per = ext_per_frame(&h.ctx());
+    for (c, chunk) in numbers.chunks(per).enumerate() {
         let (recs, err) = h.call(&ReadExt {
             table,
             numbers: chunk.to_vec(),
         })?;
         for (i, r) in recs.iter().enumerate() {
-            let k = c * EXT_PER_FRAME + i;
+            let k = c * per + i;
             let rec = unsafe { out.add(k) };
             let datano = numbers[k];
             unsafe { std::ptr::addr_of_mut!((*rec).datano).write_unaligned(datano) };
@@ -332,7 +334,8 @@ unsafe fn read_ext(
 /// Reads several parameters, all axes each, with their attributes. The
 /// numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
 /// x86-64 library does). A number the CNC does not know gets `type` -1 and
-/// nothing else. 8 parameters per exchange.
+/// nothing else. As many parameters per exchange as FANUC's library asks
+/// (8 on a 30i with 32 axes, 7 on a 16i, 4 on a Series 15).
 ///
 /// # Safety
 /// `prm_no` must point to `num` 32-bit numbers, `prm` to `num` writable IODBPRM.
@@ -448,13 +451,6 @@ pub unsafe extern "C" fn cnc_rdparar(
         if s > e {
             return Err(Error::local(EW_NUMBER, "start number above end number"));
         }
-        let class = h.ctx().class;
-        if class != CncClass::Series30 {
-            return Err(Error::local(
-                EW_FUNC,
-                "cnc_rdparar of a 16i-class CNC is not known",
-            ));
-        }
         let mut used = 0usize;
         let mut first: Option<i16> = None;
         let mut last: Option<i32> = None;
@@ -490,9 +486,10 @@ pub unsafe extern "C" fn cnc_rdparar(
             let Some(l) = last else {
                 return Err(Error::short("parameter range answer without a block"));
             };
-            // The CNC must move on; a number at or before the last request's
-            // start would make us ask the same again forever.
-            if l >= e || l < next {
+            // As FANUC's library: on from the last number + 1, even when the
+            // CNC went back (every record takes room in the buffer, so a CNC
+            // that does not move on ends in EW_LENGTH).
+            if l >= e {
                 break;
             }
             next = l + 1;
@@ -507,13 +504,15 @@ pub unsafe extern "C" fn cnc_rdparar(
 }
 
 /// Writes several parameters given as packed records (the format
-/// cnc_rdparar reads) in `length` bytes, 5 per exchange, without reading
-/// their attributes first. `length` ≤ 0 writes nothing. A record that does
-/// not fit in `length` is EW_LENGTH and a type other than 0..4 EW_ATTRIB,
-/// both before any traffic (FANUC's library sends unknown types as
-/// 4-byte records of stale data). The CNC checks each write as for
-/// cnc_wrparam; the first refused exchange ends the call with its error
-/// (earlier exchanges stay written).
+/// cnc_rdparar reads) in `length` bytes, without reading their attributes
+/// first: one write block of the CNC's max axes per record, as many per
+/// exchange as fit FANUC's budget (5 on a 30i with 32 axes, 10 on a 16i).
+/// `length` ≤ 0 writes nothing. A record that does not fit in `length` is
+/// EW_LENGTH before any traffic. A record of a type other than 0..4 is its
+/// 4-byte header alone, sent without values (zeros; FANUC's library sends
+/// the values of its previous block there). The CNC checks each write as
+/// for cnc_wrparam; the first refused exchange ends the call with its
+/// error (earlier exchanges stay written).
 ///
 /// # Safety
 /// `param` must point to `length` readable bytes.
@@ -530,13 +529,7 @@ pub unsafe extern "C" fn cnc_wrparas(
             return Ok(());
         }
         let cx = h.ctx();
-        let (class, axes) = (cx.class, cx.axes());
-        if class != CncClass::Series30 {
-            return Err(Error::local(
-                EW_FUNC,
-                "cnc_wrparas of a 16i-class CNC is not known",
-            ));
-        }
+        let axes = cx.axes();
         let buf = unsafe { std::slice::from_raw_parts(inp, length as usize) };
         let mut records = Vec::new();
         let mut at = 0;
@@ -545,7 +538,8 @@ pub unsafe extern "C" fn cnc_wrparas(
             records.push(r);
             at += n;
         }
-        for chunk in records.chunks(WRPARAS_PER_FRAME) {
+        let per = wrparas_per_frame(block_len(cx.class, cx.max_axes as usize));
+        for chunk in records.chunks(per) {
             h.call(&WriteSeveral {
                 records: chunk.to_vec(),
             })?;

@@ -45,8 +45,6 @@ pub const INFO_MAX: i32 = 178;
 pub const RDPARANUM: u16 = 0x0011;
 /// cnc_rddiagnum: the same for diagnosis data.
 pub const RDDIAGNUM: u16 = 0x0032;
-/// Items per frame of cnc_rdparam_ext / cnc_rddiag_ext.
-pub const EXT_PER_FRAME: usize = 8;
 
 /// Records of a 30i write payload (and of an all-axes 30i answer at most).
 pub const WRITE_RECORDS_30: usize = 32;
@@ -664,8 +662,96 @@ pub enum ExtRecord {
     },
 }
 
-/// Up to [`EXT_PER_FRAME`] numbers: per number its attribute record
-/// (0x00a0 / 0x00a2 [no, 1]) and its all-axes values (0x008d / 0x0093 [no, no, -1]).
+/// The attribute and value commands of cnc_rdparam_ext / cnc_rddiag_ext
+/// by class: 30i 0xa0 + 0x8d (diag 0xa2 + 0x93); 16i 0x10 + 0x0e (0x31 +
+/// 0x30); Series 15 0x8f + 0x8d (0x94 + 0x93).
+fn ext_cmds(table: Table, class: CncClass) -> (u16, u16) {
+    match (class, table) {
+        (CncClass::Series30, Table::Param) => (PARAMTYPE, RDPARAM),
+        (CncClass::Series30, Table::Diag) => (DIAGTYPE, DIAGNOSS),
+        (CncClass::Series16 { kind: 2 }, Table::Param) => (RDPARAINFO15, RDPARAM),
+        (CncClass::Series16 { kind: 2 }, Table::Diag) => (RDDIAGINFO15, DIAGNOSS),
+        (CncClass::Series16 { .. }, Table::Param) => (RDPARAINFO, RDPARAM16),
+        (CncClass::Series16 { .. }, Table::Diag) => (RDDIAGINFO, DIAGNOSS16),
+    }
+}
+
+/// Numbers per frame of cnc_rdparam_ext / cnc_rddiag_ext: as many as their
+/// answers fit in FANUC's budget (oracle: 8 on a 30i with 32 axes, 38 with
+/// one; 7 on a 16i with 32 axes, 24 with one; 4 on a Series 15 with 32).
+/// One number's answer: its two subpacket headers (16 bytes each), the
+/// attribute payload (30i 28 bytes, else one 16-byte info list) and the
+/// value block (8 bytes, then 8 (30i, Series 15) or 4 (16i) per axis).
+pub fn ext_per_frame(cx: &Ctx) -> usize {
+    let axes = cx.max_axes as usize;
+    let (budget, per) = match cx.class {
+        CncClass::Series30 => (2904, 68 + 8 * axes),
+        CncClass::Series16 { kind: 2 } => (1444, 56 + 8 * axes),
+        CncClass::Series16 { .. } => (1444, 56 + 4 * axes),
+    };
+    (budget / per).max(1)
+}
+
+/// IODBPRM axis, info and unit from an attribute answer (oracle, bit by
+/// bit). `attr` is the payload, at least [`ext_attr_len`] bytes.
+fn ext_fields(table: Table, class: CncClass, attr: &[u8]) -> (i16, i16, i16) {
+    let w16 = |at: usize| u16::from_be_bytes([attr[at], attr[at + 1]]);
+    match class {
+        CncClass::Series30 => {
+            let t = ParamType30 {
+                number: 0,
+                ptype: w16(12),
+                axis: w16(14),
+                unit_lo: w16(16),
+                unit_hi: w16(18),
+                kind: w16(20),
+                w22: w16(22),
+                flags: w16(24),
+                ..ParamType30::default()
+            };
+            match table {
+                Table::Param => (t.ext_axis(), t.ext_info_param(), t.ext_unit_param()),
+                Table::Diag => (t.ext_axis(), (t.flags & 1) as i16, t.unit_hi as i16),
+            }
+        }
+        // The info list's first entry: {number, attribute word}.
+        CncClass::Series16 { kind } => {
+            let a = i32::from_be_bytes([attr[12], attr[13], attr[14], attr[15]]);
+            let bit = |n: u32| (a >> n) & 1;
+            let v = match (kind, table) {
+                // Series 15: bits 3, 9, 10 axis; 4-8 info; 11-15 unit.
+                (2, Table::Param) => (bit(3) | (a >> 8) & 6, (a >> 4) & 0x1f, (a >> 11) & 0x1f),
+                // Series 15 diagnosis: bits 8-11 an axis code (0 none, 1..3
+                // → 2c - 1, more → 1); bit 4 info; bits 12-15 unit.
+                (2, Table::Diag) => {
+                    let c = (a >> 8) & 0xf;
+                    let axis = match c {
+                        0 => 0,
+                        1..=3 => 2 * c - 1,
+                        _ => 1,
+                    };
+                    (axis, bit(4), (a >> 12) & 0xf)
+                }
+                // 16i: bit 2 and bit 8 axis; bits 3-7 info; no unit.
+                (_, Table::Param) => (bit(2) | bit(8) << 1, (a >> 3) & 0x1f, 0),
+                (_, Table::Diag) => (bit(2), 0, 0),
+            };
+            (v.0 as i16, v.1 as i16, v.2 as i16)
+        }
+    }
+}
+
+/// Attribute bytes cnc_rdparam_ext uses: the 30i record up to its flags
+/// word (@24), else the info list's first entry.
+fn ext_attr_len(class: CncClass) -> usize {
+    match class {
+        CncClass::Series30 => 26,
+        CncClass::Series16 { .. } => 16,
+    }
+}
+
+/// Up to [`ext_per_frame`] numbers: per number its attributes and its
+/// all-axes values ([`ext_cmds`]: [no, 1] and [no, no, -1]).
 #[derive(Debug, Clone)]
 pub struct ReadExt {
     pub table: Table,
@@ -677,11 +763,7 @@ impl Call for ReadExt {
     /// records before it are still written, as FANUC's library does.
     type Output = (Vec<ExtRecord>, Option<Error>);
     fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
-        let (info, read) = match self.table {
-            Table::Param => (PARAMTYPE, RDPARAM),
-            Table::Diag => (DIAGTYPE, DIAGNOSS),
-        };
-        let _ = cx;
+        let (info, read) = ext_cmds(self.table, cx.class);
         self.numbers
             .iter()
             .flat_map(|n| {
@@ -694,43 +776,61 @@ impl Call for ReadExt {
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
         let count = cx.axes();
+        let number3 = |r: &Result<&RespSub>| {
+            matches!(
+                r,
+                Err(Error::Cnc {
+                    code: EW_NUMBER,
+                    ..
+                })
+            )
+        };
         let mut out = Vec::with_capacity(self.numbers.len());
         for (k, n) in self.numbers.iter().enumerate() {
             let one = || -> Result<ExtRecord> {
-                // An unknown number: error 3 in the value subpacket (FANUC's
-                // library) or, as our simulator answers, already in the attributes.
-                let t: ParamType30 = match payload(resp, 2 * k) {
-                    Err(Error::Cnc {
-                        code: EW_NUMBER, ..
-                    }) => return Ok(ExtRecord::Missing),
-                    r => r?,
-                };
-                let v = match sub(resp, 2 * k + 1) {
-                    Err(Error::Cnc {
-                        code: EW_NUMBER, ..
-                    }) => return Ok(ExtRecord::Missing),
-                    r => r?,
-                };
-                if t.number != *n {
+                let (a, v) = (sub(resp, 2 * k), sub(resp, 2 * k + 1));
+                // Error 3 (unknown number) in either subpacket: type -1;
+                // any other error is returned, the attributes' first.
+                if number3(&a) || number3(&v) {
                     return Ok(ExtRecord::Missing);
                 }
-                let p = Param30::from_bytes(&v.payload)?;
-                if p.values.len() < count {
-                    return Err(Error::short("fewer value records than the CNC's axes"));
+                let (a, v) = (&a?.payload, &v?.payload);
+                // The number asked must be the one answered (an answer too
+                // short to hold it is no answer for it).
+                if a.len() < 12 || i32::from_be_bytes([a[8], a[9], a[10], a[11]]) != *n {
+                    return Ok(ExtRecord::Missing);
                 }
-                let (info, unit) = match self.table {
-                    Table::Param => (t.ext_info_param(), t.ext_unit_param()),
-                    Table::Diag => ((t.flags & 1) as i16, t.unit_hi as i16),
-                };
+                if a.len() < ext_attr_len(cx.class) {
+                    return Err(Error::short("attribute answer shorter than its fields"));
+                }
+                if v.len() < 8 {
+                    return Err(Error::short("value answer shorter than its header"));
+                }
+                let ptype = i16::from_be_bytes([v[6], v[7]]);
+                let (axis, info, unit) = ext_fields(self.table, cx.class, a);
+                // Values of every axis from the block's byte 8: a 30i or
+                // Series 15 record {i32 value, i16 base, i16 decimals}, a
+                // 16i word (decimals 0). Values the block lacks read as 0.
+                let vals = &v[8..];
+                let data = (0..count)
+                    .map(|i| match cx.class {
+                        CncClass::Series16 { kind } if kind != 2 => vals
+                            .get(4 * i..4 * i + 4)
+                            .map_or((0, 0), |b| (i32::from_be_bytes(b.try_into().unwrap()), 0)),
+                        _ => vals.get(8 * i..8 * i + 8).map_or((0, 0), |b| {
+                            (
+                                i32::from_be_bytes([b[0], b[1], b[2], b[3]]),
+                                i16::from_be_bytes([b[6], b[7]]) as i32,
+                            )
+                        }),
+                    })
+                    .collect();
                 Ok(ExtRecord::Found {
-                    ptype: p.ptype as i16,
-                    axis: t.ext_axis(),
+                    ptype,
+                    axis,
                     info,
                     unit,
-                    data: p.values[..count]
-                        .iter()
-                        .map(|r| (r.value, r.exp as i32))
-                        .collect(),
+                    data,
                 })
             };
             match one() {
@@ -749,12 +849,17 @@ impl Call for ReadExt {
 // `(type << 8) | (axis & 0xff)`, then one value (or max-axes values for
 // axis -1) of the type's size (bit/byte 1, word 2, 2-word 4, real 8 =
 // value + decimals), each record padded to a multiple of 4 (padding bytes
-// are never written). On the wire both use the 30i block of cnc_rdparam /
-// cnc_wrparam ([`Param30`], 8 + 8 · max-axes bytes). Only the 30i class is
-// known (oracle findings); a 16i-class CNC gets EW_FUNC without traffic.
+// are never written). On the wire (oracle) both use blocks of the CNC's
+// max axes: on the 30i class and a Series 15 the 8-byte record block of
+// cnc_rdparam (0x008d / 0x008e, 8 + 8 · max-axes bytes), on the 16i class
+// the word block (0x000e / 0x000f, 8 + 4 · max-axes bytes; a real takes
+// two words).
 
-/// Blocks per 0x008e frame of cnc_wrparas (FANUC's library sends 5).
-pub const WRPARAS_PER_FRAME: usize = 5;
+/// How many [`Packed`] write blocks of `block` bytes cnc_wrparas puts in
+/// one frame (oracle: 5 of 264 bytes, 19 of 72, 10 of 136, 118 of 12).
+pub fn wrparas_per_frame(block: usize) -> usize {
+    (1416 / block.max(1)).max(1)
+}
 
 /// One parameter of the packed cnc_rdparar / cnc_wrparas buffer.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -798,8 +903,9 @@ impl Packed {
     }
     /// Reads one record from the start of `inp` (what `to_c` wrote) and
     /// returns it with the bytes it takes, padding included (the padding
-    /// of the last record may be missing). EW_ATTRIB for a type other than
-    /// 0..4, EW_LENGTH if the record does not fit in `inp`.
+    /// of the last record may be missing). A type other than 0..4 is a
+    /// record of its 4 header bytes, without values (as FANUC's library
+    /// reads it). EW_LENGTH if the record does not fit in `inp`.
     pub fn from_c(inp: &[u8], axes: usize) -> Result<(Packed, usize)> {
         if inp.len() < 4 {
             return Err(Error::local(EW_LENGTH, "a record does not fit in length"));
@@ -807,10 +913,15 @@ impl Packed {
         let number = i16::from_le_bytes([inp[0], inp[1]]);
         let axis = inp[2] as i8;
         let ptype = inp[3];
-        let e = Self::elem(ptype).ok_or(Error::local(
-            crate::ew::EW_ATTRIB,
-            "parameter type not 0..4",
-        ))?;
+        let Some(e) = Self::elem(ptype) else {
+            let r = Packed {
+                number,
+                axis,
+                ptype,
+                values: Vec::new(),
+            };
+            return Ok((r, 4));
+        };
         let n = Self::count(axis, axes);
         let end = 4 + n * e.size();
         if inp.len() < end {
@@ -848,25 +959,99 @@ impl Packed {
                 .collect(),
         })
     }
-    /// The 0x008e write block of the record (cnc_wrparam's payload).
-    pub fn to_block(&self) -> Vec<u8> {
-        WriteParam {
-            number: self.number as i32,
-            axis: self.axis as i16,
-            ptype: self.ptype as u16,
-            values: self.values.clone(),
+    /// The record of a 16i 0x000e answer block at the start of `inp`: its
+    /// values are read from byte 8 on, one word each (a real two: value,
+    /// decimals in the low half), past the block's end if the values need
+    /// it, as FANUC's library reads them (a real for all axes takes two
+    /// blocks' worth of words).
+    pub fn of_block16(inp: &[u8], axes: usize) -> Result<Packed> {
+        let short =
+            || Error::short("parameter block carries fewer values than its axis word needs");
+        if inp.len() < 8 {
+            return Err(short());
         }
-        .payload(CncClass::Series30, WRITE_RECORDS_30)
+        let number = i32::from_be_bytes([inp[0], inp[1], inp[2], inp[3]]);
+        let axis = i16::from_be_bytes([inp[4], inp[5]]);
+        let ptype = u16::from_be_bytes([inp[6], inp[7]]) as u8;
+        let real = Self::elem(ptype) == Some(Elem::Real);
+        let n = Self::count(axis as i8, axes);
+        let words = if real { 2 * n } else { n };
+        let body = inp.get(8..8 + 4 * words).ok_or_else(short)?;
+        let w = |i: usize| i32::from_be_bytes(body[4 * i..4 * i + 4].try_into().unwrap());
+        Ok(Packed {
+            number: number as i16,
+            axis: if axis < 0 { -1 } else { axis as i8 },
+            ptype,
+            values: (0..n)
+                .map(|i| {
+                    if real {
+                        Num {
+                            value: w(2 * i),
+                            dec: w(2 * i + 1) as i16 as i32,
+                        }
+                    } else {
+                        Num::int(w(i))
+                    }
+                })
+                .collect(),
+        })
+    }
+    /// The write block of the record: on the 30i class and a Series 15
+    /// the 0x008e block of `max_axes` 8-byte records (non-real: value, base
+    /// 0, decimals -1; real: value, base 10, decimals); on the 16i class
+    /// the 0x000f block of `max_axes` words (a real: value, then base 10 in
+    /// the high half and the decimals in the low half). Unused slots zero.
+    pub fn to_block(&self, class: CncClass, max_axes: usize) -> Vec<u8> {
+        let real = Self::elem(self.ptype) == Some(Elem::Real);
+        match class {
+            CncClass::Series16 { kind } if kind != 2 => {
+                let mut values: Vec<i32> = if real {
+                    self.values
+                        .iter()
+                        .flat_map(|n| [n.value, (BASE_10 as i32) << 16 | (n.dec & 0xffff)])
+                        .collect()
+                } else {
+                    self.values.iter().map(|n| n.value).collect()
+                };
+                values.resize(max_axes, 0);
+                Param16 {
+                    number: self.number as i32,
+                    axis: self.axis as i16,
+                    ptype: self.ptype as u16,
+                    values,
+                }
+                .to_bytes()
+            }
+            _ => {
+                let mut values: Vec<Value> =
+                    self.values.iter().map(|n| value_of_num(*n, real)).collect();
+                values.resize(max_axes, Value::default());
+                Param30 {
+                    number: self.number as i32,
+                    axis: self.axis as i16,
+                    ptype: self.ptype as u16,
+                    values,
+                }
+                .to_bytes()
+            }
+        }
     }
 }
 
-/// Size of one block of a 30i 0x008d answer / 0x008e write.
-pub fn block_len(max_axes: usize) -> usize {
-    8 + 8 * max_axes
+/// Size of one block of a cnc_rdparar answer / cnc_wrparas write: 8 + 8 ·
+/// max-axes bytes on the 30i class and a Series 15, 8 + 4 · max-axes on
+/// the 16i class.
+pub fn block_len(class: CncClass, max_axes: usize) -> usize {
+    match class {
+        CncClass::Series16 { kind } if kind != 2 => 8 + 4 * max_axes,
+        _ => 8 + 8 * max_axes,
+    }
 }
 
 /// One exchange of cnc_rdparar: [s, e, axis] → the records of the answer's
-/// whole blocks (8 + 8 · max-axes bytes each; a ragged tail is ignored).
+/// whole blocks ([`block_len`] each; a ragged tail is ignored). A CNC
+/// error 2 is read as an answer (its blocks are used), as FANUC's library
+/// reads it.
 #[derive(Debug, Clone, Copy)]
 pub struct ReadRange {
     pub start: i32,
@@ -876,31 +1061,48 @@ pub struct ReadRange {
 
 impl Call for ReadRange {
     type Output = Vec<Packed>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(
-            RDPARAM,
-            &[self.start, self.end, self.axis as i32],
-        )]
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let cmd = match cx.class {
+            CncClass::Series16 { kind } if kind != 2 => RDPARAM16,
+            _ => RDPARAM,
+        };
+        vec![ReqSub::cnc(cmd, &[self.start, self.end, self.axis as i32])]
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<Packed>> {
-        let s = sub(resp, 0)?;
+        let s = match sub(resp, 0) {
+            Err(Error::Cnc { code: 2, .. }) => &resp[0],
+            r => r?,
+        };
         let axes = cx.axes();
-        let size = block_len(cx.max_axes as usize);
+        let size = block_len(cx.class, cx.max_axes as usize);
         if s.payload.len() < size {
-            // FANUC's library then loops on a garbage number; we stop.
+            if s.error != 0 {
+                return sub(resp, 0).map(|_| Vec::new());
+            }
+            // FANUC's library then asks again from its last number + 1
+            // (number 1 before any record); we stop.
             return Err(Error::short(
                 "parameter range answer shorter than one block",
             ));
         }
-        s.payload
-            .chunks_exact(size)
-            .map(|c| Packed::of_block(&Param30::from_bytes(c)?, axes))
+        let n = s.payload.len() / size;
+        (0..n)
+            .map(|i| match cx.class {
+                CncClass::Series16 { kind } if kind != 2 => {
+                    Packed::of_block16(&s.payload[i * size..], axes)
+                }
+                _ => Packed::of_block(
+                    &Param30::from_bytes(&s.payload[i * size..(i + 1) * size])?,
+                    axes,
+                ),
+            })
             .collect()
     }
 }
 
-/// One frame of cnc_wrparas: up to [`WRPARAS_PER_FRAME`] records as
-/// consecutive 0x008e blocks in one subpacket.
+/// One frame of cnc_wrparas: up to [`wrparas_per_frame`] records as
+/// consecutive write blocks in one subpacket (0x008e on the 30i class and
+/// a Series 15, 0x000f on the 16i class).
 #[derive(Debug, Clone)]
 pub struct WriteSeveral {
     pub records: Vec<Packed>,
@@ -908,9 +1110,18 @@ pub struct WriteSeveral {
 
 impl Call for WriteSeveral {
     type Output = ();
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        let payload = self.records.iter().flat_map(Packed::to_block).collect();
-        vec![ReqSub::cnc(WRPARAM, &[]).with_payload(payload)]
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let max = cx.max_axes as usize;
+        let payload = self
+            .records
+            .iter()
+            .flat_map(|r| r.to_block(cx.class, max))
+            .collect();
+        let cmd = match cx.class {
+            CncClass::Series16 { kind } if kind != 2 => WRPARAM16,
+            _ => WRPARAM,
+        };
+        vec![ReqSub::cnc(cmd, &[]).with_payload(payload)]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
         sub(resp, 0).map(|_| ())

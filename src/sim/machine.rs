@@ -163,20 +163,21 @@ impl CncService for Machine {
         Ok(CncId(self.profile.cnc.cnc_id.clone()))
     }
 
-    fn param16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+    fn param16(&mut self, path: u16, number: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
         if self.profile.cnc.class != Class::Series16 {
             return Err(CncError::FUNC);
         }
         // The 16i-class FOCAS option probe (SPEC.md §3.4).
-        if number == OPTION_PARAM_16 {
+        if number == OPTION_PARAM_16 && e == number {
             return Ok(Param16 {
                 number,
                 axis,
                 ptype: 0,
                 values: vec![i32::from(self.profile.cnc.option), 0, 0, 0, 0, 0, 0, 0],
-            });
+            }
+            .to_bytes());
         }
-        self.table_read16(path, Table::Param, number, axis)
+        self.table_read16_range(path, Table::Param, number, e, axis)
     }
 
     // --- position ---
@@ -340,11 +341,11 @@ impl CncService for Machine {
         }
         self.table_read30(path, table, s, e, axis)
     }
-    fn diag16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+    fn diag16(&mut self, path: u16, s: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
         if self.profile.cnc.class != Class::Series16 {
             return Err(CncError::FUNC);
         }
-        self.table_read16(path, Table::Diag, number, axis)
+        self.table_read16_range(path, Table::Diag, s, e, axis)
     }
     fn param_type30(&mut self, _path: u16, table: Table, number: i32) -> Reply<ParamType30> {
         if self.profile.cnc.class != Class::Series30 {

@@ -118,11 +118,7 @@ impl Machine {
         }
         let mut out = Vec::new();
         for x in items {
-            let a = match (x.axis, axis) {
-                (_, -1) | (true, 0) => -1,
-                (false, _) => 0,
-                (true, a) => a,
-            };
+            let a = range_axis(x, axis);
             out.extend(block(x, a, self.read_values(path, x, a)?));
         }
         Ok(out)
@@ -147,6 +143,55 @@ impl Machine {
             ptype: x.kind.code(t),
             values,
         })
+    }
+
+    /// 16i read (0x000e / 0x0030) [s, e, axis] as answer bytes. `s == e`:
+    /// that item ([`Machine::table_read16`]). A range (cnc_rdparar): the
+    /// existing items from `s` on, at most [`RANGE_PER_ANSWER`] per answer,
+    /// each in its own form as in [`Machine::table_read30`], every block
+    /// 8 + 4 · max_axes bytes (FANUC's library steps through the answer by
+    /// that size). A real item for all axes takes two words a value, longer
+    /// than a block: the library reads its values on past the block, so it
+    /// ends its answer. EW_NUMBER if there is no item.
+    pub fn table_read16_range(
+        &self,
+        path: u16,
+        t: Table,
+        s: i32,
+        e: i32,
+        axis: i16,
+    ) -> Reply<Vec<u8>> {
+        if s == e {
+            return self.table_read16(path, t, s, axis).map(|p| p.to_bytes());
+        }
+        let n_axes = self.axes(path)?;
+        if axis < -1 || axis as i32 > n_axes as i32 {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        let block = 8 + 4 * self.profile.cnc.max_axes as usize;
+        let items: Vec<&Entry> = self
+            .table(t)
+            .iter()
+            .filter(|x| (s..=e).contains(&x.number))
+            .take(RANGE_PER_ANSWER)
+            .collect();
+        if items.is_empty() {
+            return Err(CncError::NUMBER);
+        }
+        let mut out = Vec::new();
+        for x in items {
+            let a = range_axis(x, axis);
+            // The axis word is the axis answered for, as in a 30i range.
+            let mut p = self.table_read16(path, t, x.number, a)?;
+            p.axis = a;
+            let bytes = p.to_bytes();
+            let long = bytes.len() > block;
+            out.extend(bytes);
+            if long {
+                break;
+            }
+        }
+        Ok(out)
     }
 
     /// 0x00a0 / 0x00a2: the 28-byte attribute record of one item (number
@@ -196,18 +241,20 @@ impl Machine {
         })
     }
 
-    /// 0x008e (30i) / 0x000f (16i, 8 + 4 · max_axes bytes): write parameters. A 30i
-    /// payload is one 264-byte block (cnc_wrparam) or several (cnc_wrparas
-    /// sends up to 5). Every block is checked before any is applied, so a
+    /// 0x008e (30i) / 0x000f (16i): write parameters. A payload is one
+    /// block (cnc_wrparam: 264 bytes on the 30i class, 8 + 4 · max_axes on
+    /// the 16i class) or several of 8 + 8 · max_axes / 8 + 4 · max_axes
+    /// bytes (cnc_wrparas). Every block is checked before any is applied, so a
     /// refused subpacket changes nothing and answers the first refusal (a
     /// real CNC is said to stop at the failing parameter, keeping the
     /// ones before it in the same subpacket).
     pub fn table_write(&mut self, path: u16, class16: bool, payload: &[u8]) -> Reply<Vec<u8>> {
-        let size = 8 + 8 * WRITE_RECORDS_30;
-        let blocks: Vec<&[u8]> = if class16 {
-            if payload.len() != 8 + 4 * self.profile.cnc.max_axes as usize {
-                return Err(err(ew::EW_LENGTH));
-            }
+        let max = self.profile.cnc.max_axes as usize;
+        // cnc_wrparam's 30i block has 32 records whatever the CNC's axes;
+        // cnc_wrparas's blocks have max-axes records (8-byte records on the
+        // 30i class, 4-byte words on the 16i class), several per subpacket.
+        let size = if class16 { 8 + 4 * max } else { 8 + 8 * max };
+        let blocks: Vec<&[u8]> = if !class16 && payload.len() == 8 + 8 * WRITE_RECORDS_30 {
             vec![payload]
         } else {
             if payload.is_empty() || payload.len() % size != 0 {
@@ -241,7 +288,16 @@ impl Machine {
     ) -> Reply<(i32, Vec<(usize, i32)>)> {
         let (number, axis, ptype, raw): (i32, i16, u16, Vec<(i32, i16)>) = if class16 {
             let p = Param16::from_bytes(payload).map_err(|_| err(ew::EW_LENGTH))?;
-            let v = p.values.iter().map(|v| (*v, 0)).collect();
+            // A 16i real takes two words: the value, the decimals in the
+            // low half of the second.
+            let v = if p.ptype == Kind::Real.code(Table::Param) {
+                p.values
+                    .chunks_exact(2)
+                    .map(|c| (c[0], c[1] as i16))
+                    .collect()
+            } else {
+                p.values.iter().map(|v| (*v, 0)).collect()
+            };
             (p.number, p.axis, p.ptype, v)
         } else {
             let p = Param30::from_bytes(payload).map_err(|_| err(ew::EW_LENGTH))?;
@@ -330,6 +386,17 @@ fn rescale(v: i32, from: i16, to: i16) -> Option<i32> {
         return None;
     };
     i32::try_from(x).ok()
+}
+
+/// The axis an item of a range read answers for when the range is asked
+/// with `axis`: -1 all axes; 0 a non-axis item its value and an axis item
+/// all axes; n an axis item its n-th value, a non-axis item its value.
+fn range_axis(x: &Entry, axis: i16) -> i16 {
+    match (x.axis, axis) {
+        (_, -1) | (true, 0) => -1,
+        (false, _) => 0,
+        (true, a) => a,
+    }
 }
 
 /// The axis word of the answer for an item asked with `axis`: a non-axis

@@ -7,7 +7,7 @@ use crate::proto::cmd;
 use crate::proto::described;
 use crate::proto::open::OpenBody;
 use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
-use crate::proto::param::{self, InfoList, NumRange, Param16, ParamType30, Table};
+use crate::proto::param::{self, InfoList, NumRange, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
 use crate::spec::Func;
@@ -87,7 +87,9 @@ pub trait CncService: Send {
         unsupported()
     }
     /// 16i-class parameter read (0x000e).
-    fn param16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+    /// 16i read of parameters (0x000e) [s, e, axis]: one item (`s == e`)
+    /// or a range (cnc_rdparar), as answer blocks.
+    fn param16(&mut self, path: u16, s: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
         unsupported()
     }
 
@@ -225,8 +227,8 @@ pub trait CncService: Send {
     ) -> Reply<Vec<u8>> {
         unsupported()
     }
-    /// 16i read of diagnosis data (0x0030); parameters go through `param16`.
-    fn diag16(&mut self, path: u16, number: i32, axis: i16) -> Reply<Param16> {
+    /// 16i read of diagnosis data (0x0030) [s, e, axis]; parameters go through `param16`.
+    fn diag16(&mut self, path: u16, s: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
         unsupported()
     }
     /// 30i attribute record of a parameter (0x00a0) or diagnosis item (0x00a2).
@@ -367,7 +369,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, cmd::SYSINFO15) => enc(svc.sysinfo15(p)),
             (CLASS_CNC, crate::proto::position::SPINDLE_SHOWN15) => enc(svc.spindle_shown15(p)),
             (CLASS_CNC, cmd::RDCNCID) => enc(svc.cnc_id()),
-            (CLASS_CNC, cmd::RDPARAM16) => enc(svc.param16(p, a[0], a[2] as i16)),
+            (CLASS_CNC, cmd::RDPARAM16) => svc.param16(p, a[0], a[1], a[2] as i16),
 
             // --- position ---
             (CLASS_CNC, crate::proto::position::ALARM) => enc(svc.alarm_bits(p)),
@@ -414,7 +416,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, param::DIAGNOSS) => {
                 svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16)
             }
-            (CLASS_CNC, param::DIAGNOSS16) => enc(svc.diag16(p, a[0], a[2] as i16)),
+            (CLASS_CNC, param::DIAGNOSS16) => svc.diag16(p, a[0], a[1], a[2] as i16),
             (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
             (CLASS_CNC, param::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
             (CLASS_CNC, param::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
