@@ -110,11 +110,10 @@ fn static_unwinder(out_dir: &Path) {
             Some((
                 ask("-print-file-name=libgcc_eh.a")?,
                 ask("-print-libgcc-file-name")?,
-                ask("-print-file-name=libm.so.6"),
             ))
         })
         .flatten();
-    let Some((eh, gcc, libm)) = archives else {
+    let Some((eh, gcc)) = archives else {
         println!("cargo:rustc-env=FWLIB32_STATIC_UNWINDER=0");
         return;
     };
@@ -128,18 +127,6 @@ fn static_unwinder(out_dir: &Path) {
             gcc.display()
         ),
     );
-    // Std asks for -lm too: where the toolchain does not pass --as-needed
-    // before it (Debian's rustc for aarch64), libm.so.6 would be loaded for
-    // nothing; as-needed by this script, it is named only if used.
-    if let Some(m) = libm {
-        write_if_changed(
-            &dir.join("libm.so"),
-            &format!(
-                "/* Written by build.rs: libm only if used. */\nINPUT ( AS_NEEDED ( \"{}\" ) )\n",
-                m.display()
-            ),
-        );
-    }
     println!("cargo:rustc-cdylib-link-arg=-L{}", dir.display());
     println!("cargo:rustc-env=FWLIB32_STATIC_UNWINDER=1");
 }
