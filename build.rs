@@ -427,13 +427,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
             .collect();
         s.push_str(&format!(
             r#"
-{doc}
-///
-/// # Safety
-{safety}
+{doc}{safety}
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn {name}(FlibHndl: c_ushort, {params}) -> c_short {{
+pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
     ffi_boundary!("{name}", {{
+        // SAFETY: the outputs are the caller's, as documented; none without pointers.
         unsafe {{
             exec(
                 &crate::spec::FUNCS[{i}],
@@ -448,9 +446,15 @@ pub unsafe extern "C" fn {name}(FlibHndl: c_ushort, {params}) -> c_short {{
 }}
 {checks}"#,
             doc = wrap_doc(f.doc),
-            safety = safety.join("\n"),
+            // Pointer parameters make the function unsafe to call.
+            safety = if outs.is_empty() {
+                String::new()
+            } else {
+                format!("\n///\n/// # Safety\n{}", safety.join("\n"))
+            },
+            unsafe_ = if outs.is_empty() { "" } else { "unsafe " },
             name = f.name,
-            params = params.join(", "),
+            params = params.iter().map(|p| format!(", {p}")).collect::<String>(),
             checks = checks.concat(),
             numbers = numbers.join(", "),
             out_ptrs = out_ptrs.join(", "),

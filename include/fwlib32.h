@@ -622,6 +622,16 @@ typedef struct ODBTLIFE2 {
 } ODBTLIFE2;
 
 /*
+ cnc_rdomhisinfo: the operator message history's size: most entries,
+ entries held, characters per message.
+ */
+typedef struct ODBOMIF {
+    unsigned short om_max;
+    unsigned short om_sum;
+    unsigned short om_char;
+} ODBOMIF;
+
+/*
  cnc_rdopmsg: one operator message (256-character variant).
  */
 typedef struct OPMSG {
@@ -1181,16 +1191,6 @@ typedef struct IODBPMC {
 } IODBPMC;
 
 /*
- cnc_rdomhisinfo: the operator message history's size: most entries,
- entries held, characters per message.
- */
-typedef struct ODBOMIF {
-    unsigned short om_max;
-    unsigned short om_sum;
-    unsigned short om_char;
-} ODBOMIF;
-
-/*
  FANUC's ULONG: 32 bits on every platform.
  */
 typedef uint32_t ULONG;
@@ -1296,6 +1296,16 @@ short cnc_allclibhndl4(const char *ip,
                        long timeout,
                        unsigned long id,
                        unsigned short *FlibHndl);
+
+/*
+ Clears the operator message history.
+ */
+short cnc_clearomhis(unsigned short FlibHndl);
+
+/*
+ Clears the operation history.
+ */
+short cnc_clearophis(unsigned short FlibHndl, short type);
 
 /*
  As cnc_upload, but returns EW_BUFFER instead of waiting when nothing
@@ -1765,6 +1775,31 @@ short cnc_rdngrp(unsigned short FlibHndl, struct ODBTLIFE2 *grp);
 short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool);
 
 /*
+ Reads the operator message history's size: most entries, entries held,
+ characters per message.
+
+ # Safety
+ `ominfo` must be NULL or point to a writable ODBOMIF.
+ */
+short cnc_rdomhisinfo(unsigned short FlibHndl, struct ODBOMIF *ominfo);
+
+/*
+ Reads the number of operator message history entries.
+
+ # Safety
+ `hisno` must be NULL or point to a writable unsigned short.
+ */
+short cnc_rdomhisno(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
+ Reads the number of operation history entries.
+
+ # Safety
+ `hisno` must be NULL or point to a writable unsigned short.
+ */
+short cnc_rdophisno(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
  Reads the operation mode word. An answer without a whole word writes
  nothing (EW_OK), as FANUC's library; further words are not written
  (FANUC's library writes them all, past the short).
@@ -2204,6 +2239,16 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
 
 /*
+ Starts recording the operator message history.
+ */
+short cnc_startomhis(unsigned short FlibHndl);
+
+/*
+ Starts recording the operation history.
+ */
+short cnc_startophis(unsigned short FlibHndl);
+
+/*
  Starts the library's log. `level` 0 = off, 1 = errors, 2 = every call,
  3 = every byte sent and received; `logfile` is created (truncated).
  Levels outside 0..=3 return EW_NUMBER (3) as FANUC's library does.
@@ -2233,6 +2278,16 @@ short cnc_statinfo(unsigned short FlibHndl, struct ODBST *statinfo);
  `statinfo` must point to a writable ODBST2.
  */
 short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
+
+/*
+ Stops recording the operator message history.
+ */
+short cnc_stopomhis(unsigned short FlibHndl);
+
+/*
+ Stops recording the operation history.
+ */
+short cnc_stopophis(unsigned short FlibHndl);
 
 /*
  Ends reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.

@@ -4,7 +4,9 @@
 //! ([`Machine::record_alarm`]).
 
 use super::Machine;
-pub use super::profile::history::{History, HistoryEntry, parse_time};
+pub use super::profile::history::{
+    History, HistoryEntry, Message, MessageHistory, Operation, OperationHistory, parse_time,
+};
 use super::service::{CncError, Reply};
 use crate::proto::alarm::{AlmHisRecord, AlmHistory, HIS_MSG_LEN};
 use crate::proto::offset::Count;
@@ -101,6 +103,86 @@ impl Machine {
     pub fn history_count(&mut self) -> Reply<Count> {
         Ok(Count {
             value: self.profile.alarm_history.entries.len() as i32,
+        })
+    }
+}
+
+/// Puts `e` first in a ring of `capacity` entries.
+fn push_newest<T>(entries: &mut Vec<T>, capacity: usize, e: T) {
+    entries.insert(0, e);
+    entries.truncate(capacity);
+}
+
+impl Machine {
+    /// Records an operation, newest first, when the operation history is
+    /// recording (cnc_startophis / cnc_stopophis).
+    pub fn record_operation(&mut self, kind: &str, number: i32, at: SystemTime) {
+        let h = &mut self.profile.operation_history;
+        if h.recording {
+            let e = Operation {
+                kind: kind.to_string(),
+                number,
+                time: format_time(at),
+            };
+            push_newest(&mut h.entries, h.capacity, e);
+        }
+    }
+
+    /// The operator messages on display at power-on enter the operator
+    /// message history once, at the first advance.
+    pub(crate) fn seed_messages(&mut self, at: SystemTime) {
+        if std::mem::replace(&mut self.profile.operator_message_history.seeded, true) {
+            return;
+        }
+        let shown: Vec<(i32, String)> = self
+            .profile
+            .paths
+            .iter()
+            .flat_map(|p| p.opmsgs.iter().map(|m| (m.number, m.text.clone())))
+            .collect();
+        let h = &mut self.profile.operator_message_history;
+        for (number, text) in shown {
+            if h.recording {
+                let text: String = text.chars().take(h.chars).collect();
+                let e = Message {
+                    number,
+                    text,
+                    time: format_time(at),
+                };
+                push_newest(&mut h.entries, h.capacity, e);
+            }
+        }
+    }
+
+    /// The answers of the history functions described as data
+    /// (src/spec/table.rs): counts and sizes, and the record/clear commands.
+    pub(crate) fn history_answer(&mut self, name: &str) -> Option<Vec<i64>> {
+        let ops = &mut self.profile.operation_history;
+        let oms = &mut self.profile.operator_message_history;
+        let count = |n: usize| vec![n.min(usize::from(u16::MAX)) as i64];
+        Some(match name {
+            "cnc_rdophisno" => count(ops.entries.len()),
+            "cnc_startophis" | "cnc_stopophis" => {
+                ops.recording = name == "cnc_startophis";
+                Vec::new()
+            }
+            "cnc_clearophis" => {
+                ops.entries.clear();
+                Vec::new()
+            }
+            "cnc_rdomhisno" => count(oms.entries.len()),
+            "cnc_rdomhisinfo" => [oms.capacity, oms.entries.len(), oms.chars]
+                .map(|n| n.min(usize::from(u16::MAX)) as i64)
+                .to_vec(),
+            "cnc_startomhis" | "cnc_stopomhis" => {
+                oms.recording = name == "cnc_startomhis";
+                Vec::new()
+            }
+            "cnc_clearomhis" => {
+                oms.entries.clear();
+                Vec::new()
+            }
+            _ => return None,
         })
     }
 }

@@ -485,7 +485,7 @@ impl CncService for Machine {
                 let c = &self.profile.cnc;
                 Ok(vec![c.ether_type.into(), c.ether_device.into()])
             }
-            _ => Err(CncError::FUNC),
+            name => self.history_answer(name).ok_or(CncError::FUNC),
         }
     }
 

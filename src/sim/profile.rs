@@ -49,6 +49,11 @@ pub struct Profile {
     /// The alarm history (src/sim/history.rs).
     #[serde(default)]
     pub alarm_history: history::History,
+    /// The operation and operator-message histories (src/sim/history.rs).
+    #[serde(default)]
+    pub operation_history: history::OperationHistory,
+    #[serde(default)]
+    pub operator_message_history: history::MessageHistory,
     // --- tool ---
 
     // --- upload ---

@@ -489,6 +489,10 @@ impl Machine {
         self.now = now;
         let since = now.saturating_duration_since(self.started);
         let t = since.as_secs_f64();
+        let power_on = std::time::SystemTime::now()
+            .checked_sub(since)
+            .unwrap_or(std::time::UNIX_EPOCH);
+        self.seed_messages(power_on);
         let mut raised: Vec<(u16, Alarm, Duration)> = Vec::new();
         for i in 0..self.run.len() {
             self.advance_path(i, t, &mut raised);
@@ -528,6 +532,7 @@ impl Machine {
             .checked_sub(ago)
             .unwrap_or(std::time::UNIX_EPOCH);
         self.record_alarm(alarm.number, alarm.kind, alarm.axis, &alarm.message, at);
+        self.record_operation("alarm", alarm.number, at);
     }
 
     fn advance_path(&mut self, i: usize, t: f64, raised: &mut Vec<(u16, Alarm, Duration)>) {

@@ -8,6 +8,19 @@
 use super::types::Int::*;
 use super::types::*;
 
+/// A history command: no argument, no answer.
+const HISTORY_COMMAND: Func = Func {
+    name: "",
+    doc: "",
+    params: &[],
+    checks: &[],
+    forms: &[],
+    reply: &[],
+    records: None,
+    short: Short::Zeros,
+    dims: &[],
+};
+
 /// A servo figure of each axis into `long data[]`: the value word of each
 /// 0x0056 value record (value, then base and exponent).
 const SERVO_LONGS: Func = Func {
@@ -239,6 +252,82 @@ pub const FUNCS: &[Func] = &[
         records: None,
         short: Short::Zeros,
         dims: &[],
+    },
+    // --- operation and operator-message histories ---
+    Func {
+        name: "cnc_rdophisno",
+        doc: "Reads the number of operation history entries.",
+        params: &[Param::Out("hisno", "unsigned short")],
+        forms: &[every_class(0x0069, &[])],
+        reply: &[to(I32, "", U16)],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_startophis",
+        doc: "Starts recording the operation history.",
+        forms: &[every_class(0x0068, &[])],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_stopophis",
+        doc: "Stops recording the operation history.",
+        forms: &[every_class(0x0067, &[])],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_clearophis",
+        doc: "Clears the operation history.",
+        params: &[Param::Short("type")],
+        forms: &[every_class(0x006d, &[Word::Arg(0)])],
+        dims: &["0|1|2|-1|3"],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_rdomhisno",
+        doc: "Reads the number of operator message history entries.",
+        params: &[Param::Out("hisno", "unsigned short")],
+        forms: &[every_class(0x01b4, &[])],
+        reply: &[to(U16, "", U16)],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_rdomhisinfo",
+        doc: "Reads the operator message history's size: most entries, entries held, characters per message.",
+        params: &[Param::Out("ominfo", "ODBOMIF")],
+        forms: &[every_class(0x0072, &[])],
+        reply: &[
+            to(I32, "om_max", U16),
+            to(I32, "om_sum", U16),
+            to(I32, "om_char", U16),
+        ],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_startomhis",
+        doc: "Starts recording the operator message history.",
+        forms: &[every_class(0x0071, &[])],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_stopomhis",
+        doc: "Stops recording the operator message history.",
+        forms: &[every_class(0x0070, &[])],
+        ..HISTORY_COMMAND
+    },
+    Func {
+        name: "cnc_clearomhis",
+        doc: "Clears the operator message history.",
+        // The 30i class names the history to clear (2); the 16i sends 0.
+        forms: &[
+            Form {
+                classes: Classes::S30,
+                class: 1,
+                cmd: 0x0074,
+                words: &[Word::Const(2)],
+            },
+            every_class(0x0074, &[]),
+        ],
+        ..HISTORY_COMMAND
     },
     // --- tool life ---
     Func {

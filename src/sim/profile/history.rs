@@ -74,3 +74,78 @@ impl History {
         Ok(())
     }
 }
+
+/// `[operation_history]`: what was done at the machine, newest first
+/// (cnc_rdophisno, cnc_startophis / cnc_stopophis / cnc_clearophis). The
+/// simulator records the alarms the running machine raises.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OperationHistory {
+    /// Entries kept; the oldest is dropped when a new one arrives.
+    pub capacity: usize,
+    /// Whether new operations are recorded (cnc_startophis / cnc_stopophis).
+    pub recording: bool,
+    /// `[[operation_history.entry]]`, newest first.
+    #[serde(rename = "entry")]
+    pub entries: Vec<Operation>,
+}
+
+impl Default for OperationHistory {
+    fn default() -> Self {
+        OperationHistory {
+            capacity: 100,
+            recording: true,
+            entries: Vec::new(),
+        }
+    }
+}
+
+/// One operation: what (`"alarm"`), its number, when ("YYYY-MM-DD hh:mm:ss").
+#[derive(Debug, Clone, Deserialize, Default, PartialEq, Eq)]
+#[serde(deny_unknown_fields, default)]
+pub struct Operation {
+    pub kind: String,
+    pub number: i32,
+    pub time: String,
+}
+
+/// `[operator_message_history]`: the operator messages that appeared,
+/// newest first (cnc_rdomhisno, cnc_rdomhisinfo, cnc_startomhis ...): the
+/// profile's messages on display at power-on are its first entries.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct MessageHistory {
+    /// Entries kept; the oldest is dropped when a new one arrives.
+    pub capacity: usize,
+    /// Characters kept of each message.
+    pub chars: usize,
+    /// Whether new messages are recorded (cnc_startomhis / cnc_stopomhis).
+    pub recording: bool,
+    /// `[[operator_message_history.entry]]`, newest first.
+    #[serde(rename = "entry")]
+    pub entries: Vec<Message>,
+    /// The messages on display at power-on are in (the first advance).
+    #[serde(skip)]
+    pub seeded: bool,
+}
+
+impl Default for MessageHistory {
+    fn default() -> Self {
+        MessageHistory {
+            capacity: 50,
+            chars: 255,
+            recording: true,
+            entries: Vec::new(),
+            seeded: false,
+        }
+    }
+}
+
+/// One operator message: its number, text and when it appeared.
+#[derive(Debug, Clone, Deserialize, Default, PartialEq, Eq)]
+#[serde(deny_unknown_fields, default)]
+pub struct Message {
+    pub number: i32,
+    pub text: String,
+    pub time: String,
+}
