@@ -2501,6 +2501,34 @@ short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length
 short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
 
 /*
+ Reads the PMC unit this handle's PMC calls address (1 until one is
+ selected), without traffic. Writes 4 bytes into the `long`.
+
+ # Safety
+ `unittype` must be NULL or point to 4 writable bytes.
+ */
+short pmc_get_current_pmc_unit(unsigned short FlibHndl, long *unittype);
+
+/*
+ Reads how many PMC units the CNC has (4 bytes written into the `long`).
+
+ # Safety
+ `piNum` must be NULL or point to a writable long.
+ */
+short pmc_get_number_of_pmc(unsigned short FlibHndl, long *piNum);
+
+/*
+ Reads the types of the CNC's PMC units: `*count` in is the room in
+ `unittypes` (4 bytes per `long`), out the number written; an answer
+ with none leaves `*count` as it was, as FANUC's library does.
+
+ # Safety
+ `count` must point to 4 readable and writable bytes, `unittypes` to
+ `*count` writable 4-byte elements.
+ */
+short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *count);
+
+/*
  The detail of the last PMC error on this handle (pmc_* functions only;
  cnc_getdtailerr keeps the CNC's).
 
@@ -2543,6 +2571,12 @@ short pmc_rdpmcrng(unsigned short FlibHndl,
                    unsigned short e_number,
                    unsigned short length,
                    struct IODBPMC *buf);
+
+/*
+ Selects the PMC unit of type `unittype` for this handle's later PMC calls
+ (the CNC is asked first; on its refusal the selection stays).
+ */
+short pmc_select_pmc_unit(unsigned short FlibHndl, long unittype);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

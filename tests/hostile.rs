@@ -508,6 +508,16 @@ const PROBES: &[Probe] = &[
             cnc_rdtofsinfo2(h, o.p())
         })
     }),
+    ("pmc_get_number_of_pmc", |h| {
+        one(4, |o| unsafe { pmc_get_number_of_pmc(h, o.p::<c_long>()) })
+    }),
+    ("pmc_get_pmc_unit_types", |h| {
+        let mut count = Out::new(4);
+        unsafe { count.p::<i32>().write_unaligned(4) };
+        let mut types = Out::new(16);
+        let r = unsafe { pmc_get_pmc_unit_types(h, types.p::<c_long>(), count.p::<c_long>()) };
+        (r, vec![types, count])
+    }),
     ("cnc_rdngrp", |h| {
         one(size::<ODBTLIFE2>(), |o| unsafe { cnc_rdngrp(h, o.p()) })
     }),

@@ -262,3 +262,51 @@ fn pmc_info_datano_is_the_count_of_records_written() {
     assert_eq!(&b[2 + 6 * n..], &vec![0xCC; b.len() - 2 - 6 * n][..]);
     sim::free(h);
 }
+
+/// The built-in profile has two PMC units: a handle's selection addresses
+/// its own later PMC calls (the path word of PMC subpackets), each unit its
+/// own memory; other handles keep unit 1.
+#[test]
+fn pmc_units_are_selected_per_handle() {
+    let s = start();
+    let h = sim::alloc(&s);
+    let other = sim::alloc(&s);
+    let mut n = [0i32; 2];
+    assert_eq!(
+        unsafe { pmc_get_number_of_pmc(h, n.as_mut_ptr().cast()) },
+        EW_OK
+    );
+    assert_eq!(n[0], 2);
+    let (mut types, mut count) = ([-1i32; 4], [4i32, -1]);
+    assert_eq!(
+        unsafe { pmc_get_pmc_unit_types(h, types.as_mut_ptr().cast(), count.as_mut_ptr().cast()) },
+        EW_OK
+    );
+    assert_eq!((count, &types[..3]), ([2, -1], &[1, 2, -1][..]));
+    let current = |h| {
+        let mut u = [-1i32; 2];
+        assert_eq!(
+            unsafe { pmc_get_current_pmc_unit(h, u.as_mut_ptr().cast()) },
+            EW_OK
+        );
+        u[0]
+    };
+    assert_eq!(current(h), 1);
+
+    let d0 = data(h, D, WORD, 100, 101);
+    assert_eq!(pmc_select_pmc_unit(h, 2), EW_OK);
+    assert_eq!((current(h), current(other)), (2, 1));
+    assert_eq!(data(h, D, WORD, 100, 101), [0, 0], "unit 2 starts zeroed");
+    assert_eq!(write(h, D, WORD, 100, 101, &0x0a0bu16.to_le_bytes()), EW_OK);
+    assert_eq!(data(h, D, WORD, 100, 101), 0x0a0bu16.to_le_bytes());
+    assert_eq!(data(other, D, WORD, 100, 101), d0, "unit 1 unchanged");
+    // A unit the CNC lacks: refused, the selection stays.
+    assert_eq!(pmc_select_pmc_unit(h, 3), EW_NOPMC);
+    assert_eq!(current(h), 2);
+    assert_eq!(pmc_select_pmc_unit(h, 1), EW_OK);
+    assert_eq!(data(h, D, WORD, 100, 101), d0);
+    assert_eq!(
+        unsafe { pmc_get_current_pmc_unit(h, std::ptr::null_mut()) },
+        EW_DATA
+    );
+}

@@ -32,6 +32,9 @@ pub struct HandleState {
     /// it first (FANUC's library, and ours by default, answer EW_SOCKET
     /// until every handle is freed).
     pub reconnect: bool,
+    /// The PMC unit the handle's PMC requests address (pmc_select_pmc_unit;
+    /// FANUC's library starts at 1): the path word of PMC subpackets.
+    pub pmc_unit: u16,
 }
 
 pub struct Handle {
@@ -71,6 +74,7 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
                 detail_frozen: false,
                 pmc_detail: (0, 0),
                 reconnect: false,
+                pmc_unit: 1,
             }),
         }),
     );

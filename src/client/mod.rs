@@ -49,9 +49,9 @@ impl Handle {
     /// torn-down pair is first reconnected within that same time when the
     /// handle asked for it (fwlib_set_reconnect).
     fn exchange<C: Call>(&self, c: &C) -> Result<C::Output> {
-        let (path, timeout, reconnect) = {
+        let (path, timeout, reconnect, unit) = {
             let s = self.state.lock();
-            (s.path, s.timeout, s.reconnect)
+            (s.path, s.timeout, s.reconnect, s.pmc_unit)
         };
         let deadline = Deadline::after_secs(timeout);
         if reconnect && self.pair.is_dead() {
@@ -59,7 +59,7 @@ impl Handle {
             // A new connection: cnc_getdtailerr reports again.
             self.state.lock().detail_frozen = false;
         }
-        self.pair.call(c, path, deadline)
+        self.pair.call(c, path, unit, deadline)
     }
 
     fn clear_detail(&self) {

@@ -9,7 +9,7 @@ use crate::error::{Error, Result, detail};
 use crate::proto::call::{self, Call, Ctx};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use crate::proto::open::{CncClass, OpenBody};
-use crate::proto::packet::ReqSub;
+use crate::proto::packet::{CLASS_PMC, ReqSub};
 use crate::proto::param::Param16;
 use crate::proto::status::{SysInfo, sysinfo_at_connect};
 use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
@@ -349,11 +349,23 @@ impl Pair {
     /// Sends `c`'s subpackets on connection 2 with the handle's path and
     /// decodes the answer (still holding the connection: the answer is
     /// read into its reused buffers). One exchange at a time per pair.
-    pub fn call<C: Call>(&self, c: &C, path: u16, deadline: Deadline) -> Result<C::Output> {
+    ///
+    /// CNC subpackets without a path get the handle's `path`; PMC
+    /// subpackets carry the handle's selected PMC unit (`pmc_unit`, 1 until
+    /// pmc_select_pmc_unit), as FANUC's library sends them.
+    pub fn call<C: Call>(
+        &self,
+        c: &C,
+        path: u16,
+        pmc_unit: u16,
+        deadline: Deadline,
+    ) -> Result<C::Output> {
         let cx = self.info.ctx(path);
         let mut subs = c.request(&cx);
         for s in &mut subs {
-            if s.path == 0 {
+            if s.class == CLASS_PMC {
+                s.path = pmc_unit;
+            } else if s.path == 0 {
                 s.path = path;
             }
         }

@@ -5,11 +5,12 @@ use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::pmc::{
-    PMCINFO_MAX, PmcRange, ReadPmc, WritePmc, elem_size, rdpmcinfo, swap_elements,
+    PMCINFO_MAX, PmcRange, ReadPmc, SelectUnit, UnitTypes, WritePmc, elem_size, rdpmcinfo,
+    swap_elements,
 };
 use crate::types::{IODBPMC, ODBPMCERR, ODBPMCINF, ODBPMCINF_info};
 use std::os::raw::c_char;
-use std::os::raw::{c_short, c_ushort};
+use std::os::raw::{c_long, c_short, c_ushort};
 use std::ptr::addr_of_mut;
 
 /// Bytes of IODBPMC before the data.
@@ -173,6 +174,75 @@ pub unsafe extern "C" fn pmc_rdpmcinfo(
                     last_num: a.last as c_ushort,
                 };
                 put(dst.add(i), rec);
+            }
+        }
+        Ok(())
+    })
+}
+
+// ---------------------------------------------------------------------------
+// PMC units: after pmc_select_pmc_unit the handle's PMC requests address the
+// selected unit (their path word), as FANUC's library sends them.
+// ---------------------------------------------------------------------------
+
+/// Selects the PMC unit of type `unittype` for this handle's later PMC calls
+/// (the CNC is asked first; on its refusal the selection stays).
+#[unsafe(no_mangle)]
+pub extern "C" fn pmc_select_pmc_unit(FlibHndl: c_ushort, unittype: c_long) -> c_short {
+    ffi_boundary!("pmc_select_pmc_unit", {
+        let h = handles::get(FlibHndl)?;
+        let unit = unittype as i32;
+        h.call_pmc(&SelectUnit { unit })?;
+        h.state.lock().pmc_unit = unit as u16;
+        Ok(())
+    })
+}
+
+/// Reads the PMC unit this handle's PMC calls address (1 until one is
+/// selected), without traffic. Writes 4 bytes into the `long`.
+///
+/// # Safety
+/// `unittype` must be NULL or point to 4 writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_get_current_pmc_unit(
+    FlibHndl: c_ushort,
+    unittype: *mut c_long,
+) -> c_short {
+    ffi_boundary!("pmc_get_current_pmc_unit", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(unittype)?.cast::<i32>();
+        let unit = h.state.lock().pmc_unit;
+        unsafe { put(out, i32::from(unit)) };
+        Ok(())
+    })
+}
+
+/// Reads the types of the CNC's PMC units: `*count` in is the room in
+/// `unittypes` (4 bytes per `long`), out the number written; an answer
+/// with none leaves `*count` as it was, as FANUC's library does.
+///
+/// # Safety
+/// `count` must point to 4 readable and writable bytes, `unittypes` to
+/// `*count` writable 4-byte elements.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_get_pmc_unit_types(
+    FlibHndl: c_ushort,
+    unittypes: *mut c_long,
+    count: *mut c_long,
+) -> c_short {
+    ffi_boundary!("pmc_get_pmc_unit_types", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(unittypes)?.cast::<i32>();
+        let count = nonnull(count)?.cast::<i32>();
+        let room = unsafe { count.read_unaligned() };
+        let types = h.call_pmc(&UnitTypes { most: room })?;
+        let n = types.len().min(room.max(0) as usize);
+        unsafe {
+            for (i, t) in types.iter().take(n).enumerate() {
+                put(out.add(i), *t);
+            }
+            if n > 0 {
+                put(count, n as i32);
             }
         }
         Ok(())

@@ -153,3 +153,49 @@ impl super::wire::Wire for PmcInfo {
 pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
     super::call::Single::new(ReqSub::pmc(RDPMCINFO, &[i32::from(adr_type)]))
 }
+
+// ---------------------------------------------------------------------------
+// PMC units (pmc_get_number_of_pmc is described in src/spec/table.rs)
+// ---------------------------------------------------------------------------
+
+/// pmc_get_pmc_unit_types: (2,0x800f)[most]; the answer is i32 unit types.
+pub const UNIT_TYPES: u16 = 0x800f;
+/// pmc_select_pmc_unit: (2,0x800c)[unit type]; no answer payload.
+pub const SELECT_UNIT: u16 = 0x800c;
+
+/// pmc_get_pmc_unit_types: up to `most` unit types, as many whole i32 as
+/// the answer holds.
+#[derive(Debug, Clone, Copy)]
+pub struct UnitTypes {
+    pub most: i32,
+}
+
+impl Call for UnitTypes {
+    type Output = Vec<i32>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::pmc(UNIT_TYPES, &[self.most])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i32>> {
+        Ok(sub(resp, 0)?
+            .payload
+            .chunks_exact(4)
+            .map(|c| i32::from_be_bytes([c[0], c[1], c[2], c[3]]))
+            .collect())
+    }
+}
+
+/// pmc_select_pmc_unit: the CNC's answer is its error code alone.
+#[derive(Debug, Clone, Copy)]
+pub struct SelectUnit {
+    pub unit: i32,
+}
+
+impl Call for SelectUnit {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::pmc(SELECT_UNIT, &[self.unit])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        sub(resp, 0).map(|_| ())
+    }
+}

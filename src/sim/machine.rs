@@ -400,16 +400,29 @@ impl CncService for Machine {
     }
 
     // --- pmc ---
-    fn read_pmc(&mut self, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
-        self.profile.pmc.read(&range)
+    fn read_pmc(&mut self, unit: u16, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
+        self.profile.pmc.read(unit, &range)
     }
 
-    fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
-        self.profile.pmc.write(&range, data)
+    fn write_pmc(
+        &mut self,
+        unit: u16,
+        range: crate::proto::pmc::PmcRange,
+        data: &[u8],
+    ) -> Reply<()> {
+        self.profile.pmc.write(unit, &range, data)
     }
 
-    fn pmc_info(&mut self, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
-        Ok(self.profile.pmc.info(adr_type))
+    fn pmc_info(&mut self, unit: u16, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
+        self.profile.pmc.info(unit, adr_type)
+    }
+
+    fn pmc_unit_types(&mut self, most: i32) -> Reply<Vec<i32>> {
+        Ok(self.profile.pmc.unit_types(most))
+    }
+
+    fn pmc_select(&mut self, unit: i32) -> Reply<()> {
+        self.profile.pmc.select(unit)
     }
 
     // --- offset ---
@@ -479,6 +492,7 @@ impl CncService for Machine {
                     .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
                     .collect())
             }
+            "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
             "cnc_rdetherinfo" => {

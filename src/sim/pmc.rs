@@ -102,16 +102,24 @@ impl PmcArea {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(try_from = "PmcToml")]
 pub struct Pmc {
+    /// The areas of PMC unit 1 (the profile's `[pmc.area.*]`).
     pub areas: Vec<PmcArea>,
+    /// Units 2.. (`[pmc] units = n`): the standard areas, zeroed.
+    pub extra: Vec<Vec<PmcArea>>,
+}
+
+fn standard_areas() -> Vec<PmcArea> {
+    STANDARD
+        .iter()
+        .map(|(l, r, w)| PmcArea::new(l, r.to_vec(), *w))
+        .collect()
 }
 
 impl Default for Pmc {
     fn default() -> Self {
         Pmc {
-            areas: STANDARD
-                .iter()
-                .map(|(l, r, w)| PmcArea::new(l, r.to_vec(), *w))
-                .collect(),
+            areas: standard_areas(),
+            extra: Vec::new(),
         }
     }
 }
@@ -119,6 +127,8 @@ impl Default for Pmc {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct PmcToml {
+    /// How many PMC units the CNC has (pmc_get_number_of_pmc), 1 to 8.
+    units: Option<usize>,
     #[serde(default)]
     area: BTreeMap<String, AreaToml>,
 }
@@ -137,6 +147,11 @@ impl TryFrom<PmcToml> for Pmc {
     type Error = String;
     fn try_from(t: PmcToml) -> Result<Pmc, String> {
         let mut pmc = Pmc::default();
+        match t.units {
+            Some(n @ 1..=8) => pmc.extra = (1..n).map(|_| standard_areas()).collect(),
+            Some(n) => return Err(format!("[pmc] units = {n}: 1 to 8")),
+            None => {}
+        }
         for (letter, a) in t.area {
             if !AREA_TYPES.iter().any(|x| x.0 == letter) {
                 return Err(format!(
@@ -195,11 +210,50 @@ impl Pmc {
         self.areas.iter_mut().find(|a| a.letter == letter)
     }
 
+    /// How many PMC units the CNC has.
+    pub fn units(&self) -> usize {
+        1 + self.extra.len()
+    }
+
+    /// The areas of unit `unit` (1..): EW_NOPMC for a unit the CNC lacks.
+    fn unit(&self, unit: u16) -> Reply<&Vec<PmcArea>> {
+        match unit {
+            1 => Ok(&self.areas),
+            n => (self.extra)
+                .get(usize::from(n).wrapping_sub(2))
+                .ok_or(CncError::new(ew::EW_NOPMC)),
+        }
+    }
+
+    fn unit_mut(&mut self, unit: u16) -> Reply<&mut Vec<PmcArea>> {
+        match unit {
+            1 => Ok(&mut self.areas),
+            n => (self.extra)
+                .get_mut(usize::from(n).wrapping_sub(2))
+                .ok_or(CncError::new(ew::EW_NOPMC)),
+        }
+    }
+
+    /// Command 0x800f[most]: the unit types (1, 2 ...), at most `most`.
+    pub fn unit_types(&self, most: i32) -> Vec<i32> {
+        (1..=self.units() as i32)
+            .take(most.max(0) as usize)
+            .collect()
+    }
+
+    /// Command 0x800c[unit]: whether the CNC has that unit.
+    pub fn select(&self, unit: i32) -> Reply<()> {
+        let unit = u16::try_from(unit).map_err(|_| CncError::new(ew::EW_NOPMC))?;
+        self.unit(unit).map(|_| ())
+    }
+
     /// The area and checked address range of a request: EW_TYPE for an
     /// unknown area or data type, EW_RANGE for addresses outside the area
     /// or a range that is not whole elements, EW_LENGTH when too long.
-    fn check(&self, r: &PmcRange) -> Reply<&PmcArea> {
-        let area = self.area(r.adr_type).ok_or(CncError::new(ew::EW_TYPE))?;
+    fn check<'a>(areas: &'a [PmcArea], r: &PmcRange) -> Reply<&'a PmcArea> {
+        let area = (areas.iter())
+            .find(|a| a.adr_type == r.adr_type)
+            .ok_or(CncError::new(ew::EW_TYPE))?;
         let size = elem_size(r.data_type).ok_or(CncError::new(ew::EW_TYPE))?;
         let n = r.span();
         if n == 0 || n % size != 0 || !area.covers(r.s, r.e) {
@@ -211,22 +265,27 @@ impl Pmc {
         Ok(area)
     }
 
-    /// Command 0x8001: the range's bytes (big-endian elements, as stored).
-    pub fn read(&self, r: &PmcRange) -> Reply<Vec<u8>> {
-        let area = self.check(r)?;
+    /// Command 0x8001 on unit `unit`: the range's bytes (big-endian
+    /// elements, as stored).
+    pub fn read(&self, unit: u16, r: &PmcRange) -> Reply<Vec<u8>> {
+        let area = Self::check(self.unit(unit)?, r)?;
         Ok(area.mem[usize::from(r.s)..=usize::from(r.e)].to_vec())
     }
 
-    /// Command 0x8002: all or nothing; read-only areas EW_PROT.
-    pub fn write(&mut self, r: &PmcRange, data: &[u8]) -> Reply<()> {
-        let area = self.check(r)?;
+    /// Command 0x8002 on unit `unit`: all or nothing; read-only areas EW_PROT.
+    pub fn write(&mut self, unit: u16, r: &PmcRange, data: &[u8]) -> Reply<()> {
+        let area = Self::check(self.unit(unit)?, r)?;
         if data.len() != r.span() {
             return Err(CncError::new(ew::EW_LENGTH));
         }
         if !area.writable {
             return Err(CncError::new(ew::EW_PROT));
         }
-        let area = self.area_mut(r.adr_type).expect("checked");
+        let areas = self.unit_mut(unit)?;
+        let area = areas
+            .iter_mut()
+            .find(|a| a.adr_type == r.adr_type)
+            .expect("checked");
         area.mem[usize::from(r.s)..=usize::from(r.e)].copy_from_slice(data);
         Ok(())
     }
@@ -237,9 +296,9 @@ impl Pmc {
     /// letter's character code, attribute 0, first and last address. What a
     /// real PMC puts in the attribute word and does with `adr_type` is not
     /// known; the simulator answers every area whatever `adr_type`.
-    pub fn info(&self, _adr_type: i16) -> PmcInfo {
+    pub fn info(&self, unit: u16, _adr_type: i16) -> Reply<PmcInfo> {
         let areas: Vec<PmcAreaInfo> = self
-            .areas
+            .unit(unit)?
             .iter()
             .flat_map(|a| {
                 a.ranges.iter().map(|&(s, e)| PmcAreaInfo {
@@ -251,9 +310,9 @@ impl Pmc {
             })
             .take(PMCINFO_MAX)
             .collect();
-        PmcInfo {
+        Ok(PmcInfo {
             count: areas.len() as i32,
             areas,
-        }
+        })
     }
 }

@@ -284,15 +284,29 @@ pub trait CncService: Send {
 
     // --- pmc ---
     /// A PMC range's bytes (class 2, 0x8001).
-    fn read_pmc(&mut self, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
+    /// PMC unit `unit` (the subpacket's path word): a range's bytes (0x8001).
+    fn read_pmc(&mut self, unit: u16, range: crate::proto::pmc::PmcRange) -> Reply<Vec<u8>> {
         unsupported()
     }
-    /// Writes a PMC range (class 2, 0x8002).
-    fn write_pmc(&mut self, range: crate::proto::pmc::PmcRange, data: &[u8]) -> Reply<()> {
+    /// Writes a range (0x8002).
+    fn write_pmc(
+        &mut self,
+        unit: u16,
+        range: crate::proto::pmc::PmcRange,
+        data: &[u8],
+    ) -> Reply<()> {
         unsupported()
     }
-    /// The PMC's areas (class 2, 0x8003).
-    fn pmc_info(&mut self, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
+    /// The unit's address areas (0x8003).
+    fn pmc_info(&mut self, unit: u16, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
+        unsupported()
+    }
+    /// The PMC unit types, at most `most` (0x800f).
+    fn pmc_unit_types(&mut self, most: i32) -> Reply<Vec<i32>> {
+        unsupported()
+    }
+    /// Whether the CNC has PMC unit `unit` (0x800c).
+    fn pmc_select(&mut self, unit: i32) -> Reply<()> {
         unsupported()
     }
 
@@ -446,13 +460,19 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
 
             // --- pmc ---
             (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCRNG) => {
-                svc.read_pmc(crate::proto::pmc::PmcRange::from_args(&a))
+                svc.read_pmc(p, crate::proto::pmc::PmcRange::from_args(&a))
             }
             (crate::proto::packet::CLASS_PMC, crate::proto::pmc::WRPMCRNG) => svc
-                .write_pmc(crate::proto::pmc::PmcRange::from_args(&a), &sub.payload)
+                .write_pmc(p, crate::proto::pmc::PmcRange::from_args(&a), &sub.payload)
                 .map(|()| Vec::new()),
             (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCINFO) => {
-                enc(svc.pmc_info(a[0] as i16))
+                enc(svc.pmc_info(p, a[0] as i16))
+            }
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::UNIT_TYPES) => {
+                enc(svc.pmc_unit_types(a[0]))
+            }
+            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::SELECT_UNIT) => {
+                svc.pmc_select(a[0]).map(|()| Vec::new())
             }
 
             // --- offset ---

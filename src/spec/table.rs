@@ -253,6 +253,18 @@ pub const FUNCS: &[Func] = &[
         short: Short::Zeros,
         dims: &[],
     },
+    // --- PMC units ---
+    Func {
+        name: "pmc_get_number_of_pmc",
+        doc: "Reads how many PMC units the CNC has (4 bytes written into the `long`).",
+        params: &[Param::Out("piNum", "long")],
+        checks: &[],
+        forms: &[pmc(0x800e, &[])],
+        reply: &[to(I32, "", I32)],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
     // --- operation and operator-message histories ---
     Func {
         name: "cnc_rdophisno",
