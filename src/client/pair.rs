@@ -27,6 +27,9 @@ pub struct CncInfo {
     pub sysinfo: Vec<Option<SysInfo>>,
     /// The FOCAS option flags the library learns at connect.
     pub option: u16,
+    /// Series 15: word 0 of the start-up 0x8c answer (path 1's axis count,
+    /// cnc_sysinfo_ex's `ctrl_axis` [oracle]); 0 on other classes.
+    pub axes15: u16,
 }
 
 impl CncInfo {
@@ -189,7 +192,7 @@ impl Pair {
         let open_body = OpenBody::decode(r.version, &r.body).map_err(Error::from)?;
         let mut conns = Conns { c1, c2 };
         match Self::startup(&mut conns, &open_body, deadline) {
-            Ok((sysinfo, option)) => {
+            Ok((sysinfo, option, axes15)) => {
                 crate::log_at!(
                     log::CALLS,
                     "connected to {key}: {:?}, {} path(s)",
@@ -206,6 +209,7 @@ impl Pair {
                         open: open_body,
                         sysinfo,
                         option,
+                        axes15,
                     },
                     io: std::sync::Mutex::new(Some(conns.c2)),
                     c1: Mutex::new(Some(Conn1::new(conns.c1))),
@@ -237,7 +241,7 @@ impl Pair {
         conns: &mut Conns,
         open: &OpenBody,
         deadline: Deadline,
-    ) -> Result<(Vec<Option<SysInfo>>, u16)> {
+    ) -> Result<(Vec<Option<SysInfo>>, u16, u16)> {
         let words = open.path_words();
         let paths: Vec<u16> = (1..=words.len() as u16)
             .filter(|p| words[*p as usize - 1] != 0)
@@ -254,9 +258,11 @@ impl Pair {
         for (i, p) in paths.iter().enumerate() {
             sysinfo[*p as usize - 1] = Some(call::payload::<SysInfo>(resp, i)?);
         }
+        let mut axes15 = 0;
         if class == (CncClass::Series16 { kind: 2 }) {
             // Series 15: the companion's error fails the connect, as FANUC's library.
-            call::sub(resp, paths.len())?;
+            let p = &call::sub(resp, paths.len())?.payload;
+            axes15 = p.get(..2).map_or(0, |w| u16::from_be_bytes([w[0], w[1]]));
         }
         let option_param = match class {
             CncClass::Series30 => None,
@@ -273,7 +279,7 @@ impl Pair {
             let p = call::payload::<Param16>(resp, 0)?;
             option = p.values.first().map_or(0, |v| (*v as u16) & 0xff & mask);
         }
-        Ok((sysinfo, option))
+        Ok((sysinfo, option, axes15))
     }
 
     /// Connection 2, locked. A panic while it was held (a bug, caught at the

@@ -54,7 +54,8 @@ pub unsafe extern "C" fn cnc_sysinfo_ex(FlibHndl: c_ushort, sysinfoex: *mut ODBS
     ffi_boundary!("cnc_sysinfo_ex", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(sysinfoex)?.cast::<u8>();
-        let (head, paths) = h.pair.info.open.system_ex();
+        let info = &h.pair.info;
+        let (head, paths) = info.open.system_ex(info.axes15);
         let path_at = |k: usize| offset_of!(ODBSYSEX, path) + k * size_of::<ODBSYSEX_PATH>();
         unsafe {
             for (i, w) in head.iter().enumerate() {

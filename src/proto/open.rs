@@ -131,8 +131,9 @@ impl OpenBody {
     /// addinfo; then per path system, group, attrib, ctrl_axis, ctrl_srvo,
     /// ctrl_spdl, mchn_no. The 30i body has them all (a path's ctrl_srvo is
     /// its ctrl_axis word again, as FANUC's library reads it); the 16i body
-    /// has no machine groups, the group is the path's number.
-    pub fn system_ex(&self) -> ([u16; 10], Vec<[u16; 7]>) {
+    /// has no machine groups, the group is the path's number; a Series 15
+    /// reports `axes15` (word 0 of its start-up 0x8c answer) as ctrl_axis.
+    pub fn system_ex(&self, axes15: u16) -> ([u16; 10], Vec<[u16; 7]>) {
         match self {
             OpenBody::Series30 { header: h, paths } => (
                 [
@@ -144,7 +145,7 @@ impl OpenBody {
                     .collect(),
             ),
             OpenBody::Series16 { header: h, paths } => (
-                [h[2], h[3], h[4], 0, 0, 0, 0, h[5], 0, 0],
+                [h[2], h[3], h[4], 0, axes15, 0, 0, h[5], 0, 0],
                 paths
                     .iter()
                     .zip(1..)
