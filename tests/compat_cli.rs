@@ -181,7 +181,8 @@ fn a_function_we_lack_is_missing() {
     assert!(line("cnc_rdexecpt").contains("EW_VERSION"), "{text}");
     assert!(line("cnc_allclibhndl3").contains("supported"), "{text}");
     assert!(text.contains("2 supported, 1 not on Ethernet"), "{text}");
-    assert!(text.contains(", 1 missing: "), "{text}");
+    assert!(text.contains(", 1 missing\n"), "{text}");
+    assert!(text.contains("symbol lookup error"), "{text}");
 
     let (code, j) = compat_json(&exe);
     assert_eq!(code, Some(1));

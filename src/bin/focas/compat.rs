@@ -189,14 +189,14 @@ pub fn run(path: &Path, json: bool) -> Result<usize, Fail> {
     }
     text.push_str(&format!(
         "{supported} supported, {absent} not on Ethernet (answered without a request, as by \
-         FANUC's Ethernet library), {missing} missing{}\n",
-        if missing > 0 {
-            ": calling one stops the program (\"symbol lookup error\"; at start-up if it was \
-             linked with -z now). COMPATIBILITY.md lists every function"
-        } else {
-            ""
-        }
+         FANUC's Ethernet library), {missing} missing\n"
     ));
+    if missing > 0 {
+        text.push_str(
+            "a missing function stops the program when it is called (\"symbol lookup error\"; \
+             at start-up if the program was linked with -z now)\n",
+        );
+    }
     print(&text)?;
     Ok(missing + usize::from(!loadable))
 }
