@@ -291,3 +291,49 @@ fn a_file_that_is_not_elf_is_one_line_on_stderr() {
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/program"));
 }
+
+/// The README's example: its output is what `focas compat` prints for that
+/// program.
+#[test]
+fn the_readme_example_is_true() {
+    let dir = toolchain::scratch("compat-readme");
+    build_against_stub(
+        &dir,
+        "short cnc_allclibhndl3(const char *a, unsigned short b, long c, unsigned short *d)\
+         { (void)a; (void)b; (void)c; (void)d; return -15; }\n\
+         short cnc_dwnstart4(unsigned short a, short b, char *c) { (void)a; (void)b; (void)c; return -15; }\n\
+         short cnc_rdexecpt(unsigned short a, void *b, void *c) { (void)a; (void)b; (void)c; return -15; }\n\
+         short cnc_statinfo(unsigned short a, void *b) { (void)a; (void)b; return -15; }\n\
+         short cnc_freelibhndl(unsigned short a) { (void)a; return -15; }\n",
+        "#include \"fwlib32.h\"\n\
+         short cnc_dwnstart4(unsigned short, short, char *);\n\
+         int main(void) {\n\
+             unsigned short h = 0;\n\
+             PRGPNT a, b;\n\
+             ODBST st;\n\
+             char path[] = \"//CNC_MEM/USER/PATH1/\";\n\
+             if (cnc_allclibhndl3(\"127.0.0.1\", 8193, 10, &h)) return 1;\n\
+             cnc_statinfo(h, &st);\n\
+             cnc_rdexecpt(h, &a, &b);\n\
+             cnc_dwnstart4(h, 0, path);\n\
+             return cnc_freelibhndl(h);\n\
+         }\n",
+    );
+    std::fs::rename(dir.join("prog"), dir.join("my-adapter")).unwrap();
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let want: String = readme
+        .split("$ focas compat ./my-adapter\n")
+        .nth(1)
+        .expect("README shows `focas compat ./my-adapter`")
+        .lines()
+        .take_while(|l| !l.starts_with("```"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let o = toolchain::output(
+        toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+            .current_dir(&dir)
+            .args(["compat", "./my-adapter"]),
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(String::from_utf8_lossy(&o.stdout), want);
+}
