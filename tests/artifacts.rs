@@ -85,6 +85,17 @@ fn exports_are_exactly_the_ffi_functions() {
         unknown.is_empty(),
         "exported but not a `pub extern \"C\" fn` of src/ffi/*.rs: {unknown:?}"
     );
+    // The table build.rs writes (COMPATIBILITY.md and `focas compat` read it).
+    let table: BTreeSet<String> = fwlib32::ffi::exports::EXPORTS
+        .iter()
+        .map(|e| e.name.to_string())
+        .collect();
+    assert_eq!(
+        table,
+        exported,
+        "fwlib32::ffi::exports::EXPORTS (written by build.rs) vs the symbols {} exports",
+        lib.display()
+    );
 
     // FANUC's API in fwlib32.h, our fwlib_* extensions in fwlib32_ext.h only.
     let declared = header_functions(&header_text());

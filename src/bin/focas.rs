@@ -4,10 +4,16 @@
 //! Text output is aligned for people; `--json` prints one JSON object (one
 //! per line for `watch`) whose keys are stable. Any failure prints one line
 //! on stderr (`focas: HOST:PORT: FUNCTION: EW_CODE (n): meaning ...`) and
-//! exits with status 1; usage errors exit with 2.
+//! exits with status 1; usage errors exit with 2. `compat` reads a file,
+//! not a CNC: it exits with 1 when the program uses a function this
+//! library lacks.
 
+#[path = "focas/compat.rs"]
+mod compat;
 #[path = "focas/data.rs"]
 mod data;
+#[path = "focas/elf.rs"]
+mod elf;
 #[path = "focas/out.rs"]
 mod out;
 #[path = "focas/prog.rs"]
@@ -17,7 +23,7 @@ mod show;
 #[path = "focas/watch.rs"]
 mod watch;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 use fwlib32::native::Cnc;
 use out::Fail;
 use std::process::ExitCode;
@@ -28,12 +34,12 @@ use std::time::Duration;
     name = "focas",
     version,
     about = "Read a FANUC CNC over FOCAS2 Ethernet",
-    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  FOCAS_HOST=10.0.0.5 focas --json pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc"
+    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  FOCAS_HOST=10.0.0.5 focas --json pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc\n  focas compat ./my-adapter"
 )]
 struct Cli {
-    /// The CNC's host name or address
+    /// The CNC's host name or address (every command but compat)
     #[arg(long, short = 'H', env = "FOCAS_HOST")]
-    host: String,
+    host: Option<String>,
     /// FOCAS2 TCP port
     #[arg(long, short = 'p', env = "FOCAS_PORT", default_value_t = fwlib32::native::DEFAULT_PORT)]
     port: u16,
@@ -102,6 +108,14 @@ enum Command {
         #[arg(long, short = 'n')]
         count: Option<u64>,
     },
+    /// Will a program built for FANUC's library work with this one? Lists
+    /// the FOCAS functions it uses: supported, answering EW_VERSION as
+    /// FANUC's Ethernet library, or missing (exit status 1, as for a file
+    /// that cannot load this library). No CNC needed
+    Compat {
+        /// The program or shared library (ELF) that calls FOCAS functions
+        file: std::path::PathBuf,
+    },
 }
 
 fn seconds(s: &str) -> Result<f64, String> {
@@ -112,10 +126,18 @@ fn seconds(s: &str) -> Result<f64, String> {
 }
 
 fn run(cli: Cli) -> Result<(), Fail> {
-    let addr = if cli.host.contains(':') && !cli.host.starts_with('[') {
-        format!("[{}]:{}", cli.host, cli.port)
+    let Some(host) = &cli.host else {
+        Cli::command()
+            .error(
+                clap::error::ErrorKind::MissingRequiredArgument,
+                "the following required argument was not provided: --host <HOST> (or FOCAS_HOST)",
+            )
+            .exit()
+    };
+    let addr = if host.contains(':') && !host.starts_with('[') {
+        format!("[{host}]:{}", cli.port)
     } else {
-        format!("{}:{}", cli.host, cli.port)
+        format!("{host}:{}", cli.port)
     };
     let at = |e| Fail::Focas(addr.clone(), e);
     // Program upload and download need no connection to fail clearly.
@@ -138,6 +160,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Pmc { address, kind } => data::pmc(&cnc, &address, kind, json),
         Command::Prog(p) => prog::run(&cnc, p, json),
         Command::Watch { interval, count } => watch::run(&cnc, interval, count, json),
+        Command::Compat { .. } => unreachable!("compat needs no CNC: main runs it"),
     };
     r.map_err(|f| match f {
         Fail::Api(e) => at(e),
@@ -158,6 +181,16 @@ fn main() -> ExitCode {
         std::process::exit(70);
     }));
     let cli = Cli::parse();
+    if let Command::Compat { file } = &cli.command {
+        return match compat::run(file, cli.json) {
+            Ok(0) | Err(Fail::Quiet) => ExitCode::SUCCESS,
+            Ok(_problems) => ExitCode::from(1),
+            Err(f) => {
+                eprintln!("focas: {f}");
+                ExitCode::from(1)
+            }
+        };
+    }
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(Fail::Quiet) => ExitCode::SUCCESS,

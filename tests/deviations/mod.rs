@@ -519,7 +519,7 @@ const EXT_ATTR_PAST_PAYLOAD: &str = "FANUC's library reads the attribute fields 
 /// cnc_rddynamic / cnc_rddynamic2.
 const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload shorter than them from the next subpacket's header, and with a subpacket missing reads the later ones shifted, writing that into the caller's struct; ours returns EW_PROTOCOL (-17) and writes nothing";
 
-fn matches(pat: &str, name: &str) -> bool {
+pub fn matches(pat: &str, name: &str) -> bool {
     match pat.strip_suffix('*') {
         Some(p) => name.starts_with(p),
         None => pat == name,

@@ -633,7 +633,7 @@ pub fn function(word: &str) -> String {
         "thread_statinfo" => "cnc_statinfo".into(),
         "startup" => "cnc_startupprocess".into(),
         "exitprocess" => "cnc_exitprocess".into(),
-        w if w.starts_with("pmc_") => w.into(),
+        w if w.starts_with("pmc_") || w.starts_with("fwlib_") => w.into(),
         w => format!("cnc_{w}"),
     }
 }
@@ -730,7 +730,7 @@ pub const CLASSES: &[&str] = &["v3", "v2", "s15"];
 /// all in one frame of at most 1450 bytes: a 16i with 32 axes per path (the
 /// built-in profile's maximum) cannot answer it (at most 5 name entries fit),
 /// so its 16i-class cases run on a 16i with 8 axes per path.
-fn class_profile(word: &str, profile: &'static str) -> &'static str {
+pub fn class_profile(word: &str, profile: &'static str) -> &'static str {
     match (word, profile) {
         ("rdposition", "v2") => "v2a8",
         ("rdposition", "v2p2") => "v2p2a8",

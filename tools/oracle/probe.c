@@ -26,7 +26,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "fwlib32.h"
+/* fwlib32_ext.h: our fwlib_* extensions, after fwlib32.h. */
+#include "fwlib32_ext.h"
 /* GENERATED_WORDS: one WORD per function of src/spec/table.rs, written by
  * tools/oracle/probe.rs from the same descriptions as the exports. */
 #include "words.gen.h"
@@ -115,6 +116,19 @@ static short w_alloc(void) {
     unsigned short p = argc_ > 3 ? (unsigned short)N(3) : port;
     short r = F(cnc_allclibhndl3)(ip, p, N(1), &h);
     slots[cur] = h;
+    field("h", h);
+    return r;
+}
+static short w_allclibhdl3(void) {
+    unsigned short h = slots[cur];
+    short r = F(cnc_allclibhdl3)(host, port, N(1), &h);
+    slots[cur] = h;
+    field("h", h);
+    return r;
+}
+static short w_allclibhndl(void) {
+    unsigned short h = slots[cur];
+    short r = F(cnc_allclibhndl)(&h);
     field("h", h);
     return r;
 }
@@ -277,7 +291,19 @@ static short in_thread(void *(*f)(void *)) {
     WORD(upload4, LONG_IO(length, 1, F(cnc_upload4)(H, (long *)length, B0)))                      \
     WORD(upend, return F(cnc_upend)(H))                                                           \
     WORD(upend3, return F(cnc_upend3)(H))                                                         \
-    WORD(upend4, return F(cnc_upend4)(H))
+    WORD(upend4, return F(cnc_upend4)(H))                                                         \
+    /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
+    WORD(allclibhdl3, return w_allclibhdl3())                                                     \
+    WORD(allclibhndl, return w_allclibhndl())                                                     \
+    WORD(rdexecpt, return F(cnc_rdexecpt)(H, B0, B1))                                             \
+    WORD(rdprogline, return F(cnc_rdprogline)(H, N(1), N(2), B0, B1, (unsigned long *)(b1 + 8)))  \
+    WORD(svdtstartrd, return F(cnc_svdtstartrd)(H, N(1)))                                         \
+    WORD(svdtrddata, return F(cnc_svdtrddata)(H, B0, B1, b0 + 8))                                 \
+    WORD(svdtendrd, return F(cnc_svdtendrd)(H))                                                   \
+    WORD(rdspdlnamem, SHORT_IO(num, 1, F(cnc_rdspdlnamem)(H, &num, B0)))                          \
+    WORD(rdalmmsg3, SHORT_IO(num, 2, F(cnc_rdalmmsg3)(H, N(1), &num, B0)))                        \
+    /* our extensions (fwlib32_ext.h) */                                                          \
+    WORD(fwlib_set_reconnect, return F(fwlib_set_reconnect)(H, N(1)))
 
 #define WORD(name, ...) static short w__##name(void) { __VA_ARGS__; }
 WORDS
