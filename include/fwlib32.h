@@ -2424,9 +2424,10 @@ short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_
 
 /*
  Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
- `buf->data` (8 bytes per variable, l32) in one request. `length` must
- cover the records (at least `8 · count + 6`, and 8 before anything else
- is checked); numbers below 100 or a
+ `buf->data` (8 bytes per variable, l32) in one request, no further than
+ the end of `datano_s`'s range (#499, #999; the rest is left out, as
+ FANUC's library does). `length` must cover the records written (at least
+ `8 · count + 6`, and 8 before anything else is checked); numbers below 100 or a
  reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
  all before any traffic.
 

@@ -8,6 +8,7 @@ use crate::proto::macros::{
     DEC_FORBIDDEN, Double, FIRST_WRITABLE, RDMACROR2_CHUNK, ReadMacros, ReadMacrosDouble,
     WRMACROR2_CHUNK, WriteMacros, WriteMacrosDouble,
 };
+use crate::proto::open::CncClass;
 use crate::proto::value::Value;
 use crate::types::{IODBMR, IODBMR_data, ODBM};
 use std::os::raw::{c_long, c_short, c_ulong, c_ushort};
@@ -188,9 +189,10 @@ pub unsafe extern "C" fn cnc_rdmacror(
 }
 
 /// Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
-/// `buf->data` (8 bytes per variable, l32) in one request. `length` must
-/// cover the records (at least `8 · count + 6`, and 8 before anything else
-/// is checked); numbers below 100 or a
+/// `buf->data` (8 bytes per variable, l32) in one request, no further than
+/// the end of `datano_s`'s range (#499, #999; the rest is left out, as
+/// FANUC's library does). `length` must cover the records written (at least
+/// `8 · count + 6`, and 8 before anything else is checked); numbers below 100 or a
 /// reversed range give EW_NUMBER, a dec_val of 32767 or below -1 EW_DATA,
 /// all before any traffic.
 ///
@@ -222,8 +224,16 @@ pub unsafe extern "C" fn cnc_wrmacror(
                 "variables below #100 or a reversed range",
             ));
         }
-        let n = (e - s) as usize + 1;
-        // FANUC's library requires the last dec_val to lie within `length`.
+        // FANUC's library writes no further than the end of the start's
+        // range (#499, #999; a Series 15's #100..#999 are one): the
+        // variables past it are left out, and the call succeeds. The last
+        // dec_val written must lie within `length`.
+        let s15 = h.ctx().class == (CncClass::Series16 { kind: 2 });
+        let end = match i64::from(s) {
+            100..=999 if s15 => 999,
+            s => range_end(s),
+        };
+        let n = ((e - s) as usize + 1).min((end - i64::from(s) + 1) as usize);
         if len_of(length) < IODBMR_REC * n + 6 {
             return Err(Error::length());
         }
