@@ -25,6 +25,21 @@ const fn err(code: i16) -> CncError {
 }
 
 impl Machine {
+    /// The items `s..=e` of a range read's answer (at most
+    /// RANGE_PER_ANSWER); none is EW_NUMBER.
+    fn range_items(&self, t: Table, s: i32, e: i32) -> Reply<Vec<&Entry>> {
+        let items: Vec<&Entry> = self
+            .table(t)
+            .iter()
+            .filter(|x| (s..=e).contains(&x.number))
+            .take(RANGE_PER_ANSWER)
+            .collect();
+        if items.is_empty() {
+            return Err(CncError::NUMBER);
+        }
+        Ok(items)
+    }
+
     fn table(&self, t: Table) -> &[Entry] {
         match t {
             Table::Param => &self.profile.param.parameters,
@@ -107,15 +122,7 @@ impl Machine {
         if axis < -1 || axis as i32 > n_axes as i32 {
             return Err(err(ew::EW_ATTRIB));
         }
-        let items: Vec<&Entry> = self
-            .table(t)
-            .iter()
-            .filter(|x| (s..=e).contains(&x.number))
-            .take(RANGE_PER_ANSWER)
-            .collect();
-        if items.is_empty() {
-            return Err(CncError::NUMBER);
-        }
+        let items = self.range_items(t, s, e)?;
         let mut out = Vec::new();
         for x in items {
             let a = range_axis(x, axis);
@@ -169,15 +176,7 @@ impl Machine {
             return Err(err(ew::EW_ATTRIB));
         }
         let block = 8 + 4 * self.profile.cnc.max_axes as usize;
-        let items: Vec<&Entry> = self
-            .table(t)
-            .iter()
-            .filter(|x| (s..=e).contains(&x.number))
-            .take(RANGE_PER_ANSWER)
-            .collect();
-        if items.is_empty() {
-            return Err(CncError::NUMBER);
-        }
+        let items = self.range_items(t, s, e)?;
         let mut out = Vec::new();
         for x in items {
             let a = range_axis(x, axis);
