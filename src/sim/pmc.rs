@@ -54,8 +54,10 @@ pub struct PmcArea {
     pub ranges: Vec<(u16, u16)>,
     /// Whether pmc_wrpmcrng may write it (else EW_PROT).
     pub writable: bool,
-    /// The bytes, indexed by address (addresses outside `ranges` unused).
-    pub mem: Vec<u8>,
+    /// The bytes, indexed by address (addresses outside `ranges` unused);
+    /// shared by clones until one writes (a fleet's machines share their
+    /// profile's until then).
+    pub mem: std::sync::Arc<Vec<u8>>,
 }
 
 impl PmcArea {
@@ -74,7 +76,7 @@ impl PmcArea {
             adr_type,
             ranges,
             writable,
-            mem: vec![0; size],
+            mem: std::sync::Arc::new(vec![0; size]),
         }
     }
 
@@ -93,8 +95,9 @@ impl PmcArea {
     /// Mutable bytes `addr..addr+n` (None when outside the area).
     pub fn bytes_mut(&mut self, addr: u16, n: usize) -> Option<&mut [u8]> {
         let e = u16::try_from(usize::from(addr) + n.max(1) - 1).ok()?;
-        self.covers(addr, e)
-            .then(|| &mut self.mem[usize::from(addr)..usize::from(addr) + n])
+        self.covers(addr, e).then(|| {
+            &mut std::sync::Arc::make_mut(&mut self.mem)[usize::from(addr)..usize::from(addr) + n]
+        })
     }
 }
 
@@ -227,7 +230,8 @@ impl Pmc {
             return Err(CncError::new(ew::EW_PROT));
         }
         let area = self.area_mut(r.adr_type).expect("checked");
-        area.mem[usize::from(r.s)..=usize::from(r.e)].copy_from_slice(data);
+        std::sync::Arc::make_mut(&mut area.mem)[usize::from(r.s)..=usize::from(r.e)]
+            .copy_from_slice(data);
         Ok(())
     }
 }

@@ -51,8 +51,9 @@ async fn next_frame(stream: &mut TcpStream, buf: &mut Vec<u8>) -> Option<Frame> 
             Ok(None) => {}
             Err(_) => return None,
         }
-        if buf.capacity() - buf.len() < 512 {
-            buf.reserve(4096);
+        // Requests are small: 1 KB to start with, more only for a large one.
+        if buf.capacity() - buf.len() < 256 {
+            buf.reserve(1024);
         }
         match stream.read_buf(buf).await {
             Ok(0) | Err(_) => return None,
