@@ -107,6 +107,9 @@ impl FaultPlan {
 
     /// Takes one cut of a fault of `kinds` holding at `t`, within its count.
     fn take(&self, kinds: &'static [FaultKind], t: f64) -> Option<FaultKind> {
+        if self.faults.is_empty() {
+            return None;
+        }
         let mut used = self.used.lock();
         for (i, f) in self.of(kinds) {
             let Some(k) = f.window().active(t) else {

@@ -290,6 +290,21 @@ mod tests {
     }
 
     #[test]
+    fn the_built_in_profile_s_commented_example_is_valid() {
+        let text = crate::sim::profile::DEFAULT_PROFILE;
+        let tail = &text[text.find("# [fleet]").expect("the example")..];
+        let example: String = tail
+            .lines()
+            .take_while(|l| !l.starts_with("# Other kinds"))
+            .map(|l| l.strip_prefix("# ").unwrap_or(l.trim_start_matches('#')))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let p = crate::sim::Profile::parse(&format!("{text}\n{example}\n")).unwrap();
+        assert_eq!((p.fleet.machines, p.faults.len()), (20, 2));
+        assert_eq!(p.faults[1].code, Some(crate::ew::EW_NOOPT));
+    }
+
+    #[test]
     fn checks() {
         let f = |s: &str| Fault::parse_spec(s).unwrap().check(5);
         assert!(f("delay").is_err());
