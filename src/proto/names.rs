@@ -19,7 +19,11 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
     (CLASS_CNC, 0x000c, "cnc_wrzofs"),
     (CLASS_CNC, 0x000e, "cnc_rdparam cnc_rdparar cnc_rdparam_ext"),
     (CLASS_CNC, 0x000f, "cnc_wrparam cnc_wrparas"),
-    (CLASS_CNC, 0x0010, "cnc_rdparainfo cnc_rdparam cnc_wrparam"),
+    (
+        CLASS_CNC,
+        0x0010,
+        "cnc_rdparainfo cnc_wrparam cnc_rdparam_ext",
+    ),
     (CLASS_CNC, 0x0011, "cnc_rdparanum"),
     (CLASS_CNC, 0x0015, "cnc_rdmacro cnc_rdmacror"),
     (CLASS_CNC, 0x0016, "cnc_wrmacro cnc_wrmacror"),
@@ -66,7 +70,7 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
          cnc_rddynamic2 cnc_rddynamic cnc_rdposition cnc_rdaxisdata",
     ),
     (CLASS_CNC, 0x0030, "cnc_diagnoss cnc_rddiag cnc_rddiag_ext"),
-    (CLASS_CNC, 0x0031, "cnc_rddiaginfo cnc_diagnoss"),
+    (CLASS_CNC, 0x0031, "cnc_rddiaginfo cnc_rddiag_ext"),
     (CLASS_CNC, 0x0032, "cnc_rddiagnum"),
     (CLASS_CNC, 0x0034, "cnc_rdopmsg"),
     (
@@ -104,14 +108,14 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
         "cnc_rdparam cnc_rdparam_ext cnc_rdparar cnc_allclibhndl3",
     ),
     (CLASS_CNC, 0x008e, "cnc_wrparam cnc_wrparas"),
-    (CLASS_CNC, 0x008f, "cnc_rdparainfo cnc_rdparam cnc_wrparam"),
+    (CLASS_CNC, 0x008f, "cnc_rdparainfo cnc_rdparam_ext"),
     (CLASS_CNC, 0x0093, "cnc_diagnoss cnc_rddiag cnc_rddiag_ext"),
-    (CLASS_CNC, 0x0094, "cnc_rddiaginfo cnc_diagnoss"),
+    (CLASS_CNC, 0x0094, "cnc_rddiaginfo cnc_rddiag_ext"),
     (CLASS_CNC, 0x0095, "cnc_rdspeed"),
     (CLASS_CNC, 0x0098, "cnc_statinfo cnc_statinfo2"),
     (CLASS_CNC, 0x009a, "cnc_rdtlctldata"),
-    (CLASS_CNC, 0x00a0, "cnc_rdparam cnc_wrparam cnc_rdparam_ext"),
-    (CLASS_CNC, 0x00a2, "cnc_diagnoss cnc_rddiag cnc_rddiag_ext"),
+    (CLASS_CNC, 0x00a0, "cnc_wrparam cnc_rdparam_ext"),
+    (CLASS_CNC, 0x00a2, "cnc_rddiag_ext"),
     (CLASS_CNC, 0x00a3, "cnc_rdaxisdata"),
     (
         CLASS_CNC,
@@ -179,14 +183,31 @@ fn described_names<'a>(
         .map(|f| f.name)
 }
 
-/// The (class, command) pairs function `name` sends, on any CNC class;
-/// empty for a name no table knows.
+/// The (class, command) pairs that stand for function `name` (what an
+/// error fault naming it answers for), on any CNC class: the commands only
+/// it sends; without such, those it is named first for; else every one it
+/// sends. Empty for a name no table knows.
 pub fn function_commands(name: &str) -> Vec<(u16, u16)> {
-    let mut out: Vec<(u16, u16)> = COMMANDS
-        .iter()
-        .filter(|(_, _, names)| names.split_whitespace().any(|n| n == name))
-        .map(|(c, k, _)| (*c, *k))
-        .collect();
+    let listed = |only: bool, first: bool| -> Vec<(u16, u16)> {
+        COMMANDS
+            .iter()
+            .filter(|(_, _, names)| {
+                let mut it = names.split_whitespace();
+                let all: Vec<&str> = names.split_whitespace().collect();
+                all.contains(&name)
+                    && (!only || all.len() == 1)
+                    && (!first || it.next() == Some(name))
+            })
+            .map(|(c, k, _)| (*c, *k))
+            .collect()
+    };
+    let mut out = listed(true, false);
+    if out.is_empty() {
+        out = listed(false, true);
+    }
+    if out.is_empty() {
+        out = listed(false, false);
+    }
     if let Some(f) = crate::spec::find(name) {
         for form in f.forms {
             if !out.contains(&(form.class, form.cmd)) {
@@ -259,6 +280,15 @@ mod tests {
             }
         }
         assert_eq!(function_commands("cnc_statinfo"), vec![(CLASS_CNC, 0x0019)]);
+        assert_eq!(
+            function_commands("cnc_statinfo2"),
+            vec![(CLASS_CNC, 0x00e2)]
+        );
+        assert_eq!(
+            function_commands("cnc_rdparam"),
+            vec![(CLASS_CNC, 0x000e), (CLASS_CNC, 0x008d)]
+        );
+        assert_eq!(function_commands("cnc_rddynamic2").len(), 6);
         assert_eq!(function_commands("pmc_rdpmcrng"), vec![(CLASS_PMC, 0x8001)]);
         assert_eq!(function_commands("cnc_rdtimer"), vec![(CLASS_CNC, 0x0120)]);
         assert!(function_commands("cnc_nothing").is_empty());
