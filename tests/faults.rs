@@ -3,7 +3,8 @@
 //! hangs, and the handle works again when the fault is over (with
 //! fwlib_set_reconnect where the connection was lost). The clock is frozen
 //! and moved by the test (Fleet::set_elapsed), so every fault starts and
-//! ends at a known point.
+//! ends at a known point. `TRACE=1 cargo test --test faults` shows the
+//! frames (focas-sim's --trace).
 
 use fwlib32::ew::*;
 use fwlib32::sim::profile::fault::Fault;
@@ -276,4 +277,19 @@ fn off_the_network_during_an_upload() {
     assert_eq!(cnc_upstart3(h, 0, 1234, 1234), EW_OK);
     assert_eq!(upload_until_failure(h), EW_RESET, "the end of the program");
     assert_eq!(cnc_upend3(h), EW_OK);
+}
+
+#[test]
+fn a_single_simulator_takes_its_profile_s_faults() {
+    let p = Profile::parse(
+        "[[path]]\n[[fault]]\nkind = \"error\"\ncommands = [0x19]\ncode = 7\n\
+         [[fault]]\nkind = \"refuse\"\nat = 3600.0\n",
+    )
+    .unwrap();
+    let s = fwlib32::sim::Simulator::start(p, "127.0.0.1:0").unwrap();
+    let h = alloc("127.0.0.1", s.port()).unwrap();
+    assert_eq!(statinfo(h), EW_PROT);
+    s.set_elapsed(Duration::from_secs(3601));
+    assert_eq!(alloc("localhost", s.port()).err(), Some(EW_SOCKET));
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
 }

@@ -35,9 +35,11 @@ use std::sync::Arc;
 pub use fleet::{Fleet, FleetOptions};
 pub use machine::Machine;
 pub use profile::Profile;
-pub use server::Shared;
+pub use shared::Shared;
 
-/// A running simulator. Dropping it stops it.
+/// A running simulator: one machine (a [`Fleet`] serves many on one
+/// runtime). The profile's `[[fault]]`s for machine 1 apply, timed from its
+/// start. Dropping it stops it.
 pub struct Simulator {
     addr: SocketAddr,
     shared: Arc<Shared>,
