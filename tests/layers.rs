@@ -615,7 +615,7 @@ fn src_module_graph_has_no_cycle() {
         ("client::conn", "client::log"),
         ("sim", "sim::server"),
         ("sim::param", "sim::run"),
-        ("sim::server", "sim::service"),
+        ("sim::session", "sim::service"),
         ("ffi::handle", "client::pair"),
     ] {
         assert!(g[from].contains(to), "the scanner misses {from} -> {to}");

@@ -6,6 +6,7 @@ pub mod call;
 pub mod described;
 pub mod frame;
 pub mod macros;
+pub mod names;
 pub mod offset;
 pub mod open;
 pub mod packet;

@@ -6,8 +6,13 @@
 //! service (the CncService trait, errors) and pmc → profile (pure data,
 //! with its sections in profile/) → run (the [`Machine`] and its live
 //! state) → the areas adding methods to it (param, macros, offset,
-//! program, position, history) → machine (the CncService impl) → server.
+//! program, position, history) → machine (the CncService impl); faults
+//! (the `[[fault]]`s at an instant) and trace (frames as text) → shared
+//! ([`Shared`]: what a machine's connections share) → session (one
+//! connection) → server (listeners) → fleet (many machines on one runtime).
 
+pub mod faults;
+pub mod fleet;
 pub mod history;
 pub mod machine;
 pub mod macros;
@@ -20,15 +25,21 @@ pub mod program;
 pub mod run;
 pub mod server;
 pub mod service;
+pub mod session;
+pub mod shared;
+pub mod trace;
 
 use std::net::SocketAddr;
 use std::sync::Arc;
 
+pub use fleet::{Fleet, FleetOptions};
 pub use machine::Machine;
 pub use profile::Profile;
-pub use server::Shared;
+pub use shared::Shared;
 
-/// A running simulator. Dropping it stops it.
+/// A running simulator: one machine (a [`Fleet`] serves many on one
+/// runtime). The profile's `[[fault]]`s for machine 1 apply, timed from its
+/// start. Dropping it stops it.
 pub struct Simulator {
     addr: SocketAddr,
     shared: Arc<Shared>,
@@ -45,10 +56,27 @@ impl Simulator {
             .thread_name("focas-sim")
             .enable_all()
             .build()?;
+        let faults = profile
+            .faults
+            .iter()
+            .filter(|f| f.concerns(1))
+            .cloned()
+            .collect();
         let machine = Machine::new(profile);
         let started = machine.started;
-        let shared = Shared::new(Box::new(machine));
-        let listener = runtime.block_on(tokio::net::TcpListener::bind(listen))?;
+        let net = server::Net {
+            zero: started,
+            faults: faults::FaultPlan::new(faults),
+            ..server::Net::plain()
+        };
+        let shared = Shared::with_net(Box::new(machine), net);
+        let addr = resolve(listen)?;
+        let listener = server::bind(addr)?;
+        listener.set_nonblocking(true)?;
+        let listener = {
+            let _guard = runtime.enter();
+            tokio::net::TcpListener::from_std(listener)?
+        };
         let addr = listener.local_addr()?;
         runtime.spawn(server::serve(listener, shared.clone()));
         Ok(Simulator {
@@ -90,4 +118,15 @@ impl Drop for Simulator {
             rt.shutdown_background();
         }
     }
+}
+
+/// The first address `listen` ("host:port") resolves to.
+pub(crate) fn resolve(listen: &str) -> std::io::Result<SocketAddr> {
+    use std::net::ToSocketAddrs;
+    listen.to_socket_addrs()?.next().ok_or_else(|| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!("{listen}: no address"),
+        )
+    })
 }

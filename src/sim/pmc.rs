@@ -54,8 +54,10 @@ pub struct PmcArea {
     pub ranges: Vec<(u16, u16)>,
     /// Whether pmc_wrpmcrng may write it (else EW_PROT).
     pub writable: bool,
-    /// The bytes, indexed by address (addresses outside `ranges` unused).
-    pub mem: Vec<u8>,
+    /// The bytes, indexed by address (addresses outside `ranges` unused);
+    /// shared by clones until one writes (a fleet's machines share their
+    /// profile's until then).
+    pub mem: std::sync::Arc<Vec<u8>>,
 }
 
 impl PmcArea {
@@ -74,7 +76,7 @@ impl PmcArea {
             adr_type,
             ranges,
             writable,
-            mem: vec![0; size],
+            mem: std::sync::Arc::new(vec![0; size]),
         }
     }
 
@@ -93,8 +95,9 @@ impl PmcArea {
     /// Mutable bytes `addr..addr+n` (None when outside the area).
     pub fn bytes_mut(&mut self, addr: u16, n: usize) -> Option<&mut [u8]> {
         let e = u16::try_from(usize::from(addr) + n.max(1) - 1).ok()?;
-        self.covers(addr, e)
-            .then(|| &mut self.mem[usize::from(addr)..usize::from(addr) + n])
+        self.covers(addr, e).then(|| {
+            &mut std::sync::Arc::make_mut(&mut self.mem)[usize::from(addr)..usize::from(addr) + n]
+        })
     }
 }
 
@@ -148,7 +151,11 @@ impl TryFrom<PmcToml> for Pmc {
     fn try_from(t: PmcToml) -> Result<Pmc, String> {
         let mut pmc = Pmc::default();
         match t.units {
-            Some(n @ 1..=8) => pmc.extra = (1..n).map(|_| standard_areas()).collect(),
+            Some(n @ 1..=8) => {
+                // Zeroed memory, shared by the units until one is written.
+                let blank = standard_areas();
+                pmc.extra = (1..n).map(|_| blank.clone()).collect();
+            }
             Some(n) => return Err(format!("[pmc] units = {n}: 1 to 8")),
             None => {}
         }
@@ -286,7 +293,8 @@ impl Pmc {
             .iter_mut()
             .find(|a| a.adr_type == r.adr_type)
             .expect("checked");
-        area.mem[usize::from(r.s)..=usize::from(r.e)].copy_from_slice(data);
+        std::sync::Arc::make_mut(&mut area.mem)[usize::from(r.s)..=usize::from(r.e)]
+            .copy_from_slice(data);
         Ok(())
     }
 }

@@ -4,11 +4,14 @@
 //! nothing here knows the running machine.
 
 pub mod cycle;
+pub mod fault;
+pub mod fleet;
 pub mod history;
 pub mod macros;
 pub mod offset;
 pub mod param;
 pub mod program;
+pub mod window;
 
 use serde::Deserialize;
 
@@ -27,6 +30,12 @@ pub struct Profile {
     /// Scheduled events (src/sim/run.rs).
     #[serde(default, rename = "event")]
     pub events: Vec<cycle::Event>,
+    /// Scheduled network faults (src/sim/faults.rs).
+    #[serde(default, rename = "fault")]
+    pub faults: Vec<fault::Fault>,
+    /// How many machines the profile serves, and whether they differ.
+    #[serde(default)]
+    pub fleet: fleet::FleetSection,
     // --- position ---
 
     // --- program ---
@@ -308,6 +317,7 @@ impl Profile {
                 .map_err(|m| ProfileError::Invalid(format!("path {}: {m}", i + 1)))?;
         }
         self.validate_run().map_err(ProfileError::Invalid)?;
+        self.validate_fleet().map_err(ProfileError::Invalid)?;
         Ok(())
     }
 }
@@ -319,6 +329,29 @@ impl Default for Profile {
 }
 
 impl Profile {
+    /// `[fleet]` and `[[fault]]`.
+    fn validate_fleet(&self) -> Result<(), String> {
+        let n = self.fleet.machines;
+        if !(1..=fleet::MAX_MACHINES).contains(&n) {
+            return Err(format!(
+                "fleet.machines must be 1 to {}",
+                fleet::MAX_MACHINES
+            ));
+        }
+        // The fleet's size may come from the command line: checked again
+        // against it when the fleet starts.
+        self.check_faults(fleet::MAX_MACHINES)
+    }
+
+    /// Checks the `[[fault]]`s for a fleet of `machines`.
+    pub fn check_faults(&self, machines: usize) -> Result<(), String> {
+        for (k, f) in self.faults.iter().enumerate() {
+            f.check(machines)
+                .map_err(|m| format!("[[fault]] {} ({:?}): {m}", k + 1, f.kind))?;
+        }
+        Ok(())
+    }
+
     /// The running-machine sections: programs, cycles, events.
     fn validate_run(&self) -> Result<(), String> {
         for (k, p) in self.programs.iter().enumerate() {
@@ -364,14 +397,7 @@ impl Profile {
                     self.paths.len()
                 ));
             }
-            for (name, v) in [("at", e.at), ("every", e.every), ("duration", e.duration)] {
-                if !(v.is_finite() && v >= 0.0) {
-                    return Err(format!("{what}: {name} must be a number of seconds >= 0"));
-                }
-            }
-            if e.every > 0.0 && e.every < 0.01 {
-                return Err(format!("{what}: every must be 0 (once) or at least 0.01 s"));
-            }
+            e.window().check().map_err(|m| format!("{what}: {m}"))?;
             if e.action == "alarm" && e.alarm.is_none() {
                 return Err(format!(
                     "{what}: an alarm event needs alarm = {{ number = .., message = .. }}"

@@ -356,26 +356,14 @@ impl Plan {
     }
 }
 
-/// When an event's condition holds: occurrence k covers
-/// [at + k·every, at + k·every + duration); duration 0 = for ever after `at`.
+/// The occurrence of the event whose start is the last at or before `t`.
 fn occurrence(e: &Event, t: f64) -> Option<u64> {
-    if t < e.at {
-        return None;
-    }
-    let k = if e.every > 0.0 {
-        ((t - e.at) / e.every).floor() as u64
-    } else {
-        0
-    };
-    Some(k)
+    e.window().occurrence(t)
 }
 
+/// Whether the event's condition holds at `t` (src/sim/profile/window.rs).
 fn active(e: &Event, t: f64) -> bool {
-    match occurrence(e, t) {
-        None => false,
-        Some(_) if e.duration <= 0.0 => true,
-        Some(k) => t - (e.at + k as f64 * e.every) < e.duration,
-    }
+    e.window().active(t).is_some()
 }
 
 /// Seconds of [a, b) covered by the union of the events' conditions.

@@ -78,6 +78,17 @@ pub struct Event {
     pub alarm: Option<Alarm>,
 }
 
+impl Event {
+    /// When the event holds.
+    pub fn window(&self) -> super::window::Window {
+        super::window::Window {
+            at: self.at,
+            every: self.every,
+            duration: self.duration,
+        }
+    }
+}
+
 impl StoredProgram {
     /// The name CNCs report: the profile's, or "O<number>".
     pub fn display_name(&self) -> String {
