@@ -4,9 +4,10 @@
 //! port, a bad address, a CNC that never answers and an absent parameter
 //! each give one line on stderr and exit status 1.
 
+mod toolchain;
 use fwlib32::sim::{Profile, Simulator};
 use serde_json::Value;
-use std::process::{Command, Output};
+use std::process::Output;
 use std::time::Duration;
 
 fn sim() -> Simulator {
@@ -17,7 +18,7 @@ fn sim() -> Simulator {
 
 /// `focas --host 127.0.0.1 --port PORT ARGS...`.
 fn run_port(port: u16, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_focas"))
+    toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .env_remove("FOCAS_HOST")
         .env_remove("FOCAS_PORT")
         .args([
@@ -301,7 +302,7 @@ fn a_dead_port_is_one_line() {
 
 #[test]
 fn a_bad_address_is_one_line() {
-    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+    let o = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .args(["--host", "no.such.host.invalid", "--timeout", "2", "info"])
         .output()
         .unwrap();
@@ -316,7 +317,7 @@ fn a_silent_cnc_times_out() {
     // Accepts the connection, never answers.
     let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     let port = l.local_addr().unwrap().port();
-    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+    let o = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .args(["--host", "127.0.0.1", "--port", &port.to_string()])
         .args(["--timeout", "1", "status"])
         .output()
@@ -342,7 +343,7 @@ fn an_absent_parameter_is_the_cncs_ew_number() {
 
 #[test]
 fn no_host_is_a_usage_error() {
-    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+    let o = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .env_remove("FOCAS_HOST")
         .arg("status")
         .output()
@@ -354,7 +355,7 @@ fn no_host_is_a_usage_error() {
 #[test]
 fn the_host_comes_from_focas_host() {
     let s = sim();
-    let o = Command::new(env!("CARGO_BIN_EXE_focas"))
+    let o = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .env("FOCAS_HOST", "127.0.0.1")
         .args(["--port", &s.port().to_string(), "--json", "status"])
         .output()
