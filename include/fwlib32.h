@@ -2219,6 +2219,14 @@ short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Drops the connections of the handle's CNC, as FANUC's library does on
+ Ethernet: no close frames, EW_OK, and every later call of every handle
+ to that CNC answers EW_SOCKET (-16) until they are freed; a handle with
+ fwlib_set_reconnect on reconnects at its next call.
+ */
+short cnc_resetconnect(unsigned short FlibHndl);
+
+/*
  Selects the path later calls on this handle address (0 or -1: path 1).
  Other handles, even to the same CNC, are not affected.
  */

@@ -76,3 +76,24 @@ fn a_handle_with_reconnect_works_again_when_the_cnc_is_back() {
     assert_eq!(fwlib_set_reconnect(h, 1), EW_HANDLE);
     let _ = cnc_freelibhndl(plain);
 }
+
+/// cnc_resetconnect drops the CNC's connections as FANUC's library does on
+/// Ethernet: EW_OK, then EW_SOCKET on every handle to that CNC, except that a
+/// handle with reconnection on connects again at its next call.
+#[test]
+fn resetconnect_drops_the_connections() {
+    let s = sim::start(Profile::default());
+    let (a, b) = (
+        connect("127.0.0.1", s.port()),
+        connect("127.0.0.1", s.port()),
+    );
+    assert_eq!((statinfo(a), statinfo(b)), (EW_OK, EW_OK));
+    assert_eq!(cnc_resetconnect(a), EW_OK);
+    assert_eq!((statinfo(a), statinfo(b)), (EW_SOCKET, EW_SOCKET));
+    assert_eq!(cnc_resetconnect(a), EW_OK, "again, on dead connections");
+    assert_eq!(fwlib_set_reconnect(b, 1), EW_OK);
+    assert_eq!(statinfo(b), EW_OK, "b reconnects the pair a shares");
+    assert_eq!(statinfo(a), EW_OK);
+    assert_eq!(cnc_resetconnect(0x7fff), EW_HANDLE);
+    let _ = (cnc_freelibhndl(a), cnc_freelibhndl(b));
+}

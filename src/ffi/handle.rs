@@ -135,6 +135,18 @@ pub extern "C" fn cnc_freelibhndl(FlibHndl: c_ushort) -> c_short {
     })
 }
 
+/// Drops the connections of the handle's CNC, as FANUC's library does on
+/// Ethernet: no close frames, EW_OK, and every later call of every handle
+/// to that CNC answers EW_SOCKET (-16) until they are freed; a handle with
+/// fwlib_set_reconnect on reconnects at its next call.
+#[unsafe(no_mangle)]
+pub extern "C" fn cnc_resetconnect(FlibHndl: c_ushort) -> c_short {
+    ffi_boundary!("cnc_resetconnect", {
+        handles::get(FlibHndl)?.pair.kill();
+        Ok(())
+    })
+}
+
 /// Sets the handle's timeout in seconds (0 or less: wait forever).
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_settimeout(FlibHndl: c_ushort, timeout: c_long) -> c_short {

@@ -99,6 +99,10 @@ const WORDS: &[Word] = &[
         after: &["statinfo"],
         ..w("settimeout", &["10|0|1|-1|100"])
     },
+    Word {
+        after: &["statinfo", "getpath"],
+        ..w("resetconnect", &[])
+    },
     // Position.
     w("rdaxisname", &["4|1|0|-1|2|3|32|33"]),
     w("rdspdlname", &["4|1|0|-1|2|8|9"]),

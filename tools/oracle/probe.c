@@ -182,6 +182,7 @@ static short in_thread(void *(*f)(void *)) {
     WORD(thread_free, return in_thread(t_free))                                                   \
     WORD(thread_alloc, return in_thread(t_alloc))                                                 \
     WORD(settimeout, return F(cnc_settimeout)(H, N(1)))                                           \
+    WORD(resetconnect, return F(cnc_resetconnect)(H))                                             \
     WORD(setpath, return F(cnc_setpath)(H, N(1)))                                                 \
     WORD(getpath, return F(cnc_getpath)(H, B0, B1))                                               \
     WORD(getdtailerr, return F(cnc_getdtailerr)(H, B0))                                           \
