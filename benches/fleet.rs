@@ -15,37 +15,18 @@
 //!   connection pair) to each of 1,000 machines;
 //! * threads of both processes.
 
+mod common;
+use common::{Counting, HEAP};
 use fwlib32::ew::EW_OK;
 use fwlib32::types::*;
 use fwlib32::*;
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::ffi::CString;
 use std::io::{BufRead, BufReader};
 use std::mem::zeroed;
 use std::os::raw::{c_short, c_ushort};
 use std::process::{Child, Command, Stdio};
-use std::sync::atomic::{AtomicIsize, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{Duration, Instant};
-
-/// The system allocator, counting live heap bytes.
-struct Counting;
-
-static HEAP: AtomicIsize = AtomicIsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        HEAP.fetch_add(l.size() as isize, Ordering::Relaxed);
-        unsafe { System.alloc(l) }
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        HEAP.fetch_sub(l.size() as isize, Ordering::Relaxed);
-        unsafe { System.dealloc(p, l) }
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, new: usize) -> *mut u8 {
-        HEAP.fetch_add(new as isize - l.size() as isize, Ordering::Relaxed);
-        unsafe { System.realloc(p, l, new) }
-    }
-}
 
 #[global_allocator]
 static ALLOC: Counting = Counting;

@@ -10,7 +10,7 @@
 //! candidate / baseline, the times are medians of the per-round means.
 
 mod common;
-use common::{alloc, data_frame, start};
+use common::{Counting, HEAP, alloc, data_frame, start};
 use fwlib32::ew::EW_OK;
 use fwlib32::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype};
 use fwlib32::proto::position::Dynamic;
@@ -18,37 +18,15 @@ use fwlib32::proto::status::{StatInfo, Status};
 use fwlib32::sim::Simulator;
 use fwlib32::types::*;
 use fwlib32::*;
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::os::raw::{c_char, c_short, c_ushort};
-use std::sync::atomic::{AtomicBool, AtomicIsize, Ordering};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
-
-/// The system allocator, counting live heap bytes (a cross-check of the RSS
-/// delta, which only moves in whole pages).
-struct Counting;
-
-static HEAP: AtomicIsize = AtomicIsize::new(0);
 
 /// Run as a test (`cargo test --benches`, no `--bench` argument): a few
 /// samples only, to see that everything works; the numbers mean nothing.
 static QUICK: AtomicBool = AtomicBool::new(false);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        HEAP.fetch_add(l.size() as isize, Ordering::Relaxed);
-        unsafe { System.alloc(l) }
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        HEAP.fetch_sub(l.size() as isize, Ordering::Relaxed);
-        unsafe { System.dealloc(p, l) }
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, new: usize) -> *mut u8 {
-        HEAP.fetch_add(new as isize - l.size() as isize, Ordering::Relaxed);
-        unsafe { System.realloc(p, l, new) }
-    }
-}
 
 #[global_allocator]
 static ALLOC: Counting = Counting;

@@ -8,8 +8,10 @@ use fwlib32::proto::call::{Call, Ctx};
 use fwlib32::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use fwlib32::proto::packet::{ReqSub, encode_request};
 use fwlib32::sim::{Profile, Simulator};
+use std::alloc::{GlobalAlloc, Layout, System};
 use std::ffi::CString;
 use std::os::raw::c_ushort;
+use std::sync::atomic::{AtomicIsize, Ordering};
 
 /// `call`'s data frame for path 1, encoded once (what the raw-socket
 /// baselines send).
@@ -35,4 +37,26 @@ pub fn alloc(sim: &Simulator) -> c_ushort {
         EW_OK
     );
     h
+}
+
+/// The system allocator, counting live heap bytes in [`HEAP`] (a cross-check
+/// of the RSS delta, which only moves in whole pages). A bench installs it
+/// with `#[global_allocator]`.
+pub struct Counting;
+
+pub static HEAP: AtomicIsize = AtomicIsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
+        HEAP.fetch_add(l.size() as isize, Ordering::Relaxed);
+        unsafe { System.alloc(l) }
+    }
+    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
+        HEAP.fetch_sub(l.size() as isize, Ordering::Relaxed);
+        unsafe { System.dealloc(p, l) }
+    }
+    unsafe fn realloc(&self, p: *mut u8, l: Layout, new: usize) -> *mut u8 {
+        HEAP.fetch_add(new as isize - l.size() as isize, Ordering::Relaxed);
+        unsafe { System.realloc(p, l, new) }
+    }
 }
