@@ -15,25 +15,6 @@ use std::os::raw::{c_short, c_ushort};
 
 const FILL: u8 = 0xCC;
 
-/// The fake CNC's open response (frame version 3, 32 axes, 8 spindles, one
-/// path, spindle word 1) and the start-up sysinfo exchange.
-const OPEN_RESP: &str = "a0a0a0a000030102004800000000000300200008000100000000000000000001000000000001\
-                         000000000000000000000000204d00000000000000000000000000000000000000000000000000\
-                         0000000000";
-const SYSINFO_REQ: &str =
-    "a0a0a0a000012101001e0001001c0001000100180000000000000000000000000000000000000000";
-const SYSINFO_RESP: &str =
-    "a0a0a0a0000321020024000100220001000100180000000000000012040200203331204d4734323130382e302033";
-const CLOSE_REQ: &str = "a0a0a0a0000102010000";
-const CLOSE_RESP: &str = "a0a0a0a0000302020000";
-
-fn ev(script: &[(u8, &str, &str)]) -> Vec<Event> {
-    script
-        .iter()
-        .map(|(c, d, h)| Event::parse(*c, d, &h.split_whitespace().collect::<String>()))
-        .collect()
-}
-
 /// A replay server with a connected handle.
 struct Fake {
     server: Replay,
@@ -43,27 +24,7 @@ struct Fake {
 impl Fake {
     fn connect() -> Fake {
         let mut server = Replay::start();
-        let port = server.port;
-        let mut h: c_ushort = 0;
-        let (r, m) = server.step(
-            "connect",
-            ev(&[
-                (1, "accept", ""),
-                (1, "req", "a0a0a0a00001010100020001"),
-                (1, "resp", OPEN_RESP),
-                (2, "accept", ""),
-                (2, "req", "a0a0a0a00001010100020002"),
-                (2, "resp", OPEN_RESP),
-                (2, "req", SYSINFO_REQ),
-                (2, "resp", SYSINFO_RESP),
-            ]),
-            || {
-                let ip = c"127.0.0.1";
-                unsafe { cnc_allclibhndl3(ip.as_ptr(), port, 3, &mut h) }
-            },
-        );
-        assert!(m.is_empty(), "{}", m.join("\n"));
-        assert_eq!(r, EW_OK);
+        let h = replay_connect(&mut server, 3);
         Fake { server, h }
     }
 

@@ -12,16 +12,6 @@ use fwlib32::*;
 use std::os::raw::{c_short, c_ushort};
 use std::time::{Duration, Instant};
 
-/// The fake CNC of tests/exchanges.rs: open answer, start-up sysinfo.
-const OPEN_RESP: &str = "a0a0a0a000030102004800000000000300200008000100000000000000000001000000000001\
-                         000000000000000000000000204d00000000000000000000000000000000000000000000000000\
-                         0000000000";
-const SYSINFO_REQ: &str =
-    "a0a0a0a000012101001e0001001c0001000100180000000000000000000000000000000000000000";
-const SYSINFO_RESP: &str =
-    "a0a0a0a0000321020024000100220001000100180000000000000012040200203331204d4734323130382e302033";
-const CLOSE_REQ: &str = "a0a0a0a0000102010000";
-const CLOSE_RESP: &str = "a0a0a0a0000302020000";
 /// cnc_modal(h, -1, 0, ..) and an answer with one pair {10, flag 0}.
 const MODAL_REQ: &str =
     "a0a0a0a000012101001e0001001c000100010021ffffffff00000000000000000000000000000000";
@@ -29,36 +19,8 @@ const MODAL_RESP: &str = "a0a0a0a00003210200140001001200010001002100000000000000
 /// A frame of a kind nobody asked for (an upload end on connection 2).
 const STRAY: &str = "a0a0a0a0000317010000";
 
-fn ev(script: &[(u8, &str, &str)]) -> Vec<Event> {
-    script
-        .iter()
-        .map(|(c, d, h)| Event::parse(*c, d, h))
-        .collect()
-}
-
 fn connect(server: &mut Replay, timeout: std::os::raw::c_long) -> c_ushort {
-    let port = server.port;
-    let mut h: c_ushort = 0;
-    let (r, m) = server.step(
-        "connect",
-        ev(&[
-            (1, "accept", ""),
-            (1, "req", "a0a0a0a00001010100020001"),
-            (1, "resp", OPEN_RESP),
-            (2, "accept", ""),
-            (2, "req", "a0a0a0a00001010100020002"),
-            (2, "resp", OPEN_RESP),
-            (2, "req", SYSINFO_REQ),
-            (2, "resp", SYSINFO_RESP),
-        ]),
-        || {
-            let ip = c"127.0.0.1";
-            unsafe { cnc_allclibhndl3(ip.as_ptr(), port, timeout, &mut h) }
-        },
-    );
-    assert!(m.is_empty(), "{}", m.join("\n"));
-    assert_eq!(r, EW_OK);
-    h
+    replay_connect(server, timeout)
 }
 
 fn close(mut server: Replay, h: c_ushort) {

@@ -810,3 +810,51 @@ impl Server {
         out
     }
 }
+
+/// The fake CNC of the replay tests (tests/exchanges.rs, tests/transport.rs):
+/// its open response (frame version 3, 32 axes, 8 spindles, one path,
+/// spindle word 1), the start-up sysinfo exchange, the close exchange.
+pub const OPEN_RESP: &str = "a0a0a0a000030102004800000000000300200008000100000000000000000001000000000001\
+                             000000000000000000000000204d00000000000000000000000000000000000000000000000000\
+                             0000000000";
+pub const SYSINFO_REQ: &str =
+    "a0a0a0a000012101001e0001001c0001000100180000000000000000000000000000000000000000";
+pub const SYSINFO_RESP: &str =
+    "a0a0a0a0000321020024000100220001000100180000000000000012040200203331204d4734323130382e302033";
+pub const CLOSE_REQ: &str = "a0a0a0a0000102010000";
+pub const CLOSE_RESP: &str = "a0a0a0a0000302020000";
+
+/// Events from (connection, direction, hex) triples; the hex may be spaced.
+pub fn ev(script: &[(u8, &str, &str)]) -> Vec<Event> {
+    script
+        .iter()
+        .map(|(c, d, h)| Event::parse(*c, d, &h.split_whitespace().collect::<String>()))
+        .collect()
+}
+
+/// `cnc_allclibhndl3` to the replay server with `timeout`, answered by the
+/// fake CNC above: the handle.
+pub fn replay_connect(server: &mut Replay, timeout: std::os::raw::c_long) -> u16 {
+    let port = server.port;
+    let mut h: u16 = 0;
+    let (r, m) = server.step(
+        "connect",
+        ev(&[
+            (1, "accept", ""),
+            (1, "req", "a0a0a0a00001010100020001"),
+            (1, "resp", OPEN_RESP),
+            (2, "accept", ""),
+            (2, "req", "a0a0a0a00001010100020002"),
+            (2, "resp", OPEN_RESP),
+            (2, "req", SYSINFO_REQ),
+            (2, "resp", SYSINFO_RESP),
+        ]),
+        || {
+            let ip = c"127.0.0.1";
+            unsafe { fwlib32::cnc_allclibhndl3(ip.as_ptr(), port, timeout, &mut h) }
+        },
+    );
+    assert!(m.is_empty(), "{}", m.join("\n"));
+    assert_eq!(r, fwlib32::ew::EW_OK);
+    h
+}
