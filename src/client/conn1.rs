@@ -5,7 +5,10 @@
 use super::conn::{Conn, Deadline, close_conn};
 use super::log;
 use crate::error::{Error, Result};
+use crate::ew::EW_BUSY;
+use crate::proto::download::Outgoing;
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
+use crate::proto::upload::ABORT_BODY;
 use std::time::Instant;
 
 /// Connection 1 with its read buffer (frames are taken from it whole, so
@@ -15,6 +18,17 @@ pub struct Conn1 {
     rbuf: Vec<u8>,
     /// The upload running on it (src/client/upload.rs).
     pub(super) upload: Option<Upload>,
+    /// The download or DNC operation running on it (src/client/download.rs);
+    /// never together with an upload.
+    pub(super) outgoing: Option<Sending>,
+}
+
+pub(super) struct Sending {
+    /// The handle that started it.
+    pub(super) owner: u16,
+    pub(super) how: Outgoing,
+    /// The CNC's end or refusal (its error frame), returned by the next call.
+    pub(super) ended: Option<Error>,
 }
 
 pub(super) struct Upload {
@@ -38,6 +52,7 @@ impl Conn1 {
             conn,
             rbuf,
             upload: None,
+            outgoing: None,
         }
     }
 
@@ -80,6 +95,50 @@ impl Conn1 {
     pub(super) fn send(&mut self, ftype: u16, body: Vec<u8>, deadline: Deadline) -> Result<()> {
         self.conn
             .send(&Frame::new(CLIENT_VERSION, ftype, body), deadline)
+    }
+
+    /// Makes way for handle `h`: a transfer whose handle was freed is
+    /// aborted and dropped; one of another live handle (`live` says which
+    /// handles of the pair exist) is EW_BUSY. Afterwards any transfer left
+    /// is `h`'s own.
+    pub(super) fn settle(
+        &mut self,
+        h: u16,
+        live: impl Fn(u16) -> bool,
+        deadline: Deadline,
+    ) -> Result<()> {
+        let owner = match (&self.upload, &self.outgoing) {
+            (Some(u), _) => u.owner,
+            (_, Some(s)) => s.owner,
+            _ => return Ok(()),
+        };
+        if owner == h {
+            Ok(())
+        } else if live(owner) {
+            Err(Error::local(
+                EW_BUSY,
+                "another transfer is running on this connection",
+            ))
+        } else {
+            self.abort(deadline)
+        }
+    }
+
+    /// Aborts and drops the running transfer: an unfinished upload with
+    /// 0x1804, a download or DNC operation with its error frame (8 zero
+    /// bytes); no answer is awaited.
+    pub(super) fn abort(&mut self, deadline: Deadline) -> Result<()> {
+        if let Some(u) = self.upload.take() {
+            if u.ended.is_none() {
+                return self.send(ftype::UPLOAD_ABORT, ABORT_BODY.to_vec(), deadline);
+            }
+        }
+        if let Some(s) = self.outgoing.take() {
+            if s.ended.is_none() {
+                return self.send(s.how.error_frame(), ABORT_BODY.to_vec(), deadline);
+            }
+        }
+        Ok(())
     }
 
     /// The close handshake, through the read buffer.

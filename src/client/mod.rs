@@ -3,6 +3,7 @@
 
 pub mod conn;
 pub mod conn1;
+pub mod download;
 pub mod handles;
 pub mod log;
 pub mod pair;
@@ -10,6 +11,7 @@ pub mod upload;
 
 use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx};
+use crate::proto::download::Outgoing;
 use crate::proto::status::SysInfo;
 use crate::proto::upload::StartReq;
 use conn::Deadline;
@@ -88,6 +90,30 @@ impl Handle {
             Error::Protocol { detail, .. } => s.detail = *detail,
             _ => {}
         }
+    }
+
+    /// cnc_dwnstart* / cnc_dncstart* on this handle's pair (see
+    /// [`pair::Pair::send_start`]).
+    pub fn send_start(&self, h: u16, how: Outgoing, req: &StartReq, timeout: i32) -> Result<()> {
+        self.pair
+            .send_start(h, how, req, timeout, |o| self.on_pair(o))
+    }
+
+    /// cnc_download* / cnc_dnc* (see [`pair::Pair::send_data`]).
+    pub fn send_data(&self, h: u16, how: Outgoing, data: &[u8], timeout: i32) -> Result<()> {
+        self.pair
+            .send_data(h, how, data, timeout, |o| self.on_pair(o))
+    }
+
+    /// cnc_dwnend* / cnc_dncend* (see [`pair::Pair::send_end`]).
+    pub fn send_end(&self, h: u16, how: Outgoing, timeout: i32) -> Result<()> {
+        self.pair.send_end(h, how, timeout, |o| self.on_pair(o))
+    }
+
+    /// cnc_dncend2 with an error result (see [`pair::Pair::send_abort`]).
+    pub fn send_abort(&self, h: u16, how: Outgoing, code: i16, timeout: i32) -> Result<()> {
+        self.pair
+            .send_abort(h, how, code, timeout, |o| self.on_pair(o))
     }
 
     /// cnc_upstart and relatives on this handle's pair; `h` is its number.

@@ -16,24 +16,12 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_BUFFER, EW_BUSY, EW_FUNC, EW_LENGTH, EW_RESET};
 use crate::proto::frame::ftype;
 use crate::proto::upload::{
-    ABORT_BODY, KIND_DATA, KIND_END, KIND_ERROR, KIND_START, MIN_READ, StartReq, decode_error,
+    KIND_DATA, KIND_END, KIND_ERROR, KIND_START, MIN_READ, StartReq, decode_error,
 };
 use std::time::{Duration, Instant};
 
 /// Detail words of the upload stall timeout (FANUC's, [dis]).
 const STALL: (i16, i16) = (9, 4);
-
-impl Conn1 {
-    /// Aborts an unfinished upload (0x1804, 8 zero bytes, no answer awaited).
-    fn abort(&mut self, deadline: Deadline) -> Result<()> {
-        match self.upload.take() {
-            Some(u) if u.ended.is_none() => {
-                self.send(ftype::UPLOAD_ABORT, ABORT_BODY.to_vec(), deadline)
-            }
-            _ => Ok(()),
-        }
-    }
-}
 
 fn no_upload() -> Error {
     Error::local(EW_FUNC, "no upload started (cnc_upstart first)")
@@ -45,7 +33,7 @@ fn busy() -> Error {
 
 impl Pair {
     /// Runs `f` on connection 1; a broken stream tears the pair down.
-    fn with_c1<T>(&self, f: impl FnOnce(&mut Conn1) -> Result<T>) -> Result<T> {
+    pub(super) fn with_c1<T>(&self, f: impl FnOnce(&mut Conn1) -> Result<T>) -> Result<T> {
         let mut g = self.c1.lock();
         let c1 = g.as_mut().ok_or_else(dead)?;
         let r = f(c1);
@@ -58,22 +46,16 @@ impl Pair {
         r
     }
 
-    /// Drops an upload whose handle was freed (aborting it), then checks
-    /// that `h` may act on the pair's upload: Ok(true) when `h` owns the
-    /// running one, Ok(false) when there is none. `live(o)` says whether
-    /// handle `o` still exists on this pair (the handle table knows).
+    /// Makes way for `h` (see [`Conn1::settle`]): Ok(true) when `h` owns
+    /// the running upload, Ok(false) when there is none.
     fn settle(
         c1: &mut Conn1,
         h: u16,
         live: impl Fn(u16) -> bool,
         deadline: Deadline,
     ) -> Result<bool> {
-        match &c1.upload {
-            None => Ok(false),
-            Some(u) if u.owner == h => Ok(true),
-            Some(u) if live(u.owner) => Err(busy()),
-            Some(_) => c1.abort(deadline).map(|_| false),
-        }
+        c1.settle(h, live, deadline)?;
+        Ok(c1.upload.is_some())
     }
 
     /// cnc_upstart and relatives: 0x1501, then any 0x15xx answer.
@@ -86,7 +68,7 @@ impl Pair {
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
-            if Self::settle(c1, h, live, deadline)? {
+            if Self::settle(c1, h, live, deadline)? || c1.outgoing.is_some() {
                 return Err(busy());
             }
             c1.send(ftype::UPLOAD_START_REQ, req.encode(), deadline)?;

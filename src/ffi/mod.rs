@@ -4,6 +4,7 @@
 pub mod absent;
 pub mod alarm;
 pub mod described;
+pub mod download;
 pub mod exports;
 pub mod ext;
 pub mod handle;

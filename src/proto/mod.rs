@@ -4,6 +4,7 @@
 pub mod alarm;
 pub mod call;
 pub mod described;
+pub mod download;
 pub mod frame;
 pub mod macros;
 pub mod names;

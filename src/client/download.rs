@@ -1,0 +1,169 @@
+//! Program download and DNC operation on connection 1, client side
+//! (frames: src/proto/download.rs).
+//!
+//! As the upload (src/client/upload.rs): one transfer per connection pair,
+//! owned by the handle that started it, under connection 1's own lock, so
+//! data requests of every handle go on meanwhile. Data calls send at once
+//! and wait for nothing; a CNC error frame that has arrived is returned by
+//! the next call, as FANUC's library does.
+
+use super::conn::Deadline;
+use super::conn1::{Conn1, Sending};
+use super::pair::Pair;
+use crate::error::{Error, Result};
+use crate::ew::{EW_BUSY, EW_FUNC, EW_RESET};
+use crate::proto::download::Outgoing;
+use crate::proto::upload::{StartReq, decode_error, error_body};
+
+fn not_started() -> Error {
+    Error::local(EW_FUNC, "no download or DNC operation started")
+}
+
+/// The error a CNC error frame body means: code 0 ends the transfer
+/// (EW_RESET), another code is the CNC's refusal.
+fn cnc_end(body: &[u8]) -> Error {
+    let (code, detail1, detail2) = decode_error(body);
+    Error::Cnc {
+        code: if code == 0 { EW_RESET } else { code },
+        detail1,
+        detail2,
+    }
+}
+
+impl Conn1 {
+    /// `h`'s running transfer of kind `how`, after taking in an error
+    /// frame that has arrived (frames of other kinds are stale: dropped).
+    fn sending(&mut self, how: Outgoing) -> Result<&mut Sending> {
+        match &self.outgoing {
+            Some(s) if s.how == how => {}
+            _ => return Err(not_started()),
+        }
+        while self.outgoing.as_ref().is_some_and(|s| s.ended.is_none()) {
+            let Some(f) = self.next_frame(None)? else {
+                break;
+            };
+            if (f.ftype >> 8) as u8 == how.error {
+                self.outgoing.as_mut().expect("checked").ended = Some(cnc_end(&f.body));
+            }
+        }
+        Ok(self.outgoing.as_mut().expect("checked"))
+    }
+}
+
+impl Pair {
+    /// cnc_dwnstart* / cnc_dncstart*: the start frame, then its answer.
+    pub fn send_start(
+        &self,
+        h: u16,
+        how: Outgoing,
+        req: &StartReq,
+        timeout: i32,
+        live: impl Fn(u16) -> bool,
+    ) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            c1.settle(h, live, deadline)?;
+            if c1.upload.is_some() || c1.outgoing.is_some() {
+                return Err(Error::local(EW_BUSY, "a transfer is already running"));
+            }
+            c1.send(how.start_req(), req.encode(), deadline)?;
+            let f = c1.recv_kind(how.start, deadline)?;
+            if f.ftype != how.start_resp() {
+                return Err(Error::local(EW_FUNC, "the CNC refused the transfer"));
+            }
+            c1.outgoing = Some(Sending {
+                owner: h,
+                how,
+                ended: None,
+            });
+            Ok(())
+        })
+    }
+
+    /// cnc_download* / cnc_dnc*: `data` in frames of `how.chunk` bytes. A
+    /// CNC error frame that has arrived is returned instead (code 0:
+    /// EW_RESET), by this call and every later one until the end call.
+    pub fn send_data(
+        &self,
+        h: u16,
+        how: Outgoing,
+        data: &[u8],
+        timeout: i32,
+        live: impl Fn(u16) -> bool,
+    ) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            c1.settle(h, live, deadline)?;
+            if let Some(e) = &c1.sending(how)?.ended {
+                return Err(e.clone());
+            }
+            for chunk in data.chunks(how.chunk) {
+                c1.send(how.data_frame(), chunk.to_vec(), deadline)?;
+            }
+            Ok(())
+        })
+    }
+
+    /// cnc_dwnend* / cnc_dncend*: after the CNC's error frame, its code
+    /// (0: Ok) and nothing sent; else the end frame, then the CNC's answer
+    /// or its error frame.
+    pub fn send_end(
+        &self,
+        h: u16,
+        how: Outgoing,
+        timeout: i32,
+        live: impl Fn(u16) -> bool,
+    ) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            c1.settle(h, live, deadline)?;
+            let ended = c1.sending(how)?.ended.clone();
+            if let Some(e) = ended {
+                c1.outgoing = None;
+                return ok_at_end(e);
+            }
+            let r = c1.send(how.end_req(), Vec::new(), deadline).and_then(|_| {
+                loop {
+                    let f = c1.next_frame(Some(deadline))?.expect("waited");
+                    match (f.ftype >> 8) as u8 {
+                        k if k == how.end => break Ok(()),
+                        k if k == how.error => break ok_at_end(cnc_end(&f.body)),
+                        _ => {}
+                    }
+                }
+            });
+            c1.outgoing = None;
+            r
+        })
+    }
+
+    /// cnc_dncend2 with an error result: the client's error frame carrying
+    /// `code`, no answer awaited.
+    pub fn send_abort(
+        &self,
+        h: u16,
+        how: Outgoing,
+        code: i16,
+        timeout: i32,
+        live: impl Fn(u16) -> bool,
+    ) -> Result<()> {
+        let deadline = Deadline::after_secs(timeout);
+        self.with_c1(|c1| {
+            c1.settle(h, live, deadline)?;
+            let ended = c1.sending(how)?.ended.clone();
+            c1.outgoing = None;
+            match ended {
+                Some(e) => ok_at_end(e),
+                None => c1.send(how.error_frame(), error_body(code, 0, 0), deadline),
+            }
+        })
+    }
+}
+
+/// An end call's answer to the CNC's end of the transfer: code 0 is Ok.
+fn ok_at_end(e: Error) -> Result<()> {
+    match e {
+        Error::Cnc { code: EW_RESET, .. } => Ok(()),
+        e => Err(e),
+    }
+}
