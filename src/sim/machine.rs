@@ -286,12 +286,12 @@ impl CncService for Machine {
 
     fn prog_dir(
         &mut self,
-        _path: u16,
+        path: u16,
         top: i32,
         count: i32,
         code: i32,
     ) -> Reply<crate::proto::program::ProgDir> {
-        self.sim_prog_dir(top, count, code)
+        self.sim_prog_dir(path, top, count, code)
     }
 
     // --- alarm ---

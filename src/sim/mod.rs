@@ -4,7 +4,7 @@
 //!
 //! Layers, each using only those before it (tests/layers.rs checks it):
 //! service (the CncService trait, errors) and pmc → profile (pure data,
-//! with its sections in profile/) → run (the [`Machine`] and its live
+//! with its sections in profile/) → store (program memory) → run (the [`Machine`] and its live
 //! state) → the areas adding methods to it (param, macros, offset,
 //! program, position, history) → machine (the CncService impl); faults
 //! (the `[[fault]]`s at an instant) and trace (frames as text) → shared
@@ -27,6 +27,7 @@ pub mod server;
 pub mod service;
 pub mod session;
 pub mod shared;
+pub mod store;
 pub mod trace;
 
 use std::net::SocketAddr;

@@ -77,7 +77,7 @@ impl Machine {
         let r = self.pos_run(path)?;
         Ok(ProgNums {
             data: r.program,
-            mdata: r.main_program,
+            mdata: self.store.path(path)?.main,
         })
     }
 

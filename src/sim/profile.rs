@@ -137,6 +137,8 @@ pub struct Path {
     pub spindles: Vec<Spindle>,
     /// The program this path runs (src/sim/run.rs).
     pub cycle: cycle::Cycle,
+    /// Its program memory (src/sim/store.rs).
+    pub memory: cycle::Memory,
     /// Alarms active from the start.
     #[serde(rename = "alarm")]
     pub alarms: Vec<cycle::Alarm>,
@@ -365,10 +367,20 @@ impl Profile {
                 return Err(format!("[[program]] O{:04}: text must be ASCII", p.number));
             }
             cycle::program_date(p).map_err(|e| format!("[[program]] O{:04}: {e}", p.number))?;
+            if usize::from(p.path) > self.paths.len() {
+                return Err(format!("[[program]] O{:04}: no path {}", p.number, p.path));
+            }
         }
         for (i, p) in self.paths.iter().enumerate() {
             let c = &p.cycle;
-            if c.program != 0 && !self.programs.iter().any(|q| q.number == c.program) {
+            let here = |q: &&cycle::StoredProgram| q.path == 0 || usize::from(q.path) == i + 1;
+            if c.program != 0
+                && !self
+                    .programs
+                    .iter()
+                    .filter(here)
+                    .any(|q| q.number == c.program)
+            {
                 return Err(format!(
                     "path {}: cycle.program = {} names no [[program]] with that number",
                     i + 1,

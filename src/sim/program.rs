@@ -4,7 +4,6 @@
 //! from [`super::run::PathRun`] at request time.
 
 use super::Machine;
-pub use super::profile::cycle::{DEFAULT_PROGRAM_DATE, program_date};
 pub use super::profile::program::{Modal, OperatorMessage, Timers};
 use super::service::{CncError, Reply};
 use crate::ew;
@@ -169,12 +168,7 @@ impl Machine {
                 // Time into the current cycle of path 1's program.
                 let p = self.profile.paths.first();
                 let blocks = p
-                    .and_then(|p| {
-                        self.profile
-                            .programs
-                            .iter()
-                            .find(|s| s.number == p.cycle.program)
-                    })
+                    .and_then(|p| self.store.get(1, p.cycle.program))
                     .map_or(0, |s| s.text.lines().count());
                 let period = p.map_or(0.0, |p| p.cycle.block_seconds) * blocks as f64 * 1000.0;
                 if period >= 1.0 {
@@ -336,23 +330,22 @@ impl Machine {
     /// to FANUC's library carries all fields for every type): size = the
     /// text's length in bytes, comment in parentheses (cut to 50
     /// characters), the profile's date. No program: an empty payload.
-    pub(crate) fn sim_prog_dir(&self, top: i32, count: i32, code: i32) -> Reply<ProgDir> {
+    pub(crate) fn sim_prog_dir(
+        &self,
+        path: u16,
+        top: i32,
+        count: i32,
+        code: i32,
+    ) -> Reply<ProgDir> {
         if !PROGDIR_CODES.contains(&code) {
             return Err(err(ew::EW_ATTRIB));
         }
         if count <= 0 {
             return Err(err(ew::EW_LENGTH));
         }
-        let mut progs: Vec<&super::run::StoredProgram> = self
-            .profile
-            .programs
-            .iter()
-            .filter(|p| p.number >= top)
-            .collect();
-        progs.sort_by_key(|p| p.number);
+        let progs = self.store.iter(path).filter(|p| p.number >= top);
         Ok(ProgDir(
             progs
-                .into_iter()
                 .take(count as usize)
                 .map(|p| {
                     let mut comment = [0u8; 52];
@@ -362,16 +355,30 @@ impl Machine {
                         let n = t.len().min(51);
                         comment[..n].copy_from_slice(&t.as_bytes()[..n]);
                     }
-                    let d = program_date(p).unwrap_or(DEFAULT_PROGRAM_DATE);
+                    let d = p.modified;
                     DirEntry {
                         number: p.number,
-                        length: p.text.len() as i32,
+                        length: p.size() as i32,
                         comment,
                         date: [d[0], d[1], d[2], d[3], d[4], 0],
                     }
                 })
                 .collect(),
         ))
+    }
+
+    /// Today's date on the CNC's clock (cnc_gettimer's, moved by
+    /// cnc_settimer): what a stored or changed program is dated.
+    pub fn today(&self) -> crate::sim::store::Date {
+        let tm = local(self.clock_now());
+        [
+            tm.tm_year + 1900,
+            tm.tm_mon + 1,
+            tm.tm_mday,
+            tm.tm_hour,
+            tm.tm_min,
+        ]
+        .map(|v| v as u16)
     }
 }
 

@@ -7,6 +7,7 @@
 use super::pmc::Pmc;
 pub use super::profile::cycle::{ACTIONS, Alarm, Cycle, Event, StoredProgram};
 use super::profile::{Profile, StatusWords};
+use super::store::{Program, Store};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -27,13 +28,20 @@ pub struct Machine {
     pub now: std::time::Instant,
     /// Live state per path (what a running machine changes).
     pub run: Vec<PathRun>,
+    /// The program memory of each path (src/sim/store.rs): the profile's
+    /// `[[program]]`s (taken out of `profile`) and what the program
+    /// functions change.
+    pub store: Store,
 }
 
 impl Machine {
-    pub fn new(profile: Profile) -> Machine {
+    pub fn new(mut profile: Profile) -> Machine {
         let started = std::time::Instant::now();
+        let store = Store::seed(&profile);
+        profile.programs = Vec::new();
         Machine {
-            run: Machine::initial_run(&profile),
+            run: Machine::initial_run(&profile, &store),
+            store,
             profile,
             started,
             now: started,
@@ -60,9 +68,9 @@ impl Machine {
 /// status words, axis positions and spindle speeds of the path.
 #[derive(Debug, Clone, Default)]
 pub struct PathRun {
-    /// O number running (cnc_rdprgnum data) and main program (mdata).
+    /// O number running (cnc_rdprgnum data; the main program, mdata, is
+    /// the store's selection, [`super::store::PathStore::main`]).
     pub program: i32,
-    pub main_program: i32,
     /// Name as cnc_exeprgname/exeprgname2 report it.
     pub program_name: String,
     /// Sequence number of the current block (cnc_rdseqnum): the last N
@@ -424,22 +432,19 @@ fn event_path(e: &Event) -> usize {
 
 impl Machine {
     /// The initial live state of every path, from the profile.
-    pub fn initial_run(profile: &super::Profile) -> Vec<PathRun> {
+    pub fn initial_run(profile: &super::Profile, store: &Store) -> Vec<PathRun> {
         profile
             .paths
             .iter()
-            .map(|p| {
-                let prog = profile
-                    .programs
-                    .iter()
-                    .find(|s| s.number == p.cycle.program);
+            .enumerate()
+            .map(|(i, p)| {
+                let prog = store.get(i as u16 + 1, p.cycle.program);
                 let plan = prog
                     .filter(|_| p.cycle.program != 0)
                     .map(|s| Arc::new(Plan::parse(&s.text, &p.axes, &p.cycle)));
                 PathRun {
                     program: p.cycle.program,
-                    main_program: p.cycle.program,
-                    program_name: prog.map(StoredProgram::display_name).unwrap_or_default(),
+                    program_name: prog.map(Program::display_name).unwrap_or_default(),
                     exec_text: prog
                         .map(|s| {
                             s.text
@@ -484,6 +489,12 @@ impl Machine {
         let mut raised: Vec<(u16, Alarm, Duration)> = Vec::new();
         for i in 0..self.run.len() {
             self.advance_path(i, t, &mut raised);
+        }
+        for (i, r) in self.run.iter().enumerate() {
+            let busy = self.profile.paths[i].status.run != 0;
+            if let Ok(s) = self.store.path_mut(i as u16 + 1) {
+                s.running = if busy { r.program } else { 0 };
+            }
         }
         for (path, alarm, at) in raised {
             self.on_alarm_raised(path, &alarm, since.saturating_sub(at));
@@ -771,10 +782,9 @@ impl Machine {
         if req.path == 0 || usize::from(req.path) > self.profile.paths.len() {
             return Err(CncError::PATH);
         }
-        let mut found: Vec<&StoredProgram> = if let Some(name) = req.start.strip_prefix("N:") {
-            self.profile
-                .programs
-                .iter()
+        let progs = self.store.iter(req.path);
+        let found: Vec<&Program> = if let Some(name) = req.start.strip_prefix("N:") {
+            progs
                 .filter(|p| !name.is_empty() && p.answers_to(name, req.path))
                 .collect()
         } else {
@@ -782,19 +792,14 @@ impl Machine {
             if s > e {
                 return Err(CncError::NUMBER);
             }
-            self.profile
-                .programs
-                .iter()
+            progs
                 .filter(|p| (s..=e).contains(&i64::from(p.number)))
                 .collect()
         };
         if found.is_empty() {
             return Err(CncError::new(EW_DATA));
         }
-        found.sort_by_key(|p| p.number);
-        Ok(crate::proto::upload::punch(
-            found.iter().map(|p| p.text.as_str()),
-        ))
+        Ok(crate::proto::upload::punch(found.iter().map(|p| &*p.text)))
     }
 }
 

@@ -20,6 +20,20 @@ pub struct StoredProgram {
     /// Last modification, "YYYY-MM-DD HH:MM" (cnc_rdprogdir3 type 2);
     /// absent: 2024-05-17 13:45 (src/sim/program.rs).
     pub date: Option<String>,
+    /// The path whose memory holds it (0: every path's).
+    pub path: u16,
+    /// Edit protection: delete, rename and overwrite are refused (EW_PROT).
+    pub protect: bool,
+}
+
+/// `[path.memory]`: the path's program memory (src/sim/store.rs).
+#[derive(Debug, Clone, Copy, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct Memory {
+    /// Bytes for programs (default 512 KiB).
+    pub bytes: Option<usize>,
+    /// Programs it holds at most (default 400).
+    pub programs: Option<usize>,
 }
 
 /// `[path.cycle]`: the program a path runs and how fast it goes.
@@ -86,46 +100,6 @@ impl Event {
             every: self.every,
             duration: self.duration,
         }
-    }
-}
-
-impl StoredProgram {
-    /// The name CNCs report: the profile's, or "O<number>".
-    pub fn display_name(&self) -> String {
-        if self.name.is_empty() {
-            format!("O{:04}", self.number)
-        } else {
-            self.name.clone()
-        }
-    }
-
-    /// The full path name cnc_exeprgname2 reports for it on `path`: the
-    /// profile's name if it is a path, else "//CNC_MEM/USER/PATH<n>/<name>".
-    pub fn full_name(&self, path: u16) -> String {
-        let name = self.display_name();
-        if name.starts_with("//") {
-            name
-        } else {
-            format!("//CNC_MEM/USER/PATH{path}/{name}")
-        }
-    }
-
-    /// Whether an upload name ("N:" stripped) asked on `path` means this
-    /// program: its name, "O<number>" / "O%04d", the last element of its
-    /// path name, its full path name (what cnc_exeprgname2 reports), or its
-    /// folder followed by "O<number>" / "O%04d".
-    pub fn answers_to(&self, name: &str, path: u16) -> bool {
-        let o_forms = [format!("O{:04}", self.number), format!("O{}", self.number)];
-        let display = self.display_name();
-        let full = self.full_name(path);
-        let folder = &full[..full.rfind('/').map_or(0, |i| i + 1)];
-        display == name
-            || o_forms.iter().any(|o| o == name)
-            || display.rsplit('/').next() == Some(name)
-            || full == name
-            || name
-                .strip_prefix(folder)
-                .is_some_and(|leaf| o_forms.iter().any(|o| o == leaf))
     }
 }
 
