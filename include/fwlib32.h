@@ -1338,6 +1338,107 @@ short cnc_diagnoss(unsigned short FlibHndl,
 short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Sends `number` (1..40959) bytes of the DNC program.
+
+ # Safety
+ `data` must point to `number` readable bytes.
+ */
+short cnc_dnc(unsigned short FlibHndl, char *data, unsigned short number);
+
+/*
+ Sends `*length` bytes of the DNC program.
+
+ # Safety
+ `length` must point to a `long` (4 bytes are read), `data` to `*length` bytes.
+ */
+short cnc_dnc2(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ Ends the DNC operation.
+ */
+short cnc_dncend(unsigned short FlibHndl);
+
+/*
+ Ends the DNC operation: `rslt` -1 ends it normally, -32768 aborts it
+ (the CNC is sent that code); other values are EW_DATA.
+ */
+short cnc_dncend2(unsigned short FlibHndl, short rslt);
+
+/*
+ Starts a DNC operation: the CNC runs the program while it arrives.
+ Needs the FOCAS option.
+ */
+short cnc_dncstart(unsigned short FlibHndl);
+
+/*
+ Starts a DNC operation (FANUC's library sends no name: `fname` is not used).
+
+ # Safety
+ `fname` is not read.
+ */
+short cnc_dncstart2(unsigned short FlibHndl, char *fname);
+
+/*
+ Sends `number` (1..256) bytes of NC program text.
+
+ # Safety
+ `data` must point to `number` readable bytes.
+ */
+short cnc_download(unsigned short FlibHndl, char *data, short number);
+
+/*
+ Sends `*length` bytes of NC program text (any size: FANUC's frames of
+ 1280 bytes). A CNC refusal that has arrived is returned instead.
+
+ # Safety
+ `length` must point to a `long` (4 bytes are read), `data` to `*length` bytes.
+ */
+short cnc_download3(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ As cnc_download3 (FANUC's cnc_download4 is the same function).
+
+ # Safety
+ As cnc_download3.
+ */
+short cnc_download4(unsigned short FlibHndl, long *length, char *data);
+
+/*
+ Ends the download started by cnc_dwnstart: the CNC stores the program
+ and answers, or returns its refusal (EW_DATA, EW_OVRFLOW, EW_PROT ...).
+ */
+short cnc_dwnend(unsigned short FlibHndl);
+
+/*
+ Ends the download (see cnc_dwnend).
+ */
+short cnc_dwnend3(unsigned short FlibHndl);
+
+/*
+ As cnc_dwnend3.
+ */
+short cnc_dwnend4(unsigned short FlibHndl);
+
+/*
+ Starts downloading an NC program (data type 0). Needs the FOCAS option.
+ */
+short cnc_dwnstart(unsigned short FlibHndl);
+
+/*
+ Starts downloading data of `type` (0 = NC programs).
+ */
+short cnc_dwnstart3(unsigned short FlibHndl, short type);
+
+/*
+ Starts downloading data of `type` into the folder or program `prgname`
+ (e.g. "//CNC_MEM/USER/PATH1/"; NULL sends no name).
+
+ # Safety
+ `prgname` must be NULL or a NUL-terminated string.
+ */
+short cnc_dwnstart4(unsigned short FlibHndl, short type, char *prgname);
+
+/*
  Reads the name and O number of the running program.
 
  # Safety

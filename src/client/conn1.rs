@@ -27,6 +27,9 @@ pub(super) struct Sending {
     /// The handle that started it.
     pub(super) owner: u16,
     pub(super) how: Outgoing,
+    /// The start request, until it is sent: cnc_dncstart leaves it to the
+    /// first cnc_dnc, as FANUC's library does.
+    pub(super) pending: Option<Vec<u8>>,
     /// The CNC's end or refusal (its error frame), returned by the next call.
     pub(super) ended: Option<Error>,
 }

@@ -31,6 +31,29 @@ fn cnc_end(body: &[u8]) -> Error {
 }
 
 impl Conn1 {
+    /// Sends the start request still pending, and waits for its answer;
+    /// the transfer is dropped if the CNC does not take it.
+    fn start_now(&mut self, deadline: Deadline) -> Result<()> {
+        let Some(s) = self.outgoing.as_mut() else {
+            return Err(not_started());
+        };
+        let (how, Some(body)) = (s.how, s.pending.take()) else {
+            return Ok(());
+        };
+        let r = self.send(how.start_req(), body, deadline).and_then(|_| {
+            let f = self.recv_kind(how.start, deadline)?;
+            if f.ftype == how.start_resp() {
+                Ok(())
+            } else {
+                Err(Error::local(EW_FUNC, "the CNC refused the transfer"))
+            }
+        });
+        if r.is_err() {
+            self.outgoing = None;
+        }
+        r
+    }
+
     /// `h`'s running transfer of kind `how`, after taking in an error
     /// frame that has arrived (frames of other kinds are stale: dropped).
     fn sending(&mut self, how: Outgoing) -> Result<&mut Sending> {
@@ -51,12 +74,14 @@ impl Conn1 {
 }
 
 impl Pair {
-    /// cnc_dwnstart* / cnc_dncstart*: the start frame, then its answer.
+    /// cnc_dwnstart* / cnc_dncstart*: the start frame, then its answer;
+    /// with `defer`, both wait for the first data call (cnc_dncstart).
     pub fn send_start(
         &self,
         h: u16,
         how: Outgoing,
         req: &StartReq,
+        defer: bool,
         timeout: i32,
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
@@ -66,17 +91,17 @@ impl Pair {
             if c1.upload.is_some() || c1.outgoing.is_some() {
                 return Err(Error::local(EW_BUSY, "a transfer is already running"));
             }
-            c1.send(how.start_req(), req.encode(), deadline)?;
-            let f = c1.recv_kind(how.start, deadline)?;
-            if f.ftype != how.start_resp() {
-                return Err(Error::local(EW_FUNC, "the CNC refused the transfer"));
-            }
             c1.outgoing = Some(Sending {
                 owner: h,
                 how,
+                pending: Some(req.encode()),
                 ended: None,
             });
-            Ok(())
+            if defer {
+                Ok(())
+            } else {
+                c1.start_now(deadline)
+            }
         })
     }
 
@@ -97,6 +122,7 @@ impl Pair {
             if let Some(e) = &c1.sending(how)?.ended {
                 return Err(e.clone());
             }
+            c1.start_now(deadline)?;
             for chunk in data.chunks(how.chunk) {
                 c1.send(how.data_frame(), chunk.to_vec(), deadline)?;
             }
@@ -117,10 +143,16 @@ impl Pair {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
             c1.settle(h, live, deadline)?;
-            let ended = c1.sending(how)?.ended.clone();
+            let s = c1.sending(how)?;
+            let (ended, unsent) = (s.ended.clone(), s.pending.is_some());
             if let Some(e) = ended {
                 c1.outgoing = None;
                 return ok_at_end(e);
+            }
+            if unsent {
+                // Nothing was sent: FANUC's library has nothing to end.
+                c1.outgoing = None;
+                return Err(not_started());
             }
             let r = c1.send(how.end_req(), Vec::new(), deadline).and_then(|_| {
                 loop {
@@ -150,8 +182,12 @@ impl Pair {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
             c1.settle(h, live, deadline)?;
-            let ended = c1.sending(how)?.ended.clone();
+            let s = c1.sending(how)?;
+            let (ended, unsent) = (s.ended.clone(), s.pending.is_some());
             c1.outgoing = None;
+            if unsent {
+                return Err(not_started());
+            }
             match ended {
                 Some(e) => ok_at_end(e),
                 None => c1.send(how.error_frame(), error_body(code, 0, 0), deadline),

@@ -94,9 +94,16 @@ impl Handle {
 
     /// cnc_dwnstart* / cnc_dncstart* on this handle's pair (see
     /// [`pair::Pair::send_start`]).
-    pub fn send_start(&self, h: u16, how: Outgoing, req: &StartReq, timeout: i32) -> Result<()> {
+    pub fn send_start(
+        &self,
+        h: u16,
+        how: Outgoing,
+        req: &StartReq,
+        defer: bool,
+        timeout: i32,
+    ) -> Result<()> {
         self.pair
-            .send_start(h, how, req, timeout, |o| self.on_pair(o))
+            .send_start(h, how, req, defer, timeout, |o| self.on_pair(o))
     }
 
     /// cnc_download* / cnc_dnc* (see [`pair::Pair::send_data`]).

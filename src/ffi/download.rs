@@ -5,8 +5,10 @@
 //! Local checks learnt from FANUC's library [oracle]: the first forms
 //! (cnc_dwnstart, cnc_download, cnc_dwnend, cnc_dncstart, cnc_dnc,
 //! cnc_dncend) need the CNC's FOCAS option bit (EW_NOOPT, before anything
-//! else); a start with a negative data type is EW_ATTRIB; cnc_download
-//! takes 1..=256 bytes, cnc_dnc fewer than 40960, cnc_download3/4 and
+//! else); cnc_dncstart sends its start frame with the first cnc_dnc (a
+//! cnc_dncend before it is EW_FUNC); a cnc_dwnstart3 with a negative data
+//! type is EW_ATTRIB (cnc_dwnstart4 sends it); cnc_download takes 1..=256
+//! bytes, cnc_dnc 0..=40959, cnc_download3/4 and
 //! cnc_dnc2 a `*length` of 1 or more (else EW_LENGTH, nothing sent);
 //! cnc_dncend2 ends with `rslt` -1, aborts with -32768 (the client's error
 //! frame carries it) and refuses any other value with EW_DATA. A second
@@ -42,15 +44,19 @@ fn on(
     r
 }
 
+/// A start: `checked` refuses a negative data type (cnc_dwnstart3; not
+/// cnc_dwnstart4); `defer` leaves the start frame to the first data call.
 fn start(
     handle: c_ushort,
     option: bool,
     how: Outgoing,
     dtype: c_short,
     name: String,
+    checked: bool,
+    defer: bool,
 ) -> Result<()> {
     on(handle, option, |h, n, t| {
-        if dtype < 0 {
+        if checked && dtype < 0 {
             return Err(Error::local(EW_ATTRIB, "negative data type"));
         }
         if name.len() >= NAME_LEN {
@@ -63,7 +69,7 @@ fn start(
             start: name,
             end: String::new(),
         };
-        h.send_start(n, how, &req, t)
+        h.send_start(n, how, &req, defer, t)
     })
 }
 
@@ -77,14 +83,19 @@ unsafe fn data(
     how: Outgoing,
     data: *mut c_char,
     len: i64,
-    max: i64,
+    range: std::ops::RangeInclusive<i64>,
 ) -> Result<()> {
     on(handle, option, |h, n, t| {
-        if !(1..=max).contains(&len) {
+        if !range.contains(&len) {
             return Err(Error::local(EW_LENGTH, "data length out of range"));
         }
-        let data = nonnull(data).map_err(|_| Error::local(EW_DATA, "data is NULL"))?;
-        let bytes = unsafe { std::slice::from_raw_parts(data.cast::<u8>(), len as usize) };
+        let bytes = match len {
+            0 => &[][..],
+            _ => {
+                let data = nonnull(data).map_err(|_| Error::local(EW_DATA, "data is NULL"))?;
+                unsafe { std::slice::from_raw_parts(data.cast::<u8>(), len as usize) }
+            }
+        };
         h.send_data(n, how, bytes, t)
     })
 }
@@ -101,7 +112,16 @@ unsafe fn data3(
 ) -> Result<()> {
     let len_p = nonnull(length).map_err(|_| Error::local(EW_DATA, "length is NULL"))?;
     let len = unsafe { len_p.cast::<i32>().read_unaligned() };
-    unsafe { data(handle, false, how, d, i64::from(len), i64::from(i32::MAX)) }
+    unsafe {
+        data(
+            handle,
+            false,
+            how,
+            d,
+            i64::from(len),
+            1..=i64::from(i32::MAX),
+        )
+    }
 }
 
 fn end(handle: c_ushort, option: bool, how: Outgoing) -> Result<()> {
@@ -112,7 +132,7 @@ fn end(handle: c_ushort, option: bool, how: Outgoing) -> Result<()> {
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_dwnstart(FlibHndl: c_ushort) -> c_short {
     ffi_boundary!("cnc_dwnstart", {
-        start(FlibHndl, true, DOWNLOAD, 0, String::new())
+        start(FlibHndl, true, DOWNLOAD, 0, String::new(), true, false)
     })
 }
 
@@ -127,7 +147,7 @@ pub unsafe extern "C" fn cnc_download(
     number: c_short,
 ) -> c_short {
     ffi_boundary!("cnc_download", {
-        unsafe { self::data(FlibHndl, true, DOWNLOAD, data, i64::from(number), 256) }
+        unsafe { self::data(FlibHndl, true, DOWNLOAD, data, i64::from(number), 1..=256) }
     })
 }
 
@@ -142,7 +162,15 @@ pub extern "C" fn cnc_dwnend(FlibHndl: c_ushort) -> c_short {
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_dwnstart3(FlibHndl: c_ushort, r#type: c_short) -> c_short {
     ffi_boundary!("cnc_dwnstart3", {
-        start(FlibHndl, false, DOWNLOAD, r#type, String::new())
+        start(
+            FlibHndl,
+            false,
+            DOWNLOAD,
+            r#type,
+            String::new(),
+            true,
+            false,
+        )
     })
 }
 
@@ -185,7 +213,7 @@ pub unsafe extern "C" fn cnc_dwnstart4(
         } else {
             Some(unsafe { cstr(prgname) }?)
         };
-        start(FlibHndl, false, DOWNLOAD, r#type, name4(name))
+        start(FlibHndl, false, DOWNLOAD, r#type, name4(name), false, false)
     })
 }
 
@@ -215,11 +243,12 @@ pub extern "C" fn cnc_dwnend4(FlibHndl: c_ushort) -> c_short {
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_dncstart(FlibHndl: c_ushort) -> c_short {
     ffi_boundary!("cnc_dncstart", {
-        start(FlibHndl, true, DNC, 0, String::new())
+        start(FlibHndl, true, DNC, 0, String::new(), true, true)
     })
 }
 
-/// Sends `number` (1..40959) bytes of the DNC program.
+/// Sends `number` (0..40959) bytes of the DNC program (the first call
+/// also sends the start cnc_dncstart left to it).
 ///
 /// # Safety
 /// `data` must point to `number` readable bytes.
@@ -230,7 +259,7 @@ pub unsafe extern "C" fn cnc_dnc(
     number: c_ushort,
 ) -> c_short {
     ffi_boundary!("cnc_dnc", {
-        unsafe { self::data(FlibHndl, true, DNC, data, i64::from(number), 40959) }
+        unsafe { self::data(FlibHndl, true, DNC, data, i64::from(number), 0..=40959) }
     })
 }
 
@@ -248,7 +277,7 @@ pub extern "C" fn cnc_dncend(FlibHndl: c_ushort) -> c_short {
 pub unsafe extern "C" fn cnc_dncstart2(FlibHndl: c_ushort, fname: *mut c_char) -> c_short {
     ffi_boundary!("cnc_dncstart2", {
         let _ = fname;
-        start(FlibHndl, false, DNC, 0, String::new())
+        start(FlibHndl, false, DNC, 0, String::new(), true, false)
     })
 }
 

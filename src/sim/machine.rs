@@ -521,4 +521,15 @@ impl CncService for Machine {
     fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
         self.upload_text(req)
     }
+    fn receive(
+        &mut self,
+        how: crate::proto::download::Outgoing,
+        req: &crate::proto::upload::StartReq,
+        text: &[u8],
+    ) -> Reply<()> {
+        match how {
+            crate::proto::download::DOWNLOAD => self.download(req, text),
+            _ => Err(CncError::FUNC),
+        }
+    }
 }

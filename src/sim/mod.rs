@@ -11,6 +11,7 @@
 //! ([`Shared`]: what a machine's connections share) → session (one
 //! connection) → server (listeners) → fleet (many machines on one runtime).
 
+pub mod download;
 pub mod faults;
 pub mod fleet;
 pub mod history;

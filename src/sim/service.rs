@@ -359,6 +359,17 @@ pub trait CncService: Send {
     fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
         unsupported()
     }
+    /// A download or DNC operation on connection 1 has ended (the client's
+    /// end frame): `text` is everything its data frames carried. Ok is the
+    /// end's answer; an error goes back in the CNC's error frame.
+    fn receive(
+        &mut self,
+        how: crate::proto::download::Outgoing,
+        req: &crate::proto::upload::StartReq,
+        text: &[u8],
+    ) -> Reply<()> {
+        unsupported()
+    }
 }
 
 fn enc<T: Wire>(r: Reply<T>) -> Reply<Vec<u8>> {

@@ -5,8 +5,10 @@ use super::faults::Cut;
 use super::server::Shared;
 use super::service::dispatch;
 use super::trace::Namer;
+use crate::proto::download::Outgoing;
 use crate::proto::frame::{Frame, ftype};
 use crate::proto::packet::{RespSub, decode_request, encode_response};
+use crate::proto::upload::{StartReq, error_body};
 use std::os::fd::AsRawFd;
 use std::sync::Arc;
 use std::sync::atomic::Ordering;
@@ -71,6 +73,8 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
         (open.frame_version(), Namer::new(open.class()))
     };
     let epoch = shared.epoch();
+    // A download or DNC operation this connection is receiving.
+    let mut incoming: Option<Incoming> = None;
     let mut last = shared.fault_time(shared.now());
     if faults.refusing(last) {
         // Accepted just before the listener stopped: refused all the same.
@@ -221,6 +225,13 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
                 }
                 continue;
             }
+            t if Outgoing::of_kind((t >> 8) as u8).is_some() => {
+                shared.trace(id, || namer.request(&frame, &[]));
+                let Some(r) = receive(&shared, &mut incoming, version, &frame) else {
+                    continue;
+                };
+                r
+            }
             // Frames this CNC does not serve are ignored, as a CNC ignores them.
             _ => {
                 shared.trace(id, || namer.request(&frame, &[]) + " (ignored)");
@@ -238,6 +249,69 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
 async fn pause(d: std::time::Duration) {
     if !d.is_zero() {
         tokio::time::sleep(d).await;
+    }
+}
+
+/// A download or DNC operation being received on connection 1.
+struct Incoming {
+    how: Outgoing,
+    req: StartReq,
+    text: Vec<u8>,
+    /// Refused part-way (memory full): data is dropped until the end.
+    refused: bool,
+}
+
+/// Most a transfer may bring before the CNC refuses it (memory full).
+const MAX_INCOMING: usize = 64 << 20;
+
+/// One frame of a download or DNC operation: its answer, if any. Data
+/// frames are kept until the end frame; then the machine takes the text
+/// and the answer is the end's, or the CNC's error frame.
+fn receive(
+    shared: &Shared,
+    incoming: &mut Option<Incoming>,
+    version: u16,
+    f: &Frame,
+) -> Option<Frame> {
+    let how = Outgoing::of_kind((f.ftype >> 8) as u8)?;
+    let error = |code: i16, d: (u16, u16)| {
+        Frame::new(version, how.error_frame(), error_body(code, d.0, d.1))
+    };
+    match f.ftype {
+        t if t == how.start_req() => {
+            *incoming = Some(Incoming {
+                how,
+                req: StartReq::decode(&f.body),
+                text: Vec::new(),
+                refused: false,
+            });
+            Some(Frame::new(version, how.start_resp(), Vec::new()))
+        }
+        t if t == how.data_frame() => {
+            let i = incoming.as_mut().filter(|i| i.how == how && !i.refused)?;
+            if i.text.len() + f.body.len() > MAX_INCOMING {
+                i.refused = true;
+                i.text = Vec::new();
+                return Some(error(crate::ew::EW_OVRFLOW, (0, 0)));
+            }
+            i.text.extend_from_slice(&f.body);
+            None
+        }
+        t if t == how.end_req() => {
+            let i = incoming.take().filter(|i| i.how == how)?;
+            if i.refused {
+                return Some(error(crate::ew::EW_OVRFLOW, (0, 0)));
+            }
+            match shared.cnc.lock().receive(how, &i.req, &i.text) {
+                Ok(()) => Some(Frame::new(version, how.end_resp(), Vec::new())),
+                Err(e) => Some(error(e.code, e.detail)),
+            }
+        }
+        // The client's abort (or an unknown frame of the kind): dropped.
+        _ => {
+            *incoming = None;
+            None
+        }
     }
 }
 

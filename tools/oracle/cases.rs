@@ -626,6 +626,131 @@ const WORDS: &[Word] = &[
     },
     wc("upload", &[], &["256"]),
     wc("upend", &[], &[""]),
+    // Program download and DNC operation on connection 1: the text is
+    // uploaded back after the end, so the vectors show what was stored.
+    Word {
+        after: &[
+            "download3 %|O4321(NEW)|G00X1.|M30|%",
+            "dwnend3",
+            "upstart4 0 O4321",
+            "upload4 4096",
+            "upend4",
+        ],
+        ..wc("dwnstart3", &[], &["0", "1", "-1", "5"])
+    },
+    Word {
+        setup: &["dwnstart3 0"],
+        after: &["dwnend3", "upstart4 0 O4321", "upload4 4096", "upend4"],
+        ..wc(
+            "download3",
+            &[],
+            &[
+                "%|O4321(NEW)|G00X1.|M30|%",
+                "|O4321|M30|%",
+                "%|O4321|M30|O4322|M30|%",
+                "gen:3000",
+                "gen:1280",
+                "gen:1281",
+                "gen:2560",
+                "gen:2561",
+                "gen:6000",
+                "%|O4321|M30|% 0",
+                "%|O4321|M30|% -1",
+                "%|O1234|M30|%",
+                "%|O4321|G0X1?|M30|%",
+                "%|(NO|NUMBER)|M30|%",
+            ],
+        )
+    },
+    Word {
+        setup: &["dwnstart3 0", "dwnstart3 0", "upstart3 0 1234 1234"],
+        after: &["dwnend3", "upstart3 0 4321 4321", "upload3 4096", "upend3"],
+        ..wc("download4", &[], &["%|O4321|M30|%"])
+    },
+    Word {
+        setup: &["dwnstart3 0", "download3 %|O4321|M30|%"],
+        after: &["dwnend3", "upstart4 0 O4321", "upload4 4096", "upend4"],
+        ..wc("dwnend3", &[], &[""])
+    },
+    Word {
+        setup: &["dwnstart3 0", "download3 gen:3000", "download3 gen:3000"],
+        after: &["download3 gen:100", "dwnend3"],
+        ..wc("download4", &[], &["gen:700"])
+    },
+    Word {
+        after: &[
+            "download4 %|O4321|M30|%",
+            "dwnend4",
+            "upstart4 0 O4321",
+            "upload4 4096",
+            "upend4",
+        ],
+        ..wc(
+            "dwnstart4",
+            &[],
+            &["0 //CNC_MEM/USER/PATH1/", "0", "1 O4321", "-1 O4321"],
+        )
+    },
+    wc("dwnend4", &[], &[""]),
+    Word {
+        after: &[
+            "download %|O4321|M30|%",
+            "dwnend",
+            "upstart 4321",
+            "upload 300",
+            "upend",
+        ],
+        ..wc("dwnstart", &[], &[""])
+    },
+    Word {
+        setup: &["dwnstart"],
+        after: &["dwnend", "upstart 4321", "upload 300", "upend"],
+        ..wc(
+            "download",
+            &[],
+            &[
+                "%|O4321|M30|%",
+                "%|O4321|M30|% 0",
+                "%|O4321|M30|% 256",
+                "%|O4321|M30|% 257",
+            ],
+        )
+    },
+    wc("dwnend", &[], &[""]),
+    Word {
+        after: &["dnc %|O4321|M30|%", "dncend"],
+        ..wc("dncstart", &[], &[""])
+    },
+    Word {
+        setup: &["dncstart"],
+        after: &["dnc %|O4321|M30|%", "dncend"],
+        ..wc(
+            "dnc",
+            &[],
+            &[
+                "%|O4321|G00X1.|M30|%",
+                "gen:3000",
+                "%|O4321|% 0",
+                "%|O4321|% 40959",
+                "%|O4321|% 40960",
+            ],
+        )
+    },
+    wc("dncend", &[], &[""]),
+    Word {
+        after: &["dnc2 %|O4321|M30|%", "dncend2 -1"],
+        ..wc("dncstart2", &[], &["O4321", "X"])
+    },
+    Word {
+        setup: &["dncstart2 O4321"],
+        after: &["dncend2 -1"],
+        ..wc("dnc2", &[], &["%|O4321|M30|%", "%|O4321|M30|% 0"])
+    },
+    Word {
+        setup: &["dncstart2 O4321", "dnc2 %|O4321|M30|%"],
+        after: &["dncend2 -1"],
+        ..wc("dncend2", &[], &["-1", "-32768", "0", "1", "-2"])
+    },
 ];
 
 /// The C function a word calls.

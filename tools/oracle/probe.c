@@ -25,6 +25,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
 
 /* fwlib32_ext.h: our fwlib_* extensions, after fwlib32.h. */
 #include "fwlib32_ext.h"
@@ -47,6 +50,26 @@ static int argc_;
 static jmp_buf missing;
 static const char *missing_name;
 static char fields[1024];
+
+/* Every socket of the library has TCP_NODELAY on (the probe is linked with
+ * -rdynamic, so the library's connect and setsockopt are these). FANUC's
+ * library turns Nagle on for connection 1: a download's data frames after
+ * the first would then reach the fake CNC when the first is acknowledged,
+ * during a later call, and which call sent which frame would be a matter of
+ * timing. The bytes are the same either way. */
+int setsockopt(int fd, int level, int name, const void *value, socklen_t len) {
+    static int (*real)(int, int, int, const void *, socklen_t);
+    static const int one = 1;
+    if (!real) real = (int (*)(int, int, int, const void *, socklen_t))dlsym(RTLD_NEXT, "setsockopt");
+    if (level == IPPROTO_TCP && name == TCP_NODELAY) value = &one, len = sizeof one;
+    return real(fd, level, name, value, len);
+}
+int connect(int fd, const struct sockaddr *addr, socklen_t len) {
+    static int (*real)(int, const struct sockaddr *, socklen_t);
+    if (!real) real = (int (*)(int, const struct sockaddr *, socklen_t))dlsym(RTLD_NEXT, "connect");
+    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, NULL, 0);
+    return real(fd, addr, len);
+}
 
 /* The library's function `name`, typed by our header's declaration. */
 static void *need(const char *name) {
@@ -165,6 +188,36 @@ static short in_thread(void *(*f)(void *)) {
 /* A `long *` count: 4 bytes moved, as FANUC's x86-64 library does. */
 #define LONG_IO(name, i, call)                                                 \
     do { int32_t name[2] = {(int32_t)N(i), (int32_t)0xCCCCCCCC}; short r_ = call; field(#name, name[0]); return r_; } while (0)
+
+/* Program text argument i: '|' stands for a line feed; "gen:N" is N
+ * bytes of generated blocks. Its length goes to *n. */
+static char *text(int i, long *n) {
+    static char t[70000];
+    if (i >= argc_) {
+        fprintf(stderr, "probe: argument %d missing\n", i);
+        exit(2);
+    }
+    if (strncmp(argv_[i], "gen:", 4) == 0) {
+        long k = 0, want = atol(argv_[i] + 4);
+        if (want > (long)sizeof t - 1) want = sizeof t - 1;
+        for (; k < want; k++) t[k] = "G01X1.Y2.\n"[k % 10];
+        t[k] = 0;
+        *n = k;
+        return t;
+    }
+    snprintf(t, sizeof t, "%s", argv_[i]);
+    for (char *q = t; *q; q++)
+        if (*q == '|') *q = '\n';
+    *n = (long)strlen(t);
+    return t;
+}
+/* cnc_download / cnc_dnc: TEXT [LENGTH]. */
+#define TEXT_N(fn, type)                                                       \
+    do { long n_; char *t_ = text(1, &n_); return F(fn)(H, t_, (type)(argc_ > 2 ? N(2) : n_)); } while (0)
+/* cnc_download3/4, cnc_dnc2: TEXT [LENGTH] through a `long *`. */
+#define TEXT_LONG(fn)                                                          \
+    do { long n_; char *t_ = text(1, &n_); int32_t l_[2] = {(int32_t)(argc_ > 2 ? N(2) : n_), (int32_t)0xCCCCCCCC}; \
+         short r_ = F(fn)(H, (long *)l_, t_); field("length", l_[0]); return r_; } while (0)
 
 /*
  * Every word: WORD(name, body). The body returns the call's result.
@@ -293,6 +346,22 @@ static short in_thread(void *(*f)(void *)) {
     WORD(upend, return F(cnc_upend)(H))                                                           \
     WORD(upend3, return F(cnc_upend3)(H))                                                         \
     WORD(upend4, return F(cnc_upend4)(H))                                                         \
+    /* download and DNC */                                                                        \
+    WORD(dwnstart, return F(cnc_dwnstart)(H))                                                     \
+    WORD(dwnstart3, return F(cnc_dwnstart3)(H, N(1)))                                             \
+    WORD(dwnstart4, return F(cnc_dwnstart4)(H, N(1), argc_ > 2 ? argv_[2] : NULL))                \
+    WORD(download, TEXT_N(cnc_download, short))                                                   \
+    WORD(download3, TEXT_LONG(cnc_download3))                                                     \
+    WORD(download4, TEXT_LONG(cnc_download4))                                                     \
+    WORD(dwnend, return F(cnc_dwnend)(H))                                                         \
+    WORD(dwnend3, return F(cnc_dwnend3)(H))                                                       \
+    WORD(dwnend4, return F(cnc_dwnend4)(H))                                                       \
+    WORD(dncstart, return F(cnc_dncstart)(H))                                                     \
+    WORD(dncstart2, return F(cnc_dncstart2)(H, argc_ > 1 ? argv_[1] : NULL))                      \
+    WORD(dnc, TEXT_N(cnc_dnc, unsigned short))                                                    \
+    WORD(dnc2, TEXT_LONG(cnc_dnc2))                                                               \
+    WORD(dncend, return F(cnc_dncend)(H))                                                         \
+    WORD(dncend2, return F(cnc_dncend2)(H, N(1)))                                                 \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \

@@ -28,7 +28,7 @@ pub fn build(root: &Path, dir: &Path) -> PathBuf {
         .arg(&src)
         .arg("-o")
         .arg(&exe)
-        .args(["-ldl", "-lpthread"])
+        .args(["-rdynamic", "-ldl", "-lpthread"])
         .output()
         .unwrap_or_else(|e| panic!("cannot run {cc}: {e}"));
     assert!(
