@@ -1308,6 +1308,11 @@ short cnc_clearomhis(unsigned short FlibHndl);
 short cnc_clearophis(unsigned short FlibHndl, short type);
 
 /*
+ Clears the CNC's active alarms of type `id` (cnc_rdalmmsg's types).
+ */
+short cnc_clralm(unsigned short FlibHndl, short id);
+
+/*
  As cnc_upload, but returns EW_BUFFER instead of waiting when nothing
  has arrived yet (conditional upload).
 
@@ -1338,7 +1343,8 @@ short cnc_diagnoss(unsigned short FlibHndl,
 short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
- Sends `number` (1..40959) bytes of the DNC program.
+ Sends `number` (0..40959) bytes of the DNC program (the first call
+ also sends the start cnc_dncstart left to it).
 
  # Safety
  `data` must point to `number` readable bytes.
@@ -2320,6 +2326,18 @@ short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Resets the CNC: the running program stops, reset-clearable alarms are
+ cleared.
+ */
+short cnc_reset(unsigned short FlibHndl);
+
+/*
+ Resets the CNC as cnc_reset does (needs the FOCAS option, else
+ EW_NOOPT).
+ */
+short cnc_reset2(unsigned short FlibHndl);
+
+/*
  Drops the connections of the handle's CNC, as FANUC's library does on
  Ethernet: no close frames, EW_OK, and every later call of every handle
  to that CNC answers EW_SOCKET (-16) until they are freed; a handle with
@@ -2346,6 +2364,12 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
  `time` must point to a readable IODBTIMER.
  */
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
+ Cycle start: the CNC runs the selected main program (MEMORY mode, no
+ alarm; else EW_REJECT).
+ */
+short cnc_start(unsigned short FlibHndl);
 
 /*
  Starts recording the operator message history.

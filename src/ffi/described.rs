@@ -48,7 +48,10 @@ pub(crate) unsafe fn exec(
 ) -> Result<()> {
     let h = handles::get(h)?;
     for c in f.checks {
-        let v = args[c.arg as usize];
+        let v = match c.arg {
+            crate::spec::OPTION => i32::from(h.pair.info.option & 1),
+            a => args[a as usize],
+        };
         if v < c.lo || v > c.hi {
             return Err(Error::local(c.code, "argument out of range"));
         }

@@ -470,7 +470,7 @@ impl CncService for Machine {
     }
 
     // --- described functions ---
-    fn described(&mut self, f: &'static Func, path: u16, _args: &[i32]) -> Reply<Vec<i64>> {
+    fn described(&mut self, f: &'static Func, path: u16, args: &[i32]) -> Reply<Vec<i64>> {
         let v = |x: i32| i64::from(x);
         match f.name {
             "cnc_rdblkcount" => Ok(vec![v(self.sim_block_count(path)?)]),
@@ -492,6 +492,9 @@ impl CncService for Machine {
                     .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
                     .collect())
             }
+            "cnc_start" => self.cycle_start(path).map(|_| vec![]),
+            "cnc_reset" | "cnc_reset2" => self.reset(path).map(|_| vec![]),
+            "cnc_clralm" => self.clear_alarms(path, args[0] as i16).map(|_| vec![]),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),

@@ -110,10 +110,11 @@ pub struct PathRun {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Engine {
     /// The parsed program in cycle (None: the path is idle).
-    plan: Option<Arc<Plan>>,
-    /// Status words, positions and spindle speeds as the profile gives them.
-    base_status: StatusWords,
-    base_axes: Vec<[i64; 3]>,
+    pub(super) plan: Option<Arc<Plan>>,
+    /// Status words, positions and spindle speeds as the profile gives them
+    /// (positions: where the plan started from).
+    pub(super) base_status: StatusWords,
+    pub(super) base_axes: Vec<[i64; 3]>,
     base_spindles: Vec<i32>,
     /// Servo loads per axis and the first spindle's load, as the profile gives them.
     base_loads: Vec<i32>,
@@ -128,6 +129,18 @@ pub(crate) struct Engine {
     initial_reported: bool,
     /// exec_text was built for this line.
     text_line: Option<usize>,
+    /// The plan's clock origin, seconds since the simulator started, and
+    /// the time held before it (cnc_start starts a plan from that moment).
+    pub(super) t0: f64,
+    pub(super) held0: f64,
+    /// Parts and blocks of plans that ran before this one.
+    pub(super) parts_before: i64,
+    pub(super) blocks_before: i32,
+    /// Per profile event (by index): alarm occurrences up to this one were
+    /// cleared (cnc_reset, cnc_clralm).
+    pub(super) cleared: Vec<Option<u64>>,
+    /// Alarm types a reset or cnc_clralm cleared from the profile's own.
+    pub(super) cleared_types: Vec<i16>,
 }
 
 /// Where an axis is at the end of a block: fixed by an absolute word, or
@@ -180,7 +193,7 @@ struct Block {
 
 /// A program parsed for one path's axes.
 #[derive(Debug, Clone)]
-struct Plan {
+pub(super) struct Plan {
     blocks: Vec<Block>,
     /// Axis increments per mm (10^decimals), per axis.
     scale: Vec<f64>,
@@ -245,7 +258,7 @@ impl Plan {
     /// or the "O1234" program-number line are not blocks. G00/G01 (and
     /// G02/G03, run as straight moves) with G90/G91 move the axes; G04 is
     /// a dwell; G28 returns the named axes to machine zero.
-    fn parse(text: &str, axes: &[super::profile::Axis], cycle: &Cycle) -> Plan {
+    pub(super) fn parse(text: &str, axes: &[super::profile::Axis], cycle: &Cycle) -> Plan {
         let lines: Vec<&str> = text.lines().collect();
         let scale: Vec<f64> = axes
             .iter()
@@ -365,7 +378,7 @@ impl Plan {
 }
 
 /// The occurrence of the event whose start is the last at or before `t`.
-fn occurrence(e: &Event, t: f64) -> Option<u64> {
+pub(super) fn occurrence(e: &Event, t: f64) -> Option<u64> {
     e.window().occurrence(t)
 }
 
@@ -375,7 +388,7 @@ fn active(e: &Event, t: f64) -> bool {
 }
 
 /// Seconds of [a, b) covered by the union of the events' conditions.
-fn covered(events: &[&Event], a: f64, b: f64) -> f64 {
+pub(super) fn covered(events: &[&Event], a: f64, b: f64) -> f64 {
     if b <= a {
         return 0.0;
     }
@@ -426,7 +439,7 @@ fn covered(events: &[&Event], a: f64, b: f64) -> f64 {
 }
 
 /// The event's path as an index (path 0 means path 1).
-fn event_path(e: &Event) -> usize {
+pub(super) fn event_path(e: &Event) -> usize {
     usize::from(e.path.max(1)) - 1
 }
 
@@ -468,6 +481,7 @@ impl Machine {
                         base_loads: p.axes.iter().map(|a| a.servo_load).collect(),
                         base_spindle_load: p.spindles.first().map_or(0, |s| s.load),
                         raised: vec![None; profile.events.len()],
+                        cleared: vec![None; profile.events.len()],
                         ..Engine::default()
                     },
                     ..PathRun::default()
@@ -554,6 +568,7 @@ impl Machine {
             }
         }
         let mut alarms = profile.paths[i].alarms.clone();
+        alarms.retain(|a| !eng.cleared_types.contains(&a.kind));
         let (mut hold, mut emergency, mut mode) = (false, false, None);
         for (k, e) in &mine {
             let now_k = occurrence(e, t);
@@ -576,7 +591,9 @@ impl Machine {
             if !active(e, t) {
                 continue;
             }
+            let cleared = eng.cleared.get(*k).copied().flatten();
             match e.action.as_str() {
+                "alarm" if cleared.is_some() && cleared >= occurrence(e, t) => {}
                 "alarm" => alarms.extend(e.alarm.clone()),
                 "feed_hold" => hold = true,
                 "emergency" => emergency = true,
@@ -630,7 +647,7 @@ impl Machine {
             eng.held_memo = (t, h);
             h
         };
-        let tp = (t - held).max(0.0);
+        let tp = (t - eng.t0 - (held - eng.held0)).max(0.0);
         let n = plan.blocks.len() as u64;
         if n == 0 {
             profile.paths[i].status = st;
@@ -729,15 +746,18 @@ impl Machine {
         run.seq = b.seq;
         run.block = b.line;
         run.finished = finished;
-        run.block_count = i32::try_from(if finished { n } else { done }).unwrap_or(i32::MAX);
+        run.block_count = i32::try_from(if finished { n } else { done })
+            .unwrap_or(i32::MAX)
+            .saturating_add(eng.blocks_before);
         let ends_before = plan.blocks[..k].iter().filter(|x| x.end_of_program).count() as i64;
         run.runs_done = if finished { 1 } else { pass };
         run.run_seconds = n as f64 * plan.block_seconds;
-        run.parts = if finished {
-            plan.parts_per_pass
-        } else {
-            (pass as i64).saturating_mul(plan.parts_per_pass) + ends_before
-        };
+        run.parts = eng.parts_before
+            + if finished {
+                plan.parts_per_pass
+            } else {
+                (pass as i64).saturating_mul(plan.parts_per_pass) + ends_before
+            };
         if eng.text_line != Some(b.line) {
             eng.text_line = Some(b.line);
             run.exec_text = b.text.clone();

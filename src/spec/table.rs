@@ -8,8 +8,8 @@
 use super::types::Int::*;
 use super::types::*;
 
-/// A history command: no argument, no answer.
-const HISTORY_COMMAND: Func = Func {
+/// A command: no argument, no answer.
+const COMMAND: Func = Func {
     name: "",
     doc: "",
     params: &[],
@@ -43,6 +43,34 @@ const SERVO_LONGS: Func = Func {
 };
 
 pub const FUNCS: &[Func] = &[
+    // --- operation ---
+    Func {
+        name: "cnc_start",
+        doc: "Cycle start: the CNC runs the selected main program (MEMORY mode, no alarm; else EW_REJECT).",
+        forms: &[every_class(0x0001, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_reset",
+        doc: "Resets the CNC: the running program stops, reset-clearable alarms are cleared.",
+        forms: &[every_class(0x0002, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_reset2",
+        doc: "Resets the CNC as cnc_reset does (needs the FOCAS option, else EW_NOOPT).",
+        checks: &[NEEDS_OPTION],
+        forms: &[every_class(0x02c5, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_clralm",
+        doc: "Clears the CNC's active alarms of type `id` (cnc_rdalmmsg's types).",
+        params: &[Param::Short("id")],
+        forms: &[every_class(0x0087, &[Word::Arg(0)])],
+        dims: &["3|0|1|2|-1|100|32767"],
+        ..COMMAND
+    },
     // --- program ---
     Func {
         name: "cnc_rdprgnum",
@@ -272,19 +300,19 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("hisno", "unsigned short")],
         forms: &[every_class(0x0069, &[])],
         reply: &[to(I32, "", U16)],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_startophis",
         doc: "Starts recording the operation history.",
         forms: &[every_class(0x0068, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_stopophis",
         doc: "Stops recording the operation history.",
         forms: &[every_class(0x0067, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_clearophis",
@@ -292,7 +320,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Short("type")],
         forms: &[every_class(0x006d, &[Word::Arg(0)])],
         dims: &["0|1|2|-1|3"],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_rdomhisno",
@@ -300,7 +328,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("hisno", "unsigned short")],
         forms: &[every_class(0x01b4, &[])],
         reply: &[to(U16, "", U16)],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_rdomhisinfo",
@@ -312,19 +340,19 @@ pub const FUNCS: &[Func] = &[
             to(I32, "om_sum", U16),
             to(I32, "om_char", U16),
         ],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_startomhis",
         doc: "Starts recording the operator message history.",
         forms: &[every_class(0x0071, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_stopomhis",
         doc: "Stops recording the operator message history.",
         forms: &[every_class(0x0070, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_clearomhis",
@@ -339,7 +367,7 @@ pub const FUNCS: &[Func] = &[
             },
             every_class(0x0074, &[]),
         ],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     // --- tool life ---
     Func {

@@ -65,7 +65,8 @@ pub struct Form {
 }
 
 /// A check FANUC's library makes before any traffic: number parameter
-/// `arg` outside `lo..=hi` returns `code`.
+/// `arg` outside `lo..=hi` returns `code`. `arg` [`OPTION`] checks the
+/// CNC's FOCAS option bit (0 or 1) instead.
 #[derive(Debug, Clone, Copy)]
 pub struct Check {
     pub arg: u8,
@@ -73,6 +74,18 @@ pub struct Check {
     pub hi: i32,
     pub code: i16,
 }
+
+/// [`Check::arg`] for the CNC's FOCAS option bit, which FANUC's library
+/// learns at connect.
+pub const OPTION: u8 = u8::MAX;
+
+/// The check of a function that needs the FOCAS option: EW_NOOPT without.
+pub const NEEDS_OPTION: Check = Check {
+    arg: OPTION,
+    lo: 1,
+    hi: 1,
+    code: 6,
+};
 
 /// An integer of the wire (big-endian) or of a C struct (native).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

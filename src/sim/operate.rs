@@ -1,0 +1,128 @@
+//! Operating the simulated machine through FOCAS: cycle start runs the
+//! selected main program from that moment, reset stops it and clears the
+//! reset-clearable alarms, cnc_clralm clears alarms of one type. The
+//! running machine (src/sim/run.rs) then moves the axes, the spindle and
+//! the counters from the program, as for the profile's own cycle.
+
+use super::profile::cycle::Cycle;
+use super::run::{Machine, Plan, covered, event_path, occurrence};
+use super::service::{CncError, Reply};
+use crate::ew::{EW_DATA, EW_REJECT};
+use std::sync::Arc;
+
+/// Alarm types a reset clears (IO, PS, macro); the others need the cause
+/// removed (overtravel, servo, overheat ...) or the power cycled.
+const RESET_CLEARS: [i16; 3] = [2, 3, 8];
+
+impl Machine {
+    /// Seconds since the simulator started, at the last advance.
+    fn elapsed(&self) -> f64 {
+        self.now
+            .saturating_duration_since(self.started)
+            .as_secs_f64()
+    }
+
+    /// Ends the path's plan where it is: the axes stay, the counters keep
+    /// what it made, the status shows the path stopped.
+    fn stop_plan(&mut self, i: usize) {
+        let path = &self.profile.paths[i];
+        let run = &mut self.run[i];
+        let eng = &mut run.engine;
+        eng.plan = None;
+        eng.parts_before = run.parts;
+        eng.blocks_before = run.block_count;
+        eng.base_axes = path
+            .axes
+            .iter()
+            .map(|a| [a.absolute, a.machine, a.relative].map(i64::from))
+            .collect();
+        eng.base_status.run = 0;
+        eng.base_status.motion = 0;
+        run.feed = 0;
+        run.finished = true;
+    }
+
+    /// cnc_start: cycle start on `path`. The selected main program runs
+    /// once from now. Refused (EW_REJECT) unless the path is in MEMORY
+    /// mode, without alarm or emergency stop; a path already running
+    /// goes on (a CNC ignores cycle start then); no main program is EW_DATA.
+    pub(crate) fn cycle_start(&mut self, path: u16) -> Reply<()> {
+        let i = usize::from(path).wrapping_sub(1);
+        let st = self.profile.paths.get(i).ok_or(CncError::PATH)?.status;
+        if st.aut != 1 || st.alarm != 0 || st.emergency != 0 {
+            return Err(CncError::new(EW_REJECT));
+        }
+        if st.run == 3 {
+            return Ok(());
+        }
+        let main = self.store.path(path)?.main;
+        let prog = self.store.get(path, main).ok_or(CncError::new(EW_DATA))?;
+        let (text, name) = (prog.text.clone(), prog.display_name());
+        self.stop_plan(i);
+        let t = self.elapsed();
+        let p = &self.profile.paths[i];
+        let cycle = Cycle {
+            program: main,
+            block_seconds: p.cycle.block_seconds,
+            repeat: false,
+        };
+        let plan = Arc::new(Plan::parse(&text, &p.axes, &cycle));
+        let stops: Vec<_> = self
+            .profile
+            .events
+            .iter()
+            .filter(|e| event_path(e) == i)
+            .filter(|e| e.action == "feed_hold" || e.action == "emergency")
+            .collect();
+        let held0 = covered(&stops, 0.0, t);
+        let run = &mut self.run[i];
+        run.engine.plan = Some(plan);
+        run.engine.t0 = t;
+        run.engine.held0 = held0;
+        run.engine.base_status.run = 3;
+        run.program = main;
+        run.program_name = name;
+        run.finished = false;
+        let now = self.now;
+        self.advance_to(now);
+        Ok(())
+    }
+
+    /// cnc_reset: stops the path's program and clears its reset-clearable
+    /// alarms (the profile's and the events' raised so far).
+    pub(crate) fn reset(&mut self, path: u16) -> Reply<()> {
+        let i = usize::from(path).wrapping_sub(1);
+        if i >= self.run.len() {
+            return Err(CncError::PATH);
+        }
+        if self.run[i].engine.plan.is_some() {
+            self.stop_plan(i);
+        }
+        for k in RESET_CLEARS {
+            self.clear_alarms(path, k)?;
+        }
+        Ok(())
+    }
+
+    /// cnc_clralm: clears the alarms of type `kind` active on `path`.
+    pub(crate) fn clear_alarms(&mut self, path: u16, kind: i16) -> Reply<()> {
+        let i = usize::from(path).wrapping_sub(1);
+        if i >= self.run.len() {
+            return Err(CncError::PATH);
+        }
+        let t = self.elapsed();
+        let eng = &mut self.run[i].engine;
+        if !eng.cleared_types.contains(&kind) {
+            eng.cleared_types.push(kind);
+        }
+        for (k, e) in self.profile.events.iter().enumerate() {
+            let ours = event_path(e) == i && e.alarm.as_ref().is_some_and(|a| a.kind == kind);
+            if ours && let Some(slot) = eng.cleared.get_mut(k) {
+                *slot = occurrence(e, t).or(*slot);
+            }
+        }
+        let now = self.now;
+        self.advance_to(now);
+        Ok(())
+    }
+}
