@@ -17,6 +17,11 @@ pub const START_BODY_LEN: usize = 0x204;
 pub const NAME_LEN: usize = 256;
 /// Body of the 0x1804 abort frame.
 pub const ABORT_BODY: [u8; 8] = [0; 8];
+/// The text a CNC pushes in one 0x1604 frame (the simulator's; a frame
+/// of 1460 bytes, a 1500-byte Ethernet MTU's TCP payload). FANUC's
+/// library overruns its buffer and crashes on a data body of more than
+/// 1470 bytes [oracle], whatever the frame version allows.
+pub const DATA_CHUNK: usize = 1450;
 /// Frame kinds (high byte of the type word) of the upload traffic.
 pub const KIND_START: u8 = 0x15;
 pub const KIND_DATA: u8 = 0x16;

@@ -324,8 +324,7 @@ fn upload(shared: &Shared, version: u16, req: &Frame) -> (Vec<u8>, Vec<Frame>) {
     let mut frames = vec![Frame::new(version, ftype::UPLOAD_START_RESP, Vec::new())];
     match r {
         Ok(text) => {
-            let max = crate::proto::frame::max_body_len(version);
-            for chunk in text.chunks(max) {
+            for chunk in text.chunks(crate::proto::upload::DATA_CHUNK) {
                 frames.push(Frame::new(version, ftype::UPLOAD_DATA, chunk.to_vec()));
             }
             frames.push(Frame::new(version, ftype::UPLOAD_END, Vec::new()));
