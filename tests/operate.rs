@@ -138,3 +138,65 @@ fn the_profiles_machine_without_the_option_refuses_reset2_locally() {
     assert_eq!(cnc_reset(h), EW_OK);
     sim::free(h);
 }
+
+/// cnc_dnc2 of `text`.
+fn dnc2(h: c_ushort, text: &str) -> i16 {
+    let mut len = text.len() as c_long;
+    unsafe { cnc_dnc2(h, &mut len, text.as_ptr().cast_mut().cast()) }
+}
+
+fn motion(h: c_ushort) -> i16 {
+    let mut st = ODBST::default();
+    assert_eq!(unsafe { cnc_statinfo(h, &mut st) }, EW_OK);
+    st.motion
+}
+
+/// Polls until `f` holds (5 s at most): DNC data frames have no answer, so
+/// the simulator may take them after a data request of connection 2.
+fn eventually(mut f: impl FnMut() -> bool) {
+    let until = std::time::Instant::now() + Duration::from_secs(5);
+    while !f() {
+        assert!(std::time::Instant::now() < until, "never happened");
+        std::thread::yield_now();
+    }
+}
+
+#[test]
+fn a_dnc_program_runs_while_it_arrives() {
+    // An idle machine; its alarms cleared.
+    let idle = PROFILE
+        .replace("program = 1\n", "program = 0\n")
+        .replace("run = 3", "run = 0");
+    let s = sim::start_toml(&idle);
+    let h = sim::alloc(&s);
+    assert_eq!(cnc_reset(h), EW_OK);
+    assert_eq!(cnc_clralm(h, 6), EW_OK);
+    at(&s, 10.0);
+    assert_eq!(run_state(h), 0);
+    assert_eq!(unsafe { cnc_dncstart2(h, std::ptr::null_mut()) }, EW_OK);
+    assert_eq!(
+        dnc2(h, "%\nO0077 (DNC)\nN10 G91 G01 X1. F100\nN20 X"),
+        EW_OK
+    );
+    eventually(|| run_state(h) == 3);
+    at(&s, 10.5);
+    assert_eq!(x(h), 500);
+    at(&s, 20.0);
+    assert_eq!(
+        (run_state(h), motion(h), x(h)),
+        (3, 0, 1000),
+        "waiting for data"
+    );
+    assert_eq!(dnc2(h, "2.\nM30\n%"), EW_OK);
+    eventually(|| motion(h) == 1);
+    at(&s, 20.5);
+    assert_eq!(
+        (motion(h), x(h)),
+        (1, 2000),
+        "N20 X2. goes on from where it waited"
+    );
+    assert_eq!(cnc_dncend2(h, -1), EW_OK);
+    at(&s, 30.0);
+    assert_eq!((run_state(h), x(h)), (0, 3000), "ran to M30 once");
+    sim::free(h);
+}

@@ -529,10 +529,12 @@ impl CncService for Machine {
         how: crate::proto::download::Outgoing,
         req: &crate::proto::upload::StartReq,
         text: &[u8],
+        done: bool,
     ) -> Reply<()> {
         match how {
-            crate::proto::download::DOWNLOAD => self.download(req, text),
-            _ => Err(CncError::FUNC),
+            crate::proto::download::DOWNLOAD if done => self.download(req, text),
+            crate::proto::download::DOWNLOAD => Ok(()),
+            _ => self.dnc(req.path, text, done),
         }
     }
 }

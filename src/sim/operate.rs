@@ -67,14 +67,7 @@ impl Machine {
             repeat: false,
         };
         let plan = Arc::new(Plan::parse(&text, &p.axes, &cycle));
-        let stops: Vec<_> = self
-            .profile
-            .events
-            .iter()
-            .filter(|e| event_path(e) == i)
-            .filter(|e| e.action == "feed_hold" || e.action == "emergency")
-            .collect();
-        let held0 = covered(&stops, 0.0, t);
+        let held0 = self.held_before(i, t);
         let run = &mut self.run[i];
         run.engine.plan = Some(plan);
         run.engine.t0 = t;
@@ -124,5 +117,76 @@ impl Machine {
         let now = self.now;
         self.advance_to(now);
         Ok(())
+    }
+}
+
+impl Machine {
+    /// A DNC operation on `path`: `text` is what has arrived so far, `done`
+    /// once the client ended it. The program runs from its first block as
+    /// it arrives, waiting at the last block received (status STRT, no
+    /// motion) until more comes; it is not stored. Refused: an active alarm
+    /// or emergency stop EW_REJECT, a block that is not address words EW_DATA.
+    pub(crate) fn dnc(&mut self, path: u16, text: &[u8], done: bool) -> Reply<()> {
+        let i = usize::from(path).wrapping_sub(1);
+        let st = self.profile.paths.get(i).ok_or(CncError::PATH)?.status;
+        // Complete lines only, until the end.
+        let upto = if done {
+            text.len()
+        } else {
+            text.iter().rposition(|&c| c == b'\n').map_or(0, |p| p + 1)
+        };
+        let progs = super::download::programs(&text[..upto])?;
+        let body = progs.join("\n");
+        let t = self.elapsed();
+        let eng = &self.run[i].engine;
+        if !eng.streaming {
+            if st.alarm != 0 || st.emergency != 0 {
+                return Err(CncError::new(EW_REJECT));
+            }
+            self.stop_plan(i);
+            let held0 = self.held_before(i, t);
+            let run = &mut self.run[i];
+            run.engine.t0 = t;
+            run.engine.held0 = held0;
+            run.engine.streaming = true;
+            run.engine.base_status.run = 3;
+            run.finished = false;
+            run.program_name = "DNC".into();
+        }
+        let p = &self.profile.paths[i];
+        let cycle = Cycle {
+            program: 0,
+            block_seconds: p.cycle.block_seconds,
+            repeat: false,
+        };
+        let plan = Plan::parse(&body, &p.axes, &cycle);
+        let first = body.lines().next().unwrap_or("");
+        let run = &mut self.run[i];
+        // A program that waited for data goes on from where it waited.
+        if let Some(old) = &run.engine.plan {
+            let bs = old.block_seconds();
+            let waited = (t - run.engine.t0) - old.len() as f64 * bs;
+            if waited > 0.0 && plan.len() > old.len() {
+                run.engine.t0 += waited;
+            }
+        }
+        run.program = super::store::Program::new(first, [0; 5]).number;
+        run.engine.plan = Some(Arc::new(plan));
+        run.engine.streaming = !done;
+        let now = self.now;
+        self.advance_to(now);
+        Ok(())
+    }
+
+    /// Seconds the path was held (feed hold, emergency) before `t`.
+    fn held_before(&self, i: usize, t: f64) -> f64 {
+        let stops: Vec<_> = self
+            .profile
+            .events
+            .iter()
+            .filter(|e| event_path(e) == i)
+            .filter(|e| e.action == "feed_hold" || e.action == "emergency")
+            .collect();
+        covered(&stops, 0.0, t)
     }
 }

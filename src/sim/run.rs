@@ -141,6 +141,8 @@ pub(crate) struct Engine {
     pub(super) cleared: Vec<Option<u64>>,
     /// Alarm types a reset or cnc_clralm cleared from the profile's own.
     pub(super) cleared_types: Vec<i16>,
+    /// The plan is a DNC program still arriving: at its last block it waits.
+    pub(super) streaming: bool,
 }
 
 /// Where an axis is at the end of a block: fixed by an absolute word, or
@@ -254,6 +256,13 @@ fn words(line: &str) -> Vec<(char, String)> {
 }
 
 impl Plan {
+    /// Blocks of the plan.
+    pub(super) fn len(&self) -> usize {
+        self.blocks.len()
+    }
+    pub(super) fn block_seconds(&self) -> f64 {
+        self.block_seconds
+    }
     /// Parses `text` for a path with these axes. Lines that are empty, '%'
     /// or the "O1234" program-number line are not blocks. G00/G01 (and
     /// G02/G03, run as straight moves) with G90/G91 move the axes; G04 is
@@ -662,7 +671,8 @@ impl Machine {
                 false,
             )
         } else if done >= n {
-            (0, n as usize - 1, 1.0, true)
+            // A DNC program waits at its last block for more (not finished).
+            (0, n as usize - 1, 1.0, !eng.streaming)
         } else {
             (
                 0,
@@ -674,7 +684,8 @@ impl Machine {
         let b = &plan.blocks[k];
         let before = (k > 0).then(|| &plan.blocks[k - 1]);
         let last = plan.blocks.last().expect("n > 0");
-        let stopped = run.held || emergency || finished;
+        let starved = eng.streaming && done >= n;
+        let stopped = run.held || emergency || finished || starved;
         let moving = matches!(b.kind, Kind::Move { .. }) && !stopped;
 
         // Axes: interpolate from the previous block's end point to this one's.
@@ -746,7 +757,7 @@ impl Machine {
         run.seq = b.seq;
         run.block = b.line;
         run.finished = finished;
-        run.block_count = i32::try_from(if finished { n } else { done })
+        run.block_count = i32::try_from(if plan.repeat { done } else { done.min(n) })
             .unwrap_or(i32::MAX)
             .saturating_add(eng.blocks_before);
         let ends_before = plan.blocks[..k].iter().filter(|x| x.end_of_program).count() as i64;
@@ -769,6 +780,9 @@ impl Machine {
             st.motion = 0;
         } else if run.held {
             st.run = 2;
+            st.motion = 0;
+        } else if starved {
+            st.run = 3;
             st.motion = 0;
         } else {
             st.run = 3;

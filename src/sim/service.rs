@@ -359,14 +359,16 @@ pub trait CncService: Send {
     fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
         unsupported()
     }
-    /// A download or DNC operation on connection 1 has ended (the client's
-    /// end frame): `text` is everything its data frames carried. Ok is the
-    /// end's answer; an error goes back in the CNC's error frame.
+    /// A download or DNC operation on connection 1: `text` is what its data
+    /// frames carried so far; called after each data frame, and with `done`
+    /// at the client's end frame. An error goes back in the CNC's error
+    /// frame (and ends the transfer); Ok at the end is the end's answer.
     fn receive(
         &mut self,
         how: crate::proto::download::Outgoing,
         req: &crate::proto::upload::StartReq,
         text: &[u8],
+        done: bool,
     ) -> Reply<()> {
         unsupported()
     }

@@ -257,8 +257,9 @@ struct Incoming {
     how: Outgoing,
     req: StartReq,
     text: Vec<u8>,
-    /// Refused part-way (memory full): data is dropped until the end.
-    refused: bool,
+    /// Refused part-way (memory full, a DNC block it cannot run): data is
+    /// dropped until the end, which is answered with the same error.
+    refused: Option<super::service::CncError>,
 }
 
 /// Most a transfer may bring before the CNC refuses it (memory full).
@@ -283,26 +284,39 @@ fn receive(
                 how,
                 req: StartReq::decode(&f.body),
                 text: Vec::new(),
-                refused: false,
+                refused: None,
             });
             Some(Frame::new(version, how.start_resp(), Vec::new()))
         }
         t if t == how.data_frame() => {
-            let i = incoming.as_mut().filter(|i| i.how == how && !i.refused)?;
+            let i = incoming
+                .as_mut()
+                .filter(|i| i.how == how && i.refused.is_none())?;
             if i.text.len() + f.body.len() > MAX_INCOMING {
-                i.refused = true;
+                let e = super::service::CncError::new(crate::ew::EW_OVRFLOW);
+                i.refused = Some(e);
                 i.text = Vec::new();
-                return Some(error(crate::ew::EW_OVRFLOW, (0, 0)));
+                return Some(error(e.code, e.detail));
             }
             i.text.extend_from_slice(&f.body);
-            None
+            let mut cnc = shared.cnc.lock();
+            cnc.advance(shared.now());
+            match cnc.receive(how, &i.req, &i.text, false) {
+                Ok(()) => None,
+                Err(e) => {
+                    i.refused = Some(e);
+                    Some(error(e.code, e.detail))
+                }
+            }
         }
         t if t == how.end_req() => {
             let i = incoming.take().filter(|i| i.how == how)?;
-            if i.refused {
-                return Some(error(crate::ew::EW_OVRFLOW, (0, 0)));
+            if let Some(e) = i.refused {
+                return Some(error(e.code, e.detail));
             }
-            match shared.cnc.lock().receive(how, &i.req, &i.text) {
+            let mut cnc = shared.cnc.lock();
+            cnc.advance(shared.now());
+            match cnc.receive(how, &i.req, &i.text, true) {
                 Ok(()) => Some(Frame::new(version, how.end_resp(), Vec::new())),
                 Err(e) => Some(error(e.code, e.detail)),
             }
