@@ -470,7 +470,7 @@ impl CncService for Machine {
     }
 
     // --- described functions ---
-    fn described(&mut self, f: &'static Func, path: u16, _args: &[i32]) -> Reply<Vec<i64>> {
+    fn described(&mut self, f: &'static Func, path: u16, args: &[i32]) -> Reply<Vec<i64>> {
         let v = |x: i32| i64::from(x);
         match f.name {
             "cnc_rdblkcount" => Ok(vec![v(self.sim_block_count(path)?)]),
@@ -499,7 +499,10 @@ impl CncService for Machine {
                 let c = &self.profile.cnc;
                 Ok(vec![c.ether_type.into(), c.ether_device.into()])
             }
-            name => self.history_answer(name).ok_or(CncError::FUNC),
+            name => match self.memory_answer(name, path, args) {
+                Some(r) => r,
+                None => self.history_answer(name).ok_or(CncError::FUNC),
+            },
         }
     }
 
@@ -515,6 +518,10 @@ impl CncService for Machine {
         e: i32,
     ) -> Reply<crate::proto::tool::ToolList> {
         self.tl_list(path, grp, s, e)
+    }
+
+    fn raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
+        self.memory_raw(sub)
     }
 
     // --- upload ---

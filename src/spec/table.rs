@@ -8,8 +8,8 @@
 use super::types::Int::*;
 use super::types::*;
 
-/// A history command: no argument, no answer.
-const HISTORY_COMMAND: Func = Func {
+/// A command: no argument, no answer.
+const COMMAND: Func = Func {
     name: "",
     doc: "",
     params: &[],
@@ -265,6 +265,83 @@ pub const FUNCS: &[Func] = &[
         short: Short::Zeros,
         dims: &[],
     },
+    // --- programs in memory ---
+    Func {
+        name: "cnc_search",
+        doc: "Selects program `prog_no` as the main program.",
+        params: &[Param::Short("prog_no")],
+        forms: &[every_class(0x0003, &[Word::Arg(0)])],
+        dims: &["100|1234|0|-1|7|9999|10000|32767"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_delete",
+        doc: "Deletes program `prog_no`.",
+        params: &[Param::Short("prog_no")],
+        forms: &[every_class(0x0005, &[Word::Arg(0)])],
+        dims: &["100|1234|0|-1|7|9999|10000|32767"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_delall",
+        doc: "Deletes every program (those protected or in use stay).",
+        forms: &[every_class(0x0004, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_copyprog",
+        doc: "Copies program `top_prog` to a new program `bottom_prog`.",
+        params: &[Param::Long("top_prog"), Param::Long("bottom_prog")],
+        forms: &[every_class(0x01c6, &[Word::Arg(0), Word::Arg(1)])],
+        dims: &[
+            "100|0|-1|7|1234|99999999|100000000",
+            "200|0|-1|100|1234|9999|10000|99999999|100000000",
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_renameprog",
+        doc: "Renumbers program `old_num` as `new_num`.",
+        params: &[Param::Long("old_num"), Param::Long("new_num")],
+        forms: &[every_class(0x01c7, &[Word::Arg(0), Word::Arg(1)])],
+        dims: &[
+            "100|0|-1|7|1234|99999999|100000000",
+            "200|0|-1|100|1234|9999|10000|99999999|100000000",
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_condense",
+        doc: "Condenses program memory (`type` 0, program `prog_num`).",
+        params: &[Param::Short("type"), Param::Long("prog_num")],
+        forms: &[every_class(0x01c8, &[Word::Arg(0), Word::Arg(1)])],
+        dims: &["0|1|-1|2", "100|0|-1|1234|7"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrmdipntr",
+        doc: "Sets the execution pointer of MDI operation.",
+        params: &[Param::Long("exe_pntr")],
+        forms: &[every_class(0x0039, &[Word::Arg(0)])],
+        dims: &["0|1|-1|10|100|1000"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdmdipntr",
+        doc: "Reads the execution pointers of MDI operation.",
+        params: &[Param::Out("mdipntr", "ODBMDIP")],
+        checks: &[],
+        forms: &[every_class(0x0038, &[])],
+        reply: &[
+            to(I32, "mdiprog", I16),
+            to(I32, "mdipntr", I32),
+            to(I32, "crntprog", I16),
+            to(I32, "crntpntr", I32),
+        ],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
     // --- operation and operator-message histories ---
     Func {
         name: "cnc_rdophisno",
@@ -272,19 +349,19 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("hisno", "unsigned short")],
         forms: &[every_class(0x0069, &[])],
         reply: &[to(I32, "", U16)],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_startophis",
         doc: "Starts recording the operation history.",
         forms: &[every_class(0x0068, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_stopophis",
         doc: "Stops recording the operation history.",
         forms: &[every_class(0x0067, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_clearophis",
@@ -292,7 +369,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Short("type")],
         forms: &[every_class(0x006d, &[Word::Arg(0)])],
         dims: &["0|1|2|-1|3"],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_rdomhisno",
@@ -300,7 +377,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("hisno", "unsigned short")],
         forms: &[every_class(0x01b4, &[])],
         reply: &[to(U16, "", U16)],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_rdomhisinfo",
@@ -312,19 +389,19 @@ pub const FUNCS: &[Func] = &[
             to(I32, "om_sum", U16),
             to(I32, "om_char", U16),
         ],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_startomhis",
         doc: "Starts recording the operator message history.",
         forms: &[every_class(0x0071, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_stopomhis",
         doc: "Stops recording the operator message history.",
         forms: &[every_class(0x0070, &[])],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     Func {
         name: "cnc_clearomhis",
@@ -339,7 +416,7 @@ pub const FUNCS: &[Func] = &[
             },
             every_class(0x0074, &[]),
         ],
-        ..HISTORY_COMMAND
+        ..COMMAND
     },
     // --- tool life ---
     Func {
