@@ -614,6 +614,16 @@ typedef struct IODBMR {
 } IODBMR;
 
 /*
+ cnc_rdmdipntr: execution pointers of MDI operation.
+ */
+typedef struct ODBMDIP {
+    short mdiprog;
+    LONG mdipntr;
+    short crntprog;
+    LONG crntpntr;
+} ODBMDIP;
+
+/*
  cnc_rdngrp: the number of tool life groups.
  */
 typedef struct ODBTLIFE2 {
@@ -758,6 +768,16 @@ typedef struct PRGDIR {
 } PRGDIR;
 
 /*
+ cnc_rdprogdir2: one program of the directory.
+ */
+typedef struct PRGDIR2 {
+    short number;
+    LONG length;
+    char comment[51];
+    char dummy;
+} PRGDIR2;
+
+/*
  A date of PRGDIR3 (`mdate`, `cdate`).
  */
 typedef struct PRGDIR3_date {
@@ -780,6 +800,31 @@ typedef struct PRGDIR3 {
     struct PRGDIR3_date mdate;
     struct PRGDIR3_date cdate;
 } PRGDIR3;
+
+/*
+ cnc_rdproginfo type 0: programs and memory, registered and free.
+ */
+typedef struct ODBNC_bin {
+    short reg_prg;
+    short unreg_prg;
+    LONG used_mem;
+    LONG unused_mem;
+} ODBNC_bin;
+
+/*
+ The union of ODBNC: binary (type 0) or ASCII (type 1).
+ */
+typedef union ODBNC_u {
+    struct ODBNC_bin bin;
+    char asc[31];
+} ODBNC_u;
+
+/*
+ cnc_rdproginfo: program memory information.
+ */
+typedef struct ODBNC {
+    union ODBNC_u u;
+} ODBNC;
 
 /*
  cnc_rdseqnum: sequence number.
@@ -1313,6 +1358,16 @@ short cnc_clearophis(unsigned short FlibHndl, short type);
 short cnc_clralm(unsigned short FlibHndl, short id);
 
 /*
+ Condenses program memory (`type` 0, program `prog_num`).
+ */
+short cnc_condense(unsigned short FlibHndl, short type, long prog_num);
+
+/*
+ Copies program `top_prog` to a new program `bottom_prog`.
+ */
+short cnc_copyprog(unsigned short FlibHndl, long top_prog, long bottom_prog);
+
+/*
  As cnc_upload, but returns EW_BUFFER instead of waiting when nothing
  has arrived yet (conditional upload).
 
@@ -1320,6 +1375,16 @@ short cnc_clralm(unsigned short FlibHndl, short id);
  As cnc_upload.
  */
 short cnc_cupload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
+
+/*
+ Deletes every program (those protected or in use stay).
+ */
+short cnc_delall(unsigned short FlibHndl);
+
+/*
+ Deletes program `prog_no`.
+ */
+short cnc_delete(unsigned short FlibHndl, short prog_no);
 
 /*
  Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
@@ -1866,6 +1931,24 @@ short cnc_rdmacror(unsigned short FlibHndl,
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
 /*
+ Reads the execution pointers of MDI operation.
+
+ # Safety
+ `mdipntr` must be NULL or point to a writable ODBMDIP.
+ */
+short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
+
+/*
+ Reads the MDI program's text: at most `*length` bytes into `data`,
+ `*length` set to the bytes written. A negative `*length`: EW_LENGTH
+ after the exchange, as FANUC's library.
+
+ # Safety
+ `length` readable and writable; `data` must have `*length` writable bytes.
+ */
+short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
+
+/*
  Reads the number of tool life groups.
 
  # Safety
@@ -2061,6 +2144,25 @@ short cnc_rdprogdir(unsigned short FlibHndl,
 
 /*
  Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
+ the numbers, 1 also the comments, 2 also the sizes (as FANUC's library:
+ the number as 4 bytes over `number` and its padding, `dummy` never
+ written). Out: `*num_prog` records read, `*top_prog` the first one's
+ number as a short read back from `buf` (with no program, what `buf`
+ held: FANUC's library does so). Type not 0..2: EW_ATTRIB, `*num_prog` ≤ 0:
+ EW_LENGTH, without traffic. 19 programs per exchange at most.
+
+ # Safety
+ `top_prog` and `num_prog` readable and writable; `buf` must have
+ `*num_prog` writable PRGDIR2 records.
+ */
+short cnc_rdprogdir2(unsigned short FlibHndl,
+                     short type,
+                     short *top_prog,
+                     short *num_prog,
+                     struct PRGDIR2 *buf);
+
+/*
+ Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
  the numbers, 1 also the comments, 2 also size and modification date
  (`page` and `cdate` are never written). Out: `*num_prog` records read,
  `*top_prog` the number of the first (untouched when none was found, as
@@ -2077,6 +2179,18 @@ short cnc_rdprogdir3(unsigned short FlibHndl,
                      long *top_prog,
                      short *num_prog,
                      struct PRGDIR3 *buf);
+
+/*
+ Reads program memory information: `type` 0 into `prog->u.bin`, 1 as the
+ text "%\n<reg>\n<unreg>\n<used>\n<unused>\n%" and a NUL into
+ `prog->u.asc` (as FANUC's library writes it; never more than `length`
+ bytes). Type not 0/1: EW_ATTRIB; `length` under 12 (type 0) or 31
+ (type 1), on a Series 15 16 or 35: EW_LENGTH; both without traffic.
+
+ # Safety
+ `prog` must point to `length` writable bytes (at least an ODBNC).
+ */
+short cnc_rdproginfo(unsigned short FlibHndl, short type, short length, struct ODBNC *prog);
 
 /*
  Reads program lines: HSSB only; `EW_VERSION` (-7) on Ethernet.
@@ -2326,6 +2440,11 @@ short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Renumbers program `old_num` as `new_num`.
+ */
+short cnc_renameprog(unsigned short FlibHndl, long old_num, long new_num);
+
+/*
  Resets the CNC: the running program stops, reset-clearable alarms are
  cleared.
  */
@@ -2344,6 +2463,11 @@ short cnc_reset2(unsigned short FlibHndl);
  fwlib_set_reconnect on reconnects at its next call.
  */
 short cnc_resetconnect(unsigned short FlibHndl);
+
+/*
+ Selects program `prog_no` as the main program.
+ */
+short cnc_search(unsigned short FlibHndl, short prog_no);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).
@@ -2581,6 +2705,21 @@ short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
  `num` must point to a 4-byte count, `data` to `*num` readable doubles.
  */
 short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
+ Sets the execution pointer of MDI operation.
+ */
+short cnc_wrmdipntr(unsigned short FlibHndl, long exe_pntr);
+
+/*
+ Writes the MDI program: `length` bytes of `data` go to the CNC as they
+ are. A negative `length`: EW_LENGTH without traffic (FANUC's library
+ aborts the process).
+
+ # Safety
+ `data` must have `length` readable bytes.
+ */
+short cnc_wrmdiprog(unsigned short FlibHndl, short length, char *data);
 
 /*
  Writes a CNC parameter. The parameter's attributes are read first

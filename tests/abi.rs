@@ -325,6 +325,9 @@ rust_layouts! {
     ODBTLIFE4 { datano, r#type, data }
     PRGDIR { prg_data }
     PRGDIR3 { number, length, page, comment, mdate, cdate }
+    PRGDIR2 { number, length, comment, dummy }
+    ODBNC { u }
+    ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
 
     // --- alarm ---
     ODBALM { dummy, data }

@@ -9,6 +9,7 @@ pub mod exports;
 pub mod ext;
 pub mod handle;
 pub mod macros;
+pub mod memory;
 pub mod offset;
 pub mod param;
 pub mod pmc;

@@ -313,6 +313,28 @@ pub unsafe extern "C" fn cnc_rdprogdir(
     })
 }
 
+/// Up to `want` directory records from program `start` on, in exchanges
+/// of 19 at most, as FANUC's library asks (cnc_rdprogdir2/3).
+pub(crate) fn progdir_records(
+    h: &handles::Handle,
+    code: i32,
+    mut start: i32,
+    want: usize,
+) -> crate::error::Result<Vec<pp::DirEntry>> {
+    let mut got: Vec<pp::DirEntry> = Vec::new();
+    while got.len() < want {
+        let ask = (want - got.len()).min(pp::PROGDIR_CHUNK as usize);
+        let d = h.call(&pp::progdir(start, ask as i32, code))?;
+        let n = d.0.len().min(ask);
+        got.extend_from_slice(&d.0[..n]);
+        match d.0[..n].last() {
+            Some(l) if n == ask && l.number >= start && l.number < i32::MAX => start = l.number + 1,
+            _ => break,
+        }
+    }
+    Ok(got)
+}
+
 /// Size of one PRGDIR3 record (l32).
 const PRGDIR3_SIZE: usize = std::mem::size_of::<PRGDIR3>();
 
@@ -346,21 +368,7 @@ pub unsafe extern "C" fn cnc_rdprogdir3(
         if want <= 0 {
             return Err(Error::local(EW_LENGTH, "*num_prog must be at least 1"));
         }
-        let want = want as usize;
-        let mut start = unsafe { top.read_unaligned() };
-        let mut got: Vec<pp::DirEntry> = Vec::new();
-        while got.len() < want {
-            let ask = (want - got.len()).min(pp::PROGDIR_CHUNK as usize);
-            let d = h.call(&pp::progdir(start, ask as i32, code))?;
-            let n = d.0.len().min(ask);
-            got.extend_from_slice(&d.0[..n]);
-            match d.0[..n].last() {
-                Some(l) if n == ask && l.number >= start && l.number < i32::MAX => {
-                    start = l.number + 1
-                }
-                _ => break,
-            }
-        }
+        let got = progdir_records(&h, code, unsafe { top.read_unaligned() }, want as usize)?;
         for (i, e) in got.iter().enumerate() {
             let at = unsafe { out.add(i * PRGDIR3_SIZE) };
             unsafe {

@@ -20,6 +20,23 @@ pub const RDTIMER: u16 = 0x0120;
 /// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
 /// cnc_rdprogdir3).
 pub const RDPROGDIR: u16 = 0x0006;
+/// cnc_rdmdiprog (answer: the MDI program's text) and cnc_wrmdiprog (the
+/// text as the request's payload).
+pub const RDMDIPROG: u16 = 0x0036;
+pub const WRMDIPROG: u16 = 0x0037;
+/// cnc_rdproginfo: [`ProgInfo`].
+pub const RDPROGINFO: u16 = 0x0007;
+
+wire_struct! {
+    /// Payload of 0x0007 (cnc_rdproginfo): programs stored and free, bytes
+    /// used and free (missing bytes read as zeros, as FANUC's library).
+    pub struct ProgInfo {
+        pub reg_prg: i32,
+        pub unreg_prg: i32,
+        pub used_mem: i32,
+        pub unused_mem: i32,
+    }
+}
 
 /// Records FANUC's library asks for per 0x0006 exchange.
 pub const PROGDIR_CHUNK: i32 = 19;
@@ -155,7 +172,8 @@ impl Wire for ExecProg {
     }
 }
 
-/// Payload of 0x00fc (cnc_exeprgname2): the program's path name as bytes.
+/// A payload as bytes: 0x00fc (cnc_exeprgname2), the program's path name;
+/// 0x0036 / 0x0037, the MDI program's text.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct PathName(pub Vec<u8>);
 

@@ -502,7 +502,10 @@ impl CncService for Machine {
                 let c = &self.profile.cnc;
                 Ok(vec![c.ether_type.into(), c.ether_device.into()])
             }
-            name => self.history_answer(name).ok_or(CncError::FUNC),
+            name => match self.memory_answer(name, path, args) {
+                Some(r) => r,
+                None => self.history_answer(name).ok_or(CncError::FUNC),
+            },
         }
     }
 
@@ -518,6 +521,10 @@ impl CncService for Machine {
         e: i32,
     ) -> Reply<crate::proto::tool::ToolList> {
         self.tl_list(path, grp, s, e)
+    }
+
+    fn raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
+        self.memory_raw(sub)
     }
 
     // --- upload ---

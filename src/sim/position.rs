@@ -74,9 +74,8 @@ impl Machine {
     }
 
     pub(crate) fn pos_prog_nums(&self, path: u16) -> Reply<ProgNums> {
-        let r = self.pos_run(path)?;
         Ok(ProgNums {
-            data: r.program,
+            data: self.shown_program(path)?.0,
             mdata: self.store.path(path)?.main,
         })
     }

@@ -59,12 +59,24 @@ impl Machine {
     /// The program's full path name: the profile's if it is one, else
     /// "//CNC_MEM/USER/PATH<n>/<name>".
     fn full_name(&self, path: u16) -> Reply<String> {
-        let name = &self.live(path)?.program_name;
+        let name = self.shown_program(path)?.1;
         Ok(if name.starts_with("//") || name.is_empty() {
-            name.clone()
+            name
         } else {
             format!("//CNC_MEM/USER/PATH{path}/{name}")
         })
+    }
+
+    /// The program a path shows (cnc_rdprgnum, cnc_exeprgname): the one it
+    /// executes, else the main program selected (cnc_search), as number
+    /// and name.
+    pub(crate) fn shown_program(&self, path: u16) -> Reply<(i32, String)> {
+        let (r, s) = (self.live(path)?, self.store.path(path)?);
+        if s.running != 0 || s.main == 0 {
+            return Ok((r.program, r.program_name.clone()));
+        }
+        let p = s.find(s.main).map(super::store::Program::display_name);
+        Ok((s.main, p.unwrap_or_default()))
     }
 
     pub(crate) fn sim_exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
@@ -74,7 +86,7 @@ impl Machine {
         let n = short.len().min(35);
         name[..n].copy_from_slice(&short.as_bytes()[..n]);
         Ok(ExePrgName {
-            o_num: self.live(path)?.program,
+            o_num: self.shown_program(path)?.0,
             name,
         })
     }

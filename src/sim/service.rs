@@ -353,6 +353,12 @@ pub trait CncService: Send {
         unsupported()
     }
 
+    /// A command answered as bytes by the machine (`None`: not one it
+    /// knows this way), tried before the described functions.
+    fn raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        None
+    }
+
     // --- upload ---
     /// Program upload on connection 1 (0x1501): the text to push in 0x1604
     /// frames, or the error for the CNC's error frame.
@@ -499,11 +505,12 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             // --- tool ---
             (CLASS_CNC, TLGROUP) => enc(svc.tool_group(p, a[0])),
             (CLASS_CNC, TLTOOLS) => enc(svc.tool_list(p, a[0], a[1], a[2])),
-            _ => match described::for_request(sub, class) {
-                Some(f) => svc
+            _ => match (svc.raw(sub), described::for_request(sub, class)) {
+                (Some(r), _) => r,
+                (None, Some(f)) => svc
                     .described(f, p, &described::args_of(f, class, sub))
                     .and_then(|v| described::encode(f, &v).map_err(|_| CncError::FUNC)),
-                None => Err(CncError::FUNC),
+                (None, None) => Err(CncError::FUNC),
             },
         }
     };

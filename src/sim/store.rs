@@ -171,6 +171,10 @@ pub struct PathStore {
     pub running: i32,
     /// The main program selected (cnc_search; 0: none): what a start runs.
     pub main: i32,
+    /// The MDI program's execution pointer (cnc_wrmdipntr, cnc_rdmdipntr).
+    pub mdi_pntr: i32,
+    /// The MDI program's text (cnc_wrmdiprog, cnc_rdmdiprog).
+    pub mdi: Vec<u8>,
 }
 
 /// The program memory of every path.
@@ -204,8 +208,8 @@ impl Store {
                     programs,
                     capacity: p.memory.bytes.unwrap_or(DEFAULT_MEMORY),
                     max_programs: p.memory.programs.unwrap_or(DEFAULT_PROGRAMS),
-                    running: 0,
                     main: p.cycle.program,
+                    ..PathStore::default()
                 }
             });
         Store {
@@ -227,7 +231,7 @@ impl Store {
 
     /// The programs of `path` in number order (none for a path it lacks).
     pub fn iter(&self, path: u16) -> impl Iterator<Item = &Program> {
-        self.path(path).into_iter().flat_map(|p| p.programs.iter())
+        self.path(path).into_iter().flat_map(PathStore::iter)
     }
 
     /// Program `number` of `path`.
@@ -271,23 +275,18 @@ impl Store {
         self.path(path)?.editable(number)?;
         let s = self.path_mut(path)?;
         let at = s.programs.iter().position(|p| p.number == number);
-        let p = s.programs.remove(at.expect("checked"));
-        if s.main == number {
-            s.main = 0;
-        }
-        Ok(p)
+        Ok(s.programs.remove(at.expect("checked")))
     }
 
-    /// Deletes every program of `path` that is neither protected nor
-    /// executing (as a CNC deletes all): how many went.
+    /// Deletes every program of `path` that is neither protected, executing
+    /// nor the main program (as a CNC deletes all): how many went.
     pub fn remove_all(&mut self, path: u16) -> Reply<usize> {
         let s = self.path_mut(path)?;
         let before = s.programs.len();
         let running = s.running;
-        s.programs.retain(|p| p.protect || p.number == running);
-        if !s.programs.iter().any(|p| p.number == s.main) {
-            s.main = 0;
-        }
+        let main = s.main;
+        s.programs
+            .retain(|p| p.protect || p.number == running || p.number == main);
         Ok(before - s.programs.len())
     }
 
@@ -301,23 +300,42 @@ impl Store {
             return err(ew::EW_DATA);
         }
         p.modified = date;
-        let main = s.main == from;
         self.remove(path, from)?;
-        self.insert(path, p)?;
-        if main {
-            self.path_mut(path)?.main = to;
-        }
-        Ok(())
+        self.insert(path, p)
     }
 
     /// Copies program `from` of `path` to a new program `to` (created
     /// `date`, not protected). Refused: no `from` EW_DATA, as
     /// [`Store::insert`] for `to`.
     pub fn copy(&mut self, path: u16, from: i32, to: i32, date: Date) -> Reply<()> {
-        let src = self.get(path, from).ok_or(CncError::new(ew::EW_DATA))?;
-        let mut p = src.renumbered(to);
+        let mut p = self.path(path)?.find(from)?.renumbered(to);
         (p.created, p.modified, p.protect) = (date, date, false);
         self.insert(path, p)
+    }
+
+    /// cnc_search: program `number` becomes the main program of `path`.
+    /// No such program EW_DATA; the path executing a program EW_BUSY.
+    pub fn select(&mut self, path: u16, number: i32) -> Reply<()> {
+        let s = self.path_mut(path)?;
+        if s.running != 0 {
+            return err(ew::EW_BUSY);
+        }
+        s.find(number)?;
+        s.main = number;
+        Ok(())
+    }
+
+    /// cnc_condense: memory is never fragmented here, so nothing moves.
+    /// `type` other than 0/1 EW_ATTRIB, a program (not 0) not stored EW_DATA.
+    pub fn condense(&self, path: u16, kind: i32, number: i32) -> Reply<()> {
+        let s = self.path(path)?;
+        if !(0..=1).contains(&kind) {
+            return err(ew::EW_ATTRIB);
+        }
+        if number != 0 {
+            s.find(number)?;
+        }
+        Ok(())
     }
 
     /// Sets program `number`'s protection.
@@ -335,20 +353,32 @@ impl PathStore {
         self.programs.iter().map(Program::size).sum()
     }
 
+    /// The programs in number order.
+    pub fn iter(&self) -> std::slice::Iter<'_, Program> {
+        self.programs.iter()
+    }
+
     /// How many programs are stored.
     pub fn count(&self) -> usize {
         self.programs.len()
     }
 
-    /// Program `number` if it may change: no such program EW_DATA,
-    /// protected EW_PROT, executing EW_BUSY.
-    pub fn editable(&self, number: i32) -> Reply<&Program> {
+    /// Program `number`; EW_DATA if there is none.
+    pub fn find(&self, number: i32) -> Reply<&Program> {
         let p = self.programs.iter().find(|p| p.number == number);
-        let p = p.ok_or(CncError::new(ew::EW_DATA))?;
+        p.ok_or(CncError::new(ew::EW_DATA))
+    }
+
+    /// Program `number` if it may change: no such program EW_DATA,
+    /// protected EW_PROT, executing or selected as the main program EW_BUSY
+    /// (FANUC's sample for cnc_delete reads EW_BUSY as "rejected": the
+    /// main program cannot be deleted).
+    pub fn editable(&self, number: i32) -> Reply<&Program> {
+        let p = self.find(number)?;
         if p.protect {
             return err(ew::EW_PROT);
         }
-        if number == self.running {
+        if number == self.running || number == self.main {
             return err(ew::EW_BUSY);
         }
         Ok(p)
@@ -385,8 +415,16 @@ mod tests {
         assert_eq!(s.remove(1, 100).unwrap_err().code, ew::EW_PROT);
         assert_eq!(s.rename(1, 100, 5, d).unwrap_err().code, ew::EW_PROT);
         s.protect(1, 100, false).unwrap();
-        s.path_mut(1).unwrap().running = 1234;
-        assert_eq!(s.remove(1, 1234).unwrap_err().code, ew::EW_BUSY);
+        assert_eq!(
+            s.remove(1, 1234).unwrap_err().code,
+            ew::EW_BUSY,
+            "the main program"
+        );
+        s.path_mut(1).unwrap().running = 100;
+        assert_eq!(s.remove(1, 100).unwrap_err().code, ew::EW_BUSY);
+        assert_eq!(s.select(1, 100).unwrap_err().code, ew::EW_BUSY);
+        s.path_mut(1).unwrap().running = 0;
+        assert_eq!(s.select(1, 7).unwrap_err().code, ew::EW_DATA);
         assert_eq!(s.rename(1, 100, 1234, d).unwrap_err().code, ew::EW_DATA);
         s.path_mut(1).unwrap().capacity = s.path(1).unwrap().used();
         let big = Program::new("O0001;\nM30;\n%\n", d);
@@ -405,8 +443,8 @@ mod tests {
         s.copy(1, 200, 300, d).unwrap();
         assert!(s.get(1, 300).unwrap().text.starts_with("O0300 (WARM UP);"));
         assert_eq!(s.remove(1, 200).unwrap().number, 200);
-        assert_eq!(s.remove_all(1).unwrap(), 2);
-        assert_eq!(s.path(1).unwrap().main, 0);
+        assert_eq!(s.remove_all(1).unwrap(), 1, "the main program stays");
+        s.select(1, 1234).unwrap();
         let p = Program::new("%\nO0042 (NEW PART);\nM30;\n%\n", d);
         assert_eq!((p.number, p.comment.as_str()), (42, "NEW PART"));
     }

@@ -231,3 +231,73 @@ pub struct ODBPTIME {
     pub num: c_short,
     pub data: [ODBPTIME_DATA; 10],
 }
+
+/// cnc_rdproginfo type 0: programs and memory, registered and free.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBNC_bin {
+    pub reg_prg: c_short,
+    pub unreg_prg: c_short,
+    pub used_mem: LONG,
+    pub unused_mem: LONG,
+}
+
+/// The union of ODBNC: binary (type 0) or ASCII (type 1).
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub union ODBNC_u {
+    pub bin: ODBNC_bin,
+    pub asc: [c_char; 31],
+}
+
+impl Default for ODBNC_u {
+    fn default() -> Self {
+        ODBNC_u { asc: [0; 31] }
+    }
+}
+
+impl std::fmt::Debug for ODBNC_u {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ODBNC_u")
+            .field("asc", unsafe { &self.asc })
+            .finish()
+    }
+}
+
+/// cnc_rdproginfo: program memory information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ODBNC {
+    pub u: ODBNC_u,
+}
+
+/// cnc_rdmdipntr: execution pointers of MDI operation.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBMDIP {
+    pub mdiprog: c_short,
+    pub mdipntr: LONG,
+    pub crntprog: c_short,
+    pub crntpntr: LONG,
+}
+
+/// cnc_rdprogdir2: one program of the directory.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PRGDIR2 {
+    pub number: c_short,
+    pub length: LONG,
+    pub comment: [c_char; 51],
+    pub dummy: c_char,
+}
+
+impl Default for PRGDIR2 {
+    fn default() -> Self {
+        PRGDIR2 {
+            number: 0,
+            length: 0,
+            comment: [0; 51],
+            dummy: 0,
+        }
+    }
+}

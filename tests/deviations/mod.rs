@@ -35,6 +35,11 @@ pub const ORACLE: &[Deviation] = &[
         reason: "an empty answer (an idle path) makes FANUC's library set *length 65532 and read past its receive buffer into the caller's; ours gives *length 0 and an empty string",
     },
     Deviation {
+        function: "cnc_rdmdipntr",
+        cases: &["rdmdipntr_v3_shape_err*", "rdmdipntr_v2_shape_err*"],
+        reason: "when the CNC answers an error FANUC's library writes uninitialised stack bytes into the whole ODBMDIP; ours writes nothing",
+    },
+    Deviation {
         function: "cnc_rdopmode",
         cases: &["rdopmode_v3_shape_longer", "rdopmode_v2_shape_longer"],
         reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",

@@ -284,6 +284,11 @@ static char *text(int i, long *n) {
     WORD(rdprogdir3, { int32_t top[2] = {(int32_t)N(2), (int32_t)0xCCCCCCCC}; short n = N(3);     \
                        short r = F(cnc_rdprogdir3)(H, N(1), (long *)top, &n, B0);                 \
                        field("top_prog", (uint32_t)top[0]); field("num_prog", n); return r; })    \
+    WORD(rdprogdir2, { short top = N(2), n = N(3); short r = F(cnc_rdprogdir2)(H, N(1), &top, &n, B0); \
+                       field("top_prog", top); field("num_prog", n); return r; })                 \
+    WORD(rdproginfo, return F(cnc_rdproginfo)(H, N(1), N(2), B0))                                 \
+    WORD(rdmdiprog, SHORT_IO(length, 1, F(cnc_rdmdiprog)(H, &length, B0)))                        \
+    WORD(wrmdiprog, { fill_hex(b1, 2); return F(cnc_wrmdiprog)(H, N(1), B1); })                   \
     /* alarm */                                                                                   \
     WORD(alarm, return F(cnc_alarm)(H, B0))                                                       \
     WORD(alarm2, return F(cnc_alarm2)(H, B0))                                                     \

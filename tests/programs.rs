@@ -1,0 +1,209 @@
+//! Programs in memory through the C ABI against the simulator's program
+//! store: what the oracle's single calls cannot show, that a change is seen
+//! by the next directory read and upload, and that a refusal changes
+//! nothing.
+
+mod common;
+mod sim;
+
+use fwlib32::ew::*;
+use fwlib32::sim::Profile;
+use fwlib32::sim::run::StoredProgram;
+use fwlib32::types::*;
+use fwlib32::*;
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
+
+/// The built-in profile with path 1 idle (no program in cycle, none
+/// selected) and a protected O0500.
+fn idle() -> Profile {
+    let mut p = Profile::default();
+    p.paths[0].cycle.program = 0;
+    p.programs.push(StoredProgram {
+        number: 500,
+        text: "O0500 (KEEP);\nG04 X1.;\nM30;\n%\n".into(),
+        protect: true,
+        ..Default::default()
+    });
+    p
+}
+
+/// (number, size, comment) of every program, by cnc_rdprogdir3 type 2.
+fn dir(h: c_ushort) -> Vec<(i32, i32, String)> {
+    let mut buf = vec![PRGDIR3::default(); 20];
+    let (mut top, mut num): (c_long, c_short) = (0, 20);
+    assert_eq!(
+        unsafe { cnc_rdprogdir3(h, 2, &mut top, &mut num, buf.as_mut_ptr()) },
+        EW_OK
+    );
+    buf[..num as usize]
+        .iter()
+        .map(|d| {
+            let c = d.comment.iter().take_while(|&&b| b != 0).map(|&b| b as u8);
+            (d.number, d.length, String::from_utf8(c.collect()).unwrap())
+        })
+        .collect()
+}
+
+fn numbers(h: c_ushort) -> Vec<i32> {
+    dir(h).into_iter().map(|d| d.0).collect()
+}
+
+/// The uploaded text of program `n`, or the error of its upload.
+fn upload(h: c_ushort, n: i32) -> Result<String, c_short> {
+    let r = cnc_upstart3(h, 0, n as c_long, n as c_long);
+    if r != EW_OK {
+        return Err(r);
+    }
+    let mut all = Vec::new();
+    loop {
+        let mut buf = vec![0u8; 1024];
+        let mut len: c_long = 1024;
+        match unsafe { cnc_upload3(h, &mut len, buf.as_mut_ptr().cast()) } {
+            EW_OK => all.extend_from_slice(&buf[..len as usize]),
+            EW_BUFFER => std::thread::yield_now(),
+            EW_RESET => break,
+            e => {
+                cnc_upend3(h);
+                return Err(e);
+            }
+        }
+    }
+    assert_eq!(cnc_upend3(h), EW_OK);
+    Ok(String::from_utf8(all).unwrap())
+}
+
+fn proginfo(h: c_ushort) -> ODBNC_bin {
+    let mut o = ODBNC::default();
+    assert_eq!(unsafe { cnc_rdproginfo(h, 0, 12, &mut o) }, EW_OK);
+    unsafe { o.u.bin }
+}
+
+#[test]
+fn delete_removes_a_program_and_refusals_change_nothing() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    assert_eq!(numbers(h), vec![100, 1234]);
+    assert_eq!(cnc_delete(h, 100), EW_OK);
+    assert_eq!(numbers(h), vec![1234]);
+    assert_eq!(upload(h, 100), Err(EW_DATA));
+    assert_eq!(cnc_delete(h, 100), EW_DATA, "gone");
+    // O1234 is executing (and the main program).
+    assert_eq!(cnc_delete(h, 1234), EW_BUSY);
+    assert_eq!(cnc_renameprog(h, 1234, 1), EW_BUSY);
+    assert_eq!(cnc_search(h, 1234), EW_BUSY, "the path is running");
+    assert_eq!(numbers(h), vec![1234]);
+    assert!(upload(h, 1234).unwrap().contains("POCKET DEMO"));
+}
+
+#[test]
+fn a_protected_program_stays() {
+    let (_s, h) = sim::start_alloc(idle());
+    let before = dir(h);
+    assert_eq!(cnc_delete(h, 500), EW_PROT);
+    assert_eq!(cnc_renameprog(h, 500, 501), EW_PROT);
+    assert_eq!(cnc_delall(h), EW_OK);
+    assert_eq!(numbers(h), vec![500], "delall leaves the protected program");
+    assert_eq!(dir(h)[0], before[1]);
+    assert!(upload(h, 500).unwrap().contains("O0500"));
+}
+
+#[test]
+fn rename_and_copy_show_in_directory_and_upload() {
+    let (_s, h) = sim::start_alloc(idle());
+    assert_eq!(cnc_renameprog(h, 100, 200), EW_OK);
+    assert_eq!(numbers(h), vec![200, 500, 1234]);
+    assert_eq!(upload(h, 100), Err(EW_DATA));
+    let text = upload(h, 200).unwrap();
+    assert!(text.starts_with("%\nO0200 (WARM UP)\n"), "{text}");
+    assert_eq!(cnc_renameprog(h, 200, 1234), EW_DATA, "number in use");
+    assert_eq!(cnc_renameprog(h, 7, 8), EW_DATA, "no such program");
+
+    assert_eq!(cnc_copyprog(h, 200, 300), EW_OK);
+    assert_eq!(upload(h, 300).unwrap(), text.replace("O0200", "O0300"));
+    assert_eq!(cnc_copyprog(h, 200, 300), EW_DATA, "number in use");
+    assert_eq!(cnc_copyprog(h, 7, 301), EW_DATA, "no such program");
+    assert_eq!(numbers(h), vec![200, 300, 500, 1234]);
+
+    let mut d2 = vec![PRGDIR2::default(); 8];
+    let (mut top, mut num): (c_short, c_short) = (250, 8);
+    assert_eq!(
+        unsafe { cnc_rdprogdir2(h, 2, &mut top, &mut num, d2.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!((top, num), (300, 3));
+    assert_eq!(d2[0].length, dir(h)[1].1, "cnc_rdprogdir3's size");
+}
+
+#[test]
+fn search_selects_the_main_program() {
+    let (_s, h) = sim::start_alloc(idle());
+    let prgnum = || {
+        let mut p = ODBPRO::default();
+        assert_eq!(unsafe { cnc_rdprgnum(h, &mut p) }, EW_OK);
+        (p.data, p.mdata)
+    };
+    assert_eq!(prgnum(), (0, 0));
+    assert_eq!(cnc_search(h, 7), EW_DATA);
+    assert_eq!(cnc_search(h, 100), EW_OK);
+    assert_eq!(prgnum(), (100, 100));
+    let mut e = ODBEXEPRG::default();
+    assert_eq!(unsafe { cnc_exeprgname(h, &mut e) }, EW_OK);
+    assert_eq!(
+        (e.o_num, e.name[..5].to_vec()),
+        (100, b"O0100".map(|b| b as c_char).to_vec())
+    );
+    assert_eq!(cnc_delete(h, 100), EW_BUSY, "the main program");
+    assert_eq!(cnc_delall(h), EW_OK);
+    assert_eq!(numbers(h), vec![100, 500]);
+}
+
+#[test]
+fn memory_information_follows_the_store() {
+    let mut p = idle();
+    let used: usize = p.programs.iter().map(|x| x.text.len()).sum();
+    p.paths[0].memory.bytes = Some(used + 10);
+    let (_s, h) = sim::start_alloc(p);
+    let i = proginfo(h);
+    assert_eq!((i.reg_prg, i.unreg_prg), (3, 397));
+    assert_eq!((i.used_mem as usize, i.unused_mem), (used, 10));
+    // Type 1: the same numbers as text.
+    let mut o = ODBNC::default();
+    assert_eq!(unsafe { cnc_rdproginfo(h, 1, 31, &mut o) }, EW_OK);
+    let asc: Vec<u8> = unsafe { o.u.asc }.iter().map(|&b| b as u8).collect();
+    let want = format!("%\n3\n397\n{used}\n10\n%\0");
+    assert_eq!(&asc[..want.len()], want.as_bytes());
+    // A copy that does not fit changes nothing.
+    assert_eq!(cnc_copyprog(h, 100, 101), EW_OVRFLOW);
+    assert_eq!(numbers(h), vec![100, 500, 1234]);
+    assert_eq!(cnc_delete(h, 100), EW_OK);
+    let i = proginfo(h);
+    assert_eq!((i.reg_prg, i.unreg_prg), (2, 398));
+}
+
+#[test]
+fn the_mdi_program_and_pointer_round_trip() {
+    let (_s, h) = sim::start_alloc(idle());
+    let mut text = *b"G91G28Z0;\nM30;\n%";
+    let n = text.len() as c_short;
+    assert_eq!(
+        unsafe { cnc_wrmdiprog(h, n, text.as_mut_ptr().cast()) },
+        EW_OK
+    );
+    let mut buf = [0 as c_char; 64];
+    let mut len: c_short = 64;
+    assert_eq!(
+        unsafe { cnc_rdmdiprog(h, &mut len, buf.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!(len, n);
+    assert_eq!(
+        buf[..len as usize]
+            .iter()
+            .map(|&b| b as u8)
+            .collect::<Vec<_>>(),
+        text
+    );
+    assert_eq!(cnc_wrmdipntr(h, 5), EW_OK);
+    let mut p = ODBMDIP::default();
+    assert_eq!(unsafe { cnc_rdmdipntr(h, &mut p) }, EW_OK);
+    assert_eq!((p.mdipntr, p.crntpntr), (5, 5));
+}
