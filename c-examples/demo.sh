@@ -3,7 +3,9 @@
 # built-in profile (a 31i mill running program O1234) on a free loopback port,
 # build the C examples against include/fwlib32.h and libfwlib32.so, and run
 # them against the simulator: status.c (connect, status, id), then adapter.c
-# (the MTConnect adapter's calls, polling the running machine 4 times).
+# (the MTConnect adapter's calls, polling the running machine 4 times), then
+# transfer.c (download a program, select it, start it, watch it run to its
+# end, upload it back and compare).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,7 +14,7 @@ out=target/c-examples
 mkdir -p "$out"
 # A program linked with -lfwlib32 asks the loader for the SONAME libfwlib32.so.1.
 ln -sf libfwlib32.so target/release/libfwlib32.so.1
-for ex in status adapter; do
+for ex in status adapter transfer; do
     cc -std=c99 -Wall -Wextra -Werror -I include "c-examples/$ex.c" \
        -L target/release -lfwlib32 -Wl,-rpath,"$PWD/target/release" -o "$out/$ex"
 done
@@ -27,3 +29,6 @@ port=${line##*:}
 "$out/status" 127.0.0.1 "$port"
 echo
 "$out/adapter" 127.0.0.1 "$port" 4 700
+echo
+printf '%%\nO4242(DEMO)\nN10 G90 G00 X10. Y5.\nN20 G01 X20. F500 S1200 M03\nN30 M05\nN40 M30\n%%' >"$out/O4242.nc"
+"$out/transfer" 127.0.0.1 "$port" "$out/O4242.nc"

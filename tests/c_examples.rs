@@ -352,3 +352,37 @@ fn data_example_writes_and_reads_back() {
         String::from_utf8_lossy(&out.stderr).contains("cnc_wrparam(h, 4 + 4, &prm) failed: 17")
     );
 }
+
+/// transfer.c: list, download a file, select it, start it, watch it run
+/// to its end, upload it back and compare, against the simulator.
+#[test]
+fn transfer_example_downloads_runs_and_uploads_a_program() {
+    let dir = toolchain::lib_dir("transfer");
+    let exe = build_example("transfer", &dir);
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE
+        .replace("block_seconds = 0.5", "block_seconds = 0.02");
+    let sim = Simulator::start(Profile::parse(&text).unwrap(), "127.0.0.1:0").unwrap();
+    let file = dir.join("O4242.nc");
+    let program = "%\nO4242(TRANSFER EXAMPLE)\nN10 G90 G00 X10. Y5.\nN20 G01 X20. F500 S1200 M03\nN30 G91 Y-5.\nN40 M05\nN50 M30\n%";
+    std::fs::write(&file, program).unwrap();
+    let out = toolchain::target_command(&exe)
+        .args(["127.0.0.1", &sim.port().to_string(), file.to_str().unwrap()])
+        .env("LD_LIBRARY_PATH", &dir)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "transfer failed:\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let kv = key_values(&out.stdout);
+    assert!(
+        stdout.contains("program=O1234 "),
+        "the profile's programs are listed:\n{stdout}"
+    );
+    assert_eq!(kv["downloaded"], format!("O4242 bytes={}", program.len()));
+    assert_eq!(kv["main"], "O4242");
+    assert_eq!(kv["ran"], "O4242 started=yes ended=yes blocks=5");
+    assert_eq!(kv["upload"], format!("identical bytes={}", program.len()));
+}
