@@ -278,8 +278,13 @@ fn run_words(words: &[&cases::Word], profile: &str, probe_exe: &Path, lib: &Path
                         _ => break,
                     }
                 }
+                // Frames that have no answer (download and DNC data, an
+                // upload's abort) may still be on their way: wait longer.
+                let unanswered = ["download", "dnc", "upend"]
+                    .iter()
+                    .any(|p| word_of(&cmd).starts_with(p));
                 let request = fake
-                    .take(Duration::from_millis(1))
+                    .take(Duration::from_millis(if unanswered { 50 } else { 1 }))
                     .iter()
                     .any(|r| r.dir == "req");
                 let ret = match answer {

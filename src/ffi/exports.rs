@@ -65,7 +65,7 @@ mod tests {
             export("fwlib_set_reconnect").map(|e| e.how),
             Some(How::Extension)
         );
-        assert!(export("cnc_dwnstart4").is_none());
+        assert!(export("cnc_no_such_function").is_none());
         assert!(
             EXPORTS
                 .iter()
