@@ -142,24 +142,24 @@ fn build_against_stub(dir: &Path, stub: &str, prog: &str) -> PathBuf {
 #[test]
 fn a_function_we_lack_is_missing() {
     let dir = toolchain::scratch("compat-missing");
-    // cnc_dwnstart4 is FANUC's (program download), not in our header: the
+    // cnc_dwnstart3_f is FANUC's (program download), not in our header: the
     // program declares it itself.
     let exe = build_against_stub(
         &dir,
         "short cnc_allclibhndl3(const char *a, unsigned short b, long c, unsigned short *d)\
          { (void)a; (void)b; (void)c; (void)d; return -15; }\n\
-         short cnc_dwnstart4(unsigned short a, short b, char *c) { (void)a; (void)b; (void)c; return -15; }\n\
+         short cnc_dwnstart3_f(unsigned short a, short b, char *c, char *d) { (void)a; (void)b; (void)c; (void)d; return -15; }\n\
          short cnc_rdexecpt(unsigned short a, void *b, void *c) { (void)a; (void)b; (void)c; return -15; }\n\
          short cnc_freelibhndl(unsigned short a) { (void)a; return -15; }\n",
         "#include \"fwlib32.h\"\n\
-         short cnc_dwnstart4(unsigned short, short, char *);\n\
+         short cnc_dwnstart3_f(unsigned short, short, char *, char *);\n\
          int main(void) {\n\
              unsigned short h = 0;\n\
              PRGPNT a, b;\n\
              char path[] = \"//CNC_MEM/USER/PATH1/\";\n\
              if (cnc_allclibhndl3(\"127.0.0.1\", 8193, 10, &h)) return 1;\n\
              cnc_rdexecpt(h, &a, &b);\n\
-             cnc_dwnstart4(h, 0, path);\n\
+             cnc_dwnstart3_f(h, 0, path, path);\n\
              return cnc_freelibhndl(h);\n\
          }\n",
     );
@@ -173,9 +173,9 @@ fn a_function_we_lack_is_missing() {
             .unwrap_or_else(|| panic!("no line for {f}: {text}"))
             .to_string()
     };
-    assert!(line("cnc_dwnstart4").contains("MISSING"), "{text}");
+    assert!(line("cnc_dwnstart3_f").contains("MISSING"), "{text}");
     assert!(
-        line("cnc_dwnstart4").contains("FANUC's Linux library has it"),
+        line("cnc_dwnstart3_f").contains("FANUC's Linux library has it"),
         "{text}"
     );
     assert!(line("cnc_rdexecpt").contains("EW_VERSION"), "{text}");
@@ -190,7 +190,7 @@ fn a_function_we_lack_is_missing() {
         statuses(&j),
         [
             ("cnc_allclibhndl3", "supported"),
-            ("cnc_dwnstart4", "missing"),
+            ("cnc_dwnstart3_f", "missing"),
             ("cnc_freelibhndl", "supported"),
             ("cnc_rdexecpt", "not_on_ethernet"),
         ]
@@ -301,12 +301,12 @@ fn the_readme_example_is_true() {
         &dir,
         "short cnc_allclibhndl3(const char *a, unsigned short b, long c, unsigned short *d)\
          { (void)a; (void)b; (void)c; (void)d; return -15; }\n\
-         short cnc_dwnstart4(unsigned short a, short b, char *c) { (void)a; (void)b; (void)c; return -15; }\n\
+         short cnc_dwnstart3_f(unsigned short a, short b, char *c, char *d) { (void)a; (void)b; (void)c; (void)d; return -15; }\n\
          short cnc_rdexecpt(unsigned short a, void *b, void *c) { (void)a; (void)b; (void)c; return -15; }\n\
          short cnc_statinfo(unsigned short a, void *b) { (void)a; (void)b; return -15; }\n\
          short cnc_freelibhndl(unsigned short a) { (void)a; return -15; }\n",
         "#include \"fwlib32.h\"\n\
-         short cnc_dwnstart4(unsigned short, short, char *);\n\
+         short cnc_dwnstart3_f(unsigned short, short, char *, char *);\n\
          int main(void) {\n\
              unsigned short h = 0;\n\
              PRGPNT a, b;\n\
@@ -315,7 +315,7 @@ fn the_readme_example_is_true() {
              if (cnc_allclibhndl3(\"127.0.0.1\", 8193, 10, &h)) return 1;\n\
              cnc_statinfo(h, &st);\n\
              cnc_rdexecpt(h, &a, &b);\n\
-             cnc_dwnstart4(h, 0, path);\n\
+             cnc_dwnstart3_f(h, 0, path, path);\n\
              return cnc_freelibhndl(h);\n\
          }\n",
     );
