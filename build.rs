@@ -525,7 +525,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
 {doc}{safety}
 #[unsafe(no_mangle)]
 pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
-    ffi_boundary!("{name}", {{
+    {boundary}!("{name}", {{
         // SAFETY: the outputs are the caller's, as documented; none without pointers.
         unsafe {{
             exec(
@@ -548,6 +548,12 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
                 format!("\n///\n/// # Safety\n{}", safety.join("\n"))
             },
             unsafe_ = if outs.is_empty() { "" } else { "unsafe " },
+            // A read may join a batch (fwlib_batch_begin); a command not.
+            boundary = if outs.is_empty() {
+                "ffi_boundary"
+            } else {
+                "ffi_read"
+            },
             name = f.name,
             params = params.iter().map(|p| format!(", {p}")).collect::<String>(),
             checks = checks.concat(),

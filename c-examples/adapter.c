@@ -6,7 +6,11 @@
  * parameter, diagnosis, macro and PMC reads), and a program upload.
  *
  *   cc -Wall -Wextra -Werror -I../include adapter.c -L../target/release -lfwlib32 -o adapter
- *   ./adapter [host [port [polls [interval_ms]]]]
+ *   ./adapter [--batch] [host [port [polls [interval_ms]]]]
+ *
+ * With --batch each poll's reads go in one batch (fwlib32_ext.h:
+ * fwlib_batch_begin, the calls, fwlib_batch_end): a few request frames
+ * instead of one round trip per call, the same values.
  *
  * Every value read is printed as one `poll.key=value` line, so a test (or
  * you) can check it against the simulator's profile while its program runs.
@@ -19,6 +23,12 @@
 #include <string.h>
 #include <time.h>
 #include "fwlib32.h"
+#if defined(__has_include)
+#if __has_include("fwlib32_ext.h")
+#include "fwlib32_ext.h" /* fwlib32-rs's extensions: --batch */
+#define HAVE_BATCH 1
+#endif
+#endif
 
 static unsigned short h;
 
@@ -51,6 +61,17 @@ static void print_scaled(const char *key, int poll, long v, int dec)
 
 int main(int argc, char **argv)
 {
+    int batch = argc > 1 && strcmp(argv[1], "--batch") == 0;
+    if (batch) {
+        argv++;
+        argc--;
+    }
+#ifndef HAVE_BATCH
+    if (batch) {
+        fprintf(stderr, "--batch needs fwlib32-rs's fwlib32_ext.h\n");
+        return 2;
+    }
+#endif
     const char *host = argc > 1 ? argv[1] : "127.0.0.1";
     unsigned short port = (unsigned short)(argc > 2 ? atoi(argv[2]) : 8193);
     int polls = argc > 3 ? atoi(argv[3]) : 5;
@@ -89,7 +110,7 @@ int main(int argc, char **argv)
         ODBACT2 act;
         ODBSPLOAD spload[MAX_SPINDLE];
         ODBSVLOAD svload[MAX_AXIS];
-        short n;
+        short n_sp = MAX_SPINDLE, n_sv = MAX_AXIS, n_alm = 10;
         char name[256];
         char block[256];
         unsigned short len = sizeof block - 1;
@@ -104,17 +125,52 @@ int main(int argc, char **argv)
         ODBDIAGIF dif;
         ODBDGN dgn;
         ODBM mcr;
-        IODBPMC pmc;
+        IODBPMC feed, spindle;
 
         if (poll > 0)
             sleep_ms(interval);
 
+        /* The reads: each into its own variables, so that in a batch they
+         * are all filled at fwlib_batch_end. */
+#ifdef HAVE_BATCH
+        if (batch)
+            CALL(fwlib_batch_begin(h));
+#endif
         CALL(cnc_statinfo(h, &st));
-        printf("%d.aut=%d\n%d.run=%d\n%d.motion=%d\n%d.emergency=%d\n%d.alarm=%d\n",
-               poll, st.aut, poll, st.run, poll, st.motion, poll, st.emergency, poll, st.alarm);
-
         /* All axes: 540 bytes, positions at MAX_AXIS strides. */
         CALL(cnc_rddynamic2(h, ALL_AXES, sizeof dyn, &dyn));
+        CALL(cnc_acts2(h, ALL_SPINDLES, &act));
+        CALL(cnc_rdspmeter(h, 0, &n_sp, spload));
+        CALL(cnc_rdsvmeter(h, &n_sv, svload));
+        CALL(cnc_exeprgname2(h, name));
+        CALL(cnc_rdexecprog(h, &len, &blknum, block));
+        CALL(cnc_modal(h, 0, 0, &mdl)); /* group 01: G00/G01/G02/G03 */
+        CALL(cnc_rdalmmsg2(h, -1, &n_alm, alm));
+        memset(&msg, 0, sizeof msg);
+        CALL(cnc_rdopmsg(h, 0, 6 + 256, &msg));
+        CALL(cnc_toolnum(h, 0, 0, &tool));
+        CALL(cnc_rdntool(h, 0, &ntool));
+        /* Part count: parameter 6711, found through rdparainfo first. */
+        CALL(cnc_rdparainfo(h, 6711, 1, &pif));
+        CALL(cnc_rdparam(h, 6711, 0, 8, &prm));
+        /* Servo motor temperature of axis 1, diagnosis 308 (a byte per axis). */
+        CALL(cnc_rddiaginfo(h, 308, 1, &dif));
+        CALL(cnc_diagnoss(h, 308, 1, 4 + 1, &dgn));
+        CALL(cnc_rdmacro(h, 500, 10, &mcr));
+        /* Feed override, G12 (inverted: 0x9b = !100 %), and spindle override, G30. */
+        CALL(pmc_rdpmcrng(h, 0 /* G */, 0 /* byte */, 12, 12, 8 + 1, &feed));
+        CALL(pmc_rdpmcrng(h, 0 /* G */, 0 /* byte */, 30, 30, 8 + 1, &spindle));
+#ifdef HAVE_BATCH
+        if (batch) {
+            short res[32];
+            CALL(fwlib_batch_end(h, res, 32));
+            for (i = 0; i < 20; i++)
+                CALL(res[i]);
+        }
+#endif
+
+        printf("%d.aut=%d\n%d.run=%d\n%d.motion=%d\n%d.emergency=%d\n%d.alarm=%d\n",
+               poll, st.aut, poll, st.run, poll, st.motion, poll, st.emergency, poll, st.alarm);
         printf("%d.prgnum=%d\n%d.prgmnum=%d\n%d.seqnum=%d\n%d.actf=%d\n%d.acts=%d\n",
                poll, (int)dyn.prgnum, poll, (int)dyn.prgmnum, poll, (int)dyn.seqnum, poll,
                (int)dyn.actf, poll, (int)dyn.acts);
@@ -125,23 +181,13 @@ int main(int argc, char **argv)
             snprintf(key, sizeof key, "mach%c", axes[i].name);
             print_scaled(key, poll, dyn.pos.faxis.machine[i], fig_in[i]);
         }
-
-        CALL(cnc_acts2(h, ALL_SPINDLES, &act));
         for (i = 0; i < nspdl; i++)
             printf("%d.speed%d=%d\n", poll, i + 1, (int)act.data[i]);
-
-        n = MAX_SPINDLE;
-        CALL(cnc_rdspmeter(h, 0, &n, spload));
-        for (i = 0; i < n; i++)
+        for (i = 0; i < n_sp; i++)
             printf("%d.spload%d=%d\n", poll, i + 1, (int)spload[i].spload.data);
-        n = MAX_AXIS;
-        CALL(cnc_rdsvmeter(h, &n, svload));
-        for (i = 0; i < n; i++)
+        for (i = 0; i < n_sv; i++)
             printf("%d.svload%c=%d\n", poll, svload[i].svload.name, (int)svload[i].svload.data);
-
-        CALL(cnc_exeprgname2(h, name));
         printf("%d.program=%s\n", poll, name);
-        CALL(cnc_rdexecprog(h, &len, &blknum, block));
         block[len < sizeof block ? len : sizeof block - 1] = '\0';
         for (i = 0; block[i]; i++)
             if (block[i] == '\n' || block[i] == '\r') {
@@ -149,46 +195,21 @@ int main(int argc, char **argv)
                 break;
             }
         printf("%d.block=%s\n", poll, block);
-
-        CALL(cnc_modal(h, 0, 0, &mdl)); /* group 01: G00/G01/G02/G03 */
         printf("%d.gcode01=%d\n", poll, mdl.modal.g_data & 0x7f);
-
-        n = 10;
-        CALL(cnc_rdalmmsg2(h, -1, &n, alm));
-        printf("%d.alarms=%d\n", poll, n);
-        for (i = 0; i < n; i++)
+        printf("%d.alarms=%d\n", poll, n_alm);
+        for (i = 0; i < n_alm; i++)
             printf("%d.alarm%d=%d %.*s\n", poll, i + 1, (int)alm[i].alm_no, (int)alm[i].msg_len,
                    alm[i].alm_msg);
-
-        memset(&msg, 0, sizeof msg);
-        CALL(cnc_rdopmsg(h, 0, 6 + 256, &msg));
         printf("%d.opmsg=%d %.*s\n", poll, msg.datano, msg.char_num > 0 ? msg.char_num : 0,
                msg.data);
-
-        CALL(cnc_toolnum(h, 0, 0, &tool));
-        CALL(cnc_rdntool(h, 0, &ntool));
         printf("%d.tool=%d\n%d.toolgroups=%d\n", poll, (int)tool.data, poll, (int)ntool.data);
-
-        /* Part count: parameter 6711, found through rdparainfo first. */
-        CALL(cnc_rdparainfo(h, 6711, 1, &pif));
-        CALL(cnc_rdparam(h, 6711, 0, 8, &prm));
         printf("%d.param6711.type=%d\n%d.parts=%d\n", poll, pif.info[0].prm_type, poll,
                (int)prm.u.ldata);
-
-        /* Servo motor temperature of axis 1, diagnosis 308 (a byte per axis). */
-        CALL(cnc_rddiaginfo(h, 308, 1, &dif));
-        CALL(cnc_diagnoss(h, 308, 1, 4 + 1, &dgn));
         printf("%d.diag308.type=%d\n%d.diag308=%d\n", poll, dif.info[0].diag_type, poll,
                (int)(unsigned char)dgn.u.cdata);
-
-        CALL(cnc_rdmacro(h, 500, 10, &mcr));
         print_scaled("macro500", poll, mcr.mcr_val, mcr.dec_val);
-
-        /* Feed override, G12 (inverted: 0x9b = !100 %), and spindle override, G30. */
-        CALL(pmc_rdpmcrng(h, 0 /* G */, 0 /* byte */, 12, 12, 8 + 1, &pmc));
-        printf("%d.feed_override=%d\n", poll, (unsigned char)~pmc.u.cdata[0]);
-        CALL(pmc_rdpmcrng(h, 0 /* G */, 0 /* byte */, 30, 30, 8 + 1, &pmc));
-        printf("%d.spindle_override=%d\n", poll, (unsigned char)pmc.u.cdata[0]);
+        printf("%d.feed_override=%d\n", poll, (unsigned char)~feed.u.cdata[0]);
+        printf("%d.spindle_override=%d\n", poll, (unsigned char)spindle.u.cdata[0]);
         fflush(stdout);
     }
 

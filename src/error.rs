@@ -44,6 +44,10 @@ pub enum Error {
     /// A check made before any traffic (handle, pointer, length, number ...).
     #[error("{msg} (EW {code})")]
     Local { code: c_short, msg: &'static str },
+    /// The call was queued in its handle's batch (src/client/batch.rs):
+    /// EW_OK now, its own result at fwlib_batch_end.
+    #[error("queued in a batch")]
+    Queued,
 }
 
 impl Error {
@@ -54,6 +58,7 @@ impl Error {
             Error::Protocol { .. } => EW_PROTOCOL,
             Error::Cnc { code, .. } => *code,
             Error::Local { code, .. } => *code,
+            Error::Queued => crate::ew::EW_OK,
         }
     }
 

@@ -386,3 +386,56 @@ fn transfer_example_downloads_runs_and_uploads_a_program() {
     assert_eq!(kv["ran"], "O4242 started=yes ended=yes blocks=5");
     assert_eq!(kv["upload"], format!("identical bytes={}", program.len()));
 }
+
+/// adapter.c --batch: each poll's 20 reads in one batch give exactly the
+/// values of the same reads made one by one (the simulator's clock stands
+/// still), in 2 request frames a poll instead of 20.
+#[test]
+fn adapter_example_batched_reads_the_same_values_in_two_frames_a_poll() {
+    let dir = toolchain::lib_dir("adapter-batch");
+    let exe = build_example("adapter", &dir);
+    let sim = Simulator::start(Profile::default(), "127.0.0.1:0").unwrap();
+    sim.set_elapsed(std::time::Duration::from_millis(3300));
+    let run = |batch: bool, polls: u32| {
+        let mut args = vec![];
+        if batch {
+            args.push("--batch".to_string());
+        }
+        args.extend([
+            "127.0.0.1".into(),
+            sim.port().to_string(),
+            polls.to_string(),
+            "0".into(),
+        ]);
+        let before = sim.data_frames();
+        let out = toolchain::target_command(&exe)
+            .args(&args)
+            .env("LD_LIBRARY_PATH", &dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "adapter {args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8_lossy(&out.stdout).to_string();
+        let polled: Vec<&str> = text
+            .lines()
+            .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+            .collect();
+        (polled.join("\n"), sim.data_frames() - before)
+    };
+    let (_, outside) = run(false, 0);
+    let (alone, frames_alone) = run(false, 3);
+    let (batched, frames_batched) = run(true, 3);
+    assert_eq!(batched, alone);
+    assert!(alone.contains("2.parts="), "{alone}");
+    // Round trips a poll, beyond the start-up and upload exchanges.
+    assert_eq!(
+        (frames_alone - outside) / 3,
+        19,
+        "one a call, cnc_rdntool's answered locally"
+    );
+    // 37 subpackets a poll (33 different), at most 16 a frame on a 30i.
+    assert_eq!((frames_batched - outside) / 3, 3);
+}

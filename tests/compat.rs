@@ -60,6 +60,9 @@ const EXTRA: &[(&str, &str)] = &[
     ("rdspdlnamem", "4"),
     ("rdalmmsg3", "-1 10"),
     ("fwlib_set_reconnect", "1"),
+    ("fwlib_batch_begin", ""),
+    ("fwlib_batch_end", "16"),
+    ("fwlib_batch_limits", "16 4126"),
 ];
 
 fn root() -> PathBuf {

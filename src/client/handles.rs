@@ -35,11 +35,24 @@ pub struct HandleState {
     /// The PMC unit the handle's PMC requests address (pmc_select_pmc_unit;
     /// FANUC's library starts at 1): the path word of PMC subpackets.
     pub pmc_unit: u16,
+    /// The calls queued since fwlib_batch_begin (src/client/batch.rs).
+    pub batch: Option<Box<super::batch::Batch>>,
+    /// fwlib_batch_limits given outside a batch: the next batches' limits.
+    pub batch_limits: Option<super::batch::Limits>,
 }
 
 pub struct Handle {
     pub pair: Arc<Pair>,
     pub state: Mutex<HandleState>,
+    /// `state.batch` is set: the one check the hot path makes.
+    pub batching: std::sync::atomic::AtomicBool,
+}
+
+impl Drop for Handle {
+    /// A handle freed in the middle of a batch: its queued calls go with it.
+    fn drop(&mut self) {
+        self.set_batching(false);
+    }
 }
 
 struct Table {
@@ -75,13 +88,25 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
                 pmc_detail: (0, 0),
                 reconnect: false,
                 pmc_unit: 1,
+                batch: None,
+                batch_limits: None,
             }),
+            batching: std::sync::atomic::AtomicBool::new(false),
         }),
     );
     Ok(h)
 }
 
 pub fn get(h: u16) -> Result<Arc<Handle>> {
+    let h = lookup(h)?;
+    if h.batching.load(std::sync::atomic::Ordering::Acquire) {
+        super::batch::admit(&h)?;
+    }
+    Ok(h)
+}
+
+/// Handle `h` whether it batches or not (the batch functions themselves).
+pub fn lookup(h: u16) -> Result<Arc<Handle>> {
     TABLE
         .read()
         .as_ref()

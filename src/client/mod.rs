@@ -1,6 +1,7 @@
 //! The client side: connection pairs, sessions and the handle table.
 //! Blocking std::net, no threads of its own.
 
+pub mod batch;
 pub mod conn;
 pub mod conn1;
 pub mod download;
@@ -55,6 +56,9 @@ impl Handle {
             let s = self.state.lock();
             (s.path, s.timeout, s.reconnect, s.pmc_unit)
         };
+        if self.batching.load(std::sync::atomic::Ordering::Acquire) {
+            return self.batched(c, &self.pair.info.ctx(path));
+        }
         let deadline = Deadline::after_secs(timeout);
         if reconnect && self.pair.is_dead() {
             self.pair.revive(deadline, timeout)?;

@@ -3,7 +3,7 @@
 // --- alarm ---
 
 use super::program::low16;
-use super::{ffi_boundary, nonnull, put, put_at};
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
@@ -18,7 +18,7 @@ use std::os::raw::{c_long, c_short, c_ushort};
 /// `alarm` must point to a writable ODBALM.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_alarm(FlibHndl: c_ushort, alarm: *mut ODBALM) -> c_short {
-    ffi_boundary!("cnc_alarm", {
+    ffi_read!("cnc_alarm", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(alarm)?;
         let a = h.call(&pa::alarm())?;
@@ -33,7 +33,7 @@ pub unsafe extern "C" fn cnc_alarm(FlibHndl: c_ushort, alarm: *mut ODBALM) -> c_
 /// `alarm` must point to 4 writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_alarm2(FlibHndl: c_ushort, alarm: *mut c_long) -> c_short {
-    ffi_boundary!("cnc_alarm2", {
+    ffi_read!("cnc_alarm2", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(alarm)?.cast::<u32>();
         let a = h.call(&pa::alarm())?;
@@ -97,7 +97,7 @@ pub unsafe extern "C" fn cnc_rdalmmsg(
     num: *mut c_short,
     almmsg: *mut ODBALMMSG,
 ) -> c_short {
-    ffi_boundary!("cnc_rdalmmsg", {
+    ffi_read!("cnc_rdalmmsg", {
         unsafe { read_almmsg::<32>(FlibHndl, r#type, num, almmsg.cast()) }
     })
 }
@@ -113,7 +113,7 @@ pub unsafe extern "C" fn cnc_rdalmmsg2(
     num: *mut c_short,
     almmsg: *mut ODBALMMSG2,
 ) -> c_short {
-    ffi_boundary!("cnc_rdalmmsg2", {
+    ffi_read!("cnc_rdalmmsg2", {
         unsafe { read_almmsg::<64>(FlibHndl, r#type, num, almmsg.cast()) }
     })
 }
@@ -138,7 +138,7 @@ pub unsafe extern "C" fn cnc_rdalminfo(
     length: c_short,
     almmsg: *mut ALMINFO,
 ) -> c_short {
-    ffi_boundary!("cnc_rdalminfo", {
+    ffi_read!("cnc_rdalminfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(almmsg)?.cast::<u8>();
         if length <= 4 {
@@ -199,7 +199,7 @@ pub unsafe extern "C" fn cnc_rdopmsg(
     length: c_short,
     opmsg: *mut OPMSG,
 ) -> c_short {
-    ffi_boundary!("cnc_rdopmsg", {
+    ffi_read!("cnc_rdopmsg", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(opmsg)?.cast::<u8>();
         if r#type != 0 {

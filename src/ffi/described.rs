@@ -3,7 +3,7 @@
 //! body one [`exec`] call) into `$OUT_DIR/described.rs`, included here; the
 //! header's declarations come from the same file (cbindgen reads it).
 
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;

@@ -1,6 +1,6 @@
 //! Process, handle and connection functions.
 
-use super::{cstr, ffi_boundary, nonnull, put};
+use super::{cstr, ffi_boundary, ffi_read, nonnull, put};
 use crate::client::{handles, log, pair};
 use crate::error::Error;
 use crate::ew::*;
@@ -167,7 +167,7 @@ pub unsafe extern "C" fn cnc_getpath(
     path_no: *mut c_short,
     maxpath_no: *mut c_short,
 ) -> c_short {
-    ffi_boundary!("cnc_getpath", {
+    ffi_read!("cnc_getpath", {
         let h = handles::get(FlibHndl)?;
         let (p, m) = (nonnull(path_no)?, nonnull(maxpath_no)?);
         let path = h.state.lock().path;
@@ -202,7 +202,7 @@ pub extern "C" fn cnc_setpath(FlibHndl: c_ushort, path_no: c_short) -> c_short {
 /// `err` must point to a writable ODBERR.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_getdtailerr(FlibHndl: c_ushort, err: *mut ODBERR) -> c_short {
-    ffi_boundary!("cnc_getdtailerr", {
+    ffi_read!("cnc_getdtailerr", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(err)?;
         let (err_no, err_dtno) = h.state.lock().detail;

@@ -1,6 +1,6 @@
 //! Custom macro variables.
 
-use super::{ffi_boundary, len_of, nonnull, put};
+use super::{ffi_boundary, ffi_read, len_of, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_LENGTH, EW_NUMBER};
@@ -43,7 +43,7 @@ pub unsafe extern "C" fn cnc_rdmacro(
     length: c_short,
     macro_: *mut ODBM,
 ) -> c_short {
-    ffi_boundary!("cnc_rdmacro", {
+    ffi_read!("cnc_rdmacro", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(macro_)?;
         if length < ODBM_LEN {
@@ -153,7 +153,7 @@ pub unsafe extern "C" fn cnc_rdmacror(
     length: c_short,
     buf: *mut IODBMR,
 ) -> c_short {
-    ffi_boundary!("cnc_rdmacror", {
+    ffi_read!("cnc_rdmacror", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(buf)?;
         if e_no < s_no {

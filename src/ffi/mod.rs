@@ -27,14 +27,53 @@ use std::os::raw::{c_char, c_short};
 /// Runs an exported function's body: `Result<()>` becomes an `EW_*` code,
 /// a panic becomes `EW_UNEXP`. The signature stays outside, for cbindgen.
 macro_rules! ffi_boundary {
-    ($name:literal, $body:block) => {{
-        let r = ::std::panic::catch_unwind(::std::panic::AssertUnwindSafe(
-            || -> $crate::error::Result<()> { $body },
-        ));
-        $crate::ffi::finish($name, r)
-    }};
+    ($name:literal, $body:block) => {{ $crate::ffi::boundary($name, &mut || -> $crate::error::Result<()> { $body }) }};
 }
 pub(crate) use ffi_boundary;
+
+/// [`ffi_boundary`] for a read that may join a batch (fwlib_batch_begin):
+/// while its handle batches, the call is queued and its body (a `move`
+/// closure: its arguments by value) kept to run again at fwlib_batch_end
+/// (src/client/batch.rs). Every other export answers EW_REJECT then.
+macro_rules! ffi_read {
+    ($name:literal, $body:block) => {{
+        let mut body = move || -> $crate::error::Result<()> { $body };
+        if $crate::client::batch::active() {
+            $crate::ffi::read_boundary($name, Box::new(body))
+        } else {
+            $crate::ffi::boundary($name, &mut body)
+        }
+    }};
+}
+pub(crate) use ffi_read;
+
+/// Runs an export's body: a panic is caught (never crosses the C
+/// boundary), the result becomes its `EW_*` code. One function for every
+/// export (a trait object, not a copy each).
+pub(crate) fn boundary(name: &str, body: &mut dyn FnMut() -> Result<()>) -> c_short {
+    finish(
+        name,
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)),
+    )
+}
+
+/// [`boundary`] while some handle batches: a call queued in its handle's
+/// batch keeps its body and answers EW_OK.
+pub(crate) fn read_boundary(
+    name: &'static str,
+    mut body: Box<dyn FnMut() -> Result<()>>,
+) -> c_short {
+    let r = crate::client::batch::batchable(|| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(&mut body))
+    });
+    match r {
+        Ok(Err(Error::Queued)) => crate::client::batch::defer(name, body),
+        r => {
+            crate::client::batch::forget();
+            finish(name, r)
+        }
+    }
+}
 
 pub(crate) fn finish(name: &str, r: std::thread::Result<Result<()>>) -> c_short {
     match r {
@@ -107,7 +146,7 @@ mod tests {
     use super::*;
     use crate::ew::{EW_HANDLE, EW_OK, EW_UNEXP};
 
-    fn run(f: impl Fn() -> Result<()>) -> c_short {
+    fn run(f: impl Fn() -> Result<()> + 'static) -> c_short {
         ffi_boundary!("test", { f() })
     }
 

@@ -5,7 +5,7 @@
 //! library against a fake CNC). Outputs are written field by field at their
 //! l32 offsets, and only on success (cnc_rdzofsr: see there).
 
-use super::{ffi_boundary, len_of, nonnull, put_at};
+use super::{ffi_boundary, ffi_read, len_of, nonnull, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
@@ -62,7 +62,7 @@ pub unsafe extern "C" fn cnc_rdtofs(
     length: c_short,
     tofs: *mut ODBTOFS,
 ) -> c_short {
-    ffi_boundary!("cnc_rdtofs", {
+    ffi_read!("cnc_rdtofs", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(tofs)?.cast::<u8>();
         // Compared unsigned, as FANUC's library does (-1 is 65535).
@@ -166,7 +166,7 @@ pub unsafe extern "C" fn cnc_rdzofs(
     length: c_short,
     zofs: *mut IODBZOFS,
 ) -> c_short {
-    ffi_boundary!("cnc_rdzofs", {
+    ffi_read!("cnc_rdzofs", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(zofs)?.cast::<u8>();
         // Compared unsigned, as FANUC's library does (-1 is 65535).

@@ -1,6 +1,6 @@
 //! Parameters and diagnostics.
 
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};
@@ -72,7 +72,7 @@ pub unsafe extern "C" fn cnc_rdparam(
     length: c_short,
     param: *mut IODBPSD,
 ) -> c_short {
-    ffi_boundary!("cnc_rdparam", {
+    ffi_read!("cnc_rdparam", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(param)?;
         unsafe { read_one(&h, Table::Param, number, axis, length, out.cast()) }
@@ -92,7 +92,7 @@ pub unsafe extern "C" fn cnc_diagnoss(
     length: c_short,
     diag: *mut ODBDGN,
 ) -> c_short {
-    ffi_boundary!("cnc_diagnoss", {
+    ffi_read!("cnc_diagnoss", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(diag)?;
         unsafe { read_one(&h, Table::Diag, number, axis, length, out.cast()) }
@@ -237,7 +237,7 @@ pub unsafe extern "C" fn cnc_rdparainfo(
     read_no: c_ushort,
     paraif: *mut ODBPARAIF,
 ) -> c_short {
-    ffi_boundary!("cnc_rdparainfo", {
+    ffi_read!("cnc_rdparainfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(paraif)?;
         unsafe { read_info(&h, Table::Param, s_number, read_no, out.cast()) }
@@ -256,7 +256,7 @@ pub unsafe extern "C" fn cnc_rddiaginfo(
     read_no: c_ushort,
     diagif: *mut ODBDIAGIF,
 ) -> c_short {
-    ffi_boundary!("cnc_rddiaginfo", {
+    ffi_read!("cnc_rddiaginfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(diagif)?;
         unsafe { read_info(&h, Table::Diag, s_number, read_no, out.cast()) }

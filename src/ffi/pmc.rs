@@ -1,6 +1,6 @@
 //! PMC areas.
 
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
@@ -44,7 +44,7 @@ pub unsafe extern "C" fn pmc_rdpmcrng(
     length: c_ushort,
     buf: *mut IODBPMC,
 ) -> c_short {
-    ffi_boundary!("pmc_rdpmcrng", {
+    ffi_read!("pmc_rdpmcrng", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(buf)?;
         // FANUC's library checks before any traffic: the data type, the
@@ -127,7 +127,7 @@ pub unsafe extern "C" fn pmc_wrpmcrng(
 /// `err` must point to a writable ODBPMCERR.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn pmc_getdtailerr(FlibHndl: c_ushort, err: *mut ODBPMCERR) -> c_short {
-    ffi_boundary!("pmc_getdtailerr", {
+    ffi_read!("pmc_getdtailerr", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(err)?;
         let (err_no, err_dtno) = h.state.lock().pmc_detail;
@@ -153,7 +153,7 @@ pub unsafe extern "C" fn pmc_rdpmcinfo(
     adr_type: c_short,
     buf: *mut ODBPMCINF,
 ) -> c_short {
-    ffi_boundary!("pmc_rdpmcinfo", {
+    ffi_read!("pmc_rdpmcinfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(buf)?;
         let info = h.call_pmc(&rdpmcinfo(adr_type))?;

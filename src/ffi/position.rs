@@ -4,7 +4,7 @@
 //! FANUC's library writes (so a caller's buffer of `length` bytes is never
 //! overrun), and only on success.
 
-use super::{ffi_boundary, nonnull, put, put_at};
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NOOPT, EW_NUMBER};
@@ -55,7 +55,7 @@ pub unsafe extern "C" fn cnc_rdaxisname(
     data_num: *mut c_short,
     axisname: *mut ODBAXISNAME,
 ) -> c_short {
-    ffi_boundary!("cnc_rdaxisname", {
+    ffi_read!("cnc_rdaxisname", {
         let h = handles::get(FlibHndl)?;
         let room = read_count(data_num)?;
         let out = nonnull(axisname)?;
@@ -88,7 +88,7 @@ pub unsafe extern "C" fn cnc_rdspdlname(
     data_num: *mut c_short,
     spdlname: *mut ODBSPDLNAME,
 ) -> c_short {
-    ffi_boundary!("cnc_rdspdlname", {
+    ffi_read!("cnc_rdspdlname", {
         let h = handles::get(FlibHndl)?;
         let room = read_count(data_num)?;
         let out = nonnull(spdlname)?;
@@ -265,7 +265,7 @@ pub unsafe extern "C" fn cnc_rddynamic2(
     length: c_short,
     buf: *mut ODBDY2,
 ) -> c_short {
-    ffi_boundary!("cnc_rddynamic2", {
+    ffi_read!("cnc_rddynamic2", {
         dynamic(&DY2, FlibHndl, axis, length, buf.cast())
     })
 }
@@ -282,7 +282,7 @@ pub unsafe extern "C" fn cnc_rddynamic(
     length: c_short,
     buf: *mut ODBDY,
 ) -> c_short {
-    ffi_boundary!("cnc_rddynamic", {
+    ffi_read!("cnc_rddynamic", {
         dynamic(&DY, FlibHndl, axis, length, buf.cast())
     })
 }
@@ -302,7 +302,7 @@ pub unsafe extern "C" fn cnc_acts2(
     sp_no: c_short,
     actualspindle: *mut ODBACT2,
 ) -> c_short {
-    ffi_boundary!("cnc_acts2", {
+    ffi_read!("cnc_acts2", {
         let h = handles::get(FlibHndl)?;
         let base = nonnull(actualspindle)?.cast::<u8>();
         if sp_no > MAX_SPINDLE as c_short {
@@ -347,7 +347,7 @@ pub unsafe extern "C" fn cnc_rdspeed(
     r#type: c_short,
     speed: *mut ODBSPEED,
 ) -> c_short {
-    ffi_boundary!("cnc_rdspeed", {
+    ffi_read!("cnc_rdspeed", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(speed)?;
         let (feed, spindle) = match r#type {
@@ -406,7 +406,7 @@ pub unsafe extern "C" fn cnc_rdsvmeter(
     data_num: *mut c_short,
     loadmeter: *mut ODBSVLOAD,
 ) -> c_short {
-    ffi_boundary!("cnc_rdsvmeter", {
+    ffi_read!("cnc_rdsvmeter", {
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(loadmeter)?;
@@ -438,7 +438,7 @@ pub unsafe extern "C" fn cnc_rdspmeter(
     data_num: *mut c_short,
     loadmeter: *mut ODBSPLOAD,
 ) -> c_short {
-    ffi_boundary!("cnc_rdspmeter", {
+    ffi_read!("cnc_rdspmeter", {
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(loadmeter)?;
@@ -520,7 +520,7 @@ pub unsafe extern "C" fn cnc_rdspload(
     sp_no: c_short,
     serialspindle: *mut ODBSPN,
 ) -> c_short {
-    ffi_boundary!("cnc_rdspload", {
+    ffi_read!("cnc_rdspload", {
         serial_spindle(spdl::LOAD_SERIAL, FlibHndl, sp_no, serialspindle)
     })
 }
@@ -593,7 +593,7 @@ pub unsafe extern "C" fn cnc_rdaxisdata(
     len: *mut c_short,
     axdata: *mut ODBAXDT,
 ) -> c_short {
-    ffi_boundary!("cnc_rdaxisdata", {
+    ffi_read!("cnc_rdaxisdata", {
         let h = handles::get(FlibHndl)?;
         if h.ctx().class.is_16i() {
             // FANUC's library: EW_FUNC without traffic for any arguments.
@@ -717,7 +717,7 @@ pub unsafe extern "C" fn cnc_rdposition(
     data_num: *mut c_short,
     position: *mut ODBPOS,
 ) -> c_short {
-    ffi_boundary!("cnc_rdposition", {
+    ffi_read!("cnc_rdposition", {
         let h = handles::get(FlibHndl)?;
         let limit = read_count(data_num)?;
         let out = nonnull(position)?;
@@ -848,7 +848,7 @@ pub unsafe extern "C" fn cnc_absolute(
     length: c_short,
     buf: *mut ODBAXIS,
 ) -> c_short {
-    ffi_boundary!("cnc_absolute", {
+    ffi_read!("cnc_absolute", {
         axis_values(pos::ABSOLUTE, FlibHndl, axis, length, buf)
     })
 }
@@ -864,7 +864,7 @@ pub unsafe extern "C" fn cnc_absolute2(
     length: c_short,
     buf: *mut ODBAXIS,
 ) -> c_short {
-    ffi_boundary!("cnc_absolute2", {
+    ffi_read!("cnc_absolute2", {
         axis_values(pos::ABSOLUTE2, FlibHndl, axis, length, buf)
     })
 }
@@ -880,7 +880,7 @@ pub unsafe extern "C" fn cnc_machine(
     length: c_short,
     buf: *mut ODBAXIS,
 ) -> c_short {
-    ffi_boundary!("cnc_machine", {
+    ffi_read!("cnc_machine", {
         axis_values(pos::MACHINE, FlibHndl, axis, length, buf)
     })
 }
@@ -896,7 +896,7 @@ pub unsafe extern "C" fn cnc_relative(
     length: c_short,
     buf: *mut ODBAXIS,
 ) -> c_short {
-    ffi_boundary!("cnc_relative", {
+    ffi_read!("cnc_relative", {
         axis_values(pos::RELATIVE, FlibHndl, axis, length, buf)
     })
 }
@@ -912,7 +912,7 @@ pub unsafe extern "C" fn cnc_relative2(
     length: c_short,
     buf: *mut ODBAXIS,
 ) -> c_short {
-    ffi_boundary!("cnc_relative2", {
+    ffi_read!("cnc_relative2", {
         axis_values(pos::RELATIVE2, FlibHndl, axis, length, buf)
     })
 }
@@ -928,7 +928,7 @@ pub unsafe extern "C" fn cnc_distance(
     length: c_short,
     buf: *mut ODBAXIS,
 ) -> c_short {
-    ffi_boundary!("cnc_distance", {
+    ffi_read!("cnc_distance", {
         axis_values(pos::DISTANCE, FlibHndl, axis, length, buf)
     })
 }
@@ -947,7 +947,7 @@ pub unsafe extern "C" fn cnc_getfigure(
     dec_fig_in: *mut c_short,
     dec_fig_out: *mut c_short,
 ) -> c_short {
-    ffi_boundary!("cnc_getfigure", {
+    ffi_read!("cnc_getfigure", {
         let h = handles::get(FlibHndl)?;
         let (v, fin, fout) = (
             nonnull(valid_fig)?,

@@ -2,7 +2,7 @@
 
 // --- program ---
 
-use super::{ffi_boundary, nonnull, put};
+use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
@@ -21,7 +21,7 @@ pub(crate) fn low16(v: i32) -> c_short {
 /// `exeprg` must point to a writable ODBEXEPRG.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_exeprgname(FlibHndl: c_ushort, exeprg: *mut ODBEXEPRG) -> c_short {
-    ffi_boundary!("cnc_exeprgname", {
+    ffi_read!("cnc_exeprgname", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(exeprg)?;
         let e = h.call(&pp::exeprgname())?;
@@ -44,7 +44,7 @@ const PATH_NAME_LEN: usize = 256;
 /// `path_name` must point to 256 writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
-    ffi_boundary!("cnc_exeprgname2", {
+    ffi_read!("cnc_exeprgname2", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(path_name)?.cast::<u8>();
         let n = h.call(&pp::exeprgname2())?;
@@ -76,7 +76,7 @@ pub unsafe extern "C" fn cnc_rdexecprog(
     blknum: *mut c_short,
     data: *mut c_char,
 ) -> c_short {
-    ffi_boundary!("cnc_rdexecprog", {
+    ffi_read!("cnc_rdexecprog", {
         let h = handles::get(FlibHndl)?;
         let (len, blk, out) = (nonnull(length)?, nonnull(blknum)?, nonnull(data)?);
         let room = unsafe { len.read_unaligned() };
@@ -111,7 +111,7 @@ pub unsafe extern "C" fn cnc_modal(
     block: c_short,
     modal: *mut ODBMDL,
 ) -> c_short {
-    ffi_boundary!("cnc_modal", {
+    ffi_read!("cnc_modal", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(modal)?;
         // The header is written first, whatever follows (an unknown type,
@@ -179,7 +179,7 @@ fn timer_type(t: c_short) -> crate::error::Result<c_short> {
 /// `time` must point to a readable and writable IODBTIMER.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_gettimer(FlibHndl: c_ushort, time: *mut IODBTIMER) -> c_short {
-    ffi_boundary!("cnc_gettimer", {
+    ffi_read!("cnc_gettimer", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(time)?;
         let t = timer_type(unsafe { (&raw const (*out).r#type).read_unaligned() })?;
@@ -239,7 +239,7 @@ pub unsafe extern "C" fn cnc_settimer(FlibHndl: c_ushort, time: *mut IODBTIMER) 
 /// `mode` must point to a writable short.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) -> c_short {
-    ffi_boundary!("cnc_rdopmode", {
+    ffi_read!("cnc_rdopmode", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(mode)?;
         let m = h.call(&pp::rdopmode())?;

@@ -1,6 +1,6 @@
 //! System and status information.
 
-use super::{ffi_boundary, nonnull, put, put_at};
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::EW_PATH;
@@ -16,7 +16,7 @@ use std::os::raw::{c_short, c_ulong, c_ushort};
 /// `sysinfo` must point to a writable ODBSYS.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_sysinfo(FlibHndl: c_ushort, sysinfo: *mut ODBSYS) -> c_short {
-    ffi_boundary!("cnc_sysinfo", {
+    ffi_read!("cnc_sysinfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(sysinfo)?;
         let s = h
@@ -96,7 +96,7 @@ unsafe fn read_status<T: StatusWords, const N: usize>(h: &Handle, out: *mut u8) 
 /// `statinfo` must point to a writable ODBST.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_statinfo(FlibHndl: c_ushort, statinfo: *mut ODBST) -> c_short {
-    ffi_boundary!("cnc_statinfo", {
+    ffi_read!("cnc_statinfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(statinfo)?.cast::<u8>();
         unsafe { read_status::<Status, 7>(&h, out) }
@@ -110,7 +110,7 @@ pub unsafe extern "C" fn cnc_statinfo(FlibHndl: c_ushort, statinfo: *mut ODBST) 
 /// `statinfo` must point to a writable ODBST2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_statinfo2(FlibHndl: c_ushort, statinfo: *mut ODBST2) -> c_short {
-    ffi_boundary!("cnc_statinfo2", {
+    ffi_read!("cnc_statinfo2", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(statinfo)?.cast::<u8>();
         unsafe { read_status::<Status2, 11>(&h, out) }
@@ -129,7 +129,7 @@ pub unsafe extern "C" fn cnc_statinfo2(FlibHndl: c_ushort, statinfo: *mut ODBST2
 /// `cncid` must point to 16 writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdcncid(FlibHndl: c_ushort, cncid: *mut c_ulong) -> c_short {
-    ffi_boundary!("cnc_rdcncid", {
+    ffi_read!("cnc_rdcncid", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(cncid)?.cast::<u32>();
         let id = h.call(&rdcncid())?;

@@ -219,6 +219,8 @@ impl Error {
                 detail: d((detail1 as i16, detail2 as i16)),
             },
             Internal::Local { code, msg } => Error::invalid(call, Ew(code), msg),
+            // The native API never batches C calls.
+            Internal::Queued => Error::invalid(call, Ew(0), "queued in a batch"),
         }
     }
 }

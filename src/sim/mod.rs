@@ -114,6 +114,12 @@ impl Simulator {
     pub fn sessions(&self) -> usize {
         self.shared.sessions()
     }
+
+    /// Data request frames answered so far: the round trips clients made
+    /// on connection 2 (tests and benches count them).
+    pub fn data_frames(&self) -> u64 {
+        self.shared.data_frames()
+    }
 }
 
 impl Drop for Simulator {

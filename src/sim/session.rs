@@ -185,6 +185,7 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
                     return;
                 };
                 shared.trace(id, || namer.request(&frame, &subs));
+                shared.data_frames.fetch_add(1, Ordering::Relaxed);
                 let resp: Vec<RespSub> = {
                     let mut cnc = shared.cnc.lock();
                     cnc.advance(now);

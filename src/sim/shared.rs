@@ -53,6 +53,8 @@ pub struct Shared {
     /// socket anew with the runtime after each (a socket shut down has
     /// reported a hang-up, and the runtime keeps that for good).
     pub(crate) relistens: AtomicU64,
+    /// Data request frames (0x2101) answered: round trips.
+    pub(crate) data_frames: AtomicU64,
 }
 
 impl Shared {
@@ -70,6 +72,7 @@ impl Shared {
             next_conn: AtomicU64::new(1),
             listener: Mutex::new(None),
             relistens: AtomicU64::new(0),
+            data_frames: AtomicU64::new(0),
         })
     }
 
@@ -118,6 +121,10 @@ impl Shared {
     /// FOCAS sessions open now (connection-1 opens not yet closed).
     pub fn sessions(&self) -> usize {
         self.sessions.load(Ordering::Relaxed)
+    }
+    /// Data request frames answered so far (round trips on connection 2).
+    pub fn data_frames(&self) -> u64 {
+        self.data_frames.load(Ordering::Relaxed)
     }
     pub(crate) fn epoch(&self) -> u64 {
         self.epoch.load(Ordering::Acquire)

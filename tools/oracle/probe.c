@@ -35,7 +35,7 @@
  * tools/oracle/probe.rs from the same descriptions as the exports. */
 #include "words.gen.h"
 
-#define BUF 4096
+#define BUF 65536
 #define FILL 0xCC
 #define MAXARG 64
 
@@ -180,14 +180,48 @@ static short in_thread(void *(*f)(void *)) {
     return r;
 }
 
-/* In-out counts: start at argument i, come back as field `name`. */
+/* In-out counts: start at argument i, come back as field `name`. They are
+ * static, and the last one is remembered (io_*): a call queued in a batch
+ * (fwlib_batch_begin) writes it at batch_end, which prints it again. */
+static struct { const char *name; void *p; int kind; } io[4]; /* kind: 1 short, 2 ushort, 4 int32 */
+static int io_n;
+static int batching; /* between batch_begin and batch_end: io[] collects */
+static void io_note(const char *name, void *p, int kind) {
+    if (io_n < 4) io[io_n].name = name, io[io_n].p = p, io[io_n++].kind = kind;
+}
+static long long io_value(int k) {
+    return io[k].kind == 1 ? *(short *)io[k].p : io[k].kind == 2 ? *(unsigned short *)io[k].p : *(int32_t *)io[k].p;
+}
 #define SHORT_IO(name, i, call)                                                \
-    do { short name = (short)N(i); short r_ = call; field(#name, name); return r_; } while (0)
+    do { static short name; name = (short)N(i); io_note(#name, &name, 1); short r_ = call; field(#name, name); return r_; } while (0)
 #define USHORT_IO(name, i, call)                                               \
-    do { unsigned short name = (unsigned short)N(i); short r_ = call; field(#name, name); return r_; } while (0)
+    do { static unsigned short name; name = (unsigned short)N(i); io_note(#name, &name, 2); short r_ = call; field(#name, name); return r_; } while (0)
 /* A `long *` count: 4 bytes moved, as FANUC's x86-64 library does. */
 #define LONG_IO(name, i, call)                                                 \
-    do { int32_t name[2] = {(int32_t)N(i), (int32_t)0xCCCCCCCC}; short r_ = call; field(#name, name[0]); return r_; } while (0)
+    do { static int32_t name[2]; name[0] = (int32_t)N(i); name[1] = (int32_t)0xCCCCCCCC; io_note(#name, name, 4); \
+         short r_ = call; field(#name, name[0]); return r_; } while (0)
+
+/* fwlib_batch_begin, and fwlib_batch_end printing each queued call's code
+ * as field r<k> and the last in-out count queued (b0, b1: what the queued
+ * calls wrote at the end). */
+static short w_batch_begin(void) {
+    io_n = 0;
+    short r = F(fwlib_batch_begin)(H);
+    batching = r == 0;
+    return r;
+}
+static short w_batch_end(void) {
+    static const char *names[] = {"r0", "r1", "r2", "r3", "r4", "r5", "r6", "r7",
+                                  "r8", "r9", "r10", "r11", "r12", "r13", "r14", "r15"};
+    short res[16];
+    for (int k = 0; k < 16; k++) res[k] = 0x7fff;
+    short r = F(fwlib_batch_end)(H, res, argc_ > 1 ? (int)N(1) : 16);
+    for (int k = 0; k < 16 && res[k] != 0x7fff; k++) field(names[k], res[k]);
+    for (int k = 0; k < io_n; k++) field(io[k].name, io_value(k));
+    io_n = 0;
+    batching = 0;
+    return r;
+}
 
 /* Program text argument i: '|' stands for a line feed; "gen:N" is N
  * bytes of generated blocks. Its length goes to *n. */
@@ -225,6 +259,9 @@ static char *text(int i, long *n) {
 #define WORDS                                                                                     \
     GENERATED_WORDS /* the functions described as data: words.gen.h */                            \
     WORD(slot, return w_slot())                                                                   \
+    WORD(fwlib_batch_begin, return w_batch_begin())                                               \
+    WORD(fwlib_batch_end, return w_batch_end())                                               \
+    WORD(fwlib_batch_limits, return F(fwlib_batch_limits)(H, N(1), N(2)))                         \
     WORD(seth, return w_seth())                                                                   \
     WORD(startup, return w_startup())                                                             \
     WORD(exitprocess, return F(cnc_exitprocess)())                                                \
@@ -256,7 +293,7 @@ static char *text(int i, long *n) {
     WORD(rdspgear, return F(cnc_rdspgear)(H, N(1), B0))                                           \
     WORD(rdspmeter, SHORT_IO(num, 2, F(cnc_rdspmeter)(H, N(1), &num, B0)))                        \
     WORD(rdsvmeter, SHORT_IO(num, 1, F(cnc_rdsvmeter)(H, &num, B0)))                              \
-    WORD(rdaxisdata, { short t[MAXARG]; int n = (int)N(2);                                        \
+    WORD(rdaxisdata, { static short t[MAXARG]; int n = (int)N(2);                                 \
                        for (int k = 0; k < n && k < MAXARG; k++) t[k] = (short)N(3 + k);          \
                        SHORT_IO(len, 3 + n, F(cnc_rdaxisdata)(H, N(1), t, n, &len, B0)); })       \
     WORD(rdposition, SHORT_IO(num, 2, F(cnc_rdposition)(H, N(1), &num, B0)))                      \
@@ -266,12 +303,14 @@ static char *text(int i, long *n) {
     WORD(relative, return F(cnc_relative)(H, N(1), N(2), B0))                                     \
     WORD(relative2, return F(cnc_relative2)(H, N(1), N(2), B0))                                   \
     WORD(distance, return F(cnc_distance)(H, N(1), N(2), B0))                                     \
-    WORD(getfigure, { short v = (short)0xCCCC; short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);   \
+    WORD(getfigure, { static short v; v = (short)0xCCCC; io_note("valid_fig", &v, 1);            \
+                      short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);                            \
                       field("valid_fig", v); return r; })                                         \
     /* program */                                                                                 \
     WORD(exeprgname, return F(cnc_exeprgname)(H, B0))                                             \
     WORD(exeprgname2, return F(cnc_exeprgname2)(H, B0))                                          \
-    WORD(rdexecprog, { unsigned short l = (unsigned short)N(1); short blk = (short)0xCCCC;        \
+    WORD(rdexecprog, { static unsigned short l; static short blk; l = (unsigned short)N(1);       \
+                       blk = (short)0xCCCC; io_note("length", &l, 2); io_note("blknum", &blk, 1); \
                        short r = F(cnc_rdexecprog)(H, &l, &blk, B0);                              \
                        field("length", l); field("blknum", blk); return r; })                     \
     WORD(modal, return F(cnc_modal)(H, N(1), N(2), B0))                                           \
@@ -437,8 +476,13 @@ int main(int argc, char **argv) {
         for (char *t = strtok(line, " \t\r\n"); t && argc_ < MAXARG; t = strtok(NULL, " \t\r\n"))
             argv_[argc_++] = t;
         if (argc_ == 0) continue;
-        memset(b0, FILL, BUF);
-        memset(b1, FILL, BUF);
+        /* fwlib_batch_end: the queued calls write into the buffers as they are
+         * (some read an input there, as cnc_gettimer its type). */
+        if (!batching) io_n = 0;
+        if (strcmp(argv_[0], "fwlib_batch_end") != 0) {
+            memset(b0, FILL, BUF);
+            memset(b1, FILL, BUF);
+        }
         fields[0] = 0;
         int found = 0;
         for (size_t k = 0; k < sizeof table / sizeof table[0]; k++) {
