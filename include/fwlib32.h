@@ -1832,9 +1832,9 @@ short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
 short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
 
 /*
- Reads the MDI program's text: at most `*length` bytes into `data`,
- `*length` set to the bytes written. A negative `*length`: EW_LENGTH
- after the exchange, as FANUC's library.
+ Reads the MDI program's text into `data` (no NUL), `*length` set to its
+ length. A text longer than `*length`: EW_LENGTH after the exchange,
+ nothing written, as FANUC's library.
 
  # Safety
  `length` readable and writable; `data` must have `*length` writable bytes.

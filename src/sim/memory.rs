@@ -4,8 +4,7 @@
 //! EW_BUSY, EW_OVRFLOW) and change nothing.
 
 use super::Machine;
-use super::service::{CncError, Reply};
-use crate::ew;
+use super::service::Reply;
 use crate::proto::packet::{CLASS_CNC, ReqSub};
 use crate::proto::program::{ProgInfo, RDMDIPROG, RDPROGINFO, WRMDIPROG};
 use crate::proto::wire::Wire;
@@ -41,7 +40,7 @@ impl Machine {
 
     /// The program commands answered as bytes: memory information
     /// (cnc_rdproginfo), the MDI program's text (cnc_rdmdiprog), a new one
-    /// (cnc_wrmdiprog; EW_BUSY while the path executes a program).
+    /// (cnc_wrmdiprog, in any mode: the MDI program is not in the store).
     pub(crate) fn memory_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
         if sub.class != CLASS_CNC || ![RDMDIPROG, WRMDIPROG, RDPROGINFO].contains(&sub.cmd) {
             return None;
@@ -61,9 +60,6 @@ impl Machine {
                     return Ok(i.to_bytes());
                 }
                 _ => {}
-            }
-            if s.running != 0 {
-                return Err(CncError::new(ew::EW_BUSY));
             }
             s.mdi = sub.payload.clone();
             Ok(Vec::new())
