@@ -45,24 +45,23 @@ impl Machine {
         if sub.class != CLASS_CNC || ![RDMDIPROG, WRMDIPROG, RDPROGINFO].contains(&sub.cmd) {
             return None;
         }
-        Some(self.store.path_mut(sub.path).and_then(|s| {
+        Some(self.store.path_mut(sub.path).map(|s| {
             let (n, used) = (s.count(), s.used());
             let left = |max: usize, used: usize| max.saturating_sub(used) as i32;
             match sub.cmd {
-                RDMDIPROG => return Ok(s.mdi.clone()),
-                RDPROGINFO => {
-                    let i = ProgInfo {
-                        reg_prg: n as i32,
-                        unreg_prg: left(s.max_programs, n),
-                        used_mem: used as i32,
-                        unused_mem: left(s.capacity, used),
-                    };
-                    return Ok(i.to_bytes());
+                RDMDIPROG => s.mdi.clone(),
+                RDPROGINFO => ProgInfo {
+                    reg_prg: n as i32,
+                    unreg_prg: left(s.max_programs, n),
+                    used_mem: used as i32,
+                    unused_mem: left(s.capacity, used),
                 }
-                _ => {}
+                .to_bytes(),
+                _ => {
+                    s.mdi = sub.payload.clone();
+                    Vec::new()
+                }
             }
-            s.mdi = sub.payload.clone();
-            Ok(Vec::new())
         }))
     }
 }
