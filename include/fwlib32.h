@@ -712,6 +712,33 @@ typedef struct ODBPARANUM {
 } ODBPARANUM;
 
 /*
+ cnc_rdpdf_drive: the program drives ("CNC_MEM" ...).
+ */
+typedef struct ODBPDFDRV {
+    short max_num;
+    short dummy;
+    char drive[16][12];
+} ODBPDFDRV;
+
+/*
+ cnc_rdpdf_inf: a drive's capacity and directories.
+ */
+typedef struct ODBPDFINF {
+    LONG used_page;
+    LONG all_page;
+    LONG used_dir;
+    LONG all_dir;
+} ODBPDFINF;
+
+/*
+ cnc_rdpdf_subdirn: directories and files a directory holds.
+ */
+typedef struct ODBPDFNFIL {
+    short dir_num;
+    short file_num;
+} ODBPDFNFIL;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -1493,6 +1520,62 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
 short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
 
 /*
+ Creates a program or (a name ending in '/') a folder.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_add(unsigned short FlibHndl, char *path);
+
+/*
+ Copies a program (`to`: a program or a folder).
+
+ # Safety
+ Both names must be readable up to their NUL or field size.
+ */
+short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Deletes a program or an empty folder.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_del(unsigned short FlibHndl, char *path);
+
+/*
+ Moves a program (`to`: a program or a folder).
+
+ # Safety
+ Both names must be readable up to their NUL or field size.
+ */
+short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Reads the main program's path name.
+
+ # Safety
+ `path_name` must have 256 writable bytes.
+ */
+short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
+
+/*
+ Renames a program or folder (`to`: the new name, 36 bytes sent).
+
+ # Safety
+ Both names must be readable up to their NUL or field size.
+ */
+short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Selects a program as the main program.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
+
+/*
  Reads the execution pointer: program number and block number (4 bytes
  written into each `long`).
 
@@ -1983,6 +2066,39 @@ short cnc_rdparar(unsigned short FlibHndl,
                   short *e_number,
                   short *length,
                   void *param);
+
+/*
+ Reads the current directory of `type` (1 foreground, 2 background).
+
+ # Safety
+ `dir_name` must have 256 writable bytes.
+ */
+short cnc_rdpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
+
+/*
+ Reads the program drives ("CNC_MEM" ...): their number and names (the
+ answer is the names, 12 bytes each).
+
+ # Safety
+ `drive` must point to a writable ODBPDFDRV.
+ */
+short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
+
+/*
+ Reads a drive's used and total capacity and directories.
+
+ # Safety
+ `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
+ */
+short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct ODBPDFINF *inf);
+
+/*
+ Reads how many directories and files a directory holds.
+
+ # Safety
+ `path` readable; `num_fil` a writable ODBPDFNFIL.
+ */
+short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *num_fil);
 
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,
@@ -2628,6 +2744,14 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
  `param` must point to `length` readable bytes.
  */
 short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
+
+/*
+ Sets the current directory of `type`.
+
+ # Safety
+ `dir_name` readable.
+ */
+short cnc_wrpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

@@ -328,6 +328,9 @@ rust_layouts! {
     PRGDIR2 { number, length, comment, dummy }
     ODBNC { u }
     ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
+    ODBPDFDRV { max_num, dummy, drive }
+    ODBPDFINF { used_page, all_page, used_dir, all_dir }
+    ODBPDFNFIL { dir_num, file_num }
 
     // --- alarm ---
     ODBALM { dummy, data }

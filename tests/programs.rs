@@ -207,3 +207,121 @@ fn the_mdi_program_and_pointer_round_trip() {
     assert_eq!(unsafe { cnc_rdmdipntr(h, &mut p) }, EW_OK);
     assert_eq!((p.mdipntr, p.crntpntr), (5, 5));
 }
+
+fn cs(s: &str) -> std::ffi::CString {
+    std::ffi::CString::new(s).unwrap()
+}
+
+/// A one-name folder function on `name`.
+fn on(
+    f: unsafe extern "C" fn(c_ushort, *mut c_char) -> c_short,
+    h: c_ushort,
+    name: &str,
+) -> c_short {
+    unsafe { f(h, cs(name).as_ptr().cast_mut()) }
+}
+
+type Two = unsafe extern "C" fn(c_ushort, *mut c_char, *mut c_char) -> c_short;
+
+fn two(f: Two, h: c_ushort, a: &str, b: &str) -> c_short {
+    unsafe { f(h, cs(a).as_ptr().cast_mut(), cs(b).as_ptr().cast_mut()) }
+}
+
+fn subdirn(h: c_ushort, dir: &str) -> (c_short, c_short) {
+    let mut n = ODBPDFNFIL::default();
+    let r = unsafe { cnc_rdpdf_subdirn(h, cs(dir).as_ptr().cast_mut(), &mut n) };
+    assert_eq!(r, EW_OK, "{dir}");
+    (n.dir_num, n.file_num)
+}
+
+fn name256(f: impl FnOnce(*mut c_char) -> c_short) -> String {
+    let mut b = [0 as c_char; 256];
+    assert_eq!(f(b.as_mut_ptr()), EW_OK);
+    let b: Vec<u8> = b
+        .iter()
+        .take_while(|&&c| c != 0)
+        .map(|&c| c as u8)
+        .collect();
+    String::from_utf8(b).unwrap()
+}
+
+const P1: &str = "//CNC_MEM/USER/PATH1/";
+
+#[test]
+fn folders_hold_the_store() {
+    let (_s, h) = sim::start_alloc(idle());
+    let mut drv = ODBPDFDRV::default();
+    assert_eq!(unsafe { cnc_rdpdf_drive(h, &mut drv) }, EW_OK);
+    assert_eq!(drv.max_num, 1);
+    assert_eq!(subdirn(h, "//CNC_MEM/USER/"), (2, 0), "LIBRARY and PATH1");
+    assert_eq!(subdirn(h, P1), (0, 3));
+    assert_eq!(on(cnc_pdf_add, h, "//CNC_MEM/USER/JOBS/"), EW_OK);
+    assert_eq!(
+        on(cnc_pdf_add, h, "//CNC_MEM/USER/JOBS/"),
+        EW_DATA,
+        "exists"
+    );
+    assert_eq!(
+        on(cnc_pdf_add, h, "//CNC_MEM/NONE/X/"),
+        EW_DATA,
+        "no parent"
+    );
+    assert_eq!(subdirn(h, "//CNC_MEM/USER/"), (3, 0));
+    assert_eq!(on(cnc_pdf_del, h, P1), EW_DATA, "the CNC's own folder");
+    assert_eq!(on(cnc_pdf_del, h, "//CNC_MEM/USER/JOBS/"), EW_OK);
+    // Programs: the path's store.
+    assert_eq!(on(cnc_pdf_add, h, &format!("{P1}O0042")), EW_OK);
+    assert_eq!(numbers(h), vec![42, 100, 500, 1234]);
+    assert_eq!(on(cnc_pdf_del, h, &format!("{P1}O0500")), EW_PROT);
+    assert_eq!(on(cnc_pdf_del, h, &format!("{P1}O0042")), EW_OK);
+    assert_eq!(
+        two(cnc_pdf_rename, h, &format!("{P1}O0100"), "O0200"),
+        EW_OK
+    );
+    assert_eq!(
+        two(cnc_pdf_copy, h, &format!("{P1}O0200"), P1),
+        EW_DATA,
+        "same number"
+    );
+    assert_eq!(
+        two(
+            cnc_pdf_copy,
+            h,
+            &format!("{P1}O0200"),
+            &format!("{P1}O0300")
+        ),
+        EW_OK
+    );
+    assert_eq!(
+        two(
+            cnc_pdf_move,
+            h,
+            &format!("{P1}O0300"),
+            &format!("{P1}O0400")
+        ),
+        EW_OK
+    );
+    assert_eq!(numbers(h), vec![200, 400, 500, 1234]);
+    assert!(upload(h, 400).unwrap().starts_with("%\nO0400 (WARM UP)"));
+    // Current folder and main program; a bare name is in the current folder.
+    let cur = |k: c_short| name256(|b| unsafe { cnc_rdpdf_curdir(h, k, b) });
+    assert_eq!(cur(1), P1);
+    assert_eq!(on(cnc_pdf_slctmain, h, "O0400"), EW_OK);
+    assert_eq!(
+        name256(|b| unsafe { cnc_pdf_rdmain(h, b) }),
+        format!("{P1}O0400")
+    );
+    let dir = cs("//CNC_MEM/USER/LIBRARY/");
+    assert_eq!(
+        unsafe { cnc_wrpdf_curdir(h, 2, dir.as_ptr().cast_mut()) },
+        EW_OK
+    );
+    assert_eq!(
+        (cur(1), cur(2)),
+        (P1.to_string(), "//CNC_MEM/USER/LIBRARY/".to_string())
+    );
+    assert_eq!(
+        unsafe { cnc_rdpdf_curdir(h, 3, [0 as c_char; 256].as_mut_ptr()) },
+        EW_ATTRIB
+    );
+}

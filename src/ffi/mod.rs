@@ -6,6 +6,7 @@ pub mod alarm;
 pub mod described;
 pub mod exports;
 pub mod ext;
+pub mod folder;
 pub mod handle;
 pub mod macros;
 pub mod memory;

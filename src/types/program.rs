@@ -301,3 +301,31 @@ impl Default for PRGDIR2 {
         }
     }
 }
+
+/// cnc_rdpdf_drive: the program drives ("CNC_MEM" ...).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPDFDRV {
+    pub max_num: c_short,
+    pub dummy: c_short,
+    pub drive: [[c_char; 12]; 16],
+}
+
+
+/// cnc_rdpdf_inf: a drive's capacity and directories.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPDFINF {
+    pub used_page: LONG,
+    pub all_page: LONG,
+    pub used_dir: LONG,
+    pub all_dir: LONG,
+}
+
+/// cnc_rdpdf_subdirn: directories and files a directory holds.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPDFNFIL {
+    pub dir_num: c_short,
+    pub file_num: c_short,
+}

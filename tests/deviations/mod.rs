@@ -40,6 +40,18 @@ pub const ORACLE: &[Deviation] = &[
         reason: "when the CNC answers an error FANUC's library writes uninitialised stack bytes into the whole ODBMDIP; ours writes nothing",
     },
     Deviation {
+        function: "cnc_rdpdf_inf",
+        cases: &[
+            "rdpdf_inf_v3_shape_empty",
+            "rdpdf_inf_v3_shape_half",
+            "rdpdf_inf_v3_shape_short1",
+            "rdpdf_inf_v2_shape_empty",
+            "rdpdf_inf_v2_shape_half",
+            "rdpdf_inf_v2_shape_short1",
+        ],
+        reason: "an answer shorter than ODBPDFINF makes FANUC's library fill the rest from its receive buffer (the request's bytes); ours returns EW_PROTOCOL and writes nothing",
+    },
+    Deviation {
         function: "cnc_rdopmode",
         cases: &["rdopmode_v3_shape_longer", "rdopmode_v2_shape_longer"],
         reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",

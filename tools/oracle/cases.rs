@@ -241,6 +241,65 @@ const WORDS: &[Word] = &[
             ],
         )
     },
+    // Program data folders (30i).
+    w("rdpdf_drive", &[]),
+    w(
+        "rdpdf_inf",
+        &[
+            "//CNC_MEM/|//CNC_MEM/USER/PATH1/|CNC_MEM|//DATA_SV/|x",
+            "1|0|2|-1|3",
+        ],
+    ),
+    w("rdpdf_curdir", &["1|0|2|-1|3"]),
+    w(
+        "wrpdf_curdir",
+        &[
+            "1|0|2|-1|3",
+            "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|//CNC_MEM/USER/PATH9/|x|//CNC_MEM/USER/PATH1",
+        ],
+    ),
+    w(
+        "rdpdf_subdirn",
+        &["//CNC_MEM/USER/|//CNC_MEM/USER/PATH1/|//CNC_MEM/|//CNC_MEM/NONE/|x"],
+    ),
+    w(
+        "pdf_add",
+        &[
+            "//CNC_MEM/USER/PATH1/O0200|//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/NEW/|//CNC_MEM/USER/PATH1/|x|O0300",
+        ],
+    ),
+    w(
+        "pdf_del",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O1234|//CNC_MEM/USER/PATH1/O0007|//CNC_MEM/USER/PATH1/|x|O0100",
+        ],
+    ),
+    w(
+        "pdf_slctmain",
+        &["//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|//CNC_MEM/USER/PATH1/|x|O0100"],
+    ),
+    w("pdf_rdmain", &[]),
+    w(
+        "pdf_rename",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "O0200|O1234|//CNC_MEM/USER/PATH1/O0200|x",
+        ],
+    ),
+    w(
+        "pdf_copy",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "//CNC_MEM/USER/PATH1/O0200|//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/PATH1/O1234|x",
+        ],
+    ),
+    w(
+        "pdf_move",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "//CNC_MEM/USER/LIBRARY/|//CNC_MEM/USER/PATH1/|x",
+        ],
+    ),
     // Alarms and messages.
     w("alarm", &[]),
     w("alarm2", &[]),

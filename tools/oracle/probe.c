@@ -236,6 +236,19 @@ static short in_thread(void *(*f)(void *)) {
     WORD(rdproginfo, return F(cnc_rdproginfo)(H, N(1), N(2), B0))                                 \
     WORD(rdmdiprog, SHORT_IO(length, 1, F(cnc_rdmdiprog)(H, &length, B0)))                        \
     WORD(wrmdiprog, { fill_hex(b1, 2); return F(cnc_wrmdiprog)(H, N(1), B1); })                   \
+    /* program data folders (30i) */                                                              \
+    WORD(rdpdf_drive, return F(cnc_rdpdf_drive)(H, B0))                                           \
+    WORD(rdpdf_inf, return F(cnc_rdpdf_inf)(H, argv_[1], N(2), B0))                               \
+    WORD(rdpdf_curdir, return F(cnc_rdpdf_curdir)(H, N(1), B0))                                   \
+    WORD(wrpdf_curdir, return F(cnc_wrpdf_curdir)(H, N(1), argv_[2]))                             \
+    WORD(rdpdf_subdirn, return F(cnc_rdpdf_subdirn)(H, argv_[1], B0))                             \
+    WORD(pdf_add, return F(cnc_pdf_add)(H, argv_[1]))                                             \
+    WORD(pdf_del, return F(cnc_pdf_del)(H, argv_[1]))                                             \
+    WORD(pdf_slctmain, return F(cnc_pdf_slctmain)(H, argv_[1]))                                   \
+    WORD(pdf_rdmain, return F(cnc_pdf_rdmain)(H, B0))                                             \
+    WORD(pdf_rename, return F(cnc_pdf_rename)(H, argv_[1], argv_[2]))                             \
+    WORD(pdf_copy, return F(cnc_pdf_copy)(H, argv_[1], argv_[2]))                                 \
+    WORD(pdf_move, return F(cnc_pdf_move)(H, argv_[1], argv_[2]))                                 \
     /* alarm */                                                                                   \
     WORD(alarm, return F(cnc_alarm)(H, B0))                                                       \
     WORD(alarm2, return F(cnc_alarm2)(H, B0))                                                     \

@@ -1,0 +1,276 @@
+//! Program data folders of the 30i ("//CNC_MEM/USER/PATH1/O1234"): each
+//! function is one request (learnt from FANUC's library with the oracle):
+//! the command, a number word, the strings as NUL-padded fields of fixed
+//! size (a longer string cut to the field, as FANUC's library cuts it).
+
+use super::{ffi_boundary, nonnull, put};
+use crate::client::handles;
+use crate::error::Result;
+use crate::proto::call::Single;
+use crate::proto::packet::ReqSub;
+use crate::proto::program::{self as pp, PathName};
+use crate::proto::wire::{Reader, Wire};
+use crate::types::{ODBPDFDRV, ODBPDFINF, ODBPDFNFIL};
+use std::os::raw::{c_char, c_short, c_ushort};
+
+/// Sends folder command `cmd` with `word` and the strings, each as a field
+/// of its size; the answer's bytes.
+///
+/// # Safety
+/// Each string pointer is NULL (EW_NULL... as `nonnull`) or readable up to
+/// its NUL or its field size.
+unsafe fn pdf(
+    h: c_ushort,
+    cmd: u16,
+    word: i32,
+    strs: &[(*const c_char, usize)],
+) -> Result<Vec<u8>> {
+    let h = handles::get(h)?;
+    let mut payload = Vec::new();
+    for &(p, n) in strs {
+        let p = nonnull(p.cast_mut())?;
+        let mut field = vec![0u8; n];
+        for (i, b) in field.iter_mut().enumerate() {
+            match unsafe { p.add(i).read() } {
+                0 => break,
+                c => *b = c as u8,
+            }
+        }
+        payload.extend(field);
+    }
+    let mut sub = ReqSub::cnc(cmd, &[word]);
+    if !payload.is_empty() {
+        sub = sub.with_payload(payload);
+    }
+    Ok(h.call(&Single::<PathName>::new(sub))?.0)
+}
+
+/// The first `n` big-endian words of an answer; missing bytes read as
+/// zeros with `zeros` (as FANUC's library reads them), else EW_PROTOCOL.
+fn words(b: &[u8], n: usize, zeros: bool) -> Result<Vec<i32>> {
+    let mut b = b.to_vec();
+    if zeros {
+        b.resize(b.len().max(4 * n), 0);
+    }
+    let mut r = Reader::new(&b);
+    Ok((0..n)
+        .map(|_| i32::decode(&mut r))
+        .collect::<std::result::Result<_, _>>()?)
+}
+
+/// Writes an answered path name as FANUC's library does: 256 bytes, the
+/// answer's and zeros after it.
+unsafe fn put_name(out: *mut c_char, name: &[u8]) -> Result<()> {
+    let mut b = name[..name.len().min(256)].to_vec();
+    b.resize(256, 0);
+    unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), nonnull(out)?.cast::<u8>(), 256) };
+    Ok(())
+}
+
+/// Reads the program drives ("CNC_MEM" ...): their number and names (the
+/// answer is the names, 12 bytes each).
+///
+/// # Safety
+/// `drive` must point to a writable ODBPDFDRV.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_drive(FlibHndl: c_ushort, drive: *mut ODBPDFDRV) -> c_short {
+    ffi_boundary!("cnc_rdpdf_drive", {
+        let out = nonnull(drive)?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_DRIVE, 0, &[]) }?;
+        // 12 bytes per drive name, as many as the answer holds (16 at most),
+        // each copied up to its NUL and zero-filled; `dummy` is not written.
+        let names = b.chunks_exact(12).take(16);
+        unsafe { put(out.cast::<c_short>(), names.len() as c_short) };
+        for (i, n) in names.enumerate() {
+            let mut name = [0u8; 12];
+            let end = n.iter().position(|&c| c == 0).unwrap_or(12);
+            name[..end].copy_from_slice(&n[..end]);
+            unsafe { put(out.cast::<u8>().add(4 + 12 * i).cast::<[u8; 12]>(), name) };
+        }
+        Ok(())
+    })
+}
+
+/// Reads a drive's used and total capacity and directories.
+///
+/// # Safety
+/// `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_inf(
+    FlibHndl: c_ushort,
+    drv_name: *mut c_char,
+    r#type: c_short,
+    inf: *mut ODBPDFINF,
+) -> c_short {
+    ffi_boundary!("cnc_rdpdf_inf", {
+        let out = nonnull(inf)?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_INF, r#type.into(), &[(drv_name, 12)]) }?;
+        let v = words(&b, 4, false)?;
+        let i = ODBPDFINF {
+            used_page: v[0],
+            all_page: v[1],
+            used_dir: v[2],
+            all_dir: v[3],
+        };
+        unsafe { put(out, i) };
+        Ok(())
+    })
+}
+
+/// Reads the current directory of `type` (1 foreground, 2 background).
+///
+/// # Safety
+/// `dir_name` must have 256 writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_curdir(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    dir_name: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_rdpdf_curdir", {
+        nonnull(dir_name)?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_RDCURDIR, r#type.into(), &[]) }?;
+        unsafe { put_name(dir_name, &b) }
+    })
+}
+
+/// Sets the current directory of `type`.
+///
+/// # Safety
+/// `dir_name` readable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrpdf_curdir(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    dir_name: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_wrpdf_curdir", {
+        unsafe {
+            pdf(
+                FlibHndl,
+                pp::PDF_WRCURDIR,
+                r#type.into(),
+                &[(dir_name, 256)],
+            )
+        }
+        .map(drop)
+    })
+}
+
+/// Reads how many directories and files a directory holds.
+///
+/// # Safety
+/// `path` readable; `num_fil` a writable ODBPDFNFIL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_subdirn(
+    FlibHndl: c_ushort,
+    path: *mut c_char,
+    num_fil: *mut ODBPDFNFIL,
+) -> c_short {
+    ffi_boundary!("cnc_rdpdf_subdirn", {
+        let out = nonnull(num_fil)?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_SUBDIRN, 0, &[(path, 256)]) }?;
+        let v = words(&b, 2, true)?;
+        unsafe {
+            put(
+                out,
+                ODBPDFNFIL {
+                    dir_num: v[0] as c_short,
+                    file_num: v[1] as c_short,
+                },
+            )
+        };
+        Ok(())
+    })
+}
+
+/// Reads the main program's path name.
+///
+/// # Safety
+/// `path_name` must have 256 writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_rdmain(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
+    ffi_boundary!("cnc_pdf_rdmain", {
+        nonnull(path_name)?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_RDMAIN, 0, &[]) }?;
+        unsafe { put_name(path_name, &b) }
+    })
+}
+
+/// Creates a program or (a name ending in '/') a folder.
+///
+/// # Safety
+/// `path` must be readable up to its NUL or 256 bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_add(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
+    ffi_boundary!("cnc_pdf_add", {
+        unsafe { pdf(FlibHndl, pp::PDF_ADD, 0, &[(path, 256)]) }.map(drop)
+    })
+}
+
+/// Deletes a program or an empty folder.
+///
+/// # Safety
+/// `path` must be readable up to its NUL or 256 bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_del(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
+    ffi_boundary!("cnc_pdf_del", {
+        unsafe { pdf(FlibHndl, pp::PDF_DEL, 0, &[(path, 256)]) }.map(drop)
+    })
+}
+
+/// Selects a program as the main program.
+///
+/// # Safety
+/// `path` must be readable up to its NUL or 256 bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_slctmain(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
+    ffi_boundary!("cnc_pdf_slctmain", {
+        unsafe { pdf(FlibHndl, pp::PDF_SLCTMAIN, 0, &[(path, 256)]) }.map(drop)
+    })
+}
+
+/// Renames a program or folder (`to`: the new name, 36 bytes sent).
+///
+/// # Safety
+/// Both names must be readable up to their NUL or field size.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_rename(
+    FlibHndl: c_ushort,
+    from: *mut c_char,
+    to: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_rename", {
+        unsafe { pdf(FlibHndl, pp::PDF_RENAME, 0, &[(from, 256), (to, 36)]) }.map(drop)
+    })
+}
+
+/// Copies a program (`to`: a program or a folder).
+///
+/// # Safety
+/// Both names must be readable up to their NUL or field size.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_copy(
+    FlibHndl: c_ushort,
+    from: *mut c_char,
+    to: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_copy", {
+        unsafe { pdf(FlibHndl, pp::PDF_COPY, 0, &[(from, 256), (to, 256)]) }.map(drop)
+    })
+}
+
+/// Moves a program (`to`: a program or a folder).
+///
+/// # Safety
+/// Both names must be readable up to their NUL or field size.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_move(
+    FlibHndl: c_ushort,
+    from: *mut c_char,
+    to: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_move", {
+        unsafe { pdf(FlibHndl, pp::PDF_MOVE, 0, &[(from, 256), (to, 256)]) }.map(drop)
+    })
+}

@@ -1,0 +1,190 @@
+//! The 30i program data folders on the program store (src/sim/store.rs):
+//! "//CNC_MEM/USER/PATH<n>/" holds path n's programs; other folders hold
+//! folders only. Names are NUL-padded fields of the request's payload
+//! (256 bytes; a rename's new name 36). Refusals: an unknown folder or a
+//! name that is not "O<number>" EW_DATA, then the store's (EW_DATA, EW_PROT,
+//! EW_BUSY, EW_OVRFLOW); a type other than 1/2 EW_ATTRIB.
+
+use super::Machine;
+use super::service::{CncError, Reply};
+use super::store::{FOLDERS, Program};
+use crate::ew;
+use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::program as pp;
+use crate::proto::wire::Writer;
+
+/// A NUL-padded field as text.
+fn field(b: &[u8]) -> String {
+    let n = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+    String::from_utf8_lossy(&b[..n]).into_owned()
+}
+
+/// A name answered in a 256-byte NUL-padded field.
+fn name256(s: &str) -> Vec<u8> {
+    let mut b = s.as_bytes()[..s.len().min(255)].to_vec();
+    b.resize(256, 0);
+    b
+}
+
+fn err<T>(code: i16) -> Reply<T> {
+    Err(CncError::new(code))
+}
+
+impl Machine {
+    /// The folder commands (`None`: not one of them).
+    pub(crate) fn folder_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        let cmds = [
+            pp::PDF_DRIVE,
+            pp::PDF_INF,
+            pp::PDF_RDCURDIR,
+            pp::PDF_WRCURDIR,
+            pp::PDF_SUBDIRN,
+            pp::PDF_ADD,
+            pp::PDF_DEL,
+            pp::PDF_RENAME,
+            pp::PDF_RDMAIN,
+            pp::PDF_SLCTMAIN,
+            pp::PDF_COPY,
+            pp::PDF_MOVE,
+        ];
+        if sub.class != CLASS_CNC || !cmds.contains(&sub.cmd) {
+            return None;
+        }
+        let p = &sub.payload;
+        let (a, b) = (
+            field(p.get(..256).unwrap_or(p)),
+            field(p.get(256..).unwrap_or(&[])),
+        );
+        Some(self.folder_answer(sub.cmd, sub.path, sub.args[0], &a, &b))
+    }
+
+    fn folder_answer(
+        &mut self,
+        cmd: u16,
+        path: u16,
+        word: i32,
+        a: &str,
+        b: &str,
+    ) -> Reply<Vec<u8>> {
+        let today = self.today();
+        let st = &mut self.store;
+        let mut w = Writer::new();
+        match cmd {
+            pp::PDF_DRIVE => {
+                w.bytes(b"CNC_MEM\0\0\0\0\0");
+            }
+            pp::PDF_INF => {
+                let (mut used, mut all) = (0, 0);
+                for n in 1..=self.run.len() as u16 {
+                    let s = st.path(n)?;
+                    (used, all) = (used + s.used(), all + s.capacity);
+                }
+                let dirs = st.folders.len();
+                for v in [used.div_ceil(256), all / 256, dirs, 1000] {
+                    w.i32(v as i32);
+                }
+            }
+            pp::PDF_RDCURDIR | pp::PDF_WRCURDIR => {
+                let k = usize::try_from(word - 1).ok().filter(|k| *k < 2);
+                let k = k.ok_or(CncError::new(ew::EW_ATTRIB))?;
+                if cmd == pp::PDF_RDCURDIR {
+                    return Ok(name256(&st.curdir[k]));
+                }
+                match st.locate(a)? {
+                    (f, None) => st.curdir[k] = f,
+                    _ => return err(ew::EW_DATA),
+                }
+            }
+            pp::PDF_SUBDIRN => {
+                let (f, None) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                let subs = st.folders.iter().filter(|g| {
+                    g.strip_prefix(f.as_str())
+                        .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
+                });
+                let files = (1..=self.run.len() as u16)
+                    .find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"))
+                    .map_or(0, |n| st.iter(n).count());
+                w.i32(subs.count() as i32);
+                w.i32(files as i32);
+            }
+            pp::PDF_ADD if a.ends_with('/') => {
+                let parent = &a[..a[..a.len() - 1].rfind('/').map_or(0, |i| i + 1)];
+                if st.folders.iter().any(|f| f == a) || !st.folders.iter().any(|f| f == parent) {
+                    return err(ew::EW_DATA);
+                }
+                st.folders.push(a.to_string());
+            }
+            pp::PDF_ADD => {
+                let (_, Some((p, n))) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                st.insert(p, Program::new(&format!("O{n:04};\n%\n"), today))?;
+            }
+            pp::PDF_DEL => match st.locate(a)? {
+                (_, Some((p, n))) => drop(st.remove(p, n)?),
+                (f, None) => {
+                    // The CNC's own folders stay, and a folder with folders in it.
+                    let at = st.folders.iter().position(|g| *g == f);
+                    let full = st
+                        .folders
+                        .iter()
+                        .any(|g| g.len() > f.len() && g.starts_with(&f));
+                    if full || at < Some(FOLDERS.len() + self.run.len()) {
+                        return err(ew::EW_DATA);
+                    }
+                    st.folders.retain(|g| *g != f);
+                }
+            },
+            pp::PDF_RENAME => {
+                let (Ok((_, Some((p, n)))), Some(to)) = (st.locate(a), new_number(b)) else {
+                    return err(ew::EW_DATA);
+                };
+                st.rename(p, n, to, today)?;
+            }
+            pp::PDF_RDMAIN => {
+                let main = st.path(path)?.main;
+                return Ok(name256(&format!("//CNC_MEM/USER/PATH{path}/O{main:04}")));
+            }
+            pp::PDF_SLCTMAIN => {
+                let (_, Some((p, n))) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                st.select(p, n)?;
+            }
+            _ => {
+                // PDF_COPY / PDF_MOVE: to a program, or into a folder.
+                let (_, Some((p, n))) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                let (q, m) = match st.locate(b)? {
+                    (_, Some(to)) => to,
+                    (f, None) => match st.locate(&format!("{f}O{n:04}"))? {
+                        (_, Some(to)) => to,
+                        _ => return err(ew::EW_DATA),
+                    },
+                };
+                let mut prog = st.path(p)?.find(n)?.clone();
+                if cmd == pp::PDF_MOVE {
+                    st.path(p)?.editable(n)?;
+                } else {
+                    (prog.created, prog.modified, prog.protect) = (today, today, false);
+                }
+                st.insert(q, prog.renumbered(m))?;
+                if cmd == pp::PDF_MOVE {
+                    st.remove(p, n)?;
+                }
+            }
+        }
+        Ok(w.into_vec())
+    }
+}
+
+/// The program number of a new name "O<number>".
+fn new_number(name: &str) -> Option<i32> {
+    let d = name.strip_prefix('O')?;
+    d.bytes()
+        .all(|b| b.is_ascii_digit())
+        .then(|| d.parse().ok())?
+}
