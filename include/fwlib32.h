@@ -1544,12 +1544,40 @@ short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
 short cnc_pdf_del(unsigned short FlibHndl, char *path);
 
 /*
+ Deletes every program of a folder (`type` as FANUC's: sent after a 1).
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_delall(unsigned short FlibHndl, short type, char *path);
+
+/*
+ Deletes `count` lines of a program from line `line_no`.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_delline(unsigned short FlibHndl,
+                      char *path,
+                      unsigned long line_no,
+                      unsigned long count);
+
+/*
  Moves a program (`to`: a program or a folder).
 
  # Safety
  Both names must be readable up to their NUL or field size.
  */
 short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Reads the execution pointer: the program's path name (the answer's
+ bytes after the block, at most 256) and its block.
+
+ # Safety
+ `path` must have 256 writable bytes, `block` 4.
+ */
+short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
 
 /*
  Reads the main program's path name.
@@ -1574,6 +1602,16 @@ short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
  `path` must be readable up to its NUL or 256 bytes.
  */
 short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
+
+/*
+ Sets the execution pointer to block `*block` of a program (the name
+ goes with its NUL, as FANUC's library sends it); `*block` is then the
+ block the CNC answers (0 for an empty answer).
+
+ # Safety
+ `path` readable up to its NUL, `block` 4 readable bytes.
+ */
+short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *block);
 
 /*
  Reads the execution pointer: program number and block number (4 bytes
@@ -2091,6 +2129,23 @@ short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
  `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
  */
 short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct ODBPDFINF *inf);
+
+/*
+ Reads `*line_len` lines of a program from line `line_no` into `data`:
+ the answer up to its first '%', at most `*data_len` bytes; out: the
+ bytes and the whole lines read (line ends and the '%'), as FANUC's
+ library counts them.
+
+ # Safety
+ `line_len`, `data_len` 4 readable and writable bytes each; `data` must
+ have `*data_len` writable bytes.
+ */
+short cnc_rdpdf_line(unsigned short FlibHndl,
+                     char *path,
+                     unsigned long line_no,
+                     char *data,
+                     unsigned long *line_len,
+                     unsigned long *data_len);
 
 /*
  Reads how many directories and files a directory holds.
@@ -2752,6 +2807,19 @@ short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
  `dir_name` readable.
  */
 short cnc_wrpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
+
+/*
+ Writes `len` bytes of lines into a program after line `line_no`.
+ `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library aborts).
+
+ # Safety
+ `path` readable up to its NUL or 256 bytes; `data` `len` readable bytes.
+ */
+short cnc_wrpdf_line(unsigned short FlibHndl,
+                     char *path,
+                     unsigned long line_no,
+                     char *data,
+                     unsigned long len);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

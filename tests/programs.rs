@@ -11,7 +11,7 @@ use fwlib32::sim::Profile;
 use fwlib32::sim::run::StoredProgram;
 use fwlib32::types::*;
 use fwlib32::*;
-use std::os::raw::{c_char, c_long, c_short, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// The built-in profile with path 1 idle (no program in cycle, none
 /// selected) and a protected O0500.
@@ -324,4 +324,78 @@ fn folders_hold_the_store() {
         unsafe { cnc_rdpdf_curdir(h, 3, [0 as c_char; 256].as_mut_ptr()) },
         EW_ATTRIB
     );
+}
+
+/// Lines `from..` (`lines` of them) of program `name`, by cnc_rdpdf_line.
+fn read_lines(h: c_ushort, name: &str, from: u32, lines: u32) -> String {
+    let mut buf = [0 as c_char; 512];
+    let (mut ll, mut dl): (c_ulong, c_ulong) = (lines as c_ulong, 512);
+    let p = cs(name);
+    let r = unsafe {
+        cnc_rdpdf_line(
+            h,
+            p.as_ptr().cast_mut(),
+            from as c_ulong,
+            buf.as_mut_ptr(),
+            &mut ll,
+            &mut dl,
+        )
+    };
+    assert_eq!(r, EW_OK);
+    buf[..dl as usize]
+        .iter()
+        .map(|&c| c as u8 as char)
+        .collect()
+}
+
+#[test]
+fn lines_of_a_program_are_edited_in_place() {
+    let (_s, h) = sim::start_alloc(idle());
+    let o100 = format!("{P1}O0100");
+    assert_eq!(
+        read_lines(h, &o100, 2, 2),
+        "N10 G91 G28 Z0.;\nN20 M03 S1000;\n"
+    );
+    let mut add = *b"N15 G04 X1.;\n";
+    let p = cs(&o100);
+    let r = unsafe {
+        cnc_wrpdf_line(
+            h,
+            p.as_ptr().cast_mut(),
+            2,
+            add.as_mut_ptr().cast(),
+            add.len() as c_ulong,
+        )
+    };
+    assert_eq!(r, EW_OK);
+    assert_eq!(
+        read_lines(h, &o100, 2, 3),
+        "N10 G91 G28 Z0.;\nN15 G04 X1.;\nN20 M03 S1000;\n"
+    );
+    assert_eq!(
+        unsafe { cnc_pdf_delline(h, p.as_ptr().cast_mut(), 3, 1) },
+        EW_OK
+    );
+    assert!(
+        upload(h, 100).unwrap().contains("Z0.\nN20 M03"),
+        "the upload sees the edit"
+    );
+    let keep = cs(&format!("{P1}O0500"));
+    assert_eq!(
+        unsafe { cnc_pdf_delline(h, keep.as_ptr().cast_mut(), 1, 1) },
+        EW_PROT
+    );
+    // Execution pointer on a program, then delete all (the protected one stays).
+    let mut blk: c_long = 3;
+    assert_eq!(
+        unsafe { cnc_pdf_wractpt(h, p.as_ptr().cast_mut(), 0, &mut blk) },
+        EW_OK
+    );
+    assert_eq!(blk, 3);
+    let dir = cs(P1);
+    assert_eq!(
+        unsafe { cnc_pdf_delall(h, 1, dir.as_ptr().cast_mut()) },
+        EW_OK
+    );
+    assert_eq!(numbers(h), vec![500]);
 }

@@ -11,9 +11,9 @@ use crate::proto::packet::ReqSub;
 use crate::proto::program::{self as pp, PathName};
 use crate::proto::wire::{Reader, Wire};
 use crate::types::{ODBPDFDRV, ODBPDFINF, ODBPDFNFIL};
-use std::os::raw::{c_char, c_short, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
-/// Sends folder command `cmd` with `word` and the strings, each as a field
+/// Sends folder command `cmd` with `words` and the strings, each as a field
 /// of its size; the answer's bytes.
 ///
 /// # Safety
@@ -22,8 +22,19 @@ use std::os::raw::{c_char, c_short, c_ushort};
 unsafe fn pdf(
     h: c_ushort,
     cmd: u16,
-    word: i32,
+    words: &[i32],
     strs: &[(*const c_char, usize)],
+) -> Result<Vec<u8>> {
+    unsafe { pdf_with(h, cmd, words, strs, &[]) }
+}
+
+/// [`pdf`] with bytes after the strings.
+unsafe fn pdf_with(
+    h: c_ushort,
+    cmd: u16,
+    words: &[i32],
+    strs: &[(*const c_char, usize)],
+    tail: &[u8],
 ) -> Result<Vec<u8>> {
     let h = handles::get(h)?;
     let mut payload = Vec::new();
@@ -38,7 +49,8 @@ unsafe fn pdf(
         }
         payload.extend(field);
     }
-    let mut sub = ReqSub::cnc(cmd, &[word]);
+    payload.extend_from_slice(tail);
+    let mut sub = ReqSub::cnc(cmd, words);
     if !payload.is_empty() {
         sub = sub.with_payload(payload);
     }
@@ -76,7 +88,7 @@ unsafe fn put_name(out: *mut c_char, name: &[u8]) -> Result<()> {
 pub unsafe extern "C" fn cnc_rdpdf_drive(FlibHndl: c_ushort, drive: *mut ODBPDFDRV) -> c_short {
     ffi_boundary!("cnc_rdpdf_drive", {
         let out = nonnull(drive)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_DRIVE, 0, &[]) }?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_DRIVE, &[], &[]) }?;
         // 12 bytes per drive name, as many as the answer holds (16 at most),
         // each copied up to its NUL and zero-filled; `dummy` is not written.
         let names = b.chunks_exact(12).take(16);
@@ -104,7 +116,7 @@ pub unsafe extern "C" fn cnc_rdpdf_inf(
 ) -> c_short {
     ffi_boundary!("cnc_rdpdf_inf", {
         let out = nonnull(inf)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_INF, r#type.into(), &[(drv_name, 12)]) }?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_INF, &[r#type.into()], &[(drv_name, 12)]) }?;
         let v = words(&b, 4, false)?;
         let i = ODBPDFINF {
             used_page: v[0],
@@ -129,7 +141,7 @@ pub unsafe extern "C" fn cnc_rdpdf_curdir(
 ) -> c_short {
     ffi_boundary!("cnc_rdpdf_curdir", {
         nonnull(dir_name)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_RDCURDIR, r#type.into(), &[]) }?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_RDCURDIR, &[r#type.into()], &[]) }?;
         unsafe { put_name(dir_name, &b) }
     })
 }
@@ -149,7 +161,7 @@ pub unsafe extern "C" fn cnc_wrpdf_curdir(
             pdf(
                 FlibHndl,
                 pp::PDF_WRCURDIR,
-                r#type.into(),
+                &[r#type.into()],
                 &[(dir_name, 256)],
             )
         }
@@ -169,7 +181,7 @@ pub unsafe extern "C" fn cnc_rdpdf_subdirn(
 ) -> c_short {
     ffi_boundary!("cnc_rdpdf_subdirn", {
         let out = nonnull(num_fil)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_SUBDIRN, 0, &[(path, 256)]) }?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_SUBDIRN, &[], &[(path, 256)]) }?;
         let v = words(&b, 2, true)?;
         unsafe {
             put(
@@ -192,7 +204,7 @@ pub unsafe extern "C" fn cnc_rdpdf_subdirn(
 pub unsafe extern "C" fn cnc_pdf_rdmain(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
     ffi_boundary!("cnc_pdf_rdmain", {
         nonnull(path_name)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_RDMAIN, 0, &[]) }?;
+        let b = unsafe { pdf(FlibHndl, pp::PDF_RDMAIN, &[], &[]) }?;
         unsafe { put_name(path_name, &b) }
     })
 }
@@ -204,7 +216,7 @@ pub unsafe extern "C" fn cnc_pdf_rdmain(FlibHndl: c_ushort, path_name: *mut c_ch
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_pdf_add(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
     ffi_boundary!("cnc_pdf_add", {
-        unsafe { pdf(FlibHndl, pp::PDF_ADD, 0, &[(path, 256)]) }.map(drop)
+        unsafe { pdf(FlibHndl, pp::PDF_ADD, &[], &[(path, 256)]) }.map(drop)
     })
 }
 
@@ -215,7 +227,7 @@ pub unsafe extern "C" fn cnc_pdf_add(FlibHndl: c_ushort, path: *mut c_char) -> c
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_pdf_del(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
     ffi_boundary!("cnc_pdf_del", {
-        unsafe { pdf(FlibHndl, pp::PDF_DEL, 0, &[(path, 256)]) }.map(drop)
+        unsafe { pdf(FlibHndl, pp::PDF_DEL, &[], &[(path, 256)]) }.map(drop)
     })
 }
 
@@ -226,7 +238,7 @@ pub unsafe extern "C" fn cnc_pdf_del(FlibHndl: c_ushort, path: *mut c_char) -> c
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_pdf_slctmain(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
     ffi_boundary!("cnc_pdf_slctmain", {
-        unsafe { pdf(FlibHndl, pp::PDF_SLCTMAIN, 0, &[(path, 256)]) }.map(drop)
+        unsafe { pdf(FlibHndl, pp::PDF_SLCTMAIN, &[], &[(path, 256)]) }.map(drop)
     })
 }
 
@@ -241,7 +253,7 @@ pub unsafe extern "C" fn cnc_pdf_rename(
     to: *mut c_char,
 ) -> c_short {
     ffi_boundary!("cnc_pdf_rename", {
-        unsafe { pdf(FlibHndl, pp::PDF_RENAME, 0, &[(from, 256), (to, 36)]) }.map(drop)
+        unsafe { pdf(FlibHndl, pp::PDF_RENAME, &[], &[(from, 256), (to, 36)]) }.map(drop)
     })
 }
 
@@ -256,7 +268,7 @@ pub unsafe extern "C" fn cnc_pdf_copy(
     to: *mut c_char,
 ) -> c_short {
     ffi_boundary!("cnc_pdf_copy", {
-        unsafe { pdf(FlibHndl, pp::PDF_COPY, 0, &[(from, 256), (to, 256)]) }.map(drop)
+        unsafe { pdf(FlibHndl, pp::PDF_COPY, &[], &[(from, 256), (to, 256)]) }.map(drop)
     })
 }
 
@@ -271,6 +283,172 @@ pub unsafe extern "C" fn cnc_pdf_move(
     to: *mut c_char,
 ) -> c_short {
     ffi_boundary!("cnc_pdf_move", {
-        unsafe { pdf(FlibHndl, pp::PDF_MOVE, 0, &[(from, 256), (to, 256)]) }.map(drop)
+        unsafe { pdf(FlibHndl, pp::PDF_MOVE, &[], &[(from, 256), (to, 256)]) }.map(drop)
+    })
+}
+
+/// Deletes every program of a folder (`type` as FANUC's: sent after a 1).
+///
+/// # Safety
+/// `path` must be readable up to its NUL or 256 bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_delall(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    path: *mut c_char,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_delall", {
+        let w = [1, r#type.into()];
+        unsafe { pdf(FlibHndl, pp::PDF_DELALL, &w, &[(path, 256)]) }.map(drop)
+    })
+}
+
+/// Deletes `count` lines of a program from line `line_no`.
+///
+/// # Safety
+/// `path` must be readable up to its NUL or 256 bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_delline(
+    FlibHndl: c_ushort,
+    path: *mut c_char,
+    line_no: c_ulong,
+    count: c_ulong,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_delline", {
+        let w = [line_no as i32, count as i32];
+        unsafe { pdf(FlibHndl, pp::PDF_DELLINE, &w, &[(path, 256)]) }.map(drop)
+    })
+}
+
+/// Reads the execution pointer: the program's path name (the answer's
+/// bytes after the block, at most 256) and its block.
+///
+/// # Safety
+/// `path` must have 256 writable bytes, `block` 4.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_rdactpt(
+    FlibHndl: c_ushort,
+    path: *mut c_char,
+    block: *mut c_long,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_rdactpt", {
+        let (out, blk) = (nonnull(path)?, nonnull(block)?);
+        let b = unsafe { pdf(FlibHndl, pp::PDF_RDACTPT, &[], &[]) }?;
+        let v = words(&b, 1, true)?;
+        // The name as answered (at most 256 bytes), 256 zeros for an answer
+        // without one, as FANUC's library writes it.
+        let name = b
+            .get(4..)
+            .map_or(&[0u8; 256][..], |n| &n[..n.len().min(256)]);
+        unsafe {
+            put(blk.cast::<i32>(), v[0]);
+            std::ptr::copy_nonoverlapping(name.as_ptr(), out.cast::<u8>(), name.len());
+        }
+        Ok(())
+    })
+}
+
+/// Sets the execution pointer to block `*block` of a program (the name
+/// goes with its NUL, as FANUC's library sends it); `*block` is then the
+/// block the CNC answers (0 for an empty answer).
+///
+/// # Safety
+/// `path` readable up to its NUL, `block` 4 readable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_pdf_wractpt(
+    FlibHndl: c_ushort,
+    path: *mut c_char,
+    r#type: c_short,
+    block: *mut c_long,
+) -> c_short {
+    ffi_boundary!("cnc_pdf_wractpt", {
+        let b = unsafe { nonnull(block)?.cast::<i32>().read_unaligned() };
+        let n = unsafe { std::ffi::CStr::from_ptr(nonnull(path)?) }
+            .to_bytes()
+            .len()
+            .min(255)
+            + 1;
+        let a = unsafe { pdf(FlibHndl, pp::PDF_WRACTPT, &[r#type.into(), b], &[(path, n)]) }?;
+        unsafe { put(block.cast::<i32>(), words(&a, 1, true)?[0]) };
+        Ok(())
+    })
+}
+
+/// Reads `*line_len` lines of a program from line `line_no` into `data`:
+/// the answer up to its first '%', at most `*data_len` bytes; out: the
+/// bytes and the whole lines read (line ends and the '%'), as FANUC's
+/// library counts them.
+///
+/// # Safety
+/// `line_len`, `data_len` 4 readable and writable bytes each; `data` must
+/// have `*data_len` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_line(
+    FlibHndl: c_ushort,
+    path: *mut c_char,
+    line_no: c_ulong,
+    data: *mut c_char,
+    line_len: *mut c_ulong,
+    data_len: *mut c_ulong,
+) -> c_short {
+    ffi_boundary!("cnc_rdpdf_line", {
+        let (out, ll, dl) = (
+            nonnull(data)?.cast::<u8>(),
+            nonnull(line_len)?.cast::<u32>(),
+            nonnull(data_len)?.cast::<u32>(),
+        );
+        let lines = unsafe { ll.read_unaligned() };
+        let b = unsafe {
+            pdf(
+                FlibHndl,
+                pp::PDF_RDLINE,
+                &[line_no as i32, lines as i32],
+                &[(path, 256)],
+            )
+        }?;
+        // Up to the first '%' (the end of the program), at most `*data_len`
+        // bytes; the lines read are its line ends and that '%'.
+        let end = b.iter().position(|&c| c == b'%').map_or(b.len(), |i| i + 1);
+        let n = end.min(unsafe { dl.read_unaligned() } as usize);
+        let read = b[..n].iter().filter(|&&c| c == b'\n' || c == b'%').count();
+        unsafe {
+            std::ptr::copy_nonoverlapping(b.as_ptr(), out, n);
+            put(dl, n as u32);
+            put(ll, read as u32);
+        }
+        Ok(())
+    })
+}
+
+/// Writes `len` bytes of lines into a program after line `line_no`.
+/// `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library aborts).
+///
+/// # Safety
+/// `path` readable up to its NUL or 256 bytes; `data` `len` readable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrpdf_line(
+    FlibHndl: c_ushort,
+    path: *mut c_char,
+    line_no: c_ulong,
+    data: *mut c_char,
+    len: c_ulong,
+) -> c_short {
+    ffi_boundary!("cnc_wrpdf_line", {
+        let n = usize::try_from(len as u32)
+            .ok()
+            .filter(|n| *n <= i32::MAX as usize);
+        let n = n.ok_or(crate::error::Error::local(
+            crate::ew::EW_LENGTH,
+            "len too large",
+        ))?;
+        unsafe {
+            pdf(
+                FlibHndl,
+                pp::PDF_WRLINE,
+                &[line_no as i32],
+                &[(path, 256), (data, n)],
+            )
+        }
+        .map(drop)
     })
 }

@@ -37,6 +37,12 @@ pub const PDF_RDMAIN: u16 = 0x00b9;
 pub const PDF_SLCTMAIN: u16 = 0x00ba;
 pub const PDF_COPY: u16 = 0x0188;
 pub const PDF_MOVE: u16 = 0x0189;
+pub const PDF_RDLINE: u16 = 0x00f0;
+pub const PDF_WRLINE: u16 = 0x00f1;
+pub const PDF_DELLINE: u16 = 0x00f2;
+pub const PDF_DELALL: u16 = 0x00f3;
+pub const PDF_RDACTPT: u16 = 0x01ba;
+pub const PDF_WRACTPT: u16 = 0x01bb;
 /// cnc_rdproginfo: [`ProgInfo`].
 pub const RDPROGINFO: u16 = 0x0007;
 

@@ -46,6 +46,12 @@ impl Machine {
             pp::PDF_SLCTMAIN,
             pp::PDF_COPY,
             pp::PDF_MOVE,
+            pp::PDF_RDLINE,
+            pp::PDF_WRLINE,
+            pp::PDF_DELLINE,
+            pp::PDF_DELALL,
+            pp::PDF_RDACTPT,
+            pp::PDF_WRACTPT,
         ];
         if sub.class != CLASS_CNC || !cmds.contains(&sub.cmd) {
             return None;
@@ -55,17 +61,70 @@ impl Machine {
             field(p.get(..256).unwrap_or(p)),
             field(p.get(256..).unwrap_or(&[])),
         );
-        Some(self.folder_answer(sub.cmd, sub.path, sub.args[0], &a, &b))
+        if [
+            pp::PDF_RDLINE,
+            pp::PDF_WRLINE,
+            pp::PDF_DELLINE,
+            pp::PDF_DELALL,
+        ]
+        .contains(&sub.cmd)
+        {
+            return Some(self.line_answer(sub, &a));
+        }
+        Some(self.folder_answer(sub.cmd, sub.path, sub.args, &a, &b))
+    }
+
+    /// The line commands on a program ("<folder>O<n>"): read `args[1]`
+    /// lines from line `args[0]` (1 the first), write the bytes after the
+    /// name after line `args[0]`, delete `args[1]` lines from line
+    /// `args[0]`; and delete all of a path's folder.
+    fn line_answer(&mut self, sub: &ReqSub, name: &str) -> Reply<Vec<u8>> {
+        let today = self.today();
+        let paths = self.run.len() as u16;
+        let st = &mut self.store;
+        let (from, n) = (sub.args[0].max(0) as usize, sub.args[1].max(0) as usize);
+        let at = from.saturating_sub(1);
+        let (folder, prog) = st.locate(name)?;
+        if sub.cmd == pp::PDF_DELALL {
+            let p = (1..=paths).find(|n| folder == format!("//CNC_MEM/USER/PATH{n}/"));
+            return st
+                .remove_all(p.ok_or(CncError::new(ew::EW_DATA))?)
+                .map(|_| Vec::new());
+        }
+        let (p, number) = prog.ok_or(CncError::new(ew::EW_DATA))?;
+        match sub.cmd {
+            pp::PDF_RDLINE => {
+                let text = st.path(p)?.find(number)?.text.clone();
+                let lines = text.split_inclusive('\n').skip(at).take(n);
+                Ok(lines.collect::<String>().into_bytes())
+            }
+            pp::PDF_WRLINE => {
+                let add = sub.payload.get(256..).unwrap_or(&[]);
+                let add = String::from_utf8_lossy(add).into_owned();
+                st.edit_lines(p, number, today, |l| {
+                    let at = from.min(l.len());
+                    l.splice(at..at, add.lines().map(String::from));
+                })
+                .map(|()| Vec::new())
+            }
+            _ => st
+                .edit_lines(p, number, today, |l| {
+                    let end = (at + n).min(l.len());
+                    l.drain(at.min(end)..end);
+                })
+                .map(|()| Vec::new()),
+        }
     }
 
     fn folder_answer(
         &mut self,
         cmd: u16,
         path: u16,
-        word: i32,
+        args: [i32; 5],
         a: &str,
         b: &str,
     ) -> Reply<Vec<u8>> {
+        let (word, block) = (args[0], args[1]);
         let today = self.today();
         let st = &mut self.store;
         let mut w = Writer::new();
@@ -142,6 +201,20 @@ impl Machine {
                     return err(ew::EW_DATA);
                 };
                 st.rename(p, n, to, today)?;
+            }
+            pp::PDF_RDACTPT => {
+                let (number, name) = self.shown_program(path)?;
+                let blk = self.run.get(usize::from(path) - 1).map_or(0, |r| r.block);
+                w.i32(blk as i32);
+                w.bytes(&name256(&format!("//CNC_MEM/USER/PATH{path}/{name}")));
+                let _ = number;
+            }
+            pp::PDF_WRACTPT => {
+                let (_, Some((p, n))) = self.store.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                self.store.path(p)?.find(n)?;
+                w.i32(block);
             }
             pp::PDF_RDMAIN => {
                 let main = st.path(path)?.main;

@@ -362,6 +362,30 @@ impl Store {
         self.insert(path, p)
     }
 
+    /// Program `number`'s lines as `f` changes them (modified `date`):
+    /// refused as [`Store::remove`], or EW_OVRFLOW when they do not fit.
+    pub fn edit_lines(
+        &mut self,
+        path: u16,
+        number: i32,
+        date: Date,
+        f: impl FnOnce(&mut Vec<String>),
+    ) -> Reply<()> {
+        let s = self.path(path)?;
+        let old = s.editable(number)?;
+        let mut lines: Vec<String> = old.text.lines().map(String::from).collect();
+        f(&mut lines);
+        let mut p = old.clone();
+        (p.text, p.modified) = ((lines.join("\n") + "\n").into(), date);
+        if s.used() - old.size() + p.size() > s.capacity {
+            return err(ew::EW_OVRFLOW);
+        }
+        let s = self.path_mut(path)?;
+        let at = s.programs.iter().position(|q| q.number == number);
+        s.programs[at.expect("editable")] = p;
+        Ok(())
+    }
+
     /// cnc_search: program `number` becomes the main program of `path`.
     /// No such program EW_DATA; the path executing a program EW_BUSY.
     pub fn select(&mut self, path: u16, number: i32) -> Reply<()> {

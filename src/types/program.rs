@@ -311,7 +311,6 @@ pub struct ODBPDFDRV {
     pub drive: [[c_char; 12]; 16],
 }
 
-
 /// cnc_rdpdf_inf: a drive's capacity and directories.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

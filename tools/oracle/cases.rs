@@ -300,6 +300,45 @@ const WORDS: &[Word] = &[
             "//CNC_MEM/USER/LIBRARY/|//CNC_MEM/USER/PATH1/|x",
         ],
     ),
+    w(
+        "pdf_delall",
+        &["1|0|2|-1|3", "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|x"],
+    ),
+    w(
+        "pdf_delline",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "2|0|1|5|-1",
+            "1|0|2|10|-1",
+        ],
+    ),
+    w("pdf_rdactpt", &["0|5|-1"]),
+    w(
+        "pdf_wractpt",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "0|1|2|-1",
+            "2|0|1|100|-1",
+        ],
+    ),
+    w(
+        "rdpdf_line",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "1|0|2|5|-1|100",
+            "3|0|1|10|-1",
+            "256|0|1|10|-1|4096",
+        ],
+    ),
+    w(
+        "wrpdf_line",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "2|0|1|100|-1",
+            "hex:4e353020473034583130",
+            "10|0|1|5|-1",
+        ],
+    ),
     // Alarms and messages.
     w("alarm", &[]),
     w("alarm2", &[]),

@@ -249,6 +249,16 @@ static short in_thread(void *(*f)(void *)) {
     WORD(pdf_rename, return F(cnc_pdf_rename)(H, argv_[1], argv_[2]))                             \
     WORD(pdf_copy, return F(cnc_pdf_copy)(H, argv_[1], argv_[2]))                                 \
     WORD(pdf_move, return F(cnc_pdf_move)(H, argv_[1], argv_[2]))                                 \
+    WORD(pdf_delall, return F(cnc_pdf_delall)(H, N(1), argv_[2]))                                 \
+    WORD(pdf_delline, return F(cnc_pdf_delline)(H, argv_[1], N(2), N(3)))                         \
+    WORD(pdf_rdactpt, LONG_IO(blk, 1, F(cnc_pdf_rdactpt)(H, B0, (long *)blk)))                    \
+    WORD(pdf_wractpt, LONG_IO(blk, 3, F(cnc_pdf_wractpt)(H, argv_[1], N(2), (long *)blk)))        \
+    WORD(rdpdf_line, { int32_t ln[2] = {(int32_t)N(3), (int32_t)0xCCCCCCCC};                      \
+                       int32_t dl[2] = {(int32_t)N(4), (int32_t)0xCCCCCCCC};                      \
+                       short r = F(cnc_rdpdf_line)(H, argv_[1], N(2), B0, (unsigned long *)ln,    \
+                                                   (unsigned long *)dl);                          \
+                       field("line_len", ln[0]); field("data_len", dl[0]); return r; })           \
+    WORD(wrpdf_line, { fill_hex(b1, 3); return F(cnc_wrpdf_line)(H, argv_[1], N(2), B1, N(4)); }) \
     /* alarm */                                                                                   \
     WORD(alarm, return F(cnc_alarm)(H, B0))                                                       \
     WORD(alarm2, return F(cnc_alarm2)(H, B0))                                                     \
