@@ -712,6 +712,42 @@ typedef struct ODBPARANUM {
 } ODBPARANUM;
 
 /*
+ cnc_rdpdf_alldir input: the folder, the first entry, size and format kinds.
+ */
+typedef struct IDBPDFADIR {
+    char path[212];
+    short req_num;
+    short size_kind;
+    short type;
+    short dummy;
+} IDBPDFADIR;
+
+/*
+ FANUC's ULONG: 32 bits on every platform.
+ */
+typedef uint32_t ULONG;
+
+/*
+ cnc_rdpdf_alldir output: one folder or program.
+ */
+typedef struct ODBPDFADIR {
+    short data_kind;
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    short dummy;
+    LONG dummy2;
+    LONG size;
+    ULONG attr;
+    char d_f[36];
+    char comment[52];
+    char o_time[12];
+} ODBPDFADIR;
+
+/*
  cnc_rdpdf_drive: the program drives ("CNC_MEM" ...).
  */
 typedef struct ODBPDFDRV {
@@ -729,6 +765,24 @@ typedef struct ODBPDFINF {
     LONG used_dir;
     LONG all_dir;
 } ODBPDFINF;
+
+/*
+ cnc_rdpdf_subdir input: the folder and the first entry wanted.
+ */
+typedef struct IDBPDFSDIR {
+    char path[212];
+    short req_num;
+    short dummy;
+} IDBPDFSDIR;
+
+/*
+ cnc_rdpdf_subdir output: one sub-folder.
+ */
+typedef struct ODBPDFSDIR {
+    short sub_exist;
+    short dummy;
+    char d_f[36];
+} ODBPDFSDIR;
 
 /*
  cnc_rdpdf_subdirn: directories and files a directory holds.
@@ -1261,11 +1315,6 @@ typedef struct IODBPMC {
     short datano_e;
     union IODBPMC_u u;
 } IODBPMC;
-
-/*
- FANUC's ULONG: 32 bits on every platform.
- */
-typedef uint32_t ULONG;
 
 #ifdef __cplusplus
 extern "C" {
@@ -2106,6 +2155,21 @@ short cnc_rdparar(unsigned short FlibHndl,
                   void *param);
 
 /*
+ Reads up to `*num` folders and programs of `in->path` from entry
+ `in->req_num` (at most 20 asked per call, as FANUC's library asks):
+ 128-byte records: kind and date (7 shorts), 6 bytes not read, size,
+ attribute, then name, comment and machining time stamp as they are
+ (`dummy`, `dummy2` not written); `*num` = read.
+
+ # Safety
+ `num` readable and writable, `inp` readable, `out` `*num` writable records.
+ */
+short cnc_rdpdf_alldir(unsigned short FlibHndl,
+                       short *num,
+                       struct IDBPDFADIR *inp,
+                       struct ODBPDFADIR *out);
+
+/*
  Reads the current directory of `type` (1 foreground, 2 background).
 
  # Safety
@@ -2146,6 +2210,19 @@ short cnc_rdpdf_line(unsigned short FlibHndl,
                      char *data,
                      unsigned long *line_len,
                      unsigned long *data_len);
+
+/*
+ Reads up to `*num` sub-folders of `in->path` from entry `in->req_num`
+ (at most 72 asked per call, as FANUC's library asks); `*num` = read
+ (none: the first `sub_exist` is set to 0, as FANUC's library does).
+
+ # Safety
+ `num` readable and writable, `inp` readable, `out` `*num` writable records.
+ */
+short cnc_rdpdf_subdir(unsigned short FlibHndl,
+                       short *num,
+                       struct IDBPDFSDIR *inp,
+                       struct ODBPDFSDIR *out);
 
 /*
  Reads how many directories and files a directory holds.

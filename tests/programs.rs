@@ -399,3 +399,54 @@ fn lines_of_a_program_are_edited_in_place() {
     );
     assert_eq!(numbers(h), vec![500]);
 }
+
+#[test]
+fn directory_lists_show_folders_and_programs() {
+    let (_s, h) = sim::start_alloc(idle());
+    let mut inp: IDBPDFADIR = unsafe { std::mem::zeroed() };
+    for (d, c) in inp.path.iter_mut().zip(P1.bytes()) {
+        *d = c as c_char;
+    }
+    let mut out: [ODBPDFADIR; 8] = unsafe { std::mem::zeroed() };
+    let mut n: c_short = 8;
+    assert_eq!(
+        unsafe { cnc_rdpdf_alldir(h, &mut n, &mut inp, out.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!(n, 3);
+    let name = |d: &[c_char]| -> String {
+        d.iter()
+            .take_while(|&&c| c != 0)
+            .map(|&c| c as u8 as char)
+            .collect()
+    };
+    let got: Vec<(c_short, String, i32)> = out[..3]
+        .iter()
+        .map(|e| (e.data_kind, name(&e.d_f), e.size))
+        .collect();
+    assert_eq!(
+        got.iter().map(|g| g.1.as_str()).collect::<Vec<_>>(),
+        ["O0100", "O0500", "O1234"]
+    );
+    assert_eq!(got[0].2, dir(h)[0].1, "the size cnc_rdprogdir3 reports");
+    assert_eq!(name(&out[0].comment), "(WARM UP)");
+
+    let mut sin: IDBPDFSDIR = unsafe { std::mem::zeroed() };
+    for (d, c) in sin.path.iter_mut().zip("//CNC_MEM/USER/".bytes()) {
+        *d = c as c_char;
+    }
+    assert_eq!(on(cnc_pdf_add, h, "//CNC_MEM/USER/JOBS/"), EW_OK);
+    let mut sub: [ODBPDFSDIR; 8] = unsafe { std::mem::zeroed() };
+    let mut n: c_short = 8;
+    assert_eq!(
+        unsafe { cnc_rdpdf_subdir(h, &mut n, &mut sin, sub.as_mut_ptr()) },
+        EW_OK
+    );
+    let names: Vec<String> = sub[..n as usize].iter().map(|s| name(&s.d_f)).collect();
+    assert_eq!(names, ["LIBRARY", "PATH1", "JOBS"]);
+    let mut n: c_short = 0;
+    assert_eq!(
+        unsafe { cnc_rdpdf_subdir(h, &mut n, &mut sin, sub.as_mut_ptr()) },
+        EW_LENGTH
+    );
+}

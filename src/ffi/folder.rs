@@ -10,7 +10,9 @@ use crate::proto::call::Single;
 use crate::proto::packet::ReqSub;
 use crate::proto::program::{self as pp, PathName};
 use crate::proto::wire::{Reader, Wire};
-use crate::types::{ODBPDFDRV, ODBPDFINF, ODBPDFNFIL};
+use crate::types::{
+    IDBPDFADIR, IDBPDFSDIR, ODBPDFADIR, ODBPDFDRV, ODBPDFINF, ODBPDFNFIL, ODBPDFSDIR,
+};
 use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// Sends folder command `cmd` with `words` and the strings, each as a field
@@ -450,5 +452,128 @@ pub unsafe extern "C" fn cnc_wrpdf_line(
             )
         }
         .map(drop)
+    })
+}
+
+/// Sends a directory read (cmd, words, the 212-byte path field as a
+/// 256-byte one) and gives the answer's whole `size`-byte records, at most
+/// `*num` of them; `*num` ≤ 0: EW_LENGTH without traffic.
+unsafe fn dir_records(
+    h: c_ushort,
+    cmd: u16,
+    num: *mut c_short,
+    path: &[c_char; 212],
+    words: &[i32],
+    size: usize,
+) -> Result<Vec<Vec<u8>>> {
+    let want = unsafe { nonnull(num)?.read_unaligned() };
+    if want <= 0 {
+        return Err(crate::error::Error::local(
+            crate::ew::EW_LENGTH,
+            "*num must be at least 1",
+        ));
+    }
+    let mut field: Vec<u8> = path
+        .iter()
+        .map(|&c| c as u8)
+        .take_while(|&c| c != 0)
+        .collect();
+    field.resize(256, 0);
+    let b = unsafe { pdf_with(h, cmd, words, &[], &field) }?;
+    let recs: Vec<Vec<u8>> = b
+        .chunks_exact(size)
+        .take(want as usize)
+        .map(<[u8]>::to_vec)
+        .collect();
+    unsafe { put(num, recs.len() as c_short) };
+    Ok(recs)
+}
+
+/// Reads up to `*num` sub-folders of `in->path` from entry `in->req_num`
+/// (at most 72 asked per call, as FANUC's library asks); `*num` = read
+/// (none: the first `sub_exist` is set to 0, as FANUC's library does).
+///
+/// # Safety
+/// `num` readable and writable, `inp` readable, `out` `*num` writable records.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_subdir(
+    FlibHndl: c_ushort,
+    num: *mut c_short,
+    inp: *mut IDBPDFSDIR,
+    out: *mut ODBPDFSDIR,
+) -> c_short {
+    ffi_boundary!("cnc_rdpdf_subdir", {
+        let (i, o) = (
+            unsafe { nonnull(inp)?.read_unaligned() },
+            nonnull(out)?.cast::<u8>(),
+        );
+        let n = unsafe { nonnull(num)?.read_unaligned() }.min(72);
+        let w = [i.req_num.into(), n.into()];
+        let recs = unsafe { dir_records(FlibHndl, pp::PDF_SUBDIR, num, &i.path, &w, 40) }?;
+        if recs.is_empty() {
+            // FANUC's library writes the first sub_exist (0) whatever came.
+            unsafe { put(o.cast::<i16>(), 0) };
+        }
+        for (k, r) in recs.iter().enumerate() {
+            let at = unsafe { o.add(k * std::mem::size_of::<ODBPDFSDIR>()) };
+            unsafe {
+                put(
+                    at.cast::<i16>(),
+                    i32::from_be_bytes(r[..4].try_into().expect("4")) as i16,
+                );
+                put(
+                    at.add(4).cast::<[u8; 36]>(),
+                    r[4..40].try_into().expect("36"),
+                );
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Reads up to `*num` folders and programs of `in->path` from entry
+/// `in->req_num` (at most 20 asked per call, as FANUC's library asks):
+/// 128-byte records: kind and date (7 shorts), 6 bytes not read, size,
+/// attribute, then name, comment and machining time stamp as they are
+/// (`dummy`, `dummy2` not written); `*num` = read.
+///
+/// # Safety
+/// `num` readable and writable, `inp` readable, `out` `*num` writable records.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpdf_alldir(
+    FlibHndl: c_ushort,
+    num: *mut c_short,
+    inp: *mut IDBPDFADIR,
+    out: *mut ODBPDFADIR,
+) -> c_short {
+    ffi_boundary!("cnc_rdpdf_alldir", {
+        let (i, o) = (
+            unsafe { nonnull(inp)?.read_unaligned() },
+            nonnull(out)?.cast::<u8>(),
+        );
+        let n = unsafe { nonnull(num)?.read_unaligned() }.min(20);
+        let w = [
+            i.req_num.into(),
+            n.into(),
+            i.r#type.into(),
+            i.size_kind.into(),
+        ];
+        for (k, r) in unsafe { dir_records(FlibHndl, pp::PDF_ALLDIR, num, &i.path, &w, 128) }?
+            .iter()
+            .enumerate()
+        {
+            let at = unsafe { o.add(k * std::mem::size_of::<ODBPDFADIR>()) };
+            let be16 = |x: usize| i16::from_be_bytes([r[x], r[x + 1]]);
+            let be32 = |x: usize| i32::from_be_bytes(r[x..x + 4].try_into().expect("4"));
+            unsafe {
+                for f in 0..7 {
+                    put(at.add(2 * f).cast::<i16>(), be16(2 * f));
+                }
+                put(at.add(20).cast::<i32>(), be32(20));
+                put(at.add(24).cast::<i32>(), be32(24));
+                std::ptr::copy_nonoverlapping(r[28..].as_ptr(), at.add(28), 100);
+            }
+        }
+        Ok(())
     })
 }

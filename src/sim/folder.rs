@@ -46,6 +46,8 @@ impl Machine {
             pp::PDF_SLCTMAIN,
             pp::PDF_COPY,
             pp::PDF_MOVE,
+            pp::PDF_SUBDIR,
+            pp::PDF_ALLDIR,
             pp::PDF_RDLINE,
             pp::PDF_WRLINE,
             pp::PDF_DELLINE,
@@ -201,6 +203,64 @@ impl Machine {
                     return err(ew::EW_DATA);
                 };
                 st.rename(p, n, to, today)?;
+            }
+            pp::PDF_SUBDIR | pp::PDF_ALLDIR => {
+                let (f, None) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                let (from, n) = (word.max(0) as usize, block.max(0) as usize);
+                let subs: Vec<&String> = st
+                    .folders
+                    .iter()
+                    .filter(|g| {
+                        g.strip_prefix(f.as_str())
+                            .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
+                    })
+                    .collect();
+                let path =
+                    (1..=self.run.len() as u16).find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"));
+                let progs: Vec<&Program> = path.map_or(Vec::new(), |p| st.iter(p).collect());
+                let fixed = |s: &str, n: usize| {
+                    let mut b = s.as_bytes()[..s.len().min(n - 1)].to_vec();
+                    b.resize(n, 0);
+                    b
+                };
+                let leaf = |g: &String| g[f.len()..g.len() - 1].to_string();
+                if cmd == pp::PDF_SUBDIR {
+                    for g in subs.iter().skip(from).take(n) {
+                        w.i32(i32::from(
+                            st.folders
+                                .iter()
+                                .any(|h| h.len() > g.len() && h.starts_with(g.as_str())),
+                        ));
+                        w.bytes(&fixed(&leaf(g), 36));
+                    }
+                } else {
+                    let entries = subs
+                        .iter()
+                        .map(|g| (0, leaf(g), String::new(), [0u16; 5], 0))
+                        .chain(progs.iter().map(|p| {
+                            (
+                                1,
+                                p.display_name(),
+                                format!("({})", p.comment),
+                                p.modified,
+                                p.size(),
+                            )
+                        }));
+                    for (kind, name, comment, d, size) in entries.skip(from).take(n) {
+                        w.i16(kind);
+                        for v in d {
+                            w.i16(v as i16);
+                        }
+                        w.bytes(&[0; 8]);
+                        w.i32(size as i32);
+                        w.i32(0);
+                        w.bytes(&fixed(&name, 36));
+                        w.bytes(&fixed(if kind == 1 { &comment } else { "" }, 52));
+                        w.bytes(&[0; 12]);
+                    }
+                }
             }
             pp::PDF_RDACTPT => {
                 let (number, name) = self.shown_program(path)?;

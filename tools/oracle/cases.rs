@@ -301,6 +301,24 @@ const WORDS: &[Word] = &[
         ],
     ),
     w(
+        "rdpdf_subdir",
+        &[
+            "10|0|1|2|-1|100",
+            "//CNC_MEM/USER/|//CNC_MEM/|//CNC_MEM/USER/PATH1/|x",
+            "0|1|2|-1|5",
+        ],
+    ),
+    w(
+        "rdpdf_alldir",
+        &[
+            "10|0|1|2|-1|100",
+            "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|x",
+            "0|1|2|-1|5",
+            "1|0|2|-1",
+            "1|0|2|-1",
+        ],
+    ),
+    w(
         "pdf_delall",
         &["1|0|2|-1|3", "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|x"],
     ),

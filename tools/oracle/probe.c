@@ -249,6 +249,15 @@ static short in_thread(void *(*f)(void *)) {
     WORD(pdf_rename, return F(cnc_pdf_rename)(H, argv_[1], argv_[2]))                             \
     WORD(pdf_copy, return F(cnc_pdf_copy)(H, argv_[1], argv_[2]))                                 \
     WORD(pdf_move, return F(cnc_pdf_move)(H, argv_[1], argv_[2]))                                 \
+    WORD(rdpdf_subdir, { short n = N(1); IDBPDFSDIR in; memset(&in, 0, sizeof in);                \
+                         strncpy(in.path, argv_[2], sizeof in.path - 1); in.req_num = N(3);       \
+                         short r = F(cnc_rdpdf_subdir)(H, &n, &in, B0); field("num", n);          \
+                         return r; })                                                             \
+    WORD(rdpdf_alldir, { short n = N(1); IDBPDFADIR in; memset(&in, 0, sizeof in);                \
+                         strncpy(in.path, argv_[2], sizeof in.path - 1); in.req_num = N(3);       \
+                         in.size_kind = N(4); in.type = N(5);                                     \
+                         short r = F(cnc_rdpdf_alldir)(H, &n, &in, B0); field("num", n);          \
+                         return r; })                                                             \
     WORD(pdf_delall, return F(cnc_pdf_delall)(H, N(1), argv_[2]))                                 \
     WORD(pdf_delline, return F(cnc_pdf_delline)(H, argv_[1], N(2), N(3)))                         \
     WORD(pdf_rdactpt, LONG_IO(blk, 1, F(cnc_pdf_rdactpt)(H, B0, (long *)blk)))                    \
