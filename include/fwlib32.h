@@ -712,6 +712,87 @@ typedef struct ODBPARANUM {
 } ODBPARANUM;
 
 /*
+ cnc_rdpdf_alldir input: the folder, the first entry, size and format kinds.
+ */
+typedef struct IDBPDFADIR {
+    char path[212];
+    short req_num;
+    short size_kind;
+    short type;
+    short dummy;
+} IDBPDFADIR;
+
+/*
+ FANUC's ULONG: 32 bits on every platform.
+ */
+typedef uint32_t ULONG;
+
+/*
+ cnc_rdpdf_alldir output: one folder or program.
+ */
+typedef struct ODBPDFADIR {
+    short data_kind;
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    short dummy;
+    LONG dummy2;
+    LONG size;
+    ULONG attr;
+    char d_f[36];
+    char comment[52];
+    char o_time[12];
+} ODBPDFADIR;
+
+/*
+ cnc_rdpdf_drive: the program drives ("CNC_MEM" ...).
+ */
+typedef struct ODBPDFDRV {
+    short max_num;
+    short dummy;
+    char drive[16][12];
+} ODBPDFDRV;
+
+/*
+ cnc_rdpdf_inf: a drive's capacity and directories.
+ */
+typedef struct ODBPDFINF {
+    LONG used_page;
+    LONG all_page;
+    LONG used_dir;
+    LONG all_dir;
+} ODBPDFINF;
+
+/*
+ cnc_rdpdf_subdir input: the folder and the first entry wanted.
+ */
+typedef struct IDBPDFSDIR {
+    char path[212];
+    short req_num;
+    short dummy;
+} IDBPDFSDIR;
+
+/*
+ cnc_rdpdf_subdir output: one sub-folder.
+ */
+typedef struct ODBPDFSDIR {
+    short sub_exist;
+    short dummy;
+    char d_f[36];
+} ODBPDFSDIR;
+
+/*
+ cnc_rdpdf_subdirn: directories and files a directory holds.
+ */
+typedef struct ODBPDFNFIL {
+    short dir_num;
+    short file_num;
+} ODBPDFNFIL;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -1235,11 +1316,6 @@ typedef struct IODBPMC {
     union IODBPMC_u u;
 } IODBPMC;
 
-/*
- FANUC's ULONG: 32 bits on every platform.
- */
-typedef uint32_t ULONG;
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1600,6 +1676,100 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
 short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
 
 /*
+ Creates a program or (a name ending in '/') a folder.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_add(unsigned short FlibHndl, char *path);
+
+/*
+ Copies a program (`to`: a program or a folder).
+
+ # Safety
+ Both names must be readable up to their NUL or field size.
+ */
+short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Deletes a program or an empty folder.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_del(unsigned short FlibHndl, char *path);
+
+/*
+ Deletes every program of a folder (`type` as FANUC's: sent after a 1).
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_delall(unsigned short FlibHndl, short type, char *path);
+
+/*
+ Deletes `count` lines of a program from line `line_no`.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_delline(unsigned short FlibHndl,
+                      char *path,
+                      unsigned long line_no,
+                      unsigned long count);
+
+/*
+ Moves a program (`to`: a program or a folder).
+
+ # Safety
+ Both names must be readable up to their NUL or field size.
+ */
+short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Reads the execution pointer: the program's path name (the answer's
+ bytes after the block, at most 256) and its block.
+
+ # Safety
+ `path` must have 256 writable bytes, `block` 4.
+ */
+short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
+
+/*
+ Reads the main program's path name.
+
+ # Safety
+ `path_name` must have 256 writable bytes.
+ */
+short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
+
+/*
+ Renames a program or folder (`to`: the new name, 36 bytes sent).
+
+ # Safety
+ Both names must be readable up to their NUL or field size.
+ */
+short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Selects a program as the main program.
+
+ # Safety
+ `path` must be readable up to its NUL or 256 bytes.
+ */
+short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
+
+/*
+ Sets the execution pointer to block `*block` of a program (the name
+ goes with its NUL, as FANUC's library sends it); `*block` is then the
+ block the CNC answers (0 for an empty answer).
+
+ # Safety
+ `path` readable up to its NUL, `block` 4 readable bytes.
+ */
+short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *block);
+
+/*
  Reads the execution pointer: program number and block number (4 bytes
  written into each `long`).
 
@@ -1939,9 +2109,9 @@ short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
 short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
 
 /*
- Reads the MDI program's text: at most `*length` bytes into `data`,
- `*length` set to the bytes written. A negative `*length`: EW_LENGTH
- after the exchange, as FANUC's library.
+ Reads the MDI program's text into `data` (no NUL), `*length` set to its
+ length. A text longer than `*length`: EW_LENGTH after the exchange,
+ nothing written, as FANUC's library.
 
  # Safety
  `length` readable and writable; `data` must have `*length` writable bytes.
@@ -2090,6 +2260,84 @@ short cnc_rdparar(unsigned short FlibHndl,
                   short *e_number,
                   short *length,
                   void *param);
+
+/*
+ Reads up to `*num` folders and programs of `in->path` from entry
+ `in->req_num` (at most 20 asked per call, as FANUC's library asks):
+ 128-byte records: kind and date (7 shorts), 6 bytes not read, size,
+ attribute, then name, comment and machining time stamp as they are
+ (`dummy`, `dummy2` not written); `*num` = read.
+
+ # Safety
+ `num` readable and writable, `inp` readable, `out` `*num` writable records.
+ */
+short cnc_rdpdf_alldir(unsigned short FlibHndl,
+                       short *num,
+                       struct IDBPDFADIR *inp,
+                       struct ODBPDFADIR *out);
+
+/*
+ Reads the current directory of `type` (1 foreground, 2 background).
+
+ # Safety
+ `dir_name` must have 256 writable bytes.
+ */
+short cnc_rdpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
+
+/*
+ Reads the program drives ("CNC_MEM" ...): their number and names (the
+ answer is the names, 12 bytes each).
+
+ # Safety
+ `drive` must point to a writable ODBPDFDRV.
+ */
+short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
+
+/*
+ Reads a drive's used and total capacity and directories.
+
+ # Safety
+ `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
+ */
+short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct ODBPDFINF *inf);
+
+/*
+ Reads `*line_len` lines of a program from line `line_no` into `data`:
+ the answer up to its first '%', at most `*data_len` bytes; out: the
+ bytes and the whole lines read (line ends and the '%'), as FANUC's
+ library counts them.
+
+ # Safety
+ `line_len`, `data_len` 4 readable and writable bytes each; `data` must
+ have `*data_len` writable bytes.
+ */
+short cnc_rdpdf_line(unsigned short FlibHndl,
+                     char *path,
+                     unsigned long line_no,
+                     char *data,
+                     unsigned long *line_len,
+                     unsigned long *data_len);
+
+/*
+ Reads up to `*num` sub-folders of `in->path` from entry `in->req_num`
+ (at most 72 asked per call, as FANUC's library asks); `*num` = read
+ (none: the first `sub_exist` is set to 0, as FANUC's library does).
+
+ # Safety
+ `num` readable and writable, `inp` readable, `out` `*num` writable records.
+ */
+short cnc_rdpdf_subdir(unsigned short FlibHndl,
+                       short *num,
+                       struct IDBPDFSDIR *inp,
+                       struct ODBPDFSDIR *out);
+
+/*
+ Reads how many directories and files a directory holds.
+
+ # Safety
+ `path` readable; `num_fil` a writable ODBPDFNFIL.
+ */
+short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *num_fil);
 
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,
@@ -2753,6 +3001,27 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
  `param` must point to `length` readable bytes.
  */
 short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
+
+/*
+ Sets the current directory of `type`.
+
+ # Safety
+ `dir_name` readable.
+ */
+short cnc_wrpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
+
+/*
+ Writes `len` bytes of lines into a program after line `line_no`.
+ `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library aborts).
+
+ # Safety
+ `path` readable up to its NUL or 256 bytes; `data` `len` readable bytes.
+ */
+short cnc_wrpdf_line(unsigned short FlibHndl,
+                     char *path,
+                     unsigned long line_no,
+                     char *data,
+                     unsigned long len);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

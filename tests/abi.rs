@@ -328,6 +328,15 @@ rust_layouts! {
     PRGDIR2 { number, length, comment, dummy }
     ODBNC { u }
     ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
+    ODBPDFDRV { max_num, dummy, drive }
+    ODBPDFINF { used_page, all_page, used_dir, all_dir }
+    ODBPDFNFIL { dir_num, file_num }
+    IDBPDFSDIR { path, req_num, dummy }
+    ODBPDFSDIR { sub_exist, dummy, d_f }
+    IDBPDFADIR { path, req_num, size_kind, r#type, dummy }
+    ODBPDFADIR {
+        data_kind, year, mon, day, hour, min, sec, dummy, dummy2, size, attr, d_f, comment, o_time,
+    }
 
     // --- alarm ---
     ODBALM { dummy, data }

@@ -11,7 +11,7 @@ use fwlib32::sim::Profile;
 use fwlib32::sim::run::StoredProgram;
 use fwlib32::types::*;
 use fwlib32::*;
-use std::os::raw::{c_char, c_long, c_short, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// The built-in profile with path 1 idle (no program in cycle, none
 /// selected) and a protected O0500.
@@ -206,4 +206,247 @@ fn the_mdi_program_and_pointer_round_trip() {
     let mut p = ODBMDIP::default();
     assert_eq!(unsafe { cnc_rdmdipntr(h, &mut p) }, EW_OK);
     assert_eq!((p.mdipntr, p.crntpntr), (5, 5));
+}
+
+fn cs(s: &str) -> std::ffi::CString {
+    std::ffi::CString::new(s).unwrap()
+}
+
+/// A one-name folder function on `name`.
+fn on(
+    f: unsafe extern "C" fn(c_ushort, *mut c_char) -> c_short,
+    h: c_ushort,
+    name: &str,
+) -> c_short {
+    unsafe { f(h, cs(name).as_ptr().cast_mut()) }
+}
+
+type Two = unsafe extern "C" fn(c_ushort, *mut c_char, *mut c_char) -> c_short;
+
+fn two(f: Two, h: c_ushort, a: &str, b: &str) -> c_short {
+    unsafe { f(h, cs(a).as_ptr().cast_mut(), cs(b).as_ptr().cast_mut()) }
+}
+
+fn subdirn(h: c_ushort, dir: &str) -> (c_short, c_short) {
+    let mut n = ODBPDFNFIL::default();
+    let r = unsafe { cnc_rdpdf_subdirn(h, cs(dir).as_ptr().cast_mut(), &mut n) };
+    assert_eq!(r, EW_OK, "{dir}");
+    (n.dir_num, n.file_num)
+}
+
+fn name256(f: impl FnOnce(*mut c_char) -> c_short) -> String {
+    let mut b = [0 as c_char; 256];
+    assert_eq!(f(b.as_mut_ptr()), EW_OK);
+    let b: Vec<u8> = b
+        .iter()
+        .take_while(|&&c| c != 0)
+        .map(|&c| c as u8)
+        .collect();
+    String::from_utf8(b).unwrap()
+}
+
+const P1: &str = "//CNC_MEM/USER/PATH1/";
+
+#[test]
+fn folders_hold_the_store() {
+    let (_s, h) = sim::start_alloc(idle());
+    let mut drv = ODBPDFDRV::default();
+    assert_eq!(unsafe { cnc_rdpdf_drive(h, &mut drv) }, EW_OK);
+    assert_eq!(drv.max_num, 1);
+    assert_eq!(subdirn(h, "//CNC_MEM/USER/"), (2, 0), "LIBRARY and PATH1");
+    assert_eq!(subdirn(h, P1), (0, 3));
+    assert_eq!(on(cnc_pdf_add, h, "//CNC_MEM/USER/JOBS/"), EW_OK);
+    assert_eq!(
+        on(cnc_pdf_add, h, "//CNC_MEM/USER/JOBS/"),
+        EW_DATA,
+        "exists"
+    );
+    assert_eq!(
+        on(cnc_pdf_add, h, "//CNC_MEM/NONE/X/"),
+        EW_DATA,
+        "no parent"
+    );
+    assert_eq!(subdirn(h, "//CNC_MEM/USER/"), (3, 0));
+    assert_eq!(on(cnc_pdf_del, h, P1), EW_DATA, "the CNC's own folder");
+    assert_eq!(on(cnc_pdf_del, h, "//CNC_MEM/USER/JOBS/"), EW_OK);
+    // Programs: the path's store.
+    assert_eq!(on(cnc_pdf_add, h, &format!("{P1}O0042")), EW_OK);
+    assert_eq!(numbers(h), vec![42, 100, 500, 1234]);
+    assert_eq!(on(cnc_pdf_del, h, &format!("{P1}O0500")), EW_PROT);
+    assert_eq!(on(cnc_pdf_del, h, &format!("{P1}O0042")), EW_OK);
+    assert_eq!(
+        two(cnc_pdf_rename, h, &format!("{P1}O0100"), "O0200"),
+        EW_OK
+    );
+    assert_eq!(
+        two(cnc_pdf_copy, h, &format!("{P1}O0200"), P1),
+        EW_DATA,
+        "same number"
+    );
+    assert_eq!(
+        two(
+            cnc_pdf_copy,
+            h,
+            &format!("{P1}O0200"),
+            &format!("{P1}O0300")
+        ),
+        EW_OK
+    );
+    assert_eq!(
+        two(
+            cnc_pdf_move,
+            h,
+            &format!("{P1}O0300"),
+            &format!("{P1}O0400")
+        ),
+        EW_OK
+    );
+    assert_eq!(numbers(h), vec![200, 400, 500, 1234]);
+    assert!(upload(h, 400).unwrap().starts_with("%\nO0400 (WARM UP)"));
+    // Current folder and main program; a bare name is in the current folder.
+    let cur = |k: c_short| name256(|b| unsafe { cnc_rdpdf_curdir(h, k, b) });
+    assert_eq!(cur(1), P1);
+    assert_eq!(on(cnc_pdf_slctmain, h, "O0400"), EW_OK);
+    assert_eq!(
+        name256(|b| unsafe { cnc_pdf_rdmain(h, b) }),
+        format!("{P1}O0400")
+    );
+    let dir = cs("//CNC_MEM/USER/LIBRARY/");
+    assert_eq!(
+        unsafe { cnc_wrpdf_curdir(h, 2, dir.as_ptr().cast_mut()) },
+        EW_OK
+    );
+    assert_eq!(
+        (cur(1), cur(2)),
+        (P1.to_string(), "//CNC_MEM/USER/LIBRARY/".to_string())
+    );
+    assert_eq!(
+        unsafe { cnc_rdpdf_curdir(h, 3, [0 as c_char; 256].as_mut_ptr()) },
+        EW_ATTRIB
+    );
+}
+
+/// Lines `from..` (`lines` of them) of program `name`, by cnc_rdpdf_line.
+fn read_lines(h: c_ushort, name: &str, from: u32, lines: u32) -> String {
+    let mut buf = [0 as c_char; 512];
+    let (mut ll, mut dl): (c_ulong, c_ulong) = (lines as c_ulong, 512);
+    let p = cs(name);
+    let r = unsafe {
+        cnc_rdpdf_line(
+            h,
+            p.as_ptr().cast_mut(),
+            from as c_ulong,
+            buf.as_mut_ptr(),
+            &mut ll,
+            &mut dl,
+        )
+    };
+    assert_eq!(r, EW_OK);
+    buf[..dl as usize]
+        .iter()
+        .map(|&c| c as u8 as char)
+        .collect()
+}
+
+#[test]
+fn lines_of_a_program_are_edited_in_place() {
+    let (_s, h) = sim::start_alloc(idle());
+    let o100 = format!("{P1}O0100");
+    assert_eq!(
+        read_lines(h, &o100, 2, 2),
+        "N10 G91 G28 Z0.;\nN20 M03 S1000;\n"
+    );
+    let mut add = *b"N15 G04 X1.;\n";
+    let p = cs(&o100);
+    let r = unsafe {
+        cnc_wrpdf_line(
+            h,
+            p.as_ptr().cast_mut(),
+            2,
+            add.as_mut_ptr().cast(),
+            add.len() as c_ulong,
+        )
+    };
+    assert_eq!(r, EW_OK);
+    assert_eq!(
+        read_lines(h, &o100, 2, 3),
+        "N10 G91 G28 Z0.;\nN15 G04 X1.;\nN20 M03 S1000;\n"
+    );
+    assert_eq!(
+        unsafe { cnc_pdf_delline(h, p.as_ptr().cast_mut(), 3, 1) },
+        EW_OK
+    );
+    assert!(
+        upload(h, 100).unwrap().contains("Z0.\nN20 M03"),
+        "the upload sees the edit"
+    );
+    let keep = cs(&format!("{P1}O0500"));
+    assert_eq!(
+        unsafe { cnc_pdf_delline(h, keep.as_ptr().cast_mut(), 1, 1) },
+        EW_PROT
+    );
+    // Execution pointer on a program, then delete all (the protected one stays).
+    let mut blk: c_long = 3;
+    assert_eq!(
+        unsafe { cnc_pdf_wractpt(h, p.as_ptr().cast_mut(), 0, &mut blk) },
+        EW_OK
+    );
+    assert_eq!(blk, 3);
+    let dir = cs(P1);
+    assert_eq!(
+        unsafe { cnc_pdf_delall(h, 1, dir.as_ptr().cast_mut()) },
+        EW_OK
+    );
+    assert_eq!(numbers(h), vec![500]);
+}
+
+#[test]
+fn directory_lists_show_folders_and_programs() {
+    let (_s, h) = sim::start_alloc(idle());
+    let mut inp: IDBPDFADIR = unsafe { std::mem::zeroed() };
+    for (d, c) in inp.path.iter_mut().zip(P1.bytes()) {
+        *d = c as c_char;
+    }
+    let mut out: [ODBPDFADIR; 8] = unsafe { std::mem::zeroed() };
+    let mut n: c_short = 8;
+    assert_eq!(
+        unsafe { cnc_rdpdf_alldir(h, &mut n, &mut inp, out.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!(n, 3);
+    let name = |d: &[c_char]| -> String {
+        d.iter()
+            .take_while(|&&c| c != 0)
+            .map(|&c| c as u8 as char)
+            .collect()
+    };
+    let got: Vec<(c_short, String, i32)> = out[..3]
+        .iter()
+        .map(|e| (e.data_kind, name(&e.d_f), e.size))
+        .collect();
+    assert_eq!(
+        got.iter().map(|g| g.1.as_str()).collect::<Vec<_>>(),
+        ["O0100", "O0500", "O1234"]
+    );
+    assert_eq!(got[0].2, dir(h)[0].1, "the size cnc_rdprogdir3 reports");
+    assert_eq!(name(&out[0].comment), "(WARM UP)");
+
+    let mut sin: IDBPDFSDIR = unsafe { std::mem::zeroed() };
+    for (d, c) in sin.path.iter_mut().zip("//CNC_MEM/USER/".bytes()) {
+        *d = c as c_char;
+    }
+    assert_eq!(on(cnc_pdf_add, h, "//CNC_MEM/USER/JOBS/"), EW_OK);
+    let mut sub: [ODBPDFSDIR; 8] = unsafe { std::mem::zeroed() };
+    let mut n: c_short = 8;
+    assert_eq!(
+        unsafe { cnc_rdpdf_subdir(h, &mut n, &mut sin, sub.as_mut_ptr()) },
+        EW_OK
+    );
+    let names: Vec<String> = sub[..n as usize].iter().map(|s| name(&s.d_f)).collect();
+    assert_eq!(names, ["LIBRARY", "PATH1", "JOBS"]);
+    let mut n: c_short = 0;
+    assert_eq!(
+        unsafe { cnc_rdpdf_subdir(h, &mut n, &mut sin, sub.as_mut_ptr()) },
+        EW_LENGTH
+    );
 }

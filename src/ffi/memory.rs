@@ -72,9 +72,9 @@ pub unsafe extern "C" fn cnc_rdprogdir2(
     })
 }
 
-/// Reads the MDI program's text: at most `*length` bytes into `data`,
-/// `*length` set to the bytes written. A negative `*length`: EW_LENGTH
-/// after the exchange, as FANUC's library.
+/// Reads the MDI program's text into `data` (no NUL), `*length` set to its
+/// length. A text longer than `*length`: EW_LENGTH after the exchange,
+/// nothing written, as FANUC's library.
 ///
 /// # Safety
 /// `length` readable and writable; `data` must have `*length` writable bytes.
@@ -90,14 +90,15 @@ pub unsafe extern "C" fn cnc_rdmdiprog(
         let text = h
             .call(&Single::<PathName>::new(ReqSub::cnc(RDMDIPROG, &[])))?
             .0;
-        let want = unsafe { len.read_unaligned() };
-        if want < 0 {
-            return Err(Error::local(EW_LENGTH, "*length must not be negative"));
+        if i64::from(unsafe { len.read_unaligned() }) < text.len() as i64 {
+            return Err(Error::local(
+                EW_LENGTH,
+                "the MDI program is longer than *length",
+            ));
         }
-        let n = text.len().min(want as usize);
         unsafe {
-            std::ptr::copy_nonoverlapping(text.as_ptr(), out, n);
-            put(len, n as c_short);
+            std::ptr::copy_nonoverlapping(text.as_ptr(), out, text.len());
+            put(len, text.len() as c_short);
         }
         Ok(())
     })

@@ -7,6 +7,7 @@ pub mod described;
 pub mod download;
 pub mod exports;
 pub mod ext;
+pub mod folder;
 pub mod handle;
 pub mod macros;
 pub mod memory;

@@ -24,6 +24,27 @@ pub const RDPROGDIR: u16 = 0x0006;
 /// text as the request's payload).
 pub const RDMDIPROG: u16 = 0x0036;
 pub const WRMDIPROG: u16 = 0x0037;
+/// Program data folder commands (30i; src/ffi/folder.rs).
+pub const PDF_DRIVE: u16 = 0x00ae;
+pub const PDF_INF: u16 = 0x00af;
+pub const PDF_RDCURDIR: u16 = 0x00b0;
+pub const PDF_WRCURDIR: u16 = 0x00b1;
+pub const PDF_SUBDIRN: u16 = 0x00b4;
+pub const PDF_ADD: u16 = 0x00b5;
+pub const PDF_DEL: u16 = 0x00b6;
+pub const PDF_RENAME: u16 = 0x00b7;
+pub const PDF_RDMAIN: u16 = 0x00b9;
+pub const PDF_SLCTMAIN: u16 = 0x00ba;
+pub const PDF_COPY: u16 = 0x0188;
+pub const PDF_MOVE: u16 = 0x0189;
+pub const PDF_SUBDIR: u16 = 0x00b2;
+pub const PDF_ALLDIR: u16 = 0x00b3;
+pub const PDF_RDLINE: u16 = 0x00f0;
+pub const PDF_WRLINE: u16 = 0x00f1;
+pub const PDF_DELLINE: u16 = 0x00f2;
+pub const PDF_DELALL: u16 = 0x00f3;
+pub const PDF_RDACTPT: u16 = 0x01ba;
+pub const PDF_WRACTPT: u16 = 0x01bb;
 /// cnc_rdproginfo: [`ProgInfo`].
 pub const RDPROGINFO: u16 = 0x0007;
 

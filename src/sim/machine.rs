@@ -524,7 +524,7 @@ impl CncService for Machine {
     }
 
     fn raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
-        self.memory_raw(sub)
+        self.memory_raw(sub).or_else(|| self.folder_raw(sub))
     }
 
     // --- upload ---

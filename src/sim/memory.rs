@@ -4,8 +4,7 @@
 //! EW_BUSY, EW_OVRFLOW) and change nothing.
 
 use super::Machine;
-use super::service::{CncError, Reply};
-use crate::ew;
+use super::service::Reply;
 use crate::proto::packet::{CLASS_CNC, ReqSub};
 use crate::proto::program::{ProgInfo, RDMDIPROG, RDPROGINFO, WRMDIPROG};
 use crate::proto::wire::Wire;
@@ -41,32 +40,28 @@ impl Machine {
 
     /// The program commands answered as bytes: memory information
     /// (cnc_rdproginfo), the MDI program's text (cnc_rdmdiprog), a new one
-    /// (cnc_wrmdiprog; EW_BUSY while the path executes a program).
+    /// (cnc_wrmdiprog, in any mode: the MDI program is not in the store).
     pub(crate) fn memory_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
         if sub.class != CLASS_CNC || ![RDMDIPROG, WRMDIPROG, RDPROGINFO].contains(&sub.cmd) {
             return None;
         }
-        Some(self.store.path_mut(sub.path).and_then(|s| {
+        Some(self.store.path_mut(sub.path).map(|s| {
             let (n, used) = (s.count(), s.used());
             let left = |max: usize, used: usize| max.saturating_sub(used) as i32;
             match sub.cmd {
-                RDMDIPROG => return Ok(s.mdi.clone()),
-                RDPROGINFO => {
-                    let i = ProgInfo {
-                        reg_prg: n as i32,
-                        unreg_prg: left(s.max_programs, n),
-                        used_mem: used as i32,
-                        unused_mem: left(s.capacity, used),
-                    };
-                    return Ok(i.to_bytes());
+                RDMDIPROG => s.mdi.clone(),
+                RDPROGINFO => ProgInfo {
+                    reg_prg: n as i32,
+                    unreg_prg: left(s.max_programs, n),
+                    used_mem: used as i32,
+                    unused_mem: left(s.capacity, used),
                 }
-                _ => {}
+                .to_bytes(),
+                _ => {
+                    s.mdi = sub.payload.clone();
+                    Vec::new()
+                }
             }
-            if s.running != 0 {
-                return Err(CncError::new(ew::EW_BUSY));
-            }
-            s.mdi = sub.payload.clone();
-            Ok(Vec::new())
         }))
     }
 }

@@ -6,7 +6,7 @@
 //! service (the CncService trait, errors) and pmc → profile (pure data,
 //! with its sections in profile/) → store (program memory) → run (the [`Machine`] and its live
 //! state) → the areas adding methods to it (param, macros, offset,
-//! program, memory, position, history) → machine (the CncService impl); faults
+//! program, memory, folder, position, history) → machine (the CncService impl); faults
 //! (the `[[fault]]`s at an instant) and trace (frames as text) → shared
 //! ([`Shared`]: what a machine's connections share) → session (one
 //! connection) → server (listeners) → fleet (many machines on one runtime).
@@ -14,6 +14,7 @@
 pub mod download;
 pub mod faults;
 pub mod fleet;
+pub mod folder;
 pub mod history;
 pub mod machine;
 pub mod macros;

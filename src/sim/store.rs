@@ -128,7 +128,7 @@ impl Program {
 
     /// The program under number `to`: its first block's O number changed
     /// too (the name follows when it is an "O" name).
-    fn renumbered(&self, to: i32) -> Program {
+    pub fn renumbered(&self, to: i32) -> Program {
         let mut p = self.clone();
         let mut text = String::with_capacity(self.text.len() + 8);
         let mut done = false;
@@ -181,7 +181,21 @@ pub struct PathStore {
 #[derive(Debug, Clone, Default)]
 pub struct Store {
     paths: Vec<PathStore>,
+    /// The 30i folder tree, each folder's full name ending in '/'; the
+    /// programs of "//CNC_MEM/USER/PATH<n>/" are path n's.
+    pub folders: Vec<String>,
+    /// The current folders (cnc_rdpdf_curdir types 1 and 2).
+    pub curdir: [String; 2],
 }
+
+/// The folders of a new CNC (before the paths' own).
+pub const FOLDERS: [&str; 5] = [
+    "//CNC_MEM/",
+    "//CNC_MEM/USER/",
+    "//CNC_MEM/USER/LIBRARY/",
+    "//CNC_MEM/SYSTEM/",
+    "//CNC_MEM/MTB1/",
+];
 
 fn err<T>(code: i16) -> Reply<T> {
     Err(CncError::new(code))
@@ -212,8 +226,43 @@ impl Store {
                     ..PathStore::default()
                 }
             });
+        let paths: Vec<PathStore> = paths.collect();
+        let own = (1..=paths.len()).map(|n| format!("//CNC_MEM/USER/PATH{n}/"));
+        let folders = FOLDERS.iter().map(|f| f.to_string()).chain(own).collect();
+        let home = "//CNC_MEM/USER/PATH1/".to_string();
         Store {
-            paths: paths.collect(),
+            paths,
+            folders,
+            curdir: [home.clone(), home],
+        }
+    }
+
+    /// What a full name ("//CNC_MEM/USER/PATH1/O0100", a folder ending in
+    /// '/'; a name without "//" is in the current folder) stands for: the
+    /// folder's name, and the path whose memory it is with the program
+    /// number (None: the folder itself; an unknown folder or a file name
+    /// other than "O<number>": EW_DATA).
+    pub fn locate(&self, name: &str) -> Reply<(String, Option<(u16, i32)>)> {
+        let full = match name.starts_with("//") {
+            true => name.to_string(),
+            false => format!("{}{name}", self.curdir[0]),
+        };
+        let cut = full.rfind('/').map_or(0, |i| i + 1);
+        let (folder, leaf) = full.split_at(cut);
+        if !self.folders.iter().any(|f| f == folder) {
+            return err(ew::EW_DATA);
+        }
+        if leaf.is_empty() {
+            return Ok((folder.to_string(), None));
+        }
+        let path =
+            (1..=self.paths.len() as u16).find(|n| folder == format!("//CNC_MEM/USER/PATH{n}/"));
+        let number = leaf.strip_prefix('O').and_then(|d| d.parse::<i32>().ok());
+        match (path, number) {
+            (Some(p), Some(n)) if leaf[1..].bytes().all(|b| b.is_ascii_digit()) => {
+                Ok((folder.to_string(), Some((p, n))))
+            }
+            _ => err(ew::EW_DATA),
         }
     }
 
@@ -311,6 +360,30 @@ impl Store {
         let mut p = self.path(path)?.find(from)?.renumbered(to);
         (p.created, p.modified, p.protect) = (date, date, false);
         self.insert(path, p)
+    }
+
+    /// Program `number`'s lines as `f` changes them (modified `date`):
+    /// refused as [`Store::remove`], or EW_OVRFLOW when they do not fit.
+    pub fn edit_lines(
+        &mut self,
+        path: u16,
+        number: i32,
+        date: Date,
+        f: impl FnOnce(&mut Vec<String>),
+    ) -> Reply<()> {
+        let s = self.path(path)?;
+        let old = s.editable(number)?;
+        let mut lines: Vec<String> = old.text.lines().map(String::from).collect();
+        f(&mut lines);
+        let mut p = old.clone();
+        (p.text, p.modified) = ((lines.join("\n") + "\n").into(), date);
+        if s.used() - old.size() + p.size() > s.capacity {
+            return err(ew::EW_OVRFLOW);
+        }
+        let s = self.path_mut(path)?;
+        let at = s.programs.iter().position(|q| q.number == number);
+        s.programs[at.expect("editable")] = p;
+        Ok(())
     }
 
     /// cnc_search: program `number` becomes the main program of `path`.

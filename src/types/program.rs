@@ -301,3 +301,79 @@ impl Default for PRGDIR2 {
         }
     }
 }
+
+/// cnc_rdpdf_drive: the program drives ("CNC_MEM" ...).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPDFDRV {
+    pub max_num: c_short,
+    pub dummy: c_short,
+    pub drive: [[c_char; 12]; 16],
+}
+
+/// cnc_rdpdf_inf: a drive's capacity and directories.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPDFINF {
+    pub used_page: LONG,
+    pub all_page: LONG,
+    pub used_dir: LONG,
+    pub all_dir: LONG,
+}
+
+/// cnc_rdpdf_subdirn: directories and files a directory holds.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPDFNFIL {
+    pub dir_num: c_short,
+    pub file_num: c_short,
+}
+
+/// cnc_rdpdf_subdir input: the folder and the first entry wanted.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IDBPDFSDIR {
+    pub path: [c_char; 212],
+    pub req_num: c_short,
+    pub dummy: c_short,
+}
+
+/// cnc_rdpdf_subdir output: one sub-folder.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPDFSDIR {
+    pub sub_exist: c_short,
+    pub dummy: c_short,
+    pub d_f: [c_char; 36],
+}
+
+/// cnc_rdpdf_alldir input: the folder, the first entry, size and format kinds.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IDBPDFADIR {
+    pub path: [c_char; 212],
+    pub req_num: c_short,
+    pub size_kind: c_short,
+    pub r#type: c_short,
+    pub dummy: c_short,
+}
+
+/// cnc_rdpdf_alldir output: one folder or program.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPDFADIR {
+    pub data_kind: c_short,
+    pub year: c_short,
+    pub mon: c_short,
+    pub day: c_short,
+    pub hour: c_short,
+    pub min: c_short,
+    pub sec: c_short,
+    pub dummy: c_short,
+    pub dummy2: LONG,
+    pub size: LONG,
+    pub attr: ULONG,
+    pub d_f: [c_char; 36],
+    pub comment: [c_char; 52],
+    pub o_time: [c_char; 12],
+}

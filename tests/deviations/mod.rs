@@ -40,6 +40,28 @@ pub const ORACLE: &[Deviation] = &[
         reason: "when the CNC answers an error FANUC's library writes uninitialised stack bytes into the whole ODBMDIP; ours writes nothing",
     },
     Deviation {
+        function: "cnc_pdf_rdactpt",
+        cases: &[
+            "pdf_rdactpt_v3_shape_empty",
+            "pdf_rdactpt_v2_shape_empty",
+            "pdf_rdactpt_v3_shape_longer",
+            "pdf_rdactpt_v2_shape_longer",
+        ],
+        reason: "FANUC's library copies the whole name part of the answer, past the caller's 256 bytes for a longer one, and for an empty one its receive buffer's bytes (kilobytes, over the caller's next variables); ours writes at most 256 bytes (256 zeros for an empty answer)",
+    },
+    Deviation {
+        function: "cnc_rdpdf_inf",
+        cases: &[
+            "rdpdf_inf_v3_shape_empty",
+            "rdpdf_inf_v3_shape_half",
+            "rdpdf_inf_v3_shape_short1",
+            "rdpdf_inf_v2_shape_empty",
+            "rdpdf_inf_v2_shape_half",
+            "rdpdf_inf_v2_shape_short1",
+        ],
+        reason: "an answer shorter than ODBPDFINF makes FANUC's library fill the rest from its receive buffer (the request's bytes); ours returns EW_PROTOCOL and writes nothing",
+    },
+    Deviation {
         function: "cnc_rdopmode",
         cases: &["rdopmode_v3_shape_longer", "rdopmode_v2_shape_longer"],
         reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",

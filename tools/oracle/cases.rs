@@ -229,15 +229,134 @@ const WORDS: &[Word] = &[
     ),
     Word {
         setup: &["wrmdiprog 9 hex:4738304d33303b0a25"],
-        ..w("rdmdiprog", &["256|0|1|9|10|-1|4096"])
+        ..w("rdmdiprog", &["256|0|1|8|9|10|-1|4096"])
     },
     Word {
         after: &["rdmdiprog 256"],
         ..w(
             "wrmdiprog",
-            &["9|0|1|4|-1|12|255|256|1024|4096", "hex:4738304d33303b0a25"],
+            &[
+                "9|0|1|4|-1|12|255|256|1024|1400|4096",
+                "hex:4738304d33303b0a25",
+            ],
         )
     },
+    // Program data folders (30i).
+    w("rdpdf_drive", &[]),
+    w(
+        "rdpdf_inf",
+        &[
+            "//CNC_MEM/|//CNC_MEM/USER/PATH1/|CNC_MEM|//DATA_SV/|x",
+            "1|0|2|-1|3",
+        ],
+    ),
+    w("rdpdf_curdir", &["1|0|2|-1|3"]),
+    w(
+        "wrpdf_curdir",
+        &[
+            "1|0|2|-1|3",
+            "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|//CNC_MEM/USER/PATH9/|x|//CNC_MEM/USER/PATH1",
+        ],
+    ),
+    w(
+        "rdpdf_subdirn",
+        &["//CNC_MEM/USER/|//CNC_MEM/USER/PATH1/|//CNC_MEM/|//CNC_MEM/NONE/|x"],
+    ),
+    w(
+        "pdf_add",
+        &[
+            "//CNC_MEM/USER/PATH1/O0200|//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/NEW/|//CNC_MEM/USER/PATH1/|x|O0300",
+        ],
+    ),
+    w(
+        "pdf_del",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O1234|//CNC_MEM/USER/PATH1/O0007|//CNC_MEM/USER/PATH1/|x|O0100",
+        ],
+    ),
+    w(
+        "pdf_slctmain",
+        &["//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|//CNC_MEM/USER/PATH1/|x|O0100"],
+    ),
+    w("pdf_rdmain", &[]),
+    w(
+        "pdf_rename",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "O0200|O1234|//CNC_MEM/USER/PATH1/O0200|x",
+        ],
+    ),
+    w(
+        "pdf_copy",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "//CNC_MEM/USER/PATH1/O0200|//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/PATH1/O1234|x",
+        ],
+    ),
+    w(
+        "pdf_move",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "//CNC_MEM/USER/LIBRARY/|//CNC_MEM/USER/PATH1/|x",
+        ],
+    ),
+    w(
+        "rdpdf_subdir",
+        &[
+            "10|0|1|2|-1|100",
+            "//CNC_MEM/USER/|//CNC_MEM/|//CNC_MEM/USER/PATH1/|x",
+            "0|1|2|-1|5",
+        ],
+    ),
+    w(
+        "rdpdf_alldir",
+        &[
+            "10|0|1|2|-1|100",
+            "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|x",
+            "0|1|2|-1|5",
+            "1|0|2|-1",
+            "1|0|2|-1",
+        ],
+    ),
+    w(
+        "pdf_delall",
+        &["1|0|2|-1|3", "//CNC_MEM/USER/PATH1/|//CNC_MEM/USER/|x"],
+    ),
+    w(
+        "pdf_delline",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "2|0|1|5|-1",
+            "1|0|2|10|-1",
+        ],
+    ),
+    w("pdf_rdactpt", &["0|5|-1"]),
+    w(
+        "pdf_wractpt",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "0|1|2|-1",
+            "2|0|1|100|-1",
+        ],
+    ),
+    w(
+        "rdpdf_line",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "1|0|2|5|-1|100",
+            "3|0|1|10|-1",
+            "256|0|1|10|-1|4096",
+        ],
+    ),
+    w(
+        "wrpdf_line",
+        &[
+            "//CNC_MEM/USER/PATH1/O0100|//CNC_MEM/USER/PATH1/O0007|x",
+            "2|0|1|100|-1",
+            "hex:4e353020473034583130",
+            "10|0|1|5|-1",
+        ],
+    ),
     // Alarms and messages.
     w("alarm", &[]),
     w("alarm2", &[]),

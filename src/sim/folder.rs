@@ -1,0 +1,323 @@
+//! The 30i program data folders on the program store (src/sim/store.rs):
+//! "//CNC_MEM/USER/PATH<n>/" holds path n's programs; other folders hold
+//! folders only. Names are NUL-padded fields of the request's payload
+//! (256 bytes; a rename's new name 36). Refusals: an unknown folder or a
+//! name that is not "O<number>" EW_DATA, then the store's (EW_DATA, EW_PROT,
+//! EW_BUSY, EW_OVRFLOW); a type other than 1/2 EW_ATTRIB.
+
+use super::Machine;
+use super::service::{CncError, Reply};
+use super::store::{FOLDERS, Program};
+use crate::ew;
+use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::program as pp;
+use crate::proto::wire::Writer;
+
+/// A NUL-padded field as text.
+fn field(b: &[u8]) -> String {
+    let n = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+    String::from_utf8_lossy(&b[..n]).into_owned()
+}
+
+/// A name answered in a 256-byte NUL-padded field.
+fn name256(s: &str) -> Vec<u8> {
+    let mut b = s.as_bytes()[..s.len().min(255)].to_vec();
+    b.resize(256, 0);
+    b
+}
+
+fn err<T>(code: i16) -> Reply<T> {
+    Err(CncError::new(code))
+}
+
+impl Machine {
+    /// The folder commands (`None`: not one of them).
+    pub(crate) fn folder_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        let cmds = [
+            pp::PDF_DRIVE,
+            pp::PDF_INF,
+            pp::PDF_RDCURDIR,
+            pp::PDF_WRCURDIR,
+            pp::PDF_SUBDIRN,
+            pp::PDF_ADD,
+            pp::PDF_DEL,
+            pp::PDF_RENAME,
+            pp::PDF_RDMAIN,
+            pp::PDF_SLCTMAIN,
+            pp::PDF_COPY,
+            pp::PDF_MOVE,
+            pp::PDF_SUBDIR,
+            pp::PDF_ALLDIR,
+            pp::PDF_RDLINE,
+            pp::PDF_WRLINE,
+            pp::PDF_DELLINE,
+            pp::PDF_DELALL,
+            pp::PDF_RDACTPT,
+            pp::PDF_WRACTPT,
+        ];
+        if sub.class != CLASS_CNC || !cmds.contains(&sub.cmd) {
+            return None;
+        }
+        let p = &sub.payload;
+        let (a, b) = (
+            field(p.get(..256).unwrap_or(p)),
+            field(p.get(256..).unwrap_or(&[])),
+        );
+        if [
+            pp::PDF_RDLINE,
+            pp::PDF_WRLINE,
+            pp::PDF_DELLINE,
+            pp::PDF_DELALL,
+        ]
+        .contains(&sub.cmd)
+        {
+            return Some(self.line_answer(sub, &a));
+        }
+        Some(self.folder_answer(sub.cmd, sub.path, sub.args, &a, &b))
+    }
+
+    /// The line commands on a program ("<folder>O<n>"): read `args[1]`
+    /// lines from line `args[0]` (1 the first), write the bytes after the
+    /// name after line `args[0]`, delete `args[1]` lines from line
+    /// `args[0]`; and delete all of a path's folder.
+    fn line_answer(&mut self, sub: &ReqSub, name: &str) -> Reply<Vec<u8>> {
+        let today = self.today();
+        let paths = self.run.len() as u16;
+        let st = &mut self.store;
+        let (from, n) = (sub.args[0].max(0) as usize, sub.args[1].max(0) as usize);
+        let at = from.saturating_sub(1);
+        let (folder, prog) = st.locate(name)?;
+        if sub.cmd == pp::PDF_DELALL {
+            let p = (1..=paths).find(|n| folder == format!("//CNC_MEM/USER/PATH{n}/"));
+            return st
+                .remove_all(p.ok_or(CncError::new(ew::EW_DATA))?)
+                .map(|_| Vec::new());
+        }
+        let (p, number) = prog.ok_or(CncError::new(ew::EW_DATA))?;
+        match sub.cmd {
+            pp::PDF_RDLINE => {
+                let text = st.path(p)?.find(number)?.text.clone();
+                let lines = text.split_inclusive('\n').skip(at).take(n);
+                Ok(lines.collect::<String>().into_bytes())
+            }
+            pp::PDF_WRLINE => {
+                let add = sub.payload.get(256..).unwrap_or(&[]);
+                let add = String::from_utf8_lossy(add).into_owned();
+                st.edit_lines(p, number, today, |l| {
+                    let at = from.min(l.len());
+                    l.splice(at..at, add.lines().map(String::from));
+                })
+                .map(|()| Vec::new())
+            }
+            _ => st
+                .edit_lines(p, number, today, |l| {
+                    let end = (at + n).min(l.len());
+                    l.drain(at.min(end)..end);
+                })
+                .map(|()| Vec::new()),
+        }
+    }
+
+    fn folder_answer(
+        &mut self,
+        cmd: u16,
+        path: u16,
+        args: [i32; 5],
+        a: &str,
+        b: &str,
+    ) -> Reply<Vec<u8>> {
+        let (word, block) = (args[0], args[1]);
+        let today = self.today();
+        let st = &mut self.store;
+        let mut w = Writer::new();
+        match cmd {
+            pp::PDF_DRIVE => {
+                w.bytes(b"CNC_MEM\0\0\0\0\0");
+            }
+            pp::PDF_INF => {
+                let (mut used, mut all) = (0, 0);
+                for n in 1..=self.run.len() as u16 {
+                    let s = st.path(n)?;
+                    (used, all) = (used + s.used(), all + s.capacity);
+                }
+                let dirs = st.folders.len();
+                for v in [used.div_ceil(256), all / 256, dirs, 1000] {
+                    w.i32(v as i32);
+                }
+            }
+            pp::PDF_RDCURDIR | pp::PDF_WRCURDIR => {
+                let k = usize::try_from(word - 1).ok().filter(|k| *k < 2);
+                let k = k.ok_or(CncError::new(ew::EW_ATTRIB))?;
+                if cmd == pp::PDF_RDCURDIR {
+                    return Ok(name256(&st.curdir[k]));
+                }
+                match st.locate(a)? {
+                    (f, None) => st.curdir[k] = f,
+                    _ => return err(ew::EW_DATA),
+                }
+            }
+            pp::PDF_SUBDIRN => {
+                let (f, None) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                let subs = st.folders.iter().filter(|g| {
+                    g.strip_prefix(f.as_str())
+                        .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
+                });
+                let files = (1..=self.run.len() as u16)
+                    .find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"))
+                    .map_or(0, |n| st.iter(n).count());
+                w.i32(subs.count() as i32);
+                w.i32(files as i32);
+            }
+            pp::PDF_ADD if a.ends_with('/') => {
+                let parent = &a[..a[..a.len() - 1].rfind('/').map_or(0, |i| i + 1)];
+                if st.folders.iter().any(|f| f == a) || !st.folders.iter().any(|f| f == parent) {
+                    return err(ew::EW_DATA);
+                }
+                st.folders.push(a.to_string());
+            }
+            pp::PDF_ADD => {
+                let (_, Some((p, n))) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                st.insert(p, Program::new(&format!("O{n:04};\n%\n"), today))?;
+            }
+            pp::PDF_DEL => match st.locate(a)? {
+                (_, Some((p, n))) => drop(st.remove(p, n)?),
+                (f, None) => {
+                    // The CNC's own folders stay, and a folder with folders in it.
+                    let at = st.folders.iter().position(|g| *g == f);
+                    let full = st
+                        .folders
+                        .iter()
+                        .any(|g| g.len() > f.len() && g.starts_with(&f));
+                    if full || at < Some(FOLDERS.len() + self.run.len()) {
+                        return err(ew::EW_DATA);
+                    }
+                    st.folders.retain(|g| *g != f);
+                }
+            },
+            pp::PDF_RENAME => {
+                let (Ok((_, Some((p, n)))), Some(to)) = (st.locate(a), new_number(b)) else {
+                    return err(ew::EW_DATA);
+                };
+                st.rename(p, n, to, today)?;
+            }
+            pp::PDF_SUBDIR | pp::PDF_ALLDIR => {
+                let (f, None) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                let (from, n) = (word.max(0) as usize, block.max(0) as usize);
+                let subs: Vec<&String> = st
+                    .folders
+                    .iter()
+                    .filter(|g| {
+                        g.strip_prefix(f.as_str())
+                            .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
+                    })
+                    .collect();
+                let path =
+                    (1..=self.run.len() as u16).find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"));
+                let progs: Vec<&Program> = path.map_or(Vec::new(), |p| st.iter(p).collect());
+                let fixed = |s: &str, n: usize| {
+                    let mut b = s.as_bytes()[..s.len().min(n - 1)].to_vec();
+                    b.resize(n, 0);
+                    b
+                };
+                let leaf = |g: &String| g[f.len()..g.len() - 1].to_string();
+                if cmd == pp::PDF_SUBDIR {
+                    for g in subs.iter().skip(from).take(n) {
+                        w.i32(i32::from(
+                            st.folders
+                                .iter()
+                                .any(|h| h.len() > g.len() && h.starts_with(g.as_str())),
+                        ));
+                        w.bytes(&fixed(&leaf(g), 36));
+                    }
+                } else {
+                    let entries = subs
+                        .iter()
+                        .map(|g| (0, leaf(g), String::new(), [0u16; 5], 0))
+                        .chain(progs.iter().map(|p| {
+                            (
+                                1,
+                                p.display_name(),
+                                format!("({})", p.comment),
+                                p.modified,
+                                p.size(),
+                            )
+                        }));
+                    for (kind, name, comment, d, size) in entries.skip(from).take(n) {
+                        w.i16(kind);
+                        for v in d {
+                            w.i16(v as i16);
+                        }
+                        w.bytes(&[0; 8]);
+                        w.i32(size as i32);
+                        w.i32(0);
+                        w.bytes(&fixed(&name, 36));
+                        w.bytes(&fixed(if kind == 1 { &comment } else { "" }, 52));
+                        w.bytes(&[0; 12]);
+                    }
+                }
+            }
+            pp::PDF_RDACTPT => {
+                let (number, name) = self.shown_program(path)?;
+                let blk = self.run.get(usize::from(path) - 1).map_or(0, |r| r.block);
+                w.i32(blk as i32);
+                w.bytes(&name256(&format!("//CNC_MEM/USER/PATH{path}/{name}")));
+                let _ = number;
+            }
+            pp::PDF_WRACTPT => {
+                let (_, Some((p, n))) = self.store.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                self.store.path(p)?.find(n)?;
+                w.i32(block);
+            }
+            pp::PDF_RDMAIN => {
+                let main = st.path(path)?.main;
+                return Ok(name256(&format!("//CNC_MEM/USER/PATH{path}/O{main:04}")));
+            }
+            pp::PDF_SLCTMAIN => {
+                let (_, Some((p, n))) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                st.select(p, n)?;
+            }
+            _ => {
+                // PDF_COPY / PDF_MOVE: to a program, or into a folder.
+                let (_, Some((p, n))) = st.locate(a)? else {
+                    return err(ew::EW_DATA);
+                };
+                let (q, m) = match st.locate(b)? {
+                    (_, Some(to)) => to,
+                    (f, None) => match st.locate(&format!("{f}O{n:04}"))? {
+                        (_, Some(to)) => to,
+                        _ => return err(ew::EW_DATA),
+                    },
+                };
+                let mut prog = st.path(p)?.find(n)?.clone();
+                if cmd == pp::PDF_MOVE {
+                    st.path(p)?.editable(n)?;
+                } else {
+                    (prog.created, prog.modified, prog.protect) = (today, today, false);
+                }
+                st.insert(q, prog.renumbered(m))?;
+                if cmd == pp::PDF_MOVE {
+                    st.remove(p, n)?;
+                }
+            }
+        }
+        Ok(w.into_vec())
+    }
+}
+
+/// The program number of a new name "O<number>".
+fn new_number(name: &str) -> Option<i32> {
+    let d = name.strip_prefix('O')?;
+    d.bytes()
+        .all(|b| b.is_ascii_digit())
+        .then(|| d.parse().ok())?
+}
