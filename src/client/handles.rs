@@ -100,9 +100,52 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
 pub fn get(h: u16) -> Result<Arc<Handle>> {
     let h = lookup(h)?;
     if h.batching.load(std::sync::atomic::Ordering::Acquire) {
-        super::batch::admit(&h)?;
+        // A call on a batching handle: refused unless the running export
+        // may join the batch; else the handle is where it queues.
+        if !super::batch::is_batchable() {
+            return Err(Error::local(
+                crate::ew::EW_REJECT,
+                "not batchable: call it before fwlib_batch_begin or after fwlib_batch_end",
+            ));
+        }
+        QUEUED_ON.with(|q| *q.borrow_mut() = Some(h.clone()));
     }
     Ok(h)
+}
+
+thread_local! {
+    /// The batching handle the running call was admitted on.
+    static QUEUED_ON: std::cell::RefCell<Option<Arc<Handle>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Forgets the handle a call that did not queue was admitted on.
+pub fn forget() {
+    QUEUED_ON.with(|q| q.borrow_mut().take());
+}
+
+/// Keeps the body of the call just queued (it ended with
+/// [`Error::Queued`]): EW_OK, its result comes at fwlib_batch_end.
+pub fn defer(name: &'static str, run: Box<dyn FnMut() -> Result<()>>) -> i16 {
+    let h = QUEUED_ON.with(|q| q.borrow_mut().take());
+    let mut s = h.as_ref().map(|h| h.state.lock());
+    let queued = s
+        .as_mut()
+        .and_then(|s| s.batch.as_mut())
+        .is_some_and(|b| b.queue(name, super::batch::Deferred(run)));
+    if queued {
+        crate::ew::EW_OK
+    } else {
+        crate::ew::EW_UNEXP
+    }
+}
+
+impl Handle {
+    /// Marks the handle batching or not (counted in `batch::active`).
+    pub fn set_batching(&self, on: bool) {
+        if self.batching.swap(on, std::sync::atomic::Ordering::AcqRel) != on {
+            super::batch::set_active(on);
+        }
+    }
 }
 
 /// Handle `h` whether it batches or not (the batch functions themselves).

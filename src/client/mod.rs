@@ -2,6 +2,7 @@
 //! Blocking std::net, no threads of its own.
 
 pub mod batch;
+pub mod batching;
 pub mod conn;
 pub mod conn1;
 pub mod download;

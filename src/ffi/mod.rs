@@ -68,9 +68,9 @@ pub(crate) fn read_boundary(
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(&mut body))
     });
     match r {
-        Ok(Err(Error::Queued)) => crate::client::batch::defer(name, body),
+        Ok(Err(Error::Queued)) => crate::client::handles::defer(name, body),
         r => {
-            crate::client::batch::forget();
+            crate::client::handles::forget();
             finish(name, r)
         }
     }
