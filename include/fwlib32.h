@@ -324,6 +324,46 @@ typedef struct ODBAHIS2 {
 } ODBAHIS2;
 
 /*
+ One entry of ODBAHIS5 (516 bytes).
+ */
+typedef struct ODBAHIS5_ALM {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    short pth_no;
+    short sys_alm;
+    short dsp_flg;
+    short axis_num;
+    char alm_msg[64];
+    LONG g_modal[10];
+    char g_dp[10];
+    short dummy1;
+    LONG a_modal[10];
+    char a_dp[10];
+    short dummy2;
+    LONG abs_pos[32];
+    char abs_dp[32];
+    LONG mcn_pos[32];
+    char mcn_dp[32];
+} ODBAHIS5_ALM;
+
+/*
+ cnc_rdalmhistry5: alarm history with the modal and position snapshot (10 entries as declared).
+ */
+typedef struct ODBAHIS5 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBAHIS5_ALM alm_his[10];
+} ODBAHIS5;
+
+/*
  ALMINFO type 0 record: axis bits and alarm number.
  */
 typedef struct ALMINFO_alm1_rec {
@@ -630,6 +670,123 @@ typedef struct ODBOMIF {
     unsigned short om_sum;
     unsigned short om_char;
 } ODBOMIF;
+
+/*
+ cnc_rdomhistry: one operator message history entry.
+ */
+typedef struct ODBOMHIS {
+    short om_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char om_msg[256];
+} ODBOMHIS;
+
+/*
+ One entry of ODBOMHIS2.
+ */
+typedef struct ODBOMHIS2_OPM {
+    short dsp_flg;
+    short om_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char ope_msg[256];
+} ODBOMHIS2_OPM;
+
+/*
+ cnc_rdomhistry2: operator message history (10 entries as declared).
+ */
+typedef struct ODBOMHIS2 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBOMHIS2_OPM opm_his[10];
+} ODBOMHIS2;
+
+/*
+ ODBHIS alarm record.
+ */
+typedef struct ODBHIS_ALM {
+    short rec_type;
+    short alm_grp;
+    short alm_no;
+    char axis_no;
+    char dummy;
+} ODBHIS_ALM;
+
+/*
+ ODBHIS MDI key record.
+ */
+typedef struct ODBHIS_MDI {
+    short rec_type;
+    char key_code;
+    char pw_flag;
+    char dummy[4];
+} ODBHIS_MDI;
+
+/*
+ ODBHIS signal record.
+ */
+typedef struct ODBHIS_SGN {
+    short rec_type;
+    char sig_name;
+    char sig_old;
+    char sig_new;
+    char dummy;
+    short sig_no;
+} ODBHIS_SGN;
+
+/*
+ ODBHIS date record.
+ */
+typedef struct ODBHIS_DATE {
+    short rec_type;
+    char year;
+    char month;
+    char day;
+    char pw_flag;
+    char dummy[2];
+} ODBHIS_DATE;
+
+/*
+ ODBHIS time record.
+ */
+typedef struct ODBHIS_TIME {
+    short rec_type;
+    char hour;
+    char minute;
+    char second;
+    char pw_flag;
+    char dummy[2];
+} ODBHIS_TIME;
+
+/*
+ One 8-byte ODBHIS record, by its `rec_type`.
+ */
+typedef union ODBHIS_DATA {
+    struct ODBHIS_ALM rec_alm;
+    struct ODBHIS_MDI rec_mdi;
+    struct ODBHIS_SGN rec_sgn;
+    struct ODBHIS_DATE rec_date;
+    struct ODBHIS_TIME rec_time;
+} ODBHIS_DATA;
+
+/*
+ cnc_rdophistry: operation history (10 records as declared; the caller's
+ `length` says how many really fit).
+ */
+typedef struct ODBHIS {
+    unsigned short s_no;
+    short type;
+    unsigned short e_no;
+    union ODBHIS_DATA data[10];
+} ODBHIS;
 
 /*
  cnc_rdopmsg: one operator message (256-character variant).
@@ -1481,6 +1638,21 @@ short cnc_rdalmhistry2(unsigned short FlibHndl,
                        struct ODBAHIS2 *alm_hst);
 
 /*
+ Reads alarm history entries `s_number..=e_number` (1 = newest) with their
+ modal and position snapshot into ODBAHIS5, two entries an exchange until
+ the range is read or the CNC has no more; when an exchange's entries do
+ not fit in `length`: EW_LENGTH, the entries before them written.
+
+ # Safety
+ `almhis` must point to `length` writable bytes.
+ */
+short cnc_rdalmhistry5(unsigned short FlibHndl,
+                       unsigned short s_number,
+                       unsigned short e_number,
+                       unsigned short length,
+                       struct ODBAHIS5 *almhis);
+
+/*
  Reads active alarms of `alm_type` (−1 all): `type` 0 axis and number
  (ALMINFO alm1, 8-byte records), 1 with messages (alm2, 40-byte records);
  after the last record −1 is written into the next record's place (the
@@ -1792,12 +1964,54 @@ short cnc_rdomhisinfo(unsigned short FlibHndl, struct ODBOMIF *ominfo);
 short cnc_rdomhisno(unsigned short FlibHndl, unsigned short *hisno);
 
 /*
+ Reads `*num` operator message history entries (at most five) from
+ `s_number` (0 = newest) into ODBOMHIS records; `*num` = the entries
+ written.
+
+ # Safety
+ `num` must point to a writable unsigned short, `omhis` to `*num` ODBOMHIS.
+ */
+short cnc_rdomhistry(unsigned short FlibHndl,
+                     unsigned short s_number,
+                     unsigned short *num,
+                     struct ODBOMHIS *omhis);
+
+/*
+ Reads the operator message history entries `s_number..=e_number` (at
+ most five) into ODBOMHIS2; when they do not all fit in `length`:
+ EW_LENGTH, nothing written.
+
+ # Safety
+ `omhis` must point to `length` writable bytes.
+ */
+short cnc_rdomhistry2(unsigned short FlibHndl,
+                      unsigned short s_number,
+                      unsigned short e_number,
+                      unsigned short length,
+                      struct ODBOMHIS2 *omhis);
+
+/*
  Reads the number of operation history entries.
 
  # Safety
  `hisno` must be NULL or point to a writable unsigned short.
  */
 short cnc_rdophisno(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
+ Reads the operation history entries `s_number..=e_number` into ODBHIS,
+ each 8-byte record decoded by its type (MDI key, signal, alarm, date,
+ time; other types: the type alone). At most 89 entries are asked for;
+ when they do not all fit in `length`: EW_LENGTH, nothing written.
+
+ # Safety
+ `ophis` must point to `length` writable bytes.
+ */
+short cnc_rdophistry(unsigned short FlibHndl,
+                     unsigned short s_number,
+                     unsigned short e_number,
+                     unsigned short length,
+                     struct ODBHIS *ophis);
 
 /*
  Reads the operation mode word. An answer without a whole word writes

@@ -23,6 +23,6 @@ pub mod types;
 // The exported C functions, callable from Rust too. Areas fill in one at a time.
 #[allow(unused_imports)]
 pub use ffi::{
-    absent::*, alarm::*, described::*, ext::*, handle::*, macros::*, offset::*, param::*, pmc::*,
-    position::*, program::*, status::*, tool::*, upload::*,
+    absent::*, alarm::*, described::*, ext::*, handle::*, history::*, macros::*, offset::*,
+    param::*, pmc::*, position::*, program::*, status::*, tool::*, upload::*,
 };

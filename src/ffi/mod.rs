@@ -7,6 +7,7 @@ pub mod described;
 pub mod exports;
 pub mod ext;
 pub mod handle;
+pub mod history;
 pub mod macros;
 pub mod offset;
 pub mod param;

@@ -5,6 +5,7 @@ pub mod alarm;
 pub mod call;
 pub mod described;
 pub mod frame;
+pub mod history;
 pub mod macros;
 pub mod names;
 pub mod offset;

@@ -21,7 +21,7 @@ fn fixed<const N: usize>(s: &str) -> [u8; N] {
 }
 
 impl Machine {
-    fn path(&self, path: u16) -> Reply<&super::profile::Path> {
+    pub(crate) fn path(&self, path: u16) -> Reply<&super::profile::Path> {
         self.profile
             .paths
             .get(path as usize - 1)
@@ -410,7 +410,31 @@ impl CncService for Machine {
         range: crate::proto::pmc::PmcRange,
         data: &[u8],
     ) -> Reply<()> {
-        self.profile.pmc.write(unit, &range, data)
+        let old = self.profile.pmc.read(unit, &range).unwrap_or_default();
+        self.profile.pmc.write(unit, &range, data)?;
+        // Signal changes (G, F, Y, X: address types 0..3) go into the
+        // operation history, one record per changed byte.
+        if (0..=3).contains(&range.adr_type) {
+            let new = self.profile.pmc.read(unit, &range).unwrap_or_default();
+            let at = std::time::SystemTime::now();
+            for (k, (o, n)) in old
+                .iter()
+                .zip(&new)
+                .enumerate()
+                .filter(|(_, (o, n))| o != n)
+            {
+                let op = super::history::Operation {
+                    kind: "signal".into(),
+                    number: i32::from(range.s) + k as i32,
+                    group: range.adr_type,
+                    old: *o,
+                    new: *n,
+                    ..Default::default()
+                };
+                self.record_operation(op, at);
+            }
+        }
+        Ok(())
     }
 
     fn pmc_info(&mut self, unit: u16, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
@@ -467,6 +491,9 @@ impl CncService for Machine {
     }
     fn rdalmhisno(&mut self) -> Reply<crate::proto::offset::Count> {
         self.history_count()
+    }
+    fn history_records(&mut self, path: u16, cmd: u16, args: [i32; 5]) -> Reply<Vec<u8>> {
+        self.history_bytes(path, cmd, args)
     }
 
     // --- described functions ---

@@ -13,6 +13,7 @@ use crate::proto::wire::Wire;
 use crate::spec::Func;
 // --- offset ---
 use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
+use crate::proto::history as phis;
 use crate::proto::offset::{self as ofs, Ack, Count};
 use crate::proto::tool::{TLGROUP, TLTOOLS, ToolGroup, ToolList};
 use crate::proto::value::Value;
@@ -334,6 +335,11 @@ pub trait CncService: Send {
     fn rdalmhisno(&mut self) -> Reply<Count> {
         unsupported()
     }
+    /// The history record reads of src/proto/history.rs (0x006a, 0x0073,
+    /// 0x01b5, 0x01d1): the answer's bytes for the request's arguments.
+    fn history_records(&mut self, path: u16, cmd: u16, args: [i32; 5]) -> Reply<Vec<u8>> {
+        unsupported()
+    }
 
     // --- tool ---
     /// 0x008b [grp, grp]: a tool life group record.
@@ -482,6 +488,10 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, ofs::WRZOFS) => enc(svc.wrzofs(p, a[0], a[2], &sub.payload)),
             (CLASS_CNC, RDALMHISTRY) => enc(svc.rdalmhistry(a[0], a[1])),
             (CLASS_CNC, RDALMHISNO) => enc(svc.rdalmhisno()),
+            (
+                CLASS_CNC,
+                c @ (phis::RDOPHISTRY | phis::RDOMHISTRY | phis::RDOMHISTRY2 | phis::RDALMHISTRY5),
+            ) => svc.history_records(p, c, a),
 
             // --- tool ---
             (CLASS_CNC, TLGROUP) => enc(svc.tool_group(p, a[0])),

@@ -293,6 +293,11 @@ static short in_thread(void *(*f)(void *)) {
     WORD(upend, return F(cnc_upend)(H))                                                           \
     WORD(upend3, return F(cnc_upend3)(H))                                                         \
     WORD(upend4, return F(cnc_upend4)(H))                                                         \
+    /* histories */                                                                               \
+    WORD(rdophistry, return F(cnc_rdophistry)(H, N(1), N(2), N(3), B0)) \
+    WORD(rdomhistry, USHORT_IO(length, 2, F(cnc_rdomhistry)(H, N(1), &length, B0))) \
+    WORD(rdomhistry2, return F(cnc_rdomhistry2)(H, N(1), N(2), N(3), B0)) \
+    WORD(rdalmhistry5, return F(cnc_rdalmhistry5)(H, N(1), N(2), N(3), B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \
