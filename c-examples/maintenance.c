@@ -1,6 +1,7 @@
 /*
- * maintenance.c - a small health report for one machine: the last
- * operations, operator messages and alarms from the CNC's histories.
+ * maintenance.c - a small health report for one machine: servo and
+ * spindle figures, the last operations, operator messages and alarms from
+ * the CNC's histories.
  *
  *   cc -Wall -Wextra -Werror -I../include maintenance.c -L../target/release -lfwlib32 -o maintenance
  *   ./maintenance [host [port]]
@@ -12,6 +13,28 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fwlib32.h"
+
+static void servo_spindle(unsigned short h)
+{
+    ODBAXIS delay, skip;
+    long gain[MAX_AXIS];
+    char alarm[8];
+    short i;
+    memset(gain, 0, sizeof gain);
+    if (cnc_rdloopgain(h, gain) == EW_OK && cnc_srvdelay(h, ALL_AXES, sizeof delay, &delay) == EW_OK &&
+        cnc_accdecdly(h, ALL_AXES, sizeof skip, &skip) == EW_OK) {
+        /* 4-byte words, whatever the size of long (FANUC's layout). */
+        const int *g = (const int *)gain;
+        for (i = 0; i < 3; i++)
+            printf("servo%d=gain %d delay %ld accdec %ld\n", i + 1, g[i], (long)delay.data[i],
+                   (long)skip.data[i]);
+    }
+    if (cnc_skip(h, 1, 8, &skip) == EW_OK)
+        printf("skip1=%ld\n", (long)skip.data[0]);
+    memset(alarm, 0, sizeof alarm);
+    if (cnc_rdspdlalm(h, alarm) == EW_OK)
+        printf("spindle_alarm=%d\n", alarm[0]);
+}
 
 static void operations(unsigned short h)
 {
@@ -95,6 +118,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "cnc_allclibhndl3(%s:%u) failed: %d\n", host, port, ret);
         return 1;
     }
+    servo_spindle(h);
     operations(h);
     messages(h);
     alarms(h);

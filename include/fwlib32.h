@@ -1373,6 +1373,14 @@ short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Reads the acceleration/deceleration delay of one axis or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_accdecdly(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
  Reads the actual feed rate (F).
 
  # Safety
@@ -2207,6 +2215,14 @@ short cnc_rdprogline(unsigned short FlibHndl,
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 
 /*
+ Reads the alarm state of each spindle, one byte per spindle (at most 8).
+
+ # Safety
+ `data` must be NULL or point to a writable char.
+ */
+short cnc_rdspdlalm(unsigned short FlibHndl, char *data);
+
+/*
  Reads the names of the spindles: `*data_num` in = room in `spdlname`,
  out = names written.
 
@@ -2459,6 +2475,22 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
  `time` must point to a readable IODBTIMER.
  */
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
+ Reads the skip position of one axis or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_skip(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the servo delay (position deviation) of one axis or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_srvdelay(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Starts recording the operator message history.

@@ -6,6 +6,7 @@ mod sim;
 
 use fwlib32::ew::*;
 use fwlib32::sim::Profile;
+use fwlib32::types::ODBAXIS;
 use fwlib32::*;
 
 #[test]
@@ -294,4 +295,41 @@ fn operator_message_history_holds_the_messages_shown() {
     assert_eq!(unsafe { cnc_rdomhisno(h, &mut n) }, EW_OK);
     assert_eq!(n, 0);
     assert_eq!(unsafe { cnc_rdomhisinfo(h, std::ptr::null_mut()) }, EW_DATA);
+}
+
+#[test]
+fn servo_and_spindle_figures_follow_the_profile_and_the_motion() {
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE.replacen(
+        "alarm = 0                # spindle",
+        "alarm = 7                # spindle",
+        1,
+    );
+    let p = Profile::parse(&text).unwrap();
+    let (_s, h) = sim::start_alloc(p.clone());
+    let mut alm = [0x55i8; 8];
+    assert_eq!(unsafe { cnc_rdspdlalm(h, alm.as_mut_ptr().cast()) }, EW_OK);
+    assert_eq!(alm[0], 7);
+    assert_eq!(alm[1], 0x55, "one byte per spindle");
+
+    let read = |f: unsafe extern "C" fn(u16, i16, i16, *mut ODBAXIS) -> i16, axis: i16| {
+        let mut b = ODBAXIS::default();
+        assert_eq!(unsafe { f(h, axis, 4 + 4 * 32, &mut b) }, EW_OK);
+        assert_eq!(b.r#type, axis);
+        b.data
+    };
+    assert_eq!(read(cnc_skip, 1)[0], p.paths[0].axes[0].skip);
+    // Delays follow the motor speed: zero for an axis at rest.
+    let speed = {
+        let mut v = [0i32; 32];
+        assert_eq!(unsafe { cnc_rdsrvspeed(h, v.as_mut_ptr().cast()) }, EW_OK);
+        v
+    };
+    let (srv, acc) = (read(cnc_srvdelay, -1), read(cnc_accdecdly, -1));
+    for k in 0..p.paths[0].axes.len() {
+        assert_eq!(srv[k] == 0, speed[k] == 0, "axis {k}");
+        assert_eq!(acc[k] == 0, speed[k] == 0, "axis {k}");
+    }
+    let mut b = ODBAXIS::default();
+    assert_eq!(unsafe { cnc_srvdelay(h, -1, 8, &mut b) }, EW_LENGTH);
+    assert_eq!(unsafe { cnc_skip(h, 33, 8, &mut b) }, EW_ATTRIB);
 }

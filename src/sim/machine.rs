@@ -519,6 +519,13 @@ impl CncService for Machine {
                     .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
                     .collect())
             }
+            "cnc_rdspdlalm" => Ok(self
+                .path(path)?
+                .spindles
+                .iter()
+                .take(8)
+                .map(|s| i64::from(s.alarm))
+                .collect()),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),

@@ -216,6 +216,12 @@ pub struct Axis {
     pub lead: Option<f64>,
     /// Servo motor speed, rpm (cnc_rdsrvspeed): set by the running program.
     pub servo_speed: i32,
+    /// Skip position (cnc_skip), in the axis's units: where the skip signal
+    /// last came.
+    pub skip: i32,
+    /// Acceleration/deceleration time constant, ms (default 32): the
+    /// acc/dec delay (cnc_accdecdly) is the axis's feed over half of it.
+    pub accdec_ms: Option<f64>,
     /// Unit of the positions: 0 mm, 1 inch, 2 degree (rdaxisdata / rdposition `unit`).
     pub unit: i16,
     /// Input / output figures (cnc_getfigure); default `decimals`.
@@ -235,6 +241,8 @@ pub struct Spindle {
     /// reports them (cnc_rdspmaxrpm, cnc_rdspgear).
     pub max_rpm_ratio: i32,
     pub gear_ratio: i32,
+    /// Spindle amplifier alarm number, 0 for none (cnc_rdspdlalm).
+    pub alarm: i16,
 }
 
 #[derive(Debug, thiserror::Error)]

@@ -298,6 +298,9 @@ static short in_thread(void *(*f)(void *)) {
     WORD(rdomhistry, USHORT_IO(length, 2, F(cnc_rdomhistry)(H, N(1), &length, B0))) \
     WORD(rdomhistry2, return F(cnc_rdomhistry2)(H, N(1), N(2), N(3), B0)) \
     WORD(rdalmhistry5, return F(cnc_rdalmhistry5)(H, N(1), N(2), N(3), B0)) \
+    WORD(accdecdly, return F(cnc_accdecdly)(H, N(1), N(2), B0)) \
+    WORD(srvdelay, return F(cnc_srvdelay)(H, N(1), N(2), B0)) \
+    WORD(skip, return F(cnc_skip)(H, N(1), N(2), B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \
