@@ -859,6 +859,17 @@ typedef struct ODBPARANUM {
 } ODBPARANUM;
 
 /*
+ cnc_rdpitchr: pitch error compensation data (5 points as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct IODBPI {
+    short datano_s;
+    short dummy;
+    short datano_e;
+    char data[5];
+} IODBPI;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -2122,6 +2133,28 @@ short cnc_rdparar(unsigned short FlibHndl,
                   short *e_number,
                   short *length,
                   void *param);
+
+/*
+ Reads the number of pitch error compensation points.
+
+ # Safety
+ `datano` must be NULL or point to a writable short.
+ */
+short cnc_rdpitchinfo(unsigned short FlibHndl, short *datano);
+
+/*
+ Reads the pitch error compensation points `datano_s..=datano_e` into
+ IODBPI (one byte a point), 716 points an exchange; when an exchange's
+ points do not fit in `length`: EW_LENGTH, the points before them written.
+
+ # Safety
+ `pi` must point to `length` writable bytes.
+ */
+short cnc_rdpitchr(unsigned short FlibHndl,
+                   short datano_s,
+                   short datano_e,
+                   short length,
+                   struct IODBPI *pi);
 
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,

@@ -369,6 +369,7 @@ rust_layouts! {
     ODBOMHIS { om_no, year, month, day, hour, minute, second, om_msg }
     ODBOMHIS2 { s_no, e_no, opm_his }
     ODBAHIS5 { s_no, e_no, alm_his }
+    IODBPI { datano_s, dummy, datano_e, data }
 
     // --- tool ---
     ODBTLIFE3 { datano, dummy, data }

@@ -124,3 +124,31 @@ fn alarm_history_5_reads_the_ring_two_entries_an_exchange() {
     sim::free(h);
     drop(s);
 }
+
+#[test]
+fn pitch_error_table_reads_the_profile_across_exchanges() {
+    let (s, h) = sim::start_alloc(Profile::default());
+    let p = Profile::default().pitch;
+    let mut n = 0i16;
+    assert_eq!(unsafe { cnc_rdpitchinfo(h, &mut n) }, EW_OK);
+    assert_eq!(i32::from(n), p.size);
+    // Points 0..=999: two exchanges (716 points each at most).
+    let mut b = vec![0x55u8; 6 + 1000 + 8];
+    let r = unsafe { cnc_rdpitchr(h, 0, 999, 1006, b.as_mut_ptr().cast()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!(i16::from_le_bytes([b[4], b[5]]), 999);
+    for (i, v) in p.values.iter().enumerate() {
+        assert_eq!(b[6 + i] as i8, *v, "point {i}");
+    }
+    assert_eq!(b[6 + 1000], 0x55, "nothing past the points");
+    assert_eq!(
+        unsafe { cnc_rdpitchr(h, 0, 999, 100, b.as_mut_ptr().cast()) },
+        EW_LENGTH
+    );
+    assert_eq!(
+        unsafe { cnc_rdpitchr(h, 5, 4, 100, b.as_mut_ptr().cast()) },
+        EW_NUMBER
+    );
+    sim::free(h);
+    drop(s);
+}

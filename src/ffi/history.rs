@@ -1,12 +1,13 @@
-//! The operation history, the operator message histories and alarm history
-//! 5: records read by number range (src/proto/history.rs).
+//! Records read by number range (src/proto/history.rs): the operation
+//! history, the operator message histories, alarm history 5 and the pitch
+//! error table.
 
 use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};
 use crate::proto::history::{self as ph, OpKind, be16, be32};
-use crate::types::{ODBAHIS5, ODBHIS, ODBOMHIS, ODBOMHIS2};
+use crate::types::{IODBPI, ODBAHIS5, ODBHIS, ODBOMHIS, ODBOMHIS2};
 use std::os::raw::{c_short, c_ushort};
 
 /// `s_number..=e_number` must be a range (FANUC's library: EW_NUMBER
@@ -250,4 +251,51 @@ unsafe fn put_alm5(o: *mut u8, r: &[u8]) {
             std::ptr::copy_nonoverlapping(r.as_ptr().add(wire + 128), o.add(at + 128), 32);
         }
     }
+}
+
+/// Reads the pitch error compensation points `datano_s..=datano_e` into
+/// IODBPI (one byte a point), 716 points an exchange; when an exchange's
+/// points do not fit in `length`: EW_LENGTH, the points before them written.
+///
+/// # Safety
+/// `pi` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdpitchr(
+    FlibHndl: c_ushort,
+    datano_s: c_short,
+    datano_e: c_short,
+    length: c_short,
+    pi: *mut IODBPI,
+) -> c_short {
+    ffi_boundary!("cnc_rdpitchr", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(pi)?.cast::<u8>();
+        if datano_s > datano_e {
+            return Err(Error::local(EW_NUMBER, "start number after end number"));
+        }
+        // 716 points an exchange; a later exchange's error ends the read
+        // with the points before it (FANUC's library).
+        let (e, mut at, mut n) = (i32::from(datano_e), i32::from(datano_s), 0usize);
+        while at <= e {
+            let recs = match h.call(&ph::rdpitchr(at, e)) {
+                Ok(r) => r,
+                Err(err) if n == 0 => return Err(err),
+                Err(_) => break,
+            };
+            fit(length as c_ushort, 6, 1, n + recs.len())?;
+            for r in &recs {
+                unsafe { put_at(out, 6 + n, r[1]) };
+                n += 1;
+            }
+            if (recs.len() as i32) < (e - at + 1).min(ph::PITCH_CHUNK) {
+                break;
+            }
+            at += ph::PITCH_CHUNK;
+        }
+        unsafe {
+            put_at(out, 0, datano_s);
+            put_at(out, 4, datano_s.wrapping_add(n as i16).wrapping_sub(1));
+        }
+        Ok(())
+    })
 }

@@ -1,6 +1,7 @@
-//! History records: the operation history (cnc_rdophistry), the operator
-//! message histories (cnc_rdomhistry, cnc_rdomhistry2) and alarm history 5
-//! (cnc_rdalmhistry5). Learnt with the oracle (src/proto/NOTES.md).
+//! Records read by number range: the operation history (cnc_rdophistry),
+//! the operator message histories (cnc_rdomhistry, cnc_rdomhistry2), alarm
+//! history 5 (cnc_rdalmhistry5) and the pitch error table (cnc_rdpitchr).
+//! Learnt with the oracle (src/proto/NOTES.md).
 //!
 //! Each answer is fixed-size records (cnc_rdomhistry2: after a 4-byte
 //! count).
@@ -13,6 +14,7 @@ pub const RDOPHISTRY: u16 = 0x006a;
 pub const RDOMHISTRY: u16 = 0x0073;
 pub const RDOMHISTRY2: u16 = 0x01b5;
 pub const RDALMHISTRY5: u16 = 0x01d1;
+pub const RDPITCHR: u16 = 0x0012;
 
 /// Bytes of one record on the wire.
 pub const OP_REC: usize = 16;
@@ -101,6 +103,19 @@ pub fn rdalmhistry5(s: u16, e: u16) -> Records {
         sub: ReqSub::cnc(RDALMHISTRY5, &[s, e, e - s + 1, 1]),
         skip: 0,
         size: ALM5_REC,
+    }
+}
+
+/// Pitch error points asked for in one exchange.
+pub const PITCH_CHUNK: i32 = 716;
+
+/// cnc_rdpitchr: (1,0x0012)[s, e], one i16 a point, at most 716 points.
+pub fn rdpitchr(s: i32, e: i32) -> Records {
+    let e = s + (e - s + 1).min(PITCH_CHUNK) - 1;
+    Records {
+        sub: ReqSub::cnc(RDPITCHR, &[s, e]),
+        skip: 0,
+        size: 2,
     }
 }
 

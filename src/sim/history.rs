@@ -146,13 +146,24 @@ impl Machine {
         push_newest(&mut h.entries, h.capacity, Operation { time, ..op });
     }
 
-    /// The history record reads (src/proto/history.rs): 0x006a [s, e]
-    /// operation records, 0x0073 [s, e] and 0x01b5 [s, e, n] operator
-    /// messages, 0x01d1 [s, e, n] alarm history 5; entries s..=e (1 =
-    /// newest) that exist.
+    /// The range reads (src/proto/history.rs): 0x006a [s, e] operation
+    /// records, 0x0073 [s, e] and 0x01b5 [s, e, n] operator messages,
+    /// 0x01d1 [s, e, n] alarm history 5 (entries s..=e, 1 = newest, that
+    /// exist); 0x0012 [s, e] pitch error points.
     pub fn history_bytes(&mut self, path: u16, cmd: u16, a: [i32; 5]) -> Reply<Vec<u8>> {
         use crate::proto::history as ph;
         let (s, e) = (a[0], a[1]);
+        if cmd == ph::RDPITCHR {
+            // Pitch points s..=e of the table, 0 where the profile has none.
+            let p = &self.profile.pitch;
+            if s < 0 || e < s || e >= p.size {
+                return Err(CncError::NUMBER);
+            }
+            let v = |n: i32| p.values.get(n as usize).copied().unwrap_or(0);
+            return Ok((s..=e)
+                .flat_map(|n| i16::from(v(n)).to_be_bytes())
+                .collect());
+        }
         if s < 0 || e < s {
             return Err(CncError::NUMBER);
         }

@@ -526,6 +526,7 @@ impl CncService for Machine {
                 .take(8)
                 .map(|s| i64::from(s.alarm))
                 .collect()),
+            "cnc_rdpitchinfo" => Ok(vec![i64::from(self.profile.pitch.size)]),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),

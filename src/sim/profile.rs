@@ -63,9 +63,30 @@ pub struct Profile {
     pub operation_history: history::OperationHistory,
     #[serde(default)]
     pub operator_message_history: history::MessageHistory,
+    /// The pitch error compensation table (cnc_rdpitchinfo, cnc_rdpitchr).
+    #[serde(default)]
+    pub pitch: Pitch,
     // --- tool ---
 
     // --- upload ---
+}
+
+/// `[pitch]`: pitch error compensation points 0..`size`, each an
+/// incremental compensation in detection units; points past `values` are 0.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Pitch {
+    pub size: i32,
+    pub values: Vec<i8>,
+}
+
+impl Default for Pitch {
+    fn default() -> Self {
+        Pitch {
+            size: 1024,
+            values: Vec::new(),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -335,8 +335,8 @@ pub trait CncService: Send {
     fn rdalmhisno(&mut self) -> Reply<Count> {
         unsupported()
     }
-    /// The history record reads of src/proto/history.rs (0x006a, 0x0073,
-    /// 0x01b5, 0x01d1): the answer's bytes for the request's arguments.
+    /// The range reads of src/proto/history.rs (0x006a, 0x0073, 0x01b5,
+    /// 0x01d1, 0x0012): the answer's bytes for the request's arguments.
     fn history_records(&mut self, path: u16, cmd: u16, args: [i32; 5]) -> Reply<Vec<u8>> {
         unsupported()
     }
@@ -490,7 +490,11 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, RDALMHISNO) => enc(svc.rdalmhisno()),
             (
                 CLASS_CNC,
-                c @ (phis::RDOPHISTRY | phis::RDOMHISTRY | phis::RDOMHISTRY2 | phis::RDALMHISTRY5),
+                c @ (phis::RDOPHISTRY
+                | phis::RDOMHISTRY
+                | phis::RDOMHISTRY2
+                | phis::RDALMHISTRY5
+                | phis::RDPITCHR),
             ) => svc.history_records(p, c, a),
 
             // --- tool ---

@@ -243,6 +243,17 @@ pub const FUNCS: &[Func] = &[
         short: Short::Zeros,
         dims: &[],
     },
+    Func {
+        name: "cnc_rdpitchinfo",
+        doc: "Reads the number of pitch error compensation points.",
+        params: &[Param::Out("datano", "short")],
+        checks: &[],
+        forms: &[every_class(0x0014, &[])],
+        reply: &[to(I32, "", I16)],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
     // --- offsets and tool life ---
     Func {
         name: "cnc_rdtofsinfo2",
