@@ -2089,6 +2089,20 @@ short cnc_rdparam(unsigned short FlibHndl,
                   struct IODBPSD *param);
 
 /*
+ Reads a CNC parameter as cnc_rdparam does; a `type` other than 0 sets
+ the request's fifth word (what the CNC makes of it is not known).
+
+ # Safety
+ `param` must point to a writable IODBPSD.
+ */
+short cnc_rdparam3(unsigned short FlibHndl,
+                   short number,
+                   short axis,
+                   short length,
+                   short type,
+                   struct IODBPSD *param);
+
+/*
  Reads several parameters, all axes each, with their attributes. The
  numbers are 32-bit (`prm_no` is read 4 bytes per element, as FANUC's
  x86-64 library does). A number the CNC does not know gets `type` -1 and

@@ -23,8 +23,7 @@ use std::os::raw::{c_long, c_short, c_ushort, c_void};
 unsafe fn read_one(
     h: &Handle,
     table: Table,
-    number: c_short,
-    axis: c_short,
+    (number, axis, flag): (c_short, c_short, i32),
     length: c_short,
     out: *mut u8,
 ) -> Result<()> {
@@ -32,6 +31,7 @@ unsafe fn read_one(
         table,
         number: number as i32,
         axis,
+        flag,
     })?;
     // A `length` below the header's 4 bytes: nothing is written.
     if length < 4 {
@@ -75,7 +75,29 @@ pub unsafe extern "C" fn cnc_rdparam(
     ffi_boundary!("cnc_rdparam", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(param)?;
-        unsafe { read_one(&h, Table::Param, number, axis, length, out.cast()) }
+        unsafe { read_one(&h, Table::Param, (number, axis, 0), length, out.cast()) }
+    })
+}
+
+/// Reads a CNC parameter as cnc_rdparam does; a `type` other than 0 sets
+/// the request's fifth word (what the CNC makes of it is not known).
+///
+/// # Safety
+/// `param` must point to a writable IODBPSD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparam3(
+    FlibHndl: c_ushort,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    r#type: c_short,
+    param: *mut IODBPSD,
+) -> c_short {
+    ffi_boundary!("cnc_rdparam3", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(param)?;
+        let flag = i32::from(r#type != 0) << 16;
+        unsafe { read_one(&h, Table::Param, (number, axis, flag), length, out.cast()) }
     })
 }
 
@@ -95,7 +117,7 @@ pub unsafe extern "C" fn cnc_diagnoss(
     ffi_boundary!("cnc_diagnoss", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(diag)?;
-        unsafe { read_one(&h, Table::Diag, number, axis, length, out.cast()) }
+        unsafe { read_one(&h, Table::Diag, (number, axis, 0), length, out.cast()) }
     })
 }
 

@@ -301,6 +301,9 @@ pub struct ReadOne {
     pub table: Table,
     pub number: i32,
     pub axis: i16,
+    /// The request's fifth word: cnc_rdparam3 sends 0x10000 (a short 1 in
+    /// its first half) for a `type` other than 0; every other reader 0.
+    pub flag: i32,
 }
 
 /// How many values an answer block carries, by its axis word (FANUC's
@@ -317,7 +320,7 @@ impl Call for ReadOne {
         let n = self.number;
         vec![ReqSub::cnc(
             self.table.read_cmd(cx.class),
-            &[n, n, self.axis as i32],
+            &[n, n, self.axis as i32, 0, self.flag],
         )]
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Item> {
