@@ -818,6 +818,20 @@ typedef struct ODBPARAIF {
 } ODBPARAIF;
 
 /*
+ cnc_rdparainfo3: the attributes of one parameter.
+ */
+typedef struct ODBPARAIF2 {
+    short prm_no;
+    short size;
+    short array;
+    short unit;
+    short dim;
+    short input;
+    short display;
+    short others;
+} ODBPARAIF2;
+
+/*
  A real parameter value: `prm_val · 10^-dec_val`.
  */
 typedef struct REALPRM {
@@ -2069,6 +2083,24 @@ short cnc_rdparainfo(unsigned short FlibHndl,
                      short s_number,
                      unsigned short read_no,
                      struct ODBPARAIF *paraif);
+
+/*
+ Reads the attributes of up to `*num` parameters from `s_number` on into
+ ODBPARAIF2 records: number, size, array, unit, dimension, input, display
+ and other words; `*prev` and `*next` the existing numbers around them,
+ `*num` the records written (0 when the CNC answers an error). `*num` ≤
+ 0: EW_LENGTH before any traffic. At most 71 records are asked for.
+
+ # Safety
+ `num`, `prev`, `next` must point to writable shorts, `paraif` to `*num`
+ ODBPARAIF2.
+ */
+short cnc_rdparainfo3(unsigned short FlibHndl,
+                      short s_number,
+                      short *num,
+                      short *prev,
+                      short *next,
+                      struct ODBPARAIF2 *paraif);
 
 /*
  Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes

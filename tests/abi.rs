@@ -370,6 +370,7 @@ rust_layouts! {
     ODBOMHIS2 { s_no, e_no, opm_his }
     ODBAHIS5 { s_no, e_no, alm_his }
     IODBPI { datano_s, dummy, datano_e, data }
+    ODBPARAIF2 { prm_no, size, array, unit, dim, input, display, others }
 
     // --- tool ---
     ODBTLIFE3 { datano, dummy, data }

@@ -5,6 +5,7 @@ use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};
 use crate::proto::open::CncClass;
+use crate::proto::packet::MAX_ANSWER;
 use crate::proto::param::{
     ExtRecord, InfoList, Item, Packed, ParamInfo, ReadExt, ReadInfo, ReadOne, ReadRange, Table,
     WriteParam, WriteSeveral, block_len, check_length, ext_per_frame, rdnum, wrparas_per_frame,
@@ -565,6 +566,62 @@ pub unsafe extern "C" fn cnc_wrparas(
             h.call(&WriteSeveral {
                 records: chunk.to_vec(),
             })?;
+        }
+        Ok(())
+    })
+}
+
+/// Reads the attributes of up to `*num` parameters from `s_number` on into
+/// ODBPARAIF2 records: number, size, array, unit, dimension, input, display
+/// and other words; `*prev` and `*next` the existing numbers around them,
+/// `*num` the records written (0 when the CNC answers an error). `*num` ≤
+/// 0: EW_LENGTH before any traffic. At most 71 records are asked for.
+///
+/// # Safety
+/// `num`, `prev`, `next` must point to writable shorts, `paraif` to `*num`
+/// ODBPARAIF2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparainfo3(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    num: *mut c_short,
+    prev: *mut c_short,
+    next: *mut c_short,
+    paraif: *mut crate::types::ODBPARAIF2,
+) -> c_short {
+    ffi_boundary!("cnc_rdparainfo3", {
+        let h = handles::get(FlibHndl)?;
+        let (num, prev, next) = (nonnull(num)?, nonnull(prev)?, nonnull(next)?);
+        let out = nonnull(paraif)?.cast::<u8>();
+        let want = unsafe { num.read_unaligned() };
+        if want <= 0 {
+            return Err(Error::local(EW_LENGTH, "num must be at least 1"));
+        }
+        // At most one answer's records; a CNC error sets *num 0.
+        let ask = want.min(((MAX_ANSWER - 8) / crate::proto::param::INFO3_REC) as i16);
+        let b: Vec<u8> = match h.call(&crate::proto::param::rdparainfo3(s_number, ask)) {
+            Ok(b) => b.concat(),
+            Err(e) => {
+                unsafe { put(num, 0) };
+                return Err(e);
+            }
+        };
+        let word = |at: usize| {
+            b.get(at..at + 2)
+                .map_or(0, |w| i16::from_be_bytes([w[0], w[1]]))
+        };
+        let rec = crate::proto::param::INFO3_REC;
+        let n = (b.len().saturating_sub(8) / rec).min(want as usize);
+        unsafe {
+            for i in 0..n {
+                let r = 8 + rec * i;
+                for k in 0..8 {
+                    put(out.add(16 * i + 2 * k).cast::<i16>(), word(r + 2 + 2 * k));
+                }
+            }
+            put(prev, word(2));
+            put(next, word(6));
+            put(num, n as i16);
         }
         Ok(())
     })

@@ -423,6 +423,22 @@ impl ParamType30 {
     }
 }
 
+/// The fifth word of cnc_rdparainfo3's 0x00a0 request (a short 1 in its
+/// first half): the answer is the previous and next numbers (i32 each), then
+/// a 20-byte record a parameter (ParamType30 from `number` on).
+pub const INFO3_FLAG: i32 = 0x0001_0000;
+/// Bytes of one cnc_rdparainfo3 record.
+pub const INFO3_REC: usize = 20;
+
+/// cnc_rdparainfo3: (1,0x00a0)[s, n, 0, 0, flag].
+pub fn rdparainfo3(s: i16, n: i16) -> super::history::Records {
+    super::history::Records {
+        sub: ReqSub::cnc(PARAMTYPE, &[i32::from(s), i32::from(n), 0, 0, INFO3_FLAG]),
+        skip: 0,
+        size: 1,
+    }
+}
+
 /// Size of the 0x00a0 payload FANUC's cnc_wrparam accepts.
 pub const PARAMTYPE_LEN: usize = 28;
 

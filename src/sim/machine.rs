@@ -353,6 +353,9 @@ impl CncService for Machine {
         }
         self.table_type30(table, number)
     }
+    fn param_info3(&mut self, _path: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        self.table_info3(s, n)
+    }
     fn param_num(&mut self, _path: u16, table: Table) -> Reply<NumRange> {
         Ok(self.table_num(table))
     }

@@ -236,6 +236,10 @@ pub trait CncService: Send {
     fn param_type30(&mut self, path: u16, table: Table, number: i32) -> Reply<ParamType30> {
         unsupported()
     }
+    /// cnc_rdparainfo3 (0x00a0 with the list flag): parameters from `s` on.
+    fn param_info3(&mut self, path: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
     /// cnc_rdparanum (0x0011) / cnc_rddiagnum (0x0032).
     fn param_num(&mut self, path: u16, table: Table) -> Reply<NumRange> {
         unsupported()
@@ -437,6 +441,9 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
                 svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16)
             }
             (CLASS_CNC, param::DIAGNOSS16) => svc.diag16(p, a[0], a[1], a[2] as i16),
+            (CLASS_CNC, param::PARAMTYPE) if a[4] == param::INFO3_FLAG => {
+                svc.param_info3(p, a[0], a[1])
+            }
             (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
             (CLASS_CNC, param::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
             (CLASS_CNC, param::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
