@@ -2088,8 +2088,9 @@ short cnc_rdparainfo(unsigned short FlibHndl,
  Reads the attributes of up to `*num` parameters from `s_number` on into
  ODBPARAIF2 records: number, size, array, unit, dimension, input, display
  and other words; `*prev` and `*next` the existing numbers around them,
- `*num` the records written (0 when the CNC answers an error). `*num` ≤
- 0: EW_LENGTH before any traffic. At most 71 records are asked for.
+ `*num` the records written (0 when the CNC answers an error). A `*num`
+ of 0 or less is EW_LENGTH before any traffic. At most 71 records are
+ asked for.
 
  # Safety
  `num`, `prev`, `next` must point to writable shorts, `paraif` to `*num`
