@@ -594,6 +594,7 @@ fn ident(name: &str) -> String {
 /// The Rust type of an output's C type.
 fn rust_type(c: &str) -> &str {
     match c {
+        "char" => "c_char",
         "short" => "c_short",
         "unsigned short" => "c_ushort",
         "long" => "c_long",
@@ -605,6 +606,7 @@ fn rust_type(c: &str) -> &str {
 /// x86-64 library writes); None for a struct.
 fn c_size(c: &str) -> Option<usize> {
     match c {
+        "char" => Some(1),
         "short" | "unsigned short" => Some(2),
         "long" => Some(4),
         _ => None,

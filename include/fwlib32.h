@@ -324,6 +324,46 @@ typedef struct ODBAHIS2 {
 } ODBAHIS2;
 
 /*
+ One entry of ODBAHIS5 (516 bytes).
+ */
+typedef struct ODBAHIS5_ALM {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    short pth_no;
+    short sys_alm;
+    short dsp_flg;
+    short axis_num;
+    char alm_msg[64];
+    LONG g_modal[10];
+    char g_dp[10];
+    short dummy1;
+    LONG a_modal[10];
+    char a_dp[10];
+    short dummy2;
+    LONG abs_pos[32];
+    char abs_dp[32];
+    LONG mcn_pos[32];
+    char mcn_dp[32];
+} ODBAHIS5_ALM;
+
+/*
+ cnc_rdalmhistry5: alarm history with the modal and position snapshot (10 entries as declared).
+ */
+typedef struct ODBAHIS5 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBAHIS5_ALM alm_his[10];
+} ODBAHIS5;
+
+/*
  ALMINFO type 0 record: axis bits and alarm number.
  */
 typedef struct ALMINFO_alm1_rec {
@@ -642,6 +682,123 @@ typedef struct ODBOMIF {
 } ODBOMIF;
 
 /*
+ cnc_rdomhistry: one operator message history entry.
+ */
+typedef struct ODBOMHIS {
+    short om_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char om_msg[256];
+} ODBOMHIS;
+
+/*
+ One entry of ODBOMHIS2.
+ */
+typedef struct ODBOMHIS2_OPM {
+    short dsp_flg;
+    short om_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char ope_msg[256];
+} ODBOMHIS2_OPM;
+
+/*
+ cnc_rdomhistry2: operator message history (10 entries as declared).
+ */
+typedef struct ODBOMHIS2 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBOMHIS2_OPM opm_his[10];
+} ODBOMHIS2;
+
+/*
+ ODBHIS alarm record.
+ */
+typedef struct ODBHIS_ALM {
+    short rec_type;
+    short alm_grp;
+    short alm_no;
+    char axis_no;
+    char dummy;
+} ODBHIS_ALM;
+
+/*
+ ODBHIS MDI key record.
+ */
+typedef struct ODBHIS_MDI {
+    short rec_type;
+    char key_code;
+    char pw_flag;
+    char dummy[4];
+} ODBHIS_MDI;
+
+/*
+ ODBHIS signal record.
+ */
+typedef struct ODBHIS_SGN {
+    short rec_type;
+    char sig_name;
+    char sig_old;
+    char sig_new;
+    char dummy;
+    short sig_no;
+} ODBHIS_SGN;
+
+/*
+ ODBHIS date record.
+ */
+typedef struct ODBHIS_DATE {
+    short rec_type;
+    char year;
+    char month;
+    char day;
+    char pw_flag;
+    char dummy[2];
+} ODBHIS_DATE;
+
+/*
+ ODBHIS time record.
+ */
+typedef struct ODBHIS_TIME {
+    short rec_type;
+    char hour;
+    char minute;
+    char second;
+    char pw_flag;
+    char dummy[2];
+} ODBHIS_TIME;
+
+/*
+ One 8-byte ODBHIS record, by its `rec_type`.
+ */
+typedef union ODBHIS_DATA {
+    struct ODBHIS_ALM rec_alm;
+    struct ODBHIS_MDI rec_mdi;
+    struct ODBHIS_SGN rec_sgn;
+    struct ODBHIS_DATE rec_date;
+    struct ODBHIS_TIME rec_time;
+} ODBHIS_DATA;
+
+/*
+ cnc_rdophistry: operation history (10 records as declared; the caller's
+ `length` says how many really fit).
+ */
+typedef struct ODBHIS {
+    unsigned short s_no;
+    short type;
+    unsigned short e_no;
+    union ODBHIS_DATA data[10];
+} ODBHIS;
+
+/*
  cnc_rdopmsg: one operator message (256-character variant).
  */
 typedef struct OPMSG {
@@ -669,6 +826,20 @@ typedef struct ODBPARAIF {
     short next_no;
     struct ODBPARAIF_info info[10];
 } ODBPARAIF;
+
+/*
+ cnc_rdparainfo3: the attributes of one parameter.
+ */
+typedef struct ODBPARAIF2 {
+    short prm_no;
+    short size;
+    short array;
+    short unit;
+    short dim;
+    short input;
+    short display;
+    short others;
+} ODBPARAIF2;
 
 /*
  A real parameter value: `prm_val · 10^-dec_val`.
@@ -791,6 +962,17 @@ typedef struct ODBPDFNFIL {
     short dir_num;
     short file_num;
 } ODBPDFNFIL;
+
+/*
+ cnc_rdpitchr: pitch error compensation data (5 points as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct IODBPI {
+    short datano_s;
+    short dummy;
+    short datano_e;
+    char data[5];
+} IODBPI;
 
 /*
  One position of cnc_rdposition.
@@ -1337,6 +1519,14 @@ short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Reads the acceleration/deceleration delay of one axis or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_accdecdly(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
  Reads the actual feed rate (F).
 
  # Safety
@@ -1823,6 +2013,21 @@ short cnc_rdalmhistry2(unsigned short FlibHndl,
                        struct ODBAHIS2 *alm_hst);
 
 /*
+ Reads alarm history entries `s_number..=e_number` (1 = newest) with their
+ modal and position snapshot into ODBAHIS5, two entries an exchange until
+ the range is read or the CNC has no more; when an exchange's entries do
+ not fit in `length`: EW_LENGTH, the entries before them written.
+
+ # Safety
+ `almhis` must point to `length` writable bytes.
+ */
+short cnc_rdalmhistry5(unsigned short FlibHndl,
+                       unsigned short s_number,
+                       unsigned short e_number,
+                       unsigned short length,
+                       struct ODBAHIS5 *almhis);
+
+/*
  Reads active alarms of `alm_type` (−1 all): `type` 0 axis and number
  (ALMINFO alm1, 8-byte records), 1 with messages (alm2, 40-byte records);
  after the last record −1 is written into the next record's place (the
@@ -2152,12 +2357,54 @@ short cnc_rdomhisinfo(unsigned short FlibHndl, struct ODBOMIF *ominfo);
 short cnc_rdomhisno(unsigned short FlibHndl, unsigned short *hisno);
 
 /*
+ Reads `*num` operator message history entries (at most five) from
+ `s_number` (0 = newest) into ODBOMHIS records; `*num` = the entries
+ written.
+
+ # Safety
+ `num` must point to a writable unsigned short, `omhis` to `*num` ODBOMHIS.
+ */
+short cnc_rdomhistry(unsigned short FlibHndl,
+                     unsigned short s_number,
+                     unsigned short *num,
+                     struct ODBOMHIS *omhis);
+
+/*
+ Reads the operator message history entries `s_number..=e_number` (at
+ most five) into ODBOMHIS2; when they do not all fit in `length`:
+ EW_LENGTH, nothing written.
+
+ # Safety
+ `omhis` must point to `length` writable bytes.
+ */
+short cnc_rdomhistry2(unsigned short FlibHndl,
+                      unsigned short s_number,
+                      unsigned short e_number,
+                      unsigned short length,
+                      struct ODBOMHIS2 *omhis);
+
+/*
  Reads the number of operation history entries.
 
  # Safety
  `hisno` must be NULL or point to a writable unsigned short.
  */
 short cnc_rdophisno(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
+ Reads the operation history entries `s_number..=e_number` into ODBHIS,
+ each 8-byte record decoded by its type (MDI key, signal, alarm, date,
+ time; other types: the type alone). At most 89 entries are asked for;
+ when they do not all fit in `length`: EW_LENGTH, nothing written.
+
+ # Safety
+ `ophis` must point to `length` writable bytes.
+ */
+short cnc_rdophistry(unsigned short FlibHndl,
+                     unsigned short s_number,
+                     unsigned short e_number,
+                     unsigned short length,
+                     struct ODBHIS *ophis);
 
 /*
  Reads the operation mode word. An answer without a whole word writes
@@ -2198,6 +2445,25 @@ short cnc_rdparainfo(unsigned short FlibHndl,
                      struct ODBPARAIF *paraif);
 
 /*
+ Reads the attributes of up to `*num` parameters from `s_number` on into
+ ODBPARAIF2 records: number, size, array, unit, dimension, input, display
+ and other words; `*prev` and `*next` the existing numbers around them,
+ `*num` the records written (0 when the CNC answers an error). A `*num`
+ of 0 or less is EW_LENGTH before any traffic. At most 71 records are
+ asked for.
+
+ # Safety
+ `num`, `prev`, `next` must point to writable shorts, `paraif` to `*num`
+ ODBPARAIF2.
+ */
+short cnc_rdparainfo3(unsigned short FlibHndl,
+                      short s_number,
+                      short *num,
+                      short *prev,
+                      short *next,
+                      struct ODBPARAIF2 *paraif);
+
+/*
  Reads a CNC parameter: one axis (`axis` ≥ 1), no axis (0) or all axes
  (-1). The answer's axis word decides how many values come back: a
  negative one max-axes values, any other one value (a non-axis parameter
@@ -2214,6 +2480,20 @@ short cnc_rdparam(unsigned short FlibHndl,
                   short axis,
                   short length,
                   struct IODBPSD *param);
+
+/*
+ Reads a CNC parameter as cnc_rdparam does; a `type` other than 0 sets
+ the request's fifth word (what the CNC makes of it is not known).
+
+ # Safety
+ `param` must point to a writable IODBPSD.
+ */
+short cnc_rdparam3(unsigned short FlibHndl,
+                   short number,
+                   short axis,
+                   short length,
+                   short type,
+                   struct IODBPSD *param);
 
 /*
  Reads several parameters, all axes each, with their attributes. The
@@ -2340,6 +2620,28 @@ short cnc_rdpdf_subdir(unsigned short FlibHndl,
 short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *num_fil);
 
 /*
+ Reads the number of pitch error compensation points.
+
+ # Safety
+ `datano` must be NULL or point to a writable short.
+ */
+short cnc_rdpitchinfo(unsigned short FlibHndl, short *datano);
+
+/*
+ Reads the pitch error compensation points `datano_s..=datano_e` into
+ IODBPI (one byte a point), 716 points an exchange; when an exchange's
+ points do not fit in `length`: EW_LENGTH, the points before them written.
+
+ # Safety
+ `pi` must point to `length` writable bytes.
+ */
+short cnc_rdpitchr(unsigned short FlibHndl,
+                   short datano_s,
+                   short datano_e,
+                   short length,
+                   struct IODBPI *pi);
+
+/*
  Reads positions with decimals, units and names: `type` 0 absolute,
  1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
  room (at least 1), out = axes written. As FANUC's library, a 16i-class
@@ -2460,6 +2762,14 @@ short cnc_rdprogline(unsigned short FlibHndl,
  `seqnum` must be NULL or point to a writable ODBSEQ.
  */
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
+ Reads the alarm state of each spindle, one byte per spindle (at most 8).
+
+ # Safety
+ `data` must be NULL or point to a writable char.
+ */
+short cnc_rdspdlalm(unsigned short FlibHndl, char *data);
 
 /*
  Reads the names of the spindles: `*data_num` in = room in `spdlname`,
@@ -2736,6 +3046,22 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
  `time` must point to a readable IODBTIMER.
  */
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
+ Reads the skip position of one axis or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_skip(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the servo delay (position deviation) of one axis or all axes (-1).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_srvdelay(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Cycle start: the CNC runs the selected main program (MEMORY mode, no

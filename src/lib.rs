@@ -23,6 +23,7 @@ pub mod types;
 // The exported C functions, callable from Rust too. Areas fill in one at a time.
 #[allow(unused_imports)]
 pub use ffi::{
-    absent::*, alarm::*, described::*, download::*, ext::*, folder::*, handle::*, macros::*,
-    memory::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*, upload::*,
+    absent::*, alarm::*, described::*, download::*, ext::*, folder::*, handle::*, history::*,
+    macros::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
+    upload::*,
 };

@@ -377,6 +377,12 @@ rust_layouts! {
     // alarm history (offset helper)
     ODBAHIS { s_no, r#type, e_no, alm_his }
     ODBAHIS2 { s_no, e_no, alm_his }
+    ODBHIS { s_no, r#type, e_no, data }
+    ODBOMHIS { om_no, year, month, day, hour, minute, second, om_msg }
+    ODBOMHIS2 { s_no, e_no, opm_his }
+    ODBAHIS5 { s_no, e_no, alm_his }
+    IODBPI { datano_s, dummy, datano_e, data }
+    ODBPARAIF2 { prm_no, size, array, unit, dim, input, display, others }
 
     // --- tool ---
     ODBTLIFE3 { datano, dummy, data }

@@ -434,8 +434,46 @@ fn adapter_example_batched_reads_the_same_values_in_two_frames_a_poll() {
     assert_eq!(
         (frames_alone - outside) / 3,
         19,
-        "one a call, cnc_rdntool's answered locally"
+        "one a call, one answered locally"
     );
     // 37 subpackets a poll (33 different), at most 16 a frame on a 30i.
     assert_eq!((frames_batched - outside) / 3, 3);
+}
+
+#[test]
+fn maintenance_example_reports_the_histories() {
+    let dir = toolchain::lib_dir("maintenance");
+    let exe = build_example("maintenance", &dir);
+    let p = Profile::default();
+    let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
+    let out = toolchain::target_command(&exe)
+        .args(["127.0.0.1", &sim.port().to_string()])
+        .env("LD_LIBRARY_PATH", &dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "maintenance failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let kv = key_values(&out.stdout);
+    assert_eq!(
+        kv["operations"],
+        p.operation_history.entries.len().to_string()
+    );
+    assert_eq!(kv["op1"], "alarm 1001");
+    assert_eq!(kv["op2"], "signal 0.43 01->05");
+    assert_eq!(kv["op4"], "time 13:45:30");
+    assert_eq!(kv["op5"], "date 24-05-17");
+    assert_eq!(
+        kv["messages"], "3",
+        "the message on display, the profile's two"
+    );
+    assert_eq!(kv["msg2"], "2002 2024-05-17 TOOL 12 LIFE EXPIRED");
+    let a = &p.alarm_history.entries[0];
+    assert_eq!(kv["alarms"], "3");
+    assert_eq!(
+        kv["alarm1"],
+        format!("{} {} {}", a.number, a.time, a.message)
+    );
 }

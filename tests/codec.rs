@@ -389,6 +389,7 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                         },
                                         number: num(&args[0]) as i16 as i32,
                                         axis: num(&args[1]) as i16,
+                                        flag: 0,
                                     };
                                     stamped(&r, &cx, path)
                                 }

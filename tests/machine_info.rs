@@ -6,6 +6,7 @@ mod sim;
 
 use fwlib32::ew::*;
 use fwlib32::sim::Profile;
+use fwlib32::types::ODBAXIS;
 use fwlib32::*;
 
 #[test]
@@ -249,17 +250,23 @@ fn operation_history_records_the_alarms_the_machine_raises() {
         assert_eq!(unsafe { cnc_rdophisno(h, &mut n) }, EW_OK);
         n
     };
+    // The profile's five records; cleared, the alarm at 31 s comes with a
+    // date and a time record.
+    assert_eq!(count(), 5);
+    assert_eq!(cnc_clearophis(h, 0), EW_OK);
     s.set_elapsed(std::time::Duration::from_secs(10));
     assert_eq!(count(), 0);
     s.set_elapsed(std::time::Duration::from_secs(31));
-    assert_eq!(count(), 1);
-    // Stopped: the alarm at 90 s is not recorded; started again, the one at 150 s is.
+    assert_eq!(count(), 3);
+    // Stopped: the alarm at 90 s is not recorded; started again, the one at
+    // 150 s is (with a time record on a new second of the clock, a date
+    // record on a new day).
     assert_eq!(cnc_stopophis(h), EW_OK);
     s.set_elapsed(std::time::Duration::from_secs(91));
-    assert_eq!(count(), 1);
+    assert_eq!(count(), 3);
     assert_eq!(cnc_startophis(h), EW_OK);
     s.set_elapsed(std::time::Duration::from_secs(151));
-    assert_eq!(count(), 2);
+    assert!((4..=6).contains(&count()));
     assert_eq!(cnc_clearophis(h, 0), EW_OK);
     assert_eq!(count(), 0);
     assert_eq!(unsafe { cnc_rdophisno(h, std::ptr::null_mut()) }, EW_DATA);
@@ -268,21 +275,61 @@ fn operation_history_records_the_alarms_the_machine_raises() {
 #[test]
 fn operator_message_history_holds_the_messages_shown() {
     let text = fwlib32::sim::profile::DEFAULT_PROFILE.replacen(
-        "[alarm_history]",
-        "[operator_message_history]\ncapacity = 20\nchars = 128\n\n[alarm_history]",
+        "capacity = 50\n[[operator_message_history.entry]]",
+        "capacity = 20\nchars = 128\n[[operator_message_history.entry]]",
         1,
     );
     let (_s, h) = sim::start_alloc(Profile::parse(&text).unwrap());
     let mut n = 0u16;
     assert_eq!(unsafe { cnc_rdomhisno(h, &mut n) }, EW_OK);
-    assert_eq!(n, 1, "the profile's message on display at power-on");
+    assert_eq!(
+        n, 3,
+        "the message on display at power-on, the profile's two"
+    );
     let mut i = fwlib32::types::ODBOMIF::default();
     assert_eq!(unsafe { cnc_rdomhisinfo(h, &mut i) }, EW_OK);
-    assert_eq!((i.om_max, i.om_sum, i.om_char), (20, 1, 128));
+    assert_eq!((i.om_max, i.om_sum, i.om_char), (20, 3, 128));
     assert_eq!(cnc_stopomhis(h), EW_OK);
     assert_eq!(cnc_startomhis(h), EW_OK);
     assert_eq!(cnc_clearomhis(h), EW_OK);
     assert_eq!(unsafe { cnc_rdomhisno(h, &mut n) }, EW_OK);
     assert_eq!(n, 0);
     assert_eq!(unsafe { cnc_rdomhisinfo(h, std::ptr::null_mut()) }, EW_DATA);
+}
+
+#[test]
+fn servo_and_spindle_figures_follow_the_profile_and_the_motion() {
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE.replacen(
+        "alarm = 0                # spindle",
+        "alarm = 7                # spindle",
+        1,
+    );
+    let p = Profile::parse(&text).unwrap();
+    let (_s, h) = sim::start_alloc(p.clone());
+    let mut alm = [0x55i8; 8];
+    assert_eq!(unsafe { cnc_rdspdlalm(h, alm.as_mut_ptr().cast()) }, EW_OK);
+    assert_eq!(alm[0], 7);
+    assert_eq!(alm[1], 0x55, "one byte per spindle");
+
+    let read = |f: unsafe extern "C" fn(u16, i16, i16, *mut ODBAXIS) -> i16, axis: i16| {
+        let mut b = ODBAXIS::default();
+        assert_eq!(unsafe { f(h, axis, 4 + 4 * 32, &mut b) }, EW_OK);
+        assert_eq!(b.r#type, axis);
+        b.data
+    };
+    assert_eq!(read(cnc_skip, 1)[0], p.paths[0].axes[0].skip);
+    // Delays follow the motor speed: zero for an axis at rest.
+    let speed = {
+        let mut v = [0i32; 32];
+        assert_eq!(unsafe { cnc_rdsrvspeed(h, v.as_mut_ptr().cast()) }, EW_OK);
+        v
+    };
+    let (srv, acc) = (read(cnc_srvdelay, -1), read(cnc_accdecdly, -1));
+    for k in 0..p.paths[0].axes.len() {
+        assert_eq!(srv[k] == 0, speed[k] == 0, "axis {k}");
+        assert_eq!(acc[k] == 0, speed[k] == 0, "axis {k}");
+    }
+    let mut b = ODBAXIS::default();
+    assert_eq!(unsafe { cnc_srvdelay(h, -1, 8, &mut b) }, EW_LENGTH);
+    assert_eq!(unsafe { cnc_skip(h, 33, 8, &mut b) }, EW_ATTRIB);
 }

@@ -778,3 +778,18 @@ fn non_axis_parameter_read_with_all_axes() {
     assert_eq!(rd(h, 1825, -1, 8).0, EW_LENGTH);
     sim::free(h);
 }
+
+#[test]
+fn rdparainfo3_lists_the_parameter_table_with_its_neighbours() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let mut b = [fwlib32::types::ODBPARAIF2::default(); 4];
+    let (mut num, mut prev, mut next) = (4i16, 0i16, 0i16);
+    let r = unsafe { cnc_rdparainfo3(h, 1320, &mut num, &mut prev, &mut next, b.as_mut_ptr()) };
+    assert_eq!(r, EW_OK);
+    assert_eq!(num, 4);
+    assert_eq!((b[0].prm_no, b[0].size, b[0].array), (1320, 4, 2));
+    assert!(prev < 1320 && next > b[3].prm_no);
+    num = 0;
+    let r = unsafe { cnc_rdparainfo3(h, 1320, &mut num, &mut prev, &mut next, b.as_mut_ptr()) };
+    assert_eq!(r, EW_LENGTH);
+}

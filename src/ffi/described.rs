@@ -15,7 +15,7 @@ use crate::types::*;
 #[allow(unused_imports)]
 use std::mem::offset_of;
 #[allow(unused_imports)]
-use std::os::raw::{c_long, c_short, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// Where a described function's records go: the byte offset of the array
 /// in its output, the size of one element, and the offset of each record

@@ -9,6 +9,7 @@ pub mod exports;
 pub mod ext;
 pub mod folder;
 pub mod handle;
+pub mod history;
 pub mod macros;
 pub mod memory;
 pub mod offset;

@@ -5,6 +5,7 @@ use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};
 use crate::proto::open::CncClass;
+use crate::proto::packet::MAX_ANSWER;
 use crate::proto::param::{
     ExtRecord, InfoList, Item, Packed, ParamInfo, ReadExt, ReadInfo, ReadOne, ReadRange, Table,
     WriteParam, WriteSeveral, block_len, check_length, ext_per_frame, rdnum, wrparas_per_frame,
@@ -23,8 +24,7 @@ use std::os::raw::{c_long, c_short, c_ushort, c_void};
 unsafe fn read_one(
     h: &Handle,
     table: Table,
-    number: c_short,
-    axis: c_short,
+    (number, axis, flag): (c_short, c_short, i32),
     length: c_short,
     out: *mut u8,
 ) -> Result<()> {
@@ -32,6 +32,7 @@ unsafe fn read_one(
         table,
         number: number as i32,
         axis,
+        flag,
     })?;
     // A `length` below the header's 4 bytes: nothing is written.
     if length < 4 {
@@ -75,7 +76,29 @@ pub unsafe extern "C" fn cnc_rdparam(
     ffi_read!("cnc_rdparam", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(param)?;
-        unsafe { read_one(&h, Table::Param, number, axis, length, out.cast()) }
+        unsafe { read_one(&h, Table::Param, (number, axis, 0), length, out.cast()) }
+    })
+}
+
+/// Reads a CNC parameter as cnc_rdparam does; a `type` other than 0 sets
+/// the request's fifth word (what the CNC makes of it is not known).
+///
+/// # Safety
+/// `param` must point to a writable IODBPSD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparam3(
+    FlibHndl: c_ushort,
+    number: c_short,
+    axis: c_short,
+    length: c_short,
+    r#type: c_short,
+    param: *mut IODBPSD,
+) -> c_short {
+    ffi_boundary!("cnc_rdparam3", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(param)?;
+        let flag = i32::from(r#type != 0) << 16;
+        unsafe { read_one(&h, Table::Param, (number, axis, flag), length, out.cast()) }
     })
 }
 
@@ -95,7 +118,7 @@ pub unsafe extern "C" fn cnc_diagnoss(
     ffi_read!("cnc_diagnoss", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(diag)?;
-        unsafe { read_one(&h, Table::Diag, number, axis, length, out.cast()) }
+        unsafe { read_one(&h, Table::Diag, (number, axis, 0), length, out.cast()) }
     })
 }
 
@@ -543,6 +566,63 @@ pub unsafe extern "C" fn cnc_wrparas(
             h.call(&WriteSeveral {
                 records: chunk.to_vec(),
             })?;
+        }
+        Ok(())
+    })
+}
+
+/// Reads the attributes of up to `*num` parameters from `s_number` on into
+/// ODBPARAIF2 records: number, size, array, unit, dimension, input, display
+/// and other words; `*prev` and `*next` the existing numbers around them,
+/// `*num` the records written (0 when the CNC answers an error). A `*num`
+/// of 0 or less is EW_LENGTH before any traffic. At most 71 records are
+/// asked for.
+///
+/// # Safety
+/// `num`, `prev`, `next` must point to writable shorts, `paraif` to `*num`
+/// ODBPARAIF2.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdparainfo3(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    num: *mut c_short,
+    prev: *mut c_short,
+    next: *mut c_short,
+    paraif: *mut crate::types::ODBPARAIF2,
+) -> c_short {
+    ffi_boundary!("cnc_rdparainfo3", {
+        let h = handles::get(FlibHndl)?;
+        let (num, prev, next) = (nonnull(num)?, nonnull(prev)?, nonnull(next)?);
+        let out = nonnull(paraif)?.cast::<u8>();
+        let want = unsafe { num.read_unaligned() };
+        if want <= 0 {
+            return Err(Error::local(EW_LENGTH, "num must be at least 1"));
+        }
+        // At most one answer's records; a CNC error sets *num 0.
+        let ask = want.min(((MAX_ANSWER - 8) / crate::proto::param::INFO3_REC) as i16);
+        let b: Vec<u8> = match h.call(&crate::proto::param::rdparainfo3(s_number, ask)) {
+            Ok(b) => b.concat(),
+            Err(e) => {
+                unsafe { put(num, 0) };
+                return Err(e);
+            }
+        };
+        let word = |at: usize| {
+            b.get(at..at + 2)
+                .map_or(0, |w| i16::from_be_bytes([w[0], w[1]]))
+        };
+        let rec = crate::proto::param::INFO3_REC;
+        let n = (b.len().saturating_sub(8) / rec).min(want as usize);
+        unsafe {
+            for i in 0..n {
+                let r = 8 + rec * i;
+                for k in 0..8 {
+                    put(out.add(16 * i + 2 * k).cast::<i16>(), word(r + 2 + 2 * k));
+                }
+            }
+            put(prev, word(2));
+            put(next, word(6));
+            put(num, n as i16);
         }
         Ok(())
     })

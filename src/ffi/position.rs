@@ -933,6 +933,54 @@ pub unsafe extern "C" fn cnc_distance(
     })
 }
 
+/// Reads the skip position of one axis or all axes (-1).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_skip(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_skip", {
+        axis_values(pos::SKIP, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the servo delay (position deviation) of one axis or all axes (-1).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_srvdelay(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_srvdelay", {
+        axis_values(pos::SERVO_DELAY, FlibHndl, axis, length, buf)
+    })
+}
+
+/// Reads the acceleration/deceleration delay of one axis or all axes (-1).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_accdecdly(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBAXIS,
+) -> c_short {
+    ffi_boundary!("cnc_accdecdly", {
+        axis_values(pos::ACCDEC_DELAY, FlibHndl, axis, length, buf)
+    })
+}
+
 /// Reads the input (`dec_fig_in`) and output (`dec_fig_out`) decimal
 /// figures of every axis; `*valid_fig` = the number of axes.
 ///

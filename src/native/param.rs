@@ -200,6 +200,7 @@ fn read_part(
         table,
         number: number.min(i32::MAX as u32) as i32,
         axis,
+        flag: 0,
     };
     via(n.call, c, 8 + 8 * crate::types::MAX_AXIS, move |item| {
         param_of(table, number, item, axes)

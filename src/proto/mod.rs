@@ -6,6 +6,7 @@ pub mod call;
 pub mod described;
 pub mod download;
 pub mod frame;
+pub mod history;
 pub mod macros;
 pub mod names;
 pub mod offset;

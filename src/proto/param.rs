@@ -301,6 +301,9 @@ pub struct ReadOne {
     pub table: Table,
     pub number: i32,
     pub axis: i16,
+    /// The request's fifth word: cnc_rdparam3 sends 0x10000 (a short 1 in
+    /// its first half) for a `type` other than 0; every other reader 0.
+    pub flag: i32,
 }
 
 /// How many values an answer block carries, by its axis word (FANUC's
@@ -317,7 +320,7 @@ impl Call for ReadOne {
         let n = self.number;
         vec![ReqSub::cnc(
             self.table.read_cmd(cx.class),
-            &[n, n, self.axis as i32],
+            &[n, n, self.axis as i32, 0, self.flag],
         )]
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Item> {
@@ -417,6 +420,22 @@ impl ParamType30 {
     /// IODBPRM.unit of a parameter.
     pub fn ext_unit_param(&self) -> i16 {
         (self.unit_lo | (self.unit_hi << 2)) as i16
+    }
+}
+
+/// The fifth word of cnc_rdparainfo3's 0x00a0 request (a short 1 in its
+/// first half): the answer is the previous and next numbers (i32 each), then
+/// a 20-byte record a parameter (ParamType30 from `number` on).
+pub const INFO3_FLAG: i32 = 0x0001_0000;
+/// Bytes of one cnc_rdparainfo3 record.
+pub const INFO3_REC: usize = 20;
+
+/// cnc_rdparainfo3: (1,0x00a0)[s, n, 0, 0, flag].
+pub fn rdparainfo3(s: i16, n: i16) -> super::history::Records {
+    super::history::Records {
+        sub: ReqSub::cnc(PARAMTYPE, &[i32::from(s), i32::from(n), 0, 0, INFO3_FLAG]),
+        skip: 0,
+        size: 1,
     }
 }
 

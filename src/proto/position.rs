@@ -60,6 +60,12 @@ pub mod pos {
     pub const ABSOLUTE: i32 = 4;
     pub const RELATIVE: i32 = 6;
     pub const DISTANCE: i32 = 7;
+    /// cnc_skip: the position where the skip signal came.
+    pub const SKIP: i32 = 8;
+    /// cnc_srvdelay: the servo delay (position deviation).
+    pub const SERVO_DELAY: i32 = 9;
+    /// cnc_accdecdly: the acceleration/deceleration delay.
+    pub const ACCDEC_DELAY: i32 = 10;
 }
 
 /// 0x40 codes.

@@ -115,17 +115,114 @@ fn push_newest<T>(entries: &mut Vec<T>, capacity: usize, e: T) {
 
 impl Machine {
     /// Records an operation, newest first, when the operation history is
-    /// recording (cnc_startophis / cnc_stopophis).
-    pub fn record_operation(&mut self, kind: &str, number: i32, at: SystemTime) {
+    /// recording (cnc_startophis / cnc_stopophis): a `"date"` record first
+    /// on a new day, a `"time"` record on a new second, then the operation.
+    pub fn record_operation(&mut self, op: Operation, at: SystemTime) {
         let h = &mut self.profile.operation_history;
-        if h.recording {
-            let e = Operation {
-                kind: kind.to_string(),
-                number,
-                time: format_time(at),
-            };
-            push_newest(&mut h.entries, h.capacity, e);
+        if !h.recording {
+            return;
         }
+        let time = format_time(at);
+        let last = |kind: &str| {
+            h.entries
+                .iter()
+                .find(|e| e.kind == kind)
+                .map(|e| e.time.clone())
+        };
+        let stamps = [
+            ("date", last("date").is_none_or(|t| t[..10] != time[..10])),
+            ("time", last("time").as_deref() != Some(&time)),
+        ];
+        for (kind, new) in stamps {
+            if new {
+                let e = Operation {
+                    kind: kind.into(),
+                    time: time.clone(),
+                    ..Operation::default()
+                };
+                push_newest(&mut h.entries, h.capacity, e);
+            }
+        }
+        push_newest(&mut h.entries, h.capacity, Operation { time, ..op });
+    }
+
+    /// The range reads (src/proto/history.rs): 0x006a [s, e] operation
+    /// records, 0x0073 [s, e] and 0x01b5 [s, e, n] operator messages,
+    /// 0x01d1 [s, e, n] alarm history 5 (entries s..=e, 1 = newest, that
+    /// exist); 0x0012 [s, e] pitch error points.
+    pub fn history_bytes(&mut self, path: u16, cmd: u16, a: [i32; 5]) -> Reply<Vec<u8>> {
+        use crate::proto::history as ph;
+        let (s, e) = (a[0], a[1]);
+        if cmd == ph::RDPITCHR {
+            // Pitch points s..=e of the table, 0 where the profile has none.
+            let p = &self.profile.pitch;
+            if s < 0 || e < s || e >= p.size {
+                return Err(CncError::NUMBER);
+            }
+            let v = |n: i32| p.values.get(n as usize).copied().unwrap_or(0);
+            return Ok((s..=e)
+                .flat_map(|n| i16::from(v(n)).to_be_bytes())
+                .collect());
+        }
+        if s < 0 || e < s {
+            return Err(CncError::NUMBER);
+        }
+        let range = |n: usize| (s.max(1) as usize - 1).min(n)..(e as usize).min(n);
+        let stamp = |t: &str| parse_time(t).unwrap_or([0; 6]);
+        let mut out = Vec::new();
+        match cmd {
+            ph::RDOPHISTRY => {
+                let ops = &self.profile.operation_history.entries;
+                for o in &ops[range(ops.len())] {
+                    let [y, mo, d, h, mi, se] = stamp(&o.time).map(i32::from);
+                    let (t, w) = match o.kind.as_str() {
+                        "mdi" => (0, [o.number, 0, 0, 0]),
+                        "signal" => (1, [o.number, o.group.into(), o.old.into(), o.new.into()]),
+                        "alarm" => (2, [o.number, o.group.into(), o.axis.into(), 0]),
+                        "date" => (3, [y, mo, d, 0]),
+                        _ => (4, [h, mi, se, 0]),
+                    };
+                    out.extend(ph::op_record(t, w));
+                }
+            }
+            ph::RDOMHISTRY | ph::RDOMHISTRY2 => {
+                let oms = &self.profile.operator_message_history.entries;
+                let shown: Vec<i32> = self
+                    .profile
+                    .paths
+                    .iter()
+                    .flat_map(|p| p.opmsgs.iter().map(|m| m.number))
+                    .collect();
+                let r = range(oms.len());
+                if cmd == ph::RDOMHISTRY2 {
+                    out.extend((r.len() as i32).to_be_bytes());
+                }
+                for m in &oms[r] {
+                    let t = stamp(&m.time);
+                    out.extend(if cmd == ph::RDOMHISTRY {
+                        ph::om_record(m.number as i16, &t, &m.text)
+                    } else {
+                        ph::om2_record(shown.contains(&m.number), m.number as i16, &t, &m.text)
+                    });
+                }
+            }
+            _ => {
+                let axes = self.path(path)?.axes.len() as i16;
+                let alms = &self.profile.alarm_history.entries;
+                for x in &alms[range(alms.len())] {
+                    out.extend(ph::alm5_record(&ph::Alm5 {
+                        number: x.number,
+                        group: x.kind.into(),
+                        axis: x.axis.into(),
+                        time: stamp(&x.time),
+                        path: path as i16,
+                        axes,
+                        message: x.message.clone(),
+                    }));
+                }
+            }
+        }
+        Ok(out)
     }
 
     /// The operator messages on display at power-on enter the operator

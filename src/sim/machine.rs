@@ -21,7 +21,7 @@ fn fixed<const N: usize>(s: &str) -> [u8; N] {
 }
 
 impl Machine {
-    fn path(&self, path: u16) -> Reply<&super::profile::Path> {
+    pub(crate) fn path(&self, path: u16) -> Reply<&super::profile::Path> {
         self.profile
             .paths
             .get(path as usize - 1)
@@ -353,6 +353,9 @@ impl CncService for Machine {
         }
         self.table_type30(table, number)
     }
+    fn param_info3(&mut self, _path: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        self.table_info3(s, n)
+    }
     fn param_num(&mut self, _path: u16, table: Table) -> Reply<NumRange> {
         Ok(self.table_num(table))
     }
@@ -410,7 +413,31 @@ impl CncService for Machine {
         range: crate::proto::pmc::PmcRange,
         data: &[u8],
     ) -> Reply<()> {
-        self.profile.pmc.write(unit, &range, data)
+        let old = self.profile.pmc.read(unit, &range).unwrap_or_default();
+        self.profile.pmc.write(unit, &range, data)?;
+        // Signal changes (G, F, Y, X: address types 0..3) go into the
+        // operation history, one record per changed byte.
+        if (0..=3).contains(&range.adr_type) {
+            let new = self.profile.pmc.read(unit, &range).unwrap_or_default();
+            let at = std::time::SystemTime::now();
+            for (k, (o, n)) in old
+                .iter()
+                .zip(&new)
+                .enumerate()
+                .filter(|(_, (o, n))| o != n)
+            {
+                let op = super::history::Operation {
+                    kind: "signal".into(),
+                    number: i32::from(range.s) + k as i32,
+                    group: range.adr_type,
+                    old: *o,
+                    new: *n,
+                    ..Default::default()
+                };
+                self.record_operation(op, at);
+            }
+        }
+        Ok(())
     }
 
     fn pmc_info(&mut self, unit: u16, adr_type: i16) -> Reply<crate::proto::pmc::PmcInfo> {
@@ -468,6 +495,9 @@ impl CncService for Machine {
     fn rdalmhisno(&mut self) -> Reply<crate::proto::offset::Count> {
         self.history_count()
     }
+    fn history_records(&mut self, path: u16, cmd: u16, args: [i32; 5]) -> Reply<Vec<u8>> {
+        self.history_bytes(path, cmd, args)
+    }
 
     // --- described functions ---
     fn described(&mut self, f: &'static Func, path: u16, args: &[i32]) -> Reply<Vec<i64>> {
@@ -495,6 +525,14 @@ impl CncService for Machine {
             "cnc_start" => self.cycle_start(path).map(|_| vec![]),
             "cnc_reset" | "cnc_reset2" => self.reset(path).map(|_| vec![]),
             "cnc_clralm" => self.clear_alarms(path, args[0] as i16).map(|_| vec![]),
+            "cnc_rdspdlalm" => Ok(self
+                .path(path)?
+                .spindles
+                .iter()
+                .take(8)
+                .map(|s| i64::from(s.alarm))
+                .collect()),
+            "cnc_rdpitchinfo" => Ok(vec![i64::from(self.profile.pitch.size)]),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),

@@ -205,6 +205,18 @@ impl Machine {
         })
     }
 
+    /// 0x00a0 with the list flag (cnc_rdparainfo3): the previous and next
+    /// numbers, then up to `n` parameters from `s` on, each its attribute
+    /// record from `number` on (as 0x00a0 answers one).
+    pub fn table_info3(&self, s: i32, n: i32) -> Reply<Vec<u8>> {
+        let list = self.table_info(Table::Param, s, n)?;
+        let mut out = [list.prev, list.next].map(i32::to_be_bytes).concat();
+        for e in &list.entries {
+            out.extend(&self.table_type30(Table::Param, e.number)?.to_bytes()[8..]);
+        }
+        Ok(out)
+    }
+
     /// 0x0011 / 0x0032: smallest and largest number, count.
     pub fn table_num(&self, t: Table) -> NumRange {
         let all = self.table(t);

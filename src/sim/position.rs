@@ -113,9 +113,19 @@ impl Machine {
             pos::MACHINE => |a| a.machine,
             pos::RELATIVE | pos::RELATIVE2 => |a| a.relative,
             pos::DISTANCE | pos::DISTANCE2 => |a| a.distance,
-            // rdaxisdata class 1 types 4..17: codes whose meaning is not
+            pos::SKIP => |a| a.skip,
+            // The servo delay: the axis's feed over its loop gain; the
+            // acc/dec delay: the feed over half the time constant.
+            pos::SERVO_DELAY => |a| {
+                delay(
+                    a,
+                    100.0 / f64::from(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN).max(1)),
+                )
+            },
+            pos::ACCDEC_DELAY => |a| delay(a, a.accdec_ms.unwrap_or(DEFAULT_ACCDEC_MS) / 2000.0),
+            // rdaxisdata class 1 types 7..17: codes whose meaning is not
             // recorded; the simulator answers 0 for every axis.
-            8..=18 | 37..=39 => |_| 0,
+            11..=18 | 37..=39 => |_| 0,
             _ => return Err(NUMBER),
         };
         let rec = |a: &Axis| Value::decimal(pick(a), a.decimals);
@@ -342,4 +352,14 @@ impl Machine {
         };
         Ok(Count { n: n as u16 })
     }
+}
+
+/// Acc/dec time constant when the profile gives none, ms.
+const DEFAULT_ACCDEC_MS: f64 = 32.0;
+
+/// The distance the axis travels in `seconds` at its current feed (the
+/// servo motor speed times the lead), in the axis's units.
+fn delay(a: &Axis, seconds: f64) -> i32 {
+    let mm_per_s = f64::from(a.servo_speed) * a.lead.unwrap_or(super::run::DEFAULT_LEAD) / 60.0;
+    (mm_per_s * seconds * 10f64.powi(i32::from(a.decimals))).round() as i32
 }

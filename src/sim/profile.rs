@@ -63,9 +63,30 @@ pub struct Profile {
     pub operation_history: history::OperationHistory,
     #[serde(default)]
     pub operator_message_history: history::MessageHistory,
+    /// The pitch error compensation table (cnc_rdpitchinfo, cnc_rdpitchr).
+    #[serde(default)]
+    pub pitch: Pitch,
     // --- tool ---
 
     // --- upload ---
+}
+
+/// `[pitch]`: pitch error compensation points 0..`size`, each an
+/// incremental compensation in detection units; points past `values` are 0.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Pitch {
+    pub size: i32,
+    pub values: Vec<i8>,
+}
+
+impl Default for Pitch {
+    fn default() -> Self {
+        Pitch {
+            size: 1024,
+            values: Vec::new(),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -218,6 +239,12 @@ pub struct Axis {
     pub lead: Option<f64>,
     /// Servo motor speed, rpm (cnc_rdsrvspeed): set by the running program.
     pub servo_speed: i32,
+    /// Skip position (cnc_skip), in the axis's units: where the skip signal
+    /// last came.
+    pub skip: i32,
+    /// Acceleration/deceleration time constant, ms (default 32): the
+    /// acc/dec delay (cnc_accdecdly) is the axis's feed over half of it.
+    pub accdec_ms: Option<f64>,
     /// Unit of the positions: 0 mm, 1 inch, 2 degree (rdaxisdata / rdposition `unit`).
     pub unit: i16,
     /// Input / output figures (cnc_getfigure); default `decimals`.
@@ -237,6 +264,8 @@ pub struct Spindle {
     /// reports them (cnc_rdspmaxrpm, cnc_rdspgear).
     pub max_rpm_ratio: i32,
     pub gear_ratio: i32,
+    /// Spindle amplifier alarm number, 0 for none (cnc_rdspdlalm).
+    pub alarm: i16,
 }
 
 #[derive(Debug, thiserror::Error)]

@@ -554,7 +554,14 @@ impl Machine {
             .checked_sub(ago)
             .unwrap_or(std::time::UNIX_EPOCH);
         self.record_alarm(alarm.number, alarm.kind, alarm.axis, &alarm.message, at);
-        self.record_operation("alarm", alarm.number, at);
+        let op = super::history::Operation {
+            kind: "alarm".into(),
+            number: alarm.number,
+            group: alarm.kind,
+            axis: alarm.axis,
+            ..Default::default()
+        };
+        self.record_operation(op, at);
     }
 
     fn advance_path(&mut self, i: usize, t: f64, raised: &mut Vec<(u16, Alarm, Duration)>) {

@@ -13,6 +13,7 @@ use crate::proto::wire::Wire;
 use crate::spec::Func;
 // --- offset ---
 use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
+use crate::proto::history as phis;
 use crate::proto::offset::{self as ofs, Ack, Count};
 use crate::proto::tool::{TLGROUP, TLTOOLS, ToolGroup, ToolList};
 use crate::proto::value::Value;
@@ -235,6 +236,10 @@ pub trait CncService: Send {
     fn param_type30(&mut self, path: u16, table: Table, number: i32) -> Reply<ParamType30> {
         unsupported()
     }
+    /// cnc_rdparainfo3 (0x00a0 with the list flag): parameters from `s` on.
+    fn param_info3(&mut self, path: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
     /// cnc_rdparanum (0x0011) / cnc_rddiagnum (0x0032).
     fn param_num(&mut self, path: u16, table: Table) -> Reply<NumRange> {
         unsupported()
@@ -332,6 +337,11 @@ pub trait CncService: Send {
         unsupported()
     }
     fn rdalmhisno(&mut self) -> Reply<Count> {
+        unsupported()
+    }
+    /// The range reads of src/proto/history.rs (0x006a, 0x0073, 0x01b5,
+    /// 0x01d1, 0x0012): the answer's bytes for the request's arguments.
+    fn history_records(&mut self, path: u16, cmd: u16, args: [i32; 5]) -> Reply<Vec<u8>> {
         unsupported()
     }
 
@@ -450,6 +460,9 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
                 svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16)
             }
             (CLASS_CNC, param::DIAGNOSS16) => svc.diag16(p, a[0], a[1], a[2] as i16),
+            (CLASS_CNC, param::PARAMTYPE) if a[4] == param::INFO3_FLAG => {
+                svc.param_info3(p, a[0], a[1])
+            }
             (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
             (CLASS_CNC, param::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
             (CLASS_CNC, param::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
@@ -501,6 +514,14 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, ofs::WRZOFS) => enc(svc.wrzofs(p, a[0], a[2], &sub.payload)),
             (CLASS_CNC, RDALMHISTRY) => enc(svc.rdalmhistry(a[0], a[1])),
             (CLASS_CNC, RDALMHISNO) => enc(svc.rdalmhisno()),
+            (
+                CLASS_CNC,
+                c @ (phis::RDOPHISTRY
+                | phis::RDOMHISTRY
+                | phis::RDOMHISTRY2
+                | phis::RDALMHISTRY5
+                | phis::RDPITCHR),
+            ) => svc.history_records(p, c, a),
 
             // --- tool ---
             (CLASS_CNC, TLGROUP) => enc(svc.tool_group(p, a[0])),

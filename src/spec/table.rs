@@ -252,6 +252,36 @@ pub const FUNCS: &[Func] = &[
         short: Short::Zeros,
         dims: &[],
     },
+    Func {
+        name: "cnc_rdspdlalm",
+        doc: "Reads the alarm state of each spindle, one byte per spindle (at most 8).",
+        params: &[Param::Out("data", "char")],
+        checks: &[],
+        forms: &[every_class(0x005a, &[])],
+        reply: &[],
+        // The low byte of each i16, as many as the answer holds.
+        records: Some(Records {
+            fields: &[to(I16, "", I8)],
+            out: 0,
+            to: "",
+            elem: "char",
+            max: 8,
+            count: None,
+        }),
+        short: Short::Zeros,
+        dims: &[],
+    },
+    Func {
+        name: "cnc_rdpitchinfo",
+        doc: "Reads the number of pitch error compensation points.",
+        params: &[Param::Out("datano", "short")],
+        checks: &[],
+        forms: &[every_class(0x0014, &[])],
+        reply: &[to(I32, "", I16)],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
     // --- offsets and tool life ---
     Func {
         name: "cnc_rdtofsinfo2",

@@ -18,7 +18,7 @@ pub enum Param {
     /// `long NAME`: a number the caller passes (32 bits go on the wire).
     Long(&'static str),
     /// `TYPE *NAME`: an output the reply fills. TYPE is a struct of
-    /// src/types, or `short`, `unsigned short` or `long` (4 bytes written,
+    /// src/types, or `char`, `short`, `unsigned short` or `long` (4 bytes written,
     /// as FANUC's x86-64 library writes a `long *`).
     Out(&'static str, &'static str),
 }

@@ -216,3 +216,178 @@ pub struct ODBOMIF {
     pub om_sum: c_ushort,
     pub om_char: c_ushort,
 }
+
+// --- operation and operator message histories, alarm history 5 ---
+
+/// ODBHIS alarm record.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBHIS_ALM {
+    pub rec_type: c_short,
+    pub alm_grp: c_short,
+    pub alm_no: c_short,
+    pub axis_no: c_char,
+    pub dummy: c_char,
+}
+
+/// ODBHIS MDI key record.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBHIS_MDI {
+    pub rec_type: c_short,
+    pub key_code: c_char,
+    pub pw_flag: c_char,
+    pub dummy: [c_char; 4],
+}
+
+/// ODBHIS signal record.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBHIS_SGN {
+    pub rec_type: c_short,
+    pub sig_name: c_char,
+    pub sig_old: c_char,
+    pub sig_new: c_char,
+    pub dummy: c_char,
+    pub sig_no: c_short,
+}
+
+/// ODBHIS date record.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBHIS_DATE {
+    pub rec_type: c_short,
+    pub year: c_char,
+    pub month: c_char,
+    pub day: c_char,
+    pub pw_flag: c_char,
+    pub dummy: [c_char; 2],
+}
+
+/// ODBHIS time record.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBHIS_TIME {
+    pub rec_type: c_short,
+    pub hour: c_char,
+    pub minute: c_char,
+    pub second: c_char,
+    pub pw_flag: c_char,
+    pub dummy: [c_char; 2],
+}
+
+/// One 8-byte ODBHIS record, by its `rec_type`.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub union ODBHIS_DATA {
+    pub rec_alm: ODBHIS_ALM,
+    pub rec_mdi: ODBHIS_MDI,
+    pub rec_sgn: ODBHIS_SGN,
+    pub rec_date: ODBHIS_DATE,
+    pub rec_time: ODBHIS_TIME,
+}
+
+impl Default for ODBHIS_DATA {
+    fn default() -> Self {
+        ODBHIS_DATA {
+            rec_alm: ODBHIS_ALM::default(),
+        }
+    }
+}
+
+impl std::fmt::Debug for ODBHIS_DATA {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ODBHIS_DATA")
+            .field("rec_alm", unsafe { &self.rec_alm })
+            .finish()
+    }
+}
+
+/// cnc_rdophistry: operation history (10 records as declared; the caller's
+/// `length` says how many really fit).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ODBHIS {
+    pub s_no: c_ushort,
+    pub r#type: c_short,
+    pub e_no: c_ushort,
+    pub data: [ODBHIS_DATA; 10],
+}
+
+/// cnc_rdomhistry: one operator message history entry.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBOMHIS {
+    pub om_no: c_short,
+    pub year: c_short,
+    pub month: c_short,
+    pub day: c_short,
+    pub hour: c_short,
+    pub minute: c_short,
+    pub second: c_short,
+    pub om_msg: [c_char; 256],
+}
+
+/// One entry of ODBOMHIS2.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBOMHIS2_OPM {
+    pub dsp_flg: c_short,
+    pub om_no: c_short,
+    pub year: c_short,
+    pub month: c_short,
+    pub day: c_short,
+    pub hour: c_short,
+    pub minute: c_short,
+    pub second: c_short,
+    pub ope_msg: [c_char; 256],
+}
+
+/// cnc_rdomhistry2: operator message history (10 entries as declared).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBOMHIS2 {
+    pub s_no: c_ushort,
+    pub e_no: c_ushort,
+    pub opm_his: [ODBOMHIS2_OPM; 10],
+}
+
+/// One entry of ODBAHIS5 (516 bytes).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBAHIS5_ALM {
+    pub alm_grp: c_short,
+    pub alm_no: c_short,
+    pub axis_no: c_short,
+    pub year: c_short,
+    pub month: c_short,
+    pub day: c_short,
+    pub hour: c_short,
+    pub minute: c_short,
+    pub second: c_short,
+    pub len_msg: c_short,
+    pub pth_no: c_short,
+    pub sys_alm: c_short,
+    pub dsp_flg: c_short,
+    pub axis_num: c_short,
+    pub alm_msg: [c_char; 64],
+    pub g_modal: [LONG; 10],
+    pub g_dp: [c_char; 10],
+    pub dummy1: c_short,
+    pub a_modal: [LONG; 10],
+    pub a_dp: [c_char; 10],
+    pub dummy2: c_short,
+    pub abs_pos: [LONG; 32],
+    pub abs_dp: [c_char; 32],
+    pub mcn_pos: [LONG; 32],
+    pub mcn_dp: [c_char; 32],
+}
+
+/// cnc_rdalmhistry5: alarm history with the modal and position snapshot (10 entries as declared).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBAHIS5 {
+    pub s_no: c_ushort,
+    pub e_no: c_ushort,
+    pub alm_his: [ODBAHIS5_ALM; 10],
+}

@@ -171,3 +171,17 @@ pub struct ODBDIAGNUM {
     pub diag_max: c_ushort,
     pub total_no: c_ushort,
 }
+
+/// cnc_rdparainfo3: the attributes of one parameter.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPARAIF2 {
+    pub prm_no: c_short,
+    pub size: c_short,
+    pub array: c_short,
+    pub unit: c_short,
+    pub dim: c_short,
+    pub input: c_short,
+    pub display: c_short,
+    pub others: c_short,
+}

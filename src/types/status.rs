@@ -91,3 +91,14 @@ pub struct ODBSYSEX {
     pub reserved: [c_short; 2],
     pub path: [ODBSYSEX_PATH; MAX_CNCPATH],
 }
+
+/// cnc_rdpitchr: pitch error compensation data (5 points as declared; the
+/// caller's `length` says how many really fit).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBPI {
+    pub datano_s: c_short,
+    pub dummy: c_short,
+    pub datano_e: c_short,
+    pub data: [c_char; 5],
+}

@@ -15,6 +15,23 @@ pub struct Deviation {
 
 pub const ORACLE: &[Deviation] = &[
     Deviation {
+        function: "cnc_rdparam3",
+        cases: &["rdparam3_v2_shape_empty", "rdparam3_v3_shape_empty"],
+        reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdomhistry2",
+        cases: &[
+            "rdomhistry2_v3_a3_0",
+            "rdomhistry2_v3_a3_4",
+            "rdomhistry2_v3_a3_276",
+            "rdomhistry2_v2_a3_0",
+            "rdomhistry2_v2_a3_4",
+            "rdomhistry2_v2_a3_276",
+        ],
+        reason: "FANUC's library ignores length and writes every entry the CNC sent past it; ours answers EW_LENGTH and writes nothing when the entries do not fit, as its cnc_rdalmhistry does",
+    },
+    Deviation {
         function: "cnc_rdcncid",
         cases: &["rdcncid_v3_shape_longer", "rdcncid_v2_shape_longer"],
         reason: "FANUC's library writes every word of a longer answer, past the four of the caller's buffer; ours writes at most four",

@@ -438,6 +438,17 @@ static char *text(int i, long *n) {
     WORD(dnc2, TEXT_LONG(cnc_dnc2))                                                               \
     WORD(dncend, return F(cnc_dncend)(H))                                                         \
     WORD(dncend2, return F(cnc_dncend2)(H, N(1)))                                                 \
+    /* histories */                                                                               \
+    WORD(rdophistry, return F(cnc_rdophistry)(H, N(1), N(2), N(3), B0)) \
+    WORD(rdomhistry, USHORT_IO(length, 2, F(cnc_rdomhistry)(H, N(1), &length, B0))) \
+    WORD(rdomhistry2, return F(cnc_rdomhistry2)(H, N(1), N(2), N(3), B0)) \
+    WORD(rdalmhistry5, return F(cnc_rdalmhistry5)(H, N(1), N(2), N(3), B0)) \
+    WORD(accdecdly, return F(cnc_accdecdly)(H, N(1), N(2), B0)) \
+    WORD(srvdelay, return F(cnc_srvdelay)(H, N(1), N(2), B0)) \
+    WORD(skip, return F(cnc_skip)(H, N(1), N(2), B0)) \
+    WORD(rdparam3, return F(cnc_rdparam3)(H, N(1), N(2), N(3), N(4), B0)) \
+    WORD(rdparainfo3, { short n = N(2), pv = (short)0xCCCC, nx = (short)0xCCCC; short r = F(cnc_rdparainfo3)(H, N(1), &n, &pv, &nx, B0); field("num", n); field("prev", pv); field("next", nx); return r; }) \
+    WORD(rdpitchr, return F(cnc_rdpitchr)(H, N(1), N(2), N(3), B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \

@@ -100,12 +100,20 @@ impl Default for OperationHistory {
     }
 }
 
-/// One operation: what (`"alarm"`), its number, when ("YYYY-MM-DD hh:mm:ss").
+/// One operation record, when ("YYYY-MM-DD hh:mm:ss") and what: `"mdi"`
+/// (an MDI key, `number` its code), `"signal"` (a signal change: `number`
+/// the byte, `group` the PMC address type, `old` and `new` its bits),
+/// `"alarm"` (`number`, `group` the alarm type, `axis`), or the `"date"` /
+/// `"time"` stamps the CNC puts before the records of a new day / second.
 #[derive(Debug, Clone, Deserialize, Default, PartialEq, Eq)]
 #[serde(deny_unknown_fields, default)]
 pub struct Operation {
     pub kind: String,
     pub number: i32,
+    pub group: i16,
+    pub axis: i16,
+    pub old: u8,
+    pub new: u8,
     pub time: String,
 }
 
