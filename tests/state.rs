@@ -3,7 +3,7 @@
 //! cnc_modal follows the program's G codes and F, S, M, T as cnc_actf and
 //! cnc_acts do; cnc_rdtimer counts on the simulator's clock and a feed hold
 //! stops it without taking anything back; an inch machine reports its feed
-//! in inch/min.
+//! in inch/min, a G95 program per revolution.
 
 mod sim;
 
@@ -162,6 +162,7 @@ fn timers_run_on_the_simulator_clock_and_a_hold_only_stops_them() {
 
 fn feed_unit(profile: &str) -> i16 {
     let s = sim::start_toml(profile);
+    at(&s, 0.5);
     let h = sim::alloc(&s);
     let mut sp = ODBSPEED::default();
     assert_eq!(unsafe { cnc_rdspeed(h, 0, &mut sp) }, EW_OK);
@@ -174,4 +175,13 @@ fn an_inch_machine_reports_its_feed_in_inch_per_minute() {
     assert_eq!(feed_unit(PROFILE), 0, "mm/min");
     let inch = PROFILE.replace("decimals = 3", "decimals = 4\nunit = 1");
     assert_eq!(feed_unit(&inch), 1, "inch/min");
+    // G95 in the program: feed per revolution (cnc_modal type 4 = 1).
+    let g95 = |p: &str| p.replace("N10 G90 G00", "N10 G90 G95 G00");
+    assert_eq!(feed_unit(&g95(PROFILE)), 3, "mm/rev");
+    assert_eq!(feed_unit(&g95(&inch)), 4, "inch/rev");
+    let s = sim::start_toml(&g95(PROFILE));
+    at(&s, 0.5);
+    let h = sim::alloc(&s);
+    assert_eq!(modal(h, 4), 1);
+    sim::free(h);
 }

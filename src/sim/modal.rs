@@ -5,8 +5,10 @@
 
 /// G codes the simulator follows: (G number, cnc_modal type = group − 1,
 /// code within the group). Group 01 motion, 02 plane, 03 absolute /
-/// incremental, 06 inch / metric, 07 cutter compensation.
-const G_CODES: [(i32, usize, u8); 14] = [
+/// incremental, 05 feed per minute / per revolution (G95 = 1, as FANUC's
+/// library reads it for cnc_rdspeed on the 16i), 06 inch / metric, 07
+/// cutter compensation.
+const G_CODES: [(i32, usize, u8); 16] = [
     (0, 0, 0),
     (1, 0, 1),
     (2, 0, 2),
@@ -16,6 +18,8 @@ const G_CODES: [(i32, usize, u8); 14] = [
     (19, 1, 2),
     (90, 2, 0),
     (91, 2, 1),
+    (94, 4, 0),
+    (95, 4, 1),
     (20, 5, 0),
     (21, 5, 1),
     (40, 6, 0),

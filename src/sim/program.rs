@@ -116,12 +116,9 @@ impl Machine {
     /// cnc_modal's G groups: what the running program set (src/sim/modal.rs),
     /// else the profile's table.
     pub(crate) fn sim_modal_g(&self, path: u16, code: i32) -> Reply<GModal> {
-        let g = &self.path_profile(path)?.modal.g;
-        let set = &self.live(path)?.modal;
+        self.path_profile(path)?;
         let at = |i: usize| GCode {
-            code: set
-                .g_code(i)
-                .unwrap_or_else(|| g.get(i).copied().unwrap_or(0)),
+            code: self.modal_g(path, i),
             flag: 0,
         };
         Ok(GModal(match code {
@@ -130,6 +127,14 @@ impl Machine {
             c if (0..G_GROUPS as i32).contains(&c) => vec![at(c as usize)],
             _ => return Err(CncError::NUMBER),
         }))
+    }
+
+    /// The code of G group type `t` (0 = group 01) on a valid `path`: the
+    /// running program's, else the profile's.
+    pub(crate) fn modal_g(&self, path: u16, t: usize) -> u8 {
+        let i = usize::from(path) - 1;
+        let set = self.run.get(i).and_then(|r| r.modal.g_code(t));
+        set.unwrap_or_else(|| self.profile.paths[i].modal.g.get(t).copied().unwrap_or(0))
     }
 
     /// cnc_modal's other codes (F, S, M, T ...): what the running program
