@@ -2407,7 +2407,9 @@ short cnc_rdophistry(unsigned short FlibHndl,
                      struct ODBHIS *ophis);
 
 /*
- Reads the operation mode word. An answer without a whole word writes
+ Reads the operation mode word (of the spindle: 0 others, 1 normal, 2
+ orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning,
+ by FANUC's Windows header). An answer without a whole word writes
  nothing (EW_OK), as FANUC's library; further words are not written
  (FANUC's library writes them all, past the short).
 

@@ -161,6 +161,15 @@ fn eventually(mut f: impl FnMut() -> bool) {
     }
 }
 
+/// cnc_rdtimer 1, 2, 3 (operating, cutting, cycle) in milliseconds.
+fn timers(h: c_ushort) -> [i64; 3] {
+    [1, 2, 3].map(|k| {
+        let mut t = IODBTIME::default();
+        assert_eq!(unsafe { cnc_rdtimer(h, k, &mut t) }, EW_OK);
+        i64::from(t.minute) * 60_000 + i64::from(t.msec)
+    })
+}
+
 #[test]
 fn a_dnc_program_runs_while_it_arrives() {
     // An idle machine; its alarms cleared.
@@ -187,6 +196,11 @@ fn a_dnc_program_runs_while_it_arrives() {
         (3, 0, 1000),
         "waiting for data"
     );
+    assert_eq!(
+        timers(h),
+        [10_000, 1000, 10_000],
+        "waiting is operating time"
+    );
     assert_eq!(dnc2(h, "2.\nM30\n%"), EW_OK);
     eventually(|| motion(h) == 1);
     at(&s, 20.5);
@@ -195,8 +209,10 @@ fn a_dnc_program_runs_while_it_arrives() {
         (1, 2000),
         "N20 X2. goes on from where it waited"
     );
+    assert_eq!(timers(h), [10_500, 1500, 10_500]);
     assert_eq!(cnc_dncend2(h, -1), EW_OK);
     at(&s, 30.0);
     assert_eq!((run_state(h), x(h)), (0, 3000), "ran to M30 once");
+    assert_eq!(timers(h), [12_000, 2000, 12_000], "from 10 s to 22 s");
     sim::free(h);
 }

@@ -19,6 +19,7 @@ pub mod history;
 pub mod machine;
 pub mod macros;
 pub mod memory;
+pub mod modal;
 pub mod offset;
 pub mod operate;
 pub mod param;

@@ -22,8 +22,9 @@ impl Machine {
             .as_secs_f64()
     }
 
-    /// Ends the path's plan where it is: the axes stay, the counters keep
-    /// what it made, the status shows the path stopped.
+    /// Ends the path's plan where it is: the axes, the modal codes stay,
+    /// the counters and timers keep what it made, the status shows the
+    /// path stopped.
     fn stop_plan(&mut self, i: usize) {
         let path = &self.profile.paths[i];
         let run = &mut self.run[i];
@@ -31,6 +32,10 @@ impl Machine {
         eng.plan = None;
         eng.parts_before = run.parts;
         eng.blocks_before = run.block_count;
+        eng.modal_before = run.modal;
+        eng.op_before = run.operating;
+        eng.cut_before = run.cutting;
+        eng.waited = 0.0;
         eng.base_axes = path
             .axes
             .iter()
@@ -168,6 +173,7 @@ impl Machine {
             let waited = (t - run.engine.t0) - old.len() as f64 * bs;
             if waited > 0.0 && plan.len() > old.len() {
                 run.engine.t0 += waited;
+                run.engine.waited += waited;
             }
         }
         run.program = super::store::Program::new(first, [0; 5]).number;

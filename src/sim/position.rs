@@ -282,7 +282,9 @@ impl Machine {
     /// 0x88: [1] and [2] two words per axis (FANUC's library reads word 0
     /// of [1] as the position unit, word 1 of [2] as the machine-position
     /// unit; both words carry the axis unit here); [3] word 0 = feed unit
-    /// in ODBAXDT codes (3 = mm/min); [4] meaning unknown: zeros. [0] (the
+    /// in ODBAXDT codes: 3 mm/min, 4 inch/min when the path's first axis is
+    /// an inch axis (as [0] tells the 16i class), 6 / 7 per revolution in
+    /// G95 (modal group 05 code 1); [4] meaning unknown: zeros. [0] (the
     /// 16i class's cnc_rdspeed): two words per axis, 1 for an inch axis
     /// (FANUC's library shows the feed in inches when word 0 is not 0). A
     /// 16i-class CNC (not the Series 15) answers [0], [1], [2] for its
@@ -299,7 +301,11 @@ impl Machine {
         match kind {
             0 => Ok(per_axis(|a| u16::from(a.unit == 1))),
             1 | 2 => Ok(per_axis(|a| a.unit as u16)),
-            3 => Ok(vec![3, 0, 0, 0]),
+            3 => {
+                let inch = u16::from(p.axes.first().is_some_and(|a| a.unit == 1));
+                let per_rev = self.modal_g(path, 4) == 1;
+                Ok(vec![if per_rev { 6 } else { 3 } + inch, 0, 0, 0])
+            }
             4 => Ok(vec![0; 4]),
             _ => Err(NUMBER),
         }

@@ -164,13 +164,18 @@ pub struct Path {
     #[serde(rename = "alarm")]
     pub alarms: Vec<cycle::Alarm>,
     // --- position ---
-    /// Actual feed rate (cnc_actf, rddynamic2 actf, rdspeed), mm/min; the
-    /// program cycle (src/sim/run.rs) may change it while running.
+    /// Actual feed rate (cnc_actf, rddynamic2 actf, rdspeed), mm/min, or
+    /// inch/min when the first axis is an inch axis (`unit = 1`: cnc_rdspeed
+    /// and rdaxisdata report that unit); the program cycle (src/sim/run.rs)
+    /// may change it while running.
     pub feed: i32,
     // --- program ---
-    /// Modal codes (cnc_modal).
+    /// Modal codes (cnc_modal) where no program running set them.
     pub modal: program::Modal,
-    /// Operation mode word (cnc_rdopmode).
+    /// Operation mode word (cnc_rdopmode): by the OPMODE_* names of FANUC's
+    /// Windows header the spindle's mode (0 others, 1 normal, 2 orientation,
+    /// 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning), not the
+    /// automatic mode of `status.aut` that `mode` events change.
     pub opmode: i16,
     /// Machining times of programs run before the simulator started, newest
     /// first, as [program, hours, minutes, seconds] (cnc_rdproctime; the

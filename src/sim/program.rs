@@ -113,10 +113,12 @@ impl Machine {
         })
     }
 
+    /// cnc_modal's G groups: what the running program set (src/sim/modal.rs),
+    /// else the profile's table.
     pub(crate) fn sim_modal_g(&self, path: u16, code: i32) -> Reply<GModal> {
-        let g = &self.path_profile(path)?.modal.g;
+        self.path_profile(path)?;
         let at = |i: usize| GCode {
-            code: g.get(i).copied().unwrap_or(0),
+            code: self.modal_g(path, i),
             flag: 0,
         };
         Ok(GModal(match code {
@@ -127,14 +129,27 @@ impl Machine {
         }))
     }
 
+    /// The code of G group type `t` (0 = group 01) on a valid `path`: the
+    /// running program's, else the profile's.
+    pub(crate) fn modal_g(&self, path: u16, t: usize) -> u8 {
+        let i = usize::from(path) - 1;
+        let set = self.run.get(i).and_then(|r| r.modal.g_code(t));
+        set.unwrap_or_else(|| self.profile.paths[i].modal.g.get(t).copied().unwrap_or(0))
+    }
+
+    /// cnc_modal's other codes (F, S, M, T ...): what the running program
+    /// set, else the profile's table.
     pub(crate) fn sim_modal_aux(&self, path: u16, code: i32) -> Reply<AuxModal> {
         let aux = &self.path_profile(path)?.modal.aux;
+        let set = &self.live(path)?.modal;
         let rec = |c: i32| {
             let value = AUX_ORDER
                 .iter()
                 .position(|x| *x == c)
-                .and_then(|k| aux.get(&(100 + k).to_string()))
-                .copied()
+                .and_then(|k| {
+                    set.aux_value(k)
+                        .or_else(|| aux.get(&(100 + k).to_string()).copied())
+                })
                 .unwrap_or(0);
             AuxCode {
                 value,
@@ -161,34 +176,20 @@ impl Machine {
         self.now.saturating_duration_since(self.started).as_millis() as i64
     }
 
-    /// cnc_rdtimer: 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free.
+    /// cnc_rdtimer: 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free,
+    /// on the simulator's clock: the profile's minutes plus the time since
+    /// the start, path 1 running (STRT), path 1 moving at feed; the cycle
+    /// time is path 1's current (or last) run. A hold stops them.
     pub(crate) fn sim_timer(&self, kind: i32) -> Reply<Timer> {
         let t = &self.profile.timers;
-        let el = self.elapsed_ms();
-        let p1 = self
-            .profile
-            .paths
-            .first()
-            .map(|p| p.status)
-            .unwrap_or_default();
+        let r = self.live(1)?;
         let min = |m: i32| i64::from(m) * 60_000;
+        let ms = |s: f64| (s * 1000.0) as i64;
         let ms = match kind {
-            0 => min(t.power_on) + el,
-            1 => min(t.operating) + if p1.run == 3 { el } else { 0 },
-            2 => min(t.cutting) + if p1.run == 3 && p1.motion == 1 { el } else { 0 },
-            3 => {
-                // Time into the current cycle of path 1's program.
-                let p = self.profile.paths.first();
-                let blocks = p
-                    .and_then(|p| self.store.get(1, p.cycle.program))
-                    .map_or(0, |s| s.text.lines().count());
-                let period = p.map_or(0.0, |p| p.cycle.block_seconds) * blocks as f64 * 1000.0;
-                if period >= 1.0 {
-                    el % period as i64
-                } else {
-                    el
-                }
-            }
+            0 => min(t.power_on) + self.elapsed_ms(),
+            1 => min(t.operating) + ms(r.operating),
+            2 => min(t.cutting) + ms(r.cutting),
+            3 => ms(r.cycle),
             4 => min(t.free),
             _ => return Err(CncError::NUMBER),
         };

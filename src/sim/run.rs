@@ -4,6 +4,7 @@
 //! monitoring functions read, brought up to date by [`Machine::advance_to`]
 //! (the `CncService::advance` hook, once per request frame).
 
+use super::modal::{self, ProgramModal};
 use super::pmc::Pmc;
 pub use super::profile::cycle::{ACTIONS, Alarm, Cycle, Event, StoredProgram};
 use super::profile::{Profile, StatusWords};
@@ -102,6 +103,15 @@ pub struct PathRun {
     pub run_seconds: f64,
     /// Feed hold (an event) is active on the path.
     pub held: bool,
+    /// The modal codes the programs run so far set, as at the current
+    /// block (cnc_modal; what no program set is the profile's table).
+    pub modal: ProgramModal,
+    /// Seconds the path ran (STRT) and moved at feed (G01/G02/G03) since
+    /// the simulator started, and the seconds of the current (or last)
+    /// run of a program (cnc_rdtimer 1, 2, 3): holds stop them.
+    pub operating: f64,
+    pub cutting: f64,
+    pub cycle: f64,
     /// What the clock needs: parsed program, profile base values, caches.
     pub(crate) engine: Engine,
 }
@@ -143,6 +153,13 @@ pub(crate) struct Engine {
     pub(super) cleared_types: Vec<i16>,
     /// The plan is a DNC program still arriving: at its last block it waits.
     pub(super) streaming: bool,
+    /// Seconds a DNC plan waited for data (its clock origin moved on by
+    /// them): still operating time.
+    pub(super) waited: f64,
+    /// Modal codes, operating and cutting seconds of plans that ran before.
+    pub(super) modal_before: ProgramModal,
+    pub(super) op_before: f64,
+    pub(super) cut_before: f64,
 }
 
 /// Where an axis is at the end of a block: fixed by an absolute word, or
@@ -182,10 +199,9 @@ struct Block {
     kind: Kind,
     /// Axis end points (per profile axis of the path).
     end: Vec<Pos>,
-    /// Modal F (None: not yet set in this pass).
-    feed: Option<i32>,
-    /// Modal S and spindle on/off (None: inherited from before the pass).
-    speed: Option<i32>,
+    /// Modal codes as the pass left them (F, S ...; None: not yet set in
+    /// this pass) and spindle on/off (None: inherited from before the pass).
+    modal: ProgramModal,
     spin: Option<bool>,
     /// M30/M02: a part is counted when the block completes.
     end_of_program: bool,
@@ -203,6 +219,8 @@ pub(super) struct Plan {
     repeat: bool,
     /// M30/M02 blocks per pass.
     parts_per_pass: i64,
+    /// Feed moves (G01/G02/G03) before each block, and in the pass (last).
+    feed_moves: Vec<u32>,
 }
 
 /// Lines shown by cnc_rdexecprog: the current one and the following.
@@ -279,7 +297,7 @@ impl Plan {
             .map(|a| i64::from(a.absolute) - i64::from(a.machine))
             .collect();
         let mut pos: Vec<Pos> = vec![Pos::Rel(0); axes.len()];
-        let (mut seq, mut feed, mut speed, mut spin) = (0, None, None, None);
+        let (mut seq, mut spin, mut modal) = (0, None, ProgramModal::default());
         let (mut rapid, mut incremental) = (true, false);
         let mut blocks = Vec::new();
         for (line, raw) in lines.iter().enumerate() {
@@ -295,6 +313,7 @@ impl Plan {
                 .collect();
             let (dwell, home) = (gs.contains(&4), gs.contains(&28));
             for g in &gs {
+                modal.set_g(*g);
                 match g {
                     0 => rapid = true,
                     1..=3 => rapid = false,
@@ -308,14 +327,16 @@ impl Plan {
             for (c, v) in &ws {
                 match c {
                     'N' => seq = v.parse().unwrap_or(seq),
-                    'F' => feed = v.parse::<f64>().ok().map(|f| f as i32),
-                    'S' => speed = v.parse::<f64>().ok().map(|s| s as i32),
-                    'M' => match v.parse::<i32>().unwrap_or(-1) {
-                        3 | 4 => spin = Some(true),
-                        5 => spin = Some(false),
-                        2 | 30 => end_of_program = true,
-                        _ => {}
-                    },
+                    'F' | 'S' | 'T' | 'D' | 'H' => modal.set_word(*c, v),
+                    'M' => {
+                        modal.set_word('M', v);
+                        match v.parse::<i32>().unwrap_or(-1) {
+                            3 | 4 => spin = Some(true),
+                            5 => spin = Some(false),
+                            2 | 30 => end_of_program = true,
+                            _ => {}
+                        }
+                    }
                     _ if !dwell => {
                         let Some(i) = axes.iter().position(|a| a.name.starts_with(*c)) else {
                             continue;
@@ -353,15 +374,21 @@ impl Plan {
                 seq,
                 kind,
                 end: pos.clone(),
-                feed,
-                speed,
+                modal,
                 spin,
                 end_of_program,
                 text: lines[line..end].join("\n"),
             });
         }
         let parts_per_pass = blocks.iter().filter(|b| b.end_of_program).count() as i64;
+        let feed_moves = std::iter::once(0)
+            .chain(blocks.iter().scan(0, |n, b| {
+                *n += u32::from(b.kind == Kind::Move { rapid: false });
+                Some(*n)
+            }))
+            .collect();
         Plan {
+            feed_moves,
             blocks,
             scale,
             block_seconds: cycle.block_seconds,
@@ -632,6 +659,8 @@ impl Machine {
         run.held = hold && !emergency;
 
         let Some(plan) = eng.plan.clone() else {
+            run.operating = eng.op_before;
+            run.cutting = eng.cut_before;
             if run.held {
                 st.run = 2;
                 st.motion = 0;
@@ -726,27 +755,24 @@ impl Machine {
             ax.distance = if finished { 0 } else { clamp(to - cur) };
         }
 
-        // Feed and spindle: modal values, inherited from the previous pass
-        // (or the profile) until the program sets them.
-        let feed = b
-            .feed
-            .or(if pass > 0 { last.feed } else { None })
-            .unwrap_or(0);
+        // Modal codes, feed and spindle: inherited from the previous pass
+        // (or the programs before, the profile) until the program sets them.
+        let earlier = if pass > 0 {
+            last.modal.or(eng.modal_before)
+        } else {
+            eng.modal_before
+        };
+        run.modal = b.modal.or(earlier);
+        let feed = run.modal.aux_value(modal::F).unwrap_or(0);
         run.feed = match b.kind {
             _ if !moving => 0,
             Kind::Move { rapid: false } => feed,
             _ => (dist2.sqrt() * 60.0 / plan.block_seconds).round() as i32,
         };
         let base_speed = eng.base_spindles.first().copied().unwrap_or(0);
-        let inherit = |x: Option<i32>, y: Option<bool>| -> (i32, bool) {
-            let prev_s = if pass > 0 { last.speed } else { None };
-            let prev_on = if pass > 0 { last.spin } else { None };
-            (
-                x.or(prev_s).unwrap_or(base_speed),
-                y.or(prev_on).unwrap_or(base_speed != 0),
-            )
-        };
-        let (s, on) = inherit(b.speed, b.spin);
+        let prev_on = if pass > 0 { last.spin } else { None };
+        let s = run.modal.aux_value(modal::S).unwrap_or(base_speed);
+        let on = b.spin.or(prev_on).unwrap_or(base_speed != 0);
         run.spindle_speed = if on && !emergency { s } else { 0 };
         profile.paths[i].feed = run.feed;
         // Loads follow the work: the profile's servo load while moving, a
@@ -770,6 +796,25 @@ impl Machine {
         let ends_before = plan.blocks[..k].iter().filter(|x| x.end_of_program).count() as i64;
         run.runs_done = if finished { 1 } else { pass };
         run.run_seconds = n as f64 * plan.block_seconds;
+        // Timers: the program clock (holds stopped it) and the waits of a
+        // DNC program for data; cutting, the feed moves run so far.
+        let bs = plan.block_seconds;
+        let operating = if finished { run.run_seconds } else { tp } + eng.waited;
+        let feeding = matches!(b.kind, Kind::Move { rapid: false });
+        let moves = |k: usize| f64::from(plan.feed_moves[k]);
+        let cutting = (pass as f64 * moves(plan.blocks.len()) + moves(k)) * bs
+            + if feeding {
+                frac.clamp(0.0, 1.0) * bs
+            } else {
+                0.0
+            };
+        run.operating = eng.op_before + operating;
+        run.cutting = eng.cut_before + cutting;
+        run.cycle = if plan.repeat {
+            tp - pass as f64 * run.run_seconds
+        } else {
+            operating
+        };
         run.parts = eng.parts_before
             + if finished {
                 plan.parts_per_pass

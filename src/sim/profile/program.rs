@@ -5,7 +5,8 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 
 /// `[timers]`: cnc_rdtimer's counters at simulator start, in minutes; they
-/// run on from there (operating and cutting only while path 1 runs / moves).
+/// run on from there on the simulator's clock (operating only while path 1
+/// runs, cutting while it moves at feed; a hold stops them).
 #[derive(Debug, Clone, Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 pub struct Timers {
