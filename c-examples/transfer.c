@@ -72,6 +72,13 @@ static void list_programs(void)
     printf("programs=%d\n", total);
 }
 
+/* The part counter: parameter 6711, which a program's M30 counts up. */
+static long part_count(void)
+{
+    IODBPSD p;
+    return cnc_rdparam(h, 6711, 0, 8, &p) == EW_OK ? (long)p.u.ldata : -1;
+}
+
 /* The whole upload of program `number` into a new buffer (NUL-terminated). */
 static char *upload(short number, long *size)
 {
@@ -156,23 +163,27 @@ int main(int argc, char **argv)
     if ((ret = cnc_rdprgnum(h, &prg)) != EW_OK)
         return fail("cnc_rdprgnum", ret);
     printf("main=O%04d\n", prg.mdata);
-    long blocks0 = 0, blocks = 0;
+    long blocks0 = 0, blocks = 0, parts0 = part_count(), end_x = 0;
     cnc_rdblkcount(h, &blocks0);
     if ((ret = cnc_start(h)) != EW_OK)
         return fail("cnc_start", ret);
     ODBST st;
+    ODBDY2 dyn;
     int polls = 0, seen_running = 0;
     for (;;) {
         if ((ret = cnc_statinfo(h, &st)) != EW_OK)
             return fail("cnc_statinfo", ret);
         if (st.run == 3)
             seen_running = 1;
+        /* Where the first axis is. */
+        if (cnc_rddynamic2(h, 1, sizeof dyn, &dyn) == EW_OK)
+            end_x = dyn.pos.faxis.absolute[0];
         if (st.run == 0 || ++polls > 60000)
             break;
         pause_ms(1);
     }
-    cnc_rdprgnum(h, &prg);
     cnc_rdblkcount(h, &blocks);
+    printf("end_x=%ld parts=%+ld\n", end_x, part_count() - parts0);
     printf("ran=O%04d started=%s ended=%s blocks=%ld\n", prg.data, seen_running ? "yes" : "no",
            st.run == 0 ? "yes" : "no", blocks - blocks0);
 

@@ -384,6 +384,9 @@ fn transfer_example_downloads_runs_and_uploads_a_program() {
     assert_eq!(kv["downloaded"], format!("O4242 bytes={}", program.len()));
     assert_eq!(kv["main"], "O4242");
     assert_eq!(kv["ran"], "O4242 started=yes ended=yes blocks=5");
+    // G90 X20. (3 decimals) last: the machine moved as the program says,
+    // and its M30 counted a part.
+    assert_eq!(kv["end_x"], "20000 parts=+1");
     assert_eq!(kv["upload"], format!("identical bytes={}", program.len()));
 }
 

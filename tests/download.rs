@@ -190,3 +190,45 @@ fn a_download_cut_by_a_freed_handle_keeps_the_old_store() {
     assert_eq!(upload(other, 4007), Err(EW_DATA), "never stored");
     sim::free(other);
 }
+
+/// A download cut by a dropped connection, before its end frame: nothing is
+/// stored (a CNC keeps the program memory as it was).
+#[test]
+fn a_download_cut_by_a_dropped_connection_stores_nothing() {
+    use fwlib32::proto::download::DOWNLOAD;
+    use fwlib32::proto::frame::{CLIENT_VERSION, Frame, ftype};
+    use fwlib32::proto::upload::StartReq;
+    use std::io::{Read, Write};
+    let s = sim::start(Profile::default());
+    let h = sim::alloc(&s);
+    let before = upload(h, 1234).unwrap();
+    {
+        let mut c = std::net::TcpStream::connect(s.addr()).unwrap();
+        let send = |c: &mut std::net::TcpStream, t: u16, body: Vec<u8>| {
+            c.write_all(&Frame::new(CLIENT_VERSION, t, body).encode())
+                .unwrap()
+        };
+        let mut answer = [0u8; 10];
+        send(&mut c, ftype::OPEN_REQ, vec![0, 1]);
+        c.read_exact(&mut answer).unwrap();
+        let mut rest = vec![0u8; usize::from(u16::from_be_bytes([answer[8], answer[9]]))];
+        c.read_exact(&mut rest).unwrap();
+        let req = StartReq {
+            dtype: 0,
+            path: 1,
+            start: String::new(),
+            end: String::new(),
+        };
+        send(&mut c, DOWNLOAD.start_req(), req.encode());
+        c.read_exact(&mut answer).unwrap();
+        assert_eq!(
+            u16::from_be_bytes([answer[6], answer[7]]),
+            DOWNLOAD.start_resp()
+        );
+        send(&mut c, DOWNLOAD.data_frame(), program(4321, 20));
+        // The connection drops here, without the end frame.
+    }
+    assert_eq!(upload(h, 4321), Err(EW_DATA), "nothing stored");
+    assert_eq!(upload(h, 1234).unwrap(), before);
+    sim::free(h);
+}
