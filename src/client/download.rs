@@ -54,6 +54,20 @@ impl Conn1 {
         r
     }
 
+    /// Ends `h`'s transfer of kind `how` on the client's side (it is
+    /// dropped): Some(result) when the CNC already ended it, None when the
+    /// client has to tell the CNC; EW_FUNC when its start was never sent
+    /// (FANUC's library has nothing to end then).
+    fn finishing(&mut self, how: Outgoing) -> Result<Option<Result<()>>> {
+        let s = self.sending(how)?;
+        let (ended, unsent) = (s.ended.clone(), s.pending.is_some());
+        self.outgoing = None;
+        if unsent {
+            return Err(not_started());
+        }
+        Ok(ended.map(ok_at_end))
+    }
+
     /// `h`'s running transfer of kind `how`, after taking in an error
     /// frame that has arrived (frames of other kinds are stale: dropped).
     fn sending(&mut self, how: Outgoing) -> Result<&mut Sending> {
@@ -143,29 +157,18 @@ impl Pair {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
             c1.settle(h, live, deadline)?;
-            let s = c1.sending(how)?;
-            let (ended, unsent) = (s.ended.clone(), s.pending.is_some());
-            if let Some(e) = ended {
-                c1.outgoing = None;
-                return ok_at_end(e);
+            if let Some(r) = c1.finishing(how)? {
+                return r;
             }
-            if unsent {
-                // Nothing was sent: FANUC's library has nothing to end.
-                c1.outgoing = None;
-                return Err(not_started());
-            }
-            let r = c1.send(how.end_req(), Vec::new(), deadline).and_then(|_| {
-                loop {
-                    let f = c1.next_frame(Some(deadline))?.expect("waited");
-                    match (f.ftype >> 8) as u8 {
-                        k if k == how.end => break Ok(()),
-                        k if k == how.error => break ok_at_end(cnc_end(&f.body)),
-                        _ => {}
-                    }
+            c1.send(how.end_req(), Vec::new(), deadline)?;
+            loop {
+                let f = c1.next_frame(Some(deadline))?.expect("waited");
+                match (f.ftype >> 8) as u8 {
+                    k if k == how.end => break Ok(()),
+                    k if k == how.error => break ok_at_end(cnc_end(&f.body)),
+                    _ => {}
                 }
-            });
-            c1.outgoing = None;
-            r
+            }
         })
     }
 
@@ -182,14 +185,8 @@ impl Pair {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
             c1.settle(h, live, deadline)?;
-            let s = c1.sending(how)?;
-            let (ended, unsent) = (s.ended.clone(), s.pending.is_some());
-            c1.outgoing = None;
-            if unsent {
-                return Err(not_started());
-            }
-            match ended {
-                Some(e) => ok_at_end(e),
+            match c1.finishing(how)? {
+                Some(r) => r,
                 None => c1.send(how.error_frame(), error_body(code, 0, 0), deadline),
             }
         })
