@@ -19,8 +19,8 @@ mod profiles;
 mod sim;
 mod toolchain;
 
+use fwlib32::client::batch::default_limits;
 use fwlib32::ew::*;
-use fwlib32::ffi::ext::default_limits;
 use fwlib32::proto::open::CncClass;
 use fwlib32::sim::Simulator;
 use fwlib32::types::*;

@@ -256,17 +256,34 @@ fn programs() {
         std::fs::read_to_string(&file).unwrap().trim_end(),
         text.trim_end()
     );
+
+    // Download a new program, list it, fetch it back, delete it.
+    let new = dir.join("O4242.nc");
+    std::fs::write(&new, "%\nO4242 (FROM THE CLI)\nG00 X1.\nM30\n%").unwrap();
+    let t = ok(&s, &["prog", "put", new.to_str().unwrap()]);
+    assert!(t.ends_with(": 36 bytes downloaded\n"), "{t}");
+    assert!(ok(&s, &["prog", "ls"]).contains("FROM THE CLI"));
+    assert_eq!(
+        ok(&s, &["prog", "get", "4242"]).trim_end(),
+        "%\nO4242 (FROM THE CLI)\nG00 X1.\nM30\n%"
+    );
+    // The same number again: the CNC refuses it (EW_DATA).
+    fails(
+        run_port(s.port(), &["prog", "put", new.to_str().unwrap()]),
+        &["cnc_dwnend3", "EW_DATA"],
+    );
+    assert_eq!(json(&s, &["prog", "rm", "4242"])["deleted"], 4242);
     std::fs::remove_dir_all(&dir).unwrap();
 
     fails(
         run_port(s.port(), &["prog", "get", "4242"]),
         &["cnc_upload3", "EW_"],
     );
+    fails(run_port(s.port(), &["prog", "put", "x.nc"]), &["x.nc"]);
     fails(
-        run_port(s.port(), &["prog", "put", "x.nc"]),
-        &["cnc_download4"],
+        run_port(s.port(), &["prog", "rm", "4242"]),
+        &["cnc_delete", "EW_DATA"],
     );
-    fails(run_port(s.port(), &["prog", "rm", "1234"]), &["cnc_delete"]);
 }
 
 #[test]

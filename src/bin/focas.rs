@@ -140,10 +140,6 @@ fn run(cli: Cli) -> Result<(), Fail> {
         format!("{host}:{}", cli.port)
     };
     let at = |e| Fail::Focas(addr.clone(), e);
-    // Program upload and download need no connection to fail clearly.
-    if let Command::Prog(p) = &cli.command {
-        p.check()?;
-    }
     let cnc = Cnc::connect(&addr, Duration::from_secs_f64(cli.timeout)).map_err(at)?;
     if let Some(p) = cli.path {
         cnc.set_path(p).map_err(at)?;

@@ -15,6 +15,7 @@
 //! EW_REJECT while the handle batches, without traffic.
 
 use crate::error::Result;
+use crate::proto::open::CncClass;
 use crate::proto::packet::{ReqSub, RespSub};
 use std::cell::Cell;
 
@@ -32,6 +33,21 @@ pub struct Limits {
     pub subpackets: usize,
     /// Bytes of the frame's body (the subpacket count word and subpackets).
     pub body: usize,
+}
+
+/// The most FANUC's library puts in one request frame, by CNC class: the
+/// largest the recorded cases show (tests/batch.rs checks it against
+/// tests/vectors). 30i: 16 subpackets (cnc_rdparam_ext, 16 numbers in
+/// frames of 16); 16i: 14 (the same call in frames of 14, 14, 4); Series
+/// 15: 9 (cnc_rddynamic). Bodies: 4126 bytes (cnc_wrmdiprog) on the 30i
+/// and 16i classes, 1350 (cnc_wrparas) on Series 15.
+pub fn default_limits(class: CncClass) -> Limits {
+    let (subpackets, body) = match class {
+        CncClass::Series30 => (16, 4126),
+        CncClass::Series16 { kind: 2 } => (9, 1350),
+        CncClass::Series16 { .. } => (14, 4126),
+    };
+    Limits { subpackets, body }
 }
 
 /// One queued call.

@@ -3,11 +3,10 @@
 //! keeps these functions out of `fwlib32.h`).
 
 use super::{ffi_boundary, nonnull};
-use crate::client::batch::{Batch, Limits};
+use crate::client::batch::{Batch, Limits, default_limits};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_BUSY, EW_LENGTH};
-use crate::proto::open::CncClass;
 use std::os::raw::{c_int, c_short, c_ushort};
 
 /// Turns reconnection on (`on` not 0) or off (0, the default, as FANUC's
@@ -29,21 +28,6 @@ pub extern "C" fn fwlib_set_reconnect(FlibHndl: c_ushort, on: c_int) -> c_short 
         handles::get(FlibHndl)?.state.lock().reconnect = on != 0;
         Ok(())
     })
-}
-
-/// The most FANUC's library puts in one request frame, by CNC class: the
-/// largest the recorded cases show (tests/batch.rs checks it against
-/// tests/vectors). 30i: 16 subpackets (cnc_rdparam_ext, 16 numbers in
-/// frames of 16); 16i: 14 (the same call in frames of 14, 14, 4); Series
-/// 15: 9 (cnc_rddynamic). Bodies: 4126 bytes (cnc_wrmdiprog) on the 30i
-/// and 16i classes, 1350 (cnc_wrparas) on Series 15.
-pub fn default_limits(class: CncClass) -> Limits {
-    let (subpackets, body) = match class {
-        CncClass::Series30 => (16, 4126),
-        CncClass::Series16 { kind: 2 } => (9, 1350),
-        CncClass::Series16 { .. } => (14, 4126),
-    };
-    Limits { subpackets, body }
 }
 
 /// From now on the read calls on `FlibHndl` are queued instead of sent:

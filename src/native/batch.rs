@@ -8,18 +8,13 @@ use std::any::Any;
 use std::marker::PhantomData;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Most subpackets one request frame carries: the most any function of
-/// FANUC's library recorded puts in one (cnc_rdparam_ext: 8 numbers, 16
-/// subpackets; src/proto/NOTES.md).
-pub const MAX_SUBPACKETS: usize = 16;
-
 static NEXT_BATCH: AtomicU64 = AtomicU64::new(1);
 
 /// Reads collected to be sent together. Each method adds one read and
 /// returns a [`Ticket`] for its typed result; [`Batch::send`] sends them,
-/// packed into as few frames as fit (each frame at most
-/// [`MAX_SUBPACKETS`] subpackets, and an answer no larger than the CNC's
-/// frames allow), and [`Replies::take`] hands each result out by its ticket.
+/// packed into as few frames as fit (each frame at most as many
+/// subpackets as FANUC's library puts in one on the CNC's class, and an
+/// answer no larger than the CNC's frames allow), and [`Replies::take`] hands each result out by its ticket.
 ///
 /// ```
 /// use fwlib32::native::{Cnc, Decimal, Mode};
@@ -116,12 +111,15 @@ impl Batch<'_> {
     /// refused is an `Err` of its own ticket.
     pub fn send(self) -> Result<Replies> {
         let cx = self.cnc.ctx();
-        let max_body = max_body_len(self.cnc.handle().pair.info.open.frame_version());
+        let open = &self.cnc.handle().pair.info.open;
+        let max_body = max_body_len(open.frame_version());
+        // The most FANUC's library puts in one frame on this class.
+        let max_subs = crate::client::batch::default_limits(open.class()).subpackets;
         let mut frames: Vec<Vec<Box<dyn AnyPart>>> = Vec::new();
         let (mut subs, mut body) = (0, 2);
         for p in self.parts {
             let (n, size) = (p.subs(&cx).len(), p.answer_max(&cx));
-            let fits = subs + n <= MAX_SUBPACKETS && body + size <= max_body;
+            let fits = subs + n <= max_subs && body + size <= max_body;
             match frames.last_mut() {
                 Some(f) if fits || f.is_empty() => f.push(p),
                 _ => {

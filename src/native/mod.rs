@@ -39,7 +39,7 @@ mod program;
 mod status;
 
 pub use alarm::{Alarm, AlarmKind, HistoryEntry, Timestamp};
-pub use batch::{Batch, MAX_SUBPACKETS, Replies, Ticket};
+pub use batch::{Batch, Replies, Ticket};
 pub use cnc::{Cnc, DEFAULT_PORT};
 pub use decimal::{Decimal, ParseDecimalError};
 pub use error::{Detail, Error, Ew, Result};

@@ -1,10 +1,13 @@
-//! NC programs: the program directory (cnc_rdprogdir3) and upload
-//! (cnc_upstart3, cnc_upload3, cnc_upend3 on connection 1).
+//! NC programs: the program directory (cnc_rdprogdir3), upload
+//! (cnc_upstart3, cnc_upload3, cnc_upend3) and download (cnc_dwnstart3,
+//! cnc_download3, cnc_dwnend3) on connection 1, deletion (cnc_delete).
 
 use super::alarm::Timestamp;
 use super::cnc::Cnc;
 use super::error::{Error, Result};
 use crate::ew::{EW_BUFFER, EW_RESET};
+use crate::proto::described::Described;
+use crate::proto::download::DOWNLOAD;
 use crate::proto::program::{DirEntry, PROGDIR_CHUNK, progdir, progdir3_code};
 use crate::proto::upload::{StartReq, range_name};
 
@@ -129,5 +132,48 @@ impl Cnc {
         h.upload_end(me, timeout)
             .map_err(|e| Error::of("cnc_upend3", e))?;
         Ok(String::from_utf8_lossy(&text).into_owned())
+    }
+
+    /// Downloads program text in punch format ("%", the "O<number>" block
+    /// and its blocks one per line, "%") into the CNC's memory, calling
+    /// `progress` with the bytes sent so far. The CNC's refusal (a number in
+    /// use EW_DATA, memory full EW_OVRFLOW, protected EW_PROT ...) is the
+    /// error of cnc_dwnend3; a refused program is not stored.
+    pub fn put_program(&self, text: &[u8], mut progress: impl FnMut(usize)) -> Result<()> {
+        let (h, me) = (self.handle(), self.number());
+        let (path, timeout) = {
+            let s = h.state.lock();
+            (s.path, s.timeout)
+        };
+        let req = StartReq {
+            dtype: 0,
+            path,
+            start: String::new(),
+            end: String::new(),
+        };
+        h.send_start(me, DOWNLOAD, &req, false, timeout)
+            .map_err(|e| Error::of("cnc_dwnstart3", e))?;
+        let mut sent = 0;
+        for chunk in text.chunks(DOWNLOAD.chunk * 8) {
+            if let Err(e) = h.send_data(me, DOWNLOAD, chunk, timeout) {
+                let _ = h.send_end(me, DOWNLOAD, timeout);
+                return Err(Error::of("cnc_download3", e));
+            }
+            sent += chunk.len();
+            progress(sent);
+        }
+        h.send_end(me, DOWNLOAD, timeout)
+            .map_err(|e| Error::of("cnc_dwnend3", e))
+    }
+
+    /// Deletes program `number` (cnc_delete): EW_DATA when there is none,
+    /// EW_PROT when it is protected, EW_BUSY when it runs or is selected.
+    pub fn delete_program(&self, number: u16) -> Result<()> {
+        let f = crate::spec::find("cnc_delete").expect("a described function");
+        let args = [i32::from(number as i16)];
+        self.handle()
+            .call(&Described { f, args: &args })
+            .map(|_| ())
+            .map_err(|e| Error::of("cnc_delete", e))
     }
 }

@@ -12,37 +12,47 @@ pub enum Prog {
     Ls,
     /// Upload program N, to FILE or stdout
     Get { number: u32, file: Option<PathBuf> },
-    /// Download FILE to the CNC (needs program download: not yet in the library)
+    /// Download FILE (punch format: %, O<number> ..., %) to the CNC's memory
     Put { file: PathBuf },
-    /// Delete program N (needs cnc_delete: not yet in the library)
-    Rm { number: u32 },
-}
-
-impl Prog {
-    /// Fails the commands the library cannot do yet, naming what is missing.
-    pub fn check(&self) -> Result<(), Fail> {
-        let missing = match self {
-            Prog::Put { .. } => Some((
-                "put",
-                "program download (cnc_dwnstart4, cnc_download4, cnc_dwnend4)",
-            )),
-            Prog::Rm { .. } => Some(("rm", "program deletion (cnc_delete)")),
-            _ => None,
-        };
-        match missing {
-            Some((cmd, what)) => Err(Fail::Other(format!(
-                "prog {cmd}: not available: {what} is not implemented in this library yet"
-            ))),
-            None => Ok(()),
-        }
-    }
+    /// Delete program N
+    Rm { number: u16 },
 }
 
 pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
     match p {
         Prog::Ls => ls(cnc, json),
         Prog::Get { number, file } => get(cnc, number, file, json),
-        Prog::Put { .. } | Prog::Rm { .. } => p.check(),
+        Prog::Put { file } => put(cnc, &file, json),
+        Prog::Rm { number } => {
+            cnc.delete_program(number)?;
+            if json {
+                json_line(&json!({ "deleted": number }))
+            } else {
+                print(&format!("O{number} deleted\n"))
+            }
+        }
+    }
+}
+
+fn put(cnc: &Cnc, file: &std::path::Path, json: bool) -> Result<(), Fail> {
+    let text = std::fs::read(file).map_err(|e| Fail::Other(format!("{}: {e}", file.display())))?;
+    let bar = ProgressBar::new(text.len() as u64);
+    bar.set_style(
+        ProgressStyle::with_template("{msg} {bar:30} {bytes}/{total_bytes}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    bar.set_message(file.display().to_string());
+    let r = cnc.put_program(&text, |n| bar.set_position(n as u64));
+    bar.finish_and_clear();
+    r?;
+    if json {
+        json_line(&json!({ "file": file, "bytes": text.len() }))
+    } else {
+        print(&format!(
+            "{}: {} bytes downloaded\n",
+            file.display(),
+            text.len()
+        ))
     }
 }
 
