@@ -14,6 +14,8 @@ pub mod client;
 pub mod error;
 pub mod ew;
 pub mod ffi;
+#[doc(hidden)]
+pub mod fuzzing;
 pub mod native;
 pub mod proto;
 pub mod sim;

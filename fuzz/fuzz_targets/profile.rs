@@ -1,0 +1,4 @@
+#![no_main]
+//! See fwlib32::fuzzing::profile.
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| fwlib32::fuzzing::profile(data));

@@ -1,0 +1,122 @@
+//! The fuzz corpora (fuzz/corpus/<target>/, README.md "Fuzzing") replayed
+//! through the fuzz targets' own entry points (fwlib32::fuzzing), so CI
+//! needs no fuzzer: every input must decode without a panic. And every
+//! function whose recorded vectors show a data answer has a decoder in the
+//! `reply` target.
+
+use std::path::Path;
+
+fn replay(target: &str, run: fn(&[u8])) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("fuzz/corpus")
+        .join(target);
+    let mut n = 0;
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.sort();
+    for p in files {
+        let data = std::fs::read(&p).unwrap();
+        let r = std::panic::catch_unwind(|| run(&data));
+        assert!(r.is_ok(), "{target}: {} panicked", p.display());
+        n += 1;
+    }
+    assert!(n > 0, "{target}: empty corpus");
+    println!("{target}: {n} inputs");
+}
+
+#[test]
+fn reply_corpus_decodes() {
+    replay("reply", fwlib32::fuzzing::reply);
+}
+
+#[test]
+fn request_corpus_decodes() {
+    replay("request", fwlib32::fuzzing::request);
+}
+
+#[test]
+fn profile_corpus_loads() {
+    replay("profile", fwlib32::fuzzing::profile);
+}
+
+/// The regression inputs of defects the fuzzers found (each once a crash).
+#[test]
+fn found_defects_stay_fixed() {
+    for (target, input) in FOUND {
+        let run = match *target {
+            "reply" => fwlib32::fuzzing::reply,
+            "request" => fwlib32::fuzzing::request,
+            _ => fwlib32::fuzzing::profile,
+        };
+        run(input);
+    }
+}
+
+const FOUND: &[(&str, &[u8])] = &[];
+
+#[test]
+fn the_decoders_name_exported_functions() {
+    for name in fwlib32::fuzzing::hand_written_names() {
+        assert!(
+            fwlib32::ffi::exports::export(name).is_some(),
+            "{name} is not exported"
+        );
+        assert!(
+            fwlib32::spec::FUNCS.iter().all(|f| f.name != name),
+            "{name} is described in src/spec/table.rs: its decoder is the table's"
+        );
+    }
+}
+
+#[test]
+fn every_function_answered_with_data_has_a_decoder() {
+    use fwlib32::ffi::exports::{How, export};
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/vectors");
+    let mut missing = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        let name = p.file_stem().unwrap().to_str().unwrap().to_string();
+        let text = std::fs::read_to_string(&p).unwrap();
+        let traffic = text.contains("\"type\": \"2102\"");
+        let ours = matches!(
+            export(&name).map(|e| e.how),
+            Some(How::Written { .. } | How::Described)
+        );
+        // Functions without a data exchange of their own (handles, paths,
+        // timeouts, error details, the upload frames) have no decoder.
+        let local = [
+            "cnc_freelibhndl",
+            "cnc_setpath",
+            "cnc_getpath",
+            "cnc_settimeout",
+            "cnc_getdtailerr",
+            "pmc_getdtailerr",
+            "cnc_sysinfo",
+            "cnc_sysinfo_ex",
+            "cnc_startupprocess",
+            "cnc_exitprocess",
+            "cnc_resetconnect",
+            "cnc_allclibhndl4",
+            "pmc_get_current_pmc_unit",
+            "cnc_upstart",
+            "cnc_upstart3",
+            "cnc_upstart4",
+            "cnc_upload",
+            "cnc_cupload",
+            "cnc_upend",
+        ];
+        if traffic
+            && ours
+            && !local.contains(&name.as_str())
+            && fwlib32::fuzzing::decoder(&name).is_none()
+        {
+            missing.push(name);
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "add these to fwlib32::fuzzing's decoders: {missing:?}"
+    );
+}
