@@ -19,162 +19,16 @@
 //! pointers (the headers have no floating-point or struct arguments: the
 //! parser refuses them).
 
+mod cabi;
 mod sim;
 mod toolchain;
 
+use cabi::{Arg, Buf, Lib, Proto, all_prototypes, is_handle};
 use fwlib32::ew::*;
 use fwlib32::ffi::exports::{How, export};
 use fwlib32::sim::Profile;
 use std::collections::BTreeMap;
-use std::ffi::CString;
-use std::time::{Duration, Instant};
-
-/// One argument of a prototype.
-#[derive(Debug, Clone)]
-struct Param {
-    name: String,
-    /// The C type without the name, e.g. "unsigned short", "short *".
-    ty: String,
-    ptr: bool,
-}
-
-#[derive(Debug, Clone)]
-struct Proto {
-    name: String,
-    params: Vec<Param>,
-    /// The comment before the prototype.
-    doc: String,
-}
-
-impl Proto {
-    /// The header says `param` may be NULL.
-    fn null_ok(&self, param: &str) -> bool {
-        self.doc.contains(&format!("`{param}` must be NULL or"))
-    }
-}
-
-/// The prototypes of a header: `short name(type a, type *b);`, possibly over
-/// several lines.
-fn prototypes(text: &str) -> Vec<Proto> {
-    let mut out = Vec::new();
-    let mut lines = text.lines();
-    let mut doc = String::new();
-    while let Some(l) = lines.next() {
-        if l.starts_with("/*") {
-            doc.clear();
-        }
-        doc.push_str(l);
-        doc.push('\n');
-        if l.starts_with(' ') || l.starts_with('#') || l.starts_with('/') || !l.contains('(') {
-            continue;
-        }
-        let (head, _) = l.split_once('(').unwrap();
-        let Some(name) = head.split_whitespace().last() else {
-            continue;
-        };
-        if !(name.starts_with("cnc_") || name.starts_with("pmc_") || name.starts_with("fwlib_")) {
-            continue;
-        }
-        let mut decl = l.to_string();
-        while !decl.contains(");") {
-            decl.push(' ');
-            decl.push_str(lines.next().expect("prototype ends").trim());
-        }
-        let inner = decl.split_once('(').unwrap().1.rsplit_once(')').unwrap().0;
-        let params = inner
-            .split(',')
-            .map(str::trim)
-            .filter(|p| !p.is_empty() && *p != "void")
-            .map(|p| {
-                assert!(
-                    !p.contains("float") && !p.contains("double") || p.contains('*'),
-                    "{name}: a floating-point argument ({p}) needs its own calling convention"
-                );
-                let ptr = p.contains('*');
-                let split = p.rfind([' ', '*']).unwrap();
-                Param {
-                    name: p[split + 1..].to_string(),
-                    ty: p[..=split].trim().to_string(),
-                    ptr,
-                }
-            })
-            .collect();
-        out.push(Proto {
-            name: name.to_string(),
-            params,
-            doc: std::mem::take(&mut doc),
-        });
-    }
-    out
-}
-
-/// Up to 8 integer-class arguments: a function taking fewer ignores the
-/// rest (the caller owns them in every C calling convention).
-type Fn8 = unsafe extern "C" fn(i64, i64, i64, i64, i64, i64, i64, i64) -> i16;
-
-struct Lib {
-    handle: *mut libc::c_void,
-}
-
-impl Lib {
-    fn open() -> Lib {
-        let path = CString::new(toolchain::cdylib().to_str().unwrap()).unwrap();
-        let handle = unsafe { libc::dlopen(path.as_ptr(), libc::RTLD_NOW | libc::RTLD_LOCAL) };
-        assert!(!handle.is_null(), "dlopen {:?}", path);
-        Lib { handle }
-    }
-    fn get(&self, name: &str) -> Fn8 {
-        let c = CString::new(name).unwrap();
-        let p = unsafe { libc::dlsym(self.handle, c.as_ptr()) };
-        assert!(!p.is_null(), "{name} is declared but not exported");
-        unsafe { std::mem::transmute::<*mut libc::c_void, Fn8>(p) }
-    }
-}
-
-/// The memory behind a pointer argument: room for the largest count a
-/// `short` can say of the largest record (mapped lazily: only the pages
-/// the library touches cost anything), then a guard.
-const ROOM: usize = 16 << 20;
-const GUARD: usize = 4096;
-const FILL: u8 = 0xA5;
-
-/// A pointer argument's memory: ROOM bytes (zeros, or a count in the first
-/// bytes) and a guard after them.
-struct Buf(*mut u8);
-
-impl Buf {
-    fn new(count: Option<i64>) -> Buf {
-        let p = unsafe {
-            libc::mmap(
-                std::ptr::null_mut(),
-                ROOM + GUARD,
-                libc::PROT_READ | libc::PROT_WRITE,
-                libc::MAP_PRIVATE | libc::MAP_ANONYMOUS | libc::MAP_NORESERVE,
-                -1,
-                0,
-            )
-        };
-        assert_ne!(p, libc::MAP_FAILED);
-        let p = p.cast::<u8>();
-        unsafe { std::ptr::write_bytes(p.add(ROOM), FILL, GUARD) };
-        if let Some(c) = count {
-            // The same number read as a short, a long or a 64-bit long
-            // (little-endian: the low bytes first).
-            unsafe { std::ptr::copy_nonoverlapping(c.to_le_bytes().as_ptr(), p, 8) };
-        }
-        Buf(p)
-    }
-    fn intact(&self) -> bool {
-        let guard = unsafe { std::slice::from_raw_parts(self.0.add(ROOM), GUARD) };
-        guard.iter().all(|b| *b == FILL)
-    }
-}
-
-impl Drop for Buf {
-    fn drop(&mut self) {
-        unsafe { libc::munmap(self.0.cast(), ROOM + GUARD) };
-    }
-}
+use std::time::Duration;
 
 /// What a call gets in place of one argument.
 #[derive(Debug, Clone, Copy)]
@@ -187,10 +41,6 @@ enum Bad {
 
 const HANDLE_TIMEOUT: i64 = 2;
 const BOUND: Duration = Duration::from_secs(HANDLE_TIMEOUT as u64 + 8);
-
-fn is_handle(p: &Param) -> bool {
-    p.name == "FlibHndl"
-}
 
 /// The values an integer argument of type `ty` is tried with.
 fn bad_ints(ty: &str) -> &'static [i64] {
@@ -214,94 +64,47 @@ struct Bench {
 }
 
 impl Bench {
-    fn alloc(lib: &Lib, port: u16) -> u16 {
-        let ip = CString::new("127.0.0.1").unwrap();
-        let mut h: u16 = 0;
-        let rc = unsafe {
-            lib.get("cnc_allclibhndl3")(
-                ip.as_ptr() as i64,
-                i64::from(port),
-                HANDLE_TIMEOUT,
-                &mut h as *mut u16 as i64,
-                0,
-                0,
-                0,
-                0,
-            )
-        };
-        assert_eq!(rc, EW_OK, "cnc_allclibhndl3");
-        h
-    }
-
-    fn free(&self, h: u16) -> i16 {
-        unsafe { self.lib.get("cnc_freelibhndl")(i64::from(h), 0, 0, 0, 0, 0, 0, 0) }
-    }
-
     /// A fresh handle for the next call: the last may have freed this one,
     /// broken its connection or left an upload running.
     fn renew(&mut self) {
-        let _ = self.free(self.h);
-        self.h = Bench::alloc(&self.lib, self.sim.port());
+        let _ = self.lib.free(self.h);
+        self.h = self.lib.alloc(self.sim.port(), HANDLE_TIMEOUT).unwrap();
     }
 
     /// Calls `p` with `bad` in place of one argument: the result code and
     /// whether every buffer is intact.
     fn call(&mut self, p: &Proto, bad: Bad) -> (i16, bool) {
-        let f = self.lib.get(&p.name);
-        let mut bufs: Vec<Option<Buf>> = Vec::new();
-        let mut args = [0i64; 8];
+        let mut args = Vec::new();
         for (i, a) in p.params.iter().enumerate() {
-            let v = if a.ptr {
-                let b = match bad {
+            args.push(if a.ptr {
+                Arg::Ptr(match bad {
                     Bad::Null(k) if k == i => None,
                     Bad::Behind(k, v) if k == i => Some(Buf::new(Some(v))),
                     _ => Some(Buf::new(None)),
-                };
-                let v = b.as_ref().map_or(0, |b| b.0 as i64);
-                bufs.push(b);
-                v
+                })
             } else if is_handle(a) {
-                match bad {
+                Arg::Int(match bad {
                     Bad::Handle(h, _) => h,
                     _ => i64::from(self.h),
-                }
+                })
             } else {
-                match bad {
+                Arg::Int(match bad {
                     Bad::Int(k, v) if k == i => v,
                     // A plausible small number elsewhere (1: a count, a
                     // number, a type), the port for a port.
                     _ if a.name.contains("port") => i64::from(self.sim.port()),
                     _ if a.name.contains("timeout") => HANDLE_TIMEOUT,
                     _ => 1,
-                }
-            };
-            args[i] = v;
+                })
+            });
         }
         if std::env::var_os("BAD_INPUT_TRACE").is_some() {
             eprintln!("{} {bad:?}", p.name);
         }
-        let t = Instant::now();
-        let rc = unsafe {
-            f(
-                args[0], args[1], args[2], args[3], args[4], args[5], args[6], args[7],
-            )
-        };
-        assert!(
-            t.elapsed() < BOUND,
-            "{} {bad:?} took {:?}",
-            p.name,
-            t.elapsed()
-        );
-        let intact = bufs.iter().flatten().all(Buf::intact);
+        let (rc, intact, took) = self.lib.invoke(p, args);
+        assert!(took < BOUND, "{} {bad:?} took {took:?}", p.name);
         (rc, intact)
     }
-}
-
-fn all_prototypes() -> Vec<Proto> {
-    let mut protos = prototypes(&toolchain::header_text());
-    let ext = std::fs::read_to_string(toolchain::ext_header_path()).unwrap();
-    protos.extend(prototypes(&ext));
-    protos
 }
 
 #[test]
@@ -336,11 +139,11 @@ fn the_parser_reads_every_declared_function() {
 fn every_export_survives_bad_arguments() {
     let lib = Lib::open();
     let sim = sim::start(Profile::default());
-    let h = Bench::alloc(&lib, sim.port());
+    let h = lib.alloc(sim.port(), HANDLE_TIMEOUT).unwrap();
     let mut bench = Bench { lib, sim, h };
     // A freed handle and one never issued (the table hands out small numbers).
-    let freed = Bench::alloc(&bench.lib, bench.sim.port());
-    assert_eq!(bench.free(freed), EW_OK);
+    let freed = bench.lib.alloc(bench.sim.port(), HANDLE_TIMEOUT).unwrap();
+    assert_eq!(bench.lib.free(freed), EW_OK);
     let never = 0x7ffe;
 
     let mut failures = Vec::new();
@@ -416,7 +219,7 @@ fn every_export_survives_bad_arguments() {
             bench.renew();
         }
     }
-    let _ = bench.free(bench.h);
+    let _ = bench.lib.free(bench.h);
     println!("{calls} calls; codes by kind of bad argument:");
     for (k, c) in &codes {
         println!("  {k:28} {c:?}");
