@@ -129,17 +129,22 @@ fn churn(ports: &[u16], threads: usize, rounds: usize) {
 /// memory within `slack` bytes.
 fn churn_and_measure(ports: &[u16], sessions: impl Fn() -> usize) {
     const THREADS: usize = 8;
-    const ROUNDS: usize = 25;
+    // FWLIB32_SOAK=<rounds per thread>: a longer run by hand (README.md
+    // "Reliability and fuzzing"); 25 in CI.
+    let rounds: usize = std::env::var("FWLIB32_SOAK")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(25);
     churn(ports, THREADS, 2);
     until("the warm-up sessions to close", 10, || sessions() == 0);
     let (fd0, mem0) = (fds(), LIVE.load(Ordering::Relaxed));
-    churn(ports, THREADS, ROUNDS);
+    churn(ports, THREADS, rounds);
     until("every session to close", 10, || sessions() == 0);
     let (fd1, mem1) = (fds(), LIVE.load(Ordering::Relaxed));
     println!(
         "{} handles, {} calls on {} simulator(s): descriptors {fd0} -> {fd1}, live bytes {mem0} -> {mem1}",
-        THREADS * ROUNDS,
-        THREADS * ROUNDS * 4,
+        THREADS * rounds,
+        THREADS * rounds * 4,
         ports.len()
     );
     assert_eq!(fd1, fd0, "file descriptors leaked");
@@ -150,7 +155,7 @@ fn churn_and_measure(ports: &[u16], sessions: impl Fn() -> usize) {
         mem1 - mem0 < slack,
         "memory grew by {} bytes over {} handles",
         mem1 - mem0,
-        THREADS * ROUNDS
+        THREADS * rounds
     );
 }
 
