@@ -393,3 +393,9 @@ fn a_write_whose_answer_never_comes_is_never_sent_again() {
     // A silent CNC took the frame and did nothing.
     write_in_flight("silent:at=10,duration=10", false);
 }
+
+#[test]
+fn a_write_whose_answer_is_cut_by_a_close_is_never_sent_again() {
+    let _g = serial();
+    write_in_flight("close:at=10,duration=10", true);
+}
