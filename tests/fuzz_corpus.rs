@@ -41,20 +41,26 @@ fn profile_corpus_loads() {
     replay("profile", fwlib32::fuzzing::profile);
 }
 
-/// The regression inputs of defects the fuzzers found (each once a crash).
+/// The inputs that crashed a target before their fix (fuzz/regressions/<target>/).
 #[test]
 fn found_defects_stay_fixed() {
-    for (target, input) in FOUND {
-        let run = match *target {
-            "reply" => fwlib32::fuzzing::reply,
-            "request" => fwlib32::fuzzing::request,
-            _ => fwlib32::fuzzing::profile,
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
+    for (target, run) in [
+        ("reply", fwlib32::fuzzing::reply as fn(&[u8])),
+        ("request", fwlib32::fuzzing::request),
+        ("profile", fwlib32::fuzzing::profile),
+    ] {
+        let Ok(dir) = std::fs::read_dir(root.join(target)) else {
+            continue;
         };
-        run(input);
+        for e in dir {
+            let p = e.unwrap().path();
+            let data = std::fs::read(&p).unwrap();
+            let r = std::panic::catch_unwind(|| run(&data));
+            assert!(r.is_ok(), "{} crashes again", p.display());
+        }
     }
 }
-
-const FOUND: &[(&str, &[u8])] = &[];
 
 #[test]
 fn the_decoders_name_exported_functions() {
