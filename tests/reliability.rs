@@ -140,6 +140,13 @@ fn churn_and_measure(ports: &[u16], sessions: impl Fn() -> usize) {
     let (fd0, mem0) = (fds(), LIVE.load(Ordering::Relaxed));
     churn(ports, THREADS, rounds);
     until("every session to close", 10, || sessions() == 0);
+    // A session's count drops just before its socket closes, and a
+    // simulator of an earlier test may still be closing its own: wait
+    // (bounded) for the count to come back, then compare.
+    let end = Instant::now() + Duration::from_secs(10);
+    while fds() > fd0 && Instant::now() < end {
+        std::thread::yield_now();
+    }
     let (fd1, mem1) = (fds(), LIVE.load(Ordering::Relaxed));
     println!(
         "{} handles, {} calls on {} simulator(s): descriptors {fd0} -> {fd1}, live bytes {mem0} -> {mem1}",
@@ -147,7 +154,7 @@ fn churn_and_measure(ports: &[u16], sessions: impl Fn() -> usize) {
         THREADS * rounds * 4,
         ports.len()
     );
-    assert_eq!(fd1, fd0, "file descriptors leaked");
+    assert!(fd1 <= fd0, "file descriptors leaked: {fd0} -> {fd1}");
     // A few kilobytes may move (a pool, a timer wheel): a leak per handle
     // or per call would be hundreds of kilobytes.
     let slack = 64 * 1024;
