@@ -8,7 +8,10 @@
 //! cargo run --example fuzz_seed            # then: cd fuzz && cargo fuzz cmin <target>
 //! ```
 
-use fwlib32::fuzzing::{ctx_byte, decoder};
+#[path = "../fuzz/fuzzing.rs"]
+mod fuzzing;
+
+use fuzzing::{ctx_byte, decoder};
 use fwlib32::proto::open::CncClass;
 use serde_json::Value;
 use std::collections::BTreeMap;

@@ -14,8 +14,6 @@ pub mod client;
 pub mod error;
 pub mod ew;
 pub mod ffi;
-#[doc(hidden)]
-pub mod fuzzing;
 pub mod native;
 pub mod proto;
 pub mod sim;

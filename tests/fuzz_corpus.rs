@@ -1,8 +1,11 @@
 //! The fuzz corpora (fuzz/corpus/<target>/, README.md "Fuzzing") replayed
-//! through the fuzz targets' own entry points (fwlib32::fuzzing), so CI
+//! through the fuzz targets' own entry points (fuzz/fuzzing.rs, included), so CI
 //! needs no fuzzer: every input must decode without a panic. And every
 //! function whose recorded vectors show a data answer has a decoder in the
 //! `reply` target.
+
+#[path = "../fuzz/fuzzing.rs"]
+mod fuzzing;
 
 use std::path::Path;
 
@@ -28,17 +31,17 @@ fn replay(target: &str, run: fn(&[u8])) {
 
 #[test]
 fn reply_corpus_decodes() {
-    replay("reply", fwlib32::fuzzing::reply);
+    replay("reply", fuzzing::reply);
 }
 
 #[test]
 fn request_corpus_decodes() {
-    replay("request", fwlib32::fuzzing::request);
+    replay("request", fuzzing::request);
 }
 
 #[test]
 fn profile_corpus_loads() {
-    replay("profile", fwlib32::fuzzing::profile);
+    replay("profile", fuzzing::profile);
 }
 
 /// The inputs that crashed a target before their fix (fuzz/regressions/<target>/).
@@ -46,9 +49,9 @@ fn profile_corpus_loads() {
 fn found_defects_stay_fixed() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
     for (target, run) in [
-        ("reply", fwlib32::fuzzing::reply as fn(&[u8])),
-        ("request", fwlib32::fuzzing::request),
-        ("profile", fwlib32::fuzzing::profile),
+        ("reply", fuzzing::reply as fn(&[u8])),
+        ("request", fuzzing::request),
+        ("profile", fuzzing::profile),
     ] {
         let Ok(dir) = std::fs::read_dir(root.join(target)) else {
             continue;
@@ -65,8 +68,8 @@ fn found_defects_stay_fixed() {
 #[test]
 fn the_decoders_name_exported_functions() {
     // The first input byte chooses among them: all must be reachable.
-    assert!(fwlib32::fuzzing::decoders() <= 256);
-    for name in fwlib32::fuzzing::hand_written_names() {
+    assert!(fuzzing::decoders() <= 256);
+    for name in fuzzing::hand_written_names() {
         assert!(
             fwlib32::ffi::exports::export(name).is_some(),
             "{name} is not exported"
@@ -115,16 +118,12 @@ fn every_function_answered_with_data_has_a_decoder() {
             "cnc_cupload",
             "cnc_upend",
         ];
-        if traffic
-            && ours
-            && !local.contains(&name.as_str())
-            && fwlib32::fuzzing::decoder(&name).is_none()
-        {
+        if traffic && ours && !local.contains(&name.as_str()) && fuzzing::decoder(&name).is_none() {
             missing.push(name);
         }
     }
     assert!(
         missing.is_empty(),
-        "add these to fwlib32::fuzzing's decoders: {missing:?}"
+        "add these to the decoders of fuzz/fuzzing.rs: {missing:?}"
     );
 }

@@ -1,4 +1,7 @@
 #![no_main]
-//! See fwlib32::fuzzing::profile.
+//! See fuzz/fuzzing.rs, `profile`.
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| fwlib32::fuzzing::profile(data));
+#[path = "../fuzzing.rs"]
+mod fuzzing;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| fuzzing::profile(data));

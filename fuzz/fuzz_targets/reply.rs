@@ -1,4 +1,7 @@
 #![no_main]
-//! See fwlib32::fuzzing::reply.
+//! See fuzz/fuzzing.rs, `reply`.
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| fwlib32::fuzzing::reply(data));
+#[path = "../fuzzing.rs"]
+mod fuzzing;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| fuzzing::reply(data));

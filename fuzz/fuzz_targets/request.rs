@@ -1,4 +1,7 @@
 #![no_main]
-//! See fwlib32::fuzzing::request.
+//! See fuzz/fuzzing.rs, `request`.
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| fwlib32::fuzzing::request(data));
+#[path = "../fuzzing.rs"]
+mod fuzzing;
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| fuzzing::request(data));

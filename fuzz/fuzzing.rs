@@ -1,29 +1,33 @@
-//! The entry points of the fuzz targets (fuzz/, cargo-fuzz) and of the
-//! corpus replay test (tests/fuzz_corpus.rs), here so that they cannot
-//! drift apart: each takes arbitrary bytes and must return without a
-//! panic, a hang or an unbounded allocation, whatever the bytes.
+//! The entry points of the fuzz targets (fuzz/fuzz_targets/, cargo-fuzz)
+//! and of the corpus replay test (tests/fuzz_corpus.rs): this one file,
+//! included by both (`#[path]`), so that they cannot drift apart. Each
+//! takes arbitrary bytes and must return without a panic, a hang or an
+//! unbounded allocation, whatever the bytes. It uses only the library's
+//! public API.
 //!
 //! * [`reply`]: the client's decoding of a CNC's answer, fed whole frames:
 //!   the frame header, the subpacket list and the payload, through the
 //!   decoder of one exported function (the open and start-up answers, the
-//!   hand-written [`Call`]s, every function of [`crate::spec::FUNCS`]).
+//!   hand-written [`Call`]s, every function of [`fwlib32::spec::FUNCS`]).
 //! * [`request`]: the simulator's decoding of a client's frames, answered
 //!   by a fresh [`Machine`] as its sessions answer them, with the trace
 //!   lines of both directions.
 //! * [`profile`]: the profile loader (TOML, validation), and a machine
 //!   built from any profile it accepts.
 
-use crate::proto::call::{self, Call, Ctx};
-use crate::proto::described::{Described, for_request};
-use crate::proto::frame::{Frame, FrameHeader, HEADER_LEN, ftype};
-use crate::proto::open::{CncClass, OpenBody};
-use crate::proto::packet::{RespSub, decode_request, decode_response_into, encode_response};
-use crate::proto::position::{AxisData, AxisDataCall, Dynamic, Position16, Speed, SpindleData};
-use crate::proto::{alarm as pa, macros as pm, offset as po, param as pp, pmc, program as pg};
-use crate::proto::{position as ps, status as st, tool as pt, upload as pu};
-use crate::sim::service::{CncService, dispatch};
-use crate::sim::trace::Namer;
-use crate::sim::{Machine, Profile};
+#![allow(dead_code)]
+
+use fwlib32::proto::call::{self, Call, Ctx};
+use fwlib32::proto::described::{Described, for_request};
+use fwlib32::proto::frame::{Frame, FrameHeader, HEADER_LEN, ftype};
+use fwlib32::proto::open::{CncClass, OpenBody};
+use fwlib32::proto::packet::{RespSub, decode_request, decode_response_into, encode_response};
+use fwlib32::proto::position::{AxisData, AxisDataCall, Dynamic, Position16, Speed, SpindleData};
+use fwlib32::proto::{alarm as pa, macros as pm, offset as po, param as pp, pmc, program as pg};
+use fwlib32::proto::{position as ps, status as st, tool as pt, upload as pu};
+use fwlib32::sim::service::{CncService, dispatch};
+use fwlib32::sim::trace::Namer;
+use fwlib32::sim::{Machine, Profile};
 use std::hint::black_box;
 use std::sync::OnceLock;
 use std::time::Duration;
@@ -437,9 +441,9 @@ fn range(a: &Args) -> pmc::PmcRange {
 const CONNECT: usize = 1;
 
 /// How many decoders [`reply`] chooses from: the connect step, the
-/// hand-written calls, then [`crate::spec::FUNCS`] in table order.
+/// hand-written calls, then [`fwlib32::spec::FUNCS`] in table order.
 pub fn decoders() -> usize {
-    CONNECT + HAND.len() + crate::spec::FUNCS.len()
+    CONNECT + HAND.len() + fwlib32::spec::FUNCS.len()
 }
 
 /// The exported functions the hand-written decoders name.
@@ -455,7 +459,7 @@ pub fn decoder(name: &str) -> Option<u8> {
     } else if let Some(i) = HAND.iter().position(|d| d.names.contains(&name)) {
         CONNECT + i
     } else {
-        CONNECT + HAND.len() + crate::spec::FUNCS.iter().position(|f| f.name == name)?
+        CONNECT + HAND.len() + fwlib32::spec::FUNCS.iter().position(|f| f.name == name)?
     };
     u8::try_from(i).ok()
 }
@@ -534,7 +538,7 @@ pub fn reply(data: &[u8]) {
         match HAND.get(which - CONNECT) {
             Some(d) => (d.run)(&cx, &a, &resp),
             None => {
-                let f = &crate::spec::FUNCS[which - CONNECT - HAND.len()];
+                let f = &fwlib32::spec::FUNCS[which - CONNECT - HAND.len()];
                 go(Described { f, args: &a }, &cx, &resp);
             }
         }
@@ -568,7 +572,7 @@ fn connect(h: &FrameHeader, body: &[u8], resp: &mut Vec<RespSub>) {
 fn profiles() -> &'static [Profile; 3] {
     static P: OnceLock<[Profile; 3]> = OnceLock::new();
     P.get_or_init(|| {
-        let base = crate::sim::profile::DEFAULT_PROFILE;
+        let base = fwlib32::sim::profile::DEFAULT_PROFILE;
         let class16 = |kind: u16| {
             let t = base.replacen(
                 "class = \"30i\"",
@@ -611,7 +615,7 @@ pub fn request(data: &[u8]) {
                 // A described function's answer decodes as the client decodes it.
                 for (s, r) in subs.iter().zip(&resp) {
                     if let Some(f) = for_request(s, open.class()) {
-                        let _ = black_box(crate::proto::described::decode(f, &r.payload));
+                        let _ = black_box(fwlib32::proto::described::decode(f, &r.payload));
                     }
                 }
                 let r = Frame::new(version, ftype::DATA_RESP, encode_response(&resp));
@@ -620,7 +624,7 @@ pub fn request(data: &[u8]) {
             }
             ftype::UPLOAD_START_REQ => {
                 black_box(namer.request(&frame, &[]));
-                let (out, _) = crate::sim::session::upload(&mut m, version, &frame);
+                let (out, _) = fwlib32::sim::session::upload(&mut m, version, &frame);
                 black_box(out);
                 continue;
             }
@@ -644,7 +648,7 @@ pub fn profile(data: &[u8]) {
         return;
     };
     let _ = black_box(p.check_faults(3));
-    black_box(crate::sim::fleet::vary(&p, 3));
+    black_box(fwlib32::sim::fleet::vary(&p, 3));
     let paths = p.paths.len() as u16;
     let mut m = Machine::new(p);
     black_box(m.open_body().to_bytes());
