@@ -6,8 +6,15 @@
 //! an EW_* code (never EW_UNEXP, the code of a caught panic), never write
 //! past the caller's buffer, and come back within the timeout. The mutations
 //! come from a fixed seed: a failure replays.
+//!
+//! Two call lists: [`PROBES`], read functions with the arguments a caller
+//! would pass, and every exported function of the headers (tests/cabi),
+//! its arguments found against a plain simulator, so that a new export is
+//! covered without a line here.
 
+mod cabi;
 mod sim;
+mod toolchain;
 
 use fwlib32::ew::*;
 use fwlib32::proto::frame::{Frame, ftype};
@@ -577,4 +584,168 @@ fn a_hostile_16i_gets_codes_never_panics_or_overruns() {
         fwlib32::sim::profile::DEFAULT_PROFILE.replacen("class = \"30i\"", "class = \"16i\"", 1);
     let p = Profile::parse(&text).expect("16i profile");
     run_against(p, 0x1615_eed0);
+}
+
+/// The arguments a header-driven call gets: integers `int`, those named
+/// like a length `length`, a count `behind` in each pointed-to buffer.
+#[derive(Debug, Clone, Copy)]
+struct Recipe {
+    int: i64,
+    length: i64,
+    behind: i64,
+}
+
+const RECIPES: [Recipe; 8] = [
+    Recipe {
+        int: 1,
+        length: 4096,
+        behind: 0,
+    },
+    Recipe {
+        int: 1,
+        length: 4096,
+        behind: 4,
+    },
+    Recipe {
+        int: 0,
+        length: 4096,
+        behind: 4,
+    },
+    Recipe {
+        int: -1,
+        length: 4096,
+        behind: 4,
+    },
+    Recipe {
+        int: 500,
+        length: 10,
+        behind: 4,
+    },
+    Recipe {
+        int: 1320,
+        length: 8,
+        behind: 1,
+    },
+    Recipe {
+        int: 1,
+        length: 256,
+        behind: 256,
+    },
+    Recipe {
+        int: 0,
+        length: 0,
+        behind: 0,
+    },
+];
+
+fn recipe_args(p: &cabi::Proto, h: c_ushort, r: Recipe) -> Vec<cabi::Arg> {
+    p.params
+        .iter()
+        .map(|a| {
+            if a.ptr {
+                cabi::Arg::Ptr(Some(cabi::Buf::new(Some(r.behind))))
+            } else if cabi::is_handle(a) {
+                cabi::Arg::Int(i64::from(h))
+            } else if a.name.contains("len") {
+                cabi::Arg::Int(r.length)
+            } else {
+                cabi::Arg::Int(r.int)
+            }
+        })
+        .collect()
+}
+
+/// Functions that end or change the handle's session (free it, drop its
+/// connections, start an upload, change its path or timeout) are left to
+/// their own tests; every other function taking a handle is swept.
+const SESSION: &[&str] = &[
+    "cnc_freelibhndl",
+    "cnc_resetconnect",
+    "cnc_upstart",
+    "cnc_upstart3",
+    "cnc_upstart4",
+    "cnc_setpath",
+    "cnc_settimeout",
+    "fwlib_set_reconnect",
+];
+
+/// `min_percent`: of the functions swept, how many at least must accept
+/// some arguments on a plain simulator (the 16i class lacks many).
+fn sweep_against(profile: Profile, seed: u64, min_percent: usize) {
+    let lib = cabi::Lib::open();
+    // The arguments: the first recipe each function accepts on a plain simulator.
+    let plain = sim::start(profile.clone());
+    let h = lib.alloc(plain.port(), 5).expect("a handle");
+    let mut calls = Vec::new();
+    for p in cabi::all_prototypes() {
+        if !p.params.iter().any(cabi::is_handle) || SESSION.contains(&p.name.as_str()) {
+            continue;
+        }
+        let r = RECIPES
+            .iter()
+            .copied()
+            .find(|r| lib.invoke(&p, recipe_args(&p, h, *r)).0 == EW_OK);
+        calls.push((p, r));
+    }
+    let _ = lib.free(h);
+    let accepted = calls.iter().filter(|(_, r)| r.is_some()).count();
+    println!(
+        "{accepted} of {} functions found arguments they accept",
+        calls.len()
+    );
+    assert!(
+        accepted * 100 >= calls.len() * min_percent,
+        "too few functions reach the CNC"
+    );
+
+    let port = hostile_cnc(profile, seed);
+    let connect = || {
+        (0..20)
+            .find_map(|_| lib.alloc(port, 5).ok())
+            .expect("a connection to the hostile CNC")
+    };
+    let mut h = connect();
+    let mut codes =
+        std::collections::BTreeMap::<String, std::collections::BTreeSet<c_short>>::new();
+    for round in 0..20 {
+        for (p, r) in &calls {
+            let r = r.unwrap_or(RECIPES[0]);
+            let (rc, intact, took) = lib.invoke(p, recipe_args(p, h, r));
+            let what = format!("{} {r:?} (round {round})", p.name);
+            assert_ne!(rc, EW_UNEXP, "{what} panicked inside the library");
+            assert!((-17..=18).contains(&rc), "{what}: {rc}");
+            assert!(intact, "{what} wrote past a buffer");
+            assert!(
+                took < std::time::Duration::from_secs(15),
+                "{what} took {took:?}"
+            );
+            codes.entry(p.name.clone()).or_default().insert(rc);
+            if rc == EW_SOCKET {
+                let _ = lib.free(h);
+                h = connect();
+            }
+        }
+    }
+    let _ = lib.free(h);
+    let both = codes
+        .values()
+        .filter(|c| c.contains(&EW_OK) && c.iter().any(|r| *r != EW_OK))
+        .count();
+    println!(
+        "{both} of {} functions saw both success and an error",
+        codes.len()
+    );
+    assert!(both * 2 > accepted, "mutations too mild: {codes:?}");
+}
+
+#[test]
+fn every_export_against_a_hostile_30i() {
+    sweep_against(Profile::default(), 0x5eed_0e30, 75);
+}
+
+#[test]
+fn every_export_against_a_hostile_16i() {
+    let text =
+        fwlib32::sim::profile::DEFAULT_PROFILE.replacen("class = \"30i\"", "class = \"16i\"", 1);
+    sweep_against(Profile::parse(&text).expect("16i profile"), 0x5eed_0e16, 40);
 }

@@ -24,7 +24,9 @@ impl Macros {
 
     /// Variables `s..=e` that all exist, else EW_NUMBER.
     fn check_range(&self, s: i32, e: i32) -> Reply<()> {
-        if e < s || (e - s) as usize >= MAX_RECORDS {
+        // abs_diff: the numbers come from the client, any i32 (fuzzing
+        // found `e - s` overflowing).
+        if e < s || e.abs_diff(s) as usize >= MAX_RECORDS {
             return Err(CncError::NUMBER);
         }
         if (s..=e).all(|n| self.exists(n)) {
@@ -241,6 +243,17 @@ mod tests {
         assert_eq!(parse_decimal("1e3"), None);
         assert_eq!(parse_decimal("99999999999"), None);
         assert_eq!(parse_decimal("."), None);
+    }
+
+    #[test]
+    fn ranges_from_any_numbers_are_checked_without_overflow() {
+        // Found by fuzzing (fuzz/regressions/request/macro-range-overflow).
+        let mut m = Machine::new(crate::sim::Profile::default());
+        for (s, e) in [(-1, i32::MAX), (i32::MIN, i32::MAX), (i32::MIN, -1)] {
+            assert_eq!(m.sim_read_macros(1, s, e).err(), Some(CncError::NUMBER));
+            let w = m.sim_write_macros(1, s, e, &[]).err();
+            assert_eq!(w, Some(CncError::NUMBER));
+        }
     }
 
     #[test]

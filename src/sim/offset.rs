@@ -76,7 +76,8 @@ impl Machine {
     pub fn tofs_write(&mut self, path: u16, n: i32, t: i32, payload: &[u8]) -> Reply<Ack> {
         let o = self.offsets_mut(path)?;
         let (a, _) = Self::range(n, n, 1, o.tool.len())?;
-        let kind = t - TOFS_SINGLE;
+        // Any i32 from the client (fuzzing found `t - 1000` overflowing).
+        let kind = t.checked_sub(TOFS_SINGLE).ok_or(ATTRIB)?;
         let types = o.tool.first().map_or(0, Vec::len);
         if kind < 0 || kind as usize >= types {
             return Err(ATTRIB);
@@ -215,5 +216,19 @@ impl Machine {
                 })
                 .collect(),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_write_of_any_type_word_is_checked_without_overflow() {
+        // Found by fuzzing (fuzz/regressions/request/tofs-type-overflow).
+        let mut m = Machine::new(crate::sim::Profile::default());
+        for t in [i32::MIN, i32::MIN + 999, -1, i32::MAX] {
+            assert_eq!(m.tofs_write(1, 1, t, &[0; 8]).err(), Some(ATTRIB), "{t}");
+        }
     }
 }

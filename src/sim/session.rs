@@ -3,7 +3,7 @@
 
 use super::faults::Cut;
 use super::server::Shared;
-use super::service::dispatch;
+use super::service::{CncService, dispatch};
 use super::trace::Namer;
 use crate::proto::download::Outgoing;
 use crate::proto::frame::{Frame, ftype};
@@ -96,7 +96,14 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
             }
             last = t;
             if faults.silent(t) {
-                shared.trace(id, || namer.request(&frame, &[]) + " (silent: no answer)");
+                shared.trace(id, || {
+                    // What the CNC ignored, named (a test counts the writes).
+                    let subs = match frame.ftype {
+                        ftype::DATA_REQ => decode_request(&frame.body).unwrap_or_default(),
+                        _ => Vec::new(),
+                    };
+                    namer.request(&frame, &subs) + " (silent: no answer)"
+                });
                 continue;
             }
         }
@@ -156,7 +163,7 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
             ftype::UPLOAD_START_REQ => {
                 shared.trace(id, || namer.request(&frame, &[]));
                 pause(delay).await;
-                let (out, frames) = upload(&shared, version, &frame);
+                let (out, frames) = upload(&mut **shared.cnc.lock(), version, &frame);
                 if faults.upload_drop(t) {
                     // Off the network part-way: this connection is cut
                     // mid-frame, the others are gone at their next frame.
@@ -333,9 +340,9 @@ fn receive(
 /// The answer to an upload start, then the whole upload, as one write (as
 /// the fake CNC of the recordings did; the client's 0x1702 / 0x1804 need no
 /// answer): the bytes, and the frames for the trace.
-fn upload(shared: &Shared, version: u16, req: &Frame) -> (Vec<u8>, Vec<Frame>) {
+pub fn upload(cnc: &mut dyn CncService, version: u16, req: &Frame) -> (Vec<u8>, Vec<Frame>) {
     let req = crate::proto::upload::StartReq::decode(&req.body);
-    let r = shared.cnc.lock().upload(&req);
+    let r = cnc.upload(&req);
     let mut frames = vec![Frame::new(version, ftype::UPLOAD_START_RESP, Vec::new())];
     match r {
         Ok(text) => {
