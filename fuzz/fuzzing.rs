@@ -260,6 +260,7 @@ const HAND: &[Decoder] = &[
                 table: table(a[0]),
                 number: a[1],
                 axis: a[2] as i16,
+                flag: a[3] & 0x10000,
             };
             go(c, cx, r)
         },

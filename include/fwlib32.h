@@ -1711,7 +1711,7 @@ short cnc_dncstart(unsigned short FlibHndl);
  Starts a DNC operation (FANUC's library sends no name: `fname` is not used).
 
  # Safety
- `fname` is not read.
+ `fname` must be NULL or a NUL-terminated string (it is not read).
  */
 short cnc_dncstart2(unsigned short FlibHndl, char *fname);
 

@@ -272,7 +272,7 @@ pub extern "C" fn cnc_dncend(FlibHndl: c_ushort) -> c_short {
 /// Starts a DNC operation (FANUC's library sends no name: `fname` is not used).
 ///
 /// # Safety
-/// `fname` is not read.
+/// `fname` must be NULL or a NUL-terminated string (it is not read).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_dncstart2(FlibHndl: c_ushort, fname: *mut c_char) -> c_short {
     ffi_boundary!("cnc_dncstart2", {
