@@ -21,9 +21,12 @@ use fwlib32::proto::call::{self, Call, Ctx};
 use fwlib32::proto::described::{Described, for_request};
 use fwlib32::proto::frame::{Frame, FrameHeader, HEADER_LEN, ftype};
 use fwlib32::proto::open::{CncClass, OpenBody};
+use fwlib32::proto::packet::ReqSub;
 use fwlib32::proto::packet::{RespSub, decode_request, decode_response_into, encode_response};
 use fwlib32::proto::position::{AxisData, AxisDataCall, Dynamic, Position16, Speed, SpindleData};
-use fwlib32::proto::{alarm as pa, macros as pm, offset as po, param as pp, pmc, program as pg};
+use fwlib32::proto::{
+    alarm as pa, history as ph, macros as pm, offset as po, param as pp, pmc, program as pg,
+};
 use fwlib32::proto::{position as ps, status as st, tool as pt, upload as pu};
 use fwlib32::sim::service::{CncService, dispatch};
 use fwlib32::sim::trace::Namer;
@@ -184,8 +187,73 @@ const HAND: &[Decoder] = &[
             "cnc_relative",
             "cnc_relative2",
             "cnc_distance",
+            "cnc_skip",
+            "cnc_srvdelay",
+            "cnc_accdecdly",
         ],
         run: |cx, a, r| go(ps::position(a[0], a[1] as i16), cx, r),
+    },
+    Decoder {
+        // Byte answers (src/ffi/folder.rs, src/ffi/memory.rs).
+        names: &[
+            "cnc_rdmdiprog",
+            "cnc_wrmdiprog",
+            "cnc_rdpdf_drive",
+            "cnc_rdpdf_inf",
+            "cnc_rdpdf_curdir",
+            "cnc_wrpdf_curdir",
+            "cnc_rdpdf_subdir",
+            "cnc_rdpdf_subdirn",
+            "cnc_rdpdf_alldir",
+            "cnc_pdf_add",
+            "cnc_pdf_del",
+            "cnc_pdf_delall",
+            "cnc_pdf_rename",
+            "cnc_pdf_copy",
+            "cnc_pdf_move",
+            "cnc_pdf_slctmain",
+            "cnc_pdf_rdmain",
+            "cnc_pdf_rdactpt",
+            "cnc_pdf_wractpt",
+            "cnc_rdpdf_line",
+            "cnc_wrpdf_line",
+            "cnc_pdf_delline",
+        ],
+        run: |cx, a, r| {
+            let sub = ReqSub::cnc(a[0] as u16, &[a[1], a[2], a[3]]);
+            go(call::Single::<pg::PathName>::new(sub), cx, r)
+        },
+    },
+    Decoder {
+        names: &["cnc_rdproginfo"],
+        run: |cx, a, r| {
+            let sub = ReqSub::cnc(a[0] as u16, &[a[1]]);
+            go(call::Single::<pg::ProgInfo>::padded(sub), cx, r)
+        },
+    },
+    Decoder {
+        names: &["cnc_rdophistry"],
+        run: |cx, a, r| go(ph::rdophistry(a[0] as u16, a[1] as u16), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdomhistry"],
+        run: |cx, a, r| go(ph::rdomhistry(a[0] as u16, a[1] as u16), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdomhistry2"],
+        run: |cx, a, r| go(ph::rdomhistry2(a[0] as u16, a[1] as u16), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdalmhistry5"],
+        run: |cx, a, r| go(ph::rdalmhistry5(a[0] as u16, a[1] as u16), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdpitchr"],
+        run: |cx, a, r| go(ph::rdpitchr(a[0], a[1]), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdparainfo3"],
+        run: |cx, a, r| go(pp::rdparainfo3(a[0] as i16, a[1] as i16), cx, r),
     },
     Decoder {
         names: &["cnc_getfigure"],
@@ -250,11 +318,11 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pg::rdopmode(), cx, r),
     },
     Decoder {
-        names: &["cnc_rdprogdir", "cnc_rdprogdir3"],
+        names: &["cnc_rdprogdir", "cnc_rdprogdir2", "cnc_rdprogdir3"],
         run: |cx, a, r| go(pg::progdir(a[0], a[1], a[2]), cx, r),
     },
     Decoder {
-        names: &["cnc_rdparam", "cnc_diagnoss", "cnc_rddiag"],
+        names: &["cnc_rdparam", "cnc_rdparam3", "cnc_diagnoss", "cnc_rddiag"],
         run: |cx, a, r| {
             let c = pp::ReadOne {
                 table: table(a[0]),

@@ -117,6 +117,22 @@ fn every_function_answered_with_data_has_a_decoder() {
             "cnc_upload",
             "cnc_cupload",
             "cnc_upend",
+            // Download and DNC: connection 1's frames, no data answer.
+            "cnc_dwnstart",
+            "cnc_download",
+            "cnc_dwnend",
+            "cnc_dwnstart3",
+            "cnc_download3",
+            "cnc_dwnend3",
+            "cnc_dwnstart4",
+            "cnc_download4",
+            "cnc_dwnend4",
+            "cnc_dncstart",
+            "cnc_dnc",
+            "cnc_dncend",
+            "cnc_dncstart2",
+            "cnc_dnc2",
+            "cnc_dncend2",
         ];
         if traffic && ours && !local.contains(&name.as_str()) && fuzzing::decoder(&name).is_none() {
             missing.push(name);
