@@ -3340,7 +3340,9 @@ short cnc_wrpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 
 /*
  Writes `len` bytes of lines into a program after line `line_no`.
- `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library aborts).
+ `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library
+ aborts); so is one whose request would not fit in a frame (a frame's
+ body is at most 65535 bytes, the 256-byte path included).
 
  # Safety
  `path` readable up to its NUL or 256 bytes; `data` `len` readable bytes.

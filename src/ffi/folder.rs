@@ -423,7 +423,9 @@ pub unsafe extern "C" fn cnc_rdpdf_line(
 }
 
 /// Writes `len` bytes of lines into a program after line `line_no`.
-/// `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library aborts).
+/// `len` of 2^31 or more: EW_LENGTH without traffic (FANUC's library
+/// aborts); so is one whose request would not fit in a frame (a frame's
+/// body is at most 65535 bytes, the 256-byte path included).
 ///
 /// # Safety
 /// `path` readable up to its NUL or 256 bytes; `data` `len` readable bytes.
@@ -438,7 +440,7 @@ pub unsafe extern "C" fn cnc_wrpdf_line(
     ffi_boundary!("cnc_wrpdf_line", {
         let n = usize::try_from(len as u32)
             .ok()
-            .filter(|n| *n <= i32::MAX as usize);
+            .filter(|n| *n <= u16::MAX as usize - 2 - 28 - 256);
         let n = n.ok_or(crate::error::Error::local(
             crate::ew::EW_LENGTH,
             "len too large",
