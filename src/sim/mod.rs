@@ -23,6 +23,7 @@ pub mod modal;
 pub mod offset;
 pub mod operate;
 pub mod param;
+pub mod plan;
 pub mod pmc;
 pub mod position;
 pub mod profile;

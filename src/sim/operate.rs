@@ -4,8 +4,9 @@
 //! running machine (src/sim/run.rs) then moves the axes, the spindle and
 //! the counters from the program, as for the profile's own cycle.
 
+use super::plan::Plan;
 use super::profile::cycle::Cycle;
-use super::run::{Machine, Plan, covered, event_path, occurrence};
+use super::run::{Machine, covered, event_path, occurrence};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_REJECT};
 use std::sync::Arc;
