@@ -1653,6 +1653,16 @@ short cnc_delall(unsigned short FlibHndl);
 short cnc_delete(unsigned short FlibHndl, short prog_no);
 
 /*
+ Deletes the `tuse_num`-th tool of tool life group `grpno`.
+ */
+short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
+
+/*
+ Deletes tool life group `grpno`.
+ */
+short cnc_deltlifegrp(unsigned short FlibHndl, short grpno);
+
+/*
  Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
  and bit 1, word 2, 2-word 4, real 8).
 

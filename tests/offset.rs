@@ -296,6 +296,39 @@ fn tool_life_groups() {
     sim::free(h);
 }
 
+/// cnc_deltlifedt and cnc_deltlifegrp change the tool life table the reads
+/// answer from; a refused delete (absent group or tool) changes nothing.
+#[test]
+fn tool_life_deletes_change_the_table() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let g = &p.paths[0].tool_groups[0];
+    let n = g.number as c_short;
+    let (mut groups, mut t) = (ODBTLIFE2::default(), ODBTLIFE3::default());
+    unsafe {
+        assert_eq!(
+            cnc_deltlifedt(h, n, g.tools.len() as c_short + 1),
+            EW_NUMBER
+        );
+        assert_eq!(cnc_deltlifegrp(h, 9999), EW_NUMBER);
+        assert_eq!(cnc_rdntool(h, n, &mut t), EW_OK);
+        assert_eq!(t.data, g.tools.len() as i32);
+        assert_eq!(cnc_deltlifedt(h, n, 1), EW_OK);
+        assert_eq!(cnc_rdntool(h, n, &mut t), EW_OK);
+        assert_eq!(t.data, g.tools.len() as i32 - 1);
+        // The second tool moved up to use number 1.
+        let mut one = ODBTLIFE4::default();
+        assert_eq!(cnc_toolnum(h, n, 1, &mut one), EW_OK);
+        assert_eq!(one.data, g.tools[1].number);
+        assert_eq!(cnc_deltlifegrp(h, n), EW_OK);
+        assert_eq!(cnc_rdntool(h, n, &mut t), EW_NUMBER);
+        assert_eq!(cnc_deltlifegrp(h, n), EW_NUMBER);
+        assert_eq!(cnc_rdngrp(h, &mut groups), EW_OK);
+        assert_eq!(groups.data, p.paths[0].tool_groups.len() as i32 - 1);
+    }
+    sim::free(h);
+}
+
 #[test]
 fn profile_validation() {
     let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\ntool = [[1, 2], [3]]\n";

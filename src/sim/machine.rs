@@ -534,6 +534,8 @@ impl CncService for Machine {
                 .collect()),
             "cnc_rdpitchinfo" => Ok(vec![i64::from(self.profile.pitch.size)]),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
+            "cnc_deltlifegrp" => self.tl_delete(path, args[0], None).map(|_| vec![]),
+            "cnc_deltlifedt" => self.tl_delete(path, args[0], Some(args[1])).map(|_| vec![]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
             "cnc_rdetherinfo" => {

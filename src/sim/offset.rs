@@ -166,6 +166,26 @@ impl Machine {
         groups.iter().find(|g| g.number == grp).ok_or(NUMBER)
     }
 
+    /// 0x0053 [grp] deletes tool life group `grp`; 0x0055 [grp, n] its
+    /// `n`-th tool. An absent group or tool: EW_NUMBER, nothing changed.
+    pub fn tl_delete(&mut self, path: u16, grp: i32, tool: Option<i32>) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let i = groups.iter().position(|g| g.number == grp).ok_or(NUMBER)?;
+        match tool {
+            None => {
+                groups.remove(i);
+            }
+            Some(n) if n >= 1 && n as usize <= groups[i].tools.len() => {
+                groups[i].tools.remove(n as usize - 1);
+            }
+            Some(_) => return Err(NUMBER),
+        }
+        Ok(())
+    }
+
     /// 0x004a: how many tool life groups the path has.
     pub fn tl_group_count(&self, path: u16) -> Reply<i32> {
         let p = (self.profile.paths)

@@ -549,4 +549,21 @@ pub const FUNCS: &[Func] = &[
         short: Short::Error,
         dims: &["1|0|-1|2|9999"],
     },
+    // Base cases on group 2 (cnc_rdlife and others read group 1).
+    Func {
+        name: "cnc_deltlifedt",
+        doc: "Deletes the `tuse_num`-th tool of tool life group `grpno`.",
+        params: &[Param::Short("grpno"), Param::Short("tuse_num")],
+        forms: &[every_class(0x0055, &[Word::Arg(0), Word::Arg(1)])],
+        dims: &["2|0|-1|1|9999", "1|0|-1|2|99"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_deltlifegrp",
+        doc: "Deletes tool life group `grpno`.",
+        params: &[Param::Short("grpno")],
+        forms: &[every_class(0x0053, &[Word::Arg(0)])],
+        dims: &["2|0|-1|1|9999|32767"],
+        ..COMMAND
+    },
 ];
