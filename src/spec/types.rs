@@ -130,6 +130,19 @@ pub struct Field {
     pub out: u8,
     pub to: Option<&'static str>,
     pub c: Int,
+    /// `Some(a)`: not on the wire; the value is number argument `a`, which
+    /// FANUC's library writes back into the output with the reply.
+    pub arg: Option<u8>,
+}
+
+impl Field {
+    /// The bytes of this field on the wire.
+    pub const fn wire_len(&self) -> usize {
+        match self.arg {
+            Some(_) => 0,
+            None => self.wire.size() * self.n as usize,
+        }
+    }
 }
 
 /// An array of records after the fixed fields of the reply: as many whole
@@ -152,10 +165,7 @@ pub struct Records {
 impl Records {
     /// The bytes of one record on the wire.
     pub fn wire_len(&self) -> usize {
-        self.fields
-            .iter()
-            .map(|f| f.wire.size() * f.n as usize)
-            .sum()
+        self.fields.iter().map(Field::wire_len).sum()
     }
     /// The integers of one record.
     pub fn values(&self) -> usize {
@@ -215,10 +225,7 @@ impl Func {
     }
     /// The reply payload's length in bytes.
     pub fn reply_len(&self) -> usize {
-        self.reply
-            .iter()
-            .map(|f| f.wire.size() * f.n as usize)
-            .sum()
+        self.reply.iter().map(Field::wire_len).sum()
     }
 }
 
@@ -230,6 +237,7 @@ pub const fn to(wire: Int, to: &'static str, c: Int) -> Field {
         out: 0,
         to: Some(to),
         c,
+        arg: None,
     }
 }
 
@@ -241,6 +249,7 @@ pub const fn to_out(out: u8, wire: Int, to: &'static str, c: Int) -> Field {
         out,
         to: Some(to),
         c,
+        arg: None,
     }
 }
 
@@ -252,6 +261,20 @@ pub const fn skip(wire: Int) -> Field {
         out: 0,
         to: None,
         c: wire,
+        arg: None,
+    }
+}
+
+/// Number argument `arg` written back to output 0's member `to` (not on
+/// the wire).
+pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
+    Field {
+        wire: c,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c,
+        arg: Some(arg),
     }
 }
 
