@@ -594,6 +594,15 @@ typedef struct PRGPNT {
 } PRGPNT;
 
 /*
+ cnc_rdgrpid2: the tool life group of a tool number.
+ */
+typedef struct ODBTLIFE5 {
+    LONG dummy;
+    LONG type;
+    LONG data;
+} ODBTLIFE5;
+
+/*
  cnc_rdmacro: one custom macro variable. The value is
  `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
  */
@@ -2246,6 +2255,15 @@ short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blk
  Nothing is written through the pointers.
  */
 short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
+
+/*
+ Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
+ untouched).
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE5.
+ */
+short cnc_rdgrpid2(unsigned short FlibHndl, long tno, struct ODBTLIFE5 *tlife);
 
 /*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;

@@ -329,6 +329,35 @@ fn tool_life_deletes_change_the_table() {
     sim::free(h);
 }
 
+/// cnc_rdgrpid2 finds each profile tool's group, writes the tool number
+/// back into `type`, leaves `dummy`; a deleted tool is no longer found.
+#[test]
+fn group_of_a_tool() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    for g in &p.paths[0].tool_groups {
+        for t in &g.tools {
+            let mut l = ODBTLIFE5 {
+                dummy: 77,
+                ..ODBTLIFE5::default()
+            };
+            assert_eq!(unsafe { cnc_rdgrpid2(h, t.number.into(), &mut l) }, EW_OK);
+            assert_eq!((l.dummy, l.r#type, l.data), (77, t.number, g.number));
+        }
+    }
+    let g = &p.paths[0].tool_groups[1];
+    let mut l = ODBTLIFE5::default();
+    unsafe {
+        assert_eq!(
+            cnc_rdgrpid2(h, g.tools[0].number.into(), std::ptr::null_mut()),
+            EW_DATA
+        );
+        assert_eq!(cnc_deltlifedt(h, g.number as c_short, 1), EW_OK);
+        assert_eq!(cnc_rdgrpid2(h, g.tools[0].number.into(), &mut l), EW_NUMBER);
+    }
+    sim::free(h);
+}
+
 #[test]
 fn profile_validation() {
     let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\ntool = [[1, 2], [3]]\n";

@@ -534,6 +534,9 @@ impl CncService for Machine {
                 .collect()),
             "cnc_rdpitchinfo" => Ok(vec![i64::from(self.profile.pitch.size)]),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
+            "cnc_rdgrpid2" => self
+                .tl_group_of_tool(path, args[0])
+                .map(|g| vec![v(args[0]), v(g)]),
             "cnc_deltlifegrp" => self.tl_delete(path, args[0], None).map(|_| vec![]),
             "cnc_deltlifedt" => self.tl_delete(path, args[0], Some(args[1])).map(|_| vec![]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),

@@ -186,6 +186,18 @@ impl Machine {
         Ok(())
     }
 
+    /// 0x0047 [tno]: the first group holding tool number `tno` (none:
+    /// EW_NUMBER).
+    pub fn tl_group_of_tool(&self, path: u16, tno: i32) -> Reply<i32> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        (p.tool_groups.iter())
+            .find(|g| g.tools.iter().any(|t| t.number == tno))
+            .map(|g| g.number)
+            .ok_or(NUMBER)
+    }
+
     /// 0x004a: how many tool life groups the path has.
     pub fn tl_group_count(&self, path: u16) -> Reply<i32> {
         let p = (self.profile.paths)

@@ -549,6 +549,17 @@ pub const FUNCS: &[Func] = &[
         short: Short::Error,
         dims: &["1|0|-1|2|9999"],
     },
+    Func {
+        name: "cnc_rdgrpid2",
+        doc: "Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy` untouched).",
+        params: &[Param::Long("tno"), Param::Out("tlife", "ODBTLIFE5")],
+        checks: &[],
+        forms: &[every_class(0x0047, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I32), to(I32, "data", I32)],
+        records: None,
+        short: Short::Zeros,
+        dims: &["11|0|-1|1|5|9999|99999999"],
+    },
     // Base cases on group 2 (cnc_rdlife and others read group 1).
     Func {
         name: "cnc_deltlifedt",

@@ -59,3 +59,12 @@ pub struct ODBTLIFE2 {
     pub dummy: [c_short; 2],
     pub data: LONG,
 }
+
+/// cnc_rdgrpid2: the tool life group of a tool number.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLIFE5 {
+    pub dummy: LONG,
+    pub r#type: LONG,
+    pub data: LONG,
+}
