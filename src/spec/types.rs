@@ -160,6 +160,10 @@ pub struct Records {
     /// The `short` member of output `out` the number of records written
     /// goes to, if any.
     pub count: Option<&'static str>,
+    /// Number parameter `room` is the caller's size of output `out` in
+    /// bytes (read as an unsigned short): records ending past it are
+    /// EW_LENGTH with nothing written, checked after the reply.
+    pub room: Option<u8>,
 }
 
 impl Records {
