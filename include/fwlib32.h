@@ -1318,6 +1318,16 @@ typedef struct ODBTG {
 } ODBTG;
 
 /*
+ cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
+ all axes.
+ */
+typedef struct IODBWCSF {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBWCSF;
+
+/*
  cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
  */
 typedef struct IODBZOFS {
@@ -1506,6 +1516,27 @@ typedef struct IODBPMC {
     short datano_e;
     union IODBPMC_u u;
 } IODBPMC;
+
+/*
+ One tool life group of IODBTGI.
+ */
+typedef struct IODBTGI_DATA {
+    LONG n_tool;
+    LONG count_value;
+    LONG counter;
+    LONG count_type;
+} IODBTGI_DATA;
+
+/*
+ cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp..=e_grp` (5 as
+ declared; the caller's `length` says how many fit).
+ */
+typedef struct IODBTGI {
+    short s_grp;
+    short dummy;
+    short e_grp;
+    struct IODBTGI_DATA data[5];
+} IODBTGI;
 
 #ifdef __cplusplus
 extern "C" {
@@ -2967,6 +2998,16 @@ short cnc_rdtofsr(unsigned short FlibHndl,
 short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct ODBTG *toolgrp);
 
 /*
+ Reads the work coordinate shift of axis `axis` (-1: all axes) into
+ `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else
+ EW_LENGTH after the reply).
+
+ # Safety
+ `shift` must be NULL or point to a writable IODBWCSF.
+ */
+short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct IODBWCSF *shift);
+
+/*
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
  P1..) for one axis or all axes (-1). An all-axes answer must carry a
  value per axis (FANUC's library writes uninitialised memory otherwise;
@@ -3387,6 +3428,15 @@ short cnc_wrpdf_line(unsigned short FlibHndl,
  No pointer arguments.
  */
 short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length, long data);
+
+/*
+ Writes the work coordinate shift of one axis (`type`) or of all axes
+ (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
+
+ # Safety
+ `shift` must point to `length` readable bytes (an IODBWCSF).
+ */
+short cnc_wrwkcdshft(unsigned short FlibHndl, short length, struct IODBWCSF *shift);
 
 /*
  Writes a work zero offset for one axis (`type` = axis) or all axes

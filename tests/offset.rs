@@ -358,6 +358,49 @@ fn group_of_a_tool() {
     sim::free(h);
 }
 
+/// cnc_rdwkcdshft reads the profile's shift; cnc_wrwkcdshft changes it (one
+/// axis, all axes); a refused write (short length, bad axis) changes nothing.
+#[test]
+fn work_coordinate_shift_write_then_read() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let shift = &p.paths[0].offset.shift;
+    let read = |axis: c_short| {
+        let mut w = IODBWCSF::default();
+        let len = std::mem::size_of::<IODBWCSF>() as c_short;
+        let r = unsafe { cnc_rdwkcdshft(h, axis, len, &mut w) };
+        (r, w)
+    };
+    let (r, w) = read(2);
+    assert_eq!((r, w.r#type, w.data[0]), (EW_OK, 2, shift[1]));
+    let (r, w) = read(-1);
+    assert_eq!((r, w.r#type, &w.data[..3]), (EW_OK, -1, &shift[..3]));
+    let mut w = IODBWCSF {
+        datano: 0,
+        r#type: 2,
+        ..IODBWCSF::default()
+    };
+    w.data[0] = 4321;
+    unsafe {
+        assert_eq!(cnc_wrwkcdshft(h, 4, &mut w), EW_LENGTH);
+        assert_eq!(read(2).1.data[0], shift[1]);
+        assert_eq!(cnc_wrwkcdshft(h, 8, &mut w), EW_OK);
+        assert_eq!(read(2).1.data[0], 4321);
+        w.r#type = 33;
+        assert_eq!(cnc_wrwkcdshft(h, 8, &mut w), EW_ATTRIB);
+        w.r#type = -1;
+        w.data[..3].copy_from_slice(&[7, 8, 9]);
+        assert_eq!(cnc_wrwkcdshft(h, 132, &mut w), EW_OK);
+        assert_eq!(&read(-1).1.data[..3], &[7, 8, 9]);
+        let mut one = IODBWCSF::default();
+        assert_eq!(cnc_rdwkcdshft(h, 1, 7, &mut one), EW_LENGTH);
+        assert_eq!(one, IODBWCSF::default());
+        assert_eq!(cnc_rdwkcdshft(h, 33, 8, &mut one), EW_ATTRIB);
+        assert_eq!(cnc_rdwkcdshft(h, 1, 8, std::ptr::null_mut()), EW_DATA);
+    }
+    sim::free(h);
+}
+
 #[test]
 fn profile_validation() {
     let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\ntool = [[1, 2], [3]]\n";

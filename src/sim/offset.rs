@@ -5,7 +5,8 @@ use super::Machine;
 pub use super::profile::offset::{Offsets, ToolGroupProfile, ToolProfile};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo};
+use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo, WRWKCDSHFT};
+use crate::proto::packet::{CLASS_CNC, ReqSub};
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
@@ -138,6 +139,38 @@ impl Machine {
             }
         }
         Ok(Ack)
+    }
+
+    /// 0x0063 [axis]: the work coordinate shift of one axis (1..=n) or all
+    /// (-1: max_axes records).
+    pub fn shift_read(&self, path: u16, axis: i32) -> Reply<Vec<i64>> {
+        let cols = self.zofs_axes(path, axis)?;
+        let o = self.offsets(path)?;
+        Ok(cols
+            .flat_map(|c| {
+                let v = o.shift.get(c).copied().unwrap_or(0);
+                [i64::from(v), i64::from(o.decimals)]
+            })
+            .collect())
+    }
+
+    /// 0x0064 [axis] + one record per selected axis: the shift written.
+    pub(crate) fn shift_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        if sub.class != CLASS_CNC || sub.cmd != WRWKCDSHFT {
+            return None;
+        }
+        Some(self.zofs_axes(sub.path, sub.args[0]).and_then(|cols| {
+            let axes = self.axes_of(sub.path);
+            let v = records(&sub.payload, cols.len())?;
+            let shift = &mut self.offsets_mut(sub.path)?.shift;
+            for (c, x) in cols.zip(v).filter(|(c, _)| *c < axes) {
+                if shift.len() <= c {
+                    shift.resize(c + 1, 0);
+                }
+                shift[c] = x;
+            }
+            Ok(Vec::new())
+        }))
     }
 
     /// 0x000d: the workpiece coordinate systems (G54.. and G54.1 P..), not

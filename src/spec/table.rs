@@ -564,6 +564,34 @@ pub const FUNCS: &[Func] = &[
         short: Short::Zeros,
         dims: &["11|0|-1|1|5|9999|99999999"],
     },
+    Func {
+        name: "cnc_rdwkcdshft",
+        doc: "Reads the work coordinate shift of axis `axis` (-1: all axes) into `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else EW_LENGTH after the reply).",
+        params: &[
+            Param::Short("axis"),
+            Param::Short("length"),
+            Param::Out("shift", "IODBWCSF"),
+        ],
+        checks: &[Check {
+            arg: 0,
+            lo: -32768,
+            hi: 32,
+            code: 4,
+        }],
+        forms: &[every_class(0x0063, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16)],
+        records: Some(Records {
+            fields: &[to(I32, "", I32), skip(I32)],
+            out: 0,
+            to: "data",
+            elem: "long",
+            max: 32,
+            count: None,
+            room: Some(1),
+        }),
+        short: Short::Zeros,
+        dims: &["1|-1|0|2|3|4|32|33|-2", "8|4|7|12|0|-1|132|136"],
+    },
     // Base cases on group 2 (cnc_rdlife and others read group 1).
     Func {
         name: "cnc_deltlifedt",
