@@ -238,6 +238,15 @@ typedef struct IODBTIMER {
 } IODBTIMER;
 
 /*
+ cnc_instlifedt: the tool to insert.
+ */
+typedef struct IDBITD {
+    short datano;
+    short type;
+    LONG data;
+} IDBITD;
+
+/*
  One modal code other than a G code (cnc_modal aux / raux1 / raux2).
  */
 typedef struct MODAL_AUX {
@@ -1892,6 +1901,15 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
  `time` must point to a readable and writable IODBTIMER.
  */
 short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
+ Inserts tool number `data` into tool life group `datano` as its
+ `type`-th tool (the later tools move down).
+
+ # Safety
+ `tool` must point to a readable IDBITD.
+ */
+short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
 
 /*
  Reads the machine position.

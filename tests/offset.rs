@@ -329,6 +329,49 @@ fn tool_life_deletes_change_the_table() {
     sim::free(h);
 }
 
+/// cnc_instlifedt inserts a tool the reads then see; a refused insert
+/// (absent group, use number past the end, tool number 0) changes nothing.
+#[test]
+fn tool_life_insert_changes_the_table() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let g = &p.paths[0].tool_groups[1];
+    let n = g.number as c_short;
+    let ntool = |h| {
+        let mut t = ODBTLIFE3::default();
+        assert_eq!(unsafe { cnc_rdntool(h, n, &mut t) }, EW_OK);
+        t.data
+    };
+    let mut t = IDBITD {
+        datano: n,
+        r#type: g.tools.len() as c_short + 2,
+        data: 77,
+    };
+    unsafe {
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_NUMBER);
+        t.r#type = 1;
+        t.data = 0;
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_DATA);
+        t.datano = 9999;
+        t.data = 77;
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_NUMBER);
+        assert_eq!(ntool(h), g.tools.len() as i32);
+        t.datano = n;
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_OK);
+        assert_eq!(cnc_instlifedt(h, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(ntool(h), g.tools.len() as i32 + 1);
+        let mut one = ODBTLIFE4::default();
+        assert_eq!(cnc_toolnum(h, n, 1, &mut one), EW_OK);
+        assert_eq!(one.data, 77);
+        assert_eq!(cnc_toolnum(h, n, 2, &mut one), EW_OK);
+        assert_eq!(one.data, g.tools[0].number);
+        let mut l = ODBTLIFE5::default();
+        assert_eq!(cnc_rdgrpid2(h, 77, &mut l), EW_OK);
+        assert_eq!(l.data, g.number);
+    }
+    sim::free(h);
+}
+
 /// cnc_rdgrpid2 finds each profile tool's group, writes the tool number
 /// back into `type`, leaves `dummy`; a deleted tool is no longer found.
 #[test]

@@ -572,7 +572,7 @@ impl CncService for Machine {
     fn raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
         self.memory_raw(sub)
             .or_else(|| self.folder_raw(sub))
-            .or_else(|| self.shift_raw(sub))
+            .or_else(|| self.offset_raw(sub))
     }
 
     // --- upload ---

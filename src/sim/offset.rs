@@ -7,6 +7,7 @@ use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo, WRWKCDSHFT};
 use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::tool::TLINSERT;
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
@@ -154,12 +155,19 @@ impl Machine {
             .collect())
     }
 
-    /// 0x0064 [axis] + one record per selected axis: the shift written.
-    pub(crate) fn shift_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
-        if sub.class != CLASS_CNC || sub.cmd != WRWKCDSHFT {
-            return None;
+    /// The writes without a table entry: 0x0064 (work coordinate shift),
+    /// 0x0054 (tool insert).
+    pub(crate) fn offset_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        match (sub.class, sub.cmd) {
+            (CLASS_CNC, WRWKCDSHFT) => Some(self.shift_write(sub)),
+            (CLASS_CNC, TLINSERT) => Some(self.tl_insert(sub.path, sub.args).map(|_| Vec::new())),
+            _ => None,
         }
-        Some(self.zofs_axes(sub.path, sub.args[0]).and_then(|cols| {
+    }
+
+    /// 0x0064 [axis] + one record per selected axis: the shift written.
+    fn shift_write(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        self.zofs_axes(sub.path, sub.args[0]).and_then(|cols| {
             let axes = self.axes_of(sub.path);
             let v = records(&sub.payload, cols.len())?;
             let shift = &mut self.offsets_mut(sub.path)?.shift;
@@ -170,7 +178,7 @@ impl Machine {
                 shift[c] = x;
             }
             Ok(Vec::new())
-        }))
+        })
     }
 
     /// 0x000d: the workpiece coordinate systems (G54.. and G54.1 P..), not
@@ -216,6 +224,31 @@ impl Machine {
             }
             Some(_) => return Err(NUMBER),
         }
+        Ok(())
+    }
+
+    /// 0x0054 [grp, n, tno]: tool number `tno` inserted into group `grp` as
+    /// its `n`-th tool (1..=tools + 1), no offsets; else EW_NUMBER (a tool
+    /// number below 1: EW_DATA), nothing changed.
+    pub fn tl_insert(&mut self, path: u16, a: [i32; 5]) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let g = groups.iter_mut().find(|g| g.number == a[0]).ok_or(NUMBER)?;
+        if a[1] < 1 || a[1] as usize > g.tools.len() + 1 {
+            return Err(NUMBER);
+        }
+        if a[2] < 1 {
+            return Err(CncError::new(ew::EW_DATA));
+        }
+        let t = ToolProfile {
+            number: a[2],
+            length: 0,
+            radius: 0,
+            info: 0,
+        };
+        g.tools.insert(a[1] as usize - 1, t);
         Ok(())
     }
 

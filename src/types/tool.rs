@@ -89,3 +89,12 @@ pub struct IODBTGI {
     pub e_grp: c_short,
     pub data: [IODBTGI_DATA; 5],
 }
+
+/// cnc_instlifedt: the tool to insert.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IDBITD {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: LONG,
+}

@@ -722,6 +722,23 @@ const WORDS: &[Word] = &[
         )
     },
     Word {
+        after: &["rdntool 2", "toolnum 2 1", "toolnum 2 2"],
+        ..wc(
+            "instlifedt",
+            &[],
+            &[
+                "hex:0200010063000000",
+                "hex:0200020063000000",
+                "hex:0200030063000000",
+                "hex:0200000063000000",
+                "hex:0200ffff63000000",
+                "hex:0100010005000000",
+                "hex:0900010063000000",
+                "hex:00000100ffffffff",
+            ],
+        )
+    },
+    Word {
         after: &["rdwkcdshft 1 8", "rdwkcdshft -1 132"],
         ..wc(
             "wrwkcdshft",
