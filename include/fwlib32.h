@@ -1526,27 +1526,6 @@ typedef struct IODBPMC {
     union IODBPMC_u u;
 } IODBPMC;
 
-/*
- One tool life group of IODBTGI.
- */
-typedef struct IODBTGI_DATA {
-    LONG n_tool;
-    LONG count_value;
-    LONG counter;
-    LONG count_type;
-} IODBTGI_DATA;
-
-/*
- cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp..=e_grp` (5 as
- declared; the caller's `length` says how many fit).
- */
-typedef struct IODBTGI {
-    short s_grp;
-    short dummy;
-    short e_grp;
-    struct IODBTGI_DATA data[5];
-} IODBTGI;
-
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus

@@ -69,27 +69,6 @@ pub struct ODBTLIFE5 {
     pub data: LONG,
 }
 
-/// One tool life group of IODBTGI.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct IODBTGI_DATA {
-    pub n_tool: LONG,
-    pub count_value: LONG,
-    pub counter: LONG,
-    pub count_type: LONG,
-}
-
-/// cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp..=e_grp` (5 as
-/// declared; the caller's `length` says how many fit).
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct IODBTGI {
-    pub s_grp: c_short,
-    pub dummy: c_short,
-    pub e_grp: c_short,
-    pub data: [IODBTGI_DATA; 5],
-}
-
 /// cnc_instlifedt: the tool to insert.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
