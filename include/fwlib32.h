@@ -238,6 +238,15 @@ typedef struct IODBTIMER {
 } IODBTIMER;
 
 /*
+ cnc_instlifedt: the tool to insert.
+ */
+typedef struct IDBITD {
+    short datano;
+    short type;
+    LONG data;
+} IDBITD;
+
+/*
  One modal code other than a G code (cnc_modal aux / raux1 / raux2).
  */
 typedef struct MODAL_AUX {
@@ -592,6 +601,15 @@ typedef struct PRGPNT {
     LONG prog_no;
     LONG blk_no;
 } PRGPNT;
+
+/*
+ cnc_rdgrpid2: the tool life group of a tool number.
+ */
+typedef struct ODBTLIFE5 {
+    LONG dummy;
+    LONG type;
+    LONG data;
+} ODBTLIFE5;
 
 /*
  cnc_rdmacro: one custom macro variable. The value is
@@ -1309,6 +1327,16 @@ typedef struct ODBTG {
 } ODBTG;
 
 /*
+ cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
+ all axes.
+ */
+typedef struct IODBWCSF {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBWCSF;
+
+/*
  cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
  */
 typedef struct IODBZOFS {
@@ -1653,6 +1681,16 @@ short cnc_delall(unsigned short FlibHndl);
 short cnc_delete(unsigned short FlibHndl, short prog_no);
 
 /*
+ Deletes the `tuse_num`-th tool of tool life group `grpno`.
+ */
+short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
+
+/*
+ Deletes tool life group `grpno`.
+ */
+short cnc_deltlifegrp(unsigned short FlibHndl, short grpno);
+
+/*
  Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
  and bit 1, word 2, 2-word 4, real 8).
 
@@ -1842,6 +1880,15 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
  `time` must point to a readable and writable IODBTIMER.
  */
 short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
+
+/*
+ Inserts tool number `data` into tool life group `datano` as its
+ `type`-th tool (the later tools move down).
+
+ # Safety
+ `tool` must point to a readable IDBITD.
+ */
+short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
 
 /*
  Reads the machine position.
@@ -2236,6 +2283,15 @@ short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blk
  Nothing is written through the pointers.
  */
 short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
+
+/*
+ Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
+ untouched).
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE5.
+ */
+short cnc_rdgrpid2(unsigned short FlibHndl, long tno, struct ODBTLIFE5 *tlife);
 
 /*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;
@@ -2939,6 +2995,16 @@ short cnc_rdtofsr(unsigned short FlibHndl,
 short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct ODBTG *toolgrp);
 
 /*
+ Reads the work coordinate shift of axis `axis` (-1: all axes) into
+ `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else
+ EW_LENGTH after the reply).
+
+ # Safety
+ `shift` must be NULL or point to a writable IODBWCSF.
+ */
+short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct IODBWCSF *shift);
+
+/*
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
  P1..) for one axis or all axes (-1). An all-axes answer must carry a
  value per axis (FANUC's library writes uninitialised memory otherwise;
@@ -3361,6 +3427,15 @@ short cnc_wrpdf_line(unsigned short FlibHndl,
  No pointer arguments.
  */
 short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length, long data);
+
+/*
+ Writes the work coordinate shift of one axis (`type`) or of all axes
+ (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
+
+ # Safety
+ `shift` must point to `length` readable bytes (an IODBWCSF).
+ */
+short cnc_wrwkcdshft(unsigned short FlibHndl, short length, struct IODBWCSF *shift);
 
 /*
  Writes a work zero offset for one axis (`type` = axis) or all axes

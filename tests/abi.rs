@@ -373,6 +373,9 @@ rust_layouts! {
     IODBTO { datano_s, r#type, datano_e, u }
     ODBTLINF { ofs_type, use_no }
     IODBZOFS { datano, r#type, data }
+    IODBWCSF { datano, r#type, data }
+    ODBTLIFE5 { dummy, r#type, data }
+    IDBITD { datano, r#type, data }
     IODBZOR { datano_s, r#type, datano_e, data }
     // alarm history (offset helper)
     ODBAHIS { s_no, r#type, e_no, alm_his }

@@ -296,6 +296,154 @@ fn tool_life_groups() {
     sim::free(h);
 }
 
+/// cnc_deltlifedt and cnc_deltlifegrp change the tool life table the reads
+/// answer from; a refused delete (absent group or tool) changes nothing.
+#[test]
+fn tool_life_deletes_change_the_table() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let g = &p.paths[0].tool_groups[0];
+    let n = g.number as c_short;
+    let (mut groups, mut t) = (ODBTLIFE2::default(), ODBTLIFE3::default());
+    unsafe {
+        assert_eq!(
+            cnc_deltlifedt(h, n, g.tools.len() as c_short + 1),
+            EW_NUMBER
+        );
+        assert_eq!(cnc_deltlifegrp(h, 9999), EW_NUMBER);
+        assert_eq!(cnc_rdntool(h, n, &mut t), EW_OK);
+        assert_eq!(t.data, g.tools.len() as i32);
+        assert_eq!(cnc_deltlifedt(h, n, 1), EW_OK);
+        assert_eq!(cnc_rdntool(h, n, &mut t), EW_OK);
+        assert_eq!(t.data, g.tools.len() as i32 - 1);
+        // The second tool moved up to use number 1.
+        let mut one = ODBTLIFE4::default();
+        assert_eq!(cnc_toolnum(h, n, 1, &mut one), EW_OK);
+        assert_eq!(one.data, g.tools[1].number);
+        assert_eq!(cnc_deltlifegrp(h, n), EW_OK);
+        assert_eq!(cnc_rdntool(h, n, &mut t), EW_NUMBER);
+        assert_eq!(cnc_deltlifegrp(h, n), EW_NUMBER);
+        assert_eq!(cnc_rdngrp(h, &mut groups), EW_OK);
+        assert_eq!(groups.data, p.paths[0].tool_groups.len() as i32 - 1);
+    }
+    sim::free(h);
+}
+
+/// cnc_instlifedt inserts a tool the reads then see; a refused insert
+/// (absent group, use number past the end, tool number 0) changes nothing.
+#[test]
+fn tool_life_insert_changes_the_table() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let g = &p.paths[0].tool_groups[1];
+    let n = g.number as c_short;
+    let ntool = |h| {
+        let mut t = ODBTLIFE3::default();
+        assert_eq!(unsafe { cnc_rdntool(h, n, &mut t) }, EW_OK);
+        t.data
+    };
+    let mut t = IDBITD {
+        datano: n,
+        r#type: g.tools.len() as c_short + 2,
+        data: 77,
+    };
+    unsafe {
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_NUMBER);
+        t.r#type = 1;
+        t.data = 0;
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_DATA);
+        t.datano = 9999;
+        t.data = 77;
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_NUMBER);
+        assert_eq!(ntool(h), g.tools.len() as i32);
+        t.datano = n;
+        assert_eq!(cnc_instlifedt(h, &mut t), EW_OK);
+        assert_eq!(cnc_instlifedt(h, std::ptr::null_mut()), EW_DATA);
+        assert_eq!(ntool(h), g.tools.len() as i32 + 1);
+        let mut one = ODBTLIFE4::default();
+        assert_eq!(cnc_toolnum(h, n, 1, &mut one), EW_OK);
+        assert_eq!(one.data, 77);
+        assert_eq!(cnc_toolnum(h, n, 2, &mut one), EW_OK);
+        assert_eq!(one.data, g.tools[0].number);
+        let mut l = ODBTLIFE5::default();
+        assert_eq!(cnc_rdgrpid2(h, 77, &mut l), EW_OK);
+        assert_eq!(l.data, g.number);
+    }
+    sim::free(h);
+}
+
+/// cnc_rdgrpid2 finds each profile tool's group, writes the tool number
+/// back into `type`, leaves `dummy`; a deleted tool is no longer found.
+#[test]
+fn group_of_a_tool() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    for g in &p.paths[0].tool_groups {
+        for t in &g.tools {
+            let mut l = ODBTLIFE5 {
+                dummy: 77,
+                ..ODBTLIFE5::default()
+            };
+            assert_eq!(unsafe { cnc_rdgrpid2(h, t.number.into(), &mut l) }, EW_OK);
+            assert_eq!((l.dummy, l.r#type, l.data), (77, t.number, g.number));
+        }
+    }
+    let g = &p.paths[0].tool_groups[1];
+    let mut l = ODBTLIFE5::default();
+    unsafe {
+        assert_eq!(
+            cnc_rdgrpid2(h, g.tools[0].number.into(), std::ptr::null_mut()),
+            EW_DATA
+        );
+        assert_eq!(cnc_deltlifedt(h, g.number as c_short, 1), EW_OK);
+        assert_eq!(cnc_rdgrpid2(h, g.tools[0].number.into(), &mut l), EW_NUMBER);
+    }
+    sim::free(h);
+}
+
+/// cnc_rdwkcdshft reads the profile's shift; cnc_wrwkcdshft changes it (one
+/// axis, all axes); a refused write (short length, bad axis) changes nothing.
+#[test]
+fn work_coordinate_shift_write_then_read() {
+    let (_s, h) = default();
+    let p = Profile::default();
+    let shift = &p.paths[0].offset.shift;
+    let read = |axis: c_short| {
+        let mut w = IODBWCSF::default();
+        let len = std::mem::size_of::<IODBWCSF>() as c_short;
+        let r = unsafe { cnc_rdwkcdshft(h, axis, len, &mut w) };
+        (r, w)
+    };
+    let (r, w) = read(2);
+    assert_eq!((r, w.r#type, w.data[0]), (EW_OK, 2, shift[1]));
+    let (r, w) = read(-1);
+    assert_eq!((r, w.r#type, &w.data[..3]), (EW_OK, -1, &shift[..3]));
+    let mut w = IODBWCSF {
+        datano: 0,
+        r#type: 2,
+        ..IODBWCSF::default()
+    };
+    w.data[0] = 4321;
+    unsafe {
+        assert_eq!(cnc_wrwkcdshft(h, 4, &mut w), EW_LENGTH);
+        assert_eq!(read(2).1.data[0], shift[1]);
+        assert_eq!(cnc_wrwkcdshft(h, 8, &mut w), EW_OK);
+        assert_eq!(read(2).1.data[0], 4321);
+        w.r#type = 33;
+        assert_eq!(cnc_wrwkcdshft(h, 8, &mut w), EW_ATTRIB);
+        w.r#type = -1;
+        w.data[..3].copy_from_slice(&[7, 8, 9]);
+        assert_eq!(cnc_wrwkcdshft(h, 132, &mut w), EW_OK);
+        assert_eq!(&read(-1).1.data[..3], &[7, 8, 9]);
+        let mut one = IODBWCSF::default();
+        assert_eq!(cnc_rdwkcdshft(h, 1, 7, &mut one), EW_LENGTH);
+        assert_eq!(one, IODBWCSF::default());
+        assert_eq!(cnc_rdwkcdshft(h, 33, 8, &mut one), EW_ATTRIB);
+        assert_eq!(cnc_rdwkcdshft(h, 1, 8, std::ptr::null_mut()), EW_DATA);
+    }
+    sim::free(h);
+}
+
 #[test]
 fn profile_validation() {
     let bad = "[[path]]\n[[path.axis]]\nname = \"X\"\n[path.offset]\ntool = [[1, 2], [3]]\n";

@@ -69,6 +69,16 @@ pub(crate) unsafe fn exec(
     } else {
         h.call(&call)?
     };
+    if let Some(r) = f.records.as_ref().filter(|r| r.room.is_some()) {
+        let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
+        let n = values.len().saturating_sub(fixed) / r.values().max(1);
+        let room = r
+            .room
+            .map_or(0, |a| usize::from(args[usize::from(a)] as u16));
+        if rec.base + n * rec.stride > room {
+            return Err(Error::length());
+        }
+    }
     let mut v = values.into_iter();
     // SAFETY: the caller's contract (offsets and elements in the outputs).
     unsafe { write_fields(f.reply, &outs, |k| offsets[k], &mut v) };

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
 use crate::proto::offset as p;
 use crate::proto::value::Value;
-use crate::types::{IODBTO, IODBZOFS, IODBZOR, ODBTOFS};
+use crate::types::{IODBTO, IODBWCSF, IODBZOFS, IODBZOR, ODBTOFS};
 use std::os::raw::{c_long, c_short, c_ushort};
 
 /// Bytes IODBZOFS needs for `axis`, FANUC's local check: every negative
@@ -223,6 +223,32 @@ pub unsafe extern "C" fn cnc_wrzofs(
         let n = if axis < 0 { h.ctx().axes() } else { 1 };
         let values: Vec<i32> = (0..n).map(|i| rd(4 + 4 * i)).collect();
         h.call(&p::wrzofs(number, axis, &values))?;
+        Ok(())
+    })
+}
+
+/// Writes the work coordinate shift of one axis (`type`) or of all axes
+/// (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
+///
+/// # Safety
+/// `shift` must point to `length` readable bytes (an IODBWCSF).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrwkcdshft(
+    FlibHndl: c_ushort,
+    length: c_short,
+    shift: *mut IODBWCSF,
+) -> c_short {
+    ffi_boundary!("cnc_wrwkcdshft", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(shift)?.cast::<u8>().cast_const();
+        let axis = unsafe { inp.add(2).cast::<i16>().read_unaligned() };
+        if len_of(length) < zofs_needed(&h, axis)? {
+            return Err(Error::length());
+        }
+        let n = if axis < 0 { h.ctx().axes() } else { 1 };
+        let rd = |i: usize| unsafe { inp.add(4 + 4 * i).cast::<i32>().read_unaligned() };
+        let values: Vec<i32> = (0..n).map(rd).collect();
+        h.call(&p::wrwkcdshft(axis, &values))?;
         Ok(())
     })
 }

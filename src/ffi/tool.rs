@@ -7,8 +7,8 @@ use super::{ffi_boundary, len_of, nonnull, put_at};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::EW_FUNC;
-use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tltools};
-use crate::types::{IODBTLCTL, ODBTG};
+use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
+use crate::types::{IDBITD, IODBTLCTL, ODBTG};
 use std::os::raw::{c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
@@ -81,6 +81,21 @@ pub unsafe extern "C" fn cnc_rdtlctldata(FlibHndl: c_ushort, tlctl: *mut IODBTLC
             put_at(out, 20, c.total_punch1);
             put_at(out, 24, c.t_axis_dec as u8);
         }
+        Ok(())
+    })
+}
+
+/// Inserts tool number `data` into tool life group `datano` as its
+/// `type`-th tool (the later tools move down).
+///
+/// # Safety
+/// `tool` must point to a readable IDBITD.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_instlifedt(FlibHndl: c_ushort, tool: *mut IDBITD) -> c_short {
+    ffi_boundary!("cnc_instlifedt", {
+        let h = handles::get(FlibHndl)?;
+        let t = unsafe { nonnull(tool)?.read_unaligned() };
+        h.call(&tlinsert(t.datano, t.r#type, t.data))?;
         Ok(())
     })
 }

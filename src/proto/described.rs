@@ -47,12 +47,13 @@ impl Call for Described<'_> {
         }
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
-        decode(self.f, &sub(resp, 0)?.payload)
+        decode(self.f, self.args, &sub(resp, 0)?.payload)
     }
 }
 
-/// The reply payload's integers (client side).
-pub fn decode(f: &Func, payload: &[u8]) -> Result<Vec<i64>> {
+/// The reply payload's integers (client side); echo fields give the
+/// call's `args` back.
+pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     let need = f.reply_len();
     let mut padded;
     let mut p = payload;
@@ -74,19 +75,28 @@ pub fn decode(f: &Func, payload: &[u8]) -> Result<Vec<i64>> {
     }
     let mut r = Reader::new(p);
     let mut out = Vec::new();
-    read_fields(&mut r, f.reply, &mut out)?;
+    read_fields(&mut r, f.reply, args, &mut out)?;
     if let Some(rec) = &f.records {
         let size = rec.wire_len().max(1);
         for _ in 0..(r.remaining() / size).min(rec.max as usize) {
-            read_fields(&mut r, rec.fields, &mut out)?;
+            read_fields(&mut r, rec.fields, args, &mut out)?;
         }
     }
     Ok(out)
 }
 
-fn read_fields(r: &mut Reader<'_>, fields: &[Field], out: &mut Vec<i64>) -> Result<()> {
+fn read_fields(
+    r: &mut Reader<'_>,
+    fields: &[Field],
+    args: &[i32],
+    out: &mut Vec<i64>,
+) -> Result<()> {
     for field in fields {
         for _ in 0..field.n {
+            if let Some(a) = field.arg {
+                out.push(i64::from(args.get(usize::from(a)).copied().unwrap_or(0)));
+                continue;
+            }
             out.push(match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
                 Int::U8 => i64::from(r.u8()?),
@@ -102,7 +112,7 @@ fn read_fields(r: &mut Reader<'_>, fields: &[Field], out: &mut Vec<i64>) -> Resu
 
 /// The reply payload for these integers (simulator side): the fixed
 /// fields, then whole records; each integer cut to its wire width, as the
-/// CNC sends it.
+/// CNC sends it (echo fields' integers are not sent).
 pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeError> {
     let bad = DecodeError::Invalid("value count differs from the reply layout");
     let fixed: usize = f.reply.iter().map(|x| x.n as usize).sum();
@@ -132,6 +142,9 @@ pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeEr
 fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item = &'a i64>) {
     for field in fields {
         for x in v.by_ref().take(field.n as usize) {
+            if field.arg.is_some() {
+                continue;
+            }
             match field.wire {
                 Int::I8 | Int::U8 => w.u8(*x as u8),
                 Int::I16 | Int::U16 => w.u16(*x as u16),

@@ -22,6 +22,7 @@ pub const WRTOFS: u16 = 0x0009;
 pub const RDZOFS: u16 = 0x000b;
 /// Write one work zero offset: args [n, n, axis, 0, 8 · records] + records.
 pub const WRZOFS: u16 = 0x000c;
+pub const WRWKCDSHFT: u16 = 0x0064;
 
 /// cnc_rdtofs adds this to the type word (cnc_rdtofsr sends the type as is).
 pub const TOFS_SINGLE: i32 = 1000;
@@ -110,6 +111,13 @@ impl Call for ReadZofsRange {
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> crate::error::Result<Values> {
         records(resp, 0)
     }
+}
+
+/// cnc_wrwkcdshft: 0x0064 [axis] with one record (axis ≥ 0) or one per
+/// axis (axis -1).
+pub fn wrwkcdshft(axis: i16, values: &[i32]) -> Single<Ack> {
+    let records: Values = values.iter().map(|v| write_record(*v)).collect();
+    Single::new(ReqSub::cnc(WRWKCDSHFT, &[i32::from(axis)]).with_payload(records.to_bytes()))
 }
 
 /// cnc_wrzofs: one record (axis ≥ 0) or one per axis (axis -1).

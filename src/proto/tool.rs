@@ -15,6 +15,8 @@ use crate::wire_struct;
 pub const TLGROUP: u16 = 0x008b;
 /// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
 pub const TLTOOLS: u16 = 0x004d;
+/// Inserts a tool into a group: args [grp, tuse_num, tool number].
+pub const TLINSERT: u16 = 0x0054;
 /// Punch press tool control data (no args).
 pub const TLCTL: u16 = 0x009a;
 
@@ -28,6 +30,12 @@ wire_struct! {
         pub life: Value,
         pub count: Value,
     }
+}
+
+/// cnc_instlifedt: an empty answer.
+pub fn tlinsert(grp: i16, tuse: i16, tool: i32) -> Single<super::offset::Ack> {
+    let args = [i32::from(grp), i32::from(tuse), tool];
+    Single::new(ReqSub::cnc(TLINSERT, &args))
 }
 
 pub fn tlgroup(grp: i16) -> Single<ToolGroup> {

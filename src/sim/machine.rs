@@ -534,6 +534,14 @@ impl CncService for Machine {
                 .collect()),
             "cnc_rdpitchinfo" => Ok(vec![i64::from(self.profile.pitch.size)]),
             "pmc_get_number_of_pmc" => Ok(vec![self.profile.pmc.units() as i64]),
+            "cnc_rdgrpid2" => self
+                .tl_group_of_tool(path, args[0])
+                .map(|g| vec![v(args[0]), v(g)]),
+            "cnc_rdwkcdshft" => self
+                .shift_read(path, args[0])
+                .map(|r| [vec![v(args[0])], r].concat()),
+            "cnc_deltlifegrp" => self.tl_delete(path, args[0], None).map(|_| vec![]),
+            "cnc_deltlifedt" => self.tl_delete(path, args[0], Some(args[1])).map(|_| vec![]),
             "cnc_rdngrp" => self.tl_group_count(path).map(|n| vec![v(n)]),
             "cnc_rdzofsinfo" => self.zofs_info(path).map(|c| vec![v(c.value)]),
             "cnc_rdetherinfo" => {
@@ -562,7 +570,9 @@ impl CncService for Machine {
     }
 
     fn raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
-        self.memory_raw(sub).or_else(|| self.folder_raw(sub))
+        self.memory_raw(sub)
+            .or_else(|| self.folder_raw(sub))
+            .or_else(|| self.offset_raw(sub))
     }
 
     // --- upload ---

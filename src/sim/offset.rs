@@ -5,7 +5,9 @@ use super::Machine;
 pub use super::profile::offset::{Offsets, ToolGroupProfile, ToolProfile};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo};
+use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo, WRWKCDSHFT};
+use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::tool::TLINSERT;
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
@@ -141,6 +143,45 @@ impl Machine {
         Ok(Ack)
     }
 
+    /// 0x0063 [axis]: the work coordinate shift of one axis (1..=n) or all
+    /// (-1: max_axes records).
+    pub fn shift_read(&self, path: u16, axis: i32) -> Reply<Vec<i64>> {
+        let cols = self.zofs_axes(path, axis)?;
+        let o = self.offsets(path)?;
+        Ok(cols
+            .flat_map(|c| {
+                let v = o.shift.get(c).copied().unwrap_or(0);
+                [i64::from(v), i64::from(o.decimals)]
+            })
+            .collect())
+    }
+
+    /// The writes without a table entry: 0x0064 (work coordinate shift),
+    /// 0x0054 (tool insert).
+    pub(crate) fn offset_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        match (sub.class, sub.cmd) {
+            (CLASS_CNC, WRWKCDSHFT) => Some(self.shift_write(sub)),
+            (CLASS_CNC, TLINSERT) => Some(self.tl_insert(sub.path, sub.args).map(|_| Vec::new())),
+            _ => None,
+        }
+    }
+
+    /// 0x0064 [axis] + one record per selected axis: the shift written.
+    fn shift_write(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        self.zofs_axes(sub.path, sub.args[0]).and_then(|cols| {
+            let axes = self.axes_of(sub.path);
+            let v = records(&sub.payload, cols.len())?;
+            let shift = &mut self.offsets_mut(sub.path)?.shift;
+            for (c, x) in cols.zip(v).filter(|(c, _)| *c < axes) {
+                if shift.len() <= c {
+                    shift.resize(c + 1, 0);
+                }
+                shift[c] = x;
+            }
+            Ok(Vec::new())
+        })
+    }
+
     /// 0x000d: the workpiece coordinate systems (G54.. and G54.1 P..), not
     /// counting the external offset. Not checked against a real CNC.
     pub fn zofs_info(&mut self, path: u16) -> Reply<Count> {
@@ -165,6 +206,63 @@ impl Machine {
             return groups.first().ok_or(NUMBER);
         }
         groups.iter().find(|g| g.number == grp).ok_or(NUMBER)
+    }
+
+    /// 0x0053 [grp] deletes tool life group `grp`; 0x0055 [grp, n] its
+    /// `n`-th tool. An absent group or tool: EW_NUMBER, nothing changed.
+    pub fn tl_delete(&mut self, path: u16, grp: i32, tool: Option<i32>) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let i = groups.iter().position(|g| g.number == grp).ok_or(NUMBER)?;
+        match tool {
+            None => {
+                groups.remove(i);
+            }
+            Some(n) if n >= 1 && n as usize <= groups[i].tools.len() => {
+                groups[i].tools.remove(n as usize - 1);
+            }
+            Some(_) => return Err(NUMBER),
+        }
+        Ok(())
+    }
+
+    /// 0x0054 [grp, n, tno]: tool number `tno` inserted into group `grp` as
+    /// its `n`-th tool (1..=tools + 1), no offsets; else EW_NUMBER (a tool
+    /// number below 1: EW_DATA), nothing changed.
+    pub fn tl_insert(&mut self, path: u16, a: [i32; 5]) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let g = groups.iter_mut().find(|g| g.number == a[0]).ok_or(NUMBER)?;
+        if a[1] < 1 || a[1] as usize > g.tools.len() + 1 {
+            return Err(NUMBER);
+        }
+        if a[2] < 1 {
+            return Err(CncError::new(ew::EW_DATA));
+        }
+        let t = ToolProfile {
+            number: a[2],
+            length: 0,
+            radius: 0,
+            info: 0,
+        };
+        g.tools.insert(a[1] as usize - 1, t);
+        Ok(())
+    }
+
+    /// 0x0047 [tno]: the first group holding tool number `tno` (none:
+    /// EW_NUMBER).
+    pub fn tl_group_of_tool(&self, path: u16, tno: i32) -> Reply<i32> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        (p.tool_groups.iter())
+            .find(|g| g.tools.iter().any(|t| t.number == tno))
+            .map(|g| g.number)
+            .ok_or(NUMBER)
     }
 
     /// 0x004a: how many tool life groups the path has.

@@ -130,6 +130,19 @@ pub struct Field {
     pub out: u8,
     pub to: Option<&'static str>,
     pub c: Int,
+    /// `Some(a)`: not on the wire; the value is number argument `a`, which
+    /// FANUC's library writes back into the output with the reply.
+    pub arg: Option<u8>,
+}
+
+impl Field {
+    /// The bytes of this field on the wire.
+    pub const fn wire_len(&self) -> usize {
+        match self.arg {
+            Some(_) => 0,
+            None => self.wire.size() * self.n as usize,
+        }
+    }
 }
 
 /// An array of records after the fixed fields of the reply: as many whole
@@ -147,15 +160,16 @@ pub struct Records {
     /// The `short` member of output `out` the number of records written
     /// goes to, if any.
     pub count: Option<&'static str>,
+    /// Number parameter `room` is the caller's size of output `out` in
+    /// bytes (read as an unsigned short): records ending past it are
+    /// EW_LENGTH with nothing written, checked after the reply.
+    pub room: Option<u8>,
 }
 
 impl Records {
     /// The bytes of one record on the wire.
     pub fn wire_len(&self) -> usize {
-        self.fields
-            .iter()
-            .map(|f| f.wire.size() * f.n as usize)
-            .sum()
+        self.fields.iter().map(Field::wire_len).sum()
     }
     /// The integers of one record.
     pub fn values(&self) -> usize {
@@ -215,10 +229,7 @@ impl Func {
     }
     /// The reply payload's length in bytes.
     pub fn reply_len(&self) -> usize {
-        self.reply
-            .iter()
-            .map(|f| f.wire.size() * f.n as usize)
-            .sum()
+        self.reply.iter().map(Field::wire_len).sum()
     }
 }
 
@@ -230,6 +241,7 @@ pub const fn to(wire: Int, to: &'static str, c: Int) -> Field {
         out: 0,
         to: Some(to),
         c,
+        arg: None,
     }
 }
 
@@ -241,6 +253,7 @@ pub const fn to_out(out: u8, wire: Int, to: &'static str, c: Int) -> Field {
         out,
         to: Some(to),
         c,
+        arg: None,
     }
 }
 
@@ -252,6 +265,20 @@ pub const fn skip(wire: Int) -> Field {
         out: 0,
         to: None,
         c: wire,
+        arg: None,
+    }
+}
+
+/// Number argument `arg` written back to output 0's member `to` (not on
+/// the wire).
+pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
+    Field {
+        wire: c,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c,
+        arg: Some(arg),
     }
 }
 

@@ -128,3 +128,13 @@ pub struct ODBTLINF2 {
     pub use_no: c_short,
     pub ofs_enable: c_short,
 }
+
+/// cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
+/// all axes.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBWCSF {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: [LONG; MAX_AXIS],
+}

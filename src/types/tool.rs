@@ -59,3 +59,21 @@ pub struct ODBTLIFE2 {
     pub dummy: [c_short; 2],
     pub data: LONG,
 }
+
+/// cnc_rdgrpid2: the tool life group of a tool number.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLIFE5 {
+    pub dummy: LONG,
+    pub r#type: LONG,
+    pub data: LONG,
+}
+
+/// cnc_instlifedt: the tool to insert.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IDBITD {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: LONG,
+}

@@ -722,6 +722,42 @@ const WORDS: &[Word] = &[
         )
     },
     Word {
+        after: &["rdntool 2", "toolnum 2 1", "toolnum 2 2"],
+        ..wc(
+            "instlifedt",
+            &[],
+            &[
+                "hex:0200010063000000",
+                "hex:0200020063000000",
+                "hex:0200030063000000",
+                "hex:0200000063000000",
+                "hex:0200ffff63000000",
+                "hex:0100010005000000",
+                "hex:0900010063000000",
+                "hex:00000100ffffffff",
+            ],
+        )
+    },
+    Word {
+        after: &["rdwkcdshft 1 8", "rdwkcdshft -1 132"],
+        ..wc(
+            "wrwkcdshft",
+            &[],
+            &[
+                "8 hex:000001003930000000",
+                "8 hex:00000200c7cfffff",
+                "132 hex:0000ffff393000003a3000003b300000",
+                "12 hex:0000010039300000",
+                "4 hex:00000100",
+                "0 hex:00000100",
+                "8 hex:00000000",
+                "8 hex:00002100",
+                "8 hex:0000feff",
+                "8 hex:00000400",
+            ],
+        )
+    },
+    Word {
         after: &["pmc_rdpmcrng 9 0 100 103 12"],
         ..wc(
             "pmc_wrpmcrng",

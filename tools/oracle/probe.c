@@ -409,8 +409,10 @@ static char *text(int i, long *n) {
     WORD(rdzofs, return F(cnc_rdzofs)(H, N(1), N(2), N(3), B0))                                   \
     WORD(wrzofs, { fill_hex(b0, 2); return F(cnc_wrzofs)(H, N(1), B0); })                         \
     WORD(rdzofsr, return F(cnc_rdzofsr)(H, N(1), N(2), N(3), N(4), B0))                           \
+    WORD(wrwkcdshft, { fill_hex(b0, 2); return F(cnc_wrwkcdshft)(H, N(1), B0); })                 \
     WORD(rdtoolgrp, return F(cnc_rdtoolgrp)(H, N(1), N(2), B0))                                   \
     WORD(rdtlctldata, return F(cnc_rdtlctldata)(H, B0))                                           \
+    WORD(instlifedt, { fill_hex(b0, 1); return F(cnc_instlifedt)(H, B0); })                       \
     /* upload */                                                                                  \
     WORD(upstart, return F(cnc_upstart)(H, N(1)))                                                 \
     WORD(upstart3, return F(cnc_upstart3)(H, N(1), N(2), N(3)))                                   \

@@ -20,6 +20,9 @@ pub struct Offsets {
     /// Work zero offsets: row 0 external, rows 1..6 G54..G59 (7.. G54.1 P1..),
     /// one column per axis (missing columns read 0).
     pub work: Vec<Vec<i32>>,
+    /// Work coordinate shift (cnc_rdwkcdshft), one value per axis (missing
+    /// axes read 0).
+    pub shift: Vec<i32>,
 }
 
 impl Default for Offsets {
@@ -30,6 +33,7 @@ impl Default for Offsets {
             enable: 1,
             tool: Vec::new(),
             work: Vec::new(),
+            shift: Vec::new(),
         }
     }
 }
