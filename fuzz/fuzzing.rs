@@ -684,7 +684,8 @@ pub fn request(data: &[u8]) {
                 // A described function's answer decodes as the client decodes it.
                 for (s, r) in subs.iter().zip(&resp) {
                     if let Some(f) = for_request(s, open.class()) {
-                        let _ = black_box(fwlib32::proto::described::decode(f, &r.payload));
+                        let args = fwlib32::proto::described::args_of(f, open.class(), s);
+                        let _ = black_box(fwlib32::proto::described::decode(f, &args, &r.payload));
                     }
                 }
                 let r = Frame::new(version, ftype::DATA_RESP, encode_response(&resp));
