@@ -225,6 +225,14 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
+        names: &["cnc_wrwkcdshft"],
+        run: |cx, a, r| go(po::wrwkcdshft(a[0] as i16, &[a[1], a[2]]), cx, r),
+    },
+    Decoder {
+        names: &["cnc_instlifedt"],
+        run: |cx, a, r| go(pt::tlinsert(a[0] as i16, a[1] as i16, a[2]), cx, r),
+    },
+    Decoder {
         names: &["cnc_rdproginfo"],
         run: |cx, a, r| {
             let sub = ReqSub::cnc(a[0] as u16, &[a[1]]);
