@@ -1526,6 +1526,22 @@ typedef struct IODBPMC {
     union IODBPMC_u u;
 } IODBPMC;
 
+/*
+ pmc_rdpmctitle: the PMC program's title data (texts, not terminated).
+ */
+typedef struct ODBPMCTITLE {
+    char mtb[48];
+    char machine[48];
+    char type[48];
+    char prgno[8];
+    char prgvers[4];
+    char prgdraw[48];
+    char date[32];
+    char design[48];
+    char written[48];
+    char remarks[48];
+} ODBPMCTITLE;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -3518,6 +3534,16 @@ short pmc_rdpmcrng(unsigned short FlibHndl,
                    unsigned short e_number,
                    unsigned short length,
                    struct IODBPMC *buf);
+
+/*
+ Reads the PMC program's title data: each text as the CNC sent it (32,
+ 32, 32, 4, 2, 32, 16, 32, 32 and 32 bytes), the rest of its member
+ zeroed, as FANUC's library; a short answer reads as zeros.
+
+ # Safety
+ `title` must point to a writable ODBPMCTITLE.
+ */
+short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
 
 /*
  Selects the PMC unit of type `unittype` for this handle's later PMC calls

@@ -310,3 +310,30 @@ fn pmc_units_are_selected_per_handle() {
         EW_DATA
     );
 }
+
+/// pmc_rdpmctitle: the profile's texts, each member zero-padded past what
+/// the CNC sends; NULL is EW_DATA.
+#[test]
+fn pmc_title_is_the_profiles() {
+    let p = Profile::default();
+    let (_s, h) = sim::start_alloc(p.clone());
+    let mut t = std::mem::MaybeUninit::<ODBPMCTITLE>::uninit();
+    unsafe {
+        std::ptr::write_bytes(t.as_mut_ptr(), 0xcc, 1);
+        assert_eq!(pmc_rdpmctitle(h, t.as_mut_ptr()), EW_OK);
+        assert_eq!(pmc_rdpmctitle(h, std::ptr::null_mut()), EW_DATA);
+    }
+    let t = unsafe { t.assume_init() };
+    let text = |m: &[std::os::raw::c_char]| -> String {
+        m.iter()
+            .take_while(|&&c| c != 0)
+            .map(|&c| c as u8 as char)
+            .collect()
+    };
+    assert_eq!(text(&t.mtb), p.pmc.title[0]);
+    assert_eq!(text(&t.machine), p.pmc.title[1]);
+    assert_eq!(text(&t.prgvers), p.pmc.title[4]);
+    assert_eq!(text(&t.remarks), p.pmc.title[9]);
+    assert!(t.remarks[32..].iter().all(|&c| c == 0));
+    sim::free(h);
+}

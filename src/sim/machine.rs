@@ -573,6 +573,10 @@ impl CncService for Machine {
         self.memory_raw(sub)
             .or_else(|| self.folder_raw(sub))
             .or_else(|| self.offset_raw(sub))
+            .or_else(|| {
+                let title = (sub.class, sub.cmd) == (2, crate::proto::pmc::RDPMCTITLE);
+                title.then(|| Ok(self.profile.pmc.title_bytes()))
+            })
     }
 
     // --- upload ---

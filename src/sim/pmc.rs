@@ -3,7 +3,7 @@
 
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, elem_size};
+use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, TITLE, elem_size};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -109,6 +109,8 @@ pub struct Pmc {
     pub areas: Vec<PmcArea>,
     /// Units 2.. (`[pmc] units = n`): the standard areas, zeroed.
     pub extra: Vec<Vec<PmcArea>>,
+    /// pmc_rdpmctitle's texts in ODBPMCTITLE's order (`[pmc] title`).
+    pub title: Vec<String>,
 }
 
 fn standard_areas() -> Vec<PmcArea> {
@@ -118,11 +120,27 @@ fn standard_areas() -> Vec<PmcArea> {
         .collect()
 }
 
+impl Pmc {
+    /// 0x800b's answer: the title texts, each cut or zero-padded to its
+    /// size on the wire.
+    pub fn title_bytes(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        for (i, (n, _)) in TITLE.iter().enumerate() {
+            let t = self.title.get(i).map_or(&[][..], |t| t.as_bytes());
+            let at = out.len();
+            out.extend(&t[..t.len().min(*n)]);
+            out.resize(at + n, 0);
+        }
+        out
+    }
+}
+
 impl Default for Pmc {
     fn default() -> Self {
         Pmc {
             areas: standard_areas(),
             extra: Vec::new(),
+            title: Vec::new(),
         }
     }
 }
@@ -132,6 +150,8 @@ impl Default for Pmc {
 struct PmcToml {
     /// How many PMC units the CNC has (pmc_get_number_of_pmc), 1 to 8.
     units: Option<usize>,
+    #[serde(default)]
+    title: Vec<String>,
     #[serde(default)]
     area: BTreeMap<String, AreaToml>,
 }
@@ -150,6 +170,10 @@ impl TryFrom<PmcToml> for Pmc {
     type Error = String;
     fn try_from(t: PmcToml) -> Result<Pmc, String> {
         let mut pmc = Pmc::default();
+        if t.title.len() > TITLE.len() {
+            return Err("[pmc] title: at most 10 texts".to_string());
+        }
+        pmc.title = t.title;
         match t.units {
             Some(n @ 1..=8) => {
                 // Zeroed memory, shared by the units until one is written.

@@ -86,3 +86,19 @@ pub struct ODBPMCERR {
     pub err_no: c_short,
     pub err_dtno: c_short,
 }
+
+/// pmc_rdpmctitle: the PMC program's title data (texts, not terminated).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPMCTITLE {
+    pub mtb: [c_char; 48],
+    pub machine: [c_char; 48],
+    pub r#type: [c_char; 48],
+    pub prgno: [c_char; 8],
+    pub prgvers: [c_char; 4],
+    pub prgdraw: [c_char; 48],
+    pub date: [c_char; 32],
+    pub design: [c_char; 48],
+    pub written: [c_char; 48],
+    pub remarks: [c_char; 48],
+}

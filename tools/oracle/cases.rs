@@ -612,6 +612,7 @@ const WORDS: &[Word] = &[
     ),
     w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
     w("rdtlctldata", &[]),
+    w("pmc_rdpmctitle", &[]),
     // Writes (each followed by its read-back).
     Word {
         after: &["rdparam 6711 0 8", "rdparam 1320 -1 132"],

@@ -413,6 +413,7 @@ static char *text(int i, long *n) {
     WORD(rdtoolgrp, return F(cnc_rdtoolgrp)(H, N(1), N(2), B0))                                   \
     WORD(rdtlctldata, return F(cnc_rdtlctldata)(H, B0))                                           \
     WORD(instlifedt, { fill_hex(b0, 1); return F(cnc_instlifedt)(H, B0); })                       \
+    WORD(pmc_rdpmctitle, return F(pmc_rdpmctitle)(H, B0))                                         \
     /* upload */                                                                                  \
     WORD(upstart, return F(cnc_upstart)(H, N(1)))                                                 \
     WORD(upstart3, return F(cnc_upstart3)(H, N(1), N(2), N(3)))                                   \
