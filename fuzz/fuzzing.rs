@@ -225,6 +225,10 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
+        names: &["pmc_rdpmctitle"],
+        run: |cx, _, r| go(pmc::Title, cx, r),
+    },
+    Decoder {
         names: &["cnc_wrwkcdshft"],
         run: |cx, a, r| go(po::wrwkcdshft(a[0] as i16, &[a[1], a[2]]), cx, r),
     },
