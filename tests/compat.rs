@@ -478,7 +478,7 @@ fn ours_cell(e: Option<&Export>) -> String {
     match e.map(|e| e.how) {
         None => "not exported".to_string(),
         Some(How::Written { area }) => format!("implemented (`src/ffi/{area}.rs`)"),
-        Some(How::Described) => "described as data (`src/spec/table.rs`)".to_string(),
+        Some(How::Described) => "described as data (`src/spec/table/`)".to_string(),
         Some(How::NotOnEthernet { code, ew }) if ew == "EW_VERSION" => {
             format!("{ew} ({code}), as FANUC's Ethernet library")
         }
@@ -622,7 +622,7 @@ fn generate(measured: &Measured) -> String {
     );
     row("… implemented by hand (`src/ffi/`)", written.to_string());
     row(
-        "… described as data (`src/spec/table.rs`)",
+        "… described as data (`src/spec/table/`)",
         described.to_string(),
     );
     row(

@@ -76,7 +76,7 @@ fn the_decoders_name_exported_functions() {
         );
         assert!(
             fwlib32::spec::FUNCS.iter().all(|f| f.name != name),
-            "{name} is described in src/spec/table.rs: its decoder is the table's"
+            "{name} is described in src/spec/table/: its decoder is the table's"
         );
     }
 }

@@ -18,7 +18,7 @@ fn exported() -> BTreeSet<String> {
             }
         }
     }
-    // The functions described as data (src/spec/table.rs): build.rs writes their exports.
+    // The functions described as data (src/spec/table/): build.rs writes their exports.
     out.extend(fwlib32::spec::FUNCS.iter().map(|f| f.name.to_string()));
     out
 }

@@ -1,6 +1,6 @@
 //! The wire-fault matrix: every family of calls (status, position,
 //! parameter, macro, PMC, alarm, program upload, tool offset, a function
-//! described in src/spec/table.rs) against a CNC that misbehaves once, in
+//! described in src/spec/table/) against a CNC that misbehaves once, in
 //! the open phase (the open answer, the start-up sysinfo of
 //! cnc_allclibhndl3) or the data phase (the call's own answer):
 //! connection refused, reset, closed mid-frame, silent, a slow drip

@@ -1,6 +1,6 @@
 //! Every function the library exports, and how each is made: the table
 //! build.rs writes from the same sources as the exports themselves
-//! (src/ffi/*.rs and src/spec/table.rs), so it cannot drift from the
+//! (src/ffi/*.rs and src/spec/table/), so it cannot drift from the
 //! library. COMPATIBILITY.md (tests/compat.rs) and `focas compat` read it;
 //! tests/artifacts.rs checks it against the built library's symbols.
 
@@ -9,7 +9,7 @@
 pub enum How {
     /// Written by hand in `src/ffi/<area>.rs`.
     Written { area: &'static str },
-    /// Described as data in src/spec/table.rs (its export written by build.rs).
+    /// Described as data in src/spec/table/ (its export written by build.rs).
     Described,
     /// Declared by FANUC's header, implemented by none of FANUC's Ethernet
     /// libraries: exported so that programs link and run, answering this

@@ -1,5 +1,5 @@
 //! Programs in the CNC's memory: the functions the table cannot describe
-//! (src/spec/table.rs has the others: cnc_search, cnc_delete ...).
+//! (src/spec/table/ has the others: cnc_search, cnc_delete ...).
 
 use super::program::progdir_records;
 use super::{ffi_boundary, nonnull, put};

@@ -219,7 +219,7 @@ pub struct Execution {
     pub spindle_speed: i32,
 }
 
-/// One described function (src/spec/table.rs) without arguments: its reply's integers.
+/// One described function (src/spec/table/) without arguments: its reply's integers.
 fn described(name: &'static str) -> impl Part<Out = Vec<i64>> + Send + 'static {
     let f = crate::spec::find(name).expect("a described function");
     via(name, Described { f, args: &[] }, f.reply_len(), Ok)

@@ -2,7 +2,7 @@
 //! and the `EW_*` name of a result code. Read by the simulator's trace and
 //! fault injection (a fault can name a function instead of a command).
 //!
-//! The functions described as data (src/spec/table.rs) name their own
+//! The functions described as data (src/spec/table/) name their own
 //! commands; [`COMMANDS`] lists the hand-written ones. A command several
 //! functions send (0x0026 positions: `cnc_absolute`, `cnc_rddynamic2` ...)
 //! lists them all, the one that sends it alone first.

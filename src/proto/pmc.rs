@@ -155,7 +155,7 @@ pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
 }
 
 // ---------------------------------------------------------------------------
-// PMC units (pmc_get_number_of_pmc is described in src/spec/table.rs)
+// PMC units (pmc_get_number_of_pmc is described in src/spec/table/)
 // ---------------------------------------------------------------------------
 
 /// pmc_get_pmc_unit_types: (2,0x800f)[most]; the answer is i32 unit types.

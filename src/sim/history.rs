@@ -252,7 +252,7 @@ impl Machine {
     }
 
     /// The answers of the history functions described as data
-    /// (src/spec/table.rs): counts and sizes, and the record/clear commands.
+    /// (src/spec/table/): counts and sizes, and the record/clear commands.
     pub(crate) fn history_answer(&mut self, name: &str) -> Option<Vec<i64>> {
         let ops = &mut self.profile.operation_history;
         let oms = &mut self.profile.operator_message_history;

@@ -1,7 +1,7 @@
 //! What a FOCAS function is, as data: its C parameters, local checks,
 //! request form per CNC class, and reply layout.
 //!
-//! One [`Func`] per function (src/spec/table.rs) is read by every layer:
+//! One [`Func`] per function (src/spec/table/) is read by every layer:
 //! build.rs writes the exported C function (and so its header declaration)
 //! from it, the codec builds the request and decodes or encodes the reply
 //! with it (src/proto/described.rs), the simulator dispatches its command by

@@ -175,7 +175,7 @@ pub fn header_functions(header: &str) -> BTreeSet<String> {
 }
 
 /// Names of the `pub ... extern "C" fn` items of src/ffi/*.rs and of the
-/// functions described in src/spec/table.rs (build.rs writes their exports).
+/// functions described in src/spec/table/ (build.rs writes their exports).
 pub fn ffi_functions() -> BTreeSet<String> {
     let dir = manifest_dir().join("src").join("ffi");
     let mut names = BTreeSet::new();

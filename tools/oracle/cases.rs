@@ -68,7 +68,7 @@ const AXIS: &str = "1|-1|2|3|0|4|32|33|-2";
 const AXLEN: &str = "8|4|7|12|0|-1|132|136";
 
 /// Every word the generator covers: the functions described as data
-/// (src/spec/table.rs, their dimensions there) and the words below.
+/// (src/spec/table/, their dimensions there) and the words below.
 pub fn words() -> Vec<Word> {
     let described = fwlib32::spec::FUNCS.iter().map(|f| Word {
         word: f.word(),

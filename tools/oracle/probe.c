@@ -31,7 +31,7 @@
 
 /* fwlib32_ext.h: our fwlib_* extensions, after fwlib32.h. */
 #include "fwlib32_ext.h"
-/* GENERATED_WORDS: one WORD per function of src/spec/table.rs, written by
+/* GENERATED_WORDS: one WORD per function of src/spec/table/, written by
  * tools/oracle/probe.rs from the same descriptions as the exports. */
 #include "words.gen.h"
 

@@ -1,0 +1,29 @@
+//! The feed and speed functions.
+
+use super::super::types::Int::*;
+use super::super::types::*;
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_actf",
+        doc: "Reads the actual feed rate (F).",
+        params: &[Param::Out("actualfeed", "ODBACT")],
+        checks: &[],
+        forms: &[every_class(0x0024, &[])],
+        reply: &[to(I32, "data", I32)],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
+    Func {
+        name: "cnc_acts",
+        doc: "Reads the actual spindle speed (S).",
+        params: &[Param::Out("actualspindle", "ODBACT")],
+        checks: &[],
+        forms: &[every_class(0x0025, &[])],
+        reply: &[to(I32, "data", I32)],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
+];

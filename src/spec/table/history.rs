@@ -1,0 +1,83 @@
+//! The operation and operator-message histories functions.
+
+use super::super::types::Int::*;
+use super::super::types::*;
+use super::base::COMMAND;
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_rdophisno",
+        doc: "Reads the number of operation history entries.",
+        params: &[Param::Out("hisno", "unsigned short")],
+        forms: &[every_class(0x0069, &[])],
+        reply: &[to(I32, "", U16)],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_startophis",
+        doc: "Starts recording the operation history.",
+        forms: &[every_class(0x0068, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_stopophis",
+        doc: "Stops recording the operation history.",
+        forms: &[every_class(0x0067, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_clearophis",
+        doc: "Clears the operation history.",
+        params: &[Param::Short("type")],
+        forms: &[every_class(0x006d, &[Word::Arg(0)])],
+        dims: &["0|1|2|-1|3"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdomhisno",
+        doc: "Reads the number of operator message history entries.",
+        params: &[Param::Out("hisno", "unsigned short")],
+        forms: &[every_class(0x01b4, &[])],
+        reply: &[to(U16, "", U16)],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdomhisinfo",
+        doc: "Reads the operator message history's size: most entries, entries held, characters per message.",
+        params: &[Param::Out("ominfo", "ODBOMIF")],
+        forms: &[every_class(0x0072, &[])],
+        reply: &[
+            to(I32, "om_max", U16),
+            to(I32, "om_sum", U16),
+            to(I32, "om_char", U16),
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_startomhis",
+        doc: "Starts recording the operator message history.",
+        forms: &[every_class(0x0071, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_stopomhis",
+        doc: "Stops recording the operator message history.",
+        forms: &[every_class(0x0070, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_clearomhis",
+        doc: "Clears the operator message history.",
+        // The 30i class names the history to clear (2); the 16i sends 0.
+        forms: &[
+            Form {
+                classes: Classes::S30,
+                class: 1,
+                cmd: 0x0074,
+                words: &[Word::Const(2)],
+            },
+            every_class(0x0074, &[]),
+        ],
+        ..COMMAND
+    },
+];

@@ -1,0 +1,64 @@
+//! Every function described by data alone (src/spec/types.rs): one entry
+//! each. build.rs exports them (src/ffi/described.rs), the codec and the
+//! simulator read them through `crate::spec::FUNCS`, the oracle generates
+//! their probe words and cases from them.
+//!
+//! Compiled into build.rs too: plain data only.
+
+use super::types::*;
+
+mod base;
+mod feed;
+mod history;
+mod info;
+mod memory;
+mod offset;
+mod offset_life;
+mod operation;
+mod pmc;
+mod program;
+mod servo;
+mod tool_life;
+
+/// The areas' entries, in this order.
+const AREAS: &[&[Func]] = &[
+    operation::FUNCS,
+    program::FUNCS,
+    feed::FUNCS,
+    offset::FUNCS,
+    info::FUNCS,
+    servo::FUNCS,
+    offset_life::FUNCS,
+    pmc::FUNCS,
+    memory::FUNCS,
+    history::FUNCS,
+    tool_life::FUNCS,
+];
+
+const LEN: usize = {
+    let mut n = 0;
+    let mut i = 0;
+    while i < AREAS.len() {
+        n += AREAS[i].len();
+        i += 1;
+    }
+    n
+};
+
+const ALL: [Func; LEN] = {
+    let mut all = [base::COMMAND; LEN];
+    let (mut n, mut i) = (0, 0);
+    while i < AREAS.len() {
+        let mut j = 0;
+        while j < AREAS[i].len() {
+            all[n] = AREAS[i][j];
+            n += 1;
+            j += 1;
+        }
+        i += 1;
+    }
+    all
+};
+
+/// Every described function, area by area.
+pub const FUNCS: &[Func] = &ALL;

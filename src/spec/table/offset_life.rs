@@ -1,0 +1,35 @@
+//! The offsets and tool life functions.
+
+use super::super::types::Int::*;
+use super::super::types::*;
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_rdtofsinfo2",
+        doc: "Reads the tool offset memory type, the number of offsets and which offsets are enabled.",
+        params: &[Param::Out("tlinf", "ODBTLINF2")],
+        checks: &[],
+        forms: &[every_class(0x000a, &[])],
+        // The 0x000a answer of cnc_rdtofsinfo, with the enable word after it.
+        reply: &[
+            skip(I16),
+            to(I16, "use_no", I16),
+            to(I16, "ofs_type", I16),
+            to(I16, "ofs_enable", I16),
+        ],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
+    Func {
+        name: "cnc_rdngrp",
+        doc: "Reads the number of tool life groups.",
+        params: &[Param::Out("grp", "ODBTLIFE2")],
+        checks: &[],
+        forms: &[every_class(0x004a, &[])],
+        reply: &[to(I32, "data", I32)],
+        records: None,
+        short: Short::Zeros,
+        dims: &[],
+    },
+];

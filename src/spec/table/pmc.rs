@@ -1,0 +1,16 @@
+//! The PMC units functions.
+
+use super::super::types::Int::*;
+use super::super::types::*;
+
+pub const FUNCS: &[Func] = &[Func {
+    name: "pmc_get_number_of_pmc",
+    doc: "Reads how many PMC units the CNC has (4 bytes written into the `long`).",
+    params: &[Param::Out("piNum", "long")],
+    checks: &[],
+    forms: &[pmc(0x800e, &[])],
+    reply: &[to(I32, "", I32)],
+    records: None,
+    short: Short::Zeros,
+    dims: &[],
+}];

@@ -1,0 +1,136 @@
+//! The tool life functions.
+
+use super::super::types::Int::*;
+use super::super::types::*;
+use super::base::COMMAND;
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_toolnum",
+        doc: "Reads the tool number of the `tuse_num`-th tool of tool-life group `grp_num`.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("toolnum", "ODBTLIFE4"),
+        ],
+        checks: &[],
+        forms: &[every_class(
+            0x004d,
+            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            to(I32, "data", I32),
+        ],
+        records: None,
+        short: Short::Error,
+        dims: &["1|0|-1|2|9999", "0|1|-1|2|99"],
+    },
+    Func {
+        name: "cnc_rdntool",
+        doc: "Reads the number of tools in tool-life group `grp_num`.",
+        params: &[Param::Short("grp_num"), Param::Out("tool", "ODBTLIFE3")],
+        checks: &[],
+        forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
+        reply: &[to(I32, "datano", I16), to(I32, "data", I32)],
+        records: None,
+        short: Short::Error,
+        dims: &["1|0|-1|2|9999"],
+    },
+    Func {
+        name: "cnc_rdlife",
+        doc: "Reads the tool life of tool group `number` (`data`; `dummy` untouched; `datano` the group number the CNC answered).",
+        params: &[Param::Short("number"), Param::Out("life", "ODBTLIFE3")],
+        checks: &[],
+        forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
+        // Group, then tools, life and counter as value records (value, base, exponent).
+        reply: &[
+            to(I32, "datano", I16),
+            skip(I32),
+            skip(I32),
+            to(I32, "data", I32),
+            skip(I32),
+            skip(I32),
+            skip(I32),
+        ],
+        records: None,
+        short: Short::Error,
+        dims: &["1|0|-1|2|9999"],
+    },
+    Func {
+        name: "cnc_rdcount",
+        doc: "Reads the tool life counter of tool group `number`.",
+        params: &[Param::Short("number"), Param::Out("count", "ODBTLIFE3")],
+        checks: &[],
+        forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
+        reply: &[
+            to(I32, "datano", I16),
+            skip(I32),
+            skip(I32),
+            skip(I32),
+            skip(I32),
+            to(I32, "data", I32),
+            skip(I32),
+        ],
+        records: None,
+        short: Short::Error,
+        dims: &["1|0|-1|2|9999"],
+    },
+    Func {
+        name: "cnc_rdgrpid2",
+        doc: "Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy` untouched).",
+        params: &[Param::Long("tno"), Param::Out("tlife", "ODBTLIFE5")],
+        checks: &[],
+        forms: &[every_class(0x0047, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I32), to(I32, "data", I32)],
+        records: None,
+        short: Short::Zeros,
+        dims: &["11|0|-1|1|5|9999|99999999"],
+    },
+    Func {
+        name: "cnc_rdwkcdshft",
+        doc: "Reads the work coordinate shift of axis `axis` (-1: all axes) into `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else EW_LENGTH after the reply).",
+        params: &[
+            Param::Short("axis"),
+            Param::Short("length"),
+            Param::Out("shift", "IODBWCSF"),
+        ],
+        checks: &[Check {
+            arg: 0,
+            lo: -32768,
+            hi: 32,
+            code: 4,
+        }],
+        forms: &[every_class(0x0063, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16)],
+        records: Some(Records {
+            fields: &[to(I32, "", I32), skip(I32)],
+            out: 0,
+            to: "data",
+            elem: "long",
+            max: 32,
+            count: None,
+            room: Some(1),
+        }),
+        short: Short::Zeros,
+        dims: &["1|-1|0|2|3|4|32|33|-2", "8|4|7|12|0|-1|132|136"],
+    },
+    // Base cases on group 2 (cnc_rdlife and others read group 1).
+    Func {
+        name: "cnc_deltlifedt",
+        doc: "Deletes the `tuse_num`-th tool of tool life group `grpno`.",
+        params: &[Param::Short("grpno"), Param::Short("tuse_num")],
+        forms: &[every_class(0x0055, &[Word::Arg(0), Word::Arg(1)])],
+        dims: &["2|0|-1|1|9999", "1|0|-1|2|99"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_deltlifegrp",
+        doc: "Deletes tool life group `grpno`.",
+        params: &[Param::Short("grpno")],
+        forms: &[every_class(0x0053, &[Word::Arg(0)])],
+        dims: &["2|0|-1|1|9999|32767"],
+        ..COMMAND
+    },
+];
