@@ -108,6 +108,18 @@ pub struct Conn {
     resp: Vec<RespSub>,
 }
 
+/// A frame's length word is 16 bits: a longer body is refused before any
+/// byte is sent (EW_LENGTH), never sent with its length wrapped.
+fn fits_a_frame(body: usize) -> Result<()> {
+    if body > u16::MAX as usize {
+        return Err(Error::local(
+            crate::ew::EW_LENGTH,
+            "the request does not fit in a frame (65535 bytes)",
+        ));
+    }
+    Ok(())
+}
+
 impl Conn {
     pub fn connect(addrs: &[SocketAddr], number: u8, deadline: Deadline) -> Result<Conn> {
         let mut last = None;
@@ -176,6 +188,7 @@ impl Conn {
     }
 
     pub fn send(&mut self, frame: &Frame, deadline: Deadline) -> Result<()> {
+        fits_a_frame(frame.body.len())?;
         let mut w = Writer {
             buf: std::mem::take(&mut self.wbuf),
         };
@@ -204,9 +217,10 @@ impl Conn {
         }
         .encode(&mut w);
         encode_request_into(subs, &mut w);
-        let len = (w.len() - HEADER_LEN) as u16;
-        w.patch_u16(HEADER_LEN - 2, len);
+        let len = w.len() - HEADER_LEN;
+        w.patch_u16(HEADER_LEN - 2, len as u16);
         self.wbuf = w.buf;
+        fits_a_frame(len)?;
         self.send_wbuf(deadline)
     }
 
@@ -459,6 +473,38 @@ mod tests {
         assert!(!Armed::After(Duration::from_millis(10)).fits(None));
         assert!(Armed::Forever.fits(None));
         assert!(!Armed::Forever.fits(Some(S)));
+    }
+
+    #[test]
+    fn a_request_longer_than_a_frame_is_refused_before_any_byte() {
+        use std::net::TcpListener;
+        let l = TcpListener::bind("127.0.0.1:0").unwrap();
+        let mut conn =
+            Conn::connect(&[l.local_addr().unwrap()], 0, Deadline::after_secs(2)).unwrap();
+        let (mut peer, _) = l.accept().unwrap();
+        let sub = |n: usize| ReqSub {
+            class: 1,
+            path: 1,
+            cmd: 0x1234,
+            args: [0; 5],
+            payload: vec![7; n],
+        };
+        // 2 (count) + 28 (the subpacket's fixed part) + payload: one byte too many.
+        let err = conn
+            .send_data(&[sub(u16::MAX as usize - 29)], Deadline::after_secs(2))
+            .unwrap_err();
+        assert_eq!(err.ew(), crate::ew::EW_LENGTH);
+        let frame = Frame::new(CLIENT_VERSION, 0x2101, vec![0; u16::MAX as usize + 1]);
+        assert_eq!(
+            conn.send(&frame, Deadline::after_secs(2)).unwrap_err().ew(),
+            crate::ew::EW_LENGTH
+        );
+        // The longest that fits goes out whole, its length word exact.
+        conn.send_data(&[sub(u16::MAX as usize - 30)], Deadline::after_secs(2))
+            .unwrap();
+        let mut head = [0u8; HEADER_LEN];
+        peer.read_exact(&mut head).unwrap();
+        assert_eq!(u16::from_be_bytes([head[8], head[9]]), u16::MAX);
     }
 
     #[test]
