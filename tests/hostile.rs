@@ -13,6 +13,7 @@
 //! covered without a line here.
 
 mod cabi;
+mod guard;
 mod sim;
 mod toolchain;
 
@@ -163,23 +164,7 @@ fn hostile_cnc(profile: Profile, seed: u64) -> u16 {
     port
 }
 
-const GUARD: usize = 64;
-const FILL: u8 = 0xA5;
-
-/// An output buffer of `n` bytes followed by a guard the library must not touch.
-struct Out(Vec<u8>, usize);
-
-impl Out {
-    fn new(n: usize) -> Out {
-        Out(vec![FILL; n + GUARD], n)
-    }
-    fn p<T>(&mut self) -> *mut T {
-        self.0.as_mut_ptr().cast()
-    }
-    fn intact(&self) -> bool {
-        self.0[self.1..].iter().all(|b| *b == FILL)
-    }
-}
+use guard::*;
 
 type Probe = (&'static str, fn(c_ushort) -> (c_short, Vec<Out>));
 

@@ -34,21 +34,9 @@ fn ether_info_is_the_profiles_board() {
 
 /// A two-axis machine running O0001 one block a second: N10 rapid to X10
 /// (10 mm in 1 s), N20 X20 at F300 (10 mm), N30 Y+5, N40 a dwell.
-const RUNNING: &str = r#"
-[cnc]
-class = "30i"
-
-[[path]]
-[path.status]
-aut = 1
-run = 3
-motion = 1
-
-[path.cycle]
-program = 1
-block_seconds = 1.0
-repeat = true
-
+const RUNNING: &str = sim::running_30i!(
+    true,
+    r#"
 [path.offset]
 memory = 1
 enable = 0
@@ -89,7 +77,8 @@ N40 G04 X1.;
 N50 M30;
 %
 """
-"#;
+"#
+);
 
 fn servo(h: u16, f: unsafe extern "C" fn(u16, *mut std::os::raw::c_long) -> i16) -> [i32; 2] {
     let mut v = [-1i32; 32];

@@ -12,21 +12,9 @@ use fwlib32::*;
 use std::os::raw::{c_long, c_ushort};
 use std::time::Duration;
 
-const PROFILE: &str = r#"
-[cnc]
-class = "30i"
-
-[[path]]
-[path.status]
-aut = 1
-run = 3
-motion = 1
-
-[path.cycle]
-program = 1
-block_seconds = 1.0
-repeat = true
-
+const PROFILE: &str = sim::running_30i!(
+    true,
+    r#"
 [[path.axis]]
 name = "X"
 decimals = 3
@@ -50,7 +38,8 @@ N20 G01 X20. F300;
 N30 M30;
 %
 """
-"#;
+"#
+);
 
 fn at(s: &Simulator, secs: f64) {
     s.set_elapsed(Duration::from_secs_f64(secs));

@@ -12,21 +12,9 @@ use fwlib32::*;
 use std::os::raw::c_ushort;
 use std::time::Duration;
 
-const BASE: &str = r#"
-[cnc]
-class = "30i"
-
-[[path]]
-[path.status]
-aut = 1
-run = 3
-motion = 1
-
-[path.cycle]
-program = 1
-block_seconds = 1.0
-repeat = true
-
+const BASE: &str = sim::running_30i!(
+    true,
+    r#"
 [[path.axis]]
 name = "X"
 decimals = 3
@@ -66,7 +54,8 @@ N10 G91 G01 X1. F100;
 N20 M30;
 %
 """
-"#;
+"#
+);
 
 fn profile(extra: &str) -> Profile {
     Profile::parse(&format!("{BASE}\n{extra}")).expect("profile")

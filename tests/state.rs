@@ -14,21 +14,9 @@ use fwlib32::*;
 use std::os::raw::c_ushort;
 use std::time::Duration;
 
-const PROFILE: &str = r#"
-[cnc]
-class = "30i"
-
-[[path]]
-[path.status]
-aut = 1
-run = 3
-motion = 1
-
-[path.cycle]
-program = 1
-block_seconds = 1.0
-repeat = false
-
+const PROFILE: &str = sim::running_30i!(
+    false,
+    r#"
 [path.modal]
 g = [1, 2, 0]
 aux = { 101 = 7, 103 = 999 }
@@ -57,7 +45,8 @@ N50 M05;
 N60 M30;
 %
 """
-"#;
+"#
+);
 
 fn at(s: &Simulator, secs: f64) {
     s.set_elapsed(Duration::from_secs_f64(secs));

@@ -23,23 +23,6 @@ fn connect(server: &mut Replay, timeout: std::os::raw::c_long) -> c_ushort {
     replay_connect(server, timeout)
 }
 
-fn close(mut server: Replay, h: c_ushort) {
-    let (r, m) = server.step(
-        "free",
-        ev(&[
-            (1, "req", CLOSE_REQ),
-            (1, "resp", CLOSE_RESP),
-            (2, "req", CLOSE_REQ),
-            (2, "resp", CLOSE_RESP),
-        ]),
-        || cnc_freelibhndl(h),
-    );
-    assert!(m.is_empty(), "{}", m.join("\n"));
-    assert_eq!(r, EW_OK);
-    let m = server.finish();
-    assert!(m.is_empty(), "{}", m.join("\n"));
-}
-
 /// cnc_modal(-1): its return and the G-code byte of the one pair.
 fn modal(h: c_ushort) -> (c_short, u8) {
     let mut b = [0xCCu8; size_of::<ODBMDL>()];
@@ -83,7 +66,7 @@ fn an_answer_in_pieces_is_read_whole() {
     all.extend(pieces);
     all.push(&MODAL_RESP[28..]);
     assert_eq!(modal_answered(&mut s, h, &all, pause), EW_OK);
-    close(s, h);
+    s.close(h);
 }
 
 #[test]
@@ -102,7 +85,7 @@ fn frames_of_another_kind_are_discarded_wherever_reads_cut_them() {
     );
     // Nothing left over: the next call reads its own answer.
     assert_eq!(modal_answered(&mut s, h, &[MODAL_RESP], pause), EW_OK);
-    close(s, h);
+    s.close(h);
 }
 
 /// A call whose answer stops after `sent` (hex) ends with EW_SOCKET once

@@ -16,6 +16,8 @@
 //! machine (src/sim) and breaking the chosen answer; tests/faults.rs drives
 //! the simulator's own scheduled faults, tests/hostile.rs random payloads.
 
+mod guard;
+
 use fwlib32::ew::*;
 use fwlib32::proto::frame::{Frame, HEADER_LEN, ftype};
 use fwlib32::proto::packet::{RespSub, decode_request, encode_response};
@@ -348,23 +350,7 @@ fn alloc(port: u16) -> Result<c_ushort, c_short> {
     }
 }
 
-const GUARD: usize = 64;
-const FILL: u8 = 0xA5;
-
-/// An output of `n` bytes followed by a guard the library must not touch.
-struct Out(Vec<u8>, usize);
-
-impl Out {
-    fn new(n: usize) -> Out {
-        Out(vec![FILL; n + GUARD], n)
-    }
-    fn p<T>(&mut self) -> *mut T {
-        self.0.as_mut_ptr().cast()
-    }
-    fn intact(&self) -> bool {
-        self.0[self.1..].iter().all(|b| *b == FILL)
-    }
-}
+use guard::*;
 
 fn size<T>() -> usize {
     std::mem::size_of::<T>()

@@ -514,6 +514,25 @@ impl Replay {
     }
 
     /// Plays one step while `f` runs (the C call); returns f's result and the mismatches.
+    /// Frees handle `h` (both connections closed as FANUC's library
+    /// closes them), then checks that the script was played to its end.
+    pub fn close(mut self, h: u16) {
+        let (r, m) = self.step(
+            "free",
+            ev(&[
+                (1, "req", CLOSE_REQ),
+                (1, "resp", CLOSE_RESP),
+                (2, "req", CLOSE_REQ),
+                (2, "resp", CLOSE_RESP),
+            ]),
+            || fwlib32::cnc_freelibhndl(h),
+        );
+        assert!(m.is_empty(), "{}", m.join("\n"));
+        assert_eq!(r, fwlib32::ew::EW_OK);
+        let m = self.finish();
+        assert!(m.is_empty(), "{}", m.join("\n"));
+    }
+
     pub fn step<T>(
         &mut self,
         label: &str,

@@ -10,6 +10,23 @@ use fwlib32::{cnc_allclibhndl3, cnc_freelibhndl};
 use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
 
+/// A one-path 30i profile running O0001 a block a second (`repeat`: over
+/// and over), then `rest`: the head the running-machine tests share.
+#[allow(unused_macros)]
+macro_rules! running_30i {
+    ($repeat:literal, $rest:literal) => {
+        concat!(
+            "[cnc]\nclass = \"30i\"\n\n[[path]]\n[path.status]\naut = 1\nrun = 3\nmotion = 1\n\n",
+            "[path.cycle]\nprogram = 1\nblock_seconds = 1.0\nrepeat = ",
+            stringify!($repeat),
+            "\n",
+            $rest
+        )
+    };
+}
+#[allow(unused_imports)]
+pub(crate) use running_30i;
+
 /// A simulator serving `p` on a free port of 127.0.0.1.
 pub fn start(p: Profile) -> Simulator {
     Simulator::start(p, "127.0.0.1:0").expect("simulator")
