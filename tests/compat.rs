@@ -266,7 +266,7 @@ fn run_words(words: &[&cases::Word], profile: &str, probe_exe: &Path, lib: &Path
     for w in words {
         let case = cases::function(w.word);
         for (i, (_, args)) in cases::arg_lists(w).iter().enumerate() {
-            fake.take(Duration::from_millis(1));
+            fake.take_sent(0);
             let mut main_ok = false;
             for (cmd, main) in case_calls(w, args) {
                 let mut answer = p.call(&cmd);
@@ -282,14 +282,9 @@ fn run_words(words: &[&cases::Word], profile: &str, probe_exe: &Path, lib: &Path
                     }
                 }
                 // Frames that have no answer (download and DNC data, an
-                // upload's abort) may still be on their way: wait longer.
-                let unanswered = ["download", "dnc", "upend"]
-                    .iter()
-                    .any(|p| word_of(&cmd).starts_with(p));
-                let request = fake
-                    .take(Duration::from_millis(if unanswered { 50 } else { 1 }))
-                    .iter()
-                    .any(|r| r.dir == "req");
+                // upload's abort) may still be on their way: wait for the
+                // bytes the probe saw the library write.
+                let request = fake.take_sent(p.sent).iter().any(|r| r.dir == "req");
                 let ret = match answer {
                     Answer::Done { ret, .. } => Some(ret),
                     _ => None,

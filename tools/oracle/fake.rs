@@ -133,6 +133,26 @@ impl Fake {
     /// Everything logged since the last call, once nothing more arrived for
     /// `quiet` (the probe has returned: what is still in flight is the
     /// closing of sockets, which the proxy sees a moment later).
+    /// The records so far, once the requests among them hold at least
+    /// `sent` bytes (what the library wrote during the call: the probe's
+    /// count), or after 3 s.
+    pub fn take_sent(&self, sent: u64) -> Vec<Rec> {
+        let deadline = Instant::now() + Duration::from_secs(3);
+        loop {
+            let mut log = self.state.log.lock().unwrap();
+            let got: usize = log
+                .iter()
+                .filter(|r| r.dir == "req")
+                .map(|r| r.bytes.len())
+                .sum();
+            if got as u64 >= sent || Instant::now() > deadline {
+                return std::mem::take(&mut *log);
+            }
+            drop(log);
+            std::thread::yield_now();
+        }
+    }
+
     pub fn take(&self, quiet: Duration) -> Vec<Rec> {
         let mut last = usize::MAX;
         let deadline = Instant::now() + Duration::from_secs(3);

@@ -64,11 +64,39 @@ int setsockopt(int fd, int level, int name, const void *value, socklen_t len) {
     if (level == IPPROTO_TCP && name == TCP_NODELAY) value = &one, len = sizeof one;
     return real(fd, level, name, value, len);
 }
+/* The library's sockets (from its connects) and the bytes it has written
+ * to them during the current command: printed as "sent", so that a test
+ * waits for exactly those bytes to reach the fake CNC (frames without an
+ * answer, such as a download's data, are still in flight when the call
+ * returns) instead of waiting for quiet. */
+static unsigned char is_sock[65536];
+static long long sent;
 int connect(int fd, const struct sockaddr *addr, socklen_t len) {
     static int (*real)(int, const struct sockaddr *, socklen_t);
     if (!real) real = (int (*)(int, const struct sockaddr *, socklen_t))dlsym(RTLD_NEXT, "connect");
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, NULL, 0);
+    if (fd >= 0 && fd < 65536) is_sock[fd] = 1;
     return real(fd, addr, len);
+}
+int close(int fd) {
+    static int (*real)(int);
+    if (!real) real = (int (*)(int))dlsym(RTLD_NEXT, "close");
+    if (fd >= 0 && fd < 65536) is_sock[fd] = 0;
+    return real(fd);
+}
+ssize_t send(int fd, const void *b, size_t n, int flags) {
+    static ssize_t (*real)(int, const void *, size_t, int);
+    if (!real) real = (ssize_t (*)(int, const void *, size_t, int))dlsym(RTLD_NEXT, "send");
+    ssize_t r = real(fd, b, n, flags);
+    if (r > 0 && fd >= 0 && fd < 65536 && is_sock[fd]) sent += r;
+    return r;
+}
+ssize_t write(int fd, const void *b, size_t n) {
+    static ssize_t (*real)(int, const void *, size_t);
+    if (!real) real = (ssize_t (*)(int, const void *, size_t))dlsym(RTLD_NEXT, "write");
+    ssize_t r = real(fd, b, n);
+    if (r > 0 && fd >= 0 && fd < 65536 && is_sock[fd]) sent += r;
+    return r;
 }
 
 /* The library's function `name`, typed by our header's declaration. */
@@ -530,6 +558,7 @@ int main(int argc, char **argv) {
             memset(b1, FILL, BUF);
         }
         fields[0] = 0;
+        sent = 0;
         int found = 0;
         for (size_t k = 0; k < sizeof table / sizeof table[0]; k++) {
             if (strcmp(table[k].name, argv_[0]) != 0) continue;
@@ -539,7 +568,7 @@ int main(int argc, char **argv) {
                 break;
             }
             short r = table[k].fn();
-            printf("{\"return\":%d,\"fields\":{%s}", r, fields);
+            printf("{\"return\":%d,\"sent\":%lld,\"fields\":{%s}", r, sent, fields);
             print_hex("b0", b0);
             print_hex("b1", b1);
             printf("}\n");

@@ -97,6 +97,8 @@ pub struct Probe {
     stdin: Option<ChildStdin>,
     stdout: BufReader<ChildStdout>,
     dead: bool,
+    /// Bytes the library wrote to its sockets during the last call.
+    pub sent: u64,
 }
 
 impl Probe {
@@ -119,6 +121,7 @@ impl Probe {
             stdin,
             stdout,
             dead: false,
+            sent: 0,
         }
     }
 
@@ -136,6 +139,10 @@ impl Probe {
             let status = self.child.wait().map(|s| s.to_string()).unwrap_or_default();
             return Answer::Crashed(format!("probe ended: {status}"));
         }
+        self.sent = serde_json::from_str::<serde_json::Value>(&line)
+            .ok()
+            .and_then(|v| v["sent"].as_u64())
+            .unwrap_or(0);
         parse(&line)
     }
 
