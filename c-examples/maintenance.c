@@ -1,7 +1,7 @@
 /*
- * maintenance.c - a small health report for one machine: servo and
- * spindle figures, the last operations, operator messages and alarms from
- * the CNC's histories.
+ * maintenance.c - a small health report for one machine: tool life left,
+ * spindle load and servo current, servo figures, the last operations,
+ * operator messages and alarms from the CNC's histories.
  *
  *   cc -Wall -Wextra -Werror -I../include maintenance.c -L../target/release -lfwlib32 -o maintenance
  *   ./maintenance [host [port]]
@@ -13,6 +13,38 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fwlib32.h"
+
+static void tool_life(unsigned short h)
+{
+    ODBTLIFE2 groups;
+    ODBTLIFE3 life, used;
+    long n, g;
+    short ret = cnc_rdngrp(h, &groups);
+    if (ret != EW_OK) {
+        printf("tool_groups=error %d\n", ret);
+        return;
+    }
+    n = (long)groups.data;
+    printf("tool_groups=%ld\n", n);
+    for (g = 1; g <= n && g <= 5; g++)
+        if (cnc_rdlife(h, (short)g, &life) == EW_OK && cnc_rdcount(h, (short)g, &used) == EW_OK)
+            printf("tool_group%ld=life %ld used %ld left %ld\n", g, (long)life.data, (long)used.data,
+                   (long)life.data - (long)used.data);
+}
+
+static void loads(unsigned short h)
+{
+    ODBSPLOAD sp[4];
+    short current[MAX_AXIS];
+    short n = 4, i;
+    if (cnc_rdspmeter(h, -1, &n, sp) == EW_OK)
+        for (i = 0; i < n; i++)
+            printf("spindle%d=load %ld%% speed %ld\n", i + 1, (long)sp[i].spload.data,
+                   (long)sp[i].spspeed.data);
+    memset(current, 0, sizeof current);
+    if (cnc_rdcurrent(h, current) == EW_OK)
+        printf("current=%d %d %d\n", current[0], current[1], current[2]);
+}
 
 static void servo_spindle(unsigned short h)
 {
@@ -118,6 +150,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "cnc_allclibhndl3(%s:%u) failed: %d\n", host, port, ret);
         return 1;
     }
+    tool_life(h);
+    loads(h);
     servo_spindle(h);
     operations(h);
     messages(h);

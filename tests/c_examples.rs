@@ -460,6 +460,27 @@ fn maintenance_example_reports_the_histories() {
         String::from_utf8_lossy(&out.stderr)
     );
     let kv = key_values(&out.stdout);
+    // Tool life left: each group's life less what has been used (the
+    // running program's T words use it up from the profile's count).
+    let groups = &p.paths[0].tool_groups;
+    assert_eq!(kv["tool_groups"], groups.len().to_string());
+    for (i, g) in groups.iter().enumerate() {
+        let line = &kv[format!("tool_group{}", i + 1).as_str()];
+        let w: Vec<i64> = line
+            .split_whitespace()
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        assert_eq!(w[0], i64::from(g.life), "{line}");
+        assert!(w[1] >= i64::from(g.count), "{line}");
+        assert_eq!(w[2], w[0] - w[1], "{line}");
+    }
+    let sp = &p.paths[0].spindles[0];
+    assert!(
+        kv["spindle1"].starts_with(&format!("load {}% ", sp.load)),
+        "{}",
+        kv["spindle1"]
+    );
+    assert_eq!(kv["current"].split_whitespace().count(), 3);
     assert_eq!(
         kv["operations"],
         p.operation_history.entries.len().to_string()
