@@ -61,8 +61,9 @@ OUT := $(CARGO_TARGET_DIR)/$(TARGET)/release
 TARGET_FLAG := --target $(TARGET)
 endif
 
-HOST     := $(shell rustc -vV 2>/dev/null | sed -n 's/^host: //p')
-RUST_SRC := $(shell rustc --print sysroot 2>/dev/null)/lib/rustlib/src/rust/library/std
+RUSTC    ?= rustc
+HOST     := $(shell $(RUSTC) -vV 2>/dev/null | sed -n 's/^host: //p')
+RUST_SRC := $(shell $(RUSTC) --print sysroot 2>/dev/null)/lib/rustlib/src/rust/library/std
 ifeq ($(STD),)
 STD := $(if $(wildcard $(RUST_SRC)),slim,prebuilt)
 endif
