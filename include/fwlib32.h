@@ -612,6 +612,27 @@ typedef struct ODBTLIFE5 {
 } ODBTLIFE5;
 
 /*
+ One group of IODBTGI.
+ */
+typedef struct IODBTGI_DATA {
+    LONG n_tool;
+    LONG count_value;
+    LONG counter;
+    LONG count_type;
+} IODBTGI_DATA;
+
+/*
+ cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp`..=`e_grp` (5 as
+ declared; the caller's `length` says how many really fit).
+ */
+typedef struct IODBTGI {
+    short s_grp;
+    short dummy;
+    short e_grp;
+    struct IODBTGI_DATA data[5];
+} IODBTGI;
+
+/*
  cnc_rdmacro: one custom macro variable. The value is
  `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
  */
@@ -1204,6 +1225,18 @@ typedef struct IODBTLCTL {
     char reserve;
     short reserves[10];
 } IODBTLCTL;
+
+/*
+ cnc_rdtlusegrp: the next, in-use and selected tool life groups.
+ */
+typedef struct ODBUSEGRP {
+    LONG next;
+    LONG use;
+    LONG slct;
+    LONG opt_next;
+    LONG opt_use;
+    LONG opt_slct;
+} ODBUSEGRP;
 
 /*
  cnc_rdtofs: one tool offset value.
@@ -2310,6 +2343,23 @@ short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *
 short cnc_rdgrpid2(unsigned short FlibHndl, long tno, struct ODBTLIFE5 *tlife);
 
 /*
+ Reads tool life groups `s_grp..=e_grp` (at most 44 per call): for each,
+ its number of tools, life, life counter and counter type; `e_grp` is
+ written back as the last group the CNC answered. `s_grp` below 1 or
+ `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must
+ hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH
+ with nothing written (checked after the answer, as FANUC's library).
+
+ # Safety
+ `grpinfo` must point to `length` writable bytes.
+ */
+short cnc_rdgrpinfo(unsigned short FlibHndl,
+                    short s_grp,
+                    short e_grp,
+                    short length,
+                    struct IODBTGI *grpinfo);
+
+/*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;
  `datano` the group number the CNC answered).
 
@@ -2951,6 +3001,20 @@ short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
 short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
 
 /*
+ Reads the next, in-use and selected tool life groups, then their
+ optional group numbers in a second exchange (the 30i class asks for
+ each group that is not 0 when the next group is not 0, the 16i class
+ reads the three group records, Series 15 asks nothing; a group not
+ asked, 0, or answered with an error reads -1). An error answered for a
+ group is returned after all six numbers are written, as FANUC's
+ library does.
+
+ # Safety
+ `grp` must point to a writable ODBUSEGRP.
+ */
+short cnc_rdtlusegrp(unsigned short FlibHndl, struct ODBUSEGRP *grp);
+
+/*
  Reads one tool offset value (`type`: offset kind, e.g. on a mill with
  memory C 0/1 radius wear/geometry, 2/3 length wear/geometry).
 
@@ -3324,6 +3388,18 @@ short cnc_upstart3(unsigned short FlibHndl, short type, long startno, long endno
  `prgname` must be NULL or a NUL-terminated string.
  */
 short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
+
+/*
+ Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
+ and counter type; `n_tool` is not sent). `e_grp` below `s_grp`:
+ EW_NUMBER; `length` (bytes) below 8 + 16 per group: EW_LENGTH; both
+ without traffic, as FANUC's library.
+
+ # Safety
+ `grpinfo` must point to a readable IODBTGI with `e_grp - s_grp + 1`
+ groups.
+ */
+short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpinfo);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.

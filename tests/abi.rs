@@ -391,6 +391,8 @@ rust_layouts! {
     // --- tool ---
     ODBTLIFE3 { datano, dummy, data }
     ODBTG { grp_num, dummy, ntool, life, count, data }
+    IODBTGI { s_grp, dummy, e_grp, data }
+    ODBUSEGRP { next, r#use, slct, opt_next, opt_use, opt_slct }
     ODBTLIFE2 { dummy, data }
     ODBPTIME { num, data }
     ODBOMIF { om_max, om_sum, om_char }

@@ -470,6 +470,14 @@ const PROBES: &[Probe] = &[
             cnc_rdtoolgrp(h, 1, size::<ODBTG>() as c_short, o.p())
         })
     }),
+    ("cnc_rdgrpinfo", |h| {
+        one(size::<IODBTGI>(), |o| unsafe {
+            cnc_rdgrpinfo(h, 1, 5, size::<IODBTGI>() as c_short, o.p())
+        })
+    }),
+    ("cnc_rdtlusegrp", |h| {
+        one(size::<ODBUSEGRP>(), |o| unsafe { cnc_rdtlusegrp(h, o.p()) })
+    }),
     ("cnc_rdprogdir3", |h| {
         let (mut top, mut num): (c_long, c_short) = (0, 3);
         one(size::<PRGDIR3>() * 3, |o| unsafe {

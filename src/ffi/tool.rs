@@ -3,12 +3,14 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::{ffi_boundary, len_of, nonnull, put_at};
+use super::{ffi_boundary, ffi_read, len_of, nonnull, put_at};
 use crate::client::handles;
 use crate::error::Error;
-use crate::ew::EW_FUNC;
+use crate::ew::{EW_FUNC, EW_NUMBER};
+use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, OptGroups, usegrp};
+use crate::proto::tool::{grpinfo as grpinfo_call, wrgrpinfo as wrgrpinfo_call};
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
-use crate::types::{IDBITD, IODBTLCTL, ODBTG};
+use crate::types::{IDBITD, IODBTGI, IODBTLCTL, ODBTG, ODBUSEGRP};
 use std::os::raw::{c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
@@ -98,4 +100,136 @@ pub unsafe extern "C" fn cnc_instlifedt(FlibHndl: c_ushort, tool: *mut IDBITD) -
         h.call(&tlinsert(t.datano, t.r#type, t.data))?;
         Ok(())
     })
+}
+
+/// Reads tool life groups `s_grp..=e_grp` (at most 44 per call): for each,
+/// its number of tools, life, life counter and counter type; `e_grp` is
+/// written back as the last group the CNC answered. `s_grp` below 1 or
+/// `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must
+/// hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH
+/// with nothing written (checked after the answer, as FANUC's library).
+///
+/// # Safety
+/// `grpinfo` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdgrpinfo(
+    FlibHndl: c_ushort,
+    s_grp: c_short,
+    e_grp: c_short,
+    length: c_short,
+    grpinfo: *mut IODBTGI,
+) -> c_short {
+    ffi_read!("cnc_rdgrpinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(grpinfo)?.cast::<u8>();
+        if s_grp < 1 || e_grp < s_grp {
+            return Err(Error::local(EW_NUMBER, "bad group range"));
+        }
+        let r = h.call(&grpinfo_call(s_grp, e_grp))?;
+        let n = r.groups.len();
+        if 8 + 16 * n as i32 > i32::from(length) {
+            return Err(Error::length());
+        }
+        unsafe {
+            put_at(out, 0, s_grp);
+            put_at(out, 4, (i32::from(s_grp) + n as i32 - 1) as c_short);
+            for (i, g) in r.groups.iter().enumerate() {
+                let o = 8 + 16 * i;
+                put_at(out, o, g.ntool);
+                put_at(out, o + 4, g.life);
+                put_at(out, o + 8, g.count);
+                put_at(out, o + 12, g.count_type);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
+/// and counter type; `n_tool` is not sent). `e_grp` below `s_grp`:
+/// EW_NUMBER; `length` (bytes) below 8 + 16 per group: EW_LENGTH; both
+/// without traffic, as FANUC's library.
+///
+/// # Safety
+/// `grpinfo` must point to a readable IODBTGI with `e_grp - s_grp + 1`
+/// groups.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrgrpinfo(
+    FlibHndl: c_ushort,
+    length: c_short,
+    grpinfo: *mut IODBTGI,
+) -> c_short {
+    ffi_boundary!("cnc_wrgrpinfo", {
+        let h = handles::get(FlibHndl)?;
+        let p = nonnull(grpinfo)?.cast::<u8>();
+        let (s, e) = unsafe { (get_at::<i16>(p, 0), get_at::<i16>(p, 4)) };
+        if e < s {
+            return Err(Error::local(EW_NUMBER, "e_grp below s_grp"));
+        }
+        let n = (i32::from(e) - i32::from(s) + 1) as usize;
+        if 8 + 16 * n as i32 > i32::from(length) {
+            return Err(Error::length());
+        }
+        let groups: Vec<GroupWrite> = (0..n.min(GROUPS_PER_WRITE as usize))
+            .map(|i| {
+                let o = 8 + 16 * i;
+                // SAFETY: the caller's `length` covers these groups.
+                let g = |k: usize| unsafe { get_at::<i32>(p, o + k) };
+                GroupWrite {
+                    life: g(4),
+                    count_type: g(12),
+                    count: g(8),
+                    w3: -1,
+                    w4: -1,
+                }
+            })
+            .collect();
+        h.call(&wrgrpinfo_call(s, e, &groups))?;
+        Ok(())
+    })
+}
+
+/// Reads the next, in-use and selected tool life groups, then their
+/// optional group numbers in a second exchange (the 30i class asks for
+/// each group that is not 0 when the next group is not 0, the 16i class
+/// reads the three group records, Series 15 asks nothing; a group not
+/// asked, 0, or answered with an error reads -1). An error answered for a
+/// group is returned after all six numbers are written, as FANUC's
+/// library does.
+///
+/// # Safety
+/// `grp` must point to a writable ODBUSEGRP.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtlusegrp(FlibHndl: c_ushort, grp: *mut ODBUSEGRP) -> c_short {
+    ffi_boundary!("cnc_rdtlusegrp", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(grp)?.cast::<u8>();
+        let u = h.call(&usegrp())?;
+        let groups = OptGroups([u.next, u.used, u.slct]);
+        let (opt, err) = if groups.needed(h.ctx().class) {
+            h.call(&groups)?
+        } else {
+            ([-1; 3], None)
+        };
+        unsafe {
+            for (i, v) in [u.next, u.used, u.slct].into_iter().chain(opt).enumerate() {
+                put_at(out, 4 * i, v);
+            }
+        }
+        match err {
+            Some(e) => {
+                h.note(&e);
+                Err(e)
+            }
+            None => Ok(()),
+        }
+    })
+}
+
+/// Reads a `T` at byte offset `off` of the caller's struct.
+///
+/// # Safety
+/// `base + off .. + size_of::<T>()` must be readable.
+unsafe fn get_at<T: Copy>(base: *const u8, off: usize) -> T {
+    unsafe { base.add(off).cast::<T>().read_unaligned() }
 }

@@ -5,10 +5,13 @@
 //! 0x008b [grp, grp]; cnc_rdtoolgrp reads it and then the group's tools
 //! with 0x004d [grp, 1, ntool] (cnc_toolnum's command).
 
-use super::call::Single;
+use super::call::{Call, Ctx, Single, sub};
+use super::open::CncClass;
 use super::packet::ReqSub;
+use super::packet::RespSub;
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
+use crate::error::Result;
 use crate::wire_struct;
 
 /// Tool life group record: args [grp, grp].
@@ -114,10 +117,184 @@ pub fn tlctl() -> Single<ToolCtl> {
     Single::new(ReqSub::cnc(TLCTL, &[]))
 }
 
+/// cnc_wrgrpinfo: args [s, e, 0, 0, payload length] + one
+/// [`GroupWrite`] per group s..=e.
+pub const WRGRPINFO: u16 = 0x004c;
+/// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
+pub const TLUSEGRP: u16 = 0x0048;
+/// cnc_rdtlusegrp on the 30i class: the optional group number of group
+/// `g`, args [g, g].
+pub const TLOPTGRP: u16 = 0x01bf;
+
+/// Most groups one 0x008b range request asks for (e capped at s + 43), as
+/// FANUC's cnc_rdgrpinfo asks: 44 records of 32 bytes fit one answer.
+pub const GROUPS_PER_REQUEST: i32 = 44;
+
+wire_struct! {
+    /// One tool life group of a 0x008b answer (32 bytes). FANUC's library
+    /// reads `ntool`, `life`, `count_type` and `count` (cnc_rdgrpinfo) and,
+    /// on the 16i class, `opt_grp` (cnc_rdtlusegrp); the other words are
+    /// not read by any function learnt so far.
+    pub struct GroupRecord {
+        pub ntool: i32,
+        pub w1: i32,
+        pub life: i32,
+        pub count_type: i32,
+        pub count: i32,
+        pub w5: i32,
+        pub opt_grp: i32,
+        pub w7: i32,
+    }
+}
+
+/// Payload of 0x008b [s, e]: an i32 (the first group's number; read by
+/// cnc_rdlife / cnc_rdcount / cnc_rdntool as `datano`, not by
+/// cnc_rdgrpinfo), then whole [`GroupRecord`]s: FANUC's library counts
+/// (length - 4) / 32 of them and ignores a ragged tail; an answer shorter
+/// than 4 bytes has none.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct GroupRange {
+    pub first: i32,
+    pub groups: Vec<GroupRecord>,
+}
+
+impl Wire for GroupRange {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.first);
+        self.groups.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        if r.remaining() < 4 {
+            return Ok(GroupRange::default());
+        }
+        let first = r.i32()?;
+        let mut groups = Vec::new();
+        while r.remaining() >= 32 {
+            groups.push(GroupRecord::decode(r)?);
+        }
+        Ok(GroupRange { first, groups })
+    }
+}
+
+/// cnc_rdgrpinfo: groups `s..=e`, e capped at s + 43 as FANUC's library
+/// caps it.
+pub fn grpinfo(s: i16, e: i16) -> Single<GroupRange> {
+    let s = i32::from(s);
+    let e = i32::from(e).min(s + GROUPS_PER_REQUEST - 1);
+    Single::new(ReqSub::cnc(TLGROUP, &[s, e]))
+}
+
+wire_struct! {
+    /// One group of a 0x004c write (20 bytes): the life, the counter type
+    /// and the counter from IODBTGI (`n_tool` is not sent), then two words
+    /// FANUC's library always sends as -1.
+    pub struct GroupWrite {
+        pub life: i32,
+        pub count_type: i32,
+        pub count: i32,
+        pub w3: i32,
+        pub w4: i32,
+    }
+}
+
+/// Most groups one 0x004c write carries (e capped at s + 70), as FANUC's
+/// cnc_wrgrpinfo sends: 71 records of 20 bytes fit one request.
+pub const GROUPS_PER_WRITE: i32 = 71;
+
+/// cnc_wrgrpinfo: groups `s..=e` written (`groups` from `s` on; e capped
+/// at s + 70 as FANUC's library caps it); an empty answer.
+pub fn wrgrpinfo(s: i16, e: i16, groups: &[GroupWrite]) -> Single<super::offset::Ack> {
+    let (s, e) = (i32::from(s), i32::from(e));
+    let e = e.min(s + GROUPS_PER_WRITE - 1);
+    let n = (e - s + 1).max(0) as usize;
+    let payload = groups[..n.min(groups.len())].to_vec().to_bytes();
+    let args = [s, e];
+    Single::new(ReqSub::cnc(WRGRPINFO, &args).with_payload(payload))
+}
+
+wire_struct! {
+    /// Payload of 0x0048 (cnc_rdtlusegrp): the next, in-use and selected
+    /// tool life groups. A shorter answer reads as zeros, as FANUC's
+    /// library reads it.
+    pub struct UseGroups {
+        pub next: i32,
+        pub used: i32,
+        pub slct: i32,
+    }
+}
+
+pub fn usegrp() -> Single<UseGroups> {
+    Single::padded(ReqSub::cnc(TLUSEGRP, &[]))
+}
+
+/// cnc_rdtlusegrp's second frame: the optional group numbers of the
+/// groups (next, use, slct). The 30i class asks (1,0x1bf)[g, g] for each
+/// group that is not 0, but only when `next` is not 0 (the optional group
+/// number is the answer's second i32); the 16i class asks the group record
+/// (1,0x8b)[g, g] of all three, 0 included (the record's `opt_grp`);
+/// Series 15 sends nothing. A group 0, or one whose subpacket carries an
+/// error, reads -1.
+#[derive(Debug, Clone, Copy)]
+pub struct OptGroups(pub [i32; 3]);
+
+impl OptGroups {
+    /// The groups asked on class `c`, by their index in (next, use, slct).
+    fn asked(&self, c: CncClass) -> Vec<usize> {
+        match c {
+            CncClass::Series30 if self.0[0] != 0 => (0..3).filter(|&i| self.0[i] != 0).collect(),
+            CncClass::Series30 | CncClass::Series16 { kind: 2 } => Vec::new(),
+            CncClass::Series16 { .. } => vec![0, 1, 2],
+        }
+    }
+    /// Whether there is a second frame at all.
+    pub fn needed(&self, c: CncClass) -> bool {
+        !self.asked(c).is_empty()
+    }
+}
+
+impl Call for OptGroups {
+    /// The three optional group numbers, and the first error a subpacket
+    /// of a group that is not 0 carried (FANUC's library writes the
+    /// numbers and returns that error).
+    type Output = ([i32; 3], Option<crate::error::Error>);
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let cmd = if cx.class.is_16i() { TLGROUP } else { TLOPTGRP };
+        (self.asked(cx.class).iter())
+            .map(|&i| ReqSub::cnc(cmd, &[self.0[i], self.0[i]]))
+            .collect()
+    }
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
+        let (mut out, mut err) = ([-1; 3], None);
+        // The optional group number: 30i the second i32, 16i the record's
+        // opt_grp (bytes 28..32 after the 4-byte head).
+        let at = if cx.class.is_16i() { 28 } else { 4 };
+        for (k, i) in self.asked(cx.class).into_iter().enumerate() {
+            if resp.len() <= k {
+                sub(resp, k)?;
+            }
+            if self.0[i] == 0 {
+                continue;
+            }
+            let p = match sub(resp, k) {
+                Ok(s) => &s.payload,
+                Err(e) => {
+                    err.get_or_insert(e);
+                    continue;
+                }
+            };
+            let b = p.get(at..at + 4).ok_or(DecodeError::Short {
+                need: at + 4,
+                have: p.len(),
+            })?;
+            out[i] = i32::from_be_bytes([b[0], b[1], b[2], b[3]]);
+        }
+        Ok((out, err))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::proto::call::{Call, Ctx};
 
     #[test]
     fn the_tool_list_request_asks_the_answered_group_for_at_most_89_tools() {

@@ -556,8 +556,8 @@ impl CncService for Machine {
     }
 
     // --- tool ---
-    fn tool_group(&mut self, path: u16, grp: i32) -> Reply<crate::proto::tool::ToolGroup> {
-        self.tl_group(path, grp)
+    fn tool_groups(&mut self, path: u16, s: i32, e: i32) -> Reply<crate::proto::tool::GroupRange> {
+        self.tl_groups(path, s, e)
     }
     fn tool_list(
         &mut self,

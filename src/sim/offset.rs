@@ -7,11 +7,15 @@ use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo, WRWKCDSHFT};
 use crate::proto::packet::{CLASS_CNC, ReqSub};
-use crate::proto::tool::TLINSERT;
+use crate::proto::tool::{
+    GroupRange, GroupRecord, GroupWrite, TLINSERT, TLOPTGRP, TLUSEGRP, UseGroups, WRGRPINFO,
+};
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
 const NUMBER: CncError = CncError::NUMBER;
+/// cnc_modal's code of the T code (AUX_ORDER position 8, src/sim/modal.rs).
+const T_CODE: i32 = crate::proto::program::AUX_ORDER[8];
 const ATTRIB: CncError = CncError::new(ew::EW_ATTRIB);
 const LENGTH: CncError = CncError::new(ew::EW_LENGTH);
 
@@ -162,6 +166,9 @@ impl Machine {
         match (sub.class, sub.cmd) {
             (CLASS_CNC, WRWKCDSHFT) => Some(self.shift_write(sub)),
             (CLASS_CNC, TLINSERT) => Some(self.tl_insert(sub.path, sub.args).map(|_| Vec::new())),
+            (CLASS_CNC, WRGRPINFO) => Some(self.tl_write(sub)),
+            (CLASS_CNC, TLUSEGRP) => Some(self.tl_use(sub.path)),
+            (CLASS_CNC, TLOPTGRP) => Some(self.tl_optional(sub.path, sub.args[0])),
             _ => None,
         }
     }
@@ -273,15 +280,110 @@ impl Machine {
         Ok(p.tool_groups.len() as i32)
     }
 
-    /// 0x008b [grp, grp].
-    pub fn tl_group(&mut self, path: u16, grp: i32) -> Reply<crate::proto::tool::ToolGroup> {
-        let g = self.tool_group_of(path, grp)?;
-        Ok(crate::proto::tool::ToolGroup {
-            grp: g.number,
-            ntool: Value::decimal(g.tools.len() as i32, 0),
-            life: Value::decimal(g.life, 0),
-            count: Value::decimal(g.count, 0),
-        })
+    /// 0x008b [s, e]: s = e, one group (0: the first; absent: EW_NUMBER);
+    /// a range, every group number s..=e up to the highest the table
+    /// holds (numbers it lacks answer as empty groups); s < 1, e < s or s
+    /// past the highest: EW_NUMBER.
+    pub fn tl_groups(&mut self, path: u16, s: i32, e: i32) -> Reply<GroupRange> {
+        let rec = |g: &ToolGroupProfile| GroupRecord {
+            ntool: g.tools.len() as i32,
+            life: g.life,
+            count_type: g.count_type,
+            count: g.count,
+            opt_grp: g.optional,
+            ..GroupRecord::default()
+        };
+        if s == e {
+            let g = self.tool_group_of(path, s)?;
+            return Ok(GroupRange {
+                first: g.number,
+                groups: vec![rec(g)],
+            });
+        }
+        let groups = &(self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let last = groups.iter().map(|g| g.number).max().unwrap_or(0);
+        if s < 1 || e < s || s > last {
+            return Err(NUMBER);
+        }
+        let groups = (s..=e.min(last))
+            .map(|n| {
+                groups
+                    .iter()
+                    .find(|g| g.number == n)
+                    .map(rec)
+                    .unwrap_or_default()
+            })
+            .collect();
+        Ok(GroupRange { first: s, groups })
+    }
+
+    /// 0x004c [s, e, .., len] + 20-byte records (life, counter type,
+    /// counter, two words not used): groups s..=e written. Every group must
+    /// exist (else EW_NUMBER), the payload hold them (else EW_LENGTH), the
+    /// values be a counter type 0 or 1 and a life and counter from 0 (else
+    /// EW_DATA); a refused write changes nothing.
+    fn tl_write(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        let (s, e) = (sub.args[0], sub.args[1]);
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(sub.path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        if e < s {
+            return Err(NUMBER);
+        }
+        let n = (i64::from(e) - i64::from(s) + 1) as usize;
+        let recs = Vec::<GroupWrite>::from_bytes(&sub.payload).map_err(|_| LENGTH)?;
+        if recs.len() < n {
+            return Err(LENGTH);
+        }
+        let mut at = Vec::with_capacity(n);
+        for (k, r) in recs.iter().take(n).enumerate() {
+            let num = s + k as i32;
+            let i = groups.iter().position(|g| g.number == num).ok_or(NUMBER)?;
+            if !(0..=1).contains(&r.count_type) || r.life < 0 || r.count < 0 {
+                return Err(CncError::new(ew::EW_DATA));
+            }
+            at.push((i, r));
+        }
+        for (i, r) in at {
+            let g = &mut groups[i];
+            (g.life, g.count_type, g.count) = (r.life, r.count_type, r.count);
+        }
+        Ok(Vec::new())
+    }
+
+    /// The tool life group of the T code in effect (the running program's,
+    /// else the profile's modal T): the first group holding that tool
+    /// number, 0 when none does.
+    fn tl_group_in_use(&self, path: u16) -> Reply<i32> {
+        let t = self
+            .sim_modal_aux(path, T_CODE)?
+            .0
+            .first()
+            .map_or(0, |a| a.value);
+        Ok(self.tl_group_of_tool(path, t).unwrap_or(0))
+    }
+
+    /// 0x0048: next, in-use and selected groups. The simulator changes
+    /// tools at once and reads no block ahead: the group of the T code in
+    /// effect is selected, in use and the next to be used.
+    fn tl_use(&self, path: u16) -> Reply<Vec<u8>> {
+        let g = self.tl_group_in_use(path)?;
+        Ok(UseGroups {
+            next: g,
+            used: g,
+            slct: g,
+        }
+        .to_bytes())
+    }
+
+    /// 0x01bf [g, g] (30i class): group `g` and its optional group number.
+    fn tl_optional(&self, path: u16, g: i32) -> Reply<Vec<u8>> {
+        let opt = self.tool_group_of(path, g)?.optional;
+        Ok([g, opt].iter().flat_map(|x| x.to_be_bytes()).collect())
     }
 
     /// 0x004d [grp, s, e]: the tools with use numbers s..=e that exist.

@@ -77,3 +77,36 @@ pub struct IDBITD {
     pub r#type: c_short,
     pub data: LONG,
 }
+
+/// One group of IODBTGI.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTGI_DATA {
+    pub n_tool: LONG,
+    pub count_value: LONG,
+    pub counter: LONG,
+    pub count_type: LONG,
+}
+
+/// cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp`..=`e_grp` (5 as
+/// declared; the caller's `length` says how many really fit).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTGI {
+    pub s_grp: c_short,
+    pub dummy: c_short,
+    pub e_grp: c_short,
+    pub data: [IODBTGI_DATA; 5],
+}
+
+/// cnc_rdtlusegrp: the next, in-use and selected tool life groups.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBUSEGRP {
+    pub next: LONG,
+    pub r#use: LONG,
+    pub slct: LONG,
+    pub opt_next: LONG,
+    pub opt_use: LONG,
+    pub opt_slct: LONG,
+}

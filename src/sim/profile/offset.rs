@@ -62,6 +62,11 @@ pub struct ToolGroupProfile {
     pub life: i32,
     /// Tool life counter.
     pub count: i32,
+    /// What the counter counts (cnc_rdgrpinfo's count_type): 0 uses, 1
+    /// minutes (the simulator's convention).
+    pub count_type: i32,
+    /// The optional group number (cnc_rdtlusegrp's opt_*; 0: none).
+    pub optional: i32,
     /// The group's tools in use order (tool-use number 1, 2, ...).
     #[serde(rename = "tool")]
     pub tools: Vec<ToolProfile>,
