@@ -309,6 +309,10 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pt::OptGroups([a[0], a[1], a[2]]), cx, r),
     },
     Decoder {
+        names: &["cnc_rdtool"],
+        run: |cx, a, r| go(pt::RdTool::new(a[0], a[1]), cx, r),
+    },
+    Decoder {
         names: &["cnc_exeprgname"],
         run: |cx, _, r| go(pg::exeprgname(), cx, r),
     },

@@ -1336,6 +1336,55 @@ typedef struct IODBTO {
 } IODBTO;
 
 /*
+ cnc_rdtool: one tool of the tool management data.
+ */
+typedef struct IODBTLMNG {
+    LONG T_code;
+    LONG life_count;
+    LONG max_life;
+    LONG rest_life;
+    unsigned char life_stat;
+    unsigned char cust_bits;
+    unsigned short tool_info;
+    short H_code;
+    short D_code;
+    LONG spindle_speed;
+    LONG feedrate;
+    short magazine;
+    short pot;
+    short G_code;
+    short W_code;
+    short gno;
+    short grp;
+    short edge;
+    short org_magazine;
+    short org_pot;
+    unsigned char edge_num;
+    char reserve_c;
+    LONG reserved[2];
+    LONG custom1;
+    LONG custom2;
+    LONG custom3;
+    LONG custom4;
+    LONG custom5;
+    LONG custom6;
+    LONG custom7;
+    LONG custom8;
+    LONG custom9;
+    LONG custom10;
+    LONG custom11;
+    LONG custom12;
+    LONG custom13;
+    LONG custom14;
+    LONG custom15;
+    LONG custom16;
+    LONG custom17;
+    LONG custom18;
+    LONG custom19;
+    LONG custom20;
+} IODBTLMNG;
+
+/*
  One tool of a tool life group (ODBTG.data).
  */
 typedef struct ODBTG_DATA {
@@ -1574,6 +1623,47 @@ typedef struct ODBPMCTITLE {
     char written[48];
     char remarks[48];
 } ODBPMCTITLE;
+
+/*
+ cnc_rdtooldata: the tool data of a punch press.
+ */
+typedef struct IODBTLDT {
+    short slct;
+    LONG tool_no;
+    LONG x_axis_ofs;
+    LONG y_axis_ofs;
+    LONG turret_pos;
+    LONG chg_tl_no;
+    LONG punch_count;
+    LONG tool_life;
+    LONG m_tl_radius;
+    LONG m_tl_angle;
+    char tl_shape;
+    LONG tl_size_i;
+    LONG tl_size_j;
+    LONG tl_angle;
+    char x_axis_dec;
+    char y_axis_dec;
+    char turret_dec;
+    char m_radius_dec;
+    char m_angle_dec;
+    char tl_size_i_dec;
+    char tl_size_j_dec;
+    char tl_angle_dec;
+    short reserve[2];
+} IODBTLDT;
+
+/*
+ cnc_rdtoolinfo: the tool data sizes of a punch press.
+ */
+typedef struct ODBPTLINF {
+    short tld_max;
+    short mlt_max;
+    short reserve;
+    short tld_size[16];
+    short mlt_size[16];
+    short reserves[16];
+} ODBPTLINF;
 
 #ifdef __cplusplus
 extern "C" {
@@ -3061,6 +3151,20 @@ short cnc_rdtofsr(unsigned short FlibHndl,
                   short e_number,
                   short length,
                   struct IODBTO *tofs);
+
+/*
+ Reads `*num` entries of the tool management data from data number
+ `top_no` on, in exchanges of at most 9 (each asks from where the last
+ answer ended); `*num` becomes the number read. `top_no` below 1:
+ EW_NUMBER; `*num` 0 or less: EW_OK, `*num` = 0, both without traffic,
+ as FANUC's library. An error answered ends the call with it, `*num` the
+ entries read before.
+
+ # Safety
+ `num` must point to a writable short, `tool` to `*num` writable
+ IODBTLMNG.
+ */
+short cnc_rdtool(unsigned short FlibHndl, short top_no, short *num, struct IODBTLMNG *tool);
 
 /*
  Reads a tool life group with its tools: number of tools, life, counter,

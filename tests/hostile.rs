@@ -478,6 +478,12 @@ const PROBES: &[Probe] = &[
     ("cnc_rdtlusegrp", |h| {
         one(size::<ODBUSEGRP>(), |o| unsafe { cnc_rdtlusegrp(h, o.p()) })
     }),
+    ("cnc_rdtool", |h| {
+        let mut n: c_short = 3;
+        one(size::<IODBTLMNG>() * 3, |o| unsafe {
+            cnc_rdtool(h, 1, &mut n, o.p())
+        })
+    }),
     ("cnc_rdprogdir3", |h| {
         let (mut top, mut num): (c_long, c_short) = (0, 3);
         one(size::<PRGDIR3>() * 3, |o| unsafe {

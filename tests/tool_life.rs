@@ -180,3 +180,71 @@ fn the_group_in_use_follows_the_running_program() {
         sim::free(h);
     }
 }
+
+#[test]
+fn tool_management_data_reads_the_profile_and_the_groups_written() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let p = Profile::default();
+    let tools = &p.paths[0].managed_tools;
+    assert!(tools.len() >= 2);
+    let mut t = [IODBTLMNG::default(); 4];
+    let mut num: c_short = 4;
+    // Two exchanges' worth asked, the table ends after its entries: the
+    // CNC's EW_NUMBER with the entries read so far.
+    assert_eq!(
+        unsafe { cnc_rdtool(h, 1, &mut num, t.as_mut_ptr()) },
+        EW_NUMBER
+    );
+    assert_eq!(num as usize, tools.len());
+    for (x, m) in t.iter().zip(tools) {
+        assert_eq!(
+            (x.T_code, x.H_code, x.D_code, x.magazine, x.pot),
+            (
+                m.number,
+                m.length as i16,
+                m.radius as i16,
+                m.magazine as i16,
+                m.pot as i16
+            )
+        );
+        assert_eq!(
+            (x.spindle_speed, x.feedrate, x.grp),
+            (m.spindle_speed, m.feedrate, m.group as i16)
+        );
+        assert_eq!(x.rest_life, x.max_life - x.life_count);
+    }
+    // Without a group: the entry's own life; in one: the group's.
+    let (own, grouped) = (&t[1], &t[0]);
+    assert_eq!(
+        (own.life_count, own.max_life),
+        (tools[1].life_count, tools[1].max_life)
+    );
+    assert_eq!(own.custom1, tools[1].custom[0]);
+    let g = &p.paths[0].tool_groups[0];
+    assert_eq!((grouped.life_count, grouped.max_life), (g.count, g.life));
+
+    // cnc_wrgrpinfo changes the group: the managed tool in it follows.
+    let mut w = rdgrpinfo(h, g.number as c_short, g.number as c_short).expect("group");
+    w.data[0].counter = 1;
+    w.data[0].count_value = 40;
+    assert_eq!(unsafe { cnc_wrgrpinfo(h, 8 + 16, &mut w) }, EW_OK);
+    let mut one = IODBTLMNG::default();
+    let mut num: c_short = 1;
+    assert_eq!(unsafe { cnc_rdtool(h, 1, &mut num, &mut one) }, EW_OK);
+    assert_eq!(
+        (num, one.life_count, one.max_life, one.rest_life),
+        (1, 1, 40, 39)
+    );
+
+    unsafe {
+        // FANUC's local checks: no traffic.
+        let mut num: c_short = 1;
+        assert_eq!(cnc_rdtool(h, 0, &mut num, &mut one), EW_NUMBER);
+        assert_eq!(num, 1, "untouched");
+        num = -1;
+        assert_eq!(cnc_rdtool(h, 1, &mut num, &mut one), EW_OK);
+        assert_eq!(num, 0);
+        assert_eq!(cnc_rdtool(h, 1, std::ptr::null_mut(), &mut one), EW_DATA);
+    }
+    sim::free(h);
+}

@@ -3,14 +3,14 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::{ffi_boundary, ffi_read, len_of, nonnull, put_at};
+use super::{ffi_boundary, ffi_read, len_of, nonnull, put, put_at};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_FUNC, EW_NUMBER};
-use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, OptGroups, usegrp};
+use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, MNG_WORDS, OptGroups, RdTool, usegrp};
 use crate::proto::tool::{grpinfo as grpinfo_call, wrgrpinfo as wrgrpinfo_call};
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
-use crate::types::{IDBITD, IODBTGI, IODBTLCTL, ODBTG, ODBUSEGRP};
+use crate::types::{IDBITD, IODBTGI, IODBTLCTL, IODBTLMNG, ODBTG, ODBUSEGRP};
 use std::os::raw::{c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
@@ -232,4 +232,90 @@ pub unsafe extern "C" fn cnc_rdtlusegrp(FlibHndl: c_ushort, grp: *mut ODBUSEGRP)
 /// `base + off .. + size_of::<T>()` must be readable.
 unsafe fn get_at<T: Copy>(base: *const u8, off: usize) -> T {
     unsafe { base.add(off).cast::<T>().read_unaligned() }
+}
+
+/// Reads `*num` entries of the tool management data from data number
+/// `top_no` on, in exchanges of at most 9 (each asks from where the last
+/// answer ended); `*num` becomes the number read. `top_no` below 1:
+/// EW_NUMBER; `*num` 0 or less: EW_OK, `*num` = 0, both without traffic,
+/// as FANUC's library. An error answered ends the call with it, `*num` the
+/// entries read before.
+///
+/// # Safety
+/// `num` must point to a writable short, `tool` to `*num` writable
+/// IODBTLMNG.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtool(
+    FlibHndl: c_ushort,
+    top_no: c_short,
+    num: *mut c_short,
+    tool: *mut IODBTLMNG,
+) -> c_short {
+    ffi_boundary!("cnc_rdtool", {
+        let h = handles::get(FlibHndl)?;
+        let np = nonnull(num)?;
+        let out = nonnull(tool)?.cast::<u8>();
+        if top_no < 1 {
+            return Err(Error::local(EW_NUMBER, "top_no below 1"));
+        }
+        let want = i32::from(unsafe { np.read_unaligned() });
+        let (mut got, mut top, mut empty) = (0i32, i32::from(top_no), 0);
+        let r = loop {
+            if got >= want {
+                break Ok(());
+            }
+            let recs = match h.call(&RdTool::new(top, want - got)) {
+                Ok(r) => r,
+                Err(e) => break Err(e),
+            };
+            // FANUC's library asks again after an answer with no records;
+            // ours gives up after two in a row.
+            if recs.is_empty() {
+                empty += 1;
+                if empty == 2 {
+                    break Ok(());
+                }
+                continue;
+            }
+            empty = 0;
+            for r in &recs {
+                // SAFETY: `got` < `*num`, the caller's number of records.
+                unsafe { put_mng(out.add(140 * got as usize), &r.0) };
+                got += 1;
+            }
+            top += recs.len() as i32;
+        };
+        unsafe { put(np, got as c_short) };
+        r
+    })
+}
+
+/// One IODBTLMNG (140 bytes) from a 0x014b record (src/proto/tool.rs).
+///
+/// # Safety
+/// `o` must point to 140 writable bytes.
+unsafe fn put_mng(o: *mut u8, w: &[i32; MNG_WORDS]) {
+    unsafe {
+        for (k, v) in w[..4].iter().enumerate() {
+            put_at(o, 4 * k, *v);
+        }
+        put_at(o, 16, w[4] as u8);
+        put_at(o, 17, w[5] as u8);
+        put_at(o, 18, w[6] as u16);
+        put_at(o, 20, w[7] as i16);
+        put_at(o, 22, w[8] as i16);
+        put_at(o, 24, w[9]);
+        put_at(o, 28, w[10]);
+        for (k, v) in w[11..16].iter().enumerate() {
+            put_at(o, 32 + 2 * k, *v as i16);
+        }
+        put_at(o, 42, (w[16] >> 16) as i16);
+        put_at(o, 44, w[16] as i16);
+        put_at(o, 46, w[17] as i16);
+        put_at(o, 48, w[18] as i16);
+        put_at(o, 50, 0u8);
+        for (k, v) in w[19..].iter().enumerate() {
+            put_at(o, 60 + 4 * k, *v);
+        }
+    }
 }

@@ -292,6 +292,103 @@ impl Call for OptGroups {
     }
 }
 
+/// cnc_rdtool: tool management data, args [top, n] (n at most
+/// [`TOOLS_PER_MNG`]).
+pub const TLMNG: u16 = 0x014b;
+/// Most records one 0x014b request asks for, as FANUC's library asks (9
+/// records of 156 bytes and the count fit one answer).
+pub const TOOLS_PER_MNG: i32 = 9;
+/// The i32 words of one 0x014b record.
+pub const MNG_WORDS: usize = 39;
+
+/// One record of a 0x014b answer: 39 i32 words. FANUC's library writes
+/// IODBTLMNG from them: T_code w0, life_count w1, max_life w2, rest_life
+/// w3 (longs); life_stat and cust_bits the low bytes of w4 and w5;
+/// tool_info, H_code, D_code the low 16 bits of w6..w8; spindle_speed w9,
+/// feedrate w10; magazine, pot, G_code, W_code, gno the low 16 bits of
+/// w11..w15; grp the high and edge the low 16 bits of w16; org_magazine,
+/// org_pot the low 16 bits of w17, w18; custom1..20 w19..w38. edge_num is
+/// written 0, reserve_c and reserved are not written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MngRecord(pub [i32; MNG_WORDS]);
+
+impl Default for MngRecord {
+    fn default() -> Self {
+        MngRecord([0; MNG_WORDS])
+    }
+}
+
+impl Wire for MngRecord {
+    fn encode(&self, w: &mut Writer) {
+        for x in self.0 {
+            w.i32(x);
+        }
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let mut v = [0; MNG_WORDS];
+        for x in &mut v {
+            *x = r.i32()?;
+        }
+        Ok(MngRecord(v))
+    }
+}
+
+/// Payload of 0x014b: an i32 count, then that many records.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct MngList {
+    pub count: i32,
+    pub tools: Vec<MngRecord>,
+}
+
+impl Wire for MngList {
+    fn encode(&self, w: &mut Writer) {
+        w.i32(self.count);
+        self.tools.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let count = r.i32()?;
+        let mut tools = Vec::new();
+        while r.remaining() >= 4 * MNG_WORDS {
+            tools.push(MngRecord::decode(r)?);
+        }
+        Ok(MngList { count, tools })
+    }
+}
+
+/// One 0x014b exchange: records `top..top + n` (n capped at 9). The
+/// answer's count says how many records it holds; FANUC's library takes
+/// that many, reading the bytes a short answer lacks as zeros (a missing
+/// count is 0). Ours takes at most `n` of them.
+#[derive(Debug, Clone, Copy)]
+pub struct RdTool {
+    pub top: i32,
+    pub n: i32,
+}
+
+impl RdTool {
+    pub fn new(top: i32, want: i32) -> Self {
+        RdTool {
+            top,
+            n: want.clamp(0, TOOLS_PER_MNG),
+        }
+    }
+}
+
+impl Call for RdTool {
+    type Output = Vec<MngRecord>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(TLMNG, &[self.top, self.n])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<MngRecord>> {
+        let mut p = sub(resp, 0)?.payload.clone();
+        p.resize(p.len().max(4), 0);
+        let count = i32::from_be_bytes([p[0], p[1], p[2], p[3]]).clamp(0, self.n) as usize;
+        p.resize(p.len().max(4 + 4 * MNG_WORDS * count), 0);
+        let l = MngList::from_bytes(&p)?;
+        Ok(l.tools.into_iter().take(count).collect())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

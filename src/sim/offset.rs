@@ -8,7 +8,8 @@ use crate::ew;
 use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo, WRWKCDSHFT};
 use crate::proto::packet::{CLASS_CNC, ReqSub};
 use crate::proto::tool::{
-    GroupRange, GroupRecord, GroupWrite, TLINSERT, TLOPTGRP, TLUSEGRP, UseGroups, WRGRPINFO,
+    GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, TLINSERT, TLMNG, TLOPTGRP,
+    TLUSEGRP, UseGroups, WRGRPINFO,
 };
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
@@ -167,6 +168,7 @@ impl Machine {
             (CLASS_CNC, WRWKCDSHFT) => Some(self.shift_write(sub)),
             (CLASS_CNC, TLINSERT) => Some(self.tl_insert(sub.path, sub.args).map(|_| Vec::new())),
             (CLASS_CNC, WRGRPINFO) => Some(self.tl_write(sub)),
+            (CLASS_CNC, TLMNG) => Some(self.tl_managed(sub.path, sub.args[0], sub.args[1])),
             (CLASS_CNC, TLUSEGRP) => Some(self.tl_use(sub.path)),
             (CLASS_CNC, TLOPTGRP) => Some(self.tl_optional(sub.path, sub.args[0])),
             _ => None,
@@ -376,6 +378,64 @@ impl Machine {
             next: g,
             used: g,
             slct: g,
+        }
+        .to_bytes())
+    }
+
+    /// 0x014b [top, n]: tool management data top..top + n - 1, as many as
+    /// the table holds from `top` (top < 1, n < 1 or top past the table:
+    /// EW_NUMBER). A tool in a tool life group has its group's life and
+    /// counter.
+    fn tl_managed(&self, path: u16, top: i32, n: i32) -> Reply<Vec<u8>> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        let tools = &p.managed_tools;
+        if top < 1 || n < 1 || top as usize > tools.len() {
+            return Err(NUMBER);
+        }
+        let rec = |t: &super::profile::offset::ManagedTool| {
+            let g = p
+                .tool_groups
+                .iter()
+                .find(|g| t.group != 0 && g.number == t.group);
+            let (count, life) = g.map_or((t.life_count, t.max_life), |g| (g.count, g.life));
+            let mut w = [0; MNG_WORDS];
+            w[..19].copy_from_slice(&[
+                t.number,
+                count,
+                life,
+                life - count,
+                i32::from(t.life_stat),
+                0,
+                0,
+                t.length,
+                t.radius,
+                t.spindle_speed,
+                t.feedrate,
+                t.magazine,
+                t.pot,
+                0,
+                0,
+                0,
+                t.group << 16,
+                t.magazine,
+                t.pot,
+            ]);
+            for (d, c) in w[19..].iter_mut().zip(&t.custom) {
+                *d = *c;
+            }
+            MngRecord(w)
+        };
+        let list: Vec<MngRecord> = tools
+            .iter()
+            .skip(top as usize - 1)
+            .take(n as usize)
+            .map(rec)
+            .collect();
+        Ok(MngList {
+            count: list.len() as i32,
+            tools: list,
         }
         .to_bytes())
     }

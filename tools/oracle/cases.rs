@@ -662,6 +662,7 @@ const WORDS: &[Word] = &[
         )
     },
     w("rdtlusegrp", &[]),
+    w("rdtool", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("pmc_rdpmctitle", &[]),
     // Writes (each followed by its read-back).
     Word {

@@ -415,6 +415,7 @@ static char *text(int i, long *n) {
     WORD(rdgrpinfo, return F(cnc_rdgrpinfo)(H, N(1), N(2), N(3), B0))                             \
     WORD(wrgrpinfo, { fill_hex(b0, 2); return F(cnc_wrgrpinfo)(H, N(1), B0); })                   \
     WORD(rdtlusegrp, return F(cnc_rdtlusegrp)(H, B0))                                             \
+    WORD(rdtool, SHORT_IO(num, 2, F(cnc_rdtool)(H, N(1), &num, B0)))                              \
     WORD(instlifedt, { fill_hex(b0, 1); return F(cnc_instlifedt)(H, B0); })                       \
     WORD(pmc_rdpmctitle, return F(pmc_rdpmctitle)(H, B0))                                         \
     /* upload */                                                                                  \

@@ -83,3 +83,30 @@ pub struct ToolProfile {
     /// Tool information bits (skip, expired ...).
     pub info: i32,
 }
+
+/// `[[path.managed_tool]]`: one entry of the tool management data
+/// (cnc_rdtool), data numbers 1, 2, ... in order. With `group` set, the
+/// life and the life counter are that tool life group's (what cnc_wrgrpinfo
+/// writes); else `max_life` and `life_count`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct ManagedTool {
+    /// T code.
+    pub number: i32,
+    pub life_count: i32,
+    pub max_life: i32,
+    /// Life status (0 not used, 1 in use, 2 expired, 3 broken: the
+    /// simulator's numbers).
+    pub life_stat: u8,
+    /// H and D codes.
+    pub length: i32,
+    pub radius: i32,
+    pub spindle_speed: i32,
+    pub feedrate: i32,
+    pub magazine: i32,
+    pub pot: i32,
+    /// Tool life group number (0: none).
+    pub group: i32,
+    /// Custom data 1..20.
+    pub custom: Vec<i32>,
+}
