@@ -313,6 +313,20 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pt::RdTool::new(a[0], a[1]), cx, r),
     },
     Decoder {
+        names: &["cnc_rdtooldata"],
+        run: |cx, a, r| {
+            let c = pt::PunchData {
+                tool_no: a[0] as i16,
+                n: a[1] as i16,
+            };
+            go(c, cx, r)
+        },
+    },
+    Decoder {
+        names: &["cnc_rdtoolinfo"],
+        run: |cx, _, r| go(pt::PunchInfo, cx, r),
+    },
+    Decoder {
         names: &["cnc_exeprgname"],
         run: |cx, _, r| go(pg::exeprgname(), cx, r),
     },

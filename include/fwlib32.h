@@ -1385,6 +1385,35 @@ typedef struct IODBTLMNG {
 } IODBTLMNG;
 
 /*
+ cnc_rdtooldata: the tool data of a punch press.
+ */
+typedef struct IODBTLDT {
+    short slct;
+    LONG tool_no;
+    LONG x_axis_ofs;
+    LONG y_axis_ofs;
+    LONG turret_pos;
+    LONG chg_tl_no;
+    LONG punch_count;
+    LONG tool_life;
+    LONG m_tl_radius;
+    LONG m_tl_angle;
+    char tl_shape;
+    LONG tl_size_i;
+    LONG tl_size_j;
+    LONG tl_angle;
+    char x_axis_dec;
+    char y_axis_dec;
+    char turret_dec;
+    char m_radius_dec;
+    char m_angle_dec;
+    char tl_size_i_dec;
+    char tl_size_j_dec;
+    char tl_angle_dec;
+    short reserve[2];
+} IODBTLDT;
+
+/*
  One tool of a tool life group (ODBTG.data).
  */
 typedef struct ODBTG_DATA {
@@ -1407,6 +1436,18 @@ typedef struct ODBTG {
     LONG count;
     struct ODBTG_DATA data[5];
 } ODBTG;
+
+/*
+ cnc_rdtoolinfo: the tool data sizes of a punch press.
+ */
+typedef struct ODBPTLINF {
+    short tld_max;
+    short mlt_max;
+    short reserve;
+    short tld_size[16];
+    short mlt_size[16];
+    short reserves[16];
+} ODBPTLINF;
 
 /*
  cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
@@ -1623,47 +1664,6 @@ typedef struct ODBPMCTITLE {
     char written[48];
     char remarks[48];
 } ODBPMCTITLE;
-
-/*
- cnc_rdtooldata: the tool data of a punch press.
- */
-typedef struct IODBTLDT {
-    short slct;
-    LONG tool_no;
-    LONG x_axis_ofs;
-    LONG y_axis_ofs;
-    LONG turret_pos;
-    LONG chg_tl_no;
-    LONG punch_count;
-    LONG tool_life;
-    LONG m_tl_radius;
-    LONG m_tl_angle;
-    char tl_shape;
-    LONG tl_size_i;
-    LONG tl_size_j;
-    LONG tl_angle;
-    char x_axis_dec;
-    char y_axis_dec;
-    char turret_dec;
-    char m_radius_dec;
-    char m_angle_dec;
-    char tl_size_i_dec;
-    char tl_size_j_dec;
-    char tl_angle_dec;
-    short reserve[2];
-} IODBTLDT;
-
-/*
- cnc_rdtoolinfo: the tool data sizes of a punch press.
- */
-typedef struct ODBPTLINF {
-    short tld_max;
-    short mlt_max;
-    short reserve;
-    short tld_size[16];
-    short mlt_size[16];
-    short reserves[16];
-} ODBPTLINF;
 
 #ifdef __cplusplus
 extern "C" {
@@ -3167,6 +3167,18 @@ short cnc_rdtofsr(unsigned short FlibHndl,
 short cnc_rdtool(unsigned short FlibHndl, short top_no, short *num, struct IODBTLMNG *tool);
 
 /*
+ Reads the tool data of a punch press from data number `tool_no` on, at
+ most `*num` (7 per call on the 30i class, 10 on the 16i class);
+ `*num` becomes the number read. Other machines: EW_FUNC; `*num` 0 or
+ less: EW_LENGTH; both without traffic, as FANUC's library.
+
+ # Safety
+ `num` must point to a writable short, `tool` to `*num` writable
+ IODBTLDT.
+ */
+short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct IODBTLDT *tool);
+
+/*
  Reads a tool life group with its tools: number of tools, life, counter,
  then per tool its use number (1, 2, ...), tool number, length and radius
  offset numbers and information. `length` must hold the 20-byte head
@@ -3177,6 +3189,17 @@ short cnc_rdtool(unsigned short FlibHndl, short top_no, short *num, struct IODBT
  `toolgrp` must point to `length` writable bytes.
  */
 short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct ODBTG *toolgrp);
+
+/*
+ Reads the tool data sizes of a punch press (tool data and multi-tool
+ maxima and sizes). Other machines get EW_FUNC without traffic, as from
+ FANUC's library; the 16i class writes the places FANUC's library writes
+ there (src/proto/tool.rs).
+
+ # Safety
+ `info` must point to a writable ODBPTLINF.
+ */
+short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
 
 /*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into

@@ -248,3 +248,104 @@ fn tool_management_data_reads_the_profile_and_the_groups_written() {
     }
     sim::free(h);
 }
+
+const PUNCH: &str = r#"
+[cnc]
+class = "30i"
+
+[[path]]
+machine = "punch"
+
+[[path.axis]]
+name = "X"
+decimals = 3
+
+[[path.punch_tool]]
+number = 1
+x_offset = 1500
+turret = 1
+punch_count = 1234
+life = 50000
+size_i = 10000
+
+[[path.punch_tool]]
+number = 12
+turret = 2
+radius = 25000
+radius_angle = 45000
+angle = 90000
+decimals = 4
+angle_decimals = 2
+"#;
+
+#[test]
+fn punch_press_tool_data_reads_the_profile_and_a_mill_refuses_it() {
+    for class in ["30i", "16i"] {
+        let text = PUNCH.replace("\"30i\"", &format!("\"{class}\""));
+        let p = Profile::parse(&text).expect("profile");
+        let tools = p.paths[0].punch_tools.clone();
+        let s = Simulator::start(p, "127.0.0.1:0").expect("simulator");
+        let h = sim::alloc(&s);
+        let mut t = [IODBTLDT::default(); 3];
+        let mut num: c_short = 3;
+        assert_eq!(
+            unsafe { cnc_rdtooldata(h, 1, &mut num, t.as_mut_ptr()) },
+            EW_OK
+        );
+        assert_eq!(num as usize, tools.len(), "{class}");
+        for (x, m) in t.iter().zip(&tools) {
+            assert_eq!(
+                (
+                    x.tool_no,
+                    x.x_axis_ofs,
+                    x.turret_pos,
+                    x.punch_count,
+                    x.tool_life
+                ),
+                (m.number, m.x_offset, m.turret, m.punch_count, m.life)
+            );
+            assert_eq!(
+                (x.m_tl_radius, x.m_tl_angle, x.tl_size_i, x.tl_angle),
+                (m.radius, m.radius_angle, m.size_i, m.angle)
+            );
+            // The 16i class's record has no decimals.
+            let dec = if class == "30i" { m.decimals as i8 } else { 0 };
+            assert_eq!((x.x_axis_dec, x.tl_size_j_dec), (dec, dec), "{class}");
+        }
+        let mut one = IODBTLDT::default();
+        let mut num: c_short = 1;
+        assert_eq!(unsafe { cnc_rdtooldata(h, 2, &mut num, &mut one) }, EW_OK);
+        assert_eq!((num, one.tool_no), (1, tools[1].number));
+        num = 0;
+        assert_eq!(
+            unsafe { cnc_rdtooldata(h, 1, &mut num, &mut one) },
+            EW_LENGTH
+        );
+        num = 1;
+        assert_eq!(
+            unsafe { cnc_rdtooldata(h, 9, &mut num, &mut one) },
+            EW_NUMBER
+        );
+
+        let mut info = ODBPTLINF::default();
+        assert_eq!(unsafe { cnc_rdtoolinfo(h, &mut info) }, EW_OK);
+        assert_eq!(
+            (info.tld_max, info.tld_size[0]),
+            (tools.len() as i16, tools.len() as i16)
+        );
+        sim::free(h);
+    }
+
+    // A mill: EW_FUNC without traffic, the count untouched.
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let mut one = IODBTLDT::default();
+    let mut num: c_short = 1;
+    let mut info = ODBPTLINF::default();
+    unsafe {
+        assert_eq!(cnc_rdtooldata(h, 1, &mut num, &mut one), EW_FUNC);
+        assert_eq!(num, 1);
+        assert_eq!(cnc_rdtoolinfo(h, &mut info), EW_FUNC);
+        assert_eq!(cnc_rdtoolinfo(h, std::ptr::null_mut()), EW_DATA);
+    }
+    sim::free(h);
+}

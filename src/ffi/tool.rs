@@ -8,9 +8,10 @@ use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_FUNC, EW_NUMBER};
 use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, MNG_WORDS, OptGroups, RdTool, usegrp};
+use crate::proto::tool::{PunchData, PunchInfo};
 use crate::proto::tool::{grpinfo as grpinfo_call, wrgrpinfo as wrgrpinfo_call};
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
-use crate::types::{IDBITD, IODBTGI, IODBTLCTL, IODBTLMNG, ODBTG, ODBUSEGRP};
+use crate::types::{IDBITD, IODBTGI, IODBTLCTL, IODBTLDT, IODBTLMNG, ODBPTLINF, ODBTG, ODBUSEGRP};
 use std::os::raw::{c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
@@ -318,4 +319,88 @@ unsafe fn put_mng(o: *mut u8, w: &[i32; MNG_WORDS]) {
             put_at(o, 60 + 4 * k, *v);
         }
     }
+}
+
+/// True when the handle's current path is a punch press or laser
+/// (sysinfo mt_type " P" / " L"): FANUC's library sends the punch-press
+/// functions only to those, others get EW_FUNC without traffic.
+fn punch(h: &crate::client::handles::Handle) -> Result<(), Error> {
+    let mt = h.sysinfo().map(|s| s.mt_type);
+    if matches!(mt, Some([b' ', b'P' | b'L'])) {
+        Ok(())
+    } else {
+        Err(Error::local(EW_FUNC, "not a punch press"))
+    }
+}
+
+/// Reads the tool data of a punch press from data number `tool_no` on, at
+/// most `*num` (7 per call on the 30i class, 10 on the 16i class);
+/// `*num` becomes the number read. Other machines: EW_FUNC; `*num` 0 or
+/// less: EW_LENGTH; both without traffic, as FANUC's library.
+///
+/// # Safety
+/// `num` must point to a writable short, `tool` to `*num` writable
+/// IODBTLDT.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtooldata(
+    FlibHndl: c_ushort,
+    tool_no: c_short,
+    num: *mut c_short,
+    tool: *mut IODBTLDT,
+) -> c_short {
+    ffi_boundary!("cnc_rdtooldata", {
+        let h = handles::get(FlibHndl)?;
+        let np = nonnull(num)?;
+        let out = nonnull(tool)?.cast::<u8>();
+        punch(&h)?;
+        let n = unsafe { np.read_unaligned() };
+        if n <= 0 {
+            return Err(Error::length());
+        }
+        let recs = h.call(&PunchData { tool_no, n })?;
+        let decimals = !h.ctx().class.is_16i();
+        unsafe {
+            for (i, w) in recs.iter().enumerate() {
+                let o = out.add(68 * i);
+                put_at(o, 0, w[0] as i16);
+                for (k, at) in [1, 3, 5, 7, 9, 11, 13, 15, 17].into_iter().enumerate() {
+                    put_at(o, 4 + 4 * k, w[at]);
+                }
+                put_at(o, 40, w[19] as u8);
+                for (k, at) in [21, 23, 25].into_iter().enumerate() {
+                    put_at(o, 44 + 4 * k, w[at]);
+                }
+                if decimals {
+                    for k in 0..8 {
+                        put_at(o, 56 + k, w[27 + 2 * k] as u8);
+                    }
+                }
+            }
+            put(np, recs.len() as c_short);
+        }
+        Ok(())
+    })
+}
+
+/// Reads the tool data sizes of a punch press (tool data and multi-tool
+/// maxima and sizes). Other machines get EW_FUNC without traffic, as from
+/// FANUC's library; the 16i class writes the places FANUC's library writes
+/// there (src/proto/tool.rs).
+///
+/// # Safety
+/// `info` must point to a writable ODBPTLINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtoolinfo(FlibHndl: c_ushort, info: *mut ODBPTLINF) -> c_short {
+    ffi_boundary!("cnc_rdtoolinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(info)?.cast::<u8>();
+        punch(&h)?;
+        let v = h.call(&PunchInfo)?;
+        unsafe {
+            for (o, x) in v {
+                put_at(out, o, x);
+            }
+        }
+        Ok(())
+    })
 }

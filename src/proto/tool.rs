@@ -389,6 +389,122 @@ impl Call for RdTool {
     }
 }
 
+/// cnc_rdtoolinfo (punch press): no args.
+pub const PTLINFO: u16 = 0x0099;
+/// cnc_rdtooldata (punch press): args [0, tool_no, n].
+pub const PTLDATA: u16 = 0x009c;
+
+/// The 30i-class 0x0099 answer as FANUC's library reads it (108 bytes):
+/// tld_max, mlt_max and reserve the low 16 bits of three i32, then the 48
+/// shorts of tld_size, mlt_size and reserves. A shorter answer reads as
+/// zeros.
+pub const PTLINFO_LEN_30: usize = 108;
+/// The 16i class reads other places of the answer, as (ODBPTLINF byte
+/// offset, i16 index in the payload); the rest of ODBPTLINF is not
+/// written (learnt with distinct words, never seen from a real CNC).
+pub const PTLINFO_16: [(usize, usize); 30] = [
+    (0, 1),
+    (2, 3),
+    (4, 5),
+    (6, 6),
+    (8, 7),
+    (10, 8),
+    (12, 9),
+    (14, 10),
+    (16, 11),
+    (18, 12),
+    (20, 13),
+    (22, 14),
+    (24, 15),
+    (26, 16),
+    (28, 17),
+    (30, 18),
+    (38, 22),
+    (40, 29),
+    (42, 30),
+    (44, 23),
+    (46, 24),
+    (48, 31),
+    (50, 32),
+    (52, 33),
+    (54, 34),
+    (70, 38),
+    (72, 39),
+    (74, 40),
+    (76, 43),
+    (78, 44),
+];
+
+/// cnc_rdtoolinfo's answer, zero-extended to what the class reads: the
+/// ODBPTLINF bytes to write, as (offset, value).
+#[derive(Debug, Clone, Copy)]
+pub struct PunchInfo;
+
+impl Call for PunchInfo {
+    type Output = Vec<(usize, i16)>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(PTLINFO, &[])]
+    }
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
+        let mut p = sub(resp, 0)?.payload.clone();
+        p.resize(p.len().max(PTLINFO_LEN_30), 0);
+        let hw = |k: usize| i16::from_be_bytes([p[2 * k], p[2 * k + 1]]);
+        Ok(if cx.class.is_16i() {
+            PTLINFO_16.iter().map(|&(o, k)| (o, hw(k))).collect()
+        } else {
+            let head = [(0, hw(1)), (2, hw(3)), (4, hw(5))];
+            head.into_iter()
+                .chain((0..48).map(|i| (6 + 2 * i, hw(6 + i))))
+                .collect()
+        })
+    }
+}
+
+/// Most tool data one 0x009c request asks for: 7 records of 204 bytes
+/// (30i class), 10 of 132 (16i class).
+pub fn ptl_per_request(c: CncClass) -> i32 {
+    if c.is_16i() { 10 } else { 7 }
+}
+
+/// The i32 words of one 0x009c record: 51 (30i class), 33 (16i class).
+pub fn ptl_words(c: CncClass) -> usize {
+    if c.is_16i() { 33 } else { 51 }
+}
+
+/// cnc_rdtooldata: tool data `tool_no..` of a punch press, at most `n`;
+/// whole records of [`ptl_words`] i32, as many as the answer holds (FANUC's
+/// library writes them all; ours at most `n`). FANUC's library reads from a
+/// record: slct the low 16 bits of w0, tool_no w1, x_axis_ofs w3,
+/// y_axis_ofs w5, turret_pos w7, chg_tl_no w9, punch_count w11, tool_life
+/// w13, m_tl_radius w15, m_tl_angle w17, tl_shape the low byte of w19,
+/// tl_size_i w21, tl_size_j w23, tl_angle w25 and, on the 30i class only,
+/// the eight decimals the low bytes of w27, w29 .. w41.
+#[derive(Debug, Clone, Copy)]
+pub struct PunchData {
+    pub tool_no: i16,
+    pub n: i16,
+}
+
+impl Call for PunchData {
+    type Output = Vec<Vec<i32>>;
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let n = i32::from(self.n).min(ptl_per_request(cx.class));
+        vec![ReqSub::cnc(PTLDATA, &[0, i32::from(self.tool_no), n])]
+    }
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
+        let p = &sub(resp, 0)?.payload;
+        let size = 4 * ptl_words(cx.class);
+        Ok(p.chunks_exact(size)
+            .take(self.n.max(0) as usize)
+            .map(|r| {
+                r.chunks_exact(4)
+                    .map(|b| i32::from_be_bytes([b[0], b[1], b[2], b[3]]))
+                    .collect()
+            })
+            .collect())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -32,6 +32,7 @@ impl Machine {
         match kind {
             MachineKind::Mill => 0x204d,
             MachineKind::Lathe => 0x2054,
+            MachineKind::Punch => 0x2050,
         }
     }
 }
@@ -102,6 +103,7 @@ impl CncService for Machine {
         let mt = match p.machine {
             MachineKind::Mill => " M",
             MachineKind::Lathe => " T",
+            MachineKind::Punch => " P",
         };
         Ok(SysInfo {
             addinfo: c.addinfo,

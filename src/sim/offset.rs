@@ -8,8 +8,8 @@ use crate::ew;
 use crate::proto::offset::{Ack, Count, TOFS_SINGLE, TofsInfo, WRWKCDSHFT};
 use crate::proto::packet::{CLASS_CNC, ReqSub};
 use crate::proto::tool::{
-    GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, TLINSERT, TLMNG, TLOPTGRP,
-    TLUSEGRP, UseGroups, WRGRPINFO,
+    GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
+    PTLINFO_16, TLINSERT, TLMNG, TLOPTGRP, TLUSEGRP, UseGroups, WRGRPINFO,
 };
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
@@ -169,6 +169,8 @@ impl Machine {
             (CLASS_CNC, TLINSERT) => Some(self.tl_insert(sub.path, sub.args).map(|_| Vec::new())),
             (CLASS_CNC, WRGRPINFO) => Some(self.tl_write(sub)),
             (CLASS_CNC, TLMNG) => Some(self.tl_managed(sub.path, sub.args[0], sub.args[1])),
+            (CLASS_CNC, PTLDATA) => Some(self.punch_data(sub.path, sub.args[1], sub.args[2])),
+            (CLASS_CNC, PTLINFO) => Some(self.punch_info(sub.path)),
             (CLASS_CNC, TLUSEGRP) => Some(self.tl_use(sub.path)),
             (CLASS_CNC, TLOPTGRP) => Some(self.tl_optional(sub.path, sub.args[0])),
             _ => None,
@@ -438,6 +440,83 @@ impl Machine {
             tools: list,
         }
         .to_bytes())
+    }
+
+    /// A punch press path's tool data; other machines: EW_FUNC.
+    fn punch_tools(&self, path: u16) -> Reply<&[super::profile::offset::PunchTool]> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        if p.machine != super::profile::MachineKind::Punch {
+            return Err(CncError::FUNC);
+        }
+        Ok(&p.punch_tools)
+    }
+
+    fn is_16i(&self) -> bool {
+        self.profile.cnc.class == super::profile::Class::Series16
+    }
+
+    /// 0x009c [0, s, n]: tool data s.. of a punch press, as many as the
+    /// table holds, at most n (s past the table, s or n below 1:
+    /// EW_NUMBER). Records of 51 words (30i class) or 33 (16i class, no
+    /// decimals), the words FANUC's library reads (src/proto/tool.rs),
+    /// the others 0.
+    fn punch_data(&self, path: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        let tools = self.punch_tools(path)?;
+        if s < 1 || n < 1 || s as usize > tools.len() {
+            return Err(NUMBER);
+        }
+        let words = if self.is_16i() { 33 } else { 51 };
+        let mut out = Vec::new();
+        for t in tools.iter().skip(s as usize - 1).take(n as usize) {
+            let mut w = vec![0i32; words];
+            let vals = [
+                t.number,
+                t.x_offset,
+                t.y_offset,
+                t.turret,
+                t.change,
+                t.punch_count,
+                t.life,
+                t.radius,
+                t.radius_angle,
+                t.shape,
+                t.size_i,
+                t.size_j,
+                t.angle,
+            ];
+            for (k, v) in vals.into_iter().enumerate() {
+                w[1 + 2 * k] = v;
+            }
+            if words == 51 {
+                let (d, a) = (t.decimals, t.angle_decimals);
+                for (k, v) in [d, d, d, d, a, d, d, a].into_iter().enumerate() {
+                    w[27 + 2 * k] = v;
+                }
+            }
+            out.extend(w.iter().flat_map(|x| x.to_be_bytes()));
+        }
+        Ok(out)
+    }
+
+    /// 0x0099: the tool data sizes of a punch press: tld_max the number of
+    /// tool data, tld_size[0] the same, the rest 0 (the simulator's
+    /// choice), at the places each class's FANUC library reads.
+    fn punch_info(&self, path: u16) -> Reply<Vec<u8>> {
+        let n = self.punch_tools(path)?.len() as i16;
+        let mut hw = [0i16; 54];
+        if self.is_16i() {
+            for &(o, k) in &PTLINFO_16 {
+                if o == 0 || o == 6 {
+                    hw[k] = n;
+                }
+            }
+        } else {
+            hw[1] = n;
+            hw[6] = n;
+        }
+        Ok(hw.iter().flat_map(|x| x.to_be_bytes()).collect())
     }
 
     /// 0x01bf [g, g] (30i class): group `g` and its optional group number.

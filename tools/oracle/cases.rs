@@ -663,6 +663,8 @@ const WORDS: &[Word] = &[
     },
     w("rdtlusegrp", &[]),
     w("rdtool", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
+    w("rdtooldata", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
+    w("rdtoolinfo", &[]),
     w("pmc_rdpmctitle", &[]),
     // Writes (each followed by its read-back).
     Word {
@@ -1139,6 +1141,9 @@ pub fn class_profile(word: &str, profile: &'static str) -> &'static str {
     }
 }
 
+/// The words sent only to a punch press (profiles v3pu, v2pu).
+const PUNCH_WORDS: &[&str] = &["rdtooldata", "rdtoolinfo"];
+
 /// Every case of one word.
 pub fn cases_of(w: &Word) -> Vec<Case> {
     let mut out = Vec::new();
@@ -1153,6 +1158,26 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
     };
     let lists = arg_lists(w);
     let write_profiles: &[&'static str] = if w.writes { &["v3w", "v2w"] } else { &[] };
+    // Punch-press functions: every case on a punch press too (on the mill
+    // profiles FANUC's library sends nothing).
+    if PUNCH_WORDS.contains(&w.word) {
+        for profile in ["v3pu", "v2pu"] {
+            for (label, args) in &lists {
+                case(
+                    format!("{profile}_{label}"),
+                    profile,
+                    calls_for(w, args, None, &[]),
+                );
+            }
+            for (label, shape) in SHAPES {
+                case(
+                    format!("{profile}_shape_{label}"),
+                    profile,
+                    calls_for(w, &lists[0].1, Some(*shape), &[]),
+                );
+            }
+        }
+    }
     for profile in write_profiles {
         for (label, args) in &lists {
             case(

@@ -110,3 +110,51 @@ pub struct ManagedTool {
     /// Custom data 1..20.
     pub custom: Vec<i32>,
 }
+
+/// `[[path.punch_tool]]`: one tool of a punch press (cnc_rdtooldata; path
+/// `machine = "punch"`), data numbers 1, 2, ... in order. Lengths in the
+/// path's least input increment with `decimals` places, angles with
+/// `angle_decimals`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PunchTool {
+    pub number: i32,
+    pub x_offset: i32,
+    pub y_offset: i32,
+    pub turret: i32,
+    /// Changed tool number.
+    pub change: i32,
+    pub punch_count: i32,
+    pub life: i32,
+    /// Multi-tool radius and angle.
+    pub radius: i32,
+    pub radius_angle: i32,
+    pub shape: i32,
+    pub size_i: i32,
+    pub size_j: i32,
+    pub angle: i32,
+    pub decimals: i32,
+    pub angle_decimals: i32,
+}
+
+impl Default for PunchTool {
+    fn default() -> Self {
+        PunchTool {
+            number: 0,
+            x_offset: 0,
+            y_offset: 0,
+            turret: 0,
+            change: 0,
+            punch_count: 0,
+            life: 0,
+            radius: 0,
+            radius_angle: 0,
+            shape: 0,
+            size_i: 0,
+            size_j: 0,
+            angle: 0,
+            decimals: 3,
+            angle_decimals: 3,
+        }
+    }
+}
