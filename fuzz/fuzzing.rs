@@ -284,6 +284,49 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pt::tlctl(), cx, r),
     },
     Decoder {
+        names: &["cnc_rdgrpinfo"],
+        run: |cx, a, r| go(pt::grpinfo(a[0] as i16, a[1] as i16), cx, r),
+    },
+    Decoder {
+        names: &["cnc_wrgrpinfo"],
+        run: |cx, a, r| {
+            let g = pt::GroupWrite {
+                life: a[2],
+                count_type: a[2] & 1,
+                count: a[2] >> 1,
+                w3: -1,
+                w4: -1,
+            };
+            go(pt::wrgrpinfo(a[0] as i16, a[1] as i16, &[g; 3]), cx, r)
+        },
+    },
+    Decoder {
+        names: &["cnc_rdtlusegrp"],
+        run: |cx, _, r| go(pt::usegrp(), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdtlusegrp"],
+        run: |cx, a, r| go(pt::OptGroups([a[0], a[1], a[2]]), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdtool"],
+        run: |cx, a, r| go(pt::RdTool::new(a[0], a[1]), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdtooldata"],
+        run: |cx, a, r| {
+            let c = pt::PunchData {
+                tool_no: a[0] as i16,
+                n: a[1] as i16,
+            };
+            go(c, cx, r)
+        },
+    },
+    Decoder {
+        names: &["cnc_rdtoolinfo"],
+        run: |cx, _, r| go(pt::PunchInfo, cx, r),
+    },
+    Decoder {
         names: &["cnc_exeprgname"],
         run: |cx, _, r| go(pg::exeprgname(), cx, r),
     },

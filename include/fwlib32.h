@@ -612,6 +612,27 @@ typedef struct ODBTLIFE5 {
 } ODBTLIFE5;
 
 /*
+ One group of IODBTGI.
+ */
+typedef struct IODBTGI_DATA {
+    LONG n_tool;
+    LONG count_value;
+    LONG counter;
+    LONG count_type;
+} IODBTGI_DATA;
+
+/*
+ cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp`..=`e_grp` (5 as
+ declared; the caller's `length` says how many really fit).
+ */
+typedef struct IODBTGI {
+    short s_grp;
+    short dummy;
+    short e_grp;
+    struct IODBTGI_DATA data[5];
+} IODBTGI;
+
+/*
  cnc_rdmacro: one custom macro variable. The value is
  `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
  */
@@ -1206,6 +1227,18 @@ typedef struct IODBTLCTL {
 } IODBTLCTL;
 
 /*
+ cnc_rdtlusegrp: the next, in-use and selected tool life groups.
+ */
+typedef struct ODBUSEGRP {
+    LONG next;
+    LONG use;
+    LONG slct;
+    LONG opt_next;
+    LONG opt_use;
+    LONG opt_slct;
+} ODBUSEGRP;
+
+/*
  cnc_rdtofs: one tool offset value.
  */
 typedef struct ODBTOFS {
@@ -1303,6 +1336,84 @@ typedef struct IODBTO {
 } IODBTO;
 
 /*
+ cnc_rdtool: one tool of the tool management data.
+ */
+typedef struct IODBTLMNG {
+    LONG T_code;
+    LONG life_count;
+    LONG max_life;
+    LONG rest_life;
+    unsigned char life_stat;
+    unsigned char cust_bits;
+    unsigned short tool_info;
+    short H_code;
+    short D_code;
+    LONG spindle_speed;
+    LONG feedrate;
+    short magazine;
+    short pot;
+    short G_code;
+    short W_code;
+    short gno;
+    short grp;
+    short edge;
+    short org_magazine;
+    short org_pot;
+    unsigned char edge_num;
+    char reserve_c;
+    LONG reserved[2];
+    LONG custom1;
+    LONG custom2;
+    LONG custom3;
+    LONG custom4;
+    LONG custom5;
+    LONG custom6;
+    LONG custom7;
+    LONG custom8;
+    LONG custom9;
+    LONG custom10;
+    LONG custom11;
+    LONG custom12;
+    LONG custom13;
+    LONG custom14;
+    LONG custom15;
+    LONG custom16;
+    LONG custom17;
+    LONG custom18;
+    LONG custom19;
+    LONG custom20;
+} IODBTLMNG;
+
+/*
+ cnc_rdtooldata: the tool data of a punch press.
+ */
+typedef struct IODBTLDT {
+    short slct;
+    LONG tool_no;
+    LONG x_axis_ofs;
+    LONG y_axis_ofs;
+    LONG turret_pos;
+    LONG chg_tl_no;
+    LONG punch_count;
+    LONG tool_life;
+    LONG m_tl_radius;
+    LONG m_tl_angle;
+    char tl_shape;
+    LONG tl_size_i;
+    LONG tl_size_j;
+    LONG tl_angle;
+    char x_axis_dec;
+    char y_axis_dec;
+    char turret_dec;
+    char m_radius_dec;
+    char m_angle_dec;
+    char tl_size_i_dec;
+    char tl_size_j_dec;
+    char tl_angle_dec;
+    short reserve[2];
+} IODBTLDT;
+
+/*
  One tool of a tool life group (ODBTG.data).
  */
 typedef struct ODBTG_DATA {
@@ -1325,6 +1436,18 @@ typedef struct ODBTG {
     LONG count;
     struct ODBTG_DATA data[5];
 } ODBTG;
+
+/*
+ cnc_rdtoolinfo: the tool data sizes of a punch press.
+ */
+typedef struct ODBPTLINF {
+    short tld_max;
+    short mlt_max;
+    short reserve;
+    short tld_size[16];
+    short mlt_size[16];
+    short reserves[16];
+} ODBPTLINF;
 
 /*
  cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
@@ -2310,6 +2433,23 @@ short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *
 short cnc_rdgrpid2(unsigned short FlibHndl, long tno, struct ODBTLIFE5 *tlife);
 
 /*
+ Reads tool life groups `s_grp..=e_grp` (at most 44 per call): for each,
+ its number of tools, life, life counter and counter type; `e_grp` is
+ written back as the last group the CNC answered. `s_grp` below 1 or
+ `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must
+ hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH
+ with nothing written (checked after the answer, as FANUC's library).
+
+ # Safety
+ `grpinfo` must point to `length` writable bytes.
+ */
+short cnc_rdgrpinfo(unsigned short FlibHndl,
+                    short s_grp,
+                    short e_grp,
+                    short length,
+                    struct IODBTGI *grpinfo);
+
+/*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;
  `datano` the group number the CNC answered).
 
@@ -2951,6 +3091,20 @@ short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
 short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
 
 /*
+ Reads the next, in-use and selected tool life groups, then their
+ optional group numbers in a second exchange (the 30i class asks for
+ each group that is not 0 when the next group is not 0, the 16i class
+ reads the three group records, Series 15 asks nothing; a group not
+ asked, 0, or answered with an error reads -1). An error answered for a
+ group is returned after all six numbers are written, as FANUC's
+ library does.
+
+ # Safety
+ `grp` must point to a writable ODBUSEGRP.
+ */
+short cnc_rdtlusegrp(unsigned short FlibHndl, struct ODBUSEGRP *grp);
+
+/*
  Reads one tool offset value (`type`: offset kind, e.g. on a mill with
  memory C 0/1 radius wear/geometry, 2/3 length wear/geometry).
 
@@ -2999,6 +3153,32 @@ short cnc_rdtofsr(unsigned short FlibHndl,
                   struct IODBTO *tofs);
 
 /*
+ Reads `*num` entries of the tool management data from data number
+ `top_no` on, in exchanges of at most 9 (each asks from where the last
+ answer ended); `*num` becomes the number read. `top_no` below 1:
+ EW_NUMBER; `*num` 0 or less: EW_OK, `*num` = 0, both without traffic,
+ as FANUC's library. An error answered ends the call with it, `*num` the
+ entries read before.
+
+ # Safety
+ `num` must point to a writable short, `tool` to `*num` writable
+ IODBTLMNG.
+ */
+short cnc_rdtool(unsigned short FlibHndl, short top_no, short *num, struct IODBTLMNG *tool);
+
+/*
+ Reads the tool data of a punch press from data number `tool_no` on, at
+ most `*num` (7 per call on the 30i class, 10 on the 16i class);
+ `*num` becomes the number read. Other machines: EW_FUNC; `*num` 0 or
+ less: EW_LENGTH; both without traffic, as FANUC's library.
+
+ # Safety
+ `num` must point to a writable short, `tool` to `*num` writable
+ IODBTLDT.
+ */
+short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct IODBTLDT *tool);
+
+/*
  Reads a tool life group with its tools: number of tools, life, counter,
  then per tool its use number (1, 2, ...), tool number, length and radius
  offset numbers and information. `length` must hold the 20-byte head
@@ -3009,6 +3189,17 @@ short cnc_rdtofsr(unsigned short FlibHndl,
  `toolgrp` must point to `length` writable bytes.
  */
 short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct ODBTG *toolgrp);
+
+/*
+ Reads the tool data sizes of a punch press (tool data and multi-tool
+ maxima and sizes). Other machines get EW_FUNC without traffic, as from
+ FANUC's library; the 16i class writes the places FANUC's library writes
+ there (src/proto/tool.rs).
+
+ # Safety
+ `info` must point to a writable ODBPTLINF.
+ */
+short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
 
 /*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into
@@ -3324,6 +3515,18 @@ short cnc_upstart3(unsigned short FlibHndl, short type, long startno, long endno
  `prgname` must be NULL or a NUL-terminated string.
  */
 short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
+
+/*
+ Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
+ and counter type; `n_tool` is not sent). `e_grp` below `s_grp`:
+ EW_NUMBER; `length` (bytes) below 8 + 16 per group: EW_LENGTH; both
+ without traffic, as FANUC's library.
+
+ # Safety
+ `grpinfo` must point to a readable IODBTGI with `e_grp - s_grp + 1`
+ groups.
+ */
+short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpinfo);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.

@@ -391,6 +391,21 @@ rust_layouts! {
     // --- tool ---
     ODBTLIFE3 { datano, dummy, data }
     ODBTG { grp_num, dummy, ntool, life, count, data }
+    IODBTGI { s_grp, dummy, e_grp, data }
+    ODBUSEGRP { next, r#use, slct, opt_next, opt_use, opt_slct }
+    IODBTLMNG {
+        T_code, life_count, max_life, rest_life, life_stat, cust_bits, tool_info, H_code, D_code,
+        spindle_speed, feedrate, magazine, pot, G_code, W_code, gno, grp, edge, org_magazine,
+        org_pot, edge_num, reserve_c, reserved, custom1, custom2, custom3, custom4, custom5,
+        custom6, custom7, custom8, custom9, custom10, custom11, custom12, custom13, custom14,
+        custom15, custom16, custom17, custom18, custom19, custom20
+    }
+    IODBTLDT {
+        slct, tool_no, x_axis_ofs, y_axis_ofs, turret_pos, chg_tl_no, punch_count, tool_life,
+        m_tl_radius, m_tl_angle, tl_shape, tl_size_i, tl_size_j, tl_angle, x_axis_dec, y_axis_dec,
+        turret_dec, m_radius_dec, m_angle_dec, tl_size_i_dec, tl_size_j_dec, tl_angle_dec, reserve
+    }
+    ODBPTLINF { tld_max, mlt_max, reserve, tld_size, mlt_size, reserves }
     ODBTLIFE2 { dummy, data }
     ODBPTIME { num, data }
     ODBOMIF { om_max, om_sum, om_char }

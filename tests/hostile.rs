@@ -455,6 +455,20 @@ const PROBES: &[Probe] = &[
             cnc_rdtoolgrp(h, 1, size::<ODBTG>() as c_short, o.p())
         })
     }),
+    ("cnc_rdgrpinfo", |h| {
+        one(size::<IODBTGI>(), |o| unsafe {
+            cnc_rdgrpinfo(h, 1, 5, size::<IODBTGI>() as c_short, o.p())
+        })
+    }),
+    ("cnc_rdtlusegrp", |h| {
+        one(size::<ODBUSEGRP>(), |o| unsafe { cnc_rdtlusegrp(h, o.p()) })
+    }),
+    ("cnc_rdtool", |h| {
+        let mut n: c_short = 3;
+        one(size::<IODBTLMNG>() * 3, |o| unsafe {
+            cnc_rdtool(h, 1, &mut n, o.p())
+        })
+    }),
     ("cnc_rdprogdir3", |h| {
         let (mut top, mut num): (c_long, c_short) = (0, 3);
         one(size::<PRGDIR3>() * 3, |o| unsafe {

@@ -158,8 +158,9 @@ fn drop_test_items(s: &mut [u8]) {
 }
 
 fn word_at(s: &[u8], i: usize, w: &[u8]) -> bool {
+    // Not a raw identifier (`r#use`, a field named after the keyword).
     s[i..].starts_with(w)
-        && (i == 0 || !is_ident(s[i - 1]))
+        && (i == 0 || !is_ident(s[i - 1]) && s[i - 1] != b'#')
         && s.get(i + w.len()).is_none_or(|&c| !is_ident(c))
 }
 

@@ -3,12 +3,15 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::{ffi_boundary, len_of, nonnull, put_at};
+use super::{ffi_boundary, ffi_read, len_of, nonnull, put, put_at};
 use crate::client::handles;
 use crate::error::Error;
-use crate::ew::EW_FUNC;
+use crate::ew::{EW_FUNC, EW_NUMBER};
+use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, MNG_WORDS, OptGroups, RdTool, usegrp};
+use crate::proto::tool::{PunchData, PunchInfo};
+use crate::proto::tool::{grpinfo as grpinfo_call, wrgrpinfo as wrgrpinfo_call};
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
-use crate::types::{IDBITD, IODBTLCTL, ODBTG};
+use crate::types::{IDBITD, IODBTGI, IODBTLCTL, IODBTLDT, IODBTLMNG, ODBPTLINF, ODBTG, ODBUSEGRP};
 use std::os::raw::{c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
@@ -96,6 +99,308 @@ pub unsafe extern "C" fn cnc_instlifedt(FlibHndl: c_ushort, tool: *mut IDBITD) -
         let h = handles::get(FlibHndl)?;
         let t = unsafe { nonnull(tool)?.read_unaligned() };
         h.call(&tlinsert(t.datano, t.r#type, t.data))?;
+        Ok(())
+    })
+}
+
+/// Reads tool life groups `s_grp..=e_grp` (at most 44 per call): for each,
+/// its number of tools, life, life counter and counter type; `e_grp` is
+/// written back as the last group the CNC answered. `s_grp` below 1 or
+/// `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must
+/// hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH
+/// with nothing written (checked after the answer, as FANUC's library).
+///
+/// # Safety
+/// `grpinfo` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdgrpinfo(
+    FlibHndl: c_ushort,
+    s_grp: c_short,
+    e_grp: c_short,
+    length: c_short,
+    grpinfo: *mut IODBTGI,
+) -> c_short {
+    ffi_read!("cnc_rdgrpinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(grpinfo)?.cast::<u8>();
+        if s_grp < 1 || e_grp < s_grp {
+            return Err(Error::local(EW_NUMBER, "bad group range"));
+        }
+        let r = h.call(&grpinfo_call(s_grp, e_grp))?;
+        let n = r.groups.len();
+        if 8 + 16 * n as i32 > i32::from(length) {
+            return Err(Error::length());
+        }
+        unsafe {
+            put_at(out, 0, s_grp);
+            put_at(out, 4, (i32::from(s_grp) + n as i32 - 1) as c_short);
+            for (i, g) in r.groups.iter().enumerate() {
+                let o = 8 + 16 * i;
+                put_at(out, o, g.ntool);
+                put_at(out, o + 4, g.life);
+                put_at(out, o + 8, g.count);
+                put_at(out, o + 12, g.count_type);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
+/// and counter type; `n_tool` is not sent). `e_grp` below `s_grp`:
+/// EW_NUMBER; `length` (bytes) below 8 + 16 per group: EW_LENGTH; both
+/// without traffic, as FANUC's library.
+///
+/// # Safety
+/// `grpinfo` must point to a readable IODBTGI with `e_grp - s_grp + 1`
+/// groups.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrgrpinfo(
+    FlibHndl: c_ushort,
+    length: c_short,
+    grpinfo: *mut IODBTGI,
+) -> c_short {
+    ffi_boundary!("cnc_wrgrpinfo", {
+        let h = handles::get(FlibHndl)?;
+        let p = nonnull(grpinfo)?.cast::<u8>();
+        let (s, e) = unsafe { (get_at::<i16>(p, 0), get_at::<i16>(p, 4)) };
+        if e < s {
+            return Err(Error::local(EW_NUMBER, "e_grp below s_grp"));
+        }
+        let n = (i32::from(e) - i32::from(s) + 1) as usize;
+        if 8 + 16 * n as i32 > i32::from(length) {
+            return Err(Error::length());
+        }
+        let groups: Vec<GroupWrite> = (0..n.min(GROUPS_PER_WRITE as usize))
+            .map(|i| {
+                let o = 8 + 16 * i;
+                // SAFETY: the caller's `length` covers these groups.
+                let g = |k: usize| unsafe { get_at::<i32>(p, o + k) };
+                GroupWrite {
+                    life: g(4),
+                    count_type: g(12),
+                    count: g(8),
+                    w3: -1,
+                    w4: -1,
+                }
+            })
+            .collect();
+        h.call(&wrgrpinfo_call(s, e, &groups))?;
+        Ok(())
+    })
+}
+
+/// Reads the next, in-use and selected tool life groups, then their
+/// optional group numbers in a second exchange (the 30i class asks for
+/// each group that is not 0 when the next group is not 0, the 16i class
+/// reads the three group records, Series 15 asks nothing; a group not
+/// asked, 0, or answered with an error reads -1). An error answered for a
+/// group is returned after all six numbers are written, as FANUC's
+/// library does.
+///
+/// # Safety
+/// `grp` must point to a writable ODBUSEGRP.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtlusegrp(FlibHndl: c_ushort, grp: *mut ODBUSEGRP) -> c_short {
+    ffi_boundary!("cnc_rdtlusegrp", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(grp)?.cast::<u8>();
+        let u = h.call(&usegrp())?;
+        let groups = OptGroups([u.next, u.used, u.slct]);
+        let (opt, err) = if groups.needed(h.ctx().class) {
+            h.call(&groups)?
+        } else {
+            ([-1; 3], None)
+        };
+        unsafe {
+            for (i, v) in [u.next, u.used, u.slct].into_iter().chain(opt).enumerate() {
+                put_at(out, 4 * i, v);
+            }
+        }
+        match err {
+            Some(e) => {
+                h.note(&e);
+                Err(e)
+            }
+            None => Ok(()),
+        }
+    })
+}
+
+/// Reads a `T` at byte offset `off` of the caller's struct.
+///
+/// # Safety
+/// `base + off .. + size_of::<T>()` must be readable.
+unsafe fn get_at<T: Copy>(base: *const u8, off: usize) -> T {
+    unsafe { base.add(off).cast::<T>().read_unaligned() }
+}
+
+/// Reads `*num` entries of the tool management data from data number
+/// `top_no` on, in exchanges of at most 9 (each asks from where the last
+/// answer ended); `*num` becomes the number read. `top_no` below 1:
+/// EW_NUMBER; `*num` 0 or less: EW_OK, `*num` = 0, both without traffic,
+/// as FANUC's library. An error answered ends the call with it, `*num` the
+/// entries read before.
+///
+/// # Safety
+/// `num` must point to a writable short, `tool` to `*num` writable
+/// IODBTLMNG.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtool(
+    FlibHndl: c_ushort,
+    top_no: c_short,
+    num: *mut c_short,
+    tool: *mut IODBTLMNG,
+) -> c_short {
+    ffi_boundary!("cnc_rdtool", {
+        let h = handles::get(FlibHndl)?;
+        let np = nonnull(num)?;
+        let out = nonnull(tool)?.cast::<u8>();
+        if top_no < 1 {
+            return Err(Error::local(EW_NUMBER, "top_no below 1"));
+        }
+        let want = i32::from(unsafe { np.read_unaligned() });
+        let (mut got, mut top, mut empty) = (0i32, i32::from(top_no), 0);
+        let r = loop {
+            if got >= want {
+                break Ok(());
+            }
+            let recs = match h.call(&RdTool::new(top, want - got)) {
+                Ok(r) => r,
+                Err(e) => break Err(e),
+            };
+            // FANUC's library asks again after an answer with no records;
+            // ours gives up after two in a row.
+            if recs.is_empty() {
+                empty += 1;
+                if empty == 2 {
+                    break Ok(());
+                }
+                continue;
+            }
+            empty = 0;
+            for r in &recs {
+                // SAFETY: `got` < `*num`, the caller's number of records.
+                unsafe { put_mng(out.add(140 * got as usize), &r.0) };
+                got += 1;
+            }
+            top += recs.len() as i32;
+        };
+        unsafe { put(np, got as c_short) };
+        r
+    })
+}
+
+/// One IODBTLMNG (140 bytes) from a 0x014b record (src/proto/tool.rs).
+///
+/// # Safety
+/// `o` must point to 140 writable bytes.
+unsafe fn put_mng(o: *mut u8, w: &[i32; MNG_WORDS]) {
+    unsafe {
+        for (k, v) in w[..4].iter().enumerate() {
+            put_at(o, 4 * k, *v);
+        }
+        put_at(o, 16, w[4] as u8);
+        put_at(o, 17, w[5] as u8);
+        put_at(o, 18, w[6] as u16);
+        put_at(o, 20, w[7] as i16);
+        put_at(o, 22, w[8] as i16);
+        put_at(o, 24, w[9]);
+        put_at(o, 28, w[10]);
+        for (k, v) in w[11..16].iter().enumerate() {
+            put_at(o, 32 + 2 * k, *v as i16);
+        }
+        put_at(o, 42, (w[16] >> 16) as i16);
+        put_at(o, 44, w[16] as i16);
+        put_at(o, 46, w[17] as i16);
+        put_at(o, 48, w[18] as i16);
+        put_at(o, 50, 0u8);
+        for (k, v) in w[19..].iter().enumerate() {
+            put_at(o, 60 + 4 * k, *v);
+        }
+    }
+}
+
+/// True when the handle's current path is a punch press or laser
+/// (sysinfo mt_type " P" / " L"): FANUC's library sends the punch-press
+/// functions only to those, others get EW_FUNC without traffic.
+fn punch(h: &crate::client::handles::Handle) -> Result<(), Error> {
+    let mt = h.sysinfo().map(|s| s.mt_type);
+    if matches!(mt, Some([b' ', b'P' | b'L'])) {
+        Ok(())
+    } else {
+        Err(Error::local(EW_FUNC, "not a punch press"))
+    }
+}
+
+/// Reads the tool data of a punch press from data number `tool_no` on, at
+/// most `*num` (7 per call on the 30i class, 10 on the 16i class);
+/// `*num` becomes the number read. Other machines: EW_FUNC; `*num` 0 or
+/// less: EW_LENGTH; both without traffic, as FANUC's library.
+///
+/// # Safety
+/// `num` must point to a writable short, `tool` to `*num` writable
+/// IODBTLDT.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtooldata(
+    FlibHndl: c_ushort,
+    tool_no: c_short,
+    num: *mut c_short,
+    tool: *mut IODBTLDT,
+) -> c_short {
+    ffi_boundary!("cnc_rdtooldata", {
+        let h = handles::get(FlibHndl)?;
+        let np = nonnull(num)?;
+        let out = nonnull(tool)?.cast::<u8>();
+        punch(&h)?;
+        let n = unsafe { np.read_unaligned() };
+        if n <= 0 {
+            return Err(Error::length());
+        }
+        let recs = h.call(&PunchData { tool_no, n })?;
+        let decimals = !h.ctx().class.is_16i();
+        unsafe {
+            for (i, w) in recs.iter().enumerate() {
+                let o = out.add(68 * i);
+                put_at(o, 0, w[0] as i16);
+                for (k, at) in [1, 3, 5, 7, 9, 11, 13, 15, 17].into_iter().enumerate() {
+                    put_at(o, 4 + 4 * k, w[at]);
+                }
+                put_at(o, 40, w[19] as u8);
+                for (k, at) in [21, 23, 25].into_iter().enumerate() {
+                    put_at(o, 44 + 4 * k, w[at]);
+                }
+                if decimals {
+                    for k in 0..8 {
+                        put_at(o, 56 + k, w[27 + 2 * k] as u8);
+                    }
+                }
+            }
+            put(np, recs.len() as c_short);
+        }
+        Ok(())
+    })
+}
+
+/// Reads the tool data sizes of a punch press (tool data and multi-tool
+/// maxima and sizes). Other machines get EW_FUNC without traffic, as from
+/// FANUC's library; the 16i class writes the places FANUC's library writes
+/// there (src/proto/tool.rs).
+///
+/// # Safety
+/// `info` must point to a writable ODBPTLINF.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdtoolinfo(FlibHndl: c_ushort, info: *mut ODBPTLINF) -> c_short {
+    ffi_boundary!("cnc_rdtoolinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(info)?.cast::<u8>();
+        punch(&h)?;
+        let v = h.call(&PunchInfo)?;
+        unsafe {
+            for (o, x) in v {
+                put_at(out, o, x);
+            }
+        }
         Ok(())
     })
 }

@@ -32,6 +32,7 @@ impl Machine {
         match kind {
             MachineKind::Mill => 0x204d,
             MachineKind::Lathe => 0x2054,
+            MachineKind::Punch => 0x2050,
         }
     }
 }
@@ -102,6 +103,7 @@ impl CncService for Machine {
         let mt = match p.machine {
             MachineKind::Mill => " M",
             MachineKind::Lathe => " T",
+            MachineKind::Punch => " P",
         };
         Ok(SysInfo {
             addinfo: c.addinfo,
@@ -556,8 +558,8 @@ impl CncService for Machine {
     }
 
     // --- tool ---
-    fn tool_group(&mut self, path: u16, grp: i32) -> Reply<crate::proto::tool::ToolGroup> {
-        self.tl_group(path, grp)
+    fn tool_groups(&mut self, path: u16, s: i32, e: i32) -> Reply<crate::proto::tool::GroupRange> {
+        self.tl_groups(path, s, e)
     }
     fn tool_list(
         &mut self,

@@ -145,6 +145,8 @@ pub enum MachineKind {
     #[default]
     Mill,
     Lathe,
+    /// A punch press (mt_type " P"): cnc_rdtooldata, cnc_rdtoolinfo.
+    Punch,
 }
 
 #[derive(Debug, Clone, Deserialize, Default)]
@@ -201,6 +203,12 @@ pub struct Path {
     /// Tool life groups (src/sim/offset.rs).
     #[serde(rename = "tool_group")]
     pub tool_groups: Vec<offset::ToolGroupProfile>,
+    /// Tool management data, data numbers 1, 2, ... (cnc_rdtool).
+    #[serde(rename = "managed_tool")]
+    pub managed_tools: Vec<offset::ManagedTool>,
+    /// A punch press's tool data, data numbers 1, 2, ... (cnc_rdtooldata).
+    #[serde(rename = "punch_tool")]
+    pub punch_tools: Vec<offset::PunchTool>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]

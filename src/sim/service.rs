@@ -15,7 +15,7 @@ use crate::spec::Func;
 use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
 use crate::proto::history as phis;
 use crate::proto::offset::{self as ofs, Ack, Count};
-use crate::proto::tool::{TLGROUP, TLTOOLS, ToolGroup, ToolList};
+use crate::proto::tool::{GroupRange, TLGROUP, TLTOOLS, ToolList};
 use crate::proto::value::Value;
 // --- position ---
 // --- program ---
@@ -346,8 +346,8 @@ pub trait CncService: Send {
     }
 
     // --- tool ---
-    /// 0x008b [grp, grp]: a tool life group record.
-    fn tool_group(&mut self, path: u16, grp: i32) -> Reply<ToolGroup> {
+    /// 0x008b [s, e]: tool life group records (s = e: one group).
+    fn tool_groups(&mut self, path: u16, s: i32, e: i32) -> Reply<GroupRange> {
         unsupported()
     }
     /// 0x004d [grp, s, e]: tools s..=e of a group.
@@ -524,7 +524,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             ) => svc.history_records(p, c, a),
 
             // --- tool ---
-            (CLASS_CNC, TLGROUP) => enc(svc.tool_group(p, a[0])),
+            (CLASS_CNC, TLGROUP) => enc(svc.tool_groups(p, a[0], a[1])),
             (CLASS_CNC, TLTOOLS) => enc(svc.tool_list(p, a[0], a[1], a[2])),
             _ => match (svc.raw(sub), described::for_request(sub, class)) {
                 (Some(r), _) => r,

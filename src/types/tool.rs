@@ -2,7 +2,7 @@
 
 #[allow(unused_imports)]
 use super::{LONG, ULONG};
-use std::os::raw::{c_char, c_short};
+use std::os::raw::{c_char, c_short, c_uchar, c_ushort};
 
 /// cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
 #[repr(C)]
@@ -76,4 +76,128 @@ pub struct IDBITD {
     pub datano: c_short,
     pub r#type: c_short,
     pub data: LONG,
+}
+
+/// One group of IODBTGI.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTGI_DATA {
+    pub n_tool: LONG,
+    pub count_value: LONG,
+    pub counter: LONG,
+    pub count_type: LONG,
+}
+
+/// cnc_rdgrpinfo / cnc_wrgrpinfo: tool life groups `s_grp`..=`e_grp` (5 as
+/// declared; the caller's `length` says how many really fit).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTGI {
+    pub s_grp: c_short,
+    pub dummy: c_short,
+    pub e_grp: c_short,
+    pub data: [IODBTGI_DATA; 5],
+}
+
+/// cnc_rdtlusegrp: the next, in-use and selected tool life groups.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBUSEGRP {
+    pub next: LONG,
+    pub r#use: LONG,
+    pub slct: LONG,
+    pub opt_next: LONG,
+    pub opt_use: LONG,
+    pub opt_slct: LONG,
+}
+
+/// cnc_rdtool: one tool of the tool management data.
+#[allow(non_snake_case)]
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLMNG {
+    pub T_code: LONG,
+    pub life_count: LONG,
+    pub max_life: LONG,
+    pub rest_life: LONG,
+    pub life_stat: c_uchar,
+    pub cust_bits: c_uchar,
+    pub tool_info: c_ushort,
+    pub H_code: c_short,
+    pub D_code: c_short,
+    pub spindle_speed: LONG,
+    pub feedrate: LONG,
+    pub magazine: c_short,
+    pub pot: c_short,
+    pub G_code: c_short,
+    pub W_code: c_short,
+    pub gno: c_short,
+    pub grp: c_short,
+    pub edge: c_short,
+    pub org_magazine: c_short,
+    pub org_pot: c_short,
+    pub edge_num: c_uchar,
+    pub reserve_c: c_char,
+    pub reserved: [LONG; 2],
+    pub custom1: LONG,
+    pub custom2: LONG,
+    pub custom3: LONG,
+    pub custom4: LONG,
+    pub custom5: LONG,
+    pub custom6: LONG,
+    pub custom7: LONG,
+    pub custom8: LONG,
+    pub custom9: LONG,
+    pub custom10: LONG,
+    pub custom11: LONG,
+    pub custom12: LONG,
+    pub custom13: LONG,
+    pub custom14: LONG,
+    pub custom15: LONG,
+    pub custom16: LONG,
+    pub custom17: LONG,
+    pub custom18: LONG,
+    pub custom19: LONG,
+    pub custom20: LONG,
+}
+
+/// cnc_rdtooldata: the tool data of a punch press.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLDT {
+    pub slct: c_short,
+    pub tool_no: LONG,
+    pub x_axis_ofs: LONG,
+    pub y_axis_ofs: LONG,
+    pub turret_pos: LONG,
+    pub chg_tl_no: LONG,
+    pub punch_count: LONG,
+    pub tool_life: LONG,
+    pub m_tl_radius: LONG,
+    pub m_tl_angle: LONG,
+    pub tl_shape: c_char,
+    pub tl_size_i: LONG,
+    pub tl_size_j: LONG,
+    pub tl_angle: LONG,
+    pub x_axis_dec: c_char,
+    pub y_axis_dec: c_char,
+    pub turret_dec: c_char,
+    pub m_radius_dec: c_char,
+    pub m_angle_dec: c_char,
+    pub tl_size_i_dec: c_char,
+    pub tl_size_j_dec: c_char,
+    pub tl_angle_dec: c_char,
+    pub reserve: [c_short; 2],
+}
+
+/// cnc_rdtoolinfo: the tool data sizes of a punch press.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPTLINF {
+    pub tld_max: c_short,
+    pub mlt_max: c_short,
+    pub reserve: c_short,
+    pub tld_size: [c_short; 16],
+    pub mlt_size: [c_short; 16],
+    pub reserves: [c_short; 16],
 }

@@ -612,6 +612,59 @@ const WORDS: &[Word] = &[
     ),
     w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
     w("rdtlctldata", &[]),
+    // Tool life groups, tool management and punch-press tool data (tool branch).
+    wc(
+        "rdgrpinfo",
+        &["1|0|-1|2|3|9999", "2|1|0|-1|3|9999", "88|0|-1|8|24|40|1000"],
+        &[
+            "1 9999 1000",
+            "2 9999 1000",
+            "1 44 1000",
+            "1 45 1000",
+            "3 3 88",
+            "2 1 88",
+            "1 2 71",
+            "1 2 72",
+            "1 2 39",
+            "1 2 40",
+            "1 2 56",
+        ],
+    ),
+    Word {
+        after: &["rdgrpinfo 1 2 40"],
+        writes: true,
+        ..wc(
+            "wrgrpinfo",
+            &[],
+            &[
+                "40 hex:010000000200cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "24 hex:010000000100cccc02000000960000000a00000001000000",
+                "24 hex:010000000200cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "39 hex:010000000200cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "8 hex:010000000200cccc",
+                "0 hex:010000000200cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "-1 hex:010000000200cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "40 hex:000000000100cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "40 hex:020000000100cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "40 hex:ffff00000000cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "56 hex:010000000300cccc02000000960000000a000000010000000100000058020000050000000000000003000000070000000800000009000000",
+                "40 hex:020000000300cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "88 hex:010000000200cccc02000000960000000a0000000100000001000000580200000500000000000000",
+                "24 hex:020000000200cccc02000000960000000a00000001000000",
+                "24 hex:0f2700000f27cccc02000000960000000a00000001000000",
+                "0 hex:020000000100cccc",
+                "1428 hex:010000004700cccc02000000960000000a00000001000000",
+                "1448 hex:010000004800cccc02000000960000000a00000001000000",
+                "1608 hex:010000006400cccc02000000960000000a00000001000000",
+                "40 hex:010000000200cccc02000000960000000a0000000200000001000000580200000500000000000000",
+                "40 hex:010000000200cccc02000000960000000a00000001000000010000005802000005000000ffffffff",
+            ],
+        )
+    },
+    w("rdtlusegrp", &[]),
+    w("rdtool", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
+    w("rdtooldata", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
+    w("rdtoolinfo", &[]),
     w("pmc_rdpmctitle", &[]),
     // Writes (each followed by its read-back).
     Word {
@@ -1088,6 +1141,9 @@ pub fn class_profile(word: &str, profile: &'static str) -> &'static str {
     }
 }
 
+/// The words sent only to a punch press (profiles v3pu, v2pu).
+const PUNCH_WORDS: &[&str] = &["rdtooldata", "rdtoolinfo"];
+
 /// Every case of one word.
 pub fn cases_of(w: &Word) -> Vec<Case> {
     let mut out = Vec::new();
@@ -1102,6 +1158,26 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
     };
     let lists = arg_lists(w);
     let write_profiles: &[&'static str] = if w.writes { &["v3w", "v2w"] } else { &[] };
+    // Punch-press functions: every case on a punch press too (on the mill
+    // profiles FANUC's library sends nothing).
+    if PUNCH_WORDS.contains(&w.word) {
+        for profile in ["v3pu", "v2pu"] {
+            for (label, args) in &lists {
+                case(
+                    format!("{profile}_{label}"),
+                    profile,
+                    calls_for(w, args, None, &[]),
+                );
+            }
+            for (label, shape) in SHAPES {
+                case(
+                    format!("{profile}_shape_{label}"),
+                    profile,
+                    calls_for(w, &lists[0].1, Some(*shape), &[]),
+                );
+            }
+        }
+    }
     for profile in write_profiles {
         for (label, args) in &lists {
             case(

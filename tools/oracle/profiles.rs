@@ -26,6 +26,9 @@ pub fn profile(name: &str) -> Profile {
             .replacen("aut = 1  ", "aut = 0  ", 1)
     };
     let axes8 = |t: String| t.replacen("max_axes = 32", "max_axes = 8", 1);
+    // A punch press (cnc_rdtooldata, cnc_rdtoolinfo): path 1's tool data.
+    let punch =
+        |t: String| t.replacen("machine = \"mill\"", "machine = \"punch\"", 1) + PUNCH_TOOLS;
     let text = match name {
         "v3w" => writable(base.to_string()),
         "v2w" => writable(class16(1)),
@@ -38,7 +41,36 @@ pub fn profile(name: &str) -> Profile {
         // A 16i with 8 axes per path (cases.rs: `class_profile`).
         "v2a8" => axes8(class16(1)),
         "v2p2a8" => format!("{}{second_path}", axes8(class16(1))),
+        "v3pu" => punch(base.to_string()),
+        "v2pu" => punch(class16(1)),
         other => panic!("unknown profile {other}"),
     };
     Profile::parse(&text).unwrap_or_else(|e| panic!("profile {name}: {e}"))
 }
+
+/// The punch profiles' tool data (appended: path 1 is the only path).
+const PUNCH_TOOLS: &str = "
+[[path.punch_tool]]
+number = 1
+x_offset = 1500
+y_offset = -2500
+turret = 1
+punch_count = 1234
+life = 50000
+shape = 1
+size_i = 10000
+decimals = 3
+
+[[path.punch_tool]]
+number = 12
+turret = 2
+change = 3
+radius = 25000
+radius_angle = 45000
+shape = 2
+size_i = 8000
+size_j = 4000
+angle = 90000
+decimals = 4
+angle_decimals = 3
+";

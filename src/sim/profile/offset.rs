@@ -62,6 +62,11 @@ pub struct ToolGroupProfile {
     pub life: i32,
     /// Tool life counter.
     pub count: i32,
+    /// What the counter counts (cnc_rdgrpinfo's count_type): 0 uses, 1
+    /// minutes (the simulator's convention).
+    pub count_type: i32,
+    /// The optional group number (cnc_rdtlusegrp's opt_*; 0: none).
+    pub optional: i32,
     /// The group's tools in use order (tool-use number 1, 2, ...).
     #[serde(rename = "tool")]
     pub tools: Vec<ToolProfile>,
@@ -77,4 +82,79 @@ pub struct ToolProfile {
     pub radius: i32,
     /// Tool information bits (skip, expired ...).
     pub info: i32,
+}
+
+/// `[[path.managed_tool]]`: one entry of the tool management data
+/// (cnc_rdtool), data numbers 1, 2, ... in order. With `group` set, the
+/// life and the life counter are that tool life group's (what cnc_wrgrpinfo
+/// writes); else `max_life` and `life_count`.
+#[derive(Debug, Clone, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct ManagedTool {
+    /// T code.
+    pub number: i32,
+    pub life_count: i32,
+    pub max_life: i32,
+    /// Life status (0 not used, 1 in use, 2 expired, 3 broken: the
+    /// simulator's numbers).
+    pub life_stat: u8,
+    /// H and D codes.
+    pub length: i32,
+    pub radius: i32,
+    pub spindle_speed: i32,
+    pub feedrate: i32,
+    pub magazine: i32,
+    pub pot: i32,
+    /// Tool life group number (0: none).
+    pub group: i32,
+    /// Custom data 1..20.
+    pub custom: Vec<i32>,
+}
+
+/// `[[path.punch_tool]]`: one tool of a punch press (cnc_rdtooldata; path
+/// `machine = "punch"`), data numbers 1, 2, ... in order. Lengths in the
+/// path's least input increment with `decimals` places, angles with
+/// `angle_decimals`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PunchTool {
+    pub number: i32,
+    pub x_offset: i32,
+    pub y_offset: i32,
+    pub turret: i32,
+    /// Changed tool number.
+    pub change: i32,
+    pub punch_count: i32,
+    pub life: i32,
+    /// Multi-tool radius and angle.
+    pub radius: i32,
+    pub radius_angle: i32,
+    pub shape: i32,
+    pub size_i: i32,
+    pub size_j: i32,
+    pub angle: i32,
+    pub decimals: i32,
+    pub angle_decimals: i32,
+}
+
+impl Default for PunchTool {
+    fn default() -> Self {
+        PunchTool {
+            number: 0,
+            x_offset: 0,
+            y_offset: 0,
+            turret: 0,
+            change: 0,
+            punch_count: 0,
+            life: 0,
+            radius: 0,
+            radius_angle: 0,
+            shape: 0,
+            size_i: 0,
+            size_j: 0,
+            angle: 0,
+            decimals: 3,
+            angle_decimals: 3,
+        }
+    }
 }
