@@ -1457,6 +1457,14 @@ typedef struct ODBPMCERR {
 } ODBPMCERR;
 
 /*
+ pmc_rdalmmsg: one PMC alarm message (the caller passes an array of
+ them); text, zero-padded.
+ */
+typedef struct ODBPMCALM {
+    char almmsg[128];
+} ODBPMCALM;
+
+/*
  One area of ODBPMCINF.
  */
 typedef struct ODBPMCINF_info {
@@ -3492,6 +3500,19 @@ short pmc_get_number_of_pmc(unsigned short FlibHndl, long *piNum);
 short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *count);
 
 /*
+ Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
+ into `types`, one short each. No more than the range holds is written
+ (FANUC's library copies the whole answer).
+
+ # Safety
+ `types` must point to `e_number - s_number + 1` writable shorts.
+ */
+short pmc_get_timer_type(unsigned short FlibHndl,
+                         unsigned short s_number,
+                         unsigned short e_number,
+                         short *types);
+
+/*
  The detail of the last PMC error on this handle (pmc_* functions only;
  cnc_getdtailerr keeps the CNC's).
 
@@ -3499,6 +3520,27 @@ short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *cou
  `err` must point to a writable ODBPMCERR.
  */
 short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
+
+/*
+ Reads the PMC's alarm messages from the `s_number`-th on: `*read_num`
+ in is how many (`pmcalm` holds that many ODBPMCALM), out how many were
+ written; `*exist` is -1 (no alarm), 0 (all read) or 1 (more alarms
+ after these). FANUC's library asks for at most 11 per exchange and asks
+ again from where the answer ended while the CNC says more exist and
+ fewer than `*read_num` were read. `s_number` < 1 is EW_NUMBER,
+ `*read_num` < 1 EW_DATA, before any traffic; a CNC error sets
+ `*read_num` to 0. Never more messages than `*read_num` are written
+ (FANUC's library writes all an answer announces).
+
+ # Safety
+ `read_num` and `exist` must point to writable shorts, `pmcalm` to
+ `*read_num` writable ODBPMCALM.
+ */
+short pmc_rdalmmsg(unsigned short FlibHndl,
+                   short s_number,
+                   short *read_num,
+                   short *exist,
+                   struct ODBPMCALM *pmcalm);
 
 /*
  Reads the PMC's address areas (letter, attribute, first and last
@@ -3550,6 +3592,18 @@ short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
  (the CNC is asked first; on its refusal the selection stays).
  */
 short pmc_select_pmc_unit(unsigned short FlibHndl, long unittype);
+
+/*
+ Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
+ from `types`, one short each.
+
+ # Safety
+ `types` must point to `e_number - s_number + 1` readable shorts.
+ */
+short pmc_set_timer_type(unsigned short FlibHndl,
+                         unsigned short s_number,
+                         unsigned short e_number,
+                         short *types);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

@@ -613,6 +613,45 @@ const WORDS: &[Word] = &[
     w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
     w("rdtlctldata", &[]),
     w("pmc_rdpmctitle", &[]),
+    // PMC alarm messages (A bits of the profile's messages) and timer
+    // types, on unit 1, then with many alarms (A0-A1 written: 14, more
+    // than one answer holds) and on unit 2.
+    Word {
+        after: &[
+            "pmc_wrpmcrng 10 hex:0400000000000100ff3f",
+            "pmc_rdalmmsg 1 20",
+            "pmc_rdalmmsg 12 2",
+            "pmc_select_pmc_unit 2",
+            "pmc_rdalmmsg 1 10",
+        ],
+        ..w("pmc_rdalmmsg", &["1|2|3|0|-1|100", "10|1|2|0|-1|11|12|100"])
+    },
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_get_timer_type 1 4"],
+        ..wc(
+            "pmc_get_timer_type",
+            &["1|0|2|3|250|251|65535", "4|0|1|2|3|250|251|65535"],
+            &["2 4", "3 3", "250 250", "1 714", "1 1000"],
+        )
+    },
+    Word {
+        after: &["pmc_get_timer_type 1 4"],
+        ..wc(
+            "pmc_set_timer_type",
+            &[],
+            &[
+                "1 1 hex:0100",
+                "1 2 hex:01000200",
+                "3 4 hex:05000100",
+                "2 2 hex:0600",
+                "1 3 hex:0100",
+                "0 1 hex:0100",
+                "2 1 hex:0100",
+                "250 250 hex:0200",
+                "251 251 hex:0000",
+            ],
+        )
+    },
     // Writes (each followed by its read-back).
     Word {
         after: &["rdparam 6711 0 8", "rdparam 1320 -1 132"],
