@@ -993,6 +993,32 @@ typedef struct IODBPI {
 } IODBPI;
 
 /*
+ cnc_rdpm_item / cnc_wrpm_item: one maintenance item.
+ */
+typedef struct IODBPMAINTE {
+    /*
+     Name (not terminated when 62 characters long).
+     */
+    char name[62];
+    /*
+     Life count type.
+     */
+    LONG type;
+    /*
+     Life, in minutes.
+     */
+    LONG total;
+    /*
+     Life left.
+     */
+    LONG remain;
+    /*
+     Life state.
+     */
+    LONG stat;
+} IODBPMAINTE;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -2724,6 +2750,45 @@ short cnc_rdpitchr(unsigned short FlibHndl,
                    struct IODBPI *pi);
 
 /*
+ Reads the names of the CNC's maintenance items from the
+ `start_num`-th on: `*data_num` in is how many (at most 23 are asked),
+ out how many were written. `*data_num` < 1 is EW_LENGTH without
+ traffic. Never more names than asked are written (FANUC's library
+ writes every name the CNC sends).
+
+ # Safety
+ `data_num` must point to a writable short, `item` to `*data_num`
+ writable 62-byte names.
+ */
+short cnc_rdpm_cncitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
+ Reads maintenance items from the `start_num`-th on: `*data_num` in is
+ how many (at most 17 are asked), out how many were written. Each item's
+ name (62 bytes) and its four longs are written, the two bytes between
+ them are left as they were, as FANUC's library. `*data_num` < 1 is
+ EW_LENGTH without traffic.
+
+ # Safety
+ `data_num` must point to a writable short, `item` to `*data_num`
+ writable IODBPMAINTE.
+ */
+short cnc_rdpm_item(unsigned short FlibHndl,
+                    short start_num,
+                    short *data_num,
+                    struct IODBPMAINTE *item);
+
+/*
+ Reads the machine tool builder's maintenance item names from the
+ `start_num`-th on, as cnc_rdpm_cncitem.
+
+ # Safety
+ `data_num` must point to a writable short, `item` to `*data_num`
+ writable 62-byte names.
+ */
+short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
  Reads positions with decimals, units and names: `type` 0 absolute,
  1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
  room (at least 1), out = axes written. As FANUC's library, a 16i-class
@@ -3442,6 +3507,31 @@ short cnc_wrpdf_line(unsigned short FlibHndl,
                      unsigned long line_no,
                      char *data,
                      unsigned long len);
+
+/*
+ Writes `data_num` maintenance items from the `start_num`-th on (at most
+ 17 are sent): name, type, total and remain (stat is sent, the CNC keeps
+ its own). `reset` 1 starts each item's life anew. `data_num` < 1 is
+ EW_LENGTH without traffic.
+
+ # Safety
+ `item` must point to `data_num` readable IODBPMAINTE.
+ */
+short cnc_wrpm_item(unsigned short FlibHndl,
+                    short reset,
+                    short start_num,
+                    short data_num,
+                    struct IODBPMAINTE *item);
+
+/*
+ Writes `data_num` machine tool builder's item names from the
+ `start_num`-th on (at most 22 are sent). `data_num` < 1 is EW_LENGTH
+ without traffic.
+
+ # Safety
+ `item` must point to `data_num` readable 62-byte names.
+ */
+short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num, char (*item)[62]);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

@@ -368,6 +368,7 @@ rust_layouts! {
     ODBPMCINF { datano, info }
     ODBPMCTITLE { mtb, machine, r#type, prgno, prgvers, prgdraw, date, design, written, remarks }
     ODBPMCALM { almmsg }
+    IODBPMAINTE { name, r#type, total, remain, stat }
     ODBPMCERR { err_no, err_dtno }
 
     // --- offset ---

@@ -40,11 +40,11 @@ pub struct Limits {
 /// tests/vectors). 30i: 16 subpackets (cnc_rdparam_ext, 16 numbers in
 /// frames of 16); 16i: 14 (the same call in frames of 14, 14, 4); Series
 /// 15: 9 (cnc_rddynamic). Bodies: 4126 bytes (cnc_wrmdiprog) on the 30i
-/// and 16i classes, 1350 (cnc_wrparas) on Series 15.
+/// and 16i classes, 1394 (cnc_wrpm_mcnitem, 22 names) on Series 15.
 pub fn default_limits(class: CncClass) -> Limits {
     let (subpackets, body) = match class {
         CncClass::Series30 => (16, 4126),
-        CncClass::Series16 { kind: 2 } => (9, 1350),
+        CncClass::Series16 { kind: 2 } => (9, 1394),
         CncClass::Series16 { .. } => (14, 4126),
     };
     Limits { subpackets, body }

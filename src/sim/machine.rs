@@ -574,6 +574,7 @@ impl CncService for Machine {
             .or_else(|| self.folder_raw(sub))
             .or_else(|| self.offset_raw(sub))
             .or_else(|| self.pmc_raw(sub))
+            .or_else(|| self.maintenance_raw(sub))
     }
 
     // --- upload ---
