@@ -20,6 +20,7 @@
 use fwlib32::proto::call::{self, Call, Ctx};
 use fwlib32::proto::described::{Described, for_request};
 use fwlib32::proto::frame::{Frame, FrameHeader, HEADER_LEN, ftype};
+use fwlib32::proto::maintenance as mt;
 use fwlib32::proto::open::{CncClass, OpenBody};
 use fwlib32::proto::packet::ReqSub;
 use fwlib32::proto::packet::{RespSub, decode_request, decode_response_into, encode_response};
@@ -227,6 +228,93 @@ const HAND: &[Decoder] = &[
     Decoder {
         names: &["pmc_rdpmctitle"],
         run: |cx, _, r| go(pmc::Title, cx, r),
+    },
+    Decoder {
+        names: &["pmc_rdalmmsg"],
+        run: |cx, a, r| go(pmc::AlarmMsgs { s: a[0], n: a[1] }, cx, r),
+    },
+    Decoder {
+        names: &["pmc_get_timer_type"],
+        run: |cx, a, r| {
+            let (s, e) = (a[0] as u16, a[1] as u16);
+            go(pmc::TimerTypes { s, e }, cx, r)
+        },
+    },
+    Decoder {
+        names: &["cnc_rdpm_cncitem", "cnc_rdpm_mcnitem"],
+        run: |cx, a, r| {
+            let cmd = if a[2] & 1 == 0 {
+                mt::RDPM_CNCITEM
+            } else {
+                mt::RDPM_MCNITEM
+            };
+            go(
+                mt::ReadNames {
+                    cmd,
+                    start: a[0] as i16,
+                    n: a[1] as i16,
+                },
+                cx,
+                r,
+            )
+        },
+    },
+    Decoder {
+        names: &["cnc_rdpm_item"],
+        run: |cx, a, r| {
+            go(
+                mt::ReadItems {
+                    start: a[0] as i16,
+                    n: a[1] as i16,
+                },
+                cx,
+                r,
+            )
+        },
+    },
+    Decoder {
+        names: &["cnc_wrpm_mcnitem"],
+        run: |cx, a, r| {
+            let names = vec![[a[2] as u8; mt::NAME_LEN]; (a[1] & 7) as usize];
+            go(
+                mt::WriteNames {
+                    start: a[0] as i16,
+                    names,
+                },
+                cx,
+                r,
+            )
+        },
+    },
+    Decoder {
+        names: &["cnc_wrpm_item"],
+        run: |cx, a, r| {
+            let item = mt::PmItem {
+                name: [a[3] as u8; mt::NAME_LEN],
+                r#type: a[2],
+                total: a[3],
+                remain: a[1],
+                stat: 0,
+            };
+            let items = vec![item; (a[1] & 7) as usize];
+            go(
+                mt::WriteItems {
+                    reset: a[0] as i16,
+                    start: a[1] as i16,
+                    items,
+                },
+                cx,
+                r,
+            )
+        },
+    },
+    Decoder {
+        names: &["pmc_set_timer_type"],
+        run: |cx, a, r| {
+            let (s, e) = (a[0] as u16, a[1] as u16);
+            let types = vec![a[2] as i16; (a[3] & 7) as usize];
+            go(pmc::SetTimerTypes { s, e, types }, cx, r)
+        },
     },
     Decoder {
         names: &["cnc_wrwkcdshft"],

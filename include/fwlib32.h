@@ -1014,6 +1014,32 @@ typedef struct IODBPI {
 } IODBPI;
 
 /*
+ cnc_rdpm_item / cnc_wrpm_item: one maintenance item.
+ */
+typedef struct IODBPMAINTE {
+    /*
+     Name (not terminated when 62 characters long).
+     */
+    char name[62];
+    /*
+     Life count type.
+     */
+    LONG type;
+    /*
+     Life, in minutes.
+     */
+    LONG total;
+    /*
+     Life left.
+     */
+    LONG remain;
+    /*
+     Life state.
+     */
+    LONG stat;
+} IODBPMAINTE;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -1578,6 +1604,14 @@ typedef struct ODBPMCERR {
     short err_no;
     short err_dtno;
 } ODBPMCERR;
+
+/*
+ pmc_rdalmmsg: one PMC alarm message (the caller passes an array of
+ them); text, zero-padded.
+ */
+typedef struct ODBPMCALM {
+    char almmsg[128];
+} ODBPMCALM;
 
 /*
  One area of ODBPMCINF.
@@ -2856,6 +2890,45 @@ short cnc_rdpitchr(unsigned short FlibHndl,
                    struct IODBPI *pi);
 
 /*
+ Reads the names of the CNC's maintenance items from the
+ `start_num`-th on: `*data_num` in is how many (at most 23 are asked),
+ out how many were written. `*data_num` < 1 is EW_LENGTH without
+ traffic. Never more names than asked are written (FANUC's library
+ writes every name the CNC sends).
+
+ # Safety
+ `data_num` must point to a writable short, `item` to `*data_num`
+ writable 62-byte names.
+ */
+short cnc_rdpm_cncitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
+ Reads maintenance items from the `start_num`-th on: `*data_num` in is
+ how many (at most 17 are asked), out how many were written. Each item's
+ name (62 bytes) and its four longs are written, the two bytes between
+ them are left as they were, as FANUC's library. `*data_num` < 1 is
+ EW_LENGTH without traffic.
+
+ # Safety
+ `data_num` must point to a writable short, `item` to `*data_num`
+ writable IODBPMAINTE.
+ */
+short cnc_rdpm_item(unsigned short FlibHndl,
+                    short start_num,
+                    short *data_num,
+                    struct IODBPMAINTE *item);
+
+/*
+ Reads the machine tool builder's maintenance item names from the
+ `start_num`-th on, as cnc_rdpm_cncitem.
+
+ # Safety
+ `data_num` must point to a writable short, `item` to `*data_num`
+ writable 62-byte names.
+ */
+short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
  Reads positions with decimals, units and names: `type` 0 absolute,
  1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
  room (at least 1), out = axes written. As FANUC's library, a 16i-class
@@ -3639,6 +3712,31 @@ short cnc_wrpdf_line(unsigned short FlibHndl,
                      unsigned long len);
 
 /*
+ Writes `data_num` maintenance items from the `start_num`-th on (at most
+ 17 are sent): name, type, total and remain (stat is sent, the CNC keeps
+ its own). `reset` 1 starts each item's life anew. `data_num` < 1 is
+ EW_LENGTH without traffic.
+
+ # Safety
+ `item` must point to `data_num` readable IODBPMAINTE.
+ */
+short cnc_wrpm_item(unsigned short FlibHndl,
+                    short reset,
+                    short start_num,
+                    short data_num,
+                    struct IODBPMAINTE *item);
+
+/*
+ Writes `data_num` machine tool builder's item names from the
+ `start_num`-th on (at most 22 are sent). `data_num` < 1 is EW_LENGTH
+ without traffic.
+
+ # Safety
+ `item` must point to `data_num` readable 62-byte names.
+ */
+short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num, char (*item)[62]);
+
+/*
  Writes one tool offset value. `data` is sent as its low 32 bits, as
  FANUC's x86-64 library does.
 
@@ -3695,6 +3793,19 @@ short pmc_get_number_of_pmc(unsigned short FlibHndl, long *piNum);
 short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *count);
 
 /*
+ Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
+ into `types`, one short each. No more than the range holds is written
+ (FANUC's library copies the whole answer).
+
+ # Safety
+ `types` must point to `e_number - s_number + 1` writable shorts.
+ */
+short pmc_get_timer_type(unsigned short FlibHndl,
+                         unsigned short s_number,
+                         unsigned short e_number,
+                         short *types);
+
+/*
  The detail of the last PMC error on this handle (pmc_* functions only;
  cnc_getdtailerr keeps the CNC's).
 
@@ -3702,6 +3813,27 @@ short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *cou
  `err` must point to a writable ODBPMCERR.
  */
 short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
+
+/*
+ Reads the PMC's alarm messages from the `s_number`-th on: `*read_num`
+ in is how many (`pmcalm` holds that many ODBPMCALM), out how many were
+ written; `*exist` is -1 (no alarm), 0 (all read) or 1 (more alarms
+ after these). FANUC's library asks for at most 11 per exchange and asks
+ again from where the answer ended while the CNC says more exist and
+ fewer than `*read_num` were read. `s_number` < 1 is EW_NUMBER,
+ `*read_num` < 1 EW_DATA, before any traffic; a CNC error sets
+ `*read_num` to 0. Never more messages than `*read_num` are written
+ (FANUC's library writes all an answer announces).
+
+ # Safety
+ `read_num` and `exist` must point to writable shorts, `pmcalm` to
+ `*read_num` writable ODBPMCALM.
+ */
+short pmc_rdalmmsg(unsigned short FlibHndl,
+                   short s_number,
+                   short *read_num,
+                   short *exist,
+                   struct ODBPMCALM *pmcalm);
 
 /*
  Reads the PMC's address areas (letter, attribute, first and last
@@ -3753,6 +3885,18 @@ short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
  (the CNC is asked first; on its refusal the selection stays).
  */
 short pmc_select_pmc_unit(unsigned short FlibHndl, long unittype);
+
+/*
+ Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
+ from `types`, one short each.
+
+ # Safety
+ `types` must point to `e_number - s_number + 1` readable shorts.
+ */
+short pmc_set_timer_type(unsigned short FlibHndl,
+                         unsigned short s_number,
+                         unsigned short e_number,
+                         short *types);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

@@ -24,6 +24,6 @@ pub mod types;
 #[allow(unused_imports)]
 pub use ffi::{
     absent::*, alarm::*, described::*, download::*, ext::*, folder::*, handle::*, history::*,
-    macros::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
-    upload::*,
+    macros::*, maintenance::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*,
+    status::*, tool::*, upload::*,
 };

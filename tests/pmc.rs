@@ -330,10 +330,131 @@ fn pmc_title_is_the_profiles() {
             .map(|&c| c as u8 as char)
             .collect()
     };
-    assert_eq!(text(&t.mtb), p.pmc.title[0]);
-    assert_eq!(text(&t.machine), p.pmc.title[1]);
-    assert_eq!(text(&t.prgvers), p.pmc.title[4]);
-    assert_eq!(text(&t.remarks), p.pmc.title[9]);
+    let title = &p.pmc.info[0].title;
+    assert_eq!(text(&t.mtb), title[0]);
+    assert_eq!(text(&t.machine), title[1]);
+    assert_eq!(text(&t.prgvers), title[4]);
+    assert_eq!(text(&t.remarks), title[9]);
     assert!(t.remarks[32..].iter().all(|&c| c == 0));
+    // The second unit has its own title.
+    assert_eq!(pmc_select_pmc_unit(h, 2), EW_OK);
+    let mut t = std::mem::MaybeUninit::<ODBPMCTITLE>::uninit();
+    assert_eq!(unsafe { pmc_rdpmctitle(h, t.as_mut_ptr()) }, EW_OK);
+    let t = unsafe { t.assume_init() };
+    assert_eq!(text(&t.machine), p.pmc.info[1].title[1]);
+    assert_ne!(p.pmc.info[1].title[1], title[1]);
+    sim::free(h);
+}
+
+/// pmc_rdalmmsg into a 0xCC-filled array of `room` messages: (code,
+/// *read_num after, *exist, the texts of the messages written).
+fn alarms(
+    h: c_ushort,
+    s: c_short,
+    num: c_short,
+    room: usize,
+) -> (c_short, c_short, c_short, Vec<String>) {
+    let mut buf = vec![0xCCu8; 128 * (room + 1)];
+    let (mut n, mut exist) = (num, 0x7777);
+    let r = unsafe { pmc_rdalmmsg(h, s, &mut n, &mut exist, buf.as_mut_ptr().cast()) };
+    let k = if r == EW_OK { n as usize } else { 0 };
+    assert!(
+        buf[128 * k..].iter().all(|&b| b == 0xCC),
+        "nothing past *read_num"
+    );
+    let texts = buf[..128 * k]
+        .chunks(128)
+        .map(|m| String::from_utf8_lossy(m.split(|&b| b == 0).next().unwrap()).into_owned())
+        .collect();
+    (r, n, exist, texts)
+}
+
+/// pmc_rdalmmsg: the profile's messages whose A bits are set; A bits the
+/// running machine writes raise and clear alarms; more than one answer
+/// holds (11) are read in several exchanges; the second unit has its own;
+/// local checks.
+#[test]
+fn pmc_alarm_messages_follow_the_a_bits() {
+    let p = Profile::default();
+    let (_s, h) = sim::start_alloc(p.clone());
+    let msg = |u: usize, i: usize| p.pmc.info[u].messages[i].clone();
+    // The profile: A0 = 0x05, messages 1 and 3.
+    assert_eq!(
+        alarms(h, 1, 10, 10),
+        (EW_OK, 2, 0, vec![msg(0, 0), msg(0, 2)])
+    );
+    assert_eq!(alarms(h, 1, 1, 1), (EW_OK, 1, 1, vec![msg(0, 0)]));
+    assert_eq!(alarms(h, 2, 5, 5), (EW_OK, 1, 0, vec![msg(0, 2)]));
+    assert_eq!(alarms(h, 3, 5, 5), (EW_OK, 0, 0, vec![]));
+    // The machine raises all fourteen (A0-A1), then clears them.
+    assert_eq!(write(h, 4, BYTE, 0, 1, &[0xff, 0x3f]), EW_OK);
+    let (r, n, exist, texts) = alarms(h, 1, 20, 20);
+    assert_eq!((r, n, exist), (EW_OK, 14, 0));
+    assert_eq!(texts, (0..14).map(|i| msg(0, i)).collect::<Vec<_>>());
+    assert_eq!(
+        alarms(h, 12, 2, 2),
+        (EW_OK, 2, 1, vec![msg(0, 11), msg(0, 12)])
+    );
+    assert_eq!(write(h, 4, BYTE, 0, 1, &[0, 0]), EW_OK);
+    assert_eq!(alarms(h, 1, 10, 10), (EW_OK, 0, -1, vec![]));
+    // The second unit: its own messages and A bits.
+    assert_eq!(pmc_select_pmc_unit(h, 2), EW_OK);
+    assert_eq!(alarms(h, 1, 10, 10), (EW_OK, 1, 0, vec![msg(1, 1)]));
+    // Local checks: nothing written, *read_num kept.
+    assert_eq!(alarms(h, 0, 10, 10), (EW_NUMBER, 10, 0x7777, vec![]));
+    assert_eq!(alarms(h, 1, 0, 1), (EW_DATA, 0, 0x7777, vec![]));
+    assert_eq!(alarms(h, 1, -1, 1), (EW_DATA, -1, 0x7777, vec![]));
+    sim::free(h);
+}
+
+fn timers(h: c_ushort, s: c_ushort, e: c_ushort) -> (c_short, Vec<c_short>) {
+    let mut t = vec![0x7777 as c_short; usize::from(e.max(s)) - usize::from(s) + 2];
+    let r = unsafe { pmc_get_timer_type(h, s, e, t.as_mut_ptr()) };
+    assert_eq!(*t.last().unwrap(), 0x7777, "nothing past the range");
+    t.pop();
+    (r, t)
+}
+
+/// pmc_get_timer_type / pmc_set_timer_type: the profile's types, a write
+/// read back, a refused write changes nothing, per unit; local checks.
+#[test]
+fn pmc_timer_types_are_written_and_read_back() {
+    let p = Profile::default();
+    let (_s, h) = sim::start_alloc(p.clone());
+    let types = &p.pmc.info[0].timer_types;
+    assert_eq!(timers(h, 1, 4), (EW_OK, types[..4].to_vec()));
+    let mut new: [c_short; 2] = [1, 2];
+    assert_eq!(
+        unsafe { pmc_set_timer_type(h, 2, 3, new.as_mut_ptr()) },
+        EW_OK
+    );
+    assert_eq!(timers(h, 1, 4), (EW_OK, vec![types[0], 1, 2, types[3]]));
+    // A type the PMC lacks: EW_DATA with the timer's number as detail,
+    // nothing changed.
+    let mut bad: [c_short; 2] = [3, 9];
+    assert_eq!(
+        unsafe { pmc_set_timer_type(h, 3, 4, bad.as_mut_ptr()) },
+        EW_DATA
+    );
+    let mut err = ODBPMCERR::default();
+    assert_eq!(unsafe { pmc_getdtailerr(h, &mut err) }, EW_OK);
+    assert_eq!(err.err_dtno, 4);
+    assert_eq!(timers(h, 1, 4), (EW_OK, vec![types[0], 1, 2, types[3]]));
+    // The last timer, and one past it (the CNC's EW_NUMBER).
+    assert_eq!(timers(h, 250, 250), (EW_OK, vec![0]));
+    assert_eq!(timers(h, 250, 251).0, EW_NUMBER);
+    // The second unit keeps its own.
+    assert_eq!(pmc_select_pmc_unit(h, 2), EW_OK);
+    assert_eq!(
+        timers(h, 1, 2),
+        (EW_OK, p.pmc.info[1].timer_types[..2].to_vec())
+    );
+    // Local checks, before any traffic.
+    assert_eq!(timers(h, 0, 1), (EW_NUMBER, vec![0x7777, 0x7777]));
+    assert_eq!(timers(h, 2, 1).0, EW_NUMBER);
+    assert_eq!(
+        unsafe { pmc_set_timer_type(h, 0, 1, new.as_mut_ptr()) },
+        EW_NUMBER
+    );
     sim::free(h);
 }

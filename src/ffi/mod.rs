@@ -11,6 +11,7 @@ pub mod folder;
 pub mod handle;
 pub mod history;
 pub mod macros;
+pub mod maintenance;
 pub mod memory;
 pub mod offset;
 pub mod param;

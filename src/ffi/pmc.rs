@@ -3,13 +3,15 @@
 use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_ATTRIB, EW_DATA, EW_LENGTH, EW_NUMBER};
+use crate::proto::pmc::{
+    ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs, SetTimerTypes, TITLE, TimerTypes, Title,
+};
 use crate::proto::pmc::{
     PMCINFO_MAX, PmcRange, ReadPmc, SelectUnit, UnitTypes, WritePmc, elem_size, rdpmcinfo,
     swap_elements,
 };
-use crate::proto::pmc::{TITLE, Title};
-use crate::types::{IODBPMC, ODBPMCERR, ODBPMCINF, ODBPMCINF_info, ODBPMCTITLE};
+use crate::types::{IODBPMC, ODBPMCALM, ODBPMCERR, ODBPMCINF, ODBPMCINF_info, ODBPMCTITLE};
 use std::os::raw::c_char;
 use std::os::raw::{c_long, c_short, c_ushort};
 use std::ptr::addr_of_mut;
@@ -273,5 +275,138 @@ pub unsafe extern "C" fn pmc_rdpmctitle(FlibHndl: c_ushort, title: *mut ODBPMCTI
             (from, to) = (from + wire, to + size);
         }
         Ok(())
+    })
+}
+
+/// Reads the PMC's alarm messages from the `s_number`-th on: `*read_num`
+/// in is how many (`pmcalm` holds that many ODBPMCALM), out how many were
+/// written; `*exist` is -1 (no alarm), 0 (all read) or 1 (more alarms
+/// after these). FANUC's library asks for at most 11 per exchange and asks
+/// again from where the answer ended while the CNC says more exist and
+/// fewer than `*read_num` were read. `s_number` < 1 is EW_NUMBER,
+/// `*read_num` < 1 EW_DATA, before any traffic; a CNC error sets
+/// `*read_num` to 0. Never more messages than `*read_num` are written
+/// (FANUC's library writes all an answer announces).
+///
+/// # Safety
+/// `read_num` and `exist` must point to writable shorts, `pmcalm` to
+/// `*read_num` writable ODBPMCALM.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_rdalmmsg(
+    FlibHndl: c_ushort,
+    s_number: c_short,
+    read_num: *mut c_short,
+    exist: *mut c_short,
+    pmcalm: *mut ODBPMCALM,
+) -> c_short {
+    ffi_boundary!("pmc_rdalmmsg", {
+        let h = handles::get(FlibHndl)?;
+        let num = nonnull(read_num)?;
+        let exist = nonnull(exist)?;
+        let out = nonnull(pmcalm)?.cast::<u8>();
+        if s_number < 1 {
+            return Err(Error::local(EW_NUMBER, "s_number below 1"));
+        }
+        let want = i32::from(unsafe { num.read_unaligned() });
+        if want < 1 {
+            return Err(Error::local(EW_DATA, "read_num below 1"));
+        }
+        let (mut text, mut total) = (Vec::new(), 0i32);
+        let mut more;
+        loop {
+            let ask = AlarmMsgs {
+                s: i32::from(s_number) + total,
+                n: (want - total).min(ALMMSG_MAX),
+            };
+            let a = match h.call_pmc(&ask) {
+                Ok(a) => a,
+                Err(e) => {
+                    unsafe { put(num, 0) };
+                    return Err(e);
+                }
+            };
+            let k = a.records() as i32;
+            text.extend_from_slice(&a.text);
+            (total, more) = (total + k, a.exist);
+            if more == 0 || more == -1 || k == 0 || total >= want {
+                break;
+            }
+        }
+        unsafe {
+            // SAFETY: `total` ≤ `*read_num` messages of 128 bytes.
+            std::ptr::copy_nonoverlapping(text.as_ptr(), out, total as usize * ALMMSG_LEN);
+            put(num, total as c_short);
+            put(exist, more as c_short);
+        }
+        Ok(())
+    })
+}
+
+/// The local check of the timer functions: timers `s_number..=e_number`
+/// from 1 on, else EW_NUMBER before any traffic.
+fn timer_range(s_number: c_ushort, e_number: c_ushort) -> Result<usize> {
+    if s_number < 1 || e_number < s_number {
+        return Err(Error::local(
+            EW_NUMBER,
+            "timer numbers out of order or below 1",
+        ));
+    }
+    Ok(usize::from(e_number - s_number) + 1)
+}
+
+/// Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
+/// into `types`, one short each. No more than the range holds is written
+/// (FANUC's library copies the whole answer).
+///
+/// # Safety
+/// `types` must point to `e_number - s_number + 1` writable shorts.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_get_timer_type(
+    FlibHndl: c_ushort,
+    s_number: c_ushort,
+    e_number: c_ushort,
+    types: *mut c_short,
+) -> c_short {
+    ffi_read!("pmc_get_timer_type", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(types)?;
+        let n = timer_range(s_number, e_number)?;
+        let t = h.call_pmc(&TimerTypes {
+            s: s_number,
+            e: e_number,
+        })?;
+        for (i, v) in t.iter().take(n).enumerate() {
+            // SAFETY: i < the range's length.
+            unsafe { put(out.add(i), *v) };
+        }
+        Ok(())
+    })
+}
+
+/// Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
+/// from `types`, one short each.
+///
+/// # Safety
+/// `types` must point to `e_number - s_number + 1` readable shorts.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pmc_set_timer_type(
+    FlibHndl: c_ushort,
+    s_number: c_ushort,
+    e_number: c_ushort,
+    types: *mut c_short,
+) -> c_short {
+    ffi_boundary!("pmc_set_timer_type", {
+        let h = handles::get(FlibHndl)?;
+        let inp = nonnull(types)?;
+        let n = timer_range(s_number, e_number)?;
+        // SAFETY: the caller's array holds the range.
+        let types = (0..n)
+            .map(|i| unsafe { inp.add(i).read_unaligned() })
+            .collect();
+        h.call_pmc(&SetTimerTypes {
+            s: s_number,
+            e: e_number,
+            types,
+        })
     })
 }

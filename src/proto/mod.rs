@@ -8,6 +8,7 @@ pub mod download;
 pub mod frame;
 pub mod history;
 pub mod macros;
+pub mod maintenance;
 pub mod names;
 pub mod offset;
 pub mod open;

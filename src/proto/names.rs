@@ -125,7 +125,12 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
     (CLASS_CNC, 0x00a5, "cnc_rdaxisdata"),
     (CLASS_CNC, 0x00a7, "cnc_rdmacror2"),
     (CLASS_CNC, 0x00a8, "cnc_wrmacror2"),
+    (CLASS_CNC, 0x00bc, "cnc_rdpm_mcnitem"),
+    (CLASS_CNC, 0x00bd, "cnc_wrpm_mcnitem"),
+    (CLASS_CNC, 0x00be, "cnc_rdpm_item"),
+    (CLASS_CNC, 0x00bf, "cnc_wrpm_item"),
     (CLASS_CNC, 0x00cf, "cnc_exeprgname"),
+    (CLASS_CNC, 0x00d3, "cnc_rdpm_cncitem"),
     (CLASS_CNC, 0x00e1, "cnc_statinfo cnc_statinfo2"),
     (CLASS_CNC, 0x00e2, "cnc_statinfo2"),
     (CLASS_CNC, 0x00e8, "cnc_rdcncid"),
@@ -133,6 +138,10 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
     (CLASS_PMC, 0x8001, "pmc_rdpmcrng"),
     (CLASS_PMC, 0x8002, "pmc_wrpmcrng"),
     (CLASS_PMC, 0x8003, "pmc_rdpmcinfo"),
+    (CLASS_PMC, 0x800b, "pmc_rdpmctitle"),
+    (CLASS_PMC, 0x8010, "pmc_rdalmmsg"),
+    (CLASS_PMC, 0x804a, "pmc_get_timer_type"),
+    (CLASS_PMC, 0x804b, "pmc_set_timer_type"),
 ];
 
 /// The function a request subpacket stands for, as a trace names it: a
@@ -290,6 +299,11 @@ mod tests {
         );
         assert_eq!(function_commands("cnc_rddynamic2").len(), 6);
         assert_eq!(function_commands("pmc_rdpmcrng"), vec![(CLASS_PMC, 0x8001)]);
+        assert_eq!(function_commands("pmc_rdalmmsg"), vec![(CLASS_PMC, 0x8010)]);
+        assert_eq!(
+            function_commands("cnc_wrpm_item"),
+            vec![(CLASS_CNC, 0x00bf)]
+        );
         assert_eq!(function_commands("cnc_rdtimer"), vec![(CLASS_CNC, 0x0120)]);
         assert!(function_commands("cnc_nothing").is_empty());
     }

@@ -164,6 +164,15 @@ pub const UNIT_TYPES: u16 = 0x800f;
 pub const SELECT_UNIT: u16 = 0x800c;
 /// pmc_rdpmctitle: no arguments.
 pub const RDPMCTITLE: u16 = 0x800b;
+/// pmc_rdalmmsg: (2,0x8010)[s_number, count]; the answer is i32 count,
+/// i32 exist, then count messages of 128 bytes.
+pub const RDALMMSG: u16 = 0x8010;
+/// pmc_get_timer_type: (2,0x804a)[s, e]; the answer is big-endian i16
+/// types.
+pub const GET_TIMER_TYPE: u16 = 0x804a;
+/// pmc_set_timer_type: (2,0x804b)[s, e, 0, 0, bytes] with the types as
+/// big-endian i16.
+pub const SET_TIMER_TYPE: u16 = 0x804b;
 /// The ten title texts of 0x800b's answer: (bytes on the wire, bytes in
 /// ODBPMCTITLE), in order; the rest of each member is zero.
 pub const TITLE: [(usize, usize); 10] = [
@@ -224,6 +233,103 @@ impl Call for SelectUnit {
     type Output = ();
     fn request(&self, _: &Ctx) -> Vec<ReqSub> {
         vec![ReqSub::pmc(SELECT_UNIT, &[self.unit])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        sub(resp, 0).map(|_| ())
+    }
+}
+
+/// Bytes of one pmc_rdalmmsg message (ODBPMCALM).
+pub const ALMMSG_LEN: usize = 128;
+/// Most messages FANUC's library asks for in one 0x8010 request.
+pub const ALMMSG_MAX: i32 = 11;
+
+/// pmc_rdalmmsg: one exchange, messages `s`.. (at most `n`).
+#[derive(Debug, Clone, Copy)]
+pub struct AlarmMsgs {
+    pub s: i32,
+    pub n: i32,
+}
+
+/// One 0x8010 answer.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AlarmMsgAnswer {
+    /// The answer's count word, as sent.
+    pub count: i32,
+    /// -1 no alarm, 0 all read, else more exist.
+    pub exist: i32,
+    /// The messages: min(count, n) records of 128 bytes (a short answer's
+    /// missing bytes read as zeros, as FANUC's library reads them).
+    pub text: Vec<u8>,
+}
+
+impl AlarmMsgAnswer {
+    /// The messages the answer holds.
+    pub fn records(&self) -> usize {
+        self.text.len() / ALMMSG_LEN
+    }
+}
+
+impl Call for AlarmMsgs {
+    type Output = AlarmMsgAnswer;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::pmc(RDALMMSG, &[self.s, self.n])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<AlarmMsgAnswer> {
+        let mut p = sub(resp, 0)?.payload.clone();
+        if p.len() < 8 {
+            p.resize(8, 0);
+        }
+        let word = |i: usize| i32::from_be_bytes([p[i], p[i + 1], p[i + 2], p[i + 3]]);
+        let (count, exist) = (word(0), word(4));
+        let n = count.clamp(0, self.n.max(0)) as usize;
+        let mut text = p[8..].to_vec();
+        text.resize(n * ALMMSG_LEN, 0);
+        Ok(AlarmMsgAnswer { count, exist, text })
+    }
+}
+
+/// pmc_get_timer_type: the types of timers `s..=e`.
+#[derive(Debug, Clone, Copy)]
+pub struct TimerTypes {
+    pub s: u16,
+    pub e: u16,
+}
+
+impl Call for TimerTypes {
+    type Output = Vec<i16>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::pmc(
+            GET_TIMER_TYPE,
+            &[i32::from(self.s), i32::from(self.e)],
+        )]
+    }
+    /// As many whole i16 as the answer holds (FANUC's library copies the
+    /// whole answer; the caller cuts it to its range).
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i16>> {
+        Ok(sub(resp, 0)?
+            .payload
+            .chunks_exact(2)
+            .map(|c| i16::from_be_bytes([c[0], c[1]]))
+            .collect())
+    }
+}
+
+/// pmc_set_timer_type: sets the types of timers `s..=e`.
+#[derive(Debug, Clone)]
+pub struct SetTimerTypes {
+    pub s: u16,
+    pub e: u16,
+    pub types: Vec<i16>,
+}
+
+impl Call for SetTimerTypes {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let data = self.types.iter().flat_map(|t| t.to_be_bytes()).collect();
+        vec![
+            ReqSub::pmc(SET_TIMER_TYPE, &[i32::from(self.s), i32::from(self.e)]).with_payload(data),
+        ]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
         sub(resp, 0).map(|_| ())

@@ -575,10 +575,8 @@ impl CncService for Machine {
         self.memory_raw(sub)
             .or_else(|| self.folder_raw(sub))
             .or_else(|| self.offset_raw(sub))
-            .or_else(|| {
-                let title = (sub.class, sub.cmd) == (2, crate::proto::pmc::RDPMCTITLE);
-                title.then(|| Ok(self.profile.pmc.title_bytes()))
-            })
+            .or_else(|| self.pmc_raw(sub))
+            .or_else(|| self.maintenance_raw(sub))
     }
 
     // --- upload ---
@@ -597,5 +595,28 @@ impl CncService for Machine {
             crate::proto::download::DOWNLOAD => Ok(()),
             _ => self.dnc(req.path, text, done),
         }
+    }
+}
+
+impl Machine {
+    /// The PMC commands answered as bytes, on the unit of the subpacket's
+    /// path word: 0x800b (title), 0x8010 (alarm messages), 0x804a / 0x804b
+    /// (timer types).
+    pub(crate) fn pmc_raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
+        use crate::proto::pmc::{GET_TIMER_TYPE, RDALMMSG, RDPMCTITLE, SET_TIMER_TYPE};
+        if sub.class != crate::proto::packet::CLASS_PMC {
+            return None;
+        }
+        let (unit, a) = (sub.path, sub.args);
+        let pmc = &mut self.profile.pmc;
+        Some(match sub.cmd {
+            RDPMCTITLE => pmc.title_bytes(unit),
+            RDALMMSG => pmc.alarm_messages(unit, a[0], a[1]),
+            GET_TIMER_TYPE => pmc.timer_types(unit, a[0], a[1]),
+            SET_TIMER_TYPE => pmc
+                .set_timer_types(unit, a[0], a[1], &sub.payload)
+                .map(|()| Vec::new()),
+            _ => return None,
+        })
     }
 }

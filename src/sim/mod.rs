@@ -18,6 +18,7 @@ pub mod folder;
 pub mod history;
 pub mod machine;
 pub mod macros;
+pub mod maintenance;
 pub mod memory;
 pub mod modal;
 pub mod offset;

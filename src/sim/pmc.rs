@@ -109,8 +109,42 @@ pub struct Pmc {
     pub areas: Vec<PmcArea>,
     /// Units 2.. (`[pmc] units = n`): the standard areas, zeroed.
     pub extra: Vec<Vec<PmcArea>>,
-    /// pmc_rdpmctitle's texts in ODBPMCTITLE's order (`[pmc] title`).
+    /// Per unit (index unit - 1): its title, alarm messages and timer
+    /// types (`[pmc] title, messages, timer_types` for unit 1,
+    /// `[pmc.unit.N]` for the others).
+    pub info: Vec<UnitInfo>,
+}
+
+/// Variable timers of a unit (T0-T499: 250 timers of 2 bytes).
+pub const TIMERS: usize = 250;
+/// Most alarm messages one 0x8010 answer carries (FANUC's library asks
+/// for no more: 11 × 128 bytes fit one answer).
+pub const ALMMSG_MAX: usize = 11;
+/// Bytes of one alarm message on the wire (ODBPMCALM).
+pub const ALMMSG_LEN: usize = 128;
+/// The highest timer type (accuracy code) a unit accepts [ours].
+pub const TIMER_TYPE_MAX: i16 = 5;
+
+/// What a PMC unit holds besides its memory.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UnitInfo {
+    /// pmc_rdpmctitle's texts in ODBPMCTITLE's order.
     pub title: Vec<String>,
+    /// The ladder's message texts by A-area bit (A0.0, A0.1 … A1.0 … are
+    /// messages 0, 1 … 8 …): a message is an alarm while its bit is 1.
+    pub messages: Vec<String>,
+    /// The variable timers' types (pmc_get_timer_type), timer 1 first.
+    pub timer_types: Vec<i16>,
+}
+
+impl Default for UnitInfo {
+    fn default() -> Self {
+        UnitInfo {
+            title: Vec::new(),
+            messages: Vec::new(),
+            timer_types: vec![0; TIMERS],
+        }
+    }
 }
 
 fn standard_areas() -> Vec<PmcArea> {
@@ -121,17 +155,109 @@ fn standard_areas() -> Vec<PmcArea> {
 }
 
 impl Pmc {
-    /// 0x800b's answer: the title texts, each cut or zero-padded to its
-    /// size on the wire.
-    pub fn title_bytes(&self) -> Vec<u8> {
+    /// Unit `unit`'s title, messages and timers: EW_NOPMC for a unit the
+    /// CNC lacks.
+    fn unit_info(&self, unit: u16) -> Reply<&UnitInfo> {
+        (self.info.get(usize::from(unit).wrapping_sub(1))).ok_or(CncError::new(ew::EW_NOPMC))
+    }
+
+    /// 0x800b's answer on unit `unit`: the title texts, each cut or
+    /// zero-padded to its size on the wire.
+    pub fn title_bytes(&self, unit: u16) -> Reply<Vec<u8>> {
+        let title = &self.unit_info(unit)?.title;
         let mut out = Vec::new();
         for (i, (n, _)) in TITLE.iter().enumerate() {
-            let t = self.title.get(i).map_or(&[][..], |t| t.as_bytes());
+            let t = title.get(i).map_or(&[][..], |t| t.as_bytes());
             let at = out.len();
             out.extend(&t[..t.len().min(*n)]);
             out.resize(at + n, 0);
         }
-        out
+        Ok(out)
+    }
+
+    /// The alarm messages of unit `unit` now: the texts whose A bit is 1,
+    /// in bit order.
+    pub fn alarms(&self, unit: u16) -> Reply<Vec<&str>> {
+        let info = self.unit_info(unit)?;
+        let a = self.unit(unit)?.iter().find(|a| a.letter == "A");
+        let on = |i: usize| {
+            let byte = a.and_then(|a| a.bytes(u16::try_from(i / 8).ok()?, 1));
+            byte.is_some_and(|b| b[0] >> (i % 8) & 1 == 1)
+        };
+        Ok((info.messages.iter().enumerate())
+            .filter(|(i, m)| !m.is_empty() && on(*i))
+            .map(|(_, m)| m.as_str())
+            .collect())
+    }
+
+    /// Command 0x8010[s, n] on unit `unit`: i32 count, i32 exist (-1 no
+    /// alarm, 0 all read, 1 more after these), then `count` messages of
+    /// 128 bytes (alarms s.., at most n and 11).
+    pub fn alarm_messages(&self, unit: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        if s < 1 || n < 1 {
+            return Err(CncError::NUMBER);
+        }
+        let on = self.alarms(unit)?;
+        let first = (s - 1) as usize;
+        let take = (n as usize).min(ALMMSG_MAX);
+        let list: Vec<&str> = on.iter().skip(first).take(take).copied().collect();
+        let exist: i32 = if on.is_empty() {
+            -1
+        } else if first + list.len() < on.len() {
+            1
+        } else {
+            0
+        };
+        let mut out = Vec::with_capacity(8 + list.len() * ALMMSG_LEN);
+        out.extend((list.len() as i32).to_be_bytes());
+        out.extend(exist.to_be_bytes());
+        for m in list {
+            let at = out.len();
+            out.extend(&m.as_bytes()[..m.len().min(ALMMSG_LEN)]);
+            out.resize(at + ALMMSG_LEN, 0);
+        }
+        Ok(out)
+    }
+
+    /// Timers `s..=e` of unit `unit` (1-based): EW_NUMBER outside 1..=250.
+    fn timer_range(s: i32, e: i32) -> Reply<std::ops::RangeInclusive<usize>> {
+        if s < 1 || e < s || e as usize > TIMERS {
+            return Err(CncError::NUMBER);
+        }
+        Ok(s as usize - 1..=e as usize - 1)
+    }
+
+    /// Command 0x804a[s, e] on unit `unit`: the timers' types, big-endian
+    /// i16 each.
+    pub fn timer_types(&self, unit: u16, s: i32, e: i32) -> Reply<Vec<u8>> {
+        let r = Self::timer_range(s, e)?;
+        let t = &self.unit_info(unit)?.timer_types;
+        Ok(t[r].iter().flat_map(|v| v.to_be_bytes()).collect())
+    }
+
+    /// Command 0x804b[s, e] on unit `unit`: sets the timers' types from
+    /// the payload (big-endian i16 each); all or nothing: a payload of
+    /// another length is EW_LENGTH, a type outside 0..=5 EW_DATA with the
+    /// timer's number as detail.
+    pub fn set_timer_types(&mut self, unit: u16, s: i32, e: i32, data: &[u8]) -> Reply<()> {
+        let r = Self::timer_range(s, e)?;
+        self.unit_info(unit)?;
+        if data.len() != 2 * r.clone().count() {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        let v: Vec<i16> = data
+            .chunks_exact(2)
+            .map(|c| i16::from_be_bytes([c[0], c[1]]))
+            .collect();
+        if let Some(k) = v.iter().position(|t| !(0..=TIMER_TYPE_MAX).contains(t)) {
+            return Err(CncError {
+                code: ew::EW_DATA,
+                detail: (0, (s as usize + k) as u16),
+            });
+        }
+        let i = usize::from(unit) - 1;
+        self.info[i].timer_types[r].copy_from_slice(&v);
+        Ok(())
     }
 }
 
@@ -140,7 +266,7 @@ impl Default for Pmc {
         Pmc {
             areas: standard_areas(),
             extra: Vec::new(),
-            title: Vec::new(),
+            info: vec![UnitInfo::default()],
         }
     }
 }
@@ -152,8 +278,54 @@ struct PmcToml {
     units: Option<usize>,
     #[serde(default)]
     title: Vec<String>,
+    /// The ladder's message texts by A bit (unit 1).
+    #[serde(default)]
+    messages: Vec<String>,
+    /// Timer types from timer 1 on (unit 1); the rest 0.
+    #[serde(default)]
+    timer_types: Vec<i16>,
     #[serde(default)]
     area: BTreeMap<String, AreaToml>,
+    /// Units 2..: `[pmc.unit.2]` ...
+    #[serde(default)]
+    unit: BTreeMap<String, UnitToml>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct UnitToml {
+    #[serde(default)]
+    title: Vec<String>,
+    #[serde(default)]
+    messages: Vec<String>,
+    #[serde(default)]
+    timer_types: Vec<i16>,
+    #[serde(default)]
+    area: BTreeMap<String, AreaToml>,
+}
+
+/// A unit's title, messages and timer types from the profile.
+fn unit_info(
+    title: Vec<String>,
+    messages: Vec<String>,
+    types: Vec<i16>,
+) -> Result<UnitInfo, String> {
+    if title.len() > TITLE.len() {
+        return Err("[pmc] title: at most 10 texts".to_string());
+    }
+    if types.len() > TIMERS {
+        return Err(format!("[pmc] timer_types: at most {TIMERS}"));
+    }
+    if types.iter().any(|t| !(0..=TIMER_TYPE_MAX).contains(t)) {
+        return Err(format!("[pmc] timer_types: 0 to {TIMER_TYPE_MAX}"));
+    }
+    let mut info = UnitInfo {
+        title,
+        messages,
+        ..UnitInfo::default()
+    };
+    info.timer_types[..types.len()].copy_from_slice(&types);
+    Ok(info)
 }
 
 #[derive(Deserialize)]
@@ -169,59 +341,64 @@ struct AreaToml {
 impl TryFrom<PmcToml> for Pmc {
     type Error = String;
     fn try_from(t: PmcToml) -> Result<Pmc, String> {
-        let mut pmc = Pmc::default();
-        if t.title.len() > TITLE.len() {
-            return Err("[pmc] title: at most 10 texts".to_string());
-        }
-        pmc.title = t.title;
+        let mut pmc = Pmc {
+            info: vec![unit_info(t.title, t.messages, t.timer_types)?],
+            ..Pmc::default()
+        };
         match t.units {
             Some(n @ 1..=8) => {
                 // Zeroed memory, shared by the units until one is written.
                 let blank = standard_areas();
                 pmc.extra = (1..n).map(|_| blank.clone()).collect();
+                pmc.info.resize(n, UnitInfo::default());
             }
             Some(n) => return Err(format!("[pmc] units = {n}: 1 to 8")),
             None => {}
         }
-        for (letter, a) in t.area {
-            if !AREA_TYPES.iter().any(|x| x.0 == letter) {
-                return Err(format!(
-                    "unknown PMC area {letter:?} (known: G F Y X A R T K C D E)"
-                ));
-            }
-            let std = pmc.area_by_letter(&letter).cloned().expect("standard area");
-            let ranges = match a.ranges {
-                Some(r) => r
-                    .into_iter()
-                    .map(|[s, e]| {
-                        if s > e {
-                            Err(format!("PMC area {letter}: range [{s}, {e}] is reversed"))
-                        } else {
-                            Ok((s, e))
-                        }
-                    })
-                    .collect::<Result<Vec<_>, _>>()?,
-                None => std.ranges.clone(),
-            };
-            let mut area = PmcArea::new(&letter, ranges, a.writable.unwrap_or(std.writable));
-            for (k, bytes) in a.data {
-                let addr: u16 = k
-                    .trim()
-                    .parse()
-                    .map_err(|_| format!("PMC address {letter}{k:?} is not a number"))?;
-                area.bytes_mut(addr, bytes.len())
-                    .ok_or_else(|| format!("PMC data {letter}{addr} lies outside the area"))?
-                    .copy_from_slice(&bytes);
-            }
-            let i = pmc
-                .areas
-                .iter()
-                .position(|x| x.letter == letter)
-                .expect("standard area");
-            pmc.areas[i] = area;
+        for (k, u) in t.unit {
+            let n: usize = (k.trim().parse().ok())
+                .filter(|n| (2..=pmc.info.len()).contains(n))
+                .ok_or_else(|| format!("[pmc.unit.{k}]: units 2 to {}", pmc.info.len()))?;
+            pmc.info[n - 1] = unit_info(u.title, u.messages, u.timer_types)?;
+            apply_areas(&mut pmc.extra[n - 2], u.area)?;
         }
+        apply_areas(&mut pmc.areas, t.area)?;
         Ok(pmc)
     }
+}
+
+/// The profile's `[...area.*]` tables over a unit's standard areas.
+fn apply_areas(areas: &mut [PmcArea], t: BTreeMap<String, AreaToml>) -> Result<(), String> {
+    for (letter, a) in t {
+        let i = (areas.iter().position(|x| x.letter == letter))
+            .ok_or_else(|| format!("unknown PMC area {letter:?} (known: G F Y X A R T K C D E)"))?;
+        let std = &areas[i];
+        let ranges = match a.ranges {
+            Some(r) => r
+                .into_iter()
+                .map(|[s, e]| {
+                    if s > e {
+                        Err(format!("PMC area {letter}: range [{s}, {e}] is reversed"))
+                    } else {
+                        Ok((s, e))
+                    }
+                })
+                .collect::<Result<Vec<_>, _>>()?,
+            None => std.ranges.clone(),
+        };
+        let mut area = PmcArea::new(&letter, ranges, a.writable.unwrap_or(std.writable));
+        for (k, bytes) in a.data {
+            let addr: u16 = k
+                .trim()
+                .parse()
+                .map_err(|_| format!("PMC address {letter}{k:?} is not a number"))?;
+            area.bytes_mut(addr, bytes.len())
+                .ok_or_else(|| format!("PMC data {letter}{addr} lies outside the area"))?
+                .copy_from_slice(&bytes);
+        }
+        areas[i] = area;
+    }
+    Ok(())
 }
 
 impl Pmc {

@@ -8,6 +8,7 @@ pub mod fault;
 pub mod fleet;
 pub mod history;
 pub mod macros;
+pub mod maintenance;
 pub mod offset;
 pub mod param;
 pub mod program;
@@ -66,6 +67,9 @@ pub struct Profile {
     /// The pitch error compensation table (cnc_rdpitchinfo, cnc_rdpitchr).
     #[serde(default)]
     pub pitch: Pitch,
+    /// The periodic maintenance items (src/sim/maintenance.rs).
+    #[serde(default)]
+    pub maintenance: maintenance::Maintenance,
     // --- tool ---
 
     // --- upload ---
@@ -319,6 +323,7 @@ impl Profile {
         if self.paths.is_empty() {
             return bad("at least one [[path]] is required".into());
         }
+        self.maintenance.validate().map_err(ProfileError::Invalid)?;
         if self.paths.len() > 15 {
             return bad("at most 15 paths".into());
         }

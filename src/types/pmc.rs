@@ -102,3 +102,11 @@ pub struct ODBPMCTITLE {
     pub written: [c_char; 48],
     pub remarks: [c_char; 48],
 }
+
+/// pmc_rdalmmsg: one PMC alarm message (the caller passes an array of
+/// them); text, zero-padded.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPMCALM {
+    pub almmsg: [c_char; 128],
+}

@@ -546,6 +546,14 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "when an answer holds no whole block (8 + 8 or 4 bytes per axis of the CNC's maximum; error 2 is read as an answer) FANUC's library asks again from its last number received + 1, number 1 before any, so it restarts from the table's first parameter (or repeats its request for ever); ours returns EW_PROTOCOL (-17), or the CNC's error 2, with the records before it written (the Series 15 case: our simulator answers a Series 15 in 4-byte values, shorter than the 8-byte record blocks FANUC's library reads)",
     },
+    Deviation {
+        function: "pmc_get_timer_type",
+        cases: &[
+            "pmc_get_timer_type_v3_shape_longer",
+            "pmc_get_timer_type_v2_shape_longer",
+        ],
+        reason: "FANUC's library copies the whole answer into the caller's array, past the timers asked for; ours writes at most e_number - s_number + 1 types",
+    },
 ];
 
 /// cnc_acts2 / cnc_rdspload on the 30i class.

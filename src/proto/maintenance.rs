@@ -1,0 +1,156 @@
+//! Periodic maintenance (class 1): item names and items, read and written
+//! as fixed records (src/proto/NOTES.md, "Periodic maintenance").
+
+use super::call::{Call, Ctx, sub};
+use super::packet::{ReqSub, RespSub};
+use crate::error::Result;
+
+/// cnc_rdpm_cncitem: (1,0xd3)[start, n]; 62-byte names.
+pub const RDPM_CNCITEM: u16 = 0x00d3;
+/// cnc_rdpm_mcnitem: (1,0xbc)[start, n]; 62-byte names.
+pub const RDPM_MCNITEM: u16 = 0x00bc;
+/// cnc_wrpm_mcnitem: (1,0xbd)[start, 0, 0, 0, bytes] + 62-byte names.
+pub const WRPM_MCNITEM: u16 = 0x00bd;
+/// cnc_rdpm_item: (1,0xbe)[start, n]; 80-byte items.
+pub const RDPM_ITEM: u16 = 0x00be;
+/// cnc_wrpm_item: (1,0xbf)[reset, start, 0, 0, bytes] + 80-byte items.
+pub const WRPM_ITEM: u16 = 0x00bf;
+
+/// Bytes of an item name.
+pub const NAME_LEN: usize = 62;
+/// Bytes of an item on the wire: name, 2 bytes, i32 type, total, remain,
+/// stat (IODBPMAINTE's layout, big-endian).
+pub const ITEM_LEN: usize = 80;
+/// Most names FANUC's library asks for at once (23 × 62 fit one answer).
+pub const NAMES_MAX: i16 = 23;
+/// Most items FANUC's library asks for at once (17 × 80).
+pub const ITEMS_MAX: i16 = 17;
+/// Most names FANUC's library sends in one write (1364 bytes).
+pub const WRITE_NAMES_MAX: i16 = 22;
+/// Most items FANUC's library sends in one write.
+pub const WRITE_ITEMS_MAX: i16 = 17;
+
+/// A maintenance item as on the wire.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PmItem {
+    pub name: [u8; NAME_LEN],
+    pub r#type: i32,
+    pub total: i32,
+    pub remain: i32,
+    pub stat: i32,
+}
+
+impl PmItem {
+    pub fn from_wire(b: &[u8]) -> PmItem {
+        let word = |i: usize| i32::from_be_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+        let mut name = [0; NAME_LEN];
+        name.copy_from_slice(&b[..NAME_LEN]);
+        PmItem {
+            name,
+            r#type: word(64),
+            total: word(68),
+            remain: word(72),
+            stat: word(76),
+        }
+    }
+    /// The 80 wire bytes (the two after the name zero).
+    pub fn to_wire(&self) -> Vec<u8> {
+        let mut b = self.name.to_vec();
+        b.extend([0, 0]);
+        for v in [self.r#type, self.total, self.remain, self.stat] {
+            b.extend(v.to_be_bytes());
+        }
+        b
+    }
+}
+
+/// cnc_rdpm_cncitem / cnc_rdpm_mcnitem: names `start`.. (at most `n`);
+/// the answer's whole names, at most `n`.
+#[derive(Debug, Clone, Copy)]
+pub struct ReadNames {
+    pub cmd: u16,
+    pub start: i16,
+    pub n: i16,
+}
+
+impl Call for ReadNames {
+    type Output = Vec<[u8; NAME_LEN]>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(
+            self.cmd,
+            &[i32::from(self.start), i32::from(self.n)],
+        )]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
+        Ok(sub(resp, 0)?
+            .payload
+            .chunks_exact(NAME_LEN)
+            .take(self.n.max(0) as usize)
+            .map(|c| c.try_into().expect("62 bytes"))
+            .collect())
+    }
+}
+
+/// cnc_rdpm_item: items `start`.. (at most `n`); the answer's whole items,
+/// at most `n`.
+#[derive(Debug, Clone, Copy)]
+pub struct ReadItems {
+    pub start: i16,
+    pub n: i16,
+}
+
+impl Call for ReadItems {
+    type Output = Vec<PmItem>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(
+            RDPM_ITEM,
+            &[i32::from(self.start), i32::from(self.n)],
+        )]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<PmItem>> {
+        Ok(sub(resp, 0)?
+            .payload
+            .chunks_exact(ITEM_LEN)
+            .take(self.n.max(0) as usize)
+            .map(PmItem::from_wire)
+            .collect())
+    }
+}
+
+/// cnc_wrpm_mcnitem: names from `start` on.
+#[derive(Debug, Clone)]
+pub struct WriteNames {
+    pub start: i16,
+    pub names: Vec<[u8; NAME_LEN]>,
+}
+
+impl Call for WriteNames {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let data = self.names.concat();
+        vec![ReqSub::cnc(WRPM_MCNITEM, &[i32::from(self.start)]).with_payload(data)]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        sub(resp, 0).map(|_| ())
+    }
+}
+
+/// cnc_wrpm_item: items from `start` on; `reset` goes first.
+#[derive(Debug, Clone)]
+pub struct WriteItems {
+    pub reset: i16,
+    pub start: i16,
+    pub items: Vec<PmItem>,
+}
+
+impl Call for WriteItems {
+    type Output = ();
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let data = self.items.iter().flat_map(PmItem::to_wire).collect();
+        let args = [i32::from(self.reset), i32::from(self.start)];
+        vec![ReqSub::cnc(WRPM_ITEM, &args).with_payload(data)]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
+        sub(resp, 0).map(|_| ())
+    }
+}

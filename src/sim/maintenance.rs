@@ -1,0 +1,170 @@
+//! The periodic maintenance answers: each item's remaining life counts
+//! down with the cnc_rdtimer counter of its type on the simulator's clock
+//! (type 1 power-on, 2 operating, 3 cutting time; 0 does not count).
+//! Writes set items and machine-specific names; a refused write changes
+//! nothing.
+
+use super::Machine;
+use super::profile::maintenance::{ITEMS, Item, MCN_ITEMS, TYPE_MAX};
+use super::service::{CncError, Reply};
+use crate::ew;
+use crate::proto::maintenance::{
+    ITEM_LEN, ITEMS_MAX, NAME_LEN, NAMES_MAX, PmItem, RDPM_CNCITEM, RDPM_ITEM, RDPM_MCNITEM,
+    WRPM_ITEM, WRPM_MCNITEM,
+};
+use crate::proto::packet::{CLASS_CNC, ReqSub};
+
+/// A name as its 62 wire bytes, zero-padded.
+fn name_bytes(s: &str) -> [u8; NAME_LEN] {
+    let mut b = [0; NAME_LEN];
+    let n = s.len().min(NAME_LEN);
+    b[..n].copy_from_slice(&s.as_bytes()[..n]);
+    b
+}
+
+/// The text of a name's wire bytes (up to the first zero).
+fn name_text(b: &[u8]) -> String {
+    let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+    String::from_utf8_lossy(&b[..end]).into_owned()
+}
+
+/// Slots `start..start+n` of `slots` (1-based): EW_NUMBER when `start` is
+/// outside, EW_LENGTH when `n` < 1; cut at the last slot.
+fn slots(start: i32, n: i32, slots: usize) -> Reply<std::ops::Range<usize>> {
+    if n < 1 {
+        return Err(CncError::new(ew::EW_LENGTH));
+    }
+    if start < 1 || start as usize > slots {
+        return Err(CncError::NUMBER);
+    }
+    let s = start as usize - 1;
+    Ok(s..(s + n as usize).min(slots))
+}
+
+impl Machine {
+    /// The counter an item of type `ty` counts with, in ms (None: type 0).
+    fn pm_counter(&self, ty: i32) -> Option<i64> {
+        let kind = match ty {
+            1..=TYPE_MAX => ty - 1,
+            _ => return None,
+        };
+        let t = self.sim_timer(kind).ok()?;
+        Some(i64::from(t.minute) * 60_000 + i64::from(t.msec))
+    }
+
+    /// The counter of type `ty` at power-on (the profile's minutes).
+    fn pm_power_on(&self, ty: i32) -> i64 {
+        let t = &self.profile.timers;
+        let min = match ty {
+            1 => t.power_on,
+            2 => t.operating,
+            3 => t.cutting,
+            _ => 0,
+        };
+        i64::from(min) * 60_000
+    }
+
+    /// Item slot `i` now: its remaining minutes counted down since it was
+    /// set (0 at most), stat 1 once its life is used up, else 0.
+    pub(crate) fn pm_item(&self, i: usize) -> PmItem {
+        let it = (self.profile.maintenance.items.get(i).cloned()).unwrap_or_default();
+        let used = self.pm_counter(it.r#type).map_or(0, |now| {
+            (now - it.base.unwrap_or_else(|| self.pm_power_on(it.r#type))) / 60_000
+        });
+        let remain = (i64::from(it.remain) - used).max(0) as i32;
+        PmItem {
+            name: name_bytes(&it.name),
+            r#type: it.r#type,
+            total: it.total,
+            remain,
+            stat: i32::from(it.r#type != 0 && remain == 0),
+        }
+    }
+
+    /// 0xbf[reset, start] + items: all or nothing; a type outside 0..=3,
+    /// a negative total or a remain outside 0..=total is EW_DATA. `reset`
+    /// 1 starts each item's life anew (remain = total).
+    fn pm_write_items(&mut self, reset: i32, start: i32, data: &[u8]) -> Reply<()> {
+        if data.is_empty() || data.len() % ITEM_LEN != 0 {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        let r = slots(start, (data.len() / ITEM_LEN) as i32, ITEMS)?;
+        if r.len() != data.len() / ITEM_LEN {
+            return Err(CncError::NUMBER);
+        }
+        let new: Vec<PmItem> = data.chunks_exact(ITEM_LEN).map(PmItem::from_wire).collect();
+        let bad = |p: &PmItem| {
+            !(0..=TYPE_MAX).contains(&p.r#type)
+                || p.total < 0
+                || (reset == 0 && !(0..=p.total).contains(&p.remain))
+        };
+        if new.iter().any(bad) {
+            return Err(CncError::new(ew::EW_DATA));
+        }
+        let items: Vec<Item> = new
+            .iter()
+            .map(|p| Item {
+                name: name_text(&p.name),
+                r#type: p.r#type,
+                total: p.total,
+                remain: if reset != 0 { p.total } else { p.remain },
+                base: self.pm_counter(p.r#type),
+            })
+            .collect();
+        let list = &mut self.profile.maintenance.items;
+        if list.len() < r.end {
+            list.resize(r.end, Item::default());
+        }
+        for (slot, it) in r.zip(items) {
+            list[slot] = it;
+        }
+        Ok(())
+    }
+
+    /// The periodic maintenance commands (class 1, any path).
+    pub(crate) fn maintenance_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        if sub.class != CLASS_CNC {
+            return None;
+        }
+        let a = sub.args;
+        let m = &self.profile.maintenance;
+        let names = |list: &[String], n: usize, max: i16| -> Reply<Vec<u8>> {
+            let r = slots(a[0], a[1].min(i32::from(max)), n)?;
+            Ok(
+                r.flat_map(|i| name_bytes(list.get(i).map_or("", |s| s.as_str())))
+                    .collect(),
+            )
+        };
+        Some(match sub.cmd {
+            RDPM_CNCITEM => names(&m.cnc_items, m.cnc_items.len(), NAMES_MAX),
+            RDPM_MCNITEM => names(&m.machine_items, MCN_ITEMS, NAMES_MAX),
+            RDPM_ITEM => slots(a[0], a[1].min(i32::from(ITEMS_MAX)), ITEMS)
+                .map(|r| r.flat_map(|i| self.pm_item(i).to_wire()).collect()),
+            WRPM_MCNITEM => {
+                let p = &sub.payload;
+                if p.is_empty() || p.len() % NAME_LEN != 0 {
+                    return Some(Err(CncError::new(ew::EW_LENGTH)));
+                }
+                let n = p.len() / NAME_LEN;
+                match slots(a[0], n as i32, MCN_ITEMS) {
+                    Ok(r) if r.len() == n => {
+                        let list = &mut self.profile.maintenance.machine_items;
+                        if list.len() < r.end {
+                            list.resize(r.end, String::new());
+                        }
+                        for (slot, b) in r.zip(p.chunks_exact(NAME_LEN)) {
+                            list[slot] = name_text(b);
+                        }
+                        Ok(Vec::new())
+                    }
+                    Ok(_) => Err(CncError::NUMBER),
+                    Err(e) => Err(e),
+                }
+            }
+            WRPM_ITEM => self
+                .pm_write_items(a[0], a[1], &sub.payload)
+                .map(|()| Vec::new()),
+            _ => return None,
+        })
+    }
+}
