@@ -1,7 +1,8 @@
 /*
  * maintenance.c - a small health report for one machine: tool life left,
- * spindle load and servo current, servo figures, the last operations,
- * operator messages and alarms from the CNC's histories.
+ * spindle load and servo current, servo figures, the periodic maintenance
+ * items and how much of their life is left, the PMC's alarm messages, the
+ * last operations, operator messages and alarms from the CNC's histories.
  *
  *   cc -Wall -Wextra -Werror -I../include maintenance.c -L../target/release -lfwlib32 -o maintenance
  *   ./maintenance [host [port]]
@@ -66,6 +67,37 @@ static void servo_spindle(unsigned short h)
     memset(alarm, 0, sizeof alarm);
     if (cnc_rdspdlalm(h, alarm) == EW_OK)
         printf("spindle_alarm=%d\n", alarm[0]);
+}
+
+static void maintenance_items(unsigned short h)
+{
+    static IODBPMAINTE item[10];
+    short n = 10, i, used = 0, ret = cnc_rdpm_item(h, 1, &n, item);
+    if (ret != EW_OK) {
+        printf("maintenance=error %d\n", ret);
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        if (!item[i].name[0])
+            continue; /* an empty slot */
+        used++;
+        printf("item%d=%.62s left %ld of %ld min%s\n", used, item[i].name, (long)item[i].remain,
+               (long)item[i].total, item[i].stat ? " DUE" : "");
+    }
+    printf("maintenance=%d\n", used);
+}
+
+static void pmc_alarms(unsigned short h)
+{
+    static ODBPMCALM msg[8];
+    short n = 8, exist = 0, i, ret = pmc_rdalmmsg(h, 1, &n, &exist, msg);
+    if (ret != EW_OK) {
+        printf("pmc_alarms=error %d\n", ret);
+        return;
+    }
+    printf("pmc_alarms=%d\n", n);
+    for (i = 0; i < n; i++)
+        printf("pmc_alarm%d=%.128s\n", i + 1, msg[i].almmsg);
 }
 
 static void operations(unsigned short h)
@@ -153,6 +185,8 @@ int main(int argc, char **argv)
     tool_life(h);
     loads(h);
     servo_spindle(h);
+    maintenance_items(h);
+    pmc_alarms(h);
     operations(h);
     messages(h);
     alarms(h);

@@ -481,6 +481,24 @@ fn maintenance_example_reports_the_histories() {
         kv["spindle1"]
     );
     assert_eq!(kv["current"].split_whitespace().count(), 3);
+    // The maintenance items, their life counting down from the profile's.
+    let items = &p.maintenance.items;
+    assert_eq!(kv["maintenance"], items.len().to_string());
+    for (i, it) in items.iter().enumerate() {
+        let line = &kv[format!("item{}", i + 1).as_str()];
+        let rest = line
+            .strip_prefix(&format!("{} left ", it.name))
+            .unwrap_or_else(|| panic!("{line}"));
+        let left: i32 = rest.split_whitespace().next().unwrap().parse().unwrap();
+        assert!(left <= it.remain, "{line}");
+        assert!(rest.contains(&format!(" of {} min", it.total)), "{line}");
+    }
+    // The PMC's alarm messages: those whose A bit the profile sets (A0.0
+    // and A0.2 in the default profile).
+    let msgs = &p.pmc.info[0].messages;
+    assert_eq!(kv["pmc_alarms"], "2");
+    assert_eq!(kv["pmc_alarm1"], msgs[0]);
+    assert_eq!(kv["pmc_alarm2"], msgs[2]);
     assert_eq!(
         kv["operations"],
         p.operation_history.entries.len().to_string()
