@@ -1542,6 +1542,264 @@ typedef struct ODBPMCTITLE {
     char remarks[48];
 } ODBPMCTITLE;
 
+/*
+ ODBOPHIS4 MDI key record.
+ */
+typedef struct ODBOPHIS4_MDI {
+    char key_code;
+    char pw_flag;
+    short pth_no;
+    short ex_flag;
+    short hour;
+    short minute;
+    short second;
+} ODBOPHIS4_MDI;
+
+/*
+ ODBOPHIS4 signal record.
+ */
+typedef struct ODBOPHIS4_SGN {
+    short sig_name;
+    short sig_no;
+    char sig_old;
+    char sig_new;
+    short pmc_no;
+    short hour;
+    short minute;
+    short second;
+    short dummy;
+} ODBOPHIS4_SGN;
+
+/*
+ ODBOPHIS4 alarm record.
+ */
+typedef struct ODBOPHIS4_ALM {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+} ODBOPHIS4_ALM;
+
+/*
+ ODBOPHIS4 date record.
+ */
+typedef struct ODBOPHIS4_DATE {
+    short evnt_type;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short dummy;
+} ODBOPHIS4_DATE;
+
+/*
+ ODBOPHIS4 alarm record with the modal and position snapshot.
+ */
+typedef struct ODBOPHIS4_IAL {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short sys_alm;
+    short dsp_flg;
+    short axis_num;
+    short dummy1;
+    LONG g_modal[10];
+    char g_dp[10];
+    short dummy2;
+    LONG a_modal[10];
+    char a_dp[10];
+    short dummy3;
+    LONG abs_pos[32];
+    char abs_dp[32];
+    LONG mcn_pos[32];
+    char mcn_dp[32];
+} ODBOPHIS4_IAL;
+
+/*
+ ODBOPHIS4 alarm record with its message and the snapshot.
+ */
+typedef struct ODBOPHIS4_MAL {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short sys_alm;
+    short dsp_flg;
+    short axis_num;
+    char alm_msg[64];
+    short dummy1;
+    LONG g_modal[10];
+    char g_dp[10];
+    short dummy2;
+    LONG a_modal[10];
+    char a_dp[10];
+    short dummy3;
+    LONG abs_pos[32];
+    char abs_dp[32];
+    LONG mcn_pos[32];
+    char mcn_dp[32];
+} ODBOPHIS4_MAL;
+
+/*
+ ODBOPHIS4 operator message record.
+ */
+typedef struct ODBOPHIS4_OPM {
+    short dsp_flg;
+    short om_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char ope_msg[256];
+} ODBOPHIS4_OPM;
+
+/*
+ ODBOPHIS4 tool offset record.
+ */
+typedef struct ODBOPHIS4_OFS {
+    short ofs_grp;
+    short ofs_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    LONG ofs_old;
+    LONG ofs_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_OFS;
+
+/*
+ ODBOPHIS4 parameter record.
+ */
+typedef struct ODBOPHIS4_PRM {
+    short prm_grp;
+    short prm_num;
+    short hour;
+    short minute;
+    short second;
+    short prm_len;
+    LONG prm_no;
+    LONG prm_old;
+    LONG prm_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_PRM;
+
+/*
+ ODBOPHIS4 work offset record.
+ */
+typedef struct ODBOPHIS4_WOF {
+    short ofs_grp;
+    short ofs_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short axis_no;
+    short dummy;
+    LONG ofs_old;
+    LONG ofs_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_WOF;
+
+/*
+ ODBOPHIS4 macro variable record.
+ */
+typedef struct ODBOPHIS4_MAC {
+    short mac_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short dummy;
+    LONG mac_old;
+    LONG mac_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_MAC;
+
+/*
+ ODBOPHIS4 macro variable record (32-bit variable number).
+ */
+typedef struct ODBOPHIS4_MAC2 {
+    LONG mac_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    LONG mac_old;
+    LONG mac_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_MAC2;
+
+/*
+ ODBOPHIS4 screen change record.
+ */
+typedef struct ODBOPHIS4_SCRN {
+    short scrn_old;
+    short scrn_new;
+    short dummy;
+    short hour;
+    short minute;
+    short second;
+} ODBOPHIS4_SCRN;
+
+/*
+ The body of one ODBOPHIS4 record, by its `rec_type`.
+ */
+typedef union ODBOPHIS4_u {
+    struct ODBOPHIS4_MDI rec_mdi;
+    struct ODBOPHIS4_SGN rec_sgn;
+    struct ODBOPHIS4_ALM rec_alm;
+    struct ODBOPHIS4_DATE rec_date;
+    struct ODBOPHIS4_IAL rec_ial;
+    struct ODBOPHIS4_MAL rec_mal;
+    struct ODBOPHIS4_OPM rec_opm;
+    struct ODBOPHIS4_OFS rec_ofs;
+    struct ODBOPHIS4_PRM rec_prm;
+    struct ODBOPHIS4_WOF rec_wof;
+    struct ODBOPHIS4_MAC rec_mac;
+    struct ODBOPHIS4_MAC2 rec_mac2;
+    struct ODBOPHIS4_SCRN rec_scrn;
+} ODBOPHIS4_u;
+
+/*
+ cnc_rdophistry4: one operation history record. The records are packed
+ one after the other in the caller's buffer, each `rec_len` bytes long
+ (the size of its kind's member plus 4), not `sizeof(ODBOPHIS4)`.
+ */
+typedef struct ODBOPHIS4 {
+    short rec_len;
+    short rec_type;
+    union ODBOPHIS4_u u;
+} ODBOPHIS4;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -2477,6 +2735,26 @@ short cnc_rdophistry(unsigned short FlibHndl,
                      unsigned short e_number,
                      unsigned short length,
                      struct ODBHIS *ophis);
+
+/*
+ Reads the operation history records `s_number..=*e_number` (1 = the
+ oldest kept) into the caller's buffer as ODBOPHIS4 records packed one
+ after the other, each `rec_len` bytes long; `*length` (in: the buffer's
+ size) = the bytes written, `*e_number` = the last record written. The
+ CNC may answer a range in several exchanges; records that do not fit
+ end the exchange (the next one starts after the records the CNC sent),
+ the first not fitting is EW_LENGTH. An unknown record type is
+ EW_VERSION, the records before it written, as FANUC's library does.
+
+ # Safety
+ `e_number` and `length` must point to writable unsigned shorts, `ophis`
+ to `*length` writable bytes.
+ */
+short cnc_rdophistry4(unsigned short FlibHndl,
+                      unsigned short s_number,
+                      unsigned short *e_number,
+                      unsigned short *length,
+                      void *ophis);
 
 /*
  Reads the operation mode word (of the spindle: 0 others, 1 normal, 2

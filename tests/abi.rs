@@ -406,6 +406,9 @@ rust_layouts! {
 
     // --- upload ---
     ODBUP { dummy, data }
+
+    // --- machine data (issue 11) ---
+    ODBOPHIS4 { rec_len, rec_type, u }
 }
 
 #[test]

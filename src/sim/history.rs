@@ -164,6 +164,9 @@ impl Machine {
                 .flat_map(|n| i16::from(v(n)).to_be_bytes())
                 .collect());
         }
+        if cmd == ph::RDOPHISTRY4 {
+            return self.ophistry4(s, e);
+        }
         if s < 0 || e < s {
             return Err(CncError::NUMBER);
         }
@@ -222,6 +225,73 @@ impl Machine {
                 }
             }
         }
+        Ok(out)
+    }
+
+    /// 0x01b0 [s, e]: the operation history records s..=e (1 = newest)
+    /// in the 30i's form: every entry but the "time" stamps (each record
+    /// carries its time), as many as one answer holds; the more flag says
+    /// the range goes on. A start past the history: no records.
+    fn ophistry4(&mut self, s: i32, e: i32) -> Reply<Vec<u8>> {
+        use crate::proto::history as ph;
+        let ops: Vec<&Operation> = self
+            .profile
+            .operation_history
+            .entries
+            .iter()
+            .filter(|o| o.kind != "time")
+            .collect();
+        if s < 1 || e < s {
+            return Err(CncError::NUMBER);
+        }
+        let room = crate::proto::packet::MAX_ANSWER - 8;
+        let (mut body, mut n) = (Vec::new(), 0);
+        let last = (e as usize).min(ops.len());
+        let first = (s as usize - 1).min(last);
+        for o in &ops[first..last] {
+            let [y, mo, d, h, mi, se] = parse_time(&o.time).unwrap_or([0; 6]).map(i32::from);
+            let r = match o.kind.as_str() {
+                "mdi" => ph::op4_record(0, |b| {
+                    ph::put16(b, 4, o.number);
+                    ph::put16(b, 8, 1);
+                    for (k, v) in [h, mi, se].into_iter().enumerate() {
+                        ph::put16(b, 0xc + 2 * k, v);
+                    }
+                }),
+                "signal" => ph::op4_record(1, |b| {
+                    ph::put32(b, 4, o.number);
+                    ph::put16(b, 8, o.group.into());
+                    ph::put16(b, 0xa, 1);
+                    b[0xc] = o.old;
+                    b[0xd] = o.new;
+                    for (k, v) in [h, mi, se].into_iter().enumerate() {
+                        ph::put16(b, 0xe + 2 * k, v);
+                    }
+                }),
+                "alarm" => ph::op4_record(2, |b| {
+                    ph::put32(b, 4, o.number);
+                    ph::put16(b, 8, o.group.into());
+                    ph::put16(b, 0xa, o.axis.into());
+                    for (k, v) in [y, mo, d, h, mi, se, 1].into_iter().enumerate() {
+                        ph::put16(b, 0xc + 2 * k, v);
+                    }
+                }),
+                _ => ph::op4_record(3, |b| {
+                    for (k, v) in [0, y, mo, d, h, mi, se].into_iter().enumerate() {
+                        ph::put16(b, 4 + 2 * k, v);
+                    }
+                }),
+            };
+            if body.len() + r.len() > room {
+                break;
+            }
+            body.extend(r);
+            n += 1;
+        }
+        let more = i32::from(first + n < last);
+        let mut out = more.to_be_bytes().to_vec();
+        out.extend((n as i32).to_be_bytes());
+        out.extend(body);
         Ok(out)
     }
 

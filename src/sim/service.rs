@@ -517,6 +517,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (
                 CLASS_CNC,
                 c @ (phis::RDOPHISTRY
+                | phis::RDOPHISTRY4
                 | phis::RDOMHISTRY
                 | phis::RDOMHISTRY2
                 | phis::RDALMHISTRY5
