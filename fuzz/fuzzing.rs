@@ -263,6 +263,10 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
+        names: &["cnc_rdopmsg3"],
+        run: |cx, a, r| go(pa::rdopmsg3(a[0] & 1 != 0, a[1], a[2] as i16, a[3]), cx, r),
+    },
+    Decoder {
         names: &["cnc_rdomhistry"],
         run: |cx, a, r| go(ph::rdomhistry(a[0] as u16, a[1] as u16), cx, r),
     },

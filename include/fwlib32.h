@@ -827,6 +827,16 @@ typedef struct OPMSG {
 } OPMSG;
 
 /*
+ cnc_rdopmsg3: one operator message (256-character variant).
+ */
+typedef struct OPMSG3 {
+    short datano;
+    short type;
+    short char_num;
+    char data[256];
+} OPMSG3;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -2780,6 +2790,18 @@ short cnc_rdopmode(unsigned short FlibHndl, short *mode);
  `opmsg` must have 262 writable bytes.
  */
 short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMSG *opmsg);
+
+/*
+ Reads the operator messages of `type` (-1: all) on display into
+ `*num` OPMSG3 records; `*num` = the messages written. The 30i class is
+ asked five messages an exchange until `*num` are asked for (an error
+ after some were read ends the read), the 16i class once. More messages
+ in the first answer than `*num`: EW_LENGTH, nothing written.
+
+ # Safety
+ `num` must point to a writable short, `opmsg` to `*num` OPMSG3.
+ */
+short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG3 *opmsg);
 
 /*
  Reads the numbers and attributes of up to `read_no` parameters from

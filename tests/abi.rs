@@ -409,6 +409,7 @@ rust_layouts! {
 
     // --- machine data (issue 11) ---
     ODBOPHIS4 { rec_len, rec_type, u }
+    OPMSG3 { datano, r#type, char_num, data }
 }
 
 #[test]

@@ -302,6 +302,9 @@ impl CncService for Machine {
     fn opmsg(&mut self, path: u16, kind: i32) -> Reply<crate::proto::alarm::OpMsg> {
         self.sim_opmsg(path, kind)
     }
+    fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+        self.sim_opmsg3(path, start, kind, n)
+    }
 
     // --- param ---
     fn param_read30(

@@ -113,6 +113,9 @@ pub struct PathRun {
     pub operating: f64,
     pub cutting: f64,
     pub cycle: f64,
+    /// The macro message on display (`#3006=n(TEXT)` of the last such
+    /// block the program passed): number and text (cnc_rdopmsg3, type 4).
+    pub message: Option<(i32, String)>,
     /// What the clock needs: parsed program, profile base values, caches.
     pub(crate) engine: Engine,
 }
@@ -472,6 +475,10 @@ impl Machine {
             )
         };
         let b = &plan.blocks[k];
+        // The last macro message passed: in this pass, else the pass before.
+        let shown = |bs: &[super::plan::Block]| bs.iter().rev().find_map(|b| b.message.clone());
+        run.message =
+            shown(&plan.blocks[..=k]).or_else(|| if pass > 0 { shown(&plan.blocks) } else { None });
         let before = (k > 0).then(|| &plan.blocks[k - 1]);
         let last = plan.blocks.last().expect("n > 0");
         let starved = eng.streaming && done >= n;

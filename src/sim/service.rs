@@ -215,6 +215,11 @@ pub trait CncService: Send {
     fn opmsg(&mut self, path: u16, kind: i32) -> Reply<OpMsg> {
         unsupported()
     }
+    /// 0x00d0[start, type, n]: operator messages (cnc_rdopmsg3, 30i),
+    /// records already encoded.
+    fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
 
     // --- param ---
     /// 30i read of parameters (0x008d) or diagnosis data (0x0093) [s, e, axis].
@@ -451,6 +456,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             // --- alarm ---
             (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
             (CLASS_CNC, palarm::RDOPMSG) => enc(svc.opmsg(p, a[0])),
+            (CLASS_CNC, palarm::RDOPMSG3) => svc.opmsg3(p, a[0], a[1], a[2]),
 
             // --- param ---
             (CLASS_CNC, param::RDPARAM) => {

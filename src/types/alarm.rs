@@ -149,6 +149,27 @@ impl Default for OPMSG {
     }
 }
 
+/// cnc_rdopmsg3: one operator message (256-character variant).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OPMSG3 {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub char_num: c_short,
+    pub data: [c_char; 256],
+}
+
+impl Default for OPMSG3 {
+    fn default() -> Self {
+        OPMSG3 {
+            datano: 0,
+            r#type: 0,
+            char_num: 0,
+            data: [0; 256],
+        }
+    }
+}
+
 // --- alarm history ---
 
 /// One record of ODBAHIS (48 bytes).

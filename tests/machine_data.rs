@@ -1,0 +1,97 @@
+//! Machine data (issue 11) through the C ABI against the simulator:
+//! cnc_rdopmsg3 (the profile's operator messages and the message a running
+//! program's `#3006` shows).
+
+mod sim;
+
+use fwlib32::ew::*;
+use fwlib32::sim::profile::DEFAULT_PROFILE;
+use fwlib32::types::*;
+use fwlib32::*;
+use std::os::raw::{c_short, c_ushort};
+use std::time::Duration;
+
+/// cnc_rdopmsg3: (code, messages written, the records).
+fn opmsg3(h: c_ushort, kind: c_short, num: c_short) -> (i16, c_short, Vec<OPMSG3>) {
+    let mut b = vec![OPMSG3::default(); 16];
+    let mut n = num;
+    let r = unsafe { cnc_rdopmsg3(h, kind, &mut n, b.as_mut_ptr()) };
+    (r, n, b)
+}
+
+fn text(m: &OPMSG3) -> String {
+    let b: Vec<u8> = m
+        .data
+        .iter()
+        .map(|c| *c as u8)
+        .take_while(|c| *c != 0)
+        .collect();
+    String::from_utf8_lossy(&b).into_owned()
+}
+
+/// The built-in profile with a `#3006` message block before M05 (block 11:
+/// 5.5 s into each pass at 0.5 s a block), on the 30i or the 16i class.
+fn message_profile(class16: bool) -> String {
+    let t = DEFAULT_PROFILE.replacen("N120 M05;", "N115 #3006=7(CHECK TOOL 1);\nN120 M05;", 1);
+    if class16 {
+        t.replacen("class = \"30i\"", "class = \"16i\"\nkind = 1", 1)
+    } else {
+        t
+    }
+}
+
+#[test]
+fn operator_messages_3_read_the_profile_and_a_running_macro_message() {
+    for class16 in [false, true] {
+        let s = sim::start_toml(&message_profile(class16));
+        let h = sim::alloc(&s);
+        s.set_elapsed(Duration::from_secs(1));
+        // The profile's message (type 0).
+        let (r, n, b) = opmsg3(h, 0, 5);
+        assert_eq!((r, n), (EW_OK, 1), "16i class: {class16}");
+        assert_eq!((b[0].datano, b[0].r#type, b[0].char_num), (2001, 0, 20));
+        assert_eq!(text(&b[0]), "CHECK COOLANT NOZZLE");
+        // No macro message yet: the 30i answers none, the 16i its
+        // "no message" record (number -1).
+        let (r, n, b) = opmsg3(h, 4, 5);
+        assert_eq!(r, EW_OK);
+        if class16 {
+            assert_eq!((n, b[0].datano), (1, -1));
+        } else {
+            assert_eq!(n, 0);
+        }
+
+        // The program passes `#3006=7(CHECK TOOL 1)`: its message shows.
+        s.set_elapsed(Duration::from_secs_f64(6.2));
+        let (r, n, b) = opmsg3(h, 4, 5);
+        assert_eq!((r, n), (EW_OK, 1));
+        assert_eq!((b[0].datano, b[0].r#type, b[0].char_num), (7, 4, 12));
+        assert_eq!(text(&b[0]), "CHECK TOOL 1");
+        if !class16 {
+            // Every type (-1): the profile's and the macro message, in
+            // exchanges of five (12 asked: three exchanges).
+            let (r, n, b) = opmsg3(h, -1, 12);
+            assert_eq!((r, n), (EW_OK, 2));
+            assert_eq!((b[0].datano, b[1].datano), (2001, 7));
+            // Still there in the next pass (until a program shows another).
+            s.set_elapsed(Duration::from_secs_f64(7.6));
+            assert_eq!(opmsg3(h, -1, 5).1, 2);
+            // One asked for: the first.
+            let (r, n, b) = opmsg3(h, -1, 1);
+            assert_eq!((r, n, b[0].datano), (EW_OK, 1, 2001));
+        }
+
+        // Local checks: num ≤ 0 EW_LENGTH, NULL EW_DATA.
+        assert_eq!(opmsg3(h, 0, 0).0, EW_LENGTH);
+        assert_eq!(opmsg3(h, 0, -1).0, EW_LENGTH);
+        let mut n: c_short = 5;
+        assert_eq!(
+            unsafe { cnc_rdopmsg3(h, 0, &mut n, std::ptr::null_mut()) },
+            EW_DATA
+        );
+        // A type the CNC does not know: its EW_ATTRIB.
+        assert_eq!(opmsg3(h, 5, 5).0, EW_ATTRIB);
+        sim::free(h);
+        drop(s);
+    }
+}
