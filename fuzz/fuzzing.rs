@@ -267,6 +267,18 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pa::rdopmsg3(a[0] & 1 != 0, a[1], a[2] as i16, a[3]), cx, r),
     },
     Decoder {
+        names: &["cnc_rdctrldi", "cnc_rdctrldo"],
+        run: |cx, a, r| {
+            go(
+                fwlib32::proto::machine::CtrlSignals {
+                    output: a[0] & 1 != 0,
+                },
+                cx,
+                r,
+            )
+        },
+    },
+    Decoder {
         names: &["cnc_rdomhistry"],
         run: |cx, a, r| go(ph::rdomhistry(a[0] as u16, a[1] as u16), cx, r),
     },

@@ -488,6 +488,26 @@ typedef struct ODBTLIFE3 {
 } ODBTLIFE3;
 
 /*
+ cnc_rdctrldi: the spindle control input signals.
+ */
+typedef struct ODBSPDI {
+    char sgnl1;
+    char sgnl2;
+    char sgnl3;
+    char sgnl4;
+} ODBSPDI;
+
+/*
+ cnc_rdctrldo: the spindle control output signals.
+ */
+typedef struct ODBSPDO {
+    char sgnl1;
+    char sgnl2;
+    char sgnl3;
+    char sgnl4;
+} ODBSPDO;
+
+/*
  One value of IODBPRM.
  */
 typedef struct IODBPRM_data {
@@ -2464,6 +2484,23 @@ short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
  `count` must be NULL or point to a writable ODBTLIFE3.
  */
 short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
+
+/*
+ Reads the spindle control input signals (four bytes, `sgnl1` the low
+ byte of the CNC's first signal word).
+
+ # Safety
+ `spdi` must point to a writable ODBSPDI.
+ */
+short cnc_rdctrldi(unsigned short FlibHndl, struct ODBSPDI *spdi);
+
+/*
+ Reads the spindle control output signals (four bytes, as cnc_rdctrldi).
+
+ # Safety
+ `spdo` must point to a writable ODBSPDO.
+ */
+short cnc_rdctrldo(unsigned short FlibHndl, struct ODBSPDO *spdo);
 
 /*
  Reads the actual servo current of each axis.

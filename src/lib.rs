@@ -27,3 +27,5 @@ pub use ffi::{
     macros::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
     upload::*,
 };
+// Machine data (issue 11).
+pub use ffi::machine::*;

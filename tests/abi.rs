@@ -410,6 +410,8 @@ rust_layouts! {
     // --- machine data (issue 11) ---
     ODBOPHIS4 { rec_len, rec_type, u }
     OPMSG3 { datano, r#type, char_num, data }
+    ODBSPDI { sgnl1, sgnl2, sgnl3, sgnl4 }
+    ODBSPDO { sgnl1, sgnl2, sgnl3, sgnl4 }
 }
 
 #[test]

@@ -95,3 +95,37 @@ fn operator_messages_3_read_the_profile_and_a_running_macro_message() {
         drop(s);
     }
 }
+
+#[test]
+fn control_signals_read_the_pmc_and_the_running_spindle() {
+    let s = sim::start_toml(DEFAULT_PROFILE);
+    let h = sim::alloc(&s);
+    s.set_elapsed(Duration::from_secs(1));
+    // Input signals: G070..G073 of the first spindle, as the test writes them.
+    let mut w = [0u8; 12];
+    w[4..6].copy_from_slice(&70u16.to_le_bytes());
+    w[6..8].copy_from_slice(&73u16.to_le_bytes());
+    w[8..12].copy_from_slice(&[0x81, 0x02, 0x40, 0x10]);
+    assert_eq!(unsafe { pmc_wrpmcrng(h, 12, w.as_mut_ptr().cast()) }, EW_OK);
+    let mut di = [0xccu8; 8];
+    assert_eq!(unsafe { cnc_rdctrldi(h, di.as_mut_ptr().cast()) }, EW_OK);
+    assert_eq!(
+        di,
+        [0x81, 0x02, 0x40, 0x10, 0xcc, 0xcc, 0xcc, 0xcc],
+        "the struct only"
+    );
+
+    // Output signals: the spindle turns at S12000 (SARA, bit 3) ...
+    let mut o = ODBSPDO::default();
+    assert_eq!(unsafe { cnc_rdctrldo(h, &mut o) }, EW_OK);
+    assert_eq!(o.sgnl1 as u8 & 0x0b, 0x08);
+    // ... and stands after the program's M05 (SSTA, bit 1).
+    s.set_elapsed(Duration::from_secs_f64(6.2));
+    assert_eq!(unsafe { cnc_rdctrldo(h, &mut o) }, EW_OK);
+    assert_eq!(o.sgnl1 as u8 & 0x0b, 0x02);
+
+    assert_eq!(unsafe { cnc_rdctrldi(h, std::ptr::null_mut()) }, EW_DATA);
+    assert_eq!(unsafe { cnc_rdctrldo(h, std::ptr::null_mut()) }, EW_DATA);
+    sim::free(h);
+    drop(s);
+}

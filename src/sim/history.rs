@@ -353,3 +353,43 @@ impl Machine {
         })
     }
 }
+
+impl Machine {
+    /// 0x005b (cnc_rdctrldi / cnc_rdctrldo): four signal bytes per spindle
+    /// of the path, from PMC unit 1: the input signals G070..G073 (spindle
+    /// k: G070 + 4k ...), the output signals F045..F048, of which the
+    /// running machine sets F045's ALMA (bit 0, the spindle's alarm), SSTA
+    /// (bit 1, speed zero) and SARA (bit 3, turning at speed). Each
+    /// spindle's four bytes go as one big-endian word, the first signal
+    /// byte lowest (what FANUC's library writes as sgnl1..sgnl4).
+    pub(crate) fn spindle_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        use crate::proto::pmc::PmcRange;
+        let spindles: Vec<(i32, i16)> = self
+            .path(path)?
+            .spindles
+            .iter()
+            .map(|s| (s.speed, s.alarm))
+            .collect();
+        let mut out = Vec::new();
+        for (k, (speed, alarm)) in spindles.into_iter().enumerate() {
+            let (adr_type, first) = if output { (1, 45) } else { (0, 70) };
+            let s = first + 4 * k as u16;
+            let range = PmcRange {
+                adr_type,
+                data_type: 0,
+                s,
+                e: s + 3,
+            };
+            let mut b = self.profile.pmc.read(1, &range).unwrap_or(vec![0; 4]);
+            if output {
+                b[0] = (b[0] & !0x0b)
+                    | u8::from(alarm != 0)
+                    | u8::from(speed == 0) << 1
+                    | u8::from(speed != 0 && alarm == 0) << 3;
+            }
+            b.reverse();
+            out.extend(b);
+        }
+        Ok(out)
+    }
+}

@@ -215,6 +215,11 @@ pub trait CncService: Send {
     fn opmsg(&mut self, path: u16, kind: i32) -> Reply<OpMsg> {
         unsupported()
     }
+    /// 0x005b[0 | 1]: the spindle control input / output signals
+    /// (cnc_rdctrldi / cnc_rdctrldo), already encoded.
+    fn ctrl_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        unsupported()
+    }
     /// 0x00d0[start, type, n]: operator messages (cnc_rdopmsg3, 30i),
     /// records already encoded.
     fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
@@ -457,6 +462,10 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
             (CLASS_CNC, palarm::RDOPMSG) => enc(svc.opmsg(p, a[0])),
             (CLASS_CNC, palarm::RDOPMSG3) => svc.opmsg3(p, a[0], a[1], a[2]),
+            (CLASS_CNC, crate::proto::machine::RDCTRLSIG) => match a[0] {
+                0 | 1 => svc.ctrl_signals(p, a[0] == 1),
+                _ => Err(CncError::new(ew::EW_ATTRIB)),
+            },
 
             // --- param ---
             (CLASS_CNC, param::RDPARAM) => {

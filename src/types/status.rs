@@ -102,3 +102,23 @@ pub struct IODBPI {
     pub datano_e: c_short,
     pub data: [c_char; 5],
 }
+
+/// cnc_rdctrldi: the spindle control input signals.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSPDI {
+    pub sgnl1: c_char,
+    pub sgnl2: c_char,
+    pub sgnl3: c_char,
+    pub sgnl4: c_char,
+}
+
+/// cnc_rdctrldo: the spindle control output signals.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSPDO {
+    pub sgnl1: c_char,
+    pub sgnl2: c_char,
+    pub sgnl3: c_char,
+    pub sgnl4: c_char,
+}

@@ -546,7 +546,43 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "when an answer holds no whole block (8 + 8 or 4 bytes per axis of the CNC's maximum; error 2 is read as an answer) FANUC's library asks again from its last number received + 1, number 1 before any, so it restarts from the table's first parameter (or repeats its request for ever); ours returns EW_PROTOCOL (-17), or the CNC's error 2, with the records before it written (the Series 15 case: our simulator answers a Series 15 in 4-byte values, shorter than the 8-byte record blocks FANUC's library reads)",
     },
+    // --- machine data (issue 11) ---
+    Deviation {
+        function: "cnc_rdctrldi",
+        cases: &[
+            "rdctrldi_v3_base",
+            "rdctrldi_v2_base",
+            "rdctrldi_s15_base",
+            "rdctrldi_v3_shape_longer",
+            "rdctrldi_v2_shape_longer",
+            "rdctrldi_v3_reply1",
+            "rdctrldi_v3_reply2",
+            "rdctrldi_v2_reply1",
+            "rdctrldi_v2_reply2",
+            "rdctrldi_v3p2_path3",
+        ],
+        reason: CTRL_SIGNALS_PAST_STRUCT,
+    },
+    Deviation {
+        function: "cnc_rdctrldo",
+        cases: &[
+            "rdctrldo_v3_base",
+            "rdctrldo_v2_base",
+            "rdctrldo_s15_base",
+            "rdctrldo_v3_shape_longer",
+            "rdctrldo_v2_shape_longer",
+            "rdctrldo_v3_reply1",
+            "rdctrldo_v3_reply2",
+            "rdctrldo_v2_reply1",
+            "rdctrldo_v2_reply2",
+            "rdctrldo_v3p2_path3",
+        ],
+        reason: CTRL_SIGNALS_PAST_STRUCT,
+    },
 ];
+
+/// cnc_rdctrldi / cnc_rdctrldo.
+const CTRL_SIGNALS_PAST_STRUCT: &str = "FANUC's library writes one 4-byte word per two bytes of the answer, up to the CNC's maximum spindles (8 words, 32 bytes), into the caller's 4-byte ODBSPDI / ODBSPDO, the words past the answer from its receive buffer; ours writes the first word, the struct, only";
 
 /// cnc_acts2 / cnc_rdspload on the 30i class.
 const COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the spindle count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing";

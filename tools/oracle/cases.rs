@@ -986,6 +986,8 @@ const WORDS: &[Word] = &[
         &["0|-1|1|2|3|4|5|-2", "5|1|0|-1|2|6|12"],
         &["-1 12", "4 1"],
     ),
+    w("rdctrldi", &[]),
+    w("rdctrldo", &[]),
 ];
 
 /// The C function a word calls.
@@ -1245,6 +1247,9 @@ fn replies(word: &str) -> Vec<&'static [u8]> {
         .into_iter()
         .map(|(more, count, types)| leak(op4_answer(more, count, types)))
         .collect(),
+        "rdctrldi" | "rdctrldo" => [&[0x11, 0x22][..], &[1, 2, 3, 4, 5, 6, 7, 8], &[0xa5; 64]]
+            .into_iter()
+            .collect(),
         "rdopmsg3" => [
             &[(2001, 0, "CHECK COOLANT"), (70001, 4, "WORLD")][..],
             &[(1, 0, "A"); 6],

@@ -455,6 +455,8 @@ static char *text(int i, long *n) {
     /* machine data (issue 11) */                                                                \
     WORD(rdophistry4, { unsigned short e = N(2), l = N(3); short r = F(cnc_rdophistry4)(H, N(1), &e, &l, B0); field("e_no", e); field("length", l); return r; }) \
     WORD(rdopmsg3, SHORT_IO(num, 2, F(cnc_rdopmsg3)(H, N(1), &num, B0))) \
+    WORD(rdctrldi, return F(cnc_rdctrldi)(H, B0)) \
+    WORD(rdctrldo, return F(cnc_rdctrldo)(H, B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \
