@@ -279,6 +279,10 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
+        names: &["cnc_rdprstrinfo"],
+        run: |cx, _, r| go(fwlib32::proto::machine::PrstrInfo, cx, r),
+    },
+    Decoder {
         names: &["cnc_rdomhistry"],
         run: |cx, a, r| go(ph::rdomhistry(a[0] as u16, a[1] as u16), cx, r),
     },

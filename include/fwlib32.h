@@ -1138,6 +1138,22 @@ typedef struct ODBNC {
 } ODBNC;
 
 /*
+ cnc_rdprstrinfo: program restart information.
+ */
+typedef struct ODBPRS {
+    short datano;
+    short type;
+    short data_info[5];
+    LONG rstr_bc;
+    LONG rstr_m[35];
+    LONG rstr_t[2];
+    LONG rstr_s;
+    LONG rstr_b;
+    LONG dest[MAX_AXIS];
+    LONG dist[MAX_AXIS];
+} ODBPRS;
+
+/*
  cnc_rdseqnum: sequence number.
  */
 typedef struct ODBSEQ {
@@ -3165,6 +3181,20 @@ short cnc_rdprogline(unsigned short FlibHndl,
                      char *prog_data,
                      unsigned long *line_len,
                      unsigned long *data_len);
+
+/*
+ Reads the program restart information in one exchange: for the block
+ counter, M, T, S and B codes the number of values the CNC sent
+ (`data_info`) and the values, then the restart position and distance
+ of every axis. The answers are written in order, each at its member
+ (more values than a member holds run into the next ones, as FANUC's
+ library writes them, but never past ODBPRS); a CNC error in a later
+ subpacket is returned with the earlier ones written.
+
+ # Safety
+ `prs` must point to a writable ODBPRS.
+ */
+short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 
 /*
  Reads the sequence number of the block being executed.

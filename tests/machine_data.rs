@@ -129,3 +129,57 @@ fn control_signals_read_the_pmc_and_the_running_spindle() {
     sim::free(h);
     drop(s);
 }
+
+fn prstr(h: c_ushort) -> (i16, ODBPRS) {
+    let mut p = ODBPRS::default();
+    let r = unsafe { cnc_rdprstrinfo(h, &mut p) };
+    (r, p)
+}
+
+fn absolute_x(h: c_ushort) -> i32 {
+    let mut a = ODBAXIS {
+        dummy: 0,
+        r#type: 0,
+        data: [0; 32],
+    };
+    assert_eq!(unsafe { cnc_absolute(h, 1, 8, &mut a) }, EW_OK);
+    a.data[0]
+}
+
+#[test]
+fn program_restart_information_follows_a_reset_made_here() {
+    let s = sim::start_toml(DEFAULT_PROFILE);
+    let h = sim::alloc(&s);
+    // The program runs; nothing interrupted it yet: no restart data.
+    s.set_elapsed(Duration::from_secs(1));
+    let (r, p) = prstr(h);
+    assert_eq!((r, p.data_info), (EW_OK, [0; 5]));
+    assert!(p.dest.iter().chain(&p.dist).all(|v| *v == 0));
+
+    // A reset at N70 (block 7, X moving to 50 mm at F1500): the block, the
+    // modal M03, T1, S12000 (no B code) and where the axes stopped.
+    s.set_elapsed(Duration::from_secs_f64(3.2));
+    assert_eq!(cnc_reset(h), EW_OK);
+    let x = absolute_x(h);
+    assert!(x > 0 && x < 50_000, "X stopped on its way: {x}");
+    let (r, p) = prstr(h);
+    assert_eq!((r, p.data_info), (EW_OK, [1, 1, 1, 1, 0]));
+    assert_eq!(
+        (p.rstr_bc, p.rstr_m[0], p.rstr_t[0], p.rstr_s),
+        (7, 3, 1, 12000)
+    );
+    assert_eq!((p.dest[0], p.dist[0]), (x, 0));
+
+    // Started again from the top: the distance back to the restart point.
+    assert_eq!(cnc_start(h), EW_OK);
+    s.set_elapsed(Duration::from_secs_f64(5.0));
+    let now = absolute_x(h);
+    let (r, p) = prstr(h);
+    assert_eq!(r, EW_OK);
+    assert_eq!((p.dest[0], p.dist[0]), (x, x - now));
+    assert_ne!(p.dist[0], 0);
+
+    assert_eq!(unsafe { cnc_rdprstrinfo(h, std::ptr::null_mut()) }, EW_DATA);
+    sim::free(h);
+    drop(s);
+}

@@ -305,6 +305,9 @@ impl CncService for Machine {
     fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
         self.sim_opmsg3(path, start, kind, n)
     }
+    fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
+        Machine::restart_info(self, path, k)
+    }
     fn ctrl_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
         self.spindle_signals(path, output)
     }

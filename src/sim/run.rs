@@ -116,8 +116,22 @@ pub struct PathRun {
     /// The macro message on display (`#3006=n(TEXT)` of the last such
     /// block the program passed): number and text (cnc_rdopmsg3, type 4).
     pub message: Option<(i32, String)>,
+    /// Where the last reset (or cycle start) interrupted a running program
+    /// (cnc_rdprstrinfo's program restart data); None before any.
+    pub restart: Option<Restart>,
     /// What the clock needs: parsed program, profile base values, caches.
     pub(crate) engine: Engine,
+}
+
+/// Program restart data: where a running program was interrupted.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Restart {
+    /// The block interrupted, counted from the program's first (1..).
+    pub block: i32,
+    /// The modal codes there (M, T, S, B for the restart).
+    pub modal: ProgramModal,
+    /// The absolute position of each axis of the path there.
+    pub dest: Vec<i32>,
 }
 
 /// The runner's own state for one path (not part of the visible model).

@@ -220,6 +220,10 @@ pub trait CncService: Send {
     fn ctrl_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
         unsupported()
     }
+    /// 0x0043[k]: program restart data (cnc_rdprstrinfo), encoded.
+    fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
     /// 0x00d0[start, type, n]: operator messages (cnc_rdopmsg3, 30i),
     /// records already encoded.
     fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
@@ -462,6 +466,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
             (CLASS_CNC, palarm::RDOPMSG) => enc(svc.opmsg(p, a[0])),
             (CLASS_CNC, palarm::RDOPMSG3) => svc.opmsg3(p, a[0], a[1], a[2]),
+            (CLASS_CNC, crate::proto::machine::RDPRSTR) => svc.restart_info(p, a[0]),
             (CLASS_CNC, crate::proto::machine::RDCTRLSIG) => match a[0] {
                 0 | 1 => svc.ctrl_signals(p, a[0] == 1),
                 _ => Err(CncError::new(ew::EW_ATTRIB)),

@@ -988,6 +988,11 @@ const WORDS: &[Word] = &[
     ),
     w("rdctrldi", &[]),
     w("rdctrldo", &[]),
+    // After a reset that interrupted the running program: restart data.
+    Word {
+        setup: &["reset"],
+        ..w("rdprstrinfo", &[])
+    },
 ];
 
 /// The C function a word calls.
@@ -1249,6 +1254,18 @@ fn replies(word: &str) -> Vec<&'static [u8]> {
         .collect(),
         "rdctrldi" | "rdctrldo" => [&[0x11, 0x22][..], &[1, 2, 3, 4, 5, 6, 7, 8], &[0xa5; 64]]
             .into_iter()
+            .collect(),
+        // The block counter answer (subpacket 1): more words than its
+        // member holds run on into the next members.
+        "rdprstrinfo" => [1, 3, 40, 100]
+            .into_iter()
+            .map(|n| {
+                leak(
+                    (1..=n)
+                        .flat_map(|k: i32| (0x100 + k).to_be_bytes())
+                        .collect(),
+                )
+            })
             .collect(),
         "rdopmsg3" => [
             &[(2001, 0, "CHECK COOLANT"), (70001, 4, "WORLD")][..],

@@ -457,6 +457,7 @@ static char *text(int i, long *n) {
     WORD(rdopmsg3, SHORT_IO(num, 2, F(cnc_rdopmsg3)(H, N(1), &num, B0))) \
     WORD(rdctrldi, return F(cnc_rdctrldi)(H, B0)) \
     WORD(rdctrldo, return F(cnc_rdctrldo)(H, B0)) \
+    WORD(rdprstrinfo, return F(cnc_rdprstrinfo)(H, B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \
