@@ -187,8 +187,9 @@ pub unsafe extern "C" fn cnc_rdalminfo(
 /// character count as the CNC sent them, then the text as sent (at most 256
 /// bytes), zero-filled: always the 262 bytes of OPMSG, as FANUC's library.
 /// Before any traffic: another `type`: EW_ATTRIB (4); `length` (unsigned)
-/// below 262: EW_LENGTH (2). A Series 15's answer writes nothing (FANUC's
-/// library). A short answer reads as zeros.
+/// below 262: EW_LENGTH (2). On a Series 15 an answer with less than 256
+/// text bytes writes nothing, a whole one 136 bytes (FANUC's library). A
+/// short answer reads as zeros.
 ///
 /// # Safety
 /// `opmsg` must have 262 writable bytes.
@@ -210,19 +211,30 @@ pub unsafe extern "C" fn cnc_rdopmsg(
             return Err(Error::local(EW_LENGTH, "length must be at least 262"));
         }
         let m = h.call(&pa::rdopmsg(r#type))?;
-        if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
-            return Ok(());
-        }
+        // A Series 15 (FANUC's library: its 136-byte OPMSG, 130 text
+        // bytes): only a whole answer (256 text bytes) is written.
+        let written = if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
+            if m.text.len() < SIZE - 6 {
+                return Ok(());
+            }
+            S15_OPMSG
+        } else {
+            SIZE
+        };
         let mut b = [0u8; SIZE];
         b[0..2].copy_from_slice(&low16(m.datano).to_ne_bytes());
         b[2..4].copy_from_slice(&low16(m.kind).to_ne_bytes());
         b[4..6].copy_from_slice(&low16(m.char_num).to_ne_bytes());
         let n = m.text.len().min(SIZE - 6);
         b[6..6 + n].copy_from_slice(&m.text[..n]);
-        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, SIZE) };
+        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, written) };
         Ok(())
     })
 }
+
+/// The bytes FANUC's library writes of a Series 15's operator message:
+/// number, type, count and 130 text bytes (its OPMSG of 129 characters).
+const S15_OPMSG: usize = 136;
 
 /// Reads the operator messages of `type` (-1: all) on display into
 /// `*num` OPMSG3 records; `*num` = the messages written. The 30i class is

@@ -1160,10 +1160,10 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
             );
         }
     }
-    for profile in ["v3", "v2"] {
+    for profile in ["v3", "v2", "s15"] {
         for (k, payload) in replies(w.word).into_iter().enumerate() {
             // A 16i's frames hold at most 1450 bytes.
-            if profile == "v2" && payload.len() > 1400 {
+            if profile != "v3" && payload.len() > 1400 {
                 continue;
             }
             case(
@@ -1267,6 +1267,9 @@ fn replies(word: &str) -> Vec<&'static [u8]> {
                 )
             })
             .collect(),
+        // An answer with less text than the 256 bytes (a Series 15 writes
+        // nothing then).
+        "rdopmsg" => vec![leak(opmsg3_answer(&[(2001, 0, "SHORT")])[..40].to_vec())],
         "rdopmsg3" => [
             &[(2001, 0, "CHECK COOLANT"), (70001, 4, "WORLD")][..],
             &[(1, 0, "A"); 6],
