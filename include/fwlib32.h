@@ -2836,8 +2836,9 @@ short cnc_rdopmode(unsigned short FlibHndl, short *mode);
  character count as the CNC sent them, then the text as sent (at most 256
  bytes), zero-filled: always the 262 bytes of OPMSG, as FANUC's library.
  Before any traffic: another `type`: EW_ATTRIB (4); `length` (unsigned)
- below 262: EW_LENGTH (2). A Series 15's answer writes nothing (FANUC's
- library). A short answer reads as zeros.
+ below 262: EW_LENGTH (2). On a Series 15 an answer with less than 256
+ text bytes writes nothing, a whole one 136 bytes (FANUC's library). A
+ short answer reads as zeros.
 
  # Safety
  `opmsg` must have 262 writable bytes.
