@@ -336,6 +336,41 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(ph::rdophistry(a[0] as u16, a[1] as u16), cx, r),
     },
     Decoder {
+        names: &["cnc_rdophistry4"],
+        run: |cx, a, r| {
+            let c = ph::OpHis4 { s: a[0], e: a[1] };
+            black_box(c.request(cx));
+            if let Ok(ans) = c.decode(cx, r) {
+                let (recs, _) = ph::op4_walk(&ans, a[2] & 0xffff);
+                for (kind, t, wire) in &recs {
+                    let mut out = vec![0u8; kind.size];
+                    ph::op4_put(kind, *t, wire, &mut out);
+                    black_box(out);
+                }
+            }
+        },
+    },
+    Decoder {
+        names: &["cnc_rdopmsg3"],
+        run: |cx, a, r| go(pa::rdopmsg3(a[0] & 1 != 0, a[1], a[2] as i16, a[3]), cx, r),
+    },
+    Decoder {
+        names: &["cnc_rdctrldi", "cnc_rdctrldo"],
+        run: |cx, a, r| {
+            go(
+                fwlib32::proto::machine::CtrlSignals {
+                    output: a[0] & 1 != 0,
+                },
+                cx,
+                r,
+            )
+        },
+    },
+    Decoder {
+        names: &["cnc_rdprstrinfo"],
+        run: |cx, _, r| go(fwlib32::proto::machine::PrstrInfo, cx, r),
+    },
+    Decoder {
         names: &["cnc_rdomhistry"],
         run: |cx, a, r| go(ph::rdomhistry(a[0] as u16, a[1] as u16), cx, r),
     },

@@ -488,6 +488,26 @@ typedef struct ODBTLIFE3 {
 } ODBTLIFE3;
 
 /*
+ cnc_rdctrldi: the spindle control input signals.
+ */
+typedef struct ODBSPDI {
+    char sgnl1;
+    char sgnl2;
+    char sgnl3;
+    char sgnl4;
+} ODBSPDI;
+
+/*
+ cnc_rdctrldo: the spindle control output signals.
+ */
+typedef struct ODBSPDO {
+    char sgnl1;
+    char sgnl2;
+    char sgnl3;
+    char sgnl4;
+} ODBSPDO;
+
+/*
  One value of IODBPRM.
  */
 typedef struct IODBPRM_data {
@@ -848,6 +868,16 @@ typedef struct OPMSG {
 } OPMSG;
 
 /*
+ cnc_rdopmsg3: one operator message (256-character variant).
+ */
+typedef struct OPMSG3 {
+    short datano;
+    short type;
+    short char_num;
+    char data[256];
+} OPMSG3;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -1153,6 +1183,22 @@ typedef union ODBNC_u {
 typedef struct ODBNC {
     union ODBNC_u u;
 } ODBNC;
+
+/*
+ cnc_rdprstrinfo: program restart information.
+ */
+typedef struct ODBPRS {
+    short datano;
+    short type;
+    short data_info[5];
+    LONG rstr_bc;
+    LONG rstr_m[35];
+    LONG rstr_t[2];
+    LONG rstr_s;
+    LONG rstr_b;
+    LONG dest[MAX_AXIS];
+    LONG dist[MAX_AXIS];
+} ODBPRS;
 
 /*
  cnc_rdseqnum: sequence number.
@@ -1698,6 +1744,264 @@ typedef struct ODBPMCTITLE {
     char written[48];
     char remarks[48];
 } ODBPMCTITLE;
+
+/*
+ ODBOPHIS4 MDI key record.
+ */
+typedef struct ODBOPHIS4_MDI {
+    char key_code;
+    char pw_flag;
+    short pth_no;
+    short ex_flag;
+    short hour;
+    short minute;
+    short second;
+} ODBOPHIS4_MDI;
+
+/*
+ ODBOPHIS4 signal record.
+ */
+typedef struct ODBOPHIS4_SGN {
+    short sig_name;
+    short sig_no;
+    char sig_old;
+    char sig_new;
+    short pmc_no;
+    short hour;
+    short minute;
+    short second;
+    short dummy;
+} ODBOPHIS4_SGN;
+
+/*
+ ODBOPHIS4 alarm record.
+ */
+typedef struct ODBOPHIS4_ALM {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+} ODBOPHIS4_ALM;
+
+/*
+ ODBOPHIS4 date record.
+ */
+typedef struct ODBOPHIS4_DATE {
+    short evnt_type;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short dummy;
+} ODBOPHIS4_DATE;
+
+/*
+ ODBOPHIS4 alarm record with the modal and position snapshot.
+ */
+typedef struct ODBOPHIS4_IAL {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short sys_alm;
+    short dsp_flg;
+    short axis_num;
+    short dummy1;
+    LONG g_modal[10];
+    char g_dp[10];
+    short dummy2;
+    LONG a_modal[10];
+    char a_dp[10];
+    short dummy3;
+    LONG abs_pos[32];
+    char abs_dp[32];
+    LONG mcn_pos[32];
+    char mcn_dp[32];
+} ODBOPHIS4_IAL;
+
+/*
+ ODBOPHIS4 alarm record with its message and the snapshot.
+ */
+typedef struct ODBOPHIS4_MAL {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short sys_alm;
+    short dsp_flg;
+    short axis_num;
+    char alm_msg[64];
+    short dummy1;
+    LONG g_modal[10];
+    char g_dp[10];
+    short dummy2;
+    LONG a_modal[10];
+    char a_dp[10];
+    short dummy3;
+    LONG abs_pos[32];
+    char abs_dp[32];
+    LONG mcn_pos[32];
+    char mcn_dp[32];
+} ODBOPHIS4_MAL;
+
+/*
+ ODBOPHIS4 operator message record.
+ */
+typedef struct ODBOPHIS4_OPM {
+    short dsp_flg;
+    short om_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char ope_msg[256];
+} ODBOPHIS4_OPM;
+
+/*
+ ODBOPHIS4 tool offset record.
+ */
+typedef struct ODBOPHIS4_OFS {
+    short ofs_grp;
+    short ofs_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    LONG ofs_old;
+    LONG ofs_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_OFS;
+
+/*
+ ODBOPHIS4 parameter record.
+ */
+typedef struct ODBOPHIS4_PRM {
+    short prm_grp;
+    short prm_num;
+    short hour;
+    short minute;
+    short second;
+    short prm_len;
+    LONG prm_no;
+    LONG prm_old;
+    LONG prm_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_PRM;
+
+/*
+ ODBOPHIS4 work offset record.
+ */
+typedef struct ODBOPHIS4_WOF {
+    short ofs_grp;
+    short ofs_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short axis_no;
+    short dummy;
+    LONG ofs_old;
+    LONG ofs_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_WOF;
+
+/*
+ ODBOPHIS4 macro variable record.
+ */
+typedef struct ODBOPHIS4_MAC {
+    short mac_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    short dummy;
+    LONG mac_old;
+    LONG mac_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_MAC;
+
+/*
+ ODBOPHIS4 macro variable record (32-bit variable number).
+ */
+typedef struct ODBOPHIS4_MAC2 {
+    LONG mac_no;
+    short hour;
+    short minute;
+    short second;
+    short pth_no;
+    LONG mac_old;
+    LONG mac_new;
+    short old_dp;
+    short new_dp;
+} ODBOPHIS4_MAC2;
+
+/*
+ ODBOPHIS4 screen change record.
+ */
+typedef struct ODBOPHIS4_SCRN {
+    short scrn_old;
+    short scrn_new;
+    short dummy;
+    short hour;
+    short minute;
+    short second;
+} ODBOPHIS4_SCRN;
+
+/*
+ The body of one ODBOPHIS4 record, by its `rec_type`.
+ */
+typedef union ODBOPHIS4_u {
+    struct ODBOPHIS4_MDI rec_mdi;
+    struct ODBOPHIS4_SGN rec_sgn;
+    struct ODBOPHIS4_ALM rec_alm;
+    struct ODBOPHIS4_DATE rec_date;
+    struct ODBOPHIS4_IAL rec_ial;
+    struct ODBOPHIS4_MAL rec_mal;
+    struct ODBOPHIS4_OPM rec_opm;
+    struct ODBOPHIS4_OFS rec_ofs;
+    struct ODBOPHIS4_PRM rec_prm;
+    struct ODBOPHIS4_WOF rec_wof;
+    struct ODBOPHIS4_MAC rec_mac;
+    struct ODBOPHIS4_MAC2 rec_mac2;
+    struct ODBOPHIS4_SCRN rec_scrn;
+} ODBOPHIS4_u;
+
+/*
+ cnc_rdophistry4: one operation history record. The records are packed
+ one after the other in the caller's buffer, each `rec_len` bytes long
+ (the size of its kind's member plus 4), not `sizeof(ODBOPHIS4)`.
+ */
+typedef struct ODBOPHIS4 {
+    short rec_len;
+    short rec_type;
+    union ODBOPHIS4_u u;
+} ODBOPHIS4;
 
 #ifdef __cplusplus
 extern "C" {
@@ -2355,6 +2659,23 @@ short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
 short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
 
 /*
+ Reads the spindle control input signals (four bytes, `sgnl1` the low
+ byte of the CNC's first signal word).
+
+ # Safety
+ `spdi` must point to a writable ODBSPDI.
+ */
+short cnc_rdctrldi(unsigned short FlibHndl, struct ODBSPDI *spdi);
+
+/*
+ Reads the spindle control output signals (four bytes, as cnc_rdctrldi).
+
+ # Safety
+ `spdo` must point to a writable ODBSPDO.
+ */
+short cnc_rdctrldo(unsigned short FlibHndl, struct ODBSPDO *spdo);
+
+/*
  Reads the actual servo current of each axis.
 
  # Safety
@@ -2653,6 +2974,26 @@ short cnc_rdophistry(unsigned short FlibHndl,
                      struct ODBHIS *ophis);
 
 /*
+ Reads the operation history records `s_number..=*e_number` (1 = the
+ oldest kept) into the caller's buffer as ODBOPHIS4 records packed one
+ after the other, each `rec_len` bytes long; `*length` (in: the buffer's
+ size) = the bytes written, `*e_number` = the last record written. The
+ CNC may answer a range in several exchanges; records that do not fit
+ end the exchange (the next one starts after the records the CNC sent),
+ the first not fitting is EW_LENGTH. An unknown record type is
+ EW_VERSION, the records before it written, as FANUC's library does.
+
+ # Safety
+ `e_number` and `length` must point to writable unsigned shorts, `ophis`
+ to `*length` writable bytes.
+ */
+short cnc_rdophistry4(unsigned short FlibHndl,
+                      unsigned short s_number,
+                      unsigned short *e_number,
+                      unsigned short *length,
+                      void *ophis);
+
+/*
  Reads the operation mode word (of the spindle: 0 others, 1 normal, 2
  orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning,
  by FANUC's Windows header). An answer without a whole word writes
@@ -2669,13 +3010,26 @@ short cnc_rdopmode(unsigned short FlibHndl, short *mode);
  character count as the CNC sent them, then the text as sent (at most 256
  bytes), zero-filled: always the 262 bytes of OPMSG, as FANUC's library.
  Before any traffic: another `type`: EW_ATTRIB (4); `length` (unsigned)
- below 262: EW_LENGTH (2). A Series 15's answer writes nothing (FANUC's
- library). A short answer reads as zeros.
+ below 262: EW_LENGTH (2). On a Series 15 an answer with less than 256
+ text bytes writes nothing, a whole one 136 bytes (FANUC's library). A
+ short answer reads as zeros.
 
  # Safety
  `opmsg` must have 262 writable bytes.
  */
 short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMSG *opmsg);
+
+/*
+ Reads the operator messages of `type` (-1: all) on display into
+ `*num` OPMSG3 records; `*num` = the messages written. The 30i class is
+ asked five messages an exchange until `*num` are asked for (an error
+ after some were read ends the read), the 16i class once. More messages
+ in the first answer than `*num`: EW_LENGTH, nothing written.
+
+ # Safety
+ `num` must point to a writable short, `opmsg` to `*num` OPMSG3.
+ */
+short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG3 *opmsg);
 
 /*
  Reads the numbers and attributes of up to `read_no` parameters from
@@ -3041,6 +3395,20 @@ short cnc_rdprogline(unsigned short FlibHndl,
                      char *prog_data,
                      unsigned long *line_len,
                      unsigned long *data_len);
+
+/*
+ Reads the program restart information in one exchange: for the block
+ counter, M, T, S and B codes the number of values the CNC sent
+ (`data_info`) and the values, then the restart position and distance
+ of every axis. The answers are written in order, each at its member
+ (more values than a member holds run into the next ones, as FANUC's
+ library writes them, but never past ODBPRS); a CNC error in a later
+ subpacket is returned with the earlier ones written.
+
+ # Safety
+ `prs` must point to a writable ODBPRS.
+ */
+short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 
 /*
  Reads the sequence number of the block being executed.

@@ -27,3 +27,5 @@ pub use ffi::{
     macros::*, maintenance::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*,
     status::*, tool::*, upload::*,
 };
+// Machine data (issue 11).
+pub use ffi::machine::*;

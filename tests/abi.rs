@@ -423,6 +423,13 @@ rust_layouts! {
 
     // --- upload ---
     ODBUP { dummy, data }
+
+    // --- machine data (issue 11) ---
+    ODBOPHIS4 { rec_len, rec_type, u }
+    OPMSG3 { datano, r#type, char_num, data }
+    ODBSPDI { sgnl1, sgnl2, sgnl3, sgnl4 }
+    ODBSPDO { sgnl1, sgnl2, sgnl3, sgnl4 }
+    ODBPRS { datano, r#type, data_info, rstr_bc, rstr_m, rstr_t, rstr_s, rstr_b, dest, dist }
 }
 
 #[test]

@@ -152,3 +152,119 @@ fn pitch_error_table_reads_the_profile_across_exchanges() {
     sim::free(h);
     drop(s);
 }
+
+/// cnc_rdophistry4 into a buffer: (code, last number, bytes written, buffer).
+fn ophis4(h: c_ushort, s: u16, e: u16, length: u16) -> (i16, u16, u16, Vec<u8>) {
+    let mut b = vec![0xccu8; 8192];
+    let (mut e, mut l) = (e, length);
+    let r = unsafe { cnc_rdophistry4(h, s, &mut e, &mut l, b.as_mut_ptr().cast()) };
+    (r, e, l, b)
+}
+
+/// The records of a cnc_rdophistry4 buffer: (rec_type, body bytes).
+fn records4(b: &[u8], len: u16) -> Vec<(i16, Vec<u8>)> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while at < usize::from(len) {
+        let n = i16::from_ne_bytes([b[at], b[at + 1]]) as usize;
+        let t = i16::from_ne_bytes([b[at + 2], b[at + 3]]);
+        out.push((t, b[at + 4..at + n].to_vec()));
+        at += n;
+    }
+    out
+}
+
+fn short_at(b: &[u8], at: usize) -> i16 {
+    i16::from_ne_bytes([b[at], b[at + 1]])
+}
+
+#[test]
+fn operation_history_4_reads_the_profile_and_a_signal_written_here() {
+    let (s, h) = sim::start_alloc(Profile::default());
+    // The profile's alarm, signal, MDI key and date (its time stamp is in
+    // every record), 24 + 20 + 16 + 20 bytes.
+    let (r, e, l, b) = ophis4(h, 1, 10, 4096);
+    assert_eq!((r, e, l), (EW_OK, 4, 80));
+    let recs = records4(&b, l);
+    let types: Vec<i16> = recs.iter().map(|r| r.0).collect();
+    assert_eq!(types, [2, 1, 0, 3]);
+    unsafe {
+        let alm = (*b.as_ptr().cast::<ODBOPHIS4>()).u.rec_alm;
+        assert_eq!(
+            (alm.alm_grp, alm.alm_no, alm.year, alm.month),
+            (19, 1001, 2024, 5)
+        );
+        assert_eq!((alm.hour, alm.minute, alm.second), (13, 45, 30));
+        let sgn = (*b.as_ptr().add(24).cast::<ODBOPHIS4>()).u.rec_sgn;
+        assert_eq!(
+            (sgn.sig_name, sgn.sig_no, sgn.sig_old, sgn.sig_new),
+            (0, 43, 1, 5)
+        );
+        let mdi = (*b.as_ptr().add(44).cast::<ODBOPHIS4>()).u.rec_mdi;
+        assert_eq!((mdi.key_code as u8, mdi.hour, mdi.second), (0x52, 13, 30));
+        let date = (*b.as_ptr().add(60).cast::<ODBOPHIS4>()).u.rec_date;
+        assert_eq!((date.year, date.month, date.day), (2024, 5, 17));
+    }
+
+    // A G-signal byte written through FOCAS is recorded, newest first,
+    // after today's date record.
+    let mut w = [0u8; 9];
+    w[4..6].copy_from_slice(&12u16.to_le_bytes());
+    w[6..8].copy_from_slice(&12u16.to_le_bytes());
+    w[8] = 0x42;
+    assert_eq!(unsafe { pmc_wrpmcrng(h, 9, w.as_mut_ptr().cast()) }, EW_OK);
+    let (r, e, l, b) = ophis4(h, 1, 2, 4096);
+    assert_eq!((r, e, l), (EW_OK, 2, 40));
+    let recs = records4(&b, l);
+    assert_eq!((recs[0].0, recs[1].0), (1, 3));
+    assert_eq!(short_at(&recs[0].1, 2), 12);
+    assert_eq!(recs[0].1[5], 0x42, "the new bits");
+    assert!(short_at(&recs[1].1, 2) >= 2025, "today's date");
+
+    // Only what fits: the first record alone; none: EW_LENGTH. A start
+    // past the history: nothing; 0 or after the end: EW_NUMBER.
+    let (r, e, l, _) = ophis4(h, 3, 6, 30);
+    assert_eq!((r, e, l), (EW_OK, 3, 24));
+    let (r, e, l, _) = ophis4(h, 3, 6, 10);
+    assert_eq!((r, e, l), (EW_LENGTH, 6, 0));
+    let (r, e, l, _) = ophis4(h, 7, 9, 4096);
+    assert_eq!((r, e, l), (EW_OK, 9, 0));
+    assert_eq!(ophis4(h, 0, 9, 4096).0, EW_NUMBER);
+    assert_eq!(ophis4(h, 5, 4, 4096).0, EW_NUMBER);
+    let (mut e, mut l) = (5u16, 100u16);
+    let null = std::ptr::null_mut();
+    assert_eq!(
+        unsafe { cnc_rdophistry4(h, 1, &mut e, &mut l, null) },
+        EW_DATA
+    );
+    sim::free(h);
+    drop(s);
+}
+
+#[test]
+fn operation_history_4_reads_a_long_range_in_several_exchanges() {
+    let mut p = Profile::default();
+    let key = |k: i32| fwlib32::sim::history::Operation {
+        kind: "mdi".into(),
+        number: k,
+        time: "2024-05-17 13:45:30".into(),
+        ..Default::default()
+    };
+    p.operation_history.entries = (0..150).map(key).collect();
+    let (s, h) = sim::start_alloc(p);
+    // 150 MDI records of 20 bytes: 71 an answer, three exchanges.
+    let (r, e, l, b) = ophis4(h, 1, 200, 8000);
+    assert_eq!((r, e, l), (EW_OK, 150, 2400));
+    let recs = records4(&b, l);
+    assert_eq!(recs.len(), 150);
+    assert!(
+        recs.iter()
+            .enumerate()
+            .all(|(i, r)| r.0 == 0 && r.1[0] == i as u8)
+    );
+    // A buffer for 100: the second exchange's records up to the 100th.
+    let (r, e, l, _) = ophis4(h, 1, 150, 1600);
+    assert_eq!((r, e, l), (EW_OK, 100, 1600));
+    sim::free(h);
+    drop(s);
+}

@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
 use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
 use crate::proto::open::CncClass;
-use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG};
+use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3};
 use std::os::raw::{c_long, c_short, c_ushort};
 
 /// Reads the alarm status bits; `data` = their low 16 bits.
@@ -187,8 +187,9 @@ pub unsafe extern "C" fn cnc_rdalminfo(
 /// character count as the CNC sent them, then the text as sent (at most 256
 /// bytes), zero-filled: always the 262 bytes of OPMSG, as FANUC's library.
 /// Before any traffic: another `type`: EW_ATTRIB (4); `length` (unsigned)
-/// below 262: EW_LENGTH (2). A Series 15's answer writes nothing (FANUC's
-/// library). A short answer reads as zeros.
+/// below 262: EW_LENGTH (2). On a Series 15 an answer with less than 256
+/// text bytes writes nothing, a whole one 136 bytes (FANUC's library). A
+/// short answer reads as zeros.
 ///
 /// # Safety
 /// `opmsg` must have 262 writable bytes.
@@ -210,16 +211,96 @@ pub unsafe extern "C" fn cnc_rdopmsg(
             return Err(Error::local(EW_LENGTH, "length must be at least 262"));
         }
         let m = h.call(&pa::rdopmsg(r#type))?;
-        if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
-            return Ok(());
-        }
+        // A Series 15 (FANUC's library: its 136-byte OPMSG, 130 text
+        // bytes): only a whole answer (256 text bytes) is written.
+        let written = if h.ctx().class == (CncClass::Series16 { kind: 2 }) {
+            if m.text.len() < SIZE - 6 {
+                return Ok(());
+            }
+            S15_OPMSG
+        } else {
+            SIZE
+        };
         let mut b = [0u8; SIZE];
         b[0..2].copy_from_slice(&low16(m.datano).to_ne_bytes());
         b[2..4].copy_from_slice(&low16(m.kind).to_ne_bytes());
         b[4..6].copy_from_slice(&low16(m.char_num).to_ne_bytes());
         let n = m.text.len().min(SIZE - 6);
         b[6..6 + n].copy_from_slice(&m.text[..n]);
-        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, SIZE) };
+        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, written) };
+        Ok(())
+    })
+}
+
+/// The bytes FANUC's library writes of a Series 15's operator message:
+/// number, type, count and 130 text bytes (its OPMSG of 129 characters).
+const S15_OPMSG: usize = 136;
+
+/// Reads the operator messages of `type` (-1: all) on display into
+/// `*num` OPMSG3 records; `*num` = the messages written. The 30i class is
+/// asked five messages an exchange until `*num` are asked for (an error
+/// after some were read ends the read), the 16i class once. More messages
+/// in the first answer than `*num`: EW_LENGTH, nothing written.
+///
+/// # Safety
+/// `num` must point to a writable short, `opmsg` to `*num` OPMSG3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdopmsg3(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    num: *mut c_short,
+    opmsg: *mut OPMSG3,
+) -> c_short {
+    ffi_boundary!("cnc_rdopmsg3", {
+        let h = handles::get(FlibHndl)?;
+        let num = nonnull(num)?;
+        let out = nonnull(opmsg)?.cast::<u8>();
+        let want = i32::from(unsafe { num.read_unaligned() });
+        if want <= 0 {
+            return Err(Error::local(EW_LENGTH, "num must be at least 1"));
+        }
+        const SIZE: usize = std::mem::size_of::<OPMSG3>();
+        let class30 = !h.ctx().class.is_16i();
+        let (mut left, mut start, mut total, mut seen) = (want, 0i32, 0i16, 0i32);
+        let mut at = 0usize;
+        loop {
+            let n = if class30 {
+                left.min(pa::OPMSG3_CHUNK)
+            } else {
+                0
+            };
+            let recs = match h.call(&pa::rdopmsg3(class30, start, r#type, n)) {
+                Ok(r) => r,
+                Err(Error::Cnc { .. }) if class30 && total > 0 => break,
+                Err(e) => return Err(e),
+            };
+            // FANUC's library counts the messages of each answer less the
+            // start index asked for, and refuses more than `*num`.
+            seen += recs.len() as i32 - start;
+            if seen > want {
+                return Err(Error::length());
+            }
+            total = total.wrapping_add(recs.len() as i16);
+            for r in &recs {
+                let mut b = [0u8; SIZE];
+                for k in 0..3 {
+                    let v = i16::from_be_bytes([r[4 * k + 2], r[4 * k + 3]]);
+                    b[2 * k..2 * k + 2].copy_from_slice(&v.to_ne_bytes());
+                }
+                b[6..].copy_from_slice(&r[12..12 + 256]);
+                unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out.add(at), SIZE) };
+                at += SIZE;
+            }
+            if !class30 {
+                break;
+            }
+            left -= n;
+            start += n;
+            if left <= 0 {
+                break;
+            }
+        }
+        unsafe { put(num, total) };
         Ok(())
     })
 }

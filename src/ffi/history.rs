@@ -5,10 +5,10 @@
 use super::{ffi_boundary, nonnull, put, put_at};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_LENGTH, EW_NUMBER};
+use crate::ew::{EW_LENGTH, EW_NUMBER, EW_VERSION};
 use crate::proto::history::{self as ph, OpKind, be16, be32};
 use crate::types::{IODBPI, ODBAHIS5, ODBHIS, ODBOMHIS, ODBOMHIS2};
-use std::os::raw::{c_short, c_ushort};
+use std::os::raw::{c_short, c_ushort, c_void};
 
 /// `s_number..=e_number` must be a range (FANUC's library: EW_NUMBER
 /// before any traffic).
@@ -104,6 +104,91 @@ pub unsafe extern "C" fn cnc_rdophistry(
             }
         }
         Ok(())
+    })
+}
+
+/// Reads the operation history records `s_number..=*e_number` (1 = the
+/// oldest kept) into the caller's buffer as ODBOPHIS4 records packed one
+/// after the other, each `rec_len` bytes long; `*length` (in: the buffer's
+/// size) = the bytes written, `*e_number` = the last record written. The
+/// CNC may answer a range in several exchanges; records that do not fit
+/// end the exchange (the next one starts after the records the CNC sent),
+/// the first not fitting is EW_LENGTH. An unknown record type is
+/// EW_VERSION, the records before it written, as FANUC's library does.
+///
+/// # Safety
+/// `e_number` and `length` must point to writable unsigned shorts, `ophis`
+/// to `*length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdophistry4(
+    FlibHndl: c_ushort,
+    s_number: c_ushort,
+    e_number: *mut c_ushort,
+    length: *mut c_ushort,
+    ophis: *mut c_void,
+) -> c_short {
+    ffi_boundary!("cnc_rdophistry4", {
+        let h = handles::get(FlibHndl)?;
+        let e_ptr = nonnull(e_number)?;
+        let len_ptr = nonnull(length)?;
+        let out = nonnull(ophis)?.cast::<u8>();
+        let e = unsafe { e_ptr.read_unaligned() };
+        if s_number == 0 {
+            return Err(Error::local(EW_NUMBER, "history numbers start at 1"));
+        }
+        range(s_number, e)?;
+        // FANUC's library: `*length` is 0 from here on, whatever follows.
+        let mut room = i32::from(unsafe { len_ptr.read_unaligned() });
+        unsafe { put(len_ptr, 0) };
+        let (mut cur, mut written, mut last) = (i32::from(s_number), 0u16, e);
+        loop {
+            let ans = match h.call(&ph::OpHis4 {
+                s: cur,
+                e: i32::from(e),
+            }) {
+                Ok(a) => a,
+                // The CNC's EW_NUMBER after some records: the range is done.
+                Err(Error::Cnc {
+                    code: EW_NUMBER, ..
+                }) if written != 0 => return Ok(()),
+                Err(err) => return Err(err),
+            };
+            let (recs, stop) = ph::op4_walk(&ans, room);
+            for (kind, t, r) in &recs {
+                let rec = unsafe {
+                    std::slice::from_raw_parts_mut(out.add(usize::from(written)), kind.size)
+                };
+                ph::op4_put(kind, *t, r, rec);
+                last = if written == 0 {
+                    s_number
+                } else {
+                    last.wrapping_add(1)
+                };
+                written = written.wrapping_add(kind.size as u16);
+                room -= kind.size as i32;
+                unsafe {
+                    put(e_ptr, last);
+                    put(len_ptr, written);
+                }
+            }
+            match stop {
+                Some(ph::Op4Stop::Unknown) => {
+                    return Err(Error::local(EW_VERSION, "unknown operation history record"));
+                }
+                Some(ph::Op4Stop::Full) if written == 0 => return Err(Error::length()),
+                _ => {}
+            }
+            // More to read: from after the records the CNC sent. A "more"
+            // answer without records would ask for the same for ever
+            // (FANUC's library does): ours ends there.
+            if ans.more == 0 || ans.count <= 0 {
+                return Ok(());
+            }
+            cur += ans.count;
+            if cur > i32::from(e) {
+                return Ok(());
+            }
+        }
     })
 }
 

@@ -10,6 +10,7 @@ pub mod ext;
 pub mod folder;
 pub mod handle;
 pub mod history;
+pub mod machine;
 pub mod macros;
 pub mod maintenance;
 pub mod memory;

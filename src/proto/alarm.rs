@@ -261,3 +261,28 @@ pub fn rdalmhistry(s: u16, e: u16) -> Single<AlmHistory> {
 pub fn rdalmhisno() -> Single<Count> {
     Single::padded(ReqSub::cnc(RDALMHISNO, &[]))
 }
+
+/// cnc_rdopmsg3's command on the 30i class (the 16i class sends
+/// cnc_rdopmsg's 0x0034 [type]).
+pub const RDOPMSG3: u16 = 0x00d0;
+/// Bytes of one cnc_rdopmsg3 record: i32 number, type, characters, then
+/// 256 text bytes.
+pub const OPMSG3_REC: usize = 268;
+/// Messages one 0x00d0 exchange asks for.
+pub const OPMSG3_CHUNK: i32 = 5;
+
+/// cnc_rdopmsg3: on the 30i class (1,0x00d0)[start, type, n] (n at most
+/// 5), on the 16i class (1,0x0034)[type]; the answer whole 268-byte
+/// records.
+pub fn rdopmsg3(class30: bool, start: i32, kind: i16, n: i32) -> crate::proto::history::Records {
+    let sub = if class30 {
+        ReqSub::cnc(RDOPMSG3, &[start, i32::from(kind), n])
+    } else {
+        ReqSub::cnc(RDOPMSG, &[i32::from(kind)])
+    };
+    crate::proto::history::Records {
+        sub,
+        skip: 0,
+        size: OPMSG3_REC,
+    }
+}

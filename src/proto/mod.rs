@@ -7,6 +7,7 @@ pub mod described;
 pub mod download;
 pub mod frame;
 pub mod history;
+pub mod machine;
 pub mod macros;
 pub mod maintenance;
 pub mod names;

@@ -164,6 +164,9 @@ impl Machine {
                 .flat_map(|n| i16::from(v(n)).to_be_bytes())
                 .collect());
         }
+        if cmd == ph::RDOPHISTRY4 {
+            return self.ophistry4(s, e);
+        }
         if s < 0 || e < s {
             return Err(CncError::NUMBER);
         }
@@ -225,6 +228,73 @@ impl Machine {
         Ok(out)
     }
 
+    /// 0x01b0 [s, e]: the operation history records s..=e (1 = newest)
+    /// in the 30i's form: every entry but the "time" stamps (each record
+    /// carries its time), as many as one answer holds; the more flag says
+    /// the range goes on. A start past the history: no records.
+    fn ophistry4(&mut self, s: i32, e: i32) -> Reply<Vec<u8>> {
+        use crate::proto::history as ph;
+        let ops: Vec<&Operation> = self
+            .profile
+            .operation_history
+            .entries
+            .iter()
+            .filter(|o| o.kind != "time")
+            .collect();
+        if s < 1 || e < s {
+            return Err(CncError::NUMBER);
+        }
+        let room = crate::proto::packet::MAX_ANSWER - 8;
+        let (mut body, mut n) = (Vec::new(), 0);
+        let last = (e as usize).min(ops.len());
+        let first = (s as usize - 1).min(last);
+        for o in &ops[first..last] {
+            let [y, mo, d, h, mi, se] = parse_time(&o.time).unwrap_or([0; 6]).map(i32::from);
+            let r = match o.kind.as_str() {
+                "mdi" => ph::op4_record(0, |b| {
+                    ph::put16(b, 4, o.number);
+                    ph::put16(b, 8, 1);
+                    for (k, v) in [h, mi, se].into_iter().enumerate() {
+                        ph::put16(b, 0xc + 2 * k, v);
+                    }
+                }),
+                "signal" => ph::op4_record(1, |b| {
+                    ph::put32(b, 4, o.number);
+                    ph::put16(b, 8, o.group.into());
+                    ph::put16(b, 0xa, 1);
+                    b[0xc] = o.old;
+                    b[0xd] = o.new;
+                    for (k, v) in [h, mi, se].into_iter().enumerate() {
+                        ph::put16(b, 0xe + 2 * k, v);
+                    }
+                }),
+                "alarm" => ph::op4_record(2, |b| {
+                    ph::put32(b, 4, o.number);
+                    ph::put16(b, 8, o.group.into());
+                    ph::put16(b, 0xa, o.axis.into());
+                    for (k, v) in [y, mo, d, h, mi, se, 1].into_iter().enumerate() {
+                        ph::put16(b, 0xc + 2 * k, v);
+                    }
+                }),
+                _ => ph::op4_record(3, |b| {
+                    for (k, v) in [0, y, mo, d, h, mi, se].into_iter().enumerate() {
+                        ph::put16(b, 4 + 2 * k, v);
+                    }
+                }),
+            };
+            if body.len() + r.len() > room {
+                break;
+            }
+            body.extend(r);
+            n += 1;
+        }
+        let more = i32::from(first + n < last);
+        let mut out = more.to_be_bytes().to_vec();
+        out.extend((n as i32).to_be_bytes());
+        out.extend(body);
+        Ok(out)
+    }
+
     /// The operator messages on display at power-on enter the operator
     /// message history once, at the first advance.
     pub(crate) fn seed_messages(&mut self, at: SystemTime) {
@@ -281,5 +351,75 @@ impl Machine {
             }
             _ => return None,
         })
+    }
+}
+
+impl Machine {
+    /// 0x005b (cnc_rdctrldi / cnc_rdctrldo): four signal bytes per spindle
+    /// of the path, from PMC unit 1: the input signals G070..G073 (spindle
+    /// k: G070 + 4k ...), the output signals F045..F048, of which the
+    /// running machine sets F045's ALMA (bit 0, the spindle's alarm), SSTA
+    /// (bit 1, speed zero) and SARA (bit 3, turning at speed). Each
+    /// spindle's four bytes go as one big-endian word, the first signal
+    /// byte lowest (what FANUC's library writes as sgnl1..sgnl4).
+    pub(crate) fn spindle_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        use crate::proto::pmc::PmcRange;
+        let spindles: Vec<(i32, i16)> = self
+            .path(path)?
+            .spindles
+            .iter()
+            .map(|s| (s.speed, s.alarm))
+            .collect();
+        let mut out = Vec::new();
+        for (k, (speed, alarm)) in spindles.into_iter().enumerate() {
+            let (adr_type, first) = if output { (1, 45) } else { (0, 70) };
+            let s = first + 4 * k as u16;
+            let range = PmcRange {
+                adr_type,
+                data_type: 0,
+                s,
+                e: s + 3,
+            };
+            let mut b = self.profile.pmc.read(1, &range).unwrap_or(vec![0; 4]);
+            if output {
+                b[0] = (b[0] & !0x0b)
+                    | u8::from(alarm != 0)
+                    | u8::from(speed == 0) << 1
+                    | u8::from(speed != 0 && alarm == 0) << 3;
+            }
+            b.reverse();
+            out.extend(b);
+        }
+        Ok(out)
+    }
+}
+
+impl Machine {
+    /// 0x0043 [k] (cnc_rdprstrinfo): the program restart data of the last
+    /// interruption, k 0 the block counter, 1 the M code, 2 the T code, 3
+    /// the S code, 4 the B code, each a big-endian i32 when there is one;
+    /// before any interruption, nothing.
+    pub(crate) fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
+        let run = self
+            .run
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        let Some(r) = &run.restart else {
+            return if (0..=4).contains(&k) {
+                Ok(Vec::new())
+            } else {
+                Err(CncError::NUMBER)
+            };
+        };
+        // cnc_modal's types 100 + k: 0 B, 6 M, 7 S, 8 T.
+        let v = match k {
+            0 => Some(r.block),
+            1 => r.modal.aux_value(6),
+            2 => r.modal.aux_value(8),
+            3 => r.modal.aux_value(7),
+            4 => r.modal.aux_value(0),
+            _ => return Err(CncError::NUMBER),
+        };
+        Ok(v.map(|v| v.to_be_bytes().to_vec()).unwrap_or_default())
     }
 }

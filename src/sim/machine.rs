@@ -304,6 +304,15 @@ impl CncService for Machine {
     fn opmsg(&mut self, path: u16, kind: i32) -> Reply<crate::proto::alarm::OpMsg> {
         self.sim_opmsg(path, kind)
     }
+    fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+        self.sim_opmsg3(path, start, kind, n)
+    }
+    fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
+        Machine::restart_info(self, path, k)
+    }
+    fn ctrl_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        self.spindle_signals(path, output)
+    }
 
     // --- param ---
     fn param_read30(

@@ -29,6 +29,17 @@ impl Machine {
     fn stop_plan(&mut self, i: usize) {
         let path = &self.profile.paths[i];
         let run = &mut self.run[i];
+        // A program interrupted where it runs: its program restart data.
+        if let Some(plan) = &run.engine.plan
+            && !run.finished
+        {
+            let k = plan.blocks.iter().position(|b| b.line == run.block);
+            run.restart = Some(super::run::Restart {
+                block: k.map_or(0, |k| k as i32 + 1),
+                modal: run.modal,
+                dest: path.axes.iter().map(|a| a.absolute).collect(),
+            });
+        }
         let eng = &mut run.engine;
         eng.plan = None;
         eng.parts_before = run.parts;

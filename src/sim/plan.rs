@@ -53,6 +53,22 @@ pub(super) struct Block {
     pub(super) end_of_program: bool,
     /// Text of this line and the following ones (cnc_rdexecprog).
     pub(super) text: String,
+    /// A macro message the block shows (`#3006=n(TEXT)`): its number and
+    /// text.
+    pub(super) message: Option<(i32, String)>,
+}
+
+/// The message of a `#3006=n(TEXT)` block (the macro statement that
+/// stops with a message): n and the comment's text.
+pub(super) fn macro_message(line: &str) -> Option<(i32, String)> {
+    let rest =
+        line.trim_start_matches(|c: char| c == 'N' || c == 'n' || c.is_ascii_digit() || c == ' ');
+    let rest = rest.strip_prefix("#3006")?.trim_start().strip_prefix('=')?;
+    let open = rest.find('(')?;
+    let n = rest[..open].trim().parse().ok()?;
+    let text = &rest[open + 1..];
+    let text = &text[..text.find(')').unwrap_or(text.len())];
+    Some((n, text.to_owned()))
 }
 
 /// A program parsed for one path's axes.
@@ -218,6 +234,7 @@ impl Plan {
                 spin,
                 end_of_program,
                 text: lines[line..end].join("\n"),
+                message: macro_message(t),
             });
         }
         let parts_per_pass = blocks.iter().filter(|b| b.end_of_program).count() as i64;

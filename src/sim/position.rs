@@ -108,6 +108,35 @@ impl Machine {
     /// path's axes, then zero records), as a real CNC answers.
     pub(crate) fn pos_positions(&self, path: u16, code: i32, axis: i32) -> Reply<Vec<Value>> {
         let p = self.pos_path(path)?;
+        // Codes 13 and 14: the program restart position and the distance
+        // from here to it, after a reset interrupted a program (else 0).
+        let restart = self
+            .run
+            .get(usize::from(path).wrapping_sub(1))
+            .and_then(|r| r.restart.as_ref());
+        if let (13 | 14, Some(r)) = (code, restart) {
+            let rec = |(i, a): (usize, &Axis)| {
+                let dest = r.dest.get(i).copied().unwrap_or(a.absolute);
+                let v = if code == 13 {
+                    dest
+                } else {
+                    dest.wrapping_sub(a.absolute)
+                };
+                Value::decimal(v, a.decimals)
+            };
+            return match axis {
+                -1 => {
+                    let max = usize::from(self.profile.cnc.max_axes);
+                    let mut v: Vec<Value> = p.axes.iter().enumerate().map(rec).collect();
+                    v.resize(max.max(v.len()), UNUSED);
+                    Ok(v)
+                }
+                n if n >= 1 && (n as usize) <= p.axes.len() => {
+                    Ok(vec![rec((n as usize - 1, &p.axes[n as usize - 1]))])
+                }
+                _ => Err(ATTRIB),
+            };
+        }
         let pick: fn(&Axis) -> i32 = match code {
             pos::ABSOLUTE | pos::ABSOLUTE2 => |a| a.absolute,
             pos::MACHINE => |a| a.machine,

@@ -308,19 +308,20 @@ impl Machine {
         if !(0..=4).contains(&kind) {
             return Err(err(ew::EW_ATTRIB));
         }
-        let m = self
-            .path_profile(path)?
-            .opmsgs
-            .iter()
-            .find(|m| i32::from(m.kind) == kind);
+        let shown = self.shown_messages(path)?;
+        let m = shown.iter().find(|m| i32::from(m.kind) == kind);
+        // The text area is always whole (256 bytes, zero-filled): what
+        // cnc_rdopmsg3 reads on the 16i class as one 268-byte record.
         Ok(match m {
             Some(m) => {
                 let mut text = m.text.clone().into_bytes();
                 text.truncate(256);
+                let char_num = text.len() as i32;
+                text.resize(256, 0);
                 OpMsg {
                     datano: m.number,
                     kind,
-                    char_num: text.len() as i32,
+                    char_num,
                     text,
                 }
             }
@@ -328,9 +329,55 @@ impl Machine {
                 datano: -1,
                 kind,
                 char_num: 0,
-                text: Vec::new(),
+                text: vec![0; 256],
             },
         })
+    }
+
+    /// The operator messages on display on `path`: the profile's, then
+    /// the macro message of the program running there (`#3006=n(TEXT)`,
+    /// type 4).
+    pub(crate) fn shown_messages(&self, path: u16) -> Reply<Vec<OperatorMessage>> {
+        let mut v = self.path_profile(path)?.opmsgs.clone();
+        if let Some((number, text)) = self
+            .run
+            .get(path as usize - 1)
+            .and_then(|r| r.message.clone())
+        {
+            v.push(OperatorMessage {
+                number,
+                kind: 4,
+                text,
+            });
+        }
+        Ok(v)
+    }
+
+    /// 0x00d0 [start, type, n] (cnc_rdopmsg3, 30i class): the messages of
+    /// `type` on display (-1: all; other types than 0..4 EW_ATTRIB) from
+    /// index `start` on, at most `n`, as 268-byte records (i32 number,
+    /// type, characters, 256 text bytes); none there: an empty answer.
+    pub(crate) fn sim_opmsg3(&self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+        if !(-1..=4).contains(&kind) {
+            return Err(err(ew::EW_ATTRIB));
+        }
+        let shown = self.shown_messages(path)?;
+        let mut out = Vec::new();
+        for m in shown
+            .iter()
+            .filter(|m| kind == -1 || i32::from(m.kind) == kind)
+            .skip(start.max(0) as usize)
+            .take(n.clamp(0, 5) as usize)
+        {
+            let mut text = m.text.clone().into_bytes();
+            text.truncate(256);
+            out.extend(m.number.to_be_bytes());
+            out.extend(i32::from(m.kind).to_be_bytes());
+            out.extend((text.len() as i32).to_be_bytes());
+            text.resize(256, 0);
+            out.extend(text);
+        }
+        Ok(out)
     }
 }
 

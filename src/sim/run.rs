@@ -113,8 +113,25 @@ pub struct PathRun {
     pub operating: f64,
     pub cutting: f64,
     pub cycle: f64,
+    /// The macro message on display (`#3006=n(TEXT)` of the last such
+    /// block the program passed): number and text (cnc_rdopmsg3, type 4).
+    pub message: Option<(i32, String)>,
+    /// Where the last reset (or cycle start) interrupted a running program
+    /// (cnc_rdprstrinfo's program restart data); None before any.
+    pub restart: Option<Restart>,
     /// What the clock needs: parsed program, profile base values, caches.
     pub(crate) engine: Engine,
+}
+
+/// Program restart data: where a running program was interrupted.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Restart {
+    /// The block interrupted, counted from the program's first (1..).
+    pub block: i32,
+    /// The modal codes there (M, T, S, B for the restart).
+    pub modal: ProgramModal,
+    /// The absolute position of each axis of the path there.
+    pub dest: Vec<i32>,
 }
 
 /// The runner's own state for one path (not part of the visible model).
@@ -472,6 +489,10 @@ impl Machine {
             )
         };
         let b = &plan.blocks[k];
+        // The last macro message passed: in this pass, else the pass before.
+        let shown = |bs: &[super::plan::Block]| bs.iter().rev().find_map(|b| b.message.clone());
+        run.message =
+            shown(&plan.blocks[..=k]).or_else(|| if pass > 0 { shown(&plan.blocks) } else { None });
         let before = (k > 0).then(|| &plan.blocks[k - 1]);
         let last = plan.blocks.last().expect("n > 0");
         let starved = eng.streaming && done >= n;

@@ -215,6 +215,20 @@ pub trait CncService: Send {
     fn opmsg(&mut self, path: u16, kind: i32) -> Reply<OpMsg> {
         unsupported()
     }
+    /// 0x005b[0 | 1]: the spindle control input / output signals
+    /// (cnc_rdctrldi / cnc_rdctrldo), already encoded.
+    fn ctrl_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        unsupported()
+    }
+    /// 0x0043[k]: program restart data (cnc_rdprstrinfo), encoded.
+    fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
+    /// 0x00d0[start, type, n]: operator messages (cnc_rdopmsg3, 30i),
+    /// records already encoded.
+    fn opmsg3(&mut self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+        unsupported()
+    }
 
     // --- param ---
     /// 30i read of parameters (0x008d) or diagnosis data (0x0093) [s, e, axis].
@@ -451,6 +465,12 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             // --- alarm ---
             (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
             (CLASS_CNC, palarm::RDOPMSG) => enc(svc.opmsg(p, a[0])),
+            (CLASS_CNC, palarm::RDOPMSG3) => svc.opmsg3(p, a[0], a[1], a[2]),
+            (CLASS_CNC, crate::proto::machine::RDPRSTR) => svc.restart_info(p, a[0]),
+            (CLASS_CNC, crate::proto::machine::RDCTRLSIG) => match a[0] {
+                0 | 1 => svc.ctrl_signals(p, a[0] == 1),
+                _ => Err(CncError::new(ew::EW_ATTRIB)),
+            },
 
             // --- param ---
             (CLASS_CNC, param::RDPARAM) => {
@@ -517,6 +537,7 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (
                 CLASS_CNC,
                 c @ (phis::RDOPHISTRY
+                | phis::RDOPHISTRY4
                 | phis::RDOMHISTRY
                 | phis::RDOMHISTRY2
                 | phis::RDALMHISTRY5

@@ -1,6 +1,6 @@
 //! Connection group and status structures.
 
-use super::MAX_CNCPATH;
+use super::{LONG, MAX_AXIS, MAX_CNCPATH};
 use std::os::raw::{c_char, c_short};
 
 /// cnc_sysinfo: CNC system information.
@@ -101,4 +101,57 @@ pub struct IODBPI {
     pub dummy: c_short,
     pub datano_e: c_short,
     pub data: [c_char; 5],
+}
+
+/// cnc_rdctrldi: the spindle control input signals.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSPDI {
+    pub sgnl1: c_char,
+    pub sgnl2: c_char,
+    pub sgnl3: c_char,
+    pub sgnl4: c_char,
+}
+
+/// cnc_rdctrldo: the spindle control output signals.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSPDO {
+    pub sgnl1: c_char,
+    pub sgnl2: c_char,
+    pub sgnl3: c_char,
+    pub sgnl4: c_char,
+}
+
+/// cnc_rdprstrinfo: program restart information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPRS {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data_info: [c_short; 5],
+    pub rstr_bc: LONG,
+    pub rstr_m: [LONG; 35],
+    pub rstr_t: [LONG; 2],
+    pub rstr_s: LONG,
+    pub rstr_b: LONG,
+    pub dest: [LONG; MAX_AXIS],
+    pub dist: [LONG; MAX_AXIS],
+}
+
+impl Default for ODBPRS {
+    fn default() -> Self {
+        ODBPRS {
+            datano: 0,
+            r#type: 0,
+            data_info: [0; 5],
+            rstr_bc: 0,
+            rstr_m: [0; 35],
+            rstr_t: [0; 2],
+            rstr_s: 0,
+            rstr_b: 0,
+            dest: [0; MAX_AXIS],
+            dist: [0; MAX_AXIS],
+        }
+    }
 }

@@ -554,7 +554,47 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "FANUC's library copies the whole answer into the caller's array, past the timers asked for; ours writes at most e_number - s_number + 1 types",
     },
+    // --- machine data (issue 11) ---
+    Deviation {
+        function: "cnc_rdctrldi",
+        cases: &[
+            "rdctrldi_v3_base",
+            "rdctrldi_v2_base",
+            "rdctrldi_s15_base",
+            "rdctrldi_v3_shape_longer",
+            "rdctrldi_v2_shape_longer",
+            "rdctrldi_v3_reply1",
+            "rdctrldi_v3_reply2",
+            "rdctrldi_v2_reply1",
+            "rdctrldi_v2_reply2",
+            "rdctrldi_s15_reply1",
+            "rdctrldi_s15_reply2",
+            "rdctrldi_v3p2_path3",
+        ],
+        reason: CTRL_SIGNALS_PAST_STRUCT,
+    },
+    Deviation {
+        function: "cnc_rdctrldo",
+        cases: &[
+            "rdctrldo_v3_base",
+            "rdctrldo_v2_base",
+            "rdctrldo_s15_base",
+            "rdctrldo_v3_shape_longer",
+            "rdctrldo_v2_shape_longer",
+            "rdctrldo_v3_reply1",
+            "rdctrldo_v3_reply2",
+            "rdctrldo_v2_reply1",
+            "rdctrldo_v2_reply2",
+            "rdctrldo_s15_reply1",
+            "rdctrldo_s15_reply2",
+            "rdctrldo_v3p2_path3",
+        ],
+        reason: CTRL_SIGNALS_PAST_STRUCT,
+    },
 ];
+
+/// cnc_rdctrldi / cnc_rdctrldo.
+const CTRL_SIGNALS_PAST_STRUCT: &str = "FANUC's library writes one 4-byte word per two bytes of the answer, up to the CNC's maximum spindles (8 words, 32 bytes), into the caller's 4-byte ODBSPDI / ODBSPDO, the words past the answer from its receive buffer; ours writes the first word, the struct, only";
 
 /// cnc_acts2 / cnc_rdspload on the 30i class.
 const COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the spindle count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing";

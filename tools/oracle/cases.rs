@@ -1106,6 +1106,29 @@ const WORDS: &[Word] = &[
         after: &["dncend2 -1"],
         ..wc("dncend2", &[], &["-1", "-32768", "0", "1", "-2"])
     },
+    // Machine data (issue 11): operation history 4, operator message 3,
+    // control signals, program restart information.
+    wc(
+        "rdophistry4",
+        &[
+            "1|0|2|4|5|-1",
+            "10|1|0|3|4|100",
+            "4096|0|4|16|20|24|30|80|100",
+        ],
+        &["2 2 4096", "1 1 24", "3 4 44", "4 1 4096"],
+    ),
+    wc(
+        "rdopmsg3",
+        &["0|-1|1|2|3|4|5|-2", "5|1|0|-1|2|6|12"],
+        &["-1 12", "4 1"],
+    ),
+    w("rdctrldi", &[]),
+    w("rdctrldo", &[]),
+    // After a reset that interrupted the running program: restart data.
+    Word {
+        setup: &["reset"],
+        ..w("rdprstrinfo", &[])
+    },
 ];
 
 /// The C function a word calls.
@@ -1296,6 +1319,19 @@ pub fn cases_of(w: &Word) -> Vec<Case> {
             );
         }
     }
+    for profile in ["v3", "v2", "s15"] {
+        for (k, payload) in replies(w.word).into_iter().enumerate() {
+            // A 16i's frames hold at most 1450 bytes.
+            if profile != "v3" && payload.len() > 1400 {
+                continue;
+            }
+            case(
+                format!("{profile}_reply{k}"),
+                profile,
+                calls_for(w, base, Some(Shape::Payload(0, payload)), &[]),
+            );
+        }
+    }
     if w.word != "setpath" {
         case(
             "v3p2_path2".into(),
@@ -1352,4 +1388,105 @@ pub fn connect_cases() -> Vec<Case> {
         }
     }
     out
+}
+
+/// Crafted answers a word's base call is recorded with too (the payload of
+/// its first reply subpacket): record types and layouts the simulator's
+/// machine never sends.
+fn replies(word: &str) -> Vec<&'static [u8]> {
+    let leak = |v: Vec<u8>| -> &'static [u8] { Box::leak(v.into_boxed_slice()) };
+    match word {
+        "rdophistry4" => [
+            (0, 9, &[0, 1, 2, 3, 4, 5, 6, 7, 8][..]),
+            (0, 8, &[9, 10, 11, 12, 0xffff, 13, 0, 1]),
+            // Type 13 sends FANUC's record loop to index 9.
+            (0, 5, &[0, 1, 13, 2, 3]),
+            (0, 4, &[0, 1, 14, 2]),
+            // More to come: the next exchange asks the simulator from 3.
+            (1, 2, &[0, 1]),
+            // A count beyond the records sent.
+            (0, 5, &[0, 1, 2]),
+            (0, -1, &[0]),
+        ]
+        .into_iter()
+        .map(|(more, count, types)| leak(op4_answer(more, count, types)))
+        .collect(),
+        "rdctrldi" | "rdctrldo" => [&[0x11, 0x22][..], &[1, 2, 3, 4, 5, 6, 7, 8], &[0xa5; 64]]
+            .into_iter()
+            .collect(),
+        // The block counter answer (subpacket 1): more words than its
+        // member holds run on into the next members.
+        "rdprstrinfo" => [1, 3, 40, 100]
+            .into_iter()
+            .map(|n| {
+                leak(
+                    (1..=n)
+                        .flat_map(|k: i32| (0x100 + k).to_be_bytes())
+                        .collect(),
+                )
+            })
+            .collect(),
+        // An answer with less text than the 256 bytes (a Series 15 writes
+        // nothing then).
+        "rdopmsg" => vec![leak(opmsg3_answer(&[(2001, 0, "SHORT")])[..40].to_vec())],
+        "rdopmsg3" => [
+            &[(2001, 0, "CHECK COOLANT"), (70001, 4, "WORLD")][..],
+            &[(1, 0, "A"); 6],
+            &[(-1, 2, "")],
+        ]
+        .into_iter()
+        .map(|msgs| leak(opmsg3_answer(msgs)))
+        .chain([leak(opmsg3_answer(&[(7, 1, "SHORT")])[..267].to_vec())])
+        .chain([leak({
+            let mut b = opmsg3_answer(&[(9, 0, "LONG")]);
+            b[8..12].copy_from_slice(&300i32.to_be_bytes());
+            b.extend([0x5a; 20]);
+            b
+        })])
+        .collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// An operation history 4 answer: the more flag, the count, then one
+/// record of each type, its bytes a pattern (length and type in front).
+fn op4_answer(more: i32, count: i32, types: &[u16]) -> Vec<u8> {
+    let wire = |t: u16| match t {
+        0 => 20,
+        1 | 7 => 40,
+        2 | 8 => 36,
+        3 | 5 => 32,
+        4 | 11 | 13 => 28,
+        6 => 276,
+        9 => 456,
+        10 => 520,
+        12 => 16,
+        0xffff => 4,
+        _ => 20,
+    };
+    let mut b = more.to_be_bytes().to_vec();
+    b.extend(count.to_be_bytes());
+    for (i, &t) in types.iter().enumerate() {
+        let n = wire(t);
+        let mut r: Vec<u8> = (0..n).map(|k| (7 * i + 1 + k) as u8).collect();
+        r[0..2].copy_from_slice(&(n as u16).to_be_bytes());
+        r[2..4].copy_from_slice(&t.to_be_bytes());
+        b.extend(r);
+    }
+    b
+}
+
+/// Operator message 3 records: i32 number, type, characters, 256 text
+/// bytes (0xab past the text, to see what is copied).
+fn opmsg3_answer(msgs: &[(i32, i32, &str)]) -> Vec<u8> {
+    let mut b = Vec::new();
+    for (n, t, text) in msgs {
+        b.extend(n.to_be_bytes());
+        b.extend(t.to_be_bytes());
+        b.extend((text.len() as i32).to_be_bytes());
+        let mut x = text.as_bytes().to_vec();
+        x.resize(256, 0xab);
+        b.extend(x);
+    }
+    b
 }

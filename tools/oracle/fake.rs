@@ -33,6 +33,9 @@ pub enum Shape {
     Longer(usize, usize),
     /// Subpacket i left out.
     Missing(usize),
+    /// Subpacket i's payload replaced by these bytes (a crafted answer:
+    /// cases.rs `REPLIES`).
+    Payload(usize, &'static [u8]),
 }
 
 /// A broken connection set-up.
@@ -390,7 +393,8 @@ pub fn apply(frame: &[u8], shape: Shape) -> Vec<u8> {
             | Shape::Half(i)
             | Shape::MinusOne(i)
             | Shape::Longer(i, _)
-            | Shape::Missing(i) => i,
+            | Shape::Missing(i)
+            | Shape::Payload(i, _) => i,
         };
         let Some(s) = subs.get_mut(i) else { return };
         match shape {
@@ -404,6 +408,7 @@ pub fn apply(frame: &[u8], shape: Shape) -> Vec<u8> {
             Shape::Missing(_) => {
                 subs.remove(i);
             }
+            Shape::Payload(_, b) => s.1 = b.to_vec(),
         }
     })
 }

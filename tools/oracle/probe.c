@@ -494,6 +494,12 @@ static char *text(int i, long *n) {
     WORD(rdparam3, return F(cnc_rdparam3)(H, N(1), N(2), N(3), N(4), B0)) \
     WORD(rdparainfo3, { short n = N(2), pv = (short)0xCCCC, nx = (short)0xCCCC; short r = F(cnc_rdparainfo3)(H, N(1), &n, &pv, &nx, B0); field("num", n); field("prev", pv); field("next", nx); return r; }) \
     WORD(rdpitchr, return F(cnc_rdpitchr)(H, N(1), N(2), N(3), B0)) \
+    /* machine data (issue 11) */                                                                \
+    WORD(rdophistry4, { unsigned short e = N(2), l = N(3); short r = F(cnc_rdophistry4)(H, N(1), &e, &l, B0); field("e_no", e); field("length", l); return r; }) \
+    WORD(rdopmsg3, SHORT_IO(num, 2, F(cnc_rdopmsg3)(H, N(1), &num, B0))) \
+    WORD(rdctrldi, return F(cnc_rdctrldi)(H, B0)) \
+    WORD(rdctrldo, return F(cnc_rdctrldo)(H, B0)) \
+    WORD(rdprstrinfo, return F(cnc_rdprstrinfo)(H, B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \

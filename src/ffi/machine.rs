@@ -1,0 +1,96 @@
+//! Machine data (issue 11): the spindle control signals.
+
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
+use crate::client::handles;
+use crate::proto::machine::{CtrlSignals, PrstrInfo};
+use crate::types::{ODBPRS, ODBSPDI, ODBSPDO};
+use std::os::raw::{c_short, c_ushort};
+
+/// The first signal word of the answer into the caller's 4 bytes (FANUC's
+/// library writes one word per two bytes of the answer, up to the CNC's
+/// maximum spindles, past the 4-byte struct; ours writes the struct only).
+fn signals(FlibHndl: c_ushort, out: *mut u8, output: bool) -> crate::error::Result<()> {
+    let h = handles::get(FlibHndl)?;
+    let words = h.call(&CtrlSignals { output })?;
+    if let Some(w) = words.first() {
+        // SAFETY: `out` points to the caller's 4-byte struct.
+        unsafe { put(out.cast::<i32>(), *w) };
+    }
+    Ok(())
+}
+
+/// Reads the spindle control input signals (four bytes, `sgnl1` the low
+/// byte of the CNC's first signal word).
+///
+/// # Safety
+/// `spdi` must point to a writable ODBSPDI.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdctrldi(FlibHndl: c_ushort, spdi: *mut ODBSPDI) -> c_short {
+    ffi_read!("cnc_rdctrldi", {
+        let out = nonnull(spdi)?.cast::<u8>();
+        signals(FlibHndl, out, false)
+    })
+}
+
+/// Reads the spindle control output signals (four bytes, as cnc_rdctrldi).
+///
+/// # Safety
+/// `spdo` must point to a writable ODBSPDO.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdctrldo(FlibHndl: c_ushort, spdo: *mut ODBSPDO) -> c_short {
+    ffi_read!("cnc_rdctrldo", {
+        let out = nonnull(spdo)?.cast::<u8>();
+        signals(FlibHndl, out, true)
+    })
+}
+
+/// Where each 0x0043 answer's words go in ODBPRS: rstr_bc, rstr_m,
+/// rstr_t, rstr_s, rstr_b.
+const PRS_WORDS: [usize; 5] = [0x10, 0x14, 0xa0, 0xa8, 0xac];
+/// Where the restart positions go: `dest`, the distances right after the
+/// positions received (FANUC's library packs them).
+const PRS_DEST: usize = 0xb0;
+
+/// Reads the program restart information in one exchange: for the block
+/// counter, M, T, S and B codes the number of values the CNC sent
+/// (`data_info`) and the values, then the restart position and distance
+/// of every axis. The answers are written in order, each at its member
+/// (more values than a member holds run into the next ones, as FANUC's
+/// library writes them, but never past ODBPRS); a CNC error in a later
+/// subpacket is returned with the earlier ones written.
+///
+/// # Safety
+/// `prs` must point to a writable ODBPRS.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdprstrinfo(FlibHndl: c_ushort, prs: *mut ODBPRS) -> c_short {
+    ffi_boundary!("cnc_rdprstrinfo", {
+        let h = handles::get(FlibHndl)?;
+        let out = nonnull(prs)?.cast::<u8>();
+        let a = h.call(&PrstrInfo)?;
+        const SIZE: usize = std::mem::size_of::<ODBPRS>();
+        let word = |at: usize, v: i32| {
+            if at + 4 <= SIZE {
+                // SAFETY: inside the caller's ODBPRS.
+                unsafe { put_at(out, at, v) };
+            }
+        };
+        for (k, words) in a.words.iter().enumerate() {
+            unsafe { put_at(out, 4 + 2 * k, words.len() as u16 as i16) };
+            for (i, v) in words.iter().enumerate() {
+                word(PRS_WORDS[k] + 4 * i, *v);
+            }
+        }
+        let mut at = PRS_DEST;
+        for v in a.positions.iter().flatten() {
+            word(at, *v);
+            at += 4;
+        }
+        match a.error {
+            Some(e) => {
+                h.note(&e);
+                Err(e)
+            }
+            None => Ok(()),
+        }
+    })
+}
