@@ -268,3 +268,60 @@ fn operation_history_4_reads_a_long_range_in_several_exchanges() {
     sim::free(h);
     drop(s);
 }
+
+/// The newest operation record, as (type, address type, byte, old, new)
+/// for a signal record.
+fn newest_signal(h: c_ushort) -> (i16, i16, i16, u8, u8) {
+    let (r, b) = ophis(h, 1, 1, 86);
+    assert_eq!(r, EW_OK);
+    let g = unsafe { b.data[0].rec_sgn };
+    (
+        g.rec_type,
+        g.sig_name.into(),
+        g.sig_no,
+        g.sig_old as u8,
+        g.sig_new as u8,
+    )
+}
+
+#[test]
+fn a_reset_a_cycle_start_and_a_mode_change_go_into_the_operation_history() {
+    use std::time::Duration;
+    // The default machine, its mode switch turned to MDI from 2 s to 3 s.
+    let text = format!(
+        "{}\n[[event]]\nat = 2.0\nduration = 1.0\naction = \"mode\"\nvalue = 0\n",
+        fwlib32::sim::profile::DEFAULT_PROFILE
+    );
+    let s = sim::start_toml(&text);
+    s.set_elapsed(Duration::from_millis(500));
+    let h = sim::alloc(&s);
+    let mut n = 0u16;
+    assert_eq!(unsafe { cnc_rdophisno(h, &mut n) }, EW_OK);
+    let before = n;
+
+    // A reset this test did: RST (F1.1) set, the newest record.
+    assert_eq!(cnc_reset(h), EW_OK);
+    let (t, adr, byte, old, new) = newest_signal(h);
+    assert_eq!((t, adr, byte), (1, 1, 1), "a signal record of F1");
+    assert_eq!(new, old | 0x02);
+    assert_eq!(unsafe { cnc_rdophisno(h, &mut n) }, EW_OK);
+    assert!(n > before, "{n} records, {before} before");
+
+    // A cycle start: ST (G7.2).
+    assert_eq!(cnc_start(h), EW_OK);
+    let (t, adr, byte, old, new) = newest_signal(h);
+    assert_eq!((t, adr, byte), (1, 0, 7));
+    assert_eq!(new, old | 0x04);
+
+    // The mode switch: MEMORY (MD1) to MDI and back, G43.
+    s.set_elapsed(Duration::from_millis(2500));
+    let mut st = ODBST::default();
+    assert_eq!(unsafe { cnc_statinfo(h, &mut st) }, EW_OK);
+    assert_eq!(st.aut, 0, "MDI");
+    assert_eq!(newest_signal(h), (1, 0, 43, 0b001, 0b000));
+    s.set_elapsed(Duration::from_millis(3500));
+    assert_eq!(unsafe { cnc_statinfo(h, &mut st) }, EW_OK);
+    assert_eq!(st.aut, 1, "MEMORY");
+    assert_eq!(newest_signal(h), (1, 0, 43, 0b000, 0b001));
+    sim::free(h);
+}

@@ -146,6 +146,20 @@ impl Machine {
         push_newest(&mut h.entries, h.capacity, Operation { time, ..op });
     }
 
+    /// A signal the machine changed itself, now: one `"signal"` record of
+    /// PMC byte `byte` of address type `adr_type` (0 G, 1 F, 2 Y, 3 X).
+    pub(crate) fn record_signal(&mut self, adr_type: i16, byte: i32, old: u8, new: u8) {
+        let op = Operation {
+            kind: "signal".into(),
+            number: byte,
+            group: adr_type,
+            old,
+            new,
+            ..Default::default()
+        };
+        self.record_operation(op, SystemTime::now());
+    }
+
     /// The range reads (src/proto/history.rs): 0x006a [s, e] operation
     /// records, 0x0073 [s, e] and 0x01b5 [s, e, n] operator messages,
     /// 0x01d1 [s, e, n] alarm history 5 (entries s..=e, 1 = newest, that

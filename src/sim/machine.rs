@@ -430,22 +430,10 @@ impl CncService for Machine {
         // operation history, one record per changed byte.
         if (0..=3).contains(&range.adr_type) {
             let new = self.profile.pmc.read(unit, &range).unwrap_or_default();
-            let at = std::time::SystemTime::now();
-            for (k, (o, n)) in old
-                .iter()
-                .zip(&new)
-                .enumerate()
-                .filter(|(_, (o, n))| o != n)
-            {
-                let op = super::history::Operation {
-                    kind: "signal".into(),
-                    number: i32::from(range.s) + k as i32,
-                    group: range.adr_type,
-                    old: *o,
-                    new: *n,
-                    ..Default::default()
-                };
-                self.record_operation(op, at);
+            for (k, (o, n)) in old.iter().zip(&new).enumerate() {
+                if o != n {
+                    self.record_signal(range.adr_type, i32::from(range.s) + k as i32, *o, *n);
+                }
             }
         }
         Ok(())

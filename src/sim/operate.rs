@@ -93,9 +93,33 @@ impl Machine {
         run.program = main;
         run.program_name = name;
         run.finished = false;
+        self.record_press(i, 0, 7, 0x04);
         let now = self.now;
         self.advance_to(now);
         Ok(())
+    }
+
+    /// The panel signal a FOCAS command stands for goes into the operation
+    /// history as pressed [ours]: bit `bit` of PMC byte `byte` of address
+    /// type `adr_type` (unit 1, path n's byte 1000·(n−1) further) from its
+    /// value to the value with the bit set. Cycle start: ST (G7.2); reset:
+    /// RST (F1.1).
+    fn record_press(&mut self, i: usize, adr_type: i16, byte: u16, bit: u8) {
+        let byte = byte + 1000 * i as u16;
+        let r = crate::proto::pmc::PmcRange {
+            adr_type,
+            data_type: 0,
+            s: byte,
+            e: byte,
+        };
+        let old = self
+            .profile
+            .pmc
+            .read(1, &r)
+            .ok()
+            .and_then(|v| v.first().copied());
+        let old = old.unwrap_or(0);
+        self.record_signal(adr_type, i32::from(byte), old, old | bit);
     }
 
     /// cnc_reset: stops the path's program and clears its reset-clearable
@@ -108,6 +132,7 @@ impl Machine {
         if self.run[i].engine.plan.is_some() {
             self.stop_plan(i);
         }
+        self.record_press(i, 1, 1, 0x02);
         for k in RESET_CLEARS {
             self.clear_alarms(path, k)?;
         }

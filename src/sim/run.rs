@@ -309,7 +309,15 @@ impl Machine {
         self.seed_messages(power_on);
         let mut raised: Vec<(u16, Alarm, Duration)> = Vec::new();
         for i in 0..self.run.len() {
+            let mode = self.profile.paths[i].status.aut;
             self.advance_path(i, t, &mut raised);
+            let now = self.profile.paths[i].status.aut;
+            if now != mode {
+                // The mode switch's signals, MD1/MD2/MD4 ... G43 (path n:
+                // G(43 + 1000·(n−1))), into the operation history.
+                let byte = 43 + 1000 * i as i32;
+                self.record_signal(0, byte, mode_signals(mode), mode_signals(now));
+            }
         }
         for (i, r) in self.run.iter().enumerate() {
             let busy = self.profile.paths[i].status.run != 0;
@@ -661,6 +669,24 @@ impl Machine {
             return Err(CncError::new(EW_DATA));
         }
         Ok(crate::proto::upload::punch(found.iter().map(|p| &*p.text)))
+    }
+}
+
+/// The mode select signals of G43 for cnc_statinfo's `aut` (FANUC's mode
+/// table: MD1 bit 0, MD2 bit 1, MD4 bit 2, DNCI bit 5, ZRN bit 7): MDI 000,
+/// MEMORY 001, EDIT 011, HANDLE and INC 100, JOG 101, TEACH IN JOG 110,
+/// TEACH IN HANDLE 111, REFERENCE = JOG + ZRN, REMOTE (DNC) = MEMORY + DNCI.
+fn mode_signals(aut: i16) -> u8 {
+    match aut {
+        1 => 0b001,
+        3 => 0b011,
+        4 | 8 => 0b100,
+        5 => 0b101,
+        6 => 0b110,
+        7 => 0b111,
+        9 => 0b101 | 0x80,
+        10 => 0b001 | 0x20,
+        _ => 0,
     }
 }
 
