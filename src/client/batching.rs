@@ -5,21 +5,8 @@ use super::conn::Deadline;
 use super::handles::Handle;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
-use crate::proto::call::{Call, Ctx};
+use crate::proto::call::{Ctx, Erased};
 use crate::proto::packet::{ReqSub, RespSub};
-
-/// Sends nothing: the answers recorded for the subpackets given.
-struct Raw<'a>(&'a [ReqSub]);
-
-impl Call for Raw<'_> {
-    type Output = Vec<RespSub>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        self.0.to_vec()
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<RespSub>> {
-        Ok(resp.to_vec())
-    }
-}
 
 /// Bytes a subpacket takes in a request body.
 fn sub_len(s: &ReqSub) -> usize {
@@ -29,14 +16,14 @@ fn sub_len(s: &ReqSub) -> usize {
 impl Handle {
     /// An exchange while the handle batches: the replayed call's answers,
     /// or (queueing) the subpackets kept and [`Error::Queued`].
-    pub(super) fn batched<C: Call>(&self, c: &C, cx: &Ctx) -> Result<C::Output> {
+    pub(super) fn batched(&self, c: &mut Erased<'_>, cx: &Ctx) -> Result<()> {
         let mut s = self.state.lock();
         let Some(b) = s.batch.as_mut() else {
             return Err(Error::local(EW_FUNC, "the batch has ended"));
         };
         if let Some(resp) = b.replay.take() {
             drop(s);
-            return c.decode(cx, &resp);
+            return (c.decode)(cx, &resp);
         }
         if b.pending.is_some() {
             // A second exchange of one call: not batchable after all.
@@ -45,7 +32,7 @@ impl Handle {
                 "a call made a second exchange in a batch",
             ));
         }
-        b.pending = Some(c.request(cx));
+        b.pending = Some((c.request)(cx));
         Err(Error::Queued)
     }
 
@@ -91,8 +78,16 @@ impl Handle {
                 .flat_map(|it| it.subs.clone())
                 .collect();
             let deadline = Deadline::after_secs(timeout);
-            match self.pair.call(&Raw(&subs), path, unit, deadline) {
-                Ok(resp) => {
+            let mut resp = Vec::new();
+            let mut raw = Erased {
+                request: &|_| subs.clone(),
+                decode: &mut |_, r| {
+                    resp = r.to_vec();
+                    Ok(())
+                },
+            };
+            match self.pair.call(&mut raw, path, unit, deadline) {
+                Ok(()) => {
                     let mut at = 0;
                     for it in &items[f.clone()] {
                         let n = it.subs.len();

@@ -12,7 +12,7 @@ pub mod pair;
 pub mod upload;
 
 use crate::error::{Error, Result};
-use crate::proto::call::{Call, Ctx};
+use crate::proto::call::{self, Call, Ctx, Erased};
 use crate::proto::download::Outgoing;
 use crate::proto::status::SysInfo;
 use crate::proto::upload::StartReq;
@@ -41,6 +41,10 @@ impl Handle {
     /// Runs a call on this handle's pair with its path and timeout, and
     /// records the error detail.
     pub fn call<C: Call>(&self, c: &C) -> Result<C::Output> {
+        call::erased(c, |e| self.call_erased(e))
+    }
+
+    fn call_erased(&self, c: &mut Erased<'_>) -> Result<()> {
         let r = self.exchange(c);
         match &r {
             Ok(_) => self.clear_detail(),
@@ -52,7 +56,7 @@ impl Handle {
     /// One exchange on the pair with the handle's path, by its timeout; a
     /// torn-down pair is first reconnected within that same time when the
     /// handle asked for it (fwlib_set_reconnect).
-    fn exchange<C: Call>(&self, c: &C) -> Result<C::Output> {
+    fn exchange(&self, c: &mut Erased<'_>) -> Result<()> {
         let (path, timeout, reconnect, unit) = {
             let s = self.state.lock();
             (s.path, s.timeout, s.reconnect, s.pmc_unit)
@@ -157,6 +161,10 @@ impl Handle {
     /// Runs a PMC call (pmc_*): as [`Handle::call`], but the error detail
     /// goes to pmc_getdtailerr's words, not cnc_getdtailerr's.
     pub fn call_pmc<C: Call>(&self, c: &C) -> Result<C::Output> {
+        call::erased(c, |e| self.call_pmc_erased(e))
+    }
+
+    fn call_pmc_erased(&self, c: &mut Erased<'_>) -> Result<()> {
         let r = self.exchange(c);
         let mut s = self.state.lock();
         match &r {

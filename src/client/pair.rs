@@ -6,7 +6,7 @@ use super::conn::{Conn, Deadline, close_conn};
 use super::conn1::Conn1;
 use super::log;
 use crate::error::{Error, Result, detail};
-use crate::proto::call::{self, Call, Ctx};
+use crate::proto::call::{self, Ctx, Erased};
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
 use crate::proto::open::{CncClass, OpenBody};
 use crate::proto::packet::{CLASS_PMC, ReqSub};
@@ -359,15 +359,15 @@ impl Pair {
     /// CNC subpackets without a path get the handle's `path`; PMC
     /// subpackets carry the handle's selected PMC unit (`pmc_unit`, 1 until
     /// pmc_select_pmc_unit), as FANUC's library sends them.
-    pub fn call<C: Call>(
+    pub fn call(
         &self,
-        c: &C,
+        c: &mut Erased<'_>,
         path: u16,
         pmc_unit: u16,
         deadline: Deadline,
-    ) -> Result<C::Output> {
+    ) -> Result<()> {
         let cx = self.info.ctx(path);
-        let mut subs = c.request(&cx);
+        let mut subs = (c.request)(&cx);
         for s in &mut subs {
             if s.class == CLASS_PMC {
                 s.path = pmc_unit;
@@ -380,7 +380,7 @@ impl Pair {
             return Err(dead());
         };
         match c2.exchange(&subs, deadline) {
-            Ok(resp) => c.decode(&cx, resp),
+            Ok(resp) => (c.decode)(&cx, resp),
             Err(e) => {
                 if stream_broken(&e) {
                     drop(io);

@@ -54,6 +54,31 @@ pub trait Call {
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output>;
 }
 
+/// A [`Call`] with its output type erased: the request, and a decoder that
+/// keeps what it decodes. The client's exchange path takes this, so its
+/// code exists once, not once per call type.
+pub struct Erased<'a> {
+    pub request: &'a dyn Fn(&Ctx) -> Vec<ReqSub>,
+    pub decode: &'a mut dyn FnMut(&Ctx, &[RespSub]) -> Result<()>,
+}
+
+/// Runs `c` through `run` (an exchange path that takes an [`Erased`]
+/// call) and gives what `c` decoded.
+pub fn erased<C: Call>(
+    c: &C,
+    run: impl FnOnce(&mut Erased<'_>) -> Result<()>,
+) -> Result<C::Output> {
+    let mut out = None;
+    run(&mut Erased {
+        request: &|cx| c.request(cx),
+        decode: &mut |cx, resp| {
+            out = Some(c.decode(cx, resp)?);
+            Ok(())
+        },
+    })?;
+    out.ok_or_else(|| Error::protocol(crate::error::detail::SUB_MISSING, "no answer was decoded"))
+}
+
 /// Subpacket `i` of a response, its error code turned into an [`Error`].
 pub fn sub(resp: &[RespSub], i: usize) -> Result<&RespSub> {
     let s = resp.get(i).ok_or_else(|| {
