@@ -16,6 +16,16 @@ pub(super) enum Pos {
     Rel(i64),
 }
 
+/// Programmed positions and pass starts stay within ±2^40 detection
+/// units (far past any real axis): the interpolation's sums and
+/// differences of them cannot overflow, whatever a program or a profile
+/// says (the profile fuzzer found `G91` moves that did).
+const POS_LIMIT: i64 = 1 << 40;
+
+fn bound(v: i64) -> i64 {
+    v.clamp(-POS_LIMIT, POS_LIMIT)
+}
+
 impl Pos {
     pub(super) fn at(self, start: i64) -> i64 {
         match self {
@@ -205,11 +215,11 @@ impl Plan {
                             Pos::Abs(zero[i])
                         } else if incremental {
                             match pos[i] {
-                                Pos::Abs(p) => Pos::Abs(p + x),
-                                Pos::Rel(d) => Pos::Rel(d + x),
+                                Pos::Abs(p) => Pos::Abs(bound(p.saturating_add(x))),
+                                Pos::Rel(d) => Pos::Rel(bound(d.saturating_add(x))),
                             }
                         } else {
-                            Pos::Abs(x)
+                            Pos::Abs(bound(x))
                         };
                     }
                     _ => {}
@@ -265,7 +275,7 @@ impl Plan {
                     v
                 }
             }
-            Some(Pos::Rel(d)) => base.saturating_add(d.saturating_mul(pass as i64)),
+            Some(Pos::Rel(d)) => bound(base.saturating_add(d.saturating_mul(pass as i64))),
         }
     }
 }
