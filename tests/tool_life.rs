@@ -10,7 +10,7 @@ use fwlib32::sim::{Profile, Simulator};
 use fwlib32::types::*;
 use fwlib32::*;
 use std::mem::size_of;
-use std::os::raw::{c_short, c_ushort};
+use std::os::raw::{c_char, c_short, c_ushort};
 use std::time::Duration;
 
 const LEN: c_short = size_of::<IODBTGI>() as c_short;
@@ -309,7 +309,11 @@ fn punch_press_tool_data_reads_the_profile_and_a_mill_refuses_it() {
                 (m.radius, m.radius_angle, m.size_i, m.angle)
             );
             // The 16i class's record has no decimals.
-            let dec = if class == "30i" { m.decimals as i8 } else { 0 };
+            let dec = if class == "30i" {
+                m.decimals as c_char
+            } else {
+                0
+            };
             assert_eq!((x.x_axis_dec, x.tl_size_j_dec), (dec, dec), "{class}");
         }
         let mut one = IODBTLDT::default();
