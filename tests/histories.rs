@@ -325,3 +325,31 @@ fn a_reset_a_cycle_start_and_a_mode_change_go_into_the_operation_history() {
     assert_eq!(newest_signal(h), (1, 0, 43, 0b000, 0b001));
     sim::free(h);
 }
+
+/// An IODBSIG3 of 0xCC bytes (what a caller's unset memory may hold).
+fn sig3_cc() -> IODBSIG3 {
+    // SAFETY: IODBSIG3 is plain integers.
+    unsafe { std::mem::transmute([0xccu8; std::mem::size_of::<IODBSIG3>()]) }
+}
+
+#[test]
+fn history_signals_read_the_profiles_table() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let mut b = sig3_cc();
+    assert_eq!(unsafe { cnc_rdhissgnl3(h, &mut b) }, EW_OK);
+    // datano and type are left as they were.
+    assert_eq!((b.datano, b.r#type), (-13108, -13108));
+    let e = |i: usize| {
+        let d = b.data[i];
+        (d.ent_no, d.pmc_no, d.sig_no, d.sig_name, d.mask_pat as u8)
+    };
+    // G43 (the mode), G7.2 (ST), F1.1 (RST), then empty entries.
+    assert_eq!(e(0), (1, 1, 43, 0, 0xff));
+    assert_eq!(e(1), (2, 1, 7, 0, 0x04));
+    assert_eq!(e(2), (3, 1, 1, 1, 0x02));
+    assert_eq!(e(3), (4, 0, 0, 0, 0));
+    assert_eq!(e(59), (60, 0, 0, 0, 0));
+    // NULL: EW_DATA (FANUC's library crashes).
+    assert_eq!(unsafe { cnc_rdhissgnl3(h, std::ptr::null_mut()) }, EW_DATA);
+    sim::free(h);
+}

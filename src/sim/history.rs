@@ -4,6 +4,7 @@
 //! ([`Machine::record_alarm`]).
 
 use super::Machine;
+use super::profile::history::{HIS_SIGNALS, HisSignal};
 pub use super::profile::history::{
     History, HistoryEntry, Message, MessageHistory, Operation, OperationHistory, parse_time,
 };
@@ -351,6 +352,23 @@ impl Machine {
                 ops.entries.clear();
                 Vec::new()
             }
+            // The 60 entries of the signal table, numbered 1.., those
+            // the profile does not set zeros.
+            "cnc_rdhissgnl3" => (0..HIS_SIGNALS)
+                .flat_map(|k| {
+                    let s = ops.signals.get(k);
+                    let v = |f: fn(&HisSignal) -> i64| s.map_or(0, f);
+                    [
+                        k as i64 + 1,
+                        v(|s| s.pmc.into()),
+                        v(|s| s.number.into()),
+                        0,
+                        v(|s| s.group.into()),
+                        v(|s| s.mask.into()),
+                        0,
+                    ]
+                })
+                .collect(),
             "cnc_rdomhisno" => count(oms.entries.len()),
             "cnc_rdomhisinfo" => [oms.capacity, oms.entries.len(), oms.chars]
                 .map(|n| n.min(usize::from(u16::MAX)) as i64)
