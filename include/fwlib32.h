@@ -4015,6 +4015,18 @@ short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpinfo);
 
 /*
+ Writes the signals the operation history records: `type` entries of
+ IODBSIG3 (`datano` unused), their 16-byte wire form as cnc_rdhissgnl3
+ reads them. `type` outside 0..=60: EW_LENGTH before any traffic
+ (FANUC's library sends a broken frame for a negative one and reads past
+ the struct for more than 60).
+
+ # Safety
+ `sig` must point to a readable IODBSIG3.
+ */
+short cnc_wrhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
+
+/*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
  `length` must be at least 10 (checked first, as FANUC's library does,
  before the handle); `mcr_val` is taken as 32 bits (FANUC's x86-64

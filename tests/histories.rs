@@ -353,3 +353,81 @@ fn history_signals_read_the_profiles_table() {
     assert_eq!(unsafe { cnc_rdhissgnl3(h, std::ptr::null_mut()) }, EW_DATA);
     sim::free(h);
 }
+
+#[test]
+fn history_signals_write_then_read_back_and_a_refused_write_changes_nothing() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let read = || {
+        let mut b = sig3_cc();
+        assert_eq!(unsafe { cnc_rdhissgnl3(h, &mut b) }, EW_OK);
+        b
+    };
+    let before = read();
+    // Two entries: X8 bit 4 (the emergency stop) in entry 5, and entry
+    // 1 (G43) cleared (PMC 0).
+    let mut w = sig3_cc();
+    w.datano = 0;
+    w.r#type = 2;
+    w.data[0] = IODBSIG3_DATA {
+        ent_no: 5,
+        pmc_no: 1,
+        sig_no: 8,
+        sig_name: 3,
+        mask_pat: 0x10,
+    };
+    w.data[1] = IODBSIG3_DATA {
+        ent_no: 1,
+        pmc_no: 0,
+        ..Default::default()
+    };
+    assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_OK);
+    let b = read();
+    let e = |b: &IODBSIG3, i: usize| {
+        let d = b.data[i];
+        (d.ent_no, d.pmc_no, d.sig_no, d.sig_name, d.mask_pat as u8)
+    };
+    assert_eq!(e(&b, 4), (5, 1, 8, 3, 0x10));
+    assert_eq!(e(&b, 0), (1, 0, 0, 0, 0));
+    assert_eq!(e(&b, 1), e(&before, 1), "the others stay");
+    assert_eq!(e(&b, 2), e(&before, 2));
+
+    // Refused by the CNC (entry 61; address type 4), the whole write:
+    // the good first entry is not applied either.
+    for bad in [
+        IODBSIG3_DATA {
+            ent_no: 61,
+            pmc_no: 1,
+            sig_no: 9,
+            ..Default::default()
+        },
+        IODBSIG3_DATA {
+            ent_no: 7,
+            pmc_no: 1,
+            sig_no: 9,
+            sig_name: 4,
+            mask_pat: 1,
+        },
+    ] {
+        w.data[0] = IODBSIG3_DATA {
+            ent_no: 2,
+            pmc_no: 1,
+            sig_no: 100,
+            sig_name: 0,
+            mask_pat: 1,
+        };
+        w.data[1] = bad;
+        assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_DATA);
+        assert_eq!(read(), b, "a refused write changes nothing");
+    }
+    // type outside 0..=60: EW_LENGTH before any traffic; NULL: EW_DATA.
+    for t in [-1, 61] {
+        w.r#type = t;
+        assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_LENGTH);
+    }
+    assert_eq!(unsafe { cnc_wrhissgnl3(h, std::ptr::null_mut()) }, EW_DATA);
+    // type 0: nothing sent to change.
+    w.r#type = 0;
+    assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_OK);
+    assert_eq!(read(), b);
+    sim::free(h);
+}

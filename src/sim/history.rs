@@ -9,8 +9,10 @@ pub use super::profile::history::{
     History, HistoryEntry, Message, MessageHistory, Operation, OperationHistory, parse_time,
 };
 use super::service::{CncError, Reply};
+use crate::ew;
 use crate::proto::alarm::{AlmHisRecord, AlmHistory, HIS_MSG_LEN};
 use crate::proto::offset::Count;
+use crate::proto::packet::{CLASS_CNC, ReqSub};
 use std::time::SystemTime;
 
 /// UTC calendar time of `t` as "YYYY-MM-DD hh:mm:ss".
@@ -334,6 +336,66 @@ impl Machine {
                 push_newest(&mut h.entries, h.capacity, e);
             }
         }
+    }
+
+    /// 0x01b3 (cnc_wrhissgnl3) [n] and n 16-byte entries: each entry
+    /// number 1..=60, PMC 0 (clears the entry) ..= the PMCs, address type
+    /// 0..=3, byte 0..=9999, else EW_DATA and nothing changes; the payload
+    /// must hold n entries (n 0..=60), else EW_LENGTH.
+    pub(crate) fn history_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        use crate::proto::history::{SIG3_REC, Sig3, WRHISSGNL3};
+        if sub.class != CLASS_CNC || sub.cmd != WRHISSGNL3 {
+            return None;
+        }
+        let n = sub.args[0];
+        let p = &sub.payload;
+        if !(0..=HIS_SIGNALS as i32).contains(&n) || p.len() != n as usize * SIG3_REC {
+            return Some(Err(CncError::new(ew::EW_LENGTH)));
+        }
+        let units = self.profile.pmc.units() as i32;
+        let mut new = Vec::new();
+        for e in p.chunks_exact(SIG3_REC) {
+            let (ent, pmc, number, group, mask) = Sig3::from_wire(e);
+            let ok = (1..=HIS_SIGNALS as i32).contains(&ent)
+                && (0..=units).contains(&pmc)
+                && (0..=3).contains(&group)
+                && (0..=9999).contains(&number);
+            if !ok {
+                return Some(Err(CncError::new(ew::EW_DATA)));
+            }
+            let s = if pmc == 0 {
+                HisSignal {
+                    pmc: 0,
+                    group: 0,
+                    number: 0,
+                    mask: 0,
+                }
+            } else {
+                HisSignal {
+                    pmc: pmc as i16,
+                    group: i16::from(group),
+                    number: number as i16,
+                    mask,
+                }
+            };
+            new.push((ent as usize - 1, s));
+        }
+        let table = &mut self.profile.operation_history.signals;
+        for (k, s) in new {
+            if table.len() <= k {
+                table.resize(
+                    k + 1,
+                    HisSignal {
+                        pmc: 0,
+                        group: 0,
+                        number: 0,
+                        mask: 0,
+                    },
+                );
+            }
+            table[k] = s;
+        }
+        Some(Ok(Vec::new()))
     }
 
     /// The answers of the history functions described as data

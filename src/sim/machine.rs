@@ -574,6 +574,7 @@ impl CncService for Machine {
             .or_else(|| self.offset_raw(sub))
             .or_else(|| self.pmc_raw(sub))
             .or_else(|| self.maintenance_raw(sub))
+            .or_else(|| self.history_raw(sub))
     }
 
     // --- upload ---

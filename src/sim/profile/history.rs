@@ -130,7 +130,8 @@ impl OperationHistory {
     }
 }
 
-/// One signal byte the operation history records: PMC `pmc` (1..), its
+/// One signal byte the operation history records: PMC `pmc` (1..; 0 an
+/// empty entry), its
 /// address type `group` (0 G, 1 F, 2 Y, 3 X, as the signal records' sig_name),
 /// byte `number`, and the bits `mask` selects.
 #[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
@@ -155,9 +156,9 @@ impl Default for HisSignal {
 
 impl HisSignal {
     pub fn validate(&self) -> Result<(), String> {
-        if self.pmc < 1 || !(0..=3).contains(&self.group) || self.number < 0 {
+        if self.pmc < 0 || !(0..=3).contains(&self.group) || self.number < 0 {
             return Err(format!(
-                "operation_history signal {self:?}: pmc must be 1.., group 0..=3 (G, F, Y, X), number 0.."
+                "operation_history signal {self:?}: pmc must be 0 (an empty entry) or 1.., group 0..=3 (G, F, Y, X), number 0.."
             ));
         }
         Ok(())
