@@ -150,8 +150,32 @@ impl Machine {
     }
 
     /// A signal the machine changed itself, now: one `"signal"` record of
-    /// PMC byte `byte` of address type `adr_type` (0 G, 1 F, 2 Y, 3 X).
+    /// PMC byte `byte` of address type `adr_type` (0 G, 1 F, 2 Y, 3 X) of
+    /// PMC 1, when the history's signal table selects it.
     pub(crate) fn record_signal(&mut self, adr_type: i16, byte: i32, old: u8, new: u8) {
+        self.record_pmc_signal(1, adr_type, byte, old, new);
+    }
+
+    /// [`Machine::record_signal`] of PMC `unit`: recorded when the signal
+    /// table (cnc_rdhissgnl3) lists the byte and its mask selects a bit
+    /// that changed (a press of a bit already set, old = new, counts).
+    pub(crate) fn record_pmc_signal(
+        &mut self,
+        unit: u16,
+        adr_type: i16,
+        byte: i32,
+        old: u8,
+        new: u8,
+    ) {
+        let listed = self.profile.operation_history.signals.iter().any(|s| {
+            i32::from(s.pmc) == i32::from(unit)
+                && s.group == adr_type
+                && i32::from(s.number) == byte
+                && (old == new || (old ^ new) & s.mask != 0)
+        });
+        if !listed {
+            return;
+        }
         let op = Operation {
             kind: "signal".into(),
             number: byte,

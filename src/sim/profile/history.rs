@@ -100,7 +100,9 @@ pub const HIS_SIGNALS: usize = 60;
 impl Default for OperationHistory {
     fn default() -> Self {
         // The panel signals the running machine records (FANUC's PMC
-        // addresses): the mode select byte G43, ST (G7.2), RST (F1.1).
+        // addresses): the mode select byte G43, ST (G7.2), RST (F1.1),
+        // the manual feed override *JV (G10) and the feedrate override
+        // *FV (G12).
         let sig = |group, number, mask| HisSignal {
             pmc: 1,
             group,
@@ -111,7 +113,13 @@ impl Default for OperationHistory {
             capacity: 100,
             recording: true,
             entries: Vec::new(),
-            signals: vec![sig(0, 43, 0xff), sig(0, 7, 0x04), sig(1, 1, 0x02)],
+            signals: vec![
+                sig(0, 43, 0xff),
+                sig(0, 7, 0x04),
+                sig(1, 1, 0x02),
+                sig(0, 10, 0xff),
+                sig(0, 12, 0xff),
+            ],
         }
     }
 }
