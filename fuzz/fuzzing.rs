@@ -332,6 +332,20 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
+        names: &["cnc_wrhissgnl3"],
+        run: |cx, a, r| {
+            let e = ph::Sig3 {
+                ent_no: a[1] as i16,
+                pmc_no: a[2] as i16,
+                sig_no: a[3] as i16,
+                sig_name: a[2] as u8,
+                mask_pat: a[3] as u8,
+            };
+            let entries = vec![e; (a[0] & 63).min(60) as usize];
+            go(ph::WriteSig3 { entries }, cx, r)
+        },
+    },
+    Decoder {
         names: &["cnc_rdophistry"],
         run: |cx, a, r| go(ph::rdophistry(a[0] as u16, a[1] as u16), cx, r),
     },

@@ -653,6 +653,42 @@ typedef struct IODBTGI {
 } IODBTGI;
 
 /*
+ One signal of IODBSIG3: a PMC signal byte the operation history records.
+ */
+typedef struct IODBSIG3_DATA {
+    /*
+     The entry's number (1..60).
+     */
+    short ent_no;
+    /*
+     The PMC (1..).
+     */
+    short pmc_no;
+    /*
+     The byte's address number.
+     */
+    short sig_no;
+    /*
+     The address letter as a number (0 G, 1 F, 2 Y, 3 X ...).
+     */
+    char sig_name;
+    /*
+     The bits recorded.
+     */
+    char mask_pat;
+} IODBSIG3_DATA;
+
+/*
+ cnc_rdhissgnl3 / cnc_wrhissgnl3: the signals the operation history
+ records, 60 entries.
+ */
+typedef struct IODBSIG3 {
+    short datano;
+    short type;
+    struct IODBSIG3_DATA data[60];
+} IODBSIG3;
+
+/*
  cnc_rdmacro: one custom macro variable. The value is
  `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
  */
@@ -2805,6 +2841,15 @@ short cnc_rdgrpinfo(unsigned short FlibHndl,
                     struct IODBTGI *grpinfo);
 
 /*
+ Reads the signals the operation history records (as many 16-byte records
+ as the CNC sends, at most 60; datano and type untouched).
+
+ # Safety
+ `sig` must be NULL or point to a writable IODBSIG3.
+ */
+short cnc_rdhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
+
+/*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;
  `datano` the group number the CNC answered).
 
@@ -3968,6 +4013,18 @@ short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
  groups.
  */
 short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpinfo);
+
+/*
+ Writes the signals the operation history records: `type` entries of
+ IODBSIG3 (`datano` unused), their 16-byte wire form as cnc_rdhissgnl3
+ reads them. `type` outside 0..=60: EW_LENGTH before any traffic
+ (FANUC's library sends a broken frame for a negative one and reads past
+ the struct for more than 60).
+
+ # Safety
+ `sig` must point to a readable IODBSIG3.
+ */
+short cnc_wrhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.

@@ -430,6 +430,9 @@ rust_layouts! {
     ODBSPDI { sgnl1, sgnl2, sgnl3, sgnl4 }
     ODBSPDO { sgnl1, sgnl2, sgnl3, sgnl4 }
     ODBPRS { datano, r#type, data_info, rstr_bc, rstr_m, rstr_t, rstr_s, rstr_b, dest, dist }
+
+    // --- the signals the operation history records ---
+    IODBSIG3 { datano, r#type, data }
 }
 
 #[test]

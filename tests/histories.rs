@@ -325,3 +325,137 @@ fn a_reset_a_cycle_start_and_a_mode_change_go_into_the_operation_history() {
     assert_eq!(newest_signal(h), (1, 0, 43, 0b000, 0b001));
     sim::free(h);
 }
+
+/// An IODBSIG3 of 0xCC bytes (what a caller's unset memory may hold).
+fn sig3_cc() -> IODBSIG3 {
+    // SAFETY: IODBSIG3 is plain integers.
+    unsafe { std::mem::transmute([0xccu8; std::mem::size_of::<IODBSIG3>()]) }
+}
+
+#[test]
+fn history_signals_read_the_profiles_table() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let mut b = sig3_cc();
+    assert_eq!(unsafe { cnc_rdhissgnl3(h, &mut b) }, EW_OK);
+    // datano and type are left as they were.
+    assert_eq!((b.datano, b.r#type), (-13108, -13108));
+    let e = |i: usize| {
+        let d = b.data[i];
+        (d.ent_no, d.pmc_no, d.sig_no, d.sig_name, d.mask_pat as u8)
+    };
+    // G43 (the mode), G7.2 (ST), F1.1 (RST), G10 (*JV), G12 (*FV), then
+    // empty entries.
+    assert_eq!(e(0), (1, 1, 43, 0, 0xff));
+    assert_eq!(e(1), (2, 1, 7, 0, 0x04));
+    assert_eq!(e(2), (3, 1, 1, 1, 0x02));
+    assert_eq!(e(3), (4, 1, 10, 0, 0xff));
+    assert_eq!(e(4), (5, 1, 12, 0, 0xff));
+    assert_eq!(e(5), (6, 0, 0, 0, 0));
+    assert_eq!(e(59), (60, 0, 0, 0, 0));
+    // NULL: EW_DATA (FANUC's library crashes).
+    assert_eq!(unsafe { cnc_rdhissgnl3(h, std::ptr::null_mut()) }, EW_DATA);
+    sim::free(h);
+}
+
+#[test]
+fn history_signals_write_then_read_back_and_a_refused_write_changes_nothing() {
+    let (_s, h) = sim::start_alloc(Profile::default());
+    let read = || {
+        let mut b = sig3_cc();
+        assert_eq!(unsafe { cnc_rdhissgnl3(h, &mut b) }, EW_OK);
+        b
+    };
+    let before = read();
+    // A G20 byte the table does not list is not recorded.
+    let g20 = |v: u8| {
+        let mut w = [0u8; 9];
+        w[4..6].copy_from_slice(&20u16.to_le_bytes());
+        w[6..8].copy_from_slice(&20u16.to_le_bytes());
+        w[8] = v;
+        assert_eq!(unsafe { pmc_wrpmcrng(h, 9, w.as_mut_ptr().cast()) }, EW_OK);
+    };
+    let count = || {
+        let mut n = 0u16;
+        assert_eq!(unsafe { cnc_rdophisno(h, &mut n) }, EW_OK);
+        n
+    };
+    let n0 = count();
+    g20(0x80);
+    assert_eq!(count(), n0, "G20 is not in the table");
+
+    // Two entries: G20 bits 0..3 in entry 7, and entry 1 (G43) cleared
+    // (PMC 0).
+    let mut w = sig3_cc();
+    w.datano = 0;
+    w.r#type = 2;
+    w.data[0] = IODBSIG3_DATA {
+        ent_no: 7,
+        pmc_no: 1,
+        sig_no: 20,
+        sig_name: 0,
+        mask_pat: 0x0f,
+    };
+    w.data[1] = IODBSIG3_DATA {
+        ent_no: 1,
+        pmc_no: 0,
+        ..Default::default()
+    };
+    assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_OK);
+    let b = read();
+    let e = |b: &IODBSIG3, i: usize| {
+        let d = b.data[i];
+        (d.ent_no, d.pmc_no, d.sig_no, d.sig_name, d.mask_pat as u8)
+    };
+    assert_eq!(e(&b, 6), (7, 1, 20, 0, 0x0f));
+    assert_eq!(e(&b, 0), (1, 0, 0, 0, 0));
+    assert_eq!(e(&b, 1), e(&before, 1), "the others stay");
+    assert_eq!(e(&b, 4), e(&before, 4));
+    assert_eq!(e(&b, 5), (6, 0, 0, 0, 0));
+
+    // Now G20 is recorded, when a bit its mask selects changes.
+    let n1 = count();
+    g20(0x40);
+    assert_eq!(count(), n1, "bit 6 is not in the mask");
+    g20(0x41);
+    assert!(count() > n1, "bit 0 is");
+
+    // Refused by the CNC (entry 61; address type 4), the whole write:
+    // the good first entry is not applied either.
+    for bad in [
+        IODBSIG3_DATA {
+            ent_no: 61,
+            pmc_no: 1,
+            sig_no: 9,
+            ..Default::default()
+        },
+        IODBSIG3_DATA {
+            ent_no: 7,
+            pmc_no: 1,
+            sig_no: 9,
+            sig_name: 4,
+            mask_pat: 1,
+        },
+    ] {
+        w.data[0] = IODBSIG3_DATA {
+            ent_no: 2,
+            pmc_no: 1,
+            sig_no: 100,
+            sig_name: 0,
+            mask_pat: 1,
+        };
+        w.data[1] = bad;
+        assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_DATA);
+        assert_eq!(read(), b, "a refused write changes nothing");
+    }
+    // type outside 0..=60: EW_LENGTH before any traffic; NULL: EW_DATA.
+    for t in [-1, 61] {
+        w.r#type = t;
+        assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_LENGTH);
+    }
+    assert_eq!(unsafe { cnc_wrhissgnl3(h, std::ptr::null_mut()) }, EW_DATA);
+    // type 0: nothing sent to change.
+    w.r#type = 0;
+    assert_eq!(unsafe { cnc_wrhissgnl3(h, &mut w) }, EW_OK);
+    assert_eq!(read(), b);
+    sim::free(h);
+}

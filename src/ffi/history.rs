@@ -7,7 +7,7 @@ use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER, EW_VERSION};
 use crate::proto::history::{self as ph, OpKind, be16, be32};
-use crate::types::{IODBPI, ODBAHIS5, ODBHIS, ODBOMHIS, ODBOMHIS2};
+use crate::types::{IODBPI, IODBSIG3, ODBAHIS5, ODBHIS, ODBOMHIS, ODBOMHIS2};
 use std::os::raw::{c_short, c_ushort, c_void};
 
 /// `s_number..=e_number` must be a range (FANUC's library: EW_NUMBER
@@ -382,5 +382,37 @@ pub unsafe extern "C" fn cnc_rdpitchr(
             put_at(out, 4, datano_s.wrapping_add(n as i16).wrapping_sub(1));
         }
         Ok(())
+    })
+}
+
+/// Writes the signals the operation history records: `type` entries of
+/// IODBSIG3 (`datano` unused), their 16-byte wire form as cnc_rdhissgnl3
+/// reads them. `type` outside 0..=60: EW_LENGTH before any traffic
+/// (FANUC's library sends a broken frame for a negative one and reads past
+/// the struct for more than 60).
+///
+/// # Safety
+/// `sig` must point to a readable IODBSIG3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_wrhissgnl3(FlibHndl: c_ushort, sig: *mut IODBSIG3) -> c_short {
+    ffi_boundary!("cnc_wrhissgnl3", {
+        let h = handles::get(FlibHndl)?;
+        // SAFETY: the caller's IODBSIG3, only read.
+        let s = unsafe { &*nonnull(sig)? };
+        let n = usize::try_from(s.r#type)
+            .ok()
+            .filter(|&n| n <= s.data.len())
+            .ok_or_else(|| Error::local(EW_LENGTH, "type (the entries) outside 0..=60"))?;
+        let entries = s.data[..n]
+            .iter()
+            .map(|d| ph::Sig3 {
+                ent_no: d.ent_no,
+                pmc_no: d.pmc_no,
+                sig_no: d.sig_no,
+                sig_name: d.sig_name as u8,
+                mask_pat: d.mask_pat as u8,
+            })
+            .collect();
+        h.call(&ph::WriteSig3 { entries })
     })
 }

@@ -4,12 +4,15 @@
 //! ([`Machine::record_alarm`]).
 
 use super::Machine;
+use super::profile::history::{HIS_SIGNALS, HisSignal};
 pub use super::profile::history::{
     History, HistoryEntry, Message, MessageHistory, Operation, OperationHistory, parse_time,
 };
 use super::service::{CncError, Reply};
+use crate::ew;
 use crate::proto::alarm::{AlmHisRecord, AlmHistory, HIS_MSG_LEN};
 use crate::proto::offset::Count;
+use crate::proto::packet::{CLASS_CNC, ReqSub};
 use std::time::SystemTime;
 
 /// UTC calendar time of `t` as "YYYY-MM-DD hh:mm:ss".
@@ -147,8 +150,32 @@ impl Machine {
     }
 
     /// A signal the machine changed itself, now: one `"signal"` record of
-    /// PMC byte `byte` of address type `adr_type` (0 G, 1 F, 2 Y, 3 X).
+    /// PMC byte `byte` of address type `adr_type` (0 G, 1 F, 2 Y, 3 X) of
+    /// PMC 1, when the history's signal table selects it.
     pub(crate) fn record_signal(&mut self, adr_type: i16, byte: i32, old: u8, new: u8) {
+        self.record_pmc_signal(1, adr_type, byte, old, new);
+    }
+
+    /// [`Machine::record_signal`] of PMC `unit`: recorded when the signal
+    /// table (cnc_rdhissgnl3) lists the byte and its mask selects a bit
+    /// that changed (a press of a bit already set, old = new, counts).
+    pub(crate) fn record_pmc_signal(
+        &mut self,
+        unit: u16,
+        adr_type: i16,
+        byte: i32,
+        old: u8,
+        new: u8,
+    ) {
+        let listed = self.profile.operation_history.signals.iter().any(|s| {
+            i32::from(s.pmc) == i32::from(unit)
+                && s.group == adr_type
+                && i32::from(s.number) == byte
+                && (old == new || (old ^ new) & s.mask != 0)
+        });
+        if !listed {
+            return;
+        }
         let op = Operation {
             kind: "signal".into(),
             number: byte,
@@ -335,6 +362,66 @@ impl Machine {
         }
     }
 
+    /// 0x01b3 (cnc_wrhissgnl3) [n] and n 16-byte entries: each entry
+    /// number 1..=60, PMC 0 (clears the entry) ..= the PMCs, address type
+    /// 0..=3, byte 0..=9999, else EW_DATA and nothing changes; the payload
+    /// must hold n entries (n 0..=60), else EW_LENGTH.
+    pub(crate) fn history_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
+        use crate::proto::history::{SIG3_REC, Sig3, WRHISSGNL3};
+        if sub.class != CLASS_CNC || sub.cmd != WRHISSGNL3 {
+            return None;
+        }
+        let n = sub.args[0];
+        let p = &sub.payload;
+        if !(0..=HIS_SIGNALS as i32).contains(&n) || p.len() != n as usize * SIG3_REC {
+            return Some(Err(CncError::new(ew::EW_LENGTH)));
+        }
+        let units = self.profile.pmc.units() as i32;
+        let mut new = Vec::new();
+        for e in p.chunks_exact(SIG3_REC) {
+            let (ent, pmc, number, group, mask) = Sig3::from_wire(e);
+            let ok = (1..=HIS_SIGNALS as i32).contains(&ent)
+                && (0..=units).contains(&pmc)
+                && (0..=3).contains(&group)
+                && (0..=9999).contains(&number);
+            if !ok {
+                return Some(Err(CncError::new(ew::EW_DATA)));
+            }
+            let s = if pmc == 0 {
+                HisSignal {
+                    pmc: 0,
+                    group: 0,
+                    number: 0,
+                    mask: 0,
+                }
+            } else {
+                HisSignal {
+                    pmc: pmc as i16,
+                    group: i16::from(group),
+                    number: number as i16,
+                    mask,
+                }
+            };
+            new.push((ent as usize - 1, s));
+        }
+        let table = &mut self.profile.operation_history.signals;
+        for (k, s) in new {
+            if table.len() <= k {
+                table.resize(
+                    k + 1,
+                    HisSignal {
+                        pmc: 0,
+                        group: 0,
+                        number: 0,
+                        mask: 0,
+                    },
+                );
+            }
+            table[k] = s;
+        }
+        Some(Ok(Vec::new()))
+    }
+
     /// The answers of the history functions described as data
     /// (src/spec/table/): counts and sizes, and the record/clear commands.
     pub(crate) fn history_answer(&mut self, name: &str) -> Option<Vec<i64>> {
@@ -351,6 +438,23 @@ impl Machine {
                 ops.entries.clear();
                 Vec::new()
             }
+            // The 60 entries of the signal table, numbered 1.., those
+            // the profile does not set zeros.
+            "cnc_rdhissgnl3" => (0..HIS_SIGNALS)
+                .flat_map(|k| {
+                    let s = ops.signals.get(k);
+                    let v = |f: fn(&HisSignal) -> i64| s.map_or(0, f);
+                    [
+                        k as i64 + 1,
+                        v(|s| s.pmc.into()),
+                        v(|s| s.number.into()),
+                        0,
+                        v(|s| s.group.into()),
+                        v(|s| s.mask.into()),
+                        0,
+                    ]
+                })
+                .collect(),
             "cnc_rdomhisno" => count(oms.entries.len()),
             "cnc_rdomhisinfo" => [oms.capacity, oms.entries.len(), oms.chars]
                 .map(|n| n.min(usize::from(u16::MAX)) as i64)

@@ -427,12 +427,14 @@ impl CncService for Machine {
         let old = self.profile.pmc.read(unit, &range).unwrap_or_default();
         self.profile.pmc.write(unit, &range, data)?;
         // Signal changes (G, F, Y, X: address types 0..3) go into the
-        // operation history, one record per changed byte.
+        // operation history, one record per changed byte the history's
+        // signal table selects.
         if (0..=3).contains(&range.adr_type) {
             let new = self.profile.pmc.read(unit, &range).unwrap_or_default();
             for (k, (o, n)) in old.iter().zip(&new).enumerate() {
                 if o != n {
-                    self.record_signal(range.adr_type, i32::from(range.s) + k as i32, *o, *n);
+                    let byte = i32::from(range.s) + k as i32;
+                    self.record_pmc_signal(unit, range.adr_type, byte, *o, *n);
                 }
             }
         }
@@ -574,6 +576,7 @@ impl CncService for Machine {
             .or_else(|| self.offset_raw(sub))
             .or_else(|| self.pmc_raw(sub))
             .or_else(|| self.maintenance_raw(sub))
+            .or_else(|| self.history_raw(sub))
     }
 
     // --- upload ---

@@ -324,6 +324,9 @@ impl Profile {
             return bad("at least one [[path]] is required".into());
         }
         self.maintenance.validate().map_err(ProfileError::Invalid)?;
+        self.operation_history
+            .validate()
+            .map_err(ProfileError::Invalid)?;
         if self.paths.len() > 15 {
             return bad("at most 15 paths".into());
         }

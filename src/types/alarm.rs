@@ -238,6 +238,32 @@ pub struct ODBOMIF {
     pub om_char: c_ushort,
 }
 
+/// One signal of IODBSIG3: a PMC signal byte the operation history records.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBSIG3_DATA {
+    /// The entry's number (1..60).
+    pub ent_no: c_short,
+    /// The PMC (1..).
+    pub pmc_no: c_short,
+    /// The byte's address number.
+    pub sig_no: c_short,
+    /// The address letter as a number (0 G, 1 F, 2 Y, 3 X ...).
+    pub sig_name: c_char,
+    /// The bits recorded.
+    pub mask_pat: c_char,
+}
+
+/// cnc_rdhissgnl3 / cnc_wrhissgnl3: the signals the operation history
+/// records, 60 entries.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IODBSIG3 {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: [IODBSIG3_DATA; 60],
+}
+
 // --- operation and operator message histories, alarm history 5 ---
 
 /// ODBHIS alarm record.

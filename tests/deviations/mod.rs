@@ -554,6 +554,30 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "FANUC's library copies the whole answer into the caller's array, past the timers asked for; ours writes at most e_number - s_number + 1 types",
     },
+    Deviation {
+        function: "cnc_wrhissgnl3",
+        cases: &[
+            "wrhissgnl3_v3w_a2_61",
+            "wrhissgnl3_v3w_a2_100",
+            "wrhissgnl3_v2w_a2_61",
+            "wrhissgnl3_v2w_a2_100",
+            "wrhissgnl3_v3_a2_61",
+            "wrhissgnl3_v3_a2_100",
+            "wrhissgnl3_v2_a2_61",
+            "wrhissgnl3_v2_a2_100",
+        ],
+        reason: "with type (the number of entries) over 60 FANUC's library sends that many 16-byte entries, read past the caller's 60-entry IODBSIG3; ours answers EW_LENGTH (2) before any traffic",
+    },
+    Deviation {
+        function: "cnc_wrhissgnl3",
+        cases: &[
+            "wrhissgnl3_v3w_a2_m1",
+            "wrhissgnl3_v2w_a2_m1",
+            "wrhissgnl3_v3_a2_m1",
+            "wrhissgnl3_v2_a2_m1",
+        ],
+        reason: "with a negative type FANUC's library sends a broken subpacket (its length 28 + 16 type) that the CNC drops the connection on (EW_SOCKET); ours answers EW_LENGTH (2) before any traffic",
+    },
     // --- machine data (issue 11) ---
     Deviation {
         function: "cnc_rdctrldi",

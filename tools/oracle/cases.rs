@@ -1123,6 +1123,31 @@ const WORDS: &[Word] = &[
         &["-1 12", "4 1"],
     ),
     w("rdctrldi", &[]),
+    // The signals the operation history records: datano, type, entries
+    // filled (a pattern), 0 for NULL, then entry 1's ent_no, pmc_no,
+    // sig_no, sig_name.
+    Word {
+        after: &["rdhissgnl3"],
+        writes: true,
+        ..wc(
+            "wrhissgnl3",
+            &["1|0|-1|61", "60|0|1|3|61|-1|100", "60|0|3", "1|0"],
+            &[
+                "1 1 60 1 0",
+                "1 1 60 1 61",
+                "1 1 60 1 -1",
+                "1 1 60 1 1 0",
+                "1 1 60 1 1 2",
+                "1 1 60 1 1 -1",
+                "1 1 60 1 1 1 -1",
+                "1 1 60 1 1 1 0 4",
+                "1 1 60 1 1 1 0 -1",
+                "1 3 3 1",
+                "1 5 3 1",
+                "1 1000 60 1",
+            ],
+        )
+    },
     w("rdctrldo", &[]),
     // After a reset that interrupted the running program: restart data.
     Word {

@@ -88,15 +88,88 @@ pub struct OperationHistory {
     /// `[[operation_history.entry]]`, newest first.
     #[serde(rename = "entry")]
     pub entries: Vec<Operation>,
+    /// `[[operation_history.signal]]`: the signals the history records
+    /// (cnc_rdhissgnl3 / cnc_wrhissgnl3), at most [`HIS_SIGNALS`].
+    #[serde(rename = "signal")]
+    pub signals: Vec<HisSignal>,
 }
+
+/// The most signals the operation history records (IODBSIG3's entries).
+pub const HIS_SIGNALS: usize = 60;
 
 impl Default for OperationHistory {
     fn default() -> Self {
+        // The panel signals the running machine records (FANUC's PMC
+        // addresses): the mode select byte G43, ST (G7.2), RST (F1.1),
+        // the manual feed override *JV (G10) and the feedrate override
+        // *FV (G12).
+        let sig = |group, number, mask| HisSignal {
+            pmc: 1,
+            group,
+            number,
+            mask,
+        };
         OperationHistory {
             capacity: 100,
             recording: true,
             entries: Vec::new(),
+            signals: vec![
+                sig(0, 43, 0xff),
+                sig(0, 7, 0x04),
+                sig(1, 1, 0x02),
+                sig(0, 10, 0xff),
+                sig(0, 12, 0xff),
+            ],
         }
+    }
+}
+
+impl OperationHistory {
+    pub fn validate(&self) -> Result<(), String> {
+        if self.signals.len() > HIS_SIGNALS {
+            return Err(format!(
+                "operation_history has more than {HIS_SIGNALS} signals"
+            ));
+        }
+        for s in &self.signals {
+            s.validate()?;
+        }
+        Ok(())
+    }
+}
+
+/// One signal byte the operation history records: PMC `pmc` (1..; 0 an
+/// empty entry), its
+/// address type `group` (0 G, 1 F, 2 Y, 3 X, as the signal records' sig_name),
+/// byte `number`, and the bits `mask` selects.
+#[derive(Debug, Clone, Copy, Deserialize, PartialEq, Eq)]
+#[serde(deny_unknown_fields, default)]
+pub struct HisSignal {
+    pub pmc: i16,
+    pub group: i16,
+    pub number: i16,
+    pub mask: u8,
+}
+
+impl Default for HisSignal {
+    fn default() -> Self {
+        HisSignal {
+            pmc: 1,
+            group: 0,
+            number: 0,
+            mask: 0xff,
+        }
+    }
+}
+
+impl HisSignal {
+    pub fn validate(&self) -> Result<(), String> {
+        if self.pmc < 0 || !(0..=3).contains(&self.group) || self.number < 0 {
+            return Err(format!(
+                "operation_history signal {self:?}: pmc must be 0 (an empty entry) or 1.., group 0..=3 (G, F, Y, X), number 0.."
+            ));
+        }
+        Ok(())
     }
 }
 

@@ -80,4 +80,28 @@ pub const FUNCS: &[Func] = &[
         ],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdhissgnl3",
+        doc: "Reads the signals the operation history records (as many 16-byte records as the CNC sends, at most 60; datano and type untouched).",
+        params: &[Param::Out("sig", "IODBSIG3")],
+        forms: &[every_class(0x01b2, &[])],
+        records: Some(Records {
+            fields: &[
+                to(I32, "ent_no", I16),
+                to(I32, "pmc_no", I16),
+                to(I32, "sig_no", I16),
+                skip(U8),
+                to(U8, "sig_name", I8),
+                to(U8, "mask_pat", I8),
+                skip(U8),
+            ],
+            out: 0,
+            to: "data",
+            elem: "IODBSIG3_DATA",
+            max: 60,
+            count: None,
+            room: None,
+        }),
+        ..COMMAND
+    },
 ];
