@@ -32,7 +32,9 @@ impl Handle {
                 "a call made a second exchange in a batch",
             ));
         }
-        b.pending = Some((c.request)(cx));
+        let mut subs = Vec::new();
+        (c.request)(cx, &mut subs);
+        b.pending = Some(subs);
         Err(Error::Queued)
     }
 
@@ -80,7 +82,7 @@ impl Handle {
             let deadline = Deadline::after_secs(timeout);
             let mut resp = Vec::new();
             let mut raw = Erased {
-                request: &|_| subs.clone(),
+                request: &|_, out| out.extend_from_slice(&subs),
                 decode: &mut |_, r| {
                     resp = r.to_vec();
                     Ok(())

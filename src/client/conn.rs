@@ -106,6 +106,9 @@ pub struct Conn {
     write_timeout: Armed,
     /// The last data answer's subpackets, reused by the next.
     resp: Vec<RespSub>,
+    /// The request list calls build their subpackets in, reused
+    /// ([`Conn::take_request`]).
+    req: Vec<ReqSub>,
 }
 
 /// A frame's length word is 16 bits: a longer body is refused before any
@@ -143,6 +146,7 @@ impl Conn {
                         read_timeout: Armed::Forever,
                         write_timeout: Armed::Forever,
                         resp: Vec::new(),
+                        req: Vec::new(),
                     });
                 }
                 Err(e) => last = Some(e),
@@ -222,6 +226,18 @@ impl Conn {
         self.wbuf = w.buf;
         fits_a_frame(len)?;
         self.send_wbuf(deadline)
+    }
+
+    /// The connection's request list, empty, for a call to build its
+    /// subpackets in; given back with [`Conn::give_request`].
+    pub fn take_request(&mut self) -> Vec<ReqSub> {
+        std::mem::take(&mut self.req)
+    }
+
+    /// Keeps `v`'s room, not its subpackets (nor their payloads).
+    pub fn give_request(&mut self, mut v: Vec<ReqSub>) {
+        v.clear();
+        self.req = v;
     }
 
     /// One data request and its answer: `subs` sent as a 0x2101 frame, the

@@ -11,6 +11,7 @@ use crate::error::{Error, Result};
 use crate::ew::EW_HANDLE;
 use parking_lot::{Mutex, RwLock};
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::Arc;
 
 /// Most handles that can exist at once (FANUC's library: 1024, then it hangs).
@@ -56,8 +57,28 @@ impl Drop for Handle {
 }
 
 struct Table {
-    map: HashMap<u16, Arc<Handle>>,
+    map: HashMap<u16, Arc<Handle>, BuildHasherDefault<HandleHasher>>,
     next: u16,
+}
+
+/// Hashes a handle number with one multiplication (Fibonacci hashing):
+/// every call looks its handle up, and the numbers are ours, not an
+/// attacker's, so SipHash's protection buys nothing here.
+#[derive(Default)]
+struct HandleHasher(u64);
+
+impl Hasher for HandleHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write_u16(&mut self, h: u16) {
+        self.0 = u64::from(h).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.0 = (self.0.rotate_left(8) ^ u64::from(*b)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+        }
+    }
 }
 
 static TABLE: RwLock<Option<Table>> = RwLock::new(None);
@@ -65,7 +86,7 @@ static TABLE: RwLock<Option<Table>> = RwLock::new(None);
 pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
     let mut g = TABLE.write();
     let t = g.get_or_insert_with(|| Table {
-        map: HashMap::new(),
+        map: HashMap::default(),
         next: FIRST,
     });
     if t.map.len() >= MAX_HANDLES {

@@ -44,6 +44,10 @@ impl Handle {
         call::erased(c, |e| self.call_erased(e))
     }
 
+    // The one copy of the exchange path: not inlined into the generic
+    // shims, with the layers below inlined into it (no result copies
+    // between them).
+    #[inline(never)]
     fn call_erased(&self, c: &mut Erased<'_>) -> Result<()> {
         let r = self.exchange(c);
         match &r {
@@ -56,6 +60,7 @@ impl Handle {
     /// One exchange on the pair with the handle's path, by its timeout; a
     /// torn-down pair is first reconnected within that same time when the
     /// handle asked for it (fwlib_set_reconnect).
+    #[inline(always)]
     fn exchange(&self, c: &mut Erased<'_>) -> Result<()> {
         let (path, timeout, reconnect, unit) = {
             let s = self.state.lock();
@@ -164,6 +169,7 @@ impl Handle {
         call::erased(c, |e| self.call_pmc_erased(e))
     }
 
+    #[inline(never)]
     fn call_pmc_erased(&self, c: &mut Erased<'_>) -> Result<()> {
         let r = self.exchange(c);
         let mut s = self.state.lock();

@@ -359,6 +359,7 @@ impl Pair {
     /// CNC subpackets without a path get the handle's `path`; PMC
     /// subpackets carry the handle's selected PMC unit (`pmc_unit`, 1 until
     /// pmc_select_pmc_unit), as FANUC's library sends them.
+    #[inline(always)]
     pub fn call(
         &self,
         c: &mut Erased<'_>,
@@ -367,7 +368,12 @@ impl Pair {
         deadline: Deadline,
     ) -> Result<()> {
         let cx = self.info.ctx(path);
-        let mut subs = (c.request)(&cx);
+        let mut io = self.io();
+        let Some(c2) = io.as_mut() else {
+            return Err(dead());
+        };
+        let mut subs = c2.take_request();
+        (c.request)(&cx, &mut subs);
         for s in &mut subs {
             if s.class == CLASS_PMC {
                 s.path = pmc_unit;
@@ -375,12 +381,12 @@ impl Pair {
                 s.path = path;
             }
         }
-        let mut io = self.io();
-        let Some(c2) = io.as_mut() else {
-            return Err(dead());
-        };
-        match c2.exchange(&subs, deadline) {
-            Ok(resp) => (c.decode)(&cx, resp),
+        let r = c2
+            .exchange(&subs, deadline)
+            .map(|resp| (c.decode)(&cx, resp));
+        c2.give_request(subs);
+        match r {
+            Ok(r) => r,
             Err(e) => {
                 if stream_broken(&e) {
                     drop(io);

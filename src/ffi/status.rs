@@ -4,7 +4,7 @@ use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::EW_PATH;
-use crate::proto::status::{StatInfo, Status, Status2, StatusWords, rdcncid};
+use crate::proto::status::{StatInfo, StatWords, Status, Status2, StatusWords, rdcncid};
 use crate::types::{MAX_CNCPATH, ODBST, ODBST2, ODBSYS, ODBSYSEX, ODBSYSEX_PATH, chars};
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_short, c_ulong, c_ushort};
@@ -76,6 +76,7 @@ pub unsafe extern "C" fn cnc_sysinfo_ex(FlibHndl: c_ushort, sysinfoex: *mut ODBS
 /// the status words the CNC sent, at most `N` (FANUC's library writes every
 /// word sent, past the struct).
 unsafe fn read_status<T: StatusWords, const N: usize>(h: &Handle, out: *mut u8) -> Result<()> {
+    const { assert!(N <= StatWords::MAX) };
     let r = h.call(&StatInfo::<T>::new())?;
     unsafe {
         put_at(out, 0, r.hdck);

@@ -51,6 +51,11 @@ impl Default for Ctx {
 pub trait Call {
     type Output;
     fn request(&self, cx: &Ctx) -> Vec<ReqSub>;
+    /// [`Call::request`] appended to `out`, a list the connection reuses:
+    /// the calls made most override it so that they allocate nothing.
+    fn request_into(&self, cx: &Ctx, out: &mut Vec<ReqSub>) {
+        out.extend(self.request(cx));
+    }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output>;
 }
 
@@ -58,7 +63,8 @@ pub trait Call {
 /// keeps what it decodes. The client's exchange path takes this, so its
 /// code exists once, not once per call type.
 pub struct Erased<'a> {
-    pub request: &'a dyn Fn(&Ctx) -> Vec<ReqSub>,
+    /// Appends the request's subpackets (see [`Call::request_into`]).
+    pub request: &'a dyn Fn(&Ctx, &mut Vec<ReqSub>),
     pub decode: &'a mut dyn FnMut(&Ctx, &[RespSub]) -> Result<()>,
 }
 
@@ -70,7 +76,7 @@ pub fn erased<C: Call>(
 ) -> Result<C::Output> {
     let mut out = None;
     run(&mut Erased {
-        request: &|cx| c.request(cx),
+        request: &|cx, out| c.request_into(cx, out),
         decode: &mut |cx, resp| {
             out = Some(c.decode(cx, resp)?);
             Ok(())
@@ -157,6 +163,9 @@ impl<T: Wire> Call for Single<T> {
     type Output = T;
     fn request(&self, _: &Ctx) -> Vec<ReqSub> {
         vec![self.sub.clone()]
+    }
+    fn request_into(&self, _: &Ctx, out: &mut Vec<ReqSub>) {
+        out.push(self.sub.clone());
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<T> {
         payload_padded(resp, 0, self.pad)

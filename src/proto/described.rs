@@ -28,23 +28,27 @@ impl Call for Described<'_> {
     /// The reply's integers, in layout order (each field's `n` elements).
     type Output = Vec<i64>;
     fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let mut v = Vec::new();
+        self.request_into(cx, &mut v);
+        v
+    }
+    fn request_into(&self, cx: &Ctx, out: &mut Vec<ReqSub>) {
         // The caller checked that a form exists for this class.
         let Some(form) = form(self.f, cx.class) else {
-            return Vec::new();
+            return;
         };
-        let words: Vec<i32> = form
-            .words
-            .iter()
-            .map(|w| match *w {
+        let mut words = [0i32; 5];
+        for (w, f) in words.iter_mut().zip(form.words) {
+            *w = match *f {
                 Word::Arg(i) => self.args.get(i as usize).copied().unwrap_or(0),
                 Word::Const(c) => c,
-            })
-            .collect();
-        if form.class == CLASS_PMC {
-            vec![ReqSub::pmc(form.cmd, &words)]
-        } else {
-            vec![ReqSub::cnc(form.cmd, &words)]
+            };
         }
+        out.push(if form.class == CLASS_PMC {
+            ReqSub::pmc(form.cmd, &words)
+        } else {
+            ReqSub::cnc(form.cmd, &words)
+        });
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
         decode(self.f, self.args, &sub(resp, 0)?.payload)

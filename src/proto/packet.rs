@@ -110,16 +110,22 @@ pub fn encode_request(subs: &[ReqSub]) -> Vec<u8> {
 }
 
 /// [`encode_request`], appended to `w` (a frame being built in a reused buffer).
+/// Each subpacket's fixed part is put together on the stack and appended
+/// whole (this runs on every call).
 pub fn encode_request_into(subs: &[ReqSub], w: &mut Writer) {
+    let payloads: usize = subs.iter().map(|s| s.payload.len()).sum();
+    w.buf.reserve(2 + subs.len() * REQ_FIXED + payloads);
     w.u16(subs.len() as u16);
     for s in subs {
-        w.u16((REQ_FIXED + s.payload.len()) as u16);
-        w.u16(s.class);
-        w.u16(s.path);
-        w.u16(s.cmd);
-        for a in s.args {
-            w.i32(a);
+        let mut f = [0u8; REQ_FIXED];
+        f[0..2].copy_from_slice(&((REQ_FIXED + s.payload.len()) as u16).to_be_bytes());
+        f[2..4].copy_from_slice(&s.class.to_be_bytes());
+        f[4..6].copy_from_slice(&s.path.to_be_bytes());
+        f[6..8].copy_from_slice(&s.cmd.to_be_bytes());
+        for (k, a) in s.args.iter().enumerate() {
+            f[8 + 4 * k..12 + 4 * k].copy_from_slice(&a.to_be_bytes());
         }
+        w.bytes(&f);
         w.bytes(&s.payload);
     }
 }
@@ -184,38 +190,31 @@ pub fn decode_response(body: &[u8]) -> Result<Vec<RespSub>, DecodeError> {
 pub fn decode_response_into(body: &[u8], out: &mut Vec<RespSub>) -> Result<(), DecodeError> {
     // What a hostile answer can leave behind stays small.
     out.truncate(32);
-    let mut n = 0;
-    for_each_sub(body, RESP_FIXED, |r, len| {
-        let head = RespSub {
-            class: r.u16()?,
-            path: r.u16()?,
-            cmd: r.u16()?,
-            error: r.i16()?,
-            detail1: r.u16()?,
-            detail2: r.u16()?,
-            payload: Vec::new(),
-        };
-        let plen = r.u16()? as usize;
-        let room = len - RESP_FIXED;
-        let all = r.bytes(room)?;
-        if plen > room {
+    let n = check_lengths(body, RESP_FIXED)?;
+    let be = |b: &[u8], i: usize| u16::from_be_bytes([b[i], b[i + 1]]);
+    let mut at = 2;
+    for k in 0..n {
+        // Whole subpackets, their lengths checked above.
+        let len = be(body, at) as usize;
+        let s = &body[at..at + len];
+        at += len;
+        let plen = be(s, 14) as usize;
+        let Some(payload) = s[RESP_FIXED..].get(..plen) else {
             return Err(DecodeError::Invalid("payload length exceeds its subpacket"));
+        };
+        if k == out.len() {
+            out.push(RespSub::default());
         }
-        match out.get_mut(n) {
-            Some(s) => {
-                let mut payload = std::mem::take(&mut s.payload);
-                payload.clear();
-                payload.extend_from_slice(&all[..plen]);
-                *s = RespSub { payload, ..head };
-            }
-            None => out.push(RespSub {
-                payload: all[..plen].to_vec(),
-                ..head
-            }),
-        }
-        n += 1;
-        Ok(())
-    })?;
+        let r = &mut out[k];
+        r.class = be(s, 2);
+        r.path = be(s, 4);
+        r.cmd = be(s, 6);
+        r.error = be(s, 8) as i16;
+        r.detail1 = be(s, 10);
+        r.detail2 = be(s, 12);
+        r.payload.clear();
+        r.payload.extend_from_slice(payload);
+    }
     out.truncate(n);
     Ok(())
 }
@@ -241,19 +240,40 @@ fn for_each_sub(
     fixed: usize,
     mut one: impl FnMut(&mut Reader<'_>, usize) -> Result<(), DecodeError>,
 ) -> Result<(), DecodeError> {
-    let mut r = Reader::new(body);
-    let count = r.u16()?;
+    let count = check_lengths(body, fixed)?;
+    let mut r = Reader::new(&body[2..]);
+    for _ in 0..count {
+        // The length word, checked above.
+        let len = r.u16()? as usize;
+        let start = r.position();
+        one(&mut r, len)?;
+        debug_assert_eq!(r.position() - start, len - 2);
+    }
+    Ok(())
+}
+
+/// Checks a counted list of subpackets: the count is not zero, and the
+/// length words, each at least `fixed`, add up to the body exactly.
+/// Lengths are checked against the body before anything is parsed, so a
+/// lie in one length word cannot make us read another subpacket's bytes.
+/// Gives the count.
+fn check_lengths(body: &[u8], fixed: usize) -> Result<usize, DecodeError> {
+    let Some(c) = body.get(..2) else {
+        return Err(DecodeError::Short {
+            need: 2,
+            have: body.len(),
+        });
+    };
+    let count = u16::from_be_bytes([c[0], c[1]]) as usize;
     if count == 0 {
         return Err(DecodeError::CountZero);
     }
-    // Lengths are checked against the body before anything is parsed, so a
-    // lie in one length word cannot make us read another subpacket's bytes.
     let mut at = 2usize;
     for _ in 0..count {
-        if body.len() < at + 2 {
+        let Some(l) = body.get(at..at + 2) else {
             return Err(DecodeError::SubLenTooBig);
-        }
-        let len = u16::from_be_bytes([body[at], body[at + 1]]) as usize;
+        };
+        let len = u16::from_be_bytes([l[0], l[1]]) as usize;
         if len < fixed {
             return Err(DecodeError::Invalid(
                 "subpacket shorter than its fixed part",
@@ -267,12 +287,5 @@ fn for_each_sub(
     if at != body.len() {
         return Err(DecodeError::SubLenTooSmall);
     }
-    for _ in 0..count {
-        // The length word, checked above.
-        let len = r.u16()? as usize;
-        let start = r.position();
-        one(&mut r, len)?;
-        debug_assert_eq!(r.position() - start, len - 2);
-    }
-    Ok(())
+    Ok(count)
 }

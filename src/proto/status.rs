@@ -124,23 +124,47 @@ impl<T> Default for StatInfo<T> {
 pub struct StatReply {
     pub hdck: i16,
     pub tmmode: i16,
-    pub words: Result<Vec<i16>>,
+    pub words: Result<StatWords>,
 }
 
-fn words(p: &[u8]) -> Vec<i16> {
-    p.chunks_exact(2)
-        .map(|w| i16::from_be_bytes([w[0], w[1]]))
-        .collect()
+/// The status words of an answer, at most [`StatWords::MAX`] (the most
+/// any form has: ODBST2's 11), kept without allocating: cnc_statinfo is
+/// the call pollers make most.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct StatWords {
+    w: [i16; StatWords::MAX],
+    n: usize,
+}
+
+impl StatWords {
+    pub const MAX: usize = 11;
+}
+
+impl std::ops::Deref for StatWords {
+    type Target = [i16];
+    fn deref(&self) -> &[i16] {
+        &self.w[..self.n]
+    }
+}
+
+fn words(p: &[u8]) -> StatWords {
+    let mut s = StatWords::default();
+    for (w, b) in s.w.iter_mut().zip(p.chunks_exact(2)) {
+        *w = i16::from_be_bytes([b[0], b[1]]);
+        s.n += 1;
+    }
+    s
 }
 
 impl<T: StatusWords> Call for StatInfo<T> {
     type Output = StatReply;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![
-            ReqSub::cnc(T::CMD, &[]),
-            ReqSub::cnc(cmd::HDCK, &[]),
-            ReqSub::cnc(cmd::TMMODE, &[]),
-        ]
+    fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
+        let mut v = Vec::new();
+        self.request_into(cx, &mut v);
+        v
+    }
+    fn request_into(&self, _: &Ctx, out: &mut Vec<ReqSub>) {
+        out.extend([T::CMD, cmd::HDCK, cmd::TMMODE].map(|c| ReqSub::cnc(c, &[])));
     }
     /// An hdck or tmmode subpacket answering without error but without its
     /// word (FANUC's library then reads the bytes after it: the next
@@ -151,7 +175,7 @@ impl<T: StatusWords> Call for StatInfo<T> {
             return Ok(StatReply {
                 hdck: 0,
                 tmmode: 0,
-                words: sub(resp, 2).map(|_| Vec::new()),
+                words: sub(resp, 2).map(|_| StatWords::default()),
             });
         }
         let word = |i| match sub(resp, i) {
