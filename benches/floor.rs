@@ -2,7 +2,8 @@
 //! sending the same bytes to the same simulator, measured in the same run
 //! (ratios, never timed assertions). Run with `cargo bench --bench floor`
 //! (about 25 s), or some sections: `cargo bench --bench floor -- threads`
-//! (pinned, syscalls, threads, loading).
+//! (pinned, syscalls, threads, loading); `FLOOR_THREADS=4,8` runs only
+//! those thread counts.
 //!
 //! The **floor** is the least any client can do for `cnc_statinfo`: one
 //! pre-encoded data frame (3 subpackets) written to a std `TcpStream` with
@@ -345,6 +346,18 @@ fn alternate(
 
 const THREADS: [usize; 6] = [1, 2, 4, 8, 16, 64];
 
+/// The thread counts to run: all, or those in `FLOOR_THREADS` (`4,8`).
+fn thread_counts() -> Vec<usize> {
+    match std::env::var("FLOOR_THREADS") {
+        Ok(v) => v
+            .split(',')
+            .filter_map(|n| n.trim().parse().ok())
+            .filter(|n| THREADS.contains(n))
+            .collect(),
+        Err(_) => THREADS.to_vec(),
+    }
+}
+
 fn threads(sims: &[Simulator], frame: &[u8]) {
     println!(
         "{:<34} {:>12}  {:>12}  {:>7}",
@@ -355,7 +368,7 @@ fn threads(sims: &[Simulator], frame: &[u8]) {
         .map(|s| Mutex::new(Plain::open(s.addr())))
         .collect();
     let handles: Vec<c_ushort> = sims.iter().map(alloc).collect();
-    for n in THREADS {
+    for n in thread_counts() {
         // Each thread has its own plain socket; the mutex is never contended.
         let (f, o, r) = alternate(
             n,
@@ -376,7 +389,7 @@ fn threads(sims: &[Simulator], frame: &[u8]) {
     }
     // All on one CNC: one handle per thread, all on one connection pair.
     let one: Vec<c_ushort> = (0..64).map(|_| alloc(&sims[0])).collect();
-    for n in THREADS {
+    for n in thread_counts() {
         let (f, o, r) = alternate(
             n,
             &|_| {
