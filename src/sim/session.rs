@@ -2,7 +2,7 @@
 //! [`CncService`], traced, and misbehaving as the machine's faults say.
 
 use super::faults::Cut;
-use super::server::Shared;
+use super::shared::Shared;
 use super::service::{CncService, dispatch};
 use super::trace::Namer;
 use crate::proto::download::Outgoing;
