@@ -442,12 +442,26 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Short(n) => format!("{}: c_short", ident(n)),
             Param::Long(n) => format!("{}: c_long", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
+            Param::Count(n) => format!("{}: *mut c_short", ident(n)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
+        let count = f.params.iter().find_map(|p| match *p {
+            Param::Count(n) => Some(ident(n)),
+            _ => None,
+        });
+        // The count's value is read by exec, once its pointer is checked.
         let numbers: Vec<String> = f
             .numbers()
-            .map(|n| format!("{} as i32", ident(n)))
+            .map(|n| match &count {
+                Some(c) if *c == ident(n) => "0".to_string(),
+                _ => format!("{} as i32", ident(n)),
+            })
             .collect();
+        assert!(
+            numbers.len() <= 8,
+            "src/spec/table/: {}: more number parameters than exec takes (MAX_NUMBERS)",
+            f.name
+        );
         let outs: Vec<(&str, &str)> = f.outs().collect();
         let out_ptrs: Vec<String> = outs
             .iter()
@@ -500,7 +514,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
                         _ => "0".to_string(),
                     })
                     .collect();
-                if c_size(ty).is_none() {
+                // With a count the output is the caller's array of that many.
+                if c_size(ty).is_none() && count.is_none() {
                     checks.push(format!(
                         "const _: () = if {base} + {} * {stride} > size_of::<{ty}>() {{\n    panic!(\"{}: the records do not fit in {ty}\")\n}};\n",
                         r.max, f.name
@@ -516,10 +531,20 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 )
             }
         };
-        let safety: Vec<String> = outs
-            .iter()
-            .map(|(n, t)| format!("/// `{n}` must be NULL or point to a writable {t}."))
-            .collect();
+        let safety: Vec<String> =
+            match &count {
+                None => outs
+                    .iter()
+                    .map(|(n, t)| format!("/// `{n}` must be NULL or point to a writable {t}."))
+                    .collect(),
+                Some(c) => std::iter::once(format!(
+                    "/// `{c}` must be NULL or point to a writable short."
+                ))
+                .chain(outs.iter().map(|(n, t)| {
+                    format!("/// `{n}` must be NULL or point to `*{c}` writable {t}.")
+                }))
+                .collect(),
+            };
         s.push_str(&format!(
             r#"
 {doc}{safety}
@@ -535,6 +560,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
                 &[{out_ptrs}],
                 &[{offsets}],
                 {records},
+                {count},
             )
         }}
     }})
@@ -561,6 +587,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             out_ptrs = out_ptrs.join(", "),
             offsets = offsets.join(", "),
             records = records,
+            count = count.as_deref().unwrap_or("std::ptr::null_mut()"),
         ));
     }
     s
@@ -592,14 +619,22 @@ fn ident(name: &str) -> String {
 }
 
 /// The Rust type of an output's C type.
-fn rust_type(c: &str) -> &str {
+fn rust_type(c: &str) -> String {
     match c {
-        "char" => "c_char",
-        "short" => "c_short",
-        "unsigned short" => "c_ushort",
-        "long" => "c_long",
-        t => t,
+        "char" => "c_char".into(),
+        "short" => "c_short".into(),
+        "unsigned short" => "c_ushort".into(),
+        "long" => "c_long".into(),
+        t => match char_array(t) {
+            Some(n) => format!("[c_char; {n}]"),
+            None => t.into(),
+        },
     }
+}
+
+/// N of a `char[N]` output.
+fn char_array(c: &str) -> Option<usize> {
+    c.strip_prefix("char[")?.strip_suffix(']')?.parse().ok()
 }
 
 /// The bytes a scalar output of C type `c` has (`long`: the 4 FANUC's
@@ -609,6 +644,6 @@ fn c_size(c: &str) -> Option<usize> {
         "char" => Some(1),
         "short" | "unsigned short" => Some(2),
         "long" => Some(4),
-        _ => None,
+        t => char_array(t),
     }
 }

@@ -241,38 +241,6 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["cnc_rdpm_cncitem", "cnc_rdpm_mcnitem"],
-        run: |cx, a, r| {
-            let cmd = if a[2] & 1 == 0 {
-                mt::RDPM_CNCITEM
-            } else {
-                mt::RDPM_MCNITEM
-            };
-            go(
-                mt::ReadNames {
-                    cmd,
-                    start: a[0] as i16,
-                    n: a[1] as i16,
-                },
-                cx,
-                r,
-            )
-        },
-    },
-    Decoder {
-        names: &["cnc_rdpm_item"],
-        run: |cx, a, r| {
-            go(
-                mt::ReadItems {
-                    start: a[0] as i16,
-                    n: a[1] as i16,
-                },
-                cx,
-                r,
-            )
-        },
-    },
-    Decoder {
         names: &["cnc_wrpm_mcnitem"],
         run: |cx, a, r| {
             let names = vec![[a[2] as u8; mt::NAME_LEN]; (a[1] & 7) as usize];

@@ -3289,28 +3289,27 @@ short cnc_rdpitchr(unsigned short FlibHndl,
                    struct IODBPI *pi);
 
 /*
- Reads the names of the CNC's maintenance items from the
- `start_num`-th on: `*data_num` in is how many (at most 23 are asked),
- out how many were written. `*data_num` < 1 is EW_LENGTH without
- traffic. Never more names than asked are written (FANUC's library
- writes every name the CNC sends).
+ Reads the names of the CNC's maintenance items from the `start_num`-th
+ on: `*data_num` in is how many (at most 23 are asked), out how many were
+ written; below 1 it is EW_LENGTH without traffic. Never more names than
+ asked are written (FANUC's library writes every name the CNC sends).
 
  # Safety
- `data_num` must point to a writable short, `item` to `*data_num`
- writable 62-byte names.
+ `data_num` must be NULL or point to a writable short.
+ `item` must be NULL or point to `*data_num` writable char[62].
  */
 short cnc_rdpm_cncitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
 
 /*
  Reads maintenance items from the `start_num`-th on: `*data_num` in is
- how many (at most 17 are asked), out how many were written. Each item's
- name (62 bytes) and its four longs are written, the two bytes between
- them are left as they were, as FANUC's library. `*data_num` < 1 is
- EW_LENGTH without traffic.
+ how many (at most 17 are asked), out how many were written; below 1 it
+ is EW_LENGTH without traffic. Each item's name and its four longs are
+ written, the two bytes between them are left as they were, as FANUC's
+ library.
 
  # Safety
- `data_num` must point to a writable short, `item` to `*data_num`
- writable IODBPMAINTE.
+ `data_num` must be NULL or point to a writable short.
+ `item` must be NULL or point to `*data_num` writable IODBPMAINTE.
  */
 short cnc_rdpm_item(unsigned short FlibHndl,
                     short start_num,
@@ -3322,8 +3321,8 @@ short cnc_rdpm_item(unsigned short FlibHndl,
  `start_num`-th on, as cnc_rdpm_cncitem.
 
  # Safety
- `data_num` must point to a writable short, `item` to `*data_num`
- writable 62-byte names.
+ `data_num` must be NULL or point to a writable short.
+ `item` must be NULL or point to `*data_num` writable char[62].
  */
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
 

@@ -1252,7 +1252,7 @@ impl Call for Raw {
 fn c_args(f: &fwlib32::spec::Func, args: &[String]) -> Vec<i32> {
     use fwlib32::spec::Param;
     let shorts = f.params.iter().filter_map(|p| match p {
-        Param::Short(_) => Some(true),
+        Param::Short(_) | Param::Count(_) => Some(true),
         Param::Long(_) => Some(false),
         Param::Out(..) => None,
     });

@@ -216,7 +216,7 @@ fn ew_codes_match_src_ew() {
         };
         let found: Vec<&str> = header
             .lines()
-            .filter(|l| l.split_whitespace().nth(1) == Some(name))
+            .filter(|l| l.starts_with("#define") && l.split_whitespace().nth(1) == Some(name))
             .collect();
         assert_eq!(
             found.len(),

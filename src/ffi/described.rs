@@ -17,6 +17,9 @@ use std::mem::offset_of;
 #[allow(unused_imports)]
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
+/// Most number parameters a described function has (build.rs checks).
+pub(crate) const MAX_NUMBERS: usize = 8;
+
 /// Where a described function's records go: the byte offset of the array
 /// in its output, the size of one element, and the offset of each record
 /// field's member in the element.
@@ -31,13 +34,18 @@ pub(crate) struct RecordsAt<'a> {
 /// Runs described function `f`: the handle, its checks and NULL outputs
 /// before any traffic, the request for the CNC's class, then the reply's
 /// integers into the caller's outputs (only when the whole reply decoded).
+/// A function with a [`Param::Count`](crate::spec::Param::Count) (`count`
+/// not NULL) checks its pointers first, since the count is read from one,
+/// and gets the number of records written back there.
 ///
 /// # Safety
 /// Each `outs[i]` is NULL or points to writable memory of output i's C
 /// type; `offsets[k]` is the byte offset of reply field k's member in its
 /// output, and its `n` elements fit there; `rec` places `f.records`' at
 /// most `max` records inside their output (build.rs asserts both at
-/// compile time where the output is a struct).
+/// compile time where the output is a struct), or, with a count, at most
+/// `*count` records in the caller's array; `count` is NULL for a function
+/// without one, else the caller's `short *`.
 pub(crate) unsafe fn exec(
     f: &'static Func,
     h: c_ushort,
@@ -45,8 +53,21 @@ pub(crate) unsafe fn exec(
     outs: &[*mut u8],
     offsets: &[usize],
     rec: RecordsAt<'_>,
+    count: *mut c_short,
 ) -> Result<()> {
     let h = handles::get(h)?;
+    let mut a = [0i32; MAX_NUMBERS];
+    a[..args.len()].copy_from_slice(args);
+    let args = &mut a[..args.len()];
+    let counted = f.count().map(|i| (i, count));
+    let nonnull_outs = || outs.iter().map(|p| nonnull(*p)).collect::<Result<Vec<_>>>();
+    let mut early = None;
+    if let Some((i, count)) = counted {
+        let c = nonnull(count)?;
+        early = Some((c, nonnull_outs()?));
+        // SAFETY: the caller's count, checked above.
+        args[i] = i32::from(unsafe { c.read_unaligned() });
+    }
     for c in f.checks {
         let v = match c.arg {
             crate::spec::OPTION => i32::from(h.pair.info.option & 1),
@@ -56,10 +77,10 @@ pub(crate) unsafe fn exec(
             return Err(Error::local(c.code, "argument out of range"));
         }
     }
-    let outs = outs
-        .iter()
-        .map(|p| nonnull(*p))
-        .collect::<Result<Vec<_>>>()?;
+    let (count, outs) = match early {
+        Some((c, outs)) => (Some(c), outs),
+        None => (None, nonnull_outs()?),
+    };
     let Some(form) = form(f, h.ctx().class) else {
         return Err(Error::local(EW_FUNC, "not on this CNC class"));
     };
@@ -87,13 +108,18 @@ pub(crate) unsafe fn exec(
         let mut i = 0;
         while v.len() >= per && per > 0 {
             let at = |k: usize| rec.base + i * rec.stride + rec.offsets[k];
-            // SAFETY: as above; decode returned at most `max` records.
+            // SAFETY: as above; decode returned at most `max` records (and
+            // with a count, at most the `*count` the caller's array holds).
             unsafe { write_fields(r.fields, &outs, at, &mut v) };
             i += 1;
         }
         if let Some(c) = rec.count {
             // SAFETY: the count member lies in its output (build.rs).
             unsafe { put(outs[r.out as usize].add(c).cast::<i16>(), i as i16) };
+        }
+        if let Some(c) = count {
+            // SAFETY: the caller's count, checked non-NULL.
+            unsafe { put(c, i as c_short) };
         }
     }
     Ok(())

@@ -1,13 +1,13 @@
-//! Periodic maintenance: the maintenance items and the names they may take
-//! (src/proto/maintenance.rs).
+//! Periodic maintenance: writing the maintenance items and the names they
+//! may take (src/proto/maintenance.rs). The reads are described as data
+//! (src/spec/table/maintenance.rs).
 
-use super::{ffi_boundary, ffi_read, nonnull, put};
+use super::{ffi_boundary, nonnull};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_LENGTH;
 use crate::proto::maintenance::{
-    ITEM_LEN, ITEMS_MAX, NAME_LEN, NAMES_MAX, PmItem, RDPM_CNCITEM, RDPM_MCNITEM, ReadItems,
-    ReadNames, WRITE_ITEMS_MAX, WRITE_NAMES_MAX, WriteItems, WriteNames,
+    ITEM_LEN, NAME_LEN, PmItem, WRITE_ITEMS_MAX, WRITE_NAMES_MAX, WriteItems, WriteNames,
 };
 use crate::types::IODBPMAINTE;
 use std::os::raw::{c_char, c_short, c_ushort};
@@ -19,74 +19,6 @@ fn count(num: c_short) -> Result<c_short> {
         return Err(Error::local(EW_LENGTH, "the number of items is below 1"));
     }
     Ok(num)
-}
-
-/// cnc_rdpm_cncitem / cnc_rdpm_mcnitem.
-unsafe fn read_names(
-    h: c_ushort,
-    cmd: u16,
-    start_num: c_short,
-    data_num: *mut c_short,
-    item: *mut [c_char; NAME_LEN],
-) -> Result<()> {
-    let h = handles::get(h)?;
-    let num = nonnull(data_num)?;
-    let out = nonnull(item)?.cast::<u8>();
-    let want = count(unsafe { num.read_unaligned() })?;
-    let names = h.call(&ReadNames {
-        cmd,
-        start: start_num,
-        n: want.min(NAMES_MAX),
-    })?;
-    unsafe {
-        // SAFETY: at most `*data_num` names of 62 bytes.
-        for (i, n) in names.iter().enumerate() {
-            std::ptr::copy_nonoverlapping(n.as_ptr(), out.add(i * NAME_LEN), NAME_LEN);
-        }
-        put(num, names.len() as c_short);
-    }
-    Ok(())
-}
-
-/// Reads the names of the CNC's maintenance items from the
-/// `start_num`-th on: `*data_num` in is how many (at most 23 are asked),
-/// out how many were written. `*data_num` < 1 is EW_LENGTH without
-/// traffic. Never more names than asked are written (FANUC's library
-/// writes every name the CNC sends).
-///
-/// # Safety
-/// `data_num` must point to a writable short, `item` to `*data_num`
-/// writable 62-byte names.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpm_cncitem(
-    FlibHndl: c_ushort,
-    start_num: c_short,
-    data_num: *mut c_short,
-    item: *mut [c_char; 62],
-) -> c_short {
-    ffi_read!("cnc_rdpm_cncitem", {
-        // SAFETY: the caller's pointers, as documented.
-        unsafe { read_names(FlibHndl, RDPM_CNCITEM, start_num, data_num, item) }
-    })
-}
-
-/// Reads the machine tool builder's maintenance item names from the
-/// `start_num`-th on, as cnc_rdpm_cncitem.
-///
-/// # Safety
-/// `data_num` must point to a writable short, `item` to `*data_num`
-/// writable 62-byte names.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpm_mcnitem(
-    FlibHndl: c_ushort,
-    start_num: c_short,
-    data_num: *mut c_short,
-    item: *mut [c_char; 62],
-) -> c_short {
-    ffi_read!("cnc_rdpm_mcnitem", {
-        // SAFETY: the caller's pointers, as documented.
-        unsafe { read_names(FlibHndl, RDPM_MCNITEM, start_num, data_num, item) }
-    })
 }
 
 /// Writes `data_num` machine tool builder's item names from the
@@ -114,49 +46,6 @@ pub unsafe extern "C" fn cnc_wrpm_mcnitem(
             start: start_num,
             names,
         })
-    })
-}
-
-/// Reads maintenance items from the `start_num`-th on: `*data_num` in is
-/// how many (at most 17 are asked), out how many were written. Each item's
-/// name (62 bytes) and its four longs are written, the two bytes between
-/// them are left as they were, as FANUC's library. `*data_num` < 1 is
-/// EW_LENGTH without traffic.
-///
-/// # Safety
-/// `data_num` must point to a writable short, `item` to `*data_num`
-/// writable IODBPMAINTE.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpm_item(
-    FlibHndl: c_ushort,
-    start_num: c_short,
-    data_num: *mut c_short,
-    item: *mut IODBPMAINTE,
-) -> c_short {
-    ffi_read!("cnc_rdpm_item", {
-        let h = handles::get(FlibHndl)?;
-        let num = nonnull(data_num)?;
-        let out = nonnull(item)?.cast::<u8>();
-        let want = count(unsafe { num.read_unaligned() })?;
-        let items = h.call(&ReadItems {
-            start: start_num,
-            n: want.min(ITEMS_MAX),
-        })?;
-        unsafe {
-            for (i, it) in items.iter().enumerate() {
-                // SAFETY: item `i` < `*data_num` lies in the caller's array.
-                let o = out.add(i * ITEM_LEN);
-                std::ptr::copy_nonoverlapping(it.name.as_ptr(), o, NAME_LEN);
-                for (k, v) in [it.r#type, it.total, it.remain, it.stat]
-                    .into_iter()
-                    .enumerate()
-                {
-                    put(o.add(64 + 4 * k).cast::<i32>(), v);
-                }
-            }
-            put(num, items.len() as c_short);
-        }
-        Ok(())
     })
 }
 

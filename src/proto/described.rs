@@ -42,6 +42,7 @@ impl Call for Described<'_> {
             *w = match *f {
                 Word::Arg(i) => self.args.get(i as usize).copied().unwrap_or(0),
                 Word::Const(c) => c,
+                Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
             };
         }
         out.push(if form.class == CLASS_PMC {
@@ -82,11 +83,20 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     read_fields(&mut r, f.reply, args, &mut out)?;
     if let Some(rec) = &f.records {
         let size = rec.wire_len().max(1);
-        for _ in 0..(r.remaining() / size).min(rec.max as usize) {
+        let most = asked(f, args).unwrap_or(rec.max as usize);
+        for _ in 0..(r.remaining() / size).min(most) {
             read_fields(&mut r, rec.fields, args, &mut out)?;
         }
     }
     Ok(out)
+}
+
+/// The records asked for ([`Word::Asked`]): the count parameter's value,
+/// at most the records' `max`; None without a count parameter.
+pub fn asked(f: &Func, args: &[i32]) -> Option<usize> {
+    let n = *args.get(f.count()?)?;
+    let max = f.records.map_or(0, |r| r.max as usize);
+    Some(usize::try_from(n).unwrap_or(0).min(max))
 }
 
 fn read_fields(
@@ -178,10 +188,13 @@ pub fn args_of(f: &Func, class: CncClass, sub: &ReqSub) -> Vec<i32> {
     let mut args = vec![0; f.numbers().count()];
     if let Some(form) = form(f, class) {
         for (k, w) in form.words.iter().enumerate() {
-            if let (Word::Arg(i), Some(v)) = (w, sub.args.get(k)) {
-                if let Some(a) = args.get_mut(*i as usize) {
-                    *a = *v;
-                }
+            let i = match w {
+                Word::Arg(i) => usize::from(*i),
+                Word::Asked => f.count().unwrap_or(usize::MAX),
+                Word::Const(_) => continue,
+            };
+            if let (Some(a), Some(v)) = (args.get_mut(i), sub.args.get(k)) {
+                *a = *v;
             }
         }
     }

@@ -64,59 +64,6 @@ impl PmItem {
     }
 }
 
-/// cnc_rdpm_cncitem / cnc_rdpm_mcnitem: names `start`.. (at most `n`);
-/// the answer's whole names, at most `n`.
-#[derive(Debug, Clone, Copy)]
-pub struct ReadNames {
-    pub cmd: u16,
-    pub start: i16,
-    pub n: i16,
-}
-
-impl Call for ReadNames {
-    type Output = Vec<[u8; NAME_LEN]>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(
-            self.cmd,
-            &[i32::from(self.start), i32::from(self.n)],
-        )]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
-        Ok(sub(resp, 0)?
-            .payload
-            .chunks_exact(NAME_LEN)
-            .take(self.n.max(0) as usize)
-            .map(|c| c.try_into().expect("62 bytes"))
-            .collect())
-    }
-}
-
-/// cnc_rdpm_item: items `start`.. (at most `n`); the answer's whole items,
-/// at most `n`.
-#[derive(Debug, Clone, Copy)]
-pub struct ReadItems {
-    pub start: i16,
-    pub n: i16,
-}
-
-impl Call for ReadItems {
-    type Output = Vec<PmItem>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(
-            RDPM_ITEM,
-            &[i32::from(self.start), i32::from(self.n)],
-        )]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<PmItem>> {
-        Ok(sub(resp, 0)?
-            .payload
-            .chunks_exact(ITEM_LEN)
-            .take(self.n.max(0) as usize)
-            .map(PmItem::from_wire)
-            .collect())
-    }
-}
-
 /// cnc_wrpm_mcnitem: names from `start` on.
 #[derive(Debug, Clone)]
 pub struct WriteNames {

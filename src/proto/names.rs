@@ -125,12 +125,9 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
     (CLASS_CNC, 0x00a5, "cnc_rdaxisdata"),
     (CLASS_CNC, 0x00a7, "cnc_rdmacror2"),
     (CLASS_CNC, 0x00a8, "cnc_wrmacror2"),
-    (CLASS_CNC, 0x00bc, "cnc_rdpm_mcnitem"),
     (CLASS_CNC, 0x00bd, "cnc_wrpm_mcnitem"),
-    (CLASS_CNC, 0x00be, "cnc_rdpm_item"),
     (CLASS_CNC, 0x00bf, "cnc_wrpm_item"),
     (CLASS_CNC, 0x00cf, "cnc_exeprgname"),
-    (CLASS_CNC, 0x00d3, "cnc_rdpm_cncitem"),
     (CLASS_CNC, 0x00e1, "cnc_statinfo cnc_statinfo2"),
     (CLASS_CNC, 0x00e2, "cnc_statinfo2"),
     (CLASS_CNC, 0x00e8, "cnc_rdcncid"),
@@ -184,7 +181,7 @@ fn described_names<'a>(
                     && args.is_none_or(|a| {
                         form.words.iter().zip(a).all(|(w, v)| match w {
                             Word::Const(c) => c == v,
-                            Word::Arg(_) => true,
+                            Word::Arg(_) | Word::Asked => true,
                         })
                     })
             })

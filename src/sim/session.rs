@@ -2,8 +2,8 @@
 //! [`CncService`], traced, and misbehaving as the machine's faults say.
 
 use super::faults::Cut;
-use super::shared::Shared;
 use super::service::{CncService, dispatch};
+use super::shared::Shared;
 use super::trace::Namer;
 use crate::proto::download::Outgoing;
 use crate::proto::frame::{Frame, ftype};

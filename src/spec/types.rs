@@ -19,14 +19,19 @@ pub enum Param {
     Long(&'static str),
     /// `TYPE *NAME`: an output the reply fills. TYPE is a struct of
     /// src/types, or `char`, `short`, `unsigned short` or `long` (4 bytes written,
-    /// as FANUC's x86-64 library writes a `long *`).
+    /// as FANUC's x86-64 library writes a `long *`), or `char[N]`.
     Out(&'static str, &'static str),
+    /// `short *NAME`: the records' count, in and out. In, how many records
+    /// the caller's array holds (a number parameter, read once the pointers
+    /// are checked); out, how many were written. The records' output is
+    /// then an array of that many elements.
+    Count(&'static str),
 }
 
 impl Param {
     pub const fn name(&self) -> &'static str {
         match *self {
-            Param::Short(n) | Param::Long(n) | Param::Out(n, _) => n,
+            Param::Short(n) | Param::Long(n) | Param::Out(n, _) | Param::Count(n) => n,
         }
     }
 }
@@ -51,6 +56,9 @@ pub enum Word {
     Arg(u8),
     /// A constant.
     Const(i32),
+    /// The records asked for: the [`Param::Count`] parameter's value, at
+    /// most the records' `max`.
+    Asked,
 }
 
 /// How the request is formed on some classes.
@@ -216,9 +224,15 @@ impl Func {
     /// The number parameters, in order (the values a caller passes).
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Short(n) | Param::Long(n) => Some(n),
+            Param::Short(n) | Param::Long(n) | Param::Count(n) => Some(n),
             Param::Out(..) => None,
         })
+    }
+    /// The [`Param::Count`] parameter, if any: its index among the number
+    /// parameters.
+    pub fn count(&self) -> Option<usize> {
+        self.numbers()
+            .position(|n| self.params.contains(&Param::Count(n)))
     }
     /// The output parameters, in order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {

@@ -707,9 +707,6 @@ const WORDS: &[Word] = &[
     },
     // Periodic maintenance: item names and items (the profile's
     // [maintenance]), each write followed by its read-back.
-    w("rdpm_cncitem", &["1|0|-1|2|6|7", "4|1|0|-1|20|23|24|100"]),
-    w("rdpm_mcnitem", &["1|0|-1|2|20|21", "4|1|0|-1|20|23|24|100"]),
-    w("rdpm_item", &["1|0|-1|2|10|11", "4|1|0|-1|10|17|18|100"]),
     Word {
         after: &["rdpm_item 1 4"],
         ..wc(

@@ -50,6 +50,9 @@ pub fn generated_words() -> String {
     );
     for f in FUNCS {
         let (mut n, mut b) = (0, 0);
+        // A count goes through probe.c's SHORT_IO as `num`, the name the
+        // cases record its value out under.
+        let mut count = None;
         let args: Vec<String> = f
             .params
             .iter()
@@ -58,18 +61,27 @@ pub fn generated_words() -> String {
                     n += 1;
                     format!("N({n})")
                 }
+                Param::Count(_) => {
+                    n += 1;
+                    count = Some(n);
+                    "&num".to_string()
+                }
                 Param::Out(..) => {
                     b += 1;
                     format!("B{}", b - 1)
                 }
             })
             .collect();
-        s.push_str(&format!(
-            " \\\n    WORD({}, return F({})(H{}))",
-            f.word(),
+        let call = format!(
+            "F({})(H{})",
             f.name,
             args.iter().map(|a| format!(", {a}")).collect::<String>()
-        ));
+        );
+        let body = match count {
+            Some(i) => format!("SHORT_IO(num, {i}, {call})"),
+            None => format!("return {call}"),
+        };
+        s.push_str(&format!(" \\\n    WORD({}, {body})", f.word()));
     }
     s.push('\n');
     s

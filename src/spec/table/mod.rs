@@ -11,6 +11,7 @@ mod base;
 mod feed;
 mod history;
 mod info;
+mod maintenance;
 mod memory;
 mod offset;
 mod offset_life;
@@ -33,6 +34,7 @@ const AREAS: &[&[Func]] = &[
     memory::FUNCS,
     history::FUNCS,
     tool_life::FUNCS,
+    maintenance::FUNCS,
 ];
 
 const LEN: usize = {

@@ -1,0 +1,107 @@
+//! Periodic maintenance: the item names and the items
+//! (src/proto/NOTES.md, "Periodic maintenance").
+
+use super::super::types::Int::*;
+use super::super::types::*;
+
+/// `*data_num` below 1: EW_LENGTH before any traffic.
+const ASKED: Check = Check {
+    arg: 1,
+    lo: 1,
+    hi: i32::MAX,
+    code: 2,
+};
+
+/// A 62-byte item name.
+const NAME: Field = Field {
+    wire: U8,
+    n: 62,
+    out: 0,
+    to: Some(""),
+    c: U8,
+    arg: None,
+};
+
+/// The request words of every read: `[start, asked]`.
+const READ: &[Word] = &[Word::Arg(0), Word::Asked];
+
+/// cnc_rdpm_cncitem / cnc_rdpm_mcnitem: `(1,cmd)[start, asked]`, answered
+/// by whole 62-byte names; at most 23 asked (23 × 62 fill one answer).
+const fn names(
+    name: &'static str,
+    doc: &'static str,
+    forms: &'static [Form],
+    dims: &'static [&'static str],
+) -> Func {
+    Func {
+        name,
+        doc,
+        params: &[
+            Param::Short("start_num"),
+            Param::Count("data_num"),
+            Param::Out("item", "char[62]"),
+        ],
+        checks: &[ASKED],
+        forms,
+        reply: &[],
+        records: Some(Records {
+            fields: &[NAME],
+            out: 0,
+            to: "",
+            elem: "char[62]",
+            max: 23,
+            count: None,
+            room: None,
+        }),
+        short: Short::Error,
+        dims,
+    }
+}
+
+pub const FUNCS: &[Func] = &[
+    names(
+        "cnc_rdpm_cncitem",
+        "Reads the names of the CNC's maintenance items from the `start_num`-th on: `*data_num` in is how many (at most 23 are asked), out how many were written; below 1 it is EW_LENGTH without traffic. Never more names than asked are written (FANUC's library writes every name the CNC sends).",
+        &[every_class(0x00d3, READ)],
+        &["1|0|-1|2|6|7", "4|1|0|-1|20|23|24|100"],
+    ),
+    names(
+        "cnc_rdpm_mcnitem",
+        "Reads the machine tool builder's maintenance item names from the `start_num`-th on, as cnc_rdpm_cncitem.",
+        &[every_class(0x00bc, READ)],
+        &["1|0|-1|2|20|21", "4|1|0|-1|20|23|24|100"],
+    ),
+    Func {
+        name: "cnc_rdpm_item",
+        doc: "Reads maintenance items from the `start_num`-th on: `*data_num` in is how many (at most 17 are asked), out how many were written; below 1 it is EW_LENGTH without traffic. Each item's name and its four longs are written, the two bytes between them are left as they were, as FANUC's library.",
+        params: &[
+            Param::Short("start_num"),
+            Param::Count("data_num"),
+            Param::Out("item", "IODBPMAINTE"),
+        ],
+        checks: &[ASKED],
+        forms: &[every_class(0x00be, READ)],
+        reply: &[],
+        records: Some(Records {
+            fields: &[
+                Field {
+                    to: Some("name"),
+                    ..NAME
+                },
+                skip(U16),
+                to(I32, "type", I32),
+                to(I32, "total", I32),
+                to(I32, "remain", I32),
+                to(I32, "stat", I32),
+            ],
+            out: 0,
+            to: "",
+            elem: "IODBPMAINTE",
+            max: 17,
+            count: None,
+            room: None,
+        }),
+        short: Short::Error,
+        dims: &["1|0|-1|2|10|11", "4|1|0|-1|10|17|18|100"],
+    },
+];
