@@ -25,8 +25,8 @@ use fwlib32::sim::{Machine, Profile};
 use fwlib32::types::*;
 use fwlib32::*;
 use parking_lot::Mutex;
-use std::io::{Read, Write};
-use std::net::{TcpListener, TcpStream};
+use std::io::Write;
+use std::net::TcpStream;
 use std::os::raw::{c_long, c_short, c_ulong, c_ushort};
 use std::sync::Arc;
 
@@ -96,24 +96,11 @@ fn mutate(rng: &mut Rng, mut r: RespSub) -> Option<RespSub> {
 /// mutated answers.
 fn serve(mut s: TcpStream, machine: Arc<Mutex<Machine>>, seed: u64) {
     let mut rng = Rng(seed | 1);
-    let mut buf = Vec::new();
-    let mut chunk = [0u8; 4096];
+    let mut frames = Frames::new();
     let version = machine.lock().open_body().frame_version();
     let startup_frames = if version <= 2 { 2 } else { 1 };
     let mut data_frames = 0;
-    loop {
-        let (frame, used) = loop {
-            match Frame::decode(&buf) {
-                Ok(Some(f)) => break f,
-                Ok(None) => {}
-                Err(_) => return,
-            }
-            match s.read(&mut chunk) {
-                Ok(0) | Err(_) => return,
-                Ok(n) => buf.extend_from_slice(&chunk[..n]),
-            }
-        };
-        buf.drain(..used);
+    while let Some(frame) = frames.read(&mut s) {
         let reply = match frame.ftype {
             ftype::OPEN_REQ => Frame::new(
                 version,
@@ -151,17 +138,12 @@ fn serve(mut s: TcpStream, machine: Arc<Mutex<Machine>>, seed: u64) {
 }
 
 fn hostile_cnc(profile: Profile, seed: u64) -> u16 {
-    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
-    let port = listener.local_addr().unwrap().port();
     let machine = Arc::new(Mutex::new(Machine::new(profile)));
-    std::thread::spawn(move || {
-        for (i, c) in listener.incoming().enumerate() {
-            let Ok(c) = c else { return };
-            let m = machine.clone();
-            std::thread::spawn(move || serve(c, m, seed.wrapping_add(i as u64 * 7919)));
-        }
-    });
-    port
+    listen(move |i, c| {
+        let m = machine.clone();
+        std::thread::spawn(move || serve(c, m, seed.wrapping_add(i as u64 * 7919)));
+        true
+    })
 }
 
 use guard::*;

@@ -27,8 +27,8 @@ use fwlib32::types::*;
 use fwlib32::*;
 use std::collections::BTreeMap;
 use std::ffi::CString;
-use std::io::{Read, Write};
-use std::net::{Shutdown, TcpListener, TcpStream};
+use std::io::Write;
+use std::net::{Shutdown, TcpStream};
 use std::os::fd::AsRawFd;
 use std::os::raw::{c_long, c_short, c_ushort};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -230,21 +230,8 @@ impl Cnc {
 
     fn serve(self: Arc<Self>, mut s: TcpStream) {
         let _ = s.set_nodelay(true);
-        let mut buf = Vec::new();
-        let mut chunk = [0u8; 4096];
-        loop {
-            let (frame, used) = loop {
-                match Frame::decode(&buf) {
-                    Ok(Some(f)) => break f,
-                    Ok(None) => {}
-                    Err(_) => return,
-                }
-                match s.read(&mut chunk) {
-                    Ok(0) | Err(_) => return,
-                    Ok(n) => buf.extend_from_slice(&chunk[..n]),
-                }
-            };
-            buf.drain(..used);
+        let mut frames = Frames::new();
+        while let Some(frame) = frames.read(&mut s) {
             let mut m = self.machine.lock().unwrap();
             let (answer, phase) = match frame.ftype {
                 ftype::OPEN_REQ => {
@@ -299,8 +286,6 @@ struct Server {
 
 impl Server {
     fn start(fault: Fault, phase: Phase) -> Server {
-        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
-        let port = listener.local_addr().unwrap().port();
         let machine = Machine::new(Profile::default());
         let version = machine.open_body().frame_version();
         let cnc = Arc::new(Cnc {
@@ -315,20 +300,18 @@ impl Server {
             stop: AtomicBool::new(false),
         });
         let c = cnc.clone();
-        std::thread::spawn(move || {
-            for s in listener.incoming() {
-                if c.stop.load(Ordering::SeqCst) {
-                    return;
-                }
-                let Ok(s) = s else { return };
-                if c.closed.load(Ordering::SeqCst) {
-                    // Refused: a reset at once, as a closed port answers.
-                    reset(s);
-                    continue;
-                }
-                let c = c.clone();
-                std::thread::spawn(move || c.serve(s));
+        let port = listen(move |_, s| {
+            if c.stop.load(Ordering::SeqCst) {
+                return false;
             }
+            if c.closed.load(Ordering::SeqCst) {
+                // Refused: a reset at once, as a closed port answers.
+                reset(s);
+                return true;
+            }
+            let c = c.clone();
+            std::thread::spawn(move || c.serve(s));
+            true
         });
         Server { port, cnc }
     }

@@ -271,6 +271,9 @@ impl Default for Pmc {
     }
 }
 
+/// `[pmc]` (unit 1, and how many units) and each `[pmc.unit.N]`: one
+/// struct, as `#[serde(flatten)]` cannot be combined with
+/// `deny_unknown_fields`; a unit's `units` and `unit` are refused by hand.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct PmcToml {
@@ -278,30 +281,17 @@ struct PmcToml {
     units: Option<usize>,
     #[serde(default)]
     title: Vec<String>,
-    /// The ladder's message texts by A bit (unit 1).
+    /// The ladder's message texts by A bit.
     #[serde(default)]
     messages: Vec<String>,
-    /// Timer types from timer 1 on (unit 1); the rest 0.
+    /// Timer types from timer 1 on; the rest 0.
     #[serde(default)]
     timer_types: Vec<i16>,
     #[serde(default)]
     area: BTreeMap<String, AreaToml>,
-    /// Units 2..: `[pmc.unit.2]` ...
-    #[serde(default)]
-    unit: BTreeMap<String, UnitToml>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct UnitToml {
-    #[serde(default)]
-    title: Vec<String>,
-    #[serde(default)]
-    messages: Vec<String>,
-    #[serde(default)]
-    timer_types: Vec<i16>,
-    #[serde(default)]
-    area: BTreeMap<String, AreaToml>,
+    /// Units 2..: `[pmc.unit.2]` ... (an Option: a unit's empty `unit`
+    /// table is refused too).
+    unit: Option<BTreeMap<String, PmcToml>>,
 }
 
 /// A unit's title, messages and timer types from the profile.
@@ -355,10 +345,13 @@ impl TryFrom<PmcToml> for Pmc {
             Some(n) => return Err(format!("[pmc] units = {n}: 1 to 8")),
             None => {}
         }
-        for (k, u) in t.unit {
+        for (k, u) in t.unit.unwrap_or_default() {
             let n: usize = (k.trim().parse().ok())
                 .filter(|n| (2..=pmc.info.len()).contains(n))
                 .ok_or_else(|| format!("[pmc.unit.{k}]: units 2 to {}", pmc.info.len()))?;
+            if u.units.is_some() || u.unit.is_some() {
+                return Err(format!("[pmc.unit.{k}]: units and unit belong in [pmc]"));
+            }
             pmc.info[n - 1] = unit_info(u.title, u.messages, u.timer_types)?;
             apply_areas(&mut pmc.extra[n - 2], u.area)?;
         }
