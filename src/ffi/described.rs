@@ -59,15 +59,21 @@ pub(crate) unsafe fn exec(
     let mut a = [0i32; MAX_NUMBERS];
     a[..args.len()].copy_from_slice(args);
     let args = &mut a[..args.len()];
-    let counted = f.count().map(|i| (i, count));
-    let nonnull_outs = || outs.iter().map(|p| nonnull(*p)).collect::<Result<Vec<_>>>();
-    let mut early = None;
-    if let Some((i, count)) = counted {
-        let c = nonnull(count)?;
-        early = Some((c, nonnull_outs()?));
-        // SAFETY: the caller's count, checked above.
-        args[i] = i32::from(unsafe { c.read_unaligned() });
-    }
+    let outs_set = || match outs.iter().any(|p| p.is_null()) {
+        true => Err(Error::null()),
+        false => Ok(()),
+    };
+    // A count is read from its pointer: the pointers are checked first.
+    let count = match f.count() {
+        Some(i) => {
+            let c = nonnull(count)?;
+            outs_set()?;
+            // SAFETY: the caller's count, checked above.
+            args[i] = i32::from(unsafe { c.read_unaligned() });
+            Some(c)
+        }
+        None => None,
+    };
     for c in f.checks {
         let v = match c.arg {
             crate::spec::OPTION => i32::from(h.pair.info.option & 1),
@@ -77,10 +83,7 @@ pub(crate) unsafe fn exec(
             return Err(Error::local(c.code, "argument out of range"));
         }
     }
-    let (count, outs) = match early {
-        Some((c, outs)) => (Some(c), outs),
-        None => (None, nonnull_outs()?),
-    };
+    outs_set()?;
     let Some(form) = form(f, h.ctx().class) else {
         return Err(Error::local(EW_FUNC, "not on this CNC class"));
     };
@@ -102,7 +105,7 @@ pub(crate) unsafe fn exec(
     }
     let mut v = values.into_iter();
     // SAFETY: the caller's contract (offsets and elements in the outputs).
-    unsafe { write_fields(f.reply, &outs, |k| offsets[k], &mut v) };
+    unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
     if let Some(r) = &f.records {
         let per = r.values();
         let mut i = 0;
@@ -110,7 +113,7 @@ pub(crate) unsafe fn exec(
             let at = |k: usize| rec.base + i * rec.stride + rec.offsets[k];
             // SAFETY: as above; decode returned at most `max` records (and
             // with a count, at most the `*count` the caller's array holds).
-            unsafe { write_fields(r.fields, &outs, at, &mut v) };
+            unsafe { write_fields(r.fields, outs, at, &mut v) };
             i += 1;
         }
         if let Some(c) = rec.count {
