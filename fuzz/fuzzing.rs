@@ -114,14 +114,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pa::rdalmhisno(), cx, r),
     },
     Decoder {
-        names: &["cnc_rdaxisname"],
-        run: |cx, _, r| go(ps::rdaxisname(), cx, r),
-    },
-    Decoder {
-        names: &["cnc_rdspdlname"],
-        run: |cx, _, r| go(ps::rdspdlname(), cx, r),
-    },
-    Decoder {
         names: &["cnc_rddynamic", "cnc_rddynamic2"],
         run: |cx, a, r| go(Dynamic { axis: a[0] as i16 }, cx, r),
     },

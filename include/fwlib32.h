@@ -2655,12 +2655,13 @@ short cnc_rdaxisdata(unsigned short FlibHndl,
                      struct ODBAXDT *axdata);
 
 /*
- Reads the names of the controlled axes: `*data_num` in = room in
- `axisname`, out = names written (at most the CNC's axis count).
+ Reads the names of the controlled axes: `*data_num` in is the room in
+ `axisname`, out the names written (at most the CNC's axis count); below
+ 1 it is EW_LENGTH without traffic.
 
  # Safety
- `data_num` must point to a writable short, `axisname` to `*data_num`
- writable ODBAXISNAME.
+ `data_num` must be NULL or point to a writable short.
+ `axisname` must be NULL or point to `*data_num` writable ODBAXISNAME.
  */
 short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAME *axisname);
 
@@ -3471,12 +3472,13 @@ short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 short cnc_rdspdlalm(unsigned short FlibHndl, char *data);
 
 /*
- Reads the names of the spindles: `*data_num` in = room in `spdlname`,
- out = names written.
+ Reads the names of the spindles: `*data_num` in is the room in
+ `spdlname`, out the names written; below 1 it is EW_LENGTH without
+ traffic.
 
  # Safety
- `data_num` must point to a writable short, `spdlname` to `*data_num`
- writable ODBSPDLNAME.
+ `data_num` must be NULL or point to a writable short.
+ `spdlname` must be NULL or point to `*data_num` writable ODBSPDLNAME.
  */
 short cnc_rdspdlname(unsigned short FlibHndl, short *data_num, struct ODBSPDLNAME *spdlname);
 

@@ -1291,8 +1291,6 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
         _ => pos::DISTANCE,
     };
     Some(match w {
-        "rdaxisname" => rdaxisname().request(&cx),
-        "rdspdlname" => rdspdlname().request(&cx),
         "rddynamic2" | "rddynamic" => Dynamic { axis: n(0) as i16 }.request(&cx),
         "acts2" => SpindleData {
             code: spdl::SPEED_ACT,

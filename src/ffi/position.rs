@@ -11,12 +11,11 @@ use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NOOPT, EW_NUMBER};
 use crate::proto::open::CncClass;
 use crate::proto::position::{
     AxisData, AxisDataCall, AxisValue, Dynamic, DynamicData, Position16, Speed, SpeedValue,
-    SpindleData, getfigure, low16, pos, position, rdaxisname, rdspdlname, spdl,
+    SpindleData, getfigure, low16, pos, position, spdl,
 };
 use crate::types::{
-    LOADELM, MAX_AXIS, MAX_SPINDLE, ODBACT2, ODBAXDT, ODBAXIS, ODBAXISNAME, ODBDY, ODBDY_FAXIS,
-    ODBDY_OAXIS, ODBDY2, ODBPOS, ODBSPDLNAME, ODBSPEED, ODBSPLOAD, ODBSPN, ODBSVLOAD, POSELM,
-    SPEEDELM,
+    LOADELM, MAX_AXIS, MAX_SPINDLE, ODBACT2, ODBAXDT, ODBAXIS, ODBDY, ODBDY_FAXIS, ODBDY_OAXIS,
+    ODBDY2, ODBPOS, ODBSPEED, ODBSPLOAD, ODBSPN, ODBSVLOAD, POSELM, SPEEDELM,
 };
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_char, c_short, c_ushort};
@@ -37,79 +36,6 @@ fn need_spindle_info(h: &Handle) -> Result<()> {
 /// A `short *` in/out count, read before any traffic.
 fn read_count(p: *mut c_short) -> Result<c_short> {
     Ok(unsafe { nonnull(p)?.read_unaligned() })
-}
-
-// ---------------------------------------------------------------------------
-// Names
-// ---------------------------------------------------------------------------
-
-/// Reads the names of the controlled axes: `*data_num` in = room in
-/// `axisname`, out = names written (at most the CNC's axis count).
-///
-/// # Safety
-/// `data_num` must point to a writable short, `axisname` to `*data_num`
-/// writable ODBAXISNAME.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdaxisname(
-    FlibHndl: c_ushort,
-    data_num: *mut c_short,
-    axisname: *mut ODBAXISNAME,
-) -> c_short {
-    ffi_read!("cnc_rdaxisname", {
-        let h = handles::get(FlibHndl)?;
-        let room = read_count(data_num)?;
-        let out = nonnull(axisname)?;
-        if room <= 0 {
-            return Err(Error::length());
-        }
-        let names = h.call(&rdaxisname())?;
-        let n = names.len().min(room as usize);
-        for (i, e) in names.iter().take(n).enumerate() {
-            let v = ODBAXISNAME {
-                name: e.bytes[0] as c_char,
-                suff: e.bytes[1] as c_char,
-            };
-            unsafe { put(out.add(i), v) };
-        }
-        unsafe { put(data_num, n as c_short) };
-        Ok(())
-    })
-}
-
-/// Reads the names of the spindles: `*data_num` in = room in `spdlname`,
-/// out = names written.
-///
-/// # Safety
-/// `data_num` must point to a writable short, `spdlname` to `*data_num`
-/// writable ODBSPDLNAME.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdspdlname(
-    FlibHndl: c_ushort,
-    data_num: *mut c_short,
-    spdlname: *mut ODBSPDLNAME,
-) -> c_short {
-    ffi_read!("cnc_rdspdlname", {
-        let h = handles::get(FlibHndl)?;
-        let room = read_count(data_num)?;
-        let out = nonnull(spdlname)?;
-        if room <= 0 {
-            return Err(Error::length());
-        }
-        let names = h.call(&rdspdlname())?;
-        let n = names.len().min(room as usize);
-        for (i, e) in names.iter().take(n).enumerate() {
-            let [name, suff1, suff2, suff3] = e.bytes.map(|b| b as c_char);
-            let v = ODBSPDLNAME {
-                name,
-                suff1,
-                suff2,
-                suff3,
-            };
-            unsafe { put(out.add(i), v) };
-        }
-        unsafe { put(data_num, n as c_short) };
-        Ok(())
-    })
 }
 
 // ---------------------------------------------------------------------------

@@ -5,7 +5,8 @@ use super::cnc::Cnc;
 use super::decimal::Decimal;
 use super::error::{Error, Result};
 use super::part::{Part, via};
-use crate::proto::position::{AxisData, AxisDataCall, AxisValue, pos, rdaxisname};
+use crate::proto::described::Described;
+use crate::proto::position::{AxisData, AxisDataCall, AxisValue, pos};
 use std::fmt;
 
 /// The unit of an axis's positions.
@@ -134,10 +135,23 @@ impl Cnc {
 }
 
 fn names_part() -> impl Part<Out = Vec<String>> + Send + 'static {
-    let n = crate::types::MAX_AXIS;
-    via("cnc_rdaxisname", rdaxisname(), 4 * n, |v| {
-        Ok(v.iter().map(|e| name(&e.bytes)).collect())
-    })
+    const CALL: &str = "cnc_rdaxisname";
+    const MAX_AXIS: i32 = crate::types::MAX_AXIS as i32;
+    let f = crate::spec::find(CALL).expect("a described function");
+    // The reply's integers: 4 bytes a name (name, suffix, two more).
+    via(
+        CALL,
+        Described {
+            f,
+            args: &[MAX_AXIS],
+        },
+        4 * MAX_AXIS as usize,
+        |v| {
+            Ok(v.chunks_exact(4)
+                .map(|e| name(&e.iter().map(|b| *b as u8).collect::<Vec<_>>()))
+                .collect())
+        },
+    )
 }
 
 impl Batch<'_> {

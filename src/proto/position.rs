@@ -246,33 +246,6 @@ pub fn expect_subs(resp: &[RespSub], n: usize) -> Result<()> {
     Ok(())
 }
 
-/// cnc_rdaxisname / cnc_rdspdlname: one subpacket of 4-byte name entries
-/// (whole entries only).
-#[derive(Debug, Clone, Copy)]
-pub struct Names {
-    pub cmd: u16,
-}
-
-impl Call for Names {
-    type Output = Vec<Name>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(self.cmd, &[])]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Name>> {
-        whole(&sub(resp, 0)?.payload, 4)
-    }
-}
-
-/// cnc_rdaxisname: 4-byte entries.
-pub fn rdaxisname() -> Names {
-    Names { cmd: RDAXISNAME }
-}
-
-/// cnc_rdspdlname: 4-byte entries.
-pub fn rdspdlname() -> Names {
-    Names { cmd: RDSPDLNAME }
-}
-
 /// The whole value records of subpacket `i`: a ragged tail (fewer than 8
 /// bytes) is no record, as FANUC's library counts them (payload / 8).
 pub fn whole_records(resp: &[RespSub], i: usize) -> Result<Vec<Value>> {

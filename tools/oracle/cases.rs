@@ -104,8 +104,6 @@ const WORDS: &[Word] = &[
         ..w("resetconnect", &[])
     },
     // Position.
-    w("rdaxisname", &["4|1|0|-1|2|3|32|33"]),
-    w("rdspdlname", &["4|1|0|-1|2|8|9"]),
     wc(
         "rddynamic2",
         &["1|-1|0|2|3|4|33|-2", "44|8|20|28|43|0|-1|100|540"],

@@ -310,8 +310,6 @@ static char *text(int i, long *n) {
     WORD(statinfo2, return F(cnc_statinfo2)(H, B0))                                               \
     WORD(rdcncid, return F(cnc_rdcncid)(H, B0))                                                   \
     /* position */                                                                                \
-    WORD(rdaxisname, SHORT_IO(num, 1, F(cnc_rdaxisname)(H, &num, B0)))                            \
-    WORD(rdspdlname, SHORT_IO(num, 1, F(cnc_rdspdlname)(H, &num, B0)))                            \
     WORD(rddynamic2, return F(cnc_rddynamic2)(H, N(1), N(2), B0))                                 \
     WORD(rddynamic, return F(cnc_rddynamic)(H, N(1), N(2), B0))                                   \
     WORD(acts2, return F(cnc_acts2)(H, N(1), B0))                                                 \

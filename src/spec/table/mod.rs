@@ -13,6 +13,7 @@ mod history;
 mod info;
 mod maintenance;
 mod memory;
+mod names;
 mod offset;
 mod offset_life;
 mod operation;
@@ -35,6 +36,7 @@ const AREAS: &[&[Func]] = &[
     history::FUNCS,
     tool_life::FUNCS,
     maintenance::FUNCS,
+    names::FUNCS,
 ];
 
 const LEN: usize = {

@@ -1,0 +1,71 @@
+//! The names of the axes and spindles.
+
+use super::super::types::Int::*;
+use super::super::types::*;
+
+/// `*data_num` below 1: EW_LENGTH before any traffic.
+const ASKED: Check = Check {
+    arg: 0,
+    lo: 1,
+    hi: i32::MAX,
+    code: 2,
+};
+
+/// A name character: the byte the CNC sends, as a `char`.
+const fn ch(to: &'static str) -> Field {
+    Field {
+        wire: U8,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c: I8,
+        arg: None,
+    }
+}
+
+/// Whole 4-byte entries, as many as `*data_num` holds (no other cap).
+const fn entries(fields: &'static [Field], elem: &'static str) -> Option<Records> {
+    Some(Records {
+        fields,
+        out: 0,
+        to: "",
+        elem,
+        max: u16::MAX,
+        count: None,
+        room: None,
+    })
+}
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_rdaxisname",
+        doc: "Reads the names of the controlled axes: `*data_num` in is the room in `axisname`, out the names written (at most the CNC's axis count); below 1 it is EW_LENGTH without traffic.",
+        params: &[
+            Param::Count("data_num"),
+            Param::Out("axisname", "ODBAXISNAME"),
+        ],
+        checks: &[ASKED],
+        forms: &[every_class(0x0089, &[])],
+        reply: &[],
+        records: entries(&[ch("name"), ch("suff"), skip(U8), skip(U8)], "ODBAXISNAME"),
+        short: Short::Error,
+        dims: &["4|1|0|-1|2|3|32|33"],
+    },
+    Func {
+        name: "cnc_rdspdlname",
+        doc: "Reads the names of the spindles: `*data_num` in is the room in `spdlname`, out the names written; below 1 it is EW_LENGTH without traffic.",
+        params: &[
+            Param::Count("data_num"),
+            Param::Out("spdlname", "ODBSPDLNAME"),
+        ],
+        checks: &[ASKED],
+        forms: &[every_class(0x008a, &[])],
+        reply: &[],
+        records: entries(
+            &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
+            "ODBSPDLNAME",
+        ),
+        short: Short::Error,
+        dims: &["4|1|0|-1|2|8|9"],
+    },
+];
