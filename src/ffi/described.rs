@@ -34,9 +34,9 @@ pub(crate) struct RecordsAt<'a> {
 /// Runs described function `f`: the handle, its checks and NULL outputs
 /// before any traffic, the request for the CNC's class, then the reply's
 /// integers into the caller's outputs (only when the whole reply decoded).
-/// A function with a [`Param::Count`](crate::spec::Param::Count) (`count`
-/// not NULL) checks its pointers first, since the count is read from one,
-/// and gets the number of records written back there.
+/// A function with a [`Param::Count`](crate::spec::Param::Count) checks
+/// its pointers first, since the count is read from one, and gets the
+/// number of records written back there.
 ///
 /// # Safety
 /// Each `outs[i]` is NULL or points to writable memory of output i's C
@@ -44,8 +44,8 @@ pub(crate) struct RecordsAt<'a> {
 /// output, and its `n` elements fit there; `rec` places `f.records`' at
 /// most `max` records inside their output (build.rs asserts both at
 /// compile time where the output is a struct), or, with a count, at most
-/// `*count` records in the caller's array; `count` is NULL for a function
-/// without one, else the caller's `short *`.
+/// `*count` records in the caller's array; `count` is the caller's
+/// `short *` (NULL: EW_DATA), or NULL for a function without one.
 pub(crate) unsafe fn exec(
     f: &'static Func,
     h: c_ushort,
@@ -59,9 +59,11 @@ pub(crate) unsafe fn exec(
     let mut a = [0i32; MAX_NUMBERS];
     a[..args.len()].copy_from_slice(args);
     let args = &mut a[..args.len()];
-    let outs_set = || match outs.iter().any(|p| p.is_null()) {
-        true => Err(Error::null()),
-        false => Ok(()),
+    let outs_set = || {
+        if outs.iter().any(|p| p.is_null()) {
+            return Err(Error::null());
+        }
+        Ok(())
     };
     // A count is read from its pointer: the pointers are checked first.
     let count = match f.count() {
