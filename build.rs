@@ -443,6 +443,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Long(n) => format!("{}: c_long", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
+            Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
         let count = f.params.iter().find_map(|p| match *p {
@@ -457,6 +458,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 _ => format!("{} as i32", ident(n)),
             })
             .collect();
+        assert!(
+            count.is_none() || f.records.is_some(),
+            "src/spec/table/: {}: a Param::Count counts records",
+            f.name
+        );
         assert!(
             numbers.len() <= 8,
             "src/spec/table/: {}: more number parameters than exec takes (MAX_NUMBERS)",
@@ -494,7 +500,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
-            None => "RecordsAt { base: 0, stride: 0, offsets: &[], count: None }".to_string(),
+            None => "RecordsAt { base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut() }".to_string(),
             Some(r) => {
                 let (_, ty) = outs[r.out as usize];
                 let base = if r.to.is_empty() {
@@ -521,15 +527,45 @@ fn described_exports(funcs: &[types::Func]) -> String {
                         r.max, f.name
                     ));
                 }
-                let count = match r.count {
+                let member = match r.count {
                     Some(m) => format!("Some(offset_of!({}, {}))", rust_type(ty), ident(m)),
                     None => "None".to_string(),
                 };
+                let asked = count.as_deref().unwrap_or("std::ptr::null_mut()");
                 format!(
-                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {count} }}",
+                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {member}, asked: {asked} }}",
                     offs.join(", ")
                 )
             }
+        };
+        // A write's payload: where each field's member is in one element.
+        let pay = match (&f.payload, f.input()) {
+            (Some(p), Some((n, _))) => {
+                let stride = match c_size(p.elem) {
+                    Some(n) => n.to_string(),
+                    None => format!("size_of::<{}>()", p.elem),
+                };
+                let offs: Vec<String> = p
+                    .fields
+                    .iter()
+                    .map(|x| match x.to {
+                        Some(m) if !m.is_empty() => format!("offset_of!({}, {})", p.elem, ident(m)),
+                        _ => "0".to_string(),
+                    })
+                    .collect();
+                format!(
+                    "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}] }}",
+                    ident(n),
+                    offs.join(", ")
+                )
+            }
+            (None, None) => {
+                "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[] }".to_string()
+            }
+            _ => panic!(
+                "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
+                f.name
+            ),
         };
         let safety: Vec<String> =
             match &count {
@@ -545,6 +581,15 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 }))
                 .collect(),
             };
+        let mut safety = safety;
+        if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
+            let count = f.numbers().nth(usize::from(p.count)).unwrap_or("?");
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to `{count}` readable {t} (at most {} are read).",
+                p.max
+            ));
+        }
+        let pointers = !outs.is_empty() || f.input().is_some();
         s.push_str(&format!(
             r#"
 {doc}{safety}
@@ -560,7 +605,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
                 &[{out_ptrs}],
                 &[{offsets}],
                 {records},
-                {count},
+                {pay},
             )
         }}
     }})
@@ -568,12 +613,12 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
 {checks}"#,
             doc = wrap_doc(f.doc),
             // Pointer parameters make the function unsafe to call.
-            safety = if outs.is_empty() {
-                String::new()
-            } else {
+            safety = if pointers {
                 format!("\n///\n/// # Safety\n{}", safety.join("\n"))
+            } else {
+                String::new()
             },
-            unsafe_ = if outs.is_empty() { "" } else { "unsafe " },
+            unsafe_ = if pointers { "unsafe " } else { "" },
             // A read may join a batch (fwlib_batch_begin); a command not.
             boundary = if outs.is_empty() {
                 "ffi_boundary"
@@ -587,7 +632,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             out_ptrs = out_ptrs.join(", "),
             offsets = offsets.join(", "),
             records = records,
-            count = count.as_deref().unwrap_or("std::ptr::null_mut()"),
+            pay = pay,
         ));
     }
     s

@@ -20,7 +20,6 @@
 use fwlib32::proto::call::{self, Call, Ctx};
 use fwlib32::proto::described::{Described, for_request};
 use fwlib32::proto::frame::{Frame, FrameHeader, HEADER_LEN, ftype};
-use fwlib32::proto::maintenance as mt;
 use fwlib32::proto::open::{CncClass, OpenBody};
 use fwlib32::proto::packet::ReqSub;
 use fwlib32::proto::packet::{RespSub, decode_request, decode_response_into, encode_response};
@@ -230,42 +229,6 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| {
             let (s, e) = (a[0] as u16, a[1] as u16);
             go(pmc::TimerTypes { s, e }, cx, r)
-        },
-    },
-    Decoder {
-        names: &["cnc_wrpm_mcnitem"],
-        run: |cx, a, r| {
-            let names = vec![[a[2] as u8; mt::NAME_LEN]; (a[1] & 7) as usize];
-            go(
-                mt::WriteNames {
-                    start: a[0] as i16,
-                    names,
-                },
-                cx,
-                r,
-            )
-        },
-    },
-    Decoder {
-        names: &["cnc_wrpm_item"],
-        run: |cx, a, r| {
-            let item = mt::PmItem {
-                name: [a[3] as u8; mt::NAME_LEN],
-                r#type: a[2],
-                total: a[3],
-                remain: a[1],
-                stat: 0,
-            };
-            let items = vec![item; (a[1] & 7) as usize];
-            go(
-                mt::WriteItems {
-                    reset: a[0] as i16,
-                    start: a[1] as i16,
-                    items,
-                },
-                cx,
-                r,
-            )
         },
     },
     Decoder {
@@ -760,7 +723,7 @@ pub fn reply(data: &[u8]) {
             Some(d) => (d.run)(&cx, &a, &resp),
             None => {
                 let f = &fwlib32::spec::FUNCS[which - CONNECT - HAND.len()];
-                go(Described { f, args: &a }, &cx, &resp);
+                go(Described::new(f, &a), &cx, &resp);
             }
         }
     }

@@ -4140,11 +4140,11 @@ short cnc_wrpdf_line(unsigned short FlibHndl,
 /*
  Writes `data_num` maintenance items from the `start_num`-th on (at most
  17 are sent): name, type, total and remain (stat is sent, the CNC keeps
- its own). `reset` 1 starts each item's life anew. `data_num` < 1 is
- EW_LENGTH without traffic.
+ its own; the two bytes after the name go as zeros). `reset` 1 starts
+ each item's life anew. `data_num` < 1 is EW_LENGTH without traffic.
 
  # Safety
- `item` must point to `data_num` readable IODBPMAINTE.
+ `item` must be NULL or point to `data_num` readable IODBPMAINTE (at most 17 are read).
  */
 short cnc_wrpm_item(unsigned short FlibHndl,
                     short reset,
@@ -4158,7 +4158,7 @@ short cnc_wrpm_item(unsigned short FlibHndl,
  without traffic.
 
  # Safety
- `item` must point to `data_num` readable 62-byte names.
+ `item` must be NULL or point to `data_num` readable char[62] (at most 22 are read).
  */
 short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num, char (*item)[62]);
 

@@ -24,8 +24,8 @@ pub mod types;
 #[allow(unused_imports)]
 pub use ffi::{
     absent::*, alarm::*, described::*, download::*, ext::*, folder::*, handle::*, history::*,
-    macros::*, maintenance::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*,
-    status::*, tool::*, upload::*,
+    macros::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
+    upload::*,
 };
 // Machine data (issue 11).
 pub use ffi::machine::*;

@@ -343,7 +343,7 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                 w if described(w).is_some() => {
                                     let f = described(w).unwrap();
                                     let nums = c_args(f, &args);
-                                    stamped(&Described { f, args: &nums }, &cx, path)
+                                    stamped(&Described::new(f, &nums), &cx, path)
                                 }
                                 // --- offset ---
                                 "rdtofs" | "rdzofs" | "rdalmhistry" | "rdalmhistry2" => {
@@ -1254,7 +1254,7 @@ fn c_args(f: &fwlib32::spec::Func, args: &[String]) -> Vec<i32> {
     let shorts = f.params.iter().filter_map(|p| match p {
         Param::Short(_) | Param::Count(_) => Some(true),
         Param::Long(_) => Some(false),
-        Param::Out(..) => None,
+        Param::Out(..) | Param::In(..) => None,
     });
     args.iter()
         .zip(shorts)

@@ -7,7 +7,7 @@ use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
-use crate::proto::described::{Described, form};
+use crate::proto::described::{Described, form, payload_records, payload_values};
 use crate::proto::packet::CLASS_PMC;
 use crate::spec::{Field, Func, Int};
 #[allow(unused_imports)]
@@ -29,6 +29,19 @@ pub(crate) struct RecordsAt<'a> {
     pub offsets: &'a [usize],
     /// Where the number of records goes (a `short`), if anywhere.
     pub count: Option<usize>,
+    /// The caller's in-out count (`short *`,
+    /// [`Param::Count`](crate::spec::Param::Count)); NULL for a function
+    /// without one.
+    pub asked: *mut c_short,
+}
+
+/// Where a write's payload records are read from: the caller's array (NULL
+/// for a function without payload), one element's size, and the offset of
+/// each payload field's member in the element.
+pub(crate) struct PayloadAt<'a> {
+    pub input: *const u8,
+    pub stride: usize,
+    pub offsets: &'a [usize],
 }
 
 /// Runs described function `f`: the handle, its checks and NULL outputs
@@ -36,7 +49,8 @@ pub(crate) struct RecordsAt<'a> {
 /// integers into the caller's outputs (only when the whole reply decoded).
 /// A function with a [`Param::Count`](crate::spec::Param::Count) checks
 /// its pointers first, since the count is read from one, and gets the
-/// number of records written back there.
+/// number of records written back there; so does a write, before its
+/// count is checked, then reads its payload records from `pay`.
 ///
 /// # Safety
 /// Each `outs[i]` is NULL or points to writable memory of output i's C
@@ -44,8 +58,10 @@ pub(crate) struct RecordsAt<'a> {
 /// output, and its `n` elements fit there; `rec` places `f.records`' at
 /// most `max` records inside their output (build.rs asserts both at
 /// compile time where the output is a struct), or, with a count, at most
-/// `*count` records in the caller's array; `count` is the caller's
-/// `short *` (NULL: EW_DATA), or NULL for a function without one.
+/// `*rec.asked` records in the caller's array; `rec.asked` is the caller's
+/// `short *` (NULL: EW_DATA), or NULL for a function without one;
+/// `pay.input` is NULL or holds the records its count argument says (at
+/// most the payload's `max` are read), `pay.stride` bytes each.
 pub(crate) unsafe fn exec(
     f: &'static Func,
     h: c_ushort,
@@ -53,7 +69,7 @@ pub(crate) unsafe fn exec(
     outs: &[*mut u8],
     offsets: &[usize],
     rec: RecordsAt<'_>,
-    count: *mut c_short,
+    pay: PayloadAt<'_>,
 ) -> Result<()> {
     let h = handles::get(h)?;
     let mut a = [0i32; MAX_NUMBERS];
@@ -68,7 +84,7 @@ pub(crate) unsafe fn exec(
     // A count is read from its pointer: the pointers are checked first.
     let count = match f.count() {
         Some(i) => {
-            let c = nonnull(count)?;
+            let c = nonnull(rec.asked)?;
             outs_set()?;
             // SAFETY: the caller's count, checked above.
             args[i] = i32::from(unsafe { c.read_unaligned() });
@@ -76,6 +92,10 @@ pub(crate) unsafe fn exec(
         }
         None => None,
     };
+    if f.payload.is_some() {
+        nonnull(pay.input.cast_mut())?;
+        outs_set()?;
+    }
     for c in f.checks {
         let v = match c.arg {
             crate::spec::OPTION => i32::from(h.pair.info.option & 1),
@@ -89,7 +109,23 @@ pub(crate) unsafe fn exec(
     let Some(form) = form(f, h.ctx().class) else {
         return Err(Error::local(EW_FUNC, "not on this CNC class"));
     };
-    let call = Described { f, args };
+    let n = payload_records(f, args);
+    let payload = match n {
+        0 => Vec::new(),
+        // SAFETY: the caller's array holds at least `n` records (contract).
+        n => payload_values(
+            f,
+            unsafe { std::slice::from_raw_parts(pay.input, n * pay.stride) },
+            pay.stride,
+            pay.offsets,
+            n,
+        ),
+    };
+    let call = Described {
+        f,
+        args,
+        payload: &payload,
+    };
     let values = if form.class == CLASS_PMC {
         h.call_pmc(&call)?
     } else {

@@ -12,7 +12,6 @@ pub mod handle;
 pub mod history;
 pub mod machine;
 pub mod macros;
-pub mod maintenance;
 pub mod memory;
 pub mod offset;
 pub mod param;

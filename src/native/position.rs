@@ -141,10 +141,7 @@ fn names_part() -> impl Part<Out = Vec<String>> + Send + 'static {
     // The reply's integers: 4 bytes a name (name, suffix, two more).
     via(
         CALL,
-        Described {
-            f,
-            args: &[MAX_AXIS],
-        },
+        Described::new(f, &[MAX_AXIS]),
         4 * MAX_AXIS as usize,
         |v| {
             Ok(v.chunks_exact(4)

@@ -172,7 +172,7 @@ impl Cnc {
         let f = crate::spec::find("cnc_delete").expect("a described function");
         let args = [i32::from(number as i16)];
         self.handle()
-            .call(&Described { f, args: &args })
+            .call(&Described::new(f, &args))
             .map(|_| ())
             .map_err(|e| Error::of("cnc_delete", e))
     }

@@ -222,7 +222,7 @@ pub struct Execution {
 /// One described function (src/spec/table/) without arguments: its reply's integers.
 fn described(name: &'static str) -> impl Part<Out = Vec<i64>> + Send + 'static {
     let f = crate::spec::find(name).expect("a described function");
-    via(name, Described { f, args: &[] }, f.reply_len(), Ok)
+    via(name, Described::new(f, &[]), f.reply_len(), Ok)
 }
 
 /// The four parts of [`Execution`] as one: their subpackets in one frame.

@@ -18,10 +18,24 @@ pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
     )
 }
 
-/// One call of a described function with the caller's number arguments.
+/// One call of a described function with the caller's number arguments
+/// (and, for a write, its payload records' integers, [`Func::payload`]'s
+/// fields in order, record after record).
 pub struct Described<'a> {
     pub f: &'static Func,
     pub args: &'a [i32],
+    pub payload: &'a [i64],
+}
+
+impl<'a> Described<'a> {
+    /// A call without payload.
+    pub const fn new(f: &'static Func, args: &'a [i32]) -> Self {
+        Described {
+            f,
+            args,
+            payload: &[],
+        }
+    }
 }
 
 impl Call for Described<'_> {
@@ -45,10 +59,21 @@ impl Call for Described<'_> {
                 Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
             };
         }
-        out.push(if form.class == CLASS_PMC {
+        let sub = if form.class == CLASS_PMC {
             ReqSub::pmc(form.cmd, &words)
         } else {
             ReqSub::cnc(form.cmd, &words)
+        };
+        out.push(match &self.f.payload {
+            Some(p) => {
+                let mut w = Writer::new();
+                let per: usize = p.fields.iter().map(|x| usize::from(x.n)).sum();
+                for rec in self.payload.chunks(per.max(1)) {
+                    write_fields(&mut w, p.fields, &mut rec.iter());
+                }
+                sub.with_payload(w.into_vec())
+            }
+            None => sub,
         });
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
@@ -97,6 +122,49 @@ pub fn asked(f: &Func, args: &[i32]) -> Option<usize> {
     let n = *args.get(f.count()?)?;
     let max = f.records.map_or(0, |r| r.max as usize);
     Some(usize::try_from(n).unwrap_or(0).min(max))
+}
+
+/// The integers of a write's payload records (see [`Described`]): `n`
+/// records of `bytes` (the caller's array, native byte order), each
+/// `stride` bytes, field k's member at `offsets[k]` in it.
+pub fn payload_values(
+    f: &Func,
+    bytes: &[u8],
+    stride: usize,
+    offsets: &[usize],
+    n: usize,
+) -> Vec<i64> {
+    let Some(p) = &f.payload else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for i in 0..n {
+        for (field, off) in p.fields.iter().zip(offsets) {
+            for e in 0..usize::from(field.n) {
+                let at = i * stride + off + e * field.c.size();
+                let b = |k: usize| bytes.get(at + k).copied().unwrap_or(0);
+                out.push(match (field.to, field.c) {
+                    (None, _) => 0,
+                    (_, Int::I8) => i64::from(b(0) as i8),
+                    (_, Int::U8) => i64::from(b(0)),
+                    (_, Int::I16) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
+                    (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
+                    (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
+                    (_, Int::U32) => i64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
+                });
+            }
+        }
+    }
+    out
+}
+
+/// How many payload records a write sends: its count argument, at most
+/// the payload's `max` (0 without a payload).
+pub fn payload_records(f: &Func, args: &[i32]) -> usize {
+    f.payload.map_or(0, |p| {
+        let n = args.get(usize::from(p.count)).copied().unwrap_or(0);
+        usize::try_from(n).unwrap_or(0).min(usize::from(p.max))
+    })
 }
 
 fn read_fields(

@@ -1,9 +1,7 @@
 //! Periodic maintenance (class 1): item names and items, read and written
-//! as fixed records (src/proto/NOTES.md, "Periodic maintenance").
-
-use super::call::{Call, Ctx, sub};
-use super::packet::{ReqSub, RespSub};
-use crate::error::Result;
+//! as fixed records (src/proto/NOTES.md, "Periodic maintenance"). The
+//! functions are described as data (src/spec/table/maintenance.rs); this is
+//! the wire layout the simulator answers in.
 
 /// cnc_rdpm_cncitem: (1,0xd3)[start, n]; 62-byte names.
 pub const RDPM_CNCITEM: u16 = 0x00d3;
@@ -25,10 +23,6 @@ pub const ITEM_LEN: usize = 80;
 pub const NAMES_MAX: i16 = 23;
 /// Most items FANUC's library asks for at once (17 × 80).
 pub const ITEMS_MAX: i16 = 17;
-/// Most names FANUC's library sends in one write (1364 bytes).
-pub const WRITE_NAMES_MAX: i16 = 22;
-/// Most items FANUC's library sends in one write.
-pub const WRITE_ITEMS_MAX: i16 = 17;
 
 /// A maintenance item as on the wire.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,43 +55,5 @@ impl PmItem {
             b.extend(v.to_be_bytes());
         }
         b
-    }
-}
-
-/// cnc_wrpm_mcnitem: names from `start` on.
-#[derive(Debug, Clone)]
-pub struct WriteNames {
-    pub start: i16,
-    pub names: Vec<[u8; NAME_LEN]>,
-}
-
-impl Call for WriteNames {
-    type Output = ();
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        let data = self.names.concat();
-        vec![ReqSub::cnc(WRPM_MCNITEM, &[i32::from(self.start)]).with_payload(data)]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
-        sub(resp, 0).map(|_| ())
-    }
-}
-
-/// cnc_wrpm_item: items from `start` on; `reset` goes first.
-#[derive(Debug, Clone)]
-pub struct WriteItems {
-    pub reset: i16,
-    pub start: i16,
-    pub items: Vec<PmItem>,
-}
-
-impl Call for WriteItems {
-    type Output = ();
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        let data = self.items.iter().flat_map(PmItem::to_wire).collect();
-        let args = [i32::from(self.reset), i32::from(self.start)];
-        vec![ReqSub::cnc(WRPM_ITEM, &args).with_payload(data)]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
-        sub(resp, 0).map(|_| ())
     }
 }

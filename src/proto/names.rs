@@ -125,8 +125,6 @@ pub const COMMANDS: &[(u16, u16, &str)] = &[
     (CLASS_CNC, 0x00a5, "cnc_rdaxisdata"),
     (CLASS_CNC, 0x00a7, "cnc_rdmacror2"),
     (CLASS_CNC, 0x00a8, "cnc_wrmacror2"),
-    (CLASS_CNC, 0x00bd, "cnc_wrpm_mcnitem"),
-    (CLASS_CNC, 0x00bf, "cnc_wrpm_item"),
     (CLASS_CNC, 0x00cf, "cnc_exeprgname"),
     (CLASS_CNC, 0x00e1, "cnc_statinfo cnc_statinfo2"),
     (CLASS_CNC, 0x00e2, "cnc_statinfo2"),

@@ -26,12 +26,19 @@ pub enum Param {
     /// are checked); out, how many were written. The records' output is
     /// then an array of that many elements.
     Count(&'static str),
+    /// `TYPE *NAME`: the records a write sends, read from the caller's
+    /// array ([`Func::payload`]). TYPE as for [`Param::Out`].
+    In(&'static str, &'static str),
 }
 
 impl Param {
     pub const fn name(&self) -> &'static str {
         match *self {
-            Param::Short(n) | Param::Long(n) | Param::Out(n, _) | Param::Count(n) => n,
+            Param::Short(n)
+            | Param::Long(n)
+            | Param::Out(n, _)
+            | Param::Count(n)
+            | Param::In(n, _) => n,
         }
     }
 }
@@ -185,6 +192,19 @@ impl Records {
     }
 }
 
+/// The records a write sends as its request's payload, read from its
+/// [`Param::In`] array: number parameter `count` of them, at most `max`.
+/// Each field is read as `c` from member `to` of `elem` (`""`: the element
+/// itself; `None`: nothing read, zeros sent) and sent as `wire`. The
+/// request's fifth word is the payload's length.
+#[derive(Debug, Clone, Copy)]
+pub struct Payload {
+    pub fields: &'static [Field],
+    pub elem: &'static str,
+    pub count: u8,
+    pub max: u16,
+}
+
 /// What a payload shorter than the reply layout means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Short {
@@ -210,6 +230,8 @@ pub struct Func {
     pub reply: &'static [Field],
     /// Records after `reply`'s fields, if any.
     pub records: Option<Records>,
+    /// The records a write sends, if any.
+    pub payload: Option<Payload>,
     pub short: Short,
     /// The oracle's dimensions, one per number parameter: "|"-separated
     /// values, the base first.
@@ -225,7 +247,7 @@ impl Func {
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
             Param::Short(n) | Param::Long(n) | Param::Count(n) => Some(n),
-            Param::Out(..) => None,
+            Param::Out(..) | Param::In(..) => None,
         })
     }
     /// The [`Param::Count`] parameter, if any: its index among the number
@@ -233,6 +255,13 @@ impl Func {
     pub fn count(&self) -> Option<usize> {
         self.numbers()
             .position(|n| self.params.contains(&Param::Count(n)))
+    }
+    /// The [`Param::In`] parameter, if any: (name, C type).
+    pub fn input(&self) -> Option<(&'static str, &'static str)> {
+        self.params.iter().find_map(|p| match *p {
+            Param::In(n, t) => Some((n, t)),
+            _ => None,
+        })
     }
     /// The output parameters, in order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {

@@ -70,11 +70,15 @@ const AXLEN: &str = "8|4|7|12|0|-1|132|136";
 /// Every word the generator covers: the functions described as data
 /// (src/spec/table/, their dimensions there) and the words below.
 pub fn words() -> Vec<Word> {
-    let described = fwlib32::spec::FUNCS.iter().map(|f| Word {
-        word: f.word(),
-        dims: f.dims,
-        ..w("", &[])
-    });
+    // A write's cases (payloads, read-backs) are written below by hand.
+    let described = fwlib32::spec::FUNCS
+        .iter()
+        .filter(|f| !WORDS.iter().any(|w| w.word == f.word()))
+        .map(|f| Word {
+            word: f.word(),
+            dims: f.dims,
+            ..w("", &[])
+        });
     described.chain(WORDS.iter().map(copy)).collect()
 }
 

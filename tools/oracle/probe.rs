@@ -66,12 +66,17 @@ pub fn generated_words() -> String {
                     count = Some(n);
                     "&num".to_string()
                 }
-                Param::Out(..) => {
+                Param::Out(..) | Param::In(..) => {
                     b += 1;
                     format!("B{}", b - 1)
                 }
             })
             .collect();
+        // A write's records come as the hex argument after the numbers.
+        let fill = match f.input() {
+            Some(_) => format!("fill_hex(b0, {}); ", n + 1),
+            None => String::new(),
+        };
         let call = format!(
             "F({})(H{})",
             f.name,
@@ -79,7 +84,7 @@ pub fn generated_words() -> String {
         );
         let body = match count {
             Some(i) => format!("SHORT_IO(num, {i}, {call})"),
-            None => format!("return {call}"),
+            None => format!("{{ {fill}return {call}; }}"),
         };
         s.push_str(&format!(" \\\n    WORD({}, {body})", f.word()));
     }

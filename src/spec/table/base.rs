@@ -12,6 +12,7 @@ pub const COMMAND: Func = Func {
     forms: &[],
     reply: &[],
     records: None,
+    payload: None,
     short: Short::Zeros,
     dims: &[],
 };
@@ -34,6 +35,7 @@ pub const SERVO_LONGS: Func = Func {
         count: None,
         room: None,
     }),
+    payload: None,
     short: Short::Zeros,
     dims: &[],
 };

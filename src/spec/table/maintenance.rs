@@ -3,6 +3,7 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
+use super::base::COMMAND;
 
 /// `*data_num` below 1: EW_LENGTH before any traffic.
 const ASKED: Check = Check {
@@ -21,6 +22,20 @@ const NAME: Field = Field {
     c: U8,
     arg: None,
 };
+
+/// An item (IODBPMAINTE's layout): its name, two bytes nobody reads (sent
+/// as zeros), then type, total, remain and stat.
+const ITEM: &[Field] = &[
+    Field {
+        to: Some("name"),
+        ..NAME
+    },
+    skip(U16),
+    to(I32, "type", I32),
+    to(I32, "total", I32),
+    to(I32, "remain", I32),
+    to(I32, "stat", I32),
+];
 
 /// The request words of every read: `[start, asked]`.
 const READ: &[Word] = &[Word::Arg(0), Word::Asked];
@@ -53,6 +68,7 @@ const fn names(
             count: None,
             room: None,
         }),
+        payload: None,
         short: Short::Error,
         dims,
     }
@@ -83,17 +99,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(0x00be, READ)],
         reply: &[],
         records: Some(Records {
-            fields: &[
-                Field {
-                    to: Some("name"),
-                    ..NAME
-                },
-                skip(U16),
-                to(I32, "type", I32),
-                to(I32, "total", I32),
-                to(I32, "remain", I32),
-                to(I32, "stat", I32),
-            ],
+            fields: ITEM,
             out: 0,
             to: "",
             elem: "IODBPMAINTE",
@@ -101,7 +107,45 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: None,
         }),
+        payload: None,
         short: Short::Error,
         dims: &["1|0|-1|2|10|11", "4|1|0|-1|10|17|18|100"],
+    },
+    Func {
+        name: "cnc_wrpm_mcnitem",
+        doc: "Writes `data_num` machine tool builder's item names from the `start_num`-th on (at most 22 are sent). `data_num` < 1 is EW_LENGTH without traffic.",
+        params: &[
+            Param::Short("start_num"),
+            Param::Short("data_num"),
+            Param::In("item", "char[62]"),
+        ],
+        checks: &[ASKED],
+        forms: &[every_class(0x00bd, &[Word::Arg(0)])],
+        payload: Some(Payload {
+            fields: &[NAME],
+            elem: "char[62]",
+            count: 1,
+            max: 22,
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrpm_item",
+        doc: "Writes `data_num` maintenance items from the `start_num`-th on (at most 17 are sent): name, type, total and remain (stat is sent, the CNC keeps its own; the two bytes after the name go as zeros). `reset` 1 starts each item's life anew. `data_num` < 1 is EW_LENGTH without traffic.",
+        params: &[
+            Param::Short("reset"),
+            Param::Short("start_num"),
+            Param::Short("data_num"),
+            Param::In("item", "IODBPMAINTE"),
+        ],
+        checks: &[Check { arg: 2, ..ASKED }],
+        forms: &[every_class(0x00bf, &[Word::Arg(0), Word::Arg(1)])],
+        payload: Some(Payload {
+            fields: ITEM,
+            elem: "IODBPMAINTE",
+            count: 2,
+            max: 17,
+        }),
+        ..COMMAND
     },
 ];

@@ -78,6 +78,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "crntpntr", I32),
         ],
         records: None,
+        payload: None,
         short: Short::Zeros,
         dims: &[],
     },

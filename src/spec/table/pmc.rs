@@ -11,6 +11,7 @@ pub const FUNCS: &[Func] = &[Func {
     forms: &[pmc(0x800e, &[])],
     reply: &[to(I32, "", I32)],
     records: None,
+    payload: None,
     short: Short::Zeros,
     dims: &[],
 }];
