@@ -508,18 +508,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 } else {
                     format!("offset_of!({}, {})", rust_type(ty), ident(r.to))
                 };
-                let stride = match c_size(r.elem) {
-                    Some(n) => n.to_string(),
-                    None => format!("size_of::<{}>()", r.elem),
-                };
-                let offs: Vec<String> = r
-                    .fields
-                    .iter()
-                    .map(|x| match x.to {
-                        Some(m) if !m.is_empty() => format!("offset_of!({}, {})", r.elem, ident(m)),
-                        _ => "0".to_string(),
-                    })
-                    .collect();
+                let (stride, offs) = element(r.elem, r.fields);
                 // With a count the output is the caller's array of that many.
                 if c_size(ty).is_none() && count.is_none() {
                     checks.push(format!(
@@ -541,18 +530,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
         // A write's payload: where each field's member is in one element.
         let pay = match (&f.payload, f.input()) {
             (Some(p), Some((n, _))) => {
-                let stride = match c_size(p.elem) {
-                    Some(n) => n.to_string(),
-                    None => format!("size_of::<{}>()", p.elem),
-                };
-                let offs: Vec<String> = p
-                    .fields
-                    .iter()
-                    .map(|x| match x.to {
-                        Some(m) if !m.is_empty() => format!("offset_of!({}, {})", p.elem, ident(m)),
-                        _ => "0".to_string(),
-                    })
-                    .collect();
+                let (stride, offs) = element(p.elem, p.fields);
                 format!(
                     "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}] }}",
                     ident(n),
@@ -636,6 +614,23 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
         ));
     }
     s
+}
+
+/// An array element's layout in Rust: its size, and the offset of each
+/// field's member in it (`""` or no member: 0).
+fn element(elem: &str, fields: &[types::Field]) -> (String, Vec<String>) {
+    let stride = match c_size(elem) {
+        Some(n) => n.to_string(),
+        None => format!("size_of::<{elem}>()"),
+    };
+    let offsets = fields
+        .iter()
+        .map(|x| match x.to {
+            Some(m) if !m.is_empty() => format!("offset_of!({elem}, {})", ident(m)),
+            _ => "0".to_string(),
+        })
+        .collect();
+    (stride, offsets)
 }
 
 /// `text` as `///` lines of at most 76 columns.
