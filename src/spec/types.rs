@@ -94,6 +94,16 @@ pub struct Check {
 /// learns at connect.
 pub const OPTION: u8 = u8::MAX;
 
+/// A count (number parameter `arg`) below 1: EW_LENGTH before any traffic.
+pub const fn at_least_one(arg: u8) -> Check {
+    Check {
+        arg,
+        lo: 1,
+        hi: i32::MAX,
+        code: 2,
+    }
+}
+
 /// The check of a function that needs the FOCAS option: EW_NOOPT without.
 pub const NEEDS_OPTION: Check = Check {
     arg: OPTION,

@@ -2,30 +2,23 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
+use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_actf",
         doc: "Reads the actual feed rate (F).",
         params: &[Param::Out("actualfeed", "ODBACT")],
-        checks: &[],
         forms: &[every_class(0x0024, &[])],
         reply: &[to(I32, "data", I32)],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_acts",
         doc: "Reads the actual spindle speed (S).",
         params: &[Param::Out("actualspindle", "ODBACT")],
-        checks: &[],
         forms: &[every_class(0x0025, &[])],
         reply: &[to(I32, "data", I32)],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
 ];

@@ -2,15 +2,14 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
+use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdproctime",
         doc: "Reads the machining times of the last programs run.",
         params: &[Param::Out("proc_time", "ODBPTIME")],
-        checks: &[],
         forms: &[every_class(0x0075, &[])],
-        reply: &[],
         // Whole 12-byte records, their number written to `num`.
         records: Some(Records {
             fields: &[
@@ -27,20 +26,14 @@ pub const FUNCS: &[Func] = &[
             count: Some("num"),
             room: None,
         }),
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdetherinfo",
         doc: "Reads the Ethernet board's type and device.",
         params: &[Param::Out("type", "short"), Param::Out("device", "short")],
-        checks: &[],
         forms: &[every_class(0x0159, &[])],
         reply: &[to_out(0, I16, "", I16), to_out(1, I16, "", I16)],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
 ];

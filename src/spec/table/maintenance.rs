@@ -5,14 +5,6 @@ use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
-/// `*data_num` below 1: EW_LENGTH before any traffic.
-const ASKED: Check = Check {
-    arg: 1,
-    lo: 1,
-    hi: i32::MAX,
-    code: 2,
-};
-
 /// A 62-byte item name.
 const NAME: Field = Field {
     wire: U8,
@@ -37,6 +29,10 @@ const ITEM: &[Field] = &[
     to(I32, "stat", I32),
 ];
 
+/// The count as the second number parameter (every entry but
+/// cnc_wrpm_item's) below 1: EW_LENGTH before any traffic.
+const COUNTED: &[Check] = &[at_least_one(1)];
+
 /// The request words of every read: `[start, asked]`.
 const READ: &[Word] = &[Word::Arg(0), Word::Asked];
 
@@ -56,9 +52,8 @@ const fn names(
             Param::Count("data_num"),
             Param::Out("item", "char[62]"),
         ],
-        checks: &[ASKED],
+        checks: COUNTED,
         forms,
-        reply: &[],
         records: Some(Records {
             fields: &[NAME],
             out: 0,
@@ -68,9 +63,8 @@ const fn names(
             count: None,
             room: None,
         }),
-        payload: None,
-        short: Short::Error,
         dims,
+        ..COMMAND
     }
 }
 
@@ -95,9 +89,8 @@ pub const FUNCS: &[Func] = &[
             Param::Count("data_num"),
             Param::Out("item", "IODBPMAINTE"),
         ],
-        checks: &[ASKED],
+        checks: COUNTED,
         forms: &[every_class(0x00be, READ)],
-        reply: &[],
         records: Some(Records {
             fields: ITEM,
             out: 0,
@@ -107,9 +100,8 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: None,
         }),
-        payload: None,
-        short: Short::Error,
         dims: &["1|0|-1|2|10|11", "4|1|0|-1|10|17|18|100"],
+        ..COMMAND
     },
     Func {
         name: "cnc_wrpm_mcnitem",
@@ -119,7 +111,7 @@ pub const FUNCS: &[Func] = &[
             Param::Short("data_num"),
             Param::In("item", "char[62]"),
         ],
-        checks: &[ASKED],
+        checks: COUNTED,
         forms: &[every_class(0x00bd, &[Word::Arg(0)])],
         payload: Some(Payload {
             fields: &[NAME],
@@ -138,7 +130,7 @@ pub const FUNCS: &[Func] = &[
             Param::Short("data_num"),
             Param::In("item", "IODBPMAINTE"),
         ],
-        checks: &[Check { arg: 2, ..ASKED }],
+        checks: &[at_least_one(2)],
         forms: &[every_class(0x00bf, &[Word::Arg(0), Word::Arg(1)])],
         payload: Some(Payload {
             fields: ITEM,

@@ -69,7 +69,6 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdmdipntr",
         doc: "Reads the execution pointers of MDI operation.",
         params: &[Param::Out("mdipntr", "ODBMDIP")],
-        checks: &[],
         forms: &[every_class(0x0038, &[])],
         reply: &[
             to(I32, "mdiprog", I16),
@@ -77,9 +76,6 @@ pub const FUNCS: &[Func] = &[
             to(I32, "crntprog", I16),
             to(I32, "crntpntr", I32),
         ],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
 ];

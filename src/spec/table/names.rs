@@ -2,14 +2,7 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
-
-/// `*data_num` below 1: EW_LENGTH before any traffic.
-const ASKED: Check = Check {
-    arg: 0,
-    lo: 1,
-    hi: i32::MAX,
-    code: 2,
-};
+use super::base::COMMAND;
 
 /// A name character: the byte the CNC sends, as a `char`.
 const fn ch(to: &'static str) -> Field {
@@ -44,13 +37,11 @@ pub const FUNCS: &[Func] = &[
             Param::Count("data_num"),
             Param::Out("axisname", "ODBAXISNAME"),
         ],
-        checks: &[ASKED],
+        checks: &[at_least_one(0)],
         forms: &[every_class(0x0089, &[])],
-        reply: &[],
         records: entries(&[ch("name"), ch("suff"), skip(U8), skip(U8)], "ODBAXISNAME"),
-        payload: None,
-        short: Short::Error,
         dims: &["4|1|0|-1|2|3|32|33"],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdspdlname",
@@ -59,15 +50,13 @@ pub const FUNCS: &[Func] = &[
             Param::Count("data_num"),
             Param::Out("spdlname", "ODBSPDLNAME"),
         ],
-        checks: &[ASKED],
+        checks: &[at_least_one(0)],
         forms: &[every_class(0x008a, &[])],
-        reply: &[],
         records: entries(
             &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
             "ODBSPDLNAME",
         ),
-        payload: None,
-        short: Short::Error,
         dims: &["4|1|0|-1|2|8|9"],
+        ..COMMAND
     },
 ];

@@ -2,42 +2,34 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
+use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdtofsinfo",
         doc: "Reads the tool offset memory type and the number of offsets.",
         params: &[Param::Out("tlinf", "ODBTLINF")],
-        checks: &[],
         forms: &[every_class(0x000a, &[])],
         reply: &[skip(I16), to(I16, "use_no", I16), to(I16, "ofs_type", I16)],
-        records: None,
-        payload: None,
         short: Short::Error,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdzofsinfo",
         doc: "Reads the number of work zero offsets.",
         params: &[Param::Out("ofs_no", "short")],
-        checks: &[],
         forms: &[every_class(0x000d, &[])],
         reply: &[to(I32, "", I16)],
-        records: None,
-        payload: None,
         short: Short::Error,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdmacroinfo",
         doc: "Reads how many common variables the CNC has: `use_no1` (#100..), `use_no2` (#500..).",
         params: &[Param::Out("buf", "ODBMVINF")],
-        checks: &[],
         forms: &[every_class(0x0017, &[])],
         reply: &[to(I32, "use_no1", I16), to(I32, "use_no2", I16)],
-        records: None,
-        payload: None,
         short: Short::Error,
-        dims: &[],
+        ..COMMAND
     },
 ];

@@ -2,13 +2,13 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
+use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdtofsinfo2",
         doc: "Reads the tool offset memory type, the number of offsets and which offsets are enabled.",
         params: &[Param::Out("tlinf", "ODBTLINF2")],
-        checks: &[],
         forms: &[every_class(0x000a, &[])],
         // The 0x000a answer of cnc_rdtofsinfo, with the enable word after it.
         reply: &[
@@ -17,21 +17,14 @@ pub const FUNCS: &[Func] = &[
             to(I16, "ofs_type", I16),
             to(I16, "ofs_enable", I16),
         ],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdngrp",
         doc: "Reads the number of tool life groups.",
         params: &[Param::Out("grp", "ODBTLIFE2")],
-        checks: &[],
         forms: &[every_class(0x004a, &[])],
         reply: &[to(I32, "data", I32)],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
 ];

@@ -2,6 +2,7 @@
 
 use super::super::types::Int::*;
 use super::super::types::*;
+use super::base::COMMAND;
 use super::base::SERVO_LONGS;
 
 pub const FUNCS: &[Func] = &[
@@ -21,9 +22,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdcurrent",
         doc: "Reads the actual servo current of each axis.",
         params: &[Param::Out("data", "short")],
-        checks: &[],
         forms: &[every_class(0x0056, &[Word::Const(1)])],
-        reply: &[],
         records: Some(Records {
             fields: &[to(I32, "", I16), skip(I32)],
             out: 0,
@@ -33,17 +32,13 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: None,
         }),
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdspdlalm",
         doc: "Reads the alarm state of each spindle, one byte per spindle (at most 8).",
         params: &[Param::Out("data", "char")],
-        checks: &[],
         forms: &[every_class(0x005a, &[])],
-        reply: &[],
         // The low byte of each i16, as many as the answer holds.
         records: Some(Records {
             fields: &[to(I16, "", I8)],
@@ -54,20 +49,14 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: None,
         }),
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdpitchinfo",
         doc: "Reads the number of pitch error compensation points.",
         params: &[Param::Out("datano", "short")],
-        checks: &[],
         forms: &[every_class(0x0014, &[])],
         reply: &[to(I32, "", I16)],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
-        dims: &[],
+        ..COMMAND
     },
 ];

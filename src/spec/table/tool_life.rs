@@ -13,7 +13,6 @@ pub const FUNCS: &[Func] = &[
             Param::Short("tuse_num"),
             Param::Out("toolnum", "ODBTLIFE4"),
         ],
-        checks: &[],
         forms: &[every_class(
             0x004d,
             &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
@@ -23,28 +22,24 @@ pub const FUNCS: &[Func] = &[
             to(I32, "type", I16),
             to(I32, "data", I32),
         ],
-        records: None,
-        payload: None,
         short: Short::Error,
         dims: &["1|0|-1|2|9999", "0|1|-1|2|99"],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdntool",
         doc: "Reads the number of tools in tool-life group `grp_num`.",
         params: &[Param::Short("grp_num"), Param::Out("tool", "ODBTLIFE3")],
-        checks: &[],
         forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
         reply: &[to(I32, "datano", I16), to(I32, "data", I32)],
-        records: None,
-        payload: None,
         short: Short::Error,
         dims: &["1|0|-1|2|9999"],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdlife",
         doc: "Reads the tool life of tool group `number` (`data`; `dummy` untouched; `datano` the group number the CNC answered).",
         params: &[Param::Short("number"), Param::Out("life", "ODBTLIFE3")],
-        checks: &[],
         forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
         // Group, then tools, life and counter as value records (value, base, exponent).
         reply: &[
@@ -56,16 +51,14 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             skip(I32),
         ],
-        records: None,
-        payload: None,
         short: Short::Error,
         dims: &["1|0|-1|2|9999"],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdcount",
         doc: "Reads the tool life counter of tool group `number`.",
         params: &[Param::Short("number"), Param::Out("count", "ODBTLIFE3")],
-        checks: &[],
         forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
         reply: &[
             to(I32, "datano", I16),
@@ -76,22 +69,18 @@ pub const FUNCS: &[Func] = &[
             to(I32, "data", I32),
             skip(I32),
         ],
-        records: None,
-        payload: None,
         short: Short::Error,
         dims: &["1|0|-1|2|9999"],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdgrpid2",
         doc: "Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy` untouched).",
         params: &[Param::Long("tno"), Param::Out("tlife", "ODBTLIFE5")],
-        checks: &[],
         forms: &[every_class(0x0047, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I32), to(I32, "data", I32)],
-        records: None,
-        payload: None,
-        short: Short::Zeros,
         dims: &["11|0|-1|1|5|9999|99999999"],
+        ..COMMAND
     },
     Func {
         name: "cnc_rdwkcdshft",
@@ -118,9 +107,8 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: Some(1),
         }),
-        payload: None,
-        short: Short::Zeros,
         dims: &["1|-1|0|2|3|4|32|33|-2", "8|4|7|12|0|-1|132|136"],
+        ..COMMAND
     },
     // Base cases on group 2 (cnc_rdlife and others read group 1).
     Func {
