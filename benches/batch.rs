@@ -25,7 +25,7 @@ fn arg(name: &str, default: u64) -> u64 {
 }
 
 /// c-examples/adapter.c built against our header and library.
-fn adapter() -> (PathBuf, PathBuf) {
+fn adapter() -> (PathBuf, toolchain::Scratch) {
     let dir = toolchain::lib_dir("bench-batch");
     let root = toolchain::manifest_dir();
     let exe = dir.join("adapter");

@@ -3,8 +3,9 @@
 //! in `focas-protocol/layouts.json` (what FANUC's x86-64 library really reads
 //! and writes); the Rust types of src/types/ have the same layouts.
 //!
-//! layouts.json is read from `$FOCAS_PROTOCOL_DIR`, else from
-//! `$CARGO_MANIFEST_DIR/../shared/focas-protocol`.
+//! layouts.json is test data in this repository (tests/focas-protocol, its
+//! README.md says where it comes from); `$FOCAS_PROTOCOL_DIR` may name another
+//! copy.
 
 mod toolchain;
 
@@ -20,17 +21,11 @@ use toolchain::{
 fn layouts() -> Value {
     let dir = std::env::var_os("FOCAS_PROTOCOL_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            manifest_dir()
-                .join("..")
-                .join("shared")
-                .join("focas-protocol")
-        });
+        .unwrap_or_else(|| manifest_dir().join("tests").join("focas-protocol"));
     let path = dir.join("layouts.json");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
         panic!(
-            "cannot read {}: {e}.\nThe layout check needs focas-protocol/layouts.json: \
-             set FOCAS_PROTOCOL_DIR to the directory holding it.",
+            "cannot read {}: {e}.\nThe layout check needs tests/focas-protocol/layouts.json.",
             path.display()
         )
     });

@@ -310,10 +310,7 @@ fn data_requests_go_on_during_an_upload() {
 /// connections and returns EW_SOCKET with detail (9, 4), as FANUC's code does.
 #[test]
 fn a_stalled_upload_ends_after_the_timeout() {
-    use common::{Ev, Event, Replay, find_case, load_vectors, vectors_available};
-    if !vectors_available() {
-        return;
-    }
+    use common::{Ev, Event, Replay, find_case, load_vectors};
     let files = load_vectors();
     let connect = find_case(&files, "cnc_allclibhndl3", "v3_one_path").calls[0]
         .frames
@@ -355,11 +352,8 @@ fn a_stalled_upload_ends_after_the_timeout() {
 /// split, while 256 bytes or more of room are left.
 #[test]
 fn room_in_whole_256s_frames_split_to_fit() {
-    use common::{Event, Replay, find_case, hex, load_vectors, vectors_available};
+    use common::{Event, Replay, find_case, hex, load_vectors};
     use fwlib32::proto::frame::{Frame, ftype};
-    if !vectors_available() {
-        return;
-    }
     let files = load_vectors();
     let connect = find_case(&files, "cnc_allclibhndl3", "v3_one_path").calls[0]
         .frames

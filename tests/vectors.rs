@@ -1038,13 +1038,13 @@ fn plan(case: &Case) -> Result<Plan, String> {
 /// every case that needs the spindle word in a synthesized connect has a
 /// `SpindleWord` entry.
 /// True when `FOCAS_PROTOCOL_DIR` names another set of vectors than the
-/// shared one: the table's entries name the shared set's cases, so an entry
+/// repository's: the table's entries name the repository's cases, so an entry
 /// without its case is not an error there, and a spindle case without an
-/// entry gets the spindle word as the shared set's spindle cases do.
+/// entry gets the spindle word as the repository's spindle cases do.
 fn foreign_set() -> bool {
     std::env::var_os("FOCAS_PROTOCOL_DIR").is_some_and(|d| {
-        let shared = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/focas-protocol");
-        std::fs::canonicalize(&d).ok() != std::fs::canonicalize(shared).ok()
+        let ours = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/focas-protocol");
+        std::fs::canonicalize(&d).ok() != std::fs::canonicalize(ours).ok()
     })
 }
 
@@ -1112,9 +1112,6 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
 
 #[test]
 fn golden_vectors_replay() {
-    if !vectors_available() {
-        return;
-    }
     let _g = exclusive();
     let files = vectors();
     let mut problems = check_table(files);
@@ -1219,9 +1216,6 @@ fn connection_refused() {
 /// 2 s), `*h` untouched, the connection closed.
 #[test]
 fn open_never_answered_times_out() {
-    if !vectors_available() {
-        return;
-    }
     let _g = shared();
     let case = find_case(
         vectors(),
@@ -1254,9 +1248,6 @@ fn open_never_answered_times_out() {
 /// timeout" (9/1), and the free sends nothing.
 #[test]
 fn timeout_1s_fails_and_tears_down() {
-    if !vectors_available() {
-        return;
-    }
     let _g = shared();
     let case = find_case(vectors(), "cnc_settimeout", "timeout1_delay3_fails");
     let mut s = Replay::start();
@@ -1345,9 +1336,6 @@ fn late_answer(case_name: &str, connect_timeout: &str, settimeout: &str, delay: 
 /// settimeout(3), the answer comes after 1.5 s: accepted.
 #[test]
 fn answer_within_settimeout_succeeds() {
-    if !vectors_available() {
-        return;
-    }
     let _g = shared();
     late_answer("timeout8_delay6_ok", "1", "3", Duration::from_millis(1500));
 }
@@ -1356,9 +1344,6 @@ fn answer_within_settimeout_succeeds() {
 /// settimeout(0) waits for an answer 1.5 s late.
 #[test]
 fn timeout_0_waits_for_a_late_answer() {
-    if !vectors_available() {
-        return;
-    }
     let _g = shared();
     late_answer(
         "timeout0_waits_forever",
@@ -1538,9 +1523,6 @@ fn set_spindle_word(ev: &mut [Event]) {
 /// placements are the same bytes.
 #[test]
 fn rddynamic2_all_axes_records_at_struct_offsets() {
-    if !vectors_available() {
-        return;
-    }
     let _g = shared();
     let case = find_case(vectors(), "cnc_rddynamic2", "v3_all_axes_3");
     let call = &case.calls[0];
@@ -1974,14 +1956,20 @@ fn w_upend(p: &mut Probe, _: &[String]) -> Outcome {
     Outcome::ret(cnc_upend(p.h()))
 }
 
-/// Missing vectors skip the tests only outside CI.
+/// The recorded set is in the repository and whole: the replays above never
+/// run on a partial set (a missing directory or file fails, never skips).
 #[test]
-fn missing_vectors_fail_under_ci() {
-    assert_eq!(vectors_policy(true, false, Some("true")), Ok(true));
-    assert_eq!(vectors_policy(false, false, None), Ok(false));
-    assert_eq!(vectors_policy(false, false, Some("false")), Ok(false));
-    assert!(vectors_policy(false, false, Some("true")).is_err());
-    assert!(vectors_policy(false, true, None).is_err());
+fn the_recorded_set_is_whole() {
+    if foreign_set() {
+        return;
+    }
+    let files = vectors();
+    let cases: usize = files.iter().map(|f| f.cases.len()).sum();
+    assert_eq!(
+        (files.len(), cases),
+        (65, 181),
+        "tests/focas-protocol/vectors: (files, cases) changed; update this count with the set"
+    );
 }
 
 /// The README's "Where we differ" table covers every deviation of the

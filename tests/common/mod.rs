@@ -19,58 +19,20 @@ use std::time::{Duration, Instant};
 // Where the vectors are
 // ---------------------------------------------------------------------------
 
-/// The focas-protocol directory: `$FOCAS_PROTOCOL_DIR`, else
-/// `$CARGO_MANIFEST_DIR/../shared/focas-protocol`.
+/// The recorded set: `tests/focas-protocol` in this repository (see its
+/// README.md for where it comes from), or the directory `$FOCAS_PROTOCOL_DIR`
+/// names, to replay another set recorded the same way.
 pub fn protocol_dir() -> PathBuf {
     match std::env::var_os("FOCAS_PROTOCOL_DIR") {
         Some(d) => PathBuf::from(d),
-        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/focas-protocol"),
+        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/focas-protocol"),
     }
 }
 
+/// The vector files' directory. There is no skipping: [`load_vectors`]
+/// fails when it is missing or holds no vector.
 pub fn vectors_dir() -> PathBuf {
     protocol_dir().join("vectors")
-}
-
-/// True when the vectors can be read. Without `FOCAS_PROTOCOL_DIR` a checkout
-/// lacking the shared directory skips the vector tests with a message —
-/// except under CI (`CI` set to anything but "" / "false" / "0"), where a
-/// missing directory fails them; with `FOCAS_PROTOCOL_DIR` set, a wrong path
-/// is an error.
-pub fn vectors_available() -> bool {
-    let dir = vectors_dir();
-    let ci = std::env::var("CI").ok();
-    match vectors_policy(
-        dir.is_dir(),
-        std::env::var_os("FOCAS_PROTOCOL_DIR").is_some(),
-        ci.as_deref(),
-    ) {
-        Ok(true) => true,
-        Ok(false) => {
-            eprintln!(
-                "SKIPPED: golden vectors not found at {} (set FOCAS_PROTOCOL_DIR to the focas-protocol directory)",
-                dir.display()
-            );
-            false
-        }
-        Err(why) => panic!("golden vectors not found at {}: {why}", dir.display()),
-    }
-}
-
-/// [`vectors_available`]'s decision: Ok(true) run, Ok(false) skip, Err fail.
-pub fn vectors_policy(present: bool, dir_set: bool, ci: Option<&str>) -> Result<bool, String> {
-    if present {
-        return Ok(true);
-    }
-    if dir_set {
-        return Err("FOCAS_PROTOCOL_DIR is set but does not hold them".into());
-    }
-    if ci.is_some_and(|v| !matches!(v, "" | "false" | "0")) {
-        return Err(
-            "running under CI (CI is set): the vector tests must not be skipped; set FOCAS_PROTOCOL_DIR".into(),
-        );
-    }
-    Ok(false)
 }
 
 // ---------------------------------------------------------------------------
@@ -357,6 +319,7 @@ pub fn load_vectors() -> Vec<VectorFile> {
         .filter(|p| p.extension().is_some_and(|x| x == "json"))
         .collect();
     paths.sort();
+    assert!(!paths.is_empty(), "{} holds no vector file", dir.display());
     paths.iter().map(|p| load_file(p)).collect()
 }
 

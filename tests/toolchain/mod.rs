@@ -120,25 +120,82 @@ fn describe(cmd: &Command) -> String {
     s
 }
 
-/// A fresh, empty scratch directory for one test.
-pub fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("fwlib32-c-tests")
-        .join(format!("{name}-{}", std::process::id()));
+/// A fresh, empty scratch directory for one test under
+/// `target/tmp/fwlib32-c-tests/NAME-PID`, removed when the value is dropped.
+/// What a test left there and could not remove (a test that panicked while a
+/// static held it, a killed run) goes at the next run: directories of
+/// processes no longer alive are removed on the way in.
+pub struct Scratch(PathBuf);
+
+impl std::ops::Deref for Scratch {
+    type Target = PathBuf;
+    fn deref(&self) -> &PathBuf {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::ffi::OsStr> for Scratch {
+    fn as_ref(&self) -> &std::ffi::OsStr {
+        self.0.as_os_str()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn scratch_root() -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR")).join("fwlib32-c-tests")
+}
+
+/// Removes the scratch directories of earlier test processes that are gone.
+fn prune_dead_scratch() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let Ok(entries) = std::fs::read_dir(scratch_root()) else {
+            return;
+        };
+        for e in entries.flatten() {
+            let name = e.file_name();
+            let pid = name
+                .to_str()
+                .and_then(|n| n.rsplit_once('-'))
+                .and_then(|(_, pid)| pid.parse::<u32>().ok());
+            let alive = pid.is_some_and(|p| Path::new(&format!("/proc/{p}")).exists());
+            if !alive {
+                let _ = std::fs::remove_dir_all(e.path());
+            }
+        }
+    });
+}
+
+pub fn scratch(name: &str) -> Scratch {
+    prune_dead_scratch();
+    let dir = scratch_root().join(format!("{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("create {}: {e}", dir.display()));
-    dir
+    Scratch(dir)
 }
 
 /// A fresh scratch directory holding the built library as `libfwlib32.so.1`
 /// (the SONAME a program linked with `-lfwlib32` asks the loader for) and
 /// `libfwlib32.so` -> it (the name `-lfwlib32` links): for `-L` and
-/// `LD_LIBRARY_PATH`.
-pub fn lib_dir(name: &str) -> PathBuf {
+/// `LD_LIBRARY_PATH`. `libfwlib32.so.1` is a link to the library cargo built,
+/// not a copy (a debug build is about 46 MB).
+pub fn lib_dir(name: &str) -> Scratch {
     let dir = scratch(name);
     let so = cdylib();
-    std::fs::copy(&so, dir.join("libfwlib32.so.1"))
-        .unwrap_or_else(|e| panic!("copy {}: {e}", so.display()));
+    let so = std::fs::canonicalize(&so).unwrap_or_else(|e| panic!("{}: {e}", so.display()));
+    std::os::unix::fs::symlink(&so, dir.join("libfwlib32.so.1"))
+        .unwrap_or_else(|e| panic!("link {}: {e}", so.display()));
     std::os::unix::fs::symlink("libfwlib32.so.1", dir.join("libfwlib32.so")).unwrap();
     dir
 }
