@@ -68,16 +68,19 @@ ifeq ($(STD),)
 STD := $(if $(wildcard $(RUST_SRC)),slim,prebuilt)
 endif
 ifeq ($(STD),slim)
-# Its own target directory: `cargo build --bins` builds the library's
-# artifacts too and would overwrite these.
+# The library is built without the simulator and the command line
+# (--no-default-features: libfwlib32.a holds no tokio), in its own target
+# directory: `cargo build --bins` builds the library's artifacts too, with the
+# default features, and would overwrite these.
 LIB_TARGET := $(if $(TARGET),$(TARGET),$(HOST))
 LIB_OUT := $(CARGO_TARGET_DIR)/slim-std/$(LIB_TARGET)/release
-LIB_BUILD := RUSTC_BOOTSTRAP=1 $(CARGO) build --release --locked --lib \
+LIB_BUILD := RUSTC_BOOTSTRAP=1 $(CARGO) build --release --locked --lib --no-default-features \
     --target $(LIB_TARGET) --target-dir $(CARGO_TARGET_DIR)/slim-std \
     -Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind
 else ifeq ($(STD),prebuilt)
-LIB_OUT := $(OUT)
-LIB_BUILD := $(CARGO) build --release --locked --lib $(TARGET_FLAG)
+LIB_OUT := $(CARGO_TARGET_DIR)/lib-only/$(if $(TARGET),$(TARGET)/)release
+LIB_BUILD := $(CARGO) build --release --locked --lib --no-default-features $(TARGET_FLAG) \
+    --target-dir $(CARGO_TARGET_DIR)/lib-only
 else
 $(error STD=$(STD): slim or prebuilt)
 endif

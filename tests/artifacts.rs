@@ -278,3 +278,37 @@ fn cnc_allclibhdl3_is_cnc_allclibhndl3_from_c() {
         format!("series={}", profile.cnc.series)
     );
 }
+
+/// A library-only build (`default-features = false`) brings none of the
+/// simulator's or the command line's crates: the client is libc,
+/// parking_lot and thiserror (and what those need).
+#[test]
+fn the_library_alone_needs_no_simulator_crates() {
+    let out = run(Command::new(env!("CARGO"))
+        .current_dir(toolchain::manifest_dir())
+        .args([
+            "tree",
+            "--offline",
+            "--locked",
+            "-e",
+            "normal",
+            "--no-default-features",
+        ])
+        .args(["--prefix", "none", "--format", "{p}"]));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let crates: BTreeSet<&str> = text
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "fwlib32")
+        .collect();
+    for foreign in ["tokio", "toml", "clap", "serde", "serde_json", "indicatif"] {
+        assert!(
+            !crates.contains(foreign),
+            "{foreign} in the library-only build: {crates:?}"
+        );
+    }
+    for needed in ["libc", "parking_lot", "thiserror"] {
+        assert!(crates.contains(needed), "{needed} missing: {crates:?}");
+    }
+    assert!(crates.len() <= 16, "{} crates: {crates:?}", crates.len());
+}

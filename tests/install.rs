@@ -174,6 +174,30 @@ fn make_install_then_build_and_run_status_c_with_pkg_config() {
     ] {
         assert!(dest.join(f).is_file(), "{f} not installed");
     }
+    // The static library is the client alone: built without the simulator
+    // (--no-default-features), so no tokio, toml or clap inside it.
+    let archive = dest.join("usr/lib/libfwlib32.a");
+    // readelf, not nm: binutils' nm hands the objects to its LLVM plugin first
+    // and lists no symbols of rustc's objects when that plugin is older.
+    let syms = run(Command::new(readelf()).arg("-sW").arg(&archive));
+    let syms = String::from_utf8_lossy(&syms.stdout);
+    for foreign in ["tokio", "toml", "clap"] {
+        assert!(
+            !syms.lines().any(|l| l.contains(foreign)),
+            "{} holds {foreign} symbols",
+            archive.display()
+        );
+    }
+    assert!(
+        syms.lines()
+            .any(|l| l.contains("GLOBAL") && l.ends_with(" cnc_statinfo")),
+        "{} lacks cnc_statinfo",
+        archive.display()
+    );
+    eprintln!(
+        "installed libfwlib32.a: {} bytes",
+        std::fs::metadata(&archive).unwrap().len()
+    );
     // Stripped of its debug info (rustc's .debug_gdb_scripts is loaded data, kept).
     let focas = dest.join("usr/bin/focas");
     let sections = section_names(&focas);

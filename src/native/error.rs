@@ -8,8 +8,15 @@ use std::fmt;
 pub type Result<T, E = Error> = std::result::Result<T, E>;
 
 /// An `EW_*` result code of FANUC's library (`Ew::NUMBER` is `EW_NUMBER`, 3).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+/// Its `Debug` names it too: `EW_NUMBER(3)`.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Ew(pub i16);
+
+impl fmt::Debug for Ew {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}({})", self.name(), self.0)
+    }
+}
 
 /// Defines the `Ew` constants and the table of names and meanings from
 /// one list (tests check it against `src/ew.rs`, where the C header's
@@ -120,7 +127,11 @@ impl Detail {
 /// Why a call failed. Every variant names the FOCAS function (`call`, e.g.
 /// `"cnc_rdparam"`); [`Error::code`] gives its `EW_*` code and
 /// [`Error::detail`] the detail words.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+///
+/// Its `Debug` is the message (what `fn main() -> Result<..>` prints on an
+/// error): `cnc_statinfo: EW_SOCKET (-16): socket error: ...`; `{:#?}` shows
+/// the fields.
+#[derive(Clone, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Error {
     /// No connection: refused, unreachable, closed by the CNC, timed out
@@ -154,6 +165,24 @@ pub enum Error {
         code: Ew,
         msg: String,
     },
+}
+
+impl fmt::Debug for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if !f.alternate() {
+            return fmt::Display::fmt(self, f);
+        }
+        let mut s = f.debug_struct("Error");
+        s.field("call", &self.call()).field("code", &self.code());
+        s.field("detail", &self.detail());
+        if let Error::Socket { msg, .. }
+        | Error::Protocol { msg, .. }
+        | Error::Invalid { msg, .. } = self
+        {
+            s.field("msg", msg);
+        }
+        s.finish()
+    }
 }
 
 impl Error {
@@ -228,6 +257,29 @@ impl Error {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `fn main() -> Result<..>` prints the Debug form: it names the call and
+    /// the EW code, not `Ew(-16)`.
+    #[test]
+    fn debug_names_the_code() {
+        let e = Error::Socket {
+            call: "cnc_statinfo",
+            detail: Detail::default(),
+            msg: "connection refused".into(),
+        };
+        let plain = format!("{e:?}");
+        assert!(
+            plain.starts_with("cnc_statinfo: EW_SOCKET (-16): "),
+            "{plain}"
+        );
+        assert!(plain.ends_with("connection refused"), "{plain}");
+        let full = format!("{e:#?}");
+        assert!(
+            full.contains("EW_SOCKET(-16)") && full.contains("cnc_statinfo"),
+            "{full}"
+        );
+        assert_eq!(format!("{:?}", Ew::NUMBER), "EW_NUMBER(3)");
+    }
 
     /// Every `pub const EW_*` of src/ew.rs (the header's codes) is in the
     /// table under its name and value, and nothing else is.
