@@ -3,12 +3,12 @@
 //!
 //! While a handle batches, each batchable read runs twice. Queued: its
 //! local checks run as they always do (a failure returns at once), then
-//! its exchange records the subpackets it would send ([`Batch::pending`])
-//! and ends the call with [`Error::Queued`]; the exported function's body
+//! its exchange records the subpackets it would send (`Batch::pending`)
+//! and ends the call with [`Error::Queued`](crate::error::Error::Queued); the exported function's body
 //! is kept ([`Deferred`], by `ffi_boundary!`). At the batch's end the
 //! queued subpackets go out in as few request frames as the limits allow,
 //! and each kept body runs again: its exchange now takes its own share of
-//! the answers ([`Batch::replay`]) and decodes it, so it writes the
+//! the answers (`Batch::replay`) and decodes it, so it writes the
 //! caller's outputs and returns exactly what the same call made alone
 //! would. Calls that are not batchable (writes, transfers, connection 1,
 //! reads that need an earlier answer to form their next request) return

@@ -5,7 +5,7 @@
 //! reused buffer, as much as has arrived (one `recv` when the whole frame
 //! is there), and frames are taken from it whole, leftovers kept for the
 //! next one. The socket timeouts that bound each wait are set only when the
-//! one already set does not fit the call's deadline (see [`Armed`]), not
+//! one already set does not fit the call's deadline (see `Armed`), not
 //! before every `send` and `recv`.
 
 use super::log;

@@ -28,7 +28,7 @@ pub struct CncInfo {
     /// The FOCAS option flags the library learns at connect.
     pub option: u16,
     /// Series 15: word 0 of the start-up 0x8c answer (path 1's axis count,
-    /// cnc_sysinfo_ex's `ctrl_axis` [oracle]); 0 on other classes.
+    /// cnc_sysinfo_ex's `ctrl_axis` \[oracle\]); 0 on other classes.
     pub axes15: u16,
 }
 

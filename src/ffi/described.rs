@@ -1,6 +1,6 @@
 //! The exported functions described as data (crate::spec). build.rs writes
 //! each one's `extern "C"` function from its table entry (signature plainly,
-//! body one [`exec`] call) into `$OUT_DIR/described.rs`, included here; the
+//! body one `exec` call) into `$OUT_DIR/described.rs`, included here; the
 //! header's declarations come from the same file (cbindgen reads it).
 
 use super::{ffi_boundary, ffi_read, nonnull, put};

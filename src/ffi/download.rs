@@ -2,7 +2,7 @@
 //! cnc_dncend2). Frames: src/proto/download.rs; the transfer state:
 //! src/client/download.rs.
 //!
-//! Local checks learnt from FANUC's library [oracle]: the first forms
+//! Local checks learnt from FANUC's library \[oracle\]: the first forms
 //! (cnc_dwnstart, cnc_download, cnc_dwnend, cnc_dncstart, cnc_dnc,
 //! cnc_dncend) need the CNC's FOCAS option bit (EW_NOOPT, before anything
 //! else); cnc_dncstart sends its start frame with the first cnc_dnc (a

@@ -1,5 +1,5 @@
 //! The C ABI: one module per API area. Every exported body runs inside
-//! [`ffi_boundary!`], so a panic becomes `EW_UNEXP` instead of crossing into C.
+//! `ffi_boundary!`, so a panic becomes `EW_UNEXP` instead of crossing into C.
 
 pub mod absent;
 pub mod alarm;

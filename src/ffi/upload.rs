@@ -3,10 +3,10 @@
 //! Recorded from FANUC's library: cnc_upstart, cnc_upstart3, cnc_upload3,
 //! cnc_upend3 (vectors); cnc_upstart4, cnc_upload4, cnc_upload, cnc_upend4,
 //! cnc_upend and the buffer rule (room in whole 256s, frames split to fit)
-//! by the oracle helper (/tmp/orc/findings/cnc_upload_family.md, [lib],
-//! no vectors). Read from its code ([dis]): cnc_upload4
+//! by the oracle helper (/tmp/orc/findings/cnc_upload_family.md, \[lib\],
+//! no vectors). Read from its code (\[dis\]): cnc_upload4
 //! and cnc_upend4 are cnc_upload3 and cnc_upend3 under another name;
-//! cnc_upstart4 sends the start name "N:<prgname>" ("N:" for NULL);
+//! cnc_upstart4 sends the start name "N:`<prgname>`" ("N:" for NULL);
 //! cnc_cupload is cnc_upload3 into ODBUP.data with an `unsigned short`
 //! length (255 or less: EW_LENGTH), cnc_upload repeats it every millisecond
 //! while it returns EW_BUFFER; cnc_cupload, cnc_upload and cnc_upend turn
@@ -69,7 +69,7 @@ fn old_style<T>(r: Result<T>) -> Result<T> {
     })
 }
 
-/// Starts uploading NC program `prgno` (text "O<n>-O<n>", data type 0).
+/// Starts uploading NC program `prgno` (text "O`<n>`-O`<n>`", data type 0).
 /// Then cnc_upload / cnc_upload3 read the text and cnc_upend ends it.
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_upstart(FlibHndl: c_ushort, prgno: c_short) -> c_short {

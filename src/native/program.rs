@@ -134,7 +134,7 @@ impl Cnc {
         Ok(String::from_utf8_lossy(&text).into_owned())
     }
 
-    /// Downloads program text in punch format ("%", the "O<number>" block
+    /// Downloads program text in punch format ("%", the "O`<number>`" block
     /// and its blocks one per line, "%") into the CNC's memory, calling
     /// `progress` with the bytes sent so far. The CNC's refusal (a number in
     /// use EW_DATA, memory full EW_OVRFLOW, protected EW_PROT ...) is the

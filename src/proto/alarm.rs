@@ -151,7 +151,7 @@ pub fn rdalminfo(kind: i16, alm_type: i16, n: i32) -> Single<AlmMsgs<32>> {
     ))
 }
 
-/// (1,0x34)[type]; a short answer reads as zeros (FANUC's library).
+/// (1,0x34)\[type\]; a short answer reads as zeros (FANUC's library).
 pub fn rdopmsg(kind: i16) -> Single<OpMsg> {
     Single::padded(ReqSub::cnc(RDOPMSG, &[i32::from(kind)]))
 }
@@ -263,7 +263,7 @@ pub fn rdalmhisno() -> Single<Count> {
 }
 
 /// cnc_rdopmsg3's command on the 30i class (the 16i class sends
-/// cnc_rdopmsg's 0x0034 [type]).
+/// cnc_rdopmsg's 0x0034 \[type\]).
 pub const RDOPMSG3: u16 = 0x00d0;
 /// Bytes of one cnc_rdopmsg3 record: i32 number, type, characters, then
 /// 256 text bytes.
@@ -272,7 +272,7 @@ pub const OPMSG3_REC: usize = 268;
 pub const OPMSG3_CHUNK: i32 = 5;
 
 /// cnc_rdopmsg3: on the 30i class (1,0x00d0)[start, type, n] (n at most
-/// 5), on the 16i class (1,0x0034)[type]; the answer whole 268-byte
+/// 5), on the 16i class (1,0x0034)\[type\]; the answer whole 268-byte
 /// records.
 pub fn rdopmsg3(class30: bool, start: i32, kind: i16, n: i32) -> crate::proto::history::Records {
     let sub = if class30 {

@@ -1,11 +1,11 @@
 //! Program download and DNC operation over connection 1: the frames the
 //! client sends, sans-IO, shared by the client (src/client/download.rs)
 //! and the simulator (src/sim/session.rs). Learnt from FANUC's library
-//! against a fake CNC [oracle]:
+//! against a fake CNC \[oracle\]:
 //!
 //! * Start: kind 0x11 (download) or 0x19 (DNC), request `01` with the
 //!   upload's 516-byte start body ([`super::upload::StartReq`]: data type,
-//!   path, "N:<name>" for cnc_dwnstart4, else empty); any answer of the
+//!   path, "N:`<name>`" for cnc_dwnstart4, else empty); any answer of the
 //!   same kind is accepted, its body is ignored.
 //! * Data: kind 0x12 / 0x1a, sub-type `04` (no answer), the caller's bytes
 //!   as they are, split into bodies of [`Outgoing::chunk`] bytes.

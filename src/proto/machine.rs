@@ -5,7 +5,7 @@ use super::call::{Call, Ctx, sub};
 use super::packet::{ReqSub, RespSub};
 use crate::error::Result;
 
-/// cnc_rdctrldi / cnc_rdctrldo: (1,0x005b)[0] input signals, [1] output.
+/// cnc_rdctrldi / cnc_rdctrldo: (1,0x005b)\[0\] input signals, \[1\] output.
 pub const RDCTRLSIG: u16 = 0x005b;
 
 /// cnc_rdctrldi (`output` false) / cnc_rdctrldo (true): the signal words
@@ -33,7 +33,7 @@ impl Call for CtrlSignals {
     }
 }
 
-/// cnc_rdprstrinfo: (1,0x0043)[k] for k 0..4 (block counter, M, T, S and
+/// cnc_rdprstrinfo: (1,0x0043)\[k\] for k 0..4 (block counter, M, T, S and
 /// B codes), then the position command 0x0026 [13, -1] (restart position)
 /// and [14, -1] (distance to it), in one frame.
 pub const RDPRSTR: u16 = 0x0043;

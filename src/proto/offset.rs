@@ -113,7 +113,7 @@ impl Call for ReadZofsRange {
     }
 }
 
-/// cnc_wrwkcdshft: 0x0064 [axis] with one record (axis ≥ 0) or one per
+/// cnc_wrwkcdshft: 0x0064 \[axis\] with one record (axis ≥ 0) or one per
 /// axis (axis -1).
 pub fn wrwkcdshft(axis: i16, values: &[i32]) -> Single<Ack> {
     let records: Values = values.iter().map(|v| write_record(*v)).collect();

@@ -126,7 +126,7 @@ impl OpenBody {
     }
 
     /// What cnc_sysinfo_ex reports, from the open response alone (FANUC's
-    /// library sends nothing for it) [oracle]: max_axis, max_spdl, max_path,
+    /// library sends nothing for it) \[oracle\]: max_axis, max_spdl, max_path,
     /// max_mchn, ctrl_axis, ctrl_srvo, ctrl_spdl, ctrl_path, ctrl_mchn,
     /// addinfo; then per path system, group, attrib, ctrl_axis, ctrl_srvo,
     /// ctrl_spdl, mchn_no. The 30i body has them all (a path's ctrl_srvo is

@@ -770,7 +770,7 @@ fn ext_attr_len(class: CncClass) -> usize {
 }
 
 /// Up to [`ext_per_frame`] numbers: per number its attributes and its
-/// all-axes values ([`ext_cmds`]: [no, 1] and [no, no, -1]).
+/// all-axes values (`ext_cmds`: [no, 1] and [no, no, -1]).
 #[derive(Debug, Clone)]
 pub struct ReadExt {
     pub table: Table,

@@ -109,7 +109,7 @@ impl Call for WritePmc {
     }
 }
 
-/// pmc_rdpmcinfo: (2,0x8003)[adr_type]; payload i32 count + 12-byte records.
+/// pmc_rdpmcinfo: (2,0x8003)\[adr_type\]; payload i32 count + 12-byte records.
 pub const RDPMCINFO: u16 = 0x8003;
 /// Records ODBPMCINF holds.
 pub const PMCINFO_MAX: usize = 64;
@@ -158,7 +158,7 @@ pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
 // PMC units (pmc_get_number_of_pmc is described in src/spec/table/)
 // ---------------------------------------------------------------------------
 
-/// pmc_get_pmc_unit_types: (2,0x800f)[most]; the answer is i32 unit types.
+/// pmc_get_pmc_unit_types: (2,0x800f)\[most\]; the answer is i32 unit types.
 pub const UNIT_TYPES: u16 = 0x800f;
 /// pmc_select_pmc_unit: (2,0x800c)[unit type]; no answer payload.
 pub const SELECT_UNIT: u16 = 0x800c;

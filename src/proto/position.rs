@@ -31,21 +31,21 @@ pub const ACTS: u16 = 0x0025;
 pub const POSITION: u16 = 0x0026;
 /// Spindle data: args [code, spindle]; value records.
 pub const SPINDLE: u16 = 0x0040;
-/// Servo load meter: args [1]; value records.
+/// Servo load meter: args \[1\]; value records.
 pub const SERVO_LOAD: u16 = 0x0056;
-/// Unit words: args [1] positions, [2] machine positions, [3]/[4] speeds.
+/// Unit words: args \[1\] positions, \[2\] machine positions, \[3\]/\[4\] speeds.
 pub const UNITS: u16 = 0x0088;
-/// Axis names: args [0] 4 bytes per axis; [-1] i32 count + 16 bytes per axis.
+/// Axis names: args \[0\] 4 bytes per axis; [-1] i32 count + 16 bytes per axis.
 pub const RDAXISNAME: u16 = 0x0089;
 /// Spindle names: 4 bytes per spindle.
 pub const RDSPDLNAME: u16 = 0x008a;
 /// Display flags per axis (u32).
 pub const AXIS_FLAGS: u16 = 0x00a3;
-/// Counts: args [0] axes, [1] spindles, [2] servo axes, [3] speed display.
+/// Counts: args \[0\] axes, \[1\] spindles, \[2\] servo axes, \[3\] speed display.
 pub const COUNT: u16 = 0x00a4;
 /// cnc_rdaxisdata class 5 type 2: a third speed-class value record (its
 /// meaning is not known; FANUC's library names it 'F' and takes its unit
-/// from 0x88[4]).
+/// from 0x88\[4\]).
 pub const SPEED_A5: u16 = 0x00a5;
 
 /// 0x26 type codes.
@@ -112,7 +112,7 @@ wire_struct! {
 }
 
 wire_struct! {
-    /// One 4-byte name entry of 0x89[0] / 0x8a: name, suffix(es), padding.
+    /// One 4-byte name entry of 0x89\[0\] / 0x8a: name, suffix(es), padding.
     pub struct Name {
         pub bytes: [u8; 4],
     }
@@ -154,8 +154,8 @@ impl Wire for AxisNames {
 }
 
 wire_struct! {
-    /// One axis of 0x88: two unit words (0x88[1]: word 0 = unit of the
-    /// absolute/relative/distance positions; 0x88[2]: word 1 = unit of the
+    /// One axis of 0x88: two unit words (0x88\[1\]: word 0 = unit of the
+    /// absolute/relative/distance positions; 0x88\[2\]: word 1 = unit of the
     /// machine position; ODBAXDT unit codes: 0 mm, 1 inch, 2 degree ...).
     pub struct UnitWords {
         pub w0: u16,
@@ -461,11 +461,11 @@ pub enum AxisData {
     Servo(Vec<i32>),
     /// rdaxisdata class 3 / rdspmeter: 0x40 codes.
     Spindle(Vec<i32>),
-    /// rdaxisdata class 4: 0x40 codes for spindle 1 (0xa4[3], 0x8a[1],
-    /// 0x40[code, 1], 0xa4[3]).
+    /// rdaxisdata class 4: 0x40 codes for spindle 1 (0xa4\[3\], 0x8a\[1\],
+    /// 0x40[code, 1], 0xa4\[3\]).
     FirstSpindle(Vec<i32>),
-    /// rdaxisdata class 5: the speed frame (0xa4[3], 0x8a[1], 0x88[3],
-    /// 0x88[4], one of ACTF / ACTS / SPEED_A5 per type, 0xa4[3]); always
+    /// rdaxisdata class 5: the speed frame (0xa4\[3\], 0x8a\[1\], 0x88\[3\],
+    /// 0x88\[4\], one of ACTF / ACTS / SPEED_A5 per type, 0xa4\[3\]); always
     /// one item.
     Speed(Vec<u16>),
 }

@@ -246,7 +246,7 @@ pub fn exeprgname2() -> Single<PathName> {
     Single::new(ReqSub::cnc(EXEPRGNAME2, &[]))
 }
 
-/// (1,0x20)[length], cut to what fits in one answer.
+/// (1,0x20)\[length\], cut to what fits in one answer.
 pub fn rdexecprog(length: u16) -> Single<ExecProg> {
     let n = i32::from(length).min(super::packet::MAX_ANSWER as i32);
     Single::new(ReqSub::cnc(RDEXECPROG, &[n]))
@@ -304,12 +304,12 @@ pub enum ModalKind {
     G(i32),
     /// 0x0022 with this code: other codes, written in payload order.
     Aux(i32),
-    /// 0x0022 code −1: every other code, reordered into raux1[27] by [`AUX_ORDER`].
+    /// 0x0022 code −1: every other code, reordered into raux1\[27\] by [`AUX_ORDER`].
     AuxAll,
 }
 
 /// Codes of types 100..=126 (FANUC's table); also the payload record each
-/// raux1[k] of type −2 comes from.
+/// raux1\[k\] of type −2 comes from.
 pub const AUX_ORDER: [i32; 27] = [
     1, 3, 4, 5, 6, 10, 11, 21, 22, 20, 18, 19, 0, 2, 7, 8, 9, 16, 17, 23, 24, 25, 26, 27, 28, 12,
     13,

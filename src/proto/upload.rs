@@ -8,7 +8,7 @@
 //! an empty 0x1702. The client aborts an unfinished upload with 0x1804 and
 //! 8 zero bytes, awaiting no answer. A CNC-side failure during the upload
 //! comes as a 0x18xx frame whose body words 1..3 are the error code and
-//! its two detail words (read from FANUC's library, [dis]; never seen from
+//! its two detail words (read from FANUC's library, \[dis\]; never seen from
 //! a real CNC).
 
 /// Body length of the 0x1501 upload start frame.
@@ -20,7 +20,7 @@ pub const ABORT_BODY: [u8; 8] = [0; 8];
 /// The text a CNC pushes in one 0x1604 frame (the simulator's; a frame
 /// of 1460 bytes, a 1500-byte Ethernet MTU's TCP payload). FANUC's
 /// library overruns its buffer and crashes on a data body of more than
-/// 1470 bytes [oracle], whatever the frame version allows.
+/// 1470 bytes \[oracle\], whatever the frame version allows.
 pub const DATA_CHUNK: usize = 1450;
 /// Frame kinds (high byte of the type word) of the upload traffic.
 pub const KIND_START: u8 = 0x15;
@@ -37,21 +37,21 @@ pub const MIN_READ: usize = 256;
 pub struct StartReq {
     /// Data type (0 = NC program; 1.. tool offsets, parameters, ... on a CNC).
     pub dtype: i16,
-    /// The handle's path (FANUC's library puts its path word here, [dis];
+    /// The handle's path (FANUC's library puts its path word here, \[dis\];
     /// recorded only with path 1).
     pub path: u16,
-    /// "O<s>-O<e>" (cnc_upstart, cnc_upstart3) or "N:<name>" (cnc_upstart4).
+    /// "O`<s>`-O`<e>`" (cnc_upstart, cnc_upstart3) or "N:`<name>`" (cnc_upstart4).
     pub start: String,
     /// Empty for every function above.
     pub end: String,
 }
 
-/// The start name cnc_upstart / cnc_upstart3 send: "O<s>-O<e>" (C's "%d").
+/// The start name cnc_upstart / cnc_upstart3 send: "O`<s>`-O`<e>`" (C's "%d").
 pub fn range_name(start: i32, end: i32) -> String {
     format!("O{start}-O{end}")
 }
 
-/// The start name cnc_upstart4 sends: "N:<name>", or "N:" for NULL.
+/// The start name cnc_upstart4 sends: "N:`<name>`", or "N:" for NULL.
 pub fn name4(name: Option<&str>) -> String {
     format!("N:{}", name.unwrap_or(""))
 }
@@ -89,7 +89,7 @@ impl StartReq {
         }
     }
 
-    /// The O-number range of an "O<s>-O<e>" or "O<n>" start name.
+    /// The O-number range of an "O`<s>`-O`<e>`" or "O`<n>`" start name.
     pub fn range(&self) -> Option<(i64, i64)> {
         let num = |s: &str| s.strip_prefix('O')?.trim().parse::<i64>().ok();
         match self.start.split_once("-O") {

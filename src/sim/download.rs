@@ -3,7 +3,7 @@
 //! CNC checks it, stored in the path's program store (src/sim/store.rs).
 //!
 //! The text is punch format: an optional leading "%" (or LF) line, then
-//! one or more programs each starting with its "O<number>" block, blocks
+//! one or more programs each starting with its "O`<number>`" block, blocks
 //! one per line (a ';' end of block is dropped), up to a "%" line. The
 //! whole download is checked before anything is stored, so a refused one
 //! changes nothing: not ASCII or a block that is not a run of address

@@ -1,8 +1,8 @@
 //! The 30i program data folders on the program store (src/sim/store.rs):
-//! "//CNC_MEM/USER/PATH<n>/" holds path n's programs; other folders hold
+//! "//CNC_MEM/USER/PATH`<n>`/" holds path n's programs; other folders hold
 //! folders only. Names are NUL-padded fields of the request's payload
 //! (256 bytes; a rename's new name 36). Refusals: an unknown folder or a
-//! name that is not "O<number>" EW_DATA, then the store's (EW_DATA, EW_PROT,
+//! name that is not "O`<number>`" EW_DATA, then the store's (EW_DATA, EW_PROT,
 //! EW_BUSY, EW_OVRFLOW); a type other than 1/2 EW_ATTRIB.
 
 use super::Machine;

@@ -148,7 +148,7 @@ impl Machine {
         Ok(Ack)
     }
 
-    /// 0x0063 [axis]: the work coordinate shift of one axis (1..=n) or all
+    /// 0x0063 \[axis\]: the work coordinate shift of one axis (1..=n) or all
     /// (-1: max_axes records).
     pub fn shift_read(&self, path: u16, axis: i32) -> Reply<Vec<i64>> {
         let cols = self.zofs_axes(path, axis)?;
@@ -219,7 +219,7 @@ impl Machine {
         groups.iter().find(|g| g.number == grp).ok_or(NUMBER)
     }
 
-    /// 0x0053 [grp] deletes tool life group `grp`; 0x0055 [grp, n] its
+    /// 0x0053 \[grp\] deletes tool life group `grp`; 0x0055 [grp, n] its
     /// `n`-th tool. An absent group or tool: EW_NUMBER, nothing changed.
     pub fn tl_delete(&mut self, path: u16, grp: i32, tool: Option<i32>) -> Reply<()> {
         let groups = &mut (self.profile.paths)
@@ -264,7 +264,7 @@ impl Machine {
         Ok(())
     }
 
-    /// 0x0047 [tno]: the first group holding tool number `tno` (none:
+    /// 0x0047 \[tno\]: the first group holding tool number `tno` (none:
     /// EW_NUMBER).
     pub fn tl_group_of_tool(&self, path: u16, tno: i32) -> Reply<i32> {
         let p = (self.profile.paths)

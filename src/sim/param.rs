@@ -82,7 +82,7 @@ impl Machine {
     /// FANUC's cnc_rdparar sends the same [s, e, axis] as cnc_rdparam and
     /// needs whole blocks, so a CNC cannot answer the two differently.
     ///
-    /// `s == e`: that item, as [`Machine::read_values`] allows. A range
+    /// `s == e`: that item, as `Machine::read_values` allows. A range
     /// (`s < e`, cnc_rdparar): the existing items from `s` on, at most
     /// [`RANGE_PER_ANSWER`] per answer (the library asks again from the
     /// last number + 1); EW_NUMBER if there is none. In a range every item

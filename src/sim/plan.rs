@@ -1,4 +1,4 @@
-//! A program parsed for one path's axes ([`Plan`]): its blocks with the
+//! A program parsed for one path's axes (`Plan`): its blocks with the
 //! axis end points and the modal state after each, what the running
 //! machine (src/sim/run.rs) steps through on the simulator's clock.
 

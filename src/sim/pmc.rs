@@ -122,7 +122,7 @@ pub const TIMERS: usize = 250;
 pub const ALMMSG_MAX: usize = 11;
 /// Bytes of one alarm message on the wire (ODBPMCALM).
 pub const ALMMSG_LEN: usize = 128;
-/// The highest timer type (accuracy code) a unit accepts [ours].
+/// The highest timer type (accuracy code) a unit accepts \[ours\].
 pub const TIMER_TYPE_MAX: i16 = 5;
 
 /// What a PMC unit holds besides its memory.
@@ -435,7 +435,7 @@ impl Pmc {
         }
     }
 
-    /// Command 0x800f[most]: the unit types (1, 2 ...), at most `most`.
+    /// Command 0x800f\[most\]: the unit types (1, 2 ...), at most `most`.
     pub fn unit_types(&self, most: i32) -> Vec<i32> {
         (1..=self.units() as i32)
             .take(most.max(0) as usize)

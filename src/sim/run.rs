@@ -633,8 +633,8 @@ impl Machine {
 
 impl Machine {
     /// What the CNC pushes for an upload request (0x1501): the stored
-    /// programs of the O-number range ("O<s>-O<e>") or of the name
-    /// ("N:<name>": a program's name, "O<number>" or the last part of its
+    /// programs of the O-number range ("O`<s>`-O`<e>`") or of the name
+    /// ("N:`<name>`": a program's name, "O`<number>`" or the last part of its
     /// path name) as a CNC punches them. Errors (the CNC's error frame; a
     /// real CNC's codes are not known): data type other than 0 (NC
     /// program) EW_ATTRIB, no such path EW_PATH, a range with start > end

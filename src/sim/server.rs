@@ -1,6 +1,6 @@
 //! The simulator's network side (tokio): one listener per machine, each
 //! connection served by a task (src/sim/session.rs) that answers the
-//! open/close handshake and data frames through a [`CncService`]. The
+//! open/close handshake and data frames through a [`CncService`](super::service::CncService). The
 //! machine's `[[fault]]`s (src/sim/faults.rs) decide when it refuses
 //! connections, stays silent, answers late or cuts answers short.
 

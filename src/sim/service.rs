@@ -124,11 +124,11 @@ pub trait CncService: Send {
     ) -> Reply<Vec<crate::proto::value::Value>> {
         unsupported()
     }
-    /// 0x1b[type]: input/output figures per axis.
+    /// 0x1b\[type\]: input/output figures per axis.
     fn figures(&mut self, path: u16, data_type: i32) -> Reply<crate::proto::position::Figures> {
         unsupported()
     }
-    /// 0x89[0]: 4-byte axis names.
+    /// 0x89\[0\]: 4-byte axis names.
     fn axis_names(&mut self, path: u16) -> Reply<Vec<crate::proto::position::Name>> {
         unsupported()
     }
@@ -149,11 +149,11 @@ pub trait CncService: Send {
     ) -> Reply<Vec<crate::proto::value::Value>> {
         unsupported()
     }
-    /// 0x56[code]: servo load records per axis.
+    /// 0x56\[code\]: servo load records per axis.
     fn servo_load(&mut self, path: u16, code: i32) -> Reply<Vec<crate::proto::value::Value>> {
         unsupported()
     }
-    /// 0x88[kind]: unit words.
+    /// 0x88\[kind\]: unit words.
     fn units(&mut self, path: u16, kind: i32) -> Reply<Vec<u16>> {
         unsupported()
     }
@@ -161,7 +161,7 @@ pub trait CncService: Send {
     fn axis_flags(&mut self, path: u16) -> Reply<Vec<u32>> {
         unsupported()
     }
-    /// 0xa4[kind]: axis / spindle counts.
+    /// 0xa4\[kind\]: axis / spindle counts.
     fn counts(&mut self, path: u16, kind: i32) -> Reply<crate::proto::position::Count> {
         unsupported()
     }
@@ -173,7 +173,7 @@ pub trait CncService: Send {
     fn exe_prgname2(&mut self, path: u16) -> Reply<pprog::PathName> {
         unsupported()
     }
-    /// 0x0020[length]: executing program text.
+    /// 0x0020\[length\]: executing program text.
     fn exec_prog(&mut self, path: u16, length: i32) -> Reply<pprog::ExecProg> {
         unsupported()
     }
@@ -185,15 +185,15 @@ pub trait CncService: Send {
     fn modal_aux(&mut self, path: u16, code: i32, block: i32) -> Reply<pprog::AuxModal> {
         unsupported()
     }
-    /// 0x0120[type]: timers.
+    /// 0x0120\[type\]: timers.
     fn timer(&mut self, path: u16, kind: i32) -> Reply<pprog::Timer> {
         unsupported()
     }
-    /// 0x0045[type]: date and time.
+    /// 0x0045\[type\]: date and time.
     fn clock(&mut self, path: u16, kind: i32) -> Reply<pprog::Clock> {
         unsupported()
     }
-    /// 0x0046[type] + 12-byte payload: set date or time.
+    /// 0x0046\[type\] + 12-byte payload: set date or time.
     fn set_clock(&mut self, path: u16, kind: i32, payload: &[u8]) -> Reply<()> {
         unsupported()
     }
@@ -211,7 +211,7 @@ pub trait CncService: Send {
     fn alarm_messages(&mut self, path: u16, kind: i32, num: i32, text_len: i32) -> Reply<Vec<u8>> {
         unsupported()
     }
-    /// 0x0034[type]: operator message.
+    /// 0x0034\[type\]: operator message.
     fn opmsg(&mut self, path: u16, kind: i32) -> Reply<OpMsg> {
         unsupported()
     }
@@ -220,7 +220,7 @@ pub trait CncService: Send {
     fn ctrl_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
         unsupported()
     }
-    /// 0x0043[k]: program restart data (cnc_rdprstrinfo), encoded.
+    /// 0x0043\[k\]: program restart data (cnc_rdprstrinfo), encoded.
     fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
         unsupported()
     }

@@ -23,7 +23,7 @@ pub struct Program {
     /// O number (0: a 30i program known by its name alone).
     pub number: i32,
     /// Name as cnc_exeprgname2 reports it, e.g. "O1234" or a path like
-    /// "//CNC_MEM/USER/PATH1/O1234"; empty = "O<number>".
+    /// "//CNC_MEM/USER/PATH1/O1234"; empty = "O`<number>`".
     pub name: String,
     /// The comment of the first block, without its parentheses.
     pub comment: String,
@@ -88,7 +88,7 @@ impl Program {
         self.text.len()
     }
 
-    /// The name CNCs report: the profile's, or "O<number>".
+    /// The name CNCs report: the profile's, or "O`<number>`".
     pub fn display_name(&self) -> String {
         if self.name.is_empty() {
             format!("O{:04}", self.number)
@@ -98,7 +98,7 @@ impl Program {
     }
 
     /// The full path name cnc_exeprgname2 reports for it on `path`: the
-    /// name if it is a path, else "//CNC_MEM/USER/PATH<n>/<name>".
+    /// name if it is a path, else "//CNC_MEM/USER/PATH`<n>`/`<name>`".
     pub fn full_name(&self, path: u16) -> String {
         let name = self.display_name();
         if name.starts_with("//") {
@@ -109,9 +109,9 @@ impl Program {
     }
 
     /// Whether an upload name ("N:" stripped) asked on `path` means this
-    /// program: its name, "O<number>" / "O%04d", the last element of its
+    /// program: its name, "O`<number>`" / "O%04d", the last element of its
     /// path name, its full path name (what cnc_exeprgname2 reports), or its
-    /// folder followed by "O<number>" / "O%04d".
+    /// folder followed by "O`<number>`" / "O%04d".
     pub fn answers_to(&self, name: &str, path: u16) -> bool {
         let o_forms = [format!("O{:04}", self.number), format!("O{}", self.number)];
         let display = self.display_name();
@@ -182,7 +182,7 @@ pub struct PathStore {
 pub struct Store {
     paths: Vec<PathStore>,
     /// The 30i folder tree, each folder's full name ending in '/'; the
-    /// programs of "//CNC_MEM/USER/PATH<n>/" are path n's.
+    /// programs of "//CNC_MEM/USER/PATH`<n>`/" are path n's.
     pub folders: Vec<String>,
     /// The current folders (cnc_rdpdf_curdir types 1 and 2).
     pub curdir: [String; 2],
@@ -241,7 +241,7 @@ impl Store {
     /// '/'; a name without "//" is in the current folder) stands for: the
     /// folder's name, and the path whose memory it is with the program
     /// number (None: the folder itself; an unknown folder or a file name
-    /// other than "O<number>": EW_DATA).
+    /// other than "O`<number>`": EW_DATA).
     pub fn locate(&self, name: &str) -> Reply<(String, Option<(u16, i32)>)> {
         let full = match name.starts_with("//") {
             true => name.to_string(),

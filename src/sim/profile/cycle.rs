@@ -12,7 +12,7 @@ pub struct StoredProgram {
     /// O number.
     pub number: i32,
     /// Program name as cnc_exeprgname2 reports it, e.g. "O1234" or a path
-    /// like "//CNC_MEM/USER/PATH1/O1234"; empty = "O<number>".
+    /// like "//CNC_MEM/USER/PATH1/O1234"; empty = "O`<number>`".
     pub name: String,
     pub comment: String,
     /// The program text, one block per line ("N10 G01 X10. F500;" ...).
