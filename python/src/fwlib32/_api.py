@@ -300,7 +300,8 @@ class Pending(Generic[T]):
             raise FocasError(self.call, 1, message="the batch has not been sent")
         if self._error is not None:
             raise self._error
-        return self._value
+        value: T = self._value
+        return value
 
     @property
     def error(self) -> Optional[FocasError]:
@@ -899,7 +900,8 @@ class Batch:
 
         def queue() -> int:
             _check_axis(call, axis)
-            return getattr(c._lib, call)(c.handle, number, word, sizeof(IODBPSD), byref(buf))
+            rc: int = getattr(c._lib, call)(c.handle, number, word, sizeof(IODBPSD), byref(buf))
+            return rc
 
         def decode() -> Any:
             kind = c._kinds.get((table, number), "real")
@@ -936,8 +938,9 @@ class Batch:
                 raise FocasError("pmc_rdpmcrng", EW_LENGTH,
                                  message=f"a batch reads at most {PMC_CHUNK} PMC bytes at once")
             spec[:] = [n, fmt]
-            return c._lib.pmc_rdpmcrng(c.handle, code, dtype, start, start + n * size - 1,
-                                       8 + n * size, buf)
+            rc: int = c._lib.pmc_rdpmcrng(c.handle, code, dtype, start, start + n * size - 1,
+                                          8 + n * size, buf)
+            return rc
 
         return self._add("pmc_rdpmcrng", queue,
                          lambda: list(struct.unpack_from(f"={spec[0]}{spec[1]}", buf, 8)))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Dict, Optional, Tuple
+from typing import Any, Dict, Optional, Tuple
 
 # code: (name, meaning); the first name of a shared code (EW_FUNC/EW_NOPMC ...).
 EW: Dict[int, Tuple[str, str]] = {
@@ -88,5 +88,5 @@ class FocasError(Exception):
             text += f" [detail {detail[0]}/{detail[1]}]"
         super().__init__(text)
 
-    def __reduce__(self):
+    def __reduce__(self) -> Any:
         return (FocasError, (self.function, self.code, self.detail, self.message))

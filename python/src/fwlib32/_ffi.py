@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import ctypes
 import os
+from typing import TYPE_CHECKING, Any, Optional
 from ctypes import POINTER, Structure, Union, sizeof
 from ctypes import c_char_p, c_int, c_int16, c_int32, c_long, c_ubyte, c_uint16
 
@@ -159,8 +160,11 @@ class _Lib:
             fn.argtypes, fn.restype = argtypes, c_int16
             setattr(self, name, fn)
 
+    if TYPE_CHECKING:
+        def __getattr__(self, name: str) -> Any: ...
 
-_lib = None
+
+_lib: Optional[_Lib] = None
 
 
 def lib() -> _Lib:

@@ -123,7 +123,7 @@ def _read_lines(proc: "subprocess.Popen[bytes]", want: int) -> List[bytes]:
     assert proc.stdout is not None
     fd = proc.stdout.fileno()
     deadline = time.monotonic() + START_TIMEOUT
-    buf, lines = b"", []
+    buf, lines = b"", []  # type: Tuple[bytes, List[bytes]]
     with selectors.DefaultSelector() as sel:
         sel.register(fd, selectors.EVENT_READ)
         while len(lines) < want:
