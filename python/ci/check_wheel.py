@@ -34,7 +34,8 @@ def main() -> int:
         for i in infos:
             if not ALLOWED.match(i.filename):
                 bad.append(f"not one of the package's files: {i.filename}")
-            if re.search(r"fanuc|fwlib32\.h$|fwlib64|Fwlib", i.filename, re.I):
+            if re.search(r"fanuc|\.dll$|\.h$|fwlib(e1|e64|0dn|30i|64)|libfwlib32-linux|"
+                         r"\.so\.1\.0\.", i.filename, re.I):
                 bad.append(f"a FANUC name: {i.filename}")
         for n in sorted(NEEDED - names):
             bad.append(f"missing: {n}")
