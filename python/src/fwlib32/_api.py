@@ -404,7 +404,8 @@ class Cnc:
     def status(self) -> Status:
         """The status words (cnc_statinfo): mode, run state, motion ..."""
         st = ODBST()
-        rc = self._lib.cnc_statinfo(self.handle, st)
+        h = self._h
+        rc = self._lib.cnc_statinfo(self.handle if h is None else h, st)
         if rc:
             raise self._fail("cnc_statinfo", rc)
         return _status(st)
@@ -732,11 +733,14 @@ class Cnc:
 _ALARMS = 32
 
 
+_ODBST = struct.Struct("=9h")
+
+
 def _status(st: ODBST) -> Status:
-    return Status(_MODE.get(st.aut, st.aut), _RUN.get(st.run, st.run),
-                  _MOTION.get(st.motion, st.motion), st.mstb,
-                  _EMG.get(st.emergency, st.emergency), _ALM.get(st.alarm, st.alarm),
-                  st.edit, st.tmmode)
+    # One unpack of the nine words: the fastest read of a ctypes structure.
+    _, tmmode, aut, run, motion, mstb, emg, alarm, edit = _ODBST.unpack(st)
+    return Status(_MODE.get(aut, aut), _RUN.get(run, run), _MOTION.get(motion, motion), mstb,
+                  _EMG.get(emg, emg), _ALM.get(alarm, alarm), edit, tmmode)
 
 
 def _sysinfo(s: ODBSYS) -> SysInfo:
