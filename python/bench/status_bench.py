@@ -3,7 +3,7 @@
 same library against a plain-socket floor, in one run, on the bundled
 simulator (loopback). Prints the times and the ratios (never asserts them).
 
-    python bench/status_bench.py [--calls 1000] [--rounds 7]
+    python bench/status_bench.py [--calls 1000] [--rounds 15]
 
 - typed: fwlib32.Cnc.status() (a Status dataclass with enums);
 - ctypes: cnc_statinfo(handle, byref(ODBST())) on fwlib32.library_path(),
@@ -12,8 +12,8 @@ simulator (loopback). Prints the times and the ratios (never asserts them).
   sends for cnc_statinfo (captured through a loopback relay) on a session it
   opened with the library's own open frame, reading each answer whole.
 
-The three run in turn, `--rounds` times, on the same simulator; each figure
-is the median over the rounds.
+The three run in turn, `--rounds` times, on the same simulator; the times
+are medians over the rounds, each ratio the median of the rounds' ratios.
 """
 
 import argparse
@@ -133,7 +133,7 @@ def timed(fn, calls):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--calls", type=int, default=1000)
-    ap.add_argument("--rounds", type=int, default=7)
+    ap.add_argument("--rounds", type=int, default=15)
     args = ap.parse_args()
 
     with simulator() as sim:
@@ -167,25 +167,32 @@ def main():
         cnc = fwlib32.Cnc(sim.host, sim.port, timeout=10)
         assert cnc.status().mode == fwlib32.Mode.MEM
 
-        results = {"typed": [], "ctypes": [], "floor": []}
+        names = ["typed", "ctypes", "floor"]
         fns = {"typed": cnc.status, "ctypes": raw, "floor": floor}
-        for name, fn in fns.items():  # warm up
-            timed(fn, 50)
-        for _ in range(args.rounds):
-            for name, fn in fns.items():
-                results[name].append(timed(fn, args.calls))
+        results = {k: [] for k in names}
+        for name in names:  # warm up
+            timed(fns[name], 50)
+        for r in range(args.rounds):
+            # The order turns each round: no one goes first every time.
+            for name in names[r % 3:] + names[:r % 3]:
+                results[name].append(timed(fns[name], args.calls))
         cnc.close()
         lib.cnc_freelibhndl(h)
         sock.close()
 
+    def ratio(a, b):
+        # The median of the rounds' own ratios: each compares runs made
+        # moments apart, so a load that comes and goes cancels out.
+        return statistics.median(x / y for x, y in zip(results[a], results[b]))
+
     med = {k: statistics.median(v) for k, v in results.items()}
     print(f"status read {args.calls} times, median of {args.rounds} rounds "
           f"(Python {sys.version.split()[0]}):")
-    for k in ("typed", "ctypes", "floor"):
+    for k in names:
         print(f"  {k:7s} {med[k] * 1e3:8.1f} ms  {med[k] / args.calls * 1e6:7.1f} us/call")
-    print(f"  typed / ctypes = {med['typed'] / med['ctypes']:.3f}")
-    print(f"  ctypes / floor = {med['ctypes'] / med['floor']:.3f}")
-    print(f"  typed / floor  = {med['typed'] / med['floor']:.3f}")
+    print(f"  typed / ctypes = {ratio('typed', 'ctypes'):.3f}")
+    print(f"  ctypes / floor = {ratio('ctypes', 'floor'):.3f}")
+    print(f"  typed / floor  = {ratio('typed', 'floor'):.3f}")
 
 
 if __name__ == "__main__":
