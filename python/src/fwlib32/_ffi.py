@@ -32,6 +32,7 @@ def library_path() -> str:
 
 
 class ODBSYS(Structure):
+    """include/fwlib32.h's ODBSYS."""
     _fields_ = [("addinfo", c_int16), ("max_axis", c_int16),
                 ("cnc_type", c_ubyte * 2), ("mt_type", c_ubyte * 2),
                 ("series", c_ubyte * 4), ("version", c_ubyte * 4),
@@ -39,33 +40,40 @@ class ODBSYS(Structure):
 
 
 class ODBST(Structure):
+    """include/fwlib32.h's ODBST."""
     _fields_ = [(n, c_int16) for n in ("hdck", "tmmode", "aut", "run", "motion",
                                         "mstb", "emergency", "alarm", "edit")]
 
 
 class ODBERR(Structure):
+    """include/fwlib32.h's ODBERR."""
     _fields_ = [("err_no", c_int16), ("err_dtno", c_int16)]
 
 
 class POSELM(Structure):
+    """include/fwlib32.h's POSELM."""
     _fields_ = [("data", c_int32), ("dec", c_int16), ("unit", c_int16),
                 ("disp", c_int16), ("name", c_ubyte), ("suff", c_ubyte)]
 
 
 class ODBPOS(Structure):
+    """include/fwlib32.h's ODBPOS."""
     _fields_ = [("abs", POSELM), ("mach", POSELM), ("rel", POSELM), ("dist", POSELM)]
 
 
 class ODBALMMSG2(Structure):
+    """include/fwlib32.h's ODBALMMSG2."""
     _fields_ = [("alm_no", c_int32), ("type", c_int16), ("axis", c_int16),
                 ("dummy", c_int16), ("msg_len", c_int16), ("alm_msg", c_ubyte * 64)]
 
 
 class REALPRM(Structure):
+    """include/fwlib32.h's REALPRM."""
     _fields_ = [("prm_val", c_int32), ("dec_val", c_int32)]
 
 
 class IODBPSD_u(Union):
+    """include/fwlib32.h's IODBPSD_u."""
     _fields_ = [("cdata", c_ubyte), ("idata", c_int16), ("ldata", c_int32),
                 ("rdata", REALPRM), ("cdatas", c_ubyte * MAX_AXIS),
                 ("idatas", c_int16 * MAX_AXIS), ("ldatas", c_int32 * MAX_AXIS),
@@ -78,24 +86,29 @@ class IODBPSD(Structure):
 
 
 class IODBPRM_data(Structure):
+    """include/fwlib32.h's IODBPRM_data."""
     _fields_ = [("prm_val", c_int32), ("dec_val", c_int32)]
 
 
 class IODBPRM(Structure):
+    """include/fwlib32.h's IODBPRM."""
     _fields_ = [("datano", c_int32), ("type", c_int16), ("axis", c_int16),
                 ("info", c_int16), ("unit", c_int16), ("data", IODBPRM_data * MAX_AXIS)]
 
 
 class ODBM(Structure):
+    """include/fwlib32.h's ODBM."""
     _fields_ = [("datano", c_int16), ("dummy", c_int16), ("mcr_val", c_int32),
                 ("dec_val", c_int16)]
 
 
 class PRGDIR3_date(Structure):
+    """include/fwlib32.h's PRGDIR3_date."""
     _fields_ = [(n, c_int16) for n in ("year", "month", "day", "hour", "minute", "dummy")]
 
 
 class PRGDIR3(Structure):
+    """include/fwlib32.h's PRGDIR3."""
     _fields_ = [("number", c_int32), ("length", c_int32), ("page", c_int32),
                 ("comment", c_ubyte * 52), ("mdate", PRGDIR3_date), ("cdate", PRGDIR3_date)]
 
