@@ -12,8 +12,7 @@ platform wheel for any Python 3 (py3-none-linux_<arch>): the package itself
 is pure Python over ctypes, so no Python ABI is involved.
 
 Environment: CARGO (default "cargo"), CARGO_TARGET_DIR as cargo reads it,
-FWLIB32_CARGO_ARGS (extra arguments, e.g. "--target aarch64-unknown-linux-gnu"
-with a matching --plat-name for bdist_wheel), STRIP.
+FWLIB32_CARGO_ARGS (more `cargo build` arguments), STRIP (default "strip").
 """
 
 import json
