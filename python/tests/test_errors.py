@@ -59,14 +59,12 @@ def test_a_silent_cnc_ends_within_the_timeout():
         assert time.monotonic() - start < 30  # bounded: not a speed goal
 
 
-def test_a_dropped_connection_then_reconnect():
-    spec = "off:at=0,duration=0"
-    with simulator() as sim, Cnc(sim.host, sim.port) as cnc:
-        assert cnc.param(6711) == 1234
-    with simulator(args=["--fault", spec]) as sim:
+def test_a_cnc_switched_off():
+    # `off` from the start: connections reset at once, new ones refused.
+    with simulator(args=["--fault", "off:at=0,duration=0"]) as sim:
         with pytest.raises(FocasError) as e:
             Cnc(sim.host, sim.port, timeout=5)
-        assert e.value.name == "EW_SOCKET"
+        assert (e.value.function, e.value.name) == ("cnc_allclibhndl3", "EW_SOCKET")
 
 
 def test_the_error_object():
