@@ -12,7 +12,9 @@ platform wheel for any Python 3 (py3-none-linux_<arch>): the package itself
 is pure Python over ctypes, so no Python ABI is involved.
 
 Environment: CARGO (default "cargo"), CARGO_TARGET_DIR as cargo reads it,
-FWLIB32_CARGO_ARGS (more `cargo build` arguments), STRIP (default "strip").
+FWLIB32_CARGO_ARGS (more `cargo build` arguments: "--target
+aarch64-unknown-linux-gnu" cross-builds), FWLIB32_PLAT (the wheel's platform
+tag then, "linux_aarch64"), STRIP (default "strip").
 """
 
 import json
@@ -106,7 +108,8 @@ class BdistWheel(bdist_wheel):
 
     def get_tag(self):
         _, _, plat = super().get_tag()
-        return "py3", "none", plat
+        # A cross build (FWLIB32_CARGO_ARGS="--target ...") names its platform.
+        return "py3", "none", os.environ.get("FWLIB32_PLAT", plat)
 
 
 setup(cmdclass={"build_py": BuildPy, "bdist_wheel": BdistWheel}, distclass=BinaryDistribution)
