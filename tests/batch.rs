@@ -70,7 +70,8 @@ const NOT_ON_A_HANDLE: &[&str] = &[
 #[test]
 fn every_batchable_call_batched_equals_the_call_alone() {
     let lib = toolchain::cdylib();
-    let probe_exe = probe::build(&root(), &toolchain::scratch("batch-probe"));
+    let probe_dir = toolchain::scratch("batch-probe"); // removed when the test ends
+    let probe_exe = probe::build(&root(), &probe_dir);
     let words = cases::words();
     let (mut took, mut refused) = (BTreeSet::new(), BTreeSet::new());
     let mut differ = Vec::new();

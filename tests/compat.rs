@@ -356,7 +356,8 @@ type Measured = BTreeMap<String, Vec<Option<Answered>>>;
 
 fn measure() -> Measured {
     let lib = toolchain::cdylib();
-    let probe_exe = probe::build(&root(), &toolchain::scratch("compat-probe"));
+    let probe_dir = toolchain::scratch("compat-probe"); // removed when the test ends
+    let probe_exe = probe::build(&root(), &probe_dir);
     let extra: Vec<cases::Word> = EXTRA
         .iter()
         .map(|(word, args)| cases::Word {

@@ -30,10 +30,8 @@ fn vector_files() -> Vec<PathBuf> {
 #[test]
 fn oracle_vectors_replay() {
     let lib = toolchain::cdylib();
-    let probe_exe = probe::build(
-        &toolchain::manifest_dir(),
-        &toolchain::scratch("oracle-probe"),
-    );
+    let probe_dir = toolchain::scratch("oracle-probe"); // removed when the test ends
+    let probe_exe = probe::build(&toolchain::manifest_dir(), &probe_dir);
     // ORACLE_ONLY=cnc_rdparam,cnc_modal replays those files alone.
     let only: Vec<String> = std::env::var("ORACLE_ONLY")
         .map(|s| s.split(',').map(String::from).collect())
