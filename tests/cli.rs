@@ -381,3 +381,61 @@ fn the_host_comes_from_focas_host() {
     let j: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(j["program"], 1234);
 }
+
+/// `focas ARGS...` with no host or port from the environment.
+fn bare(args: &[&str]) -> Output {
+    toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+        .env_remove("FOCAS_HOST")
+        .env_remove("FOCAS_PORT")
+        .args(args)
+        .output()
+        .expect("run focas")
+}
+
+fn success(o: &Output) -> String {
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{:?}: {err}", o.status);
+    assert!(err.is_empty(), "{err}");
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+#[test]
+fn host_port_in_the_host_and_options_anywhere() {
+    let s = sim();
+    let at = format!("127.0.0.1:{}", s.port());
+    // The port in --host; the options after the subcommand.
+    let t = success(&bare(&["-H", &at, "status"]));
+    assert!(t.contains("program    O1234"), "{t}");
+    let t = success(&bare(&["status", "-H", &at, "-t", "5", "--json"]));
+    assert_eq!(serde_json::from_str::<Value>(&t).unwrap()["program"], 1234);
+    let port = s.port().to_string();
+    let t = success(&bare(&["prog", "ls", "-H", "127.0.0.1", "-p", &port]));
+    assert!(t.contains("O1234"), "{t}");
+    // The port in --host wins over --port.
+    let t = success(&bare(&["-p", "1", "pos", "--host", &at]));
+    assert!(t.starts_with("axis "), "{t}");
+    // FOCAS_HOST with a port.
+    let o = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+        .env("FOCAS_HOST", &at)
+        .env_remove("FOCAS_PORT")
+        .args(["param", "6711"])
+        .output()
+        .unwrap();
+    assert_eq!(success(&o), "6711  2word  1234\n");
+    // A bad port is a usage error, echoed.
+    let o = bare(&["-H", "127.0.0.1:80x", "status"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("\"80x\""));
+}
+
+#[test]
+fn an_ipv6_host_with_its_port() {
+    let s = Simulator::start(Profile::default(), "[::1]:0").expect("a simulator on ::1");
+    s.set_elapsed(Duration::ZERO);
+    let at = format!("[::1]:{}", s.port());
+    let t = success(&bare(&["--host", &at, "--json", "status"]));
+    assert_eq!(serde_json::from_str::<Value>(&t).unwrap()["program"], 1234);
+    let port = s.port().to_string();
+    let t = success(&bare(&["info", "-H", "::1", "-p", &port]));
+    assert!(t.contains(&format!("[::1]:{port}")), "{t}");
+}

@@ -34,20 +34,21 @@ use std::time::Duration;
     name = "focas",
     version,
     about = "Read a FANUC CNC over FOCAS2 Ethernet",
-    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  FOCAS_HOST=10.0.0.5 focas --json pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc\n  focas compat ./my-adapter"
+    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  focas status -H 10.0.0.5:8193 --json\n  FOCAS_HOST=10.0.0.5 focas pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc\n  focas compat ./my-adapter"
 )]
 struct Cli {
-    /// The CNC's host name or address (every command but compat)
-    #[arg(long, short = 'H', env = "FOCAS_HOST")]
-    host: Option<String>,
-    /// FOCAS2 TCP port
-    #[arg(long, short = 'p', env = "FOCAS_PORT", default_value_t = fwlib32::native::DEFAULT_PORT)]
+    /// The CNC: a host name or address, with its port if not --port's
+    /// (cnc1, 10.0.0.5:8193, ::1, [::1]:8193); every command but compat
+    #[arg(long, short = 'H', env = "FOCAS_HOST", global = true, value_parser = host_port)]
+    host: Option<HostPort>,
+    /// FOCAS2 TCP port (a port in --host wins)
+    #[arg(long, short = 'p', env = "FOCAS_PORT", global = true, default_value_t = fwlib32::native::DEFAULT_PORT)]
     port: u16,
     /// Seconds to wait for each answer (0: for ever)
-    #[arg(long, short = 't', default_value_t = 10.0, value_parser = seconds)]
+    #[arg(long, short = 't', global = true, default_value_t = 10.0, value_parser = seconds)]
     timeout: f64,
     /// The CNC path to read (default 1)
-    #[arg(long)]
+    #[arg(long, global = true, value_parser = clap::value_parser!(u16).range(1..))]
     path: Option<u16>,
     /// Print JSON (stable keys) instead of text
     #[arg(long, global = true)]
@@ -118,6 +119,62 @@ enum Command {
     },
 }
 
+/// A `--host` value: the host, and the port it names if any.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct HostPort {
+    host: String,
+    port: Option<u16>,
+}
+
+impl HostPort {
+    /// `host:port` for [`Cnc::connect`], IPv6 addresses in brackets.
+    fn addr(&self, default_port: u16) -> String {
+        let port = self.port.unwrap_or(default_port);
+        if self.host.contains(':') {
+            format!("[{}]:{port}", self.host)
+        } else {
+            format!("{}:{port}", self.host)
+        }
+    }
+}
+
+/// `cnc1`, `cnc1:8193`, `10.0.0.5:8193`, `::1` (an IPv6 address alone),
+/// `[::1]`, `[::1]:8193`.
+fn host_port(s: &str) -> Result<HostPort, String> {
+    let s = s.trim();
+    let bad_port = |p: &str| format!("{p:?} in {s:?} is not a TCP port (1 to 65535)");
+    let port = |p: &str| match p.parse::<u16>() {
+        Ok(n) if n > 0 => Ok(Some(n)),
+        _ => Err(bad_port(p)),
+    };
+    let (host, port) = if let Some(rest) = s.strip_prefix('[') {
+        let (host, tail) = rest
+            .split_once(']')
+            .ok_or_else(|| format!("{s:?}: an IPv6 address in brackets needs its ']'"))?;
+        match tail {
+            "" => (host, None),
+            t => match t.strip_prefix(':') {
+                Some(p) => (host, port(p)?),
+                None => return Err(format!("{s:?}: expected :PORT after ']'")),
+            },
+        }
+    } else {
+        match s.split_once(':') {
+            // Two colons or more: an IPv6 address without a port.
+            Some((_, rest)) if rest.contains(':') => (s, None),
+            Some((host, p)) => (host, port(p)?),
+            None => (s, None),
+        }
+    };
+    if host.is_empty() {
+        return Err(format!("{s:?} names no host"));
+    }
+    Ok(HostPort {
+        host: host.to_string(),
+        port,
+    })
+}
+
 fn seconds(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v.is_finite() && (0.0..=86400.0).contains(&v) => Ok(v),
@@ -134,11 +191,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
             )
             .exit()
     };
-    let addr = if host.contains(':') && !host.starts_with('[') {
-        format!("[{host}]:{}", cli.port)
-    } else {
-        format!("{host}:{}", cli.port)
-    };
+    let addr = host.addr(cli.port);
     let at = |e| Fail::Focas(addr.clone(), e);
     let cnc = Cnc::connect(&addr, Duration::from_secs_f64(cli.timeout)).map_err(at)?;
     if let Some(p) = cli.path {
@@ -193,6 +246,38 @@ fn main() -> ExitCode {
         Err(f) => {
             eprintln!("focas: {f}");
             ExitCode::from(1)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hosts_with_and_without_ports() {
+        let hp = |h: &str, p: Option<u16>| HostPort {
+            host: h.to_string(),
+            port: p,
+        };
+        assert_eq!(host_port("cnc1"), Ok(hp("cnc1", None)));
+        assert_eq!(host_port("10.0.0.5:18193"), Ok(hp("10.0.0.5", Some(18193))));
+        assert_eq!(host_port("::1"), Ok(hp("::1", None)));
+        assert_eq!(host_port("[::1]"), Ok(hp("::1", None)));
+        assert_eq!(host_port("[fe80::1]:8193"), Ok(hp("fe80::1", Some(8193))));
+        assert_eq!(hp("::1", Some(9)).addr(8193), "[::1]:9");
+        assert_eq!(hp("cnc1", None).addr(8193), "cnc1:8193");
+        for bad in [
+            "",
+            ":8193",
+            "cnc1:",
+            "cnc1:x",
+            "cnc1:0",
+            "cnc1:70000",
+            "[::1",
+            "[::1]x",
+        ] {
+            assert!(host_port(bad).is_err(), "{bad:?}");
         }
     }
 }
