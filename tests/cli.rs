@@ -225,7 +225,9 @@ fn pmc() {
         (j["area"].as_str(), j["value"].as_bool()),
         (Some("R"), Some(false))
     );
-    fails(run_port(s.port(), &["pmc", "Q1"]), &["no PMC area \"Q\""]);
+    let o = run_port(s.port(), &["pmc", "Q1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no PMC area \"Q\""));
 }
 
 #[test]
@@ -279,7 +281,9 @@ fn programs() {
         run_port(s.port(), &["prog", "get", "4242"]),
         &["cnc_upload3", "EW_"],
     );
-    fails(run_port(s.port(), &["prog", "put", "x.nc"]), &["x.nc"]);
+    let o = run_port(s.port(), &["prog", "put", "x.nc"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("x.nc"));
     fails(
         run_port(s.port(), &["prog", "rm", "4242"]),
         &["cnc_delete", "EW_DATA"],
@@ -438,4 +442,40 @@ fn an_ipv6_host_with_its_port() {
     let port = s.port().to_string();
     let t = success(&bare(&["info", "-H", "::1", "-p", &port]));
     assert!(t.contains(&format!("[::1]:{port}")), "{t}");
+}
+
+/// A port nobody listens on.
+fn dead_port() -> u16 {
+    let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    l.local_addr().unwrap().port()
+}
+
+#[test]
+fn arguments_are_checked_before_connecting() {
+    // The CNC is down: a bad argument is still a usage error (exit 2)
+    // that names the argument, not EW_SOCKET.
+    let port = dead_port();
+    for (args, says) in [
+        (&["pmc", "D1OO"][..], "\"D1OO\" is not an address"),
+        (&["pmc", "Q1"][..], "no PMC area \"Q\""),
+        (&["pmc", "D5..D1"][..], "ends before it starts"),
+        (&["macro", "500=abc"][..], "500=abc"),
+        (
+            &["prog", "put", "/nonexistent/O1.nc"][..],
+            "/nonexistent/O1.nc",
+        ),
+        (&["prog", "get", "x"][..], "'x'"),
+        (&["status", "--path", "0"][..], "--path"),
+    ] {
+        let o = run_port(port, args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.starts_with("error: "), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err:?} lacks {says:?}");
+        assert!(err.contains("--help"), "{args:?}: {err}");
+        assert!(!err.contains("EW_SOCKET"), "{args:?}: {err}");
+        assert!(o.stdout.is_empty());
+    }
+    // A good one reaches the (dead) CNC: EW_SOCKET, exit 1.
+    fails(run_port(port, &["pmc", "D100"]), &["EW_SOCKET"]);
 }

@@ -88,11 +88,13 @@ enum Command {
     /// A custom macro variable; N=V writes it (V a number, or "vacant")
     Macro {
         /// N, or N=V to write
-        spec: String,
+        #[arg(value_parser = data::parse_macro)]
+        spec: data::MacroSpec,
     },
     /// PMC data: ADDR (D100), a range (D100..D120) or a bit (R0.3)
     Pmc {
-        address: String,
+        #[arg(value_parser = data::parse_pmc)]
+        address: data::PmcSpec,
         /// Element type of a range
         #[arg(long = "type", short = 'T', value_enum, default_value_t = data::PmcKind::Byte)]
         kind: data::PmcKind,
@@ -205,8 +207,8 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Alarms { history } => show::alarms(&cnc, history, json),
         Command::Param { number, axis } => data::param(&cnc, false, number, axis, json),
         Command::Diag { number, axis } => data::param(&cnc, true, number, axis, json),
-        Command::Macro { spec } => data::macro_var(&cnc, &spec, json),
-        Command::Pmc { address, kind } => data::pmc(&cnc, &address, kind, json),
+        Command::Macro { spec } => data::macro_var(&cnc, spec, json),
+        Command::Pmc { address, kind } => data::pmc(&cnc, address, kind, json),
         Command::Prog(p) => prog::run(&cnc, p, json),
         Command::Watch { interval, count } => watch::run(&cnc, interval, count, json),
         Command::Compat { .. } => unreachable!("compat needs no CNC: main runs it"),

@@ -13,9 +13,42 @@ pub enum Prog {
     /// Upload program N, to FILE or stdout
     Get { number: u32, file: Option<PathBuf> },
     /// Download FILE (punch format: %, O<number> ..., %) to the CNC's memory
-    Put { file: PathBuf },
+    Put {
+        #[arg(value_parser = read_program)]
+        file: ProgFile,
+    },
     /// Delete program N
     Rm { number: u16 },
+}
+
+/// A program file to download, read before connecting.
+#[derive(Debug, Clone)]
+pub struct ProgFile {
+    pub path: PathBuf,
+    pub text: Vec<u8>,
+    /// The O number of its first block, if it has one.
+    pub number: Option<u32>,
+}
+
+/// Reads FILE (a usage error when it cannot be read).
+fn read_program(s: &str) -> Result<ProgFile, String> {
+    let path = PathBuf::from(s);
+    let text = std::fs::read(&path).map_err(|e| format!("{s}: {e}"))?;
+    let number = program_number(&text);
+    Ok(ProgFile { path, text, number })
+}
+
+/// The number of `O1234 (...)` (or ISO `:1234`), the first block after
+/// the leading `%`.
+pub fn program_number(text: &[u8]) -> Option<u32> {
+    let text = String::from_utf8_lossy(text);
+    let first = text
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && *l != "%")?;
+    let rest = first.strip_prefix(['O', 'o', ':'])?;
+    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    digits.parse().ok()
 }
 
 pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
@@ -34,19 +67,19 @@ pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
     }
 }
 
-fn put(cnc: &Cnc, file: &std::path::Path, json: bool) -> Result<(), Fail> {
-    let text = std::fs::read(file).map_err(|e| Fail::Other(format!("{}: {e}", file.display())))?;
+fn put(cnc: &Cnc, f: &ProgFile, json: bool) -> Result<(), Fail> {
+    let (file, text) = (&f.path, &f.text);
     let bar = ProgressBar::new(text.len() as u64);
     bar.set_style(
         ProgressStyle::with_template("{msg} {bar:30} {bytes}/{total_bytes}")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
     bar.set_message(file.display().to_string());
-    let r = cnc.put_program(&text, |n| bar.set_position(n as u64));
+    let r = cnc.put_program(text, |n| bar.set_position(n as u64));
     bar.finish_and_clear();
     r?;
     if json {
-        json_line(&json!({ "file": file, "bytes": text.len() }))
+        json_line(&json!({ "file": file, "number": f.number, "bytes": text.len() }))
     } else {
         print(&format!(
             "{}: {} bytes downloaded\n",
@@ -136,5 +169,19 @@ fn get(cnc: &Cnc, number: u32, file: Option<PathBuf>, json: bool) -> Result<(), 
             let nl = if text.ends_with('\n') { "" } else { "\n" };
             print(&format!("{text}{nl}"))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn program_numbers() {
+        assert_eq!(program_number(b"%\nO4242 (X)\nM30\n%"), Some(4242));
+        assert_eq!(program_number(b"\r\n%\r\n:0012\r\n%"), Some(12));
+        assert_eq!(program_number(b"O1"), Some(1));
+        assert_eq!(program_number(b"%\nG00 X1.\n%"), None);
+        assert_eq!(program_number(b""), None);
     }
 }
