@@ -355,11 +355,59 @@ fn an_absent_parameter_is_the_cncs_ew_number() {
         &["cnc_rdparam", "EW_NUMBER (3)"],
     );
     assert!(e.contains(&format!("127.0.0.1:{}", s.port())), "{e}");
-    let e = fails(
-        run_port(s.port(), &["--json", "macro", "1=5"]),
-        &["cnc_wrmacro"],
-    );
+    let e = fails(run_port(s.port(), &["macro", "1=5"]), &["cnc_wrmacro"]);
     assert!(e.contains("EW_NUMBER"), "{e}");
+}
+
+/// With --json: exit status `code`, nothing on stderr, and one JSON
+/// object on stdout, `{"error": {...}}`.
+fn json_fails(o: Output, code: i32) -> Value {
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(code), "{err}");
+    assert!(err.is_empty(), "{err}");
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(out.lines().count(), 1, "{out}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert!(
+        j["error"]["message"]
+            .as_str()
+            .is_some_and(|m| !m.is_empty()),
+        "{j}"
+    );
+    j["error"].clone()
+}
+
+#[test]
+fn json_errors_are_json_on_stdout() {
+    let s = sim();
+    let e = json_fails(run_port(s.port(), &["--json", "macro", "1=5"]), 1);
+    assert_eq!(e["function"], "cnc_wrmacro");
+    assert_eq!(e["ew"], "EW_NUMBER");
+    assert_eq!(e["code"], 3);
+    assert_eq!(e["host"], format!("127.0.0.1:{}", s.port()));
+    assert!(e["meaning"].as_str().unwrap().contains("number"), "{e}");
+    let m = e["message"].as_str().unwrap();
+    assert!(m.contains("cnc_wrmacro: EW_NUMBER (3)"), "{m}");
+    // --json after the subcommand, a dead CNC.
+    let e = json_fails(run_port(dead_port(), &["status", "--json"]), 1);
+    assert_eq!(
+        (e["function"].as_str(), e["code"].as_i64(), e["ew"].as_str()),
+        (Some("cnc_allclibhndl3"), Some(-16), Some("EW_SOCKET"))
+    );
+    // A bad command line: exit 2.
+    let e = json_fails(run_port(dead_port(), &["pmc", "Q1", "--json"]), 2);
+    assert_eq!(e["usage"], true);
+    assert!(
+        e["message"].as_str().unwrap().contains("no PMC area"),
+        "{e}"
+    );
+    let e = json_fails(bare(&["--json", "status"]), 2);
+    assert!(e["message"].as_str().unwrap().contains("--host"), "{e}");
+    // compat, on a file that is not a program.
+    let readme = toolchain::manifest_dir().join("README.md");
+    let e = json_fails(bare(&["compat", "--json", readme.to_str().unwrap()]), 1);
+    assert!(e["message"].as_str().unwrap().contains("README.md"), "{e}");
+    assert!(e.get("function").is_none(), "{e}");
 }
 
 #[test]

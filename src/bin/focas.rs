@@ -186,12 +186,10 @@ fn seconds(s: &str) -> Result<f64, String> {
 
 fn run(cli: Cli) -> Result<(), Fail> {
     let Some(host) = &cli.host else {
-        Cli::command()
-            .error(
-                clap::error::ErrorKind::MissingRequiredArgument,
-                "the following required argument was not provided: --host <HOST> (or FOCAS_HOST)",
-            )
-            .exit()
+        return Err(Fail::Usage(Box::new(Cli::command().error(
+            clap::error::ErrorKind::MissingRequiredArgument,
+            "the following required argument was not provided: --host <HOST> (or FOCAS_HOST)",
+        ))));
     };
     let addr = host.addr(cli.port);
     let at = |e| Fail::Focas(addr.clone(), e);
@@ -231,25 +229,51 @@ fn main() -> ExitCode {
         eprintln!("focas: internal error: {msg}");
         std::process::exit(70);
     }));
-    let cli = Cli::parse();
+    // Before parsing: a bad command line with --json is JSON too.
+    let json = std::env::args_os().skip(1).any(|a| a == "--json");
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => return finish(Err(Fail::Usage(Box::new(e))), json),
+    };
+    let json = cli.json;
     if let Command::Compat { file } = &cli.command {
-        return match compat::run(file, cli.json) {
-            Ok(0) | Err(Fail::Quiet) => ExitCode::SUCCESS,
+        return match compat::run(file, json) {
+            Ok(0) => ExitCode::SUCCESS,
             Ok(_problems) => ExitCode::from(1),
-            Err(f) => {
-                eprintln!("focas: {f}");
-                ExitCode::from(1)
-            }
+            Err(f) => finish(Err(f), json),
         };
     }
-    match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(Fail::Quiet) => ExitCode::SUCCESS,
-        Err(f) => {
-            eprintln!("focas: {f}");
-            ExitCode::from(1)
+    finish(run(cli), json)
+}
+
+/// The exit status of a command, its failure reported: one line on
+/// stderr, or with `--json` one JSON object on stdout.
+fn finish(r: Result<(), Fail>, json: bool) -> ExitCode {
+    let f = match r {
+        Ok(()) | Err(Fail::Quiet) => return ExitCode::SUCCESS,
+        Err(f) => f,
+    };
+    let code = match &f {
+        Fail::Usage(e) => {
+            use clap::error::ErrorKind::*;
+            let shown = matches!(
+                e.kind(),
+                DisplayHelp | DisplayVersion | DisplayHelpOnMissingArgumentOrSubcommand
+            );
+            if shown || !json {
+                e.exit()
+            }
+            2
         }
+        _ => 1,
+    };
+    if json {
+        // Stdout closed: nothing more to say.
+        let _ = out::json_line(&out::fail_json(&f));
+    } else {
+        eprintln!("focas: {f}");
     }
+    ExitCode::from(code)
 }
 
 #[cfg(test)]

@@ -15,6 +15,8 @@ pub enum Fail {
     Other(String),
     /// Stdout was closed (`focas pos | head`): stop, successfully.
     Quiet,
+    /// A bad command line (exit status 2).
+    Usage(Box<clap::Error>),
 }
 
 impl From<Error> for Fail {
@@ -30,8 +32,49 @@ impl fmt::Display for Fail {
             Fail::Api(e) => write!(f, "{e}"),
             Fail::Other(m) => f.write_str(m),
             Fail::Quiet => Ok(()),
+            Fail::Usage(e) => f.write_str(&usage_line(e)),
         }
     }
+}
+
+/// clap's message, on one line, without its `error: `.
+fn usage_line(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let line = text.lines().next().unwrap_or_default();
+    line.strip_prefix("error: ").unwrap_or(line).to_string()
+}
+
+/// A failure as `{"error": {...}}`: always its `message` (the line the
+/// text output prints); for a FOCAS call also `host`, `function`, `code`
+/// (the EW_* number), `ew` (its name), `meaning` and `detail` (the
+/// cnc_getdtailerr words, when not zero); `usage: true` for a bad command
+/// line.
+pub fn fail_json(f: &Fail) -> Json {
+    let mut o = serde_json::Map::new();
+    o.insert("message".into(), json!(f.to_string()));
+    let (host, e) = match f {
+        Fail::Focas(addr, e) => (Some(addr), Some(e)),
+        Fail::Api(e) => (None, Some(e)),
+        Fail::Usage(_) => {
+            o.insert("usage".into(), json!(true));
+            (None, None)
+        }
+        _ => (None, None),
+    };
+    if let Some(h) = host {
+        o.insert("host".into(), json!(h));
+    }
+    if let Some(e) = e {
+        let (code, d) = (e.code(), e.detail());
+        o.insert("function".into(), json!(e.call()));
+        o.insert("code".into(), json!(code.0));
+        o.insert("ew".into(), json!(code.name()));
+        o.insert("meaning".into(), json!(code.meaning()));
+        if d != Default::default() {
+            o.insert("detail".into(), json!([d.err_no, d.err_dtno]));
+        }
+    }
+    json!({ "error": o })
 }
 
 /// Writes `text` to stdout (a closed stdout ends the command quietly).
