@@ -305,7 +305,104 @@ fn watch() {
         assert_eq!(j["status"]["mode"]["name"], "MEM");
         assert_eq!(j["axes"][1]["absolute"], -42.5);
         assert!(j["time"].as_f64().unwrap() > 0.0);
+        assert_eq!(j["available"], true);
     }
+}
+
+#[test]
+fn watch_a_dead_cnc_keeps_trying() {
+    let port = dead_port();
+    let o = run_port(port, &["watch", "-n", "3", "-i", "0"]);
+    assert_eq!(o.status.code(), Some(1), "the last sample failed");
+    assert!(
+        o.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let t = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(t.lines().count(), 3, "{t}");
+    for l in t.lines() {
+        assert!(l.starts_with("UNAVAILABLE  "), "{t}");
+        assert!(l.contains("cnc_allclibhndl3: EW_SOCKET (-16)"), "{t}");
+        assert!(l.contains("refused"), "{t}");
+    }
+    let o = run_port(port, &["watch", "-n", "2", "-i", "0", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let t = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(t.lines().count(), 2, "{t}");
+    for l in t.lines() {
+        let j: Value = serde_json::from_str(l).unwrap();
+        assert_eq!(j["available"], false, "{j}");
+        assert_eq!(j["error"]["ew"], "EW_SOCKET", "{j}");
+        assert!(j["time"].is_string() || j["time"].is_number(), "{j}");
+    }
+}
+
+/// A focas-sim process on `listen`, killed when dropped.
+struct SimProcess(std::process::Child);
+
+impl SimProcess {
+    fn start(listen: &str) -> SimProcess {
+        use std::io::BufRead;
+        let mut c = toolchain::target_command(env!("CARGO_BIN_EXE_focas-sim"))
+            .args(["--listen", listen])
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("start focas-sim");
+        let mut line = String::new();
+        std::io::BufReader::new(c.stdout.take().unwrap())
+            .read_line(&mut line)
+            .unwrap();
+        assert_eq!(line.trim(), format!("listening on {listen}"));
+        SimProcess(c)
+    }
+}
+
+impl Drop for SimProcess {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+#[test]
+fn watch_shows_an_outage_and_reconnects() {
+    use std::io::BufRead;
+    let listen = format!("127.0.0.1:{}", dead_port());
+    let sim = SimProcess::start(&listen);
+    // --count bounds the run should the test fail half-way.
+    let mut watch = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+        .env_remove("FOCAS_HOST")
+        .args(["watch", "-H", &listen, "-t", "2", "-i", "0.1", "-n", "600"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(watch.stdout.take().unwrap()).lines();
+    let mut seen = Vec::new();
+    let mut next_until = |want: &dyn Fn(&str) -> bool| loop {
+        let l = lines
+            .next()
+            .unwrap_or_else(|| panic!("watch ended: {seen:?}"))
+            .unwrap();
+        seen.push(l.clone());
+        if want(&l) {
+            return l;
+        }
+    };
+    let values = |l: &str| l.contains("X") && !l.starts_with("UNAVAILABLE");
+    next_until(&values);
+    drop(sim);
+    let down = next_until(&|l: &str| l.starts_with("UNAVAILABLE"));
+    assert!(down.contains("EW_SOCKET"), "{down}");
+    assert!(down.contains(&listen), "{down}");
+    let _sim = SimProcess::start(&listen);
+    let back = next_until(&values);
+    assert!(back.contains("O1234"), "{back}");
+    assert!(watch.try_wait().unwrap().is_none(), "watch still runs");
+    let _ = watch.kill();
+    let _ = watch.wait();
 }
 
 #[test]

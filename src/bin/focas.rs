@@ -102,7 +102,9 @@ enum Command {
     /// NC programs: ls, get N [FILE], put FILE, rm N
     #[command(subcommand)]
     Prog(prog::Prog),
-    /// A live status line (one JSON object per line with --json)
+    /// A live status line (one JSON object per line with --json); keeps
+    /// going while the CNC is unavailable (a line saying why) and connects
+    /// again
     Watch {
         /// Seconds between samples
         #[arg(long, short = 'i', default_value_t = 1.0, value_parser = seconds)]
@@ -193,7 +195,19 @@ fn run(cli: Cli) -> Result<(), Fail> {
     };
     let addr = host.addr(cli.port);
     let at = |e| Fail::Focas(addr.clone(), e);
-    let cnc = Cnc::connect(&addr, Duration::from_secs_f64(cli.timeout)).map_err(at)?;
+    let timeout = Duration::from_secs_f64(cli.timeout);
+    if let Command::Watch { interval, count } = cli.command {
+        let t = watch::Target {
+            addr: &addr,
+            timeout,
+            path: cli.path,
+        };
+        return watch::run(&t, interval, count, cli.json).map_err(|f| match f {
+            Fail::Api(e) => at(e),
+            f => f,
+        });
+    }
+    let cnc = Cnc::connect(&addr, timeout).map_err(at)?;
     if let Some(p) = cli.path {
         cnc.set_path(p).map_err(at)?;
     }
@@ -208,8 +222,9 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Macro { spec } => data::macro_var(&cnc, spec, json),
         Command::Pmc { address, kind } => data::pmc(&cnc, address, kind, json),
         Command::Prog(p) => prog::run(&cnc, p, json),
-        Command::Watch { interval, count } => watch::run(&cnc, interval, count, json),
-        Command::Compat { .. } => unreachable!("compat needs no CNC: main runs it"),
+        Command::Watch { .. } | Command::Compat { .. } => {
+            unreachable!("watch connects itself, compat needs no CNC")
+        }
     };
     r.map_err(|f| match f {
         Fail::Api(e) => at(e),
@@ -251,6 +266,7 @@ fn main() -> ExitCode {
 fn finish(r: Result<(), Fail>, json: bool) -> ExitCode {
     let f = match r {
         Ok(()) | Err(Fail::Quiet) => return ExitCode::SUCCESS,
+        Err(Fail::Shown) => return ExitCode::from(1),
         Err(f) => f,
     };
     let code = match &f {

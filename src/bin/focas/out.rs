@@ -15,6 +15,8 @@ pub enum Fail {
     Other(String),
     /// Stdout was closed (`focas pos | head`): stop, successfully.
     Quiet,
+    /// Shown already (watch's last sample): exit status 1, nothing more.
+    Shown,
     /// A bad command line (exit status 2).
     Usage(Box<clap::Error>),
 }
@@ -31,7 +33,7 @@ impl fmt::Display for Fail {
             Fail::Focas(addr, e) => write!(f, "{addr}: {e}"),
             Fail::Api(e) => write!(f, "{e}"),
             Fail::Other(m) => f.write_str(m),
-            Fail::Quiet => Ok(()),
+            Fail::Quiet | Fail::Shown => Ok(()),
             Fail::Usage(e) => f.write_str(&usage_line(e)),
         }
     }
