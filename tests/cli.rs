@@ -269,24 +269,53 @@ fn programs() {
         ok(&s, &["prog", "get", "4242"]).trim_end(),
         "%\nO4242 (FROM THE CLI)\nG00 X1.\nM30\n%"
     );
-    // The same number again: the CNC refuses it (EW_DATA).
+    // The same number again: the CNC refuses it (EW_DATA), said in words.
     fails(
         run_port(s.port(), &["prog", "put", new.to_str().unwrap()]),
-        &["cnc_dwnend3", "EW_DATA"],
+        &["O4242 already in memory", "cnc_dwnend3: EW_DATA (5)"],
+    );
+    let e = json_fails(
+        run_port(s.port(), &["--json", "prog", "put", new.to_str().unwrap()]),
+        1,
+    );
+    assert_eq!(
+        e["reason"]
+            .as_str()
+            .map(|r| r.starts_with("O4242 already in memory")),
+        Some(true),
+        "{e}"
+    );
+    assert_eq!(
+        (e["function"].as_str(), e["code"].as_i64()),
+        (Some("cnc_dwnend3"), Some(5))
     );
     assert_eq!(json(&s, &["prog", "rm", "4242"])["deleted"], 4242);
+    // A program without an O number refused: the bare code.
+    let anon = dir.join("anon.nc");
+    std::fs::write(&anon, "%\nG00 X1.\nM30\n%").unwrap();
+    let e = fails(
+        run_port(s.port(), &["prog", "put", anon.to_str().unwrap()]),
+        &["cnc_dwnend3"],
+    );
+    assert!(!e.contains("already"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 
     fails(
         run_port(s.port(), &["prog", "get", "4242"]),
-        &["cnc_upload3", "EW_"],
+        &["O4242 not found", "cnc_upload3: EW_DATA (5)"],
     );
+    // The running program cannot go.
+    fails(
+        run_port(s.port(), &["prog", "rm", "1234"]),
+        &["O1234 is running", "cnc_delete: EW_BUSY (-1)"],
+    );
+    assert!(ok(&s, &["prog", "ls"]).contains("O1234"));
     let o = run_port(s.port(), &["prog", "put", "x.nc"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("x.nc"));
     fails(
         run_port(s.port(), &["prog", "rm", "4242"]),
-        &["cnc_delete", "EW_DATA"],
+        &["O4242 not found", "cnc_delete: EW_DATA (5)"],
     );
 }
 

@@ -194,7 +194,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
         ))));
     };
     let addr = host.addr(cli.port);
-    let at = |e| Fail::Focas(addr.clone(), e);
+    let at = |e| Fail::Api(e).at(&addr);
     let timeout = Duration::from_secs_f64(cli.timeout);
     if let Command::Watch { interval, count } = cli.command {
         let t = watch::Target {
@@ -202,10 +202,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
             timeout,
             path: cli.path,
         };
-        return watch::run(&t, interval, count, cli.json).map_err(|f| match f {
-            Fail::Api(e) => at(e),
-            f => f,
-        });
+        return watch::run(&t, interval, count, cli.json).map_err(|f| f.at(&addr));
     }
     let cnc = Cnc::connect(&addr, timeout).map_err(at)?;
     if let Some(p) = cli.path {
@@ -226,10 +223,7 @@ fn run(cli: Cli) -> Result<(), Fail> {
             unreachable!("watch connects itself, compat needs no CNC")
         }
     };
-    r.map_err(|f| match f {
-        Fail::Api(e) => at(e),
-        f => f,
-    })
+    r.map_err(|f| f.at(&addr))
 }
 
 fn main() -> ExitCode {

@@ -7,10 +7,13 @@ use std::io::{ErrorKind, Write};
 
 /// Why the command failed.
 pub enum Fail {
-    /// A FOCAS call failed, at this address.
-    Focas(String, Error),
+    /// A FOCAS call failed, at this address; what it means, in words,
+    /// where the call and its context tell.
+    Focas(String, Option<String>, Error),
     /// A FOCAS call failed (the address is added by main).
     Api(Error),
+    /// A FOCAS call failed, and what that means here (`O1234 is running`).
+    Refused(String, Error),
     /// Bad input or a local problem (a file ...).
     Other(String),
     /// Stdout was closed (`focas pos | head`): stop, successfully.
@@ -27,11 +30,24 @@ impl From<Error> for Fail {
     }
 }
 
+impl Fail {
+    /// The failure of a call made for `addr`.
+    pub fn at(self, addr: &str) -> Fail {
+        match self {
+            Fail::Api(e) => Fail::Focas(addr.to_string(), None, e),
+            Fail::Refused(why, e) => Fail::Focas(addr.to_string(), Some(why), e),
+            f => f,
+        }
+    }
+}
+
 impl fmt::Display for Fail {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Fail::Focas(addr, e) => write!(f, "{addr}: {e}"),
+            Fail::Focas(addr, None, e) => write!(f, "{addr}: {e}"),
+            Fail::Focas(addr, Some(why), e) => write!(f, "{addr}: {why}: {e}"),
             Fail::Api(e) => write!(f, "{e}"),
+            Fail::Refused(why, e) => write!(f, "{why}: {e}"),
             Fail::Other(m) => f.write_str(m),
             Fail::Quiet | Fail::Shown => Ok(()),
             Fail::Usage(e) => f.write_str(&usage_line(e)),
@@ -48,15 +64,25 @@ fn usage_line(e: &clap::Error) -> String {
 
 /// A failure as `{"error": {...}}`: always its `message` (the line the
 /// text output prints); for a FOCAS call also `host`, `function`, `code`
-/// (the EW_* number), `ew` (its name), `meaning` and `detail` (the
+/// (the EW_* number), `ew` (its name), `meaning`, `reason` (what it means
+/// here, in words, when known: "O1234 is running") and `detail` (the
 /// cnc_getdtailerr words, when not zero); `usage: true` for a bad command
 /// line.
 pub fn fail_json(f: &Fail) -> Json {
     let mut o = serde_json::Map::new();
     o.insert("message".into(), json!(f.to_string()));
     let (host, e) = match f {
-        Fail::Focas(addr, e) => (Some(addr), Some(e)),
+        Fail::Focas(addr, why, e) => {
+            if let Some(w) = why {
+                o.insert("reason".into(), json!(w));
+            }
+            (Some(addr), Some(e))
+        }
         Fail::Api(e) => (None, Some(e)),
+        Fail::Refused(why, e) => {
+            o.insert("reason".into(), json!(why));
+            (None, Some(e))
+        }
         Fail::Usage(_) => {
             o.insert("usage".into(), json!(true));
             (None, None)

@@ -1,7 +1,7 @@
 //! prog ls | get N [FILE] | put FILE | rm N.
 
 use crate::out::{Fail, Table, json_line, print};
-use fwlib32::native::Cnc;
+use fwlib32::native::{Cnc, Error, Ew, Run};
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::{Value as Json, json};
 use std::path::PathBuf;
@@ -57,13 +57,84 @@ pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
         Prog::Get { number, file } => get(cnc, number, file, json),
         Prog::Put { file } => put(cnc, &file, json),
         Prog::Rm { number } => {
-            cnc.delete_program(number)?;
+            cnc.delete_program(number)
+                .map_err(|e| explain(cnc, e, Some(u32::from(number)), Op::Rm))?;
             if json {
                 json_line(&json!({ "deleted": number }))
             } else {
                 print(&format!("O{number} deleted\n"))
             }
         }
+    }
+}
+
+/// What was refused.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Op {
+    Get,
+    Put,
+    Rm,
+}
+
+/// `O0012`, as the CNC shows it.
+fn o(n: u32) -> String {
+    format!("O{n:04}")
+}
+
+/// The CNC's refusal `e` of `op` on program `number`, in words where the
+/// call and what the CNC says now tell what happened (the directory, what
+/// runs); else the bare error. The EW code stays in the message.
+fn explain(cnc: &Cnc, e: Error, number: Option<u32>, op: Op) -> Fail {
+    let Some(n) = number else {
+        return Fail::Api(e);
+    };
+    let code = e.code();
+    // Is O`n` in the directory? (None: the directory cannot be read.)
+    let stored = || {
+        cnc.programs()
+            .ok()
+            .map(|ps| ps.iter().any(|p| i64::from(p.number) == i64::from(n)))
+    };
+    let why = match (op, code) {
+        (Op::Put, Ew::DATA) if stored() == Some(true) => Some(format!(
+            "{} already in memory (focas prog rm {n} first)",
+            o(n)
+        )),
+        (Op::Put, Ew::OVRFLOW) => Some(format!("no room for {} in the CNC's memory", o(n))),
+        (Op::Put, Ew::PROT) => Some("the CNC's program memory is protected".to_string()),
+        (Op::Get | Op::Rm, Ew::DATA | Ew::NUMBER) if stored() == Some(false) => {
+            Some(format!("{} not found", o(n)))
+        }
+        (Op::Rm, Ew::PROT) => Some(format!("{} is protected", o(n))),
+        (Op::Rm, Ew::BUSY) => {
+            let mut b = cnc.batch();
+            let (st, ex) = (b.status(), b.execution());
+            b.send().ok().and_then(|mut r| {
+                let (s, x) = (r.take(st).ok()?, r.take(ex).ok()?);
+                let me = i64::from(n);
+                let runs = s.run != Run::Reset;
+                if i64::from(x.program) == me {
+                    Some(if runs {
+                        format!("{} is running", o(n))
+                    } else {
+                        format!("{} is selected", o(n))
+                    })
+                } else if i64::from(x.main_program) == me {
+                    Some(if runs {
+                        format!("{} is running (the main program)", o(n))
+                    } else {
+                        format!("{} is selected (the main program)", o(n))
+                    })
+                } else {
+                    None
+                }
+            })
+        }
+        _ => None,
+    };
+    match why {
+        Some(w) => Fail::Refused(w, e),
+        None => Fail::Api(e),
     }
 }
 
@@ -77,7 +148,7 @@ fn put(cnc: &Cnc, f: &ProgFile, json: bool) -> Result<(), Fail> {
     bar.set_message(file.display().to_string());
     let r = cnc.put_program(text, |n| bar.set_position(n as u64));
     bar.finish_and_clear();
-    r?;
+    r.map_err(|e| explain(cnc, e, f.number, Op::Put))?;
     if json {
         json_line(&json!({ "file": file, "number": f.number, "bytes": text.len() }))
     } else {
@@ -150,7 +221,7 @@ fn get(cnc: &Cnc, number: u32, file: Option<PathBuf>, json: bool) -> Result<(), 
         bar.set_position(n);
     });
     bar.finish_and_clear();
-    let text = text?;
+    let text = text.map_err(|e| explain(cnc, e, Some(number), Op::Get))?;
     match (file, json) {
         (Some(f), json) => {
             std::fs::write(&f, &text).map_err(|e| Fail::Other(format!("{}: {e}", f.display())))?;

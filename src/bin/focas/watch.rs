@@ -75,10 +75,7 @@ pub fn run(t: &Target, interval: f64, count: Option<u64>, json: bool) -> Result<
                         cnc = None;
                     }
                 }
-                let f = match f {
-                    Fail::Api(e) => Fail::Focas(t.addr.to_string(), e),
-                    f => f,
-                };
+                let f = f.at(t.addr);
                 if json {
                     let mut o = json!({ "time": now(), "available": false });
                     o["error"] = fail_json(&f)["error"].take();
