@@ -16,11 +16,16 @@ fn sim() -> Simulator {
     s
 }
 
+/// The time zone the commands run in (a POSIX rule: no tz database
+/// needed), UTC+05:30: times show its offset.
+const TZ: &str = "IST-5:30";
+
 /// `focas --host 127.0.0.1 --port PORT ARGS...`.
 fn run_port(port: u16, args: &[&str]) -> Output {
     toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .env_remove("FOCAS_HOST")
         .env_remove("FOCAS_PORT")
+        .env("TZ", TZ)
         .args([
             "--host",
             "127.0.0.1",
@@ -147,7 +152,9 @@ fn alarms_and_history() {
         "{t}"
     );
     let h = json(&s, &["alarms", "--history"]);
-    assert_eq!(h["history"][1]["time"], "2024-05-16T09:12:05");
+    // RFC 3339: the CNC's clock, in this computer's zone.
+    assert_eq!(h["history"][1]["time"], "2024-05-16T09:12:05+05:30");
+    assert_eq!(h["history"][1]["code"], "OT0500");
     assert_eq!(h["history"][2]["message"], "SERVO ALARM: EXCESS ERROR");
     assert_eq!(ok(&s, &["alarms"]), "no alarm\n");
     assert_eq!(json(&s, &["alarms"])["alarms"], serde_json::json!([]));
@@ -239,6 +246,7 @@ fn programs() {
     let j = json(&s, &["prog", "ls"]);
     assert_eq!(j["programs"][1]["comment"], "POCKET DEMO");
     assert_eq!(j["programs"][0]["number"], 100);
+    assert_eq!(j["programs"][1]["modified"], "2024-05-17T13:45:00+05:30");
 
     let text = ok(&s, &["prog", "get", "1234"]);
     assert!(
@@ -333,7 +341,10 @@ fn watch() {
         let j: Value = serde_json::from_str(l).unwrap();
         assert_eq!(j["status"]["mode"]["name"], "MEM");
         assert_eq!(j["axes"][1]["absolute"], -42.5);
-        assert!(j["time"].as_f64().unwrap() > 0.0);
+        // 2026-11-28T11:22:06.123+05:30
+        let t = j["time"].as_str().unwrap();
+        assert!(t.ends_with("+05:30") && t.len() == 29, "{t}");
+        assert_eq!((&t[4..5], &t[10..11], &t[19..20]), ("-", "T", "."), "{t}");
         assert_eq!(j["available"], true);
     }
 }
@@ -363,7 +374,7 @@ fn watch_a_dead_cnc_keeps_trying() {
         let j: Value = serde_json::from_str(l).unwrap();
         assert_eq!(j["available"], false, "{j}");
         assert_eq!(j["error"]["ew"], "EW_SOCKET", "{j}");
-        assert!(j["time"].is_string() || j["time"].is_number(), "{j}");
+        assert!(j["time"].as_str().unwrap().ends_with("+05:30"), "{j}");
     }
 }
 

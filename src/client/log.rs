@@ -11,7 +11,6 @@ use std::fs::File;
 use std::io::Write;
 use std::sync::OnceLock;
 use std::sync::atomic::{AtomicU8, Ordering};
-use std::time::SystemTime;
 
 static LEVEL: AtomicU8 = AtomicU8::new(0);
 static SINK: Mutex<Option<Sink>> = Mutex::new(None);
@@ -79,13 +78,11 @@ pub fn write(level: u8, msg: std::fmt::Arguments<'_>) {
     if !enabled(level) {
         return;
     }
-    let now = SystemTime::now()
-        .duration_since(SystemTime::UNIX_EPOCH)
-        .unwrap_or_default();
+    // RFC 3339 with this computer's UTC offset, to the millisecond.
+    let now = jiff::Zoned::now();
     let line = format!(
-        "{}.{:03} pid {} {}\n",
-        now.as_secs(),
-        now.subsec_millis(),
+        "{} pid {} {}\n",
+        now.strftime("%Y-%m-%dT%H:%M:%S%.3f%:z"),
         std::process::id(),
         msg
     );

@@ -1,16 +1,8 @@
 //! param, diag, macro, pmc.
 
-use crate::out::{Fail, Table, json_line, num, print};
+use crate::out::{Fail, Table, json_line, num, print, to_json};
 use fwlib32::native::{Cnc, Decimal, Kind, PmcArea, Value};
 use serde_json::{Value as Json, json};
-
-fn value_json(v: Value) -> Json {
-    match v {
-        Value::Bits(b) => json!(b),
-        Value::Int(i) => json!(i),
-        Value::Real(d) => num(d),
-    }
-}
 
 /// `focas param N [--axis A]` / `focas diag N [--axis A]`: the item with
 /// the names of the axes its values belong to, in one batch.
@@ -37,11 +29,10 @@ pub fn param(
         (true, None) => (1..=p.values.len()).map(|i| axis_name(&names, i)).collect(),
     };
     if json {
-        let values: Vec<Json> = p.values.iter().map(|v| value_json(*v)).collect();
-        return json_line(&json!({
-            "number": number, "kind": p.kind.to_string(), "per_axis": p.per_axis,
-            "axis": axis, "values": values, "axes": axis_names,
-        }));
+        let mut o = to_json(&p);
+        o["axis"] = json!(axis);
+        o["axes"] = json!(axis_names);
+        return json_line(&o);
     }
     let mut t = Table::new(if axis_names.is_empty() {
         &[true, false, true]

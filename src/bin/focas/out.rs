@@ -172,12 +172,20 @@ impl Table {
     }
 }
 
+/// A value of the API as JSON (its `serde::Serialize`).
+pub fn to_json<T: serde::Serialize>(v: &T) -> Json {
+    // Only maps with keys that are not strings fail: the API has none.
+    serde_json::to_value(v).unwrap_or(Json::Null)
+}
+
+/// Now, RFC 3339 with this computer's UTC offset, to the millisecond.
+pub fn now() -> String {
+    jiff::Zoned::now()
+        .strftime("%Y-%m-%dT%H:%M:%S%.3f%:z")
+        .to_string()
+}
+
 /// A decimal as a JSON number (the nearest double: 125.0, -0.125).
 pub fn num(d: Decimal) -> Json {
     json!(d.to_f64())
-}
-
-/// A status word: `{"code": 1, "name": "MEM"}`.
-pub fn word(code: i16, name: impl fmt::Display) -> Json {
-    json!({ "code": code, "name": name.to_string() })
 }

@@ -1,9 +1,9 @@
 //! prog ls | get N [FILE] | put FILE | rm N.
 
-use crate::out::{Fail, Table, json_line, print};
+use crate::out::{Fail, Table, json_line, print, to_json};
 use fwlib32::native::{Cnc, Error, Ew, Run};
 use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::{Value as Json, json};
+use serde_json::json;
 use std::path::PathBuf;
 
 #[derive(clap::Subcommand)]
@@ -18,7 +18,7 @@ pub enum Prog {
         file: ProgFile,
     },
     /// Delete program N
-    Rm { number: u16 },
+    Rm { number: u32 },
 }
 
 /// A program file to download, read before connecting.
@@ -58,7 +58,7 @@ pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
         Prog::Put { file } => put(cnc, &file, json),
         Prog::Rm { number } => {
             cnc.delete_program(number)
-                .map_err(|e| explain(cnc, e, Some(u32::from(number)), Op::Rm))?;
+                .map_err(|e| explain(cnc, e, Some(number), Op::Rm))?;
             if json {
                 json_line(&json!({ "deleted": number }))
             } else {
@@ -93,7 +93,7 @@ fn explain(cnc: &Cnc, e: Error, number: Option<u32>, op: Op) -> Fail {
     let stored = || {
         cnc.programs()
             .ok()
-            .map(|ps| ps.iter().any(|p| i64::from(p.number) == i64::from(n)))
+            .map(|ps| ps.iter().any(|p| p.number == n))
     };
     let why = match (op, code) {
         (Op::Put, Ew::DATA) if stored() == Some(true) => Some(format!(
@@ -111,15 +111,14 @@ fn explain(cnc: &Cnc, e: Error, number: Option<u32>, op: Op) -> Fail {
             let (st, ex) = (b.status(), b.execution());
             b.send().ok().and_then(|mut r| {
                 let (s, x) = (r.take(st).ok()?, r.take(ex).ok()?);
-                let me = i64::from(n);
                 let runs = s.run != Run::Reset;
-                if i64::from(x.program) == me {
+                if x.program == n {
                     Some(if runs {
                         format!("{} is running", o(n))
                     } else {
                         format!("{} is selected", o(n))
                     })
-                } else if i64::from(x.main_program) == me {
+                } else if x.main_program == n {
                     Some(if runs {
                         format!("{} is running (the main program)", o(n))
                     } else {
@@ -163,19 +162,7 @@ fn put(cnc: &Cnc, f: &ProgFile, json: bool) -> Result<(), Fail> {
 fn ls(cnc: &Cnc, json: bool) -> Result<(), Fail> {
     let progs = cnc.programs()?;
     if json {
-        let list: Vec<Json> = progs
-            .iter()
-            .map(|p| {
-                let m = p.modified.map(|t| {
-                    format!(
-                        "{:04}-{:02}-{:02}T{:02}:{:02}:{:02}",
-                        t.year, t.month, t.day, t.hour, t.minute, t.second
-                    )
-                });
-                json!({ "number": p.number, "length": p.length, "comment": p.comment, "modified": m })
-            })
-            .collect();
-        return json_line(&json!({ "programs": list }));
+        return json_line(&json!({ "programs": to_json(&progs) }));
     }
     if progs.is_empty() {
         return print("no program\n");
@@ -202,10 +189,7 @@ fn get(cnc: &Cnc, number: u32, file: Option<PathBuf>, json: bool) -> Result<(), 
     let total = cnc
         .programs()
         .ok()
-        .and_then(|ps| {
-            ps.into_iter()
-                .find(|p| p.number as i64 == i64::from(number))
-        })
+        .and_then(|ps| ps.into_iter().find(|p| p.number == number))
         .map_or(0, |p| p.length.max(0) as u64);
     let bar = ProgressBar::new(total);
     bar.set_style(

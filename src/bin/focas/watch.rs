@@ -1,11 +1,11 @@
 //! watch: a live status line that keeps going through outages.
 
-use crate::out::{Fail, fail_json, json_line, print};
-use crate::show::{alarm_json, axes_json, status_json};
+use crate::out::{Fail, fail_json, json_line, now, print, to_json};
+use crate::show::{axes_json, status_json};
 use fwlib32::native::{Alarm, AxisPosition, Cnc, Error, Execution, Status};
 use serde_json::json;
 use std::io::IsTerminal;
-use std::time::{Duration, SystemTime, UNIX_EPOCH};
+use std::time::Duration;
 
 /// What `watch` connects to.
 pub struct Target<'a> {
@@ -108,21 +108,14 @@ pub fn run(t: &Target, interval: f64, count: Option<u64>, json: bool) -> Result<
     Ok(())
 }
 
-fn now() -> f64 {
-    SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0.0, |d| d.as_secs_f64())
-}
-
 fn show((s, x, axes, alarms): Sample, json: bool, in_place: bool) -> Result<(), Fail> {
     if json {
-        let alarms: Vec<_> = alarms.iter().map(alarm_json).collect();
         return json_line(&json!({
             "time": now(),
             "available": true,
             "status": status_json(&s, &x),
             "axes": axes_json(&axes),
-            "alarms": alarms,
+            "alarms": to_json(&alarms),
         }));
     }
     let pos: Vec<String> = axes
