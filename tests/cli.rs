@@ -383,9 +383,14 @@ struct SimProcess(std::process::Child);
 
 impl SimProcess {
     fn start(listen: &str) -> SimProcess {
+        SimProcess::with(listen, &[])
+    }
+
+    fn with(listen: &str, args: &[&str]) -> SimProcess {
         use std::io::BufRead;
         let mut c = toolchain::target_command(env!("CARGO_BIN_EXE_focas-sim"))
             .args(["--listen", listen])
+            .args(args)
             .stdout(std::process::Stdio::piped())
             .stderr(std::process::Stdio::null())
             .spawn()
@@ -663,4 +668,43 @@ fn arguments_are_checked_before_connecting() {
     }
     // A good one reaches the (dead) CNC: EW_SOCKET, exit 1.
     fails(run_port(port, &["pmc", "D100"]), &["EW_SOCKET"]);
+}
+
+/// A slow CNC (focas-sim --delay-ms: each frame of a transfer late): a
+/// program of 14 KB goes down and comes back whole; on a terminal (a pty,
+/// by script(1)) the bar shows the rate and the time left.
+#[test]
+fn a_slow_transfer_with_rate_and_eta() {
+    let listen = format!("127.0.0.1:{}", dead_port());
+    let _sim = SimProcess::with(&listen, &["--delay-ms", "20"]);
+    let dir = toolchain::scratch("cli-slow-transfer");
+    let file = dir.join("O4343.nc");
+    let mut text = String::from("%\nO4343 (SLOW)\n");
+    for i in 0..500 {
+        text.push_str(&format!("N{i} G01 X{i}.000 F1000\n"));
+    }
+    text.push_str("M30\n%");
+    std::fs::write(&file, &text).unwrap();
+    let focas = env!("CARGO_BIN_EXE_focas");
+    let cmd = format!("{focas} -H {listen} prog put {}", file.display());
+    let o = std::process::Command::new("script")
+        .args(["-q", "-e", "-c", &cmd, "/dev/null"])
+        .env("TERM", "xterm")
+        .env_remove("FOCAS_HOST")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("script(1), from util-linux");
+    let tty = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{tty}");
+    assert!(
+        tty.contains(&format!("{} bytes downloaded", text.len())),
+        "{tty}"
+    );
+    assert!(
+        tty.contains("B/s") && tty.contains("ETA "),
+        "no rate or ETA: {tty:?}"
+    );
+    let back = success(&bare(&["-H", &listen, "prog", "get", "4343"]));
+    assert_eq!(back.trim_end(), text.trim_end());
+    let _ = std::fs::remove_dir_all(&dir);
 }

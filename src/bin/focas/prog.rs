@@ -68,6 +68,21 @@ pub fn run(cnc: &Cnc, p: Prog, json: bool) -> Result<(), Fail> {
     }
 }
 
+/// A transfer's bar on stderr (only on a terminal): bytes of the total,
+/// rate, time left.
+const BAR: &str = "{msg} [{bar:30}] {bytes}/{total_bytes} {bytes_per_sec} ETA {eta}";
+
+fn progress(total: u64, msg: String) -> ProgressBar {
+    let bar = ProgressBar::new(total);
+    bar.set_style(
+        ProgressStyle::with_template(BAR)
+            .unwrap_or_else(|_| ProgressStyle::default_bar())
+            .progress_chars("=> "),
+    );
+    bar.set_message(msg);
+    bar
+}
+
 /// What was refused.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Op {
@@ -139,13 +154,14 @@ fn explain(cnc: &Cnc, e: Error, number: Option<u32>, op: Op) -> Fail {
 
 fn put(cnc: &Cnc, f: &ProgFile, json: bool) -> Result<(), Fail> {
     let (file, text) = (&f.path, &f.text);
-    let bar = ProgressBar::new(text.len() as u64);
-    bar.set_style(
-        ProgressStyle::with_template("{msg} {bar:30} {bytes}/{total_bytes}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
-    bar.set_message(file.display().to_string());
-    let r = cnc.put_program(text, |n| bar.set_position(n as u64));
+    let bar = progress(text.len() as u64, file.display().to_string());
+    let r = cnc.put_program(text, |n| {
+        bar.set_position(n as u64);
+        if n == text.len() {
+            // All sent: the CNC may still be taking it in.
+            bar.set_message(format!("{}: sent, waiting for the CNC", file.display()));
+        }
+    });
     bar.finish_and_clear();
     r.map_err(|e| explain(cnc, e, f.number, Op::Put))?;
     if json {
@@ -191,12 +207,7 @@ fn get(cnc: &Cnc, number: u32, file: Option<PathBuf>, json: bool) -> Result<(), 
         .ok()
         .and_then(|ps| ps.into_iter().find(|p| p.number == number))
         .map_or(0, |p| p.length.max(0) as u64);
-    let bar = ProgressBar::new(total);
-    bar.set_style(
-        ProgressStyle::with_template("O{msg} {bar:30} {bytes}/{total_bytes}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
-    bar.set_message(number.to_string());
+    let bar = progress(total, o(number));
     let text = cnc.program_with(number, |n| {
         let n = n as u64;
         if n > bar.length().unwrap_or(0) {
@@ -230,6 +241,11 @@ fn get(cnc: &Cnc, number: u32, file: Option<PathBuf>, json: bool) -> Result<(), 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_bar_template_is_valid() {
+        assert!(ProgressStyle::with_template(BAR).is_ok());
+    }
 
     #[test]
     fn program_numbers() {
