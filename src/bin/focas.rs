@@ -2,18 +2,21 @@
 //! (the crate's Rust API, `fwlib32::native`).
 //!
 //! Text output is aligned for people; `--json` prints one JSON object (one
-//! per line for `watch`) whose keys are stable. Any failure prints one line
-//! on stderr (`focas: HOST:PORT: FUNCTION: EW_CODE (n): meaning ...`) and
-//! exits with status 1; usage errors exit with 2. `compat` reads a file,
-//! not a CNC: it exits with 1 when the program uses a function this
-//! library lacks.
+//! per line for `watch`) whose keys are stable, times RFC 3339. Any failure
+//! prints one line on stderr (`focas: HOST:PORT: FUNCTION: EW_CODE (n):
+//! meaning ...`, with what it means in words where the call and the CNC
+//! tell: `O1234 is running`), with `--json` one object on stdout
+//! (`{"error": {...}}`), and exits with status 1; usage errors (checked
+//! before connecting) exit with 2. `watch` goes on through outages.
+//! `compat` reads a file, not a CNC: it exits with 1 when the program uses
+//! a function this library lacks.
 
+#[path = "focas/binary.rs"]
+mod binary;
 #[path = "focas/compat.rs"]
 mod compat;
 #[path = "focas/data.rs"]
 mod data;
-#[path = "focas/elf.rs"]
-mod elf;
 #[path = "focas/out.rs"]
 mod out;
 #[path = "focas/prog.rs"]
@@ -114,11 +117,14 @@ enum Command {
         count: Option<u64>,
     },
     /// Will a program built for FANUC's library work with this one? Lists
-    /// the FOCAS functions it uses: supported, answering EW_VERSION as
-    /// FANUC's Ethernet library, or missing (exit status 1, as for a file
-    /// that cannot load this library). No CNC needed
+    /// the FOCAS functions it uses (linked, or named in its strings for a
+    /// program that loads the library with dlopen; or in a source file):
+    /// supported, answering EW_VERSION as FANUC's Ethernet library, or
+    /// missing (exit status 1, as for a file that cannot load this library).
+    /// No CNC needed
     Compat {
-        /// The program or shared library (ELF) that calls FOCAS functions
+        /// The program or shared library (ELF), or a source file (.c, .cs,
+        /// .java, .py, .go ...), that calls FOCAS functions
         file: std::path::PathBuf,
     },
 }
