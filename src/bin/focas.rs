@@ -40,9 +40,16 @@ use std::time::Duration;
     after_help = "Examples:\n  focas --host 10.0.0.5 status\n  focas status -H 10.0.0.5:8193 --json\n  FOCAS_HOST=10.0.0.5 focas pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc\n  focas compat ./my-adapter"
 )]
 struct Cli {
-    /// The CNC: a host name or address, with its port if not --port's
-    /// (cnc1, 10.0.0.5:8193, ::1, [::1]:8193); every command but compat
-    #[arg(long, short = 'H', env = "FOCAS_HOST", global = true, value_parser = host_port)]
+    /// The CNC: a host name or address, with its port if not --port's.
+    #[arg(
+        long,
+        short = 'H',
+        env = "FOCAS_HOST",
+        global = true,
+        value_parser = host_port,
+        help = "The CNC: a host name or address, with its port if not --port's \
+                (cnc1, 10.0.0.5:8193, ::1, [::1]:8193); every command but compat"
+    )]
     host: Option<HostPort>,
     /// FOCAS2 TCP port (a port in --host wins)
     #[arg(long, short = 'p', env = "FOCAS_PORT", global = true, default_value_t = fwlib32::native::DEFAULT_PORT)]
@@ -102,8 +109,8 @@ enum Command {
         #[arg(long = "type", short = 'T', value_enum, default_value_t = data::PmcKind::Byte)]
         kind: data::PmcKind,
     },
-    /// NC programs: ls, get N [FILE], put FILE, rm N
-    #[command(subcommand)]
+    /// NC programs: ls, get, put, rm.
+    #[command(subcommand, about = "NC programs: ls, get N [FILE], put FILE, rm N")]
     Prog(prog::Prog),
     /// A live status line (one JSON object per line with --json); keeps
     /// going while the CNC is unavailable (a line saying why) and connects

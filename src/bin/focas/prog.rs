@@ -1,4 +1,4 @@
-//! prog ls | get N [FILE] | put FILE | rm N.
+//! `prog ls | get N [FILE] | put FILE | rm N`.
 
 use crate::out::{Fail, Table, json_line, print, to_json};
 use fwlib32::native::{Cnc, Error, Ew, Run};
@@ -12,7 +12,8 @@ pub enum Prog {
     Ls,
     /// Upload program N, to FILE or stdout
     Get { number: u32, file: Option<PathBuf> },
-    /// Download FILE (punch format: %, O<number> ..., %) to the CNC's memory
+    /// Download FILE (punch format: %, `O<number>` ..., %) to the CNC's memory.
+    #[command(about = "Download FILE (punch format: %, O<number> ..., %) to the CNC's memory")]
     Put {
         #[arg(value_parser = read_program)]
         file: ProgFile,
