@@ -366,6 +366,32 @@ fn watch_a_dead_cnc_keeps_trying() {
         assert!(l.contains("cnc_allclibhndl3: EW_SOCKET (-16)"), "{t}");
         assert!(l.contains("refused"), "{t}");
     }
+    // On a terminal (a pty, by script(1)) too: each outage a line of its
+    // own, never glued to a status line.
+    let cmd = format!(
+        "{} -H 127.0.0.1:{port} watch -n 2 -i 0",
+        env!("CARGO_BIN_EXE_focas")
+    );
+    let o = std::process::Command::new("script")
+        .args(["-q", "-e", "-c", &cmd, "/dev/null"])
+        .env("TERM", "xterm")
+        .env_remove("FOCAS_HOST")
+        .env_remove("FOCAS_PORT")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("script(1), from util-linux");
+    assert_eq!(o.status.code(), Some(1));
+    let tty = String::from_utf8_lossy(&o.stdout);
+    let lines: Vec<&str> = tty
+        .split("\r\n")
+        .map(|l| l.trim_start_matches("\r\x1b[2K"))
+        .filter(|l| !l.is_empty())
+        .collect();
+    assert_eq!(lines.len(), 2, "{tty:?}");
+    assert!(
+        lines.iter().all(|l| l.starts_with("UNAVAILABLE  ")),
+        "{tty:?}"
+    );
     let o = run_port(port, &["watch", "-n", "2", "-i", "0", "--json"]);
     assert_eq!(o.status.code(), Some(1));
     let t = String::from_utf8(o.stdout).unwrap();
@@ -656,6 +682,7 @@ fn arguments_are_checked_before_connecting() {
         ),
         (&["prog", "get", "x"][..], "'x'"),
         (&["status", "--path", "0"][..], "--path"),
+        (&["param", "1320", "--axis", "0"][..], "--axis"),
     ] {
         let o = run_port(port, args);
         let err = String::from_utf8_lossy(&o.stderr);

@@ -85,14 +85,14 @@ enum Command {
     Param {
         number: u32,
         /// One axis (1..)
-        #[arg(long, short = 'a')]
+        #[arg(long, short = 'a', value_parser = clap::value_parser!(u16).range(1..))]
         axis: Option<u16>,
     },
     /// A diagnosis item: its value, or one per axis
     Diag {
         number: u32,
         /// One axis (1..)
-        #[arg(long, short = 'a')]
+        #[arg(long, short = 'a', value_parser = clap::value_parser!(u16).range(1..))]
         axis: Option<u16>,
     },
     /// A custom macro variable; N=V writes it (V a number, or "vacant")
