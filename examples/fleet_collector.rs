@@ -36,7 +36,7 @@ const USAGE: &str = "usage: fleet_collector [--from FILE | --spawn N | ADDR...] 
 struct Reading {
     mode: String,
     run: String,
-    program: i32,
+    program: u32,
     sequence: i32,
     feed: i32,
     alarms: Vec<String>,

@@ -281,7 +281,7 @@ fn cnc_allclibhdl3_is_cnc_allclibhndl3_from_c() {
 
 /// A library-only build (`default-features = false`) brings none of the
 /// simulator's or the command line's crates: the client is libc,
-/// parking_lot and thiserror (and what those need).
+/// parking_lot, thiserror and jiff (and what those need).
 #[test]
 fn the_library_alone_needs_no_simulator_crates() {
     let out = run(Command::new(env!("CARGO"))
@@ -307,7 +307,7 @@ fn the_library_alone_needs_no_simulator_crates() {
             "{foreign} in the library-only build: {crates:?}"
         );
     }
-    for needed in ["libc", "parking_lot", "thiserror"] {
+    for needed in ["libc", "parking_lot", "thiserror", "jiff"] {
         assert!(crates.contains(needed), "{needed} missing: {crates:?}");
     }
     assert!(crates.len() <= 16, "{} crates: {crates:?}", crates.len());

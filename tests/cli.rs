@@ -16,11 +16,16 @@ fn sim() -> Simulator {
     s
 }
 
+/// The time zone the commands run in (a POSIX rule: no tz database
+/// needed), UTC+05:30: times show its offset.
+const TZ: &str = "IST-5:30";
+
 /// `focas --host 127.0.0.1 --port PORT ARGS...`.
 fn run_port(port: u16, args: &[&str]) -> Output {
     toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
         .env_remove("FOCAS_HOST")
         .env_remove("FOCAS_PORT")
+        .env("TZ", TZ)
         .args([
             "--host",
             "127.0.0.1",
@@ -147,7 +152,9 @@ fn alarms_and_history() {
         "{t}"
     );
     let h = json(&s, &["alarms", "--history"]);
-    assert_eq!(h["history"][1]["time"], "2024-05-16T09:12:05");
+    // RFC 3339: the CNC's clock, in this computer's zone.
+    assert_eq!(h["history"][1]["time"], "2024-05-16T09:12:05+05:30");
+    assert_eq!(h["history"][1]["code"], "OT0500");
     assert_eq!(h["history"][2]["message"], "SERVO ALARM: EXCESS ERROR");
     assert_eq!(ok(&s, &["alarms"]), "no alarm\n");
     assert_eq!(json(&s, &["alarms"])["alarms"], serde_json::json!([]));
@@ -225,7 +232,9 @@ fn pmc() {
         (j["area"].as_str(), j["value"].as_bool()),
         (Some("R"), Some(false))
     );
-    fails(run_port(s.port(), &["pmc", "Q1"]), &["no PMC area \"Q\""]);
+    let o = run_port(s.port(), &["pmc", "Q1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no PMC area \"Q\""));
 }
 
 #[test]
@@ -237,6 +246,7 @@ fn programs() {
     let j = json(&s, &["prog", "ls"]);
     assert_eq!(j["programs"][1]["comment"], "POCKET DEMO");
     assert_eq!(j["programs"][0]["number"], 100);
+    assert_eq!(j["programs"][1]["modified"], "2024-05-17T13:45:00+05:30");
 
     let text = ok(&s, &["prog", "get", "1234"]);
     assert!(
@@ -267,22 +277,53 @@ fn programs() {
         ok(&s, &["prog", "get", "4242"]).trim_end(),
         "%\nO4242 (FROM THE CLI)\nG00 X1.\nM30\n%"
     );
-    // The same number again: the CNC refuses it (EW_DATA).
+    // The same number again: the CNC refuses it (EW_DATA), said in words.
     fails(
         run_port(s.port(), &["prog", "put", new.to_str().unwrap()]),
-        &["cnc_dwnend3", "EW_DATA"],
+        &["O4242 already in memory", "cnc_dwnend3: EW_DATA (5)"],
+    );
+    let e = json_fails(
+        run_port(s.port(), &["--json", "prog", "put", new.to_str().unwrap()]),
+        1,
+    );
+    assert_eq!(
+        e["reason"]
+            .as_str()
+            .map(|r| r.starts_with("O4242 already in memory")),
+        Some(true),
+        "{e}"
+    );
+    assert_eq!(
+        (e["function"].as_str(), e["code"].as_i64()),
+        (Some("cnc_dwnend3"), Some(5))
     );
     assert_eq!(json(&s, &["prog", "rm", "4242"])["deleted"], 4242);
+    // A program without an O number refused: the bare code.
+    let anon = dir.join("anon.nc");
+    std::fs::write(&anon, "%\nG00 X1.\nM30\n%").unwrap();
+    let e = fails(
+        run_port(s.port(), &["prog", "put", anon.to_str().unwrap()]),
+        &["cnc_dwnend3"],
+    );
+    assert!(!e.contains("already"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 
     fails(
         run_port(s.port(), &["prog", "get", "4242"]),
-        &["cnc_upload3", "EW_"],
+        &["O4242 not found", "cnc_upload3: EW_DATA (5)"],
     );
-    fails(run_port(s.port(), &["prog", "put", "x.nc"]), &["x.nc"]);
+    // The running program cannot go.
+    fails(
+        run_port(s.port(), &["prog", "rm", "1234"]),
+        &["O1234 is running", "cnc_delete: EW_BUSY (-1)"],
+    );
+    assert!(ok(&s, &["prog", "ls"]).contains("O1234"));
+    let o = run_port(s.port(), &["prog", "put", "x.nc"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("x.nc"));
     fails(
         run_port(s.port(), &["prog", "rm", "4242"]),
-        &["cnc_delete", "EW_DATA"],
+        &["O4242 not found", "cnc_delete: EW_DATA (5)"],
     );
 }
 
@@ -300,8 +341,139 @@ fn watch() {
         let j: Value = serde_json::from_str(l).unwrap();
         assert_eq!(j["status"]["mode"]["name"], "MEM");
         assert_eq!(j["axes"][1]["absolute"], -42.5);
-        assert!(j["time"].as_f64().unwrap() > 0.0);
+        // 2026-11-28T11:22:06.123+05:30
+        let t = j["time"].as_str().unwrap();
+        assert!(t.ends_with("+05:30") && t.len() == 29, "{t}");
+        assert_eq!((&t[4..5], &t[10..11], &t[19..20]), ("-", "T", "."), "{t}");
+        assert_eq!(j["available"], true);
     }
+}
+
+#[test]
+fn watch_a_dead_cnc_keeps_trying() {
+    let port = dead_port();
+    let o = run_port(port, &["watch", "-n", "3", "-i", "0"]);
+    assert_eq!(o.status.code(), Some(1), "the last sample failed");
+    assert!(
+        o.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let t = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(t.lines().count(), 3, "{t}");
+    for l in t.lines() {
+        assert!(l.starts_with("UNAVAILABLE  "), "{t}");
+        assert!(l.contains("cnc_allclibhndl3: EW_SOCKET (-16)"), "{t}");
+        assert!(l.contains("refused"), "{t}");
+    }
+    // On a terminal (a pty, by script(1)) too: each outage a line of its
+    // own, never glued to a status line.
+    let cmd = format!(
+        "{} -H 127.0.0.1:{port} watch -n 2 -i 0",
+        env!("CARGO_BIN_EXE_focas")
+    );
+    let o = std::process::Command::new("script")
+        .args(["-q", "-e", "-c", &cmd, "/dev/null"])
+        .env("TERM", "xterm")
+        .env_remove("FOCAS_HOST")
+        .env_remove("FOCAS_PORT")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("script(1), from util-linux");
+    assert_eq!(o.status.code(), Some(1));
+    let tty = String::from_utf8_lossy(&o.stdout);
+    let lines: Vec<&str> = tty
+        .split("\r\n")
+        .map(|l| l.trim_start_matches("\r\x1b[2K"))
+        .filter(|l| !l.is_empty())
+        .collect();
+    assert_eq!(lines.len(), 2, "{tty:?}");
+    assert!(
+        lines.iter().all(|l| l.starts_with("UNAVAILABLE  ")),
+        "{tty:?}"
+    );
+    let o = run_port(port, &["watch", "-n", "2", "-i", "0", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let t = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(t.lines().count(), 2, "{t}");
+    for l in t.lines() {
+        let j: Value = serde_json::from_str(l).unwrap();
+        assert_eq!(j["available"], false, "{j}");
+        assert_eq!(j["error"]["ew"], "EW_SOCKET", "{j}");
+        assert!(j["time"].as_str().unwrap().ends_with("+05:30"), "{j}");
+    }
+}
+
+/// A focas-sim process on `listen`, killed when dropped.
+struct SimProcess(std::process::Child);
+
+impl SimProcess {
+    fn start(listen: &str) -> SimProcess {
+        SimProcess::with(listen, &[])
+    }
+
+    fn with(listen: &str, args: &[&str]) -> SimProcess {
+        use std::io::BufRead;
+        let mut c = toolchain::target_command(env!("CARGO_BIN_EXE_focas-sim"))
+            .args(["--listen", listen])
+            .args(args)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("start focas-sim");
+        let mut line = String::new();
+        std::io::BufReader::new(c.stdout.take().unwrap())
+            .read_line(&mut line)
+            .unwrap();
+        assert_eq!(line.trim(), format!("listening on {listen}"));
+        SimProcess(c)
+    }
+}
+
+impl Drop for SimProcess {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+#[test]
+fn watch_shows_an_outage_and_reconnects() {
+    use std::io::BufRead;
+    let listen = format!("127.0.0.1:{}", dead_port());
+    let sim = SimProcess::start(&listen);
+    // --count bounds the run should the test fail half-way.
+    let mut watch = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+        .env_remove("FOCAS_HOST")
+        .args(["watch", "-H", &listen, "-t", "2", "-i", "0.1", "-n", "600"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = std::io::BufReader::new(watch.stdout.take().unwrap()).lines();
+    let mut seen = Vec::new();
+    let mut next_until = |want: &dyn Fn(&str) -> bool| loop {
+        let l = lines
+            .next()
+            .unwrap_or_else(|| panic!("watch ended: {seen:?}"))
+            .unwrap();
+        seen.push(l.clone());
+        if want(&l) {
+            return l;
+        }
+    };
+    let values = |l: &str| l.contains("X") && !l.starts_with("UNAVAILABLE");
+    next_until(&values);
+    drop(sim);
+    let down = next_until(&|l: &str| l.starts_with("UNAVAILABLE"));
+    assert!(down.contains("EW_SOCKET"), "{down}");
+    assert!(down.contains(&listen), "{down}");
+    let _sim = SimProcess::start(&listen);
+    let back = next_until(&values);
+    assert!(back.contains("O1234"), "{back}");
+    assert!(watch.try_wait().unwrap().is_none(), "watch still runs");
+    let _ = watch.kill();
+    let _ = watch.wait();
 }
 
 #[test]
@@ -351,11 +523,59 @@ fn an_absent_parameter_is_the_cncs_ew_number() {
         &["cnc_rdparam", "EW_NUMBER (3)"],
     );
     assert!(e.contains(&format!("127.0.0.1:{}", s.port())), "{e}");
-    let e = fails(
-        run_port(s.port(), &["--json", "macro", "1=5"]),
-        &["cnc_wrmacro"],
-    );
+    let e = fails(run_port(s.port(), &["macro", "1=5"]), &["cnc_wrmacro"]);
     assert!(e.contains("EW_NUMBER"), "{e}");
+}
+
+/// With --json: exit status `code`, nothing on stderr, and one JSON
+/// object on stdout, `{"error": {...}}`.
+fn json_fails(o: Output, code: i32) -> Value {
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(code), "{err}");
+    assert!(err.is_empty(), "{err}");
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(out.lines().count(), 1, "{out}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert!(
+        j["error"]["message"]
+            .as_str()
+            .is_some_and(|m| !m.is_empty()),
+        "{j}"
+    );
+    j["error"].clone()
+}
+
+#[test]
+fn json_errors_are_json_on_stdout() {
+    let s = sim();
+    let e = json_fails(run_port(s.port(), &["--json", "macro", "1=5"]), 1);
+    assert_eq!(e["function"], "cnc_wrmacro");
+    assert_eq!(e["ew"], "EW_NUMBER");
+    assert_eq!(e["code"], 3);
+    assert_eq!(e["host"], format!("127.0.0.1:{}", s.port()));
+    assert!(e["meaning"].as_str().unwrap().contains("number"), "{e}");
+    let m = e["message"].as_str().unwrap();
+    assert!(m.contains("cnc_wrmacro: EW_NUMBER (3)"), "{m}");
+    // --json after the subcommand, a dead CNC.
+    let e = json_fails(run_port(dead_port(), &["status", "--json"]), 1);
+    assert_eq!(
+        (e["function"].as_str(), e["code"].as_i64(), e["ew"].as_str()),
+        (Some("cnc_allclibhndl3"), Some(-16), Some("EW_SOCKET"))
+    );
+    // A bad command line: exit 2.
+    let e = json_fails(run_port(dead_port(), &["pmc", "Q1", "--json"]), 2);
+    assert_eq!(e["usage"], true);
+    assert!(
+        e["message"].as_str().unwrap().contains("no PMC area"),
+        "{e}"
+    );
+    let e = json_fails(bare(&["--json", "status"]), 2);
+    assert!(e["message"].as_str().unwrap().contains("--host"), "{e}");
+    // compat, on a file that is not a program.
+    let readme = toolchain::manifest_dir().join("README.md");
+    let e = json_fails(bare(&["compat", "--json", readme.to_str().unwrap()]), 1);
+    assert!(e["message"].as_str().unwrap().contains("README.md"), "{e}");
+    assert!(e.get("function").is_none(), "{e}");
 }
 
 #[test]
@@ -380,4 +600,138 @@ fn the_host_comes_from_focas_host() {
     assert!(o.status.success());
     let j: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(j["program"], 1234);
+}
+
+/// `focas ARGS...` with no host or port from the environment.
+fn bare(args: &[&str]) -> Output {
+    toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+        .env_remove("FOCAS_HOST")
+        .env_remove("FOCAS_PORT")
+        .args(args)
+        .output()
+        .expect("run focas")
+}
+
+fn success(o: &Output) -> String {
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{:?}: {err}", o.status);
+    assert!(err.is_empty(), "{err}");
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+#[test]
+fn host_port_in_the_host_and_options_anywhere() {
+    let s = sim();
+    let at = format!("127.0.0.1:{}", s.port());
+    // The port in --host; the options after the subcommand.
+    let t = success(&bare(&["-H", &at, "status"]));
+    assert!(t.contains("program    O1234"), "{t}");
+    let t = success(&bare(&["status", "-H", &at, "-t", "5", "--json"]));
+    assert_eq!(serde_json::from_str::<Value>(&t).unwrap()["program"], 1234);
+    let port = s.port().to_string();
+    let t = success(&bare(&["prog", "ls", "-H", "127.0.0.1", "-p", &port]));
+    assert!(t.contains("O1234"), "{t}");
+    // The port in --host wins over --port.
+    let t = success(&bare(&["-p", "1", "pos", "--host", &at]));
+    assert!(t.starts_with("axis "), "{t}");
+    // FOCAS_HOST with a port.
+    let o = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
+        .env("FOCAS_HOST", &at)
+        .env_remove("FOCAS_PORT")
+        .args(["param", "6711"])
+        .output()
+        .unwrap();
+    assert_eq!(success(&o), "6711  2word  1234\n");
+    // A bad port is a usage error, echoed.
+    let o = bare(&["-H", "127.0.0.1:80x", "status"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("\"80x\""));
+}
+
+#[test]
+fn an_ipv6_host_with_its_port() {
+    let s = Simulator::start(Profile::default(), "[::1]:0").expect("a simulator on ::1");
+    s.set_elapsed(Duration::ZERO);
+    let at = format!("[::1]:{}", s.port());
+    let t = success(&bare(&["--host", &at, "--json", "status"]));
+    assert_eq!(serde_json::from_str::<Value>(&t).unwrap()["program"], 1234);
+    let port = s.port().to_string();
+    let t = success(&bare(&["info", "-H", "::1", "-p", &port]));
+    assert!(t.contains(&format!("[::1]:{port}")), "{t}");
+}
+
+/// A port nobody listens on.
+fn dead_port() -> u16 {
+    let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    l.local_addr().unwrap().port()
+}
+
+#[test]
+fn arguments_are_checked_before_connecting() {
+    // The CNC is down: a bad argument is still a usage error (exit 2)
+    // that names the argument, not EW_SOCKET.
+    let port = dead_port();
+    for (args, says) in [
+        (&["pmc", "D1OO"][..], "\"D1OO\" is not an address"),
+        (&["pmc", "Q1"][..], "no PMC area \"Q\""),
+        (&["pmc", "D5..D1"][..], "ends before it starts"),
+        (&["macro", "500=abc"][..], "500=abc"),
+        (
+            &["prog", "put", "/nonexistent/O1.nc"][..],
+            "/nonexistent/O1.nc",
+        ),
+        (&["prog", "get", "x"][..], "'x'"),
+        (&["status", "--path", "0"][..], "--path"),
+        (&["param", "1320", "--axis", "0"][..], "--axis"),
+    ] {
+        let o = run_port(port, args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.starts_with("error: "), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err:?} lacks {says:?}");
+        assert!(err.contains("--help"), "{args:?}: {err}");
+        assert!(!err.contains("EW_SOCKET"), "{args:?}: {err}");
+        assert!(o.stdout.is_empty());
+    }
+    // A good one reaches the (dead) CNC: EW_SOCKET, exit 1.
+    fails(run_port(port, &["pmc", "D100"]), &["EW_SOCKET"]);
+}
+
+/// A slow CNC (focas-sim --delay-ms: each frame of a transfer late): a
+/// program of 14 KB goes down and comes back whole; on a terminal (a pty,
+/// by script(1)) the bar shows the rate and the time left.
+#[test]
+fn a_slow_transfer_with_rate_and_eta() {
+    let listen = format!("127.0.0.1:{}", dead_port());
+    let _sim = SimProcess::with(&listen, &["--delay-ms", "20"]);
+    let dir = toolchain::scratch("cli-slow-transfer");
+    let file = dir.join("O4343.nc");
+    let mut text = String::from("%\nO4343 (SLOW)\n");
+    for i in 0..500 {
+        text.push_str(&format!("N{i} G01 X{i}.000 F1000\n"));
+    }
+    text.push_str("M30\n%");
+    std::fs::write(&file, &text).unwrap();
+    let focas = env!("CARGO_BIN_EXE_focas");
+    let cmd = format!("{focas} -H {listen} prog put {}", file.display());
+    let o = std::process::Command::new("script")
+        .args(["-q", "-e", "-c", &cmd, "/dev/null"])
+        .env("TERM", "xterm")
+        .env_remove("FOCAS_HOST")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("script(1), from util-linux");
+    let tty = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{tty}");
+    assert!(
+        tty.contains(&format!("{} bytes downloaded", text.len())),
+        "{tty}"
+    );
+    assert!(
+        tty.contains("B/s") && tty.contains("ETA "),
+        "no rate or ETA: {tty:?}"
+    );
+    let back = success(&bare(&["-H", &listen, "prog", "get", "4343"]));
+    assert_eq!(back.trim_end(), text.trim_end());
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -84,6 +84,8 @@ fn the_c_examples_use_only_supported_functions() {
         assert!(text.contains("cnc_allclibhndl3  "), "{name}: {text}");
         assert!(text.contains(" 0 missing\n"), "{name}: {text}");
         assert!(!text.contains("MISSING"), "{name}: {text}");
+        // In the user's words: how a function is made is ours to know.
+        assert!(!text.contains("described"), "{name}: {text}");
 
         let (code, j) = compat_json(&exe);
         assert_eq!(code, Some(0));
@@ -342,4 +344,137 @@ fn the_readme_example_is_true() {
     );
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(String::from_utf8_lossy(&o.stdout), want);
+}
+
+/// A program that loads the library itself (dlopen) and looks its
+/// functions up by name (dlsym) links none of them: compat finds their
+/// names in its strings, and says they are only mentioned.
+#[test]
+fn a_dlopen_program_names_its_functions_in_its_strings() {
+    let dir = toolchain::scratch("compat-dlopen");
+    let src = dir.join("dl.c");
+    std::fs::write(
+        &src,
+        "#include <dlfcn.h>\n\
+         #include <stdio.h>\n\
+         typedef short (*alloc_t)(const char *, unsigned short, long, unsigned short *);\n\
+         typedef short (*stat_t)(unsigned short, void *);\n\
+         int main(void) {\n\
+             void *lib = dlopen(\"libfwlib32.so.1\", RTLD_NOW);\n\
+             if (!lib) { fprintf(stderr, \"%s\\n\", dlerror()); return 1; }\n\
+             alloc_t alloc = (alloc_t)dlsym(lib, \"cnc_allclibhndl3\");\n\
+             stat_t stat = (stat_t)dlsym(lib, \"cnc_statinfo\");\n\
+             void *exec = dlsym(lib, \"cnc_rdexecpt\");\n\
+             void *dwn = dlsym(lib, \"cnc_dwnstart3_f\");\n\
+             printf(\"%p %p %p %p\\n\", (void *)alloc, (void *)stat, exec, dwn);\n\
+             return 0;\n\
+         }\n",
+    )
+    .unwrap();
+    let exe = dir.join("dl");
+    cc(&[path(&src), "-o", path(&exe), "-ldl"]);
+    let o = focas(&["compat", path(&exe)]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "one is missing: {text}");
+    assert!(o.stderr.is_empty());
+    assert!(
+        text.contains("program, 0 FOCAS functions linked, 4 named in its strings\n"),
+        "{text}"
+    );
+    assert!(text.contains("only mentioned"), "{text}");
+    let line = |f: &str| {
+        text.lines()
+            .find(|l| l.starts_with(&format!("{f} ")))
+            .unwrap_or_else(|| panic!("no line for {f}: {text}"))
+            .to_string()
+    };
+    assert!(line("cnc_allclibhndl3").contains("supported"), "{text}");
+    assert!(line("cnc_statinfo").contains("supported"), "{text}");
+    assert!(line("cnc_rdexecpt").contains("EW_VERSION"), "{text}");
+    assert!(line("cnc_dwnstart3_f").contains("MISSING"), "{text}");
+    assert!(text.contains("dlsym"), "{text}");
+    assert!(!text.contains("symbol lookup error"), "{text}");
+
+    let (code, j) = compat_json(&exe);
+    assert_eq!(code, Some(1));
+    let f = j["functions"].as_array().unwrap();
+    assert_eq!(f.len(), 4, "{j}");
+    assert!(f.iter().all(|f| f["linked"] == false), "{j}");
+    assert_eq!(
+        (j["supported"].clone(), j["missing"].clone()),
+        (2.into(), 1.into())
+    );
+}
+
+/// Source files: the FOCAS names they contain, whatever the language.
+#[test]
+fn source_files_list_the_focas_names_they_call() {
+    let dir = toolchain::scratch("compat-sources");
+    for (file, text, lang, names, code) in [
+        (
+            "poll.py",
+            "import ctypes\nlib = ctypes.cdll.LoadLibrary(\"libfwlib32.so\")\n\
+             h = ctypes.c_ushort()\ncnc_handle = None  # not a function\n\
+             lib.cnc_allclibhndl3(b\"10.0.0.5\", 8193, 10, ctypes.byref(h))\n\
+             lib.cnc_statinfo(h, ctypes.byref(st))\nlib.cnc_freelibhndl(h)\n",
+            "Python",
+            &["cnc_allclibhndl3", "cnc_freelibhndl", "cnc_statinfo"][..],
+            0,
+        ),
+        (
+            "Focas.java",
+            "public interface Fwlib32 extends Library {\n  \
+             short cnc_allclibhndl3(String ip, short port, int timeout, ShortByReference h);\n  \
+             short cnc_dwnstart3_f(short h, short type, String a, String b);\n}\n",
+            "Java",
+            &["cnc_allclibhndl3", "cnc_dwnstart3_f"][..],
+            1,
+        ),
+        (
+            "Focas1.cs",
+            "[DllImport(\"fwlib32.dll\")]\npublic static extern short cnc_rdexecpt(ushort h, PRGPNT a, PRGPNT b);\n\
+             [DllImport(\"fwlib32.dll\")]\npublic static extern short pmc_rdpmcrng(ushort h, short a, short t, ushort s, ushort e, ushort l, IODBPMC0 b);\n",
+            "C#",
+            &["cnc_rdexecpt", "pmc_rdpmcrng"][..],
+            0,
+        ),
+        (
+            "poll.go",
+            "// #cgo LDFLAGS: -lfwlib32\n// #include \"fwlib32.h\"\nimport \"C\"\n\
+             func status(h C.ushort) { var st C.ODBST; C.cnc_statinfo(h, &st) }\n",
+            "Go",
+            &["cnc_statinfo"][..],
+            0,
+        ),
+        (
+            "adapter.c",
+            "#include \"fwlib32.h\"\nint main(void) { unsigned short h;\n\
+             return cnc_allclibhndl3(\"cnc\", 8193, 10, &h) || cnc_rdparam(h, 6711, 0, 8, 0); }\n",
+            "C",
+            &["cnc_allclibhndl3", "cnc_rdparam"][..],
+            0,
+        ),
+    ] {
+        let f = dir.join(file);
+        std::fs::write(&f, text).unwrap();
+        let o = focas(&["compat", path(&f)]);
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(code), "{file}: {out}");
+        let head = format!(
+            "{}: {lang} source, {} FOCAS function{} named\n",
+            path(&f),
+            names.len(),
+            if names.len() == 1 { "" } else { "s" }
+        );
+        assert!(out.starts_with(&head), "{file}: {out}");
+        let (_, j) = compat_json(&f);
+        assert_eq!(j["source"], lang);
+        let got: Vec<&str> = j["functions"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(got, names, "{file}: {j}");
+    }
 }

@@ -49,5 +49,14 @@ fn level_3_logs_every_frame_and_exitprocess_frees_everything() {
     assert!(log.contains("cnc_statinfo -> -8"), "{log}");
     // The close handshake of exitprocess.
     assert!(log.contains("a0a0a0a0000102010000"), "{log}");
+    // Each line starts with its time, RFC 3339 in UTC, to the millisecond:
+    // 2026-11-28T11:22:06.123Z pid ...
+    for l in log.lines() {
+        let (t, rest) = l.split_once(' ').unwrap();
+        assert!(rest.starts_with("pid "), "{l}");
+        let b = t.as_bytes();
+        assert_eq!(t.len(), 24, "{l}");
+        assert_eq!((b[4], b[10], b[19], b[23]), (b'-', b'T', b'.', b'Z'), "{l}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

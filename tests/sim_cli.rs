@@ -340,10 +340,53 @@ fn a_bad_command_line_says_why() {
         ),
         (&["--fault", "delay"][..], "delay_ms"),
         (&["--delay-ms", "soon"][..], "milliseconds"),
+        // Bad values are echoed.
+        (&["--delay-ms", "soon"][..], "'soon'"),
+        (&["--fleet", "0"][..], "'0'"),
+        (&["--listen", "127.0.0.1"][..], "'127.0.0.1'"),
+        (&["--listen=localhost:80x"][..], "\"80x\" is not a TCP port"),
+        (&["--fault", "melt"][..], "\"melt\""),
+        (&["--trace", "--trace-file", "x"][..], "cannot be used with"),
+        (&["--no-such-option"][..], "'--no-such-option'"),
     ] {
         let out = command(args).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains(says), "{args:?}: {err}");
     }
+}
+
+#[test]
+fn version_help_and_listen_with_an_equals_sign() {
+    let out = command(&["--version"]).output().unwrap();
+    assert!(out.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        format!("focas-sim {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    let out = command(&["--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    for opt in [
+        "--listen <ADDR>",
+        "--fault <SPEC>",
+        "--delay-ms <MS>",
+        "--print-profile",
+    ] {
+        assert!(help.contains(opt), "{opt}: {help}");
+    }
+    // --listen=ADDR: one machine, its address line.
+    let sim = start(&["--listen=127.0.0.1:0"], 1, Stdio::null());
+    let (host, port) = &sim.addrs[0];
+    assert_eq!(host, "127.0.0.1");
+    let h = alloc(host, *port).unwrap();
+    assert_eq!(statinfo(h), EW_OK);
+    assert_eq!(cnc_freelibhndl(h), EW_OK);
+    // An address it cannot serve on: named, exit 1.
+    let out = command(&["--listen", "no.such.host.invalid:0"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("no.such.host.invalid:0"), "{err}");
 }

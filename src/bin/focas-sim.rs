@@ -1,106 +1,116 @@
 //! focas-sim: serve simulated FANUC CNCs over the FOCAS2 Ethernet protocol.
 
+use clap::{CommandFactory, Parser};
 use fwlib32::sim::fleet::TraceTo;
-use fwlib32::sim::profile::fault::{Fault, KINDS};
+use fwlib32::sim::profile::fault::Fault;
+use fwlib32::sim::profile::fleet::MAX_MACHINES;
 use fwlib32::sim::{Fleet, FleetOptions, Profile, profile::DEFAULT_PROFILE};
 use std::io::Write;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: focas-sim [--listen ADDR] [--profile FILE]... [--fleet N]
-                 [--fault SPEC]... [--delay-ms MS] [--max-sessions N]
-                 [--trace | --trace-file FILE] [--print-profile]
-
-  --listen ADDR       address to serve on (default 127.0.0.1:8193; use 127.0.0.1:0 for a
-                      free port); a fleet takes consecutive ports from it, or with port 0
-                      a free port each
-  --profile FILE      machine profile (TOML); default: the built-in 3-axis mill. Several:
-                      each serves its own `[fleet] machines`, or with --fleet in turn
-  --fleet N           serve N machines (each its own port, state, program clock, CNC id)
-  --fault SPEC        inject a fault: KIND[:KEY=VALUE,...], the keys of a profile's
-                      [[fault]] (at, every, duration, machines, delay_ms, sessions, code,
-                      functions, commands, count); KIND is one of
-                      off, refuse, silent, reset, close, delay, sessions, error, upload_drop.
-                      e.g. off:at=30,duration=10,machines=1..5
-                           error:functions=cnc_rdparam,code=EW_NOOPT
-  --delay-ms MS       answer every request MS milliseconds late (all machines)
-  --max-sessions N    at most N FOCAS sessions per machine
-  --trace             every frame in both directions, decoded, one line each on stderr
-  --trace-file FILE   the same into FILE
-  --print-profile     print the built-in profile and exit
-
-Prints `listening on ADDR` on stdout, one line per machine in order. Serves until killed.";
-
+/// Serve simulated FANUC CNCs over the FOCAS2 Ethernet protocol.
+#[derive(Parser)]
+#[command(
+    name = "focas-sim",
+    version,
+    about = "Serve simulated FANUC CNCs over the FOCAS2 Ethernet protocol",
+    after_help = "Prints `listening on ADDR` on stdout, one line per machine in order. \
+                  Serves until killed.\n\n\
+                  Examples:\n  focas-sim --listen 127.0.0.1:0\n  \
+                  focas-sim --fleet 20 --fault off:at=30,duration=10,machines=1..5\n  \
+                  focas-sim --profile lathe.toml --delay-ms 50 --trace"
+)]
 struct Args {
+    /// Address to serve on (127.0.0.1:0 for a free port); a fleet takes
+    /// consecutive ports from it, or with port 0 a free port each
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1:8193", value_parser = listen_addr)]
     listen: String,
-    profiles: Vec<String>,
-    opts: FleetOptions,
+    /// Machine profile (TOML); default: the built-in 3-axis mill. Several:
+    /// each serves its own `[fleet] machines`, or with --fleet in turn
+    #[arg(long = "profile", value_name = "FILE")]
+    profiles: Vec<PathBuf>,
+    /// Serve N machines (each its own port, state, program clock, CNC id)
+    #[arg(long, value_name = "N", value_parser = machines)]
+    fleet: Option<usize>,
+    /// Inject a fault: KIND[:KEY=VALUE,...], the keys of a profile's
+    /// [[fault]] (at, every, duration, machines, delay_ms, sessions, code,
+    /// functions, commands, count); e.g. off:at=30,duration=10,machines=1..5
+    /// or error:functions=cnc_rdparam,code=EW_NOOPT
+    #[arg(long = "fault", value_name = "SPEC", value_parser = fault)]
+    faults: Vec<Fault>,
+    /// Answer every request MS milliseconds late, and send or take each
+    /// frame of a program transfer MS late (all machines)
+    #[arg(long, value_name = "MS", default_value_t = 0, value_parser = millis)]
+    delay_ms: u64,
+    /// At most N FOCAS sessions per machine
+    #[arg(long, value_name = "N")]
+    max_sessions: Option<usize>,
+    /// Every frame in both directions, decoded, one line each on stderr
+    #[arg(long, conflicts_with = "trace_file")]
+    trace: bool,
+    /// The same into FILE
+    #[arg(long, value_name = "FILE")]
+    trace_file: Option<PathBuf>,
+    /// Print the built-in profile and exit
+    #[arg(long)]
+    print_profile: bool,
 }
 
-fn parse() -> Result<Option<Args>, String> {
-    let mut a = Args {
-        listen: "127.0.0.1:8193".into(),
-        profiles: Vec::new(),
-        opts: FleetOptions::default(),
-    };
-    let mut args = std::env::args().skip(1);
-    let value = |args: &mut dyn Iterator<Item = String>, what: &str| {
-        args.next().ok_or_else(|| what.to_string())
-    };
-    while let Some(arg) = args.next() {
-        match arg.as_str() {
-            "--listen" => a.listen = value(&mut args, "--listen needs an address")?,
-            "--profile" => a.profiles.push(value(&mut args, "--profile needs a file")?),
-            "--fleet" => {
-                let v = value(&mut args, "--fleet needs a number of machines")?;
-                let n = v
-                    .parse::<usize>()
-                    .map_err(|_| format!("--fleet {v:?}: not a number of machines"))?;
-                a.opts.machines = Some(n);
-            }
-            "--fault" => {
-                let v = value(
-                    &mut args,
-                    &format!("--fault needs KIND[:KEY=VALUE,...] ({KINDS})"),
-                )?;
-                a.opts.faults.push(Fault::parse_spec(&v)?);
-            }
-            "--delay-ms" => {
-                let v = value(&mut args, "--delay-ms needs milliseconds")?;
-                let ms = v
-                    .parse::<u64>()
-                    .map_err(|_| format!("--delay-ms {v:?}: not a number of milliseconds"))?;
-                if ms > 0 {
-                    a.opts
-                        .faults
-                        .push(Fault::parse_spec(&format!("delay:delay_ms={ms}"))?);
-                }
-            }
-            "--max-sessions" => {
-                let v = value(&mut args, "--max-sessions needs a number")?;
-                let n = v
-                    .parse::<usize>()
-                    .map_err(|_| format!("--max-sessions {v:?}: not a number"))?;
-                a.opts
-                    .faults
-                    .push(Fault::parse_spec(&format!("sessions:sessions={n}"))?);
-            }
-            "--trace" => a.opts.trace = Some(TraceTo::Stderr),
-            "--trace-file" => {
-                let f = value(&mut args, "--trace-file needs a file")?;
-                a.opts.trace = Some(TraceTo::File(f.into()));
-            }
-            "--print-profile" => {
-                print!("{DEFAULT_PROFILE}");
-                return Ok(None);
-            }
-            "-h" | "--help" => {
-                println!("{USAGE}");
-                return Ok(None);
-            }
-            other => return Err(format!("unknown argument {other}")),
-        }
+/// `HOST:PORT` (`[v6]:PORT`): checked here, resolved when serving.
+fn listen_addr(s: &str) -> Result<String, String> {
+    let (host, port) = s
+        .rsplit_once(':')
+        .ok_or_else(|| "expected HOST:PORT (127.0.0.1:8193, [::1]:0)".to_string())?;
+    if host.is_empty() {
+        return Err("expected HOST:PORT: no host".into());
     }
-    Ok(Some(a))
+    port.parse::<u16>()
+        .map_err(|_| format!("{port:?} is not a TCP port (0 to 65535)"))?;
+    Ok(s.to_string())
+}
+
+fn fault(s: &str) -> Result<Fault, String> {
+    Fault::parse_spec(s)
+}
+
+fn machines(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if (1..=MAX_MACHINES).contains(&n) => Ok(n),
+        _ => Err(format!("a fleet has 1 to {MAX_MACHINES} machines")),
+    }
+}
+
+fn millis(s: &str) -> Result<u64, String> {
+    s.parse()
+        .map_err(|_| "not a number of milliseconds".to_string())
+}
+
+impl Args {
+    fn options(&self) -> Result<FleetOptions, String> {
+        let mut opts = FleetOptions {
+            machines: self.fleet,
+            faults: self.faults.clone(),
+            ..FleetOptions::default()
+        };
+        if self.delay_ms > 0 {
+            let spec = format!("delay:delay_ms={}", self.delay_ms);
+            let f = Fault::parse_spec(&spec)
+                .map_err(|e| format!("--delay-ms {}: {e}", self.delay_ms))?;
+            opts.faults.push(f);
+        }
+        if let Some(n) = self.max_sessions {
+            let f = Fault::parse_spec(&format!("sessions:sessions={n}"))
+                .map_err(|e| format!("--max-sessions {n}: {e}"))?;
+            opts.faults.push(f);
+        }
+        opts.trace = match (&self.trace_file, self.trace) {
+            (Some(f), _) => Some(TraceTo::File(f.clone())),
+            (None, true) => Some(TraceTo::Stderr),
+            (None, false) => None,
+        };
+        Ok(opts)
+    }
 }
 
 /// Room for a large fleet's sockets: the soft limit on open files raised
@@ -120,17 +130,20 @@ fn raise_file_limit() {
 }
 
 fn main() -> ExitCode {
-    let args = match parse() {
-        Ok(Some(a)) => a,
-        Ok(None) => return ExitCode::SUCCESS,
-        Err(m) => {
-            eprintln!("focas-sim: {m}\n\n{USAGE}");
-            return ExitCode::from(2);
-        }
+    let args = Args::parse();
+    if args.print_profile {
+        print!("{DEFAULT_PROFILE}");
+        return ExitCode::SUCCESS;
+    }
+    let opts = match args.options() {
+        Ok(o) => o,
+        Err(m) => Args::command()
+            .error(clap::error::ErrorKind::ValueValidation, m)
+            .exit(),
     };
     let mut profiles = Vec::new();
     for p in &args.profiles {
-        match Profile::load(std::path::Path::new(p)) {
+        match Profile::load(p) {
             Ok(p) => profiles.push(p),
             Err(e) => {
                 eprintln!("focas-sim: {e}");
@@ -142,14 +155,19 @@ fn main() -> ExitCode {
         profiles.push(Profile::default());
     }
     raise_file_limit();
-    let fleet = match Fleet::start(&profiles, &args.listen, args.opts) {
+    let fleet = match Fleet::start(&profiles, &args.listen, opts) {
         Ok(f) => f,
         Err(e) if e.kind() == std::io::ErrorKind::InvalidInput => {
             eprintln!("focas-sim: {e}");
             return ExitCode::from(2);
         }
         Err(e) => {
-            eprintln!("focas-sim: {e}");
+            let e = e.to_string();
+            if e.contains(&args.listen) {
+                eprintln!("focas-sim: {e}");
+            } else {
+                eprintln!("focas-sim: --listen {}: {e}", args.listen);
+            }
             return ExitCode::FAILURE;
         }
     };

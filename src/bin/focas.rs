@@ -2,18 +2,21 @@
 //! (the crate's Rust API, `fwlib32::native`).
 //!
 //! Text output is aligned for people; `--json` prints one JSON object (one
-//! per line for `watch`) whose keys are stable. Any failure prints one line
-//! on stderr (`focas: HOST:PORT: FUNCTION: EW_CODE (n): meaning ...`) and
-//! exits with status 1; usage errors exit with 2. `compat` reads a file,
-//! not a CNC: it exits with 1 when the program uses a function this
-//! library lacks.
+//! per line for `watch`) whose keys are stable, times RFC 3339. Any failure
+//! prints one line on stderr (`focas: HOST:PORT: FUNCTION: EW_CODE (n):
+//! meaning ...`, with what it means in words where the call and the CNC
+//! tell: `O1234 is running`), with `--json` one object on stdout
+//! (`{"error": {...}}`), and exits with status 1; usage errors (checked
+//! before connecting) exit with 2. `watch` goes on through outages.
+//! `compat` reads a file, not a CNC: it exits with 1 when the program uses
+//! a function this library lacks.
 
+#[path = "focas/binary.rs"]
+mod binary;
 #[path = "focas/compat.rs"]
 mod compat;
 #[path = "focas/data.rs"]
 mod data;
-#[path = "focas/elf.rs"]
-mod elf;
 #[path = "focas/out.rs"]
 mod out;
 #[path = "focas/prog.rs"]
@@ -34,20 +37,28 @@ use std::time::Duration;
     name = "focas",
     version,
     about = "Read a FANUC CNC over FOCAS2 Ethernet",
-    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  FOCAS_HOST=10.0.0.5 focas --json pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc\n  focas compat ./my-adapter"
+    after_help = "Examples:\n  focas --host 10.0.0.5 status\n  focas status -H 10.0.0.5:8193 --json\n  FOCAS_HOST=10.0.0.5 focas pos\n  focas --host cnc1 pmc D100..D120 --type word\n  focas --host cnc1 prog get 1234 O1234.nc\n  focas compat ./my-adapter"
 )]
 struct Cli {
-    /// The CNC's host name or address (every command but compat)
-    #[arg(long, short = 'H', env = "FOCAS_HOST")]
-    host: Option<String>,
-    /// FOCAS2 TCP port
-    #[arg(long, short = 'p', env = "FOCAS_PORT", default_value_t = fwlib32::native::DEFAULT_PORT)]
+    /// The CNC: a host name or address, with its port if not --port's.
+    #[arg(
+        long,
+        short = 'H',
+        env = "FOCAS_HOST",
+        global = true,
+        value_parser = host_port,
+        help = "The CNC: a host name or address, with its port if not --port's \
+                (cnc1, 10.0.0.5:8193, ::1, [::1]:8193); every command but compat"
+    )]
+    host: Option<HostPort>,
+    /// FOCAS2 TCP port (a port in --host wins)
+    #[arg(long, short = 'p', env = "FOCAS_PORT", global = true, default_value_t = fwlib32::native::DEFAULT_PORT)]
     port: u16,
     /// Seconds to wait for each answer (0: for ever)
-    #[arg(long, short = 't', default_value_t = 10.0, value_parser = seconds)]
+    #[arg(long, short = 't', global = true, default_value_t = 10.0, value_parser = seconds)]
     timeout: f64,
     /// The CNC path to read (default 1)
-    #[arg(long)]
+    #[arg(long, global = true, value_parser = clap::value_parser!(u16).range(1..))]
     path: Option<u16>,
     /// Print JSON (stable keys) instead of text
     #[arg(long, global = true)]
@@ -74,32 +85,36 @@ enum Command {
     Param {
         number: u32,
         /// One axis (1..)
-        #[arg(long, short = 'a')]
+        #[arg(long, short = 'a', value_parser = clap::value_parser!(u16).range(1..))]
         axis: Option<u16>,
     },
     /// A diagnosis item: its value, or one per axis
     Diag {
         number: u32,
         /// One axis (1..)
-        #[arg(long, short = 'a')]
+        #[arg(long, short = 'a', value_parser = clap::value_parser!(u16).range(1..))]
         axis: Option<u16>,
     },
     /// A custom macro variable; N=V writes it (V a number, or "vacant")
     Macro {
         /// N, or N=V to write
-        spec: String,
+        #[arg(value_parser = data::parse_macro)]
+        spec: data::MacroSpec,
     },
     /// PMC data: ADDR (D100), a range (D100..D120) or a bit (R0.3)
     Pmc {
-        address: String,
+        #[arg(value_parser = data::parse_pmc)]
+        address: data::PmcSpec,
         /// Element type of a range
         #[arg(long = "type", short = 'T', value_enum, default_value_t = data::PmcKind::Byte)]
         kind: data::PmcKind,
     },
-    /// NC programs: ls, get N [FILE], put FILE, rm N
-    #[command(subcommand)]
+    /// NC programs: ls, get, put, rm.
+    #[command(subcommand, about = "NC programs: ls, get N [FILE], put FILE, rm N")]
     Prog(prog::Prog),
-    /// A live status line (one JSON object per line with --json)
+    /// A live status line (one JSON object per line with --json); keeps
+    /// going while the CNC is unavailable (a line saying why) and connects
+    /// again
     Watch {
         /// Seconds between samples
         #[arg(long, short = 'i', default_value_t = 1.0, value_parser = seconds)]
@@ -109,13 +124,72 @@ enum Command {
         count: Option<u64>,
     },
     /// Will a program built for FANUC's library work with this one? Lists
-    /// the FOCAS functions it uses: supported, answering EW_VERSION as
-    /// FANUC's Ethernet library, or missing (exit status 1, as for a file
-    /// that cannot load this library). No CNC needed
+    /// the FOCAS functions it uses (linked, or named in its strings for a
+    /// program that loads the library with dlopen; or in a source file):
+    /// supported, answering EW_VERSION as FANUC's Ethernet library, or
+    /// missing (exit status 1, as for a file that cannot load this library).
+    /// No CNC needed
     Compat {
-        /// The program or shared library (ELF) that calls FOCAS functions
+        /// The program or shared library (ELF), or a source file (.c, .cs,
+        /// .java, .py, .go ...), that calls FOCAS functions
         file: std::path::PathBuf,
     },
+}
+
+/// A `--host` value: the host, and the port it names if any.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct HostPort {
+    host: String,
+    port: Option<u16>,
+}
+
+impl HostPort {
+    /// `host:port` for [`Cnc::connect`], IPv6 addresses in brackets.
+    fn addr(&self, default_port: u16) -> String {
+        let port = self.port.unwrap_or(default_port);
+        if self.host.contains(':') {
+            format!("[{}]:{port}", self.host)
+        } else {
+            format!("{}:{port}", self.host)
+        }
+    }
+}
+
+/// `cnc1`, `cnc1:8193`, `10.0.0.5:8193`, `::1` (an IPv6 address alone),
+/// `[::1]`, `[::1]:8193`.
+fn host_port(s: &str) -> Result<HostPort, String> {
+    let s = s.trim();
+    let bad_port = |p: &str| format!("{p:?} in {s:?} is not a TCP port (1 to 65535)");
+    let port = |p: &str| match p.parse::<u16>() {
+        Ok(n) if n > 0 => Ok(Some(n)),
+        _ => Err(bad_port(p)),
+    };
+    let (host, port) = if let Some(rest) = s.strip_prefix('[') {
+        let (host, tail) = rest
+            .split_once(']')
+            .ok_or_else(|| format!("{s:?}: an IPv6 address in brackets needs its ']'"))?;
+        match tail {
+            "" => (host, None),
+            t => match t.strip_prefix(':') {
+                Some(p) => (host, port(p)?),
+                None => return Err(format!("{s:?}: expected :PORT after ']'")),
+            },
+        }
+    } else {
+        match s.split_once(':') {
+            // Two colons or more: an IPv6 address without a port.
+            Some((_, rest)) if rest.contains(':') => (s, None),
+            Some((host, p)) => (host, port(p)?),
+            None => (s, None),
+        }
+    };
+    if host.is_empty() {
+        return Err(format!("{s:?} names no host"));
+    }
+    Ok(HostPort {
+        host: host.to_string(),
+        port,
+    })
 }
 
 fn seconds(s: &str) -> Result<f64, String> {
@@ -127,20 +201,23 @@ fn seconds(s: &str) -> Result<f64, String> {
 
 fn run(cli: Cli) -> Result<(), Fail> {
     let Some(host) = &cli.host else {
-        Cli::command()
-            .error(
-                clap::error::ErrorKind::MissingRequiredArgument,
-                "the following required argument was not provided: --host <HOST> (or FOCAS_HOST)",
-            )
-            .exit()
+        return Err(Fail::Usage(Box::new(Cli::command().error(
+            clap::error::ErrorKind::MissingRequiredArgument,
+            "the following required argument was not provided: --host <HOST> (or FOCAS_HOST)",
+        ))));
     };
-    let addr = if host.contains(':') && !host.starts_with('[') {
-        format!("[{host}]:{}", cli.port)
-    } else {
-        format!("{host}:{}", cli.port)
-    };
-    let at = |e| Fail::Focas(addr.clone(), e);
-    let cnc = Cnc::connect(&addr, Duration::from_secs_f64(cli.timeout)).map_err(at)?;
+    let addr = host.addr(cli.port);
+    let at = |e| Fail::Api(e).at(&addr);
+    let timeout = Duration::from_secs_f64(cli.timeout);
+    if let Command::Watch { interval, count } = cli.command {
+        let t = watch::Target {
+            addr: &addr,
+            timeout,
+            path: cli.path,
+        };
+        return watch::run(&t, interval, count, cli.json).map_err(|f| f.at(&addr));
+    }
+    let cnc = Cnc::connect(&addr, timeout).map_err(at)?;
     if let Some(p) = cli.path {
         cnc.set_path(p).map_err(at)?;
     }
@@ -152,16 +229,14 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Alarms { history } => show::alarms(&cnc, history, json),
         Command::Param { number, axis } => data::param(&cnc, false, number, axis, json),
         Command::Diag { number, axis } => data::param(&cnc, true, number, axis, json),
-        Command::Macro { spec } => data::macro_var(&cnc, &spec, json),
-        Command::Pmc { address, kind } => data::pmc(&cnc, &address, kind, json),
+        Command::Macro { spec } => data::macro_var(&cnc, spec, json),
+        Command::Pmc { address, kind } => data::pmc(&cnc, address, kind, json),
         Command::Prog(p) => prog::run(&cnc, p, json),
-        Command::Watch { interval, count } => watch::run(&cnc, interval, count, json),
-        Command::Compat { .. } => unreachable!("compat needs no CNC: main runs it"),
+        Command::Watch { .. } | Command::Compat { .. } => {
+            unreachable!("watch connects itself, compat needs no CNC")
+        }
     };
-    r.map_err(|f| match f {
-        Fail::Api(e) => at(e),
-        f => f,
-    })
+    r.map_err(|f| f.at(&addr))
 }
 
 fn main() -> ExitCode {
@@ -176,23 +251,82 @@ fn main() -> ExitCode {
         eprintln!("focas: internal error: {msg}");
         std::process::exit(70);
     }));
-    let cli = Cli::parse();
+    // Before parsing: a bad command line with --json is JSON too.
+    let json = std::env::args_os().skip(1).any(|a| a == "--json");
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => return finish(Err(Fail::Usage(Box::new(e))), json),
+    };
+    let json = cli.json;
     if let Command::Compat { file } = &cli.command {
-        return match compat::run(file, cli.json) {
-            Ok(0) | Err(Fail::Quiet) => ExitCode::SUCCESS,
+        return match compat::run(file, json) {
+            Ok(0) => ExitCode::SUCCESS,
             Ok(_problems) => ExitCode::from(1),
-            Err(f) => {
-                eprintln!("focas: {f}");
-                ExitCode::from(1)
-            }
+            Err(f) => finish(Err(f), json),
         };
     }
-    match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(Fail::Quiet) => ExitCode::SUCCESS,
-        Err(f) => {
-            eprintln!("focas: {f}");
-            ExitCode::from(1)
+    finish(run(cli), json)
+}
+
+/// The exit status of a command, its failure reported: one line on
+/// stderr, or with `--json` one JSON object on stdout.
+fn finish(r: Result<(), Fail>, json: bool) -> ExitCode {
+    let f = match r {
+        Ok(()) | Err(Fail::Quiet) => return ExitCode::SUCCESS,
+        Err(Fail::Shown) => return ExitCode::from(1),
+        Err(f) => f,
+    };
+    let code = match &f {
+        Fail::Usage(e) => {
+            use clap::error::ErrorKind::*;
+            let shown = matches!(
+                e.kind(),
+                DisplayHelp | DisplayVersion | DisplayHelpOnMissingArgumentOrSubcommand
+            );
+            if shown || !json {
+                e.exit()
+            }
+            2
+        }
+        _ => 1,
+    };
+    if json {
+        // Stdout closed: nothing more to say.
+        let _ = out::json_line(&out::fail_json(&f));
+    } else {
+        eprintln!("focas: {f}");
+    }
+    ExitCode::from(code)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hosts_with_and_without_ports() {
+        let hp = |h: &str, p: Option<u16>| HostPort {
+            host: h.to_string(),
+            port: p,
+        };
+        assert_eq!(host_port("cnc1"), Ok(hp("cnc1", None)));
+        assert_eq!(host_port("10.0.0.5:18193"), Ok(hp("10.0.0.5", Some(18193))));
+        assert_eq!(host_port("::1"), Ok(hp("::1", None)));
+        assert_eq!(host_port("[::1]"), Ok(hp("::1", None)));
+        assert_eq!(host_port("[fe80::1]:8193"), Ok(hp("fe80::1", Some(8193))));
+        assert_eq!(hp("::1", Some(9)).addr(8193), "[::1]:9");
+        assert_eq!(hp("cnc1", None).addr(8193), "cnc1:8193");
+        for bad in [
+            "",
+            ":8193",
+            "cnc1:",
+            "cnc1:x",
+            "cnc1:0",
+            "cnc1:70000",
+            "[::1",
+            "[::1]x",
+        ] {
+            assert!(host_port(bad).is_err(), "{bad:?}");
         }
     }
 }

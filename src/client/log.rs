@@ -79,16 +79,7 @@ pub fn write(level: u8, msg: std::fmt::Arguments<'_>) {
     if !enabled(level) {
         return;
     }
-    let now = SystemTime::now()
-        .duration_since(SystemTime::UNIX_EPOCH)
-        .unwrap_or_default();
-    let line = format!(
-        "{}.{:03} pid {} {}\n",
-        now.as_secs(),
-        now.subsec_millis(),
-        std::process::id(),
-        msg
-    );
+    let line = format!("{} pid {} {}\n", utc_now(), std::process::id(), msg);
     match SINK.lock().as_mut() {
         Some(Sink::File(f)) => {
             let _ = f.write_all(line.as_bytes());
@@ -98,6 +89,32 @@ pub fn write(level: u8, msg: std::fmt::Arguments<'_>) {
         }
         None => {}
     }
+}
+
+/// Now, RFC 3339 in UTC to the millisecond ("2026-11-28T11:22:06.123Z").
+/// By libc's gmtime_r, not a date crate: jiff here added 185 KB to the
+/// stripped library (1.16 MB to 1.35 MB, over tests/install.rs's guard)
+/// for one time stamp.
+fn utc_now() -> String {
+    let now = SystemTime::now()
+        .duration_since(SystemTime::UNIX_EPOCH)
+        .unwrap_or_default();
+    let secs = now.as_secs() as libc::time_t;
+    // SAFETY: plain out-parameter; gmtime_r is reentrant.
+    let mut tm: libc::tm = unsafe { std::mem::zeroed() };
+    if unsafe { libc::gmtime_r(&secs, &mut tm) }.is_null() {
+        return format!("{}.{:03}", now.as_secs(), now.subsec_millis());
+    }
+    format!(
+        "{:04}-{:02}-{:02}T{:02}:{:02}:{:02}.{:03}Z",
+        tm.tm_year + 1900,
+        tm.tm_mon + 1,
+        tm.tm_mday,
+        tm.tm_hour,
+        tm.tm_min,
+        tm.tm_sec,
+        now.subsec_millis()
+    )
 }
 
 /// Hex dump of a frame at level 3.

@@ -32,7 +32,7 @@ impl AlarmKind {
 }
 
 /// An alarm number as the CNC shows it: "OT0500", or "500 (type 21)".
-fn shown(kind: AlarmKind, number: i32) -> String {
+pub(crate) fn shown(kind: AlarmKind, number: i32) -> String {
     match kind.prefix() {
         Some(p) => format!("{p}{number:04}"),
         None => format!("{number} (type {})", kind.0),
@@ -74,6 +74,38 @@ pub struct Timestamp {
     pub second: u8,
 }
 
+impl Timestamp {
+    /// RFC 3339 with the UTC offset this computer's time zone has at that
+    /// time ("2024-05-17T13:45:30+02:00"): the CNC's clock keeps no zone,
+    /// it is taken to be this computer's (`TZ`). `None` when the reading
+    /// is no date (month 13, February 30).
+    ///
+    /// ```
+    /// use fwlib32::native::Timestamp;
+    ///
+    /// let t = Timestamp { year: 2024, month: 5, day: 17, hour: 13, minute: 45, second: 30 };
+    /// let s = t.rfc3339().unwrap();
+    /// assert!(s.starts_with("2024-05-17T13:45:30"), "{s}");
+    /// assert!(s.ends_with("Z") || s[19..].len() == 6, "an offset: {s}");
+    /// assert_eq!(Timestamp { month: 13, ..t }.rfc3339(), None);
+    /// ```
+    pub fn rfc3339(&self) -> Option<String> {
+        let n = |v: u8| i8::try_from(v).ok();
+        let dt = jiff::civil::DateTime::new(
+            i16::try_from(self.year).ok()?,
+            n(self.month)?,
+            n(self.day)?,
+            n(self.hour)?,
+            n(self.minute)?,
+            n(self.second)?,
+            0,
+        )
+        .ok()?;
+        let z = dt.to_zoned(jiff::tz::TimeZone::system()).ok()?;
+        Some(z.strftime("%Y-%m-%dT%H:%M:%S%:z").to_string())
+    }
+}
+
 impl fmt::Display for Timestamp {
     /// `2024-05-17 13:45:30`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -90,7 +122,8 @@ impl fmt::Display for Timestamp {
 pub struct HistoryEntry {
     pub number: i32,
     pub kind: AlarmKind,
-    pub axis: i32,
+    /// The axis it concerns (1..), 0 for none.
+    pub axis: i16,
     /// When the alarm was raised, by the CNC's clock.
     pub time: Timestamp,
     pub message: String,
@@ -140,7 +173,7 @@ fn entry(r: &AlmHisRecord) -> HistoryEntry {
     HistoryEntry {
         number: r.alm_no,
         kind: AlarmKind(r.alm_grp),
-        axis: r.axis,
+        axis: r.axis as i16,
         time: Timestamp {
             year: r.year,
             month: r.month as u8,

@@ -87,7 +87,12 @@ impl Cnc {
         let (host, port) = split_addr(addr);
         let t = secs(timeout);
         let p = pair::acquire(&host, port, t, 0).map_err(|e| Error::of(CALL, e))?;
-        Cnc::on(p, t, format!("{host}:{port}"), 1)
+        let addr = if host.contains(':') {
+            format!("[{host}]:{port}")
+        } else {
+            format!("{host}:{port}")
+        };
+        Cnc::on(p, t, addr, 1)
     }
 
     /// A new handle on the pair `p` (its reference already taken).
@@ -120,7 +125,7 @@ impl Cnc {
         Cnc::on(p, timeout, self.addr.clone(), path)
     }
 
-    /// `"host:port"` as connected.
+    /// `"host:port"` as connected (`"[v6]:port"` for an IPv6 address).
     pub fn addr(&self) -> &str {
         &self.addr
     }

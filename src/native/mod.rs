@@ -36,6 +36,8 @@ mod part;
 mod pmc;
 mod position;
 mod program;
+#[cfg(feature = "serde")]
+mod ser;
 mod status;
 
 pub use alarm::{Alarm, AlarmKind, HistoryEntry, Timestamp};

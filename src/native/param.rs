@@ -132,6 +132,7 @@ impl FromValue for Decimal {
 }
 
 /// A parameter or diagnosis item as the CNC holds it.
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Param {
     pub number: u32,

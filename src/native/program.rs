@@ -12,10 +12,11 @@ use crate::proto::program::{DirEntry, PROGDIR_CHUNK, progdir, progdir3_code};
 use crate::proto::upload::{StartReq, range_name};
 
 /// A program in the CNC's memory.
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct ProgramEntry {
     /// The O number.
-    pub number: i32,
+    pub number: u32,
     /// Size in bytes, as the CNC counts it.
     pub length: i32,
     /// The comment, without its parentheses ("" for none).
@@ -40,7 +41,7 @@ fn entry(e: &DirEntry) -> ProgramEntry {
         second: 0,
     });
     ProgramEntry {
-        number: e.number,
+        number: e.number.max(0) as u32,
         length: e.length,
         comment,
         modified,
@@ -168,12 +169,22 @@ impl Cnc {
 
     /// Deletes program `number` (cnc_delete): EW_DATA when there is none,
     /// EW_PROT when it is protected, EW_BUSY when it runs or is selected.
-    pub fn delete_program(&self, number: u16) -> Result<()> {
-        let f = crate::spec::find("cnc_delete").expect("a described function");
-        let args = [i32::from(number as i16)];
+    /// cnc_delete takes numbers up to 32767: a larger one is EW_DATA
+    /// before any traffic.
+    pub fn delete_program(&self, number: u32) -> Result<()> {
+        const CALL: &str = "cnc_delete";
+        let Ok(n) = i16::try_from(number) else {
+            return Err(Error::invalid(
+                CALL,
+                super::error::Ew::DATA,
+                format!("O{number}: cnc_delete takes program numbers up to 32767"),
+            ));
+        };
+        let f = crate::spec::find(CALL).expect("a described function");
+        let args = [i32::from(n)];
         self.handle()
             .call(&Described::new(f, &args))
             .map(|_| ())
-            .map_err(|e| Error::of("cnc_delete", e))
+            .map_err(|e| Error::of(CALL, e))
     }
 }

@@ -113,6 +113,7 @@ word_enum! {
 }
 
 /// The status of the current path, as cnc_statinfo reads it.
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Status {
     pub mode: Mode,
@@ -164,6 +165,7 @@ fn status_part() -> impl Part<Out = Status> + Send + 'static {
 }
 
 /// What the CNC reported about itself at connect time (cnc_sysinfo).
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct SysInfo {
     /// CNC type: "31" (31i), "16" (16i), "0" (0i) ...
@@ -205,12 +207,13 @@ impl SysInfo {
 /// What the current path executes: program and sequence numbers, actual
 /// feed rate and spindle speed (cnc_rdprgnum, cnc_rdseqnum, cnc_actf,
 /// cnc_acts in one frame).
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct Execution {
     /// The O number running (or selected).
-    pub program: i32,
+    pub program: u32,
     /// The main program's O number.
-    pub main_program: i32,
+    pub main_program: u32,
     /// The sequence (N) number of the block executing.
     pub sequence: i32,
     /// Actual feed rate (mm/min or inch/min).
@@ -251,8 +254,9 @@ impl Part for ExecutionPart {
         }
         let w = |i: usize, k: usize| v[i].get(k).map_or(0, |x| *x as i32);
         Ok(Execution {
-            program: w(0, 0),
-            main_program: w(0, 1),
+            // O numbers (a negative word: none).
+            program: w(0, 0).max(0) as u32,
+            main_program: w(0, 1).max(0) as u32,
             sequence: w(1, 0),
             feed: w(2, 0),
             spindle_speed: w(3, 0),

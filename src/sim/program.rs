@@ -211,14 +211,14 @@ impl Machine {
         if kind != 0 && kind != 1 {
             return Err(CncError::NUMBER);
         }
-        let tm = local(self.clock_now());
+        let t = local(self.clock_now());
         Ok(Clock {
-            year: (tm.tm_year + 1900) as i16,
-            month: (tm.tm_mon + 1) as i16,
-            day: tm.tm_mday as i16,
-            hour: tm.tm_hour as i16,
-            minute: tm.tm_min as i16,
-            second: tm.tm_sec as i16,
+            year: t.year(),
+            month: t.month().into(),
+            day: t.day().into(),
+            hour: t.hour().into(),
+            minute: t.minute().into(),
+            second: t.second().into(),
         })
     }
 
@@ -227,8 +227,9 @@ impl Machine {
     pub(crate) fn sim_set_clock(&mut self, kind: i32, payload: &[u8]) -> Reply<()> {
         let c = Clock::decode(&mut Reader::new(payload)).map_err(|_| err(ew::EW_LENGTH))?;
         let now = self.clock_now();
-        let mut tm = local(now);
-        match kind {
+        let cur = local(now);
+        let bad = |_| err(ew::EW_DATA);
+        let set = match kind {
             0 => {
                 if !(1970..=2099).contains(&c.year)
                     || !(1..=12).contains(&c.month)
@@ -236,9 +237,13 @@ impl Machine {
                 {
                     return Err(err(ew::EW_DATA));
                 }
-                tm.tm_year = i32::from(c.year) - 1900;
-                tm.tm_mon = i32::from(c.month) - 1;
-                tm.tm_mday = i32::from(c.day);
+                // As mktime: the day counts from the first of the month
+                // (February 31 is March 2 or 3).
+                let first = jiff::civil::Date::new(c.year, c.month as i8, 1).map_err(bad)?;
+                let day = first
+                    .checked_add(jiff::Span::new().days(i64::from(c.day) - 1))
+                    .map_err(bad)?;
+                day.to_datetime(cur.time())
             }
             1 => {
                 if !(0..=23).contains(&c.hour)
@@ -247,18 +252,18 @@ impl Machine {
                 {
                     return Err(err(ew::EW_DATA));
                 }
-                tm.tm_hour = i32::from(c.hour);
-                tm.tm_min = i32::from(c.minute);
-                tm.tm_sec = i32::from(c.second);
+                let time = jiff::civil::Time::new(c.hour as i8, c.minute as i8, c.second as i8, 0)
+                    .map_err(bad)?;
+                cur.date().to_datetime(time)
             }
             _ => return Err(CncError::NUMBER),
-        }
-        tm.tm_isdst = -1;
-        let t = unsafe { libc::mktime(&mut tm) };
-        if t == -1 {
-            return Err(err(ew::EW_DATA));
-        }
-        self.profile.timers.clock_offset += t as i64 - now;
+        };
+        let t = set
+            .to_zoned(jiff::tz::TimeZone::system())
+            .map_err(bad)?
+            .timestamp()
+            .as_second();
+        self.profile.timers.clock_offset += t - now;
         Ok(())
     }
 
@@ -430,22 +435,22 @@ impl Machine {
     /// Today's date on the CNC's clock (cnc_gettimer's, moved by
     /// cnc_settimer): what a stored or changed program is dated.
     pub fn today(&self) -> crate::sim::store::Date {
-        let tm = local(self.clock_now());
+        let t = local(self.clock_now());
         [
-            tm.tm_year + 1900,
-            tm.tm_mon + 1,
-            tm.tm_mday,
-            tm.tm_hour,
-            tm.tm_min,
+            t.year(),
+            t.month().into(),
+            t.day().into(),
+            t.hour().into(),
+            t.minute().into(),
         ]
         .map(|v| v as u16)
     }
 }
 
-/// Local broken-down time of a Unix time.
-fn local(t: i64) -> libc::tm {
-    let tt = t as libc::time_t;
-    let mut tm: libc::tm = unsafe { std::mem::zeroed() };
-    unsafe { libc::localtime_r(&tt, &mut tm) };
-    tm
+/// The local calendar time (this computer's zone) of a Unix time.
+fn local(t: i64) -> jiff::civil::DateTime {
+    jiff::Timestamp::from_second(t)
+        .unwrap_or(jiff::Timestamp::UNIX_EPOCH)
+        .to_zoned(jiff::tz::TimeZone::system())
+        .datetime()
 }

@@ -179,11 +179,24 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
                     });
                     return reset(stream);
                 }
-                for f in &frames {
-                    shared.trace(id, || namer.answer(f, &[], &[]));
+                if delay.is_zero() {
+                    for f in &frames {
+                        shared.trace(id, || namer.answer(f, &[], &[]));
+                    }
+                    if stream.write_all(&out).await.is_err() {
+                        return;
+                    }
+                    continue;
                 }
-                if stream.write_all(&out).await.is_err() {
-                    return;
+                // A slow CNC: each frame of the program the delay late.
+                for (i, f) in frames.iter().enumerate() {
+                    if i > 0 {
+                        pause(delay).await;
+                    }
+                    shared.trace(id, || namer.answer(f, &[], &[]));
+                    if stream.write_all(&f.encode()).await.is_err() {
+                        return;
+                    }
                 }
                 continue;
             }
@@ -235,10 +248,17 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
             }
             t if Outgoing::of_kind((t >> 8) as u8).is_some() => {
                 shared.trace(id, || namer.request(&frame, &[]));
+                // Every frame of a download the delay late, answered or
+                // not (a slow CNC slows the sender through TCP).
+                pause(delay).await;
                 let Some(r) = receive(&shared, &mut incoming, version, &frame) else {
                     continue;
                 };
-                r
+                shared.trace(id, || namer.answer(&r, &[], &[]));
+                if stream.write_all(&r.encode()).await.is_err() {
+                    return;
+                }
+                continue;
             }
             // Frames this CNC does not serve are ignored, as a CNC ignores them.
             _ => {

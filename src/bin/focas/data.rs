@@ -1,16 +1,8 @@
 //! param, diag, macro, pmc.
 
-use crate::out::{Fail, Table, json_line, num, print};
+use crate::out::{Fail, Table, json_line, num, print, to_json};
 use fwlib32::native::{Cnc, Decimal, Kind, PmcArea, Value};
 use serde_json::{Value as Json, json};
-
-fn value_json(v: Value) -> Json {
-    match v {
-        Value::Bits(b) => json!(b),
-        Value::Int(i) => json!(i),
-        Value::Real(d) => num(d),
-    }
-}
 
 /// `focas param N [--axis A]` / `focas diag N [--axis A]`: the item with
 /// the names of the axes its values belong to, in one batch.
@@ -37,11 +29,10 @@ pub fn param(
         (true, None) => (1..=p.values.len()).map(|i| axis_name(&names, i)).collect(),
     };
     if json {
-        let values: Vec<Json> = p.values.iter().map(|v| value_json(*v)).collect();
-        return json_line(&json!({
-            "number": number, "kind": p.kind.to_string(), "per_axis": p.per_axis,
-            "axis": axis, "values": values, "axes": axis_names,
-        }));
+        let mut o = to_json(&p);
+        o["axis"] = json!(axis);
+        o["axes"] = json!(axis_names);
+        return json_line(&o);
     }
     let mut t = Table::new(if axis_names.is_empty() {
         &[true, false, true]
@@ -76,9 +67,17 @@ fn axis_name(names: &[String], i: usize) -> String {
         .unwrap_or_else(|| format!("axis {i}"))
 }
 
-/// `focas macro N` or `focas macro N=V`.
-pub fn macro_var(cnc: &Cnc, spec: &str, json: bool) -> Result<(), Fail> {
-    let bad = || Fail::Other(format!("macro: {spec:?} is not N or N=VALUE"));
+/// A `focas macro` argument: the variable, and the value to write first.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MacroSpec {
+    pub number: u32,
+    /// `Some(None)`: make it vacant.
+    pub write: Option<Option<Decimal>>,
+}
+
+/// `N`, `#N`, `N=V` (V a number, or "vacant").
+pub fn parse_macro(spec: &str) -> Result<MacroSpec, String> {
+    let bad = || format!("{spec:?} is not N or N=VALUE (500, 500=1.25, 500=vacant)");
     let (n, write) = match spec.split_once('=') {
         Some((n, v)) => (n, Some(v.trim())),
         None => (spec, None),
@@ -88,14 +87,20 @@ pub fn macro_var(cnc: &Cnc, spec: &str, json: bool) -> Result<(), Fail> {
         .trim_start_matches('#')
         .parse()
         .map_err(|_| bad())?;
-    if let Some(v) = write {
-        let value = match v {
-            "vacant" | "null" | "<null>" => None,
-            v => Some(
-                v.parse::<Decimal>()
-                    .map_err(|e| Fail::Other(format!("macro: {e}")))?,
-            ),
-        };
+    let write = match write {
+        None => None,
+        Some("vacant" | "null" | "<null>") => Some(None),
+        Some(v) => Some(Some(
+            v.parse::<Decimal>().map_err(|e| format!("{spec:?}: {e}"))?,
+        )),
+    };
+    Ok(MacroSpec { number, write })
+}
+
+/// `focas macro N` or `focas macro N=V`.
+pub fn macro_var(cnc: &Cnc, spec: MacroSpec, json: bool) -> Result<(), Fail> {
+    let number = spec.number;
+    if let Some(value) = spec.write {
         cnc.set_macro_var(number, value)?;
     }
     let v = cnc.macro_var(number)?;
@@ -134,11 +139,13 @@ pub enum PmcSpec {
 
 /// `D100`, `D100..D120`, `D100..120`, `R0.3`.
 pub fn parse_pmc(s: &str) -> Result<PmcSpec, String> {
-    let bad = || format!("pmc: {s:?} is not an address (D100, D100..D120, R0.3)");
+    let bad = || format!("{s:?} is not an address (D100, D100..D120, R0.3)");
     let split = |t: &str| -> Result<(PmcArea, String), String> {
         let t = t.trim();
         let letter = t.get(..1).ok_or_else(bad)?;
-        let area = letter.parse::<PmcArea>().map_err(|e| format!("pmc: {e}"))?;
+        let area = letter
+            .parse::<PmcArea>()
+            .map_err(|e| format!("{s:?}: {e}"))?;
         Ok((area, t[1..].to_string()))
     };
     let (area, first) = split(s.split("..").next().unwrap_or(""))?;
@@ -159,7 +166,7 @@ pub fn parse_pmc(s: &str) -> Result<PmcSpec, String> {
                 Some(l) if l.chars().all(|c| c.is_ascii_alphabetic()) => {
                     let (a, rest) = split(e)?;
                     if a != area {
-                        return Err(format!("pmc: {s:?} spans two areas"));
+                        return Err(format!("{s:?} spans two areas"));
                     }
                     rest
                 }
@@ -169,14 +176,14 @@ pub fn parse_pmc(s: &str) -> Result<PmcSpec, String> {
         }
     };
     if end < start {
-        return Err(format!("pmc: {s:?} ends before it starts"));
+        return Err(format!("{s:?} ends before it starts"));
     }
     Ok(PmcSpec::Range(area, start, end))
 }
 
 /// `focas pmc ADDR[..END] [--type T]`.
-pub fn pmc(cnc: &Cnc, spec: &str, kind: PmcKind, json: bool) -> Result<(), Fail> {
-    let (area, s, e) = match parse_pmc(spec).map_err(Fail::Other)? {
+pub fn pmc(cnc: &Cnc, spec: PmcSpec, kind: PmcKind, json: bool) -> Result<(), Fail> {
+    let (area, s, e) = match spec {
         PmcSpec::Bit(area, a, bit) => {
             let v = cnc.pmc_bit(area, a, bit)?;
             if json {
@@ -258,6 +265,25 @@ mod tests {
             "", "Q1", "D", "R0.8", "D1..R2", "D5..D1", "R0.3..R1", "D1..x",
         ] {
             assert!(parse_pmc(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn macro_specs() {
+        let m = |n, w| {
+            Ok(MacroSpec {
+                number: n,
+                write: w,
+            })
+        };
+        assert_eq!(parse_macro("#500"), m(500, None));
+        assert_eq!(parse_macro("150=vacant"), m(150, Some(None)));
+        assert_eq!(
+            parse_macro("150=-2.50"),
+            m(150, Some(Some(Decimal::new(-250, 2))))
+        );
+        for bad in ["", "x", "1=", "1=abc", "-1"] {
+            assert!(parse_macro(bad).is_err(), "{bad}");
         }
     }
 }

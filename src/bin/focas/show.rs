@@ -1,7 +1,7 @@
 //! info, status, pos, alarms.
 
-use crate::out::{Fail, Table, json_line, num, print, word};
-use fwlib32::native::{Alarm, AxisPosition, Cnc, Execution, HistoryEntry, Status};
+use crate::out::{Fail, Table, json_line, print, to_json};
+use fwlib32::native::{AxisPosition, Cnc, Execution, Status};
 use serde_json::{Value as Json, json};
 
 /// `focas info`: the CNC id and every path's system information.
@@ -22,11 +22,9 @@ pub fn info(cnc: &Cnc, json: bool) -> Result<(), Fail> {
         let list: Vec<Json> = paths
             .iter()
             .map(|(p, s)| {
-                json!({
-                    "path": p, "cnc_type": s.cnc_type, "mt_type": s.mt_type,
-                    "series": s.series, "version": s.version, "axes": s.axes,
-                    "max_axes": s.max_axes, "addinfo": s.addinfo,
-                })
+                let mut o = json!({ "path": p });
+                merge(&mut o, to_json(s));
+                o
             })
             .collect();
         return json_line(&json!({
@@ -52,21 +50,18 @@ pub fn info(cnc: &Cnc, json: bool) -> Result<(), Fail> {
     print(&t.render())
 }
 
+/// The keys of object `b` added to object `a`.
+fn merge(a: &mut Json, b: Json) {
+    if let (Some(a), Json::Object(b)) = (a.as_object_mut(), b) {
+        a.extend(b);
+    }
+}
+
+/// The status words and what runs, one object.
 pub fn status_json(s: &Status, x: &Execution) -> Json {
-    json!({
-        "mode": word(s.mode.code(), s.mode),
-        "run": word(s.run.code(), s.run),
-        "motion": word(s.motion.code(), s.motion),
-        "mstb": s.mstb,
-        "emergency": word(s.emergency.code(), s.emergency),
-        "alarm": word(s.alarm.code(), s.alarm),
-        "edit": s.edit,
-        "program": x.program,
-        "main_program": x.main_program,
-        "sequence": x.sequence,
-        "feed": x.feed,
-        "spindle_speed": x.spindle_speed,
-    })
+    let mut o = to_json(s);
+    merge(&mut o, to_json(x));
+    o
 }
 
 /// `focas status`: the status words and what runs, in one batch.
@@ -97,19 +92,7 @@ pub fn status(cnc: &Cnc, json: bool) -> Result<(), Fail> {
 }
 
 pub fn axes_json(axes: &[AxisPosition]) -> Json {
-    axes.iter()
-        .map(|a| {
-            json!({
-                "name": a.name,
-                "absolute": num(a.absolute),
-                "machine": num(a.machine),
-                "relative": num(a.relative),
-                "distance": num(a.distance),
-                "decimals": a.absolute.decimals,
-                "unit": a.unit.to_string(),
-            })
-        })
-        .collect()
+    to_json(&axes)
 }
 
 /// `focas pos`.
@@ -135,30 +118,12 @@ pub fn positions(cnc: &Cnc, json: bool) -> Result<(), Fail> {
     print(&t.render())
 }
 
-pub fn alarm_json(a: &Alarm) -> Json {
-    json!({
-        "number": a.number, "type": a.kind.0, "prefix": a.kind.prefix(),
-        "axis": a.axis, "message": a.message,
-    })
-}
-
-fn history_json(h: &HistoryEntry) -> Json {
-    let t = h.time;
-    json!({
-        "time": format!("{:04}-{:02}-{:02}T{:02}:{:02}:{:02}",
-            t.year, t.month, t.day, t.hour, t.minute, t.second),
-        "number": h.number, "type": h.kind.0, "prefix": h.kind.prefix(),
-        "axis": h.axis, "message": h.message,
-    })
-}
-
 /// `focas alarms [--history]`.
 pub fn alarms(cnc: &Cnc, history: bool, json: bool) -> Result<(), Fail> {
     if history {
         let h = cnc.alarm_history()?;
         if json {
-            let list: Vec<Json> = h.iter().map(history_json).collect();
-            return json_line(&json!({ "history": list }));
+            return json_line(&json!({ "history": to_json(&h) }));
         }
         if h.is_empty() {
             return print("no alarm history\n");
@@ -176,8 +141,7 @@ pub fn alarms(cnc: &Cnc, history: bool, json: bool) -> Result<(), Fail> {
     }
     let a = cnc.alarms()?;
     if json {
-        let list: Vec<Json> = a.iter().map(alarm_json).collect();
-        return json_line(&json!({ "alarms": list }));
+        return json_line(&json!({ "alarms": to_json(&a) }));
     }
     if a.is_empty() {
         return print("no alarm\n");
