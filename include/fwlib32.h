@@ -3418,7 +3418,7 @@ short cnc_rdprogdir3(unsigned short FlibHndl,
 
 /*
  Reads program memory information: `type` 0 into `prog->u.bin`, 1 as the
- text "%\n<reg>\n<unreg>\n<used>\n<unused>\n%" and a NUL into
+ text `"%\n<reg>\n<unreg>\n<used>\n<unused>\n%"` and a NUL into
  `prog->u.asc` (as FANUC's library writes it; never more than `length`
  bytes). Type not 0/1: EW_ATTRIB; `length` under 12 (type 0) or 31
  (type 1), on a Series 15 16 or 35: EW_LENGTH; both without traffic.
@@ -3983,7 +3983,7 @@ short cnc_upload3(unsigned short FlibHndl, long *length, char *data);
 short cnc_upload4(unsigned short FlibHndl, long *length, char *data);
 
 /*
- Starts uploading NC program `prgno` (text "O<n>-O<n>", data type 0).
+ Starts uploading NC program `prgno` (text `O<n>-O<n>`, data type 0).
  Then cnc_upload / cnc_upload3 read the text and cnc_upend ends it.
  */
 short cnc_upstart(unsigned short FlibHndl, short prgno);

@@ -129,7 +129,7 @@ pub unsafe extern "C" fn cnc_wrmdiprog(
 }
 
 /// Reads program memory information: `type` 0 into `prog->u.bin`, 1 as the
-/// text "%\n`<reg>`\n`<unreg>`\n`<used>`\n`<unused>`\n%" and a NUL into
+/// text `"%\n<reg>\n<unreg>\n<used>\n<unused>\n%"` and a NUL into
 /// `prog->u.asc` (as FANUC's library writes it; never more than `length`
 /// bytes). Type not 0/1: EW_ATTRIB; `length` under 12 (type 0) or 31
 /// (type 1), on a Series 15 16 or 35: EW_LENGTH; both without traffic.

@@ -69,7 +69,7 @@ fn old_style<T>(r: Result<T>) -> Result<T> {
     })
 }
 
-/// Starts uploading NC program `prgno` (text "O`<n>`-O`<n>`", data type 0).
+/// Starts uploading NC program `prgno` (text `O<n>-O<n>`, data type 0).
 /// Then cnc_upload / cnc_upload3 read the text and cnc_upend ends it.
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_upstart(FlibHndl: c_ushort, prgno: c_short) -> c_short {

@@ -89,7 +89,7 @@ impl StartReq {
         }
     }
 
-    /// The O-number range of an "O`<s>`-O`<e>`" or "O`<n>`" start name.
+    /// The O-number range of an `O<s>-O<e>` or `O<n>` start name.
     pub fn range(&self) -> Option<(i64, i64)> {
         let num = |s: &str| s.strip_prefix('O')?.trim().parse::<i64>().ok();
         match self.start.split_once("-O") {
