@@ -19,6 +19,10 @@ pub mod detail {
     /// An answer with fewer subpackets than the request (FANUC's library's
     /// detail for it, as for a zero count).
     pub const SUB_MISSING: (i16, i16) = (3, 0);
+    /// An answer whose subpackets do not echo the request's class and
+    /// command (ours alone checks): FANUC's detail for an answer that does
+    /// not fit the request's subpackets, as for a missing one.
+    pub const ECHO: (i16, i16) = (3, 0);
     pub const CONNECT: (i16, i16) = (1, 0);
     pub const SEND: (i16, i16) = (2, 0);
     pub const SHORT_PAYLOAD: (i16, i16) = (8, 0);

@@ -8,14 +8,19 @@
 //! The wire faults against every family of calls are in
 //! tests/wire_faults.rs, bad C arguments in tests/bad_input.rs.
 
+mod common;
+#[allow(dead_code)]
+mod deviations;
+mod guard;
 mod sim;
 
 use fwlib32::ew::*;
 use fwlib32::sim::fleet::TraceTo;
 use fwlib32::sim::profile::fault::Fault;
 use fwlib32::sim::{Fleet, FleetOptions, Profile, Simulator};
-use fwlib32::types::{IODBPSD, ODBAXIS, ODBM, ODBST};
+use fwlib32::types::{IODBPSD, ODBAXIS, ODBDY2, ODBERR, ODBM, ODBST};
 use fwlib32::*;
+use guard::{Hostile, Mode};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
@@ -405,4 +410,69 @@ fn a_write_whose_answer_never_comes_is_never_sent_again() {
 fn a_write_whose_answer_is_cut_by_a_close_is_never_sent_again() {
     let _g = serial();
     write_in_flight("close:at=10,duration=10", true);
+}
+
+// ---------------------------------------------------------------------------
+// A hostile CNC (tests/guard): answers that are not this call's, frames of
+// the wrong type on connection 1, waits behind stuck calls. Every call's
+// time is measured and bounded by its own timeout and MARGIN.
+// ---------------------------------------------------------------------------
+
+/// What a loaded machine may add to a call's own timeout.
+const MARGIN: Duration = Duration::from_secs(2);
+
+/// The detail words cnc_getdtailerr reports on `h`.
+fn detail(h: c_ushort) -> (i16, i16) {
+    let mut e = ODBERR::default();
+    assert_eq!(unsafe { cnc_getdtailerr(h, &mut e) }, EW_OK);
+    (e.err_no, e.err_dtno)
+}
+
+/// `f` on `h`, asserted to return within the handle's timeout and MARGIN.
+fn bounded(what: &str, f: impl FnOnce() -> c_short) -> c_short {
+    let (r, took) = timed(f);
+    assert!(
+        took <= Duration::from_secs(TIMEOUT as u64) + MARGIN,
+        "{what} took {took:?}"
+    );
+    r
+}
+
+#[test]
+fn a_reply_that_does_not_echo_the_request_is_never_ew_ok() {
+    let _g = serial();
+    let listed = deviations::UNRECORDED
+        .iter()
+        .any(|d| d.test == "reliability::a_reply_that_does_not_echo_the_request_is_never_ew_ok");
+    assert!(
+        listed,
+        "the reply check is a listed deviation (tests/deviations)"
+    );
+    for mode in [Mode::Plain, Mode::OtherCommand, Mode::Reversed] {
+        let cnc = Hostile::start(mode);
+        let h = alloc("127.0.0.1", cnc.port).expect("the open and start-up are plain");
+        let mut dy = ODBDY2::default();
+        let mut m = ODBM::default();
+        // cnc_statinfo: 3 subpackets (0x19, 0xe1, 0x98); cnc_rddynamic2 (all axes): 9.
+        let st = bounded("cnc_statinfo", || statinfo(h));
+        let dyn2 = bounded("cnc_rddynamic2", || unsafe {
+            cnc_rddynamic2(h, -1, std::mem::size_of::<ODBDY2>() as _, &mut dy)
+        });
+        // One subpacket each: reversed, it is the same answer.
+        let wr = bounded("cnc_wrmacro", || unsafe { cnc_wrmacro(h, 510, 10, 77, 0) });
+        let rd = bounded("cnc_rdmacro", || unsafe { cnc_rdmacro(h, 510, 10, &mut m) });
+        match mode {
+            Mode::Plain => assert_eq!([st, dyn2, wr, rd], [EW_OK; 4], "the fake CNC works"),
+            Mode::OtherCommand => {
+                // A cnc_wrmacro answered with cnc_statinfo's answer is no success.
+                assert_eq!([st, dyn2, wr, rd], [EW_PROTOCOL; 4], "{mode:?}");
+                assert_eq!(detail(h), (3, 0));
+            }
+            _ => {
+                assert_eq!([st, dyn2], [EW_PROTOCOL; 2], "{mode:?}");
+                assert_eq!([wr, rd], [EW_OK; 2], "{mode:?}: one subpacket, in order");
+            }
+        }
+        assert_eq!(cnc_freelibhndl(h), EW_OK);
+    }
 }

@@ -11,7 +11,9 @@
 use super::log;
 use crate::error::{Error, Result, detail};
 use crate::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype, max_body_len};
-use crate::proto::packet::{ReqSub, RespSub, decode_response_into, encode_request_into};
+use crate::proto::packet::{
+    ReqSub, RespSub, decode_response_into, echo_mismatch, encode_request_into,
+};
 use crate::proto::wire::Writer;
 use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
@@ -250,6 +252,20 @@ impl Conn {
         });
         self.resp = resp;
         r??;
+        if let Some(i) = echo_mismatch(subs, &self.resp) {
+            let (q, a) = (&subs[i], &self.resp[i]);
+            return Err(Error::protocol(
+                detail::ECHO,
+                format!(
+                    "answer subpacket {} is class {} command {:#x}, the request's is class {} command {:#x}",
+                    i + 1,
+                    a.class,
+                    a.cmd,
+                    q.class,
+                    q.cmd
+                ),
+            ));
+        }
         Ok(&self.resp)
     }
 
