@@ -28,6 +28,9 @@ pub mod detail {
     pub const SHORT_PAYLOAD: (i16, i16) = (8, 0);
     pub const DEAD: (i16, i16) = (11, 2);
     pub const REJECTED: (i16, i16) = (12, 0);
+    /// A frame on connection 1 of a kind its transfer never has (ours:
+    /// FANUC's library's detail for it is not known).
+    pub const FRAME_KIND: (i16, i16) = (5, 0);
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Error)]

@@ -476,3 +476,74 @@ fn a_reply_that_does_not_echo_the_request_is_never_ew_ok() {
         assert_eq!(cnc_freelibhndl(h), EW_OK);
     }
 }
+
+/// cnc_upload3 until the upload ends: the code it ended with and the text
+/// read. Waits for text by calling again (EW_BUFFER: nothing yet), at most
+/// the handle's timeout and MARGIN.
+fn upload_all(h: c_ushort) -> (c_short, Vec<u8>) {
+    let end = Instant::now() + Duration::from_secs(TIMEOUT as u64) + MARGIN;
+    let mut all = Vec::new();
+    loop {
+        let mut buf = [0u8; 1024];
+        let mut len = buf.len() as _;
+        match unsafe { cnc_upload3(h, &mut len, buf.as_mut_ptr().cast()) } {
+            EW_OK => all.extend_from_slice(&buf[..len as usize]),
+            EW_BUFFER => assert!(Instant::now() < end, "the upload never ended"),
+            r => return (r, all),
+        }
+    }
+}
+
+#[test]
+fn a_frame_of_the_wrong_type_on_connection_1_is_never_dropped_in_silence() {
+    let _g = serial();
+    // An upload whose text frames are typed 0x2102 instead of 0x1604.
+    for mode in [Mode::Plain, Mode::UploadWrongType] {
+        let cnc = Hostile::start(mode);
+        let h = alloc("127.0.0.1", cnc.port).expect("a handle");
+        assert_eq!(
+            bounded("cnc_upstart3", || cnc_upstart3(h, 0, 1, 9999)),
+            EW_OK
+        );
+        let (ended, text) = upload_all(h);
+        let end = bounded("cnc_upend3", || cnc_upend3(h));
+        if mode == Mode::Plain {
+            assert!(!text.is_empty(), "the fake CNC uploads its programs");
+            assert_eq!((ended, end), (EW_RESET, EW_OK));
+        } else {
+            assert!(text.is_empty(), "no 0x1604 frame came");
+            assert_eq!(ended, EW_PROTOCOL, "never an upload ended as complete");
+            assert_eq!(end, EW_PROTOCOL, "cnc_upend3 reports no success");
+        }
+        assert_eq!(cnc_freelibhndl(h), EW_OK);
+    }
+    // A download and a DNC operation answered by a stray 0x2102 frame
+    // after their first data frame: their end reports no success.
+    let text = b"\nO0123\nG01X1.\nM30\n%";
+    for mode in [Mode::Plain, Mode::DownloadWrongType] {
+        let cnc = Hostile::start(mode);
+        let h = alloc("127.0.0.1", cnc.port).expect("a handle");
+        assert_eq!(bounded("cnc_dwnstart3", || cnc_dwnstart3(h, 0)), EW_OK);
+        let mut len = text.len() as _;
+        let sent = bounded("cnc_download3", || unsafe {
+            cnc_download3(h, &mut len, text.as_ptr().cast_mut().cast())
+        });
+        assert_eq!(sent, EW_OK, "cnc_download3: the stray frame comes after it");
+        let end = bounded("cnc_dwnend3", || cnc_dwnend3(h));
+        let expect = if mode == Mode::Plain {
+            EW_OK
+        } else {
+            EW_PROTOCOL
+        };
+        assert_eq!((mode, end), (mode, expect), "cnc_dwnend3");
+
+        assert_eq!(bounded("cnc_dncstart", || cnc_dncstart(h)), EW_OK);
+        let sent = bounded("cnc_dnc", || unsafe {
+            cnc_dnc(h, text.as_ptr().cast_mut().cast(), text.len() as _)
+        });
+        assert_eq!(sent, EW_OK, "cnc_dnc: the stray frame comes after it");
+        let end = bounded("cnc_dncend", || cnc_dncend(h));
+        assert_eq!((mode, end), (mode, expect), "cnc_dncend");
+        assert_eq!(cnc_freelibhndl(h), EW_OK);
+    }
+}

@@ -9,7 +9,7 @@
 //! any handle of the pair (or closed with the pair by the last free).
 
 use super::conn::Deadline;
-use super::conn1::{Conn1, Upload};
+use super::conn1::{Conn1, Upload, unexpected};
 use super::log;
 use super::pair::{Pair, dead, stream_broken};
 use crate::error::{Error, Result};
@@ -27,7 +27,7 @@ fn no_upload() -> Error {
     Error::local(EW_FUNC, "no upload started (cnc_upstart first)")
 }
 
-fn busy() -> Error {
+fn upload_busy() -> Error {
     Error::local(EW_BUSY, "another upload is running on this connection")
 }
 
@@ -69,7 +69,7 @@ impl Pair {
         let deadline = Deadline::after_secs(timeout);
         self.with_c1(|c1| {
             if Self::settle(c1, h, live, deadline)? || c1.outgoing.is_some() {
-                return Err(busy());
+                return Err(upload_busy());
             }
             c1.send(ftype::UPLOAD_START_REQ, req.encode(), deadline)?;
             c1.recv_kind(KIND_START, deadline)?;
@@ -163,11 +163,22 @@ impl Pair {
                             detail2,
                         });
                     }
-                    _ => crate::log_at!(
-                        log::ERRORS,
-                        "conn1 discarded a frame of type {:04x} during an upload",
-                        f.ftype
-                    ),
+                    // Any other frame is not the upload's: the upload
+                    // ends with EW_PROTOCOL (as FANUC's library), never
+                    // as complete with that frame's text lost.
+                    _ => {
+                        crate::log_at!(
+                            log::ERRORS,
+                            "conn1: a frame of type {:04x} during an upload: EW_PROTOCOL",
+                            f.ftype
+                        );
+                        let e = unexpected(f.ftype, "during an upload");
+                        u.ended = Some(e.clone());
+                        if total > 0 {
+                            break;
+                        }
+                        return Err(e);
+                    }
                 }
             }
             if let Some(u) = c1.upload.as_mut() {
@@ -231,6 +242,11 @@ impl Pair {
                             detail2,
                         }),
                     }
+                }
+                // Text or nothing yet: the caller ends the upload early.
+                Some(f) if (f.ftype >> 8) as u8 != KIND_DATA => {
+                    c1.abort(deadline)?;
+                    Err(unexpected(f.ftype, "during an upload"))
                 }
                 _ => c1.abort(deadline),
             }

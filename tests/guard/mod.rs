@@ -116,6 +116,8 @@ pub struct Hostile {
     /// Connections accepted.
     pub accepted: std::sync::Arc<std::sync::atomic::AtomicUsize>,
     stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    /// Every connection accepted, for [`Hostile::close_all`].
+    conns: std::sync::Arc<std::sync::Mutex<Vec<TcpStream>>>,
 }
 
 impl Hostile {
@@ -128,10 +130,14 @@ impl Hostile {
         let data = Arc::new(AtomicUsize::new(0));
         let accepted = Arc::new(AtomicUsize::new(0));
         let stop = Arc::new(AtomicBool::new(false));
-        let (d, a, st) = (data.clone(), accepted.clone(), stop.clone());
+        let conns = Arc::new(Mutex::new(Vec::new()));
+        let (d, a, st, cs) = (data.clone(), accepted.clone(), stop.clone(), conns.clone());
         let port = listen(move |_, s| {
             if st.load(Ordering::SeqCst) {
                 return false;
+            }
+            if let Ok(c) = s.try_clone() {
+                cs.lock().unwrap().push(c);
             }
             a.fetch_add(1, Ordering::SeqCst);
             let (m, d) = (machine.clone(), d.clone());
@@ -143,12 +149,22 @@ impl Hostile {
             data,
             accepted,
             stop,
+            conns,
+        }
+    }
+
+    /// Closes every connection accepted so far (the client sees the end of
+    /// the stream): what ends a client call that waits forever.
+    pub fn close_all(&self) {
+        for c in self.conns.lock().unwrap().drain(..) {
+            let _ = c.shutdown(std::net::Shutdown::Both);
         }
     }
 }
 
 impl Drop for Hostile {
     fn drop(&mut self) {
+        self.close_all();
         self.stop.store(true, std::sync::atomic::Ordering::SeqCst);
         // Wakes the accepting thread, which then stops.
         let _ = TcpStream::connect(("127.0.0.1", self.port));
@@ -240,6 +256,10 @@ fn serve_hostile(
             // Download (0x11) and DNC (0x19): the start and the end answered,
             // the data taken.
             t if t == 0x1101 || t == 0x1901 || t == 0x1301 || t == 0x1b01 => {
+                if t == 0x1101 || t == 0x1901 {
+                    // A new transfer: its own stray frame.
+                    sent_stray = false;
+                }
                 Frame::new(version, t + 1, vec![]).encode()
             }
             t if t == 0x1204 || t == 0x1a04 => {
