@@ -547,3 +547,113 @@ fn a_frame_of_the_wrong_type_on_connection_1_is_never_dropped_in_silence() {
         assert_eq!(cnc_freelibhndl(h), EW_OK);
     }
 }
+
+/// A handle to the fake CNC with `timeout` seconds (0: forever).
+fn alloc_with(port: u16, timeout: i32) -> Result<c_ushort, c_short> {
+    let ip = CString::new("127.0.0.1").unwrap();
+    let mut h = 0;
+    match unsafe { cnc_allclibhndl3(ip.as_ptr(), port, timeout as _, &mut h) } {
+        EW_OK => Ok(h),
+        r => Err(r),
+    }
+}
+
+/// Asserts `took` is within `timeout` seconds and MARGIN; prints the overshoot.
+fn within(what: &str, took: Duration, timeout: u64) {
+    let bound = Duration::from_secs(timeout);
+    println!(
+        "{what}: {took:?} (its timeout {timeout} s, over it by {:?})",
+        took.saturating_sub(bound)
+    );
+    assert!(took <= bound + MARGIN, "{what} took {took:?}");
+}
+
+#[test]
+fn a_short_timeout_handle_behind_a_stuck_one_waits_only_its_own_timeout() {
+    let _g = serial();
+    // A's timeout 0 (forever) and 6 s: B (1 s) waits 1 s either way.
+    for a_timeout in [0, 6] {
+        let cnc = Hostile::start(Mode::SilentData);
+        let a = alloc_with(cnc.port, a_timeout).expect("handle A");
+        let b = alloc_with(cnc.port, TIMEOUT).expect("handle B, sharing A's pair");
+        std::thread::scope(|s| {
+            let stuck = s.spawn(|| timed(|| statinfo(a)));
+            until("A's request at the CNC", 10, || {
+                cnc.data.load(Ordering::SeqCst) >= 1
+            });
+            let (r, took) = timed(|| statinfo(b));
+            within("B behind A", took, TIMEOUT as u64);
+            assert_eq!(r, EW_BUSY, "B: the connection stayed busy, nothing sent");
+            assert_eq!(cnc.data.load(Ordering::SeqCst), 1, "B sent nothing");
+            // Freeing both returns at once and ends A's call (EW_SOCKET).
+            let (r, took) = timed(|| cnc_freelibhndl(b) + cnc_freelibhndl(a));
+            within("cnc_freelibhndl of A and B while A waits", took, 0);
+            assert_eq!(r, EW_OK);
+            let (r, _) = stuck.join().unwrap();
+            assert_eq!(r, EW_SOCKET, "A's call ends when its pair is closed");
+        });
+    }
+}
+
+#[test]
+fn an_alloc_behind_a_stuck_alloc_waits_only_its_own_timeout() {
+    let _g = serial();
+    let cnc = Hostile::start(Mode::SilentOpen);
+    std::thread::scope(|s| {
+        // A: no timeout, its open never answered.
+        let stuck = s.spawn(|| alloc_with(cnc.port, 0));
+        until("A's connection", 10, || {
+            cnc.accepted.load(Ordering::SeqCst) >= 1
+        });
+        let t = Instant::now();
+        let r = alloc_with(cnc.port, TIMEOUT);
+        within(
+            "cnc_allclibhndl3 behind a stuck one",
+            t.elapsed(),
+            TIMEOUT as u64,
+        );
+        assert_eq!(r, Err(EW_SOCKET));
+        // The CNC closing its connections ends A (EW_SOCKET).
+        cnc.close_all();
+        assert_eq!(stuck.join().unwrap(), Err(EW_SOCKET));
+    });
+}
+
+#[test]
+fn exitprocess_while_a_call_is_blocked_returns_at_once() {
+    let _g = serial();
+    let cnc = Hostile::start(Mode::SilentData);
+    let a = alloc_with(cnc.port, 0).expect("a handle without timeout");
+    std::thread::scope(|s| {
+        let stuck = s.spawn(|| timed(|| statinfo(a)));
+        until("the request at the CNC", 10, || {
+            cnc.data.load(Ordering::SeqCst) >= 1
+        });
+        let t = Instant::now();
+        assert_eq!(cnc_exitprocess(), EW_OK);
+        within("cnc_exitprocess while a call waits", t.elapsed(), 0);
+        let (r, _) = stuck.join().unwrap();
+        within("the blocked call after cnc_exitprocess", t.elapsed(), 0);
+        assert_eq!(r, EW_SOCKET);
+    });
+    assert_eq!(cnc_freelibhndl(a), EW_HANDLE, "cnc_exitprocess freed it");
+}
+
+#[test]
+fn a_silent_dripping_or_truncating_cnc_ends_each_call_by_its_timeout() {
+    let _g = serial();
+    for mode in [Mode::SilentData, Mode::Drip, Mode::Truncated] {
+        let cnc = Hostile::start(mode);
+        let h = alloc_with(cnc.port, TIMEOUT).expect("a handle");
+        let (r, took) = timed(|| statinfo(h));
+        within(&format!("cnc_statinfo, {mode:?}"), took, TIMEOUT as u64);
+        assert_eq!(r, EW_SOCKET, "{mode:?}");
+        // The pair is torn down: the next call fails at once, as FANUC's.
+        let (r, took) = timed(|| statinfo(h));
+        within(&format!("the next call, {mode:?}"), took, 0);
+        assert_eq!(r, EW_SOCKET);
+        let (r, took) = timed(|| cnc_freelibhndl(h));
+        within(&format!("cnc_freelibhndl, {mode:?}"), took, 0);
+        assert_eq!(r, EW_OK);
+    }
+}

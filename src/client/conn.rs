@@ -19,6 +19,7 @@ use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
 use std::ops::Range;
 use std::os::fd::AsRawFd;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// When a wait gives up. `None` waits forever (a timeout of 0 or less).
@@ -29,6 +30,26 @@ impl Deadline {
     pub fn after_secs(timeout: i32) -> Deadline {
         Deadline((timeout > 0).then(|| Instant::now() + Duration::from_secs(timeout as u64)))
     }
+    /// When it passes; None for no limit.
+    pub fn at(&self) -> Option<Instant> {
+        self.0
+    }
+
+    /// Locks `m`, waiting at most until the deadline (not at all once it
+    /// passed): None when another holder kept it that long. Every wait for
+    /// a lock around network I/O goes through here, so no call waits past
+    /// its own timeout behind another's.
+    pub fn lock<'a, T>(
+        &self,
+        m: &'a parking_lot::Mutex<T>,
+    ) -> Option<parking_lot::MutexGuard<'a, T>> {
+        match self.remaining() {
+            Some(None) => Some(m.lock()),
+            Some(Some(left)) => m.try_lock_for(left),
+            None => m.try_lock(),
+        }
+    }
+
     /// None once passed; Some(None) for no limit; else the time left.
     fn remaining(&self) -> Option<Option<Duration>> {
         match self.0 {
@@ -93,7 +114,9 @@ const RBUF: usize = 8192;
 const _: () = assert!(max_body_len(u16::MAX) + HEADER_LEN == MAX_FRAME && RBUF >= MAX_FRAME);
 
 pub struct Conn {
-    stream: TcpStream,
+    /// Shared with the pair's shutters ([`Conn::shutter`]), which shut it
+    /// down without waiting for the call using it.
+    stream: Arc<TcpStream>,
     /// 1 or 2, for logs.
     pub number: u8,
     peer: String,
@@ -138,7 +161,7 @@ impl Conn {
                 Ok(stream) => {
                     let _ = stream.set_nodelay(true);
                     return Ok(Conn {
-                        stream,
+                        stream: Arc::new(stream),
                         number,
                         peer: a.to_string(),
                         rbuf: Vec::new(),
@@ -278,7 +301,7 @@ impl Conn {
                 .remaining()
                 .ok_or_else(|| Error::socket(detail::SEND, "send: timed out"))?;
             self.arm(false, left);
-            match (&self.stream).write(&self.wbuf[sent..]) {
+            match (&*self.stream).write(&self.wbuf[sent..]) {
                 Ok(0) => {
                     return Err(Error::socket(
                         detail::SEND,
@@ -316,7 +339,7 @@ impl Conn {
                 .remaining()
                 .ok_or_else(|| Error::socket(on_timeout, "receive: timed out"))?;
             self.arm(true, left);
-            match (&self.stream).read(&mut self.rbuf[self.rend..]) {
+            match (&*self.stream).read(&mut self.rbuf[self.rend..]) {
                 Ok(0) => {
                     return Err(Error::socket(
                         detail::EOF,
@@ -445,7 +468,7 @@ impl Conn {
                     Error::socket(detail::RECV_TIMEOUT_HEADER, "receive: timed out")
                 })?;
                 self.arm(true, left);
-                match (&self.stream).read(&mut tmp) {
+                match (&*self.stream).read(&mut tmp) {
                     Err(e)
                         if matches!(
                             e.kind(),
@@ -467,6 +490,13 @@ impl Conn {
             }
             Err(e) => Err(Error::socket(detail::EOF, format!("receive: {e}"))),
         }
+    }
+
+    /// The socket, to shut down from another thread while a call waits on
+    /// it (the descriptor stays open until the last of them is dropped, so
+    /// a shutdown never reaches a descriptor number used again).
+    pub fn shutter(&self) -> Arc<TcpStream> {
+        self.stream.clone()
     }
 
     pub fn shutdown(&self) {

@@ -115,7 +115,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             if c1.upload.is_some() || c1.outgoing.is_some() {
                 return Err(Error::local(EW_BUSY, "a transfer is already running"));
@@ -146,7 +146,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             if let Some(e) = &c1.sending(how)?.ended {
                 return Err(e.clone());
@@ -170,7 +170,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             if let Some(r) = c1.finishing(how)? {
                 return r;
@@ -198,7 +198,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             match c1.finishing(how)? {
                 Some(r) => r,

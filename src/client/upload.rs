@@ -11,7 +11,7 @@
 use super::conn::Deadline;
 use super::conn1::{Conn1, Upload, unexpected};
 use super::log;
-use super::pair::{Pair, dead, stream_broken};
+use super::pair::{Pair, busy, dead, stream_broken};
 use crate::error::{Error, Result};
 use crate::ew::{EW_BUFFER, EW_BUSY, EW_FUNC, EW_LENGTH, EW_RESET};
 use crate::proto::frame::ftype;
@@ -33,8 +33,16 @@ fn upload_busy() -> Error {
 
 impl Pair {
     /// Runs `f` on connection 1; a broken stream tears the pair down.
-    pub(super) fn with_c1<T>(&self, f: impl FnOnce(&mut Conn1) -> Result<T>) -> Result<T> {
-        let mut g = self.c1.lock();
+    /// Waits for it at most until `deadline` (EW_BUSY, nothing sent, when
+    /// another handle's call kept it that long).
+    pub(super) fn with_c1<T>(
+        &self,
+        deadline: Deadline,
+        f: impl FnOnce(&mut Conn1) -> Result<T>,
+    ) -> Result<T> {
+        let Some(mut g) = deadline.lock(&self.c1) else {
+            return Err(busy());
+        };
         let c1 = g.as_mut().ok_or_else(dead)?;
         let r = f(c1);
         if let Err(e) = &r {
@@ -67,7 +75,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             if Self::settle(c1, h, live, deadline)? || c1.outgoing.is_some() {
                 return Err(upload_busy());
             }
@@ -97,7 +105,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<usize> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             if !Self::settle(c1, h, live, deadline)? {
                 return Err(no_upload());
             }
@@ -194,7 +202,7 @@ impl Pair {
     /// is EW_SOCKET and tears the pair down, as a stalled cnc_upload does.
     pub fn upload_wait(&self, h: u16, timeout: i32) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             match &c1.upload {
                 Some(u) if u.owner == h => {
                     if u.ended.is_some() || u.pos < u.text.len() {
@@ -211,7 +219,7 @@ impl Pair {
     /// sends the 0x1804 abort. After a CNC error frame, that error.
     pub fn upload_end(&self, h: u16, timeout: i32, live: impl Fn(u16) -> bool) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             if !Self::settle(c1, h, live, deadline)? {
                 return Err(no_upload());
             }
