@@ -109,7 +109,13 @@ impl Armed {
 
 /// The largest frame any version may carry.
 const MAX_FRAME: usize = HEADER_LEN + 4950;
-/// The read buffer: room for a whole frame after what is left of the last.
+/// The read buffer's first size, at the first read: room for the answers
+/// most calls get (the open answer, status, a few values) and whatever
+/// arrives with them. It grows to what a longer frame needs (a power of
+/// two, at most [`RBUF`]) and keeps that size: memory per connection is
+/// what its answers need, not the longest frame there could be.
+const RBUF_FIRST: usize = 256;
+/// The most the read buffer grows to: room for a whole frame.
 const RBUF: usize = 8192;
 const _: () = assert!(max_body_len(u16::MAX) + HEADER_LEN == MAX_FRAME && RBUF >= MAX_FRAME);
 
@@ -322,17 +328,19 @@ impl Conn {
     }
 
     /// Reads at least one more byte into the read buffer, as many as have
-    /// arrived (up to the room left), before the deadline.
-    fn fill(&mut self, deadline: Deadline, on_timeout: (i16, i16)) -> Result<()> {
-        if self.rbuf.is_empty() {
-            self.rbuf = vec![0; RBUF];
-        }
+    /// arrived (up to the room left), before the deadline; first makes
+    /// room for the `need` bytes of the frame begun at `rstart`.
+    fn fill(&mut self, deadline: Deadline, on_timeout: (i16, i16), need: usize) -> Result<()> {
         if self.rstart == self.rend {
             (self.rstart, self.rend) = (0, 0);
-        } else if self.rbuf.len() - self.rstart < MAX_FRAME {
+        } else if self.rbuf.len() - self.rstart < need {
             // Make room for the rest of the frame begun at rstart.
             self.rbuf.copy_within(self.rstart..self.rend, 0);
             (self.rstart, self.rend) = (0, self.rend - self.rstart);
+        }
+        if self.rbuf.len() - self.rstart < need {
+            let size = need.next_power_of_two().clamp(RBUF_FIRST, RBUF);
+            self.rbuf.resize(size.max(need), 0);
         }
         loop {
             let left = deadline
@@ -369,7 +377,7 @@ impl Conn {
         loop {
             let have = self.rend - self.rstart;
             if have < HEADER_LEN {
-                self.fill(deadline, detail::RECV_TIMEOUT_HEADER)?;
+                self.fill(deadline, detail::RECV_TIMEOUT_HEADER, HEADER_LEN)?;
                 continue;
             }
             let at = self.rstart;
@@ -383,7 +391,7 @@ impl Conn {
             };
             let total = HEADER_LEN + h.len as usize;
             if have < total {
-                self.fill(deadline, detail::RECV_TIMEOUT_BODY)?;
+                self.fill(deadline, detail::RECV_TIMEOUT_BODY, total)?;
                 continue;
             }
             self.rstart += total;
@@ -429,11 +437,13 @@ impl Conn {
         })
     }
 
-    /// Takes the bytes read and not yet taken as frames (connection 1
-    /// hands them to its own buffer when it takes over the connection).
+    /// Takes the bytes read and not yet taken as frames, and frees the
+    /// read buffer (connection 1 hands them to its own buffer when it takes
+    /// over the connection).
     pub fn take_buffered(&mut self) -> Vec<u8> {
         let v = self.rbuf[self.rstart..self.rend].to_vec();
         (self.rstart, self.rend) = (0, 0);
+        self.rbuf = Vec::new();
         v
     }
 

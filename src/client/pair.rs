@@ -172,6 +172,21 @@ pub fn acquire(host: &str, port: u16, timeout: i32, id: u32) -> Result<Arc<Pair>
     r
 }
 
+/// Lets go of `pair` if its slot still holds it (its last handle was
+/// freed): the pair's memory goes with it; the slot stays, empty.
+fn vacate(pair: &Pair) {
+    let slot = SLOTS
+        .lock()
+        .as_ref()
+        .and_then(|m| m.get(&pair.key).cloned());
+    if let Some(slot) = slot {
+        let mut g = slot.state.lock();
+        if matches!(&*g, SlotState::Ready(p) if std::ptr::eq(&**p, pair)) {
+            *g = SlotState::Empty;
+        }
+    }
+}
+
 /// Closes every pair (cnc_exitprocess), waiting for no call.
 pub fn forget_all() {
     let slots: Vec<Arc<Slot>> = SLOTS
@@ -501,6 +516,8 @@ impl Pair {
             return Ok(());
         }
         self.dead.store(true, Ordering::Release);
+        drop(refs);
+        vacate(self);
         let c1 = self.c1.try_lock().map(|mut g| g.take());
         let c2 = self.io.try_lock().map(|mut g| g.take());
         let (Some(c1), Some(c2)) = (c1, c2) else {
