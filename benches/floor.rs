@@ -25,7 +25,9 @@
 //!    same (on one CNC: sharing one socket under a mutex, as the library
 //!    shares one connection pair per CNC, as FANUC's does). The same
 //!    threads run 25 ms of floor and 25 ms of library calls in turn, 30
-//!    times; the ratio is the median of the 30 ratios.
+//!    times; the ratio is the median of the 30 ratios. On one CNC each
+//!    thread count runs `FLOOR_RUNS` times (3): every run's ratio is shown,
+//!    and the library's rate against its own 1-thread rate.
 //! 4. Loading: a C host (benches/load.c, built with `cc`) timing `dlopen`,
 //!    the first `cnc_allclibhndl3`, `cnc_freelibhndl` and `dlclose` of the
 //!    library this bench was built with, one fresh process per sample,
@@ -346,6 +348,15 @@ fn alternate(
 
 const THREADS: [usize; 6] = [1, 2, 4, 8, 16, 64];
 
+/// Runs of each thread count on one CNC: `FLOOR_RUNS`, else 3 (1 quick).
+fn runs() -> usize {
+    std::env::var("FLOOR_RUNS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .filter(|n| *n > 0)
+        .unwrap_or(count(3, 1))
+}
+
 /// The thread counts to run: all, or those in `FLOOR_THREADS` (`4,8`).
 fn thread_counts() -> Vec<usize> {
     match std::env::var("FLOOR_THREADS") {
@@ -388,23 +399,51 @@ fn threads(sims: &[Simulator], frame: &[u8]) {
         );
     }
     // All on one CNC: one handle per thread, all on one connection pair.
+    // Each thread count runs `runs` times: the spread between runs (a
+    // shared machine, the scheduler's hand-offs) is part of the figure.
+    let runs = runs();
+    println!(
+        "all on one CNC, {runs} runs each: median of the runs' ratios, then each run's, and the library's rate against its own 1-thread rate"
+    );
     let one: Vec<c_ushort> = (0..64).map(|_| alloc(&sims[0])).collect();
+    let mut single = None;
     for n in thread_counts() {
-        let (f, o, r) = alternate(
-            n,
-            &|_| {
-                plains[0].lock().unwrap().exchange(frame);
-            },
-            &|i| {
-                statinfo(one[i]);
-            },
+        let (mut fs, mut os, mut rs) = (vec![], vec![], vec![]);
+        for _ in 0..runs {
+            let (f, o, r) = alternate(
+                n,
+                &|_| {
+                    plains[0].lock().unwrap().exchange(frame);
+                },
+                &|i| {
+                    statinfo(one[i]);
+                },
+            );
+            fs.push(f);
+            os.push(o);
+            rs.push(r);
+        }
+        let each: Vec<String> = rs.iter().map(|r| format!("{r:.2}")).collect();
+        let (o, lowest) = (
+            median(&mut os.clone()),
+            os.iter().copied().fold(f64::MAX, f64::min),
         );
+        if n == 1 {
+            single = Some(o);
+        }
         println!(
-            "{:<34} {:>9.0}/s  {:>9.0}/s  {:>6.2}×",
+            "{:<34} {:>9.0}/s  {:>9.0}/s  {:>6.2}×  runs {} (min {:.2}×){}",
             format!("{n} thread(s), all on one CNC"),
             o,
-            f,
-            r
+            median(&mut fs),
+            median(&mut rs.clone()),
+            each.join(" "),
+            rs.iter().copied().fold(f64::MAX, f64::min),
+            single.map_or(String::new(), |s| format!(
+                ", {:.2}× 1 thread (slowest run {:.2}×)",
+                o / s,
+                lowest / s
+            )),
         );
     }
     for h in one.into_iter().chain(handles) {

@@ -19,11 +19,18 @@ pub mod detail {
     /// An answer with fewer subpackets than the request (FANUC's library's
     /// detail for it, as for a zero count).
     pub const SUB_MISSING: (i16, i16) = (3, 0);
+    /// An answer whose subpackets do not echo the request's class and
+    /// command (ours alone checks): FANUC's detail for an answer that does
+    /// not fit the request's subpackets, as for a missing one.
+    pub const ECHO: (i16, i16) = (3, 0);
     pub const CONNECT: (i16, i16) = (1, 0);
     pub const SEND: (i16, i16) = (2, 0);
     pub const SHORT_PAYLOAD: (i16, i16) = (8, 0);
     pub const DEAD: (i16, i16) = (11, 2);
     pub const REJECTED: (i16, i16) = (12, 0);
+    /// A frame on connection 1 of a kind its transfer never has (ours:
+    /// FANUC's library's detail for it is not known).
+    pub const FRAME_KIND: (i16, i16) = (5, 0);
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Error)]

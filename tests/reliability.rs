@@ -8,14 +8,19 @@
 //! The wire faults against every family of calls are in
 //! tests/wire_faults.rs, bad C arguments in tests/bad_input.rs.
 
+mod common;
+#[allow(dead_code)]
+mod deviations;
+mod guard;
 mod sim;
 
 use fwlib32::ew::*;
 use fwlib32::sim::fleet::TraceTo;
 use fwlib32::sim::profile::fault::Fault;
 use fwlib32::sim::{Fleet, FleetOptions, Profile, Simulator};
-use fwlib32::types::{IODBPSD, ODBAXIS, ODBM, ODBST};
+use fwlib32::types::{IODBPSD, ODBAXIS, ODBDY2, ODBERR, ODBM, ODBST};
 use fwlib32::*;
+use guard::{Hostile, Mode};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::ffi::CString;
 use std::os::raw::{c_short, c_ushort};
@@ -405,4 +410,250 @@ fn a_write_whose_answer_never_comes_is_never_sent_again() {
 fn a_write_whose_answer_is_cut_by_a_close_is_never_sent_again() {
     let _g = serial();
     write_in_flight("close:at=10,duration=10", true);
+}
+
+// ---------------------------------------------------------------------------
+// A hostile CNC (tests/guard): answers that are not this call's, frames of
+// the wrong type on connection 1, waits behind stuck calls. Every call's
+// time is measured and bounded by its own timeout and MARGIN.
+// ---------------------------------------------------------------------------
+
+/// What a loaded machine may add to a call's own timeout.
+const MARGIN: Duration = Duration::from_secs(2);
+
+/// The detail words cnc_getdtailerr reports on `h`.
+fn detail(h: c_ushort) -> (i16, i16) {
+    let mut e = ODBERR::default();
+    assert_eq!(unsafe { cnc_getdtailerr(h, &mut e) }, EW_OK);
+    (e.err_no, e.err_dtno)
+}
+
+/// `f` on `h`, asserted to return within the handle's timeout and MARGIN.
+fn bounded(what: &str, f: impl FnOnce() -> c_short) -> c_short {
+    let (r, took) = timed(f);
+    assert!(
+        took <= Duration::from_secs(TIMEOUT as u64) + MARGIN,
+        "{what} took {took:?}"
+    );
+    r
+}
+
+#[test]
+fn a_reply_that_does_not_echo_the_request_is_never_ew_ok() {
+    let _g = serial();
+    let listed = deviations::UNRECORDED
+        .iter()
+        .any(|d| d.test == "reliability::a_reply_that_does_not_echo_the_request_is_never_ew_ok");
+    assert!(
+        listed,
+        "the reply check is a listed deviation (tests/deviations)"
+    );
+    for mode in [Mode::Plain, Mode::OtherCommand, Mode::Reversed] {
+        let cnc = Hostile::start(mode);
+        let h = alloc("127.0.0.1", cnc.port).expect("the open and start-up are plain");
+        let mut dy = ODBDY2::default();
+        let mut m = ODBM::default();
+        // cnc_statinfo: 3 subpackets (0x19, 0xe1, 0x98); cnc_rddynamic2 (all axes): 9.
+        let st = bounded("cnc_statinfo", || statinfo(h));
+        let dyn2 = bounded("cnc_rddynamic2", || unsafe {
+            cnc_rddynamic2(h, -1, std::mem::size_of::<ODBDY2>() as _, &mut dy)
+        });
+        // One subpacket each: reversed, it is the same answer.
+        let wr = bounded("cnc_wrmacro", || unsafe { cnc_wrmacro(h, 510, 10, 77, 0) });
+        let rd = bounded("cnc_rdmacro", || unsafe { cnc_rdmacro(h, 510, 10, &mut m) });
+        match mode {
+            Mode::Plain => assert_eq!([st, dyn2, wr, rd], [EW_OK; 4], "the fake CNC works"),
+            Mode::OtherCommand => {
+                // A cnc_wrmacro answered with cnc_statinfo's answer is no success.
+                assert_eq!([st, dyn2, wr, rd], [EW_PROTOCOL; 4], "{mode:?}");
+                assert_eq!(detail(h), (3, 0));
+            }
+            _ => {
+                assert_eq!([st, dyn2], [EW_PROTOCOL; 2], "{mode:?}");
+                assert_eq!([wr, rd], [EW_OK; 2], "{mode:?}: one subpacket, in order");
+            }
+        }
+        assert_eq!(cnc_freelibhndl(h), EW_OK);
+    }
+}
+
+/// cnc_upload3 until the upload ends: the code it ended with and the text
+/// read. Waits for text by calling again (EW_BUFFER: nothing yet), at most
+/// the handle's timeout and MARGIN.
+fn upload_all(h: c_ushort) -> (c_short, Vec<u8>) {
+    let end = Instant::now() + Duration::from_secs(TIMEOUT as u64) + MARGIN;
+    let mut all = Vec::new();
+    loop {
+        let mut buf = [0u8; 1024];
+        let mut len = buf.len() as _;
+        match unsafe { cnc_upload3(h, &mut len, buf.as_mut_ptr().cast()) } {
+            EW_OK => all.extend_from_slice(&buf[..len as usize]),
+            EW_BUFFER => assert!(Instant::now() < end, "the upload never ended"),
+            r => return (r, all),
+        }
+    }
+}
+
+#[test]
+fn a_frame_of_the_wrong_type_on_connection_1_is_never_dropped_in_silence() {
+    let _g = serial();
+    // An upload whose text frames are typed 0x2102 instead of 0x1604.
+    for mode in [Mode::Plain, Mode::UploadWrongType] {
+        let cnc = Hostile::start(mode);
+        let h = alloc("127.0.0.1", cnc.port).expect("a handle");
+        assert_eq!(
+            bounded("cnc_upstart3", || cnc_upstart3(h, 0, 1, 9999)),
+            EW_OK
+        );
+        let (ended, text) = upload_all(h);
+        let end = bounded("cnc_upend3", || cnc_upend3(h));
+        if mode == Mode::Plain {
+            assert!(!text.is_empty(), "the fake CNC uploads its programs");
+            assert_eq!((ended, end), (EW_RESET, EW_OK));
+        } else {
+            assert!(text.is_empty(), "no 0x1604 frame came");
+            assert_eq!(ended, EW_PROTOCOL, "never an upload ended as complete");
+            assert_eq!(end, EW_PROTOCOL, "cnc_upend3 reports no success");
+        }
+        assert_eq!(cnc_freelibhndl(h), EW_OK);
+    }
+    // A download and a DNC operation answered by a stray 0x2102 frame
+    // after their first data frame: their end reports no success.
+    let text = b"\nO0123\nG01X1.\nM30\n%";
+    for mode in [Mode::Plain, Mode::DownloadWrongType] {
+        let cnc = Hostile::start(mode);
+        let h = alloc("127.0.0.1", cnc.port).expect("a handle");
+        assert_eq!(bounded("cnc_dwnstart3", || cnc_dwnstart3(h, 0)), EW_OK);
+        let mut len = text.len() as _;
+        let sent = bounded("cnc_download3", || unsafe {
+            cnc_download3(h, &mut len, text.as_ptr().cast_mut().cast())
+        });
+        assert_eq!(sent, EW_OK, "cnc_download3: the stray frame comes after it");
+        let end = bounded("cnc_dwnend3", || cnc_dwnend3(h));
+        let expect = if mode == Mode::Plain {
+            EW_OK
+        } else {
+            EW_PROTOCOL
+        };
+        assert_eq!((mode, end), (mode, expect), "cnc_dwnend3");
+
+        assert_eq!(bounded("cnc_dncstart", || cnc_dncstart(h)), EW_OK);
+        let sent = bounded("cnc_dnc", || unsafe {
+            cnc_dnc(h, text.as_ptr().cast_mut().cast(), text.len() as _)
+        });
+        assert_eq!(sent, EW_OK, "cnc_dnc: the stray frame comes after it");
+        let end = bounded("cnc_dncend", || cnc_dncend(h));
+        assert_eq!((mode, end), (mode, expect), "cnc_dncend");
+        assert_eq!(cnc_freelibhndl(h), EW_OK);
+    }
+}
+
+/// A handle to the fake CNC with `timeout` seconds (0: forever).
+fn alloc_with(port: u16, timeout: i32) -> Result<c_ushort, c_short> {
+    let ip = CString::new("127.0.0.1").unwrap();
+    let mut h = 0;
+    match unsafe { cnc_allclibhndl3(ip.as_ptr(), port, timeout as _, &mut h) } {
+        EW_OK => Ok(h),
+        r => Err(r),
+    }
+}
+
+/// Asserts `took` is within `timeout` seconds and MARGIN; prints the overshoot.
+fn within(what: &str, took: Duration, timeout: u64) {
+    let bound = Duration::from_secs(timeout);
+    println!(
+        "{what}: {took:?} (its timeout {timeout} s, over it by {:?})",
+        took.saturating_sub(bound)
+    );
+    assert!(took <= bound + MARGIN, "{what} took {took:?}");
+}
+
+#[test]
+fn a_short_timeout_handle_behind_a_stuck_one_waits_only_its_own_timeout() {
+    let _g = serial();
+    // A's timeout 0 (forever) and 6 s: B (1 s) waits 1 s either way.
+    for a_timeout in [0, 6] {
+        let cnc = Hostile::start(Mode::SilentData);
+        let a = alloc_with(cnc.port, a_timeout).expect("handle A");
+        let b = alloc_with(cnc.port, TIMEOUT).expect("handle B, sharing A's pair");
+        std::thread::scope(|s| {
+            let stuck = s.spawn(|| timed(|| statinfo(a)));
+            until("A's request at the CNC", 10, || {
+                cnc.data.load(Ordering::SeqCst) >= 1
+            });
+            let (r, took) = timed(|| statinfo(b));
+            within("B behind A", took, TIMEOUT as u64);
+            assert_eq!(r, EW_BUSY, "B: the connection stayed busy, nothing sent");
+            assert_eq!(cnc.data.load(Ordering::SeqCst), 1, "B sent nothing");
+            // Freeing both returns at once and ends A's call (EW_SOCKET).
+            let (r, took) = timed(|| cnc_freelibhndl(b) + cnc_freelibhndl(a));
+            within("cnc_freelibhndl of A and B while A waits", took, 0);
+            assert_eq!(r, EW_OK);
+            let (r, _) = stuck.join().unwrap();
+            assert_eq!(r, EW_SOCKET, "A's call ends when its pair is closed");
+        });
+    }
+}
+
+#[test]
+fn an_alloc_behind_a_stuck_alloc_waits_only_its_own_timeout() {
+    let _g = serial();
+    let cnc = Hostile::start(Mode::SilentOpen);
+    std::thread::scope(|s| {
+        // A: no timeout, its open never answered.
+        let stuck = s.spawn(|| alloc_with(cnc.port, 0));
+        until("A's connection", 10, || {
+            cnc.accepted.load(Ordering::SeqCst) >= 1
+        });
+        let t = Instant::now();
+        let r = alloc_with(cnc.port, TIMEOUT);
+        within(
+            "cnc_allclibhndl3 behind a stuck one",
+            t.elapsed(),
+            TIMEOUT as u64,
+        );
+        assert_eq!(r, Err(EW_SOCKET));
+        // The CNC closing its connections ends A (EW_SOCKET).
+        cnc.close_all();
+        assert_eq!(stuck.join().unwrap(), Err(EW_SOCKET));
+    });
+}
+
+#[test]
+fn exitprocess_while_a_call_is_blocked_returns_at_once() {
+    let _g = serial();
+    let cnc = Hostile::start(Mode::SilentData);
+    let a = alloc_with(cnc.port, 0).expect("a handle without timeout");
+    std::thread::scope(|s| {
+        let stuck = s.spawn(|| timed(|| statinfo(a)));
+        until("the request at the CNC", 10, || {
+            cnc.data.load(Ordering::SeqCst) >= 1
+        });
+        let t = Instant::now();
+        assert_eq!(cnc_exitprocess(), EW_OK);
+        within("cnc_exitprocess while a call waits", t.elapsed(), 0);
+        let (r, _) = stuck.join().unwrap();
+        within("the blocked call after cnc_exitprocess", t.elapsed(), 0);
+        assert_eq!(r, EW_SOCKET);
+    });
+    assert_eq!(cnc_freelibhndl(a), EW_HANDLE, "cnc_exitprocess freed it");
+}
+
+#[test]
+fn a_silent_dripping_or_truncating_cnc_ends_each_call_by_its_timeout() {
+    let _g = serial();
+    for mode in [Mode::SilentData, Mode::Drip, Mode::Truncated] {
+        let cnc = Hostile::start(mode);
+        let h = alloc_with(cnc.port, TIMEOUT).expect("a handle");
+        let (r, took) = timed(|| statinfo(h));
+        within(&format!("cnc_statinfo, {mode:?}"), took, TIMEOUT as u64);
+        assert_eq!(r, EW_SOCKET, "{mode:?}");
+        // The pair is torn down: the next call fails at once, as FANUC's.
+        let (r, took) = timed(|| statinfo(h));
+        within(&format!("the next call, {mode:?}"), took, 0);
+        assert_eq!(r, EW_SOCKET);
+        let (r, took) = timed(|| cnc_freelibhndl(h));
+        within(&format!("cnc_freelibhndl, {mode:?}"), took, 0);
+        assert_eq!(r, EW_OK);
+    }
 }

@@ -11,12 +11,15 @@
 use super::log;
 use crate::error::{Error, Result, detail};
 use crate::proto::frame::{CLIENT_VERSION, Frame, FrameHeader, HEADER_LEN, ftype, max_body_len};
-use crate::proto::packet::{ReqSub, RespSub, decode_response_into, encode_request_into};
+use crate::proto::packet::{
+    ReqSub, RespSub, decode_response_into, echo_mismatch, encode_request_into,
+};
 use crate::proto::wire::Writer;
 use std::io::{ErrorKind, Read, Write};
 use std::net::{SocketAddr, TcpStream};
 use std::ops::Range;
 use std::os::fd::AsRawFd;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// When a wait gives up. `None` waits forever (a timeout of 0 or less).
@@ -27,6 +30,26 @@ impl Deadline {
     pub fn after_secs(timeout: i32) -> Deadline {
         Deadline((timeout > 0).then(|| Instant::now() + Duration::from_secs(timeout as u64)))
     }
+    /// When it passes; None for no limit.
+    pub fn at(&self) -> Option<Instant> {
+        self.0
+    }
+
+    /// Locks `m`, waiting at most until the deadline (not at all once it
+    /// passed): None when another holder kept it that long. Every wait for
+    /// a lock around network I/O goes through here, so no call waits past
+    /// its own timeout behind another's.
+    pub fn lock<'a, T>(
+        &self,
+        m: &'a parking_lot::Mutex<T>,
+    ) -> Option<parking_lot::MutexGuard<'a, T>> {
+        match self.remaining() {
+            Some(None) => Some(m.lock()),
+            Some(Some(left)) => m.try_lock_for(left),
+            None => m.try_lock(),
+        }
+    }
+
     /// None once passed; Some(None) for no limit; else the time left.
     fn remaining(&self) -> Option<Option<Duration>> {
         match self.0 {
@@ -86,12 +109,20 @@ impl Armed {
 
 /// The largest frame any version may carry.
 const MAX_FRAME: usize = HEADER_LEN + 4950;
-/// The read buffer: room for a whole frame after what is left of the last.
+/// The read buffer's first size, at the first read: room for the answers
+/// most calls get (the open answer, status, a few values) and whatever
+/// arrives with them. It grows to what a longer frame needs (a power of
+/// two, at most [`RBUF`]) and keeps that size: memory per connection is
+/// what its answers need, not the longest frame there could be.
+const RBUF_FIRST: usize = 256;
+/// The most the read buffer grows to: room for a whole frame.
 const RBUF: usize = 8192;
 const _: () = assert!(max_body_len(u16::MAX) + HEADER_LEN == MAX_FRAME && RBUF >= MAX_FRAME);
 
 pub struct Conn {
-    stream: TcpStream,
+    /// Shared with the pair's shutters ([`Conn::shutter`]), which shut it
+    /// down without waiting for the call using it.
+    stream: Arc<TcpStream>,
     /// 1 or 2, for logs.
     pub number: u8,
     peer: String,
@@ -136,7 +167,7 @@ impl Conn {
                 Ok(stream) => {
                     let _ = stream.set_nodelay(true);
                     return Ok(Conn {
-                        stream,
+                        stream: Arc::new(stream),
                         number,
                         peer: a.to_string(),
                         rbuf: Vec::new(),
@@ -250,6 +281,20 @@ impl Conn {
         });
         self.resp = resp;
         r??;
+        if let Some(i) = echo_mismatch(subs, &self.resp) {
+            let (q, a) = (&subs[i], &self.resp[i]);
+            return Err(Error::protocol(
+                detail::ECHO,
+                format!(
+                    "answer subpacket {} is class {} command {:#x}, the request's is class {} command {:#x}",
+                    i + 1,
+                    a.class,
+                    a.cmd,
+                    q.class,
+                    q.cmd
+                ),
+            ));
+        }
         Ok(&self.resp)
     }
 
@@ -262,7 +307,7 @@ impl Conn {
                 .remaining()
                 .ok_or_else(|| Error::socket(detail::SEND, "send: timed out"))?;
             self.arm(false, left);
-            match (&self.stream).write(&self.wbuf[sent..]) {
+            match (&*self.stream).write(&self.wbuf[sent..]) {
                 Ok(0) => {
                     return Err(Error::socket(
                         detail::SEND,
@@ -283,24 +328,26 @@ impl Conn {
     }
 
     /// Reads at least one more byte into the read buffer, as many as have
-    /// arrived (up to the room left), before the deadline.
-    fn fill(&mut self, deadline: Deadline, on_timeout: (i16, i16)) -> Result<()> {
-        if self.rbuf.is_empty() {
-            self.rbuf = vec![0; RBUF];
-        }
+    /// arrived (up to the room left), before the deadline; first makes
+    /// room for the `need` bytes of the frame begun at `rstart`.
+    fn fill(&mut self, deadline: Deadline, on_timeout: (i16, i16), need: usize) -> Result<()> {
         if self.rstart == self.rend {
             (self.rstart, self.rend) = (0, 0);
-        } else if self.rbuf.len() - self.rstart < MAX_FRAME {
+        } else if self.rbuf.len() - self.rstart < need {
             // Make room for the rest of the frame begun at rstart.
             self.rbuf.copy_within(self.rstart..self.rend, 0);
             (self.rstart, self.rend) = (0, self.rend - self.rstart);
+        }
+        if self.rbuf.len() - self.rstart < need {
+            let size = need.next_power_of_two().clamp(RBUF_FIRST, RBUF);
+            self.rbuf.resize(size.max(need), 0);
         }
         loop {
             let left = deadline
                 .remaining()
                 .ok_or_else(|| Error::socket(on_timeout, "receive: timed out"))?;
             self.arm(true, left);
-            match (&self.stream).read(&mut self.rbuf[self.rend..]) {
+            match (&*self.stream).read(&mut self.rbuf[self.rend..]) {
                 Ok(0) => {
                     return Err(Error::socket(
                         detail::EOF,
@@ -330,7 +377,7 @@ impl Conn {
         loop {
             let have = self.rend - self.rstart;
             if have < HEADER_LEN {
-                self.fill(deadline, detail::RECV_TIMEOUT_HEADER)?;
+                self.fill(deadline, detail::RECV_TIMEOUT_HEADER, HEADER_LEN)?;
                 continue;
             }
             let at = self.rstart;
@@ -344,7 +391,7 @@ impl Conn {
             };
             let total = HEADER_LEN + h.len as usize;
             if have < total {
-                self.fill(deadline, detail::RECV_TIMEOUT_BODY)?;
+                self.fill(deadline, detail::RECV_TIMEOUT_BODY, total)?;
                 continue;
             }
             self.rstart += total;
@@ -390,11 +437,13 @@ impl Conn {
         })
     }
 
-    /// Takes the bytes read and not yet taken as frames (connection 1
-    /// hands them to its own buffer when it takes over the connection).
+    /// Takes the bytes read and not yet taken as frames, and frees the
+    /// read buffer (connection 1 hands them to its own buffer when it takes
+    /// over the connection).
     pub fn take_buffered(&mut self) -> Vec<u8> {
         let v = self.rbuf[self.rstart..self.rend].to_vec();
         (self.rstart, self.rend) = (0, 0);
+        self.rbuf = Vec::new();
         v
     }
 
@@ -429,7 +478,7 @@ impl Conn {
                     Error::socket(detail::RECV_TIMEOUT_HEADER, "receive: timed out")
                 })?;
                 self.arm(true, left);
-                match (&self.stream).read(&mut tmp) {
+                match (&*self.stream).read(&mut tmp) {
                     Err(e)
                         if matches!(
                             e.kind(),
@@ -451,6 +500,13 @@ impl Conn {
             }
             Err(e) => Err(Error::socket(detail::EOF, format!("receive: {e}"))),
         }
+    }
+
+    /// The socket, to shut down from another thread while a call waits on
+    /// it (the descriptor stays open until the last of them is dropped, so
+    /// a shutdown never reaches a descriptor number used again).
+    pub fn shutter(&self) -> Arc<TcpStream> {
+        self.stream.clone()
     }
 
     pub fn shutdown(&self) {

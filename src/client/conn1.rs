@@ -4,7 +4,7 @@
 
 use super::conn::{Conn, Deadline, close_conn};
 use super::log;
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, detail};
 use crate::ew::EW_BUSY;
 use crate::proto::download::Outgoing;
 use crate::proto::frame::{CLIENT_VERSION, Frame, ftype};
@@ -80,12 +80,20 @@ impl Conn1 {
         Ok(())
     }
 
-    /// Waits for a frame of kind `kind`, discarding others (stale upload data).
+    /// Waits for a frame of kind `kind` (a transfer's start answer). A
+    /// frame of another program-transfer kind (0x11 to 0x1c) is what an
+    /// aborted transfer still sent before the CNC took the abort: dropped.
+    /// A frame of any other kind is no answer connection 1 can carry:
+    /// EW_PROTOCOL, never dropped in silence.
     pub(super) fn recv_kind(&mut self, kind: u8, deadline: Deadline) -> Result<Frame> {
         loop {
             let f = self.next_frame(Some(deadline))?.expect("waited");
-            if (f.ftype >> 8) as u8 == kind {
+            let k = (f.ftype >> 8) as u8;
+            if k == kind {
                 return Ok(f);
+            }
+            if !stale(k) {
+                return Err(unexpected(f.ftype, "waiting for a transfer's answer"));
             }
             crate::log_at!(
                 log::ERRORS,
@@ -144,12 +152,29 @@ impl Conn1 {
         Ok(())
     }
 
-    /// The close handshake, through the read buffer.
+    /// The close handshake, through the read buffer: whatever arrives
+    /// before the close answer is dropped (the pair is closing).
     pub(super) fn close(&mut self, deadline: Deadline) -> Result<()> {
         if self.rbuf.is_empty() {
             return close_conn(&mut self.conn, deadline);
         }
         self.send(ftype::CLOSE_REQ, Vec::new(), deadline)?;
-        self.recv_kind(0x02, deadline).map(|_| ())
+        while (self.next_frame(Some(deadline))?.expect("waited").ftype >> 8) != 0x02 {}
+        Ok(())
     }
+}
+
+/// A program-transfer frame kind (upload 0x15 to 0x18, download 0x11 to
+/// 0x14, DNC 0x19 to 0x1c): one an aborted transfer may still send.
+pub(super) fn stale(kind: u8) -> bool {
+    (0x11..=0x1c).contains(&kind)
+}
+
+/// A frame of type `ftype` where connection 1 expects none of its kind:
+/// EW_PROTOCOL (FANUC's library's code for it during an upload).
+pub(super) fn unexpected(ftype: u16, during: &str) -> Error {
+    Error::protocol(
+        detail::FRAME_KIND,
+        format!("connection 1: a frame of type {ftype:04x} {during}"),
+    )
 }

@@ -8,7 +8,7 @@
 //! the next call, as FANUC's library does.
 
 use super::conn::Deadline;
-use super::conn1::{Conn1, Sending};
+use super::conn1::{Conn1, Sending, stale, unexpected};
 use super::pair::Pair;
 use crate::error::{Error, Result};
 use crate::ew::{EW_BUSY, EW_FUNC, EW_RESET};
@@ -69,7 +69,10 @@ impl Conn1 {
     }
 
     /// `h`'s running transfer of kind `how`, after taking in an error
-    /// frame that has arrived (frames of other kinds are stale: dropped).
+    /// frame that has arrived. Before the start is sent a program-transfer
+    /// frame is an earlier transfer's (dropped); any other frame is not one
+    /// the CNC sends during a transfer: it ends the transfer with
+    /// EW_PROTOCOL, so that its end call never reports success.
     fn sending(&mut self, how: Outgoing) -> Result<&mut Sending> {
         match &self.outgoing {
             Some(s) if s.how == how => {}
@@ -79,8 +82,20 @@ impl Conn1 {
             let Some(f) = self.next_frame(None)? else {
                 break;
             };
-            if (f.ftype >> 8) as u8 == how.error {
-                self.outgoing.as_mut().expect("checked").ended = Some(cnc_end(&f.body));
+            let s = self.outgoing.as_mut().expect("checked");
+            let k = (f.ftype >> 8) as u8;
+            if k == how.error {
+                s.ended = Some(cnc_end(&f.body));
+            } else if s.pending.is_some() && stale(k) {
+                // Before this transfer's start: what an earlier one (ended
+                // or aborted) still sent.
+                crate::log_at!(
+                    super::log::ERRORS,
+                    "conn1 discarded a frame of type {:04x} before a transfer's start",
+                    f.ftype
+                );
+            } else {
+                s.ended = Some(unexpected(f.ftype, "during a download or DNC operation"));
             }
         }
         Ok(self.outgoing.as_mut().expect("checked"))
@@ -100,7 +115,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             if c1.upload.is_some() || c1.outgoing.is_some() {
                 return Err(Error::local(EW_BUSY, "a transfer is already running"));
@@ -131,7 +146,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             if let Some(e) = &c1.sending(how)?.ended {
                 return Err(e.clone());
@@ -155,19 +170,19 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             if let Some(r) = c1.finishing(how)? {
                 return r;
             }
             c1.send(how.end_req(), Vec::new(), deadline)?;
-            loop {
-                let f = c1.next_frame(Some(deadline))?.expect("waited");
-                match (f.ftype >> 8) as u8 {
-                    k if k == how.end => break Ok(()),
-                    k if k == how.error => break ok_at_end(cnc_end(&f.body)),
-                    _ => {}
-                }
+            // The end's answer or the CNC's error frame; any other frame
+            // is no answer to it.
+            let f = c1.next_frame(Some(deadline))?.expect("waited");
+            match (f.ftype >> 8) as u8 {
+                k if k == how.end => Ok(()),
+                k if k == how.error => ok_at_end(cnc_end(&f.body)),
+                _ => Err(unexpected(f.ftype, "waiting for the end's answer")),
             }
         })
     }
@@ -183,7 +198,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             c1.settle(h, live, deadline)?;
             match c1.finishing(how)? {
                 Some(r) => r,

@@ -13,9 +13,9 @@ use crate::proto::packet::{CLASS_PMC, ReqSub};
 use crate::proto::param::Param16;
 use crate::proto::status::{SysInfo, sysinfo_at_connect};
 use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
-use parking_lot::Mutex;
+use parking_lot::{Condvar, Mutex, MutexGuard};
 use std::collections::HashMap;
-use std::net::{SocketAddr, ToSocketAddrs};
+use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -60,29 +60,52 @@ pub struct Pair {
     host: String,
     port: u16,
     id: u32,
-    /// Serialises revivals: one reconnect at a time per pair.
+    /// Serialises revivals: one reconnect at a time per pair, waited for
+    /// at most the call's timeout.
     revive: Mutex<()>,
     pub info: CncInfo,
-    /// Connection 2, the data requests. One exchange at a time: std's
-    /// futex mutex, as a C client's would be (under many threads on one
-    /// CNC it kept throughput at the plain-socket floor more steadily than
-    /// parking_lot's, benches/floor.rs); see [`Pair::io`].
-    io: std::sync::Mutex<Option<Conn>>,
+    /// Connection 2, the data requests. One exchange at a time: waited for
+    /// at most the call's timeout ([`Deadline::lock`]; EW_BUSY, nothing
+    /// sent, when another call kept it that long), and handed to the
+    /// longest waiter at each release (`unlock_fair`), so that threads
+    /// on one CNC take turns instead of one taking it again and again.
+    io: Mutex<Option<Conn>>,
     /// Connection 1 and the program upload on it (src/client/upload.rs).
     /// Its own lock, never held together with `io`: an upload never holds
     /// up the data requests of other handles.
     pub(super) c1: Mutex<Option<Conn1>>,
+    /// Both connections' sockets, so that [`Pair::kill`] and the last
+    /// free shut them down without waiting for a call that holds them
+    /// (that call then fails at once).
+    shutters: Mutex<[Option<Arc<TcpStream>>; 2]>,
     /// Number of handles using the pair; the last free closes it.
     refs: Mutex<usize>,
     dead: AtomicBool,
 }
 
-/// Slots by "host:port". A slot's mutex serialises connecting to that CNC,
-/// so handles made at the same time share one pair; other CNCs are not held up.
-type Slot = Arc<Mutex<Option<Arc<Pair>>>>;
-static SLOTS: Mutex<Option<HashMap<String, Slot>>> = Mutex::new(None);
+/// What is known of the pair to one "host:port".
+#[derive(Default)]
+enum SlotState {
+    #[default]
+    Empty,
+    /// A handle is connecting: others wait for its pair (to share it), at
+    /// most their own timeout.
+    Connecting,
+    Ready(Arc<Pair>),
+}
 
-fn slot(key: &str) -> Slot {
+/// A slot's lock is held only to look and to set its state, never across
+/// the connect, so a connect that hangs holds up no other call; handles
+/// made at the same time still share one pair.
+#[derive(Default)]
+struct Slot {
+    state: Mutex<SlotState>,
+    changed: Condvar,
+}
+
+static SLOTS: Mutex<Option<HashMap<String, Arc<Slot>>>> = Mutex::new(None);
+
+fn slot(key: &str) -> Arc<Slot> {
     let mut g = SLOTS.lock();
     g.get_or_insert_with(HashMap::new)
         .entry(key.to_string())
@@ -90,34 +113,89 @@ fn slot(key: &str) -> Slot {
         .clone()
 }
 
-/// A live pair to `host:port`, shared if one exists, else a new connection.
-/// Returns the pair with its reference count already taken.
-pub fn acquire(host: &str, port: u16, timeout: i32, id: u32) -> Result<Arc<Pair>> {
-    let key = format!("{host}:{port}");
-    let slot = slot(&key);
-    let mut cur = slot.lock();
-    if let Some(p) = cur.as_ref() {
-        let mut refs = p.refs.lock();
-        if *refs > 0 && !p.is_dead() {
-            *refs += 1;
-            return Ok(p.clone());
+/// Sets a slot back to Empty if its connect did not finish (a panic).
+struct Connecting<'a>(&'a Slot, bool);
+
+impl Drop for Connecting<'_> {
+    fn drop(&mut self) {
+        if !self.1 {
+            *self.0.state.lock() = SlotState::Empty;
+            self.0.changed.notify_all();
         }
     }
-    let deadline = Deadline::after_secs(timeout);
-    let pair = Arc::new(Pair::connect(key, host, port, deadline, timeout, id)?);
-    *cur = Some(pair.clone());
-    Ok(pair)
 }
 
-/// Closes every pair (cnc_exitprocess).
+/// A live pair to `host:port`, shared if one exists, else a new connection.
+/// Returns the pair with its reference count already taken. Waits for
+/// another handle connecting to the same CNC at most until this one's
+/// timeout (EW_SOCKET, as a connect that timed out), then connects itself
+/// if that one failed.
+pub fn acquire(host: &str, port: u16, timeout: i32, id: u32) -> Result<Arc<Pair>> {
+    let key = format!("{host}:{port}");
+    let deadline = Deadline::after_secs(timeout);
+    let slot = slot(&key);
+    let mut g = slot.state.lock();
+    loop {
+        match &*g {
+            SlotState::Ready(p) => {
+                let mut refs = p.refs.lock();
+                if *refs > 0 && !p.is_dead() {
+                    *refs += 1;
+                    return Ok(p.clone());
+                }
+                break;
+            }
+            SlotState::Empty => break,
+            SlotState::Connecting => match deadline.at() {
+                None => slot.changed.wait(&mut g),
+                Some(at) => {
+                    if slot.changed.wait_until(&mut g, at).timed_out() {
+                        return Err(Error::socket(
+                            detail::CONNECT,
+                            "connect: timed out waiting for another handle's connection to this CNC",
+                        ));
+                    }
+                }
+            },
+        }
+    }
+    *g = SlotState::Connecting;
+    drop(g);
+    let mut guard = Connecting(&slot, false);
+    let r = Pair::connect(key, host, port, deadline, timeout, id).map(Arc::new);
+    guard.1 = true;
+    *slot.state.lock() = match &r {
+        Ok(p) => SlotState::Ready(p.clone()),
+        Err(_) => SlotState::Empty,
+    };
+    slot.changed.notify_all();
+    r
+}
+
+/// Lets go of `pair` if its slot still holds it (its last handle was
+/// freed): the pair's memory goes with it; the slot stays, empty.
+fn vacate(pair: &Pair) {
+    let slot = SLOTS
+        .lock()
+        .as_ref()
+        .and_then(|m| m.get(&pair.key).cloned());
+    if let Some(slot) = slot {
+        let mut g = slot.state.lock();
+        if matches!(&*g, SlotState::Ready(p) if std::ptr::eq(&**p, pair)) {
+            *g = SlotState::Empty;
+        }
+    }
+}
+
+/// Closes every pair (cnc_exitprocess), waiting for no call.
 pub fn forget_all() {
-    let slots: Vec<Slot> = SLOTS
+    let slots: Vec<Arc<Slot>> = SLOTS
         .lock()
         .take()
         .map(|m| m.into_values().collect())
         .unwrap_or_default();
     for s in slots {
-        if let Some(p) = s.lock().take() {
+        if let SlotState::Ready(p) = std::mem::take(&mut *s.state.lock()) {
             p.kill();
         }
     }
@@ -199,6 +277,7 @@ impl Pair {
                     open_body.class(),
                     open_body.path_count()
                 );
+                let shutters = [Some(conns.c1.shutter()), Some(conns.c2.shutter())];
                 Ok(Pair {
                     key,
                     host: host.to_string(),
@@ -211,8 +290,9 @@ impl Pair {
                         option,
                         axes15,
                     },
-                    io: std::sync::Mutex::new(Some(conns.c2)),
+                    io: Mutex::new(Some(conns.c2)),
                     c1: Mutex::new(Some(Conn1::new(conns.c1))),
+                    shutters: Mutex::new(shutters),
                     refs: Mutex::new(1),
                     dead: AtomicBool::new(false),
                 })
@@ -282,13 +362,6 @@ impl Pair {
         Ok((sysinfo, option, axes15))
     }
 
-    /// Connection 2, locked. A panic while it was held (a bug, caught at the
-    /// C boundary) is no reason to fail every later call on the pair: the
-    /// poison is ignored, as parking_lot's locks have none.
-    fn io(&self) -> std::sync::MutexGuard<'_, Option<Conn>> {
-        self.io.lock().unwrap_or_else(|e| e.into_inner())
-    }
-
     /// Takes one more reference for a new handle on this live pair (the
     /// Rust API's `Cnc::try_clone`); a pair already closed or torn down
     /// gives EW_SOCKET.
@@ -306,14 +379,26 @@ impl Pair {
     }
 
     /// Tears the pair down ("circuit destroyed"): every later call on any of
-    /// its handles fails with EW_SOCKET without traffic.
+    /// its handles fails with EW_SOCKET without traffic. Waits for no call:
+    /// the sockets are shut down, which ends a call waiting on them at once
+    /// (EW_SOCKET), and the connections are dropped now or by that call.
     pub fn kill(&self) {
         self.dead.store(true, Ordering::Release);
-        if let Some(c) = self.c1.lock().take() {
-            c.conn.shutdown();
+        self.shut();
+        if let Some(mut g) = self.c1.try_lock() {
+            g.take();
         }
-        if let Some(c) = self.io().take() {
-            c.shutdown();
+        if let Some(mut g) = self.io.try_lock() {
+            g.take();
+        }
+    }
+
+    /// Shuts both sockets down, whoever holds the connections.
+    fn shut(&self) {
+        for s in self.shutters.lock().iter_mut() {
+            if let Some(s) = s.take() {
+                let _ = s.shutdown(std::net::Shutdown::Both);
+            }
         }
     }
 
@@ -323,7 +408,12 @@ impl Pair {
     /// what they learnt at connect time); a pair its handles freed stays
     /// dead. Nothing sent before is sent again.
     pub fn revive(&self, deadline: Deadline, timeout: i32) -> Result<()> {
-        let _one = self.revive.lock();
+        let Some(_one) = deadline.lock(&self.revive) else {
+            return Err(Error::socket(
+                detail::CONNECT,
+                "connect: timed out waiting for another handle's reconnect",
+            ));
+        };
         if !self.is_dead() {
             return Ok(());
         }
@@ -345,8 +435,14 @@ impl Pair {
                 "the CNC answered the open as another machine",
             ));
         }
-        *self.c1.lock() = fresh.c1.lock().take();
-        *self.io() = fresh.io().take();
+        let (Some(mut c1), Some(mut io)) = (deadline.lock(&self.c1), deadline.lock(&self.io))
+        else {
+            fresh.kill();
+            return Err(busy());
+        };
+        *c1 = fresh.c1.lock().take();
+        *io = fresh.io.lock().take();
+        *self.shutters.lock() = std::mem::take(&mut *fresh.shutters.lock());
         self.dead.store(false, Ordering::Release);
         crate::log_at!(log::CALLS, "reconnected to {}", self.key);
         Ok(())
@@ -368,7 +464,13 @@ impl Pair {
         deadline: Deadline,
     ) -> Result<()> {
         let cx = self.info.ctx(path);
-        let mut io = self.io();
+        let Some(mut io) = deadline.lock(&self.io) else {
+            return Err(busy());
+        };
+        if self.is_dead() {
+            // Torn down while a call held the connection: dropped now.
+            io.take();
+        }
         let Some(c2) = io.as_mut() else {
             return Err(dead());
         };
@@ -386,27 +488,42 @@ impl Pair {
             .map(|resp| (c.decode)(&cx, resp));
         c2.give_request(subs);
         match r {
-            Ok(r) => r,
+            Ok(r) => {
+                MutexGuard::unlock_fair(io);
+                r
+            }
             Err(e) => {
                 if stream_broken(&e) {
                     drop(io);
                     self.kill();
+                } else {
+                    MutexGuard::unlock_fair(io);
                 }
                 Err(e)
             }
         }
     }
 
-    /// Drops one handle's reference; the last one sends the close frames.
+    /// Drops one handle's reference; the last one sends the close frames
+    /// (their answers waited for at most `timeout`). It waits for no call:
+    /// when one still holds a connection (a handle freed while another
+    /// thread calls on it, cnc_exitprocess), the sockets are shut down
+    /// instead, which ends that call at once (EW_SOCKET).
     pub fn release(&self, timeout: i32) -> Result<()> {
         let mut refs = self.refs.lock();
         *refs = refs.saturating_sub(1);
         if *refs > 0 {
             return Ok(());
         }
-        let c1 = self.c1.lock().take();
-        let c2 = self.io().take();
         self.dead.store(true, Ordering::Release);
+        drop(refs);
+        vacate(self);
+        let c1 = self.c1.try_lock().map(|mut g| g.take());
+        let c2 = self.io.try_lock().map(|mut g| g.take());
+        let (Some(c1), Some(c2)) = (c1, c2) else {
+            self.shut();
+            return Ok(());
+        };
         match (c1, c2) {
             (Some(mut c1), Some(mut c2)) => {
                 let deadline = Deadline::after_secs(timeout);
@@ -424,6 +541,15 @@ impl Pair {
             }
         }
     }
+}
+
+/// A call that waited its whole timeout for the connection another
+/// handle's call held: nothing was sent.
+pub(crate) fn busy() -> Error {
+    Error::local(
+        crate::ew::EW_BUSY,
+        "another call held the CNC's connection for this call's whole timeout; nothing was sent",
+    )
 }
 
 pub(crate) fn dead() -> Error {

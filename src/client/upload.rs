@@ -9,9 +9,9 @@
 //! any handle of the pair (or closed with the pair by the last free).
 
 use super::conn::Deadline;
-use super::conn1::{Conn1, Upload};
+use super::conn1::{Conn1, Upload, unexpected};
 use super::log;
-use super::pair::{Pair, dead, stream_broken};
+use super::pair::{Pair, busy, dead, stream_broken};
 use crate::error::{Error, Result};
 use crate::ew::{EW_BUFFER, EW_BUSY, EW_FUNC, EW_LENGTH, EW_RESET};
 use crate::proto::frame::ftype;
@@ -27,14 +27,22 @@ fn no_upload() -> Error {
     Error::local(EW_FUNC, "no upload started (cnc_upstart first)")
 }
 
-fn busy() -> Error {
+fn upload_busy() -> Error {
     Error::local(EW_BUSY, "another upload is running on this connection")
 }
 
 impl Pair {
     /// Runs `f` on connection 1; a broken stream tears the pair down.
-    pub(super) fn with_c1<T>(&self, f: impl FnOnce(&mut Conn1) -> Result<T>) -> Result<T> {
-        let mut g = self.c1.lock();
+    /// Waits for it at most until `deadline` (EW_BUSY, nothing sent, when
+    /// another handle's call kept it that long).
+    pub(super) fn with_c1<T>(
+        &self,
+        deadline: Deadline,
+        f: impl FnOnce(&mut Conn1) -> Result<T>,
+    ) -> Result<T> {
+        let Some(mut g) = deadline.lock(&self.c1) else {
+            return Err(busy());
+        };
         let c1 = g.as_mut().ok_or_else(dead)?;
         let r = f(c1);
         if let Err(e) = &r {
@@ -67,9 +75,9 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             if Self::settle(c1, h, live, deadline)? || c1.outgoing.is_some() {
-                return Err(busy());
+                return Err(upload_busy());
             }
             c1.send(ftype::UPLOAD_START_REQ, req.encode(), deadline)?;
             c1.recv_kind(KIND_START, deadline)?;
@@ -97,7 +105,7 @@ impl Pair {
         live: impl Fn(u16) -> bool,
     ) -> Result<usize> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             if !Self::settle(c1, h, live, deadline)? {
                 return Err(no_upload());
             }
@@ -163,11 +171,22 @@ impl Pair {
                             detail2,
                         });
                     }
-                    _ => crate::log_at!(
-                        log::ERRORS,
-                        "conn1 discarded a frame of type {:04x} during an upload",
-                        f.ftype
-                    ),
+                    // Any other frame is not the upload's: the upload
+                    // ends with EW_PROTOCOL (as FANUC's library), never
+                    // as complete with that frame's text lost.
+                    _ => {
+                        crate::log_at!(
+                            log::ERRORS,
+                            "conn1: a frame of type {:04x} during an upload: EW_PROTOCOL",
+                            f.ftype
+                        );
+                        let e = unexpected(f.ftype, "during an upload");
+                        u.ended = Some(e.clone());
+                        if total > 0 {
+                            break;
+                        }
+                        return Err(e);
+                    }
                 }
             }
             if let Some(u) = c1.upload.as_mut() {
@@ -183,7 +202,7 @@ impl Pair {
     /// is EW_SOCKET and tears the pair down, as a stalled cnc_upload does.
     pub fn upload_wait(&self, h: u16, timeout: i32) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             match &c1.upload {
                 Some(u) if u.owner == h => {
                     if u.ended.is_some() || u.pos < u.text.len() {
@@ -200,7 +219,7 @@ impl Pair {
     /// sends the 0x1804 abort. After a CNC error frame, that error.
     pub fn upload_end(&self, h: u16, timeout: i32, live: impl Fn(u16) -> bool) -> Result<()> {
         let deadline = Deadline::after_secs(timeout);
-        self.with_c1(|c1| {
+        self.with_c1(deadline, |c1| {
             if !Self::settle(c1, h, live, deadline)? {
                 return Err(no_upload());
             }
@@ -231,6 +250,11 @@ impl Pair {
                             detail2,
                         }),
                     }
+                }
+                // Text or nothing yet: the caller ends the upload early.
+                Some(f) if (f.ftype >> 8) as u8 != KIND_DATA => {
+                    c1.abort(deadline)?;
+                    Err(unexpected(f.ftype, "during an upload"))
                 }
                 _ => c1.abort(deadline),
             }

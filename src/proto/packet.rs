@@ -219,6 +219,18 @@ pub fn decode_response_into(body: &[u8], out: &mut Vec<RespSub>) -> Result<(), D
     Ok(())
 }
 
+/// The first answered subpacket that does not echo its request's class
+/// and command, in order (None when every one does). A CNC echoes both in
+/// each result block; one that does not answers another request, or
+/// another order, and its answer is not this call's. Only the subpackets
+/// both lists hold are compared: a missing one is the decoders' error.
+/// FANUC's library does not look (README.md, "Where we differ").
+pub fn echo_mismatch(req: &[ReqSub], resp: &[RespSub]) -> Option<usize> {
+    req.iter()
+        .zip(resp)
+        .position(|(q, r)| q.class != r.class || q.cmd != r.cmd)
+}
+
 fn decode_list<T>(
     body: &[u8],
     fixed: usize,

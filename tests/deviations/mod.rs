@@ -578,6 +578,31 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "with a negative type FANUC's library sends a broken subpacket (its length 28 + 16 type) that the CNC drops the connection on (EW_SOCKET); ours answers EW_LENGTH (2) before any traffic",
     },
+    // --- the reply check (issue 22) ---
+    Deviation {
+        function: "cnc_statinfo",
+        cases: &[
+            "statinfo_v3_shape_missing_sub2",
+            "statinfo_v2_shape_missing_sub2",
+        ],
+        reason: SHIFTED_ANSWER,
+    },
+    Deviation {
+        function: "cnc_statinfo2",
+        cases: &[
+            "statinfo2_v3_shape_missing_sub2",
+            "statinfo2_v2_shape_missing_sub2",
+        ],
+        reason: SHIFTED_ANSWER,
+    },
+    Deviation {
+        function: "cnc_rdprstrinfo",
+        cases: &[
+            "rdprstrinfo_v3_shape_missing_sub2",
+            "rdprstrinfo_v2_shape_missing_sub2",
+        ],
+        reason: SHIFTED_ANSWER,
+    },
     // --- machine data (issue 11) ---
     Deviation {
         function: "cnc_rdctrldi",
@@ -634,6 +659,28 @@ const EXT_ATTR_PAST_PAYLOAD: &str = "FANUC's library reads the attribute fields 
 
 /// cnc_rddynamic / cnc_rddynamic2.
 const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload shorter than them from the next subpacket's header, and with a subpacket missing reads the later ones shifted, writing that into the caller's struct; ours returns EW_PROTOCOL (-17) and writes nothing";
+
+/// An answer with its second subpacket left out (the later ones shifted up).
+const SHIFTED_ANSWER: &str = "with a subpacket missing from the answer and the later ones shifted up, FANUC's library returns EW_PROTOCOL (-17) after writing the fields it took from the shifted subpackets (cnc_statinfo/2: hdck and tmmode; cnc_rdprstrinfo: the fields of the subpackets it read); ours sees that the shifted subpacket does not echo the command asked (the reply check, README.md \"Where we differ\") and returns EW_PROTOCOL writing nothing";
+
+/// A difference no recorded case shows, with the test that checks ours.
+#[allow(dead_code)] // read by tests/reliability.rs
+pub struct Unrecorded {
+    pub what: &'static str,
+    pub reason: &'static str,
+    /// `file::test` that checks it.
+    pub test: &'static str,
+}
+
+/// Differences the oracle's recordings cannot show: its fake CNC always
+/// answers as a CNC does (every subpacket echoing its request's class and
+/// command), so FANUC's library was never recorded against one that does not.
+#[allow(dead_code)] // read by tests/reliability.rs
+pub const UNRECORDED: &[Unrecorded] = &[Unrecorded {
+    what: "an answer whose subpackets do not echo the request's class and command, in order (the answer to another command, or the right answers in another order)",
+    reason: "FANUC's library decodes it as this call's answer and returns EW_OK whenever the subpacket count fits (a cnc_wrmacro reporting success on another command's answer); a real CNC always echoes, so ours returns EW_PROTOCOL (-17), cnc_getdtailerr 3/0, and writes nothing",
+    test: "reliability::a_reply_that_does_not_echo_the_request_is_never_ew_ok",
+}];
 
 pub fn matches(pat: &str, name: &str) -> bool {
     match pat.strip_suffix('*') {
