@@ -58,6 +58,9 @@ enum Fix {
     NoTraffic(usize),
     /// The in-out value `name` of the call ends as this value instead of FANUC's.
     Field(usize, &'static str, i64),
+    /// The output buffer `name` of the call holds these bytes (hex; 0xCC
+    /// after them) instead of FANUC's.
+    Output(usize, &'static str, &'static str),
     /// The call exchanges the frames recorded for another call (FANUC refused
     /// it locally; we perform it).
     FramesOf(usize, usize),
@@ -151,6 +154,19 @@ const DEVIATIONS: &[Deviation] = &[
         reason: "(c) after a bad magic FANUC keeps reading the out-of-step stream (-17 again); we tear the pair down: \
                  the next call returns EW_SOCKET (-16) without traffic",
         treatment: Differs(&[TornDown(0), Ret(2, EW_SOCKET), NoTraffic(2)]),
+    },
+    // (g) an answer that does not echo the request's command is not this call's.
+    Deviation {
+        function: "cnc_rdcncid",
+        case: "garbled_cmd_echo_mismatch_accepted",
+        reason: "(g) the answer echoes another command than the request's: FANUC decodes it and returns 0; we return \
+                 EW_PROTOCOL (-17) with nothing written, and cnc_getdtailerr says 3/0 (an answer that does not fit the \
+                 request), as for a missing subpacket",
+        treatment: Differs(&[
+            Ret(0, EW_PROTOCOL),
+            NoOutput(0),
+            Output(1, "out", "03000000"),
+        ]),
     },
     Deviation {
         function: "cnc_rdcncid",
@@ -965,8 +981,14 @@ fn run_case(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<String> {
         // Output buffers.
         let nothing = fixes.iter().any(|f| matches!(f, NoOutput(c) if *c == i));
         for (name, got) in &o.outputs {
+            let fixed = fixes.iter().find_map(|f| match *f {
+                Output(c, n, hex) if c == i && n == *name => Some(unhex(hex)),
+                _ => None,
+            });
             let want: Option<&[u8]> = if nothing {
                 Some(&[])
+            } else if let Some(f) = &fixed {
+                Some(f.as_slice())
             } else {
                 call.outputs.get(*name).map(|x| x.hex.as_slice())
             };
@@ -1096,7 +1118,8 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
                 | NoTraffic(i)
                 | Script(i, _)
                 | TornDown(i)
-                | Field(i, _, _) => vec![i],
+                | Field(i, _, _)
+                | Output(i, _, _) => vec![i],
                 FramesOf(i, j) => vec![i, j],
             };
             if idx.iter().any(|i| *i >= case.calls.len()) {
