@@ -2006,6 +2006,7 @@ fn readme_lists_every_deviation() {
         ("(c)", "after a bad magic"),
         ("(d)", "timeout checked with whole-second granularity"),
         ("(f)", "`cnc_rdmacro` writes `datano`"),
+        ("(g)", "whose subpackets echo other commands"),
     ];
     let readme =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
