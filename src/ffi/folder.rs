@@ -326,7 +326,7 @@ pub unsafe extern "C" fn cnc_pdf_delline(
 /// bytes after the block, at most 256) and its block.
 ///
 /// # Safety
-/// `path` must have 256 writable bytes, `block` 4.
+/// `path` must have 256 writable bytes, `block` 4 writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_pdf_rdactpt(
     FlibHndl: c_ushort,
@@ -382,8 +382,8 @@ pub unsafe extern "C" fn cnc_pdf_wractpt(
 /// library counts them.
 ///
 /// # Safety
-/// `line_len`, `data_len` 4 readable and writable bytes each; `data` must
-/// have `*data_len` writable bytes.
+/// `line_len` and `data_len` must point to 4 readable and writable bytes
+/// each; `data` must have `*data_len` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdpdf_line(
     FlibHndl: c_ushort,
@@ -496,7 +496,8 @@ unsafe fn dir_records(
 /// (none: the first `sub_exist` is set to 0, as FANUC's library does).
 ///
 /// # Safety
-/// `num` readable and writable, `inp` readable, `out` `*num` writable records.
+/// `num` must point to a readable and writable short, `inp` to a readable
+/// IDBPDFSDIR, `out` to `*num` writable ODBPDFSDIR.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdpdf_subdir(
     FlibHndl: c_ushort,
@@ -540,7 +541,8 @@ pub unsafe extern "C" fn cnc_rdpdf_subdir(
 /// (`dummy`, `dummy2` not written); `*num` = read.
 ///
 /// # Safety
-/// `num` readable and writable, `inp` readable, `out` `*num` writable records.
+/// `num` must point to a readable and writable short, `inp` to a readable
+/// IDBPDFADIR, `out` to `*num` writable ODBPDFADIR.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdpdf_alldir(
     FlibHndl: c_ushort,

@@ -163,7 +163,7 @@ pub extern "C" fn cnc_settimeout(FlibHndl: c_ushort, timeout: c_long) -> c_short
 /// Reads the current path of this handle and the CNC's number of paths.
 ///
 /// # Safety
-/// Both pointers must be writable `short`s.
+/// `path_no` and `maxpath_no` must point to writable shorts.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_getpath(
     FlibHndl: c_ushort,

@@ -204,7 +204,9 @@ pub unsafe extern "C" fn cnc_rdzofs(
 /// FANUC's library).
 ///
 /// # Safety
-/// `zofs` must point to `length` readable bytes (an IODBZOFS).
+/// `zofs` must point to `length` readable bytes (an IODBZOFS), and at least 4
+/// (its first two shorts are read before `length` is checked, as FANUC's
+/// library reads them).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_wrzofs(
     FlibHndl: c_ushort,
@@ -231,7 +233,9 @@ pub unsafe extern "C" fn cnc_wrzofs(
 /// (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
 ///
 /// # Safety
-/// `shift` must point to `length` readable bytes (an IODBWCSF).
+/// `shift` must point to `length` readable bytes (an IODBWCSF), and at least 4
+/// (its first two shorts are read before `length` is checked, as FANUC's
+/// library reads them).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_wrwkcdshft(
     FlibHndl: c_ushort,

@@ -912,7 +912,7 @@ pub unsafe extern "C" fn cnc_accdecdly(
 ///
 /// # Safety
 /// `valid_fig` must point to a writable short, `dec_fig_in` and
-/// `dec_fig_out` to MAX_AXIS writable shorts each.
+/// `dec_fig_out` to 32 writable shorts each (MAX_AXIS).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_getfigure(
     FlibHndl: c_ushort,

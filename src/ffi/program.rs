@@ -68,7 +68,8 @@ pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_c
 /// writes `*length` 65535 and text past the buffer).
 ///
 /// # Safety
-/// `length`, `blknum` writable; `data` must have `*length` writable bytes.
+/// `length` and `blknum` must point to readable and writable shorts; `data`
+/// must have `*length` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdexecprog(
     FlibHndl: c_ushort,
@@ -349,8 +350,8 @@ const PRGDIR3_SIZE: usize = std::mem::size_of::<PRGDIR3>();
 /// CNC for 19 programs per exchange at most, as FANUC's library.
 ///
 /// # Safety
-/// `top_prog` (4 bytes) and `num_prog` readable and writable; `buf` must
-/// have `*num_prog` writable PRGDIR3 records.
+/// `top_prog` must point to 4 readable and writable bytes, `num_prog` to a
+/// readable and writable short; `buf` must have `*num_prog` writable PRGDIR3.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdprogdir3(
     FlibHndl: c_ushort,
