@@ -22,7 +22,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "type", I16),
             to(I32, "data", I32),
         ],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999", "0|1|-1|2|99"],
         ..COMMAND
     },
@@ -32,7 +32,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Short("grp_num"), Param::Out("tool", "ODBTLIFE3")],
         forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
         reply: &[to(I32, "datano", I16), to(I32, "data", I32)],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
         ..COMMAND
     },
@@ -51,7 +51,7 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             skip(I32),
         ],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
         ..COMMAND
     },
@@ -69,7 +69,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "data", I32),
             skip(I32),
         ],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
         ..COMMAND
     },
