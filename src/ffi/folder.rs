@@ -75,7 +75,10 @@ fn words(b: &[u8], n: usize, zeros: bool) -> Result<Vec<i32>> {
 /// Writes an answered path name as FANUC's library does: 256 bytes, the
 /// answer's and zeros after it.
 unsafe fn put_name(out: *mut c_char, name: &[u8]) -> Result<()> {
-    let mut b = name[..name.len().min(256)].to_vec();
+    // Up to its NUL, zeros after (as FANUC's library copies it, whatever
+    // follows the NUL in the answer).
+    let end = name.iter().position(|c| *c == 0).unwrap_or(name.len());
+    let mut b = name[..end.min(256)].to_vec();
     b.resize(256, 0);
     unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), nonnull(out)?.cast::<u8>(), 256) };
     Ok(())
