@@ -530,7 +530,261 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: CTRL_SIGNALS_PAST_STRUCT,
     },
+    // --- oracle fuzz (issue 21): replies drawn from the reply layouts ---
+    Deviation {
+        function: "cnc_rdcncid",
+        cases: &["fuzz_rdcncid_*more*", "fuzz_rdcncid_*long*"],
+        reason: "FANUC's library writes every word of a longer answer, past the four of the caller's buffer; ours writes at most four",
+    },
+    Deviation {
+        function: "cnc_rdctrldi",
+        cases: &["fuzz_rdctrldi_*"],
+        reason: CTRL_SIGNALS_PAST_STRUCT,
+    },
+    Deviation {
+        function: "cnc_rdctrldo",
+        cases: &["fuzz_rdctrldo_*"],
+        reason: CTRL_SIGNALS_PAST_STRUCT,
+    },
+    Deviation {
+        function: "cnc_rdpm_item",
+        cases: &[
+            "fuzz_rdpm_item_*Ln*",
+            "fuzz_rdpm_item_*more*",
+            "fuzz_rdpm_item_*long*",
+        ],
+        reason: FUZZ_RECORDS_PAST_COUNT,
+    },
+    Deviation {
+        function: "cnc_rdpm_cncitem",
+        cases: &[
+            "fuzz_rdpm_cncitem_*Ln*",
+            "fuzz_rdpm_cncitem_*more*",
+            "fuzz_rdpm_cncitem_*long*",
+        ],
+        reason: FUZZ_RECORDS_PAST_COUNT,
+    },
+    Deviation {
+        function: "cnc_rdpm_mcnitem",
+        cases: &[
+            "fuzz_rdpm_mcnitem_*Ln*",
+            "fuzz_rdpm_mcnitem_*more*",
+            "fuzz_rdpm_mcnitem_*long*",
+        ],
+        reason: FUZZ_RECORDS_PAST_COUNT,
+    },
+    Deviation {
+        function: "pmc_get_pmc_unit_types",
+        cases: &[
+            "fuzz_pmc_get_pmc_unit_types_*more*",
+            "fuzz_pmc_get_pmc_unit_types_*long*",
+        ],
+        reason: FUZZ_RECORDS_PAST_COUNT,
+    },
+    Deviation {
+        function: "pmc_get_timer_type",
+        cases: &[
+            "fuzz_pmc_get_timer_type_*more*",
+            "fuzz_pmc_get_timer_type_*long*",
+        ],
+        reason: "FANUC's library copies the whole answer into the caller's array, past the timers asked for; ours writes at most e_number - s_number + 1 types",
+    },
+    Deviation {
+        function: "cnc_rdpdf_drive",
+        cases: &["fuzz_rdpdf_drive_*more*", "fuzz_rdpdf_drive_*long*"],
+        reason: "FANUC's library counts and copies every 12-byte name of a longer answer, past the 16 of ODBPDFDRV; ours writes at most 16",
+    },
+    Deviation {
+        function: "cnc_rdalmhistry",
+        cases: &["fuzz_rdalmhistry_*"],
+        reason: "FANUC's library copies the entries as the CNC sent them; ours skips an entry with an impossible time (month 0 or >12, day 0 or >31, hour >23, minute or second >59) and ends the list at a message length beyond the 32-character text (README)",
+    },
+    Deviation {
+        function: "cnc_rdomhistry2",
+        cases: &["fuzz_rdomhistry2_*_a3_0_*", "fuzz_rdomhistry2_*_a3_4_*"],
+        reason: "FANUC's library ignores length and writes every entry the CNC sent past it; ours answers EW_LENGTH and writes nothing when the entries do not fit",
+    },
+    Deviation {
+        function: "cnc_rdexecprog",
+        cases: &["fuzz_rdexecprog_*_a1_0_*"],
+        reason: "with *length 0 FANUC's library sets *length 65535 and writes text past the caller's buffer; ours writes *blknum and *length 0 only",
+    },
+    Deviation {
+        function: "cnc_rdprgnum",
+        cases: &["fuzz_rdprgnum_*answer_e*"],
+        reason: "when the CNC answers an error FANUC's library writes uninitialised stack bytes into data and mdata; ours writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdmdipntr",
+        cases: &["fuzz_rdmdipntr_*answer_e*"],
+        reason: "when the CNC answers an error FANUC's library writes uninitialised stack bytes into the whole ODBMDIP; ours writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdmacro",
+        cases: &["fuzz_rdmacro_*answer_e*", "fuzz_rdmacro_*_a1_m32768_*"],
+        reason: "when the CNC answers an error FANUC's library writes the number and uninitialised stack bytes into mcr_val and dec_val; ours writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdmacro",
+        cases: &[
+            "fuzz_rdmacro_*short1*",
+            "fuzz_rdmacro_*cut*",
+            "fuzz_rdmacro_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "pmc_rdpmcinfo",
+        cases: &[
+            "fuzz_pmc_rdpmcinfo_*short1*",
+            "fuzz_pmc_rdpmcinfo_*cut*",
+            "fuzz_pmc_rdpmcinfo_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_statinfo",
+        cases: &[
+            "fuzz_statinfo_*short1*",
+            "fuzz_statinfo_*cut*",
+            "fuzz_statinfo_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_statinfo2",
+        cases: &[
+            "fuzz_statinfo2_*short1*",
+            "fuzz_statinfo2_*cut*",
+            "fuzz_statinfo2_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_rddiagnum",
+        cases: &[
+            "fuzz_rddiagnum_*short1*",
+            "fuzz_rddiagnum_*cut*",
+            "fuzz_rddiagnum_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_rdtofs",
+        cases: &[
+            "fuzz_rdtofs_*short1*",
+            "fuzz_rdtofs_*cut*",
+            "fuzz_rdtofs_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_rdzofs",
+        cases: &[
+            "fuzz_rdzofs_*short1*",
+            "fuzz_rdzofs_*cut*",
+            "fuzz_rdzofs_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_rdtoolgrp",
+        cases: &[
+            "fuzz_rdtoolgrp_*short1*",
+            "fuzz_rdtoolgrp_*cut*",
+            "fuzz_rdtoolgrp_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_modal",
+        cases: &[
+            "fuzz_modal_*short1*",
+            "fuzz_modal_*cut*",
+            "fuzz_modal_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_rdpdf_inf",
+        cases: &[
+            "fuzz_rdpdf_inf_*short1*",
+            "fuzz_rdpdf_inf_*cut*",
+            "fuzz_rdpdf_inf_*empty*",
+        ],
+        reason: "an answer shorter than ODBPDFINF makes FANUC's library fill the rest from its receive buffer (the request's bytes); ours returns EW_PROTOCOL and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdspeed",
+        cases: &[
+            "fuzz_rdspeed_*short1*",
+            "fuzz_rdspeed_*cut*",
+            "fuzz_rdspeed_*empty*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rddynamic",
+        cases: &[
+            "fuzz_rddynamic_*short1*",
+            "fuzz_rddynamic_*cut*",
+            "fuzz_rddynamic_*empty*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rddynamic2",
+        cases: &[
+            "fuzz_rddynamic2_*short1*",
+            "fuzz_rddynamic2_*cut*",
+            "fuzz_rddynamic2_*empty*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdposition",
+        cases: &[
+            "fuzz_rdposition_*short1*",
+            "fuzz_rdposition_*cut*",
+            "fuzz_rdposition_*empty*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdaxisdata",
+        cases: &[
+            "fuzz_rdaxisdata_*short1*",
+            "fuzz_rdaxisdata_*cut*",
+            "fuzz_rdaxisdata_*empty*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        cases: &[
+            "fuzz_rdspmeter_*short1*",
+            "fuzz_rdspmeter_*cut*",
+            "fuzz_rdspmeter_*empty*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdparar",
+        cases: &[
+            "fuzz_rdparar_*short1*",
+            "fuzz_rdparar_*cut*",
+            "fuzz_rdparar_*empty*",
+        ],
+        reason: "when an answer holds no whole block FANUC's library asks again from its last number received + 1 (number 1 before any); ours returns EW_PROTOCOL (-17) with the records before it written",
+    },
 ];
+
+/// The oracle fuzz's short answers (a payload one byte short, cut inside a
+/// field or empty) to single-subpacket reads.
+const FUZZ_SHORT: &str = "FANUC's library reads the bytes a payload cut inside its fields lacks from its receive buffer (the request's and earlier frames' bytes, or the next subpacket's header) and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing";
+
+/// The oracle fuzz's longer answers to record reads with a caller's count.
+const FUZZ_RECORDS_PAST_COUNT: &str = "FANUC's library writes every record a longer answer holds, past the count the caller asked for (and says so in the count); ours writes at most the records asked for";
 
 /// cnc_rdctrldi / cnc_rdctrldo.
 const CTRL_SIGNALS_PAST_STRUCT: &str = "FANUC's library writes one 4-byte word per two bytes of the answer, up to the CNC's maximum spindles (8 words, 32 bytes), into the caller's 4-byte ODBSPDI / ODBSPDO, the words past the answer from its receive buffer; ours writes the first word, the struct, only";
