@@ -3410,8 +3410,8 @@ short cnc_rdprogdir2(unsigned short FlibHndl,
  Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
  the numbers, 1 also the comments, 2 also size and modification date
  (`page` and `cdate` are never written). Out: `*num_prog` records read,
- `*top_prog` the number of the first (untouched when none was found, as
- FANUC's library). Never writes more than `*num_prog` records. Type not
+ `*top_prog` the number of the first (when none was found, the number
+ the caller's first record held, as FANUC's library). Never writes more than `*num_prog` records. Type not
  0..2: EW_ATTRIB, `*num_prog` ≤ 0: EW_LENGTH, without traffic. Asks the
  CNC for 19 programs per exchange at most, as FANUC's library.
 
