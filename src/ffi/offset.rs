@@ -133,7 +133,7 @@ pub unsafe extern "C" fn cnc_rdtofsr(
         if room < 8 + per_number * count {
             return Err(Error::length());
         }
-        let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?;
+        let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?.0;
         let n = v.len().min((room - 8) / size);
         unsafe {
             put_at(out, 0, s_number);

@@ -378,11 +378,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
-        function: "cnc_rdtofsr",
-        cases: &["rdtofsr_v2_shape_short1", "rdtofsr_v3_shape_short1"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdtoolgrp",
         cases: &[
             "rdtoolgrp_v2_shape_empty",
