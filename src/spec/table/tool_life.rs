@@ -24,6 +24,7 @@ pub const FUNCS: &[Func] = &[
         ],
         short: Short::Zeros,
         dims: &["1|0|-1|2|9999", "0|1|-1|2|99"],
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
@@ -34,6 +35,7 @@ pub const FUNCS: &[Func] = &[
         reply: &[to(I32, "datano", I16), to(I32, "data", I32)],
         short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
@@ -53,6 +55,7 @@ pub const FUNCS: &[Func] = &[
         ],
         short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
