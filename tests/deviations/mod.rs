@@ -782,6 +782,85 @@ pub const ORACLE: &[Deviation] = &[
         cases: &["fuzz_rdspmeter_v3*_s1Ln0_*"],
         reason: "FANUC's library reads the spindle records an answer without records lacks from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing",
     },
+    Deviation {
+        function: "cnc_statinfo",
+        cases: &["fuzz_statinfo_*more*", "fuzz_statinfo_*long*"],
+        reason: "FANUC's library writes every status word of a longer answer, past ODBST; ours writes the seven the struct holds",
+    },
+    Deviation {
+        function: "cnc_rdopmode",
+        cases: &["fuzz_rdopmode_*more*", "fuzz_rdopmode_*long*"],
+        reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",
+    },
+    Deviation {
+        function: "cnc_rdparanum",
+        cases: &[
+            "fuzz_rdparanum_*short1*",
+            "fuzz_rdparanum_*cut*",
+            "fuzz_rdparanum_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "pmc_get_pmc_unit_types",
+        cases: &[
+            "fuzz_pmc_get_pmc_unit_types_*short1*",
+            "fuzz_pmc_get_pmc_unit_types_*cut*",
+            "fuzz_pmc_get_pmc_unit_types_*empty*",
+        ],
+        reason: FUZZ_SHORT,
+    },
+    Deviation {
+        function: "cnc_rdspgear",
+        cases: &[
+            "fuzz_rdspgear_*s0Tcut*",
+            "fuzz_rdspgear_*s0Tshort1*",
+            "fuzz_rdspgear_*s0Tempty*",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdspmaxrpm",
+        cases: &[
+            "fuzz_rdspmaxrpm_*s0Tcut*",
+            "fuzz_rdspmaxrpm_*s0Tshort1*",
+            "fuzz_rdspmaxrpm_*s0Tempty*",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdspload",
+        cases: &[
+            "fuzz_rdspload_*s0Tcut*",
+            "fuzz_rdspload_*s0Tshort1*",
+            "fuzz_rdspload_*s0Tempty*",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdexecprog",
+        cases: &[
+            "fuzz_rdexecprog_*short1*",
+            "fuzz_rdexecprog_*cut*",
+            "fuzz_rdexecprog_*empty*",
+        ],
+        reason: "an answer shorter than its 4-byte block number (a broken one: an idle CNC answers 4 zero bytes) makes FANUC's library read past its receive buffer into the caller's; ours gives *length 0 and an empty string",
+    },
+    Deviation {
+        function: "cnc_rdmacro",
+        cases: &["fuzz_rdmacro_*_answer__*"],
+        reason: "when the CNC answers an error FANUC's library writes the number and uninitialised stack bytes into mcr_val and dec_val; ours writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdalmhistry2",
+        cases: &["fuzz_rdalmhistry2_*"],
+        reason: "FANUC's library copies the entries as the CNC sent them (and checks length against 48-byte records while writing 52-byte ODBAHIS2 records); ours skips an entry with an impossible time, ends the list at a message length beyond its text, and checks length against 52-byte records (README)",
+    },
+    Deviation {
+        function: "cnc_rdomhistry2",
+        cases: &["fuzz_rdomhistry2_*more*"],
+        reason: "FANUC's library ignores length and writes every entry the CNC sent past it; ours answers EW_LENGTH and writes nothing when the entries do not fit",
+    },
 ];
 
 /// The oracle fuzz's short answers (a payload one byte short, cut inside a
