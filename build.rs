@@ -549,7 +549,32 @@ fn described_exports(funcs: &[types::Func]) -> String {
             match &count {
                 None => outs
                     .iter()
-                    .map(|(n, t)| format!("/// `{n}` must be NULL or point to a writable {t}."))
+                    .enumerate()
+                    .map(|(i, (n, t))| match (&f.records, c_size(t)) {
+                        // Records into a scalar output: an array of them, at
+                        // most `max`, each the element's size as FANUC's
+                        // library writes it (4 bytes per `long`).
+                        (Some(r), Some(_)) if usize::from(r.out) == i => {
+                            let room = r
+                                .room
+                                .map(|k| f.numbers().nth(usize::from(k)).unwrap_or("?"));
+                            let size = c_size(r.elem).unwrap_or_else(|| {
+                                panic!("src/spec/table/: {}: records of {} into a {t}", f.name, r.elem)
+                            });
+                            let all = usize::from(r.max) * size;
+                            match room {
+                                Some(k) => format!(
+                                    "/// `{n}` must be NULL or point to `{k}` writable bytes (one {size}-byte `{}` per record answered, at most {} = {all} bytes).",
+                                    r.elem, r.max
+                                ),
+                                None => format!(
+                                    "/// `{n}` must be NULL or point to {all} writable bytes: one {size}-byte `{}` per record answered, at most {}.",
+                                    r.elem, r.max
+                                ),
+                            }
+                        }
+                        _ => format!("/// `{n}` must be NULL or point to a writable {t}."),
+                    })
                     .collect(),
                 Some(c) => std::iter::once(format!(
                     "/// `{c}` must be NULL or point to a writable short."

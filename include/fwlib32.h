@@ -2367,7 +2367,7 @@ short cnc_getdtailerr(unsigned short FlibHndl, struct ODBERR *err);
 
  # Safety
  `valid_fig` must point to a writable short, `dec_fig_in` and
- `dec_fig_out` to MAX_AXIS writable shorts each.
+ `dec_fig_out` to 32 writable shorts each (MAX_AXIS).
  */
 short cnc_getfigure(unsigned short FlibHndl,
                     short data_type,
@@ -2379,7 +2379,7 @@ short cnc_getfigure(unsigned short FlibHndl,
  Reads the current path of this handle and the CNC's number of paths.
 
  # Safety
- Both pointers must be writable `short`s.
+ `path_no` and `maxpath_no` must point to writable shorts.
  */
 short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 
@@ -2481,7 +2481,7 @@ short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
  bytes after the block, at most 256) and its block.
 
  # Safety
- `path` must have 256 writable bytes, `block` 4.
+ `path` must have 256 writable bytes, `block` 4 writable bytes.
  */
 short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
 
@@ -2615,7 +2615,8 @@ short cnc_rdalminfo(unsigned short FlibHndl,
  library).
 
  # Safety
- `num` readable and writable; `almmsg` must have room for `*num` records.
+ `num` must point to a readable and writable short; `almmsg` must have
+ `*num` writable ODBALMMSG.
  */
 short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG *almmsg);
 
@@ -2623,7 +2624,8 @@ short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBAL
  As cnc_rdalmmsg with 64-character messages.
 
  # Safety
- `num` readable and writable; `almmsg` must have room for `*num` records.
+ `num` must point to a readable and writable short; `almmsg` must have
+ `*num` writable ODBALMMSG2.
  */
 short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
 
@@ -2716,9 +2718,10 @@ short cnc_rdctrldo(unsigned short FlibHndl, struct ODBSPDO *spdo);
  Reads the actual servo current of each axis.
 
  # Safety
- `data` must be NULL or point to a writable short.
+ `data` must be NULL or point to 64 writable bytes: one 2-byte `short` per record answered, at most 32.
  */
-short cnc_rdcurrent(unsigned short FlibHndl, short *data);
+short cnc_rdcurrent(unsigned short FlibHndl,
+                    short *data);
 
 /*
  The same as cnc_diagnoss (an alias some programs use).
@@ -2803,7 +2806,8 @@ short cnc_rdetherinfo(unsigned short FlibHndl, short *type, short *device);
  writes `*length` 65535 and text past the buffer).
 
  # Safety
- `length`, `blknum` writable; `data` must have `*length` writable bytes.
+ `length` and `blknum` must point to readable and writable shorts; `data`
+ must have `*length` writable bytes.
  */
 short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blknum, char *data);
 
@@ -2863,9 +2867,10 @@ short cnc_rdlife(unsigned short FlibHndl, short number, struct ODBTLIFE3 *life);
  Reads the servo loop gain of each axis (4 bytes written per `long`).
 
  # Safety
- `data` must be NULL or point to a writable long.
+ `data` must be NULL or point to 128 writable bytes: one 4-byte `long` per record answered, at most 32.
  */
-short cnc_rdloopgain(unsigned short FlibHndl, long *data);
+short cnc_rdloopgain(unsigned short FlibHndl,
+                     long *data);
 
 /*
  Reads the custom macro variable `number` (common #100.., #500.., system
@@ -2914,7 +2919,8 @@ short cnc_rdmacror(unsigned short FlibHndl,
  variable in this form is not known.
 
  # Safety
- `num` must point to a 4-byte count, `data` to `*num` writable doubles.
+ `num` must point to 4 readable and writable bytes (the count), `data` to
+ `*num` writable doubles.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
@@ -2932,7 +2938,8 @@ short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
  nothing written, as FANUC's library.
 
  # Safety
- `length` readable and writable; `data` must have `*length` writable bytes.
+ `length` must point to a readable and writable short; `data` must have
+ `*length` writable bytes.
  */
 short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
 
@@ -3179,8 +3186,8 @@ short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
  against it with our simulator).
 
  # Safety
- `s_number`, `e_number`, `length` must point to shorts, `param` to
- `*length` writable bytes.
+ `s_number`, `e_number` and `length` must point to readable and writable
+ shorts, `param` to `*length` writable bytes.
  */
 short cnc_rdparar(unsigned short FlibHndl,
                   short *s_number,
@@ -3197,7 +3204,8 @@ short cnc_rdparar(unsigned short FlibHndl,
  (`dummy`, `dummy2` not written); `*num` = read.
 
  # Safety
- `num` readable and writable, `inp` readable, `out` `*num` writable records.
+ `num` must point to a readable and writable short, `inp` to a readable
+ IDBPDFADIR, `out` to `*num` writable ODBPDFADIR.
  */
 short cnc_rdpdf_alldir(unsigned short FlibHndl,
                        short *num,
@@ -3236,8 +3244,8 @@ short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct 
  library counts them.
 
  # Safety
- `line_len`, `data_len` 4 readable and writable bytes each; `data` must
- have `*data_len` writable bytes.
+ `line_len` and `data_len` must point to 4 readable and writable bytes
+ each; `data` must have `*data_len` writable bytes.
  */
 short cnc_rdpdf_line(unsigned short FlibHndl,
                      char *path,
@@ -3252,7 +3260,8 @@ short cnc_rdpdf_line(unsigned short FlibHndl,
  (none: the first `sub_exist` is set to 0, as FANUC's library does).
 
  # Safety
- `num` readable and writable, `inp` readable, `out` `*num` writable records.
+ `num` must point to a readable and writable short, `inp` to a readable
+ IDBPDFSDIR, `out` to `*num` writable ODBPDFSDIR.
  */
 short cnc_rdpdf_subdir(unsigned short FlibHndl,
                        short *num,
@@ -3388,8 +3397,8 @@ short cnc_rdprogdir(unsigned short FlibHndl,
  EW_LENGTH, without traffic. 19 programs per exchange at most.
 
  # Safety
- `top_prog` and `num_prog` readable and writable; `buf` must have
- `*num_prog` writable PRGDIR2 records.
+ `top_prog` and `num_prog` must point to readable and writable shorts;
+ `buf` must have `*num_prog` writable PRGDIR2.
  */
 short cnc_rdprogdir2(unsigned short FlibHndl,
                      short type,
@@ -3401,14 +3410,14 @@ short cnc_rdprogdir2(unsigned short FlibHndl,
  Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
  the numbers, 1 also the comments, 2 also size and modification date
  (`page` and `cdate` are never written). Out: `*num_prog` records read,
- `*top_prog` the number of the first (untouched when none was found, as
- FANUC's library). Never writes more than `*num_prog` records. Type not
+ `*top_prog` the number of the first (when none was found, the number
+ the caller's first record held, as FANUC's library). Never writes more than `*num_prog` records. Type not
  0..2: EW_ATTRIB, `*num_prog` ≤ 0: EW_LENGTH, without traffic. Asks the
  CNC for 19 programs per exchange at most, as FANUC's library.
 
  # Safety
- `top_prog` (4 bytes) and `num_prog` readable and writable; `buf` must
- have `*num_prog` writable PRGDIR3 records.
+ `top_prog` must point to 4 readable and writable bytes, `num_prog` to a
+ readable and writable short; `buf` must have `*num_prog` writable PRGDIR3.
  */
 short cnc_rdprogdir3(unsigned short FlibHndl,
                      short type,
@@ -3467,7 +3476,7 @@ short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
  Reads the alarm state of each spindle, one byte per spindle (at most 8).
 
  # Safety
- `data` must be NULL or point to a writable char.
+ `data` must be NULL or point to 8 writable bytes: one 1-byte `char` per record answered, at most 8.
  */
 short cnc_rdspdlalm(unsigned short FlibHndl, char *data);
 
@@ -3546,9 +3555,10 @@ short cnc_rdspmeter(unsigned short FlibHndl,
  `long`).
 
  # Safety
- `data` must be NULL or point to a writable long.
+ `data` must be NULL or point to 128 writable bytes: one 4-byte `long` per record answered, at most 32.
  */
-short cnc_rdsrvspeed(unsigned short FlibHndl, long *data);
+short cnc_rdsrvspeed(unsigned short FlibHndl,
+                     long *data);
 
 /*
  Reads the servo load meters: `*data_num` in = room, out = axes written.
@@ -4062,7 +4072,8 @@ short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
  #999) are left out, and a count cut short in the reply reads as 0.
 
  # Safety
- `num` must point to a 4-byte count, `data` to `*num` readable doubles.
+ `num` must point to 4 readable and writable bytes (the count), `data` to
+ `*num` readable doubles.
  */
 short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
@@ -4176,7 +4187,9 @@ short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length
  (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
 
  # Safety
- `shift` must point to `length` readable bytes (an IODBWCSF).
+ `shift` must point to `length` readable bytes (an IODBWCSF), and at least 4
+ (its first two shorts are read before `length` is checked, as FANUC's
+ library reads them).
  */
 short cnc_wrwkcdshft(unsigned short FlibHndl, short length, struct IODBWCSF *shift);
 
@@ -4186,7 +4199,9 @@ short cnc_wrwkcdshft(unsigned short FlibHndl, short length, struct IODBWCSF *shi
  FANUC's library).
 
  # Safety
- `zofs` must point to `length` readable bytes (an IODBZOFS).
+ `zofs` must point to `length` readable bytes (an IODBZOFS), and at least 4
+ (its first two shorts are read before `length` is checked, as FANUC's
+ library reads them).
  */
 short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
 

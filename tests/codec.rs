@@ -497,7 +497,7 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                 dtype: dtype as i16,
                                 path,
                                 start: range_name(s as i32, e as i32),
-                                end: String::new(),
+                                end: Vec::new(),
                             };
                             Frame::new(CLIENT_VERSION, ftype::UPLOAD_START_REQ, req.encode())
                                 .encode()
@@ -1719,8 +1719,9 @@ proptest! {
     fn upload_start_body_roundtrip(
         dtype in any::<i16>(),
         path in any::<u16>(),
-        start in "[ -~]{0,255}",
-        end in "[ -~]{0,255}",
+        // Any bytes but NUL: names are bytes, not UTF-8.
+        start in proptest::collection::vec(1u8..=255, 0..256),
+        end in proptest::collection::vec(1u8..=255, 0..256),
     ) {
         use fwlib32::proto::upload::{START_BODY_LEN, StartReq};
         let r = StartReq { dtype, path, start, end };

@@ -219,8 +219,8 @@ fn raw_download(s: &fwlib32::sim::Simulator, number: u32, end: bool) {
         let req = StartReq {
             dtype: 0,
             path: 1,
-            start: String::new(),
-            end: String::new(),
+            start: Vec::new(),
+            end: Vec::new(),
         };
         send(&mut c, DOWNLOAD.start_req(), req.encode());
         assert_eq!(answered(&mut c), DOWNLOAD.start_resp());

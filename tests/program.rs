@@ -529,9 +529,10 @@ mod progdir {
         // num far larger than the programs (several exchanges of 19).
         let (r, _, n, _) = dir3(h, 1, 1, 50);
         assert_eq!((r, n as usize), (EW_OK, want.len()));
-        // Nothing from top on: *num_prog 0, *top_prog untouched.
+        // Nothing from top on: *num_prog 0, *top_prog the number the
+        // caller's first record held (-1 here), as FANUC's library.
         let (r, top, n, b) = dir3(h, 2, 99_999_999, 5);
-        assert_eq!((r, top, n), (EW_OK, 99_999_999, 0));
+        assert_eq!((r, top, n), (EW_OK, -1, 0));
         assert!(b.iter().all(|x| x.number == -1));
         // Local checks.
         assert_eq!(dir3(h, 3, 1, 5).0, EW_ATTRIB);

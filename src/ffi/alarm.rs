@@ -89,7 +89,8 @@ unsafe fn read_almmsg<const N: usize>(
 /// library).
 ///
 /// # Safety
-/// `num` readable and writable; `almmsg` must have room for `*num` records.
+/// `num` must point to a readable and writable short; `almmsg` must have
+/// `*num` writable ODBALMMSG.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdalmmsg(
     FlibHndl: c_ushort,
@@ -105,7 +106,8 @@ pub unsafe extern "C" fn cnc_rdalmmsg(
 /// As cnc_rdalmmsg with 64-character messages.
 ///
 /// # Safety
-/// `num` readable and writable; `almmsg` must have room for `*num` records.
+/// `num` must point to a readable and writable short; `almmsg` must have
+/// `*num` writable ODBALMMSG2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdalmmsg2(
     FlibHndl: c_ushort,

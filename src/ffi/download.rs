@@ -51,7 +51,7 @@ fn start(
     option: bool,
     how: Outgoing,
     dtype: c_short,
-    name: String,
+    name: Vec<u8>,
     checked: bool,
     defer: bool,
 ) -> Result<()> {
@@ -67,7 +67,7 @@ fn start(
             dtype,
             path,
             start: name,
-            end: String::new(),
+            end: Vec::new(),
         };
         h.send_start(n, how, &req, defer, t)
     })
@@ -132,7 +132,7 @@ fn end(handle: c_ushort, option: bool, how: Outgoing) -> Result<()> {
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_dwnstart(FlibHndl: c_ushort) -> c_short {
     ffi_boundary!("cnc_dwnstart", {
-        start(FlibHndl, true, DOWNLOAD, 0, String::new(), true, false)
+        start(FlibHndl, true, DOWNLOAD, 0, Vec::new(), true, false)
     })
 }
 
@@ -162,15 +162,7 @@ pub extern "C" fn cnc_dwnend(FlibHndl: c_ushort) -> c_short {
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_dwnstart3(FlibHndl: c_ushort, r#type: c_short) -> c_short {
     ffi_boundary!("cnc_dwnstart3", {
-        start(
-            FlibHndl,
-            false,
-            DOWNLOAD,
-            r#type,
-            String::new(),
-            true,
-            false,
-        )
+        start(FlibHndl, false, DOWNLOAD, r#type, Vec::new(), true, false)
     })
 }
 
@@ -243,7 +235,7 @@ pub extern "C" fn cnc_dwnend4(FlibHndl: c_ushort) -> c_short {
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_dncstart(FlibHndl: c_ushort) -> c_short {
     ffi_boundary!("cnc_dncstart", {
-        start(FlibHndl, true, DNC, 0, String::new(), true, true)
+        start(FlibHndl, true, DNC, 0, Vec::new(), true, true)
     })
 }
 
@@ -277,7 +269,7 @@ pub extern "C" fn cnc_dncend(FlibHndl: c_ushort) -> c_short {
 pub unsafe extern "C" fn cnc_dncstart2(FlibHndl: c_ushort, fname: *mut c_char) -> c_short {
     ffi_boundary!("cnc_dncstart2", {
         let _ = fname;
-        start(FlibHndl, false, DNC, 0, String::new(), true, false)
+        start(FlibHndl, false, DNC, 0, Vec::new(), true, false)
     })
 }
 

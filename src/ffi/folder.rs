@@ -75,7 +75,10 @@ fn words(b: &[u8], n: usize, zeros: bool) -> Result<Vec<i32>> {
 /// Writes an answered path name as FANUC's library does: 256 bytes, the
 /// answer's and zeros after it.
 unsafe fn put_name(out: *mut c_char, name: &[u8]) -> Result<()> {
-    let mut b = name[..name.len().min(256)].to_vec();
+    // Up to its NUL, zeros after (as FANUC's library copies it, whatever
+    // follows the NUL in the answer).
+    let end = name.iter().position(|c| *c == 0).unwrap_or(name.len());
+    let mut b = name[..end.min(256)].to_vec();
     b.resize(256, 0);
     unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), nonnull(out)?.cast::<u8>(), 256) };
     Ok(())
@@ -326,7 +329,7 @@ pub unsafe extern "C" fn cnc_pdf_delline(
 /// bytes after the block, at most 256) and its block.
 ///
 /// # Safety
-/// `path` must have 256 writable bytes, `block` 4.
+/// `path` must have 256 writable bytes, `block` 4 writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_pdf_rdactpt(
     FlibHndl: c_ushort,
@@ -382,8 +385,8 @@ pub unsafe extern "C" fn cnc_pdf_wractpt(
 /// library counts them.
 ///
 /// # Safety
-/// `line_len`, `data_len` 4 readable and writable bytes each; `data` must
-/// have `*data_len` writable bytes.
+/// `line_len` and `data_len` must point to 4 readable and writable bytes
+/// each; `data` must have `*data_len` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdpdf_line(
     FlibHndl: c_ushort,
@@ -496,7 +499,8 @@ unsafe fn dir_records(
 /// (none: the first `sub_exist` is set to 0, as FANUC's library does).
 ///
 /// # Safety
-/// `num` readable and writable, `inp` readable, `out` `*num` writable records.
+/// `num` must point to a readable and writable short, `inp` to a readable
+/// IDBPDFSDIR, `out` to `*num` writable ODBPDFSDIR.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdpdf_subdir(
     FlibHndl: c_ushort,
@@ -540,7 +544,8 @@ pub unsafe extern "C" fn cnc_rdpdf_subdir(
 /// (`dummy`, `dummy2` not written); `*num` = read.
 ///
 /// # Safety
-/// `num` readable and writable, `inp` readable, `out` `*num` writable records.
+/// `num` must point to a readable and writable short, `inp` to a readable
+/// IDBPDFADIR, `out` to `*num` writable ODBPDFADIR.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdpdf_alldir(
     FlibHndl: c_ushort,

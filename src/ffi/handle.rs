@@ -6,6 +6,7 @@ use crate::error::Error;
 use crate::ew::*;
 use crate::types::ODBERR;
 use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
+use std::os::unix::ffi::OsStrExt;
 
 /// Starts the library's log. `level` 0 = off, 1 = errors, 2 = every call,
 /// 3 = every byte sent and received; `logfile` is created (truncated).
@@ -32,7 +33,8 @@ pub unsafe extern "C" fn cnc_startupprocess(level: c_long, logfile: *const c_cha
         };
         // A log file that cannot be created leaves logging off; it is not an error
         // worth failing a machine connection for.
-        if log::start(level as u8, path.map(std::path::Path::new)).is_err() {
+        let path = path.map(|b| std::path::Path::new(std::ffi::OsStr::from_bytes(b)));
+        if log::start(level as u8, path).is_err() {
             log::stop();
         }
         Ok(())
@@ -61,7 +63,8 @@ fn allocate(
     h: *mut c_ushort,
 ) -> crate::error::Result<()> {
     let out = nonnull(h)?;
-    let host = unsafe { cstr(ip)? };
+    // A host name that is not UTF-8 resolves to nothing, as FANUC's.
+    let host = String::from_utf8_lossy(unsafe { cstr(ip)? });
     let timeout = timeout.clamp(i32::MIN as c_long, i32::MAX as c_long) as i32;
     let pair = pair::acquire(host.trim(), port, timeout, id)?;
     let handle = match handles::insert(pair.clone(), timeout) {
@@ -160,7 +163,7 @@ pub extern "C" fn cnc_settimeout(FlibHndl: c_ushort, timeout: c_long) -> c_short
 /// Reads the current path of this handle and the CNC's number of paths.
 ///
 /// # Safety
-/// Both pointers must be writable `short`s.
+/// `path_no` and `maxpath_no` must point to writable shorts.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_getpath(
     FlibHndl: c_ushort,

@@ -207,17 +207,17 @@ pub unsafe extern "C" fn cnc_wrmacror(
     ffi_boundary!("cnc_wrmacror", {
         let h = handles::get(FlibHndl)?;
         let inp = nonnull(buf)?;
+        // FANUC's library refuses a length below 8 before looking at the
+        // numbers (which are not read then: `buf` holds `length` bytes).
+        if len_of(length) < 8 {
+            return Err(Error::length());
+        }
         let (s, e) = unsafe {
             (
                 addr_of_mut!((*inp).datano_s).read_unaligned(),
                 addr_of_mut!((*inp).datano_e).read_unaligned(),
             )
         };
-        // FANUC's library refuses a length below 8 before looking at the
-        // numbers.
-        if len_of(length) < 8 {
-            return Err(Error::length());
-        }
         if s < FIRST_WRITABLE || e < s {
             return Err(Error::local(
                 EW_NUMBER,
@@ -266,7 +266,8 @@ pub unsafe extern "C" fn cnc_wrmacror(
 /// variable in this form is not known.
 ///
 /// # Safety
-/// `num` must point to a 4-byte count, `data` to `*num` writable doubles.
+/// `num` must point to 4 readable and writable bytes (the count), `data` to
+/// `*num` writable doubles.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdmacror2(
     FlibHndl: c_ushort,
@@ -315,7 +316,8 @@ pub unsafe extern "C" fn cnc_rdmacror2(
 /// #999) are left out, and a count cut short in the reply reads as 0.
 ///
 /// # Safety
-/// `num` must point to a 4-byte count, `data` to `*num` readable doubles.
+/// `num` must point to 4 readable and writable bytes (the count), `data` to
+/// `*num` readable doubles.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_wrmacror2(
     FlibHndl: c_ushort,

@@ -25,8 +25,8 @@ const PRGDIR2_SIZE: usize = std::mem::size_of::<PRGDIR2>();
 /// EW_LENGTH, without traffic. 19 programs per exchange at most.
 ///
 /// # Safety
-/// `top_prog` and `num_prog` readable and writable; `buf` must have
-/// `*num_prog` writable PRGDIR2 records.
+/// `top_prog` and `num_prog` must point to readable and writable shorts;
+/// `buf` must have `*num_prog` writable PRGDIR2.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdprogdir2(
     FlibHndl: c_ushort,
@@ -77,7 +77,8 @@ pub unsafe extern "C" fn cnc_rdprogdir2(
 /// nothing written, as FANUC's library.
 ///
 /// # Safety
-/// `length` readable and writable; `data` must have `*length` writable bytes.
+/// `length` must point to a readable and writable short; `data` must have
+/// `*length` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdmdiprog(
     FlibHndl: c_ushort,

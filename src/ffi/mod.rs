@@ -131,17 +131,17 @@ pub(crate) fn len_of(length: c_short) -> usize {
     length.max(0) as usize
 }
 
-/// Reads a C string argument.
+/// A C string argument's bytes, without its NUL: passed on unchanged,
+/// whatever their encoding, as FANUC's library does (a Latin-1 folder name
+/// or comment works).
 ///
 /// # Safety
 /// `p` must be NULL or point to a NUL-terminated string.
-pub(crate) unsafe fn cstr<'a>(p: *const c_char) -> Result<&'a str> {
+pub(crate) unsafe fn cstr<'a>(p: *const c_char) -> Result<&'a [u8]> {
     if p.is_null() {
         return Err(Error::null());
     }
-    unsafe { std::ffi::CStr::from_ptr(p) }
-        .to_str()
-        .map_err(|_| Error::local(crate::ew::EW_DATA, "string argument is not UTF-8"))
+    Ok(unsafe { std::ffi::CStr::from_ptr(p) }.to_bytes())
 }
 
 #[cfg(test)]

@@ -133,7 +133,7 @@ pub unsafe extern "C" fn cnc_rdtofsr(
         if room < 8 + per_number * count {
             return Err(Error::length());
         }
-        let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?;
+        let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?.0;
         let n = v.len().min((room - 8) / size);
         unsafe {
             put_at(out, 0, s_number);
@@ -204,7 +204,9 @@ pub unsafe extern "C" fn cnc_rdzofs(
 /// FANUC's library).
 ///
 /// # Safety
-/// `zofs` must point to `length` readable bytes (an IODBZOFS).
+/// `zofs` must point to `length` readable bytes (an IODBZOFS), and at least 4
+/// (its first two shorts are read before `length` is checked, as FANUC's
+/// library reads them).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_wrzofs(
     FlibHndl: c_ushort,
@@ -231,7 +233,9 @@ pub unsafe extern "C" fn cnc_wrzofs(
 /// (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
 ///
 /// # Safety
-/// `shift` must point to `length` readable bytes (an IODBWCSF).
+/// `shift` must point to `length` readable bytes (an IODBWCSF), and at least 4
+/// (its first two shorts are read before `length` is checked, as FANUC's
+/// library reads them).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_wrwkcdshft(
     FlibHndl: c_ushort,

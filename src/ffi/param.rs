@@ -451,8 +451,8 @@ pub unsafe extern "C" fn cnc_rddiagnum(FlibHndl: c_ushort, diagnum: *mut ODBDIAG
 /// against it with our simulator).
 ///
 /// # Safety
-/// `s_number`, `e_number`, `length` must point to shorts, `param` to
-/// `*length` writable bytes.
+/// `s_number`, `e_number` and `length` must point to readable and writable
+/// shorts, `param` to `*length` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdparar(
     FlibHndl: c_ushort,

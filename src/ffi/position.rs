@@ -746,7 +746,9 @@ fn axis_values(
         }
         let data = offset_of!(ODBAXIS, data);
         let recs = h.call(&position(code, axis))?;
-        if (length as c_ushort as usize) < data + 4 * recs.len() {
+        // More values than MAX_AXIS: the first MAX_AXIS count, as FANUC's
+        // library reads them (the rest is ignored, not a length error).
+        if (length as c_ushort as usize) < data + 4 * recs.len().min(MAX_AXIS) {
             return Err(Error::local(
                 EW_LENGTH,
                 "length too small for the values received",
@@ -912,7 +914,7 @@ pub unsafe extern "C" fn cnc_accdecdly(
 ///
 /// # Safety
 /// `valid_fig` must point to a writable short, `dec_fig_in` and
-/// `dec_fig_out` to MAX_AXIS writable shorts each.
+/// `dec_fig_out` to 32 writable shorts each (MAX_AXIS).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_getfigure(
     FlibHndl: c_ushort,

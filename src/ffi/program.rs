@@ -25,8 +25,15 @@ pub unsafe extern "C" fn cnc_exeprgname(FlibHndl: c_ushort, exeprg: *mut ODBEXEP
         let h = handles::get(FlibHndl)?;
         let out = nonnull(exeprg)?;
         let e = h.call(&pp::exeprgname())?;
+        // The name as a C string: the bytes up to its NUL, zeros after
+        // (FANUC's library copies it so, whatever follows in the answer).
+        let end = e.name.iter().position(|b| *b == 0).unwrap_or(e.name.len());
+        let mut name = [0 as c_char; 36];
+        for (d, s) in name.iter_mut().zip(&e.name[..end]) {
+            *d = *s as c_char;
+        }
         let v = ODBEXEPRG {
-            name: e.name.map(|b| b as c_char),
+            name,
             o_num: e.o_num,
         };
         unsafe { put(out, v) };
@@ -68,7 +75,8 @@ pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_c
 /// writes `*length` 65535 and text past the buffer).
 ///
 /// # Safety
-/// `length`, `blknum` writable; `data` must have `*length` writable bytes.
+/// `length` and `blknum` must point to readable and writable shorts; `data`
+/// must have `*length` writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdexecprog(
     FlibHndl: c_ushort,
@@ -343,14 +351,14 @@ const PRGDIR3_SIZE: usize = std::mem::size_of::<PRGDIR3>();
 /// Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
 /// the numbers, 1 also the comments, 2 also size and modification date
 /// (`page` and `cdate` are never written). Out: `*num_prog` records read,
-/// `*top_prog` the number of the first (untouched when none was found, as
-/// FANUC's library). Never writes more than `*num_prog` records. Type not
+/// `*top_prog` the number of the first (when none was found, the number
+/// the caller's first record held, as FANUC's library). Never writes more than `*num_prog` records. Type not
 /// 0..2: EW_ATTRIB, `*num_prog` ≤ 0: EW_LENGTH, without traffic. Asks the
 /// CNC for 19 programs per exchange at most, as FANUC's library.
 ///
 /// # Safety
-/// `top_prog` (4 bytes) and `num_prog` readable and writable; `buf` must
-/// have `*num_prog` writable PRGDIR3 records.
+/// `top_prog` must point to 4 readable and writable bytes, `num_prog` to a
+/// readable and writable short; `buf` must have `*num_prog` writable PRGDIR3.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cnc_rdprogdir3(
     FlibHndl: c_ushort,
@@ -386,9 +394,13 @@ pub unsafe extern "C" fn cnc_rdprogdir3(
         }
         unsafe {
             put(num, got.len() as c_short);
-            if let Some(f) = got.first() {
-                put(top, f.number);
-            }
+            // The first record's number, as FANUC's library takes it from
+            // the caller's buffer: what the caller's first record held when
+            // none was read.
+            let first = got
+                .first()
+                .map_or_else(|| out.cast::<i32>().read_unaligned(), |f| f.number);
+            put(top, first);
         }
         Ok(())
     })

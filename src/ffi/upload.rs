@@ -34,7 +34,7 @@ fn noted<T>(h: &Handle, r: Result<T>) -> Result<T> {
     r
 }
 
-fn start(h: &Arc<Handle>, handle: u16, dtype: c_short, name: String) -> Result<()> {
+fn start(h: &Arc<Handle>, handle: u16, dtype: c_short, name: Vec<u8>) -> Result<()> {
     if name.len() >= NAME_LEN {
         return Err(Error::local(EW_DATA, "program name too long"));
     }
@@ -46,7 +46,7 @@ fn start(h: &Arc<Handle>, handle: u16, dtype: c_short, name: String) -> Result<(
         dtype,
         path,
         start: name,
-        end: String::new(),
+        end: Vec::new(),
     };
     noted(h, h.upload_start(handle, &req, timeout))
 }

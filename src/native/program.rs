@@ -108,7 +108,7 @@ impl Cnc {
             dtype: 0,
             path,
             start: range_name(n, n),
-            end: String::new(),
+            end: Vec::new(),
         };
         h.upload_start(me, &req, timeout)
             .map_err(|e| Error::of("cnc_upstart3", e))?;
@@ -149,8 +149,8 @@ impl Cnc {
         let req = StartReq {
             dtype: 0,
             path,
-            start: String::new(),
-            end: String::new(),
+            start: Vec::new(),
+            end: Vec::new(),
         };
         h.send_start(me, DOWNLOAD, &req, false, timeout)
             .map_err(|e| Error::of("cnc_dwnstart3", e))?;

@@ -106,6 +106,17 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     let mut r = Reader::new(p);
     let mut out = Vec::new();
     read_fields(&mut r, f.reply, args, &mut out)?;
+    if f.zero_without_first && out.first().is_some_and(|v| *v as u16 == 0) {
+        // No such group: its `data` reads 0 (the other fields as sent).
+        let mut at = 0;
+        for field in f.reply {
+            let n = usize::from(field.n);
+            if field.to == Some("data") {
+                out[at..at + n].iter_mut().for_each(|v| *v = 0);
+            }
+            at += n;
+        }
+    }
     if let Some(rec) = &f.records {
         let size = rec.wire_len().max(1);
         let most = asked(f, args).unwrap_or(rec.max as usize);

@@ -44,7 +44,25 @@ pub fn rdtofs(number: i16, kind: i16) -> Single<Values> {
     Single::new(ReqSub::cnc(RDTOFS, &[n, n, TOFS_SINGLE + i32::from(kind)]))
 }
 
-pub fn rdtofsr(s: i16, kind: i16, e: i16) -> Single<Values> {
+/// The whole 8-byte value records of an answer; a partial record after
+/// them is ignored (cnc_rdtofsr: FANUC's library reads whole records only).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct WholeValues(pub Values);
+
+impl Wire for WholeValues {
+    fn encode(&self, w: &mut Writer) {
+        self.0.encode(w);
+    }
+    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
+        let n = r.remaining() / 8;
+        let mut whole = Reader::new(r.bytes(n * 8)?);
+        let v = Values::decode(&mut whole)?;
+        r.bytes(r.remaining())?;
+        Ok(WholeValues(v))
+    }
+}
+
+pub fn rdtofsr(s: i16, kind: i16, e: i16) -> Single<WholeValues> {
     Single::new(ReqSub::cnc(
         RDTOFS,
         &[i32::from(s), i32::from(e), i32::from(kind)],

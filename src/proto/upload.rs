@@ -40,31 +40,33 @@ pub struct StartReq {
     /// The handle's path (FANUC's library puts its path word here, \[dis\];
     /// recorded only with path 1).
     pub path: u16,
-    /// "O`<s>`-O`<e>`" (cnc_upstart, cnc_upstart3) or "N:`<name>`" (cnc_upstart4).
-    pub start: String,
+    /// `O<s>-O<e>` (cnc_upstart, cnc_upstart3) or `N:<name>` (cnc_upstart4):
+    /// bytes, sent as the caller gave them (FANUC's library copies the C
+    /// string unchanged, whatever its encoding).
+    pub start: Vec<u8>,
     /// Empty for every function above.
-    pub end: String,
+    pub end: Vec<u8>,
 }
 
-/// The start name cnc_upstart / cnc_upstart3 send: "O`<s>`-O`<e>`" (C's "%d").
-pub fn range_name(start: i32, end: i32) -> String {
-    format!("O{start}-O{end}")
+/// The start name cnc_upstart / cnc_upstart3 send: `O<s>-O<e>` (C's "%d").
+pub fn range_name(start: i32, end: i32) -> Vec<u8> {
+    format!("O{start}-O{end}").into_bytes()
 }
 
-/// The start name cnc_upstart4 sends: "N:`<name>`", or "N:" for NULL.
-pub fn name4(name: Option<&str>) -> String {
-    format!("N:{}", name.unwrap_or(""))
+/// The start name cnc_upstart4 sends: `N:<name>` (the name's bytes as
+/// given), or "N:" for NULL.
+pub fn name4(name: Option<&[u8]>) -> Vec<u8> {
+    [b"N:", name.unwrap_or_default()].concat()
 }
 
-fn put_name(out: &mut [u8], s: &str) {
-    let b = s.as_bytes();
+fn put_name(out: &mut [u8], b: &[u8]) {
     let n = b.len().min(NAME_LEN - 1);
     out[..n].copy_from_slice(&b[..n]);
 }
 
-fn get_name(b: &[u8]) -> String {
+fn get_name(b: &[u8]) -> Vec<u8> {
     let end = b.iter().position(|c| *c == 0).unwrap_or(b.len());
-    String::from_utf8_lossy(&b[..end]).into_owned()
+    b[..end].to_vec()
 }
 
 impl StartReq {
@@ -89,12 +91,18 @@ impl StartReq {
         }
     }
 
+    /// The start name as text (bytes that are not UTF-8 read as U+FFFD).
+    pub fn start_text(&self) -> String {
+        String::from_utf8_lossy(&self.start).into_owned()
+    }
+
     /// The O-number range of an `O<s>-O<e>` or `O<n>` start name.
     pub fn range(&self) -> Option<(i64, i64)> {
         let num = |s: &str| s.strip_prefix('O')?.trim().parse::<i64>().ok();
-        match self.start.split_once("-O") {
+        let start = self.start_text();
+        match start.split_once("-O") {
             Some((a, b)) => Some((num(a)?, num(&format!("O{b}"))?)),
-            None => num(&self.start).map(|n| (n, n)),
+            None => num(&start).map(|n| (n, n)),
         }
     }
 }
@@ -148,7 +156,7 @@ mod tests {
             dtype: 1,
             path: 2,
             start: range_name(1, 9999),
-            end: String::new(),
+            end: Vec::new(),
         };
         let b = r.encode();
         assert_eq!(b.len(), START_BODY_LEN);
@@ -160,6 +168,13 @@ mod tests {
             ..r
         };
         assert_eq!(r.range(), Some((-5, -5)));
+        // A Latin-1 name goes as its bytes and comes back as them.
+        let r = StartReq {
+            start: name4(Some(b"\xc4RGER")),
+            ..r
+        };
+        assert_eq!(&r.encode()[4..12], b"N:\xc4RGER\0");
+        assert_eq!(StartReq::decode(&r.encode()), r);
     }
 
     #[test]

@@ -98,12 +98,17 @@ impl Machine {
         Ok(PathName(b))
     }
 
-    /// The executing text, at most `length` bytes; an idle path answers
-    /// with an empty payload.
+    /// The executing text, at most `length` bytes. A path with no text to
+    /// show answers its block number and no text (an idle path: four zero
+    /// bytes), as a CNC does; FANUC's library reads past its buffer on an
+    /// empty payload, so the simulator never sends one.
     pub(crate) fn sim_exec_prog(&self, path: u16, length: i32) -> Reply<ExecProg> {
         let r = self.live(path)?;
         if r.program == 0 || r.exec_text.is_empty() {
-            return Ok(ExecProg::default());
+            return Ok(ExecProg {
+                blknum: Some(if r.program == 0 { 0 } else { r.block as i32 }),
+                text: Vec::new(),
+            });
         }
         let mut text = r.exec_text.clone().into_bytes();
         text.truncate(length.max(0) as usize);
@@ -453,4 +458,18 @@ fn local(t: i64) -> jiff::civil::DateTime {
         .unwrap_or(jiff::Timestamp::UNIX_EPOCH)
         .to_zoned(jiff::tz::TimeZone::system())
         .datetime()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::proto::wire::Wire;
+
+    #[test]
+    fn an_idle_path_answers_block_0_and_no_text() {
+        // Four zero bytes, the form FANUC's library accepts (not an empty payload).
+        let m = Machine::new(crate::sim::Profile::parse("[[path]]\n").expect("profile"));
+        let a = m.sim_exec_prog(1, 64).expect("an answer");
+        assert_eq!(a.to_bytes(), [0, 0, 0, 0]);
+    }
 }

@@ -652,7 +652,8 @@ impl Machine {
             return Err(CncError::PATH);
         }
         let progs = self.store.iter(req.path);
-        let found: Vec<&Program> = if let Some(name) = req.start.strip_prefix("N:") {
+        let start = req.start_text();
+        let found: Vec<&Program> = if let Some(name) = start.strip_prefix("N:") {
             progs
                 .filter(|p| !name.is_empty() && p.answers_to(name, req.path))
                 .collect()

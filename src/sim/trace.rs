@@ -93,7 +93,12 @@ impl Namer {
             ftype::ID_REQ => format!("<- id {:02x?}", f.body),
             ftype::UPLOAD_START_REQ => {
                 let r = crate::proto::upload::StartReq::decode(&f.body);
-                format!("<- upload start {:?} type {} p{}", r.start, r.dtype, r.path)
+                format!(
+                    "<- upload start {:?} type {} p{}",
+                    r.start_text(),
+                    r.dtype,
+                    r.path
+                )
             }
             ftype::UPLOAD_END_ACK => "<- upload end acknowledged".into(),
             ftype::UPLOAD_ABORT => "<- upload abort".into(),

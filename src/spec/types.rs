@@ -246,6 +246,10 @@ pub struct Func {
     /// The oracle's dimensions, one per number parameter: "|"-separated
     /// values, the base first.
     pub dims: &'static [&'static str],
+    /// The first reply field is the number the CNC answered for (a tool
+    /// group); when its low 16 bits are 0 the `data` member reads as 0, as
+    /// FANUC's library writes it (no such group).
+    pub zero_without_first: bool,
 }
 
 impl Func {

@@ -933,7 +933,13 @@ const WORDS: &[Word] = &[
             "startup",
             &[],
             &[
-                "0 f.log", "1 f.log", "2 f.log", "3 f.log", "4 f.log", "-1 f.log",
+                "0 f.log",
+                "1 f.log",
+                "2 f.log",
+                "3 f.log",
+                "4 f.log",
+                "-1 f.log",
+                "1 \\xe9t\\xe9.log",
             ],
         )
     },
@@ -970,6 +976,8 @@ const WORDS: &[Word] = &[
                 "1 O1234",
                 "0 1234",
                 "-1 O1234",
+                // A Latin-1 name goes as its bytes (\xHH: see probe.c).
+                "0 //CNC_MEM/USER/\\xc4RGER/O1234",
             ],
         )
     },
@@ -1042,7 +1050,13 @@ const WORDS: &[Word] = &[
         ..wc(
             "dwnstart4",
             &[],
-            &["0 //CNC_MEM/USER/PATH1/", "0", "1 O4321", "-1 O4321"],
+            &[
+                "0 //CNC_MEM/USER/PATH1/",
+                "0",
+                "1 O4321",
+                "-1 O4321",
+                "0 //CNC_MEM/USER/\\xc4RGER/",
+            ],
         )
     },
     wc("dwnend4", &[], &[""]),

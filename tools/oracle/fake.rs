@@ -62,9 +62,13 @@ pub enum Fault {
     SysinfoClose,
 }
 
+/// A change made to the next data response by the fuzzer (tools/oracle/fuzz.rs).
+pub type Mutator = Box<dyn FnOnce(&mut Vec<Sub>) + Send>;
+
 struct State {
     log: Mutex<Vec<Rec>>,
     shape: Mutex<Option<Shape>>,
+    mutator: Mutex<Option<Mutator>>,
     /// The last shape applied changed the frame.
     shaped: AtomicBool,
     fault: Option<Fault>,
@@ -100,6 +104,7 @@ impl Fake {
         let state = Arc::new(State {
             log: Mutex::new(Vec::new()),
             shape: Mutex::new(None),
+            mutator: Mutex::new(None),
             shaped: AtomicBool::new(false),
             fault,
             stop: AtomicBool::new(false),
@@ -125,6 +130,18 @@ impl Fake {
     /// The next data response gets this shape.
     pub fn shape_next(&self, s: Option<Shape>) {
         *self.state.shape.lock().unwrap() = s;
+    }
+
+    /// The next data response is changed by `m`.
+    #[allow(dead_code)] // fuzz only
+    pub fn mutate_next(&self, m: Mutator) {
+        *self.state.mutator.lock().unwrap() = Some(m);
+    }
+
+    /// Clears a pending mutator; true when it was used.
+    #[allow(dead_code)] // fuzz only
+    pub fn mutate_done(&self) -> bool {
+        self.state.mutator.lock().unwrap().take().is_none()
     }
 
     /// Clears a pending shape; true when the last one changed a frame.
@@ -317,6 +334,9 @@ fn downward(
                     st.shaped.store(g != f, Ordering::SeqCst);
                     f = g;
                 }
+                if let Some(m) = st.mutator.lock().unwrap().take() {
+                    f = reshape(&f, m);
+                }
             }
             _ => {}
         }
@@ -340,7 +360,7 @@ fn downward(
 }
 
 /// A response subpacket: (16-byte head with the length word, payload).
-type Sub = (Vec<u8>, Vec<u8>);
+pub type Sub = (Vec<u8>, Vec<u8>);
 
 fn set_error(s: &mut Sub, code: i16) {
     s.0[8..10].copy_from_slice(&code.to_be_bytes());

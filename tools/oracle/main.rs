@@ -5,6 +5,7 @@
 //! cargo run --example oracle -- compare --lib FANUC.so [--ours OUR.so] [--only WORD]
 //! cargo run --example oracle -- verify  --lib LIB.so [FILE.json ...]
 //! cargo run --example oracle -- list    [--only WORD]
+//! cargo run --release --example oracle -- fuzz --lib FANUC.so [--seconds N] [--seed S] [--only f,g]
 //! ```
 //!
 //! `record` runs every generated case (tools/oracle/cases.rs) against a
@@ -19,7 +20,11 @@
 mod common;
 
 mod cases;
+#[allow(dead_code)]
+#[path = "../../tests/deviations/mod.rs"]
+mod deviations;
 mod fake;
+mod fuzz;
 mod probe;
 mod profiles;
 mod replay;
@@ -159,6 +164,8 @@ struct Args {
     only: Vec<String>,
     out: PathBuf,
     files: Vec<PathBuf>,
+    seconds: u64,
+    seed: u64,
 }
 
 fn args() -> Args {
@@ -170,6 +177,8 @@ fn args() -> Args {
         only: Vec::new(),
         out: root().join("tests/vectors"),
         files: Vec::new(),
+        seconds: 60,
+        seed: 1,
     };
     while let Some(x) = a.next() {
         match x.as_str() {
@@ -181,6 +190,16 @@ fn args() -> Args {
                     .flat_map(|s| s.split(',').map(String::from).collect::<Vec<_>>()),
             ),
             "--out" => r.out = a.next().map(PathBuf::from).unwrap_or(r.out),
+            "--seconds" => r.seconds = a.next().and_then(|x| x.parse().ok()).unwrap_or(60),
+            "--seed" => {
+                r.seed = a
+                    .next()
+                    .and_then(|x| match x.strip_prefix("0x") {
+                        Some(h) => u64::from_str_radix(h, 16).ok(),
+                        None => x.parse().ok(),
+                    })
+                    .unwrap_or(1)
+            }
             f => r.files.push(PathBuf::from(f)),
         }
     }
@@ -212,11 +231,24 @@ fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
 }
 
 fn our_lib() -> PathBuf {
-    let dir = root().join("target/debug");
+    // The profile this oracle was built with (target/release/examples/oracle).
+    let release = std::env::current_exe()
+        .ok()
+        .is_some_and(|e| e.components().any(|c| c.as_os_str() == "release"));
+    let dir = root().join(if release {
+        "target/release"
+    } else {
+        "target/debug"
+    });
     let so = dir.join("libfwlib32.so");
+    let mut args = vec!["build", "--lib"];
+    if release {
+        args.push("--release");
+    }
     let status =
         std::process::Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-            .args(["build", "--lib", "--manifest-path"])
+            .args(&args)
+            .arg("--manifest-path")
             .arg(root().join("Cargo.toml"))
             .status();
     assert!(
@@ -342,9 +374,22 @@ fn main() {
             }
             println!("{n} cases verified, {bad} differ");
         }
+        "fuzz" => {
+            let opts = fuzz::Opts {
+                fanuc: need_lib(),
+                ours: a.ours.clone().unwrap_or_else(our_lib),
+                seconds: a.seconds,
+                seed: a.seed,
+                only: a.only.clone(),
+                out: a.out.clone(),
+            };
+            let code = fuzz::fuzz(&opts, &probe_exe);
+            let _ = std::fs::remove_dir_all(probe_exe.parent().unwrap());
+            std::process::exit(code);
+        }
         _ => {
             eprintln!(
-                "usage: oracle record|compare|verify|list [--lib PATH] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]"
+                "usage: oracle record|compare|verify|list|fuzz [--lib PATH] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]"
             );
             std::process::exit(2);
         }

@@ -16,6 +16,7 @@
  * created in a private temporary directory, removed when the probe exits.
  */
 #define _GNU_SOURCE
+#include <ctype.h>
 #include <dirent.h>
 #include <dlfcn.h>
 #include <pthread.h>
@@ -541,6 +542,23 @@ static void print_hex(const char *name, const unsigned char *b) {
     putchar('"');
 }
 
+/* `\xHH` in a word is the byte HH (a C string argument in another encoding,
+ * e.g. a Latin-1 name, written in a command line that is UTF-8 text). */
+static void unescape(char *t) {
+    char *o = t;
+    for (; *t; t++) {
+        if (t[0] == '\\' && t[1] == 'x' && isxdigit((unsigned char)t[2]) &&
+            isxdigit((unsigned char)t[3])) {
+            char h[3] = {t[2], t[3], 0};
+            *o++ = (char)strtol(h, NULL, 16);
+            t += 3;
+        } else {
+            *o++ = *t;
+        }
+    }
+    *o = 0;
+}
+
 int main(int argc, char **argv) {
     if (argc != 4) {
         fprintf(stderr, "usage: probe LIBRARY HOST PORT < commands\n");
@@ -564,6 +582,7 @@ int main(int argc, char **argv) {
         for (char *t = strtok(line, " \t\r\n"); t && argc_ < MAXARG; t = strtok(NULL, " \t\r\n"))
             argv_[argc_++] = t;
         if (argc_ == 0) continue;
+        for (int i = 1; i < argc_; i++) unescape(argv_[i]);
         /* fwlib_batch_end: the queued calls write into the buffers as they are
          * (some read an input there, as cnc_gettimer its type). */
         if (!batching) io_n = 0;

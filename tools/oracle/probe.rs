@@ -163,6 +163,11 @@ impl Probe {
         parse(&line)
     }
 
+    /// The probe's process id (the fuzzer's watchdog ends a hung call).
+    pub fn pid(&self) -> u32 {
+        self.child.id()
+    }
+
     /// Closes the probe's input and waits for it to end.
     pub fn finish(mut self) {
         self.stdin.take();

@@ -15,6 +15,7 @@ pub const COMMAND: Func = Func {
     payload: None,
     short: Short::Zeros,
     dims: &[],
+    zero_without_first: false,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -38,4 +39,5 @@ pub const SERVO_LONGS: Func = Func {
     payload: None,
     short: Short::Zeros,
     dims: &[],
+    zero_without_first: false,
 };

@@ -11,7 +11,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("tlinf", "ODBTLINF")],
         forms: &[every_class(0x000a, &[])],
         reply: &[skip(I16), to(I16, "use_no", I16), to(I16, "ofs_type", I16)],
-        short: Short::Error,
+        short: Short::Zeros,
         ..COMMAND
     },
     Func {
@@ -20,7 +20,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("ofs_no", "short")],
         forms: &[every_class(0x000d, &[])],
         reply: &[to(I32, "", I16)],
-        short: Short::Error,
+        short: Short::Zeros,
         ..COMMAND
     },
     Func {
@@ -29,7 +29,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("buf", "ODBMVINF")],
         forms: &[every_class(0x0017, &[])],
         reply: &[to(I32, "use_no1", I16), to(I32, "use_no2", I16)],
-        short: Short::Error,
+        short: Short::Zeros,
         ..COMMAND
     },
 ];

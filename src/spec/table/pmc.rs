@@ -14,4 +14,5 @@ pub const FUNCS: &[Func] = &[Func {
     payload: None,
     short: Short::Zeros,
     dims: &[],
+    zero_without_first: false,
 }];

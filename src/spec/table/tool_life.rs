@@ -22,8 +22,9 @@ pub const FUNCS: &[Func] = &[
             to(I32, "type", I16),
             to(I32, "data", I32),
         ],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999", "0|1|-1|2|99"],
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
@@ -32,8 +33,9 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Short("grp_num"), Param::Out("tool", "ODBTLIFE3")],
         forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
         reply: &[to(I32, "datano", I16), to(I32, "data", I32)],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
@@ -51,8 +53,9 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             skip(I32),
         ],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
@@ -69,7 +72,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "data", I32),
             skip(I32),
         ],
-        short: Short::Error,
+        short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
         ..COMMAND
     },
