@@ -305,16 +305,20 @@ const UNAVAILABLE: &str = "UNAVAILABLE";
 /// leaves its items UNAVAILABLE.
 pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
     let g = (p.number - 1) * 1000; // each path's G signals 1000 further on
+    // In this order the reads fill two frames of a 30i (16 subpackets
+    // each): positions, execution, part count and overrides, then status,
+    // alarms and meters.
     let mut b = cnc.batch();
-    let st = b.status();
-    let ex = b.execution();
     let pos = b.positions();
+    let ex = b.execution();
+    let parts = (p.number == 1).then(|| b.param::<i32>(6711, None));
+    // G12 (*FV0-7, feed override, negative logic) to G30 (SOV0-7, spindle
+    // override): one read.
+    let ovr = b.pmc::<u8>(PmcArea::G, g + 12..=g + 30);
+    let st = b.status();
     let al = b.alarms();
     let sv = b.servo_loads();
     let sp = (!p.spindles.is_empty()).then(|| b.spindle_meters());
-    let parts = (p.number == 1).then(|| b.param::<i32>(6711, None));
-    let fovr = b.pmc::<u8>(PmcArea::G, g + 12..=g + 12);
-    let sovr = b.pmc::<u8>(PmcArea::G, g + 30..=g + 30);
     let mut r = b.send()?;
     let mut out = PathPoll {
         frames: r.frames(),
@@ -355,17 +359,15 @@ pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
     put(n("line"), ex.map(|e| e.sequence.to_string()));
     put(n("path_feedrate"), ex.map(|e| e.feed.to_string()));
     put(n("active_axes"), Some(p.axis_names.join(" ")));
-    put(
-        n("Fovr"),
-        r.take(fovr)
-            .ok()
-            .and_then(|v| v.first().map(|b| (!b).to_string())),
-    );
+    let ovr = r.take(ovr).ok();
+    let fovr = ovr
+        .as_ref()
+        .and_then(|v| v.first())
+        .map(|b| (!b).to_string());
+    put(n("Fovr"), fovr);
     put(
         n("Sovr"),
-        r.take(sovr)
-            .ok()
-            .and_then(|v| v.first().map(|b| b.to_string())),
+        ovr.as_ref().and_then(|v| v.get(18)).map(|b| b.to_string()),
     );
     if let Some(t) = parts {
         put("part_count".into(), r.take(t).ok().map(|v| v.to_string()));
