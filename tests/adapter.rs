@@ -252,6 +252,11 @@ fn grammar_and_values_of_the_full_state() {
         assert_ne!(agent.value(item), "UNAVAILABLE", "{item}");
     }
     assert_eq!(agent.value("path_position").split(' ').count(), 3);
+    let block = agent.value("block");
+    assert!(
+        block.starts_with(&format!("N{seq} ")),
+        "{block:?} is block N{seq}"
+    );
     for c in condition_names() {
         assert_eq!(agent.level(&c), Some(("NORMAL", "")), "{c}");
     }

@@ -21,13 +21,15 @@ pub struct Meter {
     pub speed: Decimal,
 }
 
-fn servo_part() -> impl Part<Out = Vec<Meter>> + Send + 'static {
+fn servo_part(cnc: &Cnc) -> impl Part<Out = Vec<Meter>> + Send + 'static {
     const CALL: &str = "cnc_rdsvmeter";
+    // Two counts; a name (4 bytes) and a value record (8) per axis.
+    let n = cnc.ctx().axes();
     let call = AxisDataCall {
         what: AxisData::Servo(vec![1]),
         limit: crate::types::MAX_AXIS as i16,
     };
-    via(CALL, call, 8 + 24 * crate::types::MAX_AXIS, |r| {
+    via(CALL, call, 8 + 12 * n, |r| {
         if let Some(e) = r.error {
             return Err(Error::of(CALL, e));
         }
@@ -67,7 +69,8 @@ fn spindle_part() -> impl Part<Out = Vec<Meter>> + Send + 'static {
         what: AxisData::Spindle(vec![spdl::LOAD_METER, spdl::SPEED_METER]),
         limit: crate::types::MAX_SPINDLE as i16,
     };
-    via(CALL, call, 8 + 48 * crate::types::MAX_SPINDLE, |r| {
+    // Two counts; a name and two value records per spindle.
+    via(CALL, call, 8 + 20 * crate::types::MAX_SPINDLE, |r| {
         if let Some(e) = r.error {
             return Err(Error::of(CALL, e));
         }
@@ -90,7 +93,7 @@ fn spindle_part() -> impl Part<Out = Vec<Meter>> + Send + 'static {
 impl Cnc {
     /// Every servo axis's load meter, % (cnc_rdsvmeter).
     pub fn servo_loads(&self) -> Result<Vec<Meter>> {
-        self.run(servo_part())
+        self.run(servo_part(self))
     }
 
     /// Every spindle's load, % and motor speed (cnc_rdspmeter, both).
@@ -105,7 +108,8 @@ impl Cnc {
 impl Batch<'_> {
     /// [`Cnc::servo_loads`] in the batch.
     pub fn servo_loads(&mut self) -> Ticket<Vec<Meter>> {
-        self.push(servo_part())
+        let p = servo_part(self.cnc());
+        self.push(p)
     }
 
     /// [`Cnc::spindle_meters`] in the batch.

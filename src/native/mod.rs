@@ -30,6 +30,7 @@ mod batch;
 mod cnc;
 mod decimal;
 mod error;
+mod executing;
 mod macros;
 mod meter;
 mod param;

@@ -149,6 +149,7 @@ impl Layout {
             ));
             v.push(item(&n("program"), Category::Event, "PROGRAM", at.clone()));
             v.push(item(&n("line"), Category::Event, "LINE", at.clone()));
+            v.push(item(&n("block"), Category::Event, "BLOCK", at.clone()));
             v.push(item(
                 &n("active_axes"),
                 Category::Event,
@@ -319,6 +320,7 @@ pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
     let al = b.alarms();
     let sv = b.servo_loads();
     let sp = (!p.spindles.is_empty()).then(|| b.spindle_meters());
+    let blocks = b.executing(256);
     let mut r = b.send()?;
     let mut out = PathPoll {
         frames: r.frames(),
@@ -357,6 +359,12 @@ pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
         }),
     );
     put(n("line"), ex.map(|e| e.sequence.to_string()));
+    // The block executing: the text's first line.
+    let block = r
+        .take(blocks)
+        .ok()
+        .map(|t| t.lines().next().unwrap_or("").trim().to_string());
+    put(n("block"), block);
     put(n("path_feedrate"), ex.map(|e| e.feed.to_string()));
     put(n("active_axes"), Some(p.axis_names.join(" ")));
     let ovr = r.take(ovr).ok();
