@@ -81,6 +81,8 @@ struct Agent {
     values: BTreeMap<String, String>,
     /// Condition name to its last line's fields after the name.
     conds: BTreeMap<String, Vec<String>>,
+    /// The device's condition names (to tell their lines).
+    names: Vec<String>,
 }
 
 /// A checked SHDR line: data items, a condition, or a heartbeat answer.
@@ -147,6 +149,10 @@ fn condition_names() -> Vec<String> {
 
 impl Agent {
     fn connect(port: u16) -> Agent {
+        Agent::with(port, condition_names())
+    }
+
+    fn with(port: u16, names: Vec<String>) -> Agent {
         let s = TcpStream::connect(("127.0.0.1", port)).expect("connect to the adapter");
         s.set_read_timeout(Some(PATIENCE)).unwrap();
         Agent {
@@ -154,6 +160,7 @@ impl Agent {
             r: BufReader::new(s),
             values: BTreeMap::new(),
             conds: BTreeMap::new(),
+            names,
         }
     }
 
@@ -162,7 +169,7 @@ impl Agent {
         let mut s = String::new();
         let n = self.r.read_line(&mut s).expect("a line from the adapter");
         assert!(n > 0, "the adapter closed the connection");
-        let l = parse(&s, &condition_names());
+        let l = parse(&s, &self.names);
         match &l {
             Line::Data(p) => {
                 for (k, v) in p {
@@ -187,7 +194,7 @@ impl Agent {
 
     /// Reads the full state sent on connecting: every item and condition.
     fn full_state(&mut self) {
-        let conds = condition_names();
+        let conds = self.names.clone();
         self.until("the full state", |a| {
             a.values.contains_key("avail") && conds.iter().all(|c| a.conds.contains_key(c))
         });
@@ -508,4 +515,54 @@ fn one_adapter_serves_a_fleet() {
         });
         assert_eq!(agent.value("program"), "O1234", "machine {i}");
     }
+}
+
+#[test]
+fn a_second_path_is_named_with_its_number() {
+    // The built-in profile with its path twice: X Y Z and S1 on both.
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE;
+    let start = text.find("\n[[path]]").unwrap();
+    let end = text.find("\n[[program]]").unwrap();
+    let end = text[..end].rfind("# -----").unwrap();
+    let two = format!("{}{}{}", &text[..end], &text[start..end], &text[end..]);
+    let profile = Profile::parse(&two).expect("a two-path profile");
+    let sim = Simulator::start(profile, "127.0.0.1:0").expect("simulator");
+    sim.set_elapsed(Duration::from_secs(1));
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "50"]);
+    let mut names = condition_names();
+    for c in ["servo", "comms", "logic", "motion", "system"] {
+        names.push(format!("{c}2"));
+    }
+    for a in ["X2", "Y2", "Z2"] {
+        for c in ["travel", "overheat", "servo"] {
+            names.push(format!("{a}{c}"));
+        }
+    }
+    names.push("S12servo".into());
+    let mut agent = Agent::with(a.ports[0], names);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    agent.wait_value("mode2", "AUTOMATIC");
+    agent.wait_value("active_axes2", "X Y Z");
+    agent.wait_value("program2", "O1234");
+    for item in [
+        "X2act",
+        "Y2load",
+        "S12speed",
+        "S12load",
+        "line2",
+        "path_position2",
+    ] {
+        agent.until(item, |a| {
+            !a.value(item).is_empty() && a.value(item) != "UNAVAILABLE"
+        });
+    }
+    assert!(!agent.values.contains_key("estop2"), "one emergency stop");
+    let xml = focas()
+        .args(["adapter", "--devices-xml", "--cnc", &cnc_arg(sim.port())])
+        .output()
+        .expect("devices-xml");
+    let xml = String::from_utf8(xml.stdout).unwrap();
+    assert_eq!(xml.matches("<Path ").count(), 2);
+    assert!(xml.contains(" name=\"X2act\" ") && xml.contains(" name=\"S12servo\" "));
 }
