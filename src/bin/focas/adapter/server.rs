@@ -155,12 +155,6 @@ impl Hub {
         let _ = stream.shutdown(Shutdown::Both);
         eprintln!("focas adapter: {}: agent {peer} gone", self.name);
     }
-
-    /// Agents connected now.
-    #[allow(dead_code)]
-    pub fn agents(&self) -> usize {
-        self.lock().agents.len()
-    }
 }
 
 impl State {
