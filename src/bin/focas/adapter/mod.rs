@@ -322,3 +322,49 @@ pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Resu
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn devices_take_consecutive_ports() {
+        assert_eq!(next_port("0.0.0.0:7878", 1).ok().unwrap(), "0.0.0.0:7879");
+        assert_eq!(next_port("127.0.0.1:0", 1).ok().unwrap(), "127.0.0.1:0");
+        assert!(next_port("0.0.0.0:65535", 1).is_err());
+        assert!(next_port("cnc1:7878", 1).is_err());
+        let args = |extra: &[&str]| {
+            #[derive(clap::Parser)]
+            struct T {
+                #[command(flatten)]
+                a: Args,
+            }
+            let mut v = vec!["t"];
+            v.extend_from_slice(extra);
+            <T as clap::Parser>::parse_from(v).a
+        };
+        let a = args(&["--cnc", "cnc1", "--cnc", "[::1]:9000", "--cnc", "cnc3"]);
+        let (d, interval, heartbeat) = devices(&a, None, 8193).ok().unwrap();
+        let got: Vec<(&str, &str, &str)> = d
+            .iter()
+            .map(|d| (d.name.as_str(), d.cnc.as_str(), d.listen.as_str()))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("device1", "cnc1:8193", "0.0.0.0:7878"),
+                ("device2", "[::1]:9000", "0.0.0.0:7879"),
+                ("device3", "cnc3:8193", "0.0.0.0:7880"),
+            ]
+        );
+        assert_eq!((interval, heartbeat), (1000, 10000));
+        let (d, ..) = devices(&args(&[]), Some("cnc9:8193".into()), 8193)
+            .ok()
+            .unwrap();
+        assert_eq!(
+            (d[0].name.as_str(), d[0].cnc.as_str()),
+            ("device", "cnc9:8193")
+        );
+        assert!(devices(&args(&[]), None, 8193).is_err(), "no CNC");
+    }
+}
