@@ -259,6 +259,10 @@ fn grammar_and_values_of_the_full_state() {
         assert_ne!(agent.value(item), "UNAVAILABLE", "{item}");
     }
     assert_eq!(agent.value("path_position").split(' ').count(), 3);
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let (t, f) = (cnc.modal_code(108).unwrap(), cnc.modal_code(103).unwrap());
+    assert_eq!(agent.value("tool_id"), t.to_string());
+    assert_eq!(agent.value("f_command"), f.to_string());
     let block = agent.value("block");
     assert!(
         block.starts_with(&format!("N{seq} ")),

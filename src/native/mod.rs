@@ -33,6 +33,7 @@ mod error;
 mod executing;
 mod macros;
 mod meter;
+mod modal;
 mod param;
 mod part;
 mod pmc;

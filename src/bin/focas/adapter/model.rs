@@ -150,6 +150,7 @@ impl Layout {
             v.push(item(&n("program"), Category::Event, "PROGRAM", at.clone()));
             v.push(item(&n("line"), Category::Event, "LINE", at.clone()));
             v.push(item(&n("block"), Category::Event, "BLOCK", at.clone()));
+            v.push(item(&n("tool_id"), Category::Event, "TOOL_ID", at.clone()));
             v.push(item(
                 &n("active_axes"),
                 Category::Event,
@@ -162,6 +163,17 @@ impl Layout {
                 native_units: Some("MILLIMETER/MINUTE"),
                 ..item(
                     &n("path_feedrate"),
+                    Category::Sample,
+                    "PATH_FEEDRATE",
+                    at.clone(),
+                )
+            });
+            v.push(Item {
+                sub: Some("COMMANDED"),
+                units: Some("MILLIMETER/SECOND"),
+                native_units: Some("MILLIMETER/MINUTE"),
+                ..item(
+                    &n("f_command"),
                     Category::Sample,
                     "PATH_FEEDRATE",
                     at.clone(),
@@ -308,7 +320,7 @@ pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
     let g = (p.number - 1) * 1000; // each path's G signals 1000 further on
     // In this order the reads fill two frames of a 30i (16 subpackets
     // each): positions, execution, part count and overrides, then status,
-    // alarms and meters.
+    // alarms, meters, the block and the modal T and F.
     let mut b = cnc.batch();
     let pos = b.positions();
     let ex = b.execution();
@@ -321,6 +333,7 @@ pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
     let sv = b.servo_loads();
     let sp = (!p.spindles.is_empty()).then(|| b.spindle_meters());
     let blocks = b.executing(256);
+    let (tool, fcmd) = (b.modal_code(108), b.modal_code(103));
     let mut r = b.send()?;
     let mut out = PathPoll {
         frames: r.frames(),
@@ -365,6 +378,8 @@ pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
         .ok()
         .map(|t| t.lines().next().unwrap_or("").trim().to_string());
     put(n("block"), block);
+    put(n("tool_id"), r.take(tool).ok().map(|t| t.to_string()));
+    put(n("f_command"), r.take(fcmd).ok().map(|f| f.to_string()));
     put(n("path_feedrate"), ex.map(|e| e.feed.to_string()));
     put(n("active_axes"), Some(p.axis_names.join(" ")));
     let ovr = r.take(ovr).ok();
