@@ -24,20 +24,24 @@ use std::time::{Duration, Instant};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// A CNC to serve (HOST[:PORT]); several --cnc serve several devices, on
-    /// consecutive ports from --listen's. Default: --host's
-    #[arg(long, value_name = "HOST[:PORT]")]
+    /// A CNC to serve, with its port if not 8193.
+    #[arg(
+        long,
+        value_name = "HOST[:PORT]",
+        help = "A CNC to serve (HOST[:PORT]); several --cnc serve several devices, on \
+                consecutive ports from --listen's. Default: --host's"
+    )]
     cnc: Vec<String>,
     /// Where agents connect (port 0: any free port; each device's address
     /// is printed as `listening on ADDR`)
-    #[arg(long, default_value = "0.0.0.0:7878")]
+    #[arg(long, value_name = "ADDR", default_value = "0.0.0.0:7878")]
     listen: String,
     /// Milliseconds between polls
-    #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(10..))]
+    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(10..))]
     interval: u64,
     /// The heartbeat answered to an agent's `* PING`, milliseconds; an agent
     /// that pinged and is then silent twice as long is dropped
-    #[arg(long, default_value_t = 10000, value_parser = clap::value_parser!(u64).range(100..))]
+    #[arg(long, value_name = "MS", default_value_t = 10000, value_parser = clap::value_parser!(u64).range(100..))]
     heartbeat: u64,
     /// A TOML file listing the devices (see the README): many CNCs, a port
     /// each
@@ -47,7 +51,7 @@ pub struct Args {
     #[arg(long)]
     devices_xml: bool,
     /// Stop after this many polls of each CNC (scripts, tests)
-    #[arg(long)]
+    #[arg(long, value_name = "N")]
     polls: Option<u64>,
 }
 
