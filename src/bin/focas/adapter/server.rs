@@ -91,7 +91,9 @@ impl Hub {
             let stream = match conn {
                 Ok(s) => s,
                 Err(e) => {
+                    // Out of descriptors, say: not a busy loop meanwhile.
                     eprintln!("focas adapter: {}: accept: {e}", self.name);
+                    std::thread::sleep(Duration::from_millis(100));
                     continue;
                 }
             };
