@@ -11,6 +11,8 @@
 //! `compat` reads a file, not a CNC: it exits with 1 when the program uses
 //! a function this library lacks.
 
+#[path = "focas/adapter/mod.rs"]
+mod adapter;
 #[path = "focas/binary.rs"]
 mod binary;
 #[path = "focas/compat.rs"]
@@ -123,6 +125,9 @@ enum Command {
         #[arg(long, short = 'n')]
         count: Option<u64>,
     },
+    /// An MTConnect adapter: serves SHDR to agents for one CNC (--cnc, or
+    /// --host) or many (--config FILE), polling in batches, reconnecting
+    Adapter(adapter::Args),
     /// Will a program built for FANUC's library work with this one? Lists
     /// the FOCAS functions it uses (linked, or named in its strings for a
     /// program that loads the library with dlopen; or in a source file):
@@ -200,6 +205,10 @@ fn seconds(s: &str) -> Result<f64, String> {
 }
 
 fn run(cli: Cli) -> Result<(), Fail> {
+    if let Command::Adapter(a) = &cli.command {
+        let host = cli.host.as_ref().map(|h| h.addr(cli.port));
+        return adapter::run(a, host, cli.port, Duration::from_secs_f64(cli.timeout));
+    }
     let Some(host) = &cli.host else {
         return Err(Fail::Usage(Box::new(Cli::command().error(
             clap::error::ErrorKind::MissingRequiredArgument,
@@ -232,8 +241,8 @@ fn run(cli: Cli) -> Result<(), Fail> {
         Command::Macro { spec } => data::macro_var(&cnc, spec, json),
         Command::Pmc { address, kind } => data::pmc(&cnc, address, kind, json),
         Command::Prog(p) => prog::run(&cnc, p, json),
-        Command::Watch { .. } | Command::Compat { .. } => {
-            unreachable!("watch connects itself, compat needs no CNC")
+        Command::Watch { .. } | Command::Compat { .. } | Command::Adapter(_) => {
+            unreachable!("watch and adapter connect themselves, compat needs no CNC")
         }
     };
     r.map_err(|f| f.at(&addr))

@@ -1,0 +1,374 @@
+//! `focas adapter`: an MTConnect adapter for one CNC or a whole shop, in
+//! one process. Each device (a CNC) gets its own SHDR port and two kinds
+//! of threads: one poller (discovery on connecting, then one batch per
+//! path and poll, reconnecting after an outage) and one per connected
+//! agent (the full state, then every change; `* PING` answered). Logs go
+//! to stderr; stdout says `listening on ADDR` once per device.
+
+mod condition;
+mod model;
+mod server;
+mod shdr;
+mod xml;
+
+use crate::out::Fail;
+use fwlib32::native::{Cnc, Error};
+use model::{Category, Layout};
+use serde::Deserialize;
+use server::Hub;
+use std::io::Write;
+use std::net::{SocketAddr, TcpListener};
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// A CNC to serve, with its port if not 8193.
+    #[arg(
+        long,
+        value_name = "HOST[:PORT]",
+        help = "A CNC to serve (HOST[:PORT]); several --cnc serve several devices, on \
+                consecutive ports from --listen's. Default: --host's"
+    )]
+    cnc: Vec<String>,
+    /// Where agents connect (port 0: any free port; each device's address
+    /// is printed as `listening on ADDR`)
+    #[arg(long, value_name = "ADDR", default_value = "0.0.0.0:7878")]
+    listen: String,
+    /// Milliseconds between polls
+    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(10..))]
+    interval: u64,
+    /// The heartbeat answered to an agent's `* PING`, milliseconds; an agent
+    /// that pinged and is then silent twice as long is dropped
+    #[arg(long, value_name = "MS", default_value_t = 10000, value_parser = clap::value_parser!(u64).range(100..))]
+    heartbeat: u64,
+    /// A TOML file listing the devices (see the README): many CNCs, a port
+    /// each
+    #[arg(long, value_name = "FILE")]
+    config: Option<PathBuf>,
+    /// Print an MTConnect Devices.xml for the discovered machines and exit
+    #[arg(long)]
+    devices_xml: bool,
+    /// Stop after this many polls of each CNC (scripts, tests)
+    #[arg(long, value_name = "N")]
+    polls: Option<u64>,
+}
+
+/// The `--config` file.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Config {
+    /// Milliseconds between polls (--interval's default).
+    interval: Option<u64>,
+    heartbeat: Option<u64>,
+    #[serde(default, rename = "device")]
+    devices: Vec<DeviceConfig>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct DeviceConfig {
+    /// The device's name (Devices.xml, logs).
+    name: Option<String>,
+    /// `host[:port]`.
+    cnc: String,
+    /// Where its agents connect: default the previous device's port plus
+    /// one (the first: --listen's).
+    listen: Option<String>,
+}
+
+/// One device to serve.
+struct Device {
+    name: String,
+    /// `host:port` of the CNC.
+    cnc: String,
+    listen: String,
+}
+
+/// `ip:port` with the port moved on by `n` (port 0 stays 0: each its own).
+fn next_port(listen: &str, n: usize) -> Result<String, Fail> {
+    let a: SocketAddr = listen
+        .parse()
+        .map_err(|_| Fail::Other(format!("--listen {listen:?}: expected IP:PORT")))?;
+    if a.port() == 0 {
+        return Ok(a.to_string());
+    }
+    let p = usize::from(a.port()) + n;
+    let p = u16::try_from(p).map_err(|_| Fail::Other(format!("no port {p} after {listen}")))?;
+    Ok(SocketAddr::new(a.ip(), p).to_string())
+}
+
+fn cnc_addr(s: &str, default_port: u16) -> Result<String, Fail> {
+    let hp = crate::host_port(s).map_err(|e| Fail::Other(format!("--cnc: {e}")))?;
+    Ok(hp.addr(default_port))
+}
+
+/// The devices the command line and the config file name.
+fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u64, u64), Fail> {
+    let (mut interval, mut heartbeat) = (a.interval, a.heartbeat);
+    let mut specs: Vec<(Option<String>, String, Option<String>)> = Vec::new();
+    if let Some(path) = &a.config {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Fail::Other(format!("{}: {e}", path.display())))?;
+        let c: Config =
+            toml::from_str(&text).map_err(|e| Fail::Other(format!("{}: {e}", path.display())))?;
+        interval = c.interval.unwrap_or(interval).max(10);
+        heartbeat = c.heartbeat.unwrap_or(heartbeat).max(100);
+        specs.extend(c.devices.into_iter().map(|d| (d.name, d.cnc, d.listen)));
+    }
+    specs.extend(a.cnc.iter().map(|c| (None, c.clone(), None)));
+    if specs.is_empty() {
+        match host {
+            Some(h) => specs.push((None, h, None)),
+            None => {
+                return Err(Fail::Other(
+                    "adapter: no CNC: give --cnc HOST[:PORT], --host, or --config FILE".into(),
+                ));
+            }
+        }
+    }
+    let many = specs.len() > 1;
+    let mut out = Vec::new();
+    let mut last = a.listen.clone();
+    for (i, (name, cnc, listen)) in specs.into_iter().enumerate() {
+        let listen = match listen {
+            Some(l) => l,
+            None if i == 0 => a.listen.clone(),
+            None => next_port(&last, 1)?,
+        };
+        last = listen.clone();
+        let name = name.unwrap_or_else(|| {
+            if many {
+                format!("device{}", i + 1)
+            } else {
+                "device".to_string()
+            }
+        });
+        out.push(Device {
+            name,
+            cnc: cnc_addr(&cnc, port)?,
+            listen,
+        });
+    }
+    Ok((out, interval, heartbeat))
+}
+
+/// A connection and its layout: one `Cnc` per path.
+struct Link {
+    paths: Vec<Cnc>,
+    layout: Layout,
+}
+
+fn connect(addr: &str, timeout: Duration) -> Result<Link, Error> {
+    let cnc = Cnc::connect(addr, timeout)?;
+    let layout = Layout::discover(&cnc)?;
+    let mut paths = Vec::new();
+    for p in &layout.paths {
+        let c = cnc.try_clone()?;
+        c.set_path(p.number)?;
+        paths.push(c);
+    }
+    Ok(Link { paths, layout })
+}
+
+/// Item and condition names of a layout.
+fn names(layout: &Layout) -> (Vec<String>, Vec<String>) {
+    let (mut items, mut conds) = (Vec::new(), Vec::new());
+    for i in layout.items() {
+        if i.category == Category::Condition {
+            conds.push(i.name);
+        } else {
+            items.push(i.name);
+        }
+    }
+    (items, conds)
+}
+
+/// Polls one CNC every `interval` until `polls` (for ever without).
+fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, polls: Option<u64>) {
+    let mut link: Option<Link> = None;
+    let (mut done, mut frames) = (0u64, 0usize);
+    let mut down: Option<String> = None;
+    while polls.is_none_or(|n| done < n) {
+        let start = Instant::now();
+        done += 1;
+        if link.is_none() {
+            match connect(&addr, timeout) {
+                Ok(l) => {
+                    let (items, conds) = names(&l.layout);
+                    hub.declare(&items, &conds);
+                    eprintln!(
+                        "focas adapter: {}: {addr} connected: {} path(s), axes {}",
+                        hub.name,
+                        l.layout.paths.len(),
+                        l.layout
+                            .paths
+                            .iter()
+                            .flat_map(|p| p.axes.iter().cloned())
+                            .collect::<Vec<_>>()
+                            .join(" ")
+                    );
+                    down = None;
+                    link = Some(l);
+                }
+                Err(e) => {
+                    let why = e.to_string();
+                    if down.as_ref() != Some(&why) {
+                        eprintln!("focas adapter: {}: {addr}: {why}", hub.name);
+                    }
+                    down = Some(why);
+                    hub.unavailable(&shdr::now());
+                }
+            }
+        }
+        if let Some(l) = &link {
+            let mut values = vec![("avail".to_string(), "AVAILABLE".to_string())];
+            let mut conds = Some(Vec::new());
+            let mut failed = None;
+            for (cnc, p) in l.paths.iter().zip(&l.layout.paths) {
+                match model::poll_path(cnc, p) {
+                    Ok(r) => {
+                        frames += r.frames;
+                        values.extend(r.values);
+                        if r.alarms_unknown {
+                            conds = None;
+                        }
+                        if let Some(c) = conds.as_mut() {
+                            c.extend(r.conditions);
+                        }
+                    }
+                    Err(e) => {
+                        failed = Some(e);
+                        break;
+                    }
+                }
+            }
+            let ts = shdr::now();
+            match failed {
+                None => hub.update(&ts, values, conds),
+                Some(e) => {
+                    eprintln!("focas adapter: {}: {addr}: lost: {e}", hub.name);
+                    down = Some(e.to_string());
+                    link = None;
+                    hub.unavailable(&ts);
+                }
+            }
+        }
+        if polls.is_some_and(|n| done >= n) {
+            break;
+        }
+        // After an outage, try again at least every half second.
+        let wait = if link.is_none() {
+            interval.min(Duration::from_millis(500))
+        } else {
+            interval
+        };
+        if let Some(rest) = wait.checked_sub(start.elapsed()) {
+            std::thread::sleep(rest);
+        }
+    }
+    eprintln!(
+        "focas adapter: {}: {done} polls, {frames} request frames",
+        hub.name
+    );
+}
+
+/// Runs the adapter (or prints Devices.xml); `host`, `port` and `timeout`
+/// are the global options'.
+pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Result<(), Fail> {
+    let (devices, interval, heartbeat) = devices(a, host, port)?;
+    if a.devices_xml {
+        let mut found = Vec::new();
+        for d in &devices {
+            let l = connect(&d.cnc, timeout).map_err(|e| Fail::Api(e).at(&d.cnc))?;
+            found.push((d.name.clone(), l.layout));
+        }
+        let mut out = std::io::stdout().lock();
+        return match out.write_all(xml::devices_xml(&found).as_bytes()) {
+            Ok(()) => Ok(()),
+            Err(_) => Err(Fail::Quiet),
+        };
+    }
+    let mut pollers = Vec::new();
+    for d in devices {
+        let listener = TcpListener::bind(&d.listen)
+            .map_err(|e| Fail::Other(format!("{}: listen on {}: {e}", d.name, d.listen)))?;
+        let local = listener
+            .local_addr()
+            .map_err(|e| Fail::Other(format!("{}: {e}", d.name)))?;
+        {
+            let mut out = std::io::stdout().lock();
+            let _ = writeln!(out, "listening on {local}");
+            let _ = out.flush();
+        }
+        eprintln!("focas adapter: {}: {} served on {local}", d.name, d.cnc);
+        let hub = Hub::new(&d.name, heartbeat);
+        let h = hub.clone();
+        std::thread::Builder::new()
+            .name("listener".into())
+            .stack_size(128 * 1024)
+            .spawn(move || h.serve(listener))
+            .map_err(|e| Fail::Other(format!("thread: {e}")))?;
+        let polls = a.polls;
+        let every = Duration::from_millis(interval);
+        let cnc = d.cnc.clone();
+        pollers.push(
+            std::thread::Builder::new()
+                .name("poller".into())
+                .stack_size(512 * 1024)
+                .spawn(move || poller(hub, cnc, timeout, every, polls))
+                .map_err(|e| Fail::Other(format!("thread: {e}")))?,
+        );
+    }
+    for p in pollers {
+        let _ = p.join();
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn devices_take_consecutive_ports() {
+        assert_eq!(next_port("0.0.0.0:7878", 1).ok().unwrap(), "0.0.0.0:7879");
+        assert_eq!(next_port("127.0.0.1:0", 1).ok().unwrap(), "127.0.0.1:0");
+        assert!(next_port("0.0.0.0:65535", 1).is_err());
+        assert!(next_port("cnc1:7878", 1).is_err());
+        let args = |extra: &[&str]| {
+            #[derive(clap::Parser)]
+            struct T {
+                #[command(flatten)]
+                a: Args,
+            }
+            let mut v = vec!["t"];
+            v.extend_from_slice(extra);
+            <T as clap::Parser>::parse_from(v).a
+        };
+        let a = args(&["--cnc", "cnc1", "--cnc", "[::1]:9000", "--cnc", "cnc3"]);
+        let (d, interval, heartbeat) = devices(&a, None, 8193).ok().unwrap();
+        let got: Vec<(&str, &str, &str)> = d
+            .iter()
+            .map(|d| (d.name.as_str(), d.cnc.as_str(), d.listen.as_str()))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("device1", "cnc1:8193", "0.0.0.0:7878"),
+                ("device2", "[::1]:9000", "0.0.0.0:7879"),
+                ("device3", "cnc3:8193", "0.0.0.0:7880"),
+            ]
+        );
+        assert_eq!((interval, heartbeat), (1000, 10000));
+        let (d, ..) = devices(&args(&[]), Some("cnc9:8193".into()), 8193)
+            .ok()
+            .unwrap();
+        assert_eq!(
+            (d[0].name.as_str(), d[0].cnc.as_str()),
+            ("device", "cnc9:8193")
+        );
+        assert!(devices(&args(&[]), None, 8193).is_err(), "no CNC");
+    }
+}

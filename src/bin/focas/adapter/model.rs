@@ -1,0 +1,488 @@
+//! What the adapter reads: the machine's layout found on connecting
+//! (paths, axes, spindles), the data items named from it, and one poll of
+//! a path as one batch.
+
+use super::condition::condition_of;
+use super::shdr::{Cond, Level};
+use fwlib32::native::{Cnc, Emergency, Error, Execution, Mode, Motion, PmcArea, Run, Status, Unit};
+
+/// An item's MTConnect category.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Category {
+    Sample,
+    Event,
+    Condition,
+}
+
+/// Where an item sits in the device's component tree.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Place {
+    Device,
+    Controller,
+    /// Path number.
+    Path(u16),
+    /// Axis item prefix (`X`, `Y2`), rotary or not.
+    Axis(String, bool),
+    /// Spindle item prefix (`S1`).
+    Spindle(String),
+}
+
+/// A data item the adapter sends.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Item {
+    pub name: String,
+    pub category: Category,
+    /// MTConnect type (`EXECUTION`), subtype, units and native units.
+    pub kind: &'static str,
+    pub sub: Option<&'static str>,
+    pub units: Option<&'static str>,
+    pub native_units: Option<&'static str>,
+    pub place: Place,
+}
+
+/// One path of the machine as discovered.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PathLayout {
+    pub number: u16,
+    /// Appended to path items: "" for path 1, else the path number.
+    pub suffix: String,
+    /// Item prefixes of the axes (the CNC's names; path number added
+    /// after a name an earlier path has).
+    pub axes: Vec<String>,
+    /// The CNC's axis names (to find X, Y and Z).
+    pub axis_names: Vec<String>,
+    pub rotary: Vec<bool>,
+    /// Item prefixes of the spindles (`S1`; path number added after path 1).
+    pub spindles: Vec<String>,
+}
+
+/// The machine: its paths.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Layout {
+    pub paths: Vec<PathLayout>,
+}
+
+impl Layout {
+    /// Reads the paths, each path's axes (names and units) and spindles
+    /// (one batch a path). `cnc`'s current path is left as found.
+    pub fn discover(cnc: &Cnc) -> Result<Layout, Error> {
+        let mut paths = Vec::new();
+        let mut seen: Vec<String> = Vec::new();
+        for number in 1..=cnc.path_count() {
+            let c = cnc.try_clone()?;
+            c.set_path(number)?;
+            let mut b = c.batch();
+            let (pos, sp) = (b.positions(), b.spindle_meters());
+            let mut r = b.send()?;
+            let pos = r.take(pos)?;
+            // No spindle information: a path without spindles.
+            let sp = r.take(sp).unwrap_or_default();
+            let suffix = if number > 1 {
+                number.to_string()
+            } else {
+                String::new()
+            };
+            let axes = pos
+                .iter()
+                .map(|a| {
+                    if seen.contains(&a.name) {
+                        format!("{}{suffix}", a.name)
+                    } else {
+                        a.name.clone()
+                    }
+                })
+                .collect::<Vec<_>>();
+            seen.extend(axes.iter().cloned());
+            paths.push(PathLayout {
+                number,
+                axis_names: pos.iter().map(|a| a.name.clone()).collect(),
+                rotary: pos
+                    .iter()
+                    .map(|a| {
+                        a.unit == Unit::Degree
+                            || matches!(a.name.as_bytes().first(), Some(b'A' | b'B' | b'C'))
+                    })
+                    .collect(),
+                axes,
+                spindles: sp.iter().map(|s| format!("{}{suffix}", s.name)).collect(),
+                suffix,
+            });
+        }
+        Ok(Layout { paths })
+    }
+
+    /// Every item, in the order the full state lists them.
+    pub fn items(&self) -> Vec<Item> {
+        let mut v = vec![
+            item("avail", Category::Event, "AVAILABILITY", Place::Device),
+            item(
+                "estop",
+                Category::Event,
+                "EMERGENCY_STOP",
+                Place::Controller,
+            ),
+            item("part_count", Category::Event, "PART_COUNT", Place::Path(1)),
+        ];
+        for p in &self.paths {
+            let at = Place::Path(p.number);
+            let n = |s: &str| format!("{s}{}", p.suffix);
+            for (name, kind) in [
+                ("servo", "ACTUATOR"),
+                ("comms", "COMMUNICATIONS"),
+                ("logic", "LOGIC_PROGRAM"),
+                ("motion", "MOTION_PROGRAM"),
+                ("system", "SYSTEM"),
+            ] {
+                v.push(item(&n(name), Category::Condition, kind, Place::Controller));
+            }
+            v.push(item(
+                &n("mode"),
+                Category::Event,
+                "CONTROLLER_MODE",
+                at.clone(),
+            ));
+            v.push(item(
+                &n("execution"),
+                Category::Event,
+                "EXECUTION",
+                at.clone(),
+            ));
+            v.push(item(&n("program"), Category::Event, "PROGRAM", at.clone()));
+            v.push(item(&n("line"), Category::Event, "LINE", at.clone()));
+            v.push(item(&n("block"), Category::Event, "BLOCK", at.clone()));
+            v.push(item(&n("tool_id"), Category::Event, "TOOL_ID", at.clone()));
+            v.push(item(
+                &n("active_axes"),
+                Category::Event,
+                "ACTIVE_AXES",
+                at.clone(),
+            ));
+            v.push(Item {
+                sub: Some("ACTUAL"),
+                units: Some("MILLIMETER/SECOND"),
+                native_units: Some("MILLIMETER/MINUTE"),
+                ..item(
+                    &n("path_feedrate"),
+                    Category::Sample,
+                    "PATH_FEEDRATE",
+                    at.clone(),
+                )
+            });
+            v.push(Item {
+                sub: Some("COMMANDED"),
+                units: Some("MILLIMETER/SECOND"),
+                native_units: Some("MILLIMETER/MINUTE"),
+                ..item(
+                    &n("f_command"),
+                    Category::Sample,
+                    "PATH_FEEDRATE",
+                    at.clone(),
+                )
+            });
+            v.push(Item {
+                sub: Some("ACTUAL"),
+                units: Some("MILLIMETER_3D"),
+                native_units: Some("MILLIMETER_3D"),
+                ..item(
+                    &n("path_position"),
+                    Category::Sample,
+                    "PATH_POSITION",
+                    at.clone(),
+                )
+            });
+            v.push(Item {
+                sub: Some("OVERRIDE"),
+                units: Some("PERCENT"),
+                native_units: Some("PERCENT"),
+                ..item(&n("Fovr"), Category::Sample, "PATH_FEEDRATE", at.clone())
+            });
+            v.push(Item {
+                sub: Some("OVERRIDE"),
+                units: Some("PERCENT"),
+                native_units: Some("PERCENT"),
+                ..item(&n("Sovr"), Category::Sample, "ROTARY_VELOCITY", at.clone())
+            });
+            for (a, rotary) in p.axes.iter().zip(&p.rotary) {
+                let place = Place::Axis(a.clone(), *rotary);
+                let (kind, units) = if *rotary {
+                    ("ANGLE", "DEGREE")
+                } else {
+                    ("POSITION", "MILLIMETER")
+                };
+                v.push(Item {
+                    sub: Some("ACTUAL"),
+                    units: Some(units),
+                    native_units: Some(units),
+                    ..item(&format!("{a}act"), Category::Sample, kind, place.clone())
+                });
+                v.push(percent(&format!("{a}load"), "LOAD", place.clone()));
+                for (c, kind) in [
+                    ("travel", "POSITION"),
+                    ("overheat", "TEMPERATURE"),
+                    ("servo", "LOAD"),
+                ] {
+                    v.push(item(
+                        &format!("{a}{c}"),
+                        Category::Condition,
+                        kind,
+                        place.clone(),
+                    ));
+                }
+            }
+            for s in &p.spindles {
+                let place = Place::Spindle(s.clone());
+                v.push(Item {
+                    sub: Some("ACTUAL"),
+                    units: Some("REVOLUTION/MINUTE"),
+                    native_units: Some("REVOLUTION/MINUTE"),
+                    ..item(
+                        &format!("{s}speed"),
+                        Category::Sample,
+                        "ROTARY_VELOCITY",
+                        place.clone(),
+                    )
+                });
+                v.push(percent(&format!("{s}load"), "LOAD", place.clone()));
+                v.push(item(
+                    &format!("{s}servo"),
+                    Category::Condition,
+                    "LOAD",
+                    place,
+                ));
+            }
+        }
+        v
+    }
+}
+
+fn item(name: &str, category: Category, kind: &'static str, place: Place) -> Item {
+    Item {
+        name: name.to_string(),
+        category,
+        kind,
+        sub: None,
+        units: None,
+        native_units: None,
+        place,
+    }
+}
+
+fn percent(name: &str, kind: &'static str, place: Place) -> Item {
+    Item {
+        sub: Some("ACTUAL"),
+        units: Some("PERCENT"),
+        native_units: Some("PERCENT"),
+        ..item(name, Category::Sample, kind, place)
+    }
+}
+
+/// MTConnect's CONTROLLER_MODE from cnc_statinfo's `aut`: JOG and teach
+/// JOG are MANUAL, MDI MANUAL_DATA_INPUT, EDIT MANUAL, the rest AUTOMATIC.
+pub fn mode(m: Mode) -> &'static str {
+    match m.code() {
+        5 | 6 | 3 => "MANUAL",
+        0 => "MANUAL_DATA_INPUT",
+        _ => "AUTOMATIC",
+    }
+}
+
+/// MTConnect's EXECUTION from cnc_statinfo: a feed hold, or motion waiting
+/// (dwell, or an M/S/T/B function waiting for its finish signal) while not
+/// running, is INTERRUPTED; running (STRT, MSTR) ACTIVE; stopped in a
+/// program (STOP) STOPPED; reset READY.
+pub fn execution(s: &Status) -> &'static str {
+    match s.run {
+        Run::Start | Run::Mstr => "ACTIVE",
+        Run::Hold => "INTERRUPTED",
+        _ if s.motion == Motion::Dwell || s.mstb != 0 => "INTERRUPTED",
+        Run::Stop => "STOPPED",
+        _ => "READY",
+    }
+}
+
+/// The values and condition activations of one poll of a path.
+#[derive(Debug, Default)]
+pub struct PathPoll {
+    pub values: Vec<(String, String)>,
+    pub conditions: Vec<Cond>,
+    /// Request frames it took.
+    pub frames: usize,
+    /// The alarms could not be read: the conditions stay as they were.
+    pub alarms_unknown: bool,
+}
+
+const UNAVAILABLE: &str = "UNAVAILABLE";
+
+/// Polls one path (`cnc` set to it) in one batch. `Err` only when the
+/// exchange failed as a whole (the CNC is gone); a read the CNC refused
+/// leaves its items UNAVAILABLE.
+pub fn poll_path(cnc: &Cnc, p: &PathLayout) -> Result<PathPoll, Error> {
+    let g = (p.number - 1) * 1000; // each path's G signals 1000 further on
+    // In this order the reads fill two frames of a 30i (16 subpackets
+    // each): positions, execution, part count and overrides, then status,
+    // alarms, meters, the block and the modal T and F.
+    let mut b = cnc.batch();
+    let pos = b.positions();
+    let ex = b.execution();
+    let parts = (p.number == 1).then(|| b.param::<i32>(6711, None));
+    // G12 (*FV0-7, feed override, negative logic) to G30 (SOV0-7, spindle
+    // override): one read.
+    let ovr = b.pmc::<u8>(PmcArea::G, g + 12..=g + 30);
+    let st = b.status();
+    let al = b.alarms();
+    let sv = b.servo_loads();
+    let sp = (!p.spindles.is_empty()).then(|| b.spindle_meters());
+    let blocks = b.executing(256);
+    let (tool, fcmd) = (b.modal_code(108), b.modal_code(103));
+    let mut r = b.send()?;
+    let mut out = PathPoll {
+        frames: r.frames(),
+        ..PathPoll::default()
+    };
+    let n = |s: &str| format!("{s}{}", p.suffix);
+    let mut put = |name: String, v: Option<String>| {
+        out.values
+            .push((name, v.unwrap_or_else(|| UNAVAILABLE.to_string())));
+    };
+    let st = r.take(st).ok();
+    let ex: Option<Execution> = r.take(ex).ok();
+    put(n("mode"), st.map(|s| mode(s.mode).to_string()));
+    put(
+        n("execution"),
+        st.as_ref().map(|s| execution(s).to_string()),
+    );
+    if p.number == 1 {
+        put(
+            "estop".into(),
+            st.map(|s| {
+                if s.emergency == Emergency::Emergency {
+                    "TRIGGERED"
+                } else {
+                    "ARMED"
+                }
+                .to_string()
+            }),
+        );
+    }
+    put(
+        n("program"),
+        ex.map(|e| match e.program {
+            0 => UNAVAILABLE.to_string(),
+            o => format!("O{o:04}"),
+        }),
+    );
+    put(n("line"), ex.map(|e| e.sequence.to_string()));
+    // The block executing: the text's first line.
+    let block = r
+        .take(blocks)
+        .ok()
+        .map(|t| t.lines().next().unwrap_or("").trim().to_string());
+    put(n("block"), block);
+    put(n("tool_id"), r.take(tool).ok().map(|t| t.to_string()));
+    put(n("f_command"), r.take(fcmd).ok().map(|f| f.to_string()));
+    put(n("path_feedrate"), ex.map(|e| e.feed.to_string()));
+    put(n("active_axes"), Some(p.axis_names.join(" ")));
+    let ovr = r.take(ovr).ok();
+    let fovr = ovr
+        .as_ref()
+        .and_then(|v| v.first())
+        .map(|b| (!b).to_string());
+    put(n("Fovr"), fovr);
+    put(
+        n("Sovr"),
+        ovr.as_ref().and_then(|v| v.get(18)).map(|b| b.to_string()),
+    );
+    if let Some(t) = parts {
+        put("part_count".into(), r.take(t).ok().map(|v| v.to_string()));
+    }
+    let pos = r.take(pos).ok();
+    let xyz = pos.as_ref().map(|pos| {
+        ["X", "Y", "Z"]
+            .map(|a| {
+                pos.iter()
+                    .find(|q| q.name == a)
+                    .map_or_else(|| "0".to_string(), |q| q.absolute.to_string())
+            })
+            .join(" ")
+    });
+    put(n("path_position"), xyz);
+    let loads = r.take(sv).ok();
+    for (i, a) in p.axes.iter().enumerate() {
+        put(
+            format!("{a}act"),
+            pos.as_ref()
+                .and_then(|v| v.get(i))
+                .map(|q| q.machine.to_string()),
+        );
+        put(
+            format!("{a}load"),
+            loads
+                .as_ref()
+                .and_then(|v| v.get(i))
+                .map(|m| m.load.to_string()),
+        );
+    }
+    let meters = sp.and_then(|t| r.take(t).ok());
+    for (i, s) in p.spindles.iter().enumerate() {
+        let m = meters.as_ref().and_then(|v| v.get(i));
+        // The first spindle's actual speed is cnc_acts's; the others' their
+        // motor speed.
+        let speed = match (i, ex) {
+            (0, Some(e)) => Some(e.spindle_speed.to_string()),
+            _ => m.map(|m| m.speed.to_string()),
+        };
+        put(format!("{s}speed"), speed);
+        put(format!("{s}load"), m.map(|m| m.load.to_string()));
+    }
+    match r.take(al) {
+        Err(_) => out.alarms_unknown = true,
+        Ok(alarms) => {
+            for a in &alarms {
+                out.conditions.push(Cond {
+                    name: condition_of(a, &p.axes, &p.spindles, &p.suffix),
+                    level: Level::Fault,
+                    code: a.code(),
+                    severity: a.kind.0.to_string(),
+                    qualifier: String::new(),
+                    text: a.message.clone(),
+                });
+            }
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn modes() {
+        let m = |c| mode(Mode::from_code(c));
+        assert_eq!(m(5), "MANUAL");
+        assert_eq!(m(6), "MANUAL");
+        assert_eq!(m(3), "MANUAL");
+        assert_eq!(m(0), "MANUAL_DATA_INPUT");
+        assert_eq!(m(1), "AUTOMATIC");
+        assert_eq!(m(10), "AUTOMATIC");
+    }
+
+    #[test]
+    fn executions() {
+        let s = |run, motion, mstb| Status {
+            mode: Mode::Mem,
+            run: Run::from_code(run),
+            motion: Motion::from_code(motion),
+            mstb,
+            emergency: Emergency::Clear,
+            alarm: fwlib32::native::AlarmState::Clear,
+            edit: 0,
+        };
+        assert_eq!(execution(&s(3, 1, 0)), "ACTIVE");
+        assert_eq!(execution(&s(2, 0, 0)), "INTERRUPTED");
+        assert_eq!(execution(&s(1, 2, 0)), "INTERRUPTED");
+        assert_eq!(execution(&s(1, 0, 1)), "INTERRUPTED");
+        assert_eq!(execution(&s(1, 0, 0)), "STOPPED");
+        assert_eq!(execution(&s(0, 0, 0)), "READY");
+    }
+}
