@@ -311,13 +311,6 @@ const DEVIATIONS: &[Deviation] = &[
             ),
         ]),
     },
-    Deviation {
-        function: "cnc_rdprogdir3",
-        case: "v3_type1_none",
-        reason: "(a) no program found: FANUC sets *top_prog from the first record of the caller's buffer, which it \
-                 did not write (the probe's 0xCC fill here); we leave *top_prog as the caller gave it (9000)",
-        treatment: Differs(&[Field(0, "top_prog", 9000)]),
-    },
 ];
 
 fn deviation(case: &Case) -> Option<&'static Deviation> {
