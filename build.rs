@@ -573,14 +573,14 @@ fn described_exports(funcs: &[types::Func]) -> String {
                                 ),
                             }
                         }
-                        _ => format!("/// `{n}` must be NULL or point to a writable {t}."),
+                        _ => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
                     })
                     .collect(),
                 Some(c) => std::iter::once(format!(
                     "/// `{c}` must be NULL or point to a writable short."
                 ))
                 .chain(outs.iter().map(|(n, t)| {
-                    format!("/// `{n}` must be NULL or point to `*{c}` writable {t}.")
+                    format!("/// `{n}` must be NULL or point to `*{c}` writable {}.", doc_type(t))
                 }))
                 .collect(),
             };
@@ -588,7 +588,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
         if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
             let count = f.numbers().nth(usize::from(p.count)).unwrap_or("?");
             safety.push(format!(
-                "/// `{n}` must be NULL or point to `{count}` readable {t} (at most {} are read).",
+                "/// `{n}` must be NULL or point to `{count}` readable {} (at most {} are read).",
+                doc_type(t),
                 p.max
             ));
         }
@@ -694,6 +695,16 @@ fn rust_type(c: &str) -> String {
             Some(n) => format!("[c_char; {n}]"),
             None => t.into(),
         },
+    }
+}
+
+/// A C type in a doc comment: an array type (`char[62]`) quoted as code, so
+/// rustdoc reads no link in its brackets.
+fn doc_type(t: &str) -> String {
+    if t.contains('[') {
+        format!("`{t}`")
+    } else {
+        t.to_owned()
     }
 }
 

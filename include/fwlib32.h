@@ -3306,7 +3306,7 @@ short cnc_rdpitchr(unsigned short FlibHndl,
 
  # Safety
  `data_num` must be NULL or point to a writable short.
- `item` must be NULL or point to `*data_num` writable char[62].
+ `item` must be NULL or point to `*data_num` writable `char[62]`.
  */
 short cnc_rdpm_cncitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
 
@@ -3332,7 +3332,7 @@ short cnc_rdpm_item(unsigned short FlibHndl,
 
  # Safety
  `data_num` must be NULL or point to a writable short.
- `item` must be NULL or point to `*data_num` writable char[62].
+ `item` must be NULL or point to `*data_num` writable `char[62]`.
  */
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
 
@@ -4169,7 +4169,7 @@ short cnc_wrpm_item(unsigned short FlibHndl,
  without traffic.
 
  # Safety
- `item` must be NULL or point to `data_num` readable char[62] (at most 22 are read).
+ `item` must be NULL or point to `data_num` readable `char[62]` (at most 22 are read).
  */
 short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num, char (*item)[62]);
 
