@@ -56,8 +56,6 @@ enum Fix {
     NoOutput(usize),
     /// We send nothing: the call's recorded frames are not expected.
     NoTraffic(usize),
-    /// The in-out value `name` of the call ends as this value instead of FANUC's.
-    Field(usize, &'static str, i64),
     /// The output buffer `name` of the call holds these bytes (hex; 0xCC
     /// after them) instead of FANUC's.
     Output(usize, &'static str, &'static str),
@@ -1000,11 +998,6 @@ fn run_case(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<String> {
         // In-out values.
         for (name, want) in &call.fields {
             let got = o.fields.iter().find(|(n, _)| n == name).map(|x| x.1);
-            let fixed = fixes.iter().find_map(|f| match *f {
-                Field(c, n, v) if c == i && n == name => Some(v),
-                _ => None,
-            });
-            let want = fixed.as_ref().unwrap_or(want);
             match (name.as_str(), got) {
                 ("h", Some(g)) => {
                     if let Err(e) = probe.handles.check(*want as u16, g as u16) {
@@ -1111,7 +1104,6 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
                 | NoTraffic(i)
                 | Script(i, _)
                 | TornDown(i)
-                | Field(i, _, _)
                 | Output(i, _, _) => vec![i],
                 FramesOf(i, j) => vec![i, j],
             };
