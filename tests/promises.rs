@@ -124,7 +124,11 @@ fn safety(doc: &str) -> String {
 /// The size of the type named by the words at the start of `w`
 /// ("unsigned shorts", "ODBPOS", "doubles", "4-byte elements", "PRGDIR2 records").
 fn type_size(w: &[&str], sizes: &BTreeMap<String, usize>) -> Option<usize> {
-    let first = w.first()?.trim_end_matches(['.', ',', ';']);
+    // An array type is quoted as code: `char[62]`.
+    let first = w
+        .first()?
+        .trim_end_matches(['.', ',', ';'])
+        .trim_matches('`');
     if first == "unsigned" {
         let t = w
             .get(1)?
