@@ -636,50 +636,6 @@ fn recipe_args(p: &cabi::Proto, h: c_ushort, r: Recipe) -> Vec<cabi::Arg> {
         .collect()
 }
 
-/// Functions that end or change the handle's session (free it, drop its
-/// connections, start an upload, change its path or timeout) are left to
-/// their own tests; every other function taking a handle is swept.
-const SESSION: &[&str] = &[
-    "cnc_freelibhndl",
-    "cnc_resetconnect",
-    "cnc_upstart",
-    "cnc_upstart3",
-    "cnc_upstart4",
-    "cnc_setpath",
-    "cnc_settimeout",
-    "fwlib_set_reconnect",
-    // A batch queues the handle's calls; a transfer holds connection 1;
-    // deleting every program leaves the program functions nothing.
-    "fwlib_batch_begin",
-    "fwlib_batch_end",
-    "fwlib_batch_limits",
-    "cnc_dwnstart",
-    "cnc_dwnstart3",
-    "cnc_dwnstart4",
-    "cnc_dncstart",
-    "cnc_dncstart2",
-    "cnc_delall",
-    "cnc_pdf_delall",
-    // Transfer data and ends: nothing to do without a start.
-    "cnc_download",
-    "cnc_download3",
-    "cnc_download4",
-    "cnc_dwnend",
-    "cnc_dwnend3",
-    "cnc_dwnend4",
-    "cnc_dnc",
-    "cnc_dnc2",
-    "cnc_dncend",
-    "cnc_dncend2",
-    "cnc_upload",
-    "cnc_upload3",
-    "cnc_upload4",
-    "cnc_cupload",
-    "cnc_upend",
-    "cnc_upend3",
-    "cnc_upend4",
-];
-
 /// `min_percent`: of the functions swept, how many at least must accept
 /// some arguments on a plain simulator (the 16i class lacks many).
 fn sweep_against(profile: Profile, seed: u64, min_percent: usize) {
@@ -689,7 +645,7 @@ fn sweep_against(profile: Profile, seed: u64, min_percent: usize) {
     let h = lib.alloc(plain.port(), 5).expect("a handle");
     let mut calls = Vec::new();
     for p in cabi::all_prototypes() {
-        if !p.params.iter().any(cabi::is_handle) || SESSION.contains(&p.name.as_str()) {
+        if !p.params.iter().any(cabi::is_handle) || cabi::SESSION.contains(&p.name.as_str()) {
             continue;
         }
         let r = RECIPES

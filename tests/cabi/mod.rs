@@ -227,3 +227,47 @@ impl Lib {
 pub fn is_handle(p: &Param) -> bool {
     p.name == "FlibHndl"
 }
+
+/// Functions that end or change the handle's session (free it, drop its
+/// connections, start an upload, change its path or timeout) are left to
+/// their own tests; every other function taking a handle is swept.
+pub const SESSION: &[&str] = &[
+    "cnc_freelibhndl",
+    "cnc_resetconnect",
+    "cnc_upstart",
+    "cnc_upstart3",
+    "cnc_upstart4",
+    "cnc_setpath",
+    "cnc_settimeout",
+    "fwlib_set_reconnect",
+    // A batch queues the handle's calls; a transfer holds connection 1;
+    // deleting every program leaves the program functions nothing.
+    "fwlib_batch_begin",
+    "fwlib_batch_end",
+    "fwlib_batch_limits",
+    "cnc_dwnstart",
+    "cnc_dwnstart3",
+    "cnc_dwnstart4",
+    "cnc_dncstart",
+    "cnc_dncstart2",
+    "cnc_delall",
+    "cnc_pdf_delall",
+    // Transfer data and ends: nothing to do without a start.
+    "cnc_download",
+    "cnc_download3",
+    "cnc_download4",
+    "cnc_dwnend",
+    "cnc_dwnend3",
+    "cnc_dwnend4",
+    "cnc_dnc",
+    "cnc_dnc2",
+    "cnc_dncend",
+    "cnc_dncend2",
+    "cnc_upload",
+    "cnc_upload3",
+    "cnc_upload4",
+    "cnc_cupload",
+    "cnc_upend",
+    "cnc_upend3",
+    "cnc_upend4",
+];
