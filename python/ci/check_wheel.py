@@ -34,7 +34,9 @@ def main() -> int:
         for i in infos:
             if not ALLOWED.match(i.filename):
                 bad.append(f"not one of the package's files: {i.filename}")
-            if re.search(r"fanuc|\.dll$|\.h$|fwlib(e1|e64|0dn|30i|64)|libfwlib32-linux|"
+            # FANUC's Windows DLLs, its header, and its Linux builds
+            # (libfwlib32-<platform>.so.1.0.N): never ours.
+            if re.search(r"fanuc|\.dll$|\.h$|fwlib(e1|e64|0dn|30i|64)|libfwlib32-[a-z0-9]|"
                          r"\.so\.1\.0\.", i.filename, re.I):
                 bad.append(f"a FANUC name: {i.filename}")
         for n in sorted(NEEDED - names):
