@@ -331,15 +331,7 @@ fn run(case: &Case, target: usize, src: &Source, probe_exe: &Path, lib: &Path) -
         if k == target + 2 {
             fake.mutate_done();
         }
-        let settle = matches!(word(&cmd), "alloc" | "free" | "exitprocess" | "setpath");
-        let frames = fake.take(Duration::from_millis(if settle { 20 } else { 1 }));
-        let crashed = matches!(answer, Answer::Crashed(_));
-        ran.push(Ran {
-            cmd,
-            answer,
-            frames,
-        });
-        if crashed {
+        if super::record(&fake, cmd, answer, &mut ran) {
             break;
         }
     }

@@ -56,6 +56,21 @@ fn word(cmd: &str) -> &str {
     cmd.split_whitespace().next().unwrap_or("")
 }
 
+/// Records a call that has just returned, with the frames the fake CNC saw
+/// for it; true when the probe crashed (the case ends there). Sockets are
+/// closed as the call returns: the proxy is given a moment to see it.
+fn record(fake: &Fake, cmd: String, answer: Answer, ran: &mut Vec<Ran>) -> bool {
+    let settle = matches!(word(&cmd), "alloc" | "free" | "exitprocess" | "setpath");
+    let frames = fake.take(Duration::from_millis(if settle { 20 } else { 1 }));
+    let crashed = matches!(answer, Answer::Crashed(_));
+    ran.push(Ran {
+        cmd,
+        answer,
+        frames,
+    });
+    crashed
+}
+
 /// Runs a case live against a fresh fake CNC; None when its reply shape
 /// changed nothing (a duplicate of the plain case).
 fn run_live(case: &Case, probe_exe: &Path, lib: &Path) -> Option<Vec<Ran>> {
@@ -76,16 +91,7 @@ fn run_live(case: &Case, probe_exe: &Path, lib: &Path) -> Option<Vec<Ran>> {
         fake.shape_next(shape);
         let answer = p.call(&cmd);
         shaped |= fake.shape_done();
-        // Sockets are closed as the call returns: let the proxy see it.
-        let settle = matches!(word(&cmd), "alloc" | "free" | "exitprocess" | "setpath");
-        let frames = fake.take(Duration::from_millis(if settle { 20 } else { 1 }));
-        let crashed = matches!(answer, Answer::Crashed(_));
-        ran.push(Ran {
-            cmd,
-            answer,
-            frames,
-        });
-        if crashed {
+        if record(&fake, cmd, answer, &mut ran) {
             break;
         }
     }
