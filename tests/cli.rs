@@ -370,7 +370,7 @@ fn watch_a_dead_cnc_keeps_trying() {
     // own, never glued to a status line.
     let cmd = format!(
         "{} -H 127.0.0.1:{port} watch -n 2 -i 0",
-        env!("CARGO_BIN_EXE_focas")
+        toolchain::target_command_line(env!("CARGO_BIN_EXE_focas"))
     );
     let o = std::process::Command::new("script")
         .args(["-q", "-e", "-c", &cmd, "/dev/null"])
@@ -712,7 +712,7 @@ fn a_slow_transfer_with_rate_and_eta() {
     }
     text.push_str("M30\n%");
     std::fs::write(&file, &text).unwrap();
-    let focas = env!("CARGO_BIN_EXE_focas");
+    let focas = toolchain::target_command_line(env!("CARGO_BIN_EXE_focas"));
     let cmd = format!("{focas} -H {listen} prog put {}", file.display());
     let o = std::process::Command::new("script")
         .args(["-q", "-e", "-c", &cmd, "/dev/null"])

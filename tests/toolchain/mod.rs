@@ -82,6 +82,14 @@ pub fn target_command(exe: impl AsRef<std::ffi::OsStr>) -> Command {
     }
 }
 
+/// `exe` as a shell command line, through cargo's runner for the target when
+/// one is set (for script(1), which runs its command through the shell).
+pub fn target_command_line(exe: &str) -> String {
+    let mut words = runner();
+    words.push(exe.to_owned());
+    words.join(" ")
+}
+
 /// Runs a command to completion; panics with its output unless it succeeds.
 /// A tool that cannot be started fails with a message naming it.
 pub fn run(cmd: &mut Command) -> Output {
