@@ -3,7 +3,7 @@
 //! equal the one FANUC's library sent, byte for byte, and every output buffer
 //! (pre-filled with 0xCC) must hold exactly the bytes FANUC's library wrote.
 //! The fake CNC's answers are our choices, not a real CNC's; what FANUC's
-//! library made of them is the observation (src/proto/NOTES.md).
+//! library made of them is the observation (docs/protocol/).
 
 mod common;
 

@@ -246,7 +246,7 @@ fn pmc_info_lists_the_areas() {
 /// datano is the reply's count, which (the simulator's count always fitting)
 /// equals the records written: those before it are written, the one after
 /// it keeps the caller's bytes (FANUC's library writes the count too; a
-/// count larger than the records written is capped, see NOTES.md).
+/// count larger than the records written is capped, see docs/protocol/pmc.md).
 #[test]
 fn pmc_info_datano_is_the_count_of_records_written() {
     let s = start();

@@ -512,7 +512,7 @@ fn axdt(b: &[u8], k: usize) -> ([u8; 4], i32, i16, i16, i16) {
 }
 
 /// Classes 4 and 5 and class-1 types 4..17 (FANUC's library's tables, see
-/// NOTES.md), and FANUC's local checks: *len < 1 → EW_LENGTH, num outside
+/// docs/protocol/position.md), and FANUC's local checks: *len < 1 → EW_LENGTH, num outside
 /// 1..4 → EW_ATTRIB, class outside 1..5 → EW_NUMBER, unknown type →
 /// EW_ATTRIB.
 #[test]

@@ -2,7 +2,7 @@
 //! requests differ from the 30i class. The request bytes below were recorded
 //! from FANUC's library (x86-64 libfwlib32 1.0.5) talking to our own fake CNC
 //! answering the open with the v2_kind1 body of vectors/cnc_allclibhndl3.json
-//! (our observation; see src/proto/NOTES.md "16i class").
+//! (our observation; see docs/protocol/classes.md "16i class").
 
 mod sim;
 
@@ -98,7 +98,7 @@ fn request_bytes_recorded_from_fanuc() {
 fn wrmacro_binary_records_as_fanuc() {
     // (mcr_val, dec_val) -> record words sent by FANUC's library (recorded).
     // Past dec 9 FANUC's library multiplies by its truncated 10^-9 and then
-    // 10^(9 - rest) (src/proto/NOTES.md), so it loses a few units: 1 dec 10
+    // 10^(9 - rest) (docs/protocol/classes.md), so it loses a few units: 1 dec 10
     // is 0x6df37f63 where the exact value is 0x6df37f67.5.
     let cases: [((i32, i16), (u32, i16)); 28] = [
         ((1, 10), (0x6df37f63, 64)),
