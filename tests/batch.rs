@@ -170,18 +170,18 @@ fn every_batchable_call_batched_equals_the_call_alone() {
     let both: Vec<_> = took.intersection(&refused).collect();
     assert!(both.is_empty(), "taken and refused: {both:?}");
     assert!(refused.contains("cnc_wrparam") && refused.contains("cnc_rdparar"));
-    // The README names the hand-written ones; the described reads are all in.
+    // docs/functions.md names the hand-written ones; the described reads are all in.
     let described: BTreeSet<String> = fwlib32::spec::FUNCS
         .iter()
         .filter(|f| f.outs().next().is_some())
         .map(|f| f.name.to_string())
         .collect();
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let readme = std::fs::read_to_string(root().join("docs/functions.md")).unwrap();
     let listed = readme
         .split("(src/spec/table/) and ")
         .nth(1)
         .and_then(|t| t.split(" (src/ffi").next())
-        .expect("README: the batchable list");
+        .expect("docs/functions.md: the batchable list");
     let listed: BTreeSet<String> = listed
         .split(|c: char| c == ',' || c.is_whitespace())
         .filter(|w| w.starts_with("cnc_") || w.starts_with("pmc_"))
@@ -190,7 +190,7 @@ fn every_batchable_call_batched_equals_the_call_alone() {
     let hand: BTreeSet<String> = took.difference(&described).cloned().collect();
     assert_eq!(
         listed, hand,
-        "README's batchable list vs the functions a batch took"
+        "docs/functions.md's batchable list vs the functions a batch took"
     );
     assert!(
         took.len() >= 60,

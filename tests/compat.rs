@@ -668,7 +668,7 @@ fn generate(measured: &Measured) -> String {
          function; `—` when only FANUC's header declares it (Windows, HSSB or\n  \
          other libraries).\n\
          * **ours**: how this library exports it: implemented by hand, described\n  \
-         as data (one table entry, `README.md` \"Adding a function\"), answering\n  \
+         as data (one table entry, `docs/adding-a-function.md`), answering\n  \
          `EW_VERSION` without a request as FANUC's Ethernet library does (the\n  \
          program links and runs), or not exported (a program calling it does\n  \
          not load: the dynamic loader reports the symbol missing).\n\

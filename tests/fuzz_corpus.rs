@@ -1,4 +1,4 @@
-//! The fuzz corpora (fuzz/corpus/<target>/, README.md "Fuzzing") replayed
+//! The fuzz corpora (fuzz/corpus/<target>/, docs/reliability.md "Fuzzing") replayed
 //! through the fuzz targets' own entry points (fuzz/fuzzing.rs, included), so CI
 //! needs no fuzzer: every input must decode without a panic. And every
 //! function whose recorded vectors show a data answer has a decoder in the

@@ -134,7 +134,7 @@ fn churn(ports: &[u16], threads: usize, rounds: usize) {
 /// memory within `slack` bytes.
 fn churn_and_measure(ports: &[u16], sessions: impl Fn() -> usize) {
     const THREADS: usize = 8;
-    // FWLIB32_SOAK=<rounds per thread>: a longer run by hand (README.md
+    // FWLIB32_SOAK=<rounds per thread>: a longer run by hand (docs/reliability.md,
     // "Reliability and fuzzing"); 25 in CI.
     let rounds: usize = std::env::var("FWLIB32_SOAK")
         .ok()
