@@ -94,7 +94,7 @@ D := $(DESTDIR)
 
 all: build
 
-# Which standard library `make` links (tests/install.rs reads it).
+# Which standard library `make` links (tests/artifacts/install.rs reads it).
 print-std:
 	@echo $(STD)
 

@@ -44,7 +44,7 @@ fn main() {
 
     // The target and host triples, for the tests: they run the C programs they
     // build through cargo's runner for the target (`CARGO_TARGET_<TRIPLE>_RUNNER`,
-    // e.g. qemu), and tests/install.rs installs for the target.
+    // e.g. qemu), and tests/artifacts/install.rs installs for the target.
     let target = env::var("TARGET").expect("TARGET");
     println!("cargo:rustc-env=FWLIB32_TARGET={target}");
     let host = env::var("HOST").expect("HOST");
@@ -264,7 +264,7 @@ fn generate_ext_header(root: &Path) -> String {
 /// (`Written`), of src/ffi/absent.rs (`NotOnEthernet`, with the `EW_*` code
 /// it answers: `EW_VERSION` where its body calls `not_on_ethernet`, else the
 /// first `EW_*` constant its body names), of src/ffi/ext.rs (`Extension`),
-/// or an entry of src/spec/table/ (`Described`). tests/artifacts.rs checks
+/// or an entry of src/spec/table/ (`Described`). tests/artifacts/artifacts.rs checks
 /// the names against the built library's dynamic symbols.
 fn exports_table(root: &Path, funcs: &[types::Func]) -> String {
     let ew = fs::read_to_string(root.join("src/ew.rs")).expect("read src/ew.rs");

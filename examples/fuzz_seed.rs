@@ -1,8 +1,8 @@
-//! Seeds the fuzz corpora (fuzz/corpus/<target>/, README.md "Fuzzing")
+//! Seeds the fuzz corpora (fuzz/corpus/<target>/, docs/reliability.md "Fuzzing")
 //! from what the project already has: the frames of the recorded vectors
 //! (tests/vectors/*.json: the CNC's answers for `reply`, the library's
 //! requests for `request`) and the profiles (the built-in one, its 16i and
-//! Series 15 forms, README.md's examples) for `profile`.
+//! Series 15 forms, the TOML examples of README.md and docs/) for `profile`.
 //!
 //! ```text
 //! cargo run --example fuzz_seed            # then: cd fuzz && cargo fuzz cmin <target>
@@ -114,7 +114,18 @@ fn main() {
             1,
         ));
     }
-    let readme = std::fs::read_to_string("README.md").unwrap();
+    let mut docs = vec![std::path::PathBuf::from("README.md")];
+    let mut more: Vec<_> = std::fs::read_dir("docs")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    more.sort();
+    docs.extend(more);
+    let readme: String = docs
+        .iter()
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect();
     for block in readme.split("```toml\n").skip(1) {
         let text = block.split("```").next().unwrap_or("");
         profiles.push(text.to_string());

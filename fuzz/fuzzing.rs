@@ -1,5 +1,5 @@
 //! The entry points of the fuzz targets (fuzz/fuzz_targets/, cargo-fuzz)
-//! and of the corpus replay test (tests/fuzz_corpus.rs): this one file,
+//! and of the corpus replay test (tests/robust/fuzz_corpus.rs): this one file,
 //! included by both (`#[path]`), so that they cannot drift apart. Each
 //! takes arbitrary bytes and must return without a panic, a hang or an
 //! unbounded allocation, whatever the bytes. It uses only the library's

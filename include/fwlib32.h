@@ -5,7 +5,7 @@
  * GENERATED FILE: do not edit. build.rs writes it with cbindgen from src/types/,
  * src/ffi/ and src/ew.rs; refresh the committed copy with
  *     FWLIB32_UPDATE_HEADER=1 cargo build
- * (tests/header.rs fails while the two differ).
+ * (tests/artifacts/header.rs fails while the two differ).
  *
  * Names, argument order and spellings (short, unsigned short, long,
  * unsigned long *, const char *) follow FANUC's fwlib32.h, so programs written

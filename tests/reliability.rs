@@ -6,7 +6,7 @@
 //! never sent again. Each test is bounded (fixed call counts, every wait
 //! on a condition with a deadline) and deterministic in what it checks.
 //! The wire faults against every family of calls are in
-//! tests/wire_faults.rs, bad C arguments in tests/bad_input.rs.
+//! tests/robust/wire_faults.rs, bad C arguments in tests/bad_input.rs.
 
 mod common;
 #[allow(dead_code)]
@@ -134,7 +134,7 @@ fn churn(ports: &[u16], threads: usize, rounds: usize) {
 /// memory within `slack` bytes.
 fn churn_and_measure(ports: &[u16], sessions: impl Fn() -> usize) {
     const THREADS: usize = 8;
-    // FWLIB32_SOAK=<rounds per thread>: a longer run by hand (README.md
+    // FWLIB32_SOAK=<rounds per thread>: a longer run by hand (docs/reliability.md,
     // "Reliability and fuzzing"); 25 in CI.
     let rounds: usize = std::env::var("FWLIB32_SOAK")
         .ok()
@@ -281,7 +281,7 @@ fn handles_polling_a_simulator_killed_and_restarted() {
         // The plain handle stays failed (FANUC's behaviour) ...
         assert_eq!(ok(2), before[2], "no reconnection without the extension");
         assert_eq!(statinfo(handles[2].0), EW_SOCKET);
-        // ... and so does cnc_resetconnect (tests/reconnect.rs): a new handle works.
+        // ... and so does cnc_resetconnect (tests/robust/reconnect.rs): a new handle works.
         assert_eq!(cnc_resetconnect(handles[2].0), EW_OK);
         assert_eq!(statinfo(handles[2].0), EW_SOCKET);
         assert_eq!(cnc_freelibhndl(handles[2].0), EW_OK);

@@ -30,7 +30,7 @@ def test_a_closed_port():
 
 
 def test_a_refusing_simulator():
-    # `refuse`: the CNC's FOCAS server not accepting (README, faults).
+    # `refuse`: the CNC's FOCAS server not accepting (docs/simulator.md, faults).
     with simulator(args=["--fault", "refuse"]) as sim:
         with pytest.raises(FocasError) as e:
             Cnc(sim.host, sim.port, timeout=5)

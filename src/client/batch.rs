@@ -36,7 +36,7 @@ pub struct Limits {
 }
 
 /// The most FANUC's library puts in one request frame, by CNC class: the
-/// largest the recorded cases show (tests/batch.rs checks it against
+/// largest the recorded cases show (tests/ffi/batch.rs checks it against
 /// tests/vectors). 30i: 16 subpackets (cnc_rdparam_ext, 16 numbers in
 /// frames of 16); 16i: 14 (the same call in frames of 14, 14, 4); Series
 /// 15: 9 (cnc_rddynamic). Bodies: 4126 bytes (cnc_wrmdiprog) on the 30i

@@ -93,7 +93,7 @@ pub fn write(level: u8, msg: std::fmt::Arguments<'_>) {
 
 /// Now, RFC 3339 in UTC to the millisecond ("2026-11-28T11:22:06.123Z").
 /// By libc's gmtime_r, not a date crate: jiff here added 185 KB to the
-/// stripped library (1.16 MB to 1.35 MB, over tests/install.rs's guard)
+/// stripped library (1.16 MB to 1.35 MB, over tests/artifacts/install.rs's guard)
 /// for one time stamp.
 fn utc_now() -> String {
     let now = SystemTime::now()

@@ -115,7 +115,7 @@ pub fn payload<T: Wire>(resp: &[RespSub], i: usize) -> Result<T> {
 /// The payload of subpacket `i` decoded as `T` after zero-extending it to
 /// `len` bytes: FANUC's library reads a short answer's missing fields from
 /// what follows in its buffer, zeros in every one-subpacket case recorded
-/// (src/proto/NOTES.md), so a fixed-size answer cut short gives zeros in the
+/// (docs/protocol/framing.md), so a fixed-size answer cut short gives zeros in the
 /// fields it lacks.
 pub fn payload_padded<T: Wire>(resp: &[RespSub], i: usize, len: usize) -> Result<T> {
     let p = &sub(resp, i)?.payload;

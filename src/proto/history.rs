@@ -1,7 +1,7 @@
 //! Records read by number range: the operation history (cnc_rdophistry),
 //! the operator message histories (cnc_rdomhistry, cnc_rdomhistry2), alarm
 //! history 5 (cnc_rdalmhistry5) and the pitch error table (cnc_rdpitchr).
-//! Learnt with the oracle (src/proto/NOTES.md).
+//! Learnt with the oracle (docs/protocol/history.md).
 //!
 //! Each answer is fixed-size records (cnc_rdomhistry2: after a 4-byte
 //! count).
@@ -386,7 +386,7 @@ const MAL: [Move; 12] = {
 /// at index 9 (it reuses the record index for the 8 bytes it copies).
 pub const OP4_RESTART_TYPE: u16 = 13;
 
-/// The record types FANUC's library reads (learnt from it, NOTES.md:
+/// The record types FANUC's library reads (learnt from it, docs/protocol/history.md:
 /// 0 MDI key, 1 signal, 2 alarm, 3 date, 4 macro variable, 5 parameter,
 /// 6 operator message, 7 tool offset, 8 work offset, 9 alarm with
 /// snapshot, 10 alarm with message and snapshot, 11 macro variable with a

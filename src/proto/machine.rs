@@ -1,5 +1,5 @@
 //! Machine data (issue 11): the spindle control signals (cnc_rdctrldi,
-//! cnc_rdctrldo). Learnt with the oracle (src/proto/NOTES.md).
+//! cnc_rdctrldo). Learnt with the oracle (docs/protocol/machine.md).
 
 use super::call::{Call, Ctx, sub};
 use super::packet::{ReqSub, RespSub};

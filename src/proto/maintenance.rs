@@ -1,5 +1,5 @@
 //! Periodic maintenance (class 1): item names and items, read and written
-//! as fixed records (src/proto/NOTES.md, "Periodic maintenance"). The
+//! as fixed records (docs/protocol/machine.md, "Periodic maintenance"). The
 //! functions are described as data (src/spec/table/maintenance.rs); this is
 //! the wire layout the simulator answers in.
 

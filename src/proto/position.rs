@@ -814,7 +814,7 @@ fn decode_speed(cmds: &[u16], limit: i16, resp: &[RespSub]) -> Result<AxisDataRe
 }
 
 // ---------------------------------------------------------------------------
-// cnc_rdspeed (recorded with FANUC's library, src/proto/NOTES.md)
+// cnc_rdspeed (recorded with FANUC's library, docs/protocol/position.md)
 // 30i: 0xa4[3], 0x8a[1], 0x88[3], 0x88[4], 0x24 and/or 0x25, 0xa4[3]
 // 16i: 0x24, 0x25, 0x88[0], 0x0e[3106], 0x0e[3107], 0x0e[9936], 0x21[4],
 //      PMC G28 of the path; Series 15: 0x24, 0x25, 0x88[0], 0x95, 0x8a
@@ -1027,7 +1027,7 @@ impl Speed {
 
 // ---------------------------------------------------------------------------
 // cnc_rdposition on the 16i class and the Series 15
-// (learnt from FANUC's library with the oracle, src/proto/NOTES.md)
+// (learnt from FANUC's library with the oracle, docs/protocol/position.md)
 // ---------------------------------------------------------------------------
 
 /// 16i class: the per-axis parameter whose bits hide positions on the

@@ -2,7 +2,7 @@
 //! configured from a machine profile. It runs on its own threads with its
 //! own tokio runtime, so tests and tools can block while it serves.
 //!
-//! Layers, each using only those before it (tests/layers.rs checks it):
+//! Layers, each using only those before it (tests/artifacts/layers.rs checks it):
 //! service (the CncService trait, errors) and pmc → profile (pure data,
 //! with its sections in profile/) → store (program memory) → run (the [`Machine`] and its live
 //! state) → the areas adding methods to it (param, macros, offset,

@@ -2,7 +2,7 @@
 //!
 //! Fields FANUC's header spells `long` are 32-bit here (`LONG`/`ULONG`):
 //! FANUC's x86-64 library reads and writes them as 4 bytes, and so do we
-//! (the `l32` layouts of layouts.json, checked by tests/abi.rs).
+//! (the `l32` layouts of layouts.json, checked by tests/artifacts/abi.rs).
 
 #![allow(non_camel_case_types)]
 

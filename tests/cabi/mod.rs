@@ -3,7 +3,7 @@
 //! parsed, each function looked up in the built library (dlopen) and
 //! called with integer-class arguments (the C calling conventions pass
 //! integers and pointers alike; the parser refuses floating-point ones).
-//! Shared by tests/bad_input.rs and tests/hostile.rs; the test crate
+//! Shared by tests/bad_input.rs and tests/robust/hostile.rs; the test crate
 //! declares `mod toolchain;`.
 
 #![allow(dead_code)]

@@ -1,4 +1,4 @@
-//! Shared helpers of the golden-vector tests (tests/vectors.rs, tests/codec.rs):
+//! Shared helpers of the golden-vector tests (tests/recorded/vectors.rs, tests/recorded/codec.rs):
 //! loading `focas-protocol/vectors/*.json`, hex, and a replay CNC server.
 //!
 //! The vectors were recorded from FANUC's own library against a fake CNC
@@ -793,7 +793,7 @@ impl Server {
     }
 }
 
-/// The fake CNC of the replay tests (tests/exchanges.rs, tests/transport.rs):
+/// The fake CNC of the replay tests (tests/ffi/exchanges.rs, tests/robust/transport.rs):
 /// its open response (frame version 3, 32 axes, 8 spindles, one path,
 /// spindle word 1), the start-up sysinfo exchange, the close exchange.
 pub const OPEN_RESP: &str = "a0a0a0a000030102004800000000000300200008000100000000000000000001000000000001\

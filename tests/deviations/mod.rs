@@ -1,7 +1,7 @@
 //! Where our library differs from FANUC's on purpose, for the oracle's
 //! recorded cases (tests/vectors/): each entry names the cases and the
 //! reason a user would accept. The shared golden set's table is in
-//! tests/vectors.rs (DEVIATIONS); README.md lists both.
+//! tests/recorded/vectors.rs (DEVIATIONS); README.md lists both.
 
 use super::common::Case;
 

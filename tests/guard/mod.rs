@@ -1,4 +1,4 @@
-//! Shared by tests/hostile.rs and tests/wire_faults.rs: an output buffer
+//! Shared by tests/robust/hostile.rs and tests/robust/wire_faults.rs: an output buffer
 //! followed by a guard the library must not touch, and their fake CNCs'
 //! plumbing (a listener on a free port, frames read off a connection).
 

@@ -1,5 +1,5 @@
 //! Shared by the tests that drive the C ABI against the simulator
-//! (tests/alarm.rs, macros.rs, offset.rs, ...): start a simulator from a
+//! (tests/ffi/alarm.rs, macros.rs, offset.rs, ...): start a simulator from a
 //! profile, allocate a library handle on it with `cnc_allclibhndl3`, free it.
 
 #![allow(dead_code)]

@@ -31,7 +31,7 @@ cat <<'HEAD'
 # Linux x86-64 library (libfwlib32.so.1) exports the function (its dynamic
 # symbol table, `nm -D --defined-only`), "-" where it does not.
 #
-# Read by tests/compat.rs (COMPATIBILITY.md) and by `focas compat`.
+# Read by tests/recorded/compat.rs (COMPATIBILITY.md) and by `focas compat`.
 HEAD
 LC_ALL=C join -a 1 -o 1.1,2.1 -e - "$tmp/declared" "$tmp/exported" |
     awk '{ print $1, ($2 == "-" ? "-" : "linux") }'

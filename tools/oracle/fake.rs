@@ -156,7 +156,7 @@ impl Fake {
     /// The records so far, once the requests among them hold at least
     /// `sent` bytes (what the library wrote during the call: the probe's
     /// count), or after 3 s.
-    #[allow(dead_code)] // tests/compat.rs; the recorder waits for quiet
+    #[allow(dead_code)] // tests/recorded/compat.rs; the recorder waits for quiet
     pub fn take_sent(&self, sent: u64) -> Vec<Rec> {
         let deadline = Instant::now() + Duration::from_secs(3);
         loop {

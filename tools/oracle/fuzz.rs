@@ -19,7 +19,7 @@
 //! changed words put back, payloads cut) while it stays a difference, and
 //! FANUC's side of the smallest one is recorded into
 //! tests/vectors/FUNCTION.fuzz.json, which `cargo test` replays
-//! (tests/oracle.rs). The same seed gives the same run.
+//! (tests/recorded/oracle.rs). The same seed gives the same run.
 
 use super::cases::{self, Case, Word};
 use super::fake::{Fake, Mutator, Sub};

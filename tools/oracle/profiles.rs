@@ -1,14 +1,14 @@
 //! The oracle's machine profiles by name: the simulator's built-in 30i
 //! mill and its 16i, Series 15, two-path and write-enabled forms (the
 //! token after the word in a case name: `rdparam_v2_a1_1320` ran on `v2`).
-//! Shared by tools/oracle/main.rs and tests/compat.rs.
+//! Shared by tools/oracle/main.rs and tests/recorded/compat.rs.
 
 use fwlib32::sim::Profile;
 
 /// The profiles by name: the built-in 30i mill and its 16i, Series 15 and
 /// two-path forms, the 16i forms with 8 axes per path, and the
 /// write-enabled forms (parameter write enable on, MDI mode; `s15w` only
-/// for tests/compat.rs, which measures writes on every class).
+/// for tests/recorded/compat.rs, which measures writes on every class).
 pub fn profile(name: &str) -> Profile {
     let base = fwlib32::sim::profile::DEFAULT_PROFILE;
     let class16 = |kind: u16| {

@@ -1,7 +1,7 @@
 //! Replaying a recorded case to a library through the probe: the replay
 //! server plays the recorded CNC frames (and checks every request byte),
 //! the probe makes the recorded calls. Used by `oracle verify` (FANUC's
-//! library or ours) and by tests/oracle.rs (ours, in `cargo test`).
+//! library or ours) and by tests/recorded/oracle.rs (ours, in `cargo test`).
 
 use super::common::{Case, Replay};
 use super::probe::{Answer, Probe, buffer_names};

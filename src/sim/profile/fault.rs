@@ -5,7 +5,7 @@
 use super::window::Window;
 use serde::{Deserialize, Deserializer};
 
-/// What goes wrong (README: the real situation each stands for).
+/// What goes wrong (docs/simulator.md: the real situation each stands for).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FaultKind {

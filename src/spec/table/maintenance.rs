@@ -1,5 +1,5 @@
 //! Periodic maintenance: the item names and the items
-//! (src/proto/NOTES.md, "Periodic maintenance").
+//! (docs/protocol/machine.md, "Periodic maintenance").
 
 use super::super::types::Int::*;
 use super::super::types::*;

@@ -1,0 +1,478 @@
+//! Structure layouts: every struct/union typedef of include/fwlib32.h, compiled
+//! by the C compiler, has the `l32` sizeof/offsetof of FANUC's header recorded
+//! in `focas-protocol/layouts.json` (what FANUC's x86-64 library really reads
+//! and writes); the Rust types of src/types/ have the same layouts.
+//!
+//! layouts.json is test data in this repository (tests/focas-protocol, its
+//! README.md says where it comes from); `$FOCAS_PROTOCOL_DIR` may name another
+//! copy.
+
+use crate::toolchain;
+
+use serde_json::Value;
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::Command;
+use toolchain::{
+    cc, header_path, header_text, header_typedefs, manifest_dir, run, scratch, target_command,
+};
+
+fn layouts() -> Value {
+    let dir = std::env::var_os("FOCAS_PROTOCOL_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| manifest_dir().join("tests").join("focas-protocol"));
+    let path = dir.join("layouts.json");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "cannot read {}: {e}.\nThe layout check needs tests/focas-protocol/layouts.json.",
+            path.display()
+        )
+    });
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// The `pub struct` / `pub union` names of src/types/.
+fn rust_type_names() -> BTreeSet<String> {
+    let mut text = String::new();
+    for e in std::fs::read_dir(manifest_dir().join("src/types")).unwrap() {
+        text.push_str(&std::fs::read_to_string(e.unwrap().path()).unwrap());
+    }
+    text.lines()
+        .filter_map(|l| {
+            let l = l.trim();
+            let rest = l
+                .strip_prefix("pub struct ")
+                .or_else(|| l.strip_prefix("pub union "))?;
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            Some(name)
+        })
+        .collect()
+}
+
+/// One member (or whole type) to compare: `label` is `TYPE.path.to.member`.
+/// Offsets of nested members are relative to the enclosing member (its first
+/// element for arrays), as layouts.json records them.
+struct Expect {
+    label: String,
+    field: String,
+    size: u64,
+    offset: u64,
+    /// Element size, for arrays (layouts.json records multi-dimensional arrays
+    /// flattened: element = scalar).
+    elem: Option<u64>,
+}
+
+/// Walks layouts.json fields, appending the C statements that print the
+/// same facts (`label size offset elem`, elem 0 for a non-array).
+fn emit_fields(c: &mut String, out: &mut Vec<Expect>, fields: &[Value], base: &str, label: &str) {
+    for f in fields {
+        let name = f["name"].as_str().unwrap();
+        let expr = format!("{base}.{name}");
+        let label = format!("{label}.{name}");
+        let elem = f.get("count").map(|_| f["elem_size"].as_u64().unwrap());
+        out.push(Expect {
+            label: label.clone(),
+            field: name.to_owned(),
+            size: f["size"].as_u64().unwrap(),
+            offset: f["offset"].as_u64().unwrap(),
+            elem,
+        });
+        let elem_expr = match elem {
+            Some(_) => format!("sizeof({expr}[0])"),
+            None => "0".to_owned(),
+        };
+        writeln!(
+            c,
+            "    printf(\"{label} %lu %lu %lu\\n\", (unsigned long)sizeof({expr}), \
+             (unsigned long)((const char *)&{expr} - (const char *)&{base}), \
+             (unsigned long){elem_expr});"
+        )
+        .unwrap();
+        if let Some(sub) = f.get("fields").and_then(Value::as_array) {
+            let inner = match elem {
+                Some(_) => format!("{expr}[0]"),
+                None => expr.clone(),
+            };
+            emit_fields(c, out, sub, &inner, &label);
+        }
+    }
+}
+
+/// Whether the header declares `field` as a multi-dimensional array somewhere.
+fn multi_dimensional(header: &str, field: &str) -> bool {
+    let pat = format!(" {field}[");
+    header
+        .lines()
+        .any(|l| l.contains(&pat) && l.split_once(&pat).is_some_and(|(_, r)| r.contains("][")))
+}
+
+/// Whether a typedef is used by another one (a named helper type for a nested
+/// member, which FANUC's header declares inline and layouts.json does not list).
+fn used_elsewhere(header: &str, name: &str) -> bool {
+    header.lines().any(|l| {
+        let t = l.trim();
+        !t.starts_with("typedef ")
+            && !t.starts_with('}')
+            && !t.contains('(')
+            && t.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .any(|w| w == name)
+    })
+}
+
+/// Compiles one C program that prints the layout of every header typedef also
+/// in layouts.json, runs it, and compares with the `l32` layouts.
+#[test]
+fn header_structs_match_l32_layouts() {
+    let layouts = layouts();
+    let header = header_text();
+    let typedefs = header_typedefs(&header);
+    assert!(
+        !typedefs.is_empty(),
+        "no `typedef struct X {{` found in include/fwlib32.h"
+    );
+
+    let mut globals = String::new();
+    let mut body = String::new();
+    let mut expected = Vec::new();
+    let mut checked = BTreeSet::new();
+    let mut unknown = Vec::new();
+    for (kind, name) in &typedefs {
+        let Some(entry) = layouts.get(name.as_str()) else {
+            unknown.push(name.clone());
+            continue;
+        };
+        assert_eq!(
+            entry["kind"].as_str(),
+            Some(kind.as_str()),
+            "{name}: FANUC's is a {}, ours a {kind}",
+            entry["kind"]
+        );
+        let l32 = &entry["l32"];
+        let var = format!("v_{name}");
+        writeln!(globals, "static {name} {var};").unwrap();
+        expected.push(Expect {
+            label: name.clone(),
+            field: String::new(),
+            size: l32["size"].as_u64().unwrap(),
+            offset: 0,
+            elem: None,
+        });
+        writeln!(
+            body,
+            "    printf(\"{name} %lu 0 0\\n\", (unsigned long)sizeof({name}));"
+        )
+        .unwrap();
+        emit_fields(
+            &mut body,
+            &mut expected,
+            l32["fields"].as_array().unwrap(),
+            &var,
+            name,
+        );
+        checked.insert(name.clone());
+    }
+    let strangers: Vec<_> = unknown
+        .iter()
+        .filter(|n| !used_elsewhere(&header, n))
+        .collect();
+    assert!(
+        strangers.is_empty(),
+        "include/fwlib32.h declares {strangers:?}, which FANUC's header (layouts.json) does not \
+         have and no other structure uses: structures of fwlib32.h keep FANUC's names"
+    );
+    if !unknown.is_empty() {
+        eprintln!("helper types for nested members (checked through their users): {unknown:?}");
+    }
+
+    let c = format!(
+        "#include <stdio.h>\n#include \"fwlib32.h\"\n\n{globals}\nint main(void)\n{{\n{body}    return 0;\n}}\n"
+    );
+    let dir = scratch("abi-layouts");
+    let src = dir.join("layouts.c");
+    let exe = dir.join("layouts");
+    std::fs::write(&src, &c).unwrap();
+    run(Command::new(cc())
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-o"])
+        .arg(&exe)
+        .arg("-I")
+        .arg(header_path().parent().unwrap())
+        .arg(&src));
+    let out = run(&mut target_command(&exe));
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let actual: Vec<(String, [u64; 3])> = stdout
+        .lines()
+        .map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            let n = |i: usize| w[i].parse::<u64>().unwrap();
+            (w[0].to_owned(), [n(1), n(2), n(3)])
+        })
+        .collect();
+    assert_eq!(actual.len(), expected.len(), "output of {}", exe.display());
+
+    let mut mismatches = Vec::new();
+    for (e, (label, [size, offset, elem])) in expected.iter().zip(&actual) {
+        assert_eq!(&e.label, label);
+        let elem_ok = match e.elem {
+            None => true,
+            Some(want) => {
+                *elem == want
+                    || (*elem % want == 0 && *elem > want && multi_dimensional(&header, &e.field))
+            }
+        };
+        if e.size != *size || e.offset != *offset || !elem_ok {
+            mismatches.push(format!(
+                "  {label}: layouts.json l32 size {} offset {} elem {:?}; fwlib32.h size {size} \
+                 offset {offset} elem {elem}",
+                e.size, e.offset, e.elem
+            ));
+        }
+    }
+    assert!(
+        mismatches.is_empty(),
+        "structure layouts of include/fwlib32.h differ from FANUC's (l32), see {}:\n{}",
+        src.display(),
+        mismatches.join("\n")
+    );
+
+    // At least today's structures, and every structure of src/types/ that
+    // FANUC's header has (the others must be helper types, checked above).
+    let mut must: BTreeSet<String> = ["ODBSYS", "ODBST", "ODBST2", "ODBERR"]
+        .map(String::from)
+        .into();
+    must.extend(
+        rust_type_names()
+            .into_iter()
+            .filter(|n| layouts.get(n.as_str()).is_some() || !unknown.contains(n)),
+    );
+    let missing: Vec<_> = must.difference(&checked).collect();
+    assert!(
+        missing.is_empty(),
+        "not checked (missing from include/fwlib32.h?): {missing:?}; checked: {checked:?}"
+    );
+    eprintln!("checked {} structures: {checked:?}", checked.len());
+}
+
+fn field_size<T, F>(_: fn(&T) -> &F) -> usize {
+    std::mem::size_of::<F>()
+}
+
+/// The Rust types, field by field, against the same layouts.
+macro_rules! rust_layouts {
+    ($($ty:ident { $($field:ident),* $(,)? })*) => {
+        fn rust_layouts() -> Vec<(&'static str, usize, Vec<(&'static str, usize, usize)>)> {
+            use fwlib32::types::*;
+            vec![$(
+                (
+                    stringify!($ty),
+                    std::mem::size_of::<$ty>(),
+                    vec![$((
+                        // `r#type` is FANUC's `type`.
+                        stringify!($field).trim_start_matches("r#"),
+                        std::mem::offset_of!($ty, $field),
+                        field_size(|v: &$ty| &v.$field),
+                    )),*],
+                ),
+            )*]
+        }
+    };
+}
+
+// Every structure of src/types/ must be listed here (checked below).
+rust_layouts! {
+    ODBSYS { addinfo, max_axis, cnc_type, mt_type, series, version, axes }
+    ODBST { hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit }
+    ODBST2 {
+        hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit,
+        warning, o3dchk, ext_opt, restart,
+    }
+    ODBERR { err_no, err_dtno }
+
+    // --- position ---
+    ODBAXISNAME { name, suff }
+    ODBSPDLNAME { name, suff1, suff2, suff3 }
+    ODBDY2 { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
+    ODBDY { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
+    ODBACT { dummy, data }
+    ODBACT2 { datano, r#type, data }
+    SPEEDELM { data, dec, unit, disp, name, suff }
+    ODBSPEED { actf, acts }
+    LOADELM { data, dec, unit, name, suff1, suff2, reserve }
+    ODBSPLOAD { spload, spspeed }
+    ODBSVLOAD { svload }
+    ODBSPN { datano, r#type, data }
+    ODBAXDT { name, data, dec, unit, flag, reserve }
+    POSELM { data, dec, unit, disp, name, suff }
+    ODBPOS { abs, mach, rel, dist }
+    ODBAXIS { dummy, r#type, data }
+
+    // --- program ---
+    ODBPRO { dummy, data, mdata }
+    ODBSEQ { dummy, data }
+    ODBEXEPRG { name, o_num }
+    ODBMDL { datano, r#type, modal }
+    IODBTIME { minute, msec }
+    IODBTIMER { r#type, dummy, data }
+    ODBTLIFE3 { datano, dummy, data }
+    ODBTLIFE4 { datano, r#type, data }
+    PRGDIR { prg_data }
+    PRGDIR3 { number, length, page, comment, mdate, cdate }
+    PRGDIR2 { number, length, comment, dummy }
+    ODBNC { u }
+    ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
+    ODBPDFDRV { max_num, dummy, drive }
+    ODBPDFINF { used_page, all_page, used_dir, all_dir }
+    ODBPDFNFIL { dir_num, file_num }
+    IDBPDFSDIR { path, req_num, dummy }
+    ODBPDFSDIR { sub_exist, dummy, d_f }
+    IDBPDFADIR { path, req_num, size_kind, r#type, dummy }
+    ODBPDFADIR {
+        data_kind, year, mon, day, hour, min, sec, dummy, dummy2, size, attr, d_f, comment, o_time,
+    }
+
+    // --- alarm ---
+    ODBALM { dummy, data }
+    ODBALMMSG { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ODBALMMSG2 { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    ODBALMMSG3 { alm_no, r#type, axis, dummy, msg_len, alm_msg }
+    PRGPNT { prog_no, blk_no }
+    ALMINFO { u }
+    OPMSG { datano, r#type, char_num, data }
+
+    // --- param ---
+    REALPRM { prm_val, dec_val }
+    REALDGN { dgn_val, dec_val }
+    IODBPSD { datano, r#type, u }
+    ODBDGN { datano, r#type, u }
+    IODBPRM { datano, r#type, axis, info, unit, data }
+    ODBPARAIF { info_no, prev_no, next_no, info }
+    ODBDIAGIF { info_no, prev_no, next_no, info }
+    ODBPARANUM { para_min, para_max, total_no }
+    ODBDIAGNUM { diag_min, diag_max, total_no }
+
+    // --- macros ---
+    ODBM { datano, dummy, mcr_val, dec_val }
+    IODBMR { datano_s, dummy, datano_e, data }
+    ODBMVINF { use_no1, use_no2 }
+
+    // --- pmc ---
+    IODBPMC { type_a, type_d, datano_s, datano_e, u }
+    ODBPMCINF { datano, info }
+    ODBPMCTITLE { mtb, machine, r#type, prgno, prgvers, prgdraw, date, design, written, remarks }
+    ODBPMCALM { almmsg }
+    IODBPMAINTE { name, r#type, total, remain, stat }
+    ODBPMCERR { err_no, err_dtno }
+
+    // --- offset ---
+    ODBTOFS { datano, r#type, data }
+    IODBTO { datano_s, r#type, datano_e, u }
+    ODBTLINF { ofs_type, use_no }
+    IODBZOFS { datano, r#type, data }
+    IODBWCSF { datano, r#type, data }
+    ODBTLIFE5 { dummy, r#type, data }
+    IDBITD { datano, r#type, data }
+    IODBZOR { datano_s, r#type, datano_e, data }
+    // alarm history (offset helper)
+    ODBAHIS { s_no, r#type, e_no, alm_his }
+    ODBAHIS2 { s_no, e_no, alm_his }
+    ODBHIS { s_no, r#type, e_no, data }
+    ODBOMHIS { om_no, year, month, day, hour, minute, second, om_msg }
+    ODBOMHIS2 { s_no, e_no, opm_his }
+    ODBAHIS5 { s_no, e_no, alm_his }
+    IODBPI { datano_s, dummy, datano_e, data }
+    ODBPARAIF2 { prm_no, size, array, unit, dim, input, display, others }
+
+    // --- tool ---
+    ODBTLIFE3 { datano, dummy, data }
+    ODBTG { grp_num, dummy, ntool, life, count, data }
+    IODBTGI { s_grp, dummy, e_grp, data }
+    ODBUSEGRP { next, r#use, slct, opt_next, opt_use, opt_slct }
+    IODBTLMNG {
+        T_code, life_count, max_life, rest_life, life_stat, cust_bits, tool_info, H_code, D_code,
+        spindle_speed, feedrate, magazine, pot, G_code, W_code, gno, grp, edge, org_magazine,
+        org_pot, edge_num, reserve_c, reserved, custom1, custom2, custom3, custom4, custom5,
+        custom6, custom7, custom8, custom9, custom10, custom11, custom12, custom13, custom14,
+        custom15, custom16, custom17, custom18, custom19, custom20
+    }
+    IODBTLDT {
+        slct, tool_no, x_axis_ofs, y_axis_ofs, turret_pos, chg_tl_no, punch_count, tool_life,
+        m_tl_radius, m_tl_angle, tl_shape, tl_size_i, tl_size_j, tl_angle, x_axis_dec, y_axis_dec,
+        turret_dec, m_radius_dec, m_angle_dec, tl_size_i_dec, tl_size_j_dec, tl_angle_dec, reserve
+    }
+    ODBPTLINF { tld_max, mlt_max, reserve, tld_size, mlt_size, reserves }
+    ODBTLIFE2 { dummy, data }
+    ODBPTIME { num, data }
+    ODBOMIF { om_max, om_sum, om_char }
+    ODBTLINF2 { ofs_type, use_no, ofs_enable }
+    ODBSYSEX {
+        max_axis, max_spdl, max_path, max_mchn, ctrl_axis, ctrl_srvo, ctrl_spdl, ctrl_path,
+        ctrl_mchn, addinfo, reserved, path,
+    }
+    IODBTLCTL {
+        slct, used_tool, turret_indx, zero_tl_no, t_axis_move, total_punch,
+        t_axis_dec, reserve, reserves,
+    }
+
+    // --- upload ---
+    ODBUP { dummy, data }
+
+    // --- machine data (issue 11) ---
+    ODBOPHIS4 { rec_len, rec_type, u }
+    OPMSG3 { datano, r#type, char_num, data }
+    ODBSPDI { sgnl1, sgnl2, sgnl3, sgnl4 }
+    ODBSPDO { sgnl1, sgnl2, sgnl3, sgnl4 }
+    ODBPRS { datano, r#type, data_info, rstr_bc, rstr_m, rstr_t, rstr_s, rstr_b, dest, dist }
+
+    // --- the signals the operation history records ---
+    IODBSIG3 { datano, r#type, data }
+}
+
+#[test]
+fn rust_types_match_l32_layouts() {
+    let layouts = layouts();
+    let listed = rust_layouts();
+    let names: BTreeSet<String> = listed.iter().map(|t| t.0.to_owned()).collect();
+    let in_types = rust_type_names();
+    // Helper types for nested members (not in layouts.json) are checked
+    // through the structures that use them.
+    let unlisted: Vec<_> = in_types
+        .difference(&names)
+        .filter(|n| layouts.get(n.as_str()).is_some())
+        .collect();
+    assert!(
+        unlisted.is_empty(),
+        "add {unlisted:?} (with all their fields) to rust_layouts! in tests/artifacts/abi.rs"
+    );
+    for (name, size, fields) in listed {
+        let l32 = &layouts[name]["l32"];
+        assert!(l32.is_object(), "{name} is not in layouts.json");
+        assert_eq!(
+            size as u64,
+            l32["size"].as_u64().unwrap(),
+            "size_of::<{name}>()"
+        );
+        let want = l32["fields"].as_array().unwrap();
+        // A field named like a Rust keyword is spelled `r#type` in Rust.
+        let got: Vec<&str> = fields
+            .iter()
+            .map(|f| f.0.trim_start_matches("r#"))
+            .collect();
+        let want_names: Vec<&str> = want.iter().map(|f| f["name"].as_str().unwrap()).collect();
+        assert_eq!(got, want_names, "{name}: fields (names, order)");
+        for ((field, offset, fsize), w) in fields.iter().zip(want) {
+            assert_eq!(
+                *offset as u64,
+                w["offset"].as_u64().unwrap(),
+                "offset_of!({name}, {field})"
+            );
+            assert_eq!(
+                *fsize as u64,
+                w["size"].as_u64().unwrap(),
+                "size of {name}.{field}"
+            );
+        }
+    }
+}

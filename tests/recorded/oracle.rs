@@ -1,0 +1,101 @@
+//! The oracle's vectors (tests/vectors/*.json, recorded from FANUC's library
+//! by tools/oracle) replayed to our library through the same C probe: every
+//! request byte, return code, in-out count and output byte must be FANUC's,
+//! except where the DEVIATIONS table of tests/deviations/mod.rs says why not.
+
+use crate::common;
+use crate::deviations;
+use crate::probe;
+use crate::replay;
+use crate::toolchain;
+
+use std::path::PathBuf;
+use std::sync::Mutex;
+
+fn vector_files() -> Vec<PathBuf> {
+    let dir = toolchain::manifest_dir().join("tests/vectors");
+    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn oracle_vectors_replay() {
+    let lib = toolchain::cdylib();
+    let probe_dir = toolchain::scratch("oracle-probe"); // removed when the test ends
+    let probe_exe = probe::build(&toolchain::manifest_dir(), &probe_dir);
+    // ORACLE_ONLY=cnc_rdparam,cnc_modal replays those files alone.
+    let only: Vec<String> = std::env::var("ORACLE_ONLY")
+        .map(|s| s.split(',').map(String::from).collect())
+        .unwrap_or_default();
+    let all: Vec<common::Case> = vector_files()
+        .iter()
+        .map(|f| common::load_file(f))
+        .filter(|f| only.is_empty() || only.contains(&f.function))
+        .flat_map(|f| f.cases)
+        .collect();
+    assert!(
+        !only.is_empty() || all.len() >= 1000,
+        "only {} recorded cases in tests/vectors",
+        all.len()
+    );
+    // Under an emulator (the aarch64 CI step) every eighth case: the whole
+    // set runs natively; this checks the ABI on that target.
+    let emulated = !toolchain::runner().is_empty();
+    let cases: Vec<common::Case> = all
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| !emulated || i % 8 == 0)
+        .map(|(_, c)| c)
+        .collect();
+    let next = Mutex::new(0usize);
+    let failures = Mutex::new(Vec::new());
+    let (passed, deviated) = (Mutex::new(0usize), Mutex::new(0usize));
+    let threads = std::thread::available_parallelism()
+        .map_or(2, |n| n.get())
+        .min(4);
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|| loop {
+                let i = {
+                    let mut n = next.lock().unwrap();
+                    *n += 1;
+                    *n - 1
+                };
+                let Some(case) = cases.get(i) else { return };
+                let m = replay::replay_case(|| toolchain::target_command(&probe_exe), &lib, case);
+                match (m.is_empty(), deviations::oracle(case)) {
+                    (true, None) => *passed.lock().unwrap() += 1,
+                    (false, Some(_)) => *deviated.lock().unwrap() += 1,
+                    (false, None) => failures
+                        .lock()
+                        .unwrap()
+                        .push(format!("{}/{}:\n{}", case.function, case.name, m.join("\n"))),
+                    (true, Some(d)) => failures.lock().unwrap().push(format!(
+                        "{}/{}: listed as a deviation ({}) but agrees with FANUC's library: remove it from the table",
+                        case.function, case.name, d.reason
+                    )),
+                }
+            });
+        }
+    });
+    let failures = failures.into_inner().unwrap();
+    println!(
+        "oracle vectors: {} cases, {} identical to FANUC's library, {} listed deviations, {} differ",
+        cases.len(),
+        passed.into_inner().unwrap(),
+        deviated.into_inner().unwrap(),
+        failures.len()
+    );
+    assert!(
+        failures.is_empty(),
+        "{} of {} recorded cases differ from FANUC's library:\n\n{}",
+        failures.len(),
+        cases.len(),
+        failures.join("\n\n")
+    );
+}

@@ -1,0 +1,572 @@
+//! `focas adapter` against in-process simulators, through real TCP clients
+//! of its SHDR port (an agent's side): the line grammar, values that follow
+//! the running program (the simulator's clock stopped where a test needs
+//! it, each value checked against the Rust API reading the same machine),
+//! an alarm as a condition FAULT then NORMAL, PING/PONG and a silent peer
+//! dropped, a CNC stopped and restarted, a second agent's full state, the
+//! round trips per poll, Devices.xml, and a fleet from one process.
+//! Every wait on the adapter is for a line (a read timeout only turns a
+//! hang into a failure).
+
+use crate::toolchain;
+use fwlib32::native::{Cnc, Decimal};
+use fwlib32::sim::{Fleet, FleetOptions, Profile, Simulator};
+use std::collections::BTreeMap;
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::TcpStream;
+use std::process::{Child, ChildStdout, Stdio};
+use std::time::Duration;
+
+/// How long a line may take before the test fails.
+const PATIENCE: Duration = Duration::from_secs(60);
+
+/// The adapter process, killed when dropped.
+struct Adapter {
+    child: Child,
+    ports: Vec<u16>,
+    _stdout: BufReader<ChildStdout>,
+}
+
+impl Drop for Adapter {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn focas() -> std::process::Command {
+    let mut c = toolchain::target_command(env!("CARGO_BIN_EXE_focas"));
+    c.env_remove("FOCAS_HOST").env_remove("FOCAS_PORT");
+    c
+}
+
+/// Starts `focas adapter ARGS` and reads its `listening on` lines, one per
+/// device.
+fn adapter(devices: usize, args: &[&str]) -> Adapter {
+    let mut child = focas()
+        .arg("adapter")
+        .args(["--listen", "127.0.0.1:0", "--timeout", "5"])
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("start focas adapter");
+    let mut out = BufReader::new(child.stdout.take().expect("stdout"));
+    let mut ports = Vec::new();
+    for _ in 0..devices {
+        let mut line = String::new();
+        out.read_line(&mut line).expect("a listening line");
+        let addr = line
+            .trim()
+            .strip_prefix("listening on ")
+            .unwrap_or_else(|| panic!("not a listening line: {line:?}"));
+        let port = addr.rsplit(':').next().unwrap().parse().expect("a port");
+        ports.push(port);
+    }
+    Adapter {
+        child,
+        ports,
+        _stdout: out,
+    }
+}
+
+fn cnc_arg(port: u16) -> String {
+    format!("127.0.0.1:{port}")
+}
+
+/// An agent's connection: the lines, and every item's last value.
+struct Agent {
+    r: BufReader<TcpStream>,
+    w: TcpStream,
+    values: BTreeMap<String, String>,
+    /// Condition name to its last line's fields after the name.
+    conds: BTreeMap<String, Vec<String>>,
+    /// The device's condition names (to tell their lines).
+    names: Vec<String>,
+}
+
+/// A checked SHDR line: data items, a condition, or a heartbeat answer.
+#[derive(Debug)]
+enum Line {
+    Data(Vec<(String, String)>),
+    Cond(String, Vec<String>),
+    Pong(u64),
+}
+
+const LEVELS: [&str; 4] = ["NORMAL", "WARNING", "FAULT", "UNAVAILABLE"];
+
+/// Parses one line, failing the test on anything outside the grammar.
+fn parse(line: &str, conditions: &[String]) -> Line {
+    let line = line
+        .strip_suffix('\n')
+        .unwrap_or_else(|| panic!("unterminated {line:?}"));
+    if let Some(ms) = line.strip_prefix("* PONG ") {
+        return Line::Pong(ms.parse().expect("PONG ms"));
+    }
+    let f: Vec<&str> = line.split('|').collect();
+    let ts = f[0];
+    // YYYY-MM-DDTHH:MM:SS.FFFZ, UTC, milliseconds.
+    assert_eq!(ts.len(), 24, "timestamp {ts:?} in {line:?}");
+    assert!(ts.ends_with('Z') && ts.as_bytes()[19] == b'.', "{ts:?}");
+    let t: jiff::Timestamp = ts.parse().unwrap_or_else(|e| panic!("{ts:?}: {e}"));
+    let age = jiff::Timestamp::now().duration_since(t);
+    assert!(age.as_secs().abs() < 3600, "{ts:?} is now, in UTC");
+    if f.len() >= 2 && conditions.iter().any(|c| c == f[1]) {
+        assert_eq!(f.len(), 7, "a condition has 7 fields: {line:?}");
+        assert!(LEVELS.contains(&f[2]), "{line:?}");
+        return Line::Cond(
+            f[1].to_string(),
+            f[2..].iter().map(|s| s.to_string()).collect(),
+        );
+    }
+    assert!(
+        f.len() >= 3 && f.len() % 2 == 1,
+        "name|value pairs: {line:?}"
+    );
+    Line::Data(
+        f[1..]
+            .chunks(2)
+            .map(|p| {
+                assert!(!p[0].is_empty(), "an item name: {line:?}");
+                (p[0].to_string(), p[1].to_string())
+            })
+            .collect(),
+    )
+}
+
+/// The condition names of the built-in profile's one path (3 axes, 1 spindle).
+fn condition_names() -> Vec<String> {
+    let mut v: Vec<String> = ["servo", "comms", "logic", "motion", "system", "S1servo"]
+        .map(String::from)
+        .to_vec();
+    for a in ["X", "Y", "Z"] {
+        for c in ["travel", "overheat", "servo"] {
+            v.push(format!("{a}{c}"));
+        }
+    }
+    v
+}
+
+impl Agent {
+    fn connect(port: u16) -> Agent {
+        Agent::with(port, condition_names())
+    }
+
+    fn with(port: u16, names: Vec<String>) -> Agent {
+        let s = TcpStream::connect(("127.0.0.1", port)).expect("connect to the adapter");
+        s.set_read_timeout(Some(PATIENCE)).unwrap();
+        Agent {
+            w: s.try_clone().unwrap(),
+            r: BufReader::new(s),
+            values: BTreeMap::new(),
+            conds: BTreeMap::new(),
+            names,
+        }
+    }
+
+    /// Reads one line and records it.
+    fn line(&mut self) -> Line {
+        let mut s = String::new();
+        let n = self.r.read_line(&mut s).expect("a line from the adapter");
+        assert!(n > 0, "the adapter closed the connection");
+        let l = parse(&s, &self.names);
+        match &l {
+            Line::Data(p) => {
+                for (k, v) in p {
+                    self.values.insert(k.clone(), v.clone());
+                }
+            }
+            Line::Cond(n, f) => {
+                self.conds.insert(n.clone(), f.clone());
+            }
+            Line::Pong(_) => {}
+        }
+        l
+    }
+
+    /// Reads until `done` holds for the state so far.
+    fn until(&mut self, what: &str, done: impl Fn(&Agent) -> bool) {
+        while !done(self) {
+            let _ = what;
+            self.line();
+        }
+    }
+
+    /// Reads the full state sent on connecting: every item and condition.
+    fn full_state(&mut self) {
+        let conds = self.names.clone();
+        self.until("the full state", |a| {
+            a.values.contains_key("avail") && conds.iter().all(|c| a.conds.contains_key(c))
+        });
+    }
+
+    fn value(&self, name: &str) -> &str {
+        self.values.get(name).map_or("", |s| s.as_str())
+    }
+
+    fn wait_value(&mut self, name: &str, v: &str) {
+        let (n, v2) = (name.to_string(), v.to_string());
+        self.until(name, move |a| a.value(&n) == v2);
+    }
+
+    fn level(&self, cond: &str) -> Option<(&str, &str)> {
+        self.conds.get(cond).map(|f| (f[0].as_str(), f[1].as_str()))
+    }
+}
+
+fn sim_at(secs: f64) -> Simulator {
+    let s = Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator");
+    s.set_elapsed(Duration::from_secs_f64(secs));
+    s
+}
+
+/// What the Rust API reads from `sim` now: X's machine position, the
+/// sequence number, the feed.
+fn api(sim: &Simulator) -> (Decimal, i32, i32) {
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).expect("connect");
+    let x = cnc.positions().expect("positions")[0].machine;
+    let e = cnc.execution().expect("execution");
+    (x, e.sequence, e.feed)
+}
+
+#[test]
+fn grammar_and_values_of_the_full_state() {
+    let sim = sim_at(1.0);
+    let (x, seq, feed) = api(&sim);
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "100"]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    for (k, v) in [
+        ("mode", "AUTOMATIC"),
+        ("execution", "ACTIVE"),
+        ("program", "O1234"),
+        ("estop", "ARMED"),
+        ("active_axes", "X Y Z"),
+        ("Fovr", "100"),
+        ("Sovr", "100"),
+        ("S1speed", "12000"),
+        ("S1load", "40"),
+        ("part_count", "1234"),
+    ] {
+        agent.wait_value(k, v);
+    }
+    assert_eq!(agent.value("Xact"), x.to_string());
+    assert_eq!(agent.value("line"), seq.to_string());
+    assert_eq!(agent.value("path_feedrate"), feed.to_string());
+    for item in ["Xload", "Yact", "Yload", "Zact", "Zload", "path_position"] {
+        assert!(!agent.value(item).is_empty(), "{item}");
+        assert_ne!(agent.value(item), "UNAVAILABLE", "{item}");
+    }
+    assert_eq!(agent.value("path_position").split(' ').count(), 3);
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let (t, f) = (cnc.modal_code(108).unwrap(), cnc.modal_code(103).unwrap());
+    assert_eq!(agent.value("tool_id"), t.to_string());
+    assert_eq!(agent.value("f_command"), f.to_string());
+    let block = agent.value("block");
+    assert!(
+        block.starts_with(&format!("N{seq} ")),
+        "{block:?} is block N{seq}"
+    );
+    for c in condition_names() {
+        assert_eq!(agent.level(&c), Some(("NORMAL", "")), "{c}");
+    }
+}
+
+#[test]
+fn values_follow_the_running_program() {
+    let sim = sim_at(0.0);
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "50"]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    let mut seen = Vec::new();
+    for t in [0.0, 0.7, 1.2, 2.6, 3.1] {
+        sim.set_elapsed(Duration::from_secs_f64(t));
+        let (x, seq, feed) = api(&sim);
+        let (xs, ss, fs) = (x.to_string(), seq.to_string(), feed.to_string());
+        agent.until("the program's state", |a| {
+            a.value("Xact") == xs && a.value("line") == ss && a.value("path_feedrate") == fs
+        });
+        seen.push((xs, ss));
+    }
+    seen.dedup();
+    assert!(seen.len() >= 3, "the program moved: {seen:?}");
+}
+
+#[test]
+fn an_alarm_is_a_fault_then_normal() {
+    // The built-in profile raises OT0500 on X from 30 s to 40 s.
+    let sim = sim_at(20.0);
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "50"]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    agent.until("NORMAL", |a| a.level("Xtravel") == Some(("NORMAL", "")));
+    sim.set_elapsed(Duration::from_secs(35));
+    agent.until("FAULT", |a| {
+        a.level("Xtravel").is_some_and(|l| l.0 == "FAULT")
+    });
+    let f = &agent.conds["Xtravel"];
+    assert_eq!(f[..3], ["FAULT", "OT0500", "4"]);
+    assert_eq!(f[4], "OVER TRAVEL ( SOFT 1 ) +X");
+    assert_eq!(
+        agent.level("system"),
+        Some(("NORMAL", "")),
+        "only X's travel"
+    );
+    sim.set_elapsed(Duration::from_secs(45));
+    agent.until("NORMAL again", |a| {
+        a.level("Xtravel") == Some(("NORMAL", ""))
+    });
+    assert_eq!(
+        agent.conds["Xtravel"],
+        ["NORMAL", "", "", "", ""],
+        "a bare NORMAL"
+    );
+}
+
+#[test]
+fn ping_is_answered_and_a_silent_peer_dropped() {
+    let sim = sim_at(1.0);
+    let a = adapter(
+        1,
+        &[
+            "--cnc",
+            &cnc_arg(sim.port()),
+            "--heartbeat",
+            "300",
+            "--interval",
+            "1000",
+        ],
+    );
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.w.write_all(b"* PING\n").unwrap();
+    loop {
+        if let Line::Pong(ms) = agent.line() {
+            assert_eq!(ms, 300);
+            break;
+        }
+    }
+    // Silent now: dropped after twice the heartbeat (the read ends).
+    let mut rest = Vec::new();
+    agent
+        .r
+        .read_to_end(&mut rest)
+        .expect("the adapter closes, not a read timeout");
+}
+
+#[test]
+fn a_cnc_stopped_and_restarted() {
+    let sim = sim_at(1.0);
+    let port = sim.port();
+    let a = adapter(1, &["--cnc", &cnc_arg(port), "--interval", "50"]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    agent.wait_value("mode", "AUTOMATIC");
+    drop(sim);
+    agent.wait_value("avail", "UNAVAILABLE");
+    for item in [
+        "Xact",
+        "mode",
+        "execution",
+        "program",
+        "S1speed",
+        "part_count",
+    ] {
+        agent.wait_value(item, "UNAVAILABLE");
+    }
+    agent.until("conditions unavailable", |a| {
+        condition_names()
+            .iter()
+            .all(|c| a.level(c).is_some_and(|l| l.0 == "UNAVAILABLE"))
+    });
+    let sim = Simulator::start(Profile::default(), &format!("127.0.0.1:{port}")).expect("again");
+    sim.set_elapsed(Duration::from_secs(1));
+    let (x, _, _) = api(&sim);
+    agent.wait_value("avail", "AVAILABLE");
+    agent.wait_value("Xact", &x.to_string());
+    agent.wait_value("mode", "AUTOMATIC");
+    agent.until("conditions back", |a| {
+        a.level("Xtravel") == Some(("NORMAL", ""))
+    });
+}
+
+#[test]
+fn a_second_agent_gets_the_full_current_state() {
+    let sim = sim_at(35.0); // X's overtravel alarm active
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "50"]);
+    let mut first = Agent::connect(a.ports[0]);
+    first.full_state();
+    first.until("the alarm", |a| {
+        a.level("Xtravel").is_some_and(|l| l.0 == "FAULT")
+    });
+    first.wait_value("avail", "AVAILABLE");
+    first.wait_value("program", "O1234");
+    // The clock is stopped: nothing changes any more.
+    let mut second = Agent::connect(a.ports[0]);
+    second.full_state();
+    assert_eq!(second.values, first.values);
+    assert_eq!(second.conds, first.conds);
+}
+
+#[test]
+fn a_poll_is_at_most_three_round_trips() {
+    let sim = sim_at(1.0);
+    let cnc = cnc_arg(sim.port());
+    let xml = focas()
+        .args(["adapter", "--cnc", &cnc, "--devices-xml"])
+        .output()
+        .expect("devices-xml");
+    assert!(xml.status.success());
+    let discovery = sim.data_frames();
+    assert!(discovery > 0);
+    const POLLS: u64 = 10;
+    let out = focas()
+        .args(["adapter", "--cnc", &cnc, "--listen", "127.0.0.1:0"])
+        .args(["--interval", "10", "--polls", &POLLS.to_string()])
+        .output()
+        .expect("adapter");
+    assert!(out.status.success());
+    let polled = sim.data_frames() - 2 * discovery;
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(&format!("{POLLS} polls, {polled} request frames")),
+        "{err}"
+    );
+    assert!(polled <= 3 * POLLS, "{polled} frames in {POLLS} polls");
+}
+
+#[test]
+fn devices_xml_names_every_item_sent() {
+    let (s1, s2) = (sim_at(1.0), sim_at(1.0));
+    let dir = toolchain::scratch("adapter_devices_xml");
+    let cfg = dir.join("shop.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "interval = 100\n\n[[device]]\nname = \"mill-1\"\ncnc = \"127.0.0.1:{}\"\n\n\
+             [[device]]\nname = \"mill-2\"\ncnc = \"127.0.0.1:{}\"\n",
+            s1.port(),
+            s2.port()
+        ),
+    )
+    .unwrap();
+    let out = focas()
+        .args(["adapter", "--devices-xml", "--config"])
+        .arg(&cfg)
+        .output()
+        .expect("devices-xml");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let xml = String::from_utf8(out.stdout).unwrap();
+    assert!(xml.starts_with("<?xml"));
+    assert_eq!(xml.matches("<Device ").count(), 2);
+    assert!(xml.contains("name=\"mill-1\"") && xml.contains("name=\"mill-2\""));
+    assert_eq!(xml.matches("<Linear ").count(), 6);
+    let a = adapter(2, &["--config", cfg.to_str().unwrap()]);
+    let mut agent = Agent::connect(a.ports[1]);
+    agent.full_state();
+    for name in agent.values.keys().chain(agent.conds.keys()) {
+        assert!(
+            xml.contains(&format!(" name=\"{name}\" ")),
+            "{name} in Devices.xml"
+        );
+    }
+    assert_eq!(
+        xml.matches("<DataItem ").count(),
+        2 * (agent.values.len() + agent.conds.len())
+    );
+}
+
+#[test]
+fn one_adapter_serves_a_fleet() {
+    // 100 CNCs, one adapter process, a port each from a config file.
+    const N: usize = 100;
+    let fleet = Fleet::start(
+        &[Profile::default()],
+        "127.0.0.1:0",
+        FleetOptions {
+            machines: Some(N),
+            worker_threads: Some(2),
+            ..FleetOptions::default()
+        },
+    )
+    .expect("fleet");
+    fleet.set_elapsed(Duration::from_secs(1));
+    let dir = toolchain::scratch("adapter_fleet");
+    let cfg = dir.join("fleet.toml");
+    let mut text = String::from("interval = 1000\n");
+    for i in 0..N {
+        text.push_str(&format!(
+            "\n[[device]]\nname = \"m{i}\"\ncnc = \"127.0.0.1:{}\"\nlisten = \"127.0.0.1:0\"\n",
+            fleet.port(i)
+        ));
+    }
+    std::fs::write(&cfg, text).unwrap();
+    let a = adapter(N, &["--config", cfg.to_str().unwrap()]);
+    assert_eq!(a.ports.len(), N);
+    for (i, port) in a.ports.iter().enumerate() {
+        let mut agent = Agent::connect(*port);
+        agent.full_state();
+        agent.wait_value("avail", "AVAILABLE");
+        agent.until("values", |a| {
+            a.value("Xact") != "UNAVAILABLE" && a.value("mode") == "AUTOMATIC"
+        });
+        assert_eq!(agent.value("program"), "O1234", "machine {i}");
+    }
+}
+
+#[test]
+fn a_second_path_is_named_with_its_number() {
+    // The built-in profile with its path twice: X Y Z and S1 on both.
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE;
+    let start = text.find("\n[[path]]").unwrap();
+    let end = text.find("\n[[program]]").unwrap();
+    let end = text[..end].rfind("# -----").unwrap();
+    let two = format!("{}{}{}", &text[..end], &text[start..end], &text[end..]);
+    let profile = Profile::parse(&two).expect("a two-path profile");
+    let sim = Simulator::start(profile, "127.0.0.1:0").expect("simulator");
+    sim.set_elapsed(Duration::from_secs(1));
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "50"]);
+    let mut names = condition_names();
+    for c in ["servo", "comms", "logic", "motion", "system"] {
+        names.push(format!("{c}2"));
+    }
+    for a in ["X2", "Y2", "Z2"] {
+        for c in ["travel", "overheat", "servo"] {
+            names.push(format!("{a}{c}"));
+        }
+    }
+    names.push("S12servo".into());
+    let mut agent = Agent::with(a.ports[0], names);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    agent.wait_value("mode2", "AUTOMATIC");
+    agent.wait_value("active_axes2", "X Y Z");
+    agent.wait_value("program2", "O1234");
+    for item in [
+        "X2act",
+        "Y2load",
+        "S12speed",
+        "S12load",
+        "line2",
+        "path_position2",
+    ] {
+        agent.until(item, |a| {
+            !a.value(item).is_empty() && a.value(item) != "UNAVAILABLE"
+        });
+    }
+    assert!(!agent.values.contains_key("estop2"), "one emergency stop");
+    let xml = focas()
+        .args(["adapter", "--devices-xml", "--cnc", &cnc_arg(sim.port())])
+        .output()
+        .expect("devices-xml");
+    let xml = String::from_utf8(xml.stdout).unwrap();
+    assert_eq!(xml.matches("<Path ").count(), 2);
+    assert!(xml.contains(" name=\"X2act\" ") && xml.contains(" name=\"S12servo\" "));
+}
