@@ -5,6 +5,7 @@
 //! agent (the full state, then every change; `* PING` answered). Logs go
 //! to stderr; stdout says `listening on ADDR` once per device.
 
+mod assets;
 mod condition;
 mod model;
 mod server;
@@ -13,7 +14,7 @@ mod xml;
 
 use crate::out::Fail;
 use fwlib32::native::{Cnc, Error};
-use model::{Category, Layout};
+use model::{Category, Layout, PathMemo, Series, System};
 use serde::Deserialize;
 use server::Hub;
 use std::io::Write;
@@ -62,8 +63,125 @@ struct Config {
     /// Milliseconds between polls (--interval's default).
     interval: Option<u64>,
     heartbeat: Option<u64>,
+    /// Systems conditions, for every device.
+    #[serde(default, rename = "system")]
+    systems: Vec<SystemConfig>,
+    /// Time series sampled between polls, for every device.
+    series: Option<SeriesConfig>,
+    /// Seconds between reads of the tool table (CuttingTool assets; 0: on
+    /// connecting only; default 60).
+    assets: Option<u64>,
     #[serde(default, rename = "device")]
     devices: Vec<DeviceConfig>,
+}
+
+/// A `[[system]]`: a condition FAULT while a PMC bit is at its active
+/// level or one of some alarms is active.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SystemConfig {
+    /// The condition's name (`coolant`).
+    name: String,
+    /// coolant, hydraulic, pneumatic, electric or lubrication (default:
+    /// the name's).
+    component: Option<String>,
+    /// `R600.2`: area, byte, bit.
+    pmc: Option<String>,
+    /// The bit's level that means a fault (default 1).
+    active: Option<u8>,
+    /// Alarm numbers that mean a fault.
+    #[serde(default)]
+    alarms: Vec<i32>,
+    /// The text of a PMC fault (default: the address).
+    text: Option<String>,
+}
+
+/// `[series]`: time series of servo loads (`load`) and spindle speeds
+/// (`speed`) sampled `rate` times a second between polls.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SeriesConfig {
+    rate: u32,
+    items: Vec<String>,
+}
+
+/// What the configuration adds to every device.
+#[derive(Clone, Default)]
+struct Extras {
+    systems: Vec<System>,
+    series: Option<Series>,
+    /// Seconds between tool table reads (0: on connecting only).
+    assets: u64,
+}
+
+fn system(c: SystemConfig) -> Result<System, Fail> {
+    let bad = |why: String| Fail::Other(format!("[[system]] {:?}: {why}", c.name));
+    let comp = c
+        .component
+        .as_deref()
+        .unwrap_or(&c.name)
+        .to_ascii_lowercase();
+    let component = match comp.trim_end_matches('s') {
+        "coolant" => "Coolant",
+        "hydraulic" => "Hydraulic",
+        "pneumatic" => "Pneumatic",
+        "electric" => "Electric",
+        "lubrication" => "Lubrication",
+        other => {
+            return Err(bad(format!(
+                "component {other:?}: coolant, hydraulic, pneumatic, electric or lubrication"
+            )));
+        }
+    };
+    let pmc = match &c.pmc {
+        None => None,
+        Some(a) => {
+            let split = a.find(|ch: char| ch.is_ascii_digit()).unwrap_or(a.len());
+            let (area, rest) = a.split_at(split);
+            let (byte, bit) = rest.split_once('.').unwrap_or((rest, ""));
+            let area = area
+                .parse()
+                .map_err(|_| bad(format!("pmc {a:?}: no PMC area {area:?}")))?;
+            let (Ok(byte), Ok(bit @ 0..=7)) = (byte.parse::<u16>(), bit.parse::<u8>()) else {
+                return Err(bad(format!("pmc {a:?}: expected AREA BYTE.BIT, as R600.2")));
+            };
+            let level = match c.active.unwrap_or(1) {
+                0 => false,
+                1 => true,
+                _ => return Err(bad("active: 0 or 1".into())),
+            };
+            Some((area, byte, bit, level))
+        }
+    };
+    if pmc.is_none() && c.alarms.is_empty() {
+        return Err(bad("give pmc or alarms".into()));
+    }
+    Ok(System {
+        text: c.text.unwrap_or_else(|| c.pmc.clone().unwrap_or_default()),
+        name: c.name,
+        component,
+        pmc,
+        alarms: c.alarms,
+    })
+}
+
+fn series(c: SeriesConfig) -> Result<Series, Fail> {
+    if !(1..=1000).contains(&c.rate) {
+        return Err(Fail::Other("[series] rate: 1 to 1000 Hz".into()));
+    }
+    let mut s = Series {
+        rate: c.rate,
+        load: false,
+        speed: false,
+    };
+    for i in &c.items {
+        match i.as_str() {
+            "load" => s.load = true,
+            "speed" => s.speed = true,
+            _ => return Err(Fail::Other(format!("[series] items: {i:?}: load or speed"))),
+        }
+    }
+    Ok(s)
 }
 
 #[derive(Deserialize)]
@@ -105,8 +223,22 @@ fn cnc_addr(s: &str, default_port: u16) -> Result<String, Fail> {
 }
 
 /// The devices the command line and the config file name.
+#[cfg(test)]
 fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u64, u64), Fail> {
+    devices_extras(a, host, port).map(|(d, i, h, _)| (d, i, h))
+}
+
+/// [`devices`] and the configuration's [`Extras`].
+fn devices_extras(
+    a: &Args,
+    host: Option<String>,
+    port: u16,
+) -> Result<(Vec<Device>, u64, u64, Extras), Fail> {
     let (mut interval, mut heartbeat) = (a.interval, a.heartbeat);
+    let mut extras = Extras {
+        assets: 60,
+        ..Extras::default()
+    };
     let mut specs: Vec<(Option<String>, String, Option<String>)> = Vec::new();
     if let Some(path) = &a.config {
         let text = std::fs::read_to_string(path)
@@ -116,6 +248,11 @@ fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u6
         interval = c.interval.unwrap_or(interval).max(10);
         heartbeat = c.heartbeat.unwrap_or(heartbeat).max(100);
         specs.extend(c.devices.into_iter().map(|d| (d.name, d.cnc, d.listen)));
+        for sc in c.systems {
+            extras.systems.push(system(sc)?);
+        }
+        extras.series = c.series.map(series).transpose()?;
+        extras.assets = c.assets.unwrap_or(extras.assets);
     }
     specs.extend(a.cnc.iter().map(|c| (None, c.clone(), None)));
     if specs.is_empty() {
@@ -151,7 +288,7 @@ fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u6
             listen,
         });
     }
-    Ok((out, interval, heartbeat))
+    Ok((out, interval, heartbeat, extras))
 }
 
 /// A connection and its layout: one `Cnc` per path.
@@ -160,9 +297,11 @@ struct Link {
     layout: Layout,
 }
 
-fn connect(addr: &str, timeout: Duration) -> Result<Link, Error> {
+fn connect(addr: &str, timeout: Duration, extras: &Extras) -> Result<Link, Error> {
     let cnc = Cnc::connect(addr, timeout)?;
-    let layout = Layout::discover(&cnc)?;
+    let mut layout = Layout::discover(&cnc)?;
+    layout.systems = extras.systems.clone();
+    layout.series = extras.series.clone();
     let mut paths = Vec::new();
     for p in &layout.paths {
         let c = cnc.try_clone()?;
@@ -185,16 +324,93 @@ fn names(layout: &Layout) -> (Vec<String>, Vec<String>) {
     (items, conds)
 }
 
+/// A poller's settings.
+struct Polling {
+    addr: String,
+    timeout: Duration,
+    interval: Duration,
+    polls: Option<u64>,
+    extras: Extras,
+}
+
+/// Samples of the time series since the last poll: per item, its values;
+/// and when the last was taken.
+#[derive(Default)]
+struct Samples {
+    values: Vec<(String, Vec<String>)>,
+    last: Option<String>,
+}
+
+impl Samples {
+    fn push(&mut self, name: String, v: String) {
+        match self.values.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, vs)) => vs.push(v),
+            None => self.values.push((name, vec![v])),
+        }
+    }
+
+    /// The series' values (count, rate, samples), emptied.
+    fn take(&mut self, rate: u32) -> Option<(String, Vec<(String, String)>)> {
+        let ts = self.last.take()?;
+        let sep = shdr::SEP;
+        let out = (self.values.drain(..))
+            .map(|(n, vs)| (n, format!("{}{sep}{rate}{sep}{}", vs.len(), vs.join(" "))))
+            .collect();
+        Some((ts, out))
+    }
+}
+
+/// One sample of every path's series.
+fn sample(l: &Link, s: &Series, into: &mut Samples) -> Result<(), Error> {
+    for (cnc, p) in l.paths.iter().zip(&l.layout.paths) {
+        let (loads, speeds) = model::sample_path(cnc, s)?;
+        for (a, v) in p.axes.iter().zip(loads) {
+            into.push(format!("{a}load_ts"), v);
+        }
+        for (sp, v) in p.spindles.iter().zip(speeds) {
+            into.push(format!("{sp}speed_ts"), v);
+        }
+    }
+    into.last = Some(shdr::now());
+    Ok(())
+}
+
+/// Reads the tool table of path 1 as CuttingTool assets: request frames.
+fn read_assets(hub: &Hub, l: &Link) -> Result<(), Error> {
+    let Some(cnc) = l.paths.first() else {
+        return Ok(());
+    };
+    // The offsets' decimals: the first axis's.
+    let decimals = cnc.positions()?.first().map_or(3, |a| a.absolute.decimals);
+    match assets::read(cnc, &hub.name, decimals) {
+        Ok(a) => hub.assets(&shdr::now(), a),
+        // No tool life management: no assets.
+        Err(e @ Error::Cnc { .. }) => eprintln!("focas adapter: {}: no tool table: {e}", hub.name),
+        Err(e) => return Err(e),
+    }
+    Ok(())
+}
+
 /// Polls one CNC every `interval` until `polls` (for ever without).
-fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, polls: Option<u64>) {
+fn poller(hub: Arc<Hub>, cfg: Polling) {
+    let Polling {
+        addr,
+        timeout,
+        interval,
+        polls,
+        extras,
+    } = cfg;
     let mut link: Option<Link> = None;
-    let (mut done, mut frames) = (0u64, 0usize);
+    let mut memos: Vec<PathMemo> = Vec::new();
+    let mut samples = Samples::default();
+    let (mut done, mut frames, mut most) = (0u64, 0usize, 0usize);
+    let mut assets_at: Option<Instant> = None;
     let mut down: Option<String> = None;
     while polls.is_none_or(|n| done < n) {
         let start = Instant::now();
         done += 1;
         if link.is_none() {
-            match connect(&addr, timeout) {
+            match connect(&addr, timeout, &extras) {
                 Ok(l) => {
                     let (items, conds) = names(&l.layout);
                     hub.declare(&items, &conds);
@@ -210,6 +426,9 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
                             .join(" ")
                     );
                     down = None;
+                    memos = l.layout.paths.iter().map(|_| PathMemo::default()).collect();
+                    samples = Samples::default();
+                    assets_at = None;
                     link = Some(l);
                 }
                 Err(e) => {
@@ -226,10 +445,11 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
             let mut values = vec![("avail".to_string(), "AVAILABLE".to_string())];
             let mut conds = Some(Vec::new());
             let mut failed = None;
-            for (cnc, p) in l.paths.iter().zip(&l.layout.paths) {
-                match model::poll_path(cnc, p) {
+            let mut this = 0;
+            for ((cnc, p), memo) in l.paths.iter().zip(&l.layout.paths).zip(&mut memos) {
+                match model::poll_path(cnc, p, &l.layout.systems, memo) {
                     Ok(r) => {
-                        frames += r.frames;
+                        this += r.frames;
                         values.extend(r.values);
                         if r.alarms_unknown {
                             conds = None;
@@ -244,9 +464,28 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
                     }
                 }
             }
+            frames += this;
+            most = most.max(this);
+            // The tool table: on connecting, then every `assets` seconds.
+            let due = match assets_at {
+                None => true,
+                Some(t) => extras.assets > 0 && t.elapsed().as_secs() >= extras.assets,
+            };
+            if failed.is_none() && due {
+                assets_at = Some(Instant::now());
+                if let Err(e) = read_assets(&hub, l) {
+                    failed = Some(e);
+                }
+            }
             let ts = shdr::now();
             match failed {
-                None => hub.update(&ts, values, conds),
+                None => {
+                    hub.update(&ts, values, conds);
+                    if let Some((ts, v)) = extras.series.as_ref().and_then(|s| samples.take(s.rate))
+                    {
+                        hub.series(&ts, v);
+                    }
+                }
                 Some(e) => {
                     eprintln!("focas adapter: {}: {addr}: lost: {e}", hub.name);
                     down = Some(e.to_string());
@@ -264,12 +503,30 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
         } else {
             interval
         };
+        // Until the next poll: the time series' samples, if any.
+        if let (Some(l), Some(s)) = (&link, &extras.series) {
+            let every = Duration::from_secs_f64(1.0 / f64::from(s.rate));
+            let mut next = Instant::now();
+            while next + every <= start + wait {
+                next += every;
+                if let Some(rest) = next.checked_duration_since(Instant::now()) {
+                    std::thread::sleep(rest);
+                }
+                if let Err(e) = sample(l, s, &mut samples) {
+                    eprintln!("focas adapter: {}: {addr}: lost: {e}", hub.name);
+                    down = Some(e.to_string());
+                    link = None;
+                    hub.unavailable(&shdr::now());
+                    break;
+                }
+            }
+        }
         if let Some(rest) = wait.checked_sub(start.elapsed()) {
             std::thread::sleep(rest);
         }
     }
     eprintln!(
-        "focas adapter: {}: {done} polls, {frames} request frames",
+        "focas adapter: {}: {done} polls, {frames} request frames, at most {most} in one",
         hub.name
     );
 }
@@ -277,11 +534,11 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
 /// Runs the adapter (or prints Devices.xml); `host`, `port` and `timeout`
 /// are the global options'.
 pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Result<(), Fail> {
-    let (devices, interval, heartbeat) = devices(a, host, port)?;
+    let (devices, interval, heartbeat, extras) = devices_extras(a, host, port)?;
     if a.devices_xml {
         let mut found = Vec::new();
         for d in &devices {
-            let l = connect(&d.cnc, timeout).map_err(|e| Fail::Api(e).at(&d.cnc))?;
+            let l = connect(&d.cnc, timeout, &extras).map_err(|e| Fail::Api(e).at(&d.cnc))?;
             found.push((d.name.clone(), l.layout));
         }
         let mut out = std::io::stdout().lock();
@@ -310,14 +567,18 @@ pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Resu
             .stack_size(128 * 1024)
             .spawn(move || h.serve(listener))
             .map_err(|e| Fail::Other(format!("thread: {e}")))?;
-        let polls = a.polls;
-        let every = Duration::from_millis(interval);
-        let cnc = d.cnc.clone();
+        let cfg = Polling {
+            addr: d.cnc.clone(),
+            timeout,
+            interval: Duration::from_millis(interval),
+            polls: a.polls,
+            extras: extras.clone(),
+        };
         pollers.push(
             std::thread::Builder::new()
                 .name("poller".into())
                 .stack_size(512 * 1024)
-                .spawn(move || poller(hub, cnc, timeout, every, polls))
+                .spawn(move || poller(hub, cfg))
                 .map_err(|e| Fail::Other(format!("thread: {e}")))?,
         );
     }
