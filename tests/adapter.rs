@@ -862,3 +862,73 @@ fn a_second_path_is_named_with_its_number() {
     assert_eq!(xml.matches("<Path ").count(), 2);
     assert!(xml.contains(" name=\"X2act\" ") && xml.contains(" name=\"S12servo\" "));
 }
+
+#[test]
+fn items_configured_as_in_the_cpp_adapters_ini() {
+    // The built-in profile raises OT0500 (type 4, overtravel) on X from
+    // 30 s to 40 s.
+    let sim = sim_at(35.0);
+    let dir = toolchain::scratch("adapter_custom");
+    let cfg = dir.join("custom.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "interval = 50\n\n\
+             [macros]\ngauge1 = 500\n\n\
+             [pmc]\nFovr_pmc = -12\nr500 = 50500\nr501 = \"R501\"\n\n\
+             [parameters]\ncuttime = 6754\npowerontime = 6750\n\n\
+             [diagnostics]\nXposError = 15202\nDCLink = 10752\nspload = 4901\n\n\
+             [alarms]\nalarm1 = 1\nalarm2 = 2\n\n\
+             [critical]\ncritical1 = 1\n\n\
+             [[device]]\ncnc = \"127.0.0.1:{}\"\n",
+            sim.port()
+        ),
+    )
+    .unwrap();
+    let a = adapter(1, &["--config", cfg.to_str().unwrap()]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let gauge = cnc.macro_var(500).unwrap().unwrap().to_string();
+    let cut = cnc.param::<i32>(6754, None).unwrap().to_string();
+    let on = cnc.param::<i32>(6750, None).unwrap().to_string();
+    let pos_err = cnc.diag_values(5202, Some(1)).unwrap().values[0].to_string();
+    let dc = cnc.diag_values(752, Some(1)).unwrap().values[0].to_string();
+    let spload = cnc.diag_values(4901, None).unwrap().values[0].to_string();
+    let g12 = cnc.pmc::<u8>(fwlib32::native::PmcArea::G, 12..=12).unwrap()[0];
+    assert!(g12 >= 0x80, "G12 {g12:#x}: inverted (*FV0-7)");
+    let alarm = &cnc.alarms().unwrap()[0];
+    let want = [
+        ("gauge1", gauge),
+        ("Fovr_pmc", (!g12).to_string()),
+        ("r500", "0".to_string()),
+        ("r501", "42".to_string()),
+        ("cuttime", cut),
+        ("powerontime", on),
+        ("XposError", pos_err),
+        ("DCLink", dc),
+        ("spload", spload),
+        ("alarm1", format!("{} {}", alarm.number, alarm.message)),
+        ("alarm2", String::new()),
+        ("critical1", String::new()),
+    ];
+    for (item, v) in &want {
+        agent.wait_value(item, v);
+        // (An empty value must have been sent, not just be absent.)
+        assert!(agent.values.contains_key(*item), "{item} sent");
+    }
+    assert_eq!(agent.value("gauge1"), "25.400");
+    assert_eq!(agent.value("Fovr_pmc"), agent.value("Fovr"));
+    assert_eq!(agent.value("alarm1"), "500 OVER TRAVEL ( SOFT 1 ) +X");
+    let xml = focas()
+        .args(["adapter", "--devices-xml", "--config"])
+        .arg(&cfg)
+        .output()
+        .expect("devices-xml");
+    let xml = String::from_utf8(xml.stdout).unwrap();
+    for (item, _) in &want {
+        assert!(xml.contains(&format!(" name=\"{item}\" ")), "{item}");
+    }
+    assert!(xml.contains(" name=\"gauge1\" type=\"x:MACRO_VARIABLE\""));
+}

@@ -13,10 +13,11 @@ mod shdr;
 mod xml;
 
 use crate::out::Fail;
-use fwlib32::native::{Cnc, Error};
-use model::{Category, Layout, PathMemo, Series, System};
+use fwlib32::native::{Cnc, Error, PmcArea};
+use model::{Category, Custom, Layout, PathMemo, Series, System};
 use serde::Deserialize;
 use server::Hub;
+use std::collections::BTreeMap;
 use std::io::Write;
 use std::net::{SocketAddr, TcpListener};
 use std::path::PathBuf;
@@ -71,6 +72,19 @@ struct Config {
     /// Seconds between reads of the tool table (CuttingTool assets; 0: on
     /// connecting only; default 60).
     assets: Option<u64>,
+    /// The C++ adapter's `adapter.ini` sections, item name to address.
+    #[serde(default)]
+    macros: BTreeMap<String, u32>,
+    #[serde(default)]
+    pmc: BTreeMap<String, PmcAddress>,
+    #[serde(default)]
+    parameters: BTreeMap<String, u32>,
+    #[serde(default)]
+    diagnostics: BTreeMap<String, u32>,
+    #[serde(default)]
+    alarms: BTreeMap<String, toml::Value>,
+    #[serde(default)]
+    critical: BTreeMap<String, toml::Value>,
     #[serde(default, rename = "device")]
     devices: Vec<DeviceConfig>,
 }
@@ -105,6 +119,46 @@ struct SeriesConfig {
     items: Vec<String>,
 }
 
+/// A `[pmc]` address: `R500`, or the C++ adapter's number (area type
+/// times 10000 plus the byte, G 0, F 1, Y 2, X 3, A 4, R 5, T 6, K 7, C 8,
+/// D 9; negative: a byte with its top bit set is sent inverted).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum PmcAddress {
+    Number(i64),
+    Text(String),
+}
+
+fn pmc_address(name: &str, a: &PmcAddress) -> Result<(PmcArea, u16, bool), Fail> {
+    const AREAS: [PmcArea; 10] = [
+        PmcArea::G,
+        PmcArea::F,
+        PmcArea::Y,
+        PmcArea::X,
+        PmcArea::A,
+        PmcArea::R,
+        PmcArea::T,
+        PmcArea::K,
+        PmcArea::C,
+        PmcArea::D,
+    ];
+    let bad = || Fail::Other(format!("[pmc] {name}: expected R500 or a number as 50500"));
+    match a {
+        PmcAddress::Number(n) => {
+            let (inv, n) = (*n < 0, n.unsigned_abs());
+            let area = usize::try_from(n / 10000).ok().and_then(|i| AREAS.get(i));
+            let at = u16::try_from(n % 10000).map_err(|_| bad())?;
+            Ok((*area.ok_or_else(bad)?, at, inv))
+        }
+        PmcAddress::Text(t) => {
+            let split = t.find(|c: char| c.is_ascii_digit()).ok_or_else(bad)?;
+            let (area, at) = t.split_at(split);
+            let area: PmcArea = area.parse().map_err(|_| bad())?;
+            Ok((area, at.parse().map_err(|_| bad())?, false))
+        }
+    }
+}
+
 /// What the configuration adds to every device.
 #[derive(Clone, Default)]
 struct Extras {
@@ -112,6 +166,7 @@ struct Extras {
     series: Option<Series>,
     /// Seconds between tool table reads (0: on connecting only).
     assets: u64,
+    custom: Custom,
 }
 
 fn system(c: SystemConfig) -> Result<System, Fail> {
@@ -253,6 +308,22 @@ fn devices_extras(
         }
         extras.series = c.series.map(series).transpose()?;
         extras.assets = c.assets.unwrap_or(extras.assets);
+        let cu = &mut extras.custom;
+        cu.macros = c.macros.into_iter().collect();
+        for (n, a) in &c.pmc {
+            let (area, at, inv) = pmc_address(n, a)?;
+            cu.pmc.push((n.clone(), area, at, inv));
+        }
+        cu.parameters = c.parameters.into_iter().collect();
+        // As the C++ adapter: axis times 10000 plus the number.
+        cu.diagnostics = (c.diagnostics.into_iter())
+            .map(|(n, v)| {
+                let axis = u16::try_from(v / 10000).ok().filter(|a| *a > 0);
+                (n, v % 10000, axis)
+            })
+            .collect();
+        cu.alarms = c.alarms.into_keys().collect();
+        cu.critical = c.critical.into_keys().collect();
     }
     specs.extend(a.cnc.iter().map(|c| (None, c.clone(), None)));
     if specs.is_empty() {
@@ -302,6 +373,7 @@ fn connect(addr: &str, timeout: Duration, extras: &Extras) -> Result<Link, Error
     let mut layout = Layout::discover(&cnc)?;
     layout.systems = extras.systems.clone();
     layout.series = extras.series.clone();
+    layout.custom = extras.custom.clone();
     let mut paths = Vec::new();
     for p in &layout.paths {
         let c = cnc.try_clone()?;
@@ -447,7 +519,7 @@ fn poller(hub: Arc<Hub>, cfg: Polling) {
             let mut failed = None;
             let mut this = 0;
             for ((cnc, p), memo) in l.paths.iter().zip(&l.layout.paths).zip(&mut memos) {
-                match model::poll_path(cnc, p, &l.layout.systems, memo) {
+                match model::poll_path(cnc, p, &l.layout.systems, &l.layout.custom, memo) {
                     Ok(r) => {
                         this += r.frames;
                         values.extend(r.values);
@@ -591,6 +663,43 @@ pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Resu
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn pmc_addresses_and_systems() {
+        let n = |v| pmc_address("x", &PmcAddress::Number(v)).ok();
+        assert_eq!(n(50500), Some((PmcArea::R, 500, false)));
+        assert_eq!(n(-12), Some((PmcArea::G, 12, true)));
+        assert_eq!(n(90003), Some((PmcArea::D, 3, false)));
+        assert_eq!(n(100001), None, "no area 10 in the C++ numbering");
+        let t = |v: &str| pmc_address("x", &PmcAddress::Text(v.into())).ok();
+        assert_eq!(t("R501"), Some((PmcArea::R, 501, false)));
+        assert_eq!(t("Q1"), None);
+        assert_eq!(t("R"), None);
+        let sys = |toml: &str| {
+            toml::from_str::<SystemConfig>(toml)
+                .map_err(|_| ())
+                .and_then(|c| system(c).map_err(|_| ()))
+        };
+        let s =
+            sys("name = \"air\"\ncomponent = \"pneumatic\"\npmc = \"X8.4\"\nactive = 0").unwrap();
+        assert_eq!(
+            (s.component, s.pmc),
+            ("Pneumatic", Some((PmcArea::X, 8, 4, false)))
+        );
+        assert_eq!(s.text, "X8.4");
+        assert!(sys("name = \"coolant\"\npmc = \"R1.8\"").is_err(), "bit 8");
+        assert!(sys("name = \"coolant\"").is_err(), "neither pmc nor alarms");
+        assert!(
+            sys("name = \"vacuum\"\nalarms = [1]").is_err(),
+            "no such component"
+        );
+        assert_eq!(
+            sys("name = \"hydraulics\"\nalarms = [1]")
+                .unwrap()
+                .component,
+            "Hydraulic"
+        );
+    }
 
     #[test]
     fn devices_take_consecutive_ports() {

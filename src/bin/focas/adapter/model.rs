@@ -68,6 +68,27 @@ pub struct Layout {
     pub systems: Vec<System>,
     /// Time series sampled between polls.
     pub series: Option<Series>,
+    /// Items configured by hand, as in the C++ adapter's `adapter.ini`.
+    pub custom: Custom,
+}
+
+/// Items configured by hand (the C++ adapter's `adapter.ini` sections),
+/// each (item name, what to read), in name order.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Custom {
+    /// `[macros]`: custom macro variable numbers.
+    pub macros: Vec<(String, u32)>,
+    /// `[pmc]`: area, byte, and whether a byte with its top bit set is
+    /// sent inverted (the C++ adapter's negative addresses).
+    pub pmc: Vec<(String, PmcArea, u16, bool)>,
+    /// `[parameters]`: parameter numbers (of the path, no axis).
+    pub parameters: Vec<(String, u32)>,
+    /// `[diagnostics]`: number and axis.
+    pub diagnostics: Vec<(String, u32, Option<u16>)>,
+    /// `[alarms]`: the first, second ... active alarm.
+    pub alarms: Vec<String>,
+    /// `[critical]`: the Nth active alarm if of a critical type.
+    pub critical: Vec<String>,
 }
 
 /// A system (coolant, hydraulics ...) as a condition: FAULT while its PMC
@@ -146,6 +167,7 @@ impl Layout {
             paths,
             systems: Vec::new(),
             series: None,
+            custom: Custom::default(),
         })
     }
 
@@ -162,6 +184,27 @@ impl Layout {
             item("part_count", Category::Event, "PART_COUNT", Place::Path(1)),
             item("message", Category::Event, "MESSAGE", Place::Controller),
         ];
+        let c = &self.custom;
+        for (n, _) in &c.macros {
+            v.push(item(
+                n,
+                Category::Sample,
+                "x:MACRO_VARIABLE",
+                Place::Controller,
+            ));
+        }
+        for (n, ..) in &c.pmc {
+            v.push(item(n, Category::Event, "x:PMC", Place::Controller));
+        }
+        for (n, _) in &c.parameters {
+            v.push(item(n, Category::Event, "x:PARAMETER", Place::Controller));
+        }
+        for (n, ..) in &c.diagnostics {
+            v.push(item(n, Category::Event, "x:DIAGNOSTIC", Place::Controller));
+        }
+        for n in c.alarms.iter().chain(&c.critical) {
+            v.push(item(n, Category::Event, "x:ALARM", Place::Controller));
+        }
         for s in &self.systems {
             v.push(item(
                 &s.name,
@@ -404,6 +447,7 @@ pub fn poll_path(
     cnc: &Cnc,
     p: &PathLayout,
     systems: &[System],
+    custom: &Custom,
     memo: &mut PathMemo,
 ) -> Result<PathPoll, Error> {
     let g = (p.number - 1) * 1000; // each path's G signals 1000 further on
@@ -447,6 +491,21 @@ pub fn poll_path(
     }
     let bytes: Vec<_> = (areas.iter())
         .map(|&(area, lo, hi)| (area, lo, b.pmc::<u8>(area, lo..=hi)))
+        .collect();
+    // Items configured by hand, on path 1.
+    let none = Custom::default();
+    let c = if first { custom } else { &none };
+    let macros: Vec<_> = (c.macros.iter())
+        .map(|(n, v)| (n.clone(), b.macro_var(*v)))
+        .collect();
+    let pmc: Vec<_> = (c.pmc.iter())
+        .map(|(n, area, at, inv)| (n.clone(), *inv, b.pmc::<u8>(*area, *at..=*at)))
+        .collect();
+    let params: Vec<_> = (c.parameters.iter())
+        .map(|(n, v)| (n.clone(), b.param_values(*v, None)))
+        .collect();
+    let diags: Vec<_> = (c.diagnostics.iter())
+        .map(|(n, v, axis)| (n.clone(), b.diag_values(*v, *axis)))
         .collect();
     let mut r2 = b.send()?;
     let mut out = PathPoll {
@@ -522,10 +581,37 @@ pub fn poll_path(
     // The operator message on display; none: the last one stays, as
     // FANUC's adapter leaves it.
     if let Some(Ok(Some(m))) = msg.map(|t| r2.take(t)) {
-        out.values.push((
+        let sep = super::shdr::SEP;
+        put(
             "message".into(),
-            format!("{}{}{}", m.number, super::shdr::SEP, m.text),
-        ));
+            Some(format!("{}{sep}{}", m.number, m.text)),
+        );
+    }
+    for (n, t) in macros {
+        let v = r2
+            .take(t)
+            .ok()
+            .map(|v| v.map_or_else(|| UNAVAILABLE.to_string(), |d| d.to_string()));
+        put(n, v);
+    }
+    for (n, inv, t) in pmc {
+        // As the C++ adapter: a byte, or for a negative address a byte
+        // with its top bit set inverted (override signals).
+        let v = r2.take(t).ok().and_then(|v| v.first().copied());
+        put(
+            n,
+            v.map(|b| if inv && b >= 0x80 { !b } else { b }.to_string()),
+        );
+    }
+    for (n, t) in params.into_iter().chain(diags) {
+        let v = r2.take(t).ok().and_then(|p| p.values.first().cloned());
+        put(
+            n,
+            v.map(|v| match v {
+                fwlib32::native::Value::Bits(b) => b.to_string(),
+                v => v.to_string(),
+            }),
+        );
     }
     let pos = r.take(pos).ok();
     let xyz = pos.as_ref().map(|pos| {
@@ -575,6 +661,22 @@ pub fn poll_path(
         put(format!("{s}load"), m.map(|m| m.load.to_string()));
     }
     let alarms = r.take(al);
+    // The C++ adapter's [alarms] and [critical]: the Nth active alarm as
+    // "number message" ("" when fewer), [critical] only if of a critical
+    // type (cnc_rdalmmsg types 1 2 5 6 9 10 13 19).
+    if let Ok(al) = &alarms {
+        let nth = |i: usize, critical: bool| {
+            al.get(i)
+                .filter(|a| !critical || [1, 2, 5, 6, 9, 10, 13, 19].contains(&a.kind.0))
+                .map_or_else(String::new, |a| format!("{} {}", a.number, a.message))
+        };
+        for (i, n) in c.alarms.iter().enumerate() {
+            put(n.clone(), Some(nth(i, false)));
+        }
+        for (i, n) in c.critical.iter().enumerate() {
+            put(n.clone(), Some(nth(i, true)));
+        }
+    }
     match &alarms {
         Err(_) => out.alarms_unknown = true,
         Ok(alarms) => {

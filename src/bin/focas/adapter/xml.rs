@@ -65,6 +65,7 @@ pub fn devices_xml(devices: &[(String, Layout)]) -> String {
     o.push_str(
         "<MTConnectDevices xmlns=\"urn:mtconnect.org:MTConnectDevices:1.3\" \
          xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" \
+         xmlns:x=\"urn:fwlib32-rs:focas-adapter\" \
          xsi:schemaLocation=\"urn:mtconnect.org:MTConnectDevices:1.3 \
          http://schemas.mtconnect.org/schemas/MTConnectDevices_1.3.xsd\">\n",
     );
