@@ -1,9 +1,11 @@
 //! `focas adapter`: an MTConnect adapter for one CNC or a whole shop, in
 //! one process. Each device (a CNC) gets its own SHDR port and two kinds
-//! of threads: one poller (discovery on connecting, then one batch per
-//! path and poll, reconnecting after an outage) and one per connected
-//! agent (the full state, then every change; `* PING` answered). Logs go
-//! to stderr; stdout says `listening on ADDR` once per device.
+//! of threads: one poller (discovery and the tool table on connecting,
+//! then two batches per path and poll, three frames on a 30i; time series
+//! sampled between polls; reconnecting after an outage) and one per
+//! connected agent (the full state and assets, then every change;
+//! `* PING` answered). Logs go to stderr; stdout says `listening on ADDR`
+//! once per device.
 
 mod assets;
 mod condition;
@@ -383,7 +385,8 @@ fn connect(addr: &str, timeout: Duration, extras: &Extras) -> Result<Link, Error
     Ok(Link { paths, layout })
 }
 
-/// Item and condition names of a layout.
+/// Item and condition names of a layout (time series included: they go
+/// UNAVAILABLE with the rest).
 fn names(layout: &Layout) -> (Vec<String>, Vec<String>) {
     let (mut items, mut conds) = (Vec::new(), Vec::new());
     for i in layout.items() {
@@ -447,7 +450,8 @@ fn sample(l: &Link, s: &Series, into: &mut Samples) -> Result<(), Error> {
     Ok(())
 }
 
-/// Reads the tool table of path 1 as CuttingTool assets: request frames.
+/// Reads the tool table of path 1 and hands its CuttingTool assets to the
+/// hub (a CNC without tool life management: none, logged).
 fn read_assets(hub: &Hub, l: &Link) -> Result<(), Error> {
     let Some(cnc) = l.paths.first() else {
         return Ok(());

@@ -33,7 +33,9 @@ pub fn field(v: &str) -> String {
         .to_string()
 }
 
-/// `ts|name|value|name|value...` with a line feed; None for no pairs.
+/// `ts|name|value|name|value...` with a line feed, then a line
+/// `ts|name|field|field...` for each value of several fields ([`SEP`]);
+/// None for no pairs.
 pub fn sample_line(ts: &str, pairs: &[(String, String)]) -> Option<String> {
     let mut s = String::new();
     let mut own = String::new();
