@@ -279,14 +279,9 @@ fn cnc_addr(s: &str, default_port: u16) -> Result<String, Fail> {
     Ok(hp.addr(default_port))
 }
 
-/// The devices the command line and the config file name.
-#[cfg(test)]
-fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u64, u64), Fail> {
-    devices_extras(a, host, port).map(|(d, i, h, _)| (d, i, h))
-}
-
-/// [`devices`] and the configuration's [`Extras`].
-fn devices_extras(
+/// The devices the command line and the config file name, and what the
+/// configuration adds to each ([`Extras`]).
+fn devices(
     a: &Args,
     host: Option<String>,
     port: u16,
@@ -610,7 +605,7 @@ fn poller(hub: Arc<Hub>, cfg: Polling) {
 /// Runs the adapter (or prints Devices.xml); `host`, `port` and `timeout`
 /// are the global options'.
 pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Result<(), Fail> {
-    let (devices, interval, heartbeat, extras) = devices_extras(a, host, port)?;
+    let (devices, interval, heartbeat, extras) = devices(a, host, port)?;
     if a.devices_xml {
         let mut found = Vec::new();
         for d in &devices {
@@ -722,7 +717,7 @@ mod tests {
             <T as clap::Parser>::parse_from(v).a
         };
         let a = args(&["--cnc", "cnc1", "--cnc", "[::1]:9000", "--cnc", "cnc3"]);
-        let (d, interval, heartbeat) = devices(&a, None, 8193).ok().unwrap();
+        let (d, interval, heartbeat, _) = devices(&a, None, 8193).ok().unwrap();
         let got: Vec<(&str, &str, &str)> = d
             .iter()
             .map(|d| (d.name.as_str(), d.cnc.as_str(), d.listen.as_str()))
