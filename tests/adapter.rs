@@ -516,7 +516,8 @@ fn every_item_of_fanucs_adapter() {
     assert_eq!(comment, "POCKET DEMO");
     agent.wait_value("program_comment", &comment);
     let (group, tools) = cnc.tool_group_tools(0).unwrap();
-    assert!(tools > 0);
+    // The built-in profile's first tool life group: 1, with T1 and T11.
+    assert_eq!((group, tools), (1, 2));
     agent.wait_value("tool_group", &group.to_string());
     let m = cnc
         .operator_message()
@@ -724,6 +725,21 @@ fn the_tool_table_as_cutting_tool_assets() {
             }
         }
     }
+    // The built-in profile's T1: H1 152.340 worn 0.012, D1 radius 5.000,
+    // group 1: 37 of 120 minutes.
+    let t1 = &agent.assets["device.T1"].1;
+    assert!(
+        t1.contains("nominal=\"152.340\" units=\"MILLIMETER\">152.328</FunctionalLength>"),
+        "{t1}"
+    );
+    assert!(
+        t1.contains("nominal=\"10.000\" units=\"MILLIMETER\">10.000</CuttingDiameterMax>"),
+        "{t1}"
+    );
+    assert!(
+        t1.contains("<ToolLife type=\"MINUTES\" countDirection=\"UP\" limit=\"120\">37</ToolLife>"),
+        "{t1}"
+    );
     // A second agent gets them too.
     let mut second = Agent::connect(a.ports[0]);
     second.full_state();
