@@ -41,6 +41,7 @@ mod position;
 mod program;
 #[cfg(feature = "serde")]
 mod ser;
+mod shopfloor;
 mod status;
 
 pub use alarm::{Alarm, AlarmKind, HistoryEntry, Timestamp};
@@ -53,4 +54,5 @@ pub use param::{FromValue, Kind, Param, Value};
 pub use pmc::{PMC_CHUNK, ParsePmcAreaError, PmcArea, PmcType};
 pub use position::{AxisPosition, Unit};
 pub use program::ProgramEntry;
+pub use shopfloor::{GroupTool, OperatorMessage, ToolLifeGroup};
 pub use status::{AlarmState, Emergency, Execution, Mode, Motion, Run, Status, SysInfo};

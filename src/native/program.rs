@@ -25,7 +25,7 @@ pub struct ProgramEntry {
     pub modified: Option<Timestamp>,
 }
 
-fn entry(e: &DirEntry) -> ProgramEntry {
+pub(super) fn entry(e: &DirEntry) -> ProgramEntry {
     let c = String::from_utf8_lossy(e.comment_text()).trim().to_string();
     let comment = c
         .strip_prefix('(')

@@ -83,6 +83,8 @@ struct Agent {
     conds: BTreeMap<String, Vec<String>>,
     /// The device's condition names (to tell their lines).
     names: Vec<String>,
+    /// Asset id to its type and document.
+    assets: BTreeMap<String, (String, String)>,
 }
 
 /// A checked SHDR line: data items, a condition, or a heartbeat answer.
@@ -91,7 +93,12 @@ enum Line {
     Data(Vec<(String, String)>),
     Cond(String, Vec<String>),
     Pong(u64),
+    /// An asset's id, type and document.
+    Asset(String, String, String),
 }
+
+/// The mark around an asset's document.
+const MULTILINE: &str = "--multiline--";
 
 const LEVELS: [&str; 4] = ["NORMAL", "WARNING", "FAULT", "UNAVAILABLE"];
 
@@ -111,6 +118,18 @@ fn parse(line: &str, conditions: &[String]) -> Line {
     let t: jiff::Timestamp = ts.parse().unwrap_or_else(|e| panic!("{ts:?}: {e}"));
     let age = jiff::Timestamp::now().duration_since(t);
     assert!(age.as_secs().abs() < 3600, "{ts:?} is now, in UTC");
+    if f.len() == 5 && f[1] == "@ASSET@" {
+        assert!(f[4].starts_with(MULTILINE), "{line:?}");
+        return Line::Asset(f[2].to_string(), f[3].to_string(), f[4].to_string());
+    }
+    // Items of several fields, each on its own line: a message (native
+    // code, text) and a time series (count, rate, values).
+    if f.len() == 4 && f[1] == "message" {
+        return Line::Data(vec![(f[1].to_string(), f[2..].join("|"))]);
+    }
+    if f.len() == 5 && f[1].ends_with("_ts") {
+        return Line::Data(vec![(f[1].to_string(), f[2..].join("|"))]);
+    }
     if f.len() >= 2 && conditions.iter().any(|c| c == f[1]) {
         assert_eq!(f.len(), 7, "a condition has 7 fields: {line:?}");
         assert!(LEVELS.contains(&f[2]), "{line:?}");
@@ -161,16 +180,33 @@ impl Agent {
             values: BTreeMap::new(),
             conds: BTreeMap::new(),
             names,
+            assets: BTreeMap::new(),
         }
     }
 
-    /// Reads one line and records it.
+    /// Reads one line and records it (an asset: its document's lines too).
     fn line(&mut self) -> Line {
         let mut s = String::new();
         let n = self.r.read_line(&mut s).expect("a line from the adapter");
         assert!(n > 0, "the adapter closed the connection");
-        let l = parse(&s, &self.names);
+        let mut l = parse(&s, &self.names);
+        if let Line::Asset(_, _, mark) = &mut l {
+            let mut doc = String::new();
+            loop {
+                let mut s = String::new();
+                let n = self.r.read_line(&mut s).expect("an asset's line");
+                assert!(n > 0, "the adapter closed the connection in an asset");
+                if s.trim_end() == mark.as_str() {
+                    break;
+                }
+                doc.push_str(&s);
+            }
+            *mark = doc;
+        }
         match &l {
+            Line::Asset(id, kind, doc) => {
+                self.assets.insert(id.clone(), (kind.clone(), doc.clone()));
+            }
             Line::Data(p) => {
                 for (k, v) in p {
                     self.values.insert(k.clone(), v.clone());
@@ -214,6 +250,9 @@ impl Agent {
     }
 }
 
+/// The built-in profile's program, as cnc_exeprgname2 names it.
+const PROGRAM: &str = "//CNC_MEM/USER/PATH1/O1234";
+
 fn sim_at(secs: f64) -> Simulator {
     let s = Simulator::start(Profile::default(), "127.0.0.1:0").expect("simulator");
     s.set_elapsed(Duration::from_secs_f64(secs));
@@ -240,7 +279,7 @@ fn grammar_and_values_of_the_full_state() {
     for (k, v) in [
         ("mode", "AUTOMATIC"),
         ("execution", "ACTIVE"),
-        ("program", "O1234"),
+        ("program", PROGRAM),
         ("estop", "ARMED"),
         ("active_axes", "X Y Z"),
         ("Fovr", "100"),
@@ -403,7 +442,7 @@ fn a_second_agent_gets_the_full_current_state() {
         a.level("Xtravel").is_some_and(|l| l.0 == "FAULT")
     });
     first.wait_value("avail", "AVAILABLE");
-    first.wait_value("program", "O1234");
+    first.wait_value("program", PROGRAM);
     // The clock is stopped: nothing changes any more.
     let mut second = Agent::connect(a.ports[0]);
     second.full_state();
@@ -411,31 +450,300 @@ fn a_second_agent_gets_the_full_current_state() {
     assert_eq!(second.conds, first.conds);
 }
 
+/// The adapter's own count of one run: (polls, request frames, most in
+/// one poll).
+fn poll_count(stderr: &[u8]) -> (u64, u64, u64) {
+    let err = String::from_utf8_lossy(stderr);
+    let l = err
+        .lines()
+        .find(|l| l.contains(" polls, "))
+        .unwrap_or_else(|| panic!("no count in {err}"));
+    let n: Vec<u64> = l
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    let k = n.len();
+    assert!(k >= 3, "{l}");
+    (n[k - 3], n[k - 2], n[k - 1])
+}
+
 #[test]
 fn a_poll_is_at_most_three_round_trips() {
     let sim = sim_at(1.0);
     let cnc = cnc_arg(sim.port());
+    // One poll, then eleven: connecting, discovery and the tool table are
+    // the same in both; the difference is ten polls.
+    let run = |polls: u64| {
+        let before = sim.data_frames();
+        let out = focas()
+            .args(["adapter", "--cnc", &cnc, "--listen", "127.0.0.1:0"])
+            .args(["--interval", "10", "--polls", &polls.to_string()])
+            .output()
+            .expect("adapter");
+        assert!(out.status.success());
+        let (n, frames, most) = poll_count(&out.stderr);
+        assert_eq!(n, polls);
+        // The first poll reads the program's comment too: still <= 3.
+        assert!(most <= 3, "{most} frames in one poll");
+        (sim.data_frames() - before, frames)
+    };
+    let (one, one_said) = run(1);
+    let (eleven, eleven_said) = run(11);
+    let polled = eleven - one;
+    assert_eq!(
+        polled,
+        eleven_said - one_said,
+        "the adapter counts them all"
+    );
+    assert!(polled > 0);
+    assert!(polled <= 3 * 10, "{polled} frames in 10 polls");
+}
+
+/// What the Rust API reads for the items FANUC's C++ adapter sends and
+/// the last session lacked.
+#[test]
+fn every_item_of_fanucs_adapter() {
+    let sim = sim_at(1.0);
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "100"]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let name = cnc.program_name().unwrap();
+    assert_eq!(name, PROGRAM);
+    agent.wait_value("program", &name);
+    let comment = cnc.program_entry(1234).unwrap().unwrap().comment;
+    assert_eq!(comment, "POCKET DEMO");
+    agent.wait_value("program_comment", &comment);
+    let (group, tools) = cnc.tool_group_tools(0).unwrap();
+    // The built-in profile's first tool life group: 1, with T1 and T11.
+    assert_eq!((group, tools), (1, 2));
+    agent.wait_value("tool_group", &group.to_string());
+    let m = cnc
+        .operator_message()
+        .unwrap()
+        .expect("a message on display");
+    agent.wait_value("message", &format!("{}|{}", m.number, m.text));
+    assert_eq!(agent.value("message"), "2001|CHECK COOLANT NOZZLE");
+    let speeds = cnc.spindle_speeds().unwrap();
+    agent.wait_value("S1speed", &speeds[0].to_string());
+    // Every item FANUC's adapter sends for this machine (fanuc_adapter.cpp,
+    // fanuc_path.cpp, fanuc_axis.cpp), by the same name.
+    let mut theirs: Vec<String> = [
+        "avail",
+        "message",
+        "part_count",
+        "tool_id",
+        "tool_group",
+        "program",
+        "program_comment",
+        "line",
+        "block",
+        "path_feedrate",
+        "path_position",
+        "active_axes",
+        "mode",
+        "execution",
+        "f_command",
+        "estop",
+        "S1speed",
+        "S1load",
+    ]
+    .map(String::from)
+    .to_vec();
+    for ax in ["X", "Y", "Z"] {
+        theirs.push(format!("{ax}act"));
+        theirs.push(format!("{ax}load"));
+    }
+    for item in &theirs {
+        let v = agent.value(item);
+        assert!(!v.is_empty() && v != "UNAVAILABLE", "{item}: {v:?}");
+    }
+    for c in [
+        "servo",
+        "comms",
+        "logic",
+        "motion",
+        "system",
+        "S1servo",
+        "Xtravel",
+        "Xoverheat",
+        "Xservo",
+    ] {
+        assert!(agent.conds.contains_key(c), "{c}");
+    }
+}
+
+#[test]
+fn systems_are_conditions_from_pmc_bits_and_alarms() {
+    // R500.2 set (R500 = 0x04); OT0500 raised from 30 s to 40 s.
+    let text = fwlib32::sim::profile::DEFAULT_PROFILE.replace(
+        "data = { 500 = [0x00, 0x2a] }",
+        "data = { 500 = [0x04, 0x2a] }",
+    );
+    assert_ne!(text, fwlib32::sim::profile::DEFAULT_PROFILE);
+    let sim = Simulator::start(Profile::parse(&text).unwrap(), "127.0.0.1:0").unwrap();
+    sim.set_elapsed(Duration::from_secs(20));
+    assert!(
+        Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5))
+            .unwrap()
+            .pmc_bit(fwlib32::native::PmcArea::R, 500, 2)
+            .unwrap()
+    );
+    let dir = toolchain::scratch("adapter_systems");
+    let cfg = dir.join("systems.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "interval = 50\n\n\
+             [[system]]\nname = \"coolant\"\npmc = \"R500.2\"\ntext = \"COOLANT LEVEL LOW\"\n\n\
+             [[system]]\nname = \"hydraulic\"\npmc = \"R500.3\"\n\n\
+             [[system]]\nname = \"air\"\ncomponent = \"pneumatic\"\npmc = \"R500.3\"\nactive = 0\n\n\
+             [[system]]\nname = \"electric\"\nalarms = [500]\n\n\
+             [[device]]\ncnc = \"127.0.0.1:{}\"\n",
+            sim.port()
+        ),
+    )
+    .unwrap();
+    let a = adapter(1, &["--config", cfg.to_str().unwrap()]);
+    let mut names = condition_names();
+    names.extend(["coolant", "hydraulic", "air", "electric"].map(String::from));
+    let mut agent = Agent::with(a.ports[0], names);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    agent.until("coolant FAULT", |a| {
+        a.level("coolant").is_some_and(|l| l.0 == "FAULT")
+    });
+    assert_eq!(
+        agent.conds["coolant"],
+        ["FAULT", "R500.2", "", "", "COOLANT LEVEL LOW"]
+    );
+    agent.until("air FAULT (active low)", |a| {
+        a.level("air").is_some_and(|l| l.0 == "FAULT")
+    });
+    assert_eq!(agent.level("hydraulic"), Some(("NORMAL", "")));
+    agent.until("electric NORMAL", |a| {
+        a.level("electric") == Some(("NORMAL", ""))
+    });
+    sim.set_elapsed(Duration::from_secs(35));
+    agent.until("electric FAULT", |a| {
+        a.level("electric").is_some_and(|l| l.0 == "FAULT")
+    });
+    assert_eq!(agent.conds["electric"][..2], ["FAULT", "OT0500"]);
+    sim.set_elapsed(Duration::from_secs(45));
+    agent.until("electric NORMAL again", |a| {
+        a.level("electric") == Some(("NORMAL", ""))
+    });
     let xml = focas()
-        .args(["adapter", "--cnc", &cnc, "--devices-xml"])
+        .args(["adapter", "--devices-xml", "--config"])
+        .arg(&cfg)
         .output()
         .expect("devices-xml");
-    assert!(xml.status.success());
-    let discovery = sim.data_frames();
-    assert!(discovery > 0);
-    const POLLS: u64 = 10;
-    let out = focas()
-        .args(["adapter", "--cnc", &cnc, "--listen", "127.0.0.1:0"])
-        .args(["--interval", "10", "--polls", &POLLS.to_string()])
+    let xml = String::from_utf8(xml.stdout).unwrap();
+    assert!(xml.contains("<Systems ") && xml.contains("<Coolant ") && xml.contains("<Pneumatic "));
+    assert!(xml.contains(" name=\"coolant\" type=\"SYSTEM\""), "{xml}");
+}
+
+#[test]
+fn time_series_sampled_between_polls() {
+    let sim = sim_at(1.0);
+    let dir = toolchain::scratch("adapter_series");
+    let cfg = dir.join("series.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "interval = 300\n\n[series]\nrate = 50\nitems = [\"load\", \"speed\"]\n\n\
+             [[device]]\ncnc = \"127.0.0.1:{}\"\n",
+            sim.port()
+        ),
+    )
+    .unwrap();
+    let a = adapter(1, &["--config", cfg.to_str().unwrap()]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let load = cnc.servo_loads().unwrap()[1].load.to_string();
+    let speed = cnc.spindle_speeds().unwrap()[0].to_string();
+    for (item, v) in [("Yload_ts", load), ("S1speed_ts", speed)] {
+        agent.until(item, |a| a.values.contains_key(item));
+        let f: Vec<String> = agent.value(item).split('|').map(String::from).collect();
+        assert_eq!(f.len(), 3, "count|rate|values: {f:?}");
+        let n: usize = f[0].parse().unwrap();
+        assert_eq!(f[1], "50");
+        let vs: Vec<&str> = f[2].split(' ').collect();
+        // The clock is stopped: every sample the same.
+        assert!(n >= 2, "sampled faster than the poll: {f:?}");
+        assert_eq!(vs, vec![v.as_str(); n], "{item}");
+    }
+    let xml = focas()
+        .args(["adapter", "--devices-xml", "--config"])
+        .arg(&cfg)
         .output()
-        .expect("adapter");
-    assert!(out.status.success());
-    let polled = sim.data_frames() - 2 * discovery;
-    let err = String::from_utf8_lossy(&out.stderr);
+        .expect("devices-xml");
+    let xml = String::from_utf8(xml.stdout).unwrap();
     assert!(
-        err.contains(&format!("{POLLS} polls, {polled} request frames")),
-        "{err}"
+        xml.contains(" name=\"Xload_ts\" type=\"LOAD\" subType=\"ACTUAL\" units=\"PERCENT\" nativeUnits=\"PERCENT\" representation=\"TIME_SERIES\" sampleRate=\"50\""),
+        "{xml}"
     );
-    assert!(polled <= 3 * POLLS, "{polled} frames in {POLLS} polls");
+}
+
+#[test]
+fn the_tool_table_as_cutting_tool_assets() {
+    let sim = sim_at(1.0);
+    let a = adapter(1, &["--cnc", &cnc_arg(sim.port()), "--interval", "100"]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let groups = cnc.tool_life_groups(1, 44).unwrap();
+    let tools: Vec<_> = groups.iter().flat_map(|g| &g.tools).collect();
+    assert!(tools.len() >= 2);
+    assert_eq!(agent.assets.len(), tools.len(), "{:?}", agent.assets.keys());
+    for g in &groups {
+        for t in &g.tools {
+            let (kind, doc) = &agent.assets[&format!("device.T{}", t.number)];
+            assert_eq!(kind, "CuttingTool");
+            assert!(doc.starts_with("<CuttingTool ") && doc.trim_end().ends_with("</CuttingTool>"));
+            assert!(doc.contains(&format!("toolId=\"{}\"", t.number)), "{doc}");
+            assert!(
+                doc.contains(&format!("limit=\"{}\">{}</ToolLife>", g.life, g.count)),
+                "{doc}"
+            );
+            assert!(doc.contains(&format!(
+                "<ProgramToolGroup>{}</ProgramToolGroup>",
+                g.number
+            )));
+            // Length: geometry + wear of offset H (memory C: radius wear,
+            // radius geometry, length wear, length geometry).
+            if let Ok(o) = cnc.tool_offsets(t.length_offset as i16, t.length_offset as i16) {
+                let d = |v: i32| Decimal::new(v, 3).to_string();
+                let want = format!(
+                    "nominal=\"{}\" units=\"MILLIMETER\">{}</FunctionalLength>",
+                    d(o[3]),
+                    d(o[3] + o[2])
+                );
+                assert!(doc.contains(&want), "{want} in {doc}");
+            }
+        }
+    }
+    // The built-in profile's T1: H1 152.340 worn 0.012, D1 radius 5.000,
+    // group 1: 37 of 120 minutes.
+    let t1 = &agent.assets["device.T1"].1;
+    assert!(
+        t1.contains("nominal=\"152.340\" units=\"MILLIMETER\">152.328</FunctionalLength>"),
+        "{t1}"
+    );
+    assert!(
+        t1.contains("nominal=\"10.000\" units=\"MILLIMETER\">10.000</CuttingDiameterMax>"),
+        "{t1}"
+    );
+    assert!(
+        t1.contains("<ToolLife type=\"MINUTES\" countDirection=\"UP\" limit=\"120\">37</ToolLife>"),
+        "{t1}"
+    );
+    // A second agent gets them too.
+    let mut second = Agent::connect(a.ports[0]);
+    second.full_state();
+    assert_eq!(second.assets, agent.assets);
 }
 
 #[test]
@@ -517,7 +825,7 @@ fn one_adapter_serves_a_fleet() {
         agent.until("values", |a| {
             a.value("Xact") != "UNAVAILABLE" && a.value("mode") == "AUTOMATIC"
         });
-        assert_eq!(agent.value("program"), "O1234", "machine {i}");
+        assert_eq!(agent.value("program"), PROGRAM, "machine {i}");
     }
 }
 
@@ -548,7 +856,7 @@ fn a_second_path_is_named_with_its_number() {
     agent.wait_value("avail", "AVAILABLE");
     agent.wait_value("mode2", "AUTOMATIC");
     agent.wait_value("active_axes2", "X Y Z");
-    agent.wait_value("program2", "O1234");
+    agent.wait_value("program2", "//CNC_MEM/USER/PATH2/O1234");
     for item in [
         "X2act",
         "Y2load",
@@ -569,4 +877,74 @@ fn a_second_path_is_named_with_its_number() {
     let xml = String::from_utf8(xml.stdout).unwrap();
     assert_eq!(xml.matches("<Path ").count(), 2);
     assert!(xml.contains(" name=\"X2act\" ") && xml.contains(" name=\"S12servo\" "));
+}
+
+#[test]
+fn items_configured_as_in_the_cpp_adapters_ini() {
+    // The built-in profile raises OT0500 (type 4, overtravel) on X from
+    // 30 s to 40 s.
+    let sim = sim_at(35.0);
+    let dir = toolchain::scratch("adapter_custom");
+    let cfg = dir.join("custom.toml");
+    std::fs::write(
+        &cfg,
+        format!(
+            "interval = 50\n\n\
+             [macros]\ngauge1 = 500\n\n\
+             [pmc]\nFovr_pmc = -12\nr500 = 50500\nr501 = \"R501\"\n\n\
+             [parameters]\ncuttime = 6754\npowerontime = 6750\n\n\
+             [diagnostics]\nXposError = 15202\nDCLink = 10752\nspload = 4901\n\n\
+             [alarms]\nalarm1 = 1\nalarm2 = 2\n\n\
+             [critical]\ncritical1 = 1\n\n\
+             [[device]]\ncnc = \"127.0.0.1:{}\"\n",
+            sim.port()
+        ),
+    )
+    .unwrap();
+    let a = adapter(1, &["--config", cfg.to_str().unwrap()]);
+    let mut agent = Agent::connect(a.ports[0]);
+    agent.full_state();
+    agent.wait_value("avail", "AVAILABLE");
+    let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(5)).unwrap();
+    let gauge = cnc.macro_var(500).unwrap().unwrap().to_string();
+    let cut = cnc.param::<i32>(6754, None).unwrap().to_string();
+    let on = cnc.param::<i32>(6750, None).unwrap().to_string();
+    let pos_err = cnc.diag_values(5202, Some(1)).unwrap().values[0].to_string();
+    let dc = cnc.diag_values(752, Some(1)).unwrap().values[0].to_string();
+    let spload = cnc.diag_values(4901, None).unwrap().values[0].to_string();
+    let g12 = cnc.pmc::<u8>(fwlib32::native::PmcArea::G, 12..=12).unwrap()[0];
+    assert!(g12 >= 0x80, "G12 {g12:#x}: inverted (*FV0-7)");
+    let alarm = &cnc.alarms().unwrap()[0];
+    let want = [
+        ("gauge1", gauge),
+        ("Fovr_pmc", (!g12).to_string()),
+        ("r500", "0".to_string()),
+        ("r501", "42".to_string()),
+        ("cuttime", cut),
+        ("powerontime", on),
+        ("XposError", pos_err),
+        ("DCLink", dc),
+        ("spload", spload),
+        ("alarm1", format!("{} {}", alarm.number, alarm.message)),
+        ("alarm2", String::new()),
+        ("critical1", String::new()),
+    ];
+    for (item, v) in &want {
+        agent.wait_value(item, v);
+        // (An empty value must have been sent, not just be absent.)
+        assert!(agent.values.contains_key(*item), "{item} sent");
+    }
+    assert_eq!(agent.value("gauge1"), "25.400");
+    assert_eq!(agent.value("Fovr_pmc"), agent.value("Fovr"));
+    assert_eq!(agent.value("alarm1"), "500 OVER TRAVEL ( SOFT 1 ) +X");
+    let xml = focas()
+        .args(["adapter", "--devices-xml", "--config"])
+        .arg(&cfg)
+        .output()
+        .expect("devices-xml");
+    let xml = String::from_utf8(xml.stdout).unwrap();
+    for (item, _) in &want {
+        assert!(xml.contains(&format!(" name=\"{item}\" ")), "{item}");
+    }
+    assert!(xml.contains(" name=\"gauge1\" type=\"x:MACRO_VARIABLE\""));
 }

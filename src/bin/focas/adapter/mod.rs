@@ -1,10 +1,13 @@
 //! `focas adapter`: an MTConnect adapter for one CNC or a whole shop, in
 //! one process. Each device (a CNC) gets its own SHDR port and two kinds
-//! of threads: one poller (discovery on connecting, then one batch per
-//! path and poll, reconnecting after an outage) and one per connected
-//! agent (the full state, then every change; `* PING` answered). Logs go
-//! to stderr; stdout says `listening on ADDR` once per device.
+//! of threads: one poller (discovery and the tool table on connecting,
+//! then two batches per path and poll, three frames on a 30i; time series
+//! sampled between polls; reconnecting after an outage) and one per
+//! connected agent (the full state and assets, then every change;
+//! `* PING` answered). Logs go to stderr; stdout says `listening on ADDR`
+//! once per device.
 
+mod assets;
 mod condition;
 mod model;
 mod server;
@@ -12,10 +15,11 @@ mod shdr;
 mod xml;
 
 use crate::out::Fail;
-use fwlib32::native::{Cnc, Error};
-use model::{Category, Layout};
+use fwlib32::native::{Cnc, Error, PmcArea};
+use model::{Category, Custom, Layout, PathMemo, Series, System};
 use serde::Deserialize;
 use server::Hub;
+use std::collections::BTreeMap;
 use std::io::Write;
 use std::net::{SocketAddr, TcpListener};
 use std::path::PathBuf;
@@ -62,8 +66,179 @@ struct Config {
     /// Milliseconds between polls (--interval's default).
     interval: Option<u64>,
     heartbeat: Option<u64>,
+    /// Systems conditions, for every device.
+    #[serde(default, rename = "system")]
+    systems: Vec<SystemConfig>,
+    /// Time series sampled between polls, for every device.
+    series: Option<SeriesConfig>,
+    /// Seconds between reads of the tool table (CuttingTool assets; 0: on
+    /// connecting only; default 60).
+    assets: Option<u64>,
+    /// The C++ adapter's `adapter.ini` sections, item name to address.
+    #[serde(default)]
+    macros: BTreeMap<String, u32>,
+    #[serde(default)]
+    pmc: BTreeMap<String, PmcAddress>,
+    #[serde(default)]
+    parameters: BTreeMap<String, u32>,
+    #[serde(default)]
+    diagnostics: BTreeMap<String, u32>,
+    #[serde(default)]
+    alarms: BTreeMap<String, toml::Value>,
+    #[serde(default)]
+    critical: BTreeMap<String, toml::Value>,
     #[serde(default, rename = "device")]
     devices: Vec<DeviceConfig>,
+}
+
+/// A `[[system]]`: a condition FAULT while a PMC bit is at its active
+/// level or one of some alarms is active.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SystemConfig {
+    /// The condition's name (`coolant`).
+    name: String,
+    /// coolant, hydraulic, pneumatic, electric or lubrication (default:
+    /// the name's).
+    component: Option<String>,
+    /// `R600.2`: area, byte, bit.
+    pmc: Option<String>,
+    /// The bit's level that means a fault (default 1).
+    active: Option<u8>,
+    /// Alarm numbers that mean a fault.
+    #[serde(default)]
+    alarms: Vec<i32>,
+    /// The text of a PMC fault (default: the address).
+    text: Option<String>,
+}
+
+/// `[series]`: time series of servo loads (`load`) and spindle speeds
+/// (`speed`) sampled `rate` times a second between polls.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SeriesConfig {
+    rate: u32,
+    items: Vec<String>,
+}
+
+/// A `[pmc]` address: `R500`, or the C++ adapter's number (area type
+/// times 10000 plus the byte, G 0, F 1, Y 2, X 3, A 4, R 5, T 6, K 7, C 8,
+/// D 9; negative: a byte with its top bit set is sent inverted).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum PmcAddress {
+    Number(i64),
+    Text(String),
+}
+
+fn pmc_address(name: &str, a: &PmcAddress) -> Result<(PmcArea, u16, bool), Fail> {
+    const AREAS: [PmcArea; 10] = [
+        PmcArea::G,
+        PmcArea::F,
+        PmcArea::Y,
+        PmcArea::X,
+        PmcArea::A,
+        PmcArea::R,
+        PmcArea::T,
+        PmcArea::K,
+        PmcArea::C,
+        PmcArea::D,
+    ];
+    let bad = || Fail::Other(format!("[pmc] {name}: expected R500 or a number as 50500"));
+    match a {
+        PmcAddress::Number(n) => {
+            let (inv, n) = (*n < 0, n.unsigned_abs());
+            let area = usize::try_from(n / 10000).ok().and_then(|i| AREAS.get(i));
+            let at = u16::try_from(n % 10000).map_err(|_| bad())?;
+            Ok((*area.ok_or_else(bad)?, at, inv))
+        }
+        PmcAddress::Text(t) => {
+            let split = t.find(|c: char| c.is_ascii_digit()).ok_or_else(bad)?;
+            let (area, at) = t.split_at(split);
+            let area: PmcArea = area.parse().map_err(|_| bad())?;
+            Ok((area, at.parse().map_err(|_| bad())?, false))
+        }
+    }
+}
+
+/// What the configuration adds to every device.
+#[derive(Clone, Default)]
+struct Extras {
+    systems: Vec<System>,
+    series: Option<Series>,
+    /// Seconds between tool table reads (0: on connecting only).
+    assets: u64,
+    custom: Custom,
+}
+
+fn system(c: SystemConfig) -> Result<System, Fail> {
+    let bad = |why: String| Fail::Other(format!("[[system]] {:?}: {why}", c.name));
+    let comp = c
+        .component
+        .as_deref()
+        .unwrap_or(&c.name)
+        .to_ascii_lowercase();
+    let component = match comp.trim_end_matches('s') {
+        "coolant" => "Coolant",
+        "hydraulic" => "Hydraulic",
+        "pneumatic" => "Pneumatic",
+        "electric" => "Electric",
+        "lubrication" => "Lubrication",
+        other => {
+            return Err(bad(format!(
+                "component {other:?}: coolant, hydraulic, pneumatic, electric or lubrication"
+            )));
+        }
+    };
+    let pmc = match &c.pmc {
+        None => None,
+        Some(a) => {
+            let split = a.find(|ch: char| ch.is_ascii_digit()).unwrap_or(a.len());
+            let (area, rest) = a.split_at(split);
+            let (byte, bit) = rest.split_once('.').unwrap_or((rest, ""));
+            let area = area
+                .parse()
+                .map_err(|_| bad(format!("pmc {a:?}: no PMC area {area:?}")))?;
+            let (Ok(byte), Ok(bit @ 0..=7)) = (byte.parse::<u16>(), bit.parse::<u8>()) else {
+                return Err(bad(format!("pmc {a:?}: expected AREA BYTE.BIT, as R600.2")));
+            };
+            let level = match c.active.unwrap_or(1) {
+                0 => false,
+                1 => true,
+                _ => return Err(bad("active: 0 or 1".into())),
+            };
+            Some((area, byte, bit, level))
+        }
+    };
+    if pmc.is_none() && c.alarms.is_empty() {
+        return Err(bad("give pmc or alarms".into()));
+    }
+    Ok(System {
+        text: c.text.unwrap_or_else(|| c.pmc.clone().unwrap_or_default()),
+        name: c.name,
+        component,
+        pmc,
+        alarms: c.alarms,
+    })
+}
+
+fn series(c: SeriesConfig) -> Result<Series, Fail> {
+    if !(1..=1000).contains(&c.rate) {
+        return Err(Fail::Other("[series] rate: 1 to 1000 Hz".into()));
+    }
+    let mut s = Series {
+        rate: c.rate,
+        load: false,
+        speed: false,
+    };
+    for i in &c.items {
+        match i.as_str() {
+            "load" => s.load = true,
+            "speed" => s.speed = true,
+            _ => return Err(Fail::Other(format!("[series] items: {i:?}: load or speed"))),
+        }
+    }
+    Ok(s)
 }
 
 #[derive(Deserialize)]
@@ -104,9 +279,18 @@ fn cnc_addr(s: &str, default_port: u16) -> Result<String, Fail> {
     Ok(hp.addr(default_port))
 }
 
-/// The devices the command line and the config file name.
-fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u64, u64), Fail> {
+/// The devices the command line and the config file name, and what the
+/// configuration adds to each ([`Extras`]).
+fn devices(
+    a: &Args,
+    host: Option<String>,
+    port: u16,
+) -> Result<(Vec<Device>, u64, u64, Extras), Fail> {
     let (mut interval, mut heartbeat) = (a.interval, a.heartbeat);
+    let mut extras = Extras {
+        assets: 60,
+        ..Extras::default()
+    };
     let mut specs: Vec<(Option<String>, String, Option<String>)> = Vec::new();
     if let Some(path) = &a.config {
         let text = std::fs::read_to_string(path)
@@ -116,6 +300,27 @@ fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u6
         interval = c.interval.unwrap_or(interval).max(10);
         heartbeat = c.heartbeat.unwrap_or(heartbeat).max(100);
         specs.extend(c.devices.into_iter().map(|d| (d.name, d.cnc, d.listen)));
+        for sc in c.systems {
+            extras.systems.push(system(sc)?);
+        }
+        extras.series = c.series.map(series).transpose()?;
+        extras.assets = c.assets.unwrap_or(extras.assets);
+        let cu = &mut extras.custom;
+        cu.macros = c.macros.into_iter().collect();
+        for (n, a) in &c.pmc {
+            let (area, at, inv) = pmc_address(n, a)?;
+            cu.pmc.push((n.clone(), area, at, inv));
+        }
+        cu.parameters = c.parameters.into_iter().collect();
+        // As the C++ adapter: axis times 10000 plus the number.
+        cu.diagnostics = (c.diagnostics.into_iter())
+            .map(|(n, v)| {
+                let axis = u16::try_from(v / 10000).ok().filter(|a| *a > 0);
+                (n, v % 10000, axis)
+            })
+            .collect();
+        cu.alarms = c.alarms.into_keys().collect();
+        cu.critical = c.critical.into_keys().collect();
     }
     specs.extend(a.cnc.iter().map(|c| (None, c.clone(), None)));
     if specs.is_empty() {
@@ -151,7 +356,7 @@ fn devices(a: &Args, host: Option<String>, port: u16) -> Result<(Vec<Device>, u6
             listen,
         });
     }
-    Ok((out, interval, heartbeat))
+    Ok((out, interval, heartbeat, extras))
 }
 
 /// A connection and its layout: one `Cnc` per path.
@@ -160,9 +365,12 @@ struct Link {
     layout: Layout,
 }
 
-fn connect(addr: &str, timeout: Duration) -> Result<Link, Error> {
+fn connect(addr: &str, timeout: Duration, extras: &Extras) -> Result<Link, Error> {
     let cnc = Cnc::connect(addr, timeout)?;
-    let layout = Layout::discover(&cnc)?;
+    let mut layout = Layout::discover(&cnc)?;
+    layout.systems = extras.systems.clone();
+    layout.series = extras.series.clone();
+    layout.custom = extras.custom.clone();
     let mut paths = Vec::new();
     for p in &layout.paths {
         let c = cnc.try_clone()?;
@@ -172,7 +380,8 @@ fn connect(addr: &str, timeout: Duration) -> Result<Link, Error> {
     Ok(Link { paths, layout })
 }
 
-/// Item and condition names of a layout.
+/// Item and condition names of a layout (time series included: they go
+/// UNAVAILABLE with the rest).
 fn names(layout: &Layout) -> (Vec<String>, Vec<String>) {
     let (mut items, mut conds) = (Vec::new(), Vec::new());
     for i in layout.items() {
@@ -185,16 +394,94 @@ fn names(layout: &Layout) -> (Vec<String>, Vec<String>) {
     (items, conds)
 }
 
+/// A poller's settings.
+struct Polling {
+    addr: String,
+    timeout: Duration,
+    interval: Duration,
+    polls: Option<u64>,
+    extras: Extras,
+}
+
+/// Samples of the time series since the last poll: per item, its values;
+/// and when the last was taken.
+#[derive(Default)]
+struct Samples {
+    values: Vec<(String, Vec<String>)>,
+    last: Option<String>,
+}
+
+impl Samples {
+    fn push(&mut self, name: String, v: String) {
+        match self.values.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, vs)) => vs.push(v),
+            None => self.values.push((name, vec![v])),
+        }
+    }
+
+    /// The series' values (count, rate, samples), emptied.
+    fn take(&mut self, rate: u32) -> Option<(String, Vec<(String, String)>)> {
+        let ts = self.last.take()?;
+        let sep = shdr::SEP;
+        let out = (self.values.drain(..))
+            .map(|(n, vs)| (n, format!("{}{sep}{rate}{sep}{}", vs.len(), vs.join(" "))))
+            .collect();
+        Some((ts, out))
+    }
+}
+
+/// One sample of every path's series.
+fn sample(l: &Link, s: &Series, into: &mut Samples) -> Result<(), Error> {
+    for (cnc, p) in l.paths.iter().zip(&l.layout.paths) {
+        let (loads, speeds) = model::sample_path(cnc, s)?;
+        for (a, v) in p.axes.iter().zip(loads) {
+            into.push(format!("{a}load_ts"), v);
+        }
+        for (sp, v) in p.spindles.iter().zip(speeds) {
+            into.push(format!("{sp}speed_ts"), v);
+        }
+    }
+    into.last = Some(shdr::now());
+    Ok(())
+}
+
+/// Reads the tool table of path 1 and hands its CuttingTool assets to the
+/// hub (a CNC without tool life management: none, logged).
+fn read_assets(hub: &Hub, l: &Link) -> Result<(), Error> {
+    let Some(cnc) = l.paths.first() else {
+        return Ok(());
+    };
+    // The offsets' decimals: the first axis's.
+    let decimals = cnc.positions()?.first().map_or(3, |a| a.absolute.decimals);
+    match assets::read(cnc, &hub.name, decimals) {
+        Ok(a) => hub.assets(&shdr::now(), a),
+        // No tool life management: no assets.
+        Err(e @ Error::Cnc { .. }) => eprintln!("focas adapter: {}: no tool table: {e}", hub.name),
+        Err(e) => return Err(e),
+    }
+    Ok(())
+}
+
 /// Polls one CNC every `interval` until `polls` (for ever without).
-fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, polls: Option<u64>) {
+fn poller(hub: Arc<Hub>, cfg: Polling) {
+    let Polling {
+        addr,
+        timeout,
+        interval,
+        polls,
+        extras,
+    } = cfg;
     let mut link: Option<Link> = None;
-    let (mut done, mut frames) = (0u64, 0usize);
+    let mut memos: Vec<PathMemo> = Vec::new();
+    let mut samples = Samples::default();
+    let (mut done, mut frames, mut most) = (0u64, 0usize, 0usize);
+    let mut assets_at: Option<Instant> = None;
     let mut down: Option<String> = None;
     while polls.is_none_or(|n| done < n) {
         let start = Instant::now();
         done += 1;
         if link.is_none() {
-            match connect(&addr, timeout) {
+            match connect(&addr, timeout, &extras) {
                 Ok(l) => {
                     let (items, conds) = names(&l.layout);
                     hub.declare(&items, &conds);
@@ -210,6 +497,9 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
                             .join(" ")
                     );
                     down = None;
+                    memos = l.layout.paths.iter().map(|_| PathMemo::default()).collect();
+                    samples = Samples::default();
+                    assets_at = None;
                     link = Some(l);
                 }
                 Err(e) => {
@@ -226,10 +516,11 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
             let mut values = vec![("avail".to_string(), "AVAILABLE".to_string())];
             let mut conds = Some(Vec::new());
             let mut failed = None;
-            for (cnc, p) in l.paths.iter().zip(&l.layout.paths) {
-                match model::poll_path(cnc, p) {
+            let mut this = 0;
+            for ((cnc, p), memo) in l.paths.iter().zip(&l.layout.paths).zip(&mut memos) {
+                match model::poll_path(cnc, p, &l.layout.systems, &l.layout.custom, memo) {
                     Ok(r) => {
-                        frames += r.frames;
+                        this += r.frames;
                         values.extend(r.values);
                         if r.alarms_unknown {
                             conds = None;
@@ -244,9 +535,28 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
                     }
                 }
             }
+            frames += this;
+            most = most.max(this);
+            // The tool table: on connecting, then every `assets` seconds.
+            let due = match assets_at {
+                None => true,
+                Some(t) => extras.assets > 0 && t.elapsed().as_secs() >= extras.assets,
+            };
+            if failed.is_none() && due {
+                assets_at = Some(Instant::now());
+                if let Err(e) = read_assets(&hub, l) {
+                    failed = Some(e);
+                }
+            }
             let ts = shdr::now();
             match failed {
-                None => hub.update(&ts, values, conds),
+                None => {
+                    hub.update(&ts, values, conds);
+                    if let Some((ts, v)) = extras.series.as_ref().and_then(|s| samples.take(s.rate))
+                    {
+                        hub.series(&ts, v);
+                    }
+                }
                 Some(e) => {
                     eprintln!("focas adapter: {}: {addr}: lost: {e}", hub.name);
                     down = Some(e.to_string());
@@ -264,12 +574,30 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
         } else {
             interval
         };
+        // Until the next poll: the time series' samples, if any.
+        if let (Some(l), Some(s)) = (&link, &extras.series) {
+            let every = Duration::from_secs_f64(1.0 / f64::from(s.rate));
+            let mut next = Instant::now();
+            while next + every <= start + wait {
+                next += every;
+                if let Some(rest) = next.checked_duration_since(Instant::now()) {
+                    std::thread::sleep(rest);
+                }
+                if let Err(e) = sample(l, s, &mut samples) {
+                    eprintln!("focas adapter: {}: {addr}: lost: {e}", hub.name);
+                    down = Some(e.to_string());
+                    link = None;
+                    hub.unavailable(&shdr::now());
+                    break;
+                }
+            }
+        }
         if let Some(rest) = wait.checked_sub(start.elapsed()) {
             std::thread::sleep(rest);
         }
     }
     eprintln!(
-        "focas adapter: {}: {done} polls, {frames} request frames",
+        "focas adapter: {}: {done} polls, {frames} request frames, at most {most} in one",
         hub.name
     );
 }
@@ -277,11 +605,11 @@ fn poller(hub: Arc<Hub>, addr: String, timeout: Duration, interval: Duration, po
 /// Runs the adapter (or prints Devices.xml); `host`, `port` and `timeout`
 /// are the global options'.
 pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Result<(), Fail> {
-    let (devices, interval, heartbeat) = devices(a, host, port)?;
+    let (devices, interval, heartbeat, extras) = devices(a, host, port)?;
     if a.devices_xml {
         let mut found = Vec::new();
         for d in &devices {
-            let l = connect(&d.cnc, timeout).map_err(|e| Fail::Api(e).at(&d.cnc))?;
+            let l = connect(&d.cnc, timeout, &extras).map_err(|e| Fail::Api(e).at(&d.cnc))?;
             found.push((d.name.clone(), l.layout));
         }
         let mut out = std::io::stdout().lock();
@@ -310,14 +638,18 @@ pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Resu
             .stack_size(128 * 1024)
             .spawn(move || h.serve(listener))
             .map_err(|e| Fail::Other(format!("thread: {e}")))?;
-        let polls = a.polls;
-        let every = Duration::from_millis(interval);
-        let cnc = d.cnc.clone();
+        let cfg = Polling {
+            addr: d.cnc.clone(),
+            timeout,
+            interval: Duration::from_millis(interval),
+            polls: a.polls,
+            extras: extras.clone(),
+        };
         pollers.push(
             std::thread::Builder::new()
                 .name("poller".into())
                 .stack_size(512 * 1024)
-                .spawn(move || poller(hub, cnc, timeout, every, polls))
+                .spawn(move || poller(hub, cfg))
                 .map_err(|e| Fail::Other(format!("thread: {e}")))?,
         );
     }
@@ -330,6 +662,43 @@ pub fn run(a: &Args, host: Option<String>, port: u16, timeout: Duration) -> Resu
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn pmc_addresses_and_systems() {
+        let n = |v| pmc_address("x", &PmcAddress::Number(v)).ok();
+        assert_eq!(n(50500), Some((PmcArea::R, 500, false)));
+        assert_eq!(n(-12), Some((PmcArea::G, 12, true)));
+        assert_eq!(n(90003), Some((PmcArea::D, 3, false)));
+        assert_eq!(n(100001), None, "no area 10 in the C++ numbering");
+        let t = |v: &str| pmc_address("x", &PmcAddress::Text(v.into())).ok();
+        assert_eq!(t("R501"), Some((PmcArea::R, 501, false)));
+        assert_eq!(t("Q1"), None);
+        assert_eq!(t("R"), None);
+        let sys = |toml: &str| {
+            toml::from_str::<SystemConfig>(toml)
+                .map_err(|_| ())
+                .and_then(|c| system(c).map_err(|_| ()))
+        };
+        let s =
+            sys("name = \"air\"\ncomponent = \"pneumatic\"\npmc = \"X8.4\"\nactive = 0").unwrap();
+        assert_eq!(
+            (s.component, s.pmc),
+            ("Pneumatic", Some((PmcArea::X, 8, 4, false)))
+        );
+        assert_eq!(s.text, "X8.4");
+        assert!(sys("name = \"coolant\"\npmc = \"R1.8\"").is_err(), "bit 8");
+        assert!(sys("name = \"coolant\"").is_err(), "neither pmc nor alarms");
+        assert!(
+            sys("name = \"vacuum\"\nalarms = [1]").is_err(),
+            "no such component"
+        );
+        assert_eq!(
+            sys("name = \"hydraulics\"\nalarms = [1]")
+                .unwrap()
+                .component,
+            "Hydraulic"
+        );
+    }
 
     #[test]
     fn devices_take_consecutive_ports() {
@@ -348,7 +717,7 @@ mod tests {
             <T as clap::Parser>::parse_from(v).a
         };
         let a = args(&["--cnc", "cnc1", "--cnc", "[::1]:9000", "--cnc", "cnc3"]);
-        let (d, interval, heartbeat) = devices(&a, None, 8193).ok().unwrap();
+        let (d, interval, heartbeat, _) = devices(&a, None, 8193).ok().unwrap();
         let got: Vec<(&str, &str, &str)> = d
             .iter()
             .map(|d| (d.name.as_str(), d.cnc.as_str(), d.listen.as_str()))

@@ -27,6 +27,8 @@ struct State {
     conditions: Conditions,
     agents: Vec<(u64, TcpStream)>,
     next: u64,
+    /// CuttingTool assets: id and document.
+    assets: Vec<(String, String)>,
 }
 
 /// How long a write to an agent may block before it is dropped.
@@ -72,6 +74,30 @@ impl Hub {
     }
 
     /// The CNC is gone: every item UNAVAILABLE.
+    /// Time series sampled up to `ts`: sent every time, even when equal to
+    /// the last.
+    pub fn series(&self, ts: &str, values: Vec<(String, String)>) {
+        let mut s = self.lock();
+        for (n, v) in &values {
+            s.set(n, v);
+        }
+        s.broadcast(ts, &values, &[]);
+    }
+
+    /// The assets now: those new or changed are sent to every agent (and
+    /// all of them to each new agent).
+    pub fn assets(&self, ts: &str, assets: Vec<(String, String)>) {
+        let mut s = self.lock();
+        let mut text = String::new();
+        for (id, doc) in &assets {
+            if !s.assets.iter().any(|(i, d)| i == id && d == doc) {
+                text.push_str(&shdr::asset(ts, id, doc));
+            }
+        }
+        s.assets = assets;
+        s.send(&text);
+    }
+
     pub fn unavailable(&self, ts: &str) {
         let mut s = self.lock();
         let names: Vec<String> = s.values.iter().map(|(n, _)| n.clone()).collect();
@@ -178,7 +204,15 @@ impl State {
 
     /// Every item and condition as lines stamped `ts`.
     fn full(&self, ts: &str) -> String {
-        let mut out = shdr::sample_line(ts, &self.values).unwrap_or_default();
+        // A time series is sent as sampled, not again (unless unavailable).
+        let values: Vec<(String, String)> = (self.values.iter())
+            .filter(|(n, v)| !n.ends_with("_ts") || v == "UNAVAILABLE")
+            .cloned()
+            .collect();
+        let mut out = shdr::sample_line(ts, &values).unwrap_or_default();
+        for (id, doc) in &self.assets {
+            out.push_str(&shdr::asset(ts, id, doc));
+        }
         for c in self.conditions.current() {
             out.push_str(&c.line(ts));
         }
@@ -191,6 +225,10 @@ impl State {
         for c in conds {
             text.push_str(&c.line(ts));
         }
+        self.send(&text);
+    }
+
+    fn send(&mut self, text: &str) {
         if text.is_empty() {
             return;
         }

@@ -33,20 +33,46 @@ pub fn field(v: &str) -> String {
         .to_string()
 }
 
-/// `ts|name|value|name|value...` with a line feed; None for no pairs.
+/// `ts|name|value|name|value...` with a line feed, then a line
+/// `ts|name|field|field...` for each value of several fields ([`SEP`]);
+/// None for no pairs.
 pub fn sample_line(ts: &str, pairs: &[(String, String)]) -> Option<String> {
-    if pairs.is_empty() {
-        return None;
-    }
-    let mut s = ts.to_string();
+    let mut s = String::new();
+    let mut own = String::new();
     for (n, v) in pairs {
-        let _ = write!(s, "|{n}|{}", field(v));
+        if v.contains(SEP) {
+            // Several fields (a message's code and text, a time series'
+            // count, rate and values): a line of its own.
+            let f: Vec<String> = v.split(SEP).map(field).collect();
+            let _ = writeln!(own, "{ts}|{n}|{}", f.join("|"));
+        } else {
+            if s.is_empty() {
+                s.push_str(ts);
+            }
+            let _ = write!(s, "|{n}|{}", field(v));
+        }
     }
-    s.push('\n');
-    Some(s)
+    if !s.is_empty() {
+        s.push('\n');
+    }
+    s.push_str(&own);
+    (!s.is_empty()).then_some(s)
 }
 
-/// A condition's level.
+/// An asset: `ts|@ASSET@|id|CuttingTool|--multiline--MARK`, the document's
+/// lines, then the mark again.
+pub fn asset(ts: &str, id: &str, doc: &str) -> String {
+    const MARK: &str = "--multiline--0FED07ACED";
+    format!(
+        "{ts}|@ASSET@|{}|CuttingTool|{MARK}\n{}\n{MARK}\n",
+        field(id),
+        doc.trim_end()
+    )
+}
+
+/// Separates the fields of a value of several (see [`sample_line`]).
+pub const SEP: char = '\u{1f}';
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Level {
     Normal,
@@ -134,6 +160,14 @@ mod tests {
             "T|mode|AUTOMATIC|block|G01 X1 Y2\n"
         );
         assert_eq!(sample_line("T", &[]), None);
+        let m = vec![
+            ("message".to_string(), format!("2001{SEP}CHECK | COOLANT")),
+            ("mode".to_string(), "MANUAL".to_string()),
+        ];
+        assert_eq!(
+            sample_line("T", &m).unwrap(),
+            "T|mode|MANUAL\nT|message|2001|CHECK   COOLANT\n"
+        );
         let c = Cond {
             name: "Xtravel".into(),
             level: Level::Fault,

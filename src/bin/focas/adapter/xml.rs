@@ -43,6 +43,9 @@ fn data_item(out: &mut String, device: &str, it: &Item, indent: usize) {
     if let Some(u) = it.native_units {
         let _ = write!(out, " nativeUnits=\"{u}\"");
     }
+    if let Some(r) = it.series_rate {
+        let _ = write!(out, " representation=\"TIME_SERIES\" sampleRate=\"{r}\"");
+    }
     out.push_str("/>\n");
 }
 
@@ -62,6 +65,7 @@ pub fn devices_xml(devices: &[(String, Layout)]) -> String {
     o.push_str(
         "<MTConnectDevices xmlns=\"urn:mtconnect.org:MTConnectDevices:1.3\" \
          xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" \
+         xmlns:x=\"urn:fwlib32-rs:focas-adapter\" \
          xsi:schemaLocation=\"urn:mtconnect.org:MTConnectDevices:1.3 \
          http://schemas.mtconnect.org/schemas/MTConnectDevices_1.3.xsd\">\n",
     );
@@ -131,6 +135,26 @@ pub fn devices_xml(devices: &[(String, Layout)]) -> String {
             o.push_str("            </Path>\n");
         }
         o.push_str("          </Components>\n        </Controller>\n");
+        if !layout.systems.is_empty() {
+            let _ = writeln!(
+                o,
+                "        <Systems id=\"{}\" name=\"systems\">\n          <Components>",
+                id(d, "systems")
+            );
+            for s in &layout.systems {
+                let place = Place::System(s.component, s.name.clone());
+                let _ = writeln!(
+                    o,
+                    "            <{} id=\"{}\" name=\"{}\">",
+                    s.component,
+                    id(d, &format!("system_{}", s.name)),
+                    esc(&s.name)
+                );
+                items_of(&mut o, d, &items, &place, 14);
+                let _ = writeln!(o, "            </{}>", s.component);
+            }
+            o.push_str("          </Components>\n        </Systems>\n");
+        }
         o.push_str("      </Components>\n    </Device>\n");
     }
     o.push_str("  </Devices>\n</MTConnectDevices>\n");
