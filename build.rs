@@ -12,6 +12,9 @@
 // The function descriptions (src/spec/): the exported functions of
 // src/ffi/described.rs are written from them.
 #[allow(dead_code)]
+#[path = "src/spec/commands.rs"]
+mod commands;
+#[allow(dead_code)]
 #[path = "src/spec/table/mod.rs"]
 mod table;
 #[allow(dead_code)]

@@ -10,6 +10,8 @@
 //! This file is compiled into build.rs too (`#[path]`): plain data only, no
 //! `crate::` paths.
 
+use super::commands::{CLASS_CNC, CLASS_PMC};
+
 /// A C parameter after the handle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Param {
@@ -72,7 +74,7 @@ pub enum Word {
 #[derive(Debug, Clone, Copy)]
 pub struct Form {
     pub classes: Classes,
-    /// The subpacket class: 1 CNC (the handle's path), 2 PMC (path 1).
+    /// The subpacket class: `CLASS_CNC` (the handle's path), `CLASS_PMC` (path 1).
     pub class: u16,
     pub cmd: u16,
     /// Up to five argument words; the rest are 0.
@@ -343,7 +345,7 @@ pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
 pub const fn every_class(cmd: u16, words: &'static [Word]) -> Form {
     Form {
         classes: Classes::All,
-        class: 1,
+        class: CLASS_CNC,
         cmd,
         words,
     }
@@ -353,7 +355,7 @@ pub const fn every_class(cmd: u16, words: &'static [Word]) -> Form {
 pub const fn pmc(cmd: u16, words: &'static [Word]) -> Form {
     Form {
         classes: Classes::All,
-        class: 2,
+        class: CLASS_PMC,
         cmd,
         words,
     }
