@@ -11,9 +11,13 @@
 
 // The function descriptions (src/spec/): the exported functions of
 // src/ffi/described.rs are written from them.
+// The result codes: the header's `EW_*` block is written from them.
 #[allow(dead_code)]
 #[path = "src/spec/commands.rs"]
 mod commands;
+#[allow(dead_code)]
+#[path = "src/ew.rs"]
+mod ew;
 #[allow(dead_code)]
 #[path = "src/spec/table/mod.rs"]
 mod table;
@@ -160,8 +164,7 @@ fn generate_header(root: &Path, described: &Path) -> String {
         preamble.trim_end()
     ));
 
-    let ew = fs::read_to_string(root.join("src/ew.rs")).expect("read src/ew.rs");
-    let ew_block = ew_defines(&ew);
+    let ew_block = ew_defines(ew::CODES);
     config.after_includes = Some(format!(
         "\n{ew_block}\n#ifdef __cplusplus\nnamespace Fwlib32 {{\n#endif  /* __cplusplus */\n"
     ));
@@ -270,15 +273,12 @@ fn generate_ext_header(root: &Path) -> String {
 /// or an entry of src/spec/table/ (`Described`). tests/artifacts.rs checks
 /// the names against the built library's dynamic symbols.
 fn exports_table(root: &Path, funcs: &[types::Func]) -> String {
-    let ew = fs::read_to_string(root.join("src/ew.rs")).expect("read src/ew.rs");
     let ew_value = |name: &str| -> i16 {
-        ew.lines()
-            .find_map(|l| {
-                let rest = l.trim().strip_prefix("pub const ")?.strip_prefix(name)?;
-                let v = rest.strip_prefix(": c_short =")?.split(';').next()?;
-                v.trim().parse().ok()
-            })
+        ew::CODES
+            .iter()
+            .find(|c| c.0 == name)
             .unwrap_or_else(|| panic!("src/ew.rs defines no {name}"))
+            .1
     };
     let mut rows: Vec<(String, String)> = funcs
         .iter()
@@ -350,60 +350,31 @@ fn exports_table(root: &Path, funcs: &[types::Func]) -> String {
     s
 }
 
-/// `pub const EW_NAME: c_short = VALUE; // comment` lines of src/ew.rs, as
-/// `#define EW_NAME (VALUE) /* comment */` (brackets only around negative values,
-/// as FANUC's header has them).
-fn ew_defines(src: &str) -> String {
-    let mut rows = Vec::new();
-    for (n, line) in src.lines().enumerate() {
-        let Some(rest) = line.trim().strip_prefix("pub const EW_") else {
-            continue;
-        };
-        let bad = || {
-            panic!(
-                "src/ew.rs:{}: expected `pub const EW_NAME: c_short = VALUE; // comment`, got `{line}`",
-                n + 1
-            )
-        };
-        let Some((name, rest)) = rest.split_once(':') else {
-            bad()
-        };
-        let Some((ty, rest)) = rest.split_once('=') else {
-            bad()
-        };
-        let Some((value, comment)) = rest.split_once(';') else {
-            bad()
-        };
-        let (name, value) = (format!("EW_{}", name.trim()), value.trim());
-        if ty.trim() != "c_short" || value.parse::<i16>().is_err() {
-            bad();
-        }
-        let comment = comment
-            .trim()
-            .strip_prefix("//")
-            .map(str::trim)
-            .unwrap_or("");
-        if comment.contains("*/") {
-            bad();
-        }
-        let value = if value.starts_with('-') {
-            format!("({value})")
-        } else {
-            value.to_owned()
-        };
-        rows.push((name, value, comment.to_owned()));
-    }
-    assert!(!rows.is_empty(), "src/ew.rs defines no EW_ constants");
+/// The codes of src/ew.rs as `#define EW_NAME (VALUE) /* comment */` lines
+/// (brackets only around negative values, as FANUC's header has them).
+fn ew_defines(codes: &[(&str, i16, &str)]) -> String {
+    assert!(!codes.is_empty(), "src/ew.rs defines no EW_ constants");
+    let rows: Vec<(String, String, String)> = codes
+        .iter()
+        .map(|&(name, value, comment)| {
+            assert!(
+                !comment.is_empty() && !comment.contains("*/"),
+                "src/ew.rs: {name}: its comment must be one C comment's text"
+            );
+            let value = if value < 0 {
+                format!("({value})")
+            } else {
+                value.to_string()
+            };
+            (name.to_owned(), value, comment.to_owned())
+        })
+        .collect();
     let width = rows.iter().map(|r| r.0.len()).max().unwrap_or(0);
     let mut s = String::from("/* Result codes (from src/ew.rs). */\n");
     for (name, value, comment) in rows {
-        let def = format!("#define {name:<width$} {value:>5}");
-        if comment.is_empty() {
-            s.push_str(&def);
-        } else {
-            s.push_str(&format!("{def}  /* {comment} */"));
-        }
-        s.push('\n');
+        s.push_str(&format!(
+            "#define {name:<width$} {value:>5}  /* {comment} */\n"
+        ));
     }
     s
 }

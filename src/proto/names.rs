@@ -1,5 +1,5 @@
 //! Names for what crosses the wire: which FOCAS functions send a command,
-//! and the `EW_*` name of a result code. Read by the simulator's trace and
+//! and the `EW_*` name of a result code (from src/ew.rs). Read by the simulator's trace and
 //! fault injection (a fault can name a function instead of a command).
 //!
 //! Both read the command registry (src/spec/commands.rs): a command several
@@ -84,43 +84,13 @@ pub fn function_commands(name: &str) -> Vec<(u16, u16)> {
     out
 }
 
-/// `EW_*` names of the codes a CNC answers or the library returns (the
-/// first name where FANUC's header gives a code two).
-const EW_NAMES: &[(i16, &str)] = &[
-    (-17, "EW_PROTOCOL"),
-    (-16, "EW_SOCKET"),
-    (-15, "EW_NODLL"),
-    (-8, "EW_HANDLE"),
-    (-7, "EW_VERSION"),
-    (-6, "EW_UNEXP"),
-    (-5, "EW_SYSTEM"),
-    (-2, "EW_RESET"),
-    (-1, "EW_BUSY"),
-    (0, "EW_OK"),
-    (1, "EW_FUNC"),
-    (2, "EW_LENGTH"),
-    (3, "EW_NUMBER"),
-    (4, "EW_ATTRIB"),
-    (5, "EW_DATA"),
-    (6, "EW_NOOPT"),
-    (7, "EW_PROT"),
-    (8, "EW_OVRFLOW"),
-    (9, "EW_PARAM"),
-    (10, "EW_BUFFER"),
-    (11, "EW_PATH"),
-    (12, "EW_MODE"),
-    (13, "EW_REJECT"),
-    (14, "EW_DTSRVR"),
-    (15, "EW_ALARM"),
-    (16, "EW_STOP"),
-    (17, "EW_PASSWD"),
-    (18, "EW_PMC"),
-    (19, "EW_PMCHANDLE"),
-];
-
-/// The `EW_*` name of `code`, if it has one here.
+/// The `EW_*` name of `code` (src/ew.rs; the first name where FANUC's
+/// header gives a code two), if it has one.
 pub fn ew_name(code: i16) -> Option<&'static str> {
-    EW_NAMES.iter().find(|(c, _)| *c == code).map(|(_, n)| *n)
+    crate::ew::CODES
+        .iter()
+        .find(|(_, c, _)| *c == code)
+        .map(|(n, _, _)| *n)
 }
 
 /// The code named `name` (`"EW_NOOPT"`, or without the prefix: `"noopt"`).
@@ -131,7 +101,10 @@ pub fn ew_code(name: &str) -> Option<i16> {
     } else {
         format!("EW_{up}")
     };
-    EW_NAMES.iter().find(|(_, n)| *n == full).map(|(c, _)| *c)
+    crate::ew::CODES
+        .iter()
+        .find(|(n, _, _)| *n == full)
+        .map(|(_, c, _)| *c)
 }
 
 #[cfg(test)]

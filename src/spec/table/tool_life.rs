@@ -4,6 +4,7 @@ use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
+use crate::ew::EW_ATTRIB;
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -98,7 +99,7 @@ pub const FUNCS: &[Func] = &[
             arg: 0,
             lo: -32768,
             hi: 32,
-            code: 4,
+            code: EW_ATTRIB,
         }],
         forms: &[every_class(cmd::RDWKCDSHFT, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I16)],
