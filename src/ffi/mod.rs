@@ -5,6 +5,7 @@ pub mod absent;
 pub mod alarm;
 pub mod described;
 pub mod download;
+pub mod exported;
 pub mod exports;
 pub mod ext;
 pub mod folder;
