@@ -3,14 +3,18 @@
 // --- alarm ---
 
 use super::program::low16;
-use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
+use super::{element, ffi_boundary, ffi_read, nonnull, put, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
 use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
 use crate::proto::open::CncClass;
-use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3};
-use std::os::raw::{c_long, c_short, c_ushort};
+use crate::types::{
+    ALMINFO, ODBAHIS, ODBAHIS_ALM, ODBAHIS2, ODBAHIS2_ALM, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG,
+    OPMSG3,
+};
+use std::mem::offset_of;
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// Reads the alarm status bits; `data` = their low 16 bits.
 ///
@@ -352,23 +356,33 @@ pub unsafe extern "C" fn cnc_rdalmhistry(
         }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
-        let n = his_fit(length, 6, 48, recs.len())?;
+        let n = his_fit(
+            length,
+            offset_of!(ODBAHIS, alm_his),
+            size_of::<ODBAHIS_ALM>(),
+            recs.len(),
+        )?;
         unsafe {
-            put_at(out, 0, s_number);
-            put_at(out, 4, s_number.wrapping_add(n as u16).wrapping_sub(1));
+            put_member!(out, ODBAHIS, s_no, s_number);
+            put_member!(
+                out,
+                ODBAHIS,
+                e_no,
+                s_number.wrapping_add(n as u16).wrapping_sub(1)
+            );
             for (i, r) in recs[..n].iter().enumerate() {
-                let o = 6 + 48 * i;
-                put_at(out, o + 2, r.alm_grp);
-                put_at(out, o + 4, r.alm_no as i16);
-                put_at(out, o + 6, r.axis as u8);
-                put_at(out, o + 7, r.year_his());
-                put_at(out, o + 8, r.month as u8);
-                put_at(out, o + 9, r.day as u8);
-                put_at(out, o + 10, r.hour as u8);
-                put_at(out, o + 11, r.minute as u8);
-                put_at(out, o + 12, r.second as u8);
-                put_at(out, o + 14, r.msg_len as i16);
-                put_at(out, o + 16, r.msg);
+                let o = element!(out, ODBAHIS, alm_his[i]);
+                put_member!(o, ODBAHIS_ALM, alm_grp, r.alm_grp);
+                put_member!(o, ODBAHIS_ALM, alm_no, r.alm_no as i16);
+                put_member!(o, ODBAHIS_ALM, axis_no, r.axis as c_char);
+                put_member!(o, ODBAHIS_ALM, year, r.year_his() as c_char);
+                put_member!(o, ODBAHIS_ALM, month, r.month as c_char);
+                put_member!(o, ODBAHIS_ALM, day, r.day as c_char);
+                put_member!(o, ODBAHIS_ALM, hour, r.hour as c_char);
+                put_member!(o, ODBAHIS_ALM, minute, r.minute as c_char);
+                put_member!(o, ODBAHIS_ALM, second, r.second as c_char);
+                put_member!(o, ODBAHIS_ALM, len_msg, r.msg_len as i16);
+                put_member!(o, ODBAHIS_ALM, alm_msg, r.msg.map(|b| b as c_char));
             }
         }
         Ok(())
@@ -400,23 +414,33 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
         }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
-        let n = his_fit(length, 4, 52, recs.len())?;
+        let n = his_fit(
+            length,
+            offset_of!(ODBAHIS2, alm_his),
+            size_of::<ODBAHIS2_ALM>(),
+            recs.len(),
+        )?;
         unsafe {
-            put_at(out, 0, s_number);
-            put_at(out, 2, s_number.wrapping_add(n as u16).wrapping_sub(1));
+            put_member!(out, ODBAHIS2, s_no, s_number);
+            put_member!(
+                out,
+                ODBAHIS2,
+                e_no,
+                s_number.wrapping_add(n as u16).wrapping_sub(1)
+            );
             for (i, r) in recs[..n].iter().enumerate() {
-                let o = 4 + 52 * i;
-                put_at(out, o, r.alm_grp);
-                put_at(out, o + 2, r.alm_no as i16);
-                put_at(out, o + 4, r.axis as i16);
-                put_at(out, o + 6, r.year_his2());
-                put_at(out, o + 8, r.month as i16);
-                put_at(out, o + 10, r.day as i16);
-                put_at(out, o + 12, r.hour as i16);
-                put_at(out, o + 14, r.minute as i16);
-                put_at(out, o + 16, r.second as i16);
-                put_at(out, o + 18, r.msg_len as i16);
-                put_at(out, o + 20, r.msg);
+                let o = element!(out, ODBAHIS2, alm_his[i]);
+                put_member!(o, ODBAHIS2_ALM, alm_grp, r.alm_grp);
+                put_member!(o, ODBAHIS2_ALM, alm_no, r.alm_no as i16);
+                put_member!(o, ODBAHIS2_ALM, axis_no, r.axis as i16);
+                put_member!(o, ODBAHIS2_ALM, year, r.year_his2());
+                put_member!(o, ODBAHIS2_ALM, month, r.month as i16);
+                put_member!(o, ODBAHIS2_ALM, day, r.day as i16);
+                put_member!(o, ODBAHIS2_ALM, hour, r.hour as i16);
+                put_member!(o, ODBAHIS2_ALM, minute, r.minute as i16);
+                put_member!(o, ODBAHIS2_ALM, second, r.second as i16);
+                put_member!(o, ODBAHIS2_ALM, len_msg, r.msg_len as i16);
+                put_member!(o, ODBAHIS2_ALM, alm_msg, r.msg.map(|b| b as c_char));
             }
         }
         Ok(())
