@@ -10,8 +10,8 @@ use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
 use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
 use crate::proto::open::CncClass;
 use crate::types::{
-    ALMINFO, ODBAHIS, ODBAHIS_ALM, ODBAHIS2, ODBAHIS2_ALM, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG,
-    OPMSG3,
+    ALMINFO, ALMINFO_alm1_rec, ALMINFO_alm2_rec, LONG, ODBAHIS, ODBAHIS_ALM, ODBAHIS2,
+    ODBAHIS2_ALM, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3,
 };
 use std::mem::offset_of;
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
@@ -70,16 +70,21 @@ unsafe fn read_almmsg<const N: usize>(
         Err(e) => return Err(e),
     };
     let n = recs.len().min(want as usize);
-    let size = 12 + N;
+    // ODBALMMSG and ODBALMMSG2 differ only in their text's length.
+    const _: () = assert!(
+        offset_of!(ODBALMMSG, msg_len) == offset_of!(ODBALMMSG2, msg_len)
+            && offset_of!(ODBALMMSG, alm_msg) == offset_of!(ODBALMMSG2, alm_msg)
+    );
+    let text = offset_of!(ODBALMMSG, alm_msg);
     for (i, r) in recs.iter().take(n).enumerate() {
-        let at = unsafe { out.add(i * size) };
+        let at = unsafe { out.add(i * (text + N)) };
         unsafe {
-            put(at.cast::<i32>(), r.alm_no);
-            put(at.add(4).cast::<c_short>(), low16(r.kind));
-            put(at.add(6).cast::<c_short>(), low16(r.axis));
-            put(at.add(8).cast::<c_short>(), 0);
-            put(at.add(10).cast::<c_short>(), low16(r.msg_len));
-            std::ptr::copy_nonoverlapping(r.msg.as_ptr(), at.add(12), N);
+            put_member!(at, ODBALMMSG, alm_no, r.alm_no);
+            put_member!(at, ODBALMMSG, r#type, low16(r.kind));
+            put_member!(at, ODBALMMSG, axis, low16(r.axis));
+            put_member!(at, ODBALMMSG, dummy, 0);
+            put_member!(at, ODBALMMSG, msg_len, low16(r.msg_len));
+            std::ptr::copy_nonoverlapping(r.msg.as_ptr(), at.add(text), N);
         }
     }
     unsafe { put(num, n as c_short) };
@@ -147,11 +152,22 @@ pub unsafe extern "C" fn cnc_rdalminfo(
     ffi_read!("cnc_rdalminfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(almmsg)?.cast::<u8>();
-        if length <= 4 {
+        // The records, then the end mark (a LONG -1) right after the last.
+        let end = size_of::<LONG>();
+        if i32::from(length) <= end as i32 {
             return Err(Error::local(EW_LENGTH, "length must be more than 4"));
         }
-        let rec = if r#type == 0 { 8 } else { 40 };
-        let fit = (length as usize - 4) / rec;
+        // The records of type 0 have no text: the first members alike.
+        const _: () = assert!(
+            offset_of!(ALMINFO_alm1_rec, axis) == offset_of!(ALMINFO_alm2_rec, axis)
+                && offset_of!(ALMINFO_alm1_rec, alm_no) == offset_of!(ALMINFO_alm2_rec, alm_no)
+        );
+        let rec = if r#type == 0 {
+            size_of::<ALMINFO_alm1_rec>()
+        } else {
+            size_of::<ALMINFO_alm2_rec>()
+        };
+        let fit = (length as usize - end) / rec;
         if fit == 0 {
             return Err(Error::local(EW_LENGTH, "length holds no record"));
         }
@@ -176,11 +192,11 @@ pub unsafe extern "C" fn cnc_rdalminfo(
         for (i, r) in recs.iter().take(n).enumerate() {
             let at = unsafe { out.add(i * rec) };
             unsafe {
-                put(at.cast::<i32>(), i32::from(low16(r.axis)));
-                put(at.add(4).cast::<c_short>(), low16(r.alm_no));
+                put_member!(at, ALMINFO_alm2_rec, axis, i32::from(low16(r.axis)));
+                put_member!(at, ALMINFO_alm2_rec, alm_no, low16(r.alm_no));
                 if r#type != 0 {
-                    put(at.add(6).cast::<c_short>(), low16(r.msg_len));
-                    std::ptr::copy_nonoverlapping(r.msg.as_ptr(), at.add(8), 32);
+                    put_member!(at, ALMINFO_alm2_rec, msg_len, low16(r.msg_len));
+                    put_member!(at, ALMINFO_alm2_rec, alm_msg, r.msg.map(|b| b as c_char));
                 }
             }
         }

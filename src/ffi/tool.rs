@@ -293,7 +293,7 @@ pub unsafe extern "C" fn cnc_rdtool(
             empty = 0;
             for r in &recs {
                 // SAFETY: `got` < `*num`, the caller's number of records.
-                unsafe { put_mng(out.add(140 * got as usize), &r.0) };
+                unsafe { put_mng(out.add(size_of::<IODBTLMNG>() * got as usize), &r.0) };
                 got += 1;
             }
             top += recs.len() as i32;
