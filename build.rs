@@ -7,10 +7,28 @@
 //!   `include/fwlib32.h` when `FWLIB32_UPDATE_HEADER=1`), with the `EW_*` block
 //!   generated here from src/ew.rs;
 //! * writes the table of every exported function and how it is made
-//!   (`$OUT_DIR/exports.rs`, `fwlib32::ffi::exports`), from the same sources.
+//!   (`$OUT_DIR/exports.rs`, `fwlib32::ffi::exports`), from the lists of
+//!   src/ffi/exported.rs and the table.
+//!
+//! Its inputs are data it includes (`#[path]`: src/ew.rs, src/ffi/exported.rs,
+//! src/spec/), and the sources cbindgen reads; the one text it reads itself
+//! is the names of the C types of src/types/, which cbindgen declares even
+//! where no function uses them.
 
-// The function descriptions (src/spec/): the exported functions of
-// src/ffi/described.rs are written from them.
+// The data build.rs writes code from: the function descriptions
+// (src/spec/, with the command registry they name), whose exported
+// functions src/ffi/described.rs includes; the result codes (src/ew.rs),
+// the header's `EW_*` block; the functions src/ffi/ exports by hand
+// (src/ffi/exported.rs), the export table.
+#[allow(dead_code)]
+#[path = "src/spec/commands.rs"]
+mod commands;
+#[allow(dead_code)]
+#[path = "src/ew.rs"]
+mod ew;
+#[allow(dead_code)]
+#[path = "src/ffi/exported.rs"]
+mod exported;
 #[allow(dead_code)]
 #[path = "src/spec/table/mod.rs"]
 mod table;
@@ -53,10 +71,7 @@ fn main() {
     let described = out_dir.join("described.rs");
     write_if_changed(&described, &described_exports(table::FUNCS));
 
-    write_if_changed(
-        &out_dir.join("exports.rs"),
-        &exports_table(&manifest_dir, table::FUNCS),
-    );
+    write_if_changed(&out_dir.join("exports.rs"), &exports_table(table::FUNCS));
 
     let header = generate_header(&manifest_dir, &described);
     let generated = out_dir.join("fwlib32.h");
@@ -157,8 +172,7 @@ fn generate_header(root: &Path, described: &Path) -> String {
         preamble.trim_end()
     ));
 
-    let ew = fs::read_to_string(root.join("src/ew.rs")).expect("read src/ew.rs");
-    let ew_block = ew_defines(&ew);
+    let ew_block = ew_defines(ew::CODES);
     config.after_includes = Some(format!(
         "\n{ew_block}\n#ifdef __cplusplus\nnamespace Fwlib32 {{\n#endif  /* __cplusplus */\n"
     ));
@@ -183,7 +197,10 @@ fn generate_header(root: &Path, described: &Path) -> String {
     }
 
     // Our fwlib_* extensions go into fwlib32_ext.h only.
-    config.export.exclude.extend(ext_functions(root));
+    config
+        .export
+        .exclude
+        .extend(exported::EXTENSIONS.iter().map(|n| n.to_string()));
 
     let mut out = Vec::new();
     cbindgen::Builder::new()
@@ -210,16 +227,6 @@ fn generate_header(root: &Path, described: &Path) -> String {
 
 const EXT_SRC: &str = "src/ffi/ext.rs";
 const EXT_GUARD: &str = "_FWLIB32_EXT_H";
-
-/// The names of the `fwlib_*` functions of src/ffi/ext.rs.
-fn ext_functions(root: &Path) -> Vec<String> {
-    let src = fs::read_to_string(root.join(EXT_SRC)).expect("read src/ffi/ext.rs");
-    src.lines()
-        .filter_map(|l| l.split("extern \"C\" fn ").nth(1))
-        .map(|r| r.split('(').next().unwrap_or("").trim().to_string())
-        .filter(|n| n.starts_with("fwlib_"))
-        .collect()
-}
 
 /// include/fwlib32_ext.h: the `fwlib_*` functions of src/ffi/ext.rs, after
 /// `#include "fwlib32.h"`.
@@ -260,85 +267,45 @@ fn generate_ext_header(root: &Path) -> String {
 }
 
 /// `fwlib32::ffi::exports::EXPORTS`: every function the library exports, by
-/// name, and how it is made: a `pub ... extern "C" fn` of src/ffi/<area>.rs
-/// (`Written`), of src/ffi/absent.rs (`NotOnEthernet`, with the `EW_*` code
-/// it answers: `EW_VERSION` where its body calls `not_on_ethernet`, else the
-/// first `EW_*` constant its body names), of src/ffi/ext.rs (`Extension`),
-/// or an entry of src/spec/table/ (`Described`). tests/artifacts/artifacts.rs checks
-/// the names against the built library's dynamic symbols.
-fn exports_table(root: &Path, funcs: &[types::Func]) -> String {
-    let ew = fs::read_to_string(root.join("src/ew.rs")).expect("read src/ew.rs");
-    let ew_value = |name: &str| -> i16 {
-        ew.lines()
-            .find_map(|l| {
-                let rest = l.trim().strip_prefix("pub const ")?.strip_prefix(name)?;
-                let v = rest.strip_prefix(": c_short =")?.split(';').next()?;
-                v.trim().parse().ok()
-            })
-            .unwrap_or_else(|| panic!("src/ew.rs defines no {name}"))
-    };
+/// name, and how it is made: written by hand in src/ffi/<area>.rs
+/// (`Written`), answering a code without traffic (`NotOnEthernet`, from
+/// src/ffi/absent.rs), one of our extensions (`Extension`, src/ffi/ext.rs),
+/// all three listed in src/ffi/exported.rs; or an entry of src/spec/table/
+/// (`Described`). tests/artifacts/artifacts.rs checks the names against the built
+/// library's dynamic symbols.
+fn exports_table(funcs: &[types::Func]) -> String {
     let mut rows: Vec<(String, String)> = funcs
         .iter()
         .map(|f| (f.name.to_string(), "How::Described".to_string()))
         .collect();
-    let mut files: Vec<PathBuf> = fs::read_dir(root.join("src/ffi"))
-        .expect("read src/ffi")
-        .map(|e| e.expect("read src/ffi").path())
-        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-        .collect();
-    files.sort();
-    for f in files {
-        let area = f.file_stem().unwrap().to_string_lossy().into_owned();
-        let text = fs::read_to_string(&f).expect("read src/ffi/*.rs");
-        let lines: Vec<&str> = text.lines().collect();
-        let starts: Vec<(usize, String)> = lines
-            .iter()
-            .enumerate()
-            .filter(|(_, l)| l.trim_start().starts_with("pub "))
-            .filter_map(|(i, l)| {
-                let rest = l.split_once("extern \"C\" fn ")?.1;
-                let name: String = rest
-                    .chars()
-                    .take_while(|c| c.is_alphanumeric() || *c == '_')
-                    .collect();
-                Some((i, name))
-            })
-            .collect();
-        for (k, (at, name)) in starts.iter().enumerate() {
-            let end = starts.get(k + 1).map_or(lines.len(), |s| s.0);
-            let how = match area.as_str() {
-                "absent" => {
-                    let body = lines[*at..end].join("\n");
-                    let code = if body.contains("not_on_ethernet(") {
-                        "EW_VERSION".to_string()
-                    } else {
-                        let from = body.find("EW_").unwrap_or_else(|| {
-                            panic!("src/ffi/absent.rs: {name} names no EW_* code")
-                        });
-                        body[from..]
-                            .chars()
-                            .take_while(|c| {
-                                c.is_ascii_uppercase() || c.is_ascii_digit() || *c == '_'
-                            })
-                            .collect()
-                    };
-                    format!(
-                        "How::NotOnEthernet {{ code: {}, ew: \"{code}\" }}",
-                        ew_value(&code)
-                    )
-                }
-                "ext" => "How::Extension".to_string(),
-                a => format!("How::Written {{ area: \"{a}\" }}"),
-            };
-            rows.push((name.clone(), how));
+    for (area, names) in exported::WRITTEN {
+        for n in *names {
+            rows.push((
+                n.to_string(),
+                format!("How::Written {{ area: \"{area}\" }}"),
+            ));
         }
+    }
+    for (name, code) in exported::ABSENT {
+        let ew = ew::CODES
+            .iter()
+            .find(|c| c.1 == *code)
+            .unwrap_or_else(|| panic!("src/ffi/exported.rs: {name}: {code} is no EW_* code"))
+            .0;
+        rows.push((
+            name.to_string(),
+            format!("How::NotOnEthernet {{ code: {code}, ew: \"{ew}\" }}"),
+        ));
+    }
+    for n in exported::EXTENSIONS {
+        rows.push((n.to_string(), "How::Extension".to_string()));
     }
     rows.sort();
     for w in rows.windows(2) {
         assert!(w[0].0 != w[1].0, "{} is exported twice", w[0].0);
     }
     let mut s = String::from(
-        "// GENERATED by build.rs from src/ffi/*.rs and src/spec/table/.\npub const EXPORTS: &[Export] = &[\n",
+        "// GENERATED by build.rs from src/ffi/exported.rs and src/spec/table/.\npub const EXPORTS: &[Export] = &[\n",
     );
     for (name, how) in rows {
         s.push_str(&format!("    Export {{ name: \"{name}\", how: {how} }},\n"));
@@ -347,60 +314,31 @@ fn exports_table(root: &Path, funcs: &[types::Func]) -> String {
     s
 }
 
-/// `pub const EW_NAME: c_short = VALUE; // comment` lines of src/ew.rs, as
-/// `#define EW_NAME (VALUE) /* comment */` (brackets only around negative values,
-/// as FANUC's header has them).
-fn ew_defines(src: &str) -> String {
-    let mut rows = Vec::new();
-    for (n, line) in src.lines().enumerate() {
-        let Some(rest) = line.trim().strip_prefix("pub const EW_") else {
-            continue;
-        };
-        let bad = || {
-            panic!(
-                "src/ew.rs:{}: expected `pub const EW_NAME: c_short = VALUE; // comment`, got `{line}`",
-                n + 1
-            )
-        };
-        let Some((name, rest)) = rest.split_once(':') else {
-            bad()
-        };
-        let Some((ty, rest)) = rest.split_once('=') else {
-            bad()
-        };
-        let Some((value, comment)) = rest.split_once(';') else {
-            bad()
-        };
-        let (name, value) = (format!("EW_{}", name.trim()), value.trim());
-        if ty.trim() != "c_short" || value.parse::<i16>().is_err() {
-            bad();
-        }
-        let comment = comment
-            .trim()
-            .strip_prefix("//")
-            .map(str::trim)
-            .unwrap_or("");
-        if comment.contains("*/") {
-            bad();
-        }
-        let value = if value.starts_with('-') {
-            format!("({value})")
-        } else {
-            value.to_owned()
-        };
-        rows.push((name, value, comment.to_owned()));
-    }
-    assert!(!rows.is_empty(), "src/ew.rs defines no EW_ constants");
+/// The codes of src/ew.rs as `#define EW_NAME (VALUE) /* comment */` lines
+/// (brackets only around negative values, as FANUC's header has them).
+fn ew_defines(codes: &[(&str, i16, &str)]) -> String {
+    assert!(!codes.is_empty(), "src/ew.rs defines no EW_ constants");
+    let rows: Vec<(String, String, String)> = codes
+        .iter()
+        .map(|&(name, value, comment)| {
+            assert!(
+                !comment.is_empty() && !comment.contains("*/"),
+                "src/ew.rs: {name}: its comment must be one C comment's text"
+            );
+            let value = if value < 0 {
+                format!("({value})")
+            } else {
+                value.to_string()
+            };
+            (name.to_owned(), value, comment.to_owned())
+        })
+        .collect();
     let width = rows.iter().map(|r| r.0.len()).max().unwrap_or(0);
     let mut s = String::from("/* Result codes (from src/ew.rs). */\n");
     for (name, value, comment) in rows {
-        let def = format!("#define {name:<width$} {value:>5}");
-        if comment.is_empty() {
-            s.push_str(&def);
-        } else {
-            s.push_str(&format!("{def}  /* {comment} */"));
-        }
-        s.push('\n');
+        s.push_str(&format!(
+            "#define {name:<width$} {value:>5}  /* {comment} */\n"
+        ));
     }
     s
 }

@@ -557,7 +557,7 @@ mod tests {
         let sub = |n: usize| ReqSub {
             class: 1,
             path: 1,
-            cmd: 0x1234,
+            cmd: crate::proto::cmd::STATINFO,
             args: [0; 5],
             payload: vec![7; n],
         };

@@ -7,15 +7,24 @@
 use super::ffi_boundary;
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_MMCSYS, EW_VERSION};
 use crate::types::{ODBALMMSG3, ODBSPDLNAME, PRGPNT};
 use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort, c_void};
 
-/// The answer of every function here: the handle checked, then EW_VERSION.
-fn not_on_ethernet(h: c_ushort) -> Result<()> {
+/// The code function `name` answers (src/ffi/exported.rs).
+fn code(name: &str) -> c_short {
+    super::exported::ABSENT
+        .iter()
+        .find(|a| a.0 == name)
+        .unwrap_or_else(|| panic!("{name} is not listed in src/ffi/exported.rs"))
+        .1
+}
+
+/// The answer of function `name` (on a handle): the handle checked, then
+/// its code.
+fn not_on_ethernet(name: &str, h: c_ushort) -> Result<()> {
     handles::get(h)?;
     Err(Error::local(
-        EW_VERSION,
+        code(name),
         "not available on an Ethernet connection (as FANUC's library)",
     ))
 }
@@ -31,7 +40,9 @@ pub unsafe extern "C" fn cnc_rdexecpt(
     pnext: *mut PRGPNT,
 ) -> c_short {
     let _ = (pact, pnext);
-    ffi_boundary!("cnc_rdexecpt", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_rdexecpt", {
+        not_on_ethernet("cnc_rdexecpt", FlibHndl)
+    })
 }
 
 /// Reads program lines: HSSB only; `EW_VERSION` (-7) on Ethernet.
@@ -48,14 +59,18 @@ pub unsafe extern "C" fn cnc_rdprogline(
     data_len: *mut c_ulong,
 ) -> c_short {
     let _ = (prog_no, line_no, prog_data, line_len, data_len);
-    ffi_boundary!("cnc_rdprogline", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_rdprogline", {
+        not_on_ethernet("cnc_rdprogline", FlibHndl)
+    })
 }
 
 /// Starts reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_svdtstartrd(FlibHndl: c_ushort, axis: c_short) -> c_short {
     let _ = axis;
-    ffi_boundary!("cnc_svdtstartrd", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_svdtstartrd", {
+        not_on_ethernet("cnc_svdtstartrd", FlibHndl)
+    })
 }
 
 /// Reads servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
@@ -70,13 +85,17 @@ pub unsafe extern "C" fn cnc_svdtrddata(
     data: *mut c_void,
 ) -> c_short {
     let _ = (stat, length, data);
-    ffi_boundary!("cnc_svdtrddata", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_svdtrddata", {
+        not_on_ethernet("cnc_svdtrddata", FlibHndl)
+    })
 }
 
 /// Ends reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
 #[unsafe(no_mangle)]
 pub extern "C" fn cnc_svdtendrd(FlibHndl: c_ushort) -> c_short {
-    ffi_boundary!("cnc_svdtendrd", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_svdtendrd", {
+        not_on_ethernet("cnc_svdtendrd", FlibHndl)
+    })
 }
 
 /// Reads spindle names (multi-path form): `EW_VERSION` (-7) on Ethernet.
@@ -90,7 +109,9 @@ pub unsafe extern "C" fn cnc_rdspdlnamem(
     spdlname: *mut ODBSPDLNAME,
 ) -> c_short {
     let _ = (data_num, spdlname);
-    ffi_boundary!("cnc_rdspdlnamem", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_rdspdlnamem", {
+        not_on_ethernet("cnc_rdspdlnamem", FlibHndl)
+    })
 }
 
 /// Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on Ethernet.
@@ -105,7 +126,9 @@ pub unsafe extern "C" fn cnc_rdalmmsg3(
     almmsg: *mut ODBALMMSG3,
 ) -> c_short {
     let _ = (r#type, num, almmsg);
-    ffi_boundary!("cnc_rdalmmsg3", { not_on_ethernet(FlibHndl) })
+    ffi_boundary!("cnc_rdalmmsg3", {
+        not_on_ethernet("cnc_rdalmmsg3", FlibHndl)
+    })
 }
 
 /// Allocates a handle on FANUC's HSSB (optical fibre) driver, which an
@@ -119,7 +142,7 @@ pub unsafe extern "C" fn cnc_allclibhndl(FlibHndl: *mut c_ushort) -> c_short {
     let _ = FlibHndl;
     ffi_boundary!("cnc_allclibhndl", {
         Err(Error::local(
-            EW_MMCSYS,
+            code("cnc_allclibhndl"),
             "no HSSB driver: use cnc_allclibhndl3",
         ))
     })

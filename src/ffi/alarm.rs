@@ -3,14 +3,18 @@
 // --- alarm ---
 
 use super::program::low16;
-use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
+use super::{element, ffi_boundary, ffi_read, nonnull, put, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
 use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
 use crate::proto::open::CncClass;
-use crate::types::{ALMINFO, ODBAHIS, ODBAHIS2, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3};
-use std::os::raw::{c_long, c_short, c_ushort};
+use crate::types::{
+    ALMINFO, ALMINFO_alm1_rec, ALMINFO_alm2_rec, LONG, ODBAHIS, ODBAHIS_ALM, ODBAHIS2,
+    ODBAHIS2_ALM, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3,
+};
+use std::mem::offset_of;
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// Reads the alarm status bits; `data` = their low 16 bits.
 ///
@@ -66,16 +70,21 @@ unsafe fn read_almmsg<const N: usize>(
         Err(e) => return Err(e),
     };
     let n = recs.len().min(want as usize);
-    let size = 12 + N;
+    // ODBALMMSG and ODBALMMSG2 differ only in their text's length.
+    const _: () = assert!(
+        offset_of!(ODBALMMSG, msg_len) == offset_of!(ODBALMMSG2, msg_len)
+            && offset_of!(ODBALMMSG, alm_msg) == offset_of!(ODBALMMSG2, alm_msg)
+    );
+    let text = offset_of!(ODBALMMSG, alm_msg);
     for (i, r) in recs.iter().take(n).enumerate() {
-        let at = unsafe { out.add(i * size) };
+        let at = unsafe { out.add(i * (text + N)) };
         unsafe {
-            put(at.cast::<i32>(), r.alm_no);
-            put(at.add(4).cast::<c_short>(), low16(r.kind));
-            put(at.add(6).cast::<c_short>(), low16(r.axis));
-            put(at.add(8).cast::<c_short>(), 0);
-            put(at.add(10).cast::<c_short>(), low16(r.msg_len));
-            std::ptr::copy_nonoverlapping(r.msg.as_ptr(), at.add(12), N);
+            put_member!(at, ODBALMMSG, alm_no, r.alm_no);
+            put_member!(at, ODBALMMSG, r#type, low16(r.kind));
+            put_member!(at, ODBALMMSG, axis, low16(r.axis));
+            put_member!(at, ODBALMMSG, dummy, 0);
+            put_member!(at, ODBALMMSG, msg_len, low16(r.msg_len));
+            std::ptr::copy_nonoverlapping(r.msg.as_ptr(), at.add(text), N);
         }
     }
     unsafe { put(num, n as c_short) };
@@ -143,11 +152,22 @@ pub unsafe extern "C" fn cnc_rdalminfo(
     ffi_read!("cnc_rdalminfo", {
         let h = handles::get(FlibHndl)?;
         let out = nonnull(almmsg)?.cast::<u8>();
-        if length <= 4 {
+        // The records, then the end mark (a LONG -1) right after the last.
+        let end = size_of::<LONG>();
+        if i32::from(length) <= end as i32 {
             return Err(Error::local(EW_LENGTH, "length must be more than 4"));
         }
-        let rec = if r#type == 0 { 8 } else { 40 };
-        let fit = (length as usize - 4) / rec;
+        // The records of type 0 have no text: the first members alike.
+        const _: () = assert!(
+            offset_of!(ALMINFO_alm1_rec, axis) == offset_of!(ALMINFO_alm2_rec, axis)
+                && offset_of!(ALMINFO_alm1_rec, alm_no) == offset_of!(ALMINFO_alm2_rec, alm_no)
+        );
+        let rec = if r#type == 0 {
+            size_of::<ALMINFO_alm1_rec>()
+        } else {
+            size_of::<ALMINFO_alm2_rec>()
+        };
+        let fit = (length as usize - end) / rec;
         if fit == 0 {
             return Err(Error::local(EW_LENGTH, "length holds no record"));
         }
@@ -172,11 +192,11 @@ pub unsafe extern "C" fn cnc_rdalminfo(
         for (i, r) in recs.iter().take(n).enumerate() {
             let at = unsafe { out.add(i * rec) };
             unsafe {
-                put(at.cast::<i32>(), i32::from(low16(r.axis)));
-                put(at.add(4).cast::<c_short>(), low16(r.alm_no));
+                put_member!(at, ALMINFO_alm2_rec, axis, i32::from(low16(r.axis)));
+                put_member!(at, ALMINFO_alm2_rec, alm_no, low16(r.alm_no));
                 if r#type != 0 {
-                    put(at.add(6).cast::<c_short>(), low16(r.msg_len));
-                    std::ptr::copy_nonoverlapping(r.msg.as_ptr(), at.add(8), 32);
+                    put_member!(at, ALMINFO_alm2_rec, msg_len, low16(r.msg_len));
+                    put_member!(at, ALMINFO_alm2_rec, alm_msg, r.msg.map(|b| b as c_char));
                 }
             }
         }
@@ -352,23 +372,33 @@ pub unsafe extern "C" fn cnc_rdalmhistry(
         }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
-        let n = his_fit(length, 6, 48, recs.len())?;
+        let n = his_fit(
+            length,
+            offset_of!(ODBAHIS, alm_his),
+            size_of::<ODBAHIS_ALM>(),
+            recs.len(),
+        )?;
         unsafe {
-            put_at(out, 0, s_number);
-            put_at(out, 4, s_number.wrapping_add(n as u16).wrapping_sub(1));
+            put_member!(out, ODBAHIS, s_no, s_number);
+            put_member!(
+                out,
+                ODBAHIS,
+                e_no,
+                s_number.wrapping_add(n as u16).wrapping_sub(1)
+            );
             for (i, r) in recs[..n].iter().enumerate() {
-                let o = 6 + 48 * i;
-                put_at(out, o + 2, r.alm_grp);
-                put_at(out, o + 4, r.alm_no as i16);
-                put_at(out, o + 6, r.axis as u8);
-                put_at(out, o + 7, r.year_his());
-                put_at(out, o + 8, r.month as u8);
-                put_at(out, o + 9, r.day as u8);
-                put_at(out, o + 10, r.hour as u8);
-                put_at(out, o + 11, r.minute as u8);
-                put_at(out, o + 12, r.second as u8);
-                put_at(out, o + 14, r.msg_len as i16);
-                put_at(out, o + 16, r.msg);
+                let o = element!(out, ODBAHIS, alm_his[i]);
+                put_member!(o, ODBAHIS_ALM, alm_grp, r.alm_grp);
+                put_member!(o, ODBAHIS_ALM, alm_no, r.alm_no as i16);
+                put_member!(o, ODBAHIS_ALM, axis_no, r.axis as c_char);
+                put_member!(o, ODBAHIS_ALM, year, r.year_his() as c_char);
+                put_member!(o, ODBAHIS_ALM, month, r.month as c_char);
+                put_member!(o, ODBAHIS_ALM, day, r.day as c_char);
+                put_member!(o, ODBAHIS_ALM, hour, r.hour as c_char);
+                put_member!(o, ODBAHIS_ALM, minute, r.minute as c_char);
+                put_member!(o, ODBAHIS_ALM, second, r.second as c_char);
+                put_member!(o, ODBAHIS_ALM, len_msg, r.msg_len as i16);
+                put_member!(o, ODBAHIS_ALM, alm_msg, r.msg.map(|b| b as c_char));
             }
         }
         Ok(())
@@ -400,23 +430,33 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
         }
         let out = nonnull(alm_hst)?.cast::<u8>();
         let recs = his_call(&h, s_number, e_number)?;
-        let n = his_fit(length, 4, 52, recs.len())?;
+        let n = his_fit(
+            length,
+            offset_of!(ODBAHIS2, alm_his),
+            size_of::<ODBAHIS2_ALM>(),
+            recs.len(),
+        )?;
         unsafe {
-            put_at(out, 0, s_number);
-            put_at(out, 2, s_number.wrapping_add(n as u16).wrapping_sub(1));
+            put_member!(out, ODBAHIS2, s_no, s_number);
+            put_member!(
+                out,
+                ODBAHIS2,
+                e_no,
+                s_number.wrapping_add(n as u16).wrapping_sub(1)
+            );
             for (i, r) in recs[..n].iter().enumerate() {
-                let o = 4 + 52 * i;
-                put_at(out, o, r.alm_grp);
-                put_at(out, o + 2, r.alm_no as i16);
-                put_at(out, o + 4, r.axis as i16);
-                put_at(out, o + 6, r.year_his2());
-                put_at(out, o + 8, r.month as i16);
-                put_at(out, o + 10, r.day as i16);
-                put_at(out, o + 12, r.hour as i16);
-                put_at(out, o + 14, r.minute as i16);
-                put_at(out, o + 16, r.second as i16);
-                put_at(out, o + 18, r.msg_len as i16);
-                put_at(out, o + 20, r.msg);
+                let o = element!(out, ODBAHIS2, alm_his[i]);
+                put_member!(o, ODBAHIS2_ALM, alm_grp, r.alm_grp);
+                put_member!(o, ODBAHIS2_ALM, alm_no, r.alm_no as i16);
+                put_member!(o, ODBAHIS2_ALM, axis_no, r.axis as i16);
+                put_member!(o, ODBAHIS2_ALM, year, r.year_his2());
+                put_member!(o, ODBAHIS2_ALM, month, r.month as i16);
+                put_member!(o, ODBAHIS2_ALM, day, r.day as i16);
+                put_member!(o, ODBAHIS2_ALM, hour, r.hour as i16);
+                put_member!(o, ODBAHIS2_ALM, minute, r.minute as i16);
+                put_member!(o, ODBAHIS2_ALM, second, r.second as i16);
+                put_member!(o, ODBAHIS2_ALM, len_msg, r.msg_len as i16);
+                put_member!(o, ODBAHIS2_ALM, alm_msg, r.msg.map(|b| b as c_char));
             }
         }
         Ok(())

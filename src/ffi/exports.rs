@@ -1,8 +1,9 @@
 //! Every function the library exports, and how each is made: the table
-//! build.rs writes from the same sources as the exports themselves
-//! (src/ffi/*.rs and src/spec/table/), so it cannot drift from the
-//! library. COMPATIBILITY.md (tests/recorded/compat.rs) and `focas compat` read it;
-//! tests/artifacts/artifacts.rs checks it against the built library's symbols.
+//! build.rs writes from src/ffi/exported.rs (the functions written by hand,
+//! which a test checks against src/ffi/*.rs) and src/spec/table/ (the
+//! described ones, which build.rs exports itself). COMPATIBILITY.md
+//! (tests/recorded/compat.rs) and `focas compat` read it; tests/artifacts/artifacts.rs
+//! checks it against the built library's symbols.
 
 /// How an exported function is made.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

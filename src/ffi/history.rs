@@ -2,13 +2,17 @@
 //! history, the operator message histories, alarm history 5 and the pitch
 //! error table.
 
-use super::{ffi_boundary, nonnull, put, put_at};
+use super::{element, ffi_boundary, nonnull, put, put_member};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER, EW_VERSION};
 use crate::proto::history::{self as ph, OpKind, be16, be32};
-use crate::types::{IODBPI, IODBSIG3, ODBAHIS5, ODBHIS, ODBOMHIS, ODBOMHIS2};
-use std::os::raw::{c_short, c_ushort, c_void};
+use crate::types::{
+    IODBPI, IODBSIG3, ODBAHIS5, ODBAHIS5_ALM, ODBHIS, ODBHIS_ALM, ODBHIS_DATA, ODBHIS_DATE,
+    ODBHIS_MDI, ODBHIS_SGN, ODBHIS_TIME, ODBOMHIS, ODBOMHIS2, ODBOMHIS2_OPM,
+};
+use std::mem::offset_of;
+use std::os::raw::{c_char, c_short, c_ushort, c_void};
 
 /// `s_number..=e_number` must be a range (FANUC's library: EW_NUMBER
 /// before any traffic).
@@ -28,20 +32,9 @@ fn fit(length: c_ushort, hdr: usize, rec: usize, n: usize) -> Result<()> {
     Ok(())
 }
 
-/// Writes s_no and e_no (s_no + n - 1) at `at_e`.
-unsafe fn numbers(out: *mut u8, at_e: usize, s: c_ushort, n: usize) {
-    unsafe {
-        put_at(out, 0, s);
-        put_at(out, at_e, s.wrapping_add(n as u16).wrapping_sub(1));
-    }
-}
-
-/// Copies the `n` big-endian i16 at `from` of record `r` to `to` on, as
-/// native shorts.
-unsafe fn shorts(out: *mut u8, to: usize, r: &[u8], from: usize, n: usize) {
-    for k in 0..n {
-        unsafe { put_at(out, to + 2 * k, be16(r, from + 2 * k)) };
-    }
+/// e_no of `n` entries from `s`: s + n - 1 (wrapping, as FANUC's library).
+fn last(s: c_ushort, n: usize) -> c_ushort {
+    s.wrapping_add(n as u16).wrapping_sub(1)
 }
 
 /// Reads the operation history entries `s_number..=e_number` into ODBHIS,
@@ -64,40 +57,49 @@ pub unsafe extern "C" fn cnc_rdophistry(
         let out = nonnull(ophis)?.cast::<u8>();
         range(s_number, e_number)?;
         let recs = h.call(&ph::rdophistry(s_number, e_number))?;
-        fit(length, 6, 8, recs.len())?;
+        fit(
+            length,
+            offset_of!(ODBHIS, data),
+            size_of::<ODBHIS_DATA>(),
+            recs.len(),
+        )?;
         unsafe {
-            numbers(out, 4, s_number, recs.len());
+            put_member!(out, ODBHIS, s_no, s_number);
+            put_member!(out, ODBHIS, e_no, last(s_number, recs.len()));
             for (i, r) in recs.iter().enumerate() {
-                let o = 6 + 8 * i;
+                // One member of the union ODBHIS_DATA, by the record's type.
+                let o = element!(out, ODBHIS, data[i]);
                 let t = be16(r, 2);
-                put_at(out, o, t);
-                let lo = |at: usize| r[at + 1];
+                put_member!(o, ODBHIS_ALM, rec_type, t);
+                let lo = |at: usize| r[at + 1] as c_char;
                 match OpKind::of(t) {
                     OpKind::Mdi => {
-                        put_at(out, o + 2, lo(4));
-                        put_at(out, o + 3, lo(6));
+                        put_member!(o, ODBHIS_MDI, key_code, lo(4));
+                        put_member!(o, ODBHIS_MDI, pw_flag, lo(6));
                     }
                     OpKind::Signal => {
-                        put_at(out, o + 2, lo(8));
-                        put_at(out, o + 3, r[10]);
-                        put_at(out, o + 4, r[11]);
-                        put_at(out, o + 6, be16(r, 6));
+                        put_member!(o, ODBHIS_SGN, sig_name, lo(8));
+                        put_member!(o, ODBHIS_SGN, sig_old, r[10] as c_char);
+                        put_member!(o, ODBHIS_SGN, sig_new, r[11] as c_char);
+                        put_member!(o, ODBHIS_SGN, sig_no, be16(r, 6));
                     }
                     OpKind::Alarm => {
-                        put_at(out, o + 2, be16(r, 10));
-                        put_at(out, o + 4, be16(r, 6));
-                        put_at(out, o + 6, lo(14));
+                        put_member!(o, ODBHIS_ALM, alm_grp, be16(r, 10));
+                        put_member!(o, ODBHIS_ALM, alm_no, be16(r, 6));
+                        put_member!(o, ODBHIS_ALM, axis_no, lo(14));
                     }
                     OpKind::Date => {
-                        put_at(out, o + 2, (be16(r, 4) as u16 % 100) as u8);
-                        for k in 1..4 {
-                            put_at(out, o + 2 + k, lo(4 + 2 * k));
-                        }
+                        let year = (be16(r, 4) as u16 % 100) as u8;
+                        put_member!(o, ODBHIS_DATE, year, year as c_char);
+                        put_member!(o, ODBHIS_DATE, month, lo(6));
+                        put_member!(o, ODBHIS_DATE, day, lo(8));
+                        put_member!(o, ODBHIS_DATE, pw_flag, lo(10));
                     }
                     OpKind::Time => {
-                        for k in 0..4 {
-                            put_at(out, o + 2 + k, lo(4 + 2 * k));
-                        }
+                        put_member!(o, ODBHIS_TIME, hour, lo(4));
+                        put_member!(o, ODBHIS_TIME, minute, lo(6));
+                        put_member!(o, ODBHIS_TIME, second, lo(8));
+                        put_member!(o, ODBHIS_TIME, pw_flag, lo(10));
                     }
                     OpKind::Other => {}
                 }
@@ -215,18 +217,17 @@ pub unsafe extern "C" fn cnc_rdomhistry(
         }
         let recs = h.call(&ph::rdomhistry(s_number, want as u16))?;
         let n = recs.len().min(want);
-        let size = std::mem::size_of::<ODBOMHIS>();
         unsafe {
             for (i, r) in recs[..n].iter().enumerate() {
-                let o = size * i;
-                put_at(out, o, be16(r, 2));
-                put_at(out, o + 2, (be16(r, 4) as u16 % 100) as i16);
-                shorts(out, o + 4, r, 6, 5);
-                put_at(
-                    out,
-                    o + 14,
-                    <[u8; ph::OM_TEXT]>::try_from(&r[20..]).unwrap_or([0; ph::OM_TEXT]),
-                );
+                let o = out.add(size_of::<ODBOMHIS>() * i);
+                put_member!(o, ODBOMHIS, om_no, be16(r, 2));
+                put_member!(o, ODBOMHIS, year, (be16(r, 4) as u16 % 100) as i16);
+                put_member!(o, ODBOMHIS, month, be16(r, 6));
+                put_member!(o, ODBOMHIS, day, be16(r, 8));
+                put_member!(o, ODBOMHIS, hour, be16(r, 10));
+                put_member!(o, ODBOMHIS, minute, be16(r, 12));
+                put_member!(o, ODBOMHIS, second, be16(r, 14));
+                put_member!(o, ODBOMHIS, om_msg, text(&r[20..]));
             }
             put(num, n as u16);
         }
@@ -253,13 +254,26 @@ pub unsafe extern "C" fn cnc_rdomhistry2(
         let out = nonnull(omhis)?.cast::<u8>();
         range(s_number, e_number)?;
         let recs = h.call(&ph::rdomhistry2(s_number, e_number))?;
-        fit(length, 4, ph::OM2_REC, recs.len())?;
+        fit(
+            length,
+            offset_of!(ODBOMHIS2, opm_his),
+            size_of::<ODBOMHIS2_OPM>(),
+            recs.len(),
+        )?;
         unsafe {
-            numbers(out, 2, s_number, recs.len());
+            put_member!(out, ODBOMHIS2, s_no, s_number);
+            put_member!(out, ODBOMHIS2, e_no, last(s_number, recs.len()));
             for (i, r) in recs.iter().enumerate() {
-                shorts(out, 4 + ph::OM2_REC * i, r, 0, 8);
-                let t = <[u8; ph::OM_TEXT]>::try_from(&r[16..]).unwrap_or([0; ph::OM_TEXT]);
-                put_at(out, 4 + ph::OM2_REC * i + 16, t);
+                let o = element!(out, ODBOMHIS2, opm_his[i]);
+                put_member!(o, ODBOMHIS2_OPM, dsp_flg, be16(r, 0));
+                put_member!(o, ODBOMHIS2_OPM, om_no, be16(r, 2));
+                put_member!(o, ODBOMHIS2_OPM, year, be16(r, 4));
+                put_member!(o, ODBOMHIS2_OPM, month, be16(r, 6));
+                put_member!(o, ODBOMHIS2_OPM, day, be16(r, 8));
+                put_member!(o, ODBOMHIS2_OPM, hour, be16(r, 10));
+                put_member!(o, ODBOMHIS2_OPM, minute, be16(r, 12));
+                put_member!(o, ODBOMHIS2_OPM, second, be16(r, 14));
+                put_member!(o, ODBOMHIS2_OPM, ope_msg, text(&r[16..]));
             }
         }
         Ok(())
@@ -291,14 +305,18 @@ pub unsafe extern "C" fn cnc_rdalmhistry5(
         // Two entries an exchange until the range is read or the CNC has
         // no more; each exchange's entries must fit in `length` (FANUC's
         // library: EW_LENGTH, the entries before them written).
-        const SIZE: usize = std::mem::size_of::<crate::types::ODBAHIS5_ALM>();
         let (mut at, mut n) = (s_number, 0);
         loop {
             let asked = if at < e_number { 2 } else { 1 };
             let recs = h.call(&ph::rdalmhistry5(at, e_number))?;
-            fit(length, 4, SIZE, n + recs.len())?;
+            fit(
+                length,
+                offset_of!(ODBAHIS5, alm_his),
+                size_of::<ODBAHIS5_ALM>(),
+                n + recs.len(),
+            )?;
             for r in &recs {
-                unsafe { put_alm5(out.add(4 + SIZE * n), r) };
+                unsafe { put_alm5(element!(out, ODBAHIS5, alm_his[n]), r) };
                 n += 1;
             }
             if recs.len() < asked || usize::from(e_number - at) < asked {
@@ -306,36 +324,57 @@ pub unsafe extern "C" fn cnc_rdalmhistry5(
             }
             at += asked as u16;
         }
-        unsafe { numbers(out, 2, s_number, n) };
+        unsafe {
+            put_member!(out, ODBAHIS5, s_no, s_number);
+            put_member!(out, ODBAHIS5, e_no, last(s_number, n));
+        }
         Ok(())
     })
 }
 
 /// One ODBAHIS5 entry from its 524-byte wire record.
 unsafe fn put_alm5(o: *mut u8, r: &[u8]) {
+    type A = ODBAHIS5_ALM;
     unsafe {
-        put_at(o, 0, be16(r, 6));
-        put_at(o, 2, be16(r, 2));
-        put_at(o, 4, be16(r, 10));
-        shorts(o, 6, r, 12, 6);
-        put_at(o, 18, be16(r, 26));
-        shorts(o, 20, r, 28, 4);
-        std::ptr::copy_nonoverlapping(r.as_ptr().add(36), o.add(28), ph::ALM5_TEXT);
-        // Modal blocks: 10 i32 and 10 flag bytes each, 2 bytes apart.
-        for (wire, at) in [(100, 92), (152, 144)] {
-            for k in 0..10 {
-                put_at(o, at + 4 * k, be32(r, wire + 4 * k));
-            }
-            std::ptr::copy_nonoverlapping(r.as_ptr().add(wire + 40), o.add(at + 40), 10);
+        put_member!(o, A, alm_grp, be16(r, 6));
+        put_member!(o, A, alm_no, be16(r, 2));
+        put_member!(o, A, axis_no, be16(r, 10));
+        put_member!(o, A, year, be16(r, 12));
+        put_member!(o, A, month, be16(r, 14));
+        put_member!(o, A, day, be16(r, 16));
+        put_member!(o, A, hour, be16(r, 18));
+        put_member!(o, A, minute, be16(r, 20));
+        put_member!(o, A, second, be16(r, 22));
+        put_member!(o, A, len_msg, be16(r, 26));
+        put_member!(o, A, pth_no, be16(r, 28));
+        put_member!(o, A, sys_alm, be16(r, 30));
+        put_member!(o, A, dsp_flg, be16(r, 32));
+        put_member!(o, A, axis_num, be16(r, 34));
+        put_member!(o, A, alm_msg, text(&r[36..]));
+        // Modal blocks: 10 i32, then 10 flag bytes.
+        for k in 0..10 {
+            put_member!(o, A, g_modal[k], be32(r, 100 + 4 * k));
+            put_member!(o, A, a_modal[k], be32(r, 152 + 4 * k));
         }
-        // Positions: 32 i32 and 32 digit bytes each.
-        for (wire, at) in [(204, 196), (364, 356)] {
-            for k in 0..32 {
-                put_at(o, at + 4 * k, be32(r, wire + 4 * k));
-            }
-            std::ptr::copy_nonoverlapping(r.as_ptr().add(wire + 128), o.add(at + 128), 32);
+        put_member!(o, A, g_dp, text(&r[140..]));
+        put_member!(o, A, a_dp, text(&r[192..]));
+        // Positions: 32 i32, then 32 digit bytes.
+        for k in 0..32 {
+            put_member!(o, A, abs_pos[k], be32(r, 204 + 4 * k));
+            put_member!(o, A, mcn_pos[k], be32(r, 364 + 4 * k));
         }
+        put_member!(o, A, abs_dp, text(&r[332..]));
+        put_member!(o, A, mcn_dp, text(&r[492..]));
     }
+}
+
+/// The first `N` bytes of `r` as C chars (zeros where `r` is shorter).
+fn text<const N: usize>(r: &[u8]) -> [c_char; N] {
+    let mut t = [0; N];
+    for (d, s) in t.iter_mut().zip(r) {
+        *d = *s as c_char;
+    }
+    t
 }
 
 /// Reads the pitch error compensation points `datano_s..=datano_e` into
@@ -367,9 +406,14 @@ pub unsafe extern "C" fn cnc_rdpitchr(
                 Err(err) if n == 0 => return Err(err),
                 Err(_) => break,
             };
-            fit(length as c_ushort, 6, 1, n + recs.len())?;
+            fit(
+                length as c_ushort,
+                offset_of!(IODBPI, data),
+                size_of::<c_char>(),
+                n + recs.len(),
+            )?;
             for r in &recs {
-                unsafe { put_at(out, 6 + n, r[1]) };
+                unsafe { put_member!(out, IODBPI, data[n], r[1] as c_char) };
                 n += 1;
             }
             if (recs.len() as i32) < (e - at + 1).min(ph::PITCH_CHUNK) {
@@ -378,8 +422,13 @@ pub unsafe extern "C" fn cnc_rdpitchr(
             at += ph::PITCH_CHUNK;
         }
         unsafe {
-            put_at(out, 0, datano_s);
-            put_at(out, 4, datano_s.wrapping_add(n as i16).wrapping_sub(1));
+            put_member!(out, IODBPI, datano_s, datano_s);
+            put_member!(
+                out,
+                IODBPI,
+                datano_e,
+                datano_s.wrapping_add(n as i16).wrapping_sub(1)
+            );
         }
         Ok(())
     })

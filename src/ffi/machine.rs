@@ -1,9 +1,10 @@
 //! Machine data (issue 11): the spindle control signals.
 
-use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at, put_member};
 use crate::client::handles;
 use crate::proto::machine::{CtrlSignals, PrstrInfo};
 use crate::types::{ODBPRS, ODBSPDI, ODBSPDO};
+use std::mem::offset_of;
 use std::os::raw::{c_short, c_ushort};
 
 /// The first signal word of the answer into the caller's 4 bytes (FANUC's
@@ -46,10 +47,16 @@ pub unsafe extern "C" fn cnc_rdctrldo(FlibHndl: c_ushort, spdo: *mut ODBSPDO) ->
 
 /// Where each 0x0043 answer's words go in ODBPRS: rstr_bc, rstr_m,
 /// rstr_t, rstr_s, rstr_b.
-const PRS_WORDS: [usize; 5] = [0x10, 0x14, 0xa0, 0xa8, 0xac];
+const PRS_WORDS: [usize; 5] = [
+    offset_of!(ODBPRS, rstr_bc),
+    offset_of!(ODBPRS, rstr_m),
+    offset_of!(ODBPRS, rstr_t),
+    offset_of!(ODBPRS, rstr_s),
+    offset_of!(ODBPRS, rstr_b),
+];
 /// Where the restart positions go: `dest`, the distances right after the
 /// positions received (FANUC's library packs them).
-const PRS_DEST: usize = 0xb0;
+const PRS_DEST: usize = offset_of!(ODBPRS, dest);
 
 /// Reads the program restart information in one exchange: for the block
 /// counter, M, T, S and B codes the number of values the CNC sent
@@ -75,7 +82,7 @@ pub unsafe extern "C" fn cnc_rdprstrinfo(FlibHndl: c_ushort, prs: *mut ODBPRS) -
             }
         };
         for (k, words) in a.words.iter().enumerate() {
-            unsafe { put_at(out, 4 + 2 * k, words.len() as u16 as i16) };
+            unsafe { put_member!(out, ODBPRS, data_info[k], words.len() as u16 as i16) };
             for (i, v) in words.iter().enumerate() {
                 word(PRS_WORDS[k] + 4 * i, *v);
             }

@@ -5,6 +5,7 @@ pub mod absent;
 pub mod alarm;
 pub mod described;
 pub mod download;
+pub mod exported;
 pub mod exports;
 pub mod ext;
 pub mod folder;
@@ -124,6 +125,51 @@ pub(crate) unsafe fn put<T>(p: *mut T, v: T) {
 /// `base + off .. + size_of::<T>()` must be writable.
 pub(crate) unsafe fn put_at<T>(base: *mut u8, off: usize, v: T) {
     unsafe { put(base.add(off).cast::<T>(), v) }
+}
+
+/// Writes `v` to member `$m` of the `$ty` whose bytes start at `$base` (a
+/// `*mut u8`), unaligned: at the member's offset (`offset_of!`), and `v`
+/// must have the member's type, both checked when the crate compiles.
+/// `$m[k]` writes element `k` of an array member (`k` may pass the
+/// array's declared length where the caller's buffer holds more records).
+/// Use in an `unsafe` block: the member's bytes must be writable.
+macro_rules! put_member {
+    ($base:expr, $ty:ty, $m:ident [$k:expr], $v:expr) => {
+        $crate::ffi::put_at(
+            $base,
+            ::std::mem::offset_of!($ty, $m) + $k * $crate::ffi::elem_size(|s: &$ty| &s.$m),
+            $crate::ffi::of_member(|s: &$ty| &s.$m[0], $v),
+        )
+    };
+    ($base:expr, $ty:ty, $m:ident, $v:expr) => {
+        $crate::ffi::put_at(
+            $base,
+            ::std::mem::offset_of!($ty, $m),
+            $crate::ffi::of_member(|s: &$ty| &s.$m, $v),
+        )
+    };
+}
+pub(crate) use put_member;
+
+/// Where element `k` of array member `$m` of the `$ty` at `$base` (a
+/// `*mut u8`) starts: a record of a caller's array of records, which
+/// `put_member!` then writes. Use in an `unsafe` block.
+macro_rules! element {
+    ($base:expr, $ty:ty, $m:ident [$k:expr]) => {
+        $base.add(::std::mem::offset_of!($ty, $m) + $k * $crate::ffi::elem_size(|s: &$ty| &s.$m))
+    };
+}
+pub(crate) use element;
+
+/// `v`, whose type is that of the member `_member` projects: the type
+/// check of `put_member!`.
+pub(crate) fn of_member<S, T>(_member: fn(&S) -> &T, v: T) -> T {
+    v
+}
+
+/// The size of an element of the array member `_member` projects.
+pub(crate) fn elem_size<S, T, const N: usize>(_member: fn(&S) -> &[T; N]) -> usize {
+    size_of::<T>()
 }
 
 /// The caller's `length` as a byte count (negative counts as 0).

@@ -5,13 +5,14 @@
 //! library against a fake CNC). Outputs are written field by field at their
 //! l32 offsets, and only on success (cnc_rdzofsr: see there).
 
-use super::{ffi_boundary, ffi_read, len_of, nonnull, put_at};
+use super::{ffi_boundary, ffi_read, len_of, nonnull, put_at, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
 use crate::proto::offset as p;
 use crate::proto::value::Value;
-use crate::types::{IODBTO, IODBWCSF, IODBZOFS, IODBZOR, ODBTOFS};
+use crate::types::{IODBTO, IODBWCSF, IODBZOFS, IODBZOR, LONG, ODBTOFS};
+use std::mem::offset_of;
 use std::os::raw::{c_long, c_short, c_ushort};
 
 /// Bytes IODBZOFS needs for `axis`, FANUC's local check: every negative
@@ -66,14 +67,14 @@ pub unsafe extern "C" fn cnc_rdtofs(
         let h = handles::get(FlibHndl)?;
         let out = nonnull(tofs)?.cast::<u8>();
         // Compared unsigned, as FANUC's library does (-1 is 65535).
-        if (length as u16) < 8 {
+        if usize::from(length as u16) < size_of::<ODBTOFS>() {
             return Err(Error::length());
         }
         let v = first(&h.call(&p::rdtofs(number, r#type))?)?;
         unsafe {
-            put_at(out, 0, number);
-            put_at(out, 2, r#type);
-            put_at(out, 4, v);
+            put_member!(out, ODBTOFS, datano, number);
+            put_member!(out, ODBTOFS, r#type, r#type);
+            put_member!(out, ODBTOFS, data, v);
         }
         Ok(())
     })
@@ -130,20 +131,22 @@ pub unsafe extern "C" fn cnc_rdtofsr(
         let room = length as u16 as usize;
         let count = (i32::from(e_number) - i32::from(s_number) + 1) as usize;
         let (size, per_number) = tofsr_sizes(r#type);
-        if room < 8 + per_number * count {
+        // The values: an array of the union `u`, shorts or longs by type.
+        let u = offset_of!(IODBTO, u);
+        if room < u + per_number * count {
             return Err(Error::length());
         }
         let v = h.call(&p::rdtofsr(s_number, r#type, e_number))?.0;
-        let n = v.len().min((room - 8) / size);
+        let n = v.len().min((room - u) / size);
         unsafe {
-            put_at(out, 0, s_number);
-            put_at(out, 2, r#type);
-            put_at(out, 4, e_number);
+            put_member!(out, IODBTO, datano_s, s_number);
+            put_member!(out, IODBTO, r#type, r#type);
+            put_member!(out, IODBTO, datano_e, e_number);
             for (i, r) in v[..n].iter().enumerate() {
                 if size == 2 {
-                    put_at(out, 8 + 2 * i, r.value as i16);
+                    put_at(out, u + 2 * i, r.value as i16);
                 } else {
-                    put_at(out, 8 + 4 * i, r.value);
+                    put_at(out, u + 4 * i, r.value);
                 }
             }
         }
@@ -178,9 +181,9 @@ pub unsafe extern "C" fn cnc_rdzofs(
         let v = h.call(&p::rdzofs(number, axis)).inspect_err(|e| {
             if matches!(e, Error::Cnc { .. }) {
                 unsafe {
-                    put_at(out, 0, number);
-                    put_at(out, 2, axis);
-                    put_at(out, 4, 0i32);
+                    put_member!(out, IODBZOFS, datano, number);
+                    put_member!(out, IODBZOFS, r#type, axis);
+                    put_member!(out, IODBZOFS, data[0], 0);
                 }
             }
         })?;
@@ -189,10 +192,10 @@ pub unsafe extern "C" fn cnc_rdzofs(
             return Err(short());
         }
         unsafe {
-            put_at(out, 0, number);
-            put_at(out, 2, axis);
+            put_member!(out, IODBZOFS, datano, number);
+            put_member!(out, IODBZOFS, r#type, axis);
             for (i, r) in v[..n].iter().enumerate() {
-                put_at(out, 4 + 4 * i, r.value);
+                put_member!(out, IODBZOFS, data[i], r.value);
             }
         }
         Ok(())
@@ -302,12 +305,12 @@ pub unsafe extern "C" fn cnc_rdzofsr(
                 Err(err) => return Err(err),
             };
             let n = v.len() / per;
-            if 8 + 4 * per * (numbers + n) > room {
+            if offset_of!(IODBZOR, data) + size_of::<LONG>() * per * (numbers + n) > room {
                 return Err(Error::length());
             }
             unsafe {
                 for (i, r) in v[..n * per].iter().enumerate() {
-                    put_at(out, 8 + 4 * (per * numbers + i), r.value);
+                    put_member!(out, IODBZOR, data[per * numbers + i], r.value);
                 }
             }
             numbers += n;
@@ -317,9 +320,9 @@ pub unsafe extern "C" fn cnc_rdzofsr(
             s = last + 1;
         }
         unsafe {
-            put_at(out, 0, s_number);
-            put_at(out, 2, axis);
-            put_at(out, 4, (first + numbers as i32 - 1) as i16);
+            put_member!(out, IODBZOR, datano_s, s_number);
+            put_member!(out, IODBZOR, r#type, axis);
+            put_member!(out, IODBZOR, datano_e, (first + numbers as i32 - 1) as i16);
         }
         Ok(())
     })

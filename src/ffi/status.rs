@@ -1,6 +1,6 @@
 //! System and status information.
 
-use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::EW_PATH;
@@ -57,9 +57,13 @@ pub unsafe extern "C" fn cnc_sysinfo_ex(FlibHndl: c_ushort, sysinfoex: *mut ODBS
         let info = &h.pair.info;
         let (head, paths) = info.open.system_ex(info.axes15);
         let path_at = |k: usize| offset_of!(ODBSYSEX, path) + k * size_of::<ODBSYSEX_PATH>();
+        // The head's words are consecutive shorts from max_axis on, as are
+        // each path's from its first member on.
+        const _: () =
+            assert!(offset_of!(ODBSYSEX, addinfo) == offset_of!(ODBSYSEX, max_axis) + 9 * 2);
         unsafe {
             for (i, w) in head.iter().enumerate() {
-                put_at(out, 2 * i, *w);
+                put_at(out, offset_of!(ODBSYSEX, max_axis) + 2 * i, *w);
             }
             for k in 0..PATHS_WRITTEN {
                 let p = paths.get(k).copied().unwrap_or_default();
@@ -78,13 +82,19 @@ pub unsafe extern "C" fn cnc_sysinfo_ex(FlibHndl: c_ushort, sysinfoex: *mut ODBS
 unsafe fn read_status<T: StatusWords, const N: usize>(h: &Handle, out: *mut u8) -> Result<()> {
     const { assert!(N <= StatWords::MAX) };
     let r = h.call(&StatInfo::<T>::new())?;
+    // ODBST and ODBST2 begin alike: hdck, tmmode, then the status words.
+    const _: () = assert!(
+        offset_of!(ODBST, hdck) == offset_of!(ODBST2, hdck)
+            && offset_of!(ODBST, tmmode) == offset_of!(ODBST2, tmmode)
+            && offset_of!(ODBST, aut) == offset_of!(ODBST2, aut)
+    );
     unsafe {
-        put_at(out, 0, r.hdck);
-        put_at(out, 2, r.tmmode);
+        put_member!(out, ODBST, hdck, r.hdck);
+        put_member!(out, ODBST, tmmode, r.tmmode);
     }
     let words = r.words.inspect_err(|e| h.note(e))?;
     for (i, w) in words.iter().take(N).enumerate() {
-        unsafe { put_at(out, 4 + 2 * i, *w) };
+        unsafe { put_at(out, offset_of!(ODBST, aut) + 2 * i, *w) };
     }
     Ok(())
 }

@@ -3,7 +3,7 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::{ffi_boundary, ffi_read, len_of, nonnull, put, put_at};
+use super::{element, ffi_boundary, ffi_read, len_of, nonnull, put, put_at, put_member};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_FUNC, EW_NUMBER};
@@ -11,8 +11,12 @@ use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, MNG_WORDS, OptGroups, RdT
 use crate::proto::tool::{PunchData, PunchInfo};
 use crate::proto::tool::{grpinfo as grpinfo_call, wrgrpinfo as wrgrpinfo_call};
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
-use crate::types::{IDBITD, IODBTGI, IODBTLCTL, IODBTLDT, IODBTLMNG, ODBPTLINF, ODBTG, ODBUSEGRP};
-use std::os::raw::{c_short, c_ushort};
+use crate::types::{
+    IDBITD, IODBTGI, IODBTGI_DATA, IODBTLCTL, IODBTLDT, IODBTLMNG, ODBPTLINF, ODBTG, ODBTG_DATA,
+    ODBUSEGRP,
+};
+use std::mem::offset_of;
+use std::os::raw::{c_char, c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
 /// then per tool its use number (1, 2, ...), tool number, length and radius
@@ -33,26 +37,26 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
         let h = handles::get(FlibHndl)?;
         let out = nonnull(toolgrp)?.cast::<u8>();
         let room = len_of(length);
-        if room < 20 {
+        if room < offset_of!(ODBTG, data) {
             return Err(Error::length());
         }
         let g = h.call(&tlgroup(number))?;
         let t = h.call(&tltools(g.grp, g.ntool.value))?;
-        if 20 + 20 * t.tools.len() > room {
+        if offset_of!(ODBTG, data) + size_of::<ODBTG_DATA>() * t.tools.len() > room {
             return Err(Error::length());
         }
         unsafe {
-            put_at(out, 0, g.grp as c_short);
-            put_at(out, 8, g.ntool.value);
-            put_at(out, 12, g.life.value);
-            put_at(out, 16, g.count.value);
+            put_member!(out, ODBTG, grp_num, g.grp as c_short);
+            put_member!(out, ODBTG, ntool, g.ntool.value);
+            put_member!(out, ODBTG, life, g.life.value);
+            put_member!(out, ODBTG, count, g.count.value);
             for (i, x) in t.tools.iter().enumerate() {
-                let o = 20 + 20 * i;
-                put_at(out, o, i as i32 + 1);
-                put_at(out, o + 4, x.tool_num);
-                put_at(out, o + 8, x.length_num);
-                put_at(out, o + 12, x.radius_num);
-                put_at(out, o + 16, x.tinfo);
+                let o = element!(out, ODBTG, data[i]);
+                put_member!(o, ODBTG_DATA, tuse_num, i as i32 + 1);
+                put_member!(o, ODBTG_DATA, tool_num, x.tool_num);
+                put_member!(o, ODBTG_DATA, length_num, x.length_num);
+                put_member!(o, ODBTG_DATA, radius_num, x.radius_num);
+                put_member!(o, ODBTG_DATA, tinfo, x.tinfo);
             }
         }
         Ok(())
@@ -75,14 +79,14 @@ pub unsafe extern "C" fn cnc_rdtlctldata(FlibHndl: c_ushort, tlctl: *mut IODBTLC
         }
         let c = h.call(&tlctl_call())?;
         unsafe {
-            put_at(out, 0, c.slct as i16);
-            put_at(out, 2, c.used_tool as i16);
-            put_at(out, 4, c.turret_indx as i16);
-            put_at(out, 8, c.zero_tl_no);
-            put_at(out, 12, c.t_axis_move);
-            put_at(out, 16, c.total_punch0);
-            put_at(out, 20, c.total_punch1);
-            put_at(out, 24, c.t_axis_dec as u8);
+            put_member!(out, IODBTLCTL, slct, c.slct as i16);
+            put_member!(out, IODBTLCTL, used_tool, c.used_tool as i16);
+            put_member!(out, IODBTLCTL, turret_indx, c.turret_indx as i16);
+            put_member!(out, IODBTLCTL, zero_tl_no, c.zero_tl_no);
+            put_member!(out, IODBTLCTL, t_axis_move, c.t_axis_move);
+            put_member!(out, IODBTLCTL, total_punch[0], c.total_punch0);
+            put_member!(out, IODBTLCTL, total_punch[1], c.total_punch1);
+            put_member!(out, IODBTLCTL, t_axis_dec, c.t_axis_dec as c_char);
         }
         Ok(())
     })
@@ -128,18 +132,23 @@ pub unsafe extern "C" fn cnc_rdgrpinfo(
         }
         let r = h.call(&grpinfo_call(s_grp, e_grp))?;
         let n = r.groups.len();
-        if 8 + 16 * n as i32 > i32::from(length) {
+        if offset_of!(IODBTGI, data) + size_of::<IODBTGI_DATA>() * n > len_of(length) {
             return Err(Error::length());
         }
         unsafe {
-            put_at(out, 0, s_grp);
-            put_at(out, 4, (i32::from(s_grp) + n as i32 - 1) as c_short);
+            put_member!(out, IODBTGI, s_grp, s_grp);
+            put_member!(
+                out,
+                IODBTGI,
+                e_grp,
+                (i32::from(s_grp) + n as i32 - 1) as c_short
+            );
             for (i, g) in r.groups.iter().enumerate() {
-                let o = 8 + 16 * i;
-                put_at(out, o, g.ntool);
-                put_at(out, o + 4, g.life);
-                put_at(out, o + 8, g.count);
-                put_at(out, o + 12, g.count_type);
+                let o = element!(out, IODBTGI, data[i]);
+                put_member!(o, IODBTGI_DATA, n_tool, g.ntool);
+                put_member!(o, IODBTGI_DATA, count_value, g.life);
+                put_member!(o, IODBTGI_DATA, counter, g.count);
+                put_member!(o, IODBTGI_DATA, count_type, g.count_type);
             }
         }
         Ok(())
@@ -168,7 +177,7 @@ pub unsafe extern "C" fn cnc_wrgrpinfo(
             return Err(Error::local(EW_NUMBER, "e_grp below s_grp"));
         }
         let n = (i32::from(e) - i32::from(s) + 1) as usize;
-        if 8 + 16 * n as i32 > i32::from(length) {
+        if offset_of!(IODBTGI, data) + size_of::<IODBTGI_DATA>() * n > len_of(length) {
             return Err(Error::length());
         }
         let groups: Vec<GroupWrite> = (0..n.min(GROUPS_PER_WRITE as usize))
@@ -213,9 +222,12 @@ pub unsafe extern "C" fn cnc_rdtlusegrp(FlibHndl: c_ushort, grp: *mut ODBUSEGRP)
             ([-1; 3], None)
         };
         unsafe {
-            for (i, v) in [u.next, u.used, u.slct].into_iter().chain(opt).enumerate() {
-                put_at(out, 4 * i, v);
-            }
+            put_member!(out, ODBUSEGRP, next, u.next);
+            put_member!(out, ODBUSEGRP, r#use, u.used);
+            put_member!(out, ODBUSEGRP, slct, u.slct);
+            put_member!(out, ODBUSEGRP, opt_next, opt[0]);
+            put_member!(out, ODBUSEGRP, opt_use, opt[1]);
+            put_member!(out, ODBUSEGRP, opt_slct, opt[2]);
         }
         match err {
             Some(e) => {
@@ -281,7 +293,7 @@ pub unsafe extern "C" fn cnc_rdtool(
             empty = 0;
             for r in &recs {
                 // SAFETY: `got` < `*num`, the caller's number of records.
-                unsafe { put_mng(out.add(140 * got as usize), &r.0) };
+                unsafe { put_mng(out.add(size_of::<IODBTLMNG>() * got as usize), &r.0) };
                 got += 1;
             }
             top += recs.len() as i32;
@@ -297,26 +309,32 @@ pub unsafe extern "C" fn cnc_rdtool(
 /// `o` must point to 140 writable bytes.
 unsafe fn put_mng(o: *mut u8, w: &[i32; MNG_WORDS]) {
     unsafe {
-        for (k, v) in w[..4].iter().enumerate() {
-            put_at(o, 4 * k, *v);
-        }
-        put_at(o, 16, w[4] as u8);
-        put_at(o, 17, w[5] as u8);
-        put_at(o, 18, w[6] as u16);
-        put_at(o, 20, w[7] as i16);
-        put_at(o, 22, w[8] as i16);
-        put_at(o, 24, w[9]);
-        put_at(o, 28, w[10]);
-        for (k, v) in w[11..16].iter().enumerate() {
-            put_at(o, 32 + 2 * k, *v as i16);
-        }
-        put_at(o, 42, (w[16] >> 16) as i16);
-        put_at(o, 44, w[16] as i16);
-        put_at(o, 46, w[17] as i16);
-        put_at(o, 48, w[18] as i16);
-        put_at(o, 50, 0u8);
+        put_member!(o, IODBTLMNG, T_code, w[0]);
+        put_member!(o, IODBTLMNG, life_count, w[1]);
+        put_member!(o, IODBTLMNG, max_life, w[2]);
+        put_member!(o, IODBTLMNG, rest_life, w[3]);
+        put_member!(o, IODBTLMNG, life_stat, w[4] as u8);
+        put_member!(o, IODBTLMNG, cust_bits, w[5] as u8);
+        put_member!(o, IODBTLMNG, tool_info, w[6] as u16);
+        put_member!(o, IODBTLMNG, H_code, w[7] as i16);
+        put_member!(o, IODBTLMNG, D_code, w[8] as i16);
+        put_member!(o, IODBTLMNG, spindle_speed, w[9]);
+        put_member!(o, IODBTLMNG, feedrate, w[10]);
+        put_member!(o, IODBTLMNG, magazine, w[11] as i16);
+        put_member!(o, IODBTLMNG, pot, w[12] as i16);
+        put_member!(o, IODBTLMNG, G_code, w[13] as i16);
+        put_member!(o, IODBTLMNG, W_code, w[14] as i16);
+        put_member!(o, IODBTLMNG, gno, w[15] as i16);
+        put_member!(o, IODBTLMNG, grp, (w[16] >> 16) as i16);
+        put_member!(o, IODBTLMNG, edge, w[16] as i16);
+        put_member!(o, IODBTLMNG, org_magazine, w[17] as i16);
+        put_member!(o, IODBTLMNG, org_pot, w[18] as i16);
+        put_member!(o, IODBTLMNG, edge_num, 0u8);
+        // custom1..custom20: consecutive LONGs.
+        const _: () =
+            assert!(offset_of!(IODBTLMNG, custom20) == offset_of!(IODBTLMNG, custom1) + 19 * 4);
         for (k, v) in w[19..].iter().enumerate() {
-            put_at(o, 60 + 4 * k, *v);
+            put_at(o, offset_of!(IODBTLMNG, custom1) + 4 * k, *v);
         }
     }
 }
@@ -361,19 +379,30 @@ pub unsafe extern "C" fn cnc_rdtooldata(
         let decimals = !h.ctx().class.is_16i();
         unsafe {
             for (i, w) in recs.iter().enumerate() {
-                let o = out.add(68 * i);
-                put_at(o, 0, w[0] as i16);
-                for (k, at) in [1, 3, 5, 7, 9, 11, 13, 15, 17].into_iter().enumerate() {
-                    put_at(o, 4 + 4 * k, w[at]);
-                }
-                put_at(o, 40, w[19] as u8);
-                for (k, at) in [21, 23, 25].into_iter().enumerate() {
-                    put_at(o, 44 + 4 * k, w[at]);
-                }
+                let o = out.add(size_of::<IODBTLDT>() * i);
+                put_member!(o, IODBTLDT, slct, w[0] as i16);
+                put_member!(o, IODBTLDT, tool_no, w[1]);
+                put_member!(o, IODBTLDT, x_axis_ofs, w[3]);
+                put_member!(o, IODBTLDT, y_axis_ofs, w[5]);
+                put_member!(o, IODBTLDT, turret_pos, w[7]);
+                put_member!(o, IODBTLDT, chg_tl_no, w[9]);
+                put_member!(o, IODBTLDT, punch_count, w[11]);
+                put_member!(o, IODBTLDT, tool_life, w[13]);
+                put_member!(o, IODBTLDT, m_tl_radius, w[15]);
+                put_member!(o, IODBTLDT, m_tl_angle, w[17]);
+                put_member!(o, IODBTLDT, tl_shape, w[19] as c_char);
+                put_member!(o, IODBTLDT, tl_size_i, w[21]);
+                put_member!(o, IODBTLDT, tl_size_j, w[23]);
+                put_member!(o, IODBTLDT, tl_angle, w[25]);
                 if decimals {
-                    for k in 0..8 {
-                        put_at(o, 56 + k, w[27 + 2 * k] as u8);
-                    }
+                    put_member!(o, IODBTLDT, x_axis_dec, w[27] as c_char);
+                    put_member!(o, IODBTLDT, y_axis_dec, w[29] as c_char);
+                    put_member!(o, IODBTLDT, turret_dec, w[31] as c_char);
+                    put_member!(o, IODBTLDT, m_radius_dec, w[33] as c_char);
+                    put_member!(o, IODBTLDT, m_angle_dec, w[35] as c_char);
+                    put_member!(o, IODBTLDT, tl_size_i_dec, w[37] as c_char);
+                    put_member!(o, IODBTLDT, tl_size_j_dec, w[39] as c_char);
+                    put_member!(o, IODBTLDT, tl_angle_dec, w[41] as c_char);
                 }
             }
             put(np, recs.len() as c_short);

@@ -18,65 +18,64 @@ impl fmt::Debug for Ew {
     }
 }
 
-/// Defines the `Ew` constants and the table of names and meanings from
-/// one list (tests check it against `src/ew.rs`, where the C header's
-/// codes come from).
+/// Defines the `Ew` constants and the table of meanings: each names its
+/// code in src/ew.rs (where its value and the C header's name come from).
 macro_rules! ew_table {
-    ($($konst:ident = $value:literal, $name:literal, $meaning:literal;)*) => {
+    ($($konst:ident = $ew:ident, $meaning:literal;)*) => {
         impl Ew {
             $(
-                #[doc = concat!("`", $name, "` (", stringify!($value), "): ", $meaning, ".")]
-                pub const $konst: Ew = Ew($value);
+                #[doc = concat!("`", stringify!($ew), "`: ", $meaning, ".")]
+                pub const $konst: Ew = Ew(crate::ew::$ew);
             )*
         }
         /// (code, name, meaning); the first name of a shared code wins.
-        const TABLE: &[(i16, &str, &str)] = &[$(($value, $name, $meaning)),*];
+        const TABLE: &[(i16, &str, &str)] = &[$((crate::ew::$ew, stringify!($ew), $meaning)),*];
     };
 }
 
 ew_table! {
-    PROTOCOL = -17, "EW_PROTOCOL", "protocol error: the CNC's answer is not valid FOCAS2";
-    SOCKET = -16, "EW_SOCKET", "socket error: no connection, or it broke or timed out";
-    NODLL = -15, "EW_NODLL", "library for this CNC not found";
-    INIERR = -14, "EW_INIERR", "error in the library's initial value file";
-    ITLOW = -13, "EW_ITLOW", "low temperature alarm of the intelligent terminal";
-    ITHIGHT = -12, "EW_ITHIGHT", "high temperature alarm of the intelligent terminal";
-    BUS = -11, "EW_BUS", "bus error";
-    SYSTEM2 = -10, "EW_SYSTEM2", "system error";
-    HSSB = -9, "EW_HSSB", "HSSB communication error";
-    HANDLE = -8, "EW_HANDLE", "library handle error";
-    VERSION = -7, "EW_VERSION", "CNC or PMC version mismatch: not available on this CNC";
-    UNEXP = -6, "EW_UNEXP", "abnormal error";
-    SYSTEM = -5, "EW_SYSTEM", "system error";
-    PARITY = -4, "EW_PARITY", "shared RAM parity error";
-    MMCSYS = -3, "EW_MMCSYS", "emm386 or mmcsys install error";
-    RESET = -2, "EW_RESET", "reset or stop occurred";
-    BUSY = -1, "EW_BUSY", "busy: the CNC or the connection is doing something else";
-    OK = 0, "EW_OK", "no error";
-    FUNC = 1, "EW_FUNC", "function not available on this CNC (command prepare error)";
-    NOPMC = 1, "EW_NOPMC", "PMC does not exist";
-    LENGTH = 2, "EW_LENGTH", "data block length error";
-    NUMBER = 3, "EW_NUMBER", "data number error: no such number";
-    RANGE = 3, "EW_RANGE", "address range error";
-    ATTRIB = 4, "EW_ATTRIB", "data attribute error: wrong type or axis";
-    TYPE = 4, "EW_TYPE", "data type error";
-    DATA = 5, "EW_DATA", "data error";
-    NOOPT = 6, "EW_NOOPT", "option not installed";
-    PROT = 7, "EW_PROT", "write protected";
-    OVRFLOW = 8, "EW_OVRFLOW", "memory overflow";
-    PARAM = 9, "EW_PARAM", "CNC parameter not correct";
-    BUFFER = 10, "EW_BUFFER", "buffer empty or full";
-    PATH = 11, "EW_PATH", "no such path";
-    MODE = 12, "EW_MODE", "not possible in the CNC's current mode";
-    REJECT = 13, "EW_REJECT", "execution rejected by the CNC";
-    DTSRVR = 14, "EW_DTSRVR", "data server error";
-    ALARM = 15, "EW_ALARM", "the CNC is in alarm";
-    STOP = 16, "EW_STOP", "the CNC is not running";
-    PASSWD = 17, "EW_PASSWD", "protected: parameter write or password needed";
-    PMC = 18, "EW_PMC", "error reported by the PMC";
-    PMCHANDLE = 19, "EW_PMCHANDLE", "PMC handle error";
-    RD_OVWSTP = 20, "EW_RD_OVWSTP", "overwrite stop in program read";
-    RD_RSTFIN = 21, "EW_RD_RSTFIN", "reset interrupt in program read";
+    PROTOCOL = EW_PROTOCOL, "protocol error: the CNC's answer is not valid FOCAS2";
+    SOCKET = EW_SOCKET, "socket error: no connection, or it broke or timed out";
+    NODLL = EW_NODLL, "library for this CNC not found";
+    INIERR = EW_INIERR, "error in the library's initial value file";
+    ITLOW = EW_ITLOW, "low temperature alarm of the intelligent terminal";
+    ITHIGHT = EW_ITHIGHT, "high temperature alarm of the intelligent terminal";
+    BUS = EW_BUS, "bus error";
+    SYSTEM2 = EW_SYSTEM2, "system error";
+    HSSB = EW_HSSB, "HSSB communication error";
+    HANDLE = EW_HANDLE, "library handle error";
+    VERSION = EW_VERSION, "CNC or PMC version mismatch: not available on this CNC";
+    UNEXP = EW_UNEXP, "abnormal error";
+    SYSTEM = EW_SYSTEM, "system error";
+    PARITY = EW_PARITY, "shared RAM parity error";
+    MMCSYS = EW_MMCSYS, "emm386 or mmcsys install error";
+    RESET = EW_RESET, "reset or stop occurred";
+    BUSY = EW_BUSY, "busy: the CNC or the connection is doing something else";
+    OK = EW_OK, "no error";
+    FUNC = EW_FUNC, "function not available on this CNC (command prepare error)";
+    NOPMC = EW_NOPMC, "PMC does not exist";
+    LENGTH = EW_LENGTH, "data block length error";
+    NUMBER = EW_NUMBER, "data number error: no such number";
+    RANGE = EW_RANGE, "address range error";
+    ATTRIB = EW_ATTRIB, "data attribute error: wrong type or axis";
+    TYPE = EW_TYPE, "data type error";
+    DATA = EW_DATA, "data error";
+    NOOPT = EW_NOOPT, "option not installed";
+    PROT = EW_PROT, "write protected";
+    OVRFLOW = EW_OVRFLOW, "memory overflow";
+    PARAM = EW_PARAM, "CNC parameter not correct";
+    BUFFER = EW_BUFFER, "buffer empty or full";
+    PATH = EW_PATH, "no such path";
+    MODE = EW_MODE, "not possible in the CNC's current mode";
+    REJECT = EW_REJECT, "execution rejected by the CNC";
+    DTSRVR = EW_DTSRVR, "data server error";
+    ALARM = EW_ALARM, "the CNC is in alarm";
+    STOP = EW_STOP, "the CNC is not running";
+    PASSWD = EW_PASSWD, "protected: parameter write or password needed";
+    PMC = EW_PMC, "error reported by the PMC";
+    PMCHANDLE = EW_PMCHANDLE, "PMC handle error";
+    RD_OVWSTP = EW_RD_OVWSTP, "overwrite stop in program read";
+    RD_RSTFIN = EW_RD_RSTFIN, "reset interrupt in program read";
 }
 
 impl Ew {
@@ -281,34 +280,17 @@ mod tests {
         assert_eq!(format!("{:?}", Ew::NUMBER), "EW_NUMBER(3)");
     }
 
-    /// Every `pub const EW_*` of src/ew.rs (the header's codes) is in the
-    /// table under its name and value, and nothing else is.
+    /// Every code of src/ew.rs (the header's codes) has its meaning here,
+    /// under its name and value, and nothing else is.
     #[test]
     fn the_table_is_the_headers() {
-        let src = include_str!("../ew.rs");
-        let mut n = 0;
-        for line in src.lines() {
-            let Some(rest) = line.strip_prefix("pub const ") else {
-                continue;
-            };
-            let (name, rest) = rest.split_once(':').unwrap();
-            let value: i16 = rest
-                .split_once('=')
-                .unwrap()
-                .1
-                .split(';')
-                .next()
-                .unwrap()
-                .trim()
-                .parse()
-                .unwrap();
+        for &(name, value, _) in crate::ew::CODES {
             assert!(
                 TABLE.iter().any(|e| e.0 == value && e.1 == name),
                 "{name} = {value} missing"
             );
-            n += 1;
         }
-        assert_eq!(n, TABLE.len());
+        assert_eq!(crate::ew::CODES.len(), TABLE.len());
     }
 
     #[test]

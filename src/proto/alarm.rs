@@ -1,6 +1,7 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
 
 use super::call::Single;
+pub use super::cmd::{ALARM, RDALMHISNO, RDALMHISTRY, RDALMMSG, RDOPMSG, RDOPMSG3};
 use super::offset::Count;
 use super::packet::{ReqSub, answer_records};
 use super::position::AlarmBits;
@@ -8,10 +9,6 @@ use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
 
 // --- alarm ---
-
-pub const ALARM: u16 = 0x001a;
-pub const RDALMMSG: u16 = 0x0023;
-pub const RDOPMSG: u16 = 0x0034;
 
 /// One 0x0023 record: i32 number, type, axis, message length, then an
 /// N-byte message (N = the request's arg 4: 32 or 64).
@@ -158,11 +155,6 @@ pub fn rdopmsg(kind: i16) -> Single<OpMsg> {
 
 // --- alarm history ---
 
-/// Read the alarm history: args [s, e, 1] (SPEC.md §5.2).
-pub const RDALMHISTRY: u16 = 0x006c;
-/// Number of alarm history entries: one i32 (FANUC keeps its low 16 bits).
-pub const RDALMHISNO: u16 = 0x006b;
-
 /// Characters of a history record's message.
 pub const HIS_MSG_LEN: usize = 32;
 
@@ -262,9 +254,6 @@ pub fn rdalmhisno() -> Single<Count> {
     Single::padded(ReqSub::cnc(RDALMHISNO, &[]))
 }
 
-/// cnc_rdopmsg3's command on the 30i class (the 16i class sends
-/// cnc_rdopmsg's 0x0034 \[type\]).
-pub const RDOPMSG3: u16 = 0x00d0;
 /// Bytes of one cnc_rdopmsg3 record: i32 number, type, characters, then
 /// 256 text bytes.
 pub const OPMSG3_REC: usize = 268;

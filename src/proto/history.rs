@@ -7,14 +7,11 @@
 //! count).
 
 use super::call::{Call, Ctx, sub};
+pub use super::cmd::{
+    RDALMHISTRY5, RDOMHISTRY, RDOMHISTRY2, RDOPHISTRY, RDOPHISTRY4, RDPITCHR, WRHISSGNL3,
+};
 use super::packet::{ReqSub, RespSub, answer_records};
 use crate::error::Result;
-
-pub const RDOPHISTRY: u16 = 0x006a;
-pub const RDOMHISTRY: u16 = 0x0073;
-pub const RDOMHISTRY2: u16 = 0x01b5;
-pub const RDALMHISTRY5: u16 = 0x01d1;
-pub const RDPITCHR: u16 = 0x0012;
 
 /// Bytes of one record on the wire.
 pub const OP_REC: usize = 16;
@@ -251,9 +248,6 @@ pub fn alm5_record(a: &Alm5) -> Vec<u8> {
     b.resize(ALM5_REC, 0);
     b
 }
-
-/// cnc_rdophistry4's command.
-pub const RDOPHISTRY4: u16 = 0x01b0;
 
 /// cnc_rdophistry4: (1,0x01b0)[s, e]. The answer: i32 "more" (non-zero:
 /// the CNC holds more of the range than it sent), i32 record count, then
@@ -579,9 +573,6 @@ pub fn op4_walk(ans: &OpHis4Answer, mut room: i32) -> (Vec<Op4Record>, Option<Op
     (out, None)
 }
 
-/// cnc_wrhissgnl3: `(1,0x01b3)[n]`, then n 16-byte entries (the layout
-/// of cnc_rdhissgnl3's answer, [`SIG3_REC`]).
-pub const WRHISSGNL3: u16 = 0x01b3;
 /// One entry of the signal table on the wire: i32 entry number, i32 PMC
 /// number, i32 byte number, the address type an i16 at 12 (its low
 /// byte 13 read), byte 14 the mask.

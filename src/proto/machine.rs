@@ -2,11 +2,9 @@
 //! cnc_rdctrldo). Learnt with the oracle (docs/protocol/machine.md).
 
 use super::call::{Call, Ctx, sub};
+pub use super::cmd::{RDCTRLSIG, RDPRSTR};
 use super::packet::{ReqSub, RespSub};
 use crate::error::Result;
-
-/// cnc_rdctrldi / cnc_rdctrldo: (1,0x005b)\[0\] input signals, \[1\] output.
-pub const RDCTRLSIG: u16 = 0x005b;
 
 /// cnc_rdctrldi (`output` false) / cnc_rdctrldo (true): the signal words
 /// FANUC's library takes from the answer: one per two payload bytes, at
@@ -33,10 +31,6 @@ impl Call for CtrlSignals {
     }
 }
 
-/// cnc_rdprstrinfo: (1,0x0043)\[k\] for k 0..4 (block counter, M, T, S and
-/// B codes), then the position command 0x0026 [13, -1] (restart position)
-/// and [14, -1] (distance to it), in one frame.
-pub const RDPRSTR: u16 = 0x0043;
 /// The position codes of the restart position and distance.
 pub const PRSTR_DEST: i32 = 13;
 pub const PRSTR_DIST: i32 = 14;

@@ -2,17 +2,13 @@
 //! records ([`Value`]) with command 0x0015 / 0x0016.
 
 use super::call::{Call, Ctx, records, sub};
+pub use super::cmd::{RDMACRO, RDMACROR2, WRMACRO, WRMACROR2};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Value};
 use super::wire::Wire;
 use crate::error::Result;
 use crate::wire_struct;
-
-/// Read custom macro variables s..e: args (s, e); payload: one record each.
-pub const RDMACRO: u16 = 0x0015;
-/// Write custom macro variables: args (s, e, 0, 0, payload length) + records.
-pub const WRMACRO: u16 = 0x0016;
 
 /// Decimal places of a vacant (`<null>`) variable, as CNCs report it.
 pub const VACANT_DEC: i16 = -1;
@@ -201,10 +197,6 @@ impl Call for WriteMacros {
     }
 }
 
-/// cnc_rdmacror2: (1,0x00a7)[s, n], payload n IEEE doubles big-endian.
-pub const RDMACROR2: u16 = 0x00a7;
-/// cnc_wrmacror2: (1,0x00a8)[s, 0, 0, 0, 8n] + n doubles; reply i32 count.
-pub const WRMACROR2: u16 = 0x00a8;
 /// Most doubles FANUC's library asks for in one cnc_rdmacror2 request.
 pub const RDMACROR2_CHUNK: u32 = 179;
 /// Most doubles FANUC's library sends in one cnc_wrmacror2 request.

@@ -3,19 +3,9 @@
 //! functions are described as data (src/spec/table/maintenance.rs); this is
 //! the wire layout the simulator answers in.
 
-/// cnc_rdpm_cncitem: (1,0xd3)[start, n]; 62-byte names.
-pub const RDPM_CNCITEM: u16 = 0x00d3;
-/// cnc_rdpm_mcnitem: (1,0xbc)[start, n]; 62-byte names.
-pub const RDPM_MCNITEM: u16 = 0x00bc;
-/// cnc_wrpm_mcnitem: (1,0xbd)[start, 0, 0, 0, bytes] + 62-byte names.
-pub const WRPM_MCNITEM: u16 = 0x00bd;
-/// cnc_rdpm_item: (1,0xbe)[start, n]; 80-byte items.
-pub const RDPM_ITEM: u16 = 0x00be;
-/// cnc_wrpm_item: (1,0xbf)[reset, start, 0, 0, bytes] + 80-byte items.
-pub const WRPM_ITEM: u16 = 0x00bf;
-
 /// Bytes of an item name.
 pub const NAME_LEN: usize = 62;
+pub use super::cmd::{RDPM_CNCITEM, RDPM_ITEM, RDPM_MCNITEM, WRPM_ITEM, WRPM_MCNITEM};
 /// Bytes of an item on the wire: name, 2 bytes, i32 type, total, remain,
 /// stat (IODBPMAINTE's layout, big-endian).
 pub const ITEM_LEN: usize = 80;

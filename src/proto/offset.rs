@@ -9,20 +9,11 @@
 //! base 0 and decimals -1 (FANUC's library: "integer, no decimals").
 
 use super::call::{Call, Ctx, Single, records};
+pub use super::cmd::{RDTOFS, RDZOFS, WRTOFS, WRWKCDSHFT, WRZOFS};
 use super::packet::{ReqSub, RespSub};
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
-
-/// Read tool offsets: args [s, e, type]; cnc_rdtofs sends [n, n, 1000 + type].
-pub const RDTOFS: u16 = 0x0008;
-/// Write one tool offset: args [n, n, 1000 + type, 0, 8] + one record.
-pub const WRTOFS: u16 = 0x0009;
-/// Read work zero offsets: args [s, e, axis].
-pub const RDZOFS: u16 = 0x000b;
-/// Write one work zero offset: args [n, n, axis, 0, 8 · records] + records.
-pub const WRZOFS: u16 = 0x000c;
-pub const WRWKCDSHFT: u16 = 0x0064;
 
 /// cnc_rdtofs adds this to the type word (cnc_rdtofsr sends the type as is).
 pub const TOFS_SINGLE: i32 = 1000;

@@ -2,9 +2,8 @@
 
 use super::wire::{DecodeError, Reader, Writer};
 
-/// Subpacket class word.
-pub const CLASS_CNC: u16 = 1;
-pub const CLASS_PMC: u16 = 2;
+/// Subpacket class words (src/spec/commands.rs).
+pub use crate::spec::commands::{CLASS_CNC, CLASS_PMC};
 
 /// The most answer payload FANUC's library asks a CNC for in one subpacket
 /// (1428 bytes): record counts and byte lengths sent in a request are cut

@@ -6,6 +6,10 @@
 //! C buffer (IODBPSD / ODBDGN / the write input): `get` is `put` reversed.
 
 use super::call::{Call, Ctx, payload, sub};
+pub use super::cmd::{
+    DIAGNOSS, DIAGNOSS16, DIAGTYPE, PARAMTYPE, RDDIAGINFO, RDDIAGINFO15, RDDIAGNUM, RDPARAINFO,
+    RDPARAINFO15, RDPARAM, RDPARAM16, RDPARANUM, WRPARAM, WRPARAM16,
+};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::{BASE_10, Value};
@@ -14,37 +18,8 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};
 use crate::wire_struct;
 
-/// 30i: read parameters [s, e, axis] (also rdparar's range form).
-pub const RDPARAM: u16 = super::cmd::RDPARAM;
-/// 16i: read parameters [s, e, axis] (also the FOCAS option probe).
-pub const RDPARAM16: u16 = super::cmd::RDPARAM16;
-/// 30i: write one parameter, 264-byte payload.
-pub const WRPARAM: u16 = 0x008e;
-/// 16i: write one parameter, 40-byte payload.
-pub const WRPARAM16: u16 = 0x000f;
-/// 30i: the attribute record of one parameter [number, 1] (28 bytes).
-pub const PARAMTYPE: u16 = 0x00a0;
-/// Both classes: parameter numbers and attributes [s, n] (cnc_rdparainfo;
-/// the 16i cnc_wrparam reads one entry of it first).
-pub const RDPARAINFO: u16 = 0x0010;
-/// 30i: read diagnosis data [s, e, axis].
-pub const DIAGNOSS: u16 = 0x0093;
-/// 16i: read diagnosis data [s, e, axis].
-pub const DIAGNOSS16: u16 = 0x0030;
-/// Both classes: diagnosis numbers and attributes [s, n].
-pub const RDDIAGINFO: u16 = 0x0031;
-/// 30i: the attribute record of one diagnosis item [number, 1] (28 bytes).
-pub const DIAGTYPE: u16 = 0x00a2;
-/// Series 15: parameter numbers and attributes [s, n] (cnc_rdparainfo).
-pub const RDPARAINFO15: u16 = 0x008f;
-/// Series 15: diagnosis numbers and attributes [s, n] (cnc_rddiaginfo).
-pub const RDDIAGINFO15: u16 = 0x0094;
 /// Entries one cnc_rdparainfo / cnc_rddiaginfo request asks for at most.
 pub const INFO_MAX: i32 = 178;
-/// cnc_rdparanum: smallest, largest and count of parameter numbers.
-pub const RDPARANUM: u16 = 0x0011;
-/// cnc_rddiagnum: the same for diagnosis data.
-pub const RDDIAGNUM: u16 = 0x0032;
 
 /// Records of a 30i write payload (and of an all-axes 30i answer at most).
 pub const WRITE_RECORDS_30: usize = 32;

@@ -2,14 +2,13 @@
 //! raw big-endian bytes, class 2 subpackets.
 
 use super::call::{Call, Ctx, payload, sub};
+pub use super::cmd::{
+    GET_TIMER_TYPE, PMC_RDALMMSG, RDPMCINFO, RDPMCRNG, RDPMCTITLE, SELECT_UNIT, SET_TIMER_TYPE,
+    UNIT_TYPES, WRPMCRNG,
+};
 use super::packet::{ReqSub, RespSub};
 use crate::error::Result;
 use crate::wire_struct;
-
-/// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
-pub const RDPMCRNG: u16 = 0x8001;
-/// Write a PMC range: args (s, e, adr_type, data_type, n) + n bytes.
-pub const WRPMCRNG: u16 = 0x8002;
 
 /// PMC data types (IODBPMC `type_d`).
 pub mod dtype {
@@ -109,8 +108,6 @@ impl Call for WritePmc {
     }
 }
 
-/// pmc_rdpmcinfo: (2,0x8003)\[adr_type\]; payload i32 count + 12-byte records.
-pub const RDPMCINFO: u16 = 0x8003;
 /// Records ODBPMCINF holds.
 pub const PMCINFO_MAX: usize = 64;
 
@@ -158,21 +155,6 @@ pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
 // PMC units (pmc_get_number_of_pmc is described in src/spec/table/)
 // ---------------------------------------------------------------------------
 
-/// pmc_get_pmc_unit_types: (2,0x800f)\[most\]; the answer is i32 unit types.
-pub const UNIT_TYPES: u16 = 0x800f;
-/// pmc_select_pmc_unit: (2,0x800c)[unit type]; no answer payload.
-pub const SELECT_UNIT: u16 = 0x800c;
-/// pmc_rdpmctitle: no arguments.
-pub const RDPMCTITLE: u16 = 0x800b;
-/// pmc_rdalmmsg: (2,0x8010)[s_number, count]; the answer is i32 count,
-/// i32 exist, then count messages of 128 bytes.
-pub const RDALMMSG: u16 = 0x8010;
-/// pmc_get_timer_type: (2,0x804a)[s, e]; the answer is big-endian i16
-/// types.
-pub const GET_TIMER_TYPE: u16 = 0x804a;
-/// pmc_set_timer_type: (2,0x804b)[s, e, 0, 0, bytes] with the types as
-/// big-endian i16.
-pub const SET_TIMER_TYPE: u16 = 0x804b;
 /// The ten title texts of 0x800b's answer: (bytes on the wire, bytes in
 /// ODBPMCTITLE), in order; the rest of each member is zero.
 pub const TITLE: [(usize, usize); 10] = [
@@ -273,7 +255,7 @@ impl AlarmMsgAnswer {
 impl Call for AlarmMsgs {
     type Output = AlarmMsgAnswer;
     fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::pmc(RDALMMSG, &[self.s, self.n])]
+        vec![ReqSub::pmc(PMC_RDALMMSG, &[self.s, self.n])]
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<AlarmMsgAnswer> {
         let mut p = sub(resp, 0)?.payload.clone();

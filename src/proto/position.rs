@@ -7,6 +7,10 @@
 //! alarm areas.
 
 use super::call::{Call, Ctx, payload, sub};
+pub use super::cmd::{
+    ACTF, ACTS, ALARM, AXIS_FLAGS, COUNT, GETFIGURE, POSITION, PRGNUM, RDAXISNAME, RDSPDLNAME,
+    SEQNUM, SERVO_LOAD, SPEED_A5, SPINDLE, SPINDLE_SHOWN15, UNITS,
+};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::Value;
@@ -14,39 +18,6 @@ use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::{Error, Result};
 use crate::ew::EW_NOOPT;
 use crate::wire_struct;
-
-/// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).
-pub const ALARM: u16 = 0x001a;
-/// Input/output figures per axis (cnc_getfigure).
-pub const GETFIGURE: u16 = 0x001b;
-/// Running and main program numbers (cnc_rdprgnum, rddynamic2).
-pub const PRGNUM: u16 = 0x001c;
-/// Sequence number (cnc_rdseqnum, rddynamic2).
-pub const SEQNUM: u16 = 0x001d;
-/// Actual feed rate: one value record.
-pub const ACTF: u16 = 0x0024;
-/// Actual spindle speed: one value record.
-pub const ACTS: u16 = 0x0025;
-/// Axis positions: args [type code, axis]; value records.
-pub const POSITION: u16 = 0x0026;
-/// Spindle data: args [code, spindle]; value records.
-pub const SPINDLE: u16 = 0x0040;
-/// Servo load meter: args \[1\]; value records.
-pub const SERVO_LOAD: u16 = 0x0056;
-/// Unit words: args \[1\] positions, \[2\] machine positions, \[3\]/\[4\] speeds.
-pub const UNITS: u16 = 0x0088;
-/// Axis names: args \[0\] 4 bytes per axis; [-1] i32 count + 16 bytes per axis.
-pub const RDAXISNAME: u16 = 0x0089;
-/// Spindle names: 4 bytes per spindle.
-pub const RDSPDLNAME: u16 = 0x008a;
-/// Display flags per axis (u32).
-pub const AXIS_FLAGS: u16 = 0x00a3;
-/// Counts: args \[0\] axes, \[1\] spindles, \[2\] servo axes, \[3\] speed display.
-pub const COUNT: u16 = 0x00a4;
-/// cnc_rdaxisdata class 5 type 2: a third speed-class value record (its
-/// meaning is not known; FANUC's library names it 'F' and takes its unit
-/// from 0x88\[4\]).
-pub const SPEED_A5: u16 = 0x00a5;
 
 /// 0x26 type codes.
 pub mod pos {
@@ -820,9 +791,6 @@ fn decode_speed(cmds: &[u16], limit: i16, resp: &[RespSub]) -> Result<AxisDataRe
 //      PMC G28 of the path; Series 15: 0x24, 0x25, 0x88[0], 0x95, 0x8a
 // ---------------------------------------------------------------------------
 
-/// Series 15: which spindle's name is shown with the speed (1-based; its
-/// entry of 0x8a names the actual speed).
-pub const SPINDLE_SHOWN15: u16 = 0x0095;
 /// 16i class: parameters FANUC's library reads with the speeds. 3107 bit 3
 /// shows the actual feed per revolution under G95; what it takes from 3106
 /// and 9936 was not seen (no bit of either changed an output).

@@ -1,52 +1,19 @@
 //! Program execution: numbers, names, blocks, modal data, timers.
 
 use super::call::{Call, Ctx, Single, payload};
+pub use super::cmd::{
+    EXEPRGNAME, EXEPRGNAME2, GETTIMER, MODAL_AUX, MODAL_G, PDF_ADD, PDF_ALLDIR, PDF_COPY, PDF_DEL,
+    PDF_DELALL, PDF_DELLINE, PDF_DRIVE, PDF_INF, PDF_MOVE, PDF_RDACTPT, PDF_RDCURDIR, PDF_RDLINE,
+    PDF_RDMAIN, PDF_RENAME, PDF_SLCTMAIN, PDF_SUBDIR, PDF_SUBDIRN, PDF_WRACTPT, PDF_WRCURDIR,
+    PDF_WRLINE, RDEXECPROG, RDMDIPROG, RDOPMODE, RDPROGDIR, RDPROGINFO, RDTIMER, SETTIMER,
+    WRMDIPROG,
+};
 use super::packet::{ReqSub, RespSub};
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::Result;
 use crate::wire_struct;
 
 // --- program ---
-
-pub const RDEXECPROG: u16 = 0x0020;
-pub const MODAL_G: u16 = 0x0021;
-pub const MODAL_AUX: u16 = 0x0022;
-pub const GETTIMER: u16 = 0x0045;
-pub const SETTIMER: u16 = 0x0046;
-pub const RDOPMODE: u16 = 0x0057;
-pub const EXEPRGNAME: u16 = 0x00cf;
-pub const EXEPRGNAME2: u16 = 0x00fc;
-pub const RDTIMER: u16 = 0x0120;
-/// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
-/// cnc_rdprogdir3).
-pub const RDPROGDIR: u16 = 0x0006;
-/// cnc_rdmdiprog (answer: the MDI program's text) and cnc_wrmdiprog (the
-/// text as the request's payload).
-pub const RDMDIPROG: u16 = 0x0036;
-pub const WRMDIPROG: u16 = 0x0037;
-/// Program data folder commands (30i; src/ffi/folder.rs).
-pub const PDF_DRIVE: u16 = 0x00ae;
-pub const PDF_INF: u16 = 0x00af;
-pub const PDF_RDCURDIR: u16 = 0x00b0;
-pub const PDF_WRCURDIR: u16 = 0x00b1;
-pub const PDF_SUBDIRN: u16 = 0x00b4;
-pub const PDF_ADD: u16 = 0x00b5;
-pub const PDF_DEL: u16 = 0x00b6;
-pub const PDF_RENAME: u16 = 0x00b7;
-pub const PDF_RDMAIN: u16 = 0x00b9;
-pub const PDF_SLCTMAIN: u16 = 0x00ba;
-pub const PDF_COPY: u16 = 0x0188;
-pub const PDF_MOVE: u16 = 0x0189;
-pub const PDF_SUBDIR: u16 = 0x00b2;
-pub const PDF_ALLDIR: u16 = 0x00b3;
-pub const PDF_RDLINE: u16 = 0x00f0;
-pub const PDF_WRLINE: u16 = 0x00f1;
-pub const PDF_DELLINE: u16 = 0x00f2;
-pub const PDF_DELALL: u16 = 0x00f3;
-pub const PDF_RDACTPT: u16 = 0x01ba;
-pub const PDF_WRACTPT: u16 = 0x01bb;
-/// cnc_rdproginfo: [`ProgInfo`].
-pub const RDPROGINFO: u16 = 0x0007;
 
 wire_struct! {
     /// Payload of 0x0007 (cnc_rdproginfo): programs stored and free, bytes

@@ -6,6 +6,9 @@
 //! with 0x004d [grp, 1, ntool] (cnc_toolnum's command).
 
 use super::call::{Call, Ctx, Single, sub};
+pub use super::cmd::{
+    PTLDATA, PTLINFO, TLCTL, TLGROUP, TLINSERT, TLMNG, TLOPTGRP, TLTOOLS, TLUSEGRP, WRGRPINFO,
+};
 use super::open::CncClass;
 use super::packet::ReqSub;
 use super::packet::RespSub;
@@ -13,15 +16,6 @@ use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::Result;
 use crate::wire_struct;
-
-/// Tool life group record: args [grp, grp].
-pub const TLGROUP: u16 = 0x008b;
-/// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
-pub const TLTOOLS: u16 = 0x004d;
-/// Inserts a tool into a group: args [grp, tuse_num, tool number].
-pub const TLINSERT: u16 = 0x0054;
-/// Punch press tool control data (no args).
-pub const TLCTL: u16 = 0x009a;
 
 wire_struct! {
     /// Payload of 0x008b: group number, then the number of tools, tool life
@@ -116,15 +110,6 @@ wire_struct! {
 pub fn tlctl() -> Single<ToolCtl> {
     Single::new(ReqSub::cnc(TLCTL, &[]))
 }
-
-/// cnc_wrgrpinfo: args [s, e, 0, 0, payload length] + one
-/// [`GroupWrite`] per group s..=e.
-pub const WRGRPINFO: u16 = 0x004c;
-/// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
-pub const TLUSEGRP: u16 = 0x0048;
-/// cnc_rdtlusegrp on the 30i class: the optional group number of group
-/// `g`, args [g, g].
-pub const TLOPTGRP: u16 = 0x01bf;
 
 /// Most groups one 0x008b range request asks for (e capped at s + 43), as
 /// FANUC's cnc_rdgrpinfo asks: 44 records of 32 bytes fit one answer.
@@ -292,9 +277,6 @@ impl Call for OptGroups {
     }
 }
 
-/// cnc_rdtool: tool management data, args [top, n] (n at most
-/// [`TOOLS_PER_MNG`]).
-pub const TLMNG: u16 = 0x014b;
 /// Most records one 0x014b request asks for, as FANUC's library asks (9
 /// records of 156 bytes and the count fit one answer).
 pub const TOOLS_PER_MNG: i32 = 9;
@@ -388,11 +370,6 @@ impl Call for RdTool {
         Ok(l.tools.into_iter().take(count).collect())
     }
 }
-
-/// cnc_rdtoolinfo (punch press): no args.
-pub const PTLINFO: u16 = 0x0099;
-/// cnc_rdtooldata (punch press): args [0, tool_no, n].
-pub const PTLDATA: u16 = 0x009c;
 
 /// The 30i-class 0x0099 answer as FANUC's library reads it (108 bytes):
 /// tld_max, mlt_max and reserve the low 16 bits of three i32, then the 48

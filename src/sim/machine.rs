@@ -603,7 +603,7 @@ impl Machine {
     /// path word: 0x800b (title), 0x8010 (alarm messages), 0x804a / 0x804b
     /// (timer types).
     pub(crate) fn pmc_raw(&mut self, sub: &crate::proto::packet::ReqSub) -> Option<Reply<Vec<u8>>> {
-        use crate::proto::pmc::{GET_TIMER_TYPE, RDALMMSG, RDPMCTITLE, SET_TIMER_TYPE};
+        use crate::proto::pmc::{GET_TIMER_TYPE, PMC_RDALMMSG, RDPMCTITLE, SET_TIMER_TYPE};
         if sub.class != crate::proto::packet::CLASS_PMC {
             return None;
         }
@@ -611,7 +611,7 @@ impl Machine {
         let pmc = &mut self.profile.pmc;
         Some(match sub.cmd {
             RDPMCTITLE => pmc.title_bytes(unit),
-            RDALMMSG => pmc.alarm_messages(unit, a[0], a[1]),
+            PMC_RDALMMSG => pmc.alarm_messages(unit, a[0], a[1]),
             GET_TIMER_TYPE => pmc.timer_types(unit, a[0], a[1]),
             SET_TIMER_TYPE => pmc
                 .set_timer_types(unit, a[0], a[1], &sub.payload)

@@ -6,22 +6,21 @@ use crate::ew;
 use crate::proto::cmd;
 use crate::proto::described;
 use crate::proto::open::OpenBody;
-use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
+use crate::proto::packet::{CLASS_CNC, CLASS_PMC, ReqSub, RespSub};
 use crate::proto::param::{self, InfoList, NumRange, ParamType30, Table};
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
 use crate::proto::wire::Wire;
 use crate::spec::Func;
 // --- offset ---
-use crate::proto::alarm::{AlmHistory, RDALMHISNO, RDALMHISTRY};
-use crate::proto::history as phis;
-use crate::proto::offset::{self as ofs, Ack, Count};
-use crate::proto::tool::{GroupRange, TLGROUP, TLTOOLS, ToolList};
+use crate::proto::alarm::AlmHistory;
+use crate::proto::offset::{Ack, Count};
+use crate::proto::tool::{GroupRange, ToolList};
 use crate::proto::value::Value;
 // --- position ---
 // --- program ---
 use crate::proto::program as pprog;
 // --- alarm ---
-use crate::proto::alarm::{self as palarm, OpMsg};
+use crate::proto::alarm::OpMsg;
 
 /// An error code a CNC puts in a response subpacket.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -424,86 +423,76 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             (CLASS_CNC, cmd::HDCK) => enc(svc.hdck(p)),
             (CLASS_CNC, cmd::TMMODE) => enc(svc.tmmode(p)),
             (CLASS_CNC, cmd::SYSINFO15) => enc(svc.sysinfo15(p)),
-            (CLASS_CNC, crate::proto::position::SPINDLE_SHOWN15) => enc(svc.spindle_shown15(p)),
+            (CLASS_CNC, cmd::SPINDLE_SHOWN15) => enc(svc.spindle_shown15(p)),
             (CLASS_CNC, cmd::RDCNCID) => enc(svc.cnc_id()),
             (CLASS_CNC, cmd::RDPARAM16) => svc.param16(p, a[0], a[1], a[2] as i16),
 
             // --- position ---
-            (CLASS_CNC, crate::proto::position::ALARM) => enc(svc.alarm_bits(p)),
-            (CLASS_CNC, crate::proto::position::PRGNUM) => enc(svc.prog_nums(p)),
-            (CLASS_CNC, crate::proto::position::SEQNUM) => enc(svc.seq_num(p)),
-            (CLASS_CNC, crate::proto::position::ACTF) => enc(svc.actual(p, false)),
-            (CLASS_CNC, crate::proto::position::ACTS) => enc(svc.actual(p, true)),
-            (CLASS_CNC, crate::proto::position::SPEED_A5) => enc(svc.speed_a5(p)),
-            (CLASS_CNC, crate::proto::position::POSITION) => enc(svc.positions(p, a[0], a[1])),
-            (CLASS_CNC, crate::proto::position::GETFIGURE) => enc(svc.figures(p, a[0])),
-            (CLASS_CNC, crate::proto::position::RDAXISNAME) if a[0] == -1 => {
-                enc(svc.axis_pos_names(p))
-            }
-            (CLASS_CNC, crate::proto::position::RDAXISNAME) => enc(svc.axis_names(p)),
-            (CLASS_CNC, crate::proto::position::RDSPDLNAME) => enc(svc.spindle_names(p)),
-            (CLASS_CNC, crate::proto::position::SPINDLE) => enc(svc.spindle_data(p, a[0], a[1])),
-            (CLASS_CNC, crate::proto::position::SERVO_LOAD) => enc(svc.servo_load(p, a[0])),
-            (CLASS_CNC, crate::proto::position::UNITS) => enc(svc.units(p, a[0])),
-            (CLASS_CNC, crate::proto::position::AXIS_FLAGS) => enc(svc.axis_flags(p)),
-            (CLASS_CNC, crate::proto::position::COUNT) => enc(svc.counts(p, a[0])),
+            (CLASS_CNC, cmd::ALARM) => enc(svc.alarm_bits(p)),
+            (CLASS_CNC, cmd::PRGNUM) => enc(svc.prog_nums(p)),
+            (CLASS_CNC, cmd::SEQNUM) => enc(svc.seq_num(p)),
+            (CLASS_CNC, cmd::ACTF) => enc(svc.actual(p, false)),
+            (CLASS_CNC, cmd::ACTS) => enc(svc.actual(p, true)),
+            (CLASS_CNC, cmd::SPEED_A5) => enc(svc.speed_a5(p)),
+            (CLASS_CNC, cmd::POSITION) => enc(svc.positions(p, a[0], a[1])),
+            (CLASS_CNC, cmd::GETFIGURE) => enc(svc.figures(p, a[0])),
+            (CLASS_CNC, cmd::RDAXISNAME) if a[0] == -1 => enc(svc.axis_pos_names(p)),
+            (CLASS_CNC, cmd::RDAXISNAME) => enc(svc.axis_names(p)),
+            (CLASS_CNC, cmd::RDSPDLNAME) => enc(svc.spindle_names(p)),
+            (CLASS_CNC, cmd::SPINDLE) => enc(svc.spindle_data(p, a[0], a[1])),
+            (CLASS_CNC, cmd::SERVO_LOAD) => enc(svc.servo_load(p, a[0])),
+            (CLASS_CNC, cmd::UNITS) => enc(svc.units(p, a[0])),
+            (CLASS_CNC, cmd::AXIS_FLAGS) => enc(svc.axis_flags(p)),
+            (CLASS_CNC, cmd::COUNT) => enc(svc.counts(p, a[0])),
 
             // --- program ---
-            (CLASS_CNC, pprog::EXEPRGNAME) => enc(svc.exe_prgname(p)),
-            (CLASS_CNC, pprog::EXEPRGNAME2) => enc(svc.exe_prgname2(p)),
-            (CLASS_CNC, pprog::RDEXECPROG) => enc(svc.exec_prog(p, a[0])),
-            (CLASS_CNC, pprog::MODAL_G) => enc(svc.modal_g(p, a[0], a[1])),
-            (CLASS_CNC, pprog::MODAL_AUX) => enc(svc.modal_aux(p, a[0], a[1])),
-            (CLASS_CNC, pprog::RDTIMER) => enc(svc.timer(p, a[0])),
-            (CLASS_CNC, pprog::GETTIMER) => enc(svc.clock(p, a[0])),
-            (CLASS_CNC, pprog::SETTIMER) => {
-                svc.set_clock(p, a[0], &sub.payload).map(|_| Vec::new())
-            }
-            (CLASS_CNC, pprog::RDOPMODE) => enc(svc.opmode(p)),
-            (CLASS_CNC, pprog::RDPROGDIR) => enc(svc.prog_dir(p, a[0], a[1], a[2])),
+            (CLASS_CNC, cmd::EXEPRGNAME) => enc(svc.exe_prgname(p)),
+            (CLASS_CNC, cmd::EXEPRGNAME2) => enc(svc.exe_prgname2(p)),
+            (CLASS_CNC, cmd::RDEXECPROG) => enc(svc.exec_prog(p, a[0])),
+            (CLASS_CNC, cmd::MODAL_G) => enc(svc.modal_g(p, a[0], a[1])),
+            (CLASS_CNC, cmd::MODAL_AUX) => enc(svc.modal_aux(p, a[0], a[1])),
+            (CLASS_CNC, cmd::RDTIMER) => enc(svc.timer(p, a[0])),
+            (CLASS_CNC, cmd::GETTIMER) => enc(svc.clock(p, a[0])),
+            (CLASS_CNC, cmd::SETTIMER) => svc.set_clock(p, a[0], &sub.payload).map(|_| Vec::new()),
+            (CLASS_CNC, cmd::RDOPMODE) => enc(svc.opmode(p)),
+            (CLASS_CNC, cmd::RDPROGDIR) => enc(svc.prog_dir(p, a[0], a[1], a[2])),
 
             // --- alarm ---
-            (CLASS_CNC, palarm::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
-            (CLASS_CNC, palarm::RDOPMSG) => enc(svc.opmsg(p, a[0])),
-            (CLASS_CNC, palarm::RDOPMSG3) => svc.opmsg3(p, a[0], a[1], a[2]),
-            (CLASS_CNC, crate::proto::machine::RDPRSTR) => svc.restart_info(p, a[0]),
-            (CLASS_CNC, crate::proto::machine::RDCTRLSIG) => match a[0] {
+            (CLASS_CNC, cmd::RDALMMSG) => svc.alarm_messages(p, a[0], a[1], a[3]),
+            (CLASS_CNC, cmd::RDOPMSG) => enc(svc.opmsg(p, a[0])),
+            (CLASS_CNC, cmd::RDOPMSG3) => svc.opmsg3(p, a[0], a[1], a[2]),
+            (CLASS_CNC, cmd::RDPRSTR) => svc.restart_info(p, a[0]),
+            (CLASS_CNC, cmd::RDCTRLSIG) => match a[0] {
                 0 | 1 => svc.ctrl_signals(p, a[0] == 1),
                 _ => Err(CncError::new(ew::EW_ATTRIB)),
             },
 
             // --- param ---
-            (CLASS_CNC, param::RDPARAM) => {
-                svc.param_read30(p, Table::Param, a[0], a[1], a[2] as i16)
-            }
-            (CLASS_CNC, param::DIAGNOSS) => {
-                svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16)
-            }
-            (CLASS_CNC, param::DIAGNOSS16) => svc.diag16(p, a[0], a[1], a[2] as i16),
-            (CLASS_CNC, param::PARAMTYPE) if a[4] == param::INFO3_FLAG => {
+            (CLASS_CNC, cmd::RDPARAM) => svc.param_read30(p, Table::Param, a[0], a[1], a[2] as i16),
+            (CLASS_CNC, cmd::DIAGNOSS) => svc.param_read30(p, Table::Diag, a[0], a[1], a[2] as i16),
+            (CLASS_CNC, cmd::DIAGNOSS16) => svc.diag16(p, a[0], a[1], a[2] as i16),
+            (CLASS_CNC, cmd::PARAMTYPE) if a[4] == param::INFO3_FLAG => {
                 svc.param_info3(p, a[0], a[1])
             }
-            (CLASS_CNC, param::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
-            (CLASS_CNC, param::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
-            (CLASS_CNC, param::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
-            (CLASS_CNC, param::RDDIAGNUM) => enc(svc.param_num(p, Table::Diag)),
-            (CLASS_CNC, param::RDPARAINFO) => enc(svc.param_info(p, Table::Param, a[0], a[1])),
-            (CLASS_CNC, param::RDDIAGINFO) => enc(svc.param_info(p, Table::Diag, a[0], a[1])),
-            (CLASS_CNC, param::WRPARAM) => svc.param_write(p, false, &sub.payload),
-            (CLASS_CNC, param::WRPARAM16) => svc.param_write(p, true, &sub.payload),
+            (CLASS_CNC, cmd::PARAMTYPE) => enc(svc.param_type30(p, Table::Param, a[0])),
+            (CLASS_CNC, cmd::DIAGTYPE) => enc(svc.param_type30(p, Table::Diag, a[0])),
+            (CLASS_CNC, cmd::RDPARANUM) => enc(svc.param_num(p, Table::Param)),
+            (CLASS_CNC, cmd::RDDIAGNUM) => enc(svc.param_num(p, Table::Diag)),
+            (CLASS_CNC, cmd::RDPARAINFO) => enc(svc.param_info(p, Table::Param, a[0], a[1])),
+            (CLASS_CNC, cmd::RDDIAGINFO) => enc(svc.param_info(p, Table::Diag, a[0], a[1])),
+            (CLASS_CNC, cmd::WRPARAM) => svc.param_write(p, false, &sub.payload),
+            (CLASS_CNC, cmd::WRPARAM16) => svc.param_write(p, true, &sub.payload),
 
             // --- macros ---
-            (CLASS_CNC, crate::proto::macros::RDMACRO) => enc(svc.read_macros(p, a[0], a[1])),
-            (CLASS_CNC, crate::proto::macros::WRMACRO) => {
+            (CLASS_CNC, cmd::RDMACRO) => enc(svc.read_macros(p, a[0], a[1])),
+            (CLASS_CNC, cmd::WRMACRO) => {
                 match Vec::<crate::proto::value::Value>::from_bytes(&sub.payload) {
                     Ok(v) => svc.write_macros(p, a[0], a[1], &v).map(|()| Vec::new()),
                     Err(_) => Err(CncError::new(ew::EW_LENGTH)),
                 }
             }
-            (CLASS_CNC, crate::proto::macros::RDMACROR2) => {
-                enc(svc.read_macros_double(p, a[0], a[1]))
-            }
-            (CLASS_CNC, crate::proto::macros::WRMACROR2) => {
+            (CLASS_CNC, cmd::RDMACROR2) => enc(svc.read_macros_double(p, a[0], a[1])),
+            (CLASS_CNC, cmd::WRMACROR2) => {
                 match Vec::<crate::proto::macros::Double>::from_bytes(&sub.payload) {
                     Ok(v) => enc(svc.write_macros_double(p, a[0], &v)),
                     Err(_) => Err(CncError::new(ew::EW_LENGTH)),
@@ -511,42 +500,36 @@ pub fn dispatch(svc: &mut dyn CncService, sub: &ReqSub) -> RespSub {
             }
 
             // --- pmc ---
-            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCRNG) => {
+            (CLASS_PMC, cmd::RDPMCRNG) => {
                 svc.read_pmc(p, crate::proto::pmc::PmcRange::from_args(&a))
             }
-            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::WRPMCRNG) => svc
+            (CLASS_PMC, cmd::WRPMCRNG) => svc
                 .write_pmc(p, crate::proto::pmc::PmcRange::from_args(&a), &sub.payload)
                 .map(|()| Vec::new()),
-            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::RDPMCINFO) => {
-                enc(svc.pmc_info(p, a[0] as i16))
-            }
-            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::UNIT_TYPES) => {
-                enc(svc.pmc_unit_types(a[0]))
-            }
-            (crate::proto::packet::CLASS_PMC, crate::proto::pmc::SELECT_UNIT) => {
-                svc.pmc_select(a[0]).map(|()| Vec::new())
-            }
+            (CLASS_PMC, cmd::RDPMCINFO) => enc(svc.pmc_info(p, a[0] as i16)),
+            (CLASS_PMC, cmd::UNIT_TYPES) => enc(svc.pmc_unit_types(a[0])),
+            (CLASS_PMC, cmd::SELECT_UNIT) => svc.pmc_select(a[0]).map(|()| Vec::new()),
 
             // --- offset ---
-            (CLASS_CNC, ofs::RDTOFS) => enc(svc.rdtofs(p, a[0], a[1], a[2])),
-            (CLASS_CNC, ofs::WRTOFS) => enc(svc.wrtofs(p, a[0], a[2], &sub.payload)),
-            (CLASS_CNC, ofs::RDZOFS) => enc(svc.rdzofs(p, a[0], a[1], a[2])),
-            (CLASS_CNC, ofs::WRZOFS) => enc(svc.wrzofs(p, a[0], a[2], &sub.payload)),
-            (CLASS_CNC, RDALMHISTRY) => enc(svc.rdalmhistry(a[0], a[1])),
-            (CLASS_CNC, RDALMHISNO) => enc(svc.rdalmhisno()),
+            (CLASS_CNC, cmd::RDTOFS) => enc(svc.rdtofs(p, a[0], a[1], a[2])),
+            (CLASS_CNC, cmd::WRTOFS) => enc(svc.wrtofs(p, a[0], a[2], &sub.payload)),
+            (CLASS_CNC, cmd::RDZOFS) => enc(svc.rdzofs(p, a[0], a[1], a[2])),
+            (CLASS_CNC, cmd::WRZOFS) => enc(svc.wrzofs(p, a[0], a[2], &sub.payload)),
+            (CLASS_CNC, cmd::RDALMHISTRY) => enc(svc.rdalmhistry(a[0], a[1])),
+            (CLASS_CNC, cmd::RDALMHISNO) => enc(svc.rdalmhisno()),
             (
                 CLASS_CNC,
-                c @ (phis::RDOPHISTRY
-                | phis::RDOPHISTRY4
-                | phis::RDOMHISTRY
-                | phis::RDOMHISTRY2
-                | phis::RDALMHISTRY5
-                | phis::RDPITCHR),
+                c @ (cmd::RDOPHISTRY
+                | cmd::RDOPHISTRY4
+                | cmd::RDOMHISTRY
+                | cmd::RDOMHISTRY2
+                | cmd::RDALMHISTRY5
+                | cmd::RDPITCHR),
             ) => svc.history_records(p, c, a),
 
             // --- tool ---
-            (CLASS_CNC, TLGROUP) => enc(svc.tool_groups(p, a[0], a[1])),
-            (CLASS_CNC, TLTOOLS) => enc(svc.tool_list(p, a[0], a[1], a[2])),
+            (CLASS_CNC, cmd::TLGROUP) => enc(svc.tool_groups(p, a[0], a[1])),
+            (CLASS_CNC, cmd::TLTOOLS) => enc(svc.tool_list(p, a[0], a[1], a[2])),
             _ => match (svc.raw(sub), described::for_request(sub, class)) {
                 (Some(r), _) => r,
                 (None, Some(f)) => svc

@@ -193,7 +193,7 @@ mod tests {
     #[test]
     fn data_frames_name_their_functions() {
         let n = Namer::new(CncClass::Series30);
-        let mut q = ReqSub::cnc(0x008d, &[6711, 6711, 0]);
+        let mut q = ReqSub::cnc(crate::proto::cmd::RDPARAM, &[6711, 6711, 0]);
         q.path = 1;
         let f = Frame::new(CLIENT_VERSION, ftype::DATA_REQ, Vec::new());
         assert_eq!(

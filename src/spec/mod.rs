@@ -1,6 +1,7 @@
 //! The bottom layer: FOCAS functions described as data ([`Func`]), one
 //! entry each in [`FUNCS`]. Everything above reads it; it reads nothing.
 
+pub mod commands;
 pub mod table;
 pub mod types;
 

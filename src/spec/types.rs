@@ -8,7 +8,10 @@
 //! it, and the oracle generates the probe's call and the cases from it.
 //!
 //! This file is compiled into build.rs too (`#[path]`): plain data only, no
-//! `crate::` paths.
+//! `crate::` paths but `crate::ew` (build.rs includes src/ew.rs at its root).
+
+use super::commands::{CLASS_CNC, CLASS_PMC};
+use crate::ew::{EW_LENGTH, EW_NOOPT};
 
 /// A C parameter after the handle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -72,7 +75,7 @@ pub enum Word {
 #[derive(Debug, Clone, Copy)]
 pub struct Form {
     pub classes: Classes,
-    /// The subpacket class: 1 CNC (the handle's path), 2 PMC (path 1).
+    /// The subpacket class: `CLASS_CNC` (the handle's path), `CLASS_PMC` (path 1).
     pub class: u16,
     pub cmd: u16,
     /// Up to five argument words; the rest are 0.
@@ -80,8 +83,8 @@ pub struct Form {
 }
 
 /// A check FANUC's library makes before any traffic: number parameter
-/// `arg` outside `lo..=hi` returns `code`. `arg` [`OPTION`] checks the
-/// CNC's FOCAS option bit (0 or 1) instead.
+/// `arg` outside `lo..=hi` returns `code`, an `EW_*` constant of src/ew.rs.
+/// `arg` [`OPTION`] checks the CNC's FOCAS option bit (0 or 1) instead.
 #[derive(Debug, Clone, Copy)]
 pub struct Check {
     pub arg: u8,
@@ -100,7 +103,7 @@ pub const fn at_least_one(arg: u8) -> Check {
         arg,
         lo: 1,
         hi: i32::MAX,
-        code: 2,
+        code: EW_LENGTH,
     }
 }
 
@@ -109,7 +112,7 @@ pub const NEEDS_OPTION: Check = Check {
     arg: OPTION,
     lo: 1,
     hi: 1,
-    code: 6,
+    code: EW_NOOPT,
 };
 
 /// An integer of the wire (big-endian) or of a C struct (native).
@@ -343,7 +346,7 @@ pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
 pub const fn every_class(cmd: u16, words: &'static [Word]) -> Form {
     Form {
         classes: Classes::All,
-        class: 1,
+        class: CLASS_CNC,
         cmd,
         words,
     }
@@ -353,7 +356,7 @@ pub const fn every_class(cmd: u16, words: &'static [Word]) -> Form {
 pub const fn pmc(cmd: u16, words: &'static [Word]) -> Form {
     Form {
         classes: Classes::All,
-        class: 2,
+        class: CLASS_PMC,
         cmd,
         words,
     }

@@ -192,27 +192,12 @@ fn header_accepts_fanuc_style_cxx() {
 #[test]
 fn ew_codes_match_src_ew() {
     let header = header_text();
-    let ew = std::fs::read_to_string(toolchain::manifest_dir().join("src/ew.rs")).unwrap();
     let mut n = 0;
-    for line in ew.lines() {
-        let Some(rest) = line.trim().strip_prefix("pub const EW_") else {
-            continue;
-        };
-        let (name, rest) = rest.split_once(':').unwrap();
-        let name = format!("EW_{name}");
-        let name = name.as_str();
-        let value = rest
-            .split_once('=')
-            .unwrap()
-            .1
-            .split_once(';')
-            .unwrap()
-            .0
-            .trim();
-        let want = if value.starts_with('-') {
+    for &(name, value, _) in fwlib32::ew::CODES {
+        let want = if value < 0 {
             format!("({value})")
         } else {
-            value.to_owned()
+            value.to_string()
         };
         let found: Vec<&str> = header
             .lines()

@@ -268,6 +268,7 @@ fn expand_range(x: &str) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::proto::cmd::{self, CLASS_CNC};
 
     #[test]
     fn command_line_specs() {
@@ -281,8 +282,11 @@ mod tests {
         assert_eq!(f.functions, vec!["cnc_rdparam", "pmc_rdpmcrng"]);
         assert!(f.check(1).is_ok());
         let f = Fault::parse_spec("error:commands=0x19,code=-1").unwrap();
-        assert_eq!((f.commands.clone(), f.code), (vec![0x19], Some(-1)));
-        assert_eq!(f.error_commands(), vec![(1, 0x19)]);
+        assert_eq!(
+            (f.commands.clone(), f.code),
+            (vec![cmd::STATINFO], Some(-1))
+        );
+        assert_eq!(f.error_commands(), vec![(CLASS_CNC, cmd::STATINFO)]);
         assert_eq!(Fault::parse_spec("delay:delay_ms=2").unwrap().delay_ms, 2);
         assert!(Fault::parse_spec("melt").is_err());
         assert!(Fault::parse_spec("off:colour=red").is_err());

@@ -1,5 +1,6 @@
 //! The feed and speed functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -9,7 +10,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_actf",
         doc: "Reads the actual feed rate (F).",
         params: &[Param::Out("actualfeed", "ODBACT")],
-        forms: &[every_class(0x0024, &[])],
+        forms: &[every_class(cmd::ACTF, &[])],
         reply: &[to(I32, "data", I32)],
         ..COMMAND
     },
@@ -17,7 +18,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_acts",
         doc: "Reads the actual spindle speed (S).",
         params: &[Param::Out("actualspindle", "ODBACT")],
-        forms: &[every_class(0x0025, &[])],
+        forms: &[every_class(cmd::ACTS, &[])],
         reply: &[to(I32, "data", I32)],
         ..COMMAND
     },

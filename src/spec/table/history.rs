@@ -1,5 +1,6 @@
 //! The operation and operator-message histories functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -9,27 +10,27 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdophisno",
         doc: "Reads the number of operation history entries.",
         params: &[Param::Out("hisno", "unsigned short")],
-        forms: &[every_class(0x0069, &[])],
+        forms: &[every_class(cmd::RDOPHISNO, &[])],
         reply: &[to(I32, "", U16)],
         ..COMMAND
     },
     Func {
         name: "cnc_startophis",
         doc: "Starts recording the operation history.",
-        forms: &[every_class(0x0068, &[])],
+        forms: &[every_class(cmd::STARTOPHIS, &[])],
         ..COMMAND
     },
     Func {
         name: "cnc_stopophis",
         doc: "Stops recording the operation history.",
-        forms: &[every_class(0x0067, &[])],
+        forms: &[every_class(cmd::STOPOPHIS, &[])],
         ..COMMAND
     },
     Func {
         name: "cnc_clearophis",
         doc: "Clears the operation history.",
         params: &[Param::Short("type")],
-        forms: &[every_class(0x006d, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::CLEAROPHIS, &[Word::Arg(0)])],
         dims: &["0|1|2|-1|3"],
         ..COMMAND
     },
@@ -37,7 +38,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdomhisno",
         doc: "Reads the number of operator message history entries.",
         params: &[Param::Out("hisno", "unsigned short")],
-        forms: &[every_class(0x01b4, &[])],
+        forms: &[every_class(cmd::RDOMHISNO, &[])],
         reply: &[to(U16, "", U16)],
         ..COMMAND
     },
@@ -45,7 +46,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdomhisinfo",
         doc: "Reads the operator message history's size: most entries, entries held, characters per message.",
         params: &[Param::Out("ominfo", "ODBOMIF")],
-        forms: &[every_class(0x0072, &[])],
+        forms: &[every_class(cmd::RDOMHISINFO, &[])],
         reply: &[
             to(I32, "om_max", U16),
             to(I32, "om_sum", U16),
@@ -56,13 +57,13 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_startomhis",
         doc: "Starts recording the operator message history.",
-        forms: &[every_class(0x0071, &[])],
+        forms: &[every_class(cmd::STARTOMHIS, &[])],
         ..COMMAND
     },
     Func {
         name: "cnc_stopomhis",
         doc: "Stops recording the operator message history.",
-        forms: &[every_class(0x0070, &[])],
+        forms: &[every_class(cmd::STOPOMHIS, &[])],
         ..COMMAND
     },
     Func {
@@ -72,11 +73,11 @@ pub const FUNCS: &[Func] = &[
         forms: &[
             Form {
                 classes: Classes::S30,
-                class: 1,
-                cmd: 0x0074,
+                class: cmd::CLASS_CNC,
+                cmd: cmd::CLEAROMHIS,
                 words: &[Word::Const(2)],
             },
-            every_class(0x0074, &[]),
+            every_class(cmd::CLEAROMHIS, &[]),
         ],
         ..COMMAND
     },
@@ -84,7 +85,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdhissgnl3",
         doc: "Reads the signals the operation history records (as many 16-byte records as the CNC sends, at most 60; datano and type untouched).",
         params: &[Param::Out("sig", "IODBSIG3")],
-        forms: &[every_class(0x01b2, &[])],
+        forms: &[every_class(cmd::RDHISSGNL3, &[])],
         records: Some(Records {
             fields: &[
                 to(I32, "ent_no", I16),

@@ -1,5 +1,6 @@
 //! The machine information functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -9,7 +10,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdproctime",
         doc: "Reads the machining times of the last programs run.",
         params: &[Param::Out("proc_time", "ODBPTIME")],
-        forms: &[every_class(0x0075, &[])],
+        forms: &[every_class(cmd::RDPROCTIME, &[])],
         // Whole 12-byte records, their number written to `num`.
         records: Some(Records {
             fields: &[
@@ -32,7 +33,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdetherinfo",
         doc: "Reads the Ethernet board's type and device.",
         params: &[Param::Out("type", "short"), Param::Out("device", "short")],
-        forms: &[every_class(0x0159, &[])],
+        forms: &[every_class(cmd::RDETHERINFO, &[])],
         reply: &[to_out(0, I16, "", I16), to_out(1, I16, "", I16)],
         ..COMMAND
     },

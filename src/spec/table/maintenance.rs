@@ -1,6 +1,7 @@
 //! Periodic maintenance: the item names and the items
 //! (docs/protocol/machine.md, "Periodic maintenance").
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -72,13 +73,13 @@ pub const FUNCS: &[Func] = &[
     names(
         "cnc_rdpm_cncitem",
         "Reads the names of the CNC's maintenance items from the `start_num`-th on: `*data_num` in is how many (at most 23 are asked), out how many were written; below 1 it is EW_LENGTH without traffic. Never more names than asked are written (FANUC's library writes every name the CNC sends).",
-        &[every_class(0x00d3, READ)],
+        &[every_class(cmd::RDPM_CNCITEM, READ)],
         &["1|0|-1|2|6|7", "4|1|0|-1|20|23|24|100"],
     ),
     names(
         "cnc_rdpm_mcnitem",
         "Reads the machine tool builder's maintenance item names from the `start_num`-th on, as cnc_rdpm_cncitem.",
-        &[every_class(0x00bc, READ)],
+        &[every_class(cmd::RDPM_MCNITEM, READ)],
         &["1|0|-1|2|20|21", "4|1|0|-1|20|23|24|100"],
     ),
     Func {
@@ -90,7 +91,7 @@ pub const FUNCS: &[Func] = &[
             Param::Out("item", "IODBPMAINTE"),
         ],
         checks: COUNTED,
-        forms: &[every_class(0x00be, READ)],
+        forms: &[every_class(cmd::RDPM_ITEM, READ)],
         records: Some(Records {
             fields: ITEM,
             out: 0,
@@ -112,7 +113,7 @@ pub const FUNCS: &[Func] = &[
             Param::In("item", "char[62]"),
         ],
         checks: COUNTED,
-        forms: &[every_class(0x00bd, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::WRPM_MCNITEM, &[Word::Arg(0)])],
         payload: Some(Payload {
             fields: &[NAME],
             elem: "char[62]",
@@ -131,7 +132,7 @@ pub const FUNCS: &[Func] = &[
             Param::In("item", "IODBPMAINTE"),
         ],
         checks: &[at_least_one(2)],
-        forms: &[every_class(0x00bf, &[Word::Arg(0), Word::Arg(1)])],
+        forms: &[every_class(cmd::WRPM_ITEM, &[Word::Arg(0), Word::Arg(1)])],
         payload: Some(Payload {
             fields: ITEM,
             elem: "IODBPMAINTE",

@@ -3,7 +3,8 @@
 //! simulator read them through `crate::spec::FUNCS`, the oracle generates
 //! their probe words and cases from them.
 //!
-//! Compiled into build.rs too: plain data only.
+//! Compiled into build.rs too: plain data only (`crate::ew` is src/ew.rs
+//! there as here).
 
 use super::types::*;
 

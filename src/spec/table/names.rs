@@ -1,5 +1,6 @@
 //! The names of the axes and spindles.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -38,7 +39,7 @@ pub const FUNCS: &[Func] = &[
             Param::Out("axisname", "ODBAXISNAME"),
         ],
         checks: &[at_least_one(0)],
-        forms: &[every_class(0x0089, &[])],
+        forms: &[every_class(cmd::RDAXISNAME, &[])],
         records: entries(&[ch("name"), ch("suff"), skip(U8), skip(U8)], "ODBAXISNAME"),
         dims: &["4|1|0|-1|2|3|32|33"],
         ..COMMAND
@@ -51,7 +52,7 @@ pub const FUNCS: &[Func] = &[
             Param::Out("spdlname", "ODBSPDLNAME"),
         ],
         checks: &[at_least_one(0)],
-        forms: &[every_class(0x008a, &[])],
+        forms: &[every_class(cmd::RDSPDLNAME, &[])],
         records: entries(
             &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
             "ODBSPDLNAME",

@@ -1,5 +1,6 @@
 //! The offsets, macros functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -9,7 +10,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdtofsinfo",
         doc: "Reads the tool offset memory type and the number of offsets.",
         params: &[Param::Out("tlinf", "ODBTLINF")],
-        forms: &[every_class(0x000a, &[])],
+        forms: &[every_class(cmd::RDTOFSINFO, &[])],
         reply: &[skip(I16), to(I16, "use_no", I16), to(I16, "ofs_type", I16)],
         short: Short::Zeros,
         ..COMMAND
@@ -18,7 +19,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdzofsinfo",
         doc: "Reads the number of work zero offsets.",
         params: &[Param::Out("ofs_no", "short")],
-        forms: &[every_class(0x000d, &[])],
+        forms: &[every_class(cmd::RDZOFSINFO, &[])],
         reply: &[to(I32, "", I16)],
         short: Short::Zeros,
         ..COMMAND
@@ -27,7 +28,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdmacroinfo",
         doc: "Reads how many common variables the CNC has: `use_no1` (#100..), `use_no2` (#500..).",
         params: &[Param::Out("buf", "ODBMVINF")],
-        forms: &[every_class(0x0017, &[])],
+        forms: &[every_class(cmd::RDMACROINFO, &[])],
         reply: &[to(I32, "use_no1", I16), to(I32, "use_no2", I16)],
         short: Short::Zeros,
         ..COMMAND

@@ -1,5 +1,6 @@
 //! The operation functions.
 
+use super::super::commands as cmd;
 use super::super::types::*;
 use super::base::COMMAND;
 
@@ -7,27 +8,27 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_start",
         doc: "Cycle start: the CNC runs the selected main program (MEMORY mode, no alarm; else EW_REJECT).",
-        forms: &[every_class(0x0001, &[])],
+        forms: &[every_class(cmd::START, &[])],
         ..COMMAND
     },
     Func {
         name: "cnc_reset",
         doc: "Resets the CNC: the running program stops, reset-clearable alarms are cleared.",
-        forms: &[every_class(0x0002, &[])],
+        forms: &[every_class(cmd::RESET, &[])],
         ..COMMAND
     },
     Func {
         name: "cnc_reset2",
         doc: "Resets the CNC as cnc_reset does (needs the FOCAS option, else EW_NOOPT).",
         checks: &[NEEDS_OPTION],
-        forms: &[every_class(0x02c5, &[])],
+        forms: &[every_class(cmd::RESET2, &[])],
         ..COMMAND
     },
     Func {
         name: "cnc_clralm",
         doc: "Clears the CNC's active alarms of type `id` (cnc_rdalmmsg's types).",
         params: &[Param::Short("id")],
-        forms: &[every_class(0x0087, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::CLRALM, &[Word::Arg(0)])],
         dims: &["3|0|1|2|-1|100|32767"],
         ..COMMAND
     },

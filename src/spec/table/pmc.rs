@@ -1,5 +1,6 @@
 //! The PMC units functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 
@@ -8,7 +9,7 @@ pub const FUNCS: &[Func] = &[Func {
     doc: "Reads how many PMC units the CNC has (4 bytes written into the `long`).",
     params: &[Param::Out("piNum", "long")],
     checks: &[],
-    forms: &[pmc(0x800e, &[])],
+    forms: &[pmc(cmd::PMC_COUNT, &[])],
     reply: &[to(I32, "", I32)],
     records: None,
     payload: None,

@@ -1,5 +1,6 @@
 //! The program functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -9,7 +10,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdprgnum",
         doc: "Reads the running and main program numbers (the low 16 bits of each, as FANUC's library stores them in the default ODBPRO's shorts).",
         params: &[Param::Out("prgnum", "ODBPRO")],
-        forms: &[every_class(0x001c, &[])],
+        forms: &[every_class(cmd::PRGNUM, &[])],
         reply: &[to(I32, "data", I16), to(I32, "mdata", I16)],
         ..COMMAND
     },
@@ -17,7 +18,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdseqnum",
         doc: "Reads the sequence number of the block being executed.",
         params: &[Param::Out("seqnum", "ODBSEQ")],
-        forms: &[every_class(0x001d, &[])],
+        forms: &[every_class(cmd::SEQNUM, &[])],
         reply: &[to(I32, "data", I32)],
         ..COMMAND
     },
@@ -25,7 +26,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdblkcount",
         doc: "Reads the number of blocks executed (4 bytes written into the `long`).",
         params: &[Param::Out("prog_bc", "long")],
-        forms: &[every_class(0x0035, &[])],
+        forms: &[every_class(cmd::RDBLKCOUNT, &[])],
         reply: &[to(I32, "", I32)],
         ..COMMAND
     },
@@ -33,7 +34,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdactpt",
         doc: "Reads the execution pointer: program number and block number (4 bytes written into each `long`).",
         params: &[Param::Out("prog_no", "long"), Param::Out("blk_no", "long")],
-        forms: &[every_class(0x0162, &[])],
+        forms: &[every_class(cmd::RDACTPT, &[])],
         reply: &[to_out(0, I32, "", I32), to_out(1, I32, "", I32)],
         ..COMMAND
     },
@@ -41,7 +42,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdtimer",
         doc: "Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free) as minutes and milliseconds.",
         params: &[Param::Short("type"), Param::Out("time", "IODBTIME")],
-        forms: &[every_class(0x0120, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::RDTIMER, &[Word::Arg(0)])],
         reply: &[to(I32, "minute", I32), to(I32, "msec", I32)],
         dims: &["0|1|2|3|4|-1|5"],
         ..COMMAND

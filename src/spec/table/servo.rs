@@ -1,5 +1,6 @@
 //! The servo functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
@@ -9,20 +10,20 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdloopgain",
         doc: "Reads the servo loop gain of each axis (4 bytes written per `long`).",
-        forms: &[every_class(0x0056, &[Word::Const(0)])],
+        forms: &[every_class(cmd::SERVO_LOAD, &[Word::Const(0)])],
         ..SERVO_LONGS
     },
     Func {
         name: "cnc_rdsrvspeed",
         doc: "Reads the actual servo motor speed of each axis (4 bytes written per `long`).",
-        forms: &[every_class(0x0056, &[Word::Const(2)])],
+        forms: &[every_class(cmd::SERVO_LOAD, &[Word::Const(2)])],
         ..SERVO_LONGS
     },
     Func {
         name: "cnc_rdcurrent",
         doc: "Reads the actual servo current of each axis.",
         params: &[Param::Out("data", "short")],
-        forms: &[every_class(0x0056, &[Word::Const(1)])],
+        forms: &[every_class(cmd::SERVO_LOAD, &[Word::Const(1)])],
         records: Some(Records {
             fields: &[to(I32, "", I16), skip(I32)],
             out: 0,
@@ -38,7 +39,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdspdlalm",
         doc: "Reads the alarm state of each spindle, one byte per spindle (at most 8).",
         params: &[Param::Out("data", "char")],
-        forms: &[every_class(0x005a, &[])],
+        forms: &[every_class(cmd::RDSPDLALM, &[])],
         // The low byte of each i16, as many as the answer holds.
         records: Some(Records {
             fields: &[to(I16, "", I8)],
@@ -55,7 +56,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdpitchinfo",
         doc: "Reads the number of pitch error compensation points.",
         params: &[Param::Out("datano", "short")],
-        forms: &[every_class(0x0014, &[])],
+        forms: &[every_class(cmd::RDPITCHINFO, &[])],
         reply: &[to(I32, "", I16)],
         ..COMMAND
     },

@@ -1,8 +1,10 @@
 //! The tool life functions.
 
+use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
+use crate::ew::EW_ATTRIB;
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -14,7 +16,7 @@ pub const FUNCS: &[Func] = &[
             Param::Out("toolnum", "ODBTLIFE4"),
         ],
         forms: &[every_class(
-            0x004d,
+            cmd::TLTOOLS,
             &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
         )],
         reply: &[
@@ -31,7 +33,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdntool",
         doc: "Reads the number of tools in tool-life group `grp_num`.",
         params: &[Param::Short("grp_num"), Param::Out("tool", "ODBTLIFE3")],
-        forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
+        forms: &[every_class(cmd::TLGROUP, &[Word::Arg(0), Word::Arg(0)])],
         reply: &[to(I32, "datano", I16), to(I32, "data", I32)],
         short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
@@ -42,7 +44,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdlife",
         doc: "Reads the tool life of tool group `number` (`data`; `dummy` untouched; `datano` the group number the CNC answered).",
         params: &[Param::Short("number"), Param::Out("life", "ODBTLIFE3")],
-        forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
+        forms: &[every_class(cmd::TLGROUP, &[Word::Arg(0), Word::Arg(0)])],
         // Group, then tools, life and counter as value records (value, base, exponent).
         reply: &[
             to(I32, "datano", I16),
@@ -62,7 +64,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdcount",
         doc: "Reads the tool life counter of tool group `number`.",
         params: &[Param::Short("number"), Param::Out("count", "ODBTLIFE3")],
-        forms: &[every_class(0x008b, &[Word::Arg(0), Word::Arg(0)])],
+        forms: &[every_class(cmd::TLGROUP, &[Word::Arg(0), Word::Arg(0)])],
         reply: &[
             to(I32, "datano", I16),
             skip(I32),
@@ -80,7 +82,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdgrpid2",
         doc: "Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy` untouched).",
         params: &[Param::Long("tno"), Param::Out("tlife", "ODBTLIFE5")],
-        forms: &[every_class(0x0047, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::RDGRPID2, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I32), to(I32, "data", I32)],
         dims: &["11|0|-1|1|5|9999|99999999"],
         ..COMMAND
@@ -97,9 +99,9 @@ pub const FUNCS: &[Func] = &[
             arg: 0,
             lo: -32768,
             hi: 32,
-            code: 4,
+            code: EW_ATTRIB,
         }],
-        forms: &[every_class(0x0063, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::RDWKCDSHFT, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I16)],
         records: Some(Records {
             fields: &[to(I32, "", I32), skip(I32)],
@@ -118,7 +120,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_deltlifedt",
         doc: "Deletes the `tuse_num`-th tool of tool life group `grpno`.",
         params: &[Param::Short("grpno"), Param::Short("tuse_num")],
-        forms: &[every_class(0x0055, &[Word::Arg(0), Word::Arg(1)])],
+        forms: &[every_class(cmd::DELTLIFEDT, &[Word::Arg(0), Word::Arg(1)])],
         dims: &["2|0|-1|1|9999", "1|0|-1|2|99"],
         ..COMMAND
     },
@@ -126,7 +128,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_deltlifegrp",
         doc: "Deletes tool life group `grpno`.",
         params: &[Param::Short("grpno")],
-        forms: &[every_class(0x0053, &[Word::Arg(0)])],
+        forms: &[every_class(cmd::DELTLIFEGRP, &[Word::Arg(0)])],
         dims: &["2|0|-1|1|9999|32767"],
         ..COMMAND
     },

@@ -1,0 +1,528 @@
+//! The command registry: every command of the wire, once. A data request
+//! subpacket is a class (1 CNC, 2 PMC), a command number and five argument
+//! words; this file names each (class, command) the codec sends or the
+//! simulator answers, and the FOCAS functions that send it (the one that
+//! sends it alone first, then the others).
+//!
+//! Everything else names a command by its constant here: the codec's
+//! requests (src/proto), the table's forms (src/spec/table), the
+//! simulator's dispatch, the trace's names and the faults that name a
+//! function (src/proto/names.rs). A test asserts no other source file
+//! writes a command number.
+//!
+//! Compiled into build.rs too (`#[path]`, with the table): plain data only,
+//! no `crate::` paths outside the tests.
+
+/// Subpacket class word: the CNC (the handle's path).
+pub const CLASS_CNC: u16 = 1;
+/// Subpacket class word: the PMC (path 1).
+pub const CLASS_PMC: u16 = 2;
+
+/// One command: its subpacket class, number, Rust name and the functions
+/// that send it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Command {
+    pub class: u16,
+    pub cmd: u16,
+    /// The constant's name (`STATINFO`).
+    pub name: &'static str,
+    /// The FOCAS functions sending it: the one that sends it alone first.
+    pub senders: &'static [&'static str],
+}
+
+/// The command `cmd` of subpacket class `class`.
+pub fn find(class: u16, cmd: u16) -> Option<&'static Command> {
+    COMMANDS.iter().find(|c| c.class == class && c.cmd == cmd)
+}
+
+/// `NAME = CLASS NUMBER [senders];` once per command: a `pub const NAME:
+/// u16` each, and [`COMMANDS`].
+macro_rules! commands {
+    ($($(#[$m:meta])* $name:ident = $class:ident $cmd:literal [$($f:ident)+];)*) => {
+        $($(#[$m])* pub const $name: u16 = $cmd;)*
+        /// Every command, CNC class by number, then PMC class.
+        pub const COMMANDS: &[Command] = &[$(Command {
+            class: $class,
+            cmd: $cmd,
+            name: stringify!($name),
+            senders: &[$(stringify!($f)),+],
+        },)*];
+    };
+}
+
+commands! {
+    START = CLASS_CNC 0x0001 [cnc_start];
+    RESET = CLASS_CNC 0x0002 [cnc_reset];
+    SEARCH = CLASS_CNC 0x0003 [cnc_search];
+    DELALL = CLASS_CNC 0x0004 [cnc_delall];
+    DELETE = CLASS_CNC 0x0005 [cnc_delete];
+    /// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
+    /// cnc_rdprogdir3).
+    RDPROGDIR = CLASS_CNC 0x0006 [cnc_rdprogdir cnc_rdprogdir3];
+    /// cnc_rdproginfo: `ProgInfo`.
+    RDPROGINFO = CLASS_CNC 0x0007 [cnc_rdproginfo];
+    /// Read tool offsets: args [s, e, type]; cnc_rdtofs sends [n, n, 1000 + type].
+    RDTOFS = CLASS_CNC 0x0008 [cnc_rdtofs cnc_rdtofsr];
+    /// Write one tool offset: args [n, n, 1000 + type, 0, 8] + one record.
+    WRTOFS = CLASS_CNC 0x0009 [cnc_wrtofs];
+    RDTOFSINFO = CLASS_CNC 0x000a [cnc_rdtofsinfo cnc_rdtofsinfo2];
+    /// Read work zero offsets: args [s, e, axis].
+    RDZOFS = CLASS_CNC 0x000b [cnc_rdzofs cnc_rdzofsr];
+    /// Write one work zero offset: args [n, n, axis, 0, 8 · records] + records.
+    WRZOFS = CLASS_CNC 0x000c [cnc_wrzofs];
+    RDZOFSINFO = CLASS_CNC 0x000d [cnc_rdzofsinfo];
+    /// 16i class: read parameter (also the FOCAS option probe, parameter 9968).
+    RDPARAM16 = CLASS_CNC 0x000e [cnc_rdparam cnc_rdparar cnc_rdparam_ext];
+    /// 16i: write one parameter, 40-byte payload.
+    WRPARAM16 = CLASS_CNC 0x000f [cnc_wrparam cnc_wrparas];
+    /// Both classes: parameter numbers and attributes [s, n] (cnc_rdparainfo;
+    /// the 16i cnc_wrparam reads one entry of it first).
+    RDPARAINFO = CLASS_CNC 0x0010 [cnc_rdparainfo cnc_wrparam cnc_rdparam_ext];
+    /// cnc_rdparanum: smallest, largest and count of parameter numbers.
+    RDPARANUM = CLASS_CNC 0x0011 [cnc_rdparanum];
+    RDPITCHR = CLASS_CNC 0x0012 [cnc_rdpitchr];
+    RDPITCHINFO = CLASS_CNC 0x0014 [cnc_rdpitchinfo];
+    /// Read custom macro variables s..e: args (s, e); payload: one record each.
+    RDMACRO = CLASS_CNC 0x0015 [cnc_rdmacro cnc_rdmacror];
+    /// Write custom macro variables: args (s, e, 0, 0, payload length) + records.
+    WRMACRO = CLASS_CNC 0x0016 [cnc_wrmacro cnc_wrmacror];
+    RDMACROINFO = CLASS_CNC 0x0017 [cnc_rdmacroinfo];
+    SYSINFO = CLASS_CNC 0x0018 [cnc_sysinfo cnc_allclibhndl3];
+    STATINFO = CLASS_CNC 0x0019 [cnc_statinfo];
+    /// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).
+    ALARM = CLASS_CNC 0x001a [cnc_alarm cnc_alarm2 cnc_rddynamic2 cnc_rddynamic];
+    /// Input/output figures per axis (cnc_getfigure).
+    GETFIGURE = CLASS_CNC 0x001b [cnc_getfigure];
+    /// Running and main program numbers (cnc_rdprgnum, rddynamic2).
+    PRGNUM = CLASS_CNC 0x001c [cnc_rdprgnum cnc_rddynamic2 cnc_rddynamic];
+    /// Sequence number (cnc_rdseqnum, rddynamic2).
+    SEQNUM = CLASS_CNC 0x001d [cnc_rdseqnum cnc_rddynamic2 cnc_rddynamic];
+    RDEXECPROG = CLASS_CNC 0x0020 [cnc_rdexecprog];
+    MODAL_G = CLASS_CNC 0x0021 [cnc_modal];
+    MODAL_AUX = CLASS_CNC 0x0022 [cnc_modal];
+    RDALMMSG = CLASS_CNC 0x0023 [cnc_rdalmmsg cnc_rdalmmsg2 cnc_rdalminfo];
+    /// Actual feed rate: one value record.
+    ACTF = CLASS_CNC 0x0024 [cnc_actf cnc_rddynamic2 cnc_rddynamic cnc_rdspeed];
+    /// Actual spindle speed: one value record.
+    ACTS = CLASS_CNC 0x0025 [cnc_acts cnc_rddynamic2 cnc_rddynamic cnc_rdspeed];
+    /// Axis positions: args [type code, axis]; value records.
+    POSITION = CLASS_CNC 0x0026 [cnc_absolute cnc_absolute2 cnc_machine cnc_relative
+        cnc_relative2 cnc_distance cnc_rddynamic2 cnc_rddynamic cnc_rdposition cnc_rdaxisdata
+        cnc_rdprstrinfo];
+    /// 16i: read diagnosis data [s, e, axis].
+    DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
+    /// Both classes: diagnosis numbers and attributes [s, n].
+    RDDIAGINFO = CLASS_CNC 0x0031 [cnc_rddiaginfo cnc_rddiag_ext];
+    /// cnc_rddiagnum: the same for diagnosis data.
+    RDDIAGNUM = CLASS_CNC 0x0032 [cnc_rddiagnum];
+    RDOPMSG = CLASS_CNC 0x0034 [cnc_rdopmsg cnc_rdopmsg3];
+    RDBLKCOUNT = CLASS_CNC 0x0035 [cnc_rdblkcount];
+    /// cnc_rdmdiprog (answer: the MDI program's text) and cnc_wrmdiprog (the
+    /// text as the request's payload).
+    RDMDIPROG = CLASS_CNC 0x0036 [cnc_rdmdiprog];
+    WRMDIPROG = CLASS_CNC 0x0037 [cnc_wrmdiprog];
+    RDMDIPNTR = CLASS_CNC 0x0038 [cnc_rdmdipntr];
+    WRMDIPNTR = CLASS_CNC 0x0039 [cnc_wrmdipntr];
+    /// Spindle data: args [code, spindle]; value records.
+    SPINDLE = CLASS_CNC 0x0040 [cnc_acts2 cnc_rdspmeter cnc_rdspload cnc_rdspmaxrpm cnc_rdspgear
+        cnc_rdaxisdata];
+    /// cnc_rdprstrinfo: (1,0x0043)\[k\] for k 0..4 (block counter, M, T, S and
+    /// B codes), then the position command 0x0026 [13, -1] (restart position)
+    /// and [14, -1] (distance to it), in one frame.
+    RDPRSTR = CLASS_CNC 0x0043 [cnc_rdprstrinfo];
+    GETTIMER = CLASS_CNC 0x0045 [cnc_gettimer];
+    SETTIMER = CLASS_CNC 0x0046 [cnc_settimer];
+    RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2];
+    /// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
+    TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp];
+    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp];
+    /// cnc_wrgrpinfo: args [s, e, 0, 0, payload length] + one
+    /// `GroupWrite` per group s..=e.
+    WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
+    /// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
+    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum];
+    DELTLIFEGRP = CLASS_CNC 0x0053 [cnc_deltlifegrp];
+    /// Inserts a tool into a group: args [grp, tuse_num, tool number].
+    TLINSERT = CLASS_CNC 0x0054 [cnc_instlifedt];
+    DELTLIFEDT = CLASS_CNC 0x0055 [cnc_deltlifedt];
+    /// Servo load meter: args \[1\]; value records.
+    SERVO_LOAD = CLASS_CNC 0x0056 [cnc_rdsvmeter cnc_rdaxisdata cnc_rdloopgain cnc_rdsrvspeed
+        cnc_rdcurrent];
+    RDOPMODE = CLASS_CNC 0x0057 [cnc_rdopmode];
+    RDSPDLALM = CLASS_CNC 0x005a [cnc_rdspdlalm];
+    /// cnc_rdctrldi / cnc_rdctrldo: (1,0x005b)\[0\] input signals, \[1\] output.
+    RDCTRLSIG = CLASS_CNC 0x005b [cnc_rdctrldi cnc_rdctrldo];
+    RDWKCDSHFT = CLASS_CNC 0x0063 [cnc_rdwkcdshft];
+    WRWKCDSHFT = CLASS_CNC 0x0064 [cnc_wrwkcdshft];
+    STOPOPHIS = CLASS_CNC 0x0067 [cnc_stopophis];
+    STARTOPHIS = CLASS_CNC 0x0068 [cnc_startophis];
+    RDOPHISNO = CLASS_CNC 0x0069 [cnc_rdophisno];
+    RDOPHISTRY = CLASS_CNC 0x006a [cnc_rdophistry];
+    /// Number of alarm history entries: one i32 (FANUC keeps its low 16 bits).
+    RDALMHISNO = CLASS_CNC 0x006b [cnc_rdalmhisno];
+    /// Read the alarm history: args [s, e, 1] (SPEC.md §5.2).
+    RDALMHISTRY = CLASS_CNC 0x006c [cnc_rdalmhistry cnc_rdalmhistry2];
+    CLEAROPHIS = CLASS_CNC 0x006d [cnc_clearophis];
+    STOPOMHIS = CLASS_CNC 0x0070 [cnc_stopomhis];
+    STARTOMHIS = CLASS_CNC 0x0071 [cnc_startomhis];
+    RDOMHISINFO = CLASS_CNC 0x0072 [cnc_rdomhisinfo];
+    RDOMHISTRY = CLASS_CNC 0x0073 [cnc_rdomhistry];
+    CLEAROMHIS = CLASS_CNC 0x0074 [cnc_clearomhis];
+    RDPROCTIME = CLASS_CNC 0x0075 [cnc_rdproctime];
+    CLRALM = CLASS_CNC 0x0087 [cnc_clralm];
+    /// Unit words: args \[1\] positions, \[2\] machine positions, \[3\]/\[4\] speeds.
+    UNITS = CLASS_CNC 0x0088 [cnc_rdposition cnc_rdspeed cnc_rdaxisdata cnc_rdsvmeter
+        cnc_rdspmeter];
+    /// Axis names: args \[0\] 4 bytes per axis; [-1] i32 count + 16 bytes per axis.
+    RDAXISNAME = CLASS_CNC 0x0089 [cnc_rdaxisname cnc_rdposition cnc_rdsvmeter];
+    /// Spindle names: 4 bytes per spindle.
+    RDSPDLNAME = CLASS_CNC 0x008a [cnc_rdspdlname cnc_rdspmeter cnc_rdspeed];
+    /// Tool life group record: args [grp, grp].
+    TLGROUP = CLASS_CNC 0x008b [cnc_rdtoolgrp cnc_rdgrpinfo cnc_rdtlusegrp cnc_rdntool
+        cnc_rdlife cnc_rdcount];
+    /// Series 15 start-up companion of sysinfo.
+    SYSINFO15 = CLASS_CNC 0x008c [cnc_allclibhndl3 cnc_rdposition];
+    /// 30i class: read parameter (Series 15: option probe, parameter 9153).
+    RDPARAM = CLASS_CNC 0x008d [cnc_rdparam cnc_rdparam_ext cnc_rdparar cnc_allclibhndl3];
+    /// 30i: write one parameter, 264-byte payload.
+    WRPARAM = CLASS_CNC 0x008e [cnc_wrparam cnc_wrparas];
+    /// Series 15: parameter numbers and attributes [s, n] (cnc_rdparainfo).
+    RDPARAINFO15 = CLASS_CNC 0x008f [cnc_rdparainfo cnc_rdparam_ext];
+    /// 30i: read diagnosis data [s, e, axis].
+    DIAGNOSS = CLASS_CNC 0x0093 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
+    /// Series 15: diagnosis numbers and attributes [s, n] (cnc_rddiaginfo).
+    RDDIAGINFO15 = CLASS_CNC 0x0094 [cnc_rddiaginfo cnc_rddiag_ext];
+    /// Series 15: which spindle's name is shown with the speed (1-based; its
+    /// entry of 0x8a names the actual speed).
+    SPINDLE_SHOWN15 = CLASS_CNC 0x0095 [cnc_rdspeed];
+    TMMODE = CLASS_CNC 0x0098 [cnc_statinfo cnc_statinfo2];
+    /// cnc_rdtoolinfo (punch press): no args.
+    PTLINFO = CLASS_CNC 0x0099 [cnc_rdtoolinfo];
+    /// Punch press tool control data (no args).
+    TLCTL = CLASS_CNC 0x009a [cnc_rdtlctldata];
+    /// cnc_rdtooldata (punch press): args [0, tool_no, n].
+    PTLDATA = CLASS_CNC 0x009c [cnc_rdtooldata];
+    /// 30i: the attribute record of one parameter [number, 1] (28 bytes).
+    PARAMTYPE = CLASS_CNC 0x00a0 [cnc_wrparam cnc_rdparam_ext];
+    /// 30i: the attribute record of one diagnosis item [number, 1] (28 bytes).
+    DIAGTYPE = CLASS_CNC 0x00a2 [cnc_rddiag_ext];
+    /// Display flags per axis (u32).
+    AXIS_FLAGS = CLASS_CNC 0x00a3 [cnc_rdaxisdata];
+    /// Counts: args \[0\] axes, \[1\] spindles, \[2\] servo axes, \[3\] speed display.
+    COUNT = CLASS_CNC 0x00a4 [cnc_acts2 cnc_rdaxisdata cnc_rdsvmeter cnc_rdspmeter cnc_rdposition];
+    /// cnc_rdaxisdata class 5 type 2: a third speed-class value record (its
+    /// meaning is not known; FANUC's library names it 'F' and takes its unit
+    /// from 0x88\[4\]).
+    SPEED_A5 = CLASS_CNC 0x00a5 [cnc_rdaxisdata];
+    /// cnc_rdmacror2: (1,0x00a7)[s, n], payload n IEEE doubles big-endian.
+    RDMACROR2 = CLASS_CNC 0x00a7 [cnc_rdmacror2];
+    /// cnc_wrmacror2: (1,0x00a8)[s, 0, 0, 0, 8n] + n doubles; reply i32 count.
+    WRMACROR2 = CLASS_CNC 0x00a8 [cnc_wrmacror2];
+    /// Program data folder commands (30i; src/ffi/folder.rs).
+    PDF_DRIVE = CLASS_CNC 0x00ae [cnc_rdpdf_drive];
+    PDF_INF = CLASS_CNC 0x00af [cnc_rdpdf_inf];
+    PDF_RDCURDIR = CLASS_CNC 0x00b0 [cnc_rdpdf_curdir];
+    PDF_WRCURDIR = CLASS_CNC 0x00b1 [cnc_wrpdf_curdir];
+    PDF_SUBDIR = CLASS_CNC 0x00b2 [cnc_rdpdf_subdir];
+    PDF_ALLDIR = CLASS_CNC 0x00b3 [cnc_rdpdf_alldir];
+    PDF_SUBDIRN = CLASS_CNC 0x00b4 [cnc_rdpdf_subdirn];
+    PDF_ADD = CLASS_CNC 0x00b5 [cnc_pdf_add];
+    PDF_DEL = CLASS_CNC 0x00b6 [cnc_pdf_del];
+    PDF_RENAME = CLASS_CNC 0x00b7 [cnc_pdf_rename];
+    PDF_RDMAIN = CLASS_CNC 0x00b9 [cnc_pdf_rdmain];
+    PDF_SLCTMAIN = CLASS_CNC 0x00ba [cnc_pdf_slctmain];
+    /// cnc_rdpm_mcnitem: (1,0xbc)[start, n]; 62-byte names.
+    RDPM_MCNITEM = CLASS_CNC 0x00bc [cnc_rdpm_mcnitem];
+    /// cnc_wrpm_mcnitem: (1,0xbd)[start, 0, 0, 0, bytes] + 62-byte names.
+    WRPM_MCNITEM = CLASS_CNC 0x00bd [cnc_wrpm_mcnitem];
+    /// cnc_rdpm_item: (1,0xbe)[start, n]; 80-byte items.
+    RDPM_ITEM = CLASS_CNC 0x00be [cnc_rdpm_item];
+    /// cnc_wrpm_item: (1,0xbf)[reset, start, 0, 0, bytes] + 80-byte items.
+    WRPM_ITEM = CLASS_CNC 0x00bf [cnc_wrpm_item];
+    EXEPRGNAME = CLASS_CNC 0x00cf [cnc_exeprgname];
+    /// cnc_rdopmsg3's command on the 30i class (the 16i class sends
+    /// cnc_rdopmsg's 0x0034 \[type\]).
+    RDOPMSG3 = CLASS_CNC 0x00d0 [cnc_rdopmsg3];
+    /// cnc_rdpm_cncitem: (1,0xd3)[start, n]; 62-byte names.
+    RDPM_CNCITEM = CLASS_CNC 0x00d3 [cnc_rdpm_cncitem];
+    HDCK = CLASS_CNC 0x00e1 [cnc_statinfo cnc_statinfo2];
+    STATINFO2 = CLASS_CNC 0x00e2 [cnc_statinfo2];
+    RDCNCID = CLASS_CNC 0x00e8 [cnc_rdcncid];
+    PDF_RDLINE = CLASS_CNC 0x00f0 [cnc_rdpdf_line];
+    PDF_WRLINE = CLASS_CNC 0x00f1 [cnc_wrpdf_line];
+    PDF_DELLINE = CLASS_CNC 0x00f2 [cnc_pdf_delline];
+    PDF_DELALL = CLASS_CNC 0x00f3 [cnc_pdf_delall];
+    EXEPRGNAME2 = CLASS_CNC 0x00fc [cnc_exeprgname2];
+    RDTIMER = CLASS_CNC 0x0120 [cnc_rdtimer];
+    /// cnc_rdtool: tool management data, args [top, n] (n at most
+    /// `TOOLS_PER_MNG`).
+    TLMNG = CLASS_CNC 0x014b [cnc_rdtool];
+    RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];
+    RDACTPT = CLASS_CNC 0x0162 [cnc_rdactpt];
+    PDF_COPY = CLASS_CNC 0x0188 [cnc_pdf_copy];
+    PDF_MOVE = CLASS_CNC 0x0189 [cnc_pdf_move];
+    /// cnc_rdophistry4's command.
+    RDOPHISTRY4 = CLASS_CNC 0x01b0 [cnc_rdophistry4];
+    RDHISSGNL3 = CLASS_CNC 0x01b2 [cnc_rdhissgnl3];
+    /// cnc_wrhissgnl3: `(1,0x01b3)[n]`, then n 16-byte entries (the layout
+    /// of cnc_rdhissgnl3's answer, `SIG3_REC`).
+    WRHISSGNL3 = CLASS_CNC 0x01b3 [cnc_wrhissgnl3];
+    RDOMHISNO = CLASS_CNC 0x01b4 [cnc_rdomhisno];
+    RDOMHISTRY2 = CLASS_CNC 0x01b5 [cnc_rdomhistry2];
+    PDF_RDACTPT = CLASS_CNC 0x01ba [cnc_pdf_rdactpt];
+    PDF_WRACTPT = CLASS_CNC 0x01bb [cnc_pdf_wractpt];
+    /// cnc_rdtlusegrp on the 30i class: the optional group number of group
+    /// `g`, args [g, g].
+    TLOPTGRP = CLASS_CNC 0x01bf [cnc_rdtlusegrp];
+    COPYPROG = CLASS_CNC 0x01c6 [cnc_copyprog];
+    RENAMEPROG = CLASS_CNC 0x01c7 [cnc_renameprog];
+    CONDENSE = CLASS_CNC 0x01c8 [cnc_condense];
+    RDALMHISTRY5 = CLASS_CNC 0x01d1 [cnc_rdalmhistry5];
+    RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
+    /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
+    RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];
+    /// Write a PMC range: args (s, e, adr_type, data_type, n) + n bytes.
+    WRPMCRNG = CLASS_PMC 0x8002 [pmc_wrpmcrng];
+    /// pmc_rdpmcinfo: (2,0x8003)\[adr_type\]; payload i32 count + 12-byte records.
+    RDPMCINFO = CLASS_PMC 0x8003 [pmc_rdpmcinfo];
+    /// pmc_rdpmctitle: no arguments.
+    RDPMCTITLE = CLASS_PMC 0x800b [pmc_rdpmctitle];
+    /// pmc_select_pmc_unit: (2,0x800c)[unit type]; no answer payload.
+    SELECT_UNIT = CLASS_PMC 0x800c [pmc_select_pmc_unit];
+    PMC_COUNT = CLASS_PMC 0x800e [pmc_get_number_of_pmc];
+    /// pmc_get_pmc_unit_types: (2,0x800f)\[most\]; the answer is i32 unit types.
+    UNIT_TYPES = CLASS_PMC 0x800f [pmc_get_pmc_unit_types];
+    /// pmc_rdalmmsg: (2,0x8010)[s_number, count]; the answer is i32 count,
+    /// i32 exist, then count messages of 128 bytes.
+    PMC_RDALMMSG = CLASS_PMC 0x8010 [pmc_rdalmmsg];
+    /// pmc_get_timer_type: (2,0x804a)[s, e]; the answer is big-endian i16
+    /// types.
+    GET_TIMER_TYPE = CLASS_PMC 0x804a [pmc_get_timer_type];
+    /// pmc_set_timer_type: (2,0x804b)[s, e, 0, 0, bytes] with the types as
+    /// big-endian i16.
+    SET_TIMER_TYPE = CLASS_PMC 0x804b [pmc_set_timer_type];
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::{Path, PathBuf};
+
+    fn sources(dir: &Path, out: &mut Vec<PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                sources(&p, out);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                out.push(p);
+            }
+        }
+    }
+
+    /// Every .rs file of src/ but this one: (path from src/, its code with
+    /// comments cut).
+    fn code() -> Vec<(String, String)> {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+        let mut files = Vec::new();
+        sources(&root, &mut files);
+        files.sort();
+        assert!(files.len() > 50, "src/ has {} files", files.len());
+        files
+            .iter()
+            .map(|p| {
+                let rel = p
+                    .strip_prefix(&root)
+                    .unwrap()
+                    .to_string_lossy()
+                    .replace('\\', "/");
+                let text = std::fs::read_to_string(p).unwrap();
+                let code: Vec<&str> = text
+                    .lines()
+                    .map(|l| match l.find("//") {
+                        Some(i) if !l[..i].contains('"') => &l[..i],
+                        _ => l,
+                    })
+                    .collect();
+                (rel, code.join("\n"))
+            })
+            .filter(|(rel, _)| rel != "spec/commands.rs")
+            .collect()
+    }
+
+    /// The identifier after each match of `prefix` in `text` (its last
+    /// path segment), where one follows.
+    fn names_after<'a>(text: &'a str, prefix: &str) -> Vec<&'a str> {
+        text.match_indices(prefix)
+            .filter_map(|(i, _)| {
+                let rest = text[i + prefix.len()..].trim_start();
+                let end = rest
+                    .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
+                    .unwrap_or(rest.len());
+                let path = &rest[..end];
+                let last = path.rsplit("::").next()?;
+                (!last.is_empty()).then_some(last)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn each_command_is_listed_once_with_the_exported_functions_sending_it() {
+        for (i, c) in COMMANDS.iter().enumerate() {
+            for d in &COMMANDS[..i] {
+                assert!(
+                    (d.class, d.cmd) != (c.class, c.cmd),
+                    "{} and {} are both ({}, {:#06x})",
+                    d.name,
+                    c.name,
+                    c.class,
+                    c.cmd
+                );
+                assert_ne!(d.name, c.name);
+            }
+            assert!(c.class == CLASS_CNC || c.class == CLASS_PMC, "{}", c.name);
+            assert!(!c.senders.is_empty(), "{} names no function", c.name);
+            for (k, f) in c.senders.iter().enumerate() {
+                assert!(
+                    crate::ffi::exports::export(f).is_some(),
+                    "{}: {f} is not an exported function",
+                    c.name
+                );
+                assert!(!c.senders[..k].contains(f), "{}: {f} twice", c.name);
+            }
+        }
+        assert!(COMMANDS.len() >= 150, "{} commands", COMMANDS.len());
+    }
+
+    #[test]
+    fn every_command_the_codec_sends_is_registered_with_its_senders() {
+        // The table: each form's command, with its function among the senders.
+        for f in crate::spec::FUNCS {
+            assert!(!f.forms.is_empty(), "{} sends nothing", f.name);
+            for form in f.forms {
+                let c = find(form.class, form.cmd).unwrap_or_else(|| {
+                    panic!(
+                        "{}: ({}, {:#06x}) is not registered",
+                        f.name, form.class, form.cmd
+                    )
+                });
+                assert!(
+                    c.senders.contains(&f.name),
+                    "{}: {} does not name it as a sender",
+                    f.name,
+                    c.name
+                );
+            }
+        }
+        // The hand-written requests and the simulator's arms: each constant
+        // a command of the class it is sent or matched as.
+        let (mut seen, mut by_class) = (0, 0);
+        for (file, text) in code() {
+            for (prefix, class) in [
+                ("ReqSub::cnc(", CLASS_CNC),
+                ("ReqSub::pmc(", CLASS_PMC),
+                ("(CLASS_CNC, ", CLASS_CNC),
+                ("(CLASS_PMC, ", CLASS_PMC),
+            ] {
+                for name in names_after(&text, prefix) {
+                    if !name.starts_with(|c: char| c.is_ascii_uppercase()) {
+                        continue; // a variable: its value comes from a constant
+                    }
+                    let c = COMMANDS.iter().find(|c| c.name == name);
+                    let c = c.unwrap_or_else(|| {
+                        panic!("src/{file}: {prefix}{name}: not a registered command")
+                    });
+                    assert_eq!(c.class, class, "src/{file}: {prefix}{name}");
+                    seen += 1;
+                    by_class += usize::from(prefix.starts_with("(CLASS"));
+                }
+            }
+        }
+        // Requests built in the area files and the dispatch's arms were met.
+        assert!(
+            seen > 150 && by_class > 60,
+            "{seen} commands, {by_class} arms"
+        );
+    }
+
+    #[test]
+    fn no_source_file_but_the_registry_writes_a_command_number() {
+        // Constants of u16 numbers that are not commands: frame types, the
+        // first handle, a port, a record type, value bases.
+        const NOT_COMMANDS: &[(&str, &str)] = &[
+            ("proto/frame.rs", "OPEN_REQ"),
+            ("proto/frame.rs", "OPEN_RESP"),
+            ("proto/frame.rs", "OPEN_REJECT"),
+            ("proto/frame.rs", "CLOSE_REQ"),
+            ("proto/frame.rs", "CLOSE_RESP"),
+            ("proto/frame.rs", "DATA_REQ"),
+            ("proto/frame.rs", "DATA_RESP"),
+            ("proto/frame.rs", "UPLOAD_START_REQ"),
+            ("proto/frame.rs", "UPLOAD_START_RESP"),
+            ("proto/frame.rs", "UPLOAD_DATA"),
+            ("proto/frame.rs", "UPLOAD_END"),
+            ("proto/frame.rs", "UPLOAD_END_ACK"),
+            ("proto/frame.rs", "UPLOAD_ABORT"),
+            ("proto/frame.rs", "ID_REQ"),
+            ("proto/frame.rs", "ID_RESP"),
+            ("proto/frame.rs", "ID_REJECT"),
+            ("proto/frame.rs", "CLIENT_VERSION"),
+            ("client/handles.rs", "FIRST"),
+            ("native/cnc.rs", "DEFAULT_PORT"),
+            ("proto/history.rs", "OP4_RESTART_TYPE"),
+            ("proto/value.rs", "BASE_10"),
+            ("proto/value.rs", "BASE_2"),
+        ];
+        // Where a command is written: a number right after one of these.
+        const AT: &[&str] = &[
+            "every_class(",
+            "pmc(",
+            "cmd: ",
+            "cmd == ",
+            "ReqSub::cnc(",
+            "ReqSub::pmc(",
+            "ReqSub::with_class(",
+            "(CLASS_CNC, ",
+            "(CLASS_PMC, ",
+            "function_commands(",
+            "command_name(CLASS_CNC, ",
+            "command_name(CLASS_PMC, ",
+        ];
+        let mut bad = Vec::new();
+        let mut consts = 0;
+        for (file, text) in code() {
+            for at in AT {
+                for (i, _) in text.match_indices(at) {
+                    let rest = text[i + at.len()..].trim_start();
+                    if rest.starts_with(|c: char| c.is_ascii_digit()) {
+                        let line = text[..i].lines().count();
+                        bad.push(format!(
+                            "src/{file}:{line}: {at}{}",
+                            &rest[..rest.len().min(8)]
+                        ));
+                    }
+                }
+            }
+            for line in text.lines() {
+                let l = line.trim_start();
+                let Some(rest) = l.split_once("const ").map(|(_, r)| r) else {
+                    continue;
+                };
+                let Some((name, value)) = rest.split_once(": u16 =") else {
+                    continue;
+                };
+                if value.trim_start().starts_with(|c: char| c.is_ascii_digit())
+                    && !NOT_COMMANDS.contains(&(file.as_str(), name.trim()))
+                {
+                    bad.push(format!("src/{file}: const {}", rest.trim()));
+                }
+                consts += 1;
+            }
+        }
+        assert!(consts > 10, "{consts} u16 constants seen");
+        assert!(
+            bad.is_empty(),
+            "command numbers outside src/spec/commands.rs:\n{}",
+            bad.join("\n")
+        );
+    }
+}
