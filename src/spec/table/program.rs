@@ -4,6 +4,12 @@ use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
+// The commands of this area's entries (the simulator answers by them).
+/// cnc_rdblkcount: blocks executed.
+pub const RDBLKCOUNT: u16 = 0x0035;
+/// cnc_rdactpt: the executing block.
+pub const RDACTPT: u16 = 0x0162;
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdprgnum",
@@ -25,7 +31,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdblkcount",
         doc: "Reads the number of blocks executed (4 bytes written into the `long`).",
         params: &[Param::Out("prog_bc", "long")],
-        forms: &[every_class(0x0035, &[])],
+        forms: &[every_class(RDBLKCOUNT, &[])],
         reply: &[to(I32, "", I32)],
         ..COMMAND
     },
@@ -33,7 +39,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdactpt",
         doc: "Reads the execution pointer: program number and block number (4 bytes written into each `long`).",
         params: &[Param::Out("prog_no", "long"), Param::Out("blk_no", "long")],
-        forms: &[every_class(0x0162, &[])],
+        forms: &[every_class(RDACTPT, &[])],
         reply: &[to_out(0, I32, "", I32), to_out(1, I32, "", I32)],
         ..COMMAND
     },

@@ -5,6 +5,12 @@ use super::super::types::*;
 use super::base::COMMAND;
 use super::base::SERVO_LONGS;
 
+// The commands of this area's entries (the simulator answers by them).
+/// cnc_rdspdlalm: the spindle alarms.
+pub const RDSPDLALM: u16 = 0x005a;
+/// cnc_rdpitchinfo: the pitch error compensation data.
+pub const RDPITCHINFO: u16 = 0x0014;
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdloopgain",
@@ -38,7 +44,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdspdlalm",
         doc: "Reads the alarm state of each spindle, one byte per spindle (at most 8).",
         params: &[Param::Out("data", "char")],
-        forms: &[every_class(0x005a, &[])],
+        forms: &[every_class(RDSPDLALM, &[])],
         // The low byte of each i16, as many as the answer holds.
         records: Some(Records {
             fields: &[to(I16, "", I8)],
@@ -55,7 +61,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdpitchinfo",
         doc: "Reads the number of pitch error compensation points.",
         params: &[Param::Out("datano", "short")],
-        forms: &[every_class(0x0014, &[])],
+        forms: &[every_class(RDPITCHINFO, &[])],
         reply: &[to(I32, "", I16)],
         ..COMMAND
     },

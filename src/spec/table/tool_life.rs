@@ -4,6 +4,16 @@ use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
+// The commands of this area's entries (the simulator answers by them).
+/// cnc_rdgrpid2.
+pub const RDGRPID2: u16 = 0x0047;
+/// cnc_rdwkcdshft.
+pub const RDWKCDSHFT: u16 = 0x0063;
+/// cnc_deltlifedt.
+pub const DELTLIFEDT: u16 = 0x0055;
+/// cnc_deltlifegrp.
+pub const DELTLIFEGRP: u16 = 0x0053;
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_toolnum",
@@ -80,7 +90,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_rdgrpid2",
         doc: "Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy` untouched).",
         params: &[Param::Long("tno"), Param::Out("tlife", "ODBTLIFE5")],
-        forms: &[every_class(0x0047, &[Word::Arg(0)])],
+        forms: &[every_class(RDGRPID2, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I32), to(I32, "data", I32)],
         dims: &["11|0|-1|1|5|9999|99999999"],
         ..COMMAND
@@ -99,7 +109,7 @@ pub const FUNCS: &[Func] = &[
             hi: 32,
             code: 4,
         }],
-        forms: &[every_class(0x0063, &[Word::Arg(0)])],
+        forms: &[every_class(RDWKCDSHFT, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I16)],
         records: Some(Records {
             fields: &[to(I32, "", I32), skip(I32)],
@@ -118,7 +128,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_deltlifedt",
         doc: "Deletes the `tuse_num`-th tool of tool life group `grpno`.",
         params: &[Param::Short("grpno"), Param::Short("tuse_num")],
-        forms: &[every_class(0x0055, &[Word::Arg(0), Word::Arg(1)])],
+        forms: &[every_class(DELTLIFEDT, &[Word::Arg(0), Word::Arg(1)])],
         dims: &["2|0|-1|1|9999", "1|0|-1|2|99"],
         ..COMMAND
     },
@@ -126,7 +136,7 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_deltlifegrp",
         doc: "Deletes tool life group `grpno`.",
         params: &[Param::Short("grpno")],
-        forms: &[every_class(0x0053, &[Word::Arg(0)])],
+        forms: &[every_class(DELTLIFEGRP, &[Word::Arg(0)])],
         dims: &["2|0|-1|1|9999|32767"],
         ..COMMAND
     },
