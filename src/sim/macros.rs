@@ -4,10 +4,44 @@
 use super::Machine;
 use super::profile::Class;
 pub use super::profile::macros::{MAX_DEC, Macros, parse_decimal};
+use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::macros::{Double, MacroInfo, RDMACROR2_CHUNK, VACANT_DEC};
+use crate::proto::macros::{
+    Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
+};
 use crate::proto::value::Value;
+use crate::proto::wire::Wire;
+use crate::spec::table::offset::RDMACROINFO;
+
+pub(super) const ROUTES: &[Route] = &[
+    // [s, e]
+    Route::cnc(RDMACRO, |m, q| {
+        enc(m.sim_read_macros(q.path, q.args[0], q.args[1]))
+    }),
+    // [s, e] + records
+    Route::cnc(WRMACRO, |m, q| match Vec::<Value>::from_bytes(&q.payload) {
+        Ok(v) => m
+            .sim_write_macros(q.path, q.args[0], q.args[1], &v)
+            .map(|()| Vec::new()),
+        Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+    }),
+    // [s, n]
+    Route::cnc(RDMACROR2, |m, q| {
+        enc(m.sim_read_macros_double(q.path, q.args[0], q.args[1]))
+    }),
+    // [s] + doubles: answers the count.
+    Route::cnc(WRMACROR2, |m, q| {
+        match Vec::<Double>::from_bytes(&q.payload) {
+            Ok(v) => enc(m.sim_write_macros_double(q.path, q.args[0], &v)),
+            Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+        }
+    }),
+    Route::table(RDMACROINFO, |m, q| {
+        m.sim_macro_info(q.path)
+            .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
+    }),
+];
 
 /// Most records one read or write may carry (the reply must fit in the
 /// smallest frame a CNC sends, 1450 bytes).

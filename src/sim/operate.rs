@@ -4,12 +4,22 @@
 //! running machine (src/sim/run.rs) then moves the axes, the spindle and
 //! the counters from the program, as for the profile's own cycle.
 
+use super::Machine;
 use super::plan::Plan;
 use super::profile::cycle::Cycle;
-use super::run::{Machine, covered, event_path, occurrence};
+use super::route::{Route, none};
+use super::run::{covered, event_path, occurrence};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_REJECT};
+use crate::spec::table::operation::{CLRALM, RESET, RESET2, START};
 use std::sync::Arc;
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::table(START, |m, q| none(m.cycle_start(q.path))),
+    Route::table(RESET, |m, q| none(m.reset(q.path))),
+    Route::table(RESET2, |m, q| none(m.reset(q.path))),
+    Route::table(CLRALM, |m, q| none(m.clear_alarms(q.path, q.arg(0) as i16))),
+];
 
 /// Alarm types a reset clears (IO, PS, macro); the others need the cause
 /// removed (overtravel, servo, overheat ...) or the power cycled.

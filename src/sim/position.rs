@@ -10,12 +10,59 @@
 
 use super::Machine;
 use super::profile::{Axis, Path, Spindle};
+use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
+use crate::proto::machine::RDCTRLSIG;
 use crate::proto::position::{
-    AlarmBits, AxisNames, Count, Figure, Figures, Name, PosNames, ProgNums, SeqNum, pos, spdl,
+    ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
+    Name, POSITION, PRGNUM, PosNames, ProgNums, RDAXISNAME, RDSPDLNAME, SEQNUM, SERVO_LOAD,
+    SPEED_A5, SPINDLE, SeqNum, UNITS, pos, spdl,
 };
 use crate::proto::value::{BASE_10, Value};
+use crate::spec::table::servo::RDSPDLALM;
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(ALARM, |m, q| enc(m.pos_alarm_bits(q.path))),
+    Route::cnc(PRGNUM, |m, q| enc(m.pos_prog_nums(q.path))),
+    Route::cnc(SEQNUM, |m, q| enc(m.pos_seq_num(q.path))),
+    Route::cnc(ACTF, |m, q| enc(m.pos_actual(q.path, false))),
+    Route::cnc(ACTS, |m, q| enc(m.pos_actual(q.path, true))),
+    Route::cnc(SPEED_A5, |m, q| enc(m.pos_speed_a5(q.path))),
+    Route::cnc(POSITION, |m, q| {
+        enc(m.pos_positions(q.path, q.args[0], q.args[1]))
+    }),
+    Route::cnc(GETFIGURE, |m, q| enc(m.pos_figures(q.path, q.args[0]))),
+    // [-1]: the names per position kind; else the 4-byte axis names.
+    Route::cnc(RDAXISNAME, |m, q| match q.args[0] {
+        -1 => enc(m.pos_axis_pos_names(q.path)),
+        _ => enc(m.pos_axis_names(q.path)),
+    }),
+    Route::cnc(RDSPDLNAME, |m, q| enc(m.pos_spindle_names(q.path))),
+    Route::cnc(SPINDLE, |m, q| {
+        enc(m.pos_spindle_data(q.path, q.args[0], q.args[1]))
+    }),
+    Route::cnc(SERVO_LOAD, |m, q| enc(m.pos_servo_load(q.path, q.args[0]))),
+    Route::cnc(UNITS, |m, q| enc(m.pos_units(q.path, q.args[0]))),
+    Route::cnc(AXIS_FLAGS, |m, q| enc(m.pos_axis_flags(q.path))),
+    Route::cnc(COUNT, |m, q| enc(m.pos_counts(q.path, q.args[0]))),
+    // [0 | 1]: the spindle control input / output signals.
+    Route::cnc(RDCTRLSIG, |m, q| match q.args[0] {
+        0 | 1 => m.spindle_signals(q.path, q.args[0] == 1),
+        _ => Err(ATTRIB),
+    }),
+    Route::table(RDSPDLALM, spindle_alarms),
+];
+
+/// cnc_rdspdlalm: the alarm word of each spindle (at most 8).
+fn spindle_alarms(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    Ok(m.path(q.path)?
+        .spindles
+        .iter()
+        .take(8)
+        .map(|s| i64::from(s.alarm))
+        .collect())
+}
 
 const ATTRIB: CncError = CncError::new(EW_ATTRIB);
 const NUMBER: CncError = CncError::new(EW_NUMBER);
@@ -397,4 +444,44 @@ const DEFAULT_ACCDEC_MS: f64 = 32.0;
 fn delay(a: &Axis, seconds: f64) -> i32 {
     let mm_per_s = f64::from(a.servo_speed) * a.lead.unwrap_or(super::run::DEFAULT_LEAD) / 60.0;
     (mm_per_s * seconds * 10f64.powi(i32::from(a.decimals))).round() as i32
+}
+
+impl Machine {
+    /// 0x005b (cnc_rdctrldi / cnc_rdctrldo): four signal bytes per spindle
+    /// of the path, from PMC unit 1: the input signals G070..G073 (spindle
+    /// k: G070 + 4k ...), the output signals F045..F048, of which the
+    /// running machine sets F045's ALMA (bit 0, the spindle's alarm), SSTA
+    /// (bit 1, speed zero) and SARA (bit 3, turning at speed). Each
+    /// spindle's four bytes go as one big-endian word, the first signal
+    /// byte lowest (what FANUC's library writes as sgnl1..sgnl4).
+    pub(crate) fn spindle_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        use crate::proto::pmc::PmcRange;
+        let spindles: Vec<(i32, i16)> = self
+            .path(path)?
+            .spindles
+            .iter()
+            .map(|s| (s.speed, s.alarm))
+            .collect();
+        let mut out = Vec::new();
+        for (k, (speed, alarm)) in spindles.into_iter().enumerate() {
+            let (adr_type, first) = if output { (1, 45) } else { (0, 70) };
+            let s = first + 4 * k as u16;
+            let range = PmcRange {
+                adr_type,
+                data_type: 0,
+                s,
+                e: s + 3,
+            };
+            let mut b = self.profile.pmc.read(1, &range).unwrap_or(vec![0; 4]);
+            if output {
+                b[0] = (b[0] & !0x0b)
+                    | u8::from(alarm != 0)
+                    | u8::from(speed == 0) << 1
+                    | u8::from(speed != 0 && alarm == 0) << 3;
+            }
+            b.reverse();
+            out.extend(b);
+        }
+        Ok(out)
+    }
 }

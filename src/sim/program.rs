@@ -1,17 +1,65 @@
-//! The simulator's program, timer, tool-life and alarm answers (areas
-//! `program` and `alarm`): profile sections and the `impl Machine` helpers
-//! the `CncService` methods call. Live values (program, block, alarms) come
-//! from [`super::run::PathRun`] at request time.
+//! The simulator's program, timer and alarm answers (areas `program` and
+//! `alarm`). Live values (program, block, alarms) come from
+//! [`super::run::PathRun`] at request time.
 
 use super::Machine;
 pub use super::profile::program::{Modal, OperatorMessage, Timers};
+use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::alarm::OpMsg;
+use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
+use crate::proto::machine::RDPRSTR;
 use crate::proto::program::{
-    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, ExePrgName, ExecProg, GCode, GModal,
-    OpMode, PathName, ProgDir, Timer,
+    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
+    ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
+    RDOPMODE, RDPROGDIR, RDTIMER, SETTIMER, Timer,
 };
+use crate::spec::table::info::RDPROCTIME;
+use crate::spec::table::program::{RDACTPT, RDBLKCOUNT};
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(EXEPRGNAME, |m, q| enc(m.sim_exe_prgname(q.path))),
+    Route::cnc(EXEPRGNAME2, |m, q| enc(m.sim_exe_prgname2(q.path))),
+    Route::cnc(RDEXECPROG, |m, q| enc(m.sim_exec_prog(q.path, q.args[0]))),
+    Route::cnc(MODAL_G, |m, q| enc(m.sim_modal_g(q.path, q.args[0]))),
+    Route::cnc(MODAL_AUX, |m, q| enc(m.sim_modal_aux(q.path, q.args[0]))),
+    Route::cnc(RDTIMER, |m, q| enc(m.sim_timer(q.args[0]))),
+    Route::cnc(GETTIMER, |m, q| enc(m.sim_clock(q.args[0]))),
+    Route::cnc(SETTIMER, |m, q| {
+        m.sim_set_clock(q.args[0], &q.payload).map(|()| Vec::new())
+    }),
+    Route::cnc(RDOPMODE, |m, q| enc(m.sim_opmode(q.path))),
+    Route::cnc(RDPROGDIR, |m, q| {
+        enc(m.sim_prog_dir(q.path, q.args[0], q.args[1], q.args[2]))
+    }),
+    // [type, num, _, text_len]
+    Route::cnc(RDALMMSG, |m, q| {
+        m.sim_alarm_messages(q.path, q.args[0], q.args[1], q.args[3])
+    }),
+    Route::cnc(RDOPMSG, |m, q| enc(m.sim_opmsg(q.path, q.args[0]))),
+    Route::cnc(RDOPMSG3, |m, q| {
+        m.sim_opmsg3(q.path, q.args[0], q.args[1], q.args[2])
+    }),
+    Route::cnc(RDPRSTR, |m, q| m.restart_info(q.path, q.args[0])),
+    Route::table(RDBLKCOUNT, |m, q| {
+        Ok(vec![i64::from(m.sim_block_count(q.path)?)])
+    }),
+    Route::table(RDACTPT, |m, q| {
+        m.sim_actpt(q.path)
+            .map(|a| vec![i64::from(a.prog_no), i64::from(a.blk_no)])
+    }),
+    Route::table(RDPROCTIME, proc_times),
+];
+
+/// cnc_rdproctime: as many runs as the layout's records hold.
+fn proc_times(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let max = q.f.records.map_or(0, |r| usize::from(r.max));
+    let runs = m.sim_proc_times(q.path, max)?;
+    Ok(runs
+        .iter()
+        .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
+        .collect())
+}
 use crate::proto::wire::{Reader, Wire, Writer};
 
 /// G-code groups answered for type −1 (g_rdata[35]).

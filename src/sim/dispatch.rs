@@ -1,0 +1,324 @@
+//! The simulator's one dispatch: every request subpacket is answered by
+//! the row of its (class, command) among the areas' `ROUTES`
+//! (src/sim/route.rs), gathered once into one sorted table; a command
+//! without a row answers EW_FUNC, as a CNC lacking the function does. And
+//! the rest of what the server asks of [`Machine`] ([`CncService`]).
+
+use super::Machine;
+use super::route::{Answer, Asked, Route};
+use super::service::{CncError, CncService, Reply, respond};
+use super::{
+    folder, history, macros, maintenance, memory, offset, operate, param, pmc_answers, position,
+    program, status, tool,
+};
+use crate::proto::described;
+use crate::proto::open::OpenBody;
+use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
+use std::sync::OnceLock;
+
+/// Every area's rows.
+const AREAS: &[&[Route]] = &[
+    status::ROUTES,
+    position::ROUTES,
+    program::ROUTES,
+    operate::ROUTES,
+    param::ROUTES,
+    macros::ROUTES,
+    pmc_answers::ROUTES,
+    offset::ROUTES,
+    tool::ROUTES,
+    history::ROUTES,
+    memory::ROUTES,
+    folder::ROUTES,
+    maintenance::ROUTES,
+];
+
+/// The rows sorted by (class, command); Err names a (class, command) two
+/// rows claim.
+pub fn table() -> Result<Vec<Route>, (u16, u16)> {
+    let mut all: Vec<Route> = AREAS.iter().flat_map(|a| a.iter().copied()).collect();
+    all.sort_by_key(Route::key);
+    match all.windows(2).find(|w| w[0].key() == w[1].key()) {
+        Some(w) => Err(w[0].key()),
+        None => Ok(all),
+    }
+}
+
+/// The table, built and checked once (a duplicate row panics at the first
+/// machine's construction).
+pub(super) fn routes() -> &'static [Route] {
+    static ROUTES: OnceLock<Vec<Route>> = OnceLock::new();
+    ROUTES.get_or_init(|| match table() {
+        Ok(t) => t,
+        Err((class, cmd)) => panic!("two simulator routes for class {class} command {cmd:#06x}"),
+    })
+}
+
+/// The row of a (class, command), if any.
+pub fn find(class: u16, cmd: u16) -> Option<Answer> {
+    let t = routes();
+    t.binary_search_by_key(&(class, cmd), Route::key)
+        .ok()
+        .map(|i| t[i].answer)
+}
+
+impl Machine {
+    /// The answer's bytes: EW_PATH for a CNC subpacket's path the machine
+    /// lacks, else its row's.
+    fn answer_bytes(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        let p = sub.path;
+        if sub.class == CLASS_CNC && (p == 0 || usize::from(p) > self.profile.paths.len()) {
+            return Err(CncError::PATH);
+        }
+        match find(sub.class, sub.cmd) {
+            Some(Answer::Bytes(f)) => f(self, sub),
+            Some(Answer::Values(f)) => {
+                let class = self.open_body_of().class();
+                let func = described::for_request(sub, class).ok_or(CncError::FUNC)?;
+                let args = described::args_of(func, class, sub);
+                let asked = Asked {
+                    f: func,
+                    path: p,
+                    args: &args,
+                };
+                let v = f(self, &asked)?;
+                described::encode(func, &v).map_err(|_| CncError::FUNC)
+            }
+            None => Err(CncError::FUNC),
+        }
+    }
+}
+
+impl CncService for Machine {
+    fn open_body(&self) -> OpenBody {
+        self.open_body_of()
+    }
+
+    fn max_sessions(&self) -> usize {
+        self.profile.cnc.max_sessions
+    }
+
+    fn advance(&mut self, now: std::time::Instant) {
+        self.advance_to(now);
+    }
+
+    fn answer(&mut self, sub: &ReqSub) -> RespSub {
+        let r = self.answer_bytes(sub);
+        respond(sub, r)
+    }
+
+    fn upload(&mut self, req: &crate::proto::upload::StartReq) -> Reply<Vec<u8>> {
+        self.upload_text(req)
+    }
+
+    fn receive(
+        &mut self,
+        how: crate::proto::download::Outgoing,
+        req: &crate::proto::upload::StartReq,
+        text: &[u8],
+        done: bool,
+    ) -> Reply<()> {
+        match how {
+            crate::proto::download::DOWNLOAD if done => self.download(req, text),
+            crate::proto::download::DOWNLOAD => Ok(()),
+            _ => self.dnc(req.path, text, done),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::proto::packet::{CLASS_PMC, decode_request};
+    use std::collections::BTreeSet;
+    use std::path::Path;
+
+    #[test]
+    fn no_two_rows_claim_a_command() {
+        assert_eq!(table().err(), None);
+        // And a duplicate is found: the first row twice.
+        let mut rows: Vec<Route> = routes().to_vec();
+        rows.push(rows[0]);
+        rows.sort_by_key(Route::key);
+        assert!(rows.windows(2).any(|w| w[0].key() == w[1].key()));
+    }
+
+    /// Commands FANUC's library sends (in the recorded cases) that the
+    /// simulator does not answer: it answers EW_FUNC, as a CNC lacking the
+    /// function does.
+    const NOT_ANSWERED: &[((u16, u16), &str)] = &[
+        (
+            (CLASS_CNC, crate::proto::param::RDPARAINFO15),
+            "Series 15 parameter information (cnc_rdparainfo): its answer's form is not known",
+        ),
+        (
+            (CLASS_CNC, crate::proto::param::RDDIAGINFO15),
+            "Series 15 diagnosis information (cnc_rddiaginfo): its answer's form is not known",
+        ),
+        (
+            (CLASS_CNC, crate::proto::tool::TLCTL),
+            "punch press tool control data (cnc_rdtlctldata): the profile has none",
+        ),
+    ];
+
+    /// The (class, command) of every data request subpacket of the
+    /// recorded cases (tests/vectors: what FANUC's library sends).
+    fn recorded_commands() -> BTreeSet<(u16, u16)> {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/vectors");
+        let mut out = BTreeSet::new();
+        let mut files = 0;
+        for e in std::fs::read_dir(&dir).expect("tests/vectors") {
+            let text = std::fs::read_to_string(e.expect("entry").path()).expect("a case file");
+            let v: serde_json::Value = serde_json::from_str(&text).expect("json");
+            files += 1;
+            let mut stack = vec![&v];
+            while let Some(x) = stack.pop() {
+                match x {
+                    serde_json::Value::Array(a) => stack.extend(a),
+                    serde_json::Value::Object(o) => {
+                        let is =
+                            |k: &str, want: &str| o.get(k).and_then(|t| t.as_str()) == Some(want);
+                        if is("dir", "req") && is("type", "2101") {
+                            let hex = o["hex"].as_str().expect("hex");
+                            let bytes: Vec<u8> = (0..hex.len())
+                                .step_by(2)
+                                .map(|i| u8::from_str_radix(&hex[i..i + 2], 16).expect("hex"))
+                                .collect();
+                            // (A few cases record a frame cut short.)
+                            if let Ok(subs) = decode_request(&bytes[10..]) {
+                                out.extend(subs.iter().map(|s| (s.class, s.cmd)));
+                            }
+                        }
+                        stack.extend(o.values());
+                    }
+                    _ => {}
+                }
+            }
+        }
+        assert!(
+            files > 200,
+            "the recorded cases are missing ({files} files)"
+        );
+        out
+    }
+
+    #[test]
+    fn every_command_the_library_sends_has_a_row_or_is_listed() {
+        let recorded = recorded_commands();
+        let sent: BTreeSet<(u16, u16)> = recorded
+            .iter()
+            .copied()
+            .chain(
+                crate::proto::names::COMMANDS
+                    .iter()
+                    .map(|(c, k, _)| (*c, *k)),
+            )
+            .chain(
+                crate::spec::FUNCS
+                    .iter()
+                    .flat_map(|f| f.forms.iter().map(|x| (x.class, x.cmd))),
+            )
+            .collect();
+        let listed: BTreeSet<(u16, u16)> = NOT_ANSWERED.iter().map(|(k, _)| *k).collect();
+        let missing: Vec<String> = sent
+            .iter()
+            .filter(|k| find(k.0, k.1).is_none() && !listed.contains(k))
+            .map(|(c, k)| format!("({c}, {k:#06x})"))
+            .collect();
+        assert!(
+            missing.is_empty(),
+            "no row and not listed: {}",
+            missing.join(" ")
+        );
+        // A listed command is indeed not answered.
+        for ((c, k), why) in NOT_ANSWERED {
+            assert!(find(*c, *k).is_none(), "({c}, {k:#06x}) has a row: {why}");
+        }
+        assert!(recorded.contains(&(CLASS_PMC, crate::proto::pmc::RDPMCRNG)));
+    }
+
+    /// The string literals of Rust source (comments and char literals
+    /// skipped; raw strings included).
+    fn literals(src: &str) -> Vec<String> {
+        let b = src.as_bytes();
+        let (mut out, mut i) = (Vec::new(), 0);
+        while i < b.len() {
+            let rest = &src[i..];
+            if rest.starts_with("//") {
+                i += rest.find('\n').unwrap_or(rest.len());
+            } else if rest.starts_with("/*") {
+                i += rest.find("*/").map_or(rest.len(), |e| e + 2);
+            } else if let Some(r) = rest.strip_prefix("'\\") {
+                i += 2 + r.find('\'').map_or(r.len(), |e| e + 1);
+            } else if rest.len() > 2 && rest.as_bytes()[0] == b'\'' && rest.as_bytes()[2] == b'\'' {
+                i += 3;
+            } else if rest.starts_with("r\"") || rest.starts_with("r#\"") {
+                let hashes = usize::from(rest.as_bytes()[1] == b'#');
+                let open = 2 + hashes;
+                let close = format!("\"{}", "#".repeat(hashes));
+                let end = rest[open..].find(&close).map_or(rest.len(), |e| open + e);
+                out.push(rest[open..end].to_string());
+                i += end + close.len();
+            } else if b[i] == b'"' {
+                let mut j = i + 1;
+                while j < b.len() && b[j] != b'"' {
+                    j += if b[j] == b'\\' { 2 } else { 1 };
+                }
+                out.push(src[i + 1..j.min(b.len())].to_string());
+                i = j + 1;
+            } else {
+                i += rest.chars().next().map_or(1, char::len_utf8);
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn no_answer_is_chosen_by_a_function_name() {
+        let names: BTreeSet<&str> = crate::spec::FUNCS
+            .iter()
+            .map(|f| f.name)
+            .chain(
+                crate::proto::names::COMMANDS
+                    .iter()
+                    .flat_map(|(_, _, n)| n.split_whitespace()),
+            )
+            .collect();
+        assert!(names.contains("cnc_search") && names.contains("cnc_rdparam"));
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/sim");
+        let mut dirs = vec![root.clone()];
+        let (mut files, mut found) = (0, Vec::new());
+        while let Some(d) = dirs.pop() {
+            for e in std::fs::read_dir(&d).expect("src/sim") {
+                let p = e.expect("entry").path();
+                if p.is_dir() {
+                    dirs.push(p);
+                    continue;
+                }
+                let rel = p.strip_prefix(&root).expect("under src/sim");
+                let rel = rel.to_string_lossy().replace('\\', "/");
+                if !rel.ends_with(".rs") {
+                    continue;
+                }
+                files += 1;
+                // The code, not its unit tests (which may name functions).
+                let src = std::fs::read_to_string(&p).expect("source");
+                let code = src.split("\n#[cfg(test)]\nmod tests").next().unwrap_or("");
+                for l in literals(code) {
+                    if names.contains(l.as_str()) {
+                        found.push(format!("{rel}: \"{l}\""));
+                    }
+                }
+            }
+        }
+        assert!(files > 30, "src/sim has {files} files");
+        assert!(
+            found.is_empty(),
+            "function names in src/sim: {}",
+            found.join(", ")
+        );
+        // The scan finds a name where there is one, and not in a comment.
+        let sample = "// \"cnc_search\"\nlet c = '\"'; match f.name { \"cnc_search\" => 1 }";
+        assert_eq!(literals(sample), ["cnc_search"]);
+    }
+}
