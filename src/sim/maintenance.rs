@@ -69,7 +69,7 @@ impl Machine {
             1..=TYPE_MAX => ty - 1,
             _ => return None,
         };
-        let t = self.sim_timer(kind).ok()?;
+        let t = self.timer(kind).ok()?;
         Some(i64::from(t.minute) * 60_000 + i64::from(t.msec))
     }
 

@@ -1,7 +1,7 @@
 //! Operating the simulated machine through FOCAS: cycle start runs the
 //! selected main program from that moment, reset stops it and clears the
 //! reset-clearable alarms, cnc_clralm clears alarms of one type. The
-//! running machine (src/sim/run.rs) then moves the axes, the spindle and
+//! running machine (src/sim/clock.rs) then moves the axes, the spindle and
 //! the counters from the program, as for the profile's own cycle.
 
 use super::Machine;

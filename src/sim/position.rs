@@ -2,7 +2,7 @@
 //! feed, speeds, loads, figures, and the alarm / program / sequence words of
 //! the dynamic frame. Everything is read from the profile and the live
 //! state at request time, so motion written there by the running program
-//! (src/sim/run.rs) shows up at once.
+//! (src/sim/clock.rs) shows up at once.
 //!
 //! Wire forms are those FANUC's library reads (SPEC.md §5.3). Where the
 //! meaning of a word is not known, the answer is a plausible constant

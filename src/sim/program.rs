@@ -18,43 +18,43 @@ use crate::spec::table::info::RDPROCTIME;
 use crate::spec::table::program::{RDACTPT, RDBLKCOUNT};
 
 pub(super) const ROUTES: &[Route] = &[
-    Route::cnc(EXEPRGNAME, |m, q| enc(m.sim_exe_prgname(q.path))),
-    Route::cnc(EXEPRGNAME2, |m, q| enc(m.sim_exe_prgname2(q.path))),
-    Route::cnc(RDEXECPROG, |m, q| enc(m.sim_exec_prog(q.path, q.args[0]))),
-    Route::cnc(MODAL_G, |m, q| enc(m.sim_modal_g(q.path, q.args[0]))),
-    Route::cnc(MODAL_AUX, |m, q| enc(m.sim_modal_aux(q.path, q.args[0]))),
-    Route::cnc(RDTIMER, |m, q| enc(m.sim_timer(q.args[0]))),
-    Route::cnc(GETTIMER, |m, q| enc(m.sim_clock(q.args[0]))),
+    Route::cnc(EXEPRGNAME, |m, q| enc(m.exe_prgname(q.path))),
+    Route::cnc(EXEPRGNAME2, |m, q| enc(m.exe_prgname2(q.path))),
+    Route::cnc(RDEXECPROG, |m, q| enc(m.exec_prog(q.path, q.args[0]))),
+    Route::cnc(MODAL_G, |m, q| enc(m.g_modal(q.path, q.args[0]))),
+    Route::cnc(MODAL_AUX, |m, q| enc(m.aux_modal(q.path, q.args[0]))),
+    Route::cnc(RDTIMER, |m, q| enc(m.timer(q.args[0]))),
+    Route::cnc(GETTIMER, |m, q| enc(m.clock(q.args[0]))),
     Route::cnc(SETTIMER, |m, q| {
-        m.sim_set_clock(q.args[0], &q.payload).map(|()| Vec::new())
+        m.set_clock(q.args[0], &q.payload).map(|()| Vec::new())
     }),
-    Route::cnc(RDOPMODE, |m, q| enc(m.sim_opmode(q.path))),
+    Route::cnc(RDOPMODE, |m, q| enc(m.opmode(q.path))),
     Route::cnc(RDPROGDIR, |m, q| {
-        enc(m.sim_prog_dir(q.path, q.args[0], q.args[1], q.args[2]))
+        enc(m.prog_dir(q.path, q.args[0], q.args[1], q.args[2]))
     }),
     // [type, num, _, text_len]
     Route::cnc(RDALMMSG, |m, q| {
-        m.sim_alarm_messages(q.path, q.args[0], q.args[1], q.args[3])
+        m.alarm_messages(q.path, q.args[0], q.args[1], q.args[3])
     }),
-    Route::cnc(RDOPMSG, |m, q| enc(m.sim_opmsg(q.path, q.args[0]))),
+    Route::cnc(RDOPMSG, |m, q| enc(m.opmsg(q.path, q.args[0]))),
     Route::cnc(RDOPMSG3, |m, q| {
-        m.sim_opmsg3(q.path, q.args[0], q.args[1], q.args[2])
+        m.opmsg3(q.path, q.args[0], q.args[1], q.args[2])
     }),
     Route::cnc(RDPRSTR, |m, q| m.restart_info(q.path, q.args[0])),
     Route::table(RDBLKCOUNT, |m, q| {
-        Ok(vec![i64::from(m.sim_block_count(q.path)?)])
+        Ok(vec![i64::from(m.block_count(q.path)?)])
     }),
     Route::table(RDACTPT, |m, q| {
-        m.sim_actpt(q.path)
+        m.actpt(q.path)
             .map(|a| vec![i64::from(a.prog_no), i64::from(a.blk_no)])
     }),
-    Route::table(RDPROCTIME, proc_times),
+    Route::table(RDPROCTIME, processing_times),
 ];
 
 /// cnc_rdproctime: as many runs as the layout's records hold.
-fn proc_times(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+fn processing_times(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let max = q.f.records.map_or(0, |r| usize::from(r.max));
-    let runs = m.sim_proc_times(q.path, max)?;
+    let runs = m.proc_times(q.path, max)?;
     Ok(runs
         .iter()
         .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
@@ -80,7 +80,7 @@ impl Machine {
 
     /// cnc_rdproctime: the runs of the program completed, newest first (at
     /// most `max`): program number and its time as hours, minutes, seconds.
-    pub(crate) fn sim_proc_times(&self, path: u16, max: usize) -> Reply<Vec<[i64; 4]>> {
+    pub(crate) fn proc_times(&self, path: u16, max: usize) -> Reply<Vec<[i64; 4]>> {
         let r = self.live(path)?;
         let secs = r.run_seconds.round() as i64;
         let n = (r.runs_done as usize).min(max);
@@ -92,11 +92,11 @@ impl Machine {
             .collect())
     }
 
-    pub(crate) fn sim_block_count(&self, path: u16) -> Reply<i32> {
+    pub(crate) fn block_count(&self, path: u16) -> Reply<i32> {
         Ok(self.live(path)?.block_count)
     }
 
-    pub(crate) fn sim_actpt(&self, path: u16) -> Reply<ActPt> {
+    pub(crate) fn actpt(&self, path: u16) -> Reply<ActPt> {
         let r = self.live(path)?;
         Ok(ActPt {
             prog_no: r.program,
@@ -127,7 +127,7 @@ impl Machine {
         Ok((s.main, p.unwrap_or_default()))
     }
 
-    pub(crate) fn sim_exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
+    pub(crate) fn exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
         let full = self.full_name(path)?;
         let short = full.rsplit('/').next().unwrap_or("");
         let mut name = [0u8; 36];
@@ -139,7 +139,7 @@ impl Machine {
         })
     }
 
-    pub(crate) fn sim_exe_prgname2(&self, path: u16) -> Reply<PathName> {
+    pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<PathName> {
         let mut b = self.full_name(path)?.into_bytes();
         b.truncate(255);
         b.push(0);
@@ -150,7 +150,7 @@ impl Machine {
     /// show answers its block number and no text (an idle path: four zero
     /// bytes), as a CNC does; FANUC's library reads past its buffer on an
     /// empty payload, so the simulator never sends one.
-    pub(crate) fn sim_exec_prog(&self, path: u16, length: i32) -> Reply<ExecProg> {
+    pub(crate) fn exec_prog(&self, path: u16, length: i32) -> Reply<ExecProg> {
         let r = self.live(path)?;
         if r.program == 0 || r.exec_text.is_empty() {
             return Ok(ExecProg {
@@ -168,7 +168,7 @@ impl Machine {
 
     /// cnc_modal's G groups: what the running program set (src/sim/modal.rs),
     /// else the profile's table.
-    pub(crate) fn sim_modal_g(&self, path: u16, code: i32) -> Reply<GModal> {
+    pub(crate) fn g_modal(&self, path: u16, code: i32) -> Reply<GModal> {
         self.path_profile(path)?;
         let at = |i: usize| GCode {
             code: self.modal_g(path, i),
@@ -192,7 +192,7 @@ impl Machine {
 
     /// cnc_modal's other codes (F, S, M, T ...): what the running program
     /// set, else the profile's table.
-    pub(crate) fn sim_modal_aux(&self, path: u16, code: i32) -> Reply<AuxModal> {
+    pub(crate) fn aux_modal(&self, path: u16, code: i32) -> Reply<AuxModal> {
         let aux = &self.path_profile(path)?.modal.aux;
         let set = &self.live(path)?.modal;
         let rec = |c: i32| {
@@ -233,7 +233,7 @@ impl Machine {
     /// on the simulator's clock: the profile's minutes plus the time since
     /// the start, path 1 running (STRT), path 1 moving at feed; the cycle
     /// time is path 1's current (or last) run. A hold stops them.
-    pub(crate) fn sim_timer(&self, kind: i32) -> Reply<Timer> {
+    pub(crate) fn timer(&self, kind: i32) -> Reply<Timer> {
         let t = &self.profile.timers;
         let r = self.live(1)?;
         let min = |m: i32| i64::from(m) * 60_000;
@@ -260,7 +260,7 @@ impl Machine {
     }
 
     /// cnc_gettimer: the system clock (local time) moved by cnc_settimer.
-    pub(crate) fn sim_clock(&self, kind: i32) -> Reply<Clock> {
+    pub(crate) fn clock(&self, kind: i32) -> Reply<Clock> {
         if kind != 0 && kind != 1 {
             return Err(CncError::NUMBER);
         }
@@ -277,7 +277,7 @@ impl Machine {
 
     /// cnc_settimer: type 0 sets the date, 1 the time of day (the payload's
     /// other half is ignored); invalid values are EW_DATA.
-    pub(crate) fn sim_set_clock(&mut self, kind: i32, payload: &[u8]) -> Reply<()> {
+    pub(crate) fn set_clock(&mut self, kind: i32, payload: &[u8]) -> Reply<()> {
         let c = Clock::decode(&mut Reader::new(payload)).map_err(|_| err(ew::EW_LENGTH))?;
         let now = self.clock_now();
         let cur = local(now);
@@ -320,7 +320,7 @@ impl Machine {
         Ok(())
     }
 
-    pub(crate) fn sim_opmode(&self, path: u16) -> Reply<OpMode> {
+    pub(crate) fn opmode(&self, path: u16) -> Reply<OpMode> {
         Ok(OpMode {
             mode: self.path_profile(path)?.opmode,
         })
@@ -328,7 +328,7 @@ impl Machine {
 
     /// 0x0023 (cnc_rdalmmsg/2, cnc_rdalminfo): up to `num` active alarms of
     /// `kind` (−1 all) as 16-byte heads and `text_len`-byte messages.
-    pub(crate) fn sim_alarm_messages(
+    pub(crate) fn alarm_messages(
         &self,
         path: u16,
         kind: i32,
@@ -362,7 +362,7 @@ impl Machine {
     /// other types EW_ATTRIB. Unverified against a real CNC: FANUC's library
     /// gave EW_ATTRIB for type −1 in one oracle run (not analysed), and what
     /// a CNC answers with no message on display is not recorded.
-    pub(crate) fn sim_opmsg(&self, path: u16, kind: i32) -> Reply<OpMsg> {
+    pub(crate) fn opmsg(&self, path: u16, kind: i32) -> Reply<OpMsg> {
         if !(0..=4).contains(&kind) {
             return Err(err(ew::EW_ATTRIB));
         }
@@ -415,7 +415,7 @@ impl Machine {
     /// `type` on display (-1: all; other types than 0..4 EW_ATTRIB) from
     /// index `start` on, at most `n`, as 268-byte records (i32 number,
     /// type, characters, 256 text bytes); none there: an empty answer.
-    pub(crate) fn sim_opmsg3(&self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+    pub(crate) fn opmsg3(&self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
         if !(-1..=4).contains(&kind) {
             return Err(err(ew::EW_ATTRIB));
         }
@@ -448,13 +448,7 @@ impl Machine {
     /// to FANUC's library carries all fields for every type): size = the
     /// text's length in bytes, comment in parentheses (cut to 50
     /// characters), the profile's date. No program: an empty payload.
-    pub(crate) fn sim_prog_dir(
-        &self,
-        path: u16,
-        top: i32,
-        count: i32,
-        code: i32,
-    ) -> Reply<ProgDir> {
+    pub(crate) fn prog_dir(&self, path: u16, top: i32, count: i32, code: i32) -> Reply<ProgDir> {
         if !PROGDIR_CODES.contains(&code) {
             return Err(err(ew::EW_ATTRIB));
         }
@@ -517,7 +511,7 @@ mod tests {
     fn an_idle_path_answers_block_0_and_no_text() {
         // Four zero bytes, the form FANUC's library accepts (not an empty payload).
         let m = Machine::new(crate::sim::Profile::parse("[[path]]\n").expect("profile"));
-        let a = m.sim_exec_prog(1, 64).expect("an answer");
+        let a = m.exec_prog(1, 64).expect("an answer");
         assert_eq!(a.to_bytes(), [0, 0, 0, 0]);
     }
 }

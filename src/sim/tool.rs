@@ -214,7 +214,7 @@ impl Machine {
     /// number, 0 when none does.
     fn tl_group_in_use(&self, path: u16) -> Reply<i32> {
         let t = self
-            .sim_modal_aux(path, T_CODE)?
+            .aux_modal(path, T_CODE)?
             .0
             .first()
             .map_or(0, |a| a.value);
