@@ -5,6 +5,7 @@
 //! the rest of what the server asks of [`Machine`] ([`CncService`]).
 
 use super::Machine;
+use super::profile::Class;
 use super::route::{Answer, Asked, Route};
 use super::service::{CncError, CncService, Reply, respond};
 use super::{
@@ -12,8 +13,9 @@ use super::{
     program, status, tool,
 };
 use crate::proto::described;
-use crate::proto::open::OpenBody;
+use crate::proto::open::{CncClass, OpenBody};
 use crate::proto::packet::{CLASS_CNC, ReqSub, RespSub};
+use crate::spec::Func;
 use std::sync::OnceLock;
 
 /// Every area's rows.
@@ -33,48 +35,119 @@ const AREAS: &[&[Route]] = &[
     maintenance::ROUTES,
 ];
 
-/// The rows sorted by (class, command); Err names a (class, command) two
-/// rows claim.
-pub fn table() -> Result<Vec<Route>, (u16, u16)> {
-    let mut all: Vec<Route> = AREAS.iter().flat_map(|a| a.iter().copied()).collect();
-    all.sort_by_key(Route::key);
-    match all.windows(2).find(|w| w[0].key() == w[1].key()) {
-        Some(w) => Err(w[0].key()),
-        None => Ok(all),
+/// The CNC classes a described function's form is chosen by, in the
+/// order of [`Row::layouts`].
+const CLASSES: [CncClass; 3] = [
+    CncClass::Series30,
+    CncClass::Series16 { kind: 0 },
+    CncClass::Series16 { kind: 2 },
+];
+
+/// The index in [`CLASSES`] of a CNC's class.
+fn class_index(class: CncClass) -> usize {
+    match class {
+        CncClass::Series30 => 0,
+        CncClass::Series16 { kind: 2 } => 2,
+        CncClass::Series16 { .. } => 1,
     }
 }
 
-/// The table, built and checked once (a duplicate row panics at the first
-/// machine's construction).
-pub(super) fn routes() -> &'static [Route] {
-    static ROUTES: OnceLock<Vec<Route>> = OnceLock::new();
-    ROUTES.get_or_init(|| match table() {
+/// A row of the table: the area's route and, for a described command,
+/// the function whose reply layout its answer fills on each class (where
+/// functions share a command, the one with the longest reply).
+#[derive(Clone, Copy)]
+pub struct Row {
+    pub route: Route,
+    pub layouts: [Option<&'static Func>; 3],
+}
+
+/// Why the rows do not make a table.
+#[derive(Debug, PartialEq, Eq)]
+pub enum Conflict {
+    /// Two rows claim this (class, command).
+    Twice(u16, u16),
+    /// A described row's command is no described function's, on any class.
+    NoLayout(u16, u16),
+}
+
+/// The rows sorted by (class, command), each described command with its
+/// layouts, checked: no (class, command) twice, no described row
+/// without a function.
+pub fn table() -> Result<Vec<Row>, Conflict> {
+    table_of(AREAS)
+}
+
+fn table_of(areas: &[&[Route]]) -> Result<Vec<Row>, Conflict> {
+    let mut all: Vec<Route> = areas.iter().flat_map(|a| a.iter().copied()).collect();
+    all.sort_by_key(Route::key);
+    if let Some(w) = all.windows(2).find(|w| w[0].key() == w[1].key()) {
+        let (class, cmd) = w[0].key();
+        return Err(Conflict::Twice(class, cmd));
+    }
+    all.into_iter()
+        .map(|route| {
+            let (class, cmd) = route.key();
+            let sub = ReqSub {
+                class,
+                cmd,
+                ..ReqSub::default()
+            };
+            let layouts = CLASSES.map(|c| match route.answer {
+                Answer::Values(_) => described::for_request(&sub, c),
+                Answer::Bytes(_) => None,
+            });
+            match route.answer {
+                Answer::Values(_) if layouts.iter().all(Option::is_none) => {
+                    Err(Conflict::NoLayout(class, cmd))
+                }
+                _ => Ok(Row { route, layouts }),
+            }
+        })
+        .collect()
+}
+
+/// The table, built and checked once (a conflict panics when it is built,
+/// at the first request).
+pub(super) fn rows() -> &'static [Row] {
+    static ROWS: OnceLock<Vec<Row>> = OnceLock::new();
+    ROWS.get_or_init(|| match table() {
         Ok(t) => t,
-        Err((class, cmd)) => panic!("two simulator routes for class {class} command {cmd:#06x}"),
+        Err(c) => panic!("the simulator's routes conflict: {c:?}"),
     })
 }
 
 /// The row of a (class, command), if any.
-pub fn find(class: u16, cmd: u16) -> Option<Answer> {
-    let t = routes();
-    t.binary_search_by_key(&(class, cmd), Route::key)
+pub fn find(class: u16, cmd: u16) -> Option<&'static Row> {
+    let t = rows();
+    t.binary_search_by_key(&(class, cmd), |r| r.route.key())
         .ok()
-        .map(|i| t[i].answer)
+        .map(|i| &t[i])
 }
 
 impl Machine {
+    /// The CNC's class, as its open body gives it.
+    fn cnc_class(&self) -> CncClass {
+        let c = &self.profile.cnc;
+        match c.class {
+            Class::Series30 => CncClass::Series30,
+            Class::Series16 => CncClass::Series16 { kind: c.kind },
+        }
+    }
+
     /// The answer's bytes: EW_PATH for a CNC subpacket's path the machine
-    /// lacks, else its row's.
+    /// lacks, else its row's; EW_FUNC without one (or, for a described
+    /// command, without a function on this class).
     fn answer_bytes(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
         let p = sub.path;
         if sub.class == CLASS_CNC && (p == 0 || usize::from(p) > self.profile.paths.len()) {
             return Err(CncError::PATH);
         }
-        match find(sub.class, sub.cmd) {
-            Some(Answer::Bytes(f)) => f(self, sub),
-            Some(Answer::Values(f)) => {
-                let class = self.open_body_of().class();
-                let func = described::for_request(sub, class).ok_or(CncError::FUNC)?;
+        let row = find(sub.class, sub.cmd).ok_or(CncError::FUNC)?;
+        match row.route.answer {
+            Answer::Bytes(f) => f(self, sub),
+            Answer::Values(f) => {
+                let class = self.cnc_class();
+                let func = row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
                 let args = described::args_of(func, class, sub);
                 let asked = Asked {
                     f: func,
@@ -84,7 +157,6 @@ impl Machine {
                 let v = f(self, &asked)?;
                 described::encode(func, &v).map_err(|_| CncError::FUNC)
             }
-            None => Err(CncError::FUNC),
         }
     }
 }
@@ -134,13 +206,34 @@ mod tests {
     use std::path::Path;
 
     #[test]
-    fn no_two_rows_claim_a_command() {
+    fn no_two_rows_claim_a_command_and_every_described_row_has_a_layout() {
         assert_eq!(table().err(), None);
-        // And a duplicate is found: the first row twice.
-        let mut rows: Vec<Route> = routes().to_vec();
-        rows.push(rows[0]);
-        rows.sort_by_key(Route::key);
-        assert!(rows.windows(2).any(|w| w[0].key() == w[1].key()));
+        // A conflict is found: a command twice, a described row whose
+        // command no described function sends.
+        let twice = [status::ROUTES, &status::ROUTES[..1]];
+        let (class, cmd) = status::ROUTES[0].key();
+        assert_eq!(table_of(&twice).err(), Some(Conflict::Twice(class, cmd)));
+        let stray = [Route::table(crate::proto::cmd::SYSINFO, |_, _| {
+            Ok(Vec::new())
+        })];
+        assert_eq!(
+            table_of(&[&stray]).err(),
+            Some(Conflict::NoLayout(CLASS_CNC, crate::proto::cmd::SYSINFO))
+        );
+        // The classes' order is the index's.
+        for (i, c) in CLASSES.iter().enumerate() {
+            assert_eq!(class_index(*c), i);
+        }
+        // Every described row has the layout of a function sending its
+        // command, on each class the function has a form for.
+        for r in rows() {
+            for (c, f) in CLASSES.iter().zip(r.layouts) {
+                if let Some(f) = f {
+                    let form = described::form(f, *c).expect("a form on this class");
+                    assert_eq!((form.class, form.cmd), r.route.key(), "{}", f.name);
+                }
+            }
+        }
     }
 
     /// Commands FANUC's library sends (in the recorded cases) that the
@@ -235,6 +328,85 @@ mod tests {
             assert!(find(*c, *k).is_none(), "({c}, {k:#06x}) has a row: {why}");
         }
         assert!(recorded.contains(&(CLASS_PMC, crate::proto::pmc::RDPMCRNG)));
+    }
+
+    /// Described functions whose command is answered by hand (a layout of
+    /// src/proto), not through their own layout: the command's whole
+    /// answer is more than one function's layout says.
+    const HAND_ANSWERED: &[((u16, u16), &str)] = &[
+        (
+            (CLASS_CNC, crate::proto::position::ACTF),
+            "cnc_actf reads the first word of the value record cnc_rddynamic reads whole",
+        ),
+        (
+            (CLASS_CNC, crate::proto::position::ACTS),
+            "cnc_acts reads the first word of the value record cnc_rddynamic reads whole",
+        ),
+        (
+            (CLASS_CNC, crate::proto::position::RDAXISNAME),
+            "[-1] answers the names per position kind, a form cnc_rdaxisname's layout lacks",
+        ),
+        (
+            (CLASS_CNC, crate::proto::position::SERVO_LOAD),
+            "one command, three functions: the record's form follows the code word",
+        ),
+        (
+            (CLASS_CNC, crate::proto::tool::TLGROUP),
+            "the group records cnc_rdgrpinfo reads; three functions read a part of them",
+        ),
+        (
+            (CLASS_CNC, crate::proto::tool::TLTOOLS),
+            "the tools of a group (cnc_rdtoolrng); cnc_toolnum reads one of them",
+        ),
+        (
+            (CLASS_CNC, crate::proto::maintenance::RDPM_CNCITEM),
+            "names as 62-byte text fields",
+        ),
+        (
+            (CLASS_CNC, crate::proto::maintenance::RDPM_MCNITEM),
+            "names as 62-byte text fields",
+        ),
+        (
+            (CLASS_CNC, crate::proto::maintenance::WRPM_MCNITEM),
+            "names as 62-byte text fields",
+        ),
+        (
+            (CLASS_CNC, crate::proto::maintenance::RDPM_ITEM),
+            "the item records of src/proto/maintenance.rs (PmItem)",
+        ),
+        (
+            (CLASS_CNC, crate::proto::maintenance::WRPM_ITEM),
+            "the item records of src/proto/maintenance.rs (PmItem)",
+        ),
+    ];
+
+    #[test]
+    fn every_described_function_is_answered_through_its_layout_or_listed() {
+        let hand: BTreeSet<(u16, u16)> = HAND_ANSWERED.iter().map(|(k, _)| *k).collect();
+        let mut wrong = Vec::new();
+        for f in crate::spec::FUNCS {
+            for form in f.forms {
+                let key = (form.class, form.cmd);
+                let row = find(key.0, key.1);
+                let by_layout = row.is_some_and(|r| matches!(r.route.answer, Answer::Values(_)));
+                if !by_layout && !hand.contains(&key) {
+                    wrong.push(format!("{} ({:#06x})", f.name, form.cmd));
+                }
+            }
+        }
+        assert!(
+            wrong.is_empty(),
+            "not through their layout, not listed: {}",
+            wrong.join(", ")
+        );
+        // A listed command is answered by hand indeed.
+        for ((c, k), why) in HAND_ANSWERED {
+            let row = find(*c, *k).expect("a row");
+            assert!(
+                matches!(row.route.answer, Answer::Bytes(_)),
+                "{k:#06x}: {why}"
+            );
+        }
     }
 
     /// The string literals of Rust source (comments and char literals

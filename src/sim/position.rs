@@ -24,8 +24,15 @@ use crate::spec::table::servo::RDSPDLALM;
 
 pub(super) const ROUTES: &[Route] = &[
     Route::cnc(ALARM, |m, q| enc(m.pos_alarm_bits(q.path))),
-    Route::cnc(PRGNUM, |m, q| enc(m.pos_prog_nums(q.path))),
-    Route::cnc(SEQNUM, |m, q| enc(m.pos_seq_num(q.path))),
+    // cnc_rdprgnum's and cnc_rdseqnum's layouts (cnc_rddynamic reads the
+    // same words).
+    Route::table(PRGNUM, |m, q| {
+        m.pos_prog_nums(q.path)
+            .map(|n| vec![i64::from(n.data), i64::from(n.mdata)])
+    }),
+    Route::table(SEQNUM, |m, q| {
+        m.pos_seq_num(q.path).map(|n| vec![i64::from(n.data)])
+    }),
     Route::cnc(ACTF, |m, q| enc(m.pos_actual(q.path, false))),
     Route::cnc(ACTS, |m, q| enc(m.pos_actual(q.path, true))),
     Route::cnc(SPEED_A5, |m, q| enc(m.pos_speed_a5(q.path))),
@@ -38,7 +45,11 @@ pub(super) const ROUTES: &[Route] = &[
         -1 => enc(m.pos_axis_pos_names(q.path)),
         _ => enc(m.pos_axis_names(q.path)),
     }),
-    Route::cnc(RDSPDLNAME, |m, q| enc(m.pos_spindle_names(q.path))),
+    // cnc_rdspdlname's layout: 4 name bytes per spindle.
+    Route::table(RDSPDLNAME, |m, q| {
+        m.pos_spindle_names(q.path)
+            .map(|v| v.iter().flat_map(|n| n.bytes.map(i64::from)).collect())
+    }),
     Route::cnc(SPINDLE, |m, q| {
         enc(m.pos_spindle_data(q.path, q.args[0], q.args[1]))
     }),

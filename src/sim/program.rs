@@ -23,7 +23,11 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(RDEXECPROG, |m, q| enc(m.exec_prog(q.path, q.args[0]))),
     Route::cnc(MODAL_G, |m, q| enc(m.g_modal(q.path, q.args[0]))),
     Route::cnc(MODAL_AUX, |m, q| enc(m.aux_modal(q.path, q.args[0]))),
-    Route::cnc(RDTIMER, |m, q| enc(m.timer(q.args[0]))),
+    // cnc_rdtimer's layout.
+    Route::table(RDTIMER, |m, q| {
+        m.timer(q.arg(0))
+            .map(|t| vec![i64::from(t.minute), i64::from(t.msec)])
+    }),
     Route::cnc(GETTIMER, |m, q| enc(m.clock(q.args[0]))),
     Route::cnc(SETTIMER, |m, q| {
         m.set_clock(q.args[0], &q.payload).map(|()| Vec::new())
