@@ -106,9 +106,9 @@ fn table_of(areas: &[&[Route]]) -> Result<Vec<Row>, Conflict> {
         .collect()
 }
 
-/// The table, built and checked once (a conflict panics when it is built,
-/// at the first request).
-pub(super) fn rows() -> &'static [Row] {
+/// The table, built and checked once: a conflict panics when it is built,
+/// as a simulator or fleet starts (or at the first request).
+pub fn rows() -> &'static [Row] {
     static ROWS: OnceLock<Vec<Row>> = OnceLock::new();
     ROWS.get_or_init(|| match table() {
         Ok(t) => t,
@@ -407,6 +407,41 @@ mod tests {
                 "{k:#06x}: {why}"
             );
         }
+    }
+
+    #[test]
+    fn every_described_answer_fills_its_layout() {
+        // A wrong count of integers would answer EW_FUNC, which reads as
+        // "not supported": each described row's answer, where it has one,
+        // encodes through its layout, on each class.
+        let mut answered = 0;
+        for (i, class) in CLASSES.iter().enumerate() {
+            let mut p = crate::sim::Profile::default();
+            (p.cnc.class, p.cnc.kind) = match class {
+                CncClass::Series30 => (Class::Series30, 0),
+                CncClass::Series16 { kind } => (Class::Series16, *kind),
+            };
+            let mut m = Machine::new(p);
+            for r in rows() {
+                let (Answer::Values(f), Some(func)) = (r.route.answer, r.layouts[i]) else {
+                    continue;
+                };
+                for args in [[0; 5], [1; 5], [2, 1, 1, 1, 1]] {
+                    let n = func.numbers().count();
+                    let q = Asked {
+                        f: func,
+                        path: 1,
+                        args: &args[..n.min(5)],
+                    };
+                    if let Ok(v) = f(&mut m, &q) {
+                        answered += 1;
+                        let e = described::encode(func, &v);
+                        assert!(e.is_ok(), "{} on {class:?}: {} values", func.name, v.len());
+                    }
+                }
+            }
+        }
+        assert!(answered > 100, "{answered} answers");
     }
 
     /// The string literals of Rust source (comments and char literals

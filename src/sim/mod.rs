@@ -81,6 +81,8 @@ impl Simulator {
             .filter(|f| f.concerns(1))
             .cloned()
             .collect();
+        // The dispatch table, checked before serving (src/sim/dispatch.rs).
+        dispatch::rows();
         let machine = Machine::new(profile);
         let started = machine.started;
         let net = server::Net {
