@@ -496,33 +496,3 @@ impl Machine {
             .collect()
     }
 }
-
-impl Machine {
-    /// 0x0043 [k] (cnc_rdprstrinfo): the program restart data of the last
-    /// interruption, k 0 the block counter, 1 the M code, 2 the T code, 3
-    /// the S code, 4 the B code, each a big-endian i32 when there is one;
-    /// before any interruption, nothing.
-    pub(crate) fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
-        let run = self
-            .run
-            .get(usize::from(path).wrapping_sub(1))
-            .ok_or(CncError::PATH)?;
-        let Some(r) = &run.restart else {
-            return if (0..=4).contains(&k) {
-                Ok(Vec::new())
-            } else {
-                Err(CncError::NUMBER)
-            };
-        };
-        // cnc_modal's types 100 + k: 0 B, 6 M, 7 S, 8 T.
-        let v = match k {
-            0 => Some(r.block),
-            1 => r.modal.aux_value(6),
-            2 => r.modal.aux_value(8),
-            3 => r.modal.aux_value(7),
-            4 => r.modal.aux_value(0),
-            _ => return Err(CncError::NUMBER),
-        };
-        Ok(v.map(|v| v.to_be_bytes().to_vec()).unwrap_or_default())
-    }
-}

@@ -57,4 +57,11 @@ impl Machine {
             .get(usize::from(path).wrapping_sub(1))
             .ok_or(CncError::PATH)
     }
+
+    /// The live state of path `path` (1-based); EW_PATH if there is none.
+    pub(crate) fn live(&self, path: u16) -> Reply<&PathRun> {
+        self.run
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)
+    }
 }

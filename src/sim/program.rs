@@ -8,7 +8,6 @@ use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
-use crate::proto::machine::RDPRSTR;
 use crate::proto::program::{
     AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
     ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
@@ -44,7 +43,6 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(RDOPMSG3, |m, q| {
         m.opmsg3(q.path, q.args[0], q.args[1], q.args[2])
     }),
-    Route::cnc(RDPRSTR, |m, q| m.restart_info(q.path, q.args[0])),
     Route::table(RDBLKCOUNT, |m, q| {
         Ok(vec![i64::from(m.block_count(q.path)?)])
     }),
@@ -78,10 +76,6 @@ fn err(code: i16) -> CncError {
 }
 
 impl Machine {
-    fn live(&self, path: u16) -> Reply<&super::run::PathRun> {
-        self.run.get(path as usize - 1).ok_or(CncError::PATH)
-    }
-
     /// cnc_rdproctime: the runs of the program completed, newest first (at
     /// most `max`): program number and its time as hours, minutes, seconds.
     pub(crate) fn proc_times(&self, path: u16, max: usize) -> Reply<Vec<[i64; 4]>> {
@@ -173,7 +167,7 @@ impl Machine {
     /// cnc_modal's G groups: what the running program set (src/sim/modal.rs),
     /// else the profile's table.
     pub(crate) fn g_modal(&self, path: u16, code: i32) -> Reply<GModal> {
-        self.path_profile(path)?;
+        self.path(path)?;
         let at = |i: usize| GCode {
             code: self.modal_g(path, i),
             flag: 0,
@@ -197,7 +191,7 @@ impl Machine {
     /// cnc_modal's other codes (F, S, M, T ...): what the running program
     /// set, else the profile's table.
     pub(crate) fn aux_modal(&self, path: u16, code: i32) -> Reply<AuxModal> {
-        let aux = &self.path_profile(path)?.modal.aux;
+        let aux = &self.path(path)?.modal.aux;
         let set = &self.live(path)?.modal;
         let rec = |c: i32| {
             let value = AUX_ORDER
@@ -218,13 +212,6 @@ impl Machine {
             c if (0..AUX_CODES).contains(&c) => vec![rec(c)],
             _ => return Err(CncError::NUMBER),
         }))
-    }
-
-    fn path_profile(&self, path: u16) -> Reply<&super::profile::Path> {
-        self.profile
-            .paths
-            .get(path as usize - 1)
-            .ok_or(CncError::PATH)
     }
 
     /// Milliseconds from the simulator's start to the instant it was last
@@ -326,7 +313,7 @@ impl Machine {
 
     pub(crate) fn opmode(&self, path: u16) -> Reply<OpMode> {
         Ok(OpMode {
-            mode: self.path_profile(path)?.opmode,
+            mode: self.path(path)?.opmode,
         })
     }
 
@@ -400,7 +387,7 @@ impl Machine {
     /// the macro message of the program running there (`#3006=n(TEXT)`,
     /// type 4).
     pub(crate) fn shown_messages(&self, path: u16) -> Reply<Vec<OperatorMessage>> {
-        let mut v = self.path_profile(path)?.opmsgs.clone();
+        let mut v = self.path(path)?.opmsgs.clone();
         if let Some((number, text)) = self
             .run
             .get(path as usize - 1)

@@ -33,11 +33,11 @@ pub(super) const ROUTES: &[Route] = &[
     // are not (src/sim/position.rs).
     Route::cnc(cmd::SYSINFO15, |m, q| {
         m.series15()?;
-        enc(m.pos_sysinfo15(q.path))
+        enc(m.sysinfo15(q.path))
     }),
     Route::cnc(SPINDLE_SHOWN15, |m, q| {
         m.series15()?;
-        enc(m.pos_spindle_shown15(q.path))
+        enc(m.spindle_shown15(q.path))
     }),
     Route::cnc(cmd::RDCNCID, |m, _| {
         enc(Ok(CncId(m.profile.cnc.cnc_id.clone())))
