@@ -28,7 +28,7 @@ use fwlib32::proto::{
     alarm as pa, history as ph, macros as pm, offset as po, param as pp, pmc, program as pg,
 };
 use fwlib32::proto::{position as ps, status as st, tool as pt, upload as pu};
-use fwlib32::sim::service::{CncService, dispatch};
+use fwlib32::sim::service::CncService;
 use fwlib32::sim::trace::Namer;
 use fwlib32::sim::{Machine, Profile};
 use std::hint::black_box;
@@ -795,7 +795,7 @@ pub fn request(data: &[u8]) {
                 };
                 black_box(namer.request(&frame, &subs));
                 m.advance(at);
-                let resp: Vec<RespSub> = subs.iter().map(|s| dispatch(&mut m, s)).collect();
+                let resp: Vec<RespSub> = subs.iter().map(|s| m.answer(s)).collect();
                 // A described function's answer decodes as the client decodes it.
                 for (s, r) in subs.iter().zip(&resp) {
                     if let Some(f) = for_request(s, open.class()) {
@@ -838,8 +838,11 @@ pub fn profile(data: &[u8]) {
     let mut m = Machine::new(p);
     black_box(m.open_body().to_bytes());
     for path in 1..=paths {
-        let _ = black_box(m.sysinfo(path));
-        let _ = black_box(m.statinfo(path));
+        for cmd in [fwlib32::proto::cmd::SYSINFO, fwlib32::proto::cmd::STATINFO] {
+            let mut q = fwlib32::proto::packet::ReqSub::cnc(cmd, &[]);
+            q.path = path;
+            black_box(m.answer(&q));
+        }
     }
     let at = m.started + Duration::from_secs(1);
     m.advance(at);

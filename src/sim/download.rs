@@ -11,7 +11,7 @@
 //! program without an O number EW_DATA, then the store's own refusals (a
 //! number in use EW_DATA, memory full EW_OVRFLOW).
 
-use super::run::Machine;
+use super::Machine;
 use super::service::{CncError, Reply};
 use super::store::Program;
 use crate::ew::{EW_ATTRIB, EW_DATA};

@@ -154,6 +154,7 @@ impl Fleet {
                 .filter(|f| f.concerns(number))
                 .cloned()
                 .collect();
+            super::dispatch::rows();
             let mut machine = Machine::new(profile);
             machine.started = zero.checked_sub(phase).unwrap_or(zero);
             machine.now = machine.started;

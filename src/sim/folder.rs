@@ -6,12 +6,36 @@
 //! EW_BUSY, EW_OVRFLOW); a type other than 1/2 EW_ATTRIB.
 
 use super::Machine;
+use super::route::Route;
 use super::service::{CncError, Reply};
 use super::store::{FOLDERS, Program};
 use crate::ew;
-use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::packet::ReqSub;
 use crate::proto::program as pp;
 use crate::proto::wire::Writer;
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(pp::PDF_DRIVE, Machine::folder_request),
+    Route::cnc(pp::PDF_INF, Machine::folder_request),
+    Route::cnc(pp::PDF_RDCURDIR, Machine::folder_request),
+    Route::cnc(pp::PDF_WRCURDIR, Machine::folder_request),
+    Route::cnc(pp::PDF_SUBDIRN, Machine::folder_request),
+    Route::cnc(pp::PDF_ADD, Machine::folder_request),
+    Route::cnc(pp::PDF_DEL, Machine::folder_request),
+    Route::cnc(pp::PDF_RENAME, Machine::folder_request),
+    Route::cnc(pp::PDF_RDMAIN, Machine::folder_request),
+    Route::cnc(pp::PDF_SLCTMAIN, Machine::folder_request),
+    Route::cnc(pp::PDF_COPY, Machine::folder_request),
+    Route::cnc(pp::PDF_MOVE, Machine::folder_request),
+    Route::cnc(pp::PDF_SUBDIR, Machine::folder_request),
+    Route::cnc(pp::PDF_ALLDIR, Machine::folder_request),
+    Route::cnc(pp::PDF_RDLINE, Machine::line_request),
+    Route::cnc(pp::PDF_WRLINE, Machine::line_request),
+    Route::cnc(pp::PDF_DELLINE, Machine::line_request),
+    Route::cnc(pp::PDF_DELALL, Machine::line_request),
+    Route::cnc(pp::PDF_RDACTPT, Machine::folder_request),
+    Route::cnc(pp::PDF_WRACTPT, Machine::folder_request),
+];
 
 /// A NUL-padded field as text.
 fn field(b: &[u8]) -> String {
@@ -31,49 +55,26 @@ fn err<T>(code: i16) -> Reply<T> {
 }
 
 impl Machine {
-    /// The folder commands (`None`: not one of them).
-    pub(crate) fn folder_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
-        let cmds = [
-            pp::PDF_DRIVE,
-            pp::PDF_INF,
-            pp::PDF_RDCURDIR,
-            pp::PDF_WRCURDIR,
-            pp::PDF_SUBDIRN,
-            pp::PDF_ADD,
-            pp::PDF_DEL,
-            pp::PDF_RENAME,
-            pp::PDF_RDMAIN,
-            pp::PDF_SLCTMAIN,
-            pp::PDF_COPY,
-            pp::PDF_MOVE,
-            pp::PDF_SUBDIR,
-            pp::PDF_ALLDIR,
-            pp::PDF_RDLINE,
-            pp::PDF_WRLINE,
-            pp::PDF_DELLINE,
-            pp::PDF_DELALL,
-            pp::PDF_RDACTPT,
-            pp::PDF_WRACTPT,
-        ];
-        if sub.class != CLASS_CNC || !cmds.contains(&sub.cmd) {
-            return None;
-        }
+    /// The request's two names: the payload's 256-byte field and what
+    /// follows it.
+    fn names(sub: &ReqSub) -> (String, String) {
         let p = &sub.payload;
-        let (a, b) = (
+        (
             field(p.get(..256).unwrap_or(p)),
             field(p.get(256..).unwrap_or(&[])),
-        );
-        if [
-            pp::PDF_RDLINE,
-            pp::PDF_WRLINE,
-            pp::PDF_DELLINE,
-            pp::PDF_DELALL,
-        ]
-        .contains(&sub.cmd)
-        {
-            return Some(self.line_answer(sub, &a));
-        }
-        Some(self.folder_answer(sub.cmd, sub.path, sub.args, &a, &b))
+        )
+    }
+
+    /// A folder command: its names and arguments.
+    fn folder_request(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        let (a, b) = Self::names(sub);
+        self.folder_answer(sub.cmd, sub.path, sub.args, &a, &b)
+    }
+
+    /// A line command: the program's name and the arguments.
+    fn line_request(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        let (a, _) = Self::names(sub);
+        self.line_answer(sub, &a)
     }
 
     /// The line commands on a program ("<folder>O<n>"): read `args[1]`

@@ -8,12 +8,84 @@ use super::profile::history::{HIS_SIGNALS, HisSignal};
 pub use super::profile::history::{
     History, HistoryEntry, Message, MessageHistory, Operation, OperationHistory, parse_time,
 };
+use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::alarm::{AlmHisRecord, AlmHistory, HIS_MSG_LEN};
+use crate::proto::alarm::{AlmHisRecord, AlmHistory, HIS_MSG_LEN, RDALMHISNO, RDALMHISTRY};
+use crate::proto::cmd::RDPITCHINFO;
+use crate::proto::cmd::{
+    CLEAROMHIS, CLEAROPHIS, RDHISSGNL3, RDOMHISINFO, RDOMHISNO, RDOPHISNO, STARTOMHIS, STARTOPHIS,
+    STOPOMHIS, STOPOPHIS,
+};
+use crate::proto::history::{
+    RDALMHISTRY5, RDOMHISTRY, RDOMHISTRY2, RDOPHISTRY, RDOPHISTRY4, RDPITCHR, WRHISSGNL3,
+};
 use crate::proto::offset::Count;
-use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::packet::ReqSub;
 use std::time::SystemTime;
+
+/// A count as the history functions answer it (at most 65535).
+fn count(n: usize) -> Vec<i64> {
+    vec![n.min(usize::from(u16::MAX)) as i64]
+}
+
+pub(super) const ROUTES: &[Route] = &[
+    // [s, e, 1]: alarm history entries s..=e (1 = newest).
+    Route::cnc(
+        RDALMHISTRY,
+        |m, q| enc(m.history_read(q.args[0], q.args[1])),
+    ),
+    Route::cnc(RDALMHISNO, |m, _| enc(m.history_count())),
+    // The range reads of src/proto/history.rs: the answer's bytes for the
+    // request's arguments.
+    Route::cnc(RDOPHISTRY, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
+    Route::cnc(RDOPHISTRY4, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
+    Route::cnc(RDOMHISTRY, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
+    Route::cnc(RDOMHISTRY2, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
+    Route::cnc(RDALMHISTRY5, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
+    Route::cnc(RDPITCHR, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
+    Route::cnc(WRHISSGNL3, |m, q| m.write_signals(q)),
+    Route::table(RDOPHISNO, |m, _| {
+        Ok(count(m.profile.operation_history.entries.len()))
+    }),
+    Route::table(STARTOPHIS, |m, _| {
+        m.profile.operation_history.recording = true;
+        Ok(Vec::new())
+    }),
+    Route::table(STOPOPHIS, |m, _| {
+        m.profile.operation_history.recording = false;
+        Ok(Vec::new())
+    }),
+    Route::table(CLEAROPHIS, |m, _| {
+        m.profile.operation_history.entries.clear();
+        Ok(Vec::new())
+    }),
+    Route::table(RDHISSGNL3, |m, _| Ok(m.signal_table())),
+    Route::table(RDOMHISNO, |m, _| {
+        Ok(count(m.profile.operator_message_history.entries.len()))
+    }),
+    Route::table(RDOMHISINFO, |m, _| {
+        let oms = &m.profile.operator_message_history;
+        Ok([oms.capacity, oms.entries.len(), oms.chars]
+            .map(|n| n.min(usize::from(u16::MAX)) as i64)
+            .to_vec())
+    }),
+    Route::table(STARTOMHIS, |m, _| {
+        m.profile.operator_message_history.recording = true;
+        Ok(Vec::new())
+    }),
+    Route::table(STOPOMHIS, |m, _| {
+        m.profile.operator_message_history.recording = false;
+        Ok(Vec::new())
+    }),
+    Route::table(CLEAROMHIS, |m, _| {
+        m.profile.operator_message_history.entries.clear();
+        Ok(Vec::new())
+    }),
+    Route::table(RDPITCHINFO, |m, _| {
+        Ok(vec![i64::from(m.profile.pitch.size)])
+    }),
+];
 
 /// UTC calendar time of `t` as "YYYY-MM-DD hh:mm:ss" (before 1970: 1970).
 pub fn format_time(t: SystemTime) -> String {
@@ -350,15 +422,12 @@ impl Machine {
     /// number 1..=60, PMC 0 (clears the entry) ..= the PMCs, address type
     /// 0..=3, byte 0..=9999, else EW_DATA and nothing changes; the payload
     /// must hold n entries (n 0..=60), else EW_LENGTH.
-    pub(crate) fn history_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
-        use crate::proto::history::{SIG3_REC, Sig3, WRHISSGNL3};
-        if sub.class != CLASS_CNC || sub.cmd != WRHISSGNL3 {
-            return None;
-        }
+    fn write_signals(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        use crate::proto::history::{SIG3_REC, Sig3};
         let n = sub.args[0];
         let p = &sub.payload;
         if !(0..=HIS_SIGNALS as i32).contains(&n) || p.len() != n as usize * SIG3_REC {
-            return Some(Err(CncError::new(ew::EW_LENGTH)));
+            return Err(CncError::new(ew::EW_LENGTH));
         }
         let units = self.profile.pmc.units() as i32;
         let mut new = Vec::new();
@@ -369,7 +438,7 @@ impl Machine {
                 && (0..=3).contains(&group)
                 && (0..=9999).contains(&number);
             if !ok {
-                return Some(Err(CncError::new(ew::EW_DATA)));
+                return Err(CncError::new(ew::EW_DATA));
             }
             let s = if pmc == 0 {
                 HisSignal {
@@ -403,125 +472,27 @@ impl Machine {
             }
             table[k] = s;
         }
-        Some(Ok(Vec::new()))
+        Ok(Vec::new())
     }
 
-    /// The answers of the history functions described as data
-    /// (src/spec/table/): counts and sizes, and the record/clear commands.
-    pub(crate) fn history_answer(&mut self, name: &str) -> Option<Vec<i64>> {
-        let ops = &mut self.profile.operation_history;
-        let oms = &mut self.profile.operator_message_history;
-        let count = |n: usize| vec![n.min(usize::from(u16::MAX)) as i64];
-        Some(match name {
-            "cnc_rdophisno" => count(ops.entries.len()),
-            "cnc_startophis" | "cnc_stopophis" => {
-                ops.recording = name == "cnc_startophis";
-                Vec::new()
-            }
-            "cnc_clearophis" => {
-                ops.entries.clear();
-                Vec::new()
-            }
-            // The 60 entries of the signal table, numbered 1.., those
-            // the profile does not set zeros.
-            "cnc_rdhissgnl3" => (0..HIS_SIGNALS)
-                .flat_map(|k| {
-                    let s = ops.signals.get(k);
-                    let v = |f: fn(&HisSignal) -> i64| s.map_or(0, f);
-                    [
-                        k as i64 + 1,
-                        v(|s| s.pmc.into()),
-                        v(|s| s.number.into()),
-                        0,
-                        v(|s| s.group.into()),
-                        v(|s| s.mask.into()),
-                        0,
-                    ]
-                })
-                .collect(),
-            "cnc_rdomhisno" => count(oms.entries.len()),
-            "cnc_rdomhisinfo" => [oms.capacity, oms.entries.len(), oms.chars]
-                .map(|n| n.min(usize::from(u16::MAX)) as i64)
-                .to_vec(),
-            "cnc_startomhis" | "cnc_stopomhis" => {
-                oms.recording = name == "cnc_startomhis";
-                Vec::new()
-            }
-            "cnc_clearomhis" => {
-                oms.entries.clear();
-                Vec::new()
-            }
-            _ => return None,
-        })
-    }
-}
-
-impl Machine {
-    /// 0x005b (cnc_rdctrldi / cnc_rdctrldo): four signal bytes per spindle
-    /// of the path, from PMC unit 1: the input signals G070..G073 (spindle
-    /// k: G070 + 4k ...), the output signals F045..F048, of which the
-    /// running machine sets F045's ALMA (bit 0, the spindle's alarm), SSTA
-    /// (bit 1, speed zero) and SARA (bit 3, turning at speed). Each
-    /// spindle's four bytes go as one big-endian word, the first signal
-    /// byte lowest (what FANUC's library writes as sgnl1..sgnl4).
-    pub(crate) fn spindle_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
-        use crate::proto::pmc::PmcRange;
-        let spindles: Vec<(i32, i16)> = self
-            .path(path)?
-            .spindles
-            .iter()
-            .map(|s| (s.speed, s.alarm))
-            .collect();
-        let mut out = Vec::new();
-        for (k, (speed, alarm)) in spindles.into_iter().enumerate() {
-            let (adr_type, first) = if output { (1, 45) } else { (0, 70) };
-            let s = first + 4 * k as u16;
-            let range = PmcRange {
-                adr_type,
-                data_type: 0,
-                s,
-                e: s + 3,
-            };
-            let mut b = self.profile.pmc.read(1, &range).unwrap_or(vec![0; 4]);
-            if output {
-                b[0] = (b[0] & !0x0b)
-                    | u8::from(alarm != 0)
-                    | u8::from(speed == 0) << 1
-                    | u8::from(speed != 0 && alarm == 0) << 3;
-            }
-            b.reverse();
-            out.extend(b);
-        }
-        Ok(out)
-    }
-}
-
-impl Machine {
-    /// 0x0043 [k] (cnc_rdprstrinfo): the program restart data of the last
-    /// interruption, k 0 the block counter, 1 the M code, 2 the T code, 3
-    /// the S code, 4 the B code, each a big-endian i32 when there is one;
-    /// before any interruption, nothing.
-    pub(crate) fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
-        let run = self
-            .run
-            .get(usize::from(path).wrapping_sub(1))
-            .ok_or(CncError::PATH)?;
-        let Some(r) = &run.restart else {
-            return if (0..=4).contains(&k) {
-                Ok(Vec::new())
-            } else {
-                Err(CncError::NUMBER)
-            };
-        };
-        // cnc_modal's types 100 + k: 0 B, 6 M, 7 S, 8 T.
-        let v = match k {
-            0 => Some(r.block),
-            1 => r.modal.aux_value(6),
-            2 => r.modal.aux_value(8),
-            3 => r.modal.aux_value(7),
-            4 => r.modal.aux_value(0),
-            _ => return Err(CncError::NUMBER),
-        };
-        Ok(v.map(|v| v.to_be_bytes().to_vec()).unwrap_or_default())
+    /// cnc_rdhissgnl3: the 60 entries of the signal table, numbered 1..,
+    /// those the profile does not set zeros.
+    fn signal_table(&self) -> Vec<i64> {
+        let ops = &self.profile.operation_history;
+        (0..HIS_SIGNALS)
+            .flat_map(|k| {
+                let s = ops.signals.get(k);
+                let v = |f: fn(&HisSignal) -> i64| s.map_or(0, f);
+                [
+                    k as i64 + 1,
+                    v(|s| s.pmc.into()),
+                    v(|s| s.number.into()),
+                    0,
+                    v(|s| s.group.into()),
+                    v(|s| s.mask.into()),
+                    0,
+                ]
+            })
+            .collect()
     }
 }

@@ -4,10 +4,44 @@
 use super::Machine;
 use super::profile::Class;
 pub use super::profile::macros::{MAX_DEC, Macros, parse_decimal};
+use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::macros::{Double, MacroInfo, RDMACROR2_CHUNK, VACANT_DEC};
+use crate::proto::cmd::RDMACROINFO;
+use crate::proto::macros::{
+    Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
+};
 use crate::proto::value::Value;
+use crate::proto::wire::Wire;
+
+pub(super) const ROUTES: &[Route] = &[
+    // [s, e]
+    Route::cnc(RDMACRO, |m, q| {
+        enc(m.read_macros(q.path, q.args[0], q.args[1]))
+    }),
+    // [s, e] + records
+    Route::cnc(WRMACRO, |m, q| match Vec::<Value>::from_bytes(&q.payload) {
+        Ok(v) => m
+            .write_macros(q.path, q.args[0], q.args[1], &v)
+            .map(|()| Vec::new()),
+        Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+    }),
+    // [s, n]
+    Route::cnc(RDMACROR2, |m, q| {
+        enc(m.read_macros_double(q.path, q.args[0], q.args[1]))
+    }),
+    // [s] + doubles: answers the count.
+    Route::cnc(WRMACROR2, |m, q| {
+        match Vec::<Double>::from_bytes(&q.payload) {
+            Ok(v) => enc(m.write_macros_double(q.path, q.args[0], &v)),
+            Err(_) => Err(CncError::new(ew::EW_LENGTH)),
+        }
+    }),
+    Route::table(RDMACROINFO, |m, q| {
+        m.macro_info(q.path)
+            .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
+    }),
+];
 
 /// Most records one read or write may carry (the reply must fit in the
 /// smallest frame a CNC sends, 1450 bytes).
@@ -65,7 +99,7 @@ impl Machine {
     }
 
     /// Command 0x0015: variables `s..=e`.
-    pub(crate) fn sim_read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<Value>> {
+    pub(crate) fn read_macros(&mut self, path: u16, s: i32, e: i32) -> Reply<Vec<Value>> {
         let m = self.macros(path)?;
         m.check_range(s, e)?;
         Ok((s..=e).map(|n| m.record(n)).collect())
@@ -73,7 +107,7 @@ impl Machine {
 
     /// Command 0x0016: variables `s..=e` from records. All or nothing: a
     /// rejected write changes no variable.
-    pub(crate) fn sim_write_macros(
+    pub(crate) fn write_macros(
         &mut self,
         path: u16,
         s: i32,
@@ -121,7 +155,7 @@ impl Machine {
 
     /// Command 0x0017: how many common variables exist from #100 (below
     /// #500) and from #500 (below #1000).
-    pub(crate) fn sim_macro_info(&mut self, path: u16) -> Reply<MacroInfo> {
+    pub(crate) fn macro_info(&mut self, path: u16) -> Reply<MacroInfo> {
         let m = self.macros(path)?;
         let count = |a: i32, b: i32| (a..=b).filter(|n| m.exists(*n)).count() as i32;
         Ok(MacroInfo {
@@ -134,12 +168,7 @@ impl Machine {
     /// the first number that does not exist (EW_NUMBER if that is `s`). A
     /// vacant variable reads as 0.0: how a real CNC marks vacancy in this
     /// form is not known.
-    pub(crate) fn sim_read_macros_double(
-        &mut self,
-        path: u16,
-        s: i32,
-        n: i32,
-    ) -> Reply<Vec<Double>> {
+    pub(crate) fn read_macros_double(&mut self, path: u16, s: i32, n: i32) -> Reply<Vec<Double>> {
         let m = self.macros(path)?;
         if n <= 0 || n as u32 > RDMACROR2_CHUNK || !m.exists(s) {
             return Err(CncError::NUMBER);
@@ -157,7 +186,7 @@ impl Machine {
     /// (else EW_NUMBER / EW_PROT, nothing written). Each double is kept
     /// with the fewest decimal places (up to 9) that reproduce it; NaN and
     /// infinities are EW_DATA. Answers the count written.
-    pub(crate) fn sim_write_macros_double(
+    pub(crate) fn write_macros_double(
         &mut self,
         path: u16,
         s: i32,
@@ -250,8 +279,8 @@ mod tests {
         // Found by fuzzing (fuzz/regressions/request/macro-range-overflow).
         let mut m = Machine::new(crate::sim::Profile::default());
         for (s, e) in [(-1, i32::MAX), (i32::MIN, i32::MAX), (i32::MIN, -1)] {
-            assert_eq!(m.sim_read_macros(1, s, e).err(), Some(CncError::NUMBER));
-            let w = m.sim_write_macros(1, s, e, &[]).err();
+            assert_eq!(m.read_macros(1, s, e).err(), Some(CncError::NUMBER));
+            let w = m.write_macros(1, s, e, &[]).err();
             assert_eq!(w, Some(CncError::NUMBER));
         }
     }

@@ -6,13 +6,34 @@
 
 use super::Machine;
 use super::profile::maintenance::{ITEMS, Item, MCN_ITEMS, TYPE_MAX};
+use super::route::Route;
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::maintenance::{
     ITEM_LEN, ITEMS_MAX, NAME_LEN, NAMES_MAX, PmItem, RDPM_CNCITEM, RDPM_ITEM, RDPM_MCNITEM,
     WRPM_ITEM, WRPM_MCNITEM,
 };
-use crate::proto::packet::{CLASS_CNC, ReqSub};
+
+/// The periodic maintenance commands (class 1, any path).
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(RDPM_CNCITEM, |m, q| {
+        let list = &m.profile.maintenance.cnc_items;
+        Machine::pm_names(list, list.len(), q.args)
+    }),
+    Route::cnc(RDPM_MCNITEM, |m, q| {
+        Machine::pm_names(&m.profile.maintenance.machine_items, MCN_ITEMS, q.args)
+    }),
+    Route::cnc(RDPM_ITEM, |m, q| {
+        let a = q.args;
+        slots(a[0], a[1].min(i32::from(ITEMS_MAX)), ITEMS)
+            .map(|r| r.flat_map(|i| m.pm_item(i).to_wire()).collect())
+    }),
+    Route::cnc(WRPM_MCNITEM, |m, q| m.pm_write_names(q.args[0], &q.payload)),
+    Route::cnc(WRPM_ITEM, |m, q| {
+        m.pm_write_items(q.args[0], q.args[1], &q.payload)
+            .map(|()| Vec::new())
+    }),
+];
 
 /// A name as its 62 wire bytes, zero-padded.
 fn name_bytes(s: &str) -> [u8; NAME_LEN] {
@@ -48,7 +69,7 @@ impl Machine {
             1..=TYPE_MAX => ty - 1,
             _ => return None,
         };
-        let t = self.sim_timer(kind).ok()?;
+        let t = self.timer(kind).ok()?;
         Some(i64::from(t.minute) * 60_000 + i64::from(t.msec))
     }
 
@@ -121,50 +142,35 @@ impl Machine {
         Ok(())
     }
 
-    /// The periodic maintenance commands (class 1, any path).
-    pub(crate) fn maintenance_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
-        if sub.class != CLASS_CNC {
-            return None;
+    /// The names `args[0]..` (at most `args[1]`, and the answer's most)
+    /// of a list of `n` slots.
+    fn pm_names(list: &[String], n: usize, a: [i32; 5]) -> Reply<Vec<u8>> {
+        let r = slots(a[0], a[1].min(i32::from(NAMES_MAX)), n)?;
+        Ok(
+            r.flat_map(|i| name_bytes(list.get(i).map_or("", |s| s.as_str())))
+                .collect(),
+        )
+    }
+
+    /// [s] + names: the machine-specific item names from slot `s`.
+    fn pm_write_names(&mut self, s: i32, p: &[u8]) -> Reply<Vec<u8>> {
+        if p.is_empty() || p.len() % NAME_LEN != 0 {
+            return Err(CncError::new(ew::EW_LENGTH));
         }
-        let a = sub.args;
-        let m = &self.profile.maintenance;
-        let names = |list: &[String], n: usize, max: i16| -> Reply<Vec<u8>> {
-            let r = slots(a[0], a[1].min(i32::from(max)), n)?;
-            Ok(
-                r.flat_map(|i| name_bytes(list.get(i).map_or("", |s| s.as_str())))
-                    .collect(),
-            )
-        };
-        Some(match sub.cmd {
-            RDPM_CNCITEM => names(&m.cnc_items, m.cnc_items.len(), NAMES_MAX),
-            RDPM_MCNITEM => names(&m.machine_items, MCN_ITEMS, NAMES_MAX),
-            RDPM_ITEM => slots(a[0], a[1].min(i32::from(ITEMS_MAX)), ITEMS)
-                .map(|r| r.flat_map(|i| self.pm_item(i).to_wire()).collect()),
-            WRPM_MCNITEM => {
-                let p = &sub.payload;
-                if p.is_empty() || p.len() % NAME_LEN != 0 {
-                    return Some(Err(CncError::new(ew::EW_LENGTH)));
+        let n = p.len() / NAME_LEN;
+        match slots(s, n as i32, MCN_ITEMS) {
+            Ok(r) if r.len() == n => {
+                let list = &mut self.profile.maintenance.machine_items;
+                if list.len() < r.end {
+                    list.resize(r.end, String::new());
                 }
-                let n = p.len() / NAME_LEN;
-                match slots(a[0], n as i32, MCN_ITEMS) {
-                    Ok(r) if r.len() == n => {
-                        let list = &mut self.profile.maintenance.machine_items;
-                        if list.len() < r.end {
-                            list.resize(r.end, String::new());
-                        }
-                        for (slot, b) in r.zip(p.chunks_exact(NAME_LEN)) {
-                            list[slot] = name_text(b);
-                        }
-                        Ok(Vec::new())
-                    }
-                    Ok(_) => Err(CncError::NUMBER),
-                    Err(e) => Err(e),
+                for (slot, b) in r.zip(p.chunks_exact(NAME_LEN)) {
+                    list[slot] = name_text(b);
                 }
+                Ok(Vec::new())
             }
-            WRPM_ITEM => self
-                .pm_write_items(a[0], a[1], &sub.payload)
-                .map(|()| Vec::new()),
-            _ => return None,
-        })
+            Ok(_) => Err(CncError::NUMBER),
+            Err(e) => Err(e),
+        }
     }
 }

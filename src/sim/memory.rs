@@ -4,48 +4,52 @@
 //! EW_BUSY, EW_OVRFLOW) and change nothing.
 
 use super::Machine;
+use super::route::{Route, none};
 use super::service::Reply;
-use crate::proto::packet::{CLASS_CNC, ReqSub};
+use crate::proto::cmd::{
+    CONDENSE, COPYPROG, DELALL, DELETE, RDMDIPNTR, RENAMEPROG, SEARCH, WRMDIPNTR,
+};
+use crate::proto::packet::ReqSub;
 use crate::proto::program::{ProgInfo, RDMDIPROG, RDPROGINFO, WRMDIPROG};
 use crate::proto::wire::Wire;
 
-impl Machine {
-    /// The answer of a program function described as data (`None`: not one
-    /// of them): the reply's integers, as `CncService::described` gives them.
-    pub(crate) fn memory_answer(
-        &mut self,
-        name: &str,
-        path: u16,
-        a: &[i32],
-    ) -> Option<Reply<Vec<i64>>> {
-        let arg = |i: usize| a.get(i).copied().unwrap_or(0);
-        let today = self.today();
-        let s = &mut self.store;
-        let done = |r: Reply<()>| Some(r.map(|()| Vec::new()));
-        match name {
-            "cnc_search" => done(s.select(path, arg(0))),
-            "cnc_delete" => done(s.remove(path, arg(0)).map(drop)),
-            "cnc_delall" => done(s.remove_all(path).map(drop)),
-            "cnc_copyprog" => done(s.copy(path, arg(0), arg(1), today)),
-            "cnc_renameprog" => done(s.rename(path, arg(0), arg(1), today)),
-            "cnc_condense" => done(s.condense(path, arg(0), arg(1))),
-            "cnc_wrmdipntr" => done(s.path_mut(path).map(|p| p.mdi_pntr = arg(0))),
-            "cnc_rdmdipntr" => Some(s.path(path).map(|p| {
-                let n = i64::from(p.mdi_pntr);
-                vec![0, n, 0, n]
-            })),
-            _ => None,
-        }
-    }
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(RDMDIPROG, |m, q| m.memory_bytes(q)),
+    Route::cnc(WRMDIPROG, |m, q| m.memory_bytes(q)),
+    Route::cnc(RDPROGINFO, |m, q| m.memory_bytes(q)),
+    Route::table(SEARCH, |m, q| none(m.store.select(q.path, q.arg(0)))),
+    Route::table(DELETE, |m, q| {
+        none(m.store.remove(q.path, q.arg(0)).map(drop))
+    }),
+    Route::table(DELALL, |m, q| none(m.store.remove_all(q.path).map(drop))),
+    Route::table(COPYPROG, |m, q| {
+        let today = m.today();
+        none(m.store.copy(q.path, q.arg(0), q.arg(1), today))
+    }),
+    Route::table(RENAMEPROG, |m, q| {
+        let today = m.today();
+        none(m.store.rename(q.path, q.arg(0), q.arg(1), today))
+    }),
+    Route::table(CONDENSE, |m, q| {
+        none(m.store.condense(q.path, q.arg(0), q.arg(1)))
+    }),
+    Route::table(WRMDIPNTR, |m, q| {
+        none(m.store.path_mut(q.path).map(|p| p.mdi_pntr = q.arg(0)))
+    }),
+    Route::table(RDMDIPNTR, |m, q| {
+        m.store.path(q.path).map(|p| {
+            let n = i64::from(p.mdi_pntr);
+            vec![0, n, 0, n]
+        })
+    }),
+];
 
+impl Machine {
     /// The program commands answered as bytes: memory information
     /// (cnc_rdproginfo), the MDI program's text (cnc_rdmdiprog), a new one
     /// (cnc_wrmdiprog, in any mode: the MDI program is not in the store).
-    pub(crate) fn memory_raw(&mut self, sub: &ReqSub) -> Option<Reply<Vec<u8>>> {
-        if sub.class != CLASS_CNC || ![RDMDIPROG, WRMDIPROG, RDPROGINFO].contains(&sub.cmd) {
-            return None;
-        }
-        Some(self.store.path_mut(sub.path).map(|s| {
+    fn memory_bytes(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        self.store.path_mut(sub.path).map(|s| {
             let (n, used) = (s.count(), s.used());
             let left = |max: usize, used: usize| max.saturating_sub(used) as i32;
             match sub.cmd {
@@ -62,6 +66,6 @@ impl Machine {
                     Vec::new()
                 }
             }
-        }))
+        })
     }
 }

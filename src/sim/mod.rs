@@ -4,13 +4,19 @@
 //!
 //! Layers, each using only those before it (tests/artifacts/layers.rs checks it):
 //! service (the CncService trait, errors) and pmc → profile (pure data,
-//! with its sections in profile/) → store (program memory) → run (the [`Machine`] and its live
-//! state) → the areas adding methods to it (param, macros, offset,
-//! program, memory, folder, position, history) → machine (the CncService impl); faults
-//! (the `[[fault]]`s at an instant) and trace (frames as text) → shared
-//! ([`Shared`]: what a machine's connections share) → session (one
-//! connection) → server (listeners) → fleet (many machines on one runtime).
+//! with its sections in profile/) → store (program memory) → run (the live
+//! state of the paths) → machine (the [`Machine`]) → route (a dispatch
+//! row) → the areas answering its requests, each declaring its `ROUTES`
+//! (status, position, program, operate, param, macros, pmc_answers,
+//! offset, tool, history, memory, folder, maintenance), the clock and the
+//! transfers (upload, download) → dispatch (the one lookup over all rows,
+//! and the CncService impl); faults (the `[[fault]]`s at an instant) and
+//! trace (frames as text) → shared ([`Shared`]: what a machine's
+//! connections share) → session (one connection) → server (listeners) →
+//! fleet (many machines on one runtime).
 
+pub mod clock;
+pub mod dispatch;
 pub mod download;
 pub mod faults;
 pub mod fleet;
@@ -26,16 +32,21 @@ pub mod operate;
 pub mod param;
 pub mod plan;
 pub mod pmc;
+pub mod pmc_answers;
 pub mod position;
 pub mod profile;
 pub mod program;
+pub mod route;
 pub mod run;
 pub mod server;
 pub mod service;
 pub mod session;
 pub mod shared;
+pub mod status;
 pub mod store;
+pub mod tool;
 pub mod trace;
+pub mod upload;
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -70,6 +81,8 @@ impl Simulator {
             .filter(|f| f.concerns(1))
             .cloned()
             .collect();
+        // The dispatch table, checked before serving (src/sim/dispatch.rs).
+        dispatch::rows();
         let machine = Machine::new(profile);
         let started = machine.started;
         let net = server::Net {

@@ -1,15 +1,28 @@
 //! Operating the simulated machine through FOCAS: cycle start runs the
 //! selected main program from that moment, reset stops it and clears the
 //! reset-clearable alarms, cnc_clralm clears alarms of one type. The
-//! running machine (src/sim/run.rs) then moves the axes, the spindle and
+//! running machine (src/sim/clock.rs) then moves the axes, the spindle and
 //! the counters from the program, as for the profile's own cycle.
 
+use super::Machine;
 use super::plan::Plan;
 use super::profile::cycle::Cycle;
-use super::run::{Machine, covered, event_path, occurrence};
+use super::route::{Route, none};
+use super::run::{covered, event_path, occurrence};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_REJECT};
+use crate::proto::cmd::{CLRALM, RESET, RESET2, START};
+use crate::proto::machine::RDPRSTR;
 use std::sync::Arc;
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::table(START, |m, q| none(m.cycle_start(q.path))),
+    Route::table(RESET, |m, q| none(m.reset(q.path))),
+    Route::table(RESET2, |m, q| none(m.reset(q.path))),
+    Route::table(CLRALM, |m, q| none(m.clear_alarms(q.path, q.arg(0) as i16))),
+    // [k]: the program restart data a reset or cycle start recorded.
+    Route::cnc(RDPRSTR, |m, q| m.restart_info(q.path, q.args[0])),
+];
 
 /// Alarm types a reset clears (IO, PS, macro); the others need the cause
 /// removed (overtravel, servo, overheat ...) or the power cycled.
@@ -231,5 +244,32 @@ impl Machine {
             .filter(|e| e.action == "feed_hold" || e.action == "emergency")
             .collect();
         covered(&stops, 0.0, t)
+    }
+}
+
+impl Machine {
+    /// 0x0043 [k] (cnc_rdprstrinfo): the program restart data of the last
+    /// interruption, k 0 the block counter, 1 the M code, 2 the T code, 3
+    /// the S code, 4 the B code, each a big-endian i32 when there is one;
+    /// before any interruption, nothing.
+    pub(crate) fn restart_info(&mut self, path: u16, k: i32) -> Reply<Vec<u8>> {
+        let run = self.live(path)?;
+        let Some(r) = &run.restart else {
+            return if (0..=4).contains(&k) {
+                Ok(Vec::new())
+            } else {
+                Err(CncError::NUMBER)
+            };
+        };
+        // cnc_modal's types 100 + k: 0 B, 6 M, 7 S, 8 T.
+        let v = match k {
+            0 => Some(r.block),
+            1 => r.modal.aux_value(6),
+            2 => r.modal.aux_value(8),
+            3 => r.modal.aux_value(7),
+            4 => r.modal.aux_value(0),
+            _ => return Err(CncError::NUMBER),
+        };
+        Ok(v.map(|v| v.to_be_bytes().to_vec()).unwrap_or_default())
     }
 }

@@ -7,14 +7,19 @@
 //! write changes nothing.
 
 use super::machine::Machine;
+use super::profile::Class;
 pub use super::profile::param::{Entry, Kind, Params};
+use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::param::{
-    InfoEntry, InfoList, NumRange, Param16, Param30, ParamType30, Table, WRITE_RECORDS_30,
+    DIAGNOSS, DIAGNOSS16, DIAGTYPE, INFO3_FLAG, InfoEntry, InfoList, NumRange, PARAMTYPE, Param16,
+    Param30, ParamType30, RDDIAGINFO, RDDIAGNUM, RDPARAINFO, RDPARAM, RDPARAM16, RDPARANUM, Table,
+    WRITE_RECORDS_30, WRPARAM, WRPARAM16,
 };
 use crate::proto::value::{BASE_10, Value};
 use crate::proto::wire::Wire;
+use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16};
 
 /// Items per answer of a 30i range read (cnc_rdparar); our choice, the
 /// limit of a real CNC is not known.
@@ -22,6 +27,123 @@ pub const RANGE_PER_ANSWER: usize = 5;
 
 const fn err(code: i16) -> CncError {
     CncError::new(code)
+}
+
+pub(super) const ROUTES: &[Route] = &[
+    // [s, e, axis]: the 16i-class reads, one item (s == e) or a range.
+    Route::cnc(RDPARAM16, |m, q| {
+        m.param16(q.path, q.args[0], q.args[1], q.args[2] as i16)
+    }),
+    Route::cnc(DIAGNOSS16, |m, q| {
+        m.class16()?;
+        m.table_read16_range(q.path, Table::Diag, q.args[0], q.args[1], q.args[2] as i16)
+    }),
+    // [s, e, axis]: the 30i-class reads (a Series 15's too).
+    Route::cnc(RDPARAM, |m, q| {
+        let a = q.args;
+        m.param_read30(q.path, Table::Param, a[0], a[1], a[2] as i16)
+    }),
+    Route::cnc(DIAGNOSS, |m, q| {
+        let a = q.args;
+        m.param_read30(q.path, Table::Diag, a[0], a[1], a[2] as i16)
+    }),
+    // With the list flag (args[4]): cnc_rdparainfo3, parameters from s on;
+    // else the attribute record of one parameter.
+    Route::cnc(PARAMTYPE, |m, q| match q.args[4] {
+        INFO3_FLAG => m.table_info3(q.args[0], q.args[1]),
+        _ => {
+            m.class30()?;
+            enc(m.table_type30(Table::Param, q.args[0]))
+        }
+    }),
+    Route::cnc(DIAGTYPE, |m, q| {
+        m.class30()?;
+        enc(m.table_type30(Table::Diag, q.args[0]))
+    }),
+    Route::cnc(RDPARANUM, |m, _| enc(Ok(m.table_num(Table::Param)))),
+    Route::cnc(RDDIAGNUM, |m, _| enc(Ok(m.table_num(Table::Diag)))),
+    Route::cnc(RDPARAINFO, |m, q| {
+        enc(m.table_info(Table::Param, q.args[0], q.args[1]))
+    }),
+    Route::cnc(RDDIAGINFO, |m, q| {
+        enc(m.table_info(Table::Diag, q.args[0], q.args[1]))
+    }),
+    Route::cnc(WRPARAM, |m, q| {
+        m.class30()?;
+        m.table_write(q.path, false, &q.payload)
+    }),
+    Route::cnc(WRPARAM16, |m, q| {
+        m.class16()?;
+        m.table_write(q.path, true, &q.payload)
+    }),
+];
+
+impl Machine {
+    /// EW_FUNC unless the CNC is of the 16i class.
+    fn class16(&self) -> Reply<()> {
+        match self.profile.cnc.class {
+            Class::Series16 => Ok(()),
+            Class::Series30 => Err(CncError::FUNC),
+        }
+    }
+
+    /// EW_FUNC unless the CNC is of the 30i class.
+    fn class30(&self) -> Reply<()> {
+        match self.profile.cnc.class {
+            Class::Series30 => Ok(()),
+            Class::Series16 => Err(CncError::FUNC),
+        }
+    }
+
+    /// The FOCAS option probe's answer, in the 16i value form (SPEC.md §3.4).
+    fn option_probe(&self, number: i32, axis: i16) -> Vec<u8> {
+        Param16 {
+            number,
+            axis,
+            ptype: 0,
+            values: vec![i32::from(self.profile.cnc.option), 0, 0, 0, 0, 0, 0, 0],
+        }
+        .to_bytes()
+    }
+
+    /// 16i read of parameters (0x000e) [s, e, axis]: one item (`s == e`)
+    /// or a range (cnc_rdparar), as answer blocks.
+    fn param16(&mut self, path: u16, number: i32, e: i32, axis: i16) -> Reply<Vec<u8>> {
+        self.class16()?;
+        // The 16i-class FOCAS option probe (SPEC.md §3.4).
+        if number == OPTION_PARAM_16 && e == number {
+            return Ok(self.option_probe(number, axis));
+        }
+        self.table_read16_range(path, Table::Param, number, e, axis)
+    }
+
+    /// 30i read of parameters (0x008d) or diagnosis data (0x0093) [s, e, axis].
+    fn param_read30(
+        &mut self,
+        path: u16,
+        table: Table,
+        s: i32,
+        e: i32,
+        axis: i16,
+    ) -> Reply<Vec<u8>> {
+        let c = &self.profile.cnc;
+        let series15 = c.class == Class::Series16 && c.kind == 2;
+        if series15 && table == Table::Param && s == OPTION_PARAM_15 {
+            // The Series-15 FOCAS option probe (SPEC.md §3.4), in the 16i
+            // value form the library reads it in.
+            return Ok(self.option_probe(s, axis));
+        }
+        if series15 && s == e {
+            // A Series 15 reads parameters and diagnosis data with the 30i
+            // commands, answered in the 16i value form (as FANUC's library
+            // reads them).
+            return self
+                .table_read16(path, table, s, axis)
+                .map(|p| p.to_bytes());
+        }
+        self.class30()?;
+        self.table_read30(path, table, s, e, axis)
+    }
 }
 
 impl Machine {

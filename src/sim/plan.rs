@@ -1,6 +1,6 @@
 //! A program parsed for one path's axes (`Plan`): its blocks with the
 //! axis end points and the modal state after each, what the running
-//! machine (src/sim/run.rs) steps through on the simulator's clock.
+//! machine (src/sim/clock.rs) steps through on the simulator's clock.
 
 use super::modal::ProgramModal;
 use super::profile::cycle::Cycle;

@@ -2,20 +2,78 @@
 //! feed, speeds, loads, figures, and the alarm / program / sequence words of
 //! the dynamic frame. Everything is read from the profile and the live
 //! state at request time, so motion written there by the running program
-//! (src/sim/run.rs) shows up at once.
+//! (src/sim/clock.rs) shows up at once.
 //!
 //! Wire forms are those FANUC's library reads (SPEC.md §5.3). Where the
 //! meaning of a word is not known, the answer is a plausible constant
 //! (marked below).
 
 use super::Machine;
-use super::profile::{Axis, Path, Spindle};
+use super::profile::{Axis, Spindle};
+use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
+use crate::proto::cmd::RDSPDLALM;
+use crate::proto::machine::RDCTRLSIG;
 use crate::proto::position::{
-    AlarmBits, AxisNames, Count, Figure, Figures, Name, PosNames, ProgNums, SeqNum, pos, spdl,
+    ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
+    Name, POSITION, PRGNUM, PosNames, ProgNums, RDAXISNAME, RDSPDLNAME, SEQNUM, SERVO_LOAD,
+    SPEED_A5, SPINDLE, SeqNum, UNITS, pos, spdl,
 };
 use crate::proto::value::{BASE_10, Value};
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(ALARM, |m, q| enc(m.alarm_bits(q.path))),
+    // cnc_rdprgnum's and cnc_rdseqnum's layouts (cnc_rddynamic reads the
+    // same words).
+    Route::table(PRGNUM, |m, q| {
+        m.prog_nums(q.path)
+            .map(|n| vec![i64::from(n.data), i64::from(n.mdata)])
+    }),
+    Route::table(SEQNUM, |m, q| {
+        m.seq_num(q.path).map(|n| vec![i64::from(n.data)])
+    }),
+    Route::cnc(ACTF, |m, q| enc(m.actual(q.path, false))),
+    Route::cnc(ACTS, |m, q| enc(m.actual(q.path, true))),
+    Route::cnc(SPEED_A5, |m, q| enc(m.speed_a5(q.path))),
+    Route::cnc(POSITION, |m, q| {
+        enc(m.positions(q.path, q.args[0], q.args[1]))
+    }),
+    Route::cnc(GETFIGURE, |m, q| enc(m.figures(q.path, q.args[0]))),
+    // [-1]: the names per position kind; else the 4-byte axis names.
+    Route::cnc(RDAXISNAME, |m, q| match q.args[0] {
+        -1 => enc(m.axis_pos_names(q.path)),
+        _ => enc(m.axis_names(q.path)),
+    }),
+    // cnc_rdspdlname's layout: 4 name bytes per spindle.
+    Route::table(RDSPDLNAME, |m, q| {
+        m.spindle_names(q.path)
+            .map(|v| v.iter().flat_map(|n| n.bytes.map(i64::from)).collect())
+    }),
+    Route::cnc(SPINDLE, |m, q| {
+        enc(m.spindle_data(q.path, q.args[0], q.args[1]))
+    }),
+    Route::cnc(SERVO_LOAD, |m, q| enc(m.servo_load(q.path, q.args[0]))),
+    Route::cnc(UNITS, |m, q| enc(m.units(q.path, q.args[0]))),
+    Route::cnc(AXIS_FLAGS, |m, q| enc(m.axis_flags(q.path))),
+    Route::cnc(COUNT, |m, q| enc(m.counts(q.path, q.args[0]))),
+    // [0 | 1]: the spindle control input / output signals.
+    Route::cnc(RDCTRLSIG, |m, q| match q.args[0] {
+        0 | 1 => m.spindle_signals(q.path, q.args[0] == 1),
+        _ => Err(ATTRIB),
+    }),
+    Route::table(RDSPDLALM, spindle_alarms),
+];
+
+/// cnc_rdspdlalm: the alarm word of each spindle (at most 8).
+fn spindle_alarms(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    Ok(m.path(q.path)?
+        .spindles
+        .iter()
+        .take(8)
+        .map(|s| i64::from(s.alarm))
+        .collect())
+}
 
 const ATTRIB: CncError = CncError::new(EW_ATTRIB);
 const NUMBER: CncError = CncError::new(EW_NUMBER);
@@ -50,22 +108,9 @@ const UNUSED: Value = Value {
 };
 
 impl Machine {
-    fn pos_path(&self, path: u16) -> Reply<&Path> {
-        self.profile
-            .paths
-            .get(usize::from(path).wrapping_sub(1))
-            .ok_or(CncError::PATH)
-    }
-
-    fn pos_run(&self, path: u16) -> Reply<&super::run::PathRun> {
-        self.run
-            .get(usize::from(path).wrapping_sub(1))
-            .ok_or(CncError::PATH)
-    }
-
-    pub(crate) fn pos_alarm_bits(&self, path: u16) -> Reply<AlarmBits> {
+    pub(crate) fn alarm_bits(&self, path: u16) -> Reply<AlarmBits> {
         let bits = self
-            .pos_run(path)?
+            .live(path)?
             .alarms
             .iter()
             .filter(|a| (0..32).contains(&a.kind))
@@ -73,29 +118,29 @@ impl Machine {
         Ok(AlarmBits { bits })
     }
 
-    pub(crate) fn pos_prog_nums(&self, path: u16) -> Reply<ProgNums> {
+    pub(crate) fn prog_nums(&self, path: u16) -> Reply<ProgNums> {
         Ok(ProgNums {
             data: self.shown_program(path)?.0,
             mdata: self.store.path(path)?.main,
         })
     }
 
-    pub(crate) fn pos_seq_num(&self, path: u16) -> Reply<SeqNum> {
+    pub(crate) fn seq_num(&self, path: u16) -> Reply<SeqNum> {
         Ok(SeqNum {
-            data: self.pos_run(path)?.seq,
+            data: self.live(path)?.seq,
         })
     }
 
     /// 0xa5 (rdaxisdata class 5 type 2): its meaning is not known; the
     /// simulator answers 0 with 0 decimals.
-    pub(crate) fn pos_speed_a5(&self, path: u16) -> Reply<Value> {
-        self.pos_path(path)?;
+    pub(crate) fn speed_a5(&self, path: u16) -> Reply<Value> {
+        self.path(path)?;
         Ok(Value::decimal(0, 0))
     }
 
     /// Feed rate of the path, or the speed of its first spindle.
-    pub(crate) fn pos_actual(&self, path: u16, spindle: bool) -> Reply<Value> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn actual(&self, path: u16, spindle: bool) -> Reply<Value> {
+        let p = self.path(path)?;
         let v = if spindle {
             p.spindles.first().map_or(0, |s| s.speed)
         } else {
@@ -106,8 +151,8 @@ impl Machine {
 
     /// 0x26: one record for axis 1..=axes, `max_axes` records for -1 (the
     /// path's axes, then zero records), as a real CNC answers.
-    pub(crate) fn pos_positions(&self, path: u16, code: i32, axis: i32) -> Reply<Vec<Value>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn positions(&self, path: u16, code: i32, axis: i32) -> Reply<Vec<Value>> {
+        let p = self.path(path)?;
         // Codes 13 and 14: the program restart position and the distance
         // from here to it, after a reset interrupted a program (else 0).
         let restart = self
@@ -172,11 +217,11 @@ impl Machine {
 
     /// 0x1b: input/output figures of the path's axes (types 0 and 1 are
     /// answered alike; what distinguishes them is not known).
-    pub(crate) fn pos_figures(&self, path: u16, data_type: i32) -> Reply<Figures> {
+    pub(crate) fn figures(&self, path: u16, data_type: i32) -> Reply<Figures> {
         if !(0..=1).contains(&data_type) {
             return Err(ATTRIB);
         }
-        let p = self.pos_path(path)?;
+        let p = self.path(path)?;
         Ok(Figures {
             count: p.axes.len() as i32,
             axes: p
@@ -190,8 +235,8 @@ impl Machine {
         })
     }
 
-    pub(crate) fn pos_axis_names(&self, path: u16) -> Reply<Vec<Name>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn axis_names(&self, path: u16) -> Reply<Vec<Name>> {
+        let p = self.path(path)?;
         Ok(p.axes
             .iter()
             .map(|a| Name {
@@ -204,8 +249,8 @@ impl Machine {
     /// displays (the fourth entry is unused). A 16i-class CNC (not the
     /// Series 15) adds empty entries up to its maximum axes: FANUC's
     /// library reads that many (cnc_rdposition).
-    pub(crate) fn pos_axis_pos_names(&self, path: u16) -> Reply<AxisNames> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn axis_pos_names(&self, path: u16) -> Reply<AxisNames> {
+        let p = self.path(path)?;
         let mut axes: Vec<PosNames> = p
             .axes
             .iter()
@@ -231,8 +276,8 @@ impl Machine {
         })
     }
 
-    pub(crate) fn pos_spindle_names(&self, path: u16) -> Reply<Vec<Name>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn spindle_names(&self, path: u16) -> Reply<Vec<Name>> {
+        let p = self.path(path)?;
         Ok(p.spindles
             .iter()
             .map(|s| Name {
@@ -243,8 +288,8 @@ impl Machine {
 
     /// 0x40: code 0 (serial spindle load) and 4 (load meter) answer the
     /// load in %, 3 (actual speed) and 5 (motor speed) the speed.
-    pub(crate) fn pos_spindle_data(&self, path: u16, code: i32, sp_no: i32) -> Reply<Vec<Value>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn spindle_data(&self, path: u16, code: i32, sp_no: i32) -> Reply<Vec<Value>> {
+        let p = self.path(path)?;
         let pick: fn(&Spindle) -> i32 = match code {
             spdl::LOAD_SERIAL | spdl::LOAD_METER => |s| s.load,
             spdl::MAX_RPM_RATIO => |s| s.max_rpm_ratio,
@@ -272,8 +317,8 @@ impl Machine {
     /// meter (%), [2] motor speed (rpm), [3] servo current in amperes (one
     /// decimal), the load's share of the axis's rated current, so it follows
     /// the motion as the load does.
-    pub(crate) fn pos_servo_load(&self, path: u16, code: i32) -> Reply<Vec<Value>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn servo_load(&self, path: u16, code: i32) -> Reply<Vec<Value>> {
+        let p = self.path(path)?;
         let rec = |a: &Axis| match code {
             0 => Value::decimal(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN), 0),
             1 => Value::decimal(a.servo_load, 0),
@@ -318,8 +363,8 @@ impl Machine {
     /// (FANUC's library shows the feed in inches when word 0 is not 0). A
     /// 16i-class CNC (not the Series 15) answers [0], [1], [2] for its
     /// maximum axes, the unused ones zero (cnc_rdposition reads that many).
-    pub(crate) fn pos_units(&self, path: u16, kind: i32) -> Reply<Vec<u16>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn units(&self, path: u16, kind: i32) -> Reply<Vec<u16>> {
+        let p = self.path(path)?;
         let per_axis = |f: fn(&Axis) -> u16| {
             let mut v: Vec<u16> = p.axes.iter().flat_map(|a| [f(a), f(a)]).collect();
             if self.is_16i_proper() {
@@ -344,8 +389,8 @@ impl Machine {
     /// known (0), then one display word per axis, which cnc_rdposition
     /// copies as `disp`: 1, or 0 for an axis whose position parameter 3115
     /// hides (bit 0, as on the 16i class).
-    pub(crate) fn pos_sysinfo15(&self, path: u16) -> Reply<Vec<u16>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn sysinfo15(&self, path: u16) -> Reply<Vec<u16>> {
+        let p = self.path(path)?;
         let mut v = vec![p.axes.len() as u16, 0];
         v.extend((1..=p.axes.len()).map(|i| {
             let hidden = self
@@ -358,8 +403,8 @@ impl Machine {
 
     /// 0x95 (Series 15): the spindle (1-based) whose name is shown with the
     /// actual speed: the first, or 0 for a path without spindles.
-    pub(crate) fn pos_spindle_shown15(&self, path: u16) -> Reply<Vec<u16>> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn spindle_shown15(&self, path: u16) -> Reply<Vec<u16>> {
+        let p = self.path(path)?;
         Ok(vec![u16::from(!p.spindles.is_empty())])
     }
 
@@ -373,13 +418,13 @@ impl Machine {
     /// 0xa3: per axis, bits 0 and 1 set (FANUC's library derives the
     /// machine and absolute display flags from them; the other bits'
     /// meaning is not known).
-    pub(crate) fn pos_axis_flags(&self, path: u16) -> Reply<Vec<u32>> {
-        Ok(vec![0b11; self.pos_path(path)?.axes.len()])
+    pub(crate) fn axis_flags(&self, path: u16) -> Reply<Vec<u32>> {
+        Ok(vec![0b11; self.path(path)?.axes.len()])
     }
 
     /// 0xa4: [0] and [2] the path's axes, [1] and [3] its spindles.
-    pub(crate) fn pos_counts(&self, path: u16, kind: i32) -> Reply<Count> {
-        let p = self.pos_path(path)?;
+    pub(crate) fn counts(&self, path: u16, kind: i32) -> Reply<Count> {
+        let p = self.path(path)?;
         let n = match kind {
             0 | 2 => p.axes.len(),
             1 | 3 => p.spindles.len(),
@@ -397,4 +442,44 @@ const DEFAULT_ACCDEC_MS: f64 = 32.0;
 fn delay(a: &Axis, seconds: f64) -> i32 {
     let mm_per_s = f64::from(a.servo_speed) * a.lead.unwrap_or(super::run::DEFAULT_LEAD) / 60.0;
     (mm_per_s * seconds * 10f64.powi(i32::from(a.decimals))).round() as i32
+}
+
+impl Machine {
+    /// 0x005b (cnc_rdctrldi / cnc_rdctrldo): four signal bytes per spindle
+    /// of the path, from PMC unit 1: the input signals G070..G073 (spindle
+    /// k: G070 + 4k ...), the output signals F045..F048, of which the
+    /// running machine sets F045's ALMA (bit 0, the spindle's alarm), SSTA
+    /// (bit 1, speed zero) and SARA (bit 3, turning at speed). Each
+    /// spindle's four bytes go as one big-endian word, the first signal
+    /// byte lowest (what FANUC's library writes as sgnl1..sgnl4).
+    pub(crate) fn spindle_signals(&mut self, path: u16, output: bool) -> Reply<Vec<u8>> {
+        use crate::proto::pmc::PmcRange;
+        let spindles: Vec<(i32, i16)> = self
+            .path(path)?
+            .spindles
+            .iter()
+            .map(|s| (s.speed, s.alarm))
+            .collect();
+        let mut out = Vec::new();
+        for (k, (speed, alarm)) in spindles.into_iter().enumerate() {
+            let (adr_type, first) = if output { (1, 45) } else { (0, 70) };
+            let s = first + 4 * k as u16;
+            let range = PmcRange {
+                adr_type,
+                data_type: 0,
+                s,
+                e: s + 3,
+            };
+            let mut b = self.profile.pmc.read(1, &range).unwrap_or(vec![0; 4]);
+            if output {
+                b[0] = (b[0] & !0x0b)
+                    | u8::from(alarm != 0)
+                    | u8::from(speed == 0) << 1
+                    | u8::from(speed != 0 && alarm == 0) << 3;
+            }
+            b.reverse();
+            out.extend(b);
+        }
+        Ok(out)
+    }
 }

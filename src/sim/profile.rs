@@ -25,10 +25,10 @@ pub struct Profile {
     pub cnc: Cnc,
     #[serde(default, rename = "path")]
     pub paths: Vec<Path>,
-    /// Programs stored in memory (src/sim/run.rs).
+    /// Programs stored in memory (src/sim/store.rs).
     #[serde(default, rename = "program")]
     pub programs: Vec<cycle::StoredProgram>,
-    /// Scheduled events (src/sim/run.rs).
+    /// Scheduled events (src/sim/clock.rs).
     #[serde(default, rename = "event")]
     pub events: Vec<cycle::Event>,
     /// Scheduled network faults (src/sim/faults.rs).
@@ -162,7 +162,7 @@ pub struct Path {
     pub axes: Vec<Axis>,
     #[serde(rename = "spindle")]
     pub spindles: Vec<Spindle>,
-    /// The program this path runs (src/sim/run.rs).
+    /// The program this path runs (src/sim/clock.rs).
     pub cycle: cycle::Cycle,
     /// Its program memory (src/sim/store.rs).
     pub memory: cycle::Memory,
@@ -172,7 +172,7 @@ pub struct Path {
     // --- position ---
     /// Actual feed rate (cnc_actf, rddynamic2 actf, rdspeed), mm/min, or
     /// inch/min when the first axis is an inch axis (`unit = 1`: cnc_rdspeed
-    /// and rdaxisdata report that unit); the program cycle (src/sim/run.rs)
+    /// and rdaxisdata report that unit); the program cycle (src/sim/clock.rs)
     /// may change it while running.
     pub feed: i32,
     // --- program ---

@@ -1,17 +1,67 @@
-//! The simulator's program, timer, tool-life and alarm answers (areas
-//! `program` and `alarm`): profile sections and the `impl Machine` helpers
-//! the `CncService` methods call. Live values (program, block, alarms) come
-//! from [`super::run::PathRun`] at request time.
+//! The simulator's program, timer and alarm answers (areas `program` and
+//! `alarm`). Live values (program, block, alarms) come from
+//! [`super::run::PathRun`] at request time.
 
 use super::Machine;
 pub use super::profile::program::{Modal, OperatorMessage, Timers};
+use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::alarm::OpMsg;
+use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
+use crate::proto::cmd::RDPROCTIME;
+use crate::proto::cmd::{RDACTPT, RDBLKCOUNT};
 use crate::proto::program::{
-    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, ExePrgName, ExecProg, GCode, GModal,
-    OpMode, PathName, ProgDir, Timer,
+    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
+    ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
+    RDOPMODE, RDPROGDIR, RDTIMER, SETTIMER, Timer,
 };
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::cnc(EXEPRGNAME, |m, q| enc(m.exe_prgname(q.path))),
+    Route::cnc(EXEPRGNAME2, |m, q| enc(m.exe_prgname2(q.path))),
+    Route::cnc(RDEXECPROG, |m, q| enc(m.exec_prog(q.path, q.args[0]))),
+    Route::cnc(MODAL_G, |m, q| enc(m.g_modal(q.path, q.args[0]))),
+    Route::cnc(MODAL_AUX, |m, q| enc(m.aux_modal(q.path, q.args[0]))),
+    // cnc_rdtimer's layout.
+    Route::table(RDTIMER, |m, q| {
+        m.timer(q.arg(0))
+            .map(|t| vec![i64::from(t.minute), i64::from(t.msec)])
+    }),
+    Route::cnc(GETTIMER, |m, q| enc(m.clock(q.args[0]))),
+    Route::cnc(SETTIMER, |m, q| {
+        m.set_clock(q.args[0], &q.payload).map(|()| Vec::new())
+    }),
+    Route::cnc(RDOPMODE, |m, q| enc(m.opmode(q.path))),
+    Route::cnc(RDPROGDIR, |m, q| {
+        enc(m.prog_dir(q.path, q.args[0], q.args[1], q.args[2]))
+    }),
+    // [type, num, _, text_len]
+    Route::cnc(RDALMMSG, |m, q| {
+        m.alarm_messages(q.path, q.args[0], q.args[1], q.args[3])
+    }),
+    Route::cnc(RDOPMSG, |m, q| enc(m.opmsg(q.path, q.args[0]))),
+    Route::cnc(RDOPMSG3, |m, q| {
+        m.opmsg3(q.path, q.args[0], q.args[1], q.args[2])
+    }),
+    Route::table(RDBLKCOUNT, |m, q| {
+        Ok(vec![i64::from(m.block_count(q.path)?)])
+    }),
+    Route::table(RDACTPT, |m, q| {
+        m.actpt(q.path)
+            .map(|a| vec![i64::from(a.prog_no), i64::from(a.blk_no)])
+    }),
+    Route::table(RDPROCTIME, processing_times),
+];
+
+/// cnc_rdproctime: as many runs as the layout's records hold.
+fn processing_times(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let max = q.f.records.map_or(0, |r| usize::from(r.max));
+    let runs = m.proc_times(q.path, max)?;
+    Ok(runs
+        .iter()
+        .flat_map(|r| [r[0], r[1], r[2], r[3], 0])
+        .collect())
+}
 use crate::proto::wire::{Reader, Wire, Writer};
 
 /// G-code groups answered for type −1 (g_rdata[35]).
@@ -26,13 +76,9 @@ fn err(code: i16) -> CncError {
 }
 
 impl Machine {
-    fn live(&self, path: u16) -> Reply<&super::run::PathRun> {
-        self.run.get(path as usize - 1).ok_or(CncError::PATH)
-    }
-
     /// cnc_rdproctime: the runs of the program completed, newest first (at
     /// most `max`): program number and its time as hours, minutes, seconds.
-    pub(crate) fn sim_proc_times(&self, path: u16, max: usize) -> Reply<Vec<[i64; 4]>> {
+    pub(crate) fn proc_times(&self, path: u16, max: usize) -> Reply<Vec<[i64; 4]>> {
         let r = self.live(path)?;
         let secs = r.run_seconds.round() as i64;
         let n = (r.runs_done as usize).min(max);
@@ -44,11 +90,11 @@ impl Machine {
             .collect())
     }
 
-    pub(crate) fn sim_block_count(&self, path: u16) -> Reply<i32> {
+    pub(crate) fn block_count(&self, path: u16) -> Reply<i32> {
         Ok(self.live(path)?.block_count)
     }
 
-    pub(crate) fn sim_actpt(&self, path: u16) -> Reply<ActPt> {
+    pub(crate) fn actpt(&self, path: u16) -> Reply<ActPt> {
         let r = self.live(path)?;
         Ok(ActPt {
             prog_no: r.program,
@@ -79,7 +125,7 @@ impl Machine {
         Ok((s.main, p.unwrap_or_default()))
     }
 
-    pub(crate) fn sim_exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
+    pub(crate) fn exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
         let full = self.full_name(path)?;
         let short = full.rsplit('/').next().unwrap_or("");
         let mut name = [0u8; 36];
@@ -91,7 +137,7 @@ impl Machine {
         })
     }
 
-    pub(crate) fn sim_exe_prgname2(&self, path: u16) -> Reply<PathName> {
+    pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<PathName> {
         let mut b = self.full_name(path)?.into_bytes();
         b.truncate(255);
         b.push(0);
@@ -102,7 +148,7 @@ impl Machine {
     /// show answers its block number and no text (an idle path: four zero
     /// bytes), as a CNC does; FANUC's library reads past its buffer on an
     /// empty payload, so the simulator never sends one.
-    pub(crate) fn sim_exec_prog(&self, path: u16, length: i32) -> Reply<ExecProg> {
+    pub(crate) fn exec_prog(&self, path: u16, length: i32) -> Reply<ExecProg> {
         let r = self.live(path)?;
         if r.program == 0 || r.exec_text.is_empty() {
             return Ok(ExecProg {
@@ -120,8 +166,8 @@ impl Machine {
 
     /// cnc_modal's G groups: what the running program set (src/sim/modal.rs),
     /// else the profile's table.
-    pub(crate) fn sim_modal_g(&self, path: u16, code: i32) -> Reply<GModal> {
-        self.path_profile(path)?;
+    pub(crate) fn g_modal(&self, path: u16, code: i32) -> Reply<GModal> {
+        self.path(path)?;
         let at = |i: usize| GCode {
             code: self.modal_g(path, i),
             flag: 0,
@@ -144,8 +190,8 @@ impl Machine {
 
     /// cnc_modal's other codes (F, S, M, T ...): what the running program
     /// set, else the profile's table.
-    pub(crate) fn sim_modal_aux(&self, path: u16, code: i32) -> Reply<AuxModal> {
-        let aux = &self.path_profile(path)?.modal.aux;
+    pub(crate) fn aux_modal(&self, path: u16, code: i32) -> Reply<AuxModal> {
+        let aux = &self.path(path)?.modal.aux;
         let set = &self.live(path)?.modal;
         let rec = |c: i32| {
             let value = AUX_ORDER
@@ -168,13 +214,6 @@ impl Machine {
         }))
     }
 
-    fn path_profile(&self, path: u16) -> Reply<&super::profile::Path> {
-        self.profile
-            .paths
-            .get(path as usize - 1)
-            .ok_or(CncError::PATH)
-    }
-
     /// Milliseconds from the simulator's start to the instant it was last
     /// advanced to (the frame being answered).
     fn elapsed_ms(&self) -> i64 {
@@ -185,7 +224,7 @@ impl Machine {
     /// on the simulator's clock: the profile's minutes plus the time since
     /// the start, path 1 running (STRT), path 1 moving at feed; the cycle
     /// time is path 1's current (or last) run. A hold stops them.
-    pub(crate) fn sim_timer(&self, kind: i32) -> Reply<Timer> {
+    pub(crate) fn timer(&self, kind: i32) -> Reply<Timer> {
         let t = &self.profile.timers;
         let r = self.live(1)?;
         let min = |m: i32| i64::from(m) * 60_000;
@@ -212,7 +251,7 @@ impl Machine {
     }
 
     /// cnc_gettimer: the system clock (local time) moved by cnc_settimer.
-    pub(crate) fn sim_clock(&self, kind: i32) -> Reply<Clock> {
+    pub(crate) fn clock(&self, kind: i32) -> Reply<Clock> {
         if kind != 0 && kind != 1 {
             return Err(CncError::NUMBER);
         }
@@ -229,7 +268,7 @@ impl Machine {
 
     /// cnc_settimer: type 0 sets the date, 1 the time of day (the payload's
     /// other half is ignored); invalid values are EW_DATA.
-    pub(crate) fn sim_set_clock(&mut self, kind: i32, payload: &[u8]) -> Reply<()> {
+    pub(crate) fn set_clock(&mut self, kind: i32, payload: &[u8]) -> Reply<()> {
         let c = Clock::decode(&mut Reader::new(payload)).map_err(|_| err(ew::EW_LENGTH))?;
         let now = self.clock_now();
         let cur = local(now);
@@ -272,15 +311,15 @@ impl Machine {
         Ok(())
     }
 
-    pub(crate) fn sim_opmode(&self, path: u16) -> Reply<OpMode> {
+    pub(crate) fn opmode(&self, path: u16) -> Reply<OpMode> {
         Ok(OpMode {
-            mode: self.path_profile(path)?.opmode,
+            mode: self.path(path)?.opmode,
         })
     }
 
     /// 0x0023 (cnc_rdalmmsg/2, cnc_rdalminfo): up to `num` active alarms of
     /// `kind` (−1 all) as 16-byte heads and `text_len`-byte messages.
-    pub(crate) fn sim_alarm_messages(
+    pub(crate) fn alarm_messages(
         &self,
         path: u16,
         kind: i32,
@@ -314,7 +353,7 @@ impl Machine {
     /// other types EW_ATTRIB. Unverified against a real CNC: FANUC's library
     /// gave EW_ATTRIB for type −1 in one oracle run (not analysed), and what
     /// a CNC answers with no message on display is not recorded.
-    pub(crate) fn sim_opmsg(&self, path: u16, kind: i32) -> Reply<OpMsg> {
+    pub(crate) fn opmsg(&self, path: u16, kind: i32) -> Reply<OpMsg> {
         if !(0..=4).contains(&kind) {
             return Err(err(ew::EW_ATTRIB));
         }
@@ -348,7 +387,7 @@ impl Machine {
     /// the macro message of the program running there (`#3006=n(TEXT)`,
     /// type 4).
     pub(crate) fn shown_messages(&self, path: u16) -> Reply<Vec<OperatorMessage>> {
-        let mut v = self.path_profile(path)?.opmsgs.clone();
+        let mut v = self.path(path)?.opmsgs.clone();
         if let Some((number, text)) = self
             .run
             .get(path as usize - 1)
@@ -367,7 +406,7 @@ impl Machine {
     /// `type` on display (-1: all; other types than 0..4 EW_ATTRIB) from
     /// index `start` on, at most `n`, as 268-byte records (i32 number,
     /// type, characters, 256 text bytes); none there: an empty answer.
-    pub(crate) fn sim_opmsg3(&self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
+    pub(crate) fn opmsg3(&self, path: u16, start: i32, kind: i32, n: i32) -> Reply<Vec<u8>> {
         if !(-1..=4).contains(&kind) {
             return Err(err(ew::EW_ATTRIB));
         }
@@ -400,13 +439,7 @@ impl Machine {
     /// to FANUC's library carries all fields for every type): size = the
     /// text's length in bytes, comment in parentheses (cut to 50
     /// characters), the profile's date. No program: an empty payload.
-    pub(crate) fn sim_prog_dir(
-        &self,
-        path: u16,
-        top: i32,
-        count: i32,
-        code: i32,
-    ) -> Reply<ProgDir> {
+    pub(crate) fn prog_dir(&self, path: u16, top: i32, count: i32, code: i32) -> Reply<ProgDir> {
         if !PROGDIR_CODES.contains(&code) {
             return Err(err(ew::EW_ATTRIB));
         }
@@ -469,7 +502,7 @@ mod tests {
     fn an_idle_path_answers_block_0_and_no_text() {
         // Four zero bytes, the form FANUC's library accepts (not an empty payload).
         let m = Machine::new(crate::sim::Profile::parse("[[path]]\n").expect("profile"));
-        let a = m.sim_exec_prog(1, 64).expect("an answer");
+        let a = m.exec_prog(1, 64).expect("an answer");
         assert_eq!(a.to_bytes(), [0, 0, 0, 0]);
     }
 }

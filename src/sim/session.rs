@@ -2,7 +2,7 @@
 //! [`CncService`], traced, and misbehaving as the machine's faults say.
 
 use super::faults::Cut;
-use super::service::{CncService, dispatch};
+use super::service::CncService;
 use super::shared::Shared;
 use super::trace::Namer;
 use crate::proto::download::Outgoing;
@@ -212,7 +212,7 @@ pub(crate) async fn connection(mut stream: TcpStream, shared: Arc<Shared>, id: u
                     subs.iter()
                         .map(|s| match faults.error_for(s.class, s.cmd, t) {
                             Some(code) => RespSub::err(s, code, 0, 0),
-                            None => dispatch(cnc.as_mut(), s),
+                            None => cnc.answer(s),
                         })
                         .collect()
                 };

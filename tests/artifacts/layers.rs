@@ -615,7 +615,7 @@ fn src_module_graph_has_no_cycle() {
         ("client::pair", "client::conn"),
         ("client::conn", "client::log"),
         ("sim", "sim::server"),
-        ("sim::param", "sim::run"),
+        ("sim::param", "sim::machine"),
         ("sim::session", "sim::service"),
         ("ffi::handle", "client::pair"),
     ] {

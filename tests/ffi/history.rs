@@ -11,11 +11,13 @@
 use crate::sim;
 
 use fwlib32::ew::*;
-use fwlib32::proto::alarm::{AlmHisRecord, AlmHistory};
+use fwlib32::proto::alarm::{AlmHisRecord, AlmHistory, RDALMHISNO, RDALMHISTRY};
+use fwlib32::proto::cmd::SYSINFO;
 use fwlib32::proto::offset::Count;
 use fwlib32::proto::open::OpenBody;
-use fwlib32::proto::status::SysInfo;
-use fwlib32::sim::service::{CncService, Reply};
+use fwlib32::proto::packet::{ReqSub, RespSub};
+use fwlib32::proto::wire::Wire;
+use fwlib32::sim::service::CncService;
 use fwlib32::sim::{Machine, Profile, Shared};
 use fwlib32::types::*;
 use fwlib32::*;
@@ -202,14 +204,14 @@ impl CncService for Fake {
     fn open_body(&self) -> OpenBody {
         self.m.open_body()
     }
-    fn sysinfo(&mut self, path: u16) -> Reply<SysInfo> {
-        self.m.sysinfo(path)
-    }
-    fn rdalmhistry(&mut self, _: i32, _: i32) -> Reply<AlmHistory> {
-        Ok(AlmHistory(self.records.clone()))
-    }
-    fn rdalmhisno(&mut self) -> Reply<Count> {
-        Ok(Count { value: self.count })
+    /// The machine's sysinfo, the hand-made history; nothing else.
+    fn answer(&mut self, sub: &ReqSub) -> RespSub {
+        match sub.cmd {
+            SYSINFO => self.m.answer(sub),
+            RDALMHISTRY => RespSub::ok(sub, AlmHistory(self.records.clone()).to_bytes()),
+            RDALMHISNO => RespSub::ok(sub, Count { value: self.count }.to_bytes()),
+            _ => RespSub::err(sub, EW_FUNC, 0, 0),
+        }
     }
 }
 

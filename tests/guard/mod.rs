@@ -179,7 +179,7 @@ fn serve_hostile(
 ) {
     use fwlib32::proto::frame::ftype;
     use fwlib32::proto::packet::{ReqSub, RespSub, decode_request, encode_response};
-    use fwlib32::sim::service::{CncService, dispatch};
+    use fwlib32::sim::service::CncService;
     use std::io::Write;
     let _ = s.set_nodelay(true);
     let lock = || machine.lock().unwrap_or_else(|e| e.into_inner());
@@ -206,7 +206,7 @@ fn serve_hostile(
                     data.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
                 }
                 let mut m = lock();
-                let answer = |q: &ReqSub| dispatch(&mut *m as &mut dyn CncService, q);
+                let answer = |q: &ReqSub| m.answer(q);
                 let mut r: Vec<RespSub> = if !first && mode == Mode::OtherCommand {
                     subs.iter()
                         .map(|q| {
@@ -215,7 +215,7 @@ fn serve_hostile(
                             o.path = 1;
                             o
                         })
-                        .map(|o| dispatch(&mut *m as &mut dyn CncService, &o))
+                        .map(|o| m.answer(&o))
                         .collect()
                 } else {
                     subs.iter().map(answer).collect()

@@ -1110,7 +1110,7 @@ fn serve<C: Call>(m: &mut fwlib32::sim::Machine, c: &C) -> fwlib32::error::Resul
     let cx = Ctx::default();
     let resp: Vec<RespSub> = stamped(c, &cx, 1)
         .iter()
-        .map(|s| fwlib32::sim::service::dispatch(m, s))
+        .map(|s| fwlib32::sim::service::CncService::answer(m, s))
         .collect();
     c.decode(&cx, &resp)
 }

@@ -19,7 +19,7 @@ use crate::sim;
 use fwlib32::ew::*;
 use fwlib32::proto::frame::{Frame, ftype};
 use fwlib32::proto::packet::{RespSub, decode_request, encode_response};
-use fwlib32::sim::service::{CncService, dispatch};
+use fwlib32::sim::service::CncService;
 use fwlib32::sim::{Machine, Profile};
 use fwlib32::types::*;
 use fwlib32::*;
@@ -116,14 +116,14 @@ fn serve(mut s: TcpStream, machine: Arc<Mutex<Machine>>, seed: u64) {
                 };
                 data_frames += 1;
                 let mut m = machine.lock();
-                let mut resp: Vec<RespSub> = subs.iter().map(|q| dispatch(&mut *m, q)).collect();
+                let mut resp: Vec<RespSub> = subs.iter().map(|q| m.answer(q)).collect();
                 if data_frames > startup_frames {
                     resp = resp
                         .into_iter()
                         .filter_map(|r| mutate(&mut rng, r))
                         .collect();
                     if resp.is_empty() {
-                        resp.push(dispatch(&mut *m, &subs[0]));
+                        resp.push(m.answer(&subs[0]));
                     }
                 }
                 Frame::new(version, ftype::DATA_RESP, encode_response(&resp))

@@ -16,7 +16,7 @@ use crate::toolchain;
 use fwlib32::ew::*;
 use fwlib32::proto::frame::{Frame, ftype};
 use fwlib32::proto::packet::{RespSub, decode_request, encode_response};
-use fwlib32::sim::service::{CncService, dispatch};
+use fwlib32::sim::service::CncService;
 use fwlib32::sim::{Machine, Profile};
 use guard::{Frames, listen};
 use parking_lot::Mutex;
@@ -295,7 +295,7 @@ fn cnc(profile: Profile, repeat: bool) -> u16 {
                         };
                         data += 1;
                         let mut resp: Vec<RespSub> =
-                            subs.iter().map(|q| dispatch(&mut *m.lock(), q)).collect();
+                            subs.iter().map(|q| m.lock().answer(q)).collect();
                         if repeat && data > startup {
                             let room = 1400 / resp.len().max(1);
                             for r in &mut resp {

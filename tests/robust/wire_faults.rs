@@ -21,7 +21,7 @@ use crate::guard;
 use fwlib32::ew::*;
 use fwlib32::proto::frame::{Frame, HEADER_LEN, ftype};
 use fwlib32::proto::packet::{RespSub, decode_request, encode_response};
-use fwlib32::sim::service::{CncService, dispatch};
+use fwlib32::sim::service::CncService;
 use fwlib32::sim::{Machine, Profile};
 use fwlib32::types::*;
 use fwlib32::*;
@@ -249,7 +249,7 @@ impl Cnc {
                         return;
                     };
                     let n = self.data.fetch_add(1, Ordering::SeqCst);
-                    let r: Vec<RespSub> = subs.iter().map(|q| dispatch(&mut *m, q)).collect();
+                    let r: Vec<RespSub> = subs.iter().map(|q| m.answer(q)).collect();
                     let phase = match n {
                         0 => Some(Phase::Startup),
                         _ => Some(Phase::Data),

@@ -1,4 +1,4 @@
-//! Profile sections of the running machine (src/sim/run.rs): stored
+//! Profile sections of the running machine (src/sim/clock.rs): stored
 //! programs (and their dates), the program each path runs, alarms and
 //! scheduled events.
 

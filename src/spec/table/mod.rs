@@ -10,18 +10,18 @@ use super::types::*;
 
 mod base;
 mod feed;
-mod history;
-mod info;
+pub mod history;
+pub mod info;
 mod maintenance;
-mod memory;
+pub mod memory;
 mod names;
-mod offset;
-mod offset_life;
-mod operation;
-mod pmc;
-mod program;
-mod servo;
-mod tool_life;
+pub mod offset;
+pub mod offset_life;
+pub mod operation;
+pub mod pmc;
+pub mod program;
+pub mod servo;
+pub mod tool_life;
 
 /// The areas' entries, in this order.
 const AREAS: &[&[Func]] = &[

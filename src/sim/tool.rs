@@ -1,0 +1,409 @@
+//! Simulated tool life management: the profile's tool life groups, read,
+//! written and deleted; the groups in use; the punch press tools.
+
+use super::Machine;
+use super::profile::offset::{ToolGroupProfile, ToolProfile};
+use super::route::{Route, enc, none};
+use super::service::{CncError, Reply};
+use crate::ew;
+use crate::proto::cmd::RDNGRP;
+use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
+use crate::proto::packet::ReqSub;
+use crate::proto::tool::{
+    GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
+    PTLINFO_16, TLGROUP, TLINSERT, TLMNG, TLOPTGRP, TLTOOLS, TLUSEGRP, UseGroups, WRGRPINFO,
+};
+use crate::proto::wire::Wire;
+
+const NUMBER: CncError = CncError::NUMBER;
+/// cnc_modal's code of the T code (AUX_ORDER position 8, src/sim/modal.rs).
+const T_CODE: i32 = crate::proto::program::AUX_ORDER[8];
+const LENGTH: CncError = CncError::new(ew::EW_LENGTH);
+
+pub(super) const ROUTES: &[Route] = &[
+    // [s, e]: tool life group records (s = e: one group).
+    Route::cnc(TLGROUP, |m, q| {
+        enc(m.tl_groups(q.path, q.args[0], q.args[1]))
+    }),
+    // [grp, s, e]: tools s..=e of a group.
+    Route::cnc(TLTOOLS, |m, q| {
+        enc(m.tl_list(q.path, q.args[0], q.args[1], q.args[2]))
+    }),
+    Route::cnc(TLINSERT, |m, q| {
+        m.tl_insert(q.path, q.args).map(|_| Vec::new())
+    }),
+    Route::cnc(WRGRPINFO, |m, q| m.tl_write(q)),
+    Route::cnc(TLMNG, |m, q| m.tl_managed(q.path, q.args[0], q.args[1])),
+    Route::cnc(PTLDATA, |m, q| m.punch_data(q.path, q.args[1], q.args[2])),
+    Route::cnc(PTLINFO, |m, q| m.punch_info(q.path)),
+    Route::cnc(TLUSEGRP, |m, q| m.tl_use(q.path)),
+    Route::cnc(TLOPTGRP, |m, q| m.tl_optional(q.path, q.args[0])),
+    Route::table(RDGRPID2, |m, q| {
+        m.tl_group_of_tool(q.path, q.arg(0))
+            .map(|g| vec![i64::from(q.arg(0)), i64::from(g)])
+    }),
+    Route::table(DELTLIFEGRP, |m, q| {
+        none(m.tl_delete(q.path, q.arg(0), None))
+    }),
+    Route::table(DELTLIFEDT, |m, q| {
+        none(m.tl_delete(q.path, q.arg(0), Some(q.arg(1))))
+    }),
+    Route::table(RDNGRP, |m, q| {
+        m.tl_group_count(q.path).map(|n| vec![i64::from(n)])
+    }),
+];
+
+impl Machine {
+    /// Group `grp`; 0 is the group in use (the simulator's choice: the
+    /// first group; adapters ask cnc_toolnum(0, 0) for the tool in use).
+    fn tool_group_of(&self, path: u16, grp: i32) -> Reply<&ToolGroupProfile> {
+        let groups = &self
+            .profile
+            .paths
+            .get(path as usize - 1)
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        if grp == 0 {
+            return groups.first().ok_or(NUMBER);
+        }
+        groups.iter().find(|g| g.number == grp).ok_or(NUMBER)
+    }
+
+    /// 0x0053 \[grp\] deletes tool life group `grp`; 0x0055 [grp, n] its
+    /// `n`-th tool. An absent group or tool: EW_NUMBER, nothing changed.
+    pub fn tl_delete(&mut self, path: u16, grp: i32, tool: Option<i32>) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let i = groups.iter().position(|g| g.number == grp).ok_or(NUMBER)?;
+        match tool {
+            None => {
+                groups.remove(i);
+            }
+            Some(n) if n >= 1 && n as usize <= groups[i].tools.len() => {
+                groups[i].tools.remove(n as usize - 1);
+            }
+            Some(_) => return Err(NUMBER),
+        }
+        Ok(())
+    }
+
+    /// 0x0054 [grp, n, tno]: tool number `tno` inserted into group `grp` as
+    /// its `n`-th tool (1..=tools + 1), no offsets; else EW_NUMBER (a tool
+    /// number below 1: EW_DATA), nothing changed.
+    pub fn tl_insert(&mut self, path: u16, a: [i32; 5]) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let g = groups.iter_mut().find(|g| g.number == a[0]).ok_or(NUMBER)?;
+        if a[1] < 1 || a[1] as usize > g.tools.len() + 1 {
+            return Err(NUMBER);
+        }
+        if a[2] < 1 {
+            return Err(CncError::new(ew::EW_DATA));
+        }
+        let t = ToolProfile {
+            number: a[2],
+            length: 0,
+            radius: 0,
+            info: 0,
+        };
+        g.tools.insert(a[1] as usize - 1, t);
+        Ok(())
+    }
+
+    /// 0x0047 \[tno\]: the first group holding tool number `tno` (none:
+    /// EW_NUMBER).
+    pub fn tl_group_of_tool(&self, path: u16, tno: i32) -> Reply<i32> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        (p.tool_groups.iter())
+            .find(|g| g.tools.iter().any(|t| t.number == tno))
+            .map(|g| g.number)
+            .ok_or(NUMBER)
+    }
+
+    /// 0x004a: how many tool life groups the path has.
+    pub fn tl_group_count(&self, path: u16) -> Reply<i32> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        Ok(p.tool_groups.len() as i32)
+    }
+
+    /// 0x008b [s, e]: s = e, one group (0: the first; absent: EW_NUMBER);
+    /// a range, every group number s..=e up to the highest the table
+    /// holds (numbers it lacks answer as empty groups); s < 1, e < s or s
+    /// past the highest: EW_NUMBER.
+    pub fn tl_groups(&mut self, path: u16, s: i32, e: i32) -> Reply<GroupRange> {
+        let rec = |g: &ToolGroupProfile| GroupRecord {
+            ntool: g.tools.len() as i32,
+            life: g.life,
+            count_type: g.count_type,
+            count: g.count,
+            opt_grp: g.optional,
+            ..GroupRecord::default()
+        };
+        if s == e {
+            let g = self.tool_group_of(path, s)?;
+            return Ok(GroupRange {
+                first: g.number,
+                groups: vec![rec(g)],
+            });
+        }
+        let groups = &(self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let last = groups.iter().map(|g| g.number).max().unwrap_or(0);
+        if s < 1 || e < s || s > last {
+            return Err(NUMBER);
+        }
+        let groups = (s..=e.min(last))
+            .map(|n| {
+                groups
+                    .iter()
+                    .find(|g| g.number == n)
+                    .map(rec)
+                    .unwrap_or_default()
+            })
+            .collect();
+        Ok(GroupRange { first: s, groups })
+    }
+
+    /// 0x004c [s, e, .., len] + 20-byte records (life, counter type,
+    /// counter, two words not used): groups s..=e written. Every group must
+    /// exist (else EW_NUMBER), the payload hold them (else EW_LENGTH), the
+    /// values be a counter type 0 or 1 and a life and counter from 0 (else
+    /// EW_DATA); a refused write changes nothing.
+    fn tl_write(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
+        let (s, e) = (sub.args[0], sub.args[1]);
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(sub.path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        if e < s {
+            return Err(NUMBER);
+        }
+        let n = (i64::from(e) - i64::from(s) + 1) as usize;
+        let recs = Vec::<GroupWrite>::from_bytes(&sub.payload).map_err(|_| LENGTH)?;
+        if recs.len() < n {
+            return Err(LENGTH);
+        }
+        let mut at = Vec::with_capacity(n);
+        for (k, r) in recs.iter().take(n).enumerate() {
+            let num = s + k as i32;
+            let i = groups.iter().position(|g| g.number == num).ok_or(NUMBER)?;
+            if !(0..=1).contains(&r.count_type) || r.life < 0 || r.count < 0 {
+                return Err(CncError::new(ew::EW_DATA));
+            }
+            at.push((i, r));
+        }
+        for (i, r) in at {
+            let g = &mut groups[i];
+            (g.life, g.count_type, g.count) = (r.life, r.count_type, r.count);
+        }
+        Ok(Vec::new())
+    }
+
+    /// The tool life group of the T code in effect (the running program's,
+    /// else the profile's modal T): the first group holding that tool
+    /// number, 0 when none does.
+    fn tl_group_in_use(&self, path: u16) -> Reply<i32> {
+        let t = self
+            .aux_modal(path, T_CODE)?
+            .0
+            .first()
+            .map_or(0, |a| a.value);
+        Ok(self.tl_group_of_tool(path, t).unwrap_or(0))
+    }
+
+    /// 0x0048: next, in-use and selected groups. The simulator changes
+    /// tools at once and reads no block ahead: the group of the T code in
+    /// effect is selected, in use and the next to be used.
+    fn tl_use(&self, path: u16) -> Reply<Vec<u8>> {
+        let g = self.tl_group_in_use(path)?;
+        Ok(UseGroups {
+            next: g,
+            used: g,
+            slct: g,
+        }
+        .to_bytes())
+    }
+
+    /// 0x014b [top, n]: tool management data top..top + n - 1, as many as
+    /// the table holds from `top` (top < 1, n < 1 or top past the table:
+    /// EW_NUMBER). A tool in a tool life group has its group's life and
+    /// counter.
+    fn tl_managed(&self, path: u16, top: i32, n: i32) -> Reply<Vec<u8>> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        let tools = &p.managed_tools;
+        if top < 1 || n < 1 || top as usize > tools.len() {
+            return Err(NUMBER);
+        }
+        let rec = |t: &super::profile::offset::ManagedTool| {
+            let g = p
+                .tool_groups
+                .iter()
+                .find(|g| t.group != 0 && g.number == t.group);
+            let (count, life) = g.map_or((t.life_count, t.max_life), |g| (g.count, g.life));
+            let mut w = [0; MNG_WORDS];
+            w[..19].copy_from_slice(&[
+                t.number,
+                count,
+                life,
+                life - count,
+                i32::from(t.life_stat),
+                0,
+                0,
+                t.length,
+                t.radius,
+                t.spindle_speed,
+                t.feedrate,
+                t.magazine,
+                t.pot,
+                0,
+                0,
+                0,
+                t.group << 16,
+                t.magazine,
+                t.pot,
+            ]);
+            for (d, c) in w[19..].iter_mut().zip(&t.custom) {
+                *d = *c;
+            }
+            MngRecord(w)
+        };
+        let list: Vec<MngRecord> = tools
+            .iter()
+            .skip(top as usize - 1)
+            .take(n as usize)
+            .map(rec)
+            .collect();
+        Ok(MngList {
+            count: list.len() as i32,
+            tools: list,
+        }
+        .to_bytes())
+    }
+
+    /// A punch press path's tool data; other machines: EW_FUNC.
+    fn punch_tools(&self, path: u16) -> Reply<&[super::profile::offset::PunchTool]> {
+        let p = (self.profile.paths)
+            .get(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?;
+        if p.machine != super::profile::MachineKind::Punch {
+            return Err(CncError::FUNC);
+        }
+        Ok(&p.punch_tools)
+    }
+
+    fn is_16i(&self) -> bool {
+        self.profile.cnc.class == super::profile::Class::Series16
+    }
+
+    /// 0x009c [0, s, n]: tool data s.. of a punch press, as many as the
+    /// table holds, at most n (s past the table, s or n below 1:
+    /// EW_NUMBER). Records of 51 words (30i class) or 33 (16i class, no
+    /// decimals), the words FANUC's library reads (src/proto/tool.rs),
+    /// the others 0.
+    fn punch_data(&self, path: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
+        let tools = self.punch_tools(path)?;
+        if s < 1 || n < 1 || s as usize > tools.len() {
+            return Err(NUMBER);
+        }
+        let words = if self.is_16i() { 33 } else { 51 };
+        let mut out = Vec::new();
+        for t in tools.iter().skip(s as usize - 1).take(n as usize) {
+            let mut w = vec![0i32; words];
+            let vals = [
+                t.number,
+                t.x_offset,
+                t.y_offset,
+                t.turret,
+                t.change,
+                t.punch_count,
+                t.life,
+                t.radius,
+                t.radius_angle,
+                t.shape,
+                t.size_i,
+                t.size_j,
+                t.angle,
+            ];
+            for (k, v) in vals.into_iter().enumerate() {
+                w[1 + 2 * k] = v;
+            }
+            if words == 51 {
+                let (d, a) = (t.decimals, t.angle_decimals);
+                for (k, v) in [d, d, d, d, a, d, d, a].into_iter().enumerate() {
+                    w[27 + 2 * k] = v;
+                }
+            }
+            out.extend(w.iter().flat_map(|x| x.to_be_bytes()));
+        }
+        Ok(out)
+    }
+
+    /// 0x0099: the tool data sizes of a punch press: tld_max the number of
+    /// tool data, tld_size[0] the same, the rest 0 (the simulator's
+    /// choice), at the places each class's FANUC library reads.
+    fn punch_info(&self, path: u16) -> Reply<Vec<u8>> {
+        let n = self.punch_tools(path)?.len() as i16;
+        let mut hw = [0i16; 54];
+        if self.is_16i() {
+            for &(o, k) in &PTLINFO_16 {
+                if o == 0 || o == 6 {
+                    hw[k] = n;
+                }
+            }
+        } else {
+            hw[1] = n;
+            hw[6] = n;
+        }
+        Ok(hw.iter().flat_map(|x| x.to_be_bytes()).collect())
+    }
+
+    /// 0x01bf [g, g] (30i class): group `g` and its optional group number.
+    fn tl_optional(&self, path: u16, g: i32) -> Reply<Vec<u8>> {
+        let opt = self.tool_group_of(path, g)?.optional;
+        Ok([g, opt].iter().flat_map(|x| x.to_be_bytes()).collect())
+    }
+
+    /// 0x004d [grp, s, e]: the tools with use numbers s..=e that exist.
+    pub fn tl_list(
+        &mut self,
+        path: u16,
+        grp: i32,
+        s: i32,
+        e: i32,
+    ) -> Reply<crate::proto::tool::ToolList> {
+        let g = self.tool_group_of(path, grp)?;
+        // Use number 0: the tool in use (the group's first, in this simulator).
+        let (s, e) = if s == 0 { (1, e.max(1)) } else { (s, e) };
+        if s < 1 || e < s || s as usize > g.tools.len() {
+            return Err(NUMBER);
+        }
+        Ok(crate::proto::tool::ToolList {
+            grp: g.number,
+            first: s,
+            tools: g
+                .tools
+                .iter()
+                .skip(s as usize - 1)
+                .take((e - s + 1) as usize)
+                .map(|t| crate::proto::tool::ToolEntry {
+                    tool_num: t.number,
+                    length_num: t.length,
+                    radius_num: t.radius,
+                    tinfo: t.info,
+                })
+                .collect(),
+        })
+    }
+}
