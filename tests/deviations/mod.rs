@@ -378,18 +378,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
-        function: "cnc_rdtoolgrp",
-        cases: &[
-            "rdtoolgrp_v2_shape_empty",
-            "rdtoolgrp_v2_shape_half",
-            "rdtoolgrp_v2_shape_short1",
-            "rdtoolgrp_v3_shape_empty",
-            "rdtoolgrp_v3_shape_half",
-            "rdtoolgrp_v3_shape_short1",
-        ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdzofs",
         cases: &[
             "rdzofs_v2_shape_empty",
@@ -704,15 +692,6 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdzofs_*short1*",
             "fuzz_rdzofs_*cut*",
             "fuzz_rdzofs_*empty*",
-        ],
-        reason: FUZZ_SHORT,
-    },
-    Deviation {
-        function: "cnc_rdtoolgrp",
-        cases: &[
-            "fuzz_rdtoolgrp_*short1*",
-            "fuzz_rdtoolgrp_*cut*",
-            "fuzz_rdtoolgrp_*empty*",
         ],
         reason: FUZZ_SHORT,
     },
