@@ -275,11 +275,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "when a 16i-class CNC refuses the load-meter code with EW_ATTRIB, FANUC's library retries with an older form (serial spindle codes 0 and 1 scaled by parameters 4127, 4274, 4020, 4196, a scaling not learnt); ours returns the CNC's EW_ATTRIB",
     },
     Deviation {
-        function: "cnc_rddiaginfo",
-        cases: &["rddiaginfo_v2_shape_empty", "rddiaginfo_v3_shape_empty"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rddiagnum",
         cases: &[
             "rddiagnum_v2_shape_empty",
@@ -335,17 +330,24 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdmacror2",
-        cases: &["rdmacror2_v2_shape_longer", "rdmacror2_v3_shape_longer"],
+        cases: &[
+            "rdmacror2_v2_shape_longer",
+            "rdmacror2_v3_shape_longer",
+            "fuzz_rdmacror2_*more*",
+            "fuzz_rdmacror2_*long*",
+        ],
         reason: "FANUC's library writes every double the CNC sends, past the requested *num (an overrun); ours writes at most *num",
     },
     Deviation {
         function: "cnc_rdparainfo",
-        cases: &["rdparainfo_v2_shape_empty", "rdparainfo_v3_shape_empty"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
-        function: "cnc_rdparainfo",
-        cases: &["rdparainfo_v2_shape_longer", "rdparainfo_v3_shape_longer"],
+        cases: &[
+            "rdparainfo_v2_shape_longer",
+            "rdparainfo_v3_shape_longer",
+            "fuzz_rdparainfo_*more_*",
+            "fuzz_rdparainfo_*morecut*",
+            "fuzz_rdparainfo_*moreshort1*",
+            "fuzz_rdparainfo_*long*",
+        ],
         reason: "FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps info_no at read_no",
     },
     Deviation {
@@ -539,6 +541,27 @@ pub const ORACLE: &[Deviation] = &[
         reason: CTRL_SIGNALS_PAST_STRUCT,
     },
     // --- oracle fuzz (issue 21): replies drawn from the reply layouts ---
+    Deviation {
+        function: "cnc_rddiaginfo",
+        cases: &[
+            "fuzz_rddiaginfo_*more_*",
+            "fuzz_rddiaginfo_*morecut*",
+            "fuzz_rddiaginfo_*moreshort1*",
+            "fuzz_rddiaginfo_*long*",
+        ],
+        reason: "FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps info_no at read_no",
+    },
+    Deviation {
+        function: "cnc_rdproctime",
+        cases: &[
+            "fuzz_rdproctime_*Ln11*",
+            "fuzz_rdproctime_*Ln12*",
+            "fuzz_rdproctime_*Ln13*",
+            "fuzz_rdproctime_*Ln14*",
+            "fuzz_rdproctime_*long*",
+        ],
+        reason: "FANUC's library writes every record of an answer with more than 10, past ODBPTIME's data[10] (and counts them in num); ours writes at most 10",
+    },
     Deviation {
         function: "cnc_rdcncid",
         cases: &["fuzz_rdcncid_*more*", "fuzz_rdcncid_*long*"],
