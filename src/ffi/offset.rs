@@ -69,7 +69,7 @@ pub unsafe extern "C" fn cnc_rdtofs(
         if (length as u16) < 8 {
             return Err(Error::length());
         }
-        let v = first(&h.call(&p::rdtofs(number, r#type))?)?;
+        let v = first(&h.call(&p::rdtofs(number, r#type))?.0)?;
         unsafe {
             put_at(out, 0, number);
             put_at(out, 2, r#type);
