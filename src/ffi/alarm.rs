@@ -463,8 +463,8 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
     })
 }
 
-/// Reads the number of alarm history entries. A negative count from the
-/// CNC reads as 0 (an empty history).
+/// Reads the number of alarm history entries: the low 16 bits of the
+/// CNC's 32-bit count, as FANUC's library writes them.
 ///
 /// # Safety
 /// `hisno` must point to a writable unsigned short.
@@ -474,7 +474,7 @@ pub unsafe extern "C" fn cnc_rdalmhisno(FlibHndl: c_ushort, hisno: *mut c_ushort
         let h = handles::get(FlibHndl)?;
         let out = nonnull(hisno)?;
         let c = h.call(&rdalmhisno())?;
-        unsafe { put(out, c.value.max(0) as u16) };
+        unsafe { put(out, c.value as u16) };
         Ok(())
     })
 }

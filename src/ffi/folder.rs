@@ -380,7 +380,8 @@ pub unsafe extern "C" fn cnc_pdf_wractpt(
 }
 
 /// Reads `*line_len` lines of a program from line `line_no` into `data`:
-/// the answer up to its first '%', at most `*data_len` bytes; out: the
+/// the answer up to its first '%' or NUL (included), at most `*data_len`
+/// bytes; out: the
 /// bytes and the whole lines read (line ends and the '%'), as FANUC's
 /// library counts them.
 ///
@@ -411,9 +412,10 @@ pub unsafe extern "C" fn cnc_rdpdf_line(
                 &[(path, 256)],
             )
         }?;
-        // Up to the first '%' (the end of the program), at most `*data_len`
-        // bytes; the lines read are its line ends and that '%'.
-        let end = b.iter().position(|&c| c == b'%').map_or(b.len(), |i| i + 1);
+        // Up to the first '%' (the end of the program) or NUL, that byte
+        // included, at most `*data_len` bytes; the lines read are its line
+        // ends and that '%'.
+        let end = (b.iter().position(|&c| c == b'%' || c == 0)).map_or(b.len(), |i| i + 1);
         let n = end.min(unsafe { dl.read_unaligned() } as usize);
         let read = b[..n].iter().filter(|&&c| c == b'\n' || c == b'%').count();
         unsafe {

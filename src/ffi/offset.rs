@@ -70,7 +70,7 @@ pub unsafe extern "C" fn cnc_rdtofs(
         if usize::from(length as u16) < size_of::<ODBTOFS>() {
             return Err(Error::length());
         }
-        let v = first(&h.call(&p::rdtofs(number, r#type))?)?;
+        let v = first(&h.call(&p::rdtofs(number, r#type))?.0)?;
         unsafe {
             put_member!(out, ODBTOFS, datano, number);
             put_member!(out, ODBTOFS, r#type, r#type);

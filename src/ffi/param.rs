@@ -1,6 +1,6 @@
 //! Parameters and diagnostics.
 
-use super::{ffi_boundary, ffi_read, nonnull, put};
+use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_LENGTH, EW_NUMBER};
@@ -210,7 +210,9 @@ unsafe fn put_info(l: &InfoList, read_no: c_ushort, out: *mut u8) {
 /// Reads an info list into `out` (ODBPARAIF / ODBDIAGIF). `read_no` 0 is
 /// EW_LENGTH without traffic; at most 178 entries are asked for. When the
 /// CNC answers an error, `info_no` 0 and `prev_no` = `next_no` = `s_number`
-/// are written before it is returned (as FANUC's library does).
+/// are written before it is returned (as FANUC's library does). An answer
+/// short of `prev` and `next` reads their missing bytes as zeros, and an
+/// empty one gives `info_no` -1, both `EW_OK`, as from FANUC's library.
 ///
 /// # Safety
 /// `out` must point to 6 + 4 · read_no writable bytes.
@@ -224,7 +226,7 @@ unsafe fn read_info(
     if read_no == 0 {
         return Err(Error::local(EW_LENGTH, "read_no is 0"));
     }
-    let l = h
+    let (l, empty) = h
         .call(&ReadInfo {
             table,
             start: s_number as i32,
@@ -242,6 +244,10 @@ unsafe fn read_info(
             }
         })?;
     unsafe { put_info(&l, read_no, out) };
+    if empty {
+        // An empty answer: info_no -1 ((0 - 8) / 8 entries), as FANUC's.
+        unsafe { put_at(out, 0, -1i16) };
+    }
     Ok(())
 }
 

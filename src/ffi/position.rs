@@ -321,7 +321,9 @@ unsafe fn put_load(p: *mut LOADELM, v: &AxisValue, unit: i16) {
     }
 }
 
-/// Reads the servo load meters: `*data_num` in = room, out = axes written.
+/// Reads the servo load meters: `*data_num` in = room, out = axes written;
+/// each load is written as its magnitude (a negative value from the CNC
+/// reads positive), as FANUC's library writes it.
 ///
 /// # Safety
 /// `data_num` must point to a writable short, `loadmeter` to `*data_num`
@@ -344,7 +346,13 @@ pub unsafe extern "C" fn cnc_rdsvmeter(
             limit,
         })?;
         for (i, v) in r.values[0].iter().enumerate() {
-            unsafe { put_load(&raw mut (*out.add(i)).svload, v, 0) };
+            // FANUC's library writes the load's magnitude: -1 gives 1,
+            // i32::MIN stays itself.
+            let v = AxisValue {
+                data: v.data.wrapping_abs(),
+                ..*v
+            };
+            unsafe { put_load(&raw mut (*out.add(i)).svload, &v, 0) };
         }
         unsafe { put(data_num, r.count as c_short) };
         r.error.map_or(Ok(()), Err)

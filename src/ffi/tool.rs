@@ -20,7 +20,11 @@ use std::os::raw::{c_char, c_short, c_ushort};
 
 /// Reads a tool life group with its tools: number of tools, life, counter,
 /// then per tool its use number (1, 2, ...), tool number, length and radius
-/// offset numbers and information. `length` must hold the 20-byte head
+/// offset numbers and information. A group answered without tools (its
+/// number of tools 0 or less) gets the head only, and an answer under 4
+/// bytes `grp_num` 0 only, both `EW_OK` without asking for tools, as from
+/// FANUC's library; a record cut short reads its missing words as 0.
+/// `length` must hold the 20-byte head
 /// (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
 /// the code EW_LENGTH with nothing written, as FANUC's library).
 ///
@@ -40,7 +44,22 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
         if room < offset_of!(ODBTG, data) {
             return Err(Error::length());
         }
-        let g = h.call(&tlgroup(number))?;
+        let Some(g) = h.call(&tlgroup(number))? else {
+            // An answer under 4 bytes: grp_num 0 and nothing else, as
+            // FANUC's library writes.
+            unsafe { put_at(out, 0, 0 as c_short) };
+            return Ok(());
+        };
+        if g.ntool.value <= 0 {
+            // No tools: the head only, and no second exchange.
+            unsafe {
+                put_at(out, 0, g.grp as c_short);
+                put_at(out, 8, g.ntool.value);
+                put_at(out, 12, g.life.value);
+                put_at(out, 16, g.count.value);
+            }
+            return Ok(());
+        }
         let t = h.call(&tltools(g.grp, g.ntool.value))?;
         if offset_of!(ODBTG, data) + size_of::<ODBTG_DATA>() * t.tools.len() > room {
             return Err(Error::length());
@@ -201,9 +220,10 @@ pub unsafe extern "C" fn cnc_wrgrpinfo(
 
 /// Reads the next, in-use and selected tool life groups, then their
 /// optional group numbers in a second exchange (the 30i class asks for
-/// each group that is not 0 when the next group is not 0, the 16i class
+/// each group above 0 when the next group is above 0, the 16i class
 /// reads the three group records, Series 15 asks nothing; a group not
-/// asked, 0, or answered with an error reads -1). An error answered for a
+/// asked, 0, answered with an error or after such a one reads -1). An
+/// error answered for a
 /// group is returned after all six numbers are written, as FANUC's
 /// library does.
 ///

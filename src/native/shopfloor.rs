@@ -89,7 +89,9 @@ fn opmsg_part() -> impl Part<Out = Option<OperatorMessage>> + Send + 'static {
 }
 
 fn ntool_part(group: i16) -> impl Part<Out = (i32, i32)> + Send + 'static {
+    // An answer under 4 bytes (None) is a group of no tools.
     via("cnc_rdntool", pt::tlgroup(group), 28, |g| {
+        let g = g.unwrap_or_default();
         Ok((g.grp, g.ntool.value))
     })
 }

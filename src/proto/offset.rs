@@ -30,7 +30,9 @@ pub const fn write_record(value: i32) -> Value {
 /// Offset values: whole 8-byte records filling the payload.
 pub type Values = Vec<Value>;
 
-pub fn rdtofs(number: i16, kind: i16) -> Single<Values> {
+/// cnc_rdtofs: the first whole record; bytes after it are ignored, as
+/// FANUC's library ignores them.
+pub fn rdtofs(number: i16, kind: i16) -> Single<WholeValues> {
     let n = i32::from(number);
     Single::new(ReqSub::cnc(RDTOFS, &[n, n, TOFS_SINGLE + i32::from(kind)]))
 }

@@ -5,7 +5,7 @@
 //! [`Elem`] is the one codec between a value and the bytes of the caller's
 //! C buffer (IODBPSD / ODBDGN / the write input): `get` is `put` reversed.
 
-use super::call::{Call, Ctx, payload, sub};
+use super::call::{Call, Ctx, payload, payload_padded, sub};
 pub use super::cmd::{
     DIAGNOSS, DIAGNOSS16, DIAGTYPE, PARAMTYPE, RDDIAGINFO, RDDIAGINFO15, RDDIAGNUM, RDPARAINFO,
     RDPARAINFO15, RDPARAM, RDPARAM16, RDPARANUM, WRPARAM, WRPARAM16,
@@ -467,15 +467,20 @@ pub struct ReadInfo {
 }
 
 impl Call for ReadInfo {
-    type Output = InfoList;
+    /// The list, and whether the answer was empty (FANUC's library then
+    /// writes info_no -1: it counts (length - 8) / 8 entries).
+    type Output = (InfoList, bool);
     fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
         vec![ReqSub::cnc(
             self.table.info_cmd(cx.class),
             &[self.start, self.count.min(INFO_MAX)],
         )]
     }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<InfoList> {
-        payload(resp, 0)
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<(InfoList, bool)> {
+        // An answer under 8 bytes: prev and next read as zeros where it
+        // ends, as FANUC's library reads them.
+        let empty = sub(resp, 0)?.payload.is_empty();
+        Ok((payload_padded(resp, 0, 8)?, empty))
     }
 }
 

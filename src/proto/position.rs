@@ -16,7 +16,7 @@ use super::packet::{ReqSub, RespSub};
 use super::value::Value;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::error::{Error, Result};
-use crate::ew::EW_NOOPT;
+use crate::ew::{EW_NOOPT, EW_NUMBER};
 use crate::wire_struct;
 
 /// 0x26 type codes.
@@ -395,26 +395,36 @@ impl Call for SpindleData {
         }
         vec![ReqSub::cnc(COUNT, &[1]), data, ReqSub::cnc(COUNT, &[1])]
     }
-    /// 30i class: the first count must be readable (an empty or 1-byte
-    /// payload: FANUC's library reads the next subpacket's header as the
-    /// count; ours EW_PROTOCOL); 0 spindles is EW_NOOPT before the data's
-    /// own error; the data are the whole records; the last count's error is
-    /// the result.
+    /// 30i class, in FANUC's library's order: the first count's error, the
+    /// last count's error; the first count must be readable (an empty or
+    /// 1-byte payload: FANUC's library reads the next subpacket's header as
+    /// the count; ours EW_PROTOCOL), the last one reads zeros where it ends;
+    /// the count is the smaller of the two: 0 is EW_NOOPT, below sp_no
+    /// EW_NUMBER, both before the data's own error; the data are the whole
+    /// records.
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<SpindleReply> {
         if cx.class.is_16i() {
             return Ok((cx.max_spindles, whole_records(resp, 0)?));
         }
         expect_subs(resp, 3)?;
         let p = &sub(resp, 0)?.payload;
+        let last = &sub(resp, 2)?.payload;
         let Some(n) = p.get(..2) else {
             return Err(Error::short("no spindle count"));
         };
-        let n = u16::from_be_bytes([n[0], n[1]]);
+        let first = u16::from_be_bytes([n[0], n[1]]);
+        let mut b = [0u8; 2];
+        for (d, s) in b.iter_mut().zip(last) {
+            *d = *s;
+        }
+        let n = first.min(u16::from_be_bytes(b));
         if n == 0 {
             return Err(Error::local(EW_NOOPT, "the path has no spindle"));
         }
+        if i32::from(self.sp_no) > i32::from(n) {
+            return Err(Error::local(EW_NUMBER, "the CNC has fewer spindles"));
+        }
         let v = whole_records(resp, 1)?;
-        sub(resp, 2)?;
         Ok((n, v))
     }
 }

@@ -192,7 +192,8 @@ impl Wire for GModal {
     }
 }
 
-/// Payload of 0x0022: 8-byte records (possibly none).
+/// Payload of 0x0022: 8-byte records (possibly none); a ragged tail is
+/// no record (FANUC's library counts length / 8 of them).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct AuxModal(pub Vec<AuxCode>);
 
@@ -201,7 +202,11 @@ impl Wire for AuxModal {
         self.0.encode(w);
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        Ok(AuxModal(Vec::decode(r)?))
+        let n = r.remaining() / 8;
+        let mut whole = Reader::new(r.bytes(n * 8)?);
+        let v = Vec::decode(&mut whole)?;
+        r.bytes(r.remaining())?;
+        Ok(AuxModal(v))
     }
 }
 

@@ -5,7 +5,7 @@
 //! 0x008b [grp, grp]; cnc_rdtoolgrp reads it and then the group's tools
 //! with 0x004d [grp, 1, ntool] (cnc_toolnum's command).
 
-use super::call::{Call, Ctx, Single, sub};
+use super::call::{Call, Ctx, Single, payload_padded, sub};
 pub use super::cmd::{
     PTLDATA, PTLINFO, TLCTL, TLGROUP, TLINSERT, TLMNG, TLOPTGRP, TLTOOLS, TLUSEGRP, WRGRPINFO,
 };
@@ -35,9 +35,28 @@ pub fn tlinsert(grp: i16, tuse: i16, tool: i32) -> Single<super::offset::Ack> {
     Single::new(ReqSub::cnc(TLINSERT, &args))
 }
 
-pub fn tlgroup(grp: i16) -> Single<ToolGroup> {
-    let g = i32::from(grp);
-    Single::new(ReqSub::cnc(TLGROUP, &[g, g]))
+/// cnc_rdtoolgrp's first frame, 0x008b [grp, grp]: None for an answer
+/// under 4 bytes (FANUC's library then writes grp_num 0 only); a longer
+/// one short of the record reads its missing words as zeros.
+pub fn tlgroup(grp: i16) -> TlGroup {
+    TlGroup(i32::from(grp))
+}
+
+#[derive(Debug, Clone, Copy)]
+pub struct TlGroup(pub i32);
+
+impl Call for TlGroup {
+    type Output = Option<ToolGroup>;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(TLGROUP, &[self.0, self.0])]
+    }
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Option<ToolGroup>> {
+        if sub(resp, 0)?.payload.len() < 4 {
+            return Ok(None);
+        }
+        let full = ToolGroup::default().to_bytes().len();
+        Ok(Some(payload_padded(resp, 0, full)?))
+    }
 }
 
 wire_struct! {
@@ -214,11 +233,11 @@ pub fn usegrp() -> Single<UseGroups> {
 
 /// cnc_rdtlusegrp's second frame: the optional group numbers of the
 /// groups (next, use, slct). The 30i class asks (1,0x1bf)[g, g] for each
-/// group that is not 0, but only when `next` is not 0 (the optional group
+/// group above 0, but only when `next` is above 0 (the optional group
 /// number is the answer's second i32); the 16i class asks the group record
 /// (1,0x8b)[g, g] of all three, 0 included (the record's `opt_grp`);
-/// Series 15 sends nothing. A group 0, or one whose subpacket carries an
-/// error, reads -1.
+/// Series 15 sends nothing. A group 0, one whose subpacket carries an
+/// error and every group after that one read -1.
 #[derive(Debug, Clone, Copy)]
 pub struct OptGroups(pub [i32; 3]);
 
@@ -226,7 +245,7 @@ impl OptGroups {
     /// The groups asked on class `c`, by their index in (next, use, slct).
     fn asked(&self, c: CncClass) -> Vec<usize> {
         match c {
-            CncClass::Series30 if self.0[0] != 0 => (0..3).filter(|&i| self.0[i] != 0).collect(),
+            CncClass::Series30 if self.0[0] > 0 => (0..3).filter(|&i| self.0[i] > 0).collect(),
             CncClass::Series30 | CncClass::Series16 { kind: 2 } => Vec::new(),
             CncClass::Series16 { .. } => vec![0, 1, 2],
         }
@@ -257,7 +276,8 @@ impl Call for OptGroups {
             if resp.len() <= k {
                 sub(resp, k)?;
             }
-            if self.0[i] == 0 {
+            // After an error FANUC's library looks at no later group.
+            if self.0[i] == 0 || err.is_some() {
                 continue;
             }
             let p = match sub(resp, k) {

@@ -275,11 +275,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "when a 16i-class CNC refuses the load-meter code with EW_ATTRIB, FANUC's library retries with an older form (serial spindle codes 0 and 1 scaled by parameters 4127, 4274, 4020, 4196, a scaling not learnt); ours returns the CNC's EW_ATTRIB",
     },
     Deviation {
-        function: "cnc_rddiaginfo",
-        cases: &["rddiaginfo_v2_shape_empty", "rddiaginfo_v3_shape_empty"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rddiagnum",
         cases: &[
             "rddiagnum_v2_shape_empty",
@@ -335,17 +330,24 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdmacror2",
-        cases: &["rdmacror2_v2_shape_longer", "rdmacror2_v3_shape_longer"],
+        cases: &[
+            "rdmacror2_v2_shape_longer",
+            "rdmacror2_v3_shape_longer",
+            "fuzz_rdmacror2_*more*",
+            "fuzz_rdmacror2_*long*",
+        ],
         reason: "FANUC's library writes every double the CNC sends, past the requested *num (an overrun); ours writes at most *num",
     },
     Deviation {
         function: "cnc_rdparainfo",
-        cases: &["rdparainfo_v2_shape_empty", "rdparainfo_v3_shape_empty"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
-        function: "cnc_rdparainfo",
-        cases: &["rdparainfo_v2_shape_longer", "rdparainfo_v3_shape_longer"],
+        cases: &[
+            "rdparainfo_v2_shape_longer",
+            "rdparainfo_v3_shape_longer",
+            "fuzz_rdparainfo_*more_*",
+            "fuzz_rdparainfo_*morecut*",
+            "fuzz_rdparainfo_*moreshort1*",
+            "fuzz_rdparainfo_*long*",
+        ],
         reason: "FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps info_no at read_no",
     },
     Deviation {
@@ -374,18 +376,6 @@ pub const ORACLE: &[Deviation] = &[
             "rdtofs_v3_shape_empty",
             "rdtofs_v3_shape_half",
             "rdtofs_v3_shape_short1",
-        ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
-        function: "cnc_rdtoolgrp",
-        cases: &[
-            "rdtoolgrp_v2_shape_empty",
-            "rdtoolgrp_v2_shape_half",
-            "rdtoolgrp_v2_shape_short1",
-            "rdtoolgrp_v3_shape_empty",
-            "rdtoolgrp_v3_shape_half",
-            "rdtoolgrp_v3_shape_short1",
         ],
         reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
@@ -423,6 +413,8 @@ pub const ORACLE: &[Deviation] = &[
         cases: &[
             "pmc_rdpmcrng_v2_shape_longer",
             "pmc_rdpmcrng_v3_shape_longer",
+            "fuzz_pmc_rdpmcrng_*long*",
+            "fuzz_pmc_rdpmcrng_*more*",
         ],
         reason: "FANUC's library copies the whole reply into the caller's buffer, past the requested range and length; ours writes no more than they hold",
     },
@@ -475,6 +467,8 @@ pub const ORACLE: &[Deviation] = &[
             "wrhissgnl3_v3_a2_100",
             "wrhissgnl3_v2_a2_61",
             "wrhissgnl3_v2_a2_100",
+            "fuzz_wrhissgnl3_*_a2_61_*",
+            "fuzz_wrhissgnl3_*_a2_100_*",
         ],
         reason: "with type (the number of entries) over 60 FANUC's library sends that many 16-byte entries, read past the caller's 60-entry IODBSIG3; ours answers EW_LENGTH (2) before any traffic",
     },
@@ -551,6 +545,43 @@ pub const ORACLE: &[Deviation] = &[
         reason: CTRL_SIGNALS_PAST_STRUCT,
     },
     // --- oracle fuzz (issue 21): replies drawn from the reply layouts ---
+    Deviation {
+        function: "cnc_rdhissgnl3",
+        cases: &[
+            "fuzz_rdhissgnl3_*Ln61*",
+            "fuzz_rdhissgnl3_*Ln62*",
+            "fuzz_rdhissgnl3_*Ln63*",
+            "fuzz_rdhissgnl3_*Ln64*",
+            "fuzz_rdhissgnl3_*more*",
+        ],
+        reason: "FANUC's library writes every 16-byte record the CNC sends, past IODBSIG3's 60 entries; ours writes at most 60",
+    },
+    Deviation {
+        function: "cnc_rdprogdir2",
+        cases: &["fuzz_rdprogdir2_*more*"],
+        reason: "FANUC's library writes every program record a longer answer holds, past the *num_prog records asked for (and counts them); ours writes at most *num_prog",
+    },
+    Deviation {
+        function: "cnc_rddiaginfo",
+        cases: &[
+            "fuzz_rddiaginfo_*more_*",
+            "fuzz_rddiaginfo_*morecut*",
+            "fuzz_rddiaginfo_*moreshort1*",
+            "fuzz_rddiaginfo_*long*",
+        ],
+        reason: "FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps info_no at read_no",
+    },
+    Deviation {
+        function: "cnc_rdproctime",
+        cases: &[
+            "fuzz_rdproctime_*Ln11*",
+            "fuzz_rdproctime_*Ln12*",
+            "fuzz_rdproctime_*Ln13*",
+            "fuzz_rdproctime_*Ln14*",
+            "fuzz_rdproctime_*long*",
+        ],
+        reason: "FANUC's library writes every record of an answer with more than 10, past ODBPTIME's data[10] (and counts them in num); ours writes at most 10",
+    },
     Deviation {
         function: "cnc_rdcncid",
         cases: &["fuzz_rdcncid_*more*", "fuzz_rdcncid_*long*"],
@@ -708,22 +739,9 @@ pub const ORACLE: &[Deviation] = &[
         reason: FUZZ_SHORT,
     },
     Deviation {
-        function: "cnc_rdtoolgrp",
-        cases: &[
-            "fuzz_rdtoolgrp_*short1*",
-            "fuzz_rdtoolgrp_*cut*",
-            "fuzz_rdtoolgrp_*empty*",
-        ],
-        reason: FUZZ_SHORT,
-    },
-    Deviation {
         function: "cnc_modal",
-        cases: &[
-            "fuzz_modal_*short1*",
-            "fuzz_modal_*cut*",
-            "fuzz_modal_*empty*",
-        ],
-        reason: FUZZ_SHORT,
+        cases: &["fuzz_modal_*_a1_m1_*more*", "fuzz_modal_*_a1_m1_*long*"],
+        reason: "FANUC's library writes every G code of a longer all-groups answer, past g_data's 35 bytes; ours writes at most 35",
     },
     Deviation {
         function: "cnc_rdpdf_inf",
@@ -836,11 +854,26 @@ pub const ORACLE: &[Deviation] = &[
         reason: FUZZ_SHORT,
     },
     Deviation {
+        function: "cnc_acts2",
+        cases: &[
+            "fuzz_acts2_*s0Tcut*",
+            "fuzz_acts2_*s0Tshort1*",
+            "fuzz_acts2_*s0Tempty*",
+            "fuzz_acts2_*s0Tw*cut*",
+            "fuzz_acts2_*s0Tw*short1*",
+            "fuzz_acts2_*s0Tw*empty*",
+        ],
+        reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
         function: "cnc_rdspgear",
         cases: &[
             "fuzz_rdspgear_*s0Tcut*",
             "fuzz_rdspgear_*s0Tshort1*",
             "fuzz_rdspgear_*s0Tempty*",
+            "fuzz_rdspgear_*s0Tw*cut*",
+            "fuzz_rdspgear_*s0Tw*short1*",
+            "fuzz_rdspgear_*s0Tw*empty*",
         ],
         reason: COUNT_PAST_PAYLOAD,
     },
@@ -850,6 +883,9 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdspmaxrpm_*s0Tcut*",
             "fuzz_rdspmaxrpm_*s0Tshort1*",
             "fuzz_rdspmaxrpm_*s0Tempty*",
+            "fuzz_rdspmaxrpm_*s0Tw*cut*",
+            "fuzz_rdspmaxrpm_*s0Tw*short1*",
+            "fuzz_rdspmaxrpm_*s0Tw*empty*",
         ],
         reason: COUNT_PAST_PAYLOAD,
     },
@@ -859,6 +895,9 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdspload_*s0Tcut*",
             "fuzz_rdspload_*s0Tshort1*",
             "fuzz_rdspload_*s0Tempty*",
+            "fuzz_rdspload_*s0Tw*cut*",
+            "fuzz_rdspload_*s0Tw*short1*",
+            "fuzz_rdspload_*s0Tw*empty*",
         ],
         reason: COUNT_PAST_PAYLOAD,
     },

@@ -596,7 +596,8 @@ pub fn fuzz(o: &Opts, probe_exe: &Path) -> i32 {
         }
         let cut = |x: &String| -> String { x.chars().take(400).collect() };
         println!(
-            "DIFF {function}/{name}\n{}",
+            "DIFF {function}/{name}{}\n{}",
+            if is_listed { " (listed)" } else { "" },
             d.iter().map(cut).collect::<Vec<_>>().join("\n")
         );
         // Shrink and record at most 3 per function and kind.
