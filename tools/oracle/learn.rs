@@ -62,6 +62,9 @@ struct Session<'a> {
     fake: Fake,
     probe: Option<Probe>,
     pub calls: usize,
+    /// Calls that took longer than a second (the library waited for a
+    /// reply that never came): after three, no more calls are made.
+    pub slow: usize,
 }
 
 /// What one call did.
@@ -82,6 +85,7 @@ impl<'a> Session<'a> {
             fake: Fake::start(profile(class), Duration::from_millis(2500), None),
             probe: None,
             calls: 0,
+            slow: 0,
         }
     }
     fn probe(&mut self) -> &mut Probe {
@@ -101,7 +105,18 @@ impl<'a> Session<'a> {
     /// One call: `cmd` the callx arguments after the fill; `mutate` makes
     /// the next data reply.
     fn call(&mut self, fill: u8, cmd: &str, mutate: Option<fake_reply::Maker>) -> Call {
+        if self.slow >= 3 {
+            return Call {
+                ret: None,
+                crashed: true,
+                missing: false,
+                b0: Vec::new(),
+                reqs: Vec::new(),
+                frames: 0,
+            };
+        }
         self.calls += 1;
+        let started = std::time::Instant::now();
         let pid = self.probe().pid();
         if let Some(m) = mutate {
             self.fake.mutate_next(m);
@@ -116,6 +131,9 @@ impl<'a> Session<'a> {
         let answer = self.probe().call(&format!("callx {fill} {cmd}"));
         let _ = tx.send(());
         let _ = dog.join();
+        if started.elapsed() > Duration::from_secs(1) {
+            self.slow += 1;
+        }
         self.fake.mutate_done();
         let frames: Vec<Rec> = self.fake.take(Duration::from_millis(1));
         let reqs: Vec<Vec<u8>> = frames
@@ -397,6 +415,9 @@ fn learn_class(
                 }
             }
         }
+    }
+    if sess.slow > 0 {
+        return Err("the plain call waited for more than a second (timed out)".into());
     }
     let plain_code = c0.ret;
     if !traffic(&c0) {
@@ -751,6 +772,9 @@ fn learn_class(
                 reply.sort_by_key(|x| (x.at, x.out, x.off));
             }
         }
+    }
+    if sess.slow >= 3 {
+        flags.push("calls timed out: learning stopped early".into());
     }
     Ok(ClassLearnt {
         form: Some(form),

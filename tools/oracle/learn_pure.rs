@@ -506,9 +506,11 @@ pub fn coded(len: usize, pass: usize) -> Vec<u8> {
 /// The position the passes' bytes stand for.
 pub fn decode(v: [u8; PASSES]) -> Option<usize> {
     let [v0, v1, v2] = v;
-    let ok = (1..=251).contains(&v0) && (1..=251).contains(&v1);
-    let p = (v1 as usize - 1) * 251 + (v0 as usize).saturating_sub(1);
-    (ok && code(p, 2) == v2).then_some(p)
+    if !(1..=251).contains(&v0) || !(1..=251).contains(&v1) {
+        return None;
+    }
+    let p = (v1 as usize - 1) * 251 + (v0 as usize - 1);
+    (code(p, 2) == v2).then_some(p)
 }
 
 /// Where one destination byte comes from.
