@@ -35,6 +35,7 @@ pub mod pure;
 use crate::fake::{Fake, Rec, Sub as RespSub};
 use crate::probe::{Answer, Probe};
 use crate::profiles::profile;
+use fwlib32::spec::Int;
 use pure::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -42,6 +43,8 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 const CLASSES: [(&str, &str); 3] = [("v3", "S30"), ("v2", "S16"), ("s15", "S15")];
+/// The punch press forms of the 30i and 16i classes (no Series 15 one).
+const PUNCH: [(&str, &str); 2] = [("v3pu", "S30"), ("v2pu", "S16")];
 const BUF: usize = 65536;
 /// How long one call may take before the probe is ended.
 const CALL_LIMIT: Duration = Duration::from_secs(6);
@@ -278,6 +281,27 @@ fn conv_of(t: &Ty) -> fn(i64) -> i32 {
     }
 }
 
+/// The length of the C string a `char *` or `void *` argument holds (its
+/// 0 byte reads as kept in the reply map).
+const STRING: usize = 32;
+
+fn is_bytes(a: &Arg) -> bool {
+    matches!(a, Arg::Ptr(Ty::Int { size: 1, .. } | Ty::Void))
+}
+
+/// A little-endian integer's value.
+fn le_value(b: &[u8], signed: bool) -> i64 {
+    let mut v: i64 = 0;
+    for (k, x) in b.iter().enumerate() {
+        v |= (*x as i64) << (8 * k);
+    }
+    let bits = 8 * b.len() as u32;
+    if signed && bits < 64 && v >> (bits - 1) & 1 == 1 {
+        v -= 1 << bits;
+    }
+    v
+}
+
 fn hex(b: &[u8]) -> String {
     b.iter().map(|x| format!("{x:02x}")).collect()
 }
@@ -306,11 +330,11 @@ fn command(name: &str, sh: &Shape, s: &Setup) -> String {
             }
             (Arg::Ptr(_), Some((off, span))) => match &s.fill_ptr[i] {
                 Some(b) => c.push_str(&format!(" @{off}={}", hex(b))),
-                None => {
+                None if is_bytes(&sh.args[i]) && span > STRING => {
                     // a C string argument ends inside its room
-                    let _ = span;
-                    c.push_str(&format!(" @{off}"));
+                    c.push_str(&format!(" @{off}!{STRING}"));
                 }
+                None => c.push_str(&format!(" @{off}")),
             },
             _ => c.push_str(" 0"),
         }
@@ -369,6 +393,8 @@ struct ClassLearnt {
     payload: Vec<Placed>,
     inputs: Vec<usize>,
     outputs: Vec<usize>,
+    /// (output's argument, leaf, C integer, number argument echoed)
+    echoes: Vec<(usize, String, Int, usize)>,
     flags: Vec<String>,
 }
 
@@ -562,7 +588,13 @@ fn learn_class(
         ) else {
             continue;
         };
-        let len = ty.size().max(1).min(span).min(4096);
+        let len = if is_bytes(&sh.args[i]) {
+            STRING
+        } else {
+            ty.size().max(1)
+        }
+        .min(span)
+        .min(4096);
         let mut got: Vec<Vec<u8>> = Vec::new();
         for pass in 0..PASSES {
             let mut s = base.clone();
@@ -626,6 +658,7 @@ fn learn_class(
     let mut moved_past = Vec::new();
     let mut outputs = Vec::new();
     let mut reply_len = 0;
+    let mut echoes = Vec::new();
     let asked = sh
         .args
         .iter()
@@ -661,6 +694,7 @@ fn learn_class(
             }
         }
         let mut obs: Option<[[Vec<u8>; 2]; PASSES]> = None;
+        let mut accepted = None;
         for (len, pin, change) in tries {
             let mut setup = base.clone();
             if let Some((i, v)) = change {
@@ -700,6 +734,7 @@ fn learn_class(
                 }
                 reply_len = len;
                 obs = Some(got);
+                accepted = Some((len, pin, setup));
                 break;
             }
         }
@@ -712,7 +747,10 @@ fn learn_class(
                     let cut = |v: &Vec<u8>| v[off..off + span].to_vec();
                     let region: [[Vec<u8>; 2]; PASSES] =
                         std::array::from_fn(|p| [cut(&o[p][0]), cut(&o[p][1])]);
-                    let map = map_bytes(&region);
+                    let mut map = map_bytes(&region);
+                    if is_bytes(&sh.args[i]) && map.get(STRING) == Some(&Src::Const(0)) {
+                        map[STRING] = Src::Kept; // the string's end, as passed
+                    }
                     let ty = match &sh.args[i] {
                         Arg::Ptr(t) | Arg::IntPtr(t) => t.clone(),
                         _ => unreachable!(),
@@ -764,6 +802,47 @@ fn learn_class(
                     let first: Vec<Leaf> = lv.iter().filter(|l| l.off < size).cloned().collect();
                     odd.clear();
                     placed(i, &map, &first, &mut odd);
+                    // A leaf of constant bytes equal to a number argument:
+                    // an echo when it follows the argument changed.
+                    let (len, pin, setup) = accepted.clone().unwrap();
+                    for l in &first {
+                        let bytes = &map[l.off..(l.off + l.ty.size()).min(map.len())];
+                        let consts: Option<Vec<u8>> = bytes
+                            .iter()
+                            .map(|b| match b {
+                                Src::Const(v) => Some(*v),
+                                _ => None,
+                            })
+                            .collect();
+                        let (Some(consts), Some(c)) = (consts, l.ty.int()) else {
+                            continue;
+                        };
+                        let value = le_value(&consts, matches!(c, Int::I8 | Int::I16 | Int::I32));
+                        for (k, a) in sh.args.iter().enumerate() {
+                            let Arg::Num(t) = a else { continue };
+                            if conv_of(t)(setup.vals[k]) as i64 != value {
+                                continue;
+                            }
+                            let mut s2 = setup.clone();
+                            s2.vals[k] += 2;
+                            let c2 = sess.call(
+                                0xCC,
+                                &command(name, sh, &s2),
+                                Some(fake_reply::coded(len, 0, pin)),
+                            );
+                            let (off, _) = sh.regions[i].unwrap();
+                            let got = c2.b0.get(off + l.off..off + l.off + consts.len());
+                            let want = conv_of(t)(s2.vals[k]) as i64;
+                            if c2.ret == Some(0)
+                                && got.is_some_and(|g| le_value(g, value < 0 || want < 0) == want)
+                            {
+                                echoes.push((i, l.path.clone(), c, k));
+                                let prefix = format!("out {i} {}: ", l.path);
+                                odd.retain(|o| !o.starts_with(&prefix));
+                                break;
+                            }
+                        }
+                    }
                     for o in odd {
                         flags.push(format!("reply: {o}"));
                     }
@@ -787,6 +866,7 @@ fn learn_class(
         payload,
         inputs,
         outputs,
+        echoes,
         flags,
     })
 }
@@ -815,18 +895,31 @@ fn learn(
     let sh = shape(proto)?;
     let types: Vec<Ty> = proto.params.iter().map(|p| p.0.clone()).collect();
     let mut per = Vec::new();
-    for (class, cname) in CLASSES {
+    let mut machine = None;
+    let mut classes: &[(&str, &str)] = &CLASSES;
+    let mut k = 0;
+    while k < classes.len() {
+        let (class, cname) = classes[k];
         let mut s = Session::new(probe_exe, lib, class);
         let r = learn_class(&mut s, name, &sh, &types);
         *calls += s.calls;
         match r {
             Ok(l) => per.push((cname, l)),
-            Err(e) if per.is_empty() => return Err(e),
+            // FANUC's library sends some functions only to the machine
+            // type that has them: a punch press's start-up sysinfo.
+            Err(e) if per.is_empty() && machine.is_none() && e.starts_with("no traffic") => {
+                machine = Some(e);
+                classes = &PUNCH;
+                continue;
+            }
+            Err(e) if per.is_empty() => return Err(machine.unwrap_or(e)),
             Err(e) => {
                 return Err(format!("learnt on the 30i class, not on {class}: {e}"));
             }
         }
+        k += 1;
     }
+    let punch = machine.is_some();
     let mut d = Draft {
         name: name.into(),
         ..Draft::default()
@@ -883,8 +976,19 @@ fn learn(
         f
     };
     let same = |a: &DForm, b: &DForm| a.class == b.class && a.cmd == b.cmd && a.words == b.words;
+    if punch {
+        d.flags.push(
+            "machine type: no traffic on a mill; learnt on a punch press (30i and 16i, no Series 15)"
+                .into(),
+        );
+    }
     if forms.iter().all(|f| same(&f.1, &forms[0].1)) {
         d.forms.push(renumber(&forms[0].1));
+    } else if forms.len() == 2 {
+        let (mut a, mut b) = (renumber(&forms[0].1), renumber(&forms[1].1));
+        a.classes = "S30";
+        b.classes = "S16";
+        d.forms.extend([a, b]);
     } else {
         let (f30, f16, f15) = (&forms[0].1, &forms[1].1, &forms[2].1);
         let mut a = renumber(f30);
@@ -950,6 +1054,18 @@ fn learn(
         renum(rec);
     }
     d.reply = reply;
+    d.echoes = l30
+        .echoes
+        .iter()
+        .map(|(o, path, c, k)| {
+            (
+                out_index.iter().position(|x| x == o).unwrap_or(*o),
+                path.clone(),
+                *c,
+                number_index(*k),
+            )
+        })
+        .collect();
     d.payload = l30.payload.clone();
     for f in &l30.flags {
         d.flags.push(f.clone());
@@ -1131,6 +1247,38 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> Vec<String> {
         } else if !f.reply.is_empty() || f.records.is_some() {
             bad.push(format!("reply on {cname}: not mapped"));
         }
+        // Arguments written back into outputs.
+        if cl.reply_len > 0 {
+            let out_pos = |o: u8| {
+                f.outs()
+                    .nth(o as usize)
+                    .and_then(|(n, _)| f.params.iter().position(|p| p.name() == n))
+            };
+            let mut want: Vec<(Option<usize>, String, Option<usize>)> = f
+                .reply
+                .iter()
+                .filter_map(|x| {
+                    let a = x.arg?;
+                    Some((
+                        out_pos(x.out),
+                        x.to.unwrap_or("").to_string(),
+                        positions.get(a as usize).copied(),
+                    ))
+                })
+                .collect();
+            let mut got: Vec<(Option<usize>, String, Option<usize>)> = cl
+                .echoes
+                .iter()
+                .map(|(o, path, _, k)| (Some(*o), member_name(path), Some(*k)))
+                .collect();
+            want.sort();
+            got.sort();
+            if want != got {
+                bad.push(format!(
+                    "echoed arguments on {cname}: committed {want:?}, learnt {got:?}"
+                ));
+            }
+        }
         // The payload: the bytes of one input record sent.
         if let Some((_, ty)) = f.input() {
             let pos = f
@@ -1172,6 +1320,40 @@ fn reason(e: &str) -> String {
         .find(|c: char| c.is_ascii_digit() || c == '(' || c == ':')
         .unwrap_or(e.len());
     e[..cut].trim().to_string()
+}
+
+/// What kind of thing a flag leaves unsettled (the counts per function).
+fn category(flag: &str) -> &'static str {
+    const KINDS: &[(&str, &str)] = &[
+        ("timed out", "calls timed out"),
+        ("crashed on a", "crashes on a coded reply"),
+        (
+            "every coded reply was refused",
+            "coded replies refused (count, length or type tag)",
+        ),
+        ("pinned at reply byte", "a count pinned to map the reply"),
+        (
+            "replies refused until argument",
+            "a length or room argument",
+        ),
+        ("written past the pointee", "writes past the pointee"),
+        ("maps otherwise on", "reply differs per class"),
+        ("local checks differ on", "local checks differ per class"),
+        ("check:", "local checks not one range"),
+        ("more subpackets or frames", "several subpackets or frames"),
+        ("computed:", "request word computed"),
+        ("goes in word", "input field in a request word"),
+        ("input ", "input bytes not a plain integer"),
+        ("echo", "argument echoed into the output"),
+        ("float", "floating-point fields"),
+        ("no output written", "no output written, no input read"),
+        ("punch press", "learnt on a punch press"),
+        ("reply:", "computed or constant output bytes"),
+    ];
+    KINDS
+        .iter()
+        .find(|k| flag.contains(k.0))
+        .map_or("other", |k| k.1)
 }
 
 pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
@@ -1227,8 +1409,10 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
                     "flagged"
                 };
                 *counts.entry(kind.into()).or_default() += 1;
-                for f in &l.draft.flags {
-                    *flag_reasons.entry(reason(f)).or_default() += 1;
+                let kinds: std::collections::BTreeSet<&str> =
+                    l.draft.flags.iter().map(|f| category(f)).collect();
+                for k in kinds {
+                    *flag_reasons.entry(k.to_string()).or_default() += 1;
                 }
                 if o.check {
                     let f = fwlib32::spec::find(name).unwrap();
@@ -1271,11 +1455,19 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
         println!("  {k}: {n}");
     }
     if !flag_reasons.is_empty() {
-        println!("  flags by reason:");
+        println!(
+            "  flagged functions by what is unsettled (one function may count under several):"
+        );
         for (k, n) in &flag_reasons {
             println!("    {k}: {n}");
         }
     }
+    let missing = counts
+        .iter()
+        .filter(|(k, _)| k.contains("not in FANUC's library"))
+        .map(|(_, n)| n)
+        .sum::<usize>();
+    println!("  in FANUC's library: {}", names.len() - missing);
     if !lines.is_empty() {
         lines.sort();
         println!(

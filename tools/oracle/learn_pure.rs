@@ -1010,6 +1010,9 @@ pub struct Draft {
     /// Payload fields of an input (write), as placed integers read from the
     /// input (`at`: request payload offset).
     pub payload: Vec<Placed>,
+    /// Number arguments written back into an output: (output, leaf,
+    /// C integer, number argument).
+    pub echoes: Vec<(usize, String, Int, usize)>,
     /// What the learner could not settle.
     pub flags: Vec<String>,
 }
@@ -1027,6 +1030,10 @@ fn int_name(i: Int) -> &'static str {
 
 /// `path` as the table's member: indices left out (`data[3].x` → `data`
 /// for the first element; later elements are counted into `n`).
+pub fn member_name(path: &str) -> String {
+    member_of(path)
+}
+
 fn member_of(path: &str) -> String {
     let mut s = String::new();
     let mut depth = 0;
@@ -1204,8 +1211,21 @@ impl Draft {
             );
         }
         let _ = writeln!(s, "        ],");
-        if !self.reply.is_empty() {
+        if !self.reply.is_empty() || !self.echoes.is_empty() {
             let _ = writeln!(s, "        reply: &[");
+            for (o, path, c, k) in &self.echoes {
+                let o = if *o == 0 {
+                    String::new()
+                } else {
+                    format!(" /* output {o} */")
+                };
+                let _ = writeln!(
+                    s,
+                    "            echo({k}, {:?}, {}),{o}",
+                    member_of(path),
+                    int_name(*c)
+                );
+            }
             s.push_str(&fields_text(&self.reply, 0, "            "));
             let _ = writeln!(s, "        ],");
         }

@@ -288,8 +288,9 @@ static char *text(int i, long *n) {
  * symbol with up to 12 integer-class arguments (the x86-64 ABI passes
  * short, long and pointer arguments alike; a callee reads the ones it
  * declares). b0 and b1 are filled with FILL first. An ARG is a number
- * (decimal or 0x hex), `H` (the handle), `@OFF` (a pointer to b0 + OFF) or
- * `@OFF=HEX` (that pointer, its bytes set first). The learner
+ * (decimal or 0x hex), `H` (the handle), `@OFF` (a pointer to b0 + OFF),
+ * `@OFF!Z` (with a 0 at b0 + OFF + Z: a C string's end) or `@OFF=HEX`
+ * (that pointer, its bytes set first). The learner
  * (tools/oracle/learn.rs) forms these from the header's prototypes. */
 static short w_callx(void) {
     typedef short (*anyfn)(long, long, long, long, long, long, long, long, long, long, long, long);
@@ -306,6 +307,10 @@ static short w_callx(void) {
             char *end;
             long off = strtol(s + 1, &end, 0);
             if (off < 0 || off >= BUF) off = 0;
+            if (*end == '!') {
+                long z = strtol(end + 1, &end, 0);
+                if (off + z >= 0 && off + z < BUF) b0[off + z] = 0;
+            }
             if (*end == '=') {
                 const char *h = end + 1;
                 for (long k = 0; h[2 * k] && h[2 * k + 1] && off + k < BUF; k++) {
