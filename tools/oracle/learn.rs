@@ -1024,9 +1024,22 @@ fn learn(
     // Reply: a group of fields repeated at a fixed stride into an array
     // (a member's or the caller's) is the records.
     let mut reply = l30.reply.clone();
-    if let Some(r) = repeat(&reply) {
+    let elem_size = |out: usize| match sh.args.get(out) {
+        Some(Arg::Ptr(t) | Arg::IntPtr(t)) => t.size().max(1),
+        _ => 0,
+    };
+    // records into the caller's array: one pointee each
+    let whole = repeat(&reply).filter(|r| r.out == elem_size(reply[r.first].out));
+    if let Some(r) = whole {
         let rec: Vec<Placed> = reply[r.first..r.first + r.per].to_vec();
-        if r.per > 1 || !l30.moved_past.is_empty() {
+        reply.truncate(r.first);
+        d.records = Some((rec, r));
+    } else {
+        // the first pointee's fields (what was written past it is
+        // flagged), records in one of its arrays
+        reply.retain(|x| !x.path.starts_with('[') || x.path.starts_with("[0]"));
+        if let Some(r) = repeat(&reply).filter(|r| r.per > 1) {
+            let rec: Vec<Placed> = reply[r.first..r.first + r.per].to_vec();
             reply.truncate(r.first);
             d.records = Some((rec, r));
         }

@@ -1096,7 +1096,7 @@ pub fn fields_text(p: &[Placed], from: usize, indent: &str) -> String {
                 break;
             }
         }
-        let first_elem = !x.path.contains('[') || x.path.ends_with("[0]") || m.is_empty();
+        let first_elem = x.path.split('[').skip(1).all(|k| k.starts_with("0]"));
         let note = if first_elem {
             ""
         } else {
@@ -1239,14 +1239,18 @@ impl Draft {
                 x.at -= from;
                 x.path = x
                     .path
-                    .split_once("].")
-                    .map_or(x.path.clone(), |p| p.1.to_string());
+                    .rsplit_once("].")
+                    .map_or(String::new(), |p| p.1.to_string());
             }
             s.push_str(&fields_text(&local, 0, "                "));
             let _ = writeln!(s, "            ],");
+            let to = rec
+                .first()
+                .map(|x| member_of(x.path.rsplit_once('[').map_or("", |p| p.0)))
+                .unwrap_or_default();
             let _ = writeln!(
                 s,
-                "            out: {}, to: \"\" /* from byte {base_off} */, elem: \"?\" /* {} bytes */,",
+                "            out: {}, to: {to:?} /* from byte {base_off} */, elem: \"?\" /* {} bytes */,",
                 rec.first().map_or(0, |x| x.out),
                 r.out
             );
