@@ -164,6 +164,19 @@ fn sign_extension_is_a_signed_wire_word() {
     assert!(odd.is_empty(), "{odd:?}");
     assert_eq!(p.len(), 1);
     assert_eq!((p[0].at, p[0].wire, p[0].c), (200, I16, I32));
+    // the bytes it moves: the word swapped, then its sign twice, as the
+    // byte map saw them
+    let m = moves(&p);
+    assert_eq!(
+        m,
+        vec![
+            (0, 4, Src::At(201)),
+            (0, 5, Src::At(200)),
+            (0, 6, Src::Sign(200)),
+            (0, 7, Src::Sign(200)),
+        ]
+    );
+    assert_eq!(&map[4..8], &[m[0].2, m[1].2, m[2].2, m[3].2]);
 }
 
 /// The committed-entry side: the same library described as a table entry
