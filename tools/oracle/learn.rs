@@ -895,6 +895,7 @@ fn learn(
     let sh = shape(proto)?;
     let types: Vec<Ty> = proto.params.iter().map(|p| p.0.clone()).collect();
     let mut per = Vec::new();
+    let mut local = Vec::new();
     let mut machine = None;
     let mut classes: &[(&str, &str)] = &CLASSES;
     let mut k = 0;
@@ -913,6 +914,8 @@ fn learn(
                 continue;
             }
             Err(e) if per.is_empty() => return Err(machine.unwrap_or(e)),
+            // a local answer on this class: no form for it
+            Err(e) if e.starts_with("no traffic") => local.push(format!("on {class}: {e}")),
             Err(e) => {
                 return Err(format!("learnt on the 30i class, not on {class}: {e}"));
             }
@@ -982,7 +985,27 @@ fn learn(
                 .into(),
         );
     }
-    if forms.iter().all(|f| same(&f.1, &forms[0].1)) {
+    for l in &local {
+        d.flags
+            .push(format!("no request {l} (a local answer on that class)"));
+    }
+    if !local.is_empty() {
+        // each learnt class its own form, Series 15 before the 16i class
+        let mut v: Vec<DForm> = forms
+            .iter()
+            .map(|(c, f)| {
+                let mut f = renumber(f);
+                f.classes = c;
+                f
+            })
+            .collect();
+        v.sort_by_key(|f| match f.classes {
+            "S30" => 0,
+            "S15" => 1,
+            _ => 2,
+        });
+        d.forms = v;
+    } else if forms.iter().all(|f| same(&f.1, &forms[0].1)) {
         d.forms.push(renumber(&forms[0].1));
     } else if forms.len() == 2 {
         let (mut a, mut b) = (renumber(&forms[0].1), renumber(&forms[1].1));
@@ -1361,6 +1384,7 @@ fn category(flag: &str) -> &'static str {
         ("float", "floating-point fields"),
         ("no output written", "no output written, no input read"),
         ("punch press", "learnt on a punch press"),
+        ("a local answer on that class", "no request on some class"),
         ("reply:", "computed or constant output bytes"),
     ];
     KINDS
