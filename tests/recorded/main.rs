@@ -2,7 +2,7 @@
 //! (tests/focas-protocol) and the oracle's cases (tests/vectors) through our
 //! exported functions (vectors.rs) and through the oracle's probe (oracle.rs),
 //! the codec against them (codec.rs), and COMPATIBILITY.md generated from
-//! them (compat.rs). vectors.rs replays cnc_exitprocess in this process
+//! them (compat.rs), and the learner's pure logic (learn.rs). vectors.rs replays cnc_exitprocess in this process
 //! (under its own lock): no other module here holds a handle of the library
 //! linked into this process.
 
@@ -30,5 +30,6 @@ mod toolchain;
 
 mod codec;
 mod compat;
+mod learn;
 mod oracle;
 mod vectors;

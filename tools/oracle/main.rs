@@ -6,6 +6,7 @@
 //! cargo run --example oracle -- verify  --lib LIB.so [FILE.json ...]
 //! cargo run --example oracle -- list    [--only WORD]
 //! cargo run --release --example oracle -- fuzz --lib FANUC.so [--seconds N] [--seed S] [--only f,g]
+//! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h [--only f,g] [--check | --unexported] [--out FILE]
 //! ```
 //!
 //! `record` runs every generated case (tools/oracle/cases.rs) against a
@@ -25,6 +26,7 @@ mod cases;
 mod deviations;
 mod fake;
 mod fuzz;
+mod learn;
 mod probe;
 mod profiles;
 mod replay;
@@ -172,6 +174,9 @@ struct Args {
     files: Vec<PathBuf>,
     seconds: u64,
     seed: u64,
+    header: Option<PathBuf>,
+    check: bool,
+    unexported: bool,
 }
 
 fn args() -> Args {
@@ -185,11 +190,17 @@ fn args() -> Args {
         files: Vec::new(),
         seconds: 60,
         seed: 1,
+        header: None,
+        check: false,
+        unexported: false,
     };
     while let Some(x) = a.next() {
         match x.as_str() {
             "--lib" => r.lib = a.next().map(PathBuf::from),
             "--ours" => r.ours = a.next().map(PathBuf::from),
+            "--header" => r.header = a.next().map(PathBuf::from),
+            "--check" => r.check = true,
+            "--unexported" => r.unexported = true,
             "--only" => r.only.extend(
                 a.next()
                     .into_iter()
@@ -380,6 +391,27 @@ fn main() {
             }
             println!("{n} cases verified, {bad} differ");
         }
+        "learn" => {
+            let opts = learn::Opts {
+                lib: need_lib(),
+                header: a
+                    .header
+                    .clone()
+                    .unwrap_or_else(|| panic!("give FANUC's header: --header PATH")),
+                only: a.only.clone(),
+                out: a.files.first().cloned().or_else(|| {
+                    std::env::args()
+                        .skip_while(|x| x != "--out")
+                        .nth(1)
+                        .map(PathBuf::from)
+                }),
+                check: a.check,
+                unexported: a.unexported,
+            };
+            let code = learn::run(&opts, &probe_exe);
+            let _ = std::fs::remove_dir_all(probe_exe.parent().unwrap());
+            std::process::exit(code);
+        }
         "fuzz" => {
             let opts = fuzz::Opts {
                 fanuc: need_lib(),
@@ -395,7 +427,7 @@ fn main() {
         }
         _ => {
             eprintln!(
-                "usage: oracle record|compare|verify|list|fuzz [--lib PATH] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]"
+                "usage: oracle record|compare|verify|list|fuzz|learn [--lib PATH] [--header PATH] [--check] [--unexported] [--ours PATH] [--only WORD,..] [--out DIR] [FILES]"
             );
             std::process::exit(2);
         }

@@ -51,6 +51,8 @@ static int argc_;
 static jmp_buf missing;
 static const char *missing_name;
 static char fields[1024];
+/* The byte buffers are filled with before a call (callx sets it). */
+static unsigned char fill = FILL;
 
 /* Every socket of the library has TCP_NODELAY on (the probe is linked with
  * -rdynamic, so the library's connect and setsockopt are these). FANUC's
@@ -282,6 +284,49 @@ static char *text(int i, long *n) {
     do { long n_; char *t_ = text(1, &n_); int32_t l_[2] = {(int32_t)(argc_ > 2 ? N(2) : n_), (int32_t)0xCCCCCCCC}; \
          short r_ = F(fn)(H, (long *)l_, t_); field("length", l_[0]); return r_; } while (0)
 
+/* callx FILL NAME ARG...: any function of FANUC's header, called by its
+ * symbol with up to 12 integer-class arguments (the x86-64 ABI passes
+ * short, long and pointer arguments alike; a callee reads the ones it
+ * declares). b0 and b1 are filled with FILL first. An ARG is a number
+ * (decimal or 0x hex), `H` (the handle), `@OFF` (a pointer to b0 + OFF),
+ * `@OFF!Z` (with a 0 at b0 + OFF + Z: a C string's end) or `@OFF=HEX`
+ * (that pointer, its bytes set first). The learner
+ * (tools/oracle/learn.rs) forms these from the header's prototypes. */
+static short w_callx(void) {
+    typedef short (*anyfn)(long, long, long, long, long, long, long, long, long, long, long, long);
+    long a[12] = {0};
+    fill = (unsigned char)N(1);
+    memset(b0, fill, BUF);
+    memset(b1, fill, BUF);
+    anyfn f = (anyfn)need(argv_[2]);
+    for (int i = 3; i < argc_ && i - 3 < 12; i++) {
+        const char *s = argv_[i];
+        if (strcmp(s, "H") == 0) {
+            a[i - 3] = H;
+        } else if (s[0] == '@') {
+            char *end;
+            long off = strtol(s + 1, &end, 0);
+            if (off < 0 || off >= BUF) off = 0;
+            if (*end == '!') {
+                long z = strtol(end + 1, &end, 0);
+                if (off + z >= 0 && off + z < BUF) b0[off + z] = 0;
+            }
+            if (*end == '=') {
+                const char *h = end + 1;
+                for (long k = 0; h[2 * k] && h[2 * k + 1] && off + k < BUF; k++) {
+                    unsigned v;
+                    sscanf(h + 2 * k, "%2x", &v);
+                    b0[off + k] = (unsigned char)v;
+                }
+            }
+            a[i - 3] = (long)(b0 + off);
+        } else {
+            a[i - 3] = (long)strtoll(s, NULL, 0);
+        }
+    }
+    return f(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10], a[11]);
+}
+
 /*
  * Every word: WORD(name, body). The body returns the call's result.
  */
@@ -506,7 +551,8 @@ static char *text(int i, long *n) {
     WORD(rdspdlnamem, SHORT_IO(num, 1, F(cnc_rdspdlnamem)(H, &num, B0)))                          \
     WORD(rdalmmsg3, SHORT_IO(num, 2, F(cnc_rdalmmsg3)(H, N(1), &num, B0)))                        \
     /* our extensions (fwlib32_ext.h) */                                                          \
-    WORD(fwlib_set_reconnect, return F(fwlib_set_reconnect)(H, N(1)))
+    WORD(fwlib_set_reconnect, return F(fwlib_set_reconnect)(H, N(1)))                             \
+    WORD(callx, return w_callx())
 
 #define WORD(name, ...) static short w__##name(void) { __VA_ARGS__; }
 WORDS
@@ -536,7 +582,7 @@ static void remove_tmpdir(void) {
 
 static void print_hex(const char *name, const unsigned char *b) {
     int end = BUF;
-    while (end > 0 && b[end - 1] == FILL) end--;
+    while (end > 0 && b[end - 1] == fill) end--;
     printf(",\"%s\":\"", name);
     for (int i = 0; i < end; i++) printf("%02x", b[i]);
     putchar('"');
@@ -587,6 +633,7 @@ int main(int argc, char **argv) {
          * (some read an input there, as cnc_gettimer its type). */
         if (!batching) io_n = 0;
         if (strcmp(argv_[0], "fwlib_batch_end") != 0) {
+            fill = FILL;
             memset(b0, FILL, BUF);
             memset(b1, FILL, BUF);
         }

@@ -1,0 +1,1522 @@
+//! `oracle learn`: learns a function of FANUC's header from FANUC's library
+//! (issue 24, the learner) and writes a draft table entry for it.
+//!
+//! ```text
+//! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h [--only f,g] [--out FILE]
+//! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h --check   # the described functions
+//! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h --unexported
+//! ```
+//!
+//! The header is read at run time from the path given (preprocessed by
+//! `cc -E -P`); nothing of it is kept. Each call goes through the probe's
+//! `callx` word against a fake CNC (tools/oracle/fake.rs) on the 30i, 16i
+//! and Series 15 profiles. Per function:
+//! - the plain call (every number 1, counts 4, outputs filled);
+//! - each number varied alone: the request words are diffed to learn which
+//!   argument lands in which word, per class;
+//! - each number swept over its edges, then bisected: the values that
+//!   return without traffic are the local checks;
+//! - each pointer filled with position codes: the request bytes that come
+//!   from it (an input struct's fields in the words or payload);
+//! - replies of position-coded bytes (two passes) with the outputs filled
+//!   with 0xCC and 0x33: which reply byte lands in which output byte; a
+//!   rejected reply is retried shorter, then with a 16-bit count pinned at
+//!   small offsets.
+//!
+//! `--check` learns the functions already described in src/spec/table and
+//! compares each draft with the committed entry (request forms per class,
+//! local checks on the values swept, reply bytes moved); `--unexported`
+//! learns every `cnc_`/`pmc_` function of the header we do not export and
+//! counts clean, flagged and failed drafts by reason.
+
+#[path = "learn_pure.rs"]
+pub mod pure;
+
+use crate::fake::{Fake, Rec, Sub as RespSub};
+use crate::probe::{Answer, Probe};
+use crate::profiles::profile;
+use fwlib32::spec::Int;
+use pure::*;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc;
+use std::time::Duration;
+
+const CLASSES: [(&str, &str); 3] = [("v3", "S30"), ("v2", "S16"), ("s15", "S15")];
+/// The punch press forms of the 30i and 16i classes (no Series 15 one).
+const PUNCH: [(&str, &str); 2] = [("v3pu", "S30"), ("v2pu", "S16")];
+const BUF: usize = 65536;
+/// How long one call may take before the probe is ended.
+const CALL_LIMIT: Duration = Duration::from_secs(6);
+
+pub struct Opts {
+    pub lib: PathBuf,
+    pub header: PathBuf,
+    pub only: Vec<String>,
+    pub out: Option<PathBuf>,
+    pub check: bool,
+    pub unexported: bool,
+}
+
+/// One live conversation: a fake CNC of a class and a probe connected to it.
+struct Session<'a> {
+    probe_exe: &'a Path,
+    lib: &'a Path,
+    fake: Fake,
+    probe: Option<Probe>,
+    pub calls: usize,
+    /// Calls that took longer than a second (the library waited for a
+    /// reply that never came): after three, no more calls are made.
+    pub slow: usize,
+}
+
+/// What one call did.
+struct Call {
+    ret: Option<i64>,
+    crashed: bool,
+    missing: bool,
+    b0: Vec<u8>,
+    reqs: Vec<Vec<u8>>,
+    frames: usize,
+}
+
+impl<'a> Session<'a> {
+    fn new(probe_exe: &'a Path, lib: &'a Path, class: &'static str) -> Session<'a> {
+        Session {
+            probe_exe,
+            lib,
+            fake: Fake::start(profile(class), Duration::from_millis(2500), None),
+            probe: None,
+            calls: 0,
+            slow: 0,
+        }
+    }
+    fn probe(&mut self) -> &mut Probe {
+        if self.probe.is_none() {
+            let mut p = Probe::spawn(
+                std::process::Command::new(self.probe_exe),
+                self.lib,
+                self.fake.port,
+            );
+            p.call("startup 1 fwlib.log");
+            p.call("alloc 3");
+            self.fake.take(Duration::from_millis(2));
+            self.probe = Some(p);
+        }
+        self.probe.as_mut().unwrap()
+    }
+    /// One call: `cmd` the callx arguments after the fill; `mutate` makes
+    /// the next data reply.
+    fn call(&mut self, fill: u8, cmd: &str, mutate: Option<fake_reply::Maker>) -> Call {
+        if self.slow >= 3 {
+            return Call {
+                ret: None,
+                crashed: true,
+                missing: false,
+                b0: Vec::new(),
+                reqs: Vec::new(),
+                frames: 0,
+            };
+        }
+        self.calls += 1;
+        let started = std::time::Instant::now();
+        let pid = self.probe().pid();
+        if let Some(m) = mutate {
+            self.fake.mutate_next(m);
+        }
+        let (tx, rx) = mpsc::channel::<()>();
+        let dog = std::thread::spawn(move || {
+            if rx.recv_timeout(CALL_LIMIT).is_err() {
+                // SAFETY: the probe we started, by its id.
+                unsafe { libc::kill(pid as i32, libc::SIGKILL) };
+            }
+        });
+        let answer = self.probe().call(&format!("callx {fill} {cmd}"));
+        let _ = tx.send(());
+        let _ = dog.join();
+        if started.elapsed() > Duration::from_secs(1) {
+            self.slow += 1;
+        }
+        self.fake.mutate_done();
+        let frames: Vec<Rec> = self.fake.take(Duration::from_millis(1));
+        let reqs: Vec<Vec<u8>> = frames
+            .iter()
+            .filter(|f| f.dir == "req")
+            .map(|f| f.bytes.clone())
+            .collect();
+        let mut c = Call {
+            ret: None,
+            crashed: false,
+            missing: false,
+            b0: Vec::new(),
+            frames: reqs.len(),
+            reqs,
+        };
+        match answer {
+            Answer::Done { ret, b0, .. } => {
+                c.ret = Some(ret);
+                c.b0 = b0;
+                c.b0.resize(BUF, fill);
+            }
+            Answer::Missing(_) => c.missing = true,
+            Answer::Crashed(_) => {
+                c.crashed = true;
+                self.probe = None; // a new one for the next call
+            }
+        }
+        c
+    }
+}
+
+impl Drop for Session<'_> {
+    fn drop(&mut self) {
+        if let Some(p) = self.probe.take() {
+            p.finish();
+        }
+    }
+}
+
+/// Replies the fake CNC sends: every subpacket's error cleared and its
+/// payload replaced.
+mod fake_reply {
+    pub type Maker = crate::fake::Mutator;
+    pub fn coded(len: usize, pass: usize, pin: Option<(usize, u16)>) -> Maker {
+        Box::new(move |subs: &mut Vec<super::RespSub>| {
+            for (k, s) in subs.iter_mut().enumerate() {
+                s.0[8..14].fill(0);
+                let mut p: Vec<u8> = (0..len)
+                    .map(|i| super::pure::code(k * len + i, pass))
+                    .collect();
+                if let Some((at, v)) = pin {
+                    if at + 2 <= p.len() {
+                        p[at..at + 2].copy_from_slice(&v.to_be_bytes());
+                    }
+                }
+                s.1 = p;
+            }
+        })
+    }
+}
+
+/// How an argument of the prototype is passed.
+#[derive(Clone, Debug)]
+enum Arg {
+    /// A number: its C integer type.
+    Num(Ty),
+    /// A pointer to an integer: its value read before and after the call.
+    IntPtr(Ty),
+    /// A pointer to anything else (struct, char, void, array).
+    Ptr(Ty),
+}
+
+struct Shape {
+    args: Vec<Arg>,
+    /// Each pointer's region in b0: (offset, span).
+    regions: Vec<Option<(usize, usize)>>,
+}
+
+fn shape(p: &Proto) -> Result<Shape, String> {
+    let Some((first, _)) = p.params.first() else {
+        return Err("no handle parameter".into());
+    };
+    if !matches!(first, Ty::Int { size: 2, .. }) {
+        return Err("no handle parameter".into());
+    }
+    let mut args = Vec::new();
+    for (t, text) in &p.params[1..] {
+        args.push(match t {
+            Ty::Int { .. } => Arg::Num(t.clone()),
+            Ty::Ptr(inner) => match &**inner {
+                i @ Ty::Int { size: 2 | 4, .. } => Arg::IntPtr(i.clone()),
+                i => Arg::Ptr(i.clone()),
+            },
+            Ty::Float(_) => return Err(format!("a floating-point argument ({text})")),
+            _ => return Err(format!("an argument passed by value ({text})")),
+        });
+    }
+    if args.len() > 11 {
+        return Err("more than 11 arguments".into());
+    }
+    let nptr = args.iter().filter(|a| !matches!(a, Arg::Num(_))).count();
+    let span = BUF.checked_div(nptr).map_or(0, |x| x / 16 * 16);
+    let mut regions = Vec::new();
+    let mut k = 0;
+    for a in &args {
+        if matches!(a, Arg::Num(_)) {
+            regions.push(None);
+        } else {
+            regions.push(Some((k * span, span)));
+            k += 1;
+        }
+    }
+    for (a, r) in args.iter().zip(&regions) {
+        if let (Arg::Ptr(t), Some((_, span))) = (a, r) {
+            if t.size() > *span {
+                return Err(format!("a {}-byte output over its room", t.size()));
+            }
+        }
+    }
+    Ok(Shape { args, regions })
+}
+
+fn conv_of(t: &Ty) -> fn(i64) -> i32 {
+    match t {
+        Ty::Int {
+            size: 1,
+            signed: true,
+        } => |v| v as i8 as i32,
+        Ty::Int {
+            size: 1,
+            signed: false,
+        } => |v| v as u8 as i32,
+        Ty::Int {
+            size: 2,
+            signed: true,
+        } => |v| v as i16 as i32,
+        Ty::Int {
+            size: 2,
+            signed: false,
+        } => |v| v as u16 as i32,
+        _ => |v| v as i32,
+    }
+}
+
+/// The length of the C string a `char *` or `void *` argument holds (its
+/// 0 byte reads as kept in the reply map).
+const STRING: usize = 32;
+
+fn is_bytes(a: &Arg) -> bool {
+    matches!(a, Arg::Ptr(Ty::Int { size: 1, .. } | Ty::Void))
+}
+
+/// A little-endian integer's value.
+fn le_value(b: &[u8], signed: bool) -> i64 {
+    let mut v: i64 = 0;
+    for (k, x) in b.iter().enumerate() {
+        v |= (*x as i64) << (8 * k);
+    }
+    let bits = 8 * b.len() as u32;
+    if signed && bits < 64 && v >> (bits - 1) & 1 == 1 {
+        v -= 1 << bits;
+    }
+    v
+}
+
+fn hex(b: &[u8]) -> String {
+    b.iter().map(|x| format!("{x:02x}")).collect()
+}
+
+/// The integer's bytes as C holds it (little-endian).
+fn native(t: &Ty, v: i64) -> Vec<u8> {
+    v.to_le_bytes()[..t.size().min(8)].to_vec()
+}
+
+/// Everything one call is made of.
+#[derive(Clone)]
+struct Setup {
+    /// The value of each number and int pointer (others unused).
+    vals: Vec<i64>,
+    /// Bytes to put at a pointer's region start (position codes).
+    fill_ptr: Vec<Option<Vec<u8>>>,
+}
+
+fn command(name: &str, sh: &Shape, s: &Setup) -> String {
+    let mut c = format!("{name} H");
+    for (i, a) in sh.args.iter().enumerate() {
+        match (a, sh.regions[i]) {
+            (Arg::Num(_), _) => c.push_str(&format!(" {}", s.vals[i])),
+            (Arg::IntPtr(t), Some((off, _))) => {
+                c.push_str(&format!(" @{off}={}", hex(&native(t, s.vals[i]))))
+            }
+            (Arg::Ptr(_), Some((off, span))) => match &s.fill_ptr[i] {
+                Some(b) => c.push_str(&format!(" @{off}={}", hex(b))),
+                None if is_bytes(&sh.args[i]) && span > STRING => {
+                    // a C string argument ends inside its room
+                    c.push_str(&format!(" @{off}!{STRING}"));
+                }
+                None => c.push_str(&format!(" @{off}")),
+            },
+            _ => c.push_str(" 0"),
+        }
+    }
+    c
+}
+
+/// The data requests of a call as subpackets.
+fn data_subs(c: &Call) -> Vec<Vec<Sub>> {
+    c.reqs.iter().filter_map(|f| subs(f)).collect()
+}
+
+fn traffic(c: &Call) -> bool {
+    !data_subs(c).is_empty()
+}
+
+/// Values a number is swept over.
+const EDGES: &[i64] = &[
+    0,
+    -1,
+    1,
+    2,
+    3,
+    4,
+    5,
+    8,
+    10,
+    16,
+    32,
+    100,
+    127,
+    128,
+    255,
+    256,
+    1000,
+    9999,
+    32767,
+    -32768,
+    65535,
+    65536,
+    2147483647,
+    -2147483648,
+    -2,
+    -100,
+];
+
+/// What was learnt of one function on one class.
+struct ClassLearnt {
+    form: Option<DForm>,
+    checks: Vec<LearntCheck>,
+    sweeps: Vec<Vec<i64>>,
+    reply: Vec<Placed>,
+    reply_len: usize,
+    asked: usize,
+    moved_past: Vec<String>,
+    payload: Vec<Placed>,
+    inputs: Vec<usize>,
+    outputs: Vec<usize>,
+    /// (output's argument, leaf, C integer, number argument echoed)
+    echoes: Vec<(usize, String, Int, usize)>,
+    flags: Vec<String>,
+}
+
+/// Learns `name` on one class. Err: the function could not be learnt at all.
+#[allow(clippy::needless_range_loop)] // arguments by index, as the prototype numbers them
+fn learn_class(
+    sess: &mut Session,
+    name: &str,
+    sh: &Shape,
+    hdr_types: &[Ty],
+) -> Result<ClassLearnt, String> {
+    let n = sh.args.len();
+    let mut flags = Vec::new();
+    let base_val = |a: &Arg| match a {
+        Arg::IntPtr(_) => 4,
+        _ => 1,
+    };
+    let mut base = Setup {
+        vals: sh.args.iter().map(base_val).collect(),
+        fill_ptr: vec![None; n],
+    };
+    let run = |sess: &mut Session, s: &Setup| sess.call(0xCC, &command(name, sh, s), None);
+    let mut c0 = run(sess, &base);
+    if c0.missing {
+        return Err("not in FANUC's library".into());
+    }
+    if c0.crashed {
+        return Err("crashed on the plain call".into());
+    }
+    // No traffic: find values of each number that send something.
+    if !traffic(&c0) {
+        'search: for i in 0..n {
+            if matches!(sh.args[i], Arg::Ptr(_)) {
+                continue;
+            }
+            for v in [0, 4, 100, 1000, -1, 10, 2, 32767] {
+                let mut s = base.clone();
+                s.vals[i] = v;
+                let c = run(sess, &s);
+                if traffic(&c) {
+                    base = s;
+                    c0 = c;
+                    break 'search;
+                }
+            }
+        }
+    }
+    if sess.slow > 0 {
+        return Err("the plain call waited for more than a second (timed out)".into());
+    }
+    let plain_code = c0.ret;
+    if !traffic(&c0) {
+        return Err(format!(
+            "no traffic (returns {} locally)",
+            plain_code.unwrap_or(i64::MIN)
+        ));
+    }
+    let s0 = data_subs(&c0);
+    let first = s0[0][0].clone();
+    let more = s0.iter().map(Vec::len).sum::<usize>() - 1 + (c0.frames - s0.len());
+    // Requests: each number varied alone.
+    let mut runs = vec![WordRun {
+        args: base.vals.clone(),
+        words: first.words,
+        payload_len: first.payload.len(),
+    }];
+    let mut sweeps = vec![Vec::new(); n];
+    let mut checks = Vec::new();
+    for i in 0..n {
+        if matches!(sh.args[i], Arg::Ptr(_)) {
+            continue;
+        }
+        let b = base.vals[i];
+        for v in [b + 1, b + 2, b - 1, b + 5] {
+            let mut s = base.clone();
+            s.vals[i] = v;
+            let c = run(sess, &s);
+            if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
+                if sub.cmd == first.cmd {
+                    runs.push(WordRun {
+                        args: s.vals.clone(),
+                        words: sub.words,
+                        payload_len: sub.payload.len(),
+                    });
+                }
+            }
+        }
+        // Local checks: the edges, then each boundary bisected.
+        let mut seen: BTreeMap<i64, Option<i16>> = BTreeMap::new();
+        let probe_v = |sess: &mut Session, v: i64, seen: &mut BTreeMap<i64, Option<i16>>| {
+            if let Some(x) = seen.get(&v) {
+                return *x;
+            }
+            let mut s = base.clone();
+            s.vals[i] = v;
+            let c = run(sess, &s);
+            let r = if traffic(&c) || c.crashed {
+                None
+            } else {
+                Some(c.ret.unwrap_or(0) as i16)
+            };
+            seen.insert(v, r);
+            r
+        };
+        probe_v(sess, b, &mut seen);
+        for &v in EDGES {
+            probe_v(sess, v, &mut seen);
+        }
+        // bisect between neighbours that differ
+        for _ in 0..4 {
+            let pts: Vec<(i64, Option<i16>)> = seen.iter().map(|(k, v)| (*k, *v)).collect();
+            let mut changed = false;
+            for w in pts.windows(2) {
+                let ((a, ra), (z, rz)) = (w[0], w[1]);
+                if ra.is_some() != rz.is_some() && z - a > 1 {
+                    let (mut lo, mut hi) = (a, z);
+                    let lo_ok = ra.is_none();
+                    for _ in 0..40 {
+                        if hi - lo <= 1 {
+                            break;
+                        }
+                        let m = lo + (hi - lo) / 2;
+                        let r = probe_v(sess, m, &mut seen);
+                        if r.is_none() == lo_ok {
+                            lo = m;
+                        } else {
+                            hi = m;
+                        }
+                    }
+                    changed = true;
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        // in the C parameter's values (65535 is a short's -1)
+        let conv = match &sh.args[i] {
+            Arg::Num(t) | Arg::IntPtr(t) => conv_of(t),
+            Arg::Ptr(_) => |v| v as i32,
+        };
+        let mut sweep: Vec<(i64, Option<i16>)> =
+            seen.iter().map(|(k, v)| (conv(*k) as i64, *v)).collect();
+        sweep.sort_by_key(|s| s.0);
+        sweep.dedup_by_key(|s| s.0);
+        sweeps[i] = sweep.iter().map(|s| s.0).collect();
+        match learn_check(i, &sweep) {
+            Ok(Some(c)) => checks.push(c),
+            Ok(None) => {}
+            Err(e) => flags.push(format!("check: {e}")),
+        }
+    }
+    let convs: Vec<fn(i64) -> i32> = sh
+        .args
+        .iter()
+        .map(|a| match a {
+            Arg::Num(t) | Arg::IntPtr(t) => conv_of(t),
+            Arg::Ptr(_) => |_| i32::MIN,
+        })
+        .collect();
+    let words = learn_words(&runs, &convs);
+    for (k, w) in words.iter().enumerate() {
+        if let WordSrc::Computed(v) = w {
+            flags.push(format!("word {k} computed: {v:?}"));
+        }
+    }
+    let form = DForm {
+        classes: "All",
+        class: first.class,
+        cmd: first.cmd,
+        words,
+        more,
+    };
+    if more > 0 {
+        flags.push(format!(
+            "{} more subpackets or frames after the first",
+            more
+        ));
+    }
+    // Inputs: each pointer's bytes position-coded; the request bytes from it.
+    let mut payload = Vec::new();
+    let mut inputs = Vec::new();
+    let base_req = req_bytes(&first);
+    for i in 0..n {
+        let (Some((_, span)), ty) = (
+            sh.regions[i],
+            match &sh.args[i] {
+                Arg::Ptr(t) => t.clone(),
+                _ => continue,
+            },
+        ) else {
+            continue;
+        };
+        let len = if is_bytes(&sh.args[i]) {
+            STRING
+        } else {
+            ty.size().max(1)
+        }
+        .min(span)
+        .min(4096);
+        let mut got: Vec<Vec<u8>> = Vec::new();
+        for pass in 0..PASSES {
+            let mut s = base.clone();
+            let mut b = coded(len, pass);
+            if len < span {
+                b.push(0);
+            }
+            s.fill_ptr[i] = Some(b);
+            let c = run(sess, &s);
+            match data_subs(&c).first().and_then(|f| f.first()) {
+                Some(sub) if sub.cmd == first.cmd => got.push(req_bytes(sub)),
+                _ => break,
+            }
+        }
+        if got.len() < PASSES {
+            continue;
+        }
+        // region byte q -> request byte r
+        let mut map = vec![Src::Kept; len];
+        let mut from_it = false;
+        for r in 0..got.iter().map(Vec::len).max().unwrap_or(0) {
+            let v: [u8; PASSES] = std::array::from_fn(|p| got[p].get(r).copied().unwrap_or(0));
+            if v.iter().all(|x| base_req.get(r) == Some(x)) {
+                continue;
+            }
+            if let Some(q) = decode(v) {
+                if q < len && map[q] == Src::Kept {
+                    map[q] = Src::At(r);
+                    from_it = true;
+                }
+            }
+        }
+        if from_it {
+            inputs.push(i);
+            let mut lv = Vec::new();
+            leaves(&ty, 0, "", &mut lv);
+            let mut odd = Vec::new();
+            let mut p = placed(0, &map, &lv, &mut odd);
+            for x in &mut p {
+                if x.at < 20 {
+                    flags.push(format!(
+                        "input {}'s {} goes in word {}",
+                        i,
+                        x.path,
+                        x.at / 4
+                    ));
+                }
+            }
+            p.retain(|x| x.at >= 20);
+            for x in &mut p {
+                x.at -= 20;
+            }
+            p.sort_by_key(|x| x.at);
+            payload.extend(p);
+            flags.extend(odd.into_iter().map(|o| format!("input {o}")));
+        }
+    }
+    // Replies: position-coded, two passes, two fills.
+    let ptrs: Vec<usize> = (0..n).filter(|i| sh.regions[*i].is_some()).collect();
+    let mut reply = Vec::new();
+    let mut moved_past = Vec::new();
+    let mut outputs = Vec::new();
+    let mut reply_len = 0;
+    let mut echoes = Vec::new();
+    let asked = sh
+        .args
+        .iter()
+        .enumerate()
+        .find(|(_, a)| matches!(a, Arg::IntPtr(_)))
+        .map_or(usize::MAX, |(i, _)| base.vals[i].max(0) as usize);
+    if !ptrs.is_empty() {
+        let out_total: usize = ptrs
+            .iter()
+            .map(|i| match &sh.args[*i] {
+                Arg::Ptr(t) | Arg::IntPtr(t) => t.size(),
+                _ => 0,
+            })
+            .sum();
+        // (payload length, a pinned 16-bit value, a number changed)
+        type Try = (usize, Option<(usize, u16)>, Option<(usize, i64)>);
+        let mut tries: Vec<Try> = vec![
+            (1428, None, None),
+            (out_total.max(4), None, None),
+            (64, None, None),
+            (8, None, None),
+        ];
+        for at in [0, 2, 4, 6, 8] {
+            for v in [1u16, 2] {
+                tries.push((1428, Some((at, v)), None));
+            }
+        }
+        for (i, a) in sh.args.iter().enumerate() {
+            if matches!(a, Arg::Num(_)) {
+                for v in [4096, 1000, 100, 32767, 8, 0, -1] {
+                    tries.push((1428, None, Some((i, v))));
+                }
+            }
+        }
+        let mut obs: Option<[[Vec<u8>; 2]; PASSES]> = None;
+        let mut accepted = None;
+        for (len, pin, change) in tries {
+            let mut setup = base.clone();
+            if let Some((i, v)) = change {
+                setup.vals[i] = v;
+            }
+            let mut got: [[Vec<u8>; 2]; PASSES] = Default::default();
+            let mut ok = true;
+            'runs: for pass in 0..PASSES {
+                for (f, fill) in [0xCCu8, 0x33].into_iter().enumerate() {
+                    let c = sess.call(
+                        fill,
+                        &command(name, sh, &setup),
+                        Some(fake_reply::coded(len, pass, pin)),
+                    );
+                    if c.crashed {
+                        flags.push(format!("crashed on a {len}-byte coded reply"));
+                        ok = false;
+                        break 'runs;
+                    }
+                    if c.ret != Some(0) {
+                        ok = false;
+                        break 'runs;
+                    }
+                    got[pass][f] = c.b0;
+                }
+            }
+            if ok {
+                if let Some((at, v)) = pin {
+                    flags.push(format!(
+                        "arbitrary replies refused: a 16-bit {v} pinned at reply byte {at} let it through (a count or type tag)"
+                    ));
+                }
+                if let Some((i, v)) = change {
+                    flags.push(format!(
+                        "replies refused until argument {i} was {v} (a length or room checked after the reply?)"
+                    ));
+                }
+                reply_len = len;
+                obs = Some(got);
+                accepted = Some((len, pin, setup));
+                break;
+            }
+        }
+        match obs {
+            None => flags
+                .push("every coded reply was refused (a count, length or type tag inside)".into()),
+            Some(o) => {
+                for &i in &ptrs {
+                    let (off, span) = sh.regions[i].unwrap();
+                    let cut = |v: &Vec<u8>| v[off..off + span].to_vec();
+                    let region: [[Vec<u8>; 2]; PASSES] =
+                        std::array::from_fn(|p| [cut(&o[p][0]), cut(&o[p][1])]);
+                    let mut map = map_bytes(&region);
+                    if is_bytes(&sh.args[i]) && map.get(STRING) == Some(&Src::Const(0)) {
+                        map[STRING] = Src::Kept; // the string's end, as passed
+                    }
+                    let ty = match &sh.args[i] {
+                        Arg::Ptr(t) | Arg::IntPtr(t) => t.clone(),
+                        _ => unreachable!(),
+                    };
+                    let size = ty.size().max(1);
+                    let written: Vec<usize> = map
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, s)| **s != Src::Kept)
+                        .map(|(k, _)| k)
+                        .collect();
+                    if written.is_empty() {
+                        continue;
+                    }
+                    outputs.push(i);
+                    let last = *written.last().unwrap();
+                    // a char or void buffer: its bytes as an array
+                    let ty = match ty {
+                        Ty::Void => Ty::Int {
+                            size: 1,
+                            signed: false,
+                        },
+                        t => t,
+                    };
+                    // The caller's array of pointees: bytes written past
+                    // the first are flagged (records into an array the
+                    // caller sized, or an overrun).
+                    let elems = last / size + 1;
+                    if last >= size {
+                        moved_past.push(format!(
+                            "argument {i}: {} bytes written into a {size}-byte pointee",
+                            last + 1
+                        ));
+                    }
+                    let mut lv = Vec::new();
+                    leaves(&Ty::Array(Box::new(ty.clone()), elems), 0, "", &mut lv);
+                    if elems == 1 {
+                        for l in &mut lv {
+                            l.path = l
+                                .path
+                                .trim_start_matches("[0]")
+                                .trim_start_matches('.')
+                                .to_string();
+                        }
+                    }
+                    let mut odd = Vec::new();
+                    reply.extend(placed(i, &map, &lv, &mut odd));
+                    // what the first pointee holds (past it: the flag above)
+                    let first: Vec<Leaf> = lv.iter().filter(|l| l.off < size).cloned().collect();
+                    odd.clear();
+                    placed(i, &map, &first, &mut odd);
+                    // A leaf of constant bytes equal to a number argument:
+                    // an echo when it follows the argument changed.
+                    let (len, pin, setup) = accepted.clone().unwrap();
+                    for l in &first {
+                        let bytes = &map[l.off..(l.off + l.ty.size()).min(map.len())];
+                        let consts: Option<Vec<u8>> = bytes
+                            .iter()
+                            .map(|b| match b {
+                                Src::Const(v) => Some(*v),
+                                _ => None,
+                            })
+                            .collect();
+                        let (Some(consts), Some(c)) = (consts, l.ty.int()) else {
+                            continue;
+                        };
+                        let value = le_value(&consts, matches!(c, Int::I8 | Int::I16 | Int::I32));
+                        for (k, a) in sh.args.iter().enumerate() {
+                            let Arg::Num(t) = a else { continue };
+                            if conv_of(t)(setup.vals[k]) as i64 != value {
+                                continue;
+                            }
+                            let mut s2 = setup.clone();
+                            s2.vals[k] += 2;
+                            let c2 = sess.call(
+                                0xCC,
+                                &command(name, sh, &s2),
+                                Some(fake_reply::coded(len, 0, pin)),
+                            );
+                            let (off, _) = sh.regions[i].unwrap();
+                            let got = c2.b0.get(off + l.off..off + l.off + consts.len());
+                            let want = conv_of(t)(s2.vals[k]) as i64;
+                            if c2.ret == Some(0)
+                                && got.is_some_and(|g| le_value(g, value < 0 || want < 0) == want)
+                            {
+                                echoes.push((i, l.path.clone(), c, k));
+                                let prefix = format!("out {i} {}: ", l.path);
+                                odd.retain(|o| !o.starts_with(&prefix));
+                                break;
+                            }
+                        }
+                    }
+                    for o in odd {
+                        flags.push(format!("reply: {o}"));
+                    }
+                    let _ = hdr_types;
+                }
+                reply.sort_by_key(|x| (x.at, x.out, x.off));
+            }
+        }
+    }
+    if sess.slow >= 3 {
+        flags.push("calls timed out: learning stopped early".into());
+    }
+    Ok(ClassLearnt {
+        form: Some(form),
+        checks,
+        sweeps,
+        reply,
+        reply_len,
+        asked,
+        moved_past,
+        payload,
+        inputs,
+        outputs,
+        echoes,
+        flags,
+    })
+}
+
+/// A request subpacket's words (20 bytes) and payload, as sent.
+fn req_bytes(s: &Sub) -> Vec<u8> {
+    let mut v: Vec<u8> = s.words.iter().flat_map(|w| w.to_be_bytes()).collect();
+    v.extend_from_slice(&s.payload);
+    v
+}
+
+/// The learnt function on every class, and its draft.
+struct Learnt {
+    draft: Draft,
+    per_class: Vec<(&'static str, ClassLearnt)>,
+}
+
+fn learn(
+    probe_exe: &Path,
+    lib: &Path,
+    hdr: &Header,
+    name: &str,
+    calls: &mut usize,
+) -> Result<Learnt, String> {
+    let proto = hdr.proto(name).ok_or("not in the header")?;
+    let sh = shape(proto)?;
+    let types: Vec<Ty> = proto.params.iter().map(|p| p.0.clone()).collect();
+    let mut per = Vec::new();
+    let mut local = Vec::new();
+    let mut machine = None;
+    let mut classes: &[(&str, &str)] = &CLASSES;
+    let mut k = 0;
+    while k < classes.len() {
+        let (class, cname) = classes[k];
+        let mut s = Session::new(probe_exe, lib, class);
+        let r = learn_class(&mut s, name, &sh, &types);
+        *calls += s.calls;
+        match r {
+            Ok(l) => per.push((cname, l)),
+            // FANUC's library sends some functions only to the machine
+            // type that has them: a punch press's start-up sysinfo.
+            Err(e) if per.is_empty() && machine.is_none() && e.starts_with("no traffic") => {
+                machine = Some(e);
+                classes = &PUNCH;
+                continue;
+            }
+            Err(e) if per.is_empty() => return Err(machine.unwrap_or(e)),
+            // a local answer on this class: no form for it
+            Err(e) if e.starts_with("no traffic") => local.push(format!("on {class}: {e}")),
+            Err(e) => {
+                return Err(format!("learnt on the 30i class, not on {class}: {e}"));
+            }
+        }
+        k += 1;
+    }
+    let punch = machine.is_some();
+    let mut d = Draft {
+        name: name.into(),
+        ..Draft::default()
+    };
+    let (_, l30) = &per[0];
+    // Params: names from the header's position, kinds from what was learnt.
+    let mut numbers = Vec::new();
+    for (i, a) in sh.args.iter().enumerate() {
+        let pname = format!("a{i}");
+        let spelled = proto.params[i + 1].1.clone();
+        d.params.push(match a {
+            Arg::Num(Ty::Int { size: 4, .. }) => {
+                numbers.push(i);
+                DParam::Long(pname)
+            }
+            Arg::Num(_) => {
+                numbers.push(i);
+                DParam::Short(pname)
+            }
+            Arg::IntPtr(t) => {
+                let in_word = l30
+                    .form
+                    .as_ref()
+                    .is_some_and(|f| f.words.contains(&WordSrc::Arg(i)));
+                if in_word {
+                    numbers.push(i);
+                    DParam::Count(pname)
+                } else {
+                    DParam::Out(pname, c_name(t, &spelled))
+                }
+            }
+            Arg::Ptr(t) => {
+                if l30.inputs.contains(&i) {
+                    DParam::In(pname, c_name(t, &spelled))
+                } else {
+                    DParam::Out(pname, c_name(t, &spelled))
+                }
+            }
+        });
+    }
+    let number_index = |i: usize| numbers.iter().position(|n| *n == i).unwrap_or(i);
+    // Forms: one for every class when they agree.
+    let forms: Vec<(&str, DForm)> = per
+        .iter()
+        .filter_map(|(c, l)| l.form.clone().map(|f| (*c, f)))
+        .collect();
+    let renumber = |f: &DForm| {
+        let mut f = f.clone();
+        for w in &mut f.words {
+            if let WordSrc::Arg(i) = w {
+                *w = WordSrc::Arg(number_index(*i));
+            }
+        }
+        f
+    };
+    let same = |a: &DForm, b: &DForm| a.class == b.class && a.cmd == b.cmd && a.words == b.words;
+    if punch {
+        d.flags.push(
+            "machine type: no traffic on a mill; learnt on a punch press (30i and 16i, no Series 15)"
+                .into(),
+        );
+    }
+    for l in &local {
+        d.flags
+            .push(format!("no request {l} (a local answer on that class)"));
+    }
+    if !local.is_empty() {
+        // each learnt class its own form, Series 15 before the 16i class
+        let mut v: Vec<DForm> = forms
+            .iter()
+            .map(|(c, f)| {
+                let mut f = renumber(f);
+                f.classes = c;
+                f
+            })
+            .collect();
+        v.sort_by_key(|f| match f.classes {
+            "S30" => 0,
+            "S15" => 1,
+            _ => 2,
+        });
+        d.forms = v;
+    } else if forms.iter().all(|f| same(&f.1, &forms[0].1)) {
+        d.forms.push(renumber(&forms[0].1));
+    } else if forms.len() == 2 {
+        let (mut a, mut b) = (renumber(&forms[0].1), renumber(&forms[1].1));
+        a.classes = "S30";
+        b.classes = "S16";
+        d.forms.extend([a, b]);
+    } else {
+        let (f30, f16, f15) = (&forms[0].1, &forms[1].1, &forms[2].1);
+        let mut a = renumber(f30);
+        a.classes = "S30";
+        if same(f15, f16) {
+            let mut b = renumber(f16);
+            b.classes = "S16";
+            d.forms.extend([a, b]);
+        } else {
+            let (mut b, mut c) = (renumber(f15), renumber(f16));
+            b.classes = "S15";
+            c.classes = "S16";
+            d.forms.extend([a, b, c]);
+        }
+    }
+    d.checks = l30
+        .checks
+        .iter()
+        .map(|c| LearntCheck {
+            arg: number_index(c.arg),
+            ..*c
+        })
+        .collect();
+    for (c, l) in &per[1..] {
+        if l.checks != l30.checks {
+            d.flags
+                .push(format!("local checks differ on {c}: {:?}", l.checks));
+        }
+        if moves(&l.reply) != moves(&l30.reply) {
+            d.flags.push(format!("the reply maps otherwise on {c}"));
+        }
+    }
+    // Reply: a group of fields repeated at a fixed stride into an array
+    // (a member's or the caller's) is the records.
+    let mut reply = l30.reply.clone();
+    let elem_size = |out: usize| match sh.args.get(out) {
+        Some(Arg::Ptr(t) | Arg::IntPtr(t)) => t.size().max(1),
+        _ => 0,
+    };
+    // records into the caller's array: one pointee each
+    let whole = repeat(&reply).filter(|r| r.out == elem_size(reply[r.first].out));
+    if let Some(r) = whole {
+        let rec: Vec<Placed> = reply[r.first..r.first + r.per].to_vec();
+        reply.truncate(r.first);
+        d.records = Some((rec, r));
+    } else {
+        // the first pointee's fields (what was written past it is
+        // flagged), records in one of its arrays
+        reply.retain(|x| !x.path.starts_with('[') || x.path.starts_with("[0]"));
+        if let Some(r) = repeat(&reply).filter(|r| r.per > 1) {
+            let rec: Vec<Placed> = reply[r.first..r.first + r.per].to_vec();
+            reply.truncate(r.first);
+            d.records = Some((rec, r));
+        }
+    }
+    d.flags.extend(
+        l30.moved_past
+            .iter()
+            .map(|m| format!("written past the pointee: {m}")),
+    );
+    // outputs by their index among the Out parameters
+    let out_index: Vec<usize> = d
+        .params
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| matches!(p, DParam::Out(..)))
+        .map(|(i, _)| i)
+        .collect();
+    let renum = |v: &mut Vec<Placed>| {
+        for p in v.iter_mut() {
+            p.out = out_index.iter().position(|o| *o == p.out).unwrap_or(p.out);
+        }
+    };
+    renum(&mut reply);
+    if let Some((rec, _)) = &mut d.records {
+        renum(rec);
+    }
+    d.reply = reply;
+    d.echoes = l30
+        .echoes
+        .iter()
+        .map(|(o, path, c, k)| {
+            (
+                out_index.iter().position(|x| x == o).unwrap_or(*o),
+                path.clone(),
+                *c,
+                number_index(*k),
+            )
+        })
+        .collect();
+    d.payload = l30.payload.clone();
+    for f in &l30.flags {
+        d.flags.push(f.clone());
+    }
+    for (c, l) in &per[1..] {
+        for f in &l.flags {
+            if !l30.flags.contains(f) {
+                d.flags.push(format!("{c}: {f}"));
+            }
+        }
+    }
+    if l30.outputs.is_empty() && sh.regions.iter().any(Option::is_some) && l30.inputs.is_empty() {
+        d.flags.push("no output written and no input read".into());
+    }
+    Ok(Learnt {
+        draft: d,
+        per_class: per,
+    })
+}
+
+/// The table's C type name of a pointee: a typedef's name as the header
+/// spells it, or the scalar's.
+fn c_name(t: &Ty, spelled: &str) -> String {
+    match t {
+        Ty::Int { size: 1, .. } => "char".into(),
+        Ty::Int {
+            size: 2,
+            signed: true,
+        } => "short".into(),
+        Ty::Int {
+            size: 2,
+            signed: false,
+        } => "unsigned short".into(),
+        Ty::Int { size: 4, .. } => "long".into(),
+        _ => spelled
+            .split_whitespace()
+            .find(|w| w.chars().next().is_some_and(|c| c.is_ascii_uppercase()))
+            .unwrap_or(spelled)
+            .to_string(),
+    }
+}
+
+fn load_header(path: &Path) -> Header {
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
+    let out = std::process::Command::new(&cc)
+        .args(["-E", "-P", "-x", "c"])
+        .arg(path)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {cc}: {e}"));
+    assert!(out.status.success(), "{cc} -E {} failed", path.display());
+    Header::parse(&String::from_utf8_lossy(&out.stdout))
+}
+
+/// The committed entry against the draft: requests per class, checks on
+/// the swept values, the reply's bytes moved.
+fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> Vec<String> {
+    let mut bad = Vec::new();
+    let proto = hdr.proto(f.name).unwrap();
+    // committed number index -> C parameter position
+    let positions: Vec<usize> = f
+        .params
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| {
+            matches!(
+                p,
+                fwlib32::spec::Param::Short(_)
+                    | fwlib32::spec::Param::Long(_)
+                    | fwlib32::spec::Param::Count(_)
+            )
+        })
+        .map(|(i, _)| i)
+        .collect();
+    for (cname, cl) in &l.per_class {
+        let (s16, s15) = match *cname {
+            "S30" => (false, false),
+            "S16" => (true, false),
+            _ => (true, true),
+        };
+        match (committed_words(f, s16, s15), &cl.form) {
+            (Some(mut c), Some(learnt)) => {
+                for w in &mut c.2 {
+                    if let WordSrc::Arg(i) = w {
+                        *w = WordSrc::Arg(positions.get(*i).copied().unwrap_or(usize::MAX));
+                    }
+                }
+                // a count capped by the entry's max: the same word for
+                // every value tried is constant, not the argument
+                let mut learnt = learnt.clone();
+                for (k, w) in learnt.words.iter_mut().enumerate() {
+                    if let (WordSrc::Const(_), WordSrc::Arg(i)) = (&*w, &c.2[k]) {
+                        if f.count().and_then(|n| positions.get(n)) == Some(i) {
+                            *w = WordSrc::Arg(*i);
+                        }
+                    }
+                }
+                if let Err(e) = same_form(&learnt, &c) {
+                    bad.push(format!("request on {cname}: {e}"));
+                }
+            }
+            (c, _) => bad.push(format!("request on {cname}: committed {c:?}")),
+        }
+        let convs: Vec<fn(i64) -> i32> = proto.params[1..]
+            .iter()
+            .map(|p| match &p.0 {
+                Ty::Ptr(t) => conv_of(t),
+                t => conv_of(t),
+            })
+            .collect();
+        let committed_checks: Vec<fwlib32::spec::Check> = f
+            .checks
+            .iter()
+            .filter(|c| c.arg != fwlib32::spec::OPTION)
+            .map(|c| fwlib32::spec::Check {
+                arg: positions.get(c.arg as usize).copied().unwrap_or(99) as u8,
+                ..*c
+            })
+            .collect();
+        if let Err(e) = same_checks(&cl.checks, &committed_checks, &cl.sweeps, &convs) {
+            bad.push(format!("checks on {cname}: {e}"));
+        }
+        // The reply: what the committed entry moves for the same payload.
+        if cl.reply_len > 0 {
+            // each committed output's element type and C position
+            let outs: Vec<(usize, Ty)> = f
+                .outs()
+                .filter_map(|(n, _)| {
+                    let pos = f.params.iter().position(|p| p.name() == n)?;
+                    let t = match &proto.params.get(pos + 1)?.0 {
+                        Ty::Ptr(t) => match &**t {
+                            Ty::Void => Ty::Int {
+                                size: 1,
+                                signed: false,
+                            },
+                            t => t.clone(),
+                        },
+                        t => t.clone(),
+                    };
+                    Some((pos, t))
+                })
+                .collect();
+            let elems: Vec<Ty> = outs.iter().map(|o| o.1.clone()).collect();
+            let asked = if f.count().is_some() {
+                cl.asked
+            } else {
+                usize::MAX
+            };
+            match expected(f, &elems, cl.reply_len, asked) {
+                Ok(mut e) => {
+                    for p in &mut e {
+                        p.out = outs.get(p.out).map_or(usize::MAX, |o| o.0);
+                    }
+                    // Without a count the caller's room is one pointee:
+                    // what FANUC's library writes past it is flagged, and
+                    // how many records a CNC sends is the CNC's.
+                    // With a count, the caller's array holds what was asked.
+                    let n = if f.count().is_some() { cl.asked } else { 1 };
+                    let room = |m: &(usize, usize, Src)| {
+                        outs.iter()
+                            .find(|o| o.0 == m.0)
+                            .is_some_and(|o| m.1 < n * o.1.size())
+                    };
+                    let me: Vec<_> = moves(&e).into_iter().filter(room).collect();
+                    let ml: Vec<_> = moves(&cl.reply).into_iter().filter(room).collect();
+                    if me != ml {
+                        let first = me
+                            .iter()
+                            .zip(&ml)
+                            .find(|(a, b)| a != b)
+                            .map(|(a, b)| format!("committed {a:?}, learnt {b:?}"))
+                            .unwrap_or_else(|| {
+                                format!("{} bytes committed, {} learnt", me.len(), ml.len())
+                            });
+                        bad.push(format!("reply on {cname}: {first}"));
+                    }
+                }
+                Err(e) => bad.push(format!("reply on {cname}: committed entry unreadable: {e}")),
+            }
+        } else if !f.reply.is_empty() || f.records.is_some() {
+            bad.push(format!("reply on {cname}: not mapped"));
+        }
+        // Arguments written back into outputs.
+        if cl.reply_len > 0 {
+            let out_pos = |o: u8| {
+                f.outs()
+                    .nth(o as usize)
+                    .and_then(|(n, _)| f.params.iter().position(|p| p.name() == n))
+            };
+            let mut want: Vec<(Option<usize>, String, Option<usize>)> = f
+                .reply
+                .iter()
+                .filter_map(|x| {
+                    let a = x.arg?;
+                    Some((
+                        out_pos(x.out),
+                        x.to.unwrap_or("").to_string(),
+                        positions.get(a as usize).copied(),
+                    ))
+                })
+                .collect();
+            let mut got: Vec<(Option<usize>, String, Option<usize>)> = cl
+                .echoes
+                .iter()
+                .map(|(o, path, _, k)| (Some(*o), member_name(path), Some(*k)))
+                .collect();
+            want.sort();
+            got.sort();
+            if want != got {
+                bad.push(format!(
+                    "echoed arguments on {cname}: committed {want:?}, learnt {got:?}"
+                ));
+            }
+        }
+        // The payload: the bytes of one input record sent.
+        if let Some((_, ty)) = f.input() {
+            let pos = f
+                .params
+                .iter()
+                .position(|p| p.name() == f.input().unwrap().0);
+            let elem = pos
+                .and_then(|p| proto.params.get(p + 1))
+                .map(|p| match &p.0 {
+                    Ty::Ptr(t) => (**t).clone(),
+                    t => t.clone(),
+                });
+            match elem
+                .ok_or("no input")
+                .and_then(|e| expected_payload(f, &e).map_err(|_| "committed payload unreadable"))
+            {
+                Ok(e) => {
+                    let (me, ml) = (payload_moves(&e), payload_moves(&cl.payload));
+                    if me != ml {
+                        bad.push(format!(
+                            "payload on {cname}: committed {} bytes, learnt {} ({ty})",
+                            me.len(),
+                            ml.len()
+                        ));
+                    }
+                }
+                Err(e) => bad.push(format!("payload on {cname}: {e}")),
+            }
+        }
+        if false {
+            bad.push(format!("reply on {cname}: not mapped"));
+        }
+    }
+    bad
+}
+
+fn reason(e: &str) -> String {
+    let cut = e
+        .find(|c: char| c.is_ascii_digit() || c == '(' || c == ':')
+        .unwrap_or(e.len());
+    e[..cut].trim().to_string()
+}
+
+/// What kind of thing a flag leaves unsettled (the counts per function).
+fn category(flag: &str) -> &'static str {
+    const KINDS: &[(&str, &str)] = &[
+        ("timed out", "calls timed out"),
+        ("crashed on a", "crashes on a coded reply"),
+        (
+            "every coded reply was refused",
+            "coded replies refused (count, length or type tag)",
+        ),
+        ("pinned at reply byte", "a count pinned to map the reply"),
+        (
+            "replies refused until argument",
+            "a length or room argument",
+        ),
+        ("written past the pointee", "writes past the pointee"),
+        ("maps otherwise on", "reply differs per class"),
+        ("local checks differ on", "local checks differ per class"),
+        ("check:", "local checks not one range"),
+        ("more subpackets or frames", "several subpackets or frames"),
+        ("computed:", "request word computed"),
+        ("goes in word", "input field in a request word"),
+        ("input ", "input bytes not a plain integer"),
+        ("echo", "argument echoed into the output"),
+        ("float", "floating-point fields"),
+        ("no output written", "no output written, no input read"),
+        ("punch press", "learnt on a punch press"),
+        ("a local answer on that class", "no request on some class"),
+        ("reply:", "computed or constant output bytes"),
+    ];
+    KINDS
+        .iter()
+        .find(|k| flag.contains(k.0))
+        .map_or("other", |k| k.1)
+}
+
+pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
+    let hdr = load_header(&o.header);
+    eprintln!(
+        "learn: {} prototypes, {} types in the header",
+        hdr.protos.len(),
+        hdr.types.len()
+    );
+    let names: Vec<String> = if o.check {
+        fwlib32::spec::FUNCS
+            .iter()
+            .map(|f| f.name.to_string())
+            .filter(|n| o.only.is_empty() || o.only.contains(n))
+            .collect()
+    } else if o.unexported {
+        let ours: Vec<&str> = fwlib32::ffi::exports::EXPORTS
+            .iter()
+            .map(|e| e.name)
+            .collect();
+        let mut v: Vec<String> = hdr
+            .protos
+            .iter()
+            .map(|p| p.name.clone())
+            .filter(|n| {
+                (n.starts_with("cnc_") || n.starts_with("pmc_")) && !ours.contains(&n.as_str())
+            })
+            .filter(|n| o.only.is_empty() || o.only.contains(n))
+            .collect();
+        v.sort();
+        v.dedup();
+        v
+    } else {
+        o.only.clone()
+    };
+    let mut text = String::new();
+    let (mut agree, mut compared) = (0, 0);
+    let mut counts: BTreeMap<String, usize> = BTreeMap::new();
+    let mut flag_reasons: BTreeMap<String, usize> = BTreeMap::new();
+    let mut lines = Vec::new();
+    let mut calls = 0;
+    let started = std::time::Instant::now();
+    for name in &names {
+        match learn(probe_exe, &o.lib, &hdr, name, &mut calls) {
+            Ok(l) => {
+                let t = l.draft.text();
+                lines.push(t.lines().count());
+                text.push_str(&t);
+                text.push('\n');
+                let kind = if l.draft.flags.is_empty() {
+                    "clean"
+                } else {
+                    "flagged"
+                };
+                *counts.entry(kind.into()).or_default() += 1;
+                let kinds: std::collections::BTreeSet<&str> =
+                    l.draft.flags.iter().map(|f| category(f)).collect();
+                for k in kinds {
+                    *flag_reasons.entry(k.to_string()).or_default() += 1;
+                }
+                if o.check {
+                    let f = fwlib32::spec::find(name).unwrap();
+                    compared += 1;
+                    let bad = compare(f, &l, &hdr);
+                    if bad.is_empty() {
+                        agree += 1;
+                        println!("AGREE {name}");
+                    } else {
+                        println!("DIFFER {name}\n  {}", bad.join("\n  "));
+                    }
+                } else {
+                    println!("{kind} {name} ({} flags)", l.draft.flags.len());
+                }
+            }
+            Err(e) => {
+                println!("FAILED {name}: {e}");
+                *counts.entry(format!("failed: {}", reason(&e))).or_default() += 1;
+                if o.check {
+                    compared += 1;
+                }
+            }
+        }
+    }
+    if let Some(out) = &o.out {
+        if let Some(d) = out.parent() {
+            let _ = std::fs::create_dir_all(d);
+        }
+        std::fs::write(out, &text).expect("write the drafts");
+        eprintln!("learn: drafts written to {}", out.display());
+    } else if !o.check && !o.unexported {
+        print!("{text}");
+    }
+    println!(
+        "learn: {} functions, {calls} calls, {:.0?}",
+        names.len(),
+        started.elapsed()
+    );
+    for (k, n) in &counts {
+        println!("  {k}: {n}");
+    }
+    if !flag_reasons.is_empty() {
+        println!(
+            "  flagged functions by what is unsettled (one function may count under several):"
+        );
+        for (k, n) in &flag_reasons {
+            println!("    {k}: {n}");
+        }
+    }
+    let missing = counts
+        .iter()
+        .filter(|(k, _)| k.contains("not in FANUC's library"))
+        .map(|(_, n)| n)
+        .sum::<usize>();
+    println!("  in FANUC's library: {}", names.len() - missing);
+    if !lines.is_empty() {
+        lines.sort();
+        println!(
+            "  draft entry lines: median {}, mean {:.1}, max {}",
+            lines[lines.len() / 2],
+            lines.iter().sum::<usize>() as f64 / lines.len() as f64,
+            lines.last().unwrap()
+        );
+    }
+    if o.check {
+        println!("learn --check: {agree} of {compared} described functions agree");
+        return i32::from(agree != compared);
+    }
+    0
+}
