@@ -2530,8 +2530,8 @@ short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *blo
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
 
 /*
- Reads the number of alarm history entries. A negative count from the
- CNC reads as 0 (an empty history).
+ Reads the number of alarm history entries: the low 16 bits of the
+ CNC's 32-bit count, as FANUC's library writes them.
 
  # Safety
  `hisno` must point to a writable unsigned short.
@@ -3239,7 +3239,8 @@ short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct 
 
 /*
  Reads `*line_len` lines of a program from line `line_no` into `data`:
- the answer up to its first '%', at most `*data_len` bytes; out: the
+ the answer up to its first '%' or NUL (included), at most `*data_len`
+ bytes; out: the
  bytes and the whole lines read (line ends and the '%'), as FANUC's
  library counts them.
 
@@ -3561,7 +3562,9 @@ short cnc_rdsrvspeed(unsigned short FlibHndl,
                      long *data);
 
 /*
- Reads the servo load meters: `*data_num` in = room, out = axes written.
+ Reads the servo load meters: `*data_num` in = room, out = axes written;
+ each load is written as its magnitude (a negative value from the CNC
+ reads positive), as FANUC's library writes it.
 
  # Safety
  `data_num` must point to a writable short, `loadmeter` to `*data_num`
@@ -3590,9 +3593,10 @@ short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
 /*
  Reads the next, in-use and selected tool life groups, then their
  optional group numbers in a second exchange (the 30i class asks for
- each group that is not 0 when the next group is not 0, the 16i class
+ each group above 0 when the next group is above 0, the 16i class
  reads the three group records, Series 15 asks nothing; a group not
- asked, 0, or answered with an error reads -1). An error answered for a
+ asked, 0, answered with an error or after such a one reads -1). An
+ error answered for a
  group is returned after all six numbers are written, as FANUC's
  library does.
 
@@ -3678,7 +3682,11 @@ short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct 
 /*
  Reads a tool life group with its tools: number of tools, life, counter,
  then per tool its use number (1, 2, ...), tool number, length and radius
- offset numbers and information. `length` must hold the 20-byte head
+ offset numbers and information. A group answered without tools (its
+ number of tools 0 or less) gets the head only, and an answer under 4
+ bytes `grp_num` 0 only, both `EW_OK` without asking for tools, as from
+ FANUC's library; a record cut short reads its missing words as 0.
+ `length` must hold the 20-byte head
  (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
  the code EW_LENGTH with nothing written, as FANUC's library).
 

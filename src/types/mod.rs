@@ -10,6 +10,7 @@ use std::os::raw::c_char;
 
 // One file per API area, as in src/ffi/ (cbindgen reads them all).
 mod alarm;
+mod history;
 mod macros;
 mod maintenance;
 mod offset;
@@ -23,8 +24,8 @@ mod upload;
 
 #[allow(unused_imports)]
 pub use {
-    alarm::*, macros::*, maintenance::*, offset::*, param::*, pmc::*, position::*, program::*,
-    status::*, tool::*, upload::*,
+    alarm::*, history::*, macros::*, maintenance::*, offset::*, param::*, pmc::*, position::*,
+    program::*, status::*, tool::*, upload::*,
 };
 
 /// FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.
