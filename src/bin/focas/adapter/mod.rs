@@ -10,13 +10,15 @@
 mod assets;
 mod condition;
 mod model;
+mod poll;
 mod server;
 mod shdr;
 mod xml;
 
 use crate::out::Fail;
 use fwlib32::native::{Cnc, Error, PmcArea};
-use model::{Category, Custom, Layout, PathMemo, Series, System};
+use model::{Category, Custom, Layout, Series, System};
+use poll::PathMemo;
 use serde::Deserialize;
 use server::Hub;
 use std::collections::BTreeMap;
@@ -433,7 +435,7 @@ impl Samples {
 /// One sample of every path's series.
 fn sample(l: &Link, s: &Series, into: &mut Samples) -> Result<(), Error> {
     for (cnc, p) in l.paths.iter().zip(&l.layout.paths) {
-        let (loads, speeds) = model::sample_path(cnc, s)?;
+        let (loads, speeds) = poll::sample_path(cnc, s)?;
         for (a, v) in p.axes.iter().zip(loads) {
             into.push(format!("{a}load_ts"), v);
         }
@@ -518,7 +520,7 @@ fn poller(hub: Arc<Hub>, cfg: Polling) {
             let mut failed = None;
             let mut this = 0;
             for ((cnc, p), memo) in l.paths.iter().zip(&l.layout.paths).zip(&mut memos) {
-                match model::poll_path(cnc, p, &l.layout.systems, &l.layout.custom, memo) {
+                match poll::poll_path(cnc, p, &l.layout.systems, &l.layout.custom, memo) {
                     Ok(r) => {
                         this += r.frames;
                         values.extend(r.values);
