@@ -259,8 +259,11 @@ fn go_example_builds_and_reads_the_profile() {
     let dir = lib_dir("go");
     let pc = write_pc(&dir);
     let exe = dir.join("focas-status");
-    // Go's caches under target/tmp, offline, with the toolchain on PATH.
-    let cache = Path::new(env!("CARGO_TARGET_TMPDIR")).join("go");
+    // Go's caches in the scratch directory, offline, with the toolchain on
+    // PATH. Not shared between runs: Go keeps cgo's link flags (this run's
+    // -L, a scratch directory removed at its end) with the cached package,
+    // and a later run would link against a folder that is gone.
+    let cache = dir.join("go");
     toolchain::run(
         Command::new(go)
             .args(["build", "-buildvcs=false", "-o"])
