@@ -914,6 +914,28 @@ typedef struct OPMSG3 {
 } OPMSG3;
 
 /*
+ cnc_rdopnlsgnl: the software operator panel's signals (`type` selects
+ which members the CNC fills).
+ */
+typedef struct IODBSGNL {
+    short datano;
+    short type;
+    short mode;
+    short hndl_ax;
+    short hndl_mv;
+    short rpd_ovrd;
+    short jog_ovrd;
+    short feed_ovrd;
+    short spdl_ovrd;
+    short blck_del;
+    short sngl_blck;
+    short machn_lock;
+    short dry_run;
+    short mem_prtct;
+    short feed_hold;
+} IODBSGNL;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -1137,6 +1159,15 @@ typedef struct ODBPRO {
 } ODBPRO;
 
 /*
+ cnc_rdprgnumo8: running and main program numbers, 8 digits each.
+ */
+typedef struct ODBPROO8 {
+    short dummy[2];
+    LONG data;
+    LONG mdata;
+} ODBPROO8;
+
+/*
  One program of ODBPTIME: its number and machining time.
  */
 typedef struct ODBPTIME_DATA {
@@ -1243,6 +1274,16 @@ typedef struct ODBSEQ {
     short dummy[2];
     LONG data;
 } ODBSEQ;
+
+/*
+ cnc_rdspcss: the commanded spindle speed, constant surface speed and
+ maximum spindle speed.
+ */
+typedef struct ODBCSS {
+    LONG srpm;
+    LONG sspm;
+    LONG smax;
+} ODBCSS;
 
 /*
  cnc_rdspdlname: one spindle name.
@@ -2039,6 +2080,16 @@ typedef struct ODBOPHIS4 {
     union ODBOPHIS4_u u;
 } ODBOPHIS4;
 
+/*
+ cnc_rdtlinfo: the tool life management's limits.
+ */
+typedef struct ODBTLINFO {
+    LONG max_group;
+    LONG max_tool;
+    LONG max_minute;
+    LONG max_cycle;
+} ODBTLINFO;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -2530,8 +2581,8 @@ short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *blo
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
 
 /*
- Reads the number of alarm history entries. A negative count from the
- CNC reads as 0 (an empty history).
+ Reads the number of alarm history entries: the low 16 bits of the
+ CNC's 32-bit count, as FANUC's library writes them.
 
  # Safety
  `hisno` must point to a writable unsigned short.
@@ -3085,6 +3136,15 @@ short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMS
 short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG3 *opmsg);
 
 /*
+ Reads the software operator panel's signals (`type` written back;
+ `datano` left as it was).
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBSGNL.
+ */
+short cnc_rdopnlsgnl(unsigned short FlibHndl, short type, struct IODBSGNL *buf);
+
+/*
  Reads the numbers and attributes of up to `read_no` parameters from
  `s_number` on, with the previous and next existing numbers. The
  attribute word: bits 0-1 data type (bit, byte, word, 2-word), bit 8
@@ -3239,7 +3299,8 @@ short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct 
 
 /*
  Reads `*line_len` lines of a program from line `line_no` into `data`:
- the answer up to its first '%', at most `*data_len` bytes; out: the
+ the answer up to its first '%' or NUL (included), at most `*data_len`
+ bytes; out: the
  bytes and the whole lines read (line ends and the '%'), as FANUC's
  library counts them.
 
@@ -3360,6 +3421,15 @@ short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struc
 short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
 
 /*
+ Reads the running and main program numbers, 8 digits each (all 32 bits
+ of each).
+
+ # Safety
+ `prgnum` must be NULL or point to a writable ODBPROO8.
+ */
+short cnc_rdprgnumo8(unsigned short FlibHndl, struct ODBPROO8 *prgnum);
+
+/*
  Reads the machining times of the last programs run.
 
  # Safety
@@ -3473,6 +3543,15 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 
 /*
+ Reads the commanded spindle speed, constant surface speed and maximum
+ spindle speed.
+
+ # Safety
+ `css` must be NULL or point to a writable ODBCSS.
+ */
+short cnc_rdspcss(unsigned short FlibHndl, struct ODBCSS *css);
+
+/*
  Reads the alarm state of each spindle, one byte per spindle (at most 8).
 
  # Safety
@@ -3561,7 +3640,9 @@ short cnc_rdsrvspeed(unsigned short FlibHndl,
                      long *data);
 
 /*
- Reads the servo load meters: `*data_num` in = room, out = axes written.
+ Reads the servo load meters: `*data_num` in = room, out = axes written;
+ each load is written as its magnitude (a negative value from the CNC
+ reads positive), as FANUC's library writes it.
 
  # Safety
  `data_num` must point to a writable short, `loadmeter` to `*data_num`
@@ -3590,9 +3671,10 @@ short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
 /*
  Reads the next, in-use and selected tool life groups, then their
  optional group numbers in a second exchange (the 30i class asks for
- each group that is not 0 when the next group is not 0, the 16i class
+ each group above 0 when the next group is above 0, the 16i class
  reads the three group records, Series 15 asks nothing; a group not
- asked, 0, or answered with an error reads -1). An error answered for a
+ asked, 0, answered with an error or after such a one reads -1). An
+ error answered for a
  group is returned after all six numbers are written, as FANUC's
  library does.
 
@@ -3678,7 +3760,11 @@ short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct 
 /*
  Reads a tool life group with its tools: number of tools, life, counter,
  then per tool its use number (1, 2, ...), tool number, length and radius
- offset numbers and information. `length` must hold the 20-byte head
+ offset numbers and information. A group answered without tools (its
+ number of tools 0 or less) gets the head only, and an answer under 4
+ bytes `grp_num` 0 only, both `EW_OK` without asking for tools, as from
+ FANUC's library; a record cut short reads its missing words as 0.
+ `length` must hold the 20-byte head
  (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
  the code EW_LENGTH with nothing written, as FANUC's library).
 
