@@ -1376,6 +1376,16 @@ typedef struct IODBTLCTL {
 } IODBTLCTL;
 
 /*
+ cnc_rdtlinfo: the tool life management's limits.
+ */
+typedef struct ODBTLINFO {
+    LONG max_group;
+    LONG max_tool;
+    LONG max_minute;
+    LONG max_cycle;
+} ODBTLINFO;
+
+/*
  cnc_rdtlusegrp: the next, in-use and selected tool life groups.
  */
 typedef struct ODBUSEGRP {
@@ -2079,16 +2089,6 @@ typedef struct ODBOPHIS4 {
     short rec_type;
     union ODBOPHIS4_u u;
 } ODBOPHIS4;
-
-/*
- cnc_rdtlinfo: the tool life management's limits.
- */
-typedef struct ODBTLINFO {
-    LONG max_group;
-    LONG max_tool;
-    LONG max_minute;
-    LONG max_cycle;
-} ODBTLINFO;
 
 #ifdef __cplusplus
 extern "C" {
@@ -3667,6 +3667,15 @@ short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
  `tlctl` must point to a writable IODBTLCTL.
  */
 short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
+
+/*
+ Reads the tool life management's limits: groups, tools in a group, life
+ in minutes and in cycles.
+
+ # Safety
+ `tlinfo` must be NULL or point to a writable ODBTLINFO.
+ */
+short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
 
 /*
  Reads the next, in-use and selected tool life groups, then their

@@ -135,7 +135,9 @@ commands! {
     RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2];
     /// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
     TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp];
-    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp];
+    /// (1,0x004a): the number of tool life groups; on the 16i class with
+    /// `[0, 0, 0, 0, 0x10000]`, cnc_rdtlinfo's limits after it.
+    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp cnc_rdtlinfo];
     /// cnc_wrgrpinfo: args [s, e, 0, 0, payload length] + one
     /// `GroupWrite` per group s..=e.
     WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
@@ -277,6 +279,8 @@ commands! {
     /// cnc_rdtlusegrp on the 30i class: the optional group number of group
     /// `g`, args [g, g].
     TLOPTGRP = CLASS_CNC 0x01bf [cnc_rdtlusegrp];
+    /// cnc_rdtlinfo on the 30i class: a word, then the tool life limits.
+    RDTLINFO = CLASS_CNC 0x01c4 [cnc_rdtlinfo];
     COPYPROG = CLASS_CNC 0x01c6 [cnc_copyprog];
     RENAMEPROG = CLASS_CNC 0x01c7 [cnc_renameprog];
     CONDENSE = CLASS_CNC 0x01c8 [cnc_condense];
