@@ -914,6 +914,28 @@ typedef struct OPMSG3 {
 } OPMSG3;
 
 /*
+ cnc_rdopnlsgnl: the software operator panel's signals (`type` selects
+ which members the CNC fills).
+ */
+typedef struct IODBSGNL {
+    short datano;
+    short type;
+    short mode;
+    short hndl_ax;
+    short hndl_mv;
+    short rpd_ovrd;
+    short jog_ovrd;
+    short feed_ovrd;
+    short spdl_ovrd;
+    short blck_del;
+    short sngl_blck;
+    short machn_lock;
+    short dry_run;
+    short mem_prtct;
+    short feed_hold;
+} IODBSGNL;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -1137,6 +1159,15 @@ typedef struct ODBPRO {
 } ODBPRO;
 
 /*
+ cnc_rdprgnumo8: running and main program numbers, 8 digits each.
+ */
+typedef struct ODBPROO8 {
+    short dummy[2];
+    LONG data;
+    LONG mdata;
+} ODBPROO8;
+
+/*
  One program of ODBPTIME: its number and machining time.
  */
 typedef struct ODBPTIME_DATA {
@@ -1245,6 +1276,16 @@ typedef struct ODBSEQ {
 } ODBSEQ;
 
 /*
+ cnc_rdspcss: the commanded spindle speed, constant surface speed and
+ maximum spindle speed.
+ */
+typedef struct ODBCSS {
+    LONG srpm;
+    LONG sspm;
+    LONG smax;
+} ODBCSS;
+
+/*
  cnc_rdspdlname: one spindle name.
  */
 typedef struct ODBSPDLNAME {
@@ -1333,6 +1374,16 @@ typedef struct IODBTLCTL {
     char reserve;
     short reserves[10];
 } IODBTLCTL;
+
+/*
+ cnc_rdtlinfo: the tool life management's limits.
+ */
+typedef struct ODBTLINFO {
+    LONG max_group;
+    LONG max_tool;
+    LONG max_minute;
+    LONG max_cycle;
+} ODBTLINFO;
 
 /*
  cnc_rdtlusegrp: the next, in-use and selected tool life groups.
@@ -3085,6 +3136,15 @@ short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMS
 short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG3 *opmsg);
 
 /*
+ Reads the software operator panel's signals (`type` written back;
+ `datano` left as it was).
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBSGNL.
+ */
+short cnc_rdopnlsgnl(unsigned short FlibHndl, short type, struct IODBSGNL *buf);
+
+/*
  Reads the numbers and attributes of up to `read_no` parameters from
  `s_number` on, with the previous and next existing numbers. The
  attribute word: bits 0-1 data type (bit, byte, word, 2-word), bit 8
@@ -3361,6 +3421,15 @@ short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struc
 short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
 
 /*
+ Reads the running and main program numbers, 8 digits each (all 32 bits
+ of each).
+
+ # Safety
+ `prgnum` must be NULL or point to a writable ODBPROO8.
+ */
+short cnc_rdprgnumo8(unsigned short FlibHndl, struct ODBPROO8 *prgnum);
+
+/*
  Reads the machining times of the last programs run.
 
  # Safety
@@ -3472,6 +3541,15 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
  `seqnum` must be NULL or point to a writable ODBSEQ.
  */
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
+ Reads the commanded spindle speed, constant surface speed and maximum
+ spindle speed.
+
+ # Safety
+ `css` must be NULL or point to a writable ODBCSS.
+ */
+short cnc_rdspcss(unsigned short FlibHndl, struct ODBCSS *css);
 
 /*
  Reads the alarm state of each spindle, one byte per spindle (at most 8).
@@ -3589,6 +3667,15 @@ short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
  `tlctl` must point to a writable IODBTLCTL.
  */
 short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
+
+/*
+ Reads the tool life management's limits: groups, tools in a group, life
+ in minutes and in cycles.
+
+ # Safety
+ `tlinfo` must be NULL or point to a writable ODBTLINFO.
+ */
+short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
 
 /*
  Reads the next, in-use and selected tool life groups, then their

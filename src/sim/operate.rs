@@ -7,11 +7,11 @@
 use super::Machine;
 use super::plan::Plan;
 use super::profile::cycle::Cycle;
-use super::route::{Route, none};
+use super::route::{Asked, Route, none};
 use super::run::{covered, event_path, occurrence};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_REJECT};
-use crate::proto::cmd::{CLRALM, RESET, RESET2, START};
+use crate::proto::cmd::{CLRALM, RDOPNLSGNL, RESET, RESET2, START};
 use crate::proto::machine::RDPRSTR;
 use std::sync::Arc;
 
@@ -22,7 +22,50 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(CLRALM, |m, q| none(m.clear_alarms(q.path, q.arg(0) as i16))),
     // [k]: the program restart data a reset or cycle start recorded.
     Route::cnc(RDPRSTR, |m, q| m.restart_info(q.path, q.args[0])),
+    Route::table(RDOPNLSGNL, panel_signals),
 ];
+
+/// F-area bytes of the software operator panel's output signals: F0073
+/// (mode MD1O/MD2O/MD4O, ZRNO), F0075 (BDTO, SBKO, MLKO, DRNO, KEYO, SPO
+/// at bits 2..=7), F0076 (MP1O/MP2O at bits 0..=1, ROV1O/ROV2O at bits
+/// 4..=5), F0077 (handle axis HS1AO..HS1DO), F0078 (feed override
+/// *FV0O..*FV7O), F0079..F0080 (jog override *JV0O..*JV15O).
+const PANEL_F: (u16, u16) = (73, 80);
+
+/// cnc_rdopnlsgnl: the panel's signals as the ladder set them in the F
+/// area of PMC unit 1 (an absent area reads as zeros), after `type`,
+/// which FANUC's library writes back (not on the wire). The spindle
+/// override word is FANUC's "not used": no signal feeds it.
+fn panel_signals(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    use crate::proto::pmc::PmcRange;
+    let (s, e) = PANEL_F;
+    let range = PmcRange {
+        adr_type: 1,
+        data_type: 0,
+        s,
+        e,
+    };
+    let n = usize::from(e - s + 1);
+    let f = m.profile.pmc.read(1, &range).unwrap_or(vec![0; n]);
+    let byte = |addr: u16| i64::from(f[usize::from(addr - s)]);
+    let bit = |addr: u16, b: u32| (byte(addr) >> b) & 1;
+    Ok(vec![
+        i64::from(q.arg(0)),
+        byte(73) & 0x17,
+        byte(77) & 0x0f,
+        byte(76) & 0x03,
+        (byte(76) >> 4) & 0x03,
+        i64::from((byte(79) | byte(80) << 8) as u16 as i16),
+        byte(78),
+        0,
+        bit(75, 2),
+        bit(75, 3),
+        bit(75, 4),
+        bit(75, 5),
+        bit(75, 6),
+        bit(75, 7),
+    ])
+}
 
 /// Alarm types a reset clears (IO, PS, macro); the others need the cause
 /// removed (overtravel, servo, overheat ...) or the power cycled.

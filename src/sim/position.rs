@@ -13,13 +13,14 @@ use super::profile::{Axis, Spindle};
 use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
-use crate::proto::cmd::RDSPDLALM;
+use crate::proto::cmd::{RDSPCSS, RDSPDLALM};
 use crate::proto::machine::RDCTRLSIG;
 use crate::proto::position::{
     ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
     Name, POSITION, PRGNUM, PosNames, ProgNums, RDAXISNAME, RDSPDLNAME, SEQNUM, SERVO_LOAD,
     SPEED_A5, SPINDLE, SeqNum, UNITS, pos, spdl,
 };
+use crate::proto::program::AUX_ORDER;
 use crate::proto::value::{BASE_10, Value};
 
 pub(super) const ROUTES: &[Route] = &[
@@ -63,6 +64,7 @@ pub(super) const ROUTES: &[Route] = &[
         _ => Err(ATTRIB),
     }),
     Route::table(RDSPDLALM, spindle_alarms),
+    Route::table(RDSPCSS, spindle_css),
 ];
 
 /// cnc_rdspdlalm: the alarm word of each spindle (at most 8).
@@ -73,6 +75,20 @@ fn spindle_alarms(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
         .take(8)
         .map(|s| i64::from(s.alarm))
         .collect())
+}
+
+/// Parameter: the maximum spindle speed (r.p.m.), first spindle.
+const MAX_SPINDLE_SPEED: i32 = 3772;
+
+/// cnc_rdspcss: the S code in force (what the running program set, else
+/// the profile's modal table), the surface speed of G96 (the simulator
+/// follows no G96: its modal groups stop at group 07, so none is
+/// commanded) and the maximum spindle speed parameter.
+fn spindle_css(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let s = m.aux_modal(q.path, AUX_ORDER[super::modal::S])?;
+    let srpm = s.0.first().map_or(0, |c| c.value);
+    let smax = m.param_value(MAX_SPINDLE_SPEED, 1).unwrap_or(0);
+    Ok(vec![i64::from(srpm), 0, i64::from(smax)])
 }
 
 const ATTRIB: CncError = CncError::new(EW_ATTRIB);

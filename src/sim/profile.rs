@@ -207,6 +207,8 @@ pub struct Path {
     /// Tool life groups (src/sim/offset.rs).
     #[serde(rename = "tool_group")]
     pub tool_groups: Vec<offset::ToolGroupProfile>,
+    /// Tool life management's limits (cnc_rdtlinfo).
+    pub tool_life: offset::ToolLifeLimits,
     /// Tool management data, data numbers 1, 2, ... (cnc_rdtool).
     #[serde(rename = "managed_tool")]
     pub managed_tools: Vec<offset::ManagedTool>,

@@ -6,8 +6,8 @@ use super::profile::offset::{ToolGroupProfile, ToolProfile};
 use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::RDNGRP;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
+use crate::proto::cmd::{RDNGRP, RDTLINFO};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
@@ -48,8 +48,21 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(DELTLIFEDT, |m, q| {
         none(m.tl_delete(q.path, q.arg(0), Some(q.arg(1))))
     }),
+    // The number of groups; on the 16i class cnc_rdtlinfo's limits
+    // follow it in the same answer (the layout asked for holds them).
     Route::table(RDNGRP, |m, q| {
-        m.tl_group_count(q.path).map(|n| vec![i64::from(n)])
+        let n = m.tl_group_count(q.path)?;
+        let mut v = vec![i64::from(n)];
+        v.extend(m.tl_limits(q.path)?);
+        v.truncate(q.f.reply.len());
+        Ok(v)
+    }),
+    // cnc_rdtlinfo on the 30i class: a word cnc_rdtlinfo does not read (the
+    // simulator's: the number of groups, as on the 16i class), the limits.
+    Route::table(RDTLINFO, |m, q| {
+        let mut v = vec![i64::from(m.tl_group_count(q.path)?)];
+        v.extend(m.tl_limits(q.path)?);
+        Ok(v)
     }),
 ];
 
@@ -127,6 +140,13 @@ impl Machine {
     }
 
     /// 0x004a: how many tool life groups the path has.
+    /// The tool life limits of the profile: groups, tools in a group,
+    /// minutes, cycles.
+    pub fn tl_limits(&self, path: u16) -> Reply<[i64; 4]> {
+        let l = self.path(path)?.tool_life;
+        Ok([l.max_group, l.max_tool, l.max_minute, l.max_cycle].map(i64::from))
+    }
+
     pub fn tl_group_count(&self, path: u16) -> Reply<i32> {
         let p = (self.profile.paths)
             .get(usize::from(path).wrapping_sub(1))

@@ -94,7 +94,7 @@ commands! {
     /// Input/output figures per axis (cnc_getfigure).
     GETFIGURE = CLASS_CNC 0x001b [cnc_getfigure];
     /// Running and main program numbers (cnc_rdprgnum, rddynamic2).
-    PRGNUM = CLASS_CNC 0x001c [cnc_rdprgnum cnc_rddynamic2 cnc_rddynamic];
+    PRGNUM = CLASS_CNC 0x001c [cnc_rdprgnum cnc_rdprgnumo8 cnc_rddynamic2 cnc_rddynamic];
     /// Sequence number (cnc_rdseqnum, rddynamic2).
     SEQNUM = CLASS_CNC 0x001d [cnc_rdseqnum cnc_rddynamic2 cnc_rddynamic];
     RDEXECPROG = CLASS_CNC 0x0020 [cnc_rdexecprog];
@@ -135,7 +135,9 @@ commands! {
     RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2];
     /// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
     TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp];
-    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp];
+    /// (1,0x004a): the number of tool life groups; on the 16i class with
+    /// `[0, 0, 0, 0, 0x10000]`, cnc_rdtlinfo's limits after it.
+    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp cnc_rdtlinfo];
     /// cnc_wrgrpinfo: args [s, e, 0, 0, payload length] + one
     /// `GroupWrite` per group s..=e.
     WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
@@ -152,6 +154,8 @@ commands! {
     RDSPDLALM = CLASS_CNC 0x005a [cnc_rdspdlalm];
     /// cnc_rdctrldi / cnc_rdctrldo: (1,0x005b)\[0\] input signals, \[1\] output.
     RDCTRLSIG = CLASS_CNC 0x005b [cnc_rdctrldi cnc_rdctrldo];
+    /// cnc_rdopnlsgnl: (1,0x005d)\[type\] the software operator panel's signals.
+    RDOPNLSGNL = CLASS_CNC 0x005d [cnc_rdopnlsgnl];
     RDWKCDSHFT = CLASS_CNC 0x0063 [cnc_rdwkcdshft];
     WRWKCDSHFT = CLASS_CNC 0x0064 [cnc_wrwkcdshft];
     STOPOPHIS = CLASS_CNC 0x0067 [cnc_stopophis];
@@ -257,6 +261,7 @@ commands! {
     /// cnc_rdtool: tool management data, args [top, n] (n at most
     /// `TOOLS_PER_MNG`).
     TLMNG = CLASS_CNC 0x014b [cnc_rdtool];
+    RDSPCSS = CLASS_CNC 0x0158 [cnc_rdspcss];
     RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];
     RDACTPT = CLASS_CNC 0x0162 [cnc_rdactpt];
     PDF_COPY = CLASS_CNC 0x0188 [cnc_pdf_copy];
@@ -274,6 +279,8 @@ commands! {
     /// cnc_rdtlusegrp on the 30i class: the optional group number of group
     /// `g`, args [g, g].
     TLOPTGRP = CLASS_CNC 0x01bf [cnc_rdtlusegrp];
+    /// cnc_rdtlinfo on the 30i class: a word, then the tool life limits.
+    RDTLINFO = CLASS_CNC 0x01c4 [cnc_rdtlinfo];
     COPYPROG = CLASS_CNC 0x01c6 [cnc_copyprog];
     RENAMEPROG = CLASS_CNC 0x01c7 [cnc_renameprog];
     CONDENSE = CLASS_CNC 0x01c8 [cnc_condense];

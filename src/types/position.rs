@@ -214,3 +214,13 @@ pub struct ODBAXIS {
     pub r#type: c_short,
     pub data: [LONG; MAX_AXIS],
 }
+
+/// cnc_rdspcss: the commanded spindle speed, constant surface speed and
+/// maximum spindle speed.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBCSS {
+    pub srpm: LONG,
+    pub sspm: LONG,
+    pub smax: LONG,
+}

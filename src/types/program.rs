@@ -24,6 +24,15 @@ pub struct ODBPRO {
     pub mdata: c_short,
 }
 
+/// cnc_rdprgnumo8: running and main program numbers, 8 digits each.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPROO8 {
+    pub dummy: [c_short; 2],
+    pub data: LONG,
+    pub mdata: LONG,
+}
+
 /// cnc_rdseqnum: sequence number.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -155,3 +155,25 @@ impl Default for ODBPRS {
         }
     }
 }
+
+/// cnc_rdopnlsgnl: the software operator panel's signals (`type` selects
+/// which members the CNC fills).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBSGNL {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub mode: c_short,
+    pub hndl_ax: c_short,
+    pub hndl_mv: c_short,
+    pub rpd_ovrd: c_short,
+    pub jog_ovrd: c_short,
+    pub feed_ovrd: c_short,
+    pub spdl_ovrd: c_short,
+    pub blck_del: c_short,
+    pub sngl_blck: c_short,
+    pub machn_lock: c_short,
+    pub dry_run: c_short,
+    pub mem_prtct: c_short,
+    pub feed_hold: c_short,
+}

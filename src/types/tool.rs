@@ -201,3 +201,13 @@ pub struct ODBPTLINF {
     pub mlt_size: [c_short; 16],
     pub reserves: [c_short; 16],
 }
+
+/// cnc_rdtlinfo: the tool life management's limits.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLINFO {
+    pub max_group: LONG,
+    pub max_tool: LONG,
+    pub max_minute: LONG,
+    pub max_cycle: LONG,
+}

@@ -290,6 +290,12 @@ rust_layouts! {
         warning, o3dchk, ext_opt, restart,
     }
     ODBERR { err_no, err_dtno }
+    IODBSGNL {
+        datano, r#type, mode, hndl_ax, hndl_mv, rpd_ovrd, jog_ovrd, feed_ovrd, spdl_ovrd,
+        blck_del, sngl_blck, machn_lock, dry_run, mem_prtct, feed_hold,
+    }
+    ODBCSS { srpm, sspm, smax }
+    ODBTLINFO { max_group, max_tool, max_minute, max_cycle }
 
     // --- position ---
     ODBAXISNAME { name, suff }
@@ -311,6 +317,7 @@ rust_layouts! {
 
     // --- program ---
     ODBPRO { dummy, data, mdata }
+    ODBPROO8 { dummy, data, mdata }
     ODBSEQ { dummy, data }
     ODBEXEPRG { name, o_num }
     ODBMDL { datano, r#type, modal }

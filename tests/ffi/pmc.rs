@@ -458,3 +458,65 @@ fn pmc_timer_types_are_written_and_read_back() {
     );
     sim::free(h);
 }
+
+/// cnc_rdopnlsgnl: the software operator panel's signals follow the F
+/// area (F73 mode, F75 switches, F76 handle / rapid, F77 handle axis, F78
+/// feed override, F79-F80 jog override); a PMC write shows at once.
+#[test]
+fn operator_panel_signals_follow_the_f_area() {
+    let p = "[[path]]\n[pmc.area.F]\nwritable = true\n\
+             data = { 73 = [0x01, 0x00, 0x3c, 0x12, 0x05, 0x9b, 0x64, 0x00] }\n";
+    let s = sim::start(Profile::parse(p).expect("profile"));
+    let h = sim::alloc(&s);
+    let panel = |h| {
+        let mut g = IODBSGNL {
+            datano: 77,
+            ..IODBSGNL::default()
+        };
+        assert_eq!(unsafe { cnc_rdopnlsgnl(h, 0x1fff, &mut g) }, EW_OK);
+        assert_eq!(
+            (g.datano, g.r#type),
+            (77, 0x1fff),
+            "datano kept, type echoed"
+        );
+        g
+    };
+    let g = panel(h);
+    assert_eq!(
+        (
+            g.mode,
+            g.hndl_ax,
+            g.hndl_mv,
+            g.rpd_ovrd,
+            g.jog_ovrd,
+            g.feed_ovrd
+        ),
+        (1, 5, 2, 1, 100, 0x9b)
+    );
+    assert_eq!(
+        [
+            g.blck_del,
+            g.sngl_blck,
+            g.machn_lock,
+            g.dry_run,
+            g.mem_prtct,
+            g.feed_hold
+        ],
+        [1, 1, 1, 1, 0, 0]
+    );
+    // The ladder turns single block off and feed hold on.
+    assert_eq!(write(h, F, BYTE, 75, 75, &[0xb4]), EW_OK);
+    let g = panel(h);
+    assert_eq!(
+        [
+            g.blck_del,
+            g.sngl_blck,
+            g.machn_lock,
+            g.dry_run,
+            g.mem_prtct,
+            g.feed_hold
+        ],
+        [1, 0, 1, 1, 0, 1]
+    );
+    sim::free(h);
+}

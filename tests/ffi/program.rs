@@ -158,6 +158,26 @@ fn program_numbers_keep_their_low_16_bits() {
     sim::free(h);
 }
 
+/// cnc_rdprgnumo8 reads the 8-digit numbers whole, where cnc_rdprgnum
+/// keeps their low 16 bits.
+#[test]
+fn eight_digit_program_numbers_read_whole() {
+    let (_s, h) = start(EIGHT_DIGITS);
+    let mut p = ODBPROO8 {
+        dummy: [7, 7],
+        ..ODBPROO8::default()
+    };
+    assert_eq!(unsafe { cnc_rdprgnumo8(h, &mut p) }, EW_OK);
+    assert_eq!((p.data, p.mdata), (12345678, 12345678));
+    assert_eq!(p.dummy, [7, 7], "dummy left as it was");
+    assert_eq!(unsafe { cnc_rdprgnumo8(h, null_mut()) }, EW_DATA);
+    sim::free(h);
+    let (_s, h) = start(IDLE);
+    assert_eq!(unsafe { cnc_rdprgnumo8(h, &mut p) }, EW_OK);
+    assert_eq!((p.data, p.mdata), (0, 0));
+    sim::free(h);
+}
+
 #[test]
 fn an_idle_path_has_an_empty_executing_text() {
     let (_s, h) = start(IDLE);

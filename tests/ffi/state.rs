@@ -174,3 +174,24 @@ fn an_inch_machine_reports_its_feed_in_inch_per_minute() {
     assert_eq!(modal(h, 4), 1);
     sim::free(h);
 }
+
+/// cnc_rdspcss: the S code follows the running program as cnc_modal's,
+/// the maximum spindle speed is parameter 3772; no G96 surface speed.
+#[test]
+fn spindle_css_follows_the_program_and_parameter_3772() {
+    let max = "\n[param]\n[[param.parameter]]\nnumber = 3772\nkind = \"2word\"\nvalues = [6000]\n";
+    let s = sim::start_toml(&format!("{PROFILE}{max}"));
+    let h = sim::alloc(&s);
+    let css = |h| {
+        let mut c = ODBCSS::default();
+        assert_eq!(unsafe { cnc_rdspcss(h, &mut c) }, EW_OK);
+        (c.srpm, c.sspm, c.smax)
+    };
+    at(&s, 0.5);
+    assert_eq!(css(h), (0, 0, 6000), "no S yet");
+    at(&s, 1.5);
+    assert_eq!(css(h), (1000, 0, 6000), "N20 S1000");
+    assert_eq!(css(h).0, modal(h, 107));
+    assert_eq!(unsafe { cnc_rdspcss(h, std::ptr::null_mut()) }, EW_DATA);
+    sim::free(h);
+}

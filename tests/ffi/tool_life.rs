@@ -353,3 +353,34 @@ fn punch_press_tool_data_reads_the_profile_and_a_mill_refuses_it() {
     }
     sim::free(h);
 }
+
+/// cnc_rdtlinfo reads the profile's `[path.tool_life]` limits on the 30i
+/// class (its own command) and on the 16i class and Series 15 (cnc_rdngrp's
+/// command, the limits after the group count, which cnc_rdngrp still reads).
+#[test]
+fn tool_life_limits_read_the_profile_on_every_class() {
+    for class in [
+        "class = \"30i\"",
+        "class = \"16i\"",
+        "class = \"16i\"\nkind = 2",
+    ] {
+        let p = format!(
+            "[cnc]\n{class}\n[[path]]\n[path.tool_life]\nmax_group = 64\nmax_tool = 8\n\
+             max_minute = 4300\nmax_cycle = 9999\n[[path.tool_group]]\nnumber = 1\n\
+             [[path.tool_group]]\nnumber = 2\n"
+        );
+        let (_s, h) = sim::start_alloc(Profile::parse(&p).expect("profile"));
+        let mut t = ODBTLINFO::default();
+        assert_eq!(unsafe { cnc_rdtlinfo(h, &mut t) }, EW_OK, "{class}");
+        assert_eq!(
+            (t.max_group, t.max_tool, t.max_minute, t.max_cycle),
+            (64, 8, 4300, 9999),
+            "{class}"
+        );
+        let mut g = ODBTLIFE2::default();
+        assert_eq!(unsafe { cnc_rdngrp(h, &mut g) }, EW_OK, "{class}");
+        assert_eq!(g.data, 2, "{class}");
+        assert_eq!(unsafe { cnc_rdtlinfo(h, std::ptr::null_mut()) }, EW_DATA);
+        sim::free(h);
+    }
+}

@@ -52,6 +52,21 @@ impl Offsets {
     }
 }
 
+/// `[path.tool_life]`: the tool life management's limits as the CNC's
+/// configuration sets them (cnc_rdtlinfo); 0 where the profile gives none.
+#[derive(Debug, Clone, Copy, Deserialize, Default, PartialEq, Eq)]
+#[serde(deny_unknown_fields, default)]
+pub struct ToolLifeLimits {
+    /// Groups the table holds.
+    pub max_group: i32,
+    /// Tools in a group.
+    pub max_tool: i32,
+    /// Largest life in minutes.
+    pub max_minute: i32,
+    /// Largest life in cycles.
+    pub max_cycle: i32,
+}
+
 /// `[[path.tool_group]]`: a tool life group (cnc_rdlife, cnc_rdcount,
 /// cnc_rdtoolgrp, and the tool numbers of cnc_toolnum).
 #[derive(Debug, Clone, Deserialize, Default)]

@@ -22,4 +22,16 @@ pub const FUNCS: &[Func] = &[
         reply: &[to(I32, "data", I32)],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdspcss",
+        doc: "Reads the commanded spindle speed, constant surface speed and maximum spindle speed.",
+        params: &[Param::Out("css", "ODBCSS")],
+        forms: &[every_class(cmd::RDSPCSS, &[])],
+        reply: &[
+            to(I32, "srpm", I32),
+            to(I32, "sspm", I32),
+            to(I32, "smax", I32),
+        ],
+        ..COMMAND
+    },
 ];

@@ -1,6 +1,7 @@
 //! The operation functions.
 
 use super::super::commands as cmd;
+use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
@@ -30,6 +31,30 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Short("id")],
         forms: &[every_class(cmd::CLRALM, &[Word::Arg(0)])],
         dims: &["3|0|1|2|-1|100|32767"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdopnlsgnl",
+        doc: "Reads the software operator panel's signals (`type` written back; `datano` left as it was).",
+        params: &[Param::Short("type"), Param::Out("buf", "IODBSGNL")],
+        forms: &[every_class(cmd::RDOPNLSGNL, &[Word::Arg(0)])],
+        reply: &[
+            echo(0, "type", I16),
+            to(I16, "mode", I16),
+            to(I16, "hndl_ax", I16),
+            to(I16, "hndl_mv", I16),
+            to(I16, "rpd_ovrd", I16),
+            to(I16, "jog_ovrd", I16),
+            to(I16, "feed_ovrd", I16),
+            to(I16, "spdl_ovrd", I16),
+            to(I16, "blck_del", I16),
+            to(I16, "sngl_blck", I16),
+            to(I16, "machn_lock", I16),
+            to(I16, "dry_run", I16),
+            to(I16, "mem_prtct", I16),
+            to(I16, "feed_hold", I16),
+        ],
+        dims: &["-1|0|1|4096|8191"],
         ..COMMAND
     },
 ];

@@ -15,6 +15,14 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdprgnumo8",
+        doc: "Reads the running and main program numbers, 8 digits each (all 32 bits of each).",
+        params: &[Param::Out("prgnum", "ODBPROO8")],
+        forms: &[every_class(cmd::PRGNUM, &[])],
+        reply: &[to(I32, "data", I32), to(I32, "mdata", I32)],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdseqnum",
         doc: "Reads the sequence number of the block being executed.",
         params: &[Param::Out("seqnum", "ODBSEQ")],

@@ -132,4 +132,38 @@ pub const FUNCS: &[Func] = &[
         dims: &["2|0|-1|1|9999|32767"],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdtlinfo",
+        doc: "Reads the tool life management's limits: groups, tools in a group, life in minutes and in cycles.",
+        params: &[Param::Out("tlinfo", "ODBTLINFO")],
+        forms: &[
+            Form {
+                classes: Classes::S30,
+                class: cmd::CLASS_CNC,
+                cmd: cmd::RDTLINFO,
+                words: &[],
+            },
+            Form {
+                classes: Classes::S16,
+                class: cmd::CLASS_CNC,
+                cmd: cmd::RDNGRP,
+                words: &[
+                    Word::Const(0),
+                    Word::Const(0),
+                    Word::Const(0),
+                    Word::Const(0),
+                    Word::Const(0x10000),
+                ],
+            },
+        ],
+        // The first word is the number of groups on the 16i class (cnc_rdngrp's).
+        reply: &[
+            skip(I32),
+            to(I32, "max_group", I32),
+            to(I32, "max_tool", I32),
+            to(I32, "max_minute", I32),
+            to(I32, "max_cycle", I32),
+        ],
+        ..COMMAND
+    },
 ];
