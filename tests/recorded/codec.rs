@@ -1693,12 +1693,13 @@ proptest! {
             prop_assert!(ExecProg::from_bytes(&b).is_err());
         }
         // Fewer than one pair / record: no record (cnc_modal decides whether
-        // that is data); a ragged 0x22 record list is an error.
+        // that is data); a ragged 0x22 tail is no record either (FANUC's
+        // library counts length / 8 records, fuzz finding).
         if b.len() < 2 {
             prop_assert_eq!(GModal::from_bytes(&b).map(|g| g.0.len()), Ok(0));
         }
-        if (1..8).contains(&b.len()) {
-            prop_assert!(AuxModal::from_bytes(&b).is_err());
+        if b.len() < 8 {
+            prop_assert_eq!(AuxModal::from_bytes(&b).map(|a| a.0.len()), Ok(0));
         }
         if b.is_empty() {
             prop_assert_eq!(AuxModal::from_bytes(&b).map(|a| a.0.len()), Ok(0));
