@@ -247,13 +247,10 @@ pub unsafe extern "C" fn cnc_acts2(
         unsafe {
             put_at(base, offset_of!(ODBACT2, datano), sp_no);
             for (i, r) in recs.iter().take(room).enumerate() {
-                // 16i class: the low 16 bits (a record of 0x5a bytes gave 0x5a5a).
-                let v = if h.ctx().class.is_16i() {
-                    low16(r.value)
-                } else {
-                    r.value
-                };
-                put_at(base, offset_of!(ODBACT2, data) + 4 * i, v);
+                // Every class: the low 16 bits, sign-extended (16i: a record
+                // of 0x5a bytes gave 0x5a5a; 30i fuzz: 0x9b2a99c9 gave
+                // 0xffff99c9).
+                put_at(base, offset_of!(ODBACT2, data) + 4 * i, low16(r.value));
             }
         }
         Ok(())

@@ -950,7 +950,9 @@ impl Packed {
         }
         Ok(Packed {
             number: b.number as i16,
-            axis: if b.axis < 0 { -1 } else { b.axis as i8 },
+            // The axis word's low byte, as FANUC's library copies it
+            // (0x9a9d → 0x9d, not -1).
+            axis: b.axis as i8,
             ptype,
             values: b.values[..n]
                 .iter()

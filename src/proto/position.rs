@@ -658,7 +658,15 @@ impl Call for AxisDataCall {
             _ => None,
         };
         let plain_names: Vec<Name> = match names {
-            None => payload(resp, 1)?,
+            // A name entry cut after its third byte (name, suffixes) is
+            // still a name: FANUC's library uses those three bytes [fuzz,
+            // rdsvmeter `s1Ln350cut`]; its fourth reads as 0.
+            None => sub(resp, 1)?
+                .payload
+                .chunks(4)
+                .take_while(|c| c.len() >= 3)
+                .map(|c| Name { bytes: zext(c) })
+                .collect(),
             Some(_) => vec![],
         };
         for k in 0..codes.len() {

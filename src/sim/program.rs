@@ -243,10 +243,16 @@ impl Machine {
         })
     }
 
+    /// The CNC clock (Unix seconds): the system clock, or with the
+    /// profile's `clock_at_start` that instant plus the simulator's time
+    /// (frozen with its clock), moved by cnc_settimer.
     fn clock_now(&self) -> i64 {
-        let now = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_secs() as i64);
+        let now = match self.profile.timers.clock_at_start {
+            Some(t) => t + self.now.saturating_duration_since(self.started).as_secs() as i64,
+            None => std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.as_secs() as i64),
+        };
         now + self.profile.timers.clock_offset
     }
 

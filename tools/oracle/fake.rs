@@ -88,6 +88,10 @@ impl State {
     }
 }
 
+/// The fake CNC's clock at its start: 2026-11-25 12:00:00 UTC (Unix
+/// seconds), so that both libraries' runs of a case read one time.
+pub const CLOCK_AT_START: i64 = 1_795_608_000;
+
 pub struct Fake {
     pub port: u16,
     state: Arc<State>,
@@ -98,7 +102,10 @@ pub struct Fake {
 impl Fake {
     /// Serves `profile` on 127.0.0.1 (a free port) with its clock stopped at
     /// `elapsed`, so that two runs of a case see one machine state.
-    pub fn start(profile: Profile, elapsed: Duration, fault: Option<Fault>) -> Fake {
+    /// Its CNC clock (cnc_gettimer) is fixed too: [`CLOCK_AT_START`] plus
+    /// `elapsed`, whatever the time of the run.
+    pub fn start(mut profile: Profile, elapsed: Duration, fault: Option<Fault>) -> Fake {
+        profile.timers.clock_at_start = Some(CLOCK_AT_START);
         let sim = Simulator::start(profile, "127.0.0.1:0").expect("simulator");
         sim.set_elapsed(elapsed);
         let state = Arc::new(State {

@@ -17,6 +17,11 @@ pub struct Timers {
     /// Seconds cnc_settimer moved the CNC clock from the system clock.
     #[serde(skip)]
     pub clock_offset: i64,
+    /// The CNC clock at the simulator's start (Unix seconds) instead of the
+    /// system clock's: with a frozen simulator clock (`Simulator::set_elapsed`)
+    /// cnc_gettimer then reads the same time in every run (the oracle).
+    #[serde(skip)]
+    pub clock_at_start: Option<i64>,
 }
 
 /// `[path.modal]`: what cnc_modal reads.
