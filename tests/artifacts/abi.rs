@@ -4,25 +4,20 @@
 //! and writes); the Rust types of src/types/ have the same layouts.
 //!
 //! layouts.json is test data in this repository (tests/focas-protocol, its
-//! README.md says where it comes from); `$FOCAS_PROTOCOL_DIR` may name another
-//! copy.
+//! README.md says where it comes from).
 
 use crate::toolchain;
 
 use serde_json::Value;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use std::process::Command;
 use toolchain::{
     cc, header_path, header_text, header_typedefs, manifest_dir, run, scratch, target_command,
 };
 
 fn layouts() -> Value {
-    let dir = std::env::var_os("FOCAS_PROTOCOL_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| manifest_dir().join("tests").join("focas-protocol"));
-    let path = dir.join("layouts.json");
+    let path = manifest_dir().join("tests/focas-protocol/layouts.json");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
         panic!(
             "cannot read {}: {e}.\nThe layout check needs tests/focas-protocol/layouts.json.",

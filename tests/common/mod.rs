@@ -20,13 +20,9 @@ use std::time::{Duration, Instant};
 // ---------------------------------------------------------------------------
 
 /// The recorded set: `tests/focas-protocol` in this repository (see its
-/// README.md for where it comes from), or the directory `$FOCAS_PROTOCOL_DIR`
-/// names, to replay another set recorded the same way.
+/// README.md for where it comes from). Nothing outside the repository is read.
 pub fn protocol_dir() -> PathBuf {
-    match std::env::var_os("FOCAS_PROTOCOL_DIR") {
-        Some(d) => PathBuf::from(d),
-        None => PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/focas-protocol"),
-    }
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/focas-protocol")
 }
 
 /// The vector files' directory. There is no skipping: [`load_vectors`]

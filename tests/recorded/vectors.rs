@@ -814,7 +814,7 @@ fn handshake(files: &[VectorFile], case: &Case, fixes: &[Fix]) -> Vec<Event> {
         .frames
         .clone();
     let listed = fixes.iter().any(|f| matches!(f, SpindleWord));
-    if listed || (foreign_set() && needs_spindle_word(case) && name.starts_with("v3")) {
+    if listed {
         set_spindle_word(&mut ev);
     }
     ev
@@ -1045,17 +1045,6 @@ fn plan(case: &Case) -> Result<Plan, String> {
 /// Every table entry names a recorded case, and its call indices exist;
 /// every case that needs the spindle word in a synthesized connect has a
 /// `SpindleWord` entry.
-/// True when `FOCAS_PROTOCOL_DIR` names another set of vectors than the
-/// repository's: the table's entries name the repository's cases, so an entry
-/// without its case is not an error there, and a spindle case without an
-/// entry gets the spindle word as the repository's spindle cases do.
-fn foreign_set() -> bool {
-    std::env::var_os("FOCAS_PROTOCOL_DIR").is_some_and(|d| {
-        let ours = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/focas-protocol");
-        std::fs::canonicalize(&d).ok() != std::fs::canonicalize(ours).ok()
-    })
-}
-
 fn check_table(files: &[VectorFile]) -> Vec<String> {
     let mut out = Vec::new();
     for case in files.iter().flat_map(|f| &f.cases) {
@@ -1063,7 +1052,7 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
             Differs(f) | Recording(f) => f.iter().any(|x| matches!(x, SpindleWord)),
             Dedicated(_) => false,
         });
-        if needs_spindle_word(case) && !case.records_connect() && !has && !foreign_set() {
+        if needs_spindle_word(case) && !case.records_connect() && !has {
             out.push(format!(
                 "{}/{}: its spindle calls need the open response's spindle word; add a Recording(&[SpindleWord]) \
                  entry to DEVIATIONS",
@@ -1083,9 +1072,6 @@ fn check_table(files: &[VectorFile]) -> Vec<String> {
             .flat_map(|f| &f.cases)
             .find(|c| c.function == d.function && c.name == d.case)
         else {
-            if foreign_set() {
-                continue; // another set of vectors: our table names the shared set's cases
-            }
             out.push(format!(
                 "DEVIATIONS names {}/{}, which is not a recorded case",
                 d.function, d.case
@@ -1968,9 +1954,6 @@ fn w_upend(p: &mut Probe, _: &[String]) -> Outcome {
 /// run on a partial set (a missing directory or file fails, never skips).
 #[test]
 fn the_recorded_set_is_whole() {
-    if foreign_set() {
-        return;
-    }
     let files = vectors();
     let cases: usize = files.iter().map(|f| f.cases.len()).sum();
     assert_eq!(
