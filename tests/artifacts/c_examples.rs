@@ -27,7 +27,12 @@ fn cc(args: &[&str]) {
 }
 
 fn build_example(name: &str, dir: &Path) -> PathBuf {
-    let src = root().join("c-examples").join(format!("{name}.c"));
+    build_c(&root().join("c-examples").join(format!("{name}.c")), dir)
+}
+
+/// Compiles one C source against include/fwlib32.h and the library in `dir`.
+fn build_c(src: &Path, dir: &Path) -> PathBuf {
+    let name = src.file_stem().unwrap().to_str().unwrap();
     let exe = dir.join(name);
     let inc = root().join("include");
     cc(&[
@@ -45,6 +50,28 @@ fn build_example(name: &str, dir: &Path) -> PathBuf {
         exe.to_str().unwrap(),
     ]);
     exe
+}
+
+/// A C test of tests/c: the program compiled against the header and the
+/// built library, run against a simulator of `profile` (host and port as
+/// its arguments). It must exit 0; its `key=value` lines are returned with
+/// the simulator, for the test to compare with the machine's state.
+pub(crate) fn run_c_test(name: &str, profile: Profile) -> (HashMap<String, String>, Simulator) {
+    let dir = toolchain::lib_dir(name);
+    let exe = build_c(&root().join("tests/c").join(format!("{name}.c")), &dir);
+    let sim = Simulator::start(profile, "127.0.0.1:0").unwrap();
+    let out = toolchain::target_command(&exe)
+        .args(["127.0.0.1", &sim.port().to_string()])
+        .env("LD_LIBRARY_PATH", &*dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "tests/c/{name}.c failed: {}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (key_values(&out.stdout), sim)
 }
 
 fn key_values(stdout: &[u8]) -> HashMap<String, String> {
@@ -519,3 +546,6 @@ fn maintenance_example_reports_the_histories() {
         format!("{} {} {}", a.number, a.time, a.message)
     );
 }
+
+/// The C tests of tests/c, one module per program.
+mod collectors;
