@@ -636,8 +636,14 @@ impl Call for AxisDataCall {
         let first: Count = payload(resp, 0)?;
         // A CNC error after the first count: the count is still written.
         let limited = usize::from(first.n).min(self.limit.max(0) as usize);
+        let last_at = data_at + codes.len();
         for i in 1..resp.len() {
             if let Err(e @ Error::Cnc { .. }) = sub(resp, i) {
+                // An error in the closing count: FANUC's library returns it
+                // with the count unwritten [fuzz, rdsvmeter `e11s3`].
+                if i == last_at {
+                    return Err(e);
+                }
                 return Ok(AxisDataReply {
                     count: limited,
                     values: vec![vec![]; codes.len()],
@@ -672,8 +678,11 @@ impl Call for AxisDataCall {
         for k in 0..codes.len() {
             got.push(payload::<Vec<Value>>(resp, data_at + k)?);
         }
-        let last: Count = payload(resp, data_at + codes.len())?;
-        let count = usize::from(first.n.min(last.n)).min(self.limit.max(0) as usize);
+        // The closing count ends the frame: a payload shorter than its word
+        // reads zero-extended, as FANUC's library reads it [fuzz, rdsvmeter
+        // `s3Tshort1`].
+        let last = u16::from_be_bytes(zext(&sub(resp, last_at)?.payload));
+        let count = usize::from(first.n.min(last)).min(self.limit.max(0) as usize);
 
         let mut values = Vec::with_capacity(codes.len());
         for (code, recs) in codes.iter().zip(&got) {

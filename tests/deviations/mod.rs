@@ -827,8 +827,30 @@ pub const ORACLE: &[Deviation] = &[
         reason: "when an answer holds no whole block FANUC's library asks again from its last number received + 1 (number 1 before any); ours returns EW_PROTOCOL (-17) with the records before it written",
     },
     Deviation {
+        function: "cnc_rdparam3",
+        cases: &["fuzz_rdparam3_*_s0T#empty_*"],
+        reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns what they make (EW_OK with them, or EW_LENGTH from a length word among them); ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
         function: "cnc_rdsvmeter",
-        cases: &["fuzz_rdsvmeter_v2*_s0Ln0_*"],
+        cases: &["fuzz_rdsvmeter_*_request_*s1Ln350*"],
+        reason: ANSWER_PAST_RECEIVE_BUFFER,
+    },
+    Deviation {
+        function: "cnc_rdsvmeter",
+        cases: &[
+            "fuzz_rdsvmeter_v3*_s0T#empty_*",
+            "fuzz_rdsvmeter_v3*_s0T#short1_*",
+            "fuzz_rdsvmeter_v3*_s0T#cut_*",
+        ],
+        reason: AXIS_COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdsvmeter",
+        cases: &[
+            "fuzz_rdsvmeter_v2*_s0Ln0_*",
+            "fuzz_rdsvmeter_v2*_s0T#empty_*",
+        ],
         reason: "on the 16i class FANUC's library reads max-axes load records whatever the answer holds, from an answer without records the next bytes of its receive buffer; ours writes the whole records answered (none)",
     },
     Deviation {
@@ -961,6 +983,9 @@ const CTRL_SIGNALS_PAST_STRUCT: &str = "FANUC's library writes one 4-byte word p
 /// cnc_acts2 / cnc_rdspload on the 30i class.
 const COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the spindle count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing";
 
+/// An answer longer than FANUC's receive buffer.
+const ANSWER_PAST_RECEIVE_BUFFER: &str = "FANUC's library leaves the part of an answer past its receive buffer in the socket, returns EW_PROTOCOL (-17), and reads that rest as the answer to the close cnc_freelibhndl sends, which then fails with EW_PROTOCOL too; ours also returns EW_PROTOCOL for the call, drops the connection whose answer it could not take, and frees the handle with EW_OK without traffic";
+
 /// cnc_rdaxisdata / cnc_rdsvmeter on the 30i class.
 const AXIS_COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the axis count of an empty or one-byte 0xa4 payload from the bytes after it (the next subpacket's header); ours returns EW_PROTOCOL (-17) and writes nothing";
 
@@ -995,25 +1020,24 @@ pub const UNRECORDED: &[Unrecorded] = &[Unrecorded {
     test: "reliability::a_reply_that_does_not_echo_the_request_is_never_ew_ok",
 }];
 
-/// `pat` matches `name`: exact, or `*` standing for any run of characters
-/// (`rdparam_v3_shape_empty`, `rdmdipntr_v3_shape_err*`, `fuzz_rdexecprog_*_s0Ln*`).
+/// `pat` matches `name`: exact, `*` standing for any run of characters,
+/// `#` for any run within one label (no `_`): `rdparam_v3_shape_empty`,
+/// `rdmdipntr_v3_shape_err*`, `fuzz_rdexecprog_*_s0Ln*`,
+/// `fuzz_rdsvmeter_v3*_s0T#empty_*` (subpacket 0 emptied, whatever else
+/// its label holds).
 pub fn matches(pat: &str, name: &str) -> bool {
-    let parts: Vec<&str> = pat.split('*').collect();
-    if parts.len() == 1 {
-        return pat == name;
-    }
-    let (first, last) = (parts[0], parts[parts.len() - 1]);
-    if !name.starts_with(first) || name.len() < first.len() + last.len() {
-        return false;
-    }
-    let mut rest = &name[first.len()..];
-    for p in &parts[1..parts.len() - 1] {
-        match rest.find(p) {
-            Some(i) => rest = &rest[i + p.len()..],
-            None => return false,
+    fn go(p: &[u8], n: &[u8]) -> bool {
+        match p.split_first() {
+            None => n.is_empty(),
+            Some((b'*', rest)) => (0..=n.len()).any(|i| go(rest, &n[i..])),
+            Some((b'#', rest)) => {
+                let run = n.iter().position(|&c| c == b'_').unwrap_or(n.len());
+                (0..=run).any(|i| go(rest, &n[i..]))
+            }
+            Some((c, rest)) => n.first() == Some(c) && go(rest, &n[1..]),
         }
     }
-    rest.ends_with(last)
+    go(pat.as_bytes(), name.as_bytes())
 }
 
 /// The deviation a recorded case is listed under, if any.

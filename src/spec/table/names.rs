@@ -18,13 +18,13 @@ const fn ch(to: &'static str) -> Field {
 }
 
 /// Whole 4-byte entries, as many as `*data_num` holds (no other cap).
-const fn entries(fields: &'static [Field], elem: &'static str) -> Option<Records> {
+const fn entries(fields: &'static [Field], elem: &'static str, max: u16) -> Option<Records> {
     Some(Records {
         fields,
         out: 0,
         to: "",
         elem,
-        max: u16::MAX,
+        max,
         count: None,
         room: None,
     })
@@ -40,7 +40,13 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: &[at_least_one(0)],
         forms: &[every_class(cmd::RDAXISNAME, &[])],
-        records: entries(&[ch("name"), ch("suff"), skip(U8), skip(U8)], "ODBAXISNAME"),
+        // FANUC's library writes at most 32 names (its MAX_AXIS) [fuzz,
+        // rdaxisname `s0Ln350`].
+        records: entries(
+            &[ch("name"), ch("suff"), skip(U8), skip(U8)],
+            "ODBAXISNAME",
+            32,
+        ),
         dims: &["4|1|0|-1|2|3|32|33"],
         ..COMMAND
     },
@@ -56,6 +62,7 @@ pub const FUNCS: &[Func] = &[
         records: entries(
             &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
             "ODBSPDLNAME",
+            u16::MAX,
         ),
         dims: &["4|1|0|-1|2|8|9"],
         ..COMMAND
