@@ -633,19 +633,24 @@ impl Call for AxisDataCall {
             AxisData::Speed(_) => unreachable!("decoded above"),
         };
         expect_subs(resp, data_at + codes.len() + 1)?;
-        let first: Count = payload(resp, 0)?;
-        // A CNC error after the first count: the count is still written.
-        let limited = usize::from(first.n).min(self.limit.max(0) as usize);
+        // The opening count; FANUC's library reads a payload shorter than
+        // its word from the next subpacket's header (listed), so ours knows
+        // it only when whole.
+        let p0 = &sub(resp, 0)?.payload;
+        let first = (p0.len() >= 2).then(|| u16::from_be_bytes([p0[0], p0[1]]));
+        let room = self.limit.max(0) as usize;
         let last_at = data_at + codes.len();
         for i in 1..resp.len() {
             if let Err(e @ Error::Cnc { .. }) = sub(resp, i) {
                 // An error in the closing count: FANUC's library returns it
                 // with the count unwritten [fuzz, rdsvmeter `e11s3`].
-                if i == last_at {
+                // A CNC error after the first count: the count is still
+                // written.
+                let Some(first) = first.filter(|_| i != last_at) else {
                     return Err(e);
-                }
+                };
                 return Ok(AxisDataReply {
-                    count: limited,
+                    count: usize::from(first).min(room),
                     values: vec![vec![]; codes.len()],
                     error: Some(e),
                 });
@@ -675,14 +680,23 @@ impl Call for AxisDataCall {
                 .collect(),
             Some(_) => vec![],
         };
+        // FANUC's library reads the count's records and no further: bytes
+        // past the last whole record are ignored [fuzz, rdsvmeter `s2Tvlong`].
         for k in 0..codes.len() {
-            got.push(payload::<Vec<Value>>(resp, data_at + k)?);
+            got.push(whole_records(resp, data_at + k)?);
         }
         // The closing count ends the frame: a payload shorter than its word
         // reads zero-extended, as FANUC's library reads it [fuzz, rdsvmeter
         // `s3Tshort1`].
         let last = u16::from_be_bytes(zext(&sub(resp, last_at)?.payload));
-        let count = usize::from(first.n.min(last)).min(self.limit.max(0) as usize);
+        let known = usize::from(last).min(room);
+        // Without the opening count the result is known only when the
+        // closing count or the room makes it 0.
+        let count = match first {
+            Some(first) => known.min(usize::from(first)),
+            None if known == 0 => 0,
+            None => return Err(Error::short("the opening count is cut")),
+        };
 
         let mut values = Vec::with_capacity(codes.len());
         for (code, recs) in codes.iter().zip(&got) {

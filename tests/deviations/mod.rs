@@ -801,11 +801,7 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdaxisdata",
-        cases: &[
-            "fuzz_rdaxisdata_*short1*",
-            "fuzz_rdaxisdata_*cut*",
-            "fuzz_rdaxisdata_*empty*",
-        ],
+        cases: &["fuzz_rdaxisdata_*short1*", "fuzz_rdaxisdata_*empty*"],
         reason: FIELDS_PAST_PAYLOAD,
     },
     Deviation {
@@ -833,24 +829,31 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdsvmeter",
-        cases: &["fuzz_rdsvmeter_*_request_*s1Ln350*"],
+        cases: &["fuzz_rdsvmeter_*_request_*Ln350*"],
+        reason: ANSWER_PAST_RECEIVE_BUFFER,
+    },
+    Deviation {
+        function: "cnc_rdspmeter",
+        cases: &["fuzz_rdspmeter_*_request_*Ln350*"],
         reason: ANSWER_PAST_RECEIVE_BUFFER,
     },
     Deviation {
         function: "cnc_rdsvmeter",
-        cases: &[
-            "fuzz_rdsvmeter_v3*_s0T#empty_*",
-            "fuzz_rdsvmeter_v3*_s0T#short1_*",
-            "fuzz_rdsvmeter_v3*_s0T#cut_*",
-        ],
-        reason: AXIS_COUNT_PAST_PAYLOAD,
+        cases: &["fuzz_rdsvmeter_v3*_s1Ln*"],
+        reason: NAMES_PAST_PAYLOAD,
     },
     Deviation {
         function: "cnc_rdsvmeter",
         cases: &[
-            "fuzz_rdsvmeter_v2*_s0Ln0_*",
-            "fuzz_rdsvmeter_v2*_s0T#empty_*",
+            "fuzz_rdsvmeter_*short1*",
+            "fuzz_rdsvmeter_*cut*",
+            "fuzz_rdsvmeter_*empty*",
         ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdsvmeter",
+        cases: &["fuzz_rdsvmeter_v2*_s0Ln*"],
         reason: "on the 16i class FANUC's library reads max-axes load records whatever the answer holds, from an answer without records the next bytes of its receive buffer; ours writes the whole records answered (none)",
     },
     Deviation {
@@ -1045,4 +1048,22 @@ pub fn oracle(case: &Case) -> Option<&'static Deviation> {
     ORACLE
         .iter()
         .find(|d| d.function == case.function && d.cases.iter().any(|p| matches(p, &case.name)))
+}
+
+/// The pattern a recorded case is listed under, if any: a glob
+/// (`*`, `#`) lists a class of replies, where a member may agree with
+/// FANUC's library (the bytes it read past the payload happened to make
+/// the same answer); an exact name lists that case alone.
+#[allow(dead_code)] // read by tests/recorded/oracle.rs
+pub fn oracle_pattern(case: &Case) -> Option<&'static str> {
+    ORACLE
+        .iter()
+        .filter(|d| d.function == case.function)
+        .flat_map(|d| d.cases.iter().copied())
+        .find(|p| matches(p, &case.name))
+}
+
+/// `pat` lists a class of cases rather than one.
+pub fn is_glob(pat: &str) -> bool {
+    pat.contains(['*', '#'])
 }
