@@ -253,6 +253,11 @@ pub struct Func {
     /// group); when its low 16 bits are 0 the `data` member reads as 0, as
     /// FANUC's library writes it (no such group).
     pub zero_without_first: bool,
+    /// Learnt from FANUC's library (`oracle learn`, tools/oracle/learn.rs):
+    /// what the learner's draft left unsettled, which review settled by
+    /// probing (empty: nothing); `None` for entries written from the
+    /// recordings by hand. COMPATIBILITY.md shows it.
+    pub learnt: Option<&'static [&'static str]>,
 }
 
 impl Func {

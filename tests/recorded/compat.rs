@@ -465,12 +465,31 @@ fn ours_cell(e: Option<&Export>) -> String {
     match e.map(|e| e.how) {
         None => "not exported".to_string(),
         Some(How::Written { area }) => format!("implemented (`src/ffi/{area}.rs`)"),
+        Some(How::Described) if learnt(e.unwrap().name).is_some() => {
+            "learnt from FANUC's library, as data (`src/spec/table/`)".to_string()
+        }
         Some(How::Described) => "described as data (`src/spec/table/`)".to_string(),
         Some(How::NotOnEthernet { code, ew }) if ew == "EW_VERSION" => {
             format!("{ew} ({code}), as FANUC's Ethernet library")
         }
         Some(How::NotOnEthernet { code, ew }) => format!("{ew} ({code}): HSSB only"),
         Some(How::Extension) => "our extension (`fwlib32_ext.h`)".to_string(),
+    }
+}
+
+/// What the learner left unsettled for a learnt table entry.
+fn learnt(name: &str) -> Option<&'static [&'static str]> {
+    fwlib32::spec::FUNCS
+        .iter()
+        .find(|f| f.name == name)
+        .and_then(|f| f.learnt)
+}
+
+fn learnt_cell(name: &str) -> String {
+    match learnt(name) {
+        None => "—".to_string(),
+        Some([]) => "nothing".to_string(),
+        Some(open) => open.join("; "),
     }
 }
 
@@ -613,6 +632,14 @@ fn generate(measured: &Measured) -> String {
         described.to_string(),
     );
     row(
+        "… … of which learnt from FANUC's library (`oracle learn`)",
+        exported_declared
+            .iter()
+            .filter(|e| learnt(e.name).is_some())
+            .count()
+            .to_string(),
+    );
+    row(
         "… answering `EW_VERSION` (-7) without a request, as FANUC's Ethernet library",
         version.to_string(),
     );
@@ -663,6 +690,12 @@ fn generate(measured: &Measured) -> String {
          `EW_VERSION` without a request as FANUC's Ethernet library does (the\n  \
          program links and runs), or not exported (a program calling it does\n  \
          not load: the dynamic loader reports the symbol missing).\n\
+         * **learner left unsettled**: for a function learnt from FANUC's\n  \
+         library (`oracle learn`, `tools/oracle/README.md`), what the\n  \
+         learner's draft could not settle (computed fields, type tags,\n  \
+         overruns, crashes on coded replies), which review settled by\n  \
+         probing and recording; `nothing` when the draft was clean, `—` for\n  \
+         functions written from recordings by hand.\n\
          * **checked against FANUC's library**: the cases recorded from FANUC's\n  \
          library (`tests/vectors/`) that `cargo test` replays to ours\n  \
          (`tests/recorded/oracle.rs`), by CNC class: every request byte, return code and\n  \
@@ -684,14 +717,15 @@ fn generate(measured: &Measured) -> String {
 
     s.push_str(
         "\n## Functions\n\n\
-         | function | FANUC Linux | ours | checked against FANUC's library | simulator | deviations |\n\
-         |---|---|---|---|---|---|\n",
+         | function | FANUC Linux | ours | learner left unsettled | checked against FANUC's library | simulator | deviations |\n\
+         |---|---|---|---|---|---|---|\n",
     );
     for (name, linux) in &fanuc {
         s.push_str(&format!(
-            "| `{name}` | {} | {} | {} | {} | {} |\n",
+            "| `{name}` | {} | {} | {} | {} | {} | {} |\n",
             if *linux { "yes" } else { "—" },
             ours_cell(export(name)),
+            learnt_cell(name),
             checked_cell(&checks, name),
             sim(name),
             dev_cell(name),

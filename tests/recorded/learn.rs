@@ -206,6 +206,7 @@ fn a_described_entry_agrees_with_the_byte_map_and_a_wrong_one_does_not() {
         short: Short::Zeros,
         dims: &[],
         zero_without_first: false,
+        learnt: None,
     };
     const WRONG: Func = Func {
         reply: &[skip(I32), to(I32, "value", I32), to(I32, "u", I32)],
@@ -277,6 +278,7 @@ fn records_repeat_and_match_a_records_entry() {
         short: Short::Zeros,
         dims: &[],
         zero_without_first: false,
+        learnt: None,
     };
     // three asked: the three records written
     let e = expected(&ENTRY, std::slice::from_ref(&rec), 64, 3).unwrap();
@@ -404,4 +406,10 @@ fn a_draft_is_table_syntax_with_its_flags() {
         "{t}"
     );
     assert!(t.contains("// - out 0 name[3]"), "{t}");
+    // The open points travel with the entry, for COMPATIBILITY.md.
+    let open = &t[t.find("learnt: Some(&[").expect("learnt marker")..];
+    assert!(
+        open.contains("\n            \"out 0 name[3]: [Computed]\",\n"),
+        "{t}"
+    );
 }

@@ -1270,6 +1270,13 @@ impl Draft {
             let _ = writeln!(s, "            elem: \"?\", count: 0, max: 1,");
             let _ = writeln!(s, "        }}),");
         }
+        // The learner's open points travel with the entry (a reviewer
+        // words them as settled); COMPATIBILITY.md shows them.
+        let _ = writeln!(s, "        learnt: Some(&[");
+        for f in &self.flags {
+            let _ = writeln!(s, "            {f:?},");
+        }
+        let _ = writeln!(s, "        ]),");
         let _ = writeln!(s, "        ..COMMAND");
         let _ = writeln!(s, "    }},");
         s

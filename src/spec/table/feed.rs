@@ -32,6 +32,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "sspm", I32),
             to(I32, "smax", I32),
         ],
+        learnt: Some(&[]),
         ..COMMAND
     },
 ];

@@ -55,6 +55,7 @@ pub const FUNCS: &[Func] = &[
             to(I16, "feed_hold", I16),
         ],
         dims: &["-1|0|1|4096|8191"],
+        learnt: Some(&[]),
         ..COMMAND
     },
 ];

@@ -20,6 +20,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("prgnum", "ODBPROO8")],
         forms: &[every_class(cmd::PRGNUM, &[])],
         reply: &[to(I32, "data", I32), to(I32, "mdata", I32)],
+        learnt: Some(&[]),
         ..COMMAND
     },
     Func {

@@ -164,6 +164,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "max_minute", I32),
             to(I32, "max_cycle", I32),
         ],
+        learnt: Some(&[]),
         ..COMMAND
     },
 ];
