@@ -161,8 +161,9 @@ pub unsafe extern "C" fn pmc_rdpmcinfo(
         let out = nonnull(buf)?;
         let info = h.call_pmc(&rdpmcinfo(adr_type))?;
         let n = info.areas.len().min(PMCINFO_MAX);
-        let datano = if info.count <= n as i32 {
-            info.count as c_short
+        let count = info.count as c_short;
+        let datano = if i32::from(count) <= n as i32 {
+            count
         } else {
             n as c_short
         };

@@ -138,7 +138,9 @@ impl super::wire::Wire for PmcInfo {
     }
     fn decode(r: &mut super::wire::Reader<'_>) -> Result<Self, super::wire::DecodeError> {
         let count = r.i32()?;
-        let n = (count.max(0) as usize).min(r.remaining() / 12);
+        // FANUC's library counts with the word's low 16 bits (ODBPMCINF's
+        // short `datano`) [fuzz, pmc_rdpmcinfo `s0Twwwwwmore`].
+        let n = ((count as i16).max(0) as usize).min(r.remaining() / 12);
         let mut areas = Vec::with_capacity(n);
         for _ in 0..n {
             areas.push(PmcAreaInfo::decode(r)?);
