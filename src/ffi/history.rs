@@ -1,4 +1,4 @@
-//! Records read by number range (src/proto/history.rs): the operation
+//! Records read by number range (src/proto/history/): the operation
 //! history, the operator message histories, alarm history 5 and the pitch
 //! error table.
 

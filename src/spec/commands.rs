@@ -479,7 +479,7 @@ mod tests {
             ("proto/frame.rs", "CLIENT_VERSION"),
             ("client/handles.rs", "FIRST"),
             ("native/cnc.rs", "DEFAULT_PORT"),
-            ("proto/history.rs", "OP4_RESTART_TYPE"),
+            ("proto/history/op4.rs", "OP4_RESTART_TYPE"),
             ("proto/value.rs", "BASE_10"),
             ("proto/value.rs", "BASE_2"),
         ];

@@ -1,0 +1,102 @@
+//! cnc_rddynamic2 / cnc_rddynamic: the 9-subpacket frame.
+
+use super::codes::pos;
+use super::payload::{AlarmBits, ProgNums, SeqNum};
+use super::read::{expect_subs, records};
+use crate::error::{Error, Result};
+use crate::proto::call::{Call, Ctx, payload, sub};
+use crate::proto::cmd::{ACTF, ACTS, ALARM, POSITION, PRGNUM, SEQNUM};
+use crate::proto::packet::{ReqSub, RespSub};
+use crate::proto::value::Value;
+
+/// The 9-subpacket frame of cnc_rddynamic2 / cnc_rddynamic.
+#[derive(Debug, Clone, Copy)]
+pub struct Dynamic {
+    pub axis: i16,
+}
+
+/// What the frame carries, as far as it was read: FANUC's library writes
+/// each group of fields as it reads its subpacket, so an error in a later
+/// subpacket leaves the earlier fields written. `pos` = absolute, machine,
+/// relative, distance values (one per record received).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct DynamicData {
+    pub alarm: Option<u32>,
+    /// Running and main program numbers.
+    pub prgnum: Option<(i32, i32)>,
+    pub seqnum: Option<i32>,
+    pub actf: Option<i32>,
+    pub acts: Option<i32>,
+    /// Set once the position subpackets are reached (FANUC writes the axis
+    /// word then, even when the first of them is an error).
+    pub axis: bool,
+    pub pos: Option<[Vec<i32>; 4]>,
+    /// The CNC's error in the subpacket where reading stopped.
+    pub error: Option<Error>,
+}
+
+/// The four 0x26 codes of the dynamic frame, in the struct's order.
+pub const DYNAMIC_POS: [i32; 4] = [pos::ABSOLUTE, pos::MACHINE, pos::RELATIVE, pos::DISTANCE];
+
+impl Call for Dynamic {
+    type Output = DynamicData;
+    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
+        let a = i32::from(self.axis);
+        let mut v = vec![
+            ReqSub::cnc(ALARM, &[]),
+            ReqSub::cnc(PRGNUM, &[]),
+            ReqSub::cnc(SEQNUM, &[]),
+            ReqSub::cnc(ACTF, &[]),
+            ReqSub::cnc(ACTS, &[]),
+        ];
+        v.extend(DYNAMIC_POS.map(|c| ReqSub::cnc(POSITION, &[c, a])));
+        v
+    }
+    /// A frame cut short or a payload shorter than its fields is
+    /// EW_PROTOCOL with nothing to write (FANUC's library reads the next
+    /// subpacket's bytes as the fields); a CNC error ends the reading with
+    /// the fields before it kept.
+    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<DynamicData> {
+        expect_subs(resp, 9)?;
+        let mut d = DynamicData::default();
+        let cnc = |i: usize| -> Result<Option<Error>> {
+            match sub(resp, i) {
+                Ok(_) => Ok(None),
+                Err(e @ Error::Cnc { .. }) => Ok(Some(e)),
+                Err(e) => Err(e),
+            }
+        };
+        macro_rules! step {
+            ($i:expr, $body:expr) => {
+                if let Some(e) = cnc($i)? {
+                    d.error = Some(e);
+                    return Ok(d);
+                }
+                $body;
+            };
+        }
+        step!(0, d.alarm = Some(payload::<AlarmBits>(resp, 0)?.bits));
+        step!(1, {
+            let p: ProgNums = payload(resp, 1)?;
+            d.prgnum = Some((p.data, p.mdata));
+        });
+        step!(2, d.seqnum = Some(payload::<SeqNum>(resp, 2)?.data));
+        step!(3, d.actf = Some(payload::<Value>(resp, 3)?.value));
+        step!(4, d.acts = Some(payload::<Value>(resp, 4)?.value));
+        d.axis = true;
+        // One axis needs its record; all axes take what came.
+        let need = usize::from(self.axis != -1);
+        let mut pos: [Vec<i32>; 4] = Default::default();
+        for (k, p) in pos.iter_mut().enumerate() {
+            step!(
+                5 + k,
+                *p = records(resp, 5 + k, need)?
+                    .iter()
+                    .map(|v| v.value)
+                    .collect()
+            );
+        }
+        d.pos = Some(pos);
+        Ok(d)
+    }
+}
