@@ -60,6 +60,7 @@ pub const ORACLE: &[Deviation] = &[
             "pdf_rdactpt_v2_shape_longer",
             "fuzz_pdf_rdactpt_*empty*",
             "fuzz_pdf_rdactpt_*long*",
+            "fuzz_pdf_rdactpt_*more*",
         ],
         reason: "FANUC's library copies the whole name part of the answer, past the caller's 256 bytes for a longer one, and for an empty one its receive buffer's bytes (kilobytes, over the caller's next variables); ours writes at most 256 bytes (256 zeros for an empty answer)",
     },
@@ -339,6 +340,21 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdmacror2_*long*",
         ],
         reason: "FANUC's library writes every double the CNC sends, past the requested *num (an overrun); ours writes at most *num",
+    },
+    Deviation {
+        function: "cnc_rdparainfo3",
+        cases: &["fuzz_rdparainfo3_*more*", "fuzz_rdparainfo3_*long*"],
+        reason: "as cnc_rdparainfo: FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps the entries at read_no",
+    },
+    Deviation {
+        function: "cnc_rdtlinfo",
+        cases: &["fuzz_rdtlinfo_v2*", "fuzz_rdtlinfo_s15*"],
+        reason: "on the 16i class and Series 15 FANUC's library reads the limits a short answer lacks from its frame buffer, where max_tool's bytes still hold its request's fifth word (0x10000); ours reads them as zero",
+    },
+    Deviation {
+        function: "cnc_rdproginfo",
+        cases: &["fuzz_rdproginfo_v*_a2_*"],
+        reason: "with type 1 FANUC's library writes the whole text and a NUL past `length` when the numbers' digits make it longer (an overrun); ours writes at most `length` bytes",
     },
     Deviation {
         function: "cnc_rdparainfo",
