@@ -294,13 +294,21 @@ pub unsafe extern "C" fn cnc_rdprogdir(
         }
         let mut text = pp::DirText::new(r#type, length);
         let mut start = i32::from(datano_s);
+        // A number past datano_e ends the text, not the exchanges: FANUC's
+        // library goes on from the last number answered while it is below
+        // datano_e [fuzz, rdprogdir `s0Tvwwww`].
+        let mut past_end = false;
         'exchanges: loop {
             let d = h.call(&pp::progdir(start, pp::PROGDIR_CHUNK, i32::from(r#type)))?;
             let Some(last) = d.0.last().map(|e| e.number) else {
                 break;
             };
             for e in d.0.iter().take(pp::PROGDIR_CHUNK as usize) {
-                if e.number > i32::from(datano_e) || !text.push(e) {
+                past_end |= e.number > i32::from(datano_e);
+                if past_end {
+                    break;
+                }
+                if !text.push(e) {
                     break 'exchanges;
                 }
             }
