@@ -57,6 +57,6 @@ pub use ffi::machine::*;
 #[doc(hidden)]
 pub use ffi::{
     absent::*, alarm::*, axisdata::*, described::*, download::*, dynamic::*, ext::*, folder::*,
-    handle::*, history::*, macros::*, memory::*, offset::*, param::*, pmc::*, position::*,
-    program::*, spindle::*, status::*, tool::*, upload::*,
+    handle::*, history::*, macros::*, memory::*, offset::*, param::*, paraminfo::*, pmc::*,
+    position::*, program::*, spindle::*, status::*, tool::*, upload::*,
 };

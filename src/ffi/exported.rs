@@ -58,8 +58,10 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("param", &[
         "cnc_rdparam", "cnc_rdparam3", "cnc_diagnoss", "cnc_rddiag", "cnc_wrparam",
-        "cnc_rdparainfo", "cnc_rddiaginfo", "cnc_rdparam_ext", "cnc_rddiag_ext", "cnc_rdparanum",
-        "cnc_rddiagnum", "cnc_rdparar", "cnc_wrparas", "cnc_rdparainfo3",
+        "cnc_rdparanum", "cnc_rddiagnum", "cnc_rdparar", "cnc_wrparas",
+    ]),
+    ("paraminfo", &[
+        "cnc_rdparainfo", "cnc_rddiaginfo", "cnc_rdparam_ext", "cnc_rddiag_ext", "cnc_rdparainfo3",
     ]),
     ("pmc", &[
         "pmc_rdpmcrng", "pmc_wrpmcrng", "pmc_getdtailerr", "pmc_rdpmcinfo", "pmc_select_pmc_unit",

@@ -18,6 +18,7 @@ pub mod macros;
 pub mod memory;
 pub mod offset;
 pub mod param;
+pub mod paraminfo;
 pub mod pmc;
 pub mod position;
 pub mod program;
