@@ -56,7 +56,7 @@ pub use ffi::machine::*;
 #[allow(unused_imports)]
 #[doc(hidden)]
 pub use ffi::{
-    absent::*, alarm::*, described::*, download::*, ext::*, folder::*, handle::*, history::*,
-    macros::*, memory::*, offset::*, param::*, pmc::*, position::*, program::*, status::*, tool::*,
-    upload::*,
+    absent::*, alarm::*, axisdata::*, described::*, download::*, dynamic::*, ext::*, folder::*,
+    handle::*, history::*, macros::*, memory::*, offset::*, param::*, paraminfo::*, pmc::*,
+    position::*, program::*, spindle::*, status::*, tool::*, upload::*,
 };

@@ -19,11 +19,13 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_alarm", "cnc_alarm2", "cnc_rdalmmsg", "cnc_rdalmmsg2", "cnc_rdalminfo", "cnc_rdopmsg",
         "cnc_rdopmsg3", "cnc_rdalmhistry", "cnc_rdalmhistry2", "cnc_rdalmhisno",
     ]),
+    ("axisdata", &["cnc_rdsvmeter", "cnc_rdspmeter", "cnc_rdaxisdata"]),
     ("download", &[
         "cnc_dwnstart", "cnc_download", "cnc_dwnend", "cnc_dwnstart3", "cnc_download3",
         "cnc_dwnend3", "cnc_dwnstart4", "cnc_download4", "cnc_dwnend4", "cnc_dncstart", "cnc_dnc",
         "cnc_dncend", "cnc_dncstart2", "cnc_dnc2", "cnc_dncend2",
     ]),
+    ("dynamic", &["cnc_rddynamic2", "cnc_rddynamic"]),
     ("folder", &[
         "cnc_rdpdf_drive", "cnc_rdpdf_inf", "cnc_rdpdf_curdir", "cnc_wrpdf_curdir",
         "cnc_rdpdf_subdirn", "cnc_pdf_rdmain", "cnc_pdf_add", "cnc_pdf_del", "cnc_pdf_slctmain",
@@ -56,8 +58,10 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("param", &[
         "cnc_rdparam", "cnc_rdparam3", "cnc_diagnoss", "cnc_rddiag", "cnc_wrparam",
-        "cnc_rdparainfo", "cnc_rddiaginfo", "cnc_rdparam_ext", "cnc_rddiag_ext", "cnc_rdparanum",
-        "cnc_rddiagnum", "cnc_rdparar", "cnc_wrparas", "cnc_rdparainfo3",
+        "cnc_rdparanum", "cnc_rddiagnum", "cnc_rdparar", "cnc_wrparas",
+    ]),
+    ("paraminfo", &[
+        "cnc_rdparainfo", "cnc_rddiaginfo", "cnc_rdparam_ext", "cnc_rddiag_ext", "cnc_rdparainfo3",
     ]),
     ("pmc", &[
         "pmc_rdpmcrng", "pmc_wrpmcrng", "pmc_getdtailerr", "pmc_rdpmcinfo", "pmc_select_pmc_unit",
@@ -65,8 +69,6 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "pmc_get_timer_type", "pmc_set_timer_type",
     ]),
     ("position", &[
-        "cnc_rddynamic2", "cnc_rddynamic", "cnc_acts2", "cnc_rdspeed", "cnc_rdsvmeter",
-        "cnc_rdspmeter", "cnc_rdspload", "cnc_rdspmaxrpm", "cnc_rdspgear", "cnc_rdaxisdata",
         "cnc_rdposition", "cnc_absolute", "cnc_absolute2", "cnc_machine", "cnc_relative",
         "cnc_relative2", "cnc_distance", "cnc_skip", "cnc_srvdelay", "cnc_accdecdly",
         "cnc_getfigure",
@@ -74,6 +76,9 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ("program", &[
         "cnc_exeprgname", "cnc_exeprgname2", "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
         "cnc_settimer", "cnc_rdopmode", "cnc_rdprogdir", "cnc_rdprogdir3",
+    ]),
+    ("spindle", &[
+        "cnc_acts2", "cnc_rdspeed", "cnc_rdspload", "cnc_rdspmaxrpm", "cnc_rdspgear",
     ]),
     ("status", &[
         "cnc_sysinfo", "cnc_sysinfo_ex", "cnc_statinfo", "cnc_statinfo2", "cnc_rdcncid",

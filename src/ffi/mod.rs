@@ -3,8 +3,10 @@
 
 pub mod absent;
 pub mod alarm;
+pub mod axisdata;
 pub mod described;
 pub mod download;
+pub mod dynamic;
 pub mod exported;
 pub mod exports;
 pub mod ext;
@@ -16,9 +18,11 @@ pub mod macros;
 pub mod memory;
 pub mod offset;
 pub mod param;
+pub mod paraminfo;
 pub mod pmc;
 pub mod position;
 pub mod program;
+pub mod spindle;
 pub mod status;
 pub mod tool;
 pub mod upload;
