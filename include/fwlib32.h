@@ -3003,6 +3003,16 @@ short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
 short cnc_rdngrp(unsigned short FlibHndl, struct ODBTLIFE2 *grp);
 
 /*
+ Reads the number of controlled spindles of the path (16i class and
+ Series 15: the CNC's maximum spindles, learnt at connect, without
+ traffic).
+
+ # Safety
+ `spdl` must be NULL or point to a writable short.
+ */
+short cnc_rdnspdl(unsigned short FlibHndl, short *spdl);
+
+/*
  Reads the number of tools in tool-life group `grp_num`.
 
  # Safety
@@ -3396,6 +3406,24 @@ short cnc_rdpm_item(unsigned short FlibHndl,
  `item` must be NULL or point to `*data_num` writable `char[62]`.
  */
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
+ Reads the position deviation of each spindle (spindle position control),
+ one `long` per spindle (at most 8; 4 bytes written per `long`).
+
+ # Safety
+ `data` must be NULL or point to 32 writable bytes: one 4-byte `long` per record answered, at most 8.
+ */
+short cnc_rdposerrs(unsigned short FlibHndl,
+                    long *data);
+
+/*
+ Reads the position deviation of the Z axis in the rigid tapping mode.
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdposerrz(unsigned short FlibHndl, long *data);
 
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,

@@ -8,8 +8,9 @@ use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
 use crate::proto::described::{Described, form, payload_records, payload_values};
+use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
-use crate::spec::{Field, Func, Int};
+use crate::spec::{Field, Func, Int, Learnt};
 #[allow(unused_imports)]
 use crate::types::*;
 #[allow(unused_imports)]
@@ -106,8 +107,23 @@ pub(crate) unsafe fn exec(
         }
     }
     outs_set()?;
-    let Some(form) = form(f, h.ctx().class) else {
-        return Err(Error::local(EW_FUNC, "not on this CNC class"));
+    let cx = h.ctx();
+    let Some(form) = form(f, cx.class) else {
+        // No request on this class: FANUC's library answers from what it
+        // learnt at connect, where it does.
+        let class = (
+            cx.class.is_16i(),
+            matches!(cx.class, CncClass::Series16 { kind: 2 }),
+        );
+        let Some(l) = f.local.filter(|l| l.classes.matches(class.0, class.1)) else {
+            return Err(Error::local(EW_FUNC, "not on this CNC class"));
+        };
+        let mut v = l.values.iter().map(|x| match x {
+            Learnt::MaxSpindles => i64::from(cx.max_spindles),
+        });
+        // SAFETY: the caller's contract (offsets and elements in the outputs).
+        unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
+        return Ok(());
     };
     let n = payload_records(f, args);
     let payload = match n {

@@ -248,17 +248,37 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
 }
 
 /// The described function a request subpacket asks for, on a CNC of this
-/// class (simulator dispatch). A CNC sends one answer per command: where
-/// functions share a command (cnc_rdtofsinfo and cnc_rdtofsinfo2), the one
-/// with the longest reply layout describes the whole answer and the others
-/// read a prefix of it.
+/// class (simulator dispatch). Where functions share a command and their
+/// forms' constant words tell them apart (cnc_rdposerrs \[0\] and
+/// cnc_rdposerrz \[3\] on 0x0058), the ones whose constants the request
+/// carries (words a form leaves out are 0; a write's fifth word, its
+/// payload's length, is not compared). Among those (or, when none, among
+/// all of the command's) the one with the longest reply layout describes
+/// the whole answer and the others read a prefix of it (cnc_rdtofsinfo and
+/// cnc_rdtofsinfo2).
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
-    crate::spec::FUNCS
-        .iter()
-        .filter(|f| {
+    let of_cmd = || {
+        crate::spec::FUNCS.iter().filter(|f| {
             form(f, class).is_some_and(|form| form.cmd == sub.cmd && form.class == sub.class)
         })
+    };
+    let carried = |f: &&Func| {
+        form(f, class).is_some_and(|form| {
+            (0..5).all(|k| {
+                let want = match form.words.get(k) {
+                    Some(Word::Const(c)) => *c,
+                    Some(_) => return true,
+                    None if k == 4 && f.payload.is_some() => return true,
+                    None => 0,
+                };
+                sub.args.get(k).copied().unwrap_or(0) == want
+            })
+        })
+    };
+    of_cmd()
+        .filter(carried)
         .max_by_key(|f| f.reply_len())
+        .or_else(|| of_cmd().max_by_key(|f| f.reply_len()))
 }
 
 /// The number arguments the request carries (inverse of the form's words:

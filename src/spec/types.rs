@@ -71,6 +71,34 @@ pub enum Word {
     Asked,
 }
 
+impl Classes {
+    /// Whether a CNC of the 16i class (`s16`) or Series 15 (`s15`) is of these.
+    pub const fn matches(self, s16: bool, s15: bool) -> bool {
+        match self {
+            Classes::All => true,
+            Classes::S30 => !s16,
+            Classes::S16 => s16,
+            Classes::S15 => s15,
+        }
+    }
+}
+
+/// A figure FANUC's library learnt from the CNC at connect (the open
+/// answer), which some functions answer from without traffic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Learnt {
+    /// The CNC's maximum spindles.
+    MaxSpindles,
+}
+
+/// The answer of a function that sends nothing on some classes: the
+/// reply's integers, in layout order, are these learnt figures.
+#[derive(Debug, Clone, Copy)]
+pub struct Local {
+    pub classes: Classes,
+    pub values: &'static [Learnt],
+}
+
 /// How the request is formed on some classes.
 #[derive(Debug, Clone, Copy)]
 pub struct Form {
@@ -245,6 +273,9 @@ pub struct Func {
     pub records: Option<Records>,
     /// The records a write sends, if any.
     pub payload: Option<Payload>,
+    /// Classes on which no request is sent (no form of theirs): the
+    /// answer is what the library learnt at connect.
+    pub local: Option<Local>,
     pub short: Short,
     /// The oracle's dimensions, one per number parameter: "|"-separated
     /// values, the base first.

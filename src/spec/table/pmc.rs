@@ -13,6 +13,7 @@ pub const FUNCS: &[Func] = &[Func {
     reply: &[to(I32, "", I32)],
     records: None,
     payload: None,
+    local: None,
     short: Short::Zeros,
     dims: &[],
     zero_without_first: false,
