@@ -42,6 +42,11 @@ int main(int argc, char **argv) {
     for (int i = 0; i < nspdl && i < 8; i++) printf("%s%d", i ? "," : "", errs[i]);
     printf("\n");
 
+    ODBPSER ps;
+    memset(&ps, 0, sizeof ps);
+    check("rdposerrs2", cnc_rdposerrs2(h, &ps));
+    printf("poserrs2=%d,%d\n", (int)ps.poserr1, (int)ps.poserr2);
+
     /* The servo delay of each axis, which the Z deviation is one of. */
     ODBAXIS dly;
     memset(&dly, 0, sizeof dly);
@@ -53,6 +58,38 @@ int main(int argc, char **argv) {
     int z = -1;
     check("rdposerrz", cnc_rdposerrz(h, (long *)&z));
     printf("poserrz=%d\n", z);
+
+    /* The values in force in the block in execution, each with the value
+     * cnc_modal gives for its address (types 100 + k, FANUC's order
+     * B D E F H L M S T). */
+    ODBCMD cmds[8];
+    short ncmd = 8;
+    memset(cmds, 0, sizeof cmds);
+    check("rdcommand", cnc_rdcommand(h, -1, 0, &ncmd, cmds));
+    printf("ncmd=%d\n", ncmd);
+    for (int i = 0; i < ncmd && i < 8; i++) {
+        const char *order = "BDEFHLMST";
+        const char *at = strchr(order, cmds[i].adrs);
+        ODBMDL md;
+        memset(&md, 0, sizeof md);
+        long modal = -1;
+        if (at && cmds[i].adrs) {
+            check("modal", cnc_modal(h, (short)(100 + (at - order)), 0, &md));
+            modal = (long)md.modal.aux.aux_data;
+        }
+        printf("cmd%d=%c,%d,%d,%ld,%ld,%ld\n", i, cmds[i].adrs, cmds[i].num, cmds[i].flag,
+               (long)cmds[i].cmd_val, (long)cmds[i].dec_val, modal);
+    }
+    /* One address: F (type 5, 'A' + 5). */
+    short nf = 1;
+    ODBCMD f;
+    memset(&f, 0, sizeof f);
+    check("rdcommand F", cnc_rdcommand(h, 5, 0, &nf, &f));
+    printf("cmdF=%d,%c,%ld\n", nf, f.adrs, (long)f.cmd_val);
+    /* Room for fewer values than the block has: EW_LENGTH, the count kept. */
+    short one = 1;
+    short rc = cnc_rdcommand(h, -1, 0, &one, cmds);
+    printf("cmd_short=%d,%d\n", rc, one);
 
     cnc_freelibhndl(h);
     return 0;

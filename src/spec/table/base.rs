@@ -13,8 +13,10 @@ pub const COMMAND: Func = Func {
     reply: &[],
     records: None,
     payload: None,
+    more: &[],
     local: None,
     short: Short::Zeros,
+    overflow: Overflow::Cut,
     dims: &[],
     zero_without_first: false,
 };
@@ -38,8 +40,10 @@ pub const SERVO_LONGS: Func = Func {
         room: None,
     }),
     payload: None,
+    more: &[],
     local: None,
     short: Short::Zeros,
+    overflow: Overflow::Cut,
     dims: &[],
     zero_without_first: false,
 };

@@ -13,8 +13,10 @@ pub const FUNCS: &[Func] = &[Func {
     reply: &[to(I32, "", I32)],
     records: None,
     payload: None,
+    more: &[],
     local: None,
     short: Short::Zeros,
+    overflow: Overflow::Cut,
     dims: &[],
     zero_without_first: false,
 }];

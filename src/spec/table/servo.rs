@@ -94,6 +94,15 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdposerrs2",
+        doc: "Reads the position deviations of spindles 1 and 2 (spindle position control).",
+        params: &[Param::Out("poserr", "ODBPSER")],
+        forms: &[every_class(cmd::POSERR, &[Word::Const(1)])],
+        more: &[&[Word::Const(2)]],
+        reply: &[to(I32, "poserr1", I32), to(I32, "poserr2", I32)],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdposerrz",
         doc: "Reads the position deviation of the Z axis in the rigid tapping mode.",
         params: &[Param::Out("data", "long")],

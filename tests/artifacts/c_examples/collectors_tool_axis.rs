@@ -71,10 +71,31 @@ fn tool_axis_reads_follow_the_machine() {
         assert_eq!(speeds[1], 1500, "spindle S2 of the profile turns");
         assert_eq!(want[1], 1280);
         assert_eq!(ints(&kv["poserrs"]), want, "at {ms} ms");
+        // Spindles 1 and 2 alone.
+        assert_eq!(ints(&kv["poserrs2"]), want[..2], "at {ms} ms");
         // The Z axis's deviation is its servo delay (cnc_srvdelay).
         let delay = ints(&kv["srvdelay"])[z];
         assert_eq!(kv["poserrz"], delay.to_string(), "at {ms} ms");
         z_moved |= delay != 0;
+        // The values in force: each address's value is cnc_modal's for it.
+        let n: usize = kv["ncmd"].parse().unwrap();
+        assert!(n >= 3, "F, S and T at least ({n})");
+        let mut letters = String::new();
+        for i in 0..n {
+            let rec: Vec<&str> = kv[&format!("cmd{i}")].split(',').collect();
+            letters.push_str(rec[0]);
+            assert_eq!(&rec[1..4], ["1", "0", rec[5]], "cmd{i} at {ms} ms");
+            assert_eq!(rec[4], "0");
+        }
+        assert!(
+            letters.contains('F') && letters.contains('S') && letters.contains('T'),
+            "{letters}"
+        );
+        let f: Vec<&str> = kv["cmdF"].split(',').collect();
+        assert_eq!(f[..2], ["1", "F"]);
+        let i = letters.find('F').unwrap();
+        assert_eq!(f[2], kv[&format!("cmd{i}")].split(',').nth(3).unwrap());
+        assert_eq!(kv["cmd_short"], "2,1", "EW_LENGTH, the count kept");
     }
     assert!(z_moved, "the program moves Z at one of the instants");
 }
