@@ -479,6 +479,19 @@ typedef struct ODBAXISNAME {
 } ODBAXISNAME;
 
 /*
+ cnc_rdcommand: one commanded value of a block: the address letter,
+ which of the block's words of that address (M codes: 1, 2, 3 ...), a
+ flag, the value and its decimal places.
+ */
+typedef struct ODBCMD {
+    char adrs;
+    char num;
+    short flag;
+    LONG cmd_val;
+    LONG dec_val;
+} ODBCMD;
+
+/*
  cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
  */
 typedef struct ODBTLIFE3 {
@@ -1126,6 +1139,14 @@ typedef struct IODBPMAINTE {
      */
     LONG stat;
 } IODBPMAINTE;
+
+/*
+ cnc_rdposerrs2: the position deviations of spindles 1 and 2.
+ */
+typedef struct ODBPSER {
+    LONG poserr1;
+    LONG poserr2;
+} ODBPSER;
 
 /*
  One position of cnc_rdposition.
@@ -2741,6 +2762,21 @@ short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
 
 /*
+ Reads the commanded values of block `block` (0: the block in execution)
+ for address `type` (-1: every address commanded): one ODBCMD per value,
+ at most `*num` (`*num` = how many were written).
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `command` must be NULL or point to `*num` writable ODBCMD.
+ */
+short cnc_rdcommand(unsigned short FlibHndl,
+                    short type,
+                    short block,
+                    short *num,
+                    struct ODBCMD *command);
+
+/*
  Reads the tool life counter of tool group `number`.
 
  # Safety
@@ -3001,6 +3037,16 @@ short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
  `grp` must be NULL or point to a writable ODBTLIFE2.
  */
 short cnc_rdngrp(unsigned short FlibHndl, struct ODBTLIFE2 *grp);
+
+/*
+ Reads the number of controlled spindles of the path (16i class and
+ Series 15: the CNC's maximum spindles, learnt at connect, without
+ traffic).
+
+ # Safety
+ `spdl` must be NULL or point to a writable short.
+ */
+short cnc_rdnspdl(unsigned short FlibHndl, short *spdl);
 
 /*
  Reads the number of tools in tool-life group `grp_num`.
@@ -3396,6 +3442,33 @@ short cnc_rdpm_item(unsigned short FlibHndl,
  `item` must be NULL or point to `*data_num` writable `char[62]`.
  */
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
+ Reads the position deviation of each spindle (spindle position control),
+ one `long` per spindle (at most 8; 4 bytes written per `long`).
+
+ # Safety
+ `data` must be NULL or point to 32 writable bytes: one 4-byte `long` per record answered, at most 8.
+ */
+short cnc_rdposerrs(unsigned short FlibHndl,
+                    long *data);
+
+/*
+ Reads the position deviations of spindles 1 and 2 (spindle position
+ control).
+
+ # Safety
+ `poserr` must be NULL or point to a writable ODBPSER.
+ */
+short cnc_rdposerrs2(unsigned short FlibHndl, struct ODBPSER *poserr);
+
+/*
+ Reads the position deviation of the Z axis in the rigid tapping mode.
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdposerrz(unsigned short FlibHndl, long *data);
 
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,

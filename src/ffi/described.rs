@@ -8,8 +8,9 @@ use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
 use crate::proto::described::{Described, form, payload_records, payload_values};
+use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
-use crate::spec::{Field, Func, Int};
+use crate::spec::{Field, Func, Int, Learnt, Overflow};
 #[allow(unused_imports)]
 use crate::types::*;
 #[allow(unused_imports)]
@@ -106,8 +107,23 @@ pub(crate) unsafe fn exec(
         }
     }
     outs_set()?;
-    let Some(form) = form(f, h.ctx().class) else {
-        return Err(Error::local(EW_FUNC, "not on this CNC class"));
+    let cx = h.ctx();
+    let Some(form) = form(f, cx.class) else {
+        // No request on this class: FANUC's library answers from what it
+        // learnt at connect, where it does.
+        let class = (
+            cx.class.is_16i(),
+            matches!(cx.class, CncClass::Series16 { kind: 2 }),
+        );
+        let Some(l) = f.local.filter(|l| l.classes.matches(class.0, class.1)) else {
+            return Err(Error::local(EW_FUNC, "not on this CNC class"));
+        };
+        let mut v = l.values.iter().map(|x| match x {
+            Learnt::MaxSpindles => i64::from(cx.max_spindles),
+        });
+        // SAFETY: the caller's contract (offsets and elements in the outputs).
+        unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
+        return Ok(());
     };
     let n = payload_records(f, args);
     let payload = match n {
@@ -121,10 +137,12 @@ pub(crate) unsafe fn exec(
             n,
         ),
     };
+    let late = std::sync::Mutex::new(None);
     let call = Described {
         f,
         args,
         payload: &payload,
+        late: Some(&late),
     };
     let values = if form.class == CLASS_PMC {
         h.call_pmc(&call)?
@@ -141,9 +159,21 @@ pub(crate) unsafe fn exec(
             return Err(Error::length());
         }
     }
+    if let (Some(r), Overflow::Refuse) = (&f.records, f.overflow) {
+        let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
+        let n = values.len().saturating_sub(fixed) / r.values().max(1);
+        let asked = f.count().map_or(0, |i| args[i]);
+        if n as i64 > i64::from(asked) {
+            return Err(Error::length());
+        }
+    }
     let mut v = values.into_iter();
     // SAFETY: the caller's contract (offsets and elements in the outputs).
     unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
+    if let Some(e) = late.into_inner().ok().flatten() {
+        h.note(&e);
+        return Err(e);
+    }
     if let Some(r) = &f.records {
         let per = r.values();
         let mut i = 0;
@@ -179,7 +209,11 @@ unsafe fn write_fields(
 ) {
     for (k, field) in fields.iter().enumerate() {
         for e in 0..field.n as usize {
-            let x = v.next().unwrap_or(0);
+            // A reply cut short by a later subpacket's error: the fields
+            // before it only.
+            let Some(x) = v.next() else {
+                return;
+            };
             if field.to.is_none() {
                 continue;
             }

@@ -8,7 +8,7 @@ use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Field, Form, Func, Int, Short, Word};
+use crate::spec::{Field, Form, Func, Int, Overflow, Short, Word};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -25,6 +25,11 @@ pub struct Described<'a> {
     pub f: &'static Func,
     pub args: &'a [i32],
     pub payload: &'a [i64],
+    /// With [`Func::more`]: where an error of a later subpacket goes, the
+    /// earlier ones' integers being returned (FANUC's library writes each
+    /// subpacket's fields before it reads the next). None: the error is
+    /// the call's.
+    pub late: Option<&'a std::sync::Mutex<Option<crate::error::Error>>>,
 }
 
 impl<'a> Described<'a> {
@@ -34,6 +39,7 @@ impl<'a> Described<'a> {
             f,
             args,
             payload: &[],
+            late: None,
         }
     }
 }
@@ -51,19 +57,22 @@ impl Call for Described<'_> {
         let Some(form) = form(self.f, cx.class) else {
             return;
         };
-        let mut words = [0i32; 5];
-        for (w, f) in words.iter_mut().zip(form.words) {
-            *w = match *f {
-                Word::Arg(i) => self.args.get(i as usize).copied().unwrap_or(0),
-                Word::Const(c) => c,
-                Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
-            };
-        }
-        let sub = if form.class == CLASS_PMC {
-            ReqSub::pmc(form.cmd, &words)
-        } else {
-            ReqSub::cnc(form.cmd, &words)
+        let sub_of = |ws: &[Word]| {
+            let mut words = [0i32; 5];
+            for (w, f) in words.iter_mut().zip(ws) {
+                *w = match *f {
+                    Word::Arg(i) => self.args.get(i as usize).copied().unwrap_or(0),
+                    Word::Const(c) => c,
+                    Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
+                };
+            }
+            if form.class == CLASS_PMC {
+                ReqSub::pmc(form.cmd, &words)
+            } else {
+                ReqSub::cnc(form.cmd, &words)
+            }
         };
+        let sub = sub_of(form.words);
         out.push(match &self.f.payload {
             Some(p) => {
                 let mut w = Writer::new();
@@ -75,10 +84,50 @@ impl Call for Described<'_> {
             }
             None => sub,
         });
+        out.extend(self.f.more.iter().map(|ws| sub_of(ws)));
     }
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
-        decode(self.f, self.args, &sub(resp, 0)?.payload)
+        if self.f.more.is_empty() {
+            return decode(self.f, self.args, &sub(resp, 0)?.payload);
+        }
+        // Each subpacket's answer is its share of the reply's fields.
+        let mut out = Vec::new();
+        for i in 0..=self.f.more.len() {
+            let fields = self.f.share(i);
+            let need: usize = fields.iter().map(Field::wire_len).sum();
+            let part = sub(resp, i).and_then(|s| padded(self.f.short, &s.payload, need));
+            match (part, self.late) {
+                (Ok(p), _) => read_fields(&mut Reader::new(&p), fields, self.args, &mut out)?,
+                (Err(e), Some(late)) if i > 0 => {
+                    if let Ok(mut l) = late.lock() {
+                        *l = Some(e);
+                    }
+                    break;
+                }
+                (Err(e), _) => return Err(e),
+            }
+        }
+        Ok(out)
     }
+}
+
+/// A subpacket's payload at least `need` bytes long, as [`Short`] says
+/// (zeros after it, or EW_PROTOCOL).
+fn padded(short: Short, payload: &[u8], need: usize) -> Result<Vec<u8>> {
+    let mut p = payload.to_vec();
+    if p.len() < need {
+        match short {
+            Short::Error => {
+                return Err(DecodeError::Short {
+                    need,
+                    have: p.len(),
+                }
+                .into());
+            }
+            Short::Zeros => p.resize(need, 0),
+        }
+    }
+    Ok(p)
 }
 
 /// The reply payload's integers (client side); echo fields give the
@@ -119,7 +168,12 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     }
     if let Some(rec) = &f.records {
         let size = rec.wire_len().max(1);
-        let most = asked(f, args).unwrap_or(rec.max as usize);
+        let most = match f.overflow {
+            Overflow::Cut => asked(f, args).unwrap_or(rec.max as usize),
+            // As many as the answer holds: the caller's side refuses more
+            // than it asked for.
+            Overflow::Refuse => usize::MAX,
+        };
         for _ in 0..(r.remaining() / size).min(most) {
             read_fields(&mut r, rec.fields, args, &mut out)?;
         }
@@ -208,7 +262,9 @@ fn read_fields(
 /// CNC sends it (echo fields' integers are not sent).
 pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeError> {
     let bad = DecodeError::Invalid("value count differs from the reply layout");
-    let fixed: usize = f.reply.iter().map(|x| x.n as usize).sum();
+    // With further subpackets, each answer is one share of the fields.
+    let reply = f.share(0);
+    let fixed: usize = reply.iter().map(|x| x.n as usize).sum();
     let extra = values.len().checked_sub(fixed).ok_or(bad)?;
     let records = match f.records {
         None if extra == 0 => 0,
@@ -223,7 +279,7 @@ pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeEr
     };
     let mut w = Writer::new();
     let mut v = values.iter();
-    write_fields(&mut w, f.reply, &mut v);
+    write_fields(&mut w, reply, &mut v);
     if let Some(rec) = &f.records {
         for _ in 0..records {
             write_fields(&mut w, rec.fields, &mut v);
@@ -248,17 +304,37 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
 }
 
 /// The described function a request subpacket asks for, on a CNC of this
-/// class (simulator dispatch). A CNC sends one answer per command: where
-/// functions share a command (cnc_rdtofsinfo and cnc_rdtofsinfo2), the one
-/// with the longest reply layout describes the whole answer and the others
-/// read a prefix of it.
+/// class (simulator dispatch). Where functions share a command and their
+/// forms' constant words tell them apart (cnc_rdposerrs \[0\] and
+/// cnc_rdposerrz \[3\] on 0x0058), the ones whose constants the request
+/// carries (words a form leaves out are 0; a write's fifth word, its
+/// payload's length, is not compared). Among those (or, when none, among
+/// all of the command's) the one with the longest reply layout describes
+/// the whole answer and the others read a prefix of it (cnc_rdtofsinfo and
+/// cnc_rdtofsinfo2).
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
-    crate::spec::FUNCS
-        .iter()
-        .filter(|f| {
+    let of_cmd = || {
+        crate::spec::FUNCS.iter().filter(|f| {
             form(f, class).is_some_and(|form| form.cmd == sub.cmd && form.class == sub.class)
         })
+    };
+    let carried = |f: &&Func| {
+        form(f, class).is_some_and(|form| {
+            (0..5).all(|k| {
+                let want = match form.words.get(k) {
+                    Some(Word::Const(c)) => *c,
+                    Some(_) => return true,
+                    None if k == 4 && f.payload.is_some() => return true,
+                    None => 0,
+                };
+                sub.args.get(k).copied().unwrap_or(0) == want
+            })
+        })
+    };
+    of_cmd()
+        .filter(carried)
         .max_by_key(|f| f.reply_len())
+        .or_else(|| of_cmd().max_by_key(|f| f.reply_len()))
 }
 
 /// The number arguments the request carries (inverse of the form's words:

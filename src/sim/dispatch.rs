@@ -147,12 +147,14 @@ impl Machine {
             Answer::Bytes(f) => f(self, sub),
             Answer::Values(f) => {
                 let class = self.cnc_class();
-                let func = row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
+                row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
+                let func = described::for_request(sub, class).ok_or(CncError::FUNC)?;
                 let args = described::args_of(func, class, sub);
                 let asked = Asked {
                     f: func,
                     path: p,
                     args: &args,
+                    words: sub.args,
                 };
                 let v = f(self, &asked)?;
                 described::encode(func, &v).map_err(|_| CncError::FUNC)
@@ -343,6 +345,10 @@ mod tests {
             "[-1] answers the names per position kind, a form cnc_rdaxisname's layout lacks",
         ),
         (
+            (CLASS_CNC, crate::proto::position::COUNT),
+            "the counts of the hand-written position functions; cnc_rdnspdl reads the spindles'",
+        ),
+        (
             (CLASS_CNC, crate::proto::position::SERVO_LOAD),
             "one command, three functions: the record's form follows the code word",
         ),
@@ -424,10 +430,23 @@ mod tests {
                 };
                 for args in [[0; 5], [1; 5], [2, 1, 1, 1, 1]] {
                     let n = func.numbers().count();
+                    // The words the function's form sends for these arguments.
+                    let mut words = [0; 5];
+                    for (w, f) in words
+                        .iter_mut()
+                        .zip(func.form(i > 0, i == 2).map_or(&[][..], |f| f.words))
+                    {
+                        *w = match *f {
+                            crate::spec::Word::Const(c) => c,
+                            crate::spec::Word::Arg(a) => args[usize::from(a)],
+                            crate::spec::Word::Asked => 0,
+                        };
+                    }
                     let q = Asked {
                         f: func,
                         path: 1,
                         args: &args[..n.min(5)],
+                        words,
                     };
                     if let Ok(v) = f(&mut m, &q) {
                         answered += 1;

@@ -80,6 +80,16 @@ impl ProgramModal {
         self.g.get(t).copied().flatten()
     }
 
+    /// The address letters of the values cnc_modal types `100 + k`
+    /// follow, with their k (cnc_rdcommand's addresses).
+    pub fn letters() -> impl Iterator<Item = (usize, char)> {
+        AUX_LETTERS
+            .iter()
+            .copied()
+            .enumerate()
+            .filter(|(_, c)| *c != '-')
+    }
+
     /// The value of cnc_modal type `100 + k` the program set.
     pub fn aux_value(&self, k: usize) -> Option<i32> {
         self.aux.get(k).copied().flatten()

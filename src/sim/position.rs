@@ -13,7 +13,7 @@ use super::profile::{Axis, Spindle};
 use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
-use crate::proto::cmd::{RDSPCSS, RDSPDLALM};
+use crate::proto::cmd::{POSERR, RDSPCSS, RDSPDLALM};
 use crate::proto::machine::RDCTRLSIG;
 use crate::proto::position::{
     ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
@@ -64,6 +64,29 @@ pub(super) const ROUTES: &[Route] = &[
         _ => Err(ATTRIB),
     }),
     Route::table(RDSPDLALM, spindle_alarms),
+    // [0]: each spindle's position deviation (cnc_rdposerrs); [1], [2]:
+    // spindle 1's, spindle 2's (cnc_rdposerrs2); [3]: the Z axis's
+    // (cnc_rdposerrz, rigid tapping).
+    Route::table(POSERR, |m, q| {
+        let p = m.path(q.path)?;
+        let spindle = |i: usize| p.spindles.get(i).map_or(0, spindle_deviation);
+        match q.words[0] {
+            // Each record: the deviation and a word FANUC's library skips.
+            0 => Ok(p
+                .spindles
+                .iter()
+                .flat_map(|s| [spindle_deviation(s), 0])
+                .collect()),
+            k @ (1 | 2) => Ok(vec![spindle(k as usize - 1)]),
+            3 => Ok(vec![
+                p.axes
+                    .iter()
+                    .find(|a| a.name == "Z")
+                    .map_or(0, |a| i64::from(servo_delay(a))),
+            ]),
+            _ => Err(NUMBER),
+        }
+    }),
     Route::table(RDSPCSS, spindle_css),
 ];
 
@@ -206,12 +229,7 @@ impl Machine {
             pos::SKIP => |a| a.skip,
             // The servo delay: the axis's feed over its loop gain; the
             // acc/dec delay: the feed over half the time constant.
-            pos::SERVO_DELAY => |a| {
-                delay(
-                    a,
-                    100.0 / f64::from(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN).max(1)),
-                )
-            },
+            pos::SERVO_DELAY => servo_delay,
             pos::ACCDEC_DELAY => |a| delay(a, a.accdec_ms.unwrap_or(DEFAULT_ACCDEC_MS) / 2000.0),
             // rdaxisdata class 1 types 7..17: codes whose meaning is not
             // recorded; the simulator answers 0 for every axis.
@@ -452,6 +470,28 @@ impl Machine {
 
 /// Acc/dec time constant when the profile gives none, ms.
 const DEFAULT_ACCDEC_MS: f64 = 32.0;
+
+/// The servo delay (position deviation) of an axis: its feed over its
+/// loop gain, in the axis's units (cnc_srvdelay, cnc_rdposerrz).
+fn servo_delay(a: &Axis) -> i32 {
+    delay(
+        a,
+        100.0 / f64::from(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN).max(1)),
+    )
+}
+
+/// Position coder pulses per spindle revolution when the profile gives none.
+const DEFAULT_PULSES_PER_REV: i32 = 4096;
+
+/// The position deviation of a spindle, in position coder pulses: its
+/// speed (pulses per second) over its position loop gain (0 for a spindle
+/// at rest, as a spindle out of position control has none).
+fn spindle_deviation(s: &Spindle) -> i64 {
+    let pulses =
+        f64::from(s.speed) / 60.0 * f64::from(s.pulses_per_rev.unwrap_or(DEFAULT_PULSES_PER_REV));
+    let gain = f64::from(s.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN).max(1)) / 100.0;
+    (pulses / gain).round() as i64
+}
 
 /// The distance the axis travels in `seconds` at its current feed (the
 /// servo motor speed times the lead), in the axis's units.

@@ -285,6 +285,13 @@ pub struct Spindle {
     pub gear_ratio: i32,
     /// Spindle amplifier alarm number, 0 for none (cnc_rdspdlalm).
     pub alarm: i16,
+    /// Position loop gain of the spindle's position control, 0.01/s
+    /// (default 3000): its position deviation (cnc_rdposerrs,
+    /// cnc_rdposerrs2) is its speed over it.
+    pub loop_gain: Option<i32>,
+    /// Position coder pulses per revolution (default 4096): the unit of
+    /// the spindle's position deviation.
+    pub pulses_per_rev: Option<i32>,
 }
 
 #[derive(Debug, thiserror::Error)]

@@ -3,13 +3,14 @@
 //! [`super::run::PathRun`] at request time.
 
 use super::Machine;
+use super::modal::ProgramModal;
 pub use super::profile::program::{Modal, OperatorMessage, Timers};
 use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
 use crate::proto::cmd::RDPROCTIME;
-use crate::proto::cmd::{RDACTPT, RDBLKCOUNT};
+use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND};
 use crate::proto::program::{
     AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
     ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
@@ -51,7 +52,34 @@ pub(super) const ROUTES: &[Route] = &[
             .map(|a| vec![i64::from(a.prog_no), i64::from(a.blk_no)])
     }),
     Route::table(RDPROCTIME, processing_times),
+    Route::table(RDCOMMAND, commanded),
 ];
+
+/// cnc_rdcommand \[type, block\]: the values in force in the block in
+/// execution (block 0) that cnc_modal's other codes read (the running
+/// program's, else the profile's `[path.modal]`), one record per address
+/// in cnc_modal's order (B D F H M S T), or the one of address `type`
+/// (0 'A' .. 25 'Z'): the letter, 1 (its first word), flag 0, the value, 0
+/// decimals. Other blocks: EW_NUMBER (the simulator keeps no look-ahead).
+fn commanded(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let (kind, block) = (q.arg(0), q.arg(1));
+    if block != 0 || !(-1..26).contains(&kind) {
+        return Err(CncError::NUMBER);
+    }
+    let aux = &m.path(q.path)?.modal.aux;
+    let set = &m.live(q.path)?.modal;
+    let mut v = Vec::new();
+    for (k, letter) in ProgramModal::letters() {
+        let value = set
+            .aux_value(k)
+            .or_else(|| aux.get(&(100 + k).to_string()).copied());
+        let wanted = kind == -1 || i64::from(kind) == letter as i64 - 'A' as i64;
+        if let (Some(value), true) = (value, wanted) {
+            v.extend([letter as i64, 1, 0, i64::from(value), 0]);
+        }
+    }
+    Ok(v)
+}
 
 /// cnc_rdproctime: as many runs as the layout's records hold.
 fn processing_times(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {

@@ -28,6 +28,9 @@ pub struct Asked<'a> {
     pub path: u16,
     /// The caller's number arguments the request carried.
     pub args: &'a [i32],
+    /// The request's five argument words as sent (where functions sharing
+    /// a command differ by a constant word: cnc_rdposerrs's 0x0058).
+    pub words: [i32; 5],
 }
 
 impl Asked<'_> {

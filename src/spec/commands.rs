@@ -151,6 +151,10 @@ commands! {
     SERVO_LOAD = CLASS_CNC 0x0056 [cnc_rdsvmeter cnc_rdaxisdata cnc_rdloopgain cnc_rdsrvspeed
         cnc_rdcurrent];
     RDOPMODE = CLASS_CNC 0x0057 [cnc_rdopmode];
+    /// Position deviations: \[0\] each spindle's (value records), \[1\]
+    /// and \[2\] spindle 1's and 2's (cnc_rdposerrs2 sends both in one
+    /// request), \[3\] the Z axis's in rigid tapping.
+    POSERR = CLASS_CNC 0x0058 [cnc_rdposerrs cnc_rdposerrs2 cnc_rdposerrz];
     RDSPDLALM = CLASS_CNC 0x005a [cnc_rdspdlalm];
     /// cnc_rdctrldi / cnc_rdctrldo: (1,0x005b)\[0\] input signals, \[1\] output.
     RDCTRLSIG = CLASS_CNC 0x005b [cnc_rdctrldi cnc_rdctrldo];
@@ -199,6 +203,9 @@ commands! {
     /// Series 15: which spindle's name is shown with the speed (1-based; its
     /// entry of 0x8a names the actual speed).
     SPINDLE_SHOWN15 = CLASS_CNC 0x0095 [cnc_rdspeed];
+    /// cnc_rdcommand: (1,0x0097)[type, block], records of the commanded
+    /// values (address, number, flag, value, decimals).
+    RDCOMMAND = CLASS_CNC 0x0097 [cnc_rdcommand];
     TMMODE = CLASS_CNC 0x0098 [cnc_statinfo cnc_statinfo2];
     /// cnc_rdtoolinfo (punch press): no args.
     PTLINFO = CLASS_CNC 0x0099 [cnc_rdtoolinfo];
@@ -213,7 +220,8 @@ commands! {
     /// Display flags per axis (u32).
     AXIS_FLAGS = CLASS_CNC 0x00a3 [cnc_rdaxisdata];
     /// Counts: args \[0\] axes, \[1\] spindles, \[2\] servo axes, \[3\] speed display.
-    COUNT = CLASS_CNC 0x00a4 [cnc_acts2 cnc_rdaxisdata cnc_rdsvmeter cnc_rdspmeter cnc_rdposition];
+    COUNT = CLASS_CNC 0x00a4 [cnc_acts2 cnc_rdaxisdata cnc_rdsvmeter cnc_rdspmeter cnc_rdposition
+        cnc_rdnspdl];
     /// cnc_rdaxisdata class 5 type 2: a third speed-class value record (its
     /// meaning is not known; FANUC's library names it 'F' and takes its unit
     /// from 0x88\[4\]).

@@ -24,11 +24,6 @@ pub fn by_cmd(cmd: u16, s16: bool, s15: bool) -> Option<&'static Func> {
 impl Func {
     /// The request form for a CNC of the 16i class (`s16`) or Series 15 (`s15`).
     pub fn form(&self, s16: bool, s15: bool) -> Option<&'static Form> {
-        self.forms.iter().find(|f| match f.classes {
-            Classes::All => true,
-            Classes::S30 => !s16,
-            Classes::S16 => s16,
-            Classes::S15 => s15,
-        })
+        self.forms.iter().find(|f| f.classes.matches(s16, s15))
     }
 }

@@ -71,6 +71,34 @@ pub enum Word {
     Asked,
 }
 
+impl Classes {
+    /// Whether a CNC of the 16i class (`s16`) or Series 15 (`s15`) is of these.
+    pub const fn matches(self, s16: bool, s15: bool) -> bool {
+        match self {
+            Classes::All => true,
+            Classes::S30 => !s16,
+            Classes::S16 => s16,
+            Classes::S15 => s15,
+        }
+    }
+}
+
+/// A figure FANUC's library learnt from the CNC at connect (the open
+/// answer), which some functions answer from without traffic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Learnt {
+    /// The CNC's maximum spindles.
+    MaxSpindles,
+}
+
+/// The answer of a function that sends nothing on some classes: the
+/// reply's integers, in layout order, are these learnt figures.
+#[derive(Debug, Clone, Copy)]
+pub struct Local {
+    pub classes: Classes,
+    pub values: &'static [Learnt],
+}
+
 /// How the request is formed on some classes.
 #[derive(Debug, Clone, Copy)]
 pub struct Form {
@@ -228,6 +256,18 @@ pub enum Short {
     Error,
 }
 
+/// What a reply holding more records than the caller's count
+/// ([`Param::Count`]) asked for means.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Overflow {
+    /// The records past the count are left out.
+    Cut,
+    /// EW_LENGTH, nothing written (the count untouched); the records are
+    /// as many as the answer holds (`max` bounds only what the simulator
+    /// sends).
+    Refuse,
+}
+
 /// One FOCAS function.
 #[derive(Debug, Clone, Copy)]
 pub struct Func {
@@ -245,7 +285,18 @@ pub struct Func {
     pub records: Option<Records>,
     /// The records a write sends, if any.
     pub payload: Option<Payload>,
+    /// Further subpackets of the same request: the form's class and
+    /// command with these words, one subpacket each (cnc_rdposerrs2 asks
+    /// `[1]` and `[2]`). Each subpacket's answer carries an equal share of
+    /// `reply`'s fields, in order (the simulator answers each with the
+    /// first share's layout); no records.
+    pub more: &'static [&'static [Word]],
+    /// Classes on which no request is sent (no form of theirs): the
+    /// answer is what the library learnt at connect.
+    pub local: Option<Local>,
     pub short: Short,
+    /// More records than the caller's count asked for.
+    pub overflow: Overflow,
     /// The oracle's dimensions, one per number parameter: "|"-separated
     /// values, the base first.
     pub dims: &'static [&'static str],
@@ -292,9 +343,16 @@ impl Func {
             _ => None,
         })
     }
-    /// The reply payload's length in bytes.
+    /// The reply payload's length in bytes (of every subpacket's answer).
     pub fn reply_len(&self) -> usize {
         self.reply.iter().map(Field::wire_len).sum()
+    }
+    /// The reply fields subpacket `i`'s answer carries (all of them
+    /// without [`Func::more`]).
+    pub fn share(&self, i: usize) -> &'static [Field] {
+        let n = self.reply.len() / (1 + self.more.len());
+        let at = (i * n).min(self.reply.len());
+        &self.reply[at..(at + n).min(self.reply.len())]
     }
 }
 

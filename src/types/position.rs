@@ -224,3 +224,11 @@ pub struct ODBCSS {
     pub sspm: LONG,
     pub smax: LONG,
 }
+
+/// cnc_rdposerrs2: the position deviations of spindles 1 and 2.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPSER {
+    pub poserr1: LONG,
+    pub poserr2: LONG,
+}

@@ -33,6 +33,19 @@ pub struct ODBPROO8 {
     pub mdata: LONG,
 }
 
+/// cnc_rdcommand: one commanded value of a block: the address letter,
+/// which of the block's words of that address (M codes: 1, 2, 3 ...), a
+/// flag, the value and its decimal places.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBCMD {
+    pub adrs: c_char,
+    pub num: c_char,
+    pub flag: c_short,
+    pub cmd_val: LONG,
+    pub dec_val: LONG,
+}
+
 /// cnc_rdseqnum: sequence number.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -430,6 +430,10 @@ rust_layouts! {
 
     // --- the signals the operation history records ---
     IODBSIG3 { datano, r#type, data }
+
+    // --- tool_axis collectors (issue 24) ---
+    ODBPSER { poserr1, poserr2 }
+    ODBCMD { adrs, num, flag, cmd_val, dec_val }
 }
 
 #[test]

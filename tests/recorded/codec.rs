@@ -1481,6 +1481,11 @@ proptest! {
         use fwlib32::proto::described::{decode, encode};
         use fwlib32::spec::{FUNCS, Int};
         for f in FUNCS {
+            // Several subpackets (cnc_rdposerrs2): each answers a share of
+            // the fields, decoded per subpacket (the recorded cases).
+            if !f.more.is_empty() {
+                continue;
+            }
             // Echo fields (not on the wire) decode as argument 0 of none: 0.
             let width = |x: &fwlib32::spec::Field| if x.arg.is_some() { None } else { Some(x.wire) };
             let widths: Vec<Option<Int>> = f.reply.iter().flat_map(|x| std::iter::repeat_n(width(x), x.n as usize)).collect();

@@ -8,7 +8,7 @@
 #[path = "../../tools/oracle/learn_pure.rs"]
 mod pure;
 
-use fwlib32::spec::{Field, Func, Int::*, Param, Records, Short, every_class, skip, to};
+use fwlib32::spec::{Field, Func, Int::*, Overflow, Param, Records, Short, every_class, skip, to};
 use pure::*;
 
 const HEADER: &str = "
@@ -203,7 +203,10 @@ fn a_described_entry_agrees_with_the_byte_map_and_a_wrong_one_does_not() {
         ],
         records: None,
         payload: None,
+        more: &[],
+        local: None,
         short: Short::Zeros,
+        overflow: Overflow::Cut,
         dims: &[],
         zero_without_first: false,
         learnt: None,
@@ -275,7 +278,10 @@ fn records_repeat_and_match_a_records_entry() {
             room: None,
         }),
         payload: None,
+        more: &[],
+        local: None,
         short: Short::Zeros,
+        overflow: Overflow::Cut,
         dims: &[],
         zero_without_first: false,
         learnt: None,

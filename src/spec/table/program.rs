@@ -56,4 +56,33 @@ pub const FUNCS: &[Func] = &[
         dims: &["0|1|2|3|4|-1|5"],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdcommand",
+        doc: "Reads the commanded values of block `block` (0: the block in execution) for address `type` (-1: every address commanded): one ODBCMD per value, at most `*num` (`*num` = how many were written).",
+        params: &[
+            Param::Short("type"),
+            Param::Short("block"),
+            Param::Count("num"),
+            Param::Out("command", "ODBCMD"),
+        ],
+        forms: &[every_class(cmd::RDCOMMAND, &[Word::Arg(0), Word::Arg(1)])],
+        records: Some(Records {
+            fields: &[
+                to(I8, "adrs", I8),
+                to(I8, "num", I8),
+                to(I16, "flag", I16),
+                to(I32, "cmd_val", I32),
+                to(I32, "dec_val", I32),
+            ],
+            out: 0,
+            to: "",
+            elem: "ODBCMD",
+            max: 26,
+            count: None,
+            room: None,
+        }),
+        overflow: Overflow::Refuse,
+        dims: &["-1|0|5|6|12|18|19|25|26|-2", "0|1|2|-1", "8|1|0|-1|26|27"],
+        ..COMMAND
+    },
 ];

@@ -60,4 +60,54 @@ pub const FUNCS: &[Func] = &[
         reply: &[to(I32, "", I16)],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdnspdl",
+        doc: "Reads the number of controlled spindles of the path (16i class and Series 15: the CNC's maximum spindles, learnt at connect, without traffic).",
+        params: &[Param::Out("spdl", "short")],
+        forms: &[Form {
+            classes: Classes::S30,
+            class: cmd::CLASS_CNC,
+            cmd: cmd::COUNT,
+            words: &[Word::Const(1)],
+        }],
+        reply: &[to(I16, "", I16)],
+        local: Some(Local {
+            classes: Classes::S16,
+            values: &[Learnt::MaxSpindles],
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdposerrs",
+        doc: "Reads the position deviation of each spindle (spindle position control), one `long` per spindle (at most 8; 4 bytes written per `long`).",
+        params: &[Param::Out("data", "long")],
+        forms: &[every_class(cmd::POSERR, &[Word::Const(0)])],
+        records: Some(Records {
+            fields: &[to(I32, "", I32), skip(I32)],
+            out: 0,
+            to: "",
+            elem: "long",
+            max: 8,
+            count: None,
+            room: None,
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdposerrs2",
+        doc: "Reads the position deviations of spindles 1 and 2 (spindle position control).",
+        params: &[Param::Out("poserr", "ODBPSER")],
+        forms: &[every_class(cmd::POSERR, &[Word::Const(1)])],
+        more: &[&[Word::Const(2)]],
+        reply: &[to(I32, "poserr1", I32), to(I32, "poserr2", I32)],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdposerrz",
+        doc: "Reads the position deviation of the Z axis in the rigid tapping mode.",
+        params: &[Param::Out("data", "long")],
+        forms: &[every_class(cmd::POSERR, &[Word::Const(3)])],
+        reply: &[to(I32, "", I32)],
+        ..COMMAND
+    },
 ];
