@@ -149,10 +149,12 @@ impl Machine {
                 let class = self.cnc_class();
                 let func = row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
                 let args = described::args_of(func, class, sub);
+                let payload = described::payload_of(func, &sub.payload);
                 let asked = Asked {
                     f: func,
                     path: p,
                     args: &args,
+                    payload: &payload,
                 };
                 let v = f(self, &asked)?;
                 described::encode(func, &v).map_err(|_| CncError::FUNC)
@@ -428,6 +430,7 @@ mod tests {
                         f: func,
                         path: 1,
                         args: &args[..n.min(5)],
+                        payload: &[],
                     };
                     if let Ok(v) = f(&mut m, &q) {
                         answered += 1;

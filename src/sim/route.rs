@@ -26,8 +26,12 @@ pub struct Asked<'a> {
     pub f: &'static Func,
     /// The subpacket's path word.
     pub path: u16,
-    /// The caller's number arguments the request carried.
+    /// The caller's number arguments the request carried (then the input
+    /// members its words carry, `Func::inputs`).
     pub args: &'a [i32],
+    /// A write's payload integers (`Func::payload`'s fields, record after
+    /// record; whole records only).
+    pub payload: &'a [i64],
 }
 
 impl Asked<'_> {
