@@ -142,9 +142,10 @@ fn write_panel_signals(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     Ok(Vec::new())
 }
 
-/// F0072: the software operator panel's general purpose switches OUT0 ..
-/// OUT7 (cnc_rdopnlgnrl, cnc_wropnlgnrl): bit k is switch k + 1.
-const GENERAL_F: u16 = 72;
+/// F0072, the byte before the panel's other signals: the software
+/// operator panel's general purpose switches OUT0 .. OUT7 (cnc_rdopnlgnrl,
+/// cnc_wropnlgnrl): bit k is switch k + 1.
+const GENERAL_F: u16 = PANEL_F.0 - 1;
 
 /// The general purpose switches' F byte of PMC unit 1 (EW_NOPMC without
 /// an F area holding it).
