@@ -1304,6 +1304,16 @@ typedef struct ODBSEQ {
 } ODBSEQ;
 
 /*
+ cnc_rdsetnum: smallest and largest setting data number, and how many
+ exist.
+ */
+typedef struct ODBSETNUM {
+    unsigned short set_min;
+    unsigned short set_max;
+    unsigned short total_no;
+} ODBSETNUM;
+
+/*
  cnc_rdspcss: the commanded spindle speed, constant surface speed and
  maximum spindle speed.
  */
@@ -3590,6 +3600,15 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
  `seqnum` must be NULL or point to a writable ODBSEQ.
  */
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
+ Reads the smallest and largest setting data numbers and how many setting
+ data there are.
+
+ # Safety
+ `setnum` must be NULL or point to a writable ODBSETNUM.
+ */
+short cnc_rdsetnum(unsigned short FlibHndl, struct ODBSETNUM *setnum);
 
 /*
  Reads the commanded spindle speed, constant surface speed and maximum

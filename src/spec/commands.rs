@@ -87,6 +87,9 @@ commands! {
     /// Write custom macro variables: args (s, e, 0, 0, payload length) + records.
     WRMACRO = CLASS_CNC 0x0016 [cnc_wrmacro cnc_wrmacror];
     RDMACROINFO = CLASS_CNC 0x0017 [cnc_rdmacroinfo];
+    /// cnc_rdsetnum: (1,0x002c) the setting data's smallest and largest
+    /// numbers and how many there are.
+    RDSETNUM = CLASS_CNC 0x002c [cnc_rdsetnum];
     SYSINFO = CLASS_CNC 0x0018 [cnc_sysinfo cnc_allclibhndl3];
     STATINFO = CLASS_CNC 0x0019 [cnc_statinfo];
     /// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).

@@ -358,6 +358,7 @@ rust_layouts! {
     ODBPARAIF { info_no, prev_no, next_no, info }
     ODBDIAGIF { info_no, prev_no, next_no, info }
     ODBPARANUM { para_min, para_max, total_no }
+    ODBSETNUM { set_min, set_max, total_no }
     ODBDIAGNUM { diag_min, diag_max, total_no }
 
     // --- macros ---

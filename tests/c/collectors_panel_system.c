@@ -90,6 +90,12 @@ int main(int argc, char **argv) {
     check("rdopnlgsname", cnc_rdopnlgsname(h, 0xff, &na));
     printf("gsname.after=%s|%s|%s\n", na.sgnl1_name, na.sgnl2_name, na.sgnl3_name);
 
+    /* cnc_rdsetnum: the setting data's numbers. */
+    ODBSETNUM sn;
+    memset(&sn, 0xff, sizeof sn);
+    check("rdsetnum", cnc_rdsetnum(h, &sn));
+    printf("setnum=%u,%u,%u\n", sn.set_min, sn.set_max, sn.total_no);
+
     cnc_freelibhndl(h);
     return 0;
 }

@@ -52,4 +52,15 @@ fn panel_and_system_follow_the_machine() {
         kv["gsname.after"],
         format!("{}|TABLEAIR|{}", name(0), name(2))
     );
+
+    // cnc_rdsetnum: the profile's parameters up to [param] setting_max.
+    let set: Vec<i32> = (p.param.parameters.iter())
+        .map(|e| e.number)
+        .filter(|n| *n <= p.param.setting_max)
+        .collect();
+    assert!(set.len() >= 2, "the default profile has setting parameters");
+    assert_eq!(
+        kv["setnum"],
+        format!("{},{},{}", set[0], set[set.len() - 1], set.len())
+    );
 }
