@@ -553,7 +553,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     doc_type(t),
                     p.max
                 )),
-                // types::ONE: the one element it points to.
+                // types::ONE: the one element it points to; its members
+                // sent as request words are written back converted.
+                None if f.inputs().next().is_some() => safety.push(format!(
+                    "/// `{n}` must be NULL or point to a readable and writable {}.",
+                    doc_type(t)
+                )),
                 None => safety.push(format!(
                     "/// `{n}` must be NULL or point to a readable {}.",
                     doc_type(t)

@@ -4262,7 +4262,7 @@ short cnc_wrmdiprog(unsigned short FlibHndl, short length, char *data);
  as a sign-extended word.
 
  # Safety
- `buf` must be NULL or point to a readable IODBGNRL.
+ `buf` must be NULL or point to a readable and writable IODBGNRL.
  */
 short cnc_wropnlgnrl(unsigned short FlibHndl, struct IODBGNRL *buf);
 
@@ -4272,7 +4272,7 @@ short cnc_wropnlgnrl(unsigned short FlibHndl, struct IODBGNRL *buf);
  sent; only `type`'s low byte is sent, and left in `type`.
 
  # Safety
- `buf` must be NULL or point to a readable IODBRDNA.
+ `buf` must be NULL or point to a readable and writable IODBRDNA.
  */
 short cnc_wropnlgsname(unsigned short FlibHndl, struct IODBRDNA *buf);
 
@@ -4283,7 +4283,7 @@ short cnc_wropnlgsname(unsigned short FlibHndl, struct IODBRDNA *buf);
  `datano` is not.
 
  # Safety
- `buf` must be NULL or point to a readable IODBSGNL.
+ `buf` must be NULL or point to a readable and writable IODBSGNL.
  */
 short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
 
