@@ -927,6 +927,34 @@ typedef struct OPMSG3 {
 } OPMSG3;
 
 /*
+ cnc_rdopnlgnrl / cnc_wropnlgnrl: the software operator panel's general
+ purpose switches (`sgnal` bit k is switch k + 1; `type` selects them).
+ */
+typedef struct IODBGNRL {
+    short datano;
+    short type;
+    char sgnal;
+} IODBGNRL;
+
+/*
+ cnc_rdopnlgsname / cnc_wropnlgsname: the names of the software
+ operator panel's eight general purpose switches (8 characters and a
+ NUL each; `type` selects them).
+ */
+typedef struct IODBRDNA {
+    short datano;
+    short type;
+    char sgnl1_name[9];
+    char sgnl2_name[9];
+    char sgnl3_name[9];
+    char sgnl4_name[9];
+    char sgnl5_name[9];
+    char sgnl6_name[9];
+    char sgnl7_name[9];
+    char sgnl8_name[9];
+} IODBRDNA;
+
+/*
  cnc_rdopnlsgnl: the software operator panel's signals (`type` selects
  which members the CNC fills).
  */
@@ -1295,6 +1323,16 @@ typedef struct ODBSEQ {
     short dummy[2];
     LONG data;
 } ODBSEQ;
+
+/*
+ cnc_rdsetnum: smallest and largest setting data number, and how many
+ exist.
+ */
+typedef struct ODBSETNUM {
+    unsigned short set_min;
+    unsigned short set_max;
+    unsigned short total_no;
+} ODBSETNUM;
 
 /*
  cnc_rdspcss: the commanded spindle speed, constant surface speed and
@@ -3182,6 +3220,27 @@ short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMS
 short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG3 *opmsg);
 
 /*
+ Reads the software operator panel's general purpose switches: `sgnal`
+ bit k is switch k + 1 (`type` sent and written back as its low byte,
+ 0..255; `datano` left as it was).
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBGNRL.
+ */
+short cnc_rdopnlgnrl(unsigned short FlibHndl, short type, struct IODBGNRL *buf);
+
+/*
+ Reads the names of the software operator panel's eight general purpose
+ switches: 8 characters each, then a NUL; only whole names answered are
+ written (`type` sent and written back as its low byte; `datano` left as
+ it was).
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBRDNA.
+ */
+short cnc_rdopnlgsname(unsigned short FlibHndl, short type, struct IODBRDNA *buf);
+
+/*
  Reads the software operator panel's signals (`type` written back;
  `datano` left as it was).
 
@@ -3614,6 +3673,15 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
  `seqnum` must be NULL or point to a writable ODBSEQ.
  */
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
+ Reads the smallest and largest setting data numbers and how many setting
+ data there are.
+
+ # Safety
+ `setnum` must be NULL or point to a writable ODBSETNUM.
+ */
+short cnc_rdsetnum(unsigned short FlibHndl, struct ODBSETNUM *setnum);
 
 /*
  Reads the commanded spindle speed, constant surface speed and maximum
@@ -4259,6 +4327,38 @@ short cnc_wrmdipntr(unsigned short FlibHndl, long exe_pntr);
  `data` must have `length` readable bytes.
  */
 short cnc_wrmdiprog(unsigned short FlibHndl, short length, char *data);
+
+/*
+ Writes the software operator panel's general purpose switches `type`
+ selects (bit k: switch k + 1, from `sgnal` bit k); only `type`'s low
+ byte is sent, and left in `type` (its high byte cleared); `sgnal` goes
+ as a sign-extended word.
+
+ # Safety
+ `buf` must be NULL or point to a readable and writable IODBGNRL.
+ */
+short cnc_wropnlgnrl(unsigned short FlibHndl, struct IODBGNRL *buf);
+
+/*
+ Writes the names of the general purpose switches `type` selects (bit k:
+ switch k + 1): the first 8 characters of each of the eight names are
+ sent; only `type`'s low byte is sent, and left in `type`.
+
+ # Safety
+ `buf` must be NULL or point to a readable and writable IODBRDNA.
+ */
+short cnc_wropnlgsname(unsigned short FlibHndl, struct IODBRDNA *buf);
+
+/*
+ Writes the software operator panel's signals: `type` (sent as the first
+ request word) selects them, bit 0 `mode` .. bit 12 `feed_hold` as
+ cnc_rdopnlsgnl reads them; the 13 words are sent, then three zero words,
+ `datano` is not.
+
+ # Safety
+ `buf` must be NULL or point to a readable and writable IODBSGNL.
+ */
+short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
 
 /*
  Writes a CNC parameter. The parameter's attributes are read first

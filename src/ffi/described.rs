@@ -43,6 +43,9 @@ pub(crate) struct PayloadAt<'a> {
     pub input: *const u8,
     pub stride: usize,
     pub offsets: &'a [usize],
+    /// The offset in the first element of each input member a request
+    /// word carries ([`Func::inputs`], in order).
+    pub words: &'a [usize],
 }
 
 /// Runs described function `f`: the handle, its checks and NULL outputs
@@ -62,7 +65,9 @@ pub(crate) struct PayloadAt<'a> {
 /// `*rec.asked` records in the caller's array; `rec.asked` is the caller's
 /// `short *` (NULL: EW_DATA), or NULL for a function without one;
 /// `pay.input` is NULL or holds the records its count argument says (at
-/// most the payload's `max` are read), `pay.stride` bytes each.
+/// most the payload's `max` are read; one without a count parameter),
+/// `pay.stride` bytes each, and `pay.words` are offsets of `short`
+/// members inside its first (written back converted).
 pub(crate) unsafe fn exec(
     f: &'static Func,
     h: c_ushort,
@@ -75,7 +80,8 @@ pub(crate) unsafe fn exec(
     let h = handles::get(h)?;
     let mut a = [0i32; MAX_NUMBERS];
     a[..args.len()].copy_from_slice(args);
-    let args = &mut a[..args.len()];
+    let numbers = args.len();
+    let args = &mut a[..numbers + pay.words.len()];
     let outs_set = || {
         if outs.iter().any(|p| p.is_null()) {
             return Err(Error::null());
@@ -94,8 +100,17 @@ pub(crate) unsafe fn exec(
         None => None,
     };
     if f.payload.is_some() {
-        nonnull(pay.input.cast_mut())?;
+        let input = nonnull(pay.input.cast_mut())?;
         outs_set()?;
+        for ((_, c), (at, off)) in f.inputs().zip(args[numbers..].iter_mut().zip(pay.words)) {
+            // SAFETY: the `short` member lies in the caller's first element
+            // (build.rs), read and written unaligned.
+            let p = unsafe { input.cast::<u8>().add(*off).cast::<i16>() };
+            let v = c.cut(i64::from(unsafe { p.read_unaligned() }));
+            // FANUC's library leaves the converted value in the member.
+            unsafe { p.write_unaligned(v as i16) };
+            *at = v as i32;
+        }
     }
     for c in f.checks {
         let v = match c.arg {

@@ -8,7 +8,7 @@ use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Field, Form, Func, Int, Overflow, Short, Word};
+use crate::spec::{Field, Form, Func, Int, ONE, Overflow, Short, Word, ZERO};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -19,7 +19,8 @@ pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
 }
 
 /// One call of a described function with the caller's number arguments
-/// (and, for a write, its payload records' integers, [`Func::payload`]'s
+/// (then the input members its request words carry, [`Func::inputs`];
+/// and, for a write, its payload records' integers, [`Func::payload`]'s
 /// fields in order, record after record).
 pub struct Described<'a> {
     pub f: &'static Func,
@@ -61,9 +62,13 @@ impl Call for Described<'_> {
             let mut words = [0i32; 5];
             for (w, f) in words.iter_mut().zip(ws) {
                 *w = match *f {
-                    Word::Arg(i) => self.args.get(i as usize).copied().unwrap_or(0),
                     Word::Const(c) => c,
                     Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
+                    Word::Arg(_) | Word::Input(..) => self
+                        .f
+                        .word_arg(f)
+                        .and_then(|i| self.args.get(i).copied())
+                        .unwrap_or(0),
                 };
             }
             if form.class == CLASS_PMC {
@@ -223,11 +228,14 @@ pub fn payload_values(
     out
 }
 
-/// How many payload records a write sends: its count argument, at most
-/// the payload's `max` (0 without a payload).
+/// How many payload records a write sends: its count argument ([`ONE`]:
+/// one), at most the payload's `max` (0 without a payload).
 pub fn payload_records(f: &Func, args: &[i32]) -> usize {
     f.payload.map_or(0, |p| {
-        let n = args.get(usize::from(p.count)).copied().unwrap_or(0);
+        let n = match p.count {
+            ONE => 1,
+            c => args.get(usize::from(c)).copied().unwrap_or(0),
+        };
         usize::try_from(n).unwrap_or(0).min(usize::from(p.max))
     })
 }
@@ -241,7 +249,11 @@ fn read_fields(
     for field in fields {
         for _ in 0..field.n {
             if let Some(a) = field.arg {
-                out.push(i64::from(args.get(usize::from(a)).copied().unwrap_or(0)));
+                let v = match a {
+                    ZERO => 0,
+                    a => args.get(usize::from(a)).copied().unwrap_or(0),
+                };
+                out.push(i64::from(v));
                 continue;
             }
             out.push(match field.wire {
@@ -303,6 +315,24 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
     }
 }
 
+/// The integers of a write's request payload (simulator side): whole
+/// records of [`Func::payload`]'s fields, as [`Described`] sent them; a
+/// trailing part record is left out.
+pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
+    let Some(p) = &f.payload else {
+        return Vec::new();
+    };
+    let size: usize = p.fields.iter().map(Field::wire_len).sum();
+    let mut out = Vec::new();
+    let mut r = Reader::new(bytes);
+    for _ in 0..bytes.len() / size.max(1) {
+        if read_fields(&mut r, p.fields, &[], &mut out).is_err() {
+            break;
+        }
+    }
+    out
+}
+
 /// The described function a request subpacket asks for, on a CNC of this
 /// class (simulator dispatch). Where functions share a command and their
 /// forms' constant words tell them apart (cnc_rdposerrs \[0\] and
@@ -337,16 +367,15 @@ pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
         .or_else(|| of_cmd().max_by_key(|f| f.reply_len()))
 }
 
-/// The number arguments the request carries (inverse of the form's words:
-/// `Arg(i)` words give argument i back; simulator side).
+/// The arguments the request carries (inverse of the form's words:
+/// `Arg(i)` words give argument i back, `Input` words the input members
+/// after the numbers; simulator side).
 pub fn args_of(f: &Func, class: CncClass, sub: &ReqSub) -> Vec<i32> {
-    let mut args = vec![0; f.numbers().count()];
+    let mut args = vec![0; f.numbers().count() + f.inputs().count()];
     if let Some(form) = form(f, class) {
         for (k, w) in form.words.iter().enumerate() {
-            let i = match w {
-                Word::Arg(i) => usize::from(*i),
-                Word::Asked => f.count().unwrap_or(usize::MAX),
-                Word::Const(_) => continue,
+            let Some(i) = f.word_arg(w) else {
+                continue;
             };
             if let (Some(a), Some(v)) = (args.get_mut(i), sub.args.get(k)) {
                 *a = *v;

@@ -150,11 +150,13 @@ impl Machine {
                 row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
                 let func = described::for_request(sub, class).ok_or(CncError::FUNC)?;
                 let args = described::args_of(func, class, sub);
+                let payload = described::payload_of(func, &sub.payload);
                 let asked = Asked {
                     f: func,
                     path: p,
                     args: &args,
                     words: sub.args,
+                    payload: &payload,
                 };
                 let v = f(self, &asked)?;
                 described::encode(func, &v).map_err(|_| CncError::FUNC)
@@ -438,8 +440,11 @@ mod tests {
                     {
                         *w = match *f {
                             crate::spec::Word::Const(c) => c,
-                            crate::spec::Word::Arg(a) => args[usize::from(a)],
                             crate::spec::Word::Asked => 0,
+                            crate::spec::Word::Arg(_) | crate::spec::Word::Input(..) => func
+                                .word_arg(f)
+                                .and_then(|a| args.get(a).copied())
+                                .unwrap_or(0),
                         };
                     }
                     let q = Asked {
@@ -447,6 +452,7 @@ mod tests {
                         path: 1,
                         args: &args[..n.min(5)],
                         words,
+                        payload: &[],
                     };
                     if let Ok(v) = f(&mut m, &q) {
                         answered += 1;

@@ -10,8 +10,11 @@ use super::profile::cycle::Cycle;
 use super::route::{Asked, Route, none};
 use super::run::{covered, event_path, occurrence};
 use super::service::{CncError, Reply};
-use crate::ew::{EW_DATA, EW_REJECT};
-use crate::proto::cmd::{CLRALM, RDOPNLSGNL, RESET, RESET2, START};
+use crate::ew::{EW_DATA, EW_NOPMC, EW_REJECT};
+use crate::proto::cmd::{
+    CLRALM, RDOPNLGNRL, RDOPNLGSNAME, RDOPNLSGNL, RESET, RESET2, START, WROPNLGNRL, WROPNLGSNAME,
+    WROPNLSGNL,
+};
 use crate::proto::machine::RDPRSTR;
 use std::sync::Arc;
 
@@ -23,6 +26,21 @@ pub(super) const ROUTES: &[Route] = &[
     // [k]: the program restart data a reset or cycle start recorded.
     Route::cnc(RDPRSTR, |m, q| m.restart_info(q.path, q.args[0])),
     Route::table(RDOPNLSGNL, panel_signals),
+    Route::table(WROPNLSGNL, write_panel_signals),
+    Route::table(RDOPNLGNRL, |m, q| {
+        let f = (m.pmc().area(1)).and_then(|a| a.bytes(GENERAL_F, 1));
+        let f = f.ok_or(CncError::new(EW_NOPMC))?[0];
+        Ok(vec![i64::from(q.arg(0)), 0, i64::from(f as i8)])
+    }),
+    Route::table(WROPNLGNRL, |m, q| {
+        let select = q.arg(0) as u8;
+        let on = q.payload.first().copied().unwrap_or(0) as u8;
+        let f = general_switches(m)?;
+        *f = *f & !select | on & select;
+        Ok(Vec::new())
+    }),
+    Route::table(RDOPNLGSNAME, switch_names),
+    Route::table(WROPNLGSNAME, write_switch_names),
 ];
 
 /// F-area bytes of the software operator panel's output signals: F0073
@@ -32,39 +50,153 @@ pub(super) const ROUTES: &[Route] = &[
 /// *FV0O..*FV7O), F0079..F0080 (jog override *JV0O..*JV15O).
 const PANEL_F: (u16, u16) = (73, 80);
 
-/// cnc_rdopnlsgnl: the panel's signals as the ladder set them in the F
-/// area of PMC unit 1 (an absent area reads as zeros), after `type`,
-/// which FANUC's library writes back (not on the wire). The spindle
-/// override word is FANUC's "not used": no signal feeds it.
-fn panel_signals(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
-    use crate::proto::pmc::PmcRange;
+/// Where each word of IODBSGNL after `type` lives in the F area, in order
+/// (`mode` .. `feed_hold`, the bits of cnc_wropnlsgnl's `type`): the
+/// address of its low byte, the mask of its bits in the little-endian
+/// 16-bit word from there, and the shift of its lowest bit. `None`: the
+/// spindle override, FANUC's "not used", which no signal feeds.
+const PANEL: [Option<(u16, u16, u32)>; 13] = [
+    Some((73, 0x17, 0)),   // mode: MD1O, MD2O, MD4O, ZRNO
+    Some((77, 0x0f, 0)),   // hndl_ax: HS1AO..HS1DO
+    Some((76, 0x03, 0)),   // hndl_mv: MP1O, MP2O
+    Some((76, 0x30, 4)),   // rpd_ovrd: ROV1O, ROV2O
+    Some((79, 0xffff, 0)), // jog_ovrd: *JV0O..*JV15O
+    Some((78, 0xff, 0)),   // feed_ovrd: *FV0O..*FV7O
+    None,                  // spdl_ovrd
+    Some((75, 0x04, 2)),   // blck_del: BDTO
+    Some((75, 0x08, 3)),   // sngl_blck: SBKO
+    Some((75, 0x10, 4)),   // machn_lock: MLKO
+    Some((75, 0x20, 5)),   // dry_run: DRNO
+    Some((75, 0x40, 6)),   // mem_prtct: KEYO
+    Some((75, 0x80, 7)),   // feed_hold: SPO
+];
+
+/// The panel's F bytes (`PANEL_F`) of PMC unit 1; an absent area reads as
+/// zeros.
+fn panel_bytes(m: &Machine) -> Vec<u8> {
     let (s, e) = PANEL_F;
-    let range = PmcRange {
-        adr_type: 1,
-        data_type: 0,
-        s,
-        e,
-    };
     let n = usize::from(e - s + 1);
-    let f = m.profile.pmc.read(1, &range).unwrap_or(vec![0; n]);
-    let byte = |addr: u16| i64::from(f[usize::from(addr - s)]);
-    let bit = |addr: u16, b: u32| (byte(addr) >> b) & 1;
-    Ok(vec![
-        i64::from(q.arg(0)),
-        byte(73) & 0x17,
-        byte(77) & 0x0f,
-        byte(76) & 0x03,
-        (byte(76) >> 4) & 0x03,
-        i64::from((byte(79) | byte(80) << 8) as u16 as i16),
-        byte(78),
-        0,
-        bit(75, 2),
-        bit(75, 3),
-        bit(75, 4),
-        bit(75, 5),
-        bit(75, 6),
-        bit(75, 7),
-    ])
+    (m.profile.pmc.area(1))
+        .and_then(|a| a.bytes(s, n))
+        .map_or(vec![0; n], <[u8]>::to_vec)
+}
+
+/// The little-endian word of `f` (the panel's bytes) from F `addr` on.
+fn panel_word(f: &[u8], addr: u16) -> u16 {
+    let at = |a: u16| {
+        let i = usize::from(a.wrapping_sub(PANEL_F.0));
+        u16::from(f.get(i).copied().unwrap_or(0))
+    };
+    at(addr) | at(addr + 1) << 8
+}
+
+/// cnc_rdopnlsgnl: the panel's signals as the ladder (or cnc_wropnlsgnl)
+/// set them in the F area of PMC unit 1, after `type`, which FANUC's
+/// library writes back (not on the wire).
+fn panel_signals(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let f = panel_bytes(m);
+    let mut v = vec![i64::from(q.arg(0))];
+    v.extend(PANEL.iter().map(|p| match *p {
+        // The jog override's 16 bits are the short's.
+        Some((addr, 0xffff, _)) => i64::from(panel_word(&f, addr) as i16),
+        Some((addr, mask, shift)) => i64::from((panel_word(&f, addr) & mask) >> shift),
+        None => 0,
+    }));
+    Ok(v)
+}
+
+/// cnc_wropnlsgnl: the signals `type` selects (bit k, the k-th word after
+/// `type`) set in the F area as cnc_rdopnlsgnl reads them back. A value
+/// its bits cannot hold is EW_DATA, nothing written; without an F area
+/// EW_NOPMC.
+fn write_panel_signals(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let select = q.arg(0);
+    let (s, _) = PANEL_F;
+    let mut f = panel_bytes(m);
+    for (k, p) in PANEL.iter().enumerate() {
+        let (Some((addr, mask, shift)), Some(&v)) = (p, q.payload.get(k)) else {
+            continue;
+        };
+        if select >> k & 1 == 0 {
+            continue;
+        }
+        let bits = if *mask == 0xffff {
+            v as u16
+        } else {
+            match u16::try_from(v) {
+                Ok(v) if v << shift & !mask == 0 && v <= mask >> shift => v << shift,
+                _ => return Err(CncError::new(EW_DATA)),
+            }
+        };
+        let word = panel_word(&f, *addr) & !mask | bits;
+        for (i, b) in word.to_le_bytes().into_iter().enumerate() {
+            if let Some(x) = f.get_mut(usize::from(addr - s) + i) {
+                *x = b;
+            }
+        }
+    }
+    let area = (m.pmc_mut().area_mut(1)).ok_or(CncError::new(EW_NOPMC))?;
+    let n = f.len();
+    let bytes = area.bytes_mut(s, n).ok_or(CncError::new(EW_NOPMC))?;
+    bytes.copy_from_slice(&f);
+    Ok(Vec::new())
+}
+
+/// F0072, the byte before the panel's other signals: the software
+/// operator panel's general purpose switches OUT0 .. OUT7 (cnc_rdopnlgnrl,
+/// cnc_wropnlgnrl): bit k is switch k + 1.
+const GENERAL_F: u16 = PANEL_F.0 - 1;
+
+/// The general purpose switches' F byte of PMC unit 1 (EW_NOPMC without
+/// an F area holding it).
+fn general_switches(m: &mut Machine) -> Reply<&mut u8> {
+    let f = (m.pmc_mut().area_mut(1)).and_then(|a| a.bytes_mut(GENERAL_F, 1));
+    f.map(|b| &mut b[0]).ok_or(CncError::new(EW_NOPMC))
+}
+
+/// The general purpose switches, as many as IODBRDNA names, and the
+/// characters of a name.
+const SWITCHES: usize = 8;
+const NAME: usize = 8;
+
+/// cnc_rdopnlgsname: `type` (written back), then each switch's name, 8
+/// bytes zero-padded, and the NUL FANUC's library writes after it (not on
+/// the wire).
+fn switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let names = &m.profile.operator_panel.switch_names;
+    let mut v = vec![i64::from(q.arg(0))];
+    for k in 0..SWITCHES {
+        // One byte a character (Latin-1, as the write stores them).
+        let name: Vec<u8> = names
+            .get(k)
+            .map_or(Vec::new(), |s| s.chars().map(|c| c as u32 as u8).collect());
+        v.extend((0..NAME).map(|i| i64::from(name.get(i).copied().unwrap_or(0) as i8)));
+        v.push(0);
+    }
+    Ok(v)
+}
+
+/// cnc_wropnlgsname: the names `type` selects (bit k: switch k + 1) from
+/// the payload's 8 bytes each, up to the first NUL; switches before a
+/// named one stay unnamed.
+fn write_switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let select = q.arg(0);
+    if q.payload.len() < SWITCHES * NAME {
+        return Err(CncError::new(EW_DATA));
+    }
+    let names = &mut m.profile.operator_panel.switch_names;
+    for (k, b) in q.payload.chunks(NAME).enumerate().take(SWITCHES) {
+        if select >> k & 1 == 0 {
+            continue;
+        }
+        if names.len() <= k {
+            names.resize(k + 1, String::new());
+        }
+        // Each byte kept as one character (Latin-1).
+        let bytes = b.iter().map(|&c| c as u8).take_while(|&c| c != 0);
+        names[k] = bytes.map(char::from).collect();
+    }
+    Ok(Vec::new())
 }
 
 /// Alarm types a reset clears (IO, PS, macro); the others need the cause

@@ -9,9 +9,10 @@
 use super::machine::Machine;
 use super::profile::Class;
 pub use super::profile::param::{Entry, Kind, Params};
-use super::route::{Route, enc};
+use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
+use crate::proto::cmd::RDSETNUM;
 use crate::proto::param::{
     DIAGNOSS, DIAGNOSS16, DIAGTYPE, INFO3_FLAG, InfoEntry, InfoList, NumRange, PARAMTYPE, Param16,
     Param30, ParamType30, RDDIAGINFO, RDDIAGNUM, RDPARAINFO, RDPARAM, RDPARAM16, RDPARANUM, Table,
@@ -24,6 +25,26 @@ use crate::proto::{OPTION_PARAM_15, OPTION_PARAM_16};
 /// Items per answer of a 30i range read (cnc_rdparar); our choice, the
 /// limit of a real CNC is not known.
 pub const RANGE_PER_ANSWER: usize = 5;
+
+/// cnc_rdsetnum: the smallest and largest setting data numbers (the
+/// parameters up to `[param] setting_max`) and their count, each the low
+/// half of a 32-bit word.
+fn setting_num(m: &mut Machine, _: &Asked<'_>) -> Reply<Vec<i64>> {
+    let p = &m.profile.param;
+    let set: Vec<i32> = (p.parameters.iter())
+        .map(|e| e.number)
+        .filter(|n| *n <= p.setting_max)
+        .collect();
+    let (min, max) = (set.first().copied(), set.last().copied());
+    Ok(vec![
+        0,
+        i64::from(min.unwrap_or(0)),
+        0,
+        i64::from(max.unwrap_or(0)),
+        0,
+        set.len() as i64,
+    ])
+}
 
 const fn err(code: i16) -> CncError {
     CncError::new(code)
@@ -61,6 +82,7 @@ pub(super) const ROUTES: &[Route] = &[
         enc(m.table_type30(Table::Diag, q.args[0]))
     }),
     Route::cnc(RDPARANUM, |m, _| enc(Ok(m.table_num(Table::Param)))),
+    Route::table(RDSETNUM, setting_num),
     Route::cnc(RDDIAGNUM, |m, _| enc(Ok(m.table_num(Table::Diag)))),
     Route::cnc(RDPARAINFO, |m, q| {
         enc(m.table_info(Table::Param, q.args[0], q.args[1]))

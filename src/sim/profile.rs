@@ -70,9 +70,31 @@ pub struct Profile {
     /// The periodic maintenance items (src/sim/maintenance.rs).
     #[serde(default)]
     pub maintenance: maintenance::Maintenance,
+    /// The software operator panel (src/sim/operate.rs).
+    #[serde(default)]
+    pub operator_panel: OperatorPanel,
     // --- tool ---
 
     // --- upload ---
+}
+
+/// `[operator_panel]`: the software operator panel's general purpose
+/// switches' names (cnc_rdopnlgsname; cnc_wropnlgsname changes them), at
+/// most 8 characters each; switches past the list have no name.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OperatorPanel {
+    pub switch_names: Vec<String>,
+}
+
+impl Default for OperatorPanel {
+    fn default() -> Self {
+        OperatorPanel {
+            switch_names: ["COOLANT", "CHIP CNV", "WORK LT", "AIR BLOW"]
+                .map(String::from)
+                .to_vec(),
+        }
+    }
 }
 
 /// `[pitch]`: pitch error compensation points 0..`size`, each an

@@ -26,11 +26,15 @@ pub struct Asked<'a> {
     pub f: &'static Func,
     /// The subpacket's path word.
     pub path: u16,
-    /// The caller's number arguments the request carried.
+    /// The caller's number arguments the request carried (then the input
+    /// members its words carry, `Func::inputs`).
     pub args: &'a [i32],
     /// The request's five argument words as sent (where functions sharing
     /// a command differ by a constant word: cnc_rdposerrs's 0x0058).
     pub words: [i32; 5],
+    /// A write's payload integers (`Func::payload`'s fields, record after
+    /// record; whole records only).
+    pub payload: &'a [i64],
 }
 
 impl Asked<'_> {

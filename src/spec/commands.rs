@@ -87,6 +87,9 @@ commands! {
     /// Write custom macro variables: args (s, e, 0, 0, payload length) + records.
     WRMACRO = CLASS_CNC 0x0016 [cnc_wrmacro cnc_wrmacror];
     RDMACROINFO = CLASS_CNC 0x0017 [cnc_rdmacroinfo];
+    /// cnc_rdsetnum: (1,0x002c) the setting data's smallest and largest
+    /// numbers and how many there are.
+    RDSETNUM = CLASS_CNC 0x002c [cnc_rdsetnum];
     SYSINFO = CLASS_CNC 0x0018 [cnc_sysinfo cnc_allclibhndl3];
     STATINFO = CLASS_CNC 0x0019 [cnc_statinfo];
     /// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).
@@ -160,6 +163,18 @@ commands! {
     RDCTRLSIG = CLASS_CNC 0x005b [cnc_rdctrldi cnc_rdctrldo];
     /// cnc_rdopnlsgnl: (1,0x005d)\[type\] the software operator panel's signals.
     RDOPNLSGNL = CLASS_CNC 0x005d [cnc_rdopnlsgnl];
+    /// cnc_wropnlsgnl: (1,0x005e)\[type, 0, 0, 0, 26\] + the 13 signal
+    /// words: writes the software operator panel's signals `type` selects.
+    WROPNLSGNL = CLASS_CNC 0x005e [cnc_wropnlsgnl];
+    /// cnc_rdopnlgnrl: (1,0x005f)\[type\] the panel's general purpose switches.
+    RDOPNLGNRL = CLASS_CNC 0x005f [cnc_rdopnlgnrl];
+    /// cnc_wropnlgnrl: (1,0x0060)\[type & 0xff, 0, 0, 0, 2\] + 0, sgnal.
+    WROPNLGNRL = CLASS_CNC 0x0060 [cnc_wropnlgnrl];
+    /// cnc_rdopnlgsname: (1,0x0061)\[type & 0xff\] the general purpose
+    /// switches' names, 8 bytes each.
+    RDOPNLGSNAME = CLASS_CNC 0x0061 [cnc_rdopnlgsname];
+    /// cnc_wropnlgsname: (1,0x0062)\[type & 0xff, 0, 0, 0, 64\] + 8 names.
+    WROPNLGSNAME = CLASS_CNC 0x0062 [cnc_wropnlgsname];
     RDWKCDSHFT = CLASS_CNC 0x0063 [cnc_rdwkcdshft];
     WRWKCDSHFT = CLASS_CNC 0x0064 [cnc_wrwkcdshft];
     STOPOPHIS = CLASS_CNC 0x0067 [cnc_stopophis];

@@ -20,6 +20,10 @@ pub enum Param {
     Short(&'static str),
     /// `long NAME`: a number the caller passes (32 bits go on the wire).
     Long(&'static str),
+    /// `short NAME` that FANUC's library converts to `.1` (as a C cast)
+    /// before anything else: its request word and any echo of it carry
+    /// the converted value.
+    ShortAs(&'static str, Int),
     /// `TYPE *NAME`: an output the reply fills. TYPE is a struct of
     /// src/types, or `char`, `short`, `unsigned short` or `long` (4 bytes written,
     /// as FANUC's x86-64 library writes a `long *`), or `char[N]`.
@@ -35,10 +39,22 @@ pub enum Param {
 }
 
 impl Param {
+    /// The argument a caller's value `v` of this number parameter becomes
+    /// (a `short` cut to 16 bits, a `long` to 32, then [`Param::ShortAs`]'s
+    /// conversion); None for a pointer.
+    pub const fn conv(&self, v: i64) -> Option<i32> {
+        match *self {
+            Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
+            Param::Long(_) => Some(v as i32),
+            Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
+            Param::Out(..) | Param::In(..) => None,
+        }
+    }
     pub const fn name(&self) -> &'static str {
         match *self {
             Param::Short(n)
             | Param::Long(n)
+            | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
             | Param::In(n, _) => n,
@@ -69,6 +85,12 @@ pub enum Word {
     /// The records asked for: the [`Param::Count`] parameter's value, at
     /// most the records' `max`.
     Asked,
+    /// Member `.0` (a `short`) of a write's input (its first element,
+    /// [`Param::In`]) converted to `.1` as a C cast converts it: FANUC's
+    /// library sends it as a request word, not in the payload, and leaves
+    /// the converted value in the member (the caller sees it when `.1` is
+    /// narrower than a `short`).
+    Input(&'static str, Int),
 }
 
 impl Classes {
@@ -162,6 +184,17 @@ impl Int {
             Int::I32 | Int::U32 => 4,
         }
     }
+    /// `v` converted to this integer, as a C cast converts it.
+    pub const fn cut(self, v: i64) -> i64 {
+        match self {
+            Int::I8 => v as i8 as i64,
+            Int::U8 => v as u8 as i64,
+            Int::I16 => v as i16 as i64,
+            Int::U16 => v as u16 as i64,
+            Int::I32 => v as i32 as i64,
+            Int::U32 => v as u32 as i64,
+        }
+    }
     /// The Rust type of a C field of this width.
     pub const fn rust(self) -> &'static str {
         match self {
@@ -177,8 +210,10 @@ impl Int {
 
 /// `n` consecutive integers of the reply payload. Each is written, converted
 /// as a C cast converts it, to output `out` (index among the `Out`
-/// parameters) at member `to` (`""`: the pointee itself) and the `n - 1`
-/// elements after it; `to: None` skips them.
+/// parameters) at member `to` (`""`: the pointee itself; `name[i]`:
+/// element i of array member `name`, elements of `c`'s width; `[i]`:
+/// element i of the pointee, an array) and the
+/// `n - 1` elements after it; `to: None` skips them.
 #[derive(Debug, Clone, Copy)]
 pub struct Field {
     pub wire: Int,
@@ -187,9 +222,14 @@ pub struct Field {
     pub to: Option<&'static str>,
     pub c: Int,
     /// `Some(a)`: not on the wire; the value is number argument `a`, which
-    /// FANUC's library writes back into the output with the reply.
+    /// FANUC's library writes back into the output with the reply
+    /// ([`ZERO`]: the value 0, as it writes a string's terminating NUL).
     pub arg: Option<u8>,
 }
+
+/// [`Field::arg`] of a field not on the wire that FANUC's library writes
+/// as 0 ([`zero`]).
+pub const ZERO: u8 = u8::MAX;
 
 impl Field {
     /// The bytes of this field on the wire.
@@ -233,8 +273,13 @@ impl Records {
     }
 }
 
+/// [`Payload::count`] of a write without a count parameter: it sends one
+/// element, the one its [`Param::In`] points to.
+pub const ONE: u8 = u8::MAX;
+
 /// The records a write sends as its request's payload, read from its
-/// [`Param::In`] array: number parameter `count` of them, at most `max`.
+/// [`Param::In`] array: number parameter `count` of them ([`ONE`]: one),
+/// at most `max`.
 /// Each field is read as `c` from member `to` of `elem` (`""`: the element
 /// itself; `None`: nothing read, zeros sent) and sent as `wire`. The
 /// request's fifth word is the payload's length.
@@ -319,7 +364,7 @@ impl Func {
     /// The number parameters, in order (the values a caller passes).
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Short(n) | Param::Long(n) | Param::Count(n) => Some(n),
+            Param::Short(n) | Param::Long(n) | Param::ShortAs(n, _) | Param::Count(n) => Some(n),
             Param::Out(..) | Param::In(..) => None,
         })
     }
@@ -335,6 +380,29 @@ impl Func {
             Param::In(n, t) => Some((n, t)),
             _ => None,
         })
+    }
+    /// The input members sent as request words ([`Word::Input`]), each
+    /// once, in the order the forms name them: the call's arguments after
+    /// its number parameters.
+    pub fn inputs(&self) -> impl Iterator<Item = (&'static str, Int)> + '_ {
+        let all = self.forms.iter().flat_map(|f| f.words.iter());
+        all.clone().enumerate().filter_map(move |(k, w)| match *w {
+            Word::Input(m, c) if !all.clone().take(k).any(|x| *x == *w) => Some((m, c)),
+            _ => None,
+        })
+    }
+    /// The index in the call's arguments (numbers, then [`Func::inputs`])
+    /// a request word carries, if any: `Arg(i)` is `i`, `Asked` the count.
+    pub fn word_arg(&self, w: &Word) -> Option<usize> {
+        match *w {
+            Word::Arg(i) => Some(usize::from(i)),
+            Word::Asked => self.count(),
+            Word::Const(_) => None,
+            Word::Input(m, _) => self
+                .inputs()
+                .position(|(x, _)| x == m)
+                .map(|k| self.numbers().count() + k),
+        }
     }
     /// The output parameters, in order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
@@ -402,6 +470,20 @@ pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
         to: Some(to),
         c,
         arg: Some(arg),
+    }
+}
+
+/// A 0 written to output 0's member `to` (not on the wire): the NUL after
+/// a name's characters. `to` may name an element of an array member,
+/// `name[i]` (elements of `c`'s width).
+pub const fn zero(to: &'static str, c: Int) -> Field {
+    Field {
+        wire: c,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c,
+        arg: Some(ZERO),
     }
 }
 

@@ -163,6 +163,16 @@ pub struct ODBPARANUM {
     pub total_no: c_ushort,
 }
 
+/// cnc_rdsetnum: smallest and largest setting data number, and how many
+/// exist.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSETNUM {
+    pub set_min: c_ushort,
+    pub set_max: c_ushort,
+    pub total_no: c_ushort,
+}
+
 /// cnc_rddiagnum: smallest and largest diagnosis number, and how many exist.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

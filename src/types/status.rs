@@ -177,3 +177,31 @@ pub struct IODBSGNL {
     pub mem_prtct: c_short,
     pub feed_hold: c_short,
 }
+
+/// cnc_rdopnlgnrl / cnc_wropnlgnrl: the software operator panel's general
+/// purpose switches (`sgnal` bit k is switch k + 1; `type` selects them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBGNRL {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub sgnal: c_char,
+}
+
+/// cnc_rdopnlgsname / cnc_wropnlgsname: the names of the software
+/// operator panel's eight general purpose switches (8 characters and a
+/// NUL each; `type` selects them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBRDNA {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub sgnl1_name: [c_char; 9],
+    pub sgnl2_name: [c_char; 9],
+    pub sgnl3_name: [c_char; 9],
+    pub sgnl4_name: [c_char; 9],
+    pub sgnl5_name: [c_char; 9],
+    pub sgnl6_name: [c_char; 9],
+    pub sgnl7_name: [c_char; 9],
+    pub sgnl8_name: [c_char; 9],
+}

@@ -289,6 +289,11 @@ rust_layouts! {
         datano, r#type, mode, hndl_ax, hndl_mv, rpd_ovrd, jog_ovrd, feed_ovrd, spdl_ovrd,
         blck_del, sngl_blck, machn_lock, dry_run, mem_prtct, feed_hold,
     }
+    IODBGNRL { datano, r#type, sgnal }
+    IODBRDNA {
+        datano, r#type, sgnl1_name, sgnl2_name, sgnl3_name, sgnl4_name, sgnl5_name, sgnl6_name,
+        sgnl7_name, sgnl8_name,
+    }
     ODBCSS { srpm, sspm, smax }
     ODBTLINFO { max_group, max_tool, max_minute, max_cycle }
 
@@ -353,6 +358,7 @@ rust_layouts! {
     ODBPARAIF { info_no, prev_no, next_no, info }
     ODBDIAGIF { info_no, prev_no, next_no, info }
     ODBPARANUM { para_min, para_max, total_no }
+    ODBSETNUM { set_min, set_max, total_no }
     ODBDIAGNUM { diag_min, diag_max, total_no }
 
     // --- macros ---

@@ -1242,23 +1242,12 @@ impl Call for Raw {
 }
 
 /// A described function's number arguments as its C parameters pass them
-/// (a `short` cut to 16 bits).
+/// (a `short` cut to 16 bits, then as `Param::ShortAs` converts it).
 fn c_args(f: &fwlib32::spec::Func, args: &[String]) -> Vec<i32> {
-    use fwlib32::spec::Param;
-    let shorts = f.params.iter().filter_map(|p| match p {
-        Param::Short(_) | Param::Count(_) => Some(true),
-        Param::Long(_) => Some(false),
-        Param::Out(..) | Param::In(..) => None,
-    });
+    let numbers = f.params.iter().filter_map(|p| p.conv(0).map(|_| p));
     args.iter()
-        .zip(shorts)
-        .map(|(a, short)| {
-            if short {
-                num(a) as i16 as i32
-            } else {
-                num(a) as i32
-            }
-        })
+        .zip(numbers)
+        .filter_map(|(a, p)| p.conv(num(a)))
         .collect()
 }
 

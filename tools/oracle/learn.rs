@@ -1169,6 +1169,7 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> Vec<String> {
             matches!(
                 p,
                 fwlib32::spec::Param::Short(_)
+                    | fwlib32::spec::Param::ShortAs(..)
                     | fwlib32::spec::Param::Long(_)
                     | fwlib32::spec::Param::Count(_)
             )

@@ -639,6 +639,9 @@ pub enum WordSrc {
     Len,
     /// Changes, not as any argument: the values seen.
     Computed(Vec<i32>),
+    /// A member of the write's input (committed entries' `Word::Input`;
+    /// the learner flags it as "input N's M goes in word K").
+    Input(&'static str),
 }
 
 /// One run for [`learn_words`]: the number arguments as passed, the first
@@ -1138,6 +1141,7 @@ fn word_text(w: &WordSrc) -> String {
         WordSrc::Const(c) => format!("Word::Const({c})"),
         WordSrc::Len => "Word::Const(0) /* the payload's length */".into(),
         WordSrc::Computed(v) => format!("Word::Const({}) /* computed: {v:?} */", v[0]),
+        WordSrc::Input(m) => format!("Word::Input({m:?}, I16)"),
     }
 }
 
@@ -1294,6 +1298,7 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             Some(spec::Word::Arg(i)) => WordSrc::Arg(*i as usize),
             Some(spec::Word::Const(c)) => WordSrc::Const(*c),
             Some(spec::Word::Asked) => WordSrc::Arg(f.count().unwrap_or(usize::MAX)),
+            Some(spec::Word::Input(m, _)) => WordSrc::Input(m),
             None => WordSrc::Const(0),
         })
         .collect();

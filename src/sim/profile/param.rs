@@ -85,21 +85,40 @@ impl Entry {
     }
 }
 
+/// The last setting parameter of a 30i / 16i (the SETTING screen's
+/// parameters 0 .. 99; TVC, ISO, I/O channel ...).
+pub const SETTING_MAX: i32 = 99;
+
 /// Profile section `[param]`.
-#[derive(Debug, Clone, Default, Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(try_from = "RawParams")]
 pub struct Params {
     /// Parameter write enable (PWE, on the CNC's SETTING screen). Writes
     /// also need MDI mode (status `aut` = 0).
     pub param_write_enable: bool,
+    /// The setting data (cnc_rdsetnum): the parameters numbered up to
+    /// this one, those of the CNC's SETTING screen.
+    pub setting_max: i32,
     pub parameters: Vec<Entry>,
     pub diagnostics: Vec<Entry>,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            param_write_enable: false,
+            setting_max: SETTING_MAX,
+            parameters: Vec::new(),
+            diagnostics: Vec::new(),
+        }
+    }
 }
 
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields, default)]
 struct RawParams {
     param_write_enable: bool,
+    setting_max: Option<i32>,
     #[serde(rename = "parameter")]
     parameters: Vec<Entry>,
     #[serde(rename = "diagnosis")]
@@ -129,6 +148,7 @@ impl TryFrom<RawParams> for Params {
         }
         let mut p = Params {
             param_write_enable: r.param_write_enable,
+            setting_max: r.setting_max.unwrap_or(SETTING_MAX),
             parameters: r.parameters,
             diagnostics: r.diagnostics,
         };

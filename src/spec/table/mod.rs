@@ -21,6 +21,7 @@ pub mod operation;
 pub mod pmc;
 pub mod program;
 pub mod servo;
+mod setting;
 pub mod tool_life;
 
 /// The areas' entries, in this order.
@@ -38,6 +39,7 @@ const AREAS: &[&[Func]] = &[
     tool_life::FUNCS,
     maintenance::FUNCS,
     names::FUNCS,
+    setting::FUNCS,
 ];
 
 const LEN: usize = {

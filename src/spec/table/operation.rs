@@ -5,6 +5,31 @@ use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
+/// A general purpose switch's name: its 8 characters (the C member has a
+/// ninth, for the NUL).
+const fn switch_name(to: &'static str) -> Field {
+    Field {
+        wire: U8,
+        n: 8,
+        out: 0,
+        to: Some(to),
+        c: I8,
+        arg: None,
+    }
+}
+
+/// The eight names as the write sends them.
+const SWITCH_NAMES: &[Field] = &[
+    switch_name("sgnl1_name"),
+    switch_name("sgnl2_name"),
+    switch_name("sgnl3_name"),
+    switch_name("sgnl4_name"),
+    switch_name("sgnl5_name"),
+    switch_name("sgnl6_name"),
+    switch_name("sgnl7_name"),
+    switch_name("sgnl8_name"),
+];
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_start",
@@ -56,6 +81,92 @@ pub const FUNCS: &[Func] = &[
         ],
         dims: &["-1|0|1|4096|8191"],
         learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wropnlsgnl",
+        doc: "Writes the software operator panel's signals: `type` (sent as the first request word) selects them, bit 0 `mode` .. bit 12 `feed_hold` as cnc_rdopnlsgnl reads them; the 13 words are sent, then three zero words, `datano` is not.",
+        params: &[Param::In("buf", "IODBSGNL")],
+        forms: &[every_class(cmd::WROPNLSGNL, &[Word::Input("type", I16)])],
+        payload: Some(Payload {
+            fields: &[
+                to(I16, "mode", I16),
+                to(I16, "hndl_ax", I16),
+                to(I16, "hndl_mv", I16),
+                to(I16, "rpd_ovrd", I16),
+                to(I16, "jog_ovrd", I16),
+                to(I16, "feed_ovrd", I16),
+                to(I16, "spdl_ovrd", I16),
+                to(I16, "blck_del", I16),
+                to(I16, "sngl_blck", I16),
+                to(I16, "machn_lock", I16),
+                to(I16, "dry_run", I16),
+                to(I16, "mem_prtct", I16),
+                to(I16, "feed_hold", I16),
+                // Three words more, always 0 (Series 15's manual_rpd and
+                // dummy[2]; FANUC's library does not read past feed_hold).
+                skip(I16),
+                skip(I16),
+                skip(I16),
+            ],
+            elem: "IODBSGNL",
+            count: ONE,
+            max: 1,
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdopnlgnrl",
+        doc: "Reads the software operator panel's general purpose switches: `sgnal` bit k is switch k + 1 (`type` sent and written back as its low byte, 0..255; `datano` left as it was).",
+        params: &[Param::ShortAs("type", U8), Param::Out("buf", "IODBGNRL")],
+        forms: &[every_class(cmd::RDOPNLGNRL, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16), skip(U8), to(I8, "sgnal", I8)],
+        dims: &["255|0|1|128|-1|256"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wropnlgnrl",
+        doc: "Writes the software operator panel's general purpose switches `type` selects (bit k: switch k + 1, from `sgnal` bit k); only `type`'s low byte is sent, and left in `type` (its high byte cleared); `sgnal` goes as a sign-extended word.",
+        params: &[Param::In("buf", "IODBGNRL")],
+        forms: &[every_class(cmd::WROPNLGNRL, &[Word::Input("type", U8)])],
+        payload: Some(Payload {
+            fields: &[to(I16, "sgnal", I8)],
+            elem: "IODBGNRL",
+            count: ONE,
+            max: 1,
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdopnlgsname",
+        doc: "Reads the names of the software operator panel's eight general purpose switches: 8 characters each, then a NUL; only whole names answered are written (`type` sent and written back as its low byte; `datano` left as it was).",
+        params: &[Param::ShortAs("type", U8), Param::Out("buf", "IODBRDNA")],
+        forms: &[every_class(cmd::RDOPNLGSNAME, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16)],
+        // Whole names only: a short answer leaves the names after it.
+        records: Some(Records {
+            fields: &[switch_name(""), zero("[8]", I8)],
+            out: 0,
+            to: "sgnl1_name",
+            elem: "char[9]",
+            max: 8,
+            count: None,
+            room: None,
+        }),
+        dims: &["255|0|1|128|-1|256"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wropnlgsname",
+        doc: "Writes the names of the general purpose switches `type` selects (bit k: switch k + 1): the first 8 characters of each of the eight names are sent; only `type`'s low byte is sent, and left in `type`.",
+        params: &[Param::In("buf", "IODBRDNA")],
+        forms: &[every_class(cmd::WROPNLGSNAME, &[Word::Input("type", U8)])],
+        payload: Some(Payload {
+            fields: SWITCH_NAMES,
+            elem: "IODBRDNA",
+            count: ONE,
+            max: 1,
+        }),
         ..COMMAND
     },
 ];
