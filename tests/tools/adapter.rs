@@ -674,7 +674,10 @@ fn time_series_sampled_between_polls() {
     let load = cnc.servo_loads().unwrap()[1].load.to_string();
     let speed = cnc.spindle_speeds().unwrap()[0].to_string();
     for (item, v) in [("Yload_ts", load), ("S1speed_ts", speed)] {
-        agent.until(item, |a| a.values.contains_key(item));
+        // The full state may say UNAVAILABLE before the first series.
+        agent.until(item, |a| {
+            a.values.get(item).is_some_and(|v| v.contains('|'))
+        });
         let f: Vec<String> = agent.value(item).split('|').map(String::from).collect();
         assert_eq!(f.len(), 3, "count|rate|values: {f:?}");
         let n: usize = f[0].parse().unwrap();
