@@ -85,6 +85,7 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_wropnlsgnl",
+        learnt: Some(&["input 0's type goes in word 0"]),
         doc: "Writes the software operator panel's signals: `type` (sent as the first request word) selects them, bit 0 `mode` .. bit 12 `feed_hold` as cnc_rdopnlsgnl reads them; the 13 words are sent, then three zero words, `datano` is not.",
         params: &[Param::In("buf", "IODBSGNL")],
         forms: &[every_class(cmd::WROPNLSGNL, &[Word::Input("type", I16)])],
@@ -117,6 +118,7 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdopnlgnrl",
+        learnt: Some(&[]),
         doc: "Reads the software operator panel's general purpose switches: `sgnal` bit k is switch k + 1 (`type` sent and written back as its low byte, 0..255; `datano` left as it was).",
         params: &[Param::ShortAs("type", U8), Param::Out("buf", "IODBGNRL")],
         forms: &[every_class(cmd::RDOPNLGNRL, &[Word::Arg(0)])],
@@ -126,6 +128,10 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_wropnlgnrl",
+        learnt: Some(&[
+            "input out 0 type: [At(3), Kept]",
+            "reply: out 0 type: [Kept, Const(0)]",
+        ]),
         doc: "Writes the software operator panel's general purpose switches `type` selects (bit k: switch k + 1, from `sgnal` bit k); only `type`'s low byte is sent, and left in `type` (its high byte cleared); `sgnal` goes as a sign-extended word.",
         params: &[Param::In("buf", "IODBGNRL")],
         forms: &[every_class(cmd::WROPNLGNRL, &[Word::Input("type", U8)])],
@@ -139,6 +145,14 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdopnlgsname",
+        learnt: Some(&[
+            "reply: out 1 sgnl1_name[8]: [Const(0)]",
+            "reply: out 1 sgnl2_name[8]: [Const(0)]",
+            "reply: out 1 sgnl3_name[8]: [Const(0)]",
+            "reply: out 1 sgnl4_name[8]: [Const(0)]",
+            "reply: out 1 sgnl5_name[8]: [Const(0)]",
+            "and 3 more of these kinds",
+        ]),
         doc: "Reads the names of the software operator panel's eight general purpose switches: 8 characters each, then a NUL; only whole names answered are written (`type` sent and written back as its low byte; `datano` left as it was).",
         params: &[Param::ShortAs("type", U8), Param::Out("buf", "IODBRDNA")],
         forms: &[every_class(cmd::RDOPNLGSNAME, &[Word::Arg(0)])],
@@ -158,6 +172,10 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_wropnlgsname",
+        learnt: Some(&[
+            "input out 0 type: [At(3), Kept]",
+            "reply: out 0 type: [Kept, Const(0)]",
+        ]),
         doc: "Writes the names of the general purpose switches `type` selects (bit k: switch k + 1): the first 8 characters of each of the eight names are sent; only `type`'s low byte is sent, and left in `type`.",
         params: &[Param::In("buf", "IODBRDNA")],
         forms: &[every_class(cmd::WROPNLGSNAME, &[Word::Input("type", U8)])],

@@ -58,6 +58,7 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdcommand",
+        learnt: Some(&["reply: out 2 : [Const(1), Const(0)]"]),
         doc: "Reads the commanded values of block `block` (0: the block in execution) for address `type` (-1: every address commanded): one ODBCMD per value, at most `*num` (`*num` = how many were written).",
         params: &[
             Param::Short("type"),

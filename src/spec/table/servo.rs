@@ -62,6 +62,10 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdnspdl",
+        learnt: Some(&[
+            "no request on v2: no traffic (returns 0 locally) (a local answer on that class)",
+            "no request on s15: no traffic (returns 0 locally) (a local answer on that class)",
+        ]),
         doc: "Reads the number of controlled spindles of the path (16i class and Series 15: the CNC's maximum spindles, learnt at connect, without traffic).",
         params: &[Param::Out("spdl", "short")],
         forms: &[Form {
@@ -79,6 +83,9 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdposerrs",
+        learnt: Some(&[
+            "written past the pointee: argument 0: 32 bytes written into a N-byte pointee",
+        ]),
         doc: "Reads the position deviation of each spindle (spindle position control), one `long` per spindle (at most 8; 4 bytes written per `long`).",
         params: &[Param::Out("data", "long")],
         forms: &[every_class(cmd::POSERR, &[Word::Const(0)])],
@@ -95,6 +102,13 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdposerrs2",
+        learnt: Some(&[
+            "the reply maps otherwise on S16",
+            "the reply maps otherwise on S15",
+            "1 more subpackets or frames after the first",
+            "S16: every coded reply was refused (a count, length or type tag inside)",
+            "S15: every coded reply was refused (a count, length or type tag inside)",
+        ]),
         doc: "Reads the position deviations of spindles 1 and 2 (spindle position control).",
         params: &[Param::Out("poserr", "ODBPSER")],
         forms: &[every_class(cmd::POSERR, &[Word::Const(1)])],
@@ -104,6 +118,7 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdposerrz",
+        learnt: Some(&[]),
         doc: "Reads the position deviation of the Z axis in the rigid tapping mode.",
         params: &[Param::Out("data", "long")],
         forms: &[every_class(cmd::POSERR, &[Word::Const(3)])],

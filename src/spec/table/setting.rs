@@ -8,6 +8,7 @@ use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[Func {
     name: "cnc_rdsetnum",
+    learnt: Some(&[]),
     doc: "Reads the smallest and largest setting data numbers and how many setting data there are.",
     params: &[Param::Out("setnum", "ODBSETNUM")],
     forms: &[every_class(cmd::RDSETNUM, &[])],
