@@ -759,6 +759,29 @@ typedef struct ODBMDIP {
 } ODBMDIP;
 
 /*
+ cnc_rdmdipntro8: execution pointers of MDI operation, program numbers
+ of 8 digits.
+ */
+typedef struct ODBMDIPO8 {
+    /*
+     Program number executing.
+     */
+    LONG mdiprog;
+    /*
+     Its execution pointer.
+     */
+    LONG mdipntr;
+    /*
+     Program number prepared.
+     */
+    LONG crntprog;
+    /*
+     Its pointer.
+     */
+    LONG crntpntr;
+} ODBMDIPO8;
+
+/*
  cnc_rdngrp: the number of tool life groups.
  */
 typedef struct ODBTLIFE2 {
@@ -2245,6 +2268,11 @@ short cnc_delall(unsigned short FlibHndl);
 short cnc_delete(unsigned short FlibHndl, short prog_no);
 
 /*
+ Deletes program `prog_no` (8 digits).
+ */
+short cnc_deleteo8(unsigned short FlibHndl, long prog_no);
+
+/*
  Deletes the `tuse_num`-th tool of tool life group `grpno`.
  */
 short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
@@ -2982,6 +3010,15 @@ short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
  `mdipntr` must be NULL or point to a writable ODBMDIP.
  */
 short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
+
+/*
+ Reads the execution pointers of MDI operation, program numbers of 8
+ digits.
+
+ # Safety
+ `mdipntr` must be NULL or point to a writable ODBMDIPO8.
+ */
+short cnc_rdmdipntro8(unsigned short FlibHndl, struct ODBMDIPO8 *mdipntr);
 
 /*
  Reads the MDI program's text into `data` (no NUL), `*length` set to its
@@ -3893,6 +3930,11 @@ short cnc_resetconnect(unsigned short FlibHndl);
  Selects program `prog_no` as the main program.
  */
 short cnc_search(unsigned short FlibHndl, short prog_no);
+
+/*
+ Selects program `prog_no` (8 digits) as the main program.
+ */
+short cnc_searcho8(unsigned short FlibHndl, long prog_no);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).

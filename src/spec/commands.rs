@@ -53,9 +53,9 @@ macro_rules! commands {
 commands! {
     START = CLASS_CNC 0x0001 [cnc_start];
     RESET = CLASS_CNC 0x0002 [cnc_reset];
-    SEARCH = CLASS_CNC 0x0003 [cnc_search];
+    SEARCH = CLASS_CNC 0x0003 [cnc_search cnc_searcho8];
     DELALL = CLASS_CNC 0x0004 [cnc_delall];
-    DELETE = CLASS_CNC 0x0005 [cnc_delete];
+    DELETE = CLASS_CNC 0x0005 [cnc_delete cnc_deleteo8];
     /// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
     /// cnc_rdprogdir3).
     RDPROGDIR = CLASS_CNC 0x0006 [cnc_rdprogdir cnc_rdprogdir3];
@@ -121,7 +121,7 @@ commands! {
     /// text as the request's payload).
     RDMDIPROG = CLASS_CNC 0x0036 [cnc_rdmdiprog];
     WRMDIPROG = CLASS_CNC 0x0037 [cnc_wrmdiprog];
-    RDMDIPNTR = CLASS_CNC 0x0038 [cnc_rdmdipntr];
+    RDMDIPNTR = CLASS_CNC 0x0038 [cnc_rdmdipntr cnc_rdmdipntro8];
     WRMDIPNTR = CLASS_CNC 0x0039 [cnc_wrmdipntr];
     /// Spindle data: args [code, spindle]; value records.
     SPINDLE = CLASS_CNC 0x0040 [cnc_acts2 cnc_rdspmeter cnc_rdspload cnc_rdspmaxrpm cnc_rdspgear

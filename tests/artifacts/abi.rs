@@ -325,6 +325,7 @@ rust_layouts! {
     PRGDIR2 { number, length, comment, dummy }
     ODBNC { u }
     ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
+    ODBMDIPO8 { mdiprog, mdipntr, crntprog, crntpntr }
     ODBPDFDRV { max_num, dummy, drive }
     ODBPDFINF { used_page, all_page, used_dir, all_dir }
     ODBPDFNFIL { dir_num, file_num }

@@ -549,3 +549,4 @@ fn maintenance_example_reports_the_histories() {
 
 /// The C tests of tests/c, one module per program.
 mod collectors;
+mod collectors_programs_macros;
