@@ -1151,6 +1151,24 @@ typedef struct IODBPMAINTE {
 } IODBPMAINTE;
 
 /*
+ cnc_rdpmacroinfo: the P-code macro variables' information.
+ */
+typedef struct ODBPMINF {
+    /*
+     Variables #10000.. the CNC has.
+     */
+    short use_no1;
+    /*
+     Variables #20000.. (extended P-code variables).
+     */
+    short use_no2;
+    /*
+     Type of the extended variables.
+     */
+    short v2_type;
+} ODBPMINF;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -3433,6 +3451,16 @@ short cnc_rdpm_item(unsigned short FlibHndl,
  `item` must be NULL or point to `*data_num` writable `char[62]`.
  */
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
+ Reads the P-code macro variables' information: `use_no1` the variables
+ #10000.., `use_no2` the extended variables #20000.. (0 when `v2_type` is
+ 2 or more, as FANUC's library writes it), `v2_type` their type.
+
+ # Safety
+ `pmacinfo` must be NULL or point to a writable ODBPMINF.
+ */
+short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
 
 /*
  Reads positions with decimals, units and names: `type` 0 absolute,

@@ -109,6 +109,8 @@ commands! {
     POSITION = CLASS_CNC 0x0026 [cnc_absolute cnc_absolute2 cnc_machine cnc_relative
         cnc_relative2 cnc_distance cnc_rddynamic2 cnc_rddynamic cnc_rdposition cnc_rdaxisdata
         cnc_rdprstrinfo];
+    /// cnc_rdpmacroinfo: (1,0x002f) the P-code macro variables' counts and type.
+    RDPMACROINFO = CLASS_CNC 0x002f [cnc_rdpmacroinfo];
     /// 16i: read diagnosis data [s, e, axis].
     DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
     /// Both classes: diagnosis numbers and attributes [s, n].

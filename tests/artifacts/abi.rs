@@ -360,6 +360,7 @@ rust_layouts! {
     ODBM { datano, dummy, mcr_val, dec_val }
     IODBMR { datano_s, dummy, datano_e, data }
     ODBMVINF { use_no1, use_no2 }
+    ODBPMINF { use_no1, use_no2, v2_type }
 
     // --- pmc ---
     IODBPMC { type_a, type_d, datano_s, datano_e, u }

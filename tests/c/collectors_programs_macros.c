@@ -42,6 +42,12 @@ int main(int argc, char **argv) {
     printf("mdipntro8=%d,%d,%d,%d\n", (int)mdi.mdiprog, (int)mdi.mdipntr, (int)mdi.crntprog,
            (int)mdi.crntpntr);
 
+    /* The P-code macro variables the path has. */
+    ODBPMINF pm;
+    memset(&pm, 0x55, sizeof pm);
+    check("rdpmacroinfo", cnc_rdpmacroinfo(h, &pm));
+    printf("pmacroinfo=%d,%d,%d\n", pm.use_no1, pm.use_no2, pm.v2_type);
+
     cnc_freelibhndl(h);
     return 0;
 }

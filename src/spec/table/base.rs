@@ -16,6 +16,7 @@ pub const COMMAND: Func = Func {
     short: Short::Zeros,
     dims: &[],
     zero_without_first: false,
+    zero_unless: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -40,4 +41,5 @@ pub const SERVO_LONGS: Func = Func {
     short: Short::Zeros,
     dims: &[],
     zero_without_first: false,
+    zero_unless: None,
 };

@@ -50,7 +50,7 @@ const LEN: usize = {
     n
 };
 
-const ALL: [Func; LEN] = {
+static ALL: [Func; LEN] = {
     let mut all = [base::COMMAND; LEN];
     let (mut n, mut i) = (0, 0);
     while i < AREAS.len() {

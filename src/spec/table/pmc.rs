@@ -16,4 +16,5 @@ pub const FUNCS: &[Func] = &[Func {
     short: Short::Zeros,
     dims: &[],
     zero_without_first: false,
+    zero_unless: None,
 }];
