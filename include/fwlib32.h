@@ -772,6 +772,29 @@ typedef struct ODBMDIP {
 } ODBMDIP;
 
 /*
+ cnc_rdmdipntro8: execution pointers of MDI operation, program numbers
+ of 8 digits.
+ */
+typedef struct ODBMDIPO8 {
+    /*
+     Program number executing.
+     */
+    LONG mdiprog;
+    /*
+     Its execution pointer.
+     */
+    LONG mdipntr;
+    /*
+     Program number prepared.
+     */
+    LONG crntprog;
+    /*
+     Its pointer.
+     */
+    LONG crntpntr;
+} ODBMDIPO8;
+
+/*
  cnc_rdngrp: the number of tool life groups.
  */
 typedef struct ODBTLIFE2 {
@@ -1167,6 +1190,24 @@ typedef struct IODBPMAINTE {
      */
     LONG stat;
 } IODBPMAINTE;
+
+/*
+ cnc_rdpmacroinfo: the P-code macro variables' information.
+ */
+typedef struct ODBPMINF {
+    /*
+     Variables #10000.. the CNC has.
+     */
+    short use_no1;
+    /*
+     Variables #20000.. (extended P-code variables).
+     */
+    short use_no2;
+    /*
+     Type of the extended variables.
+     */
+    short v2_type;
+} ODBPMINF;
 
 /*
  cnc_rdposerrs2: the position deviations of spindles 1 and 2.
@@ -2304,6 +2345,11 @@ short cnc_delall(unsigned short FlibHndl);
 short cnc_delete(unsigned short FlibHndl, short prog_no);
 
 /*
+ Deletes program `prog_no` (8 digits).
+ */
+short cnc_deleteo8(unsigned short FlibHndl, long prog_no);
+
+/*
  Deletes the `tuse_num`-th tool of tool life group `grpno`.
  */
 short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
@@ -3058,6 +3104,15 @@ short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *
 short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
 
 /*
+ Reads the execution pointers of MDI operation, program numbers of 8
+ digits.
+
+ # Safety
+ `mdipntr` must be NULL or point to a writable ODBMDIPO8.
+ */
+short cnc_rdmdipntro8(unsigned short FlibHndl, struct ODBMDIPO8 *mdipntr);
+
+/*
  Reads the MDI program's text into `data` (no NUL), `*length` set to its
  length. A text longer than `*length`: EW_LENGTH after the exchange,
  nothing written, as FANUC's library.
@@ -3501,6 +3556,16 @@ short cnc_rdpm_item(unsigned short FlibHndl,
  `item` must be NULL or point to `*data_num` writable `char[62]`.
  */
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
+
+/*
+ Reads the P-code macro variables' information: `use_no1` the variables
+ #10000.., `use_no2` the extended variables #20000.. (0 when `v2_type` is
+ 2 or more, as FANUC's library writes it), `v2_type` their type.
+
+ # Safety
+ `pmacinfo` must be NULL or point to a writable ODBPMINF.
+ */
+short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
 
 /*
  Reads the position deviation of each spindle (spindle position control),
@@ -4034,6 +4099,11 @@ short cnc_resetconnect(unsigned short FlibHndl);
  Selects program `prog_no` as the main program.
  */
 short cnc_search(unsigned short FlibHndl, short prog_no);
+
+/*
+ Selects program `prog_no` (8 digits) as the main program.
+ */
+short cnc_searcho8(unsigned short FlibHndl, long prog_no);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).

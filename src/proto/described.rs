@@ -171,6 +171,7 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             at += n;
         }
     }
+    zero_unless(f, &mut out);
     if let Some(rec) = &f.records {
         let size = rec.wire_len().max(1);
         let most = match f.overflow {
@@ -184,6 +185,42 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
         }
     }
     Ok(out)
+}
+
+/// [`Func::zero_unless`] applied to the decoded reply's integers: the
+/// member FANUC's library writes as 0 unless the other one is in range.
+pub fn zero_unless(f: &Func, out: &mut [i64]) {
+    if let Some(z) = f.zero_unless {
+        let at = |m: &str| {
+            let mut i = 0;
+            for field in f.reply {
+                if field.to == Some(m) {
+                    return Some((i, field.c));
+                }
+                i += usize::from(field.n);
+            }
+            None
+        };
+        if let (Some((ia, c)), Some((ib, _))) = (at(z.of), at(z.zero))
+            && out
+                .get(ia)
+                .is_some_and(|v| !(i64::from(z.lo)..=i64::from(z.hi)).contains(&cast(*v, c)))
+        {
+            out[ib] = 0;
+        }
+    }
+}
+
+/// `v` as a C field of type `c` holds it.
+fn cast(v: i64, c: Int) -> i64 {
+    match c {
+        Int::I8 => i64::from(v as i8),
+        Int::U8 => i64::from(v as u8),
+        Int::I16 => i64::from(v as i16),
+        Int::U16 => i64::from(v as u16),
+        Int::I32 => i64::from(v as i32),
+        Int::U32 => i64::from(v as u32),
+    }
 }
 
 /// The records asked for ([`Word::Asked`]): the count parameter's value,

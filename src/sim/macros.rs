@@ -3,11 +3,11 @@
 
 use super::Machine;
 use super::profile::Class;
-pub use super::profile::macros::{MAX_DEC, Macros, parse_decimal};
+pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::RDMACROINFO;
+use crate::proto::cmd::{RDMACROINFO, RDPMACROINFO};
 use crate::proto::macros::{
     Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
 };
@@ -41,7 +41,29 @@ pub(super) const ROUTES: &[Route] = &[
         m.macro_info(q.path)
             .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
     }),
+    Route::table(RDPMACROINFO, pcode_info),
 ];
+
+/// cnc_rdpmacroinfo: how many P-code variables the path has, #10000..#19999
+/// and the extended #20000.., and the extended ones' type (the profile's
+/// `[path.pmacros]`), in words 3, 4 and 5 where FANUC's library reads
+/// them. Words 0..2 FANUC's library never reads (what a CNC sends there is
+/// not known): sent as 0.
+fn pcode_info(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let p = m.pcode(q.path)?;
+    let count = |a: i32, b: i32| {
+        let n = (a..=b).filter(|n| p.vars.exists(*n)).count();
+        i64::try_from(n).unwrap_or(i64::MAX)
+    };
+    Ok(vec![
+        0,
+        0,
+        0,
+        count(10000, 19999),
+        count(20000, 29999),
+        i64::from(p.v2_type),
+    ])
+}
 
 /// Most records one read or write may carry (the reply must fit in the
 /// smallest frame a CNC sends, 1450 bytes).
@@ -87,6 +109,15 @@ impl Machine {
             .paths
             .get(usize::from(path).wrapping_sub(1))
             .map(|p| &p.macros)
+            .ok_or(CncError::PATH)
+    }
+
+    /// The path's P-code macro variables.
+    pub(crate) fn pcode(&self, path: u16) -> Reply<&PCodeMacros> {
+        self.profile
+            .paths
+            .get(usize::from(path).wrapping_sub(1))
+            .map(|p| &p.pmacros)
             .ok_or(CncError::PATH)
     }
 

@@ -219,6 +219,8 @@ pub struct Path {
     // --- macros ---
     /// Custom macro variables (`[path.macros]`).
     pub macros: macros::Macros,
+    /// P-code macro variables (`[path.pmacros]`).
+    pub pmacros: macros::PCodeMacros,
     // --- pmc ---
 
     // --- offset ---

@@ -53,9 +53,9 @@ macro_rules! commands {
 commands! {
     START = CLASS_CNC 0x0001 [cnc_start];
     RESET = CLASS_CNC 0x0002 [cnc_reset];
-    SEARCH = CLASS_CNC 0x0003 [cnc_search];
+    SEARCH = CLASS_CNC 0x0003 [cnc_search cnc_searcho8];
     DELALL = CLASS_CNC 0x0004 [cnc_delall];
-    DELETE = CLASS_CNC 0x0005 [cnc_delete];
+    DELETE = CLASS_CNC 0x0005 [cnc_delete cnc_deleteo8];
     /// (1,0x0006)[top, count, code]: program directory records (cnc_rdprogdir,
     /// cnc_rdprogdir3).
     RDPROGDIR = CLASS_CNC 0x0006 [cnc_rdprogdir cnc_rdprogdir3];
@@ -112,6 +112,8 @@ commands! {
     POSITION = CLASS_CNC 0x0026 [cnc_absolute cnc_absolute2 cnc_machine cnc_relative
         cnc_relative2 cnc_distance cnc_rddynamic2 cnc_rddynamic cnc_rdposition cnc_rdaxisdata
         cnc_rdprstrinfo];
+    /// cnc_rdpmacroinfo: (1,0x002f) the P-code macro variables' counts and type.
+    RDPMACROINFO = CLASS_CNC 0x002f [cnc_rdpmacroinfo];
     /// 16i: read diagnosis data [s, e, axis].
     DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
     /// Both classes: diagnosis numbers and attributes [s, n].
@@ -124,7 +126,7 @@ commands! {
     /// text as the request's payload).
     RDMDIPROG = CLASS_CNC 0x0036 [cnc_rdmdiprog];
     WRMDIPROG = CLASS_CNC 0x0037 [cnc_wrmdiprog];
-    RDMDIPNTR = CLASS_CNC 0x0038 [cnc_rdmdipntr];
+    RDMDIPNTR = CLASS_CNC 0x0038 [cnc_rdmdipntr cnc_rdmdipntro8];
     WRMDIPNTR = CLASS_CNC 0x0039 [cnc_wrmdipntr];
     /// Spindle data: args [code, spindle]; value records.
     SPINDLE = CLASS_CNC 0x0040 [cnc_acts2 cnc_rdspmeter cnc_rdspload cnc_rdspmaxrpm cnc_rdspgear

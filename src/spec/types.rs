@@ -354,6 +354,20 @@ pub struct Func {
     /// probing (empty: nothing); `None` for entries written from the
     /// recordings by hand. COMPATIBILITY.md shows it.
     pub learnt: Option<&'static [&'static str]>,
+    /// A member FANUC's library writes as 0 unless another member's value
+    /// is in a range.
+    pub zero_unless: Option<ZeroUnless>,
+}
+
+/// Output 0's member `zero` reads 0 unless member `of` (its value cut to
+/// its C type) is within `lo..=hi`, as FANUC's library writes it
+/// (cnc_rdpmacroinfo: `use_no2` only with a `v2_type` below 2).
+#[derive(Debug, Clone, Copy)]
+pub struct ZeroUnless {
+    pub zero: &'static str,
+    pub of: &'static str,
+    pub lo: i32,
+    pub hi: i32,
 }
 
 impl Func {

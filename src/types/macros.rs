@@ -49,3 +49,15 @@ pub struct ODBMVINF {
     pub use_no1: c_short,
     pub use_no2: c_short,
 }
+
+/// cnc_rdpmacroinfo: the P-code macro variables' information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBPMINF {
+    /// Variables #10000.. the CNC has.
+    pub use_no1: c_short,
+    /// Variables #20000.. (extended P-code variables).
+    pub use_no2: c_short,
+    /// Type of the extended variables.
+    pub v2_type: c_short,
+}

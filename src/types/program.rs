@@ -303,6 +303,21 @@ pub struct ODBMDIP {
     pub crntpntr: LONG,
 }
 
+/// cnc_rdmdipntro8: execution pointers of MDI operation, program numbers
+/// of 8 digits.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBMDIPO8 {
+    /// Program number executing.
+    pub mdiprog: LONG,
+    /// Its execution pointer.
+    pub mdipntr: LONG,
+    /// Program number prepared.
+    pub crntprog: LONG,
+    /// Its pointer.
+    pub crntpntr: LONG,
+}
+
 /// cnc_rdprogdir2: one program of the directory.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -330,6 +330,7 @@ rust_layouts! {
     PRGDIR2 { number, length, comment, dummy }
     ODBNC { u }
     ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
+    ODBMDIPO8 { mdiprog, mdipntr, crntprog, crntpntr }
     ODBPDFDRV { max_num, dummy, drive }
     ODBPDFINF { used_page, all_page, used_dir, all_dir }
     ODBPDFNFIL { dir_num, file_num }
@@ -365,6 +366,7 @@ rust_layouts! {
     ODBM { datano, dummy, mcr_val, dec_val }
     IODBMR { datano_s, dummy, datano_e, data }
     ODBMVINF { use_no1, use_no2 }
+    ODBPMINF { use_no1, use_no2, v2_type }
 
     // --- pmc ---
     IODBPMC { type_a, type_d, datano_s, datano_e, u }

@@ -210,6 +210,7 @@ fn a_described_entry_agrees_with_the_byte_map_and_a_wrong_one_does_not() {
         dims: &[],
         zero_without_first: false,
         learnt: None,
+        zero_unless: None,
     };
     const WRONG: Func = Func {
         reply: &[skip(I32), to(I32, "value", I32), to(I32, "u", I32)],
@@ -285,6 +286,7 @@ fn records_repeat_and_match_a_records_entry() {
         dims: &[],
         zero_without_first: false,
         learnt: None,
+        zero_unless: None,
     };
     // three asked: the three records written
     let e = expected(&ENTRY, std::slice::from_ref(&rec), 64, 3).unwrap();

@@ -47,6 +47,13 @@ struct MacrosToml {
 impl TryFrom<MacrosToml> for Macros {
     type Error = String;
     fn try_from(t: MacrosToml) -> Result<Macros, String> {
+        Macros::from_toml(t, Macros::default().ranges)
+    }
+}
+
+impl Macros {
+    /// The variables of a section; `ranges` when it gives none.
+    fn from_toml(t: MacrosToml, ranges: Vec<(i32, i32)>) -> Result<Macros, String> {
         let pairs = |v: Vec<[i32; 2]>| -> Result<Vec<(i32, i32)>, String> {
             v.into_iter()
                 .map(|[a, b]| {
@@ -61,7 +68,7 @@ impl TryFrom<MacrosToml> for Macros {
         let mut m = Macros {
             ranges: match t.ranges {
                 Some(r) => pairs(r)?,
-                None => Macros::default().ranges,
+                None => ranges,
             },
             protected: pairs(t.protected)?,
             values: BTreeMap::new(),
@@ -80,6 +87,53 @@ impl TryFrom<MacrosToml> for Macros {
             m.values.insert(n, d);
         }
         Ok(m)
+    }
+}
+
+/// The P-code macro variables of a path (profile `[path.pmacros]`, served
+/// by src/sim/macros.rs: cnc_rdpmacroinfo, cnc_rdpmacro, cnc_wrpmacro ...):
+/// the same numbers, protection and values as [`Macros`], with the
+/// extended variables' type cnc_rdpmacroinfo reports.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(try_from = "PCodeToml")]
+pub struct PCodeMacros {
+    pub vars: Macros,
+    /// `v2_type` of cnc_rdpmacroinfo: the type of the extended variables
+    /// #20000.. (a CNC setting, reported as it is).
+    pub v2_type: i16,
+}
+
+/// The P-code variables a path has when its profile names none: #10000-#10099.
+pub const PCODE_RANGES: [(i32, i32); 1] = [(10000, 10099)];
+
+impl Default for PCodeMacros {
+    fn default() -> Self {
+        PCodeMacros {
+            vars: Macros {
+                ranges: PCODE_RANGES.to_vec(),
+                protected: Vec::new(),
+                values: BTreeMap::new(),
+            },
+            v2_type: 0,
+        }
+    }
+}
+
+#[derive(Deserialize)]
+struct PCodeToml {
+    #[serde(default)]
+    v2_type: i16,
+    #[serde(flatten)]
+    vars: MacrosToml,
+}
+
+impl TryFrom<PCodeToml> for PCodeMacros {
+    type Error = String;
+    fn try_from(t: PCodeToml) -> Result<PCodeMacros, String> {
+        Ok(PCodeMacros {
+            vars: Macros::from_toml(t.vars, PCODE_RANGES.to_vec())?,
+            v2_type: t.v2_type,
+        })
     }
 }
 

@@ -20,6 +20,7 @@ pub const COMMAND: Func = Func {
     dims: &[],
     zero_without_first: false,
     learnt: None,
+    zero_unless: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -48,4 +49,5 @@ pub const SERVO_LONGS: Func = Func {
     dims: &[],
     zero_without_first: false,
     learnt: None,
+    zero_unless: None,
 };

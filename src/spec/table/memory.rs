@@ -15,11 +15,29 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_searcho8",
+        learnt: Some(&[]),
+        doc: "Selects program `prog_no` (8 digits) as the main program.",
+        params: &[Param::Long("prog_no")],
+        forms: &[every_class(cmd::SEARCH, &[Word::Arg(0)])],
+        dims: &["100|1234|12345678|0|-1|7|9999|10000|99999999|100000000"],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_delete",
         doc: "Deletes program `prog_no`.",
         params: &[Param::Short("prog_no")],
         forms: &[every_class(cmd::DELETE, &[Word::Arg(0)])],
         dims: &["100|1234|0|-1|7|9999|10000|32767"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_deleteo8",
+        learnt: Some(&[]),
+        doc: "Deletes program `prog_no` (8 digits).",
+        params: &[Param::Long("prog_no")],
+        forms: &[every_class(cmd::DELETE, &[Word::Arg(0)])],
+        dims: &["100|1234|12345678|0|-1|7|9999|10000|99999999|100000000"],
         ..COMMAND
     },
     Func {
@@ -75,6 +93,20 @@ pub const FUNCS: &[Func] = &[
             to(I32, "mdiprog", I16),
             to(I32, "mdipntr", I32),
             to(I32, "crntprog", I16),
+            to(I32, "crntpntr", I32),
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdmdipntro8",
+        learnt: Some(&[]),
+        doc: "Reads the execution pointers of MDI operation, program numbers of 8 digits.",
+        params: &[Param::Out("mdipntr", "ODBMDIPO8")],
+        forms: &[every_class(cmd::RDMDIPNTR, &[])],
+        reply: &[
+            to(I32, "mdiprog", I32),
+            to(I32, "mdipntr", I32),
+            to(I32, "crntprog", I32),
             to(I32, "crntpntr", I32),
         ],
         ..COMMAND

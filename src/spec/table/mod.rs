@@ -52,10 +52,8 @@ const LEN: usize = {
     n
 };
 
-// Only ever used behind FUNCS's reference (one promoted copy), so its size
-// costs nothing at the use sites.
-#[allow(clippy::large_const_arrays)]
-const ALL: [Func; LEN] = {
+// One static copy: FUNCS refers to it.
+static ALL: [Func; LEN] = {
     let mut all = [base::COMMAND; LEN];
     let (mut n, mut i) = (0, 0);
     while i < AREAS.len() {

@@ -33,4 +33,26 @@ pub const FUNCS: &[Func] = &[
         short: Short::Zeros,
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdpmacroinfo",
+        learnt: Some(&["reply: out 0 use_no2: [Const(0), Const(0)]"]),
+        doc: "Reads the P-code macro variables' information: `use_no1` the variables #10000.., `use_no2` the extended variables #20000.. (0 when `v2_type` is 2 or more, as FANUC's library writes it), `v2_type` their type.",
+        params: &[Param::Out("pmacinfo", "ODBPMINF")],
+        forms: &[every_class(cmd::RDPMACROINFO, &[])],
+        reply: &[
+            skip(I32),
+            skip(I32),
+            skip(I32),
+            to(I32, "use_no1", I16),
+            to(I32, "use_no2", I16),
+            to(I32, "v2_type", I16),
+        ],
+        zero_unless: Some(ZeroUnless {
+            zero: "use_no2",
+            of: "v2_type",
+            lo: i16::MIN as i32,
+            hi: 1,
+        }),
+        ..COMMAND
+    },
 ];

@@ -20,4 +20,5 @@ pub const FUNCS: &[Func] = &[Func {
     dims: &[],
     zero_without_first: false,
     learnt: None,
+    zero_unless: None,
 }];
