@@ -781,11 +781,9 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdzofs",
-        cases: &[
-            "fuzz_rdzofs_*short1*",
-            "fuzz_rdzofs_*cut*",
-            "fuzz_rdzofs_*empty*",
-        ],
+        // A longer answer cut inside its last record reads the whole
+        // records (fuzz_rdzofs_*cut*: as FANUC's library).
+        cases: &["fuzz_rdzofs_*short1*", "fuzz_rdzofs_*empty*"],
         reason: FUZZ_SHORT,
     },
     Deviation {
