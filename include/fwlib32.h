@@ -3981,7 +3981,9 @@ short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct 
  FANUC's library; a record cut short reads its missing words as 0.
  `length` must hold the 20-byte head
  (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
- the code EW_LENGTH with nothing written, as FANUC's library).
+ the code EW_LENGTH). The head is written once the group is answered, before
+ the tools are asked for: an error answered for the tools (or EW_LENGTH)
+ leaves it written, as FANUC's library does.
 
  # Safety
  `toolgrp` must point to `length` writable bytes.

@@ -178,15 +178,18 @@ pub unsafe extern "C" fn cnc_rdzofs(
         }
         // When the CNC answers an error, FANUC's library has already
         // written the header and a zero first value: so do we.
-        let v = h.call(&p::rdzofs(number, axis)).inspect_err(|e| {
-            if matches!(e, Error::Cnc { .. }) {
-                unsafe {
-                    put_member!(out, IODBZOFS, datano, number);
-                    put_member!(out, IODBZOFS, r#type, axis);
-                    put_member!(out, IODBZOFS, data[0], 0);
+        let v = h
+            .call(&p::rdzofs(number, axis))
+            .inspect_err(|e| {
+                if matches!(e, Error::Cnc { .. }) {
+                    unsafe {
+                        put_member!(out, IODBZOFS, datano, number);
+                        put_member!(out, IODBZOFS, r#type, axis);
+                        put_member!(out, IODBZOFS, data[0], 0);
+                    }
                 }
-            }
-        })?;
+            })?
+            .0;
         let n = if axis < 0 { h.ctx().axes() } else { 1 };
         if v.len() < n {
             return Err(short());

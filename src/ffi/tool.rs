@@ -26,7 +26,9 @@ use std::os::raw::{c_char, c_short, c_ushort};
 /// FANUC's library; a record cut short reads its missing words as 0.
 /// `length` must hold the 20-byte head
 /// (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
-/// the code EW_LENGTH with nothing written, as FANUC's library).
+/// the code EW_LENGTH). The head is written once the group is answered, before
+/// the tools are asked for: an error answered for the tools (or EW_LENGTH)
+/// leaves it written, as FANUC's library does.
 ///
 /// # Safety
 /// `toolgrp` must point to `length` writable bytes.
@@ -50,14 +52,17 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
             unsafe { put_at(out, 0, 0 as c_short) };
             return Ok(());
         };
+        // The head, written before the tools are asked for (FANUC's
+        // library leaves it written when that exchange or the length
+        // check fails).
+        unsafe {
+            put_member!(out, ODBTG, grp_num, g.grp as c_short);
+            put_member!(out, ODBTG, ntool, g.ntool.value);
+            put_member!(out, ODBTG, life, g.life.value);
+            put_member!(out, ODBTG, count, g.count.value);
+        }
         if g.ntool.value <= 0 {
             // No tools: the head only, and no second exchange.
-            unsafe {
-                put_at(out, 0, g.grp as c_short);
-                put_at(out, 8, g.ntool.value);
-                put_at(out, 12, g.life.value);
-                put_at(out, 16, g.count.value);
-            }
             return Ok(());
         }
         let t = h.call(&tltools(g.grp, g.ntool.value))?;
@@ -65,10 +70,6 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
             return Err(Error::length());
         }
         unsafe {
-            put_member!(out, ODBTG, grp_num, g.grp as c_short);
-            put_member!(out, ODBTG, ntool, g.ntool.value);
-            put_member!(out, ODBTG, life, g.life.value);
-            put_member!(out, ODBTG, count, g.count.value);
             for (i, x) in t.tools.iter().enumerate() {
                 let o = element!(out, ODBTG, data[i]);
                 put_member!(o, ODBTG_DATA, tuse_num, i as i32 + 1);

@@ -94,7 +94,9 @@ wire_struct! {
     }
 }
 
-pub fn rdzofs(number: i16, axis: i16) -> Single<Values> {
+/// cnc_rdzofs: the whole records; a partial record after them is ignored,
+/// as FANUC's library ignores it (it reads the records it needs).
+pub fn rdzofs(number: i16, axis: i16) -> Single<WholeValues> {
     let n = i32::from(number);
     Single::new(ReqSub::cnc(RDZOFS, &[n, n, i32::from(axis)]))
 }

@@ -286,8 +286,13 @@ fn tool_life_groups() {
         assert_eq!(cnc_rdlife(h, 99, &mut l), EW_NUMBER);
         assert_eq!(cnc_rdcount(h, 1, std::ptr::null_mut()), EW_DATA);
         assert_eq!(cnc_rdtoolgrp(h, 1, 19, &mut t), EW_LENGTH);
-        // Room for the head and one tool, the group has two.
+        // Room for the head and one tool, the group has two: EW_LENGTH
+        // with the head written, as FANUC's library writes it.
+        let mut t = ODBTG::default();
         assert_eq!(cnc_rdtoolgrp(h, 1, 40, &mut t), EW_LENGTH);
+        assert_eq!(t.grp_num, 1);
+        assert_eq!(t.ntool, 2);
+        assert_eq!(t.data[0].tool_num, 0);
         // A punch-press function: a mill refuses it without traffic.
         let mut c = IODBTLCTL::default();
         assert_eq!(cnc_rdtlctldata(h, &mut c), EW_FUNC);
