@@ -62,7 +62,9 @@ pub const FUNCS: &[Func] = &[
         records: entries(
             &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
             "ODBSPDLNAME",
-            u16::MAX,
+            // FANUC's library writes at most 8 names (its maximum spindles)
+            // [fuzz, rdspdlname `s0Ln350`].
+            8,
         ),
         dims: &["4|1|0|-1|2|8|9"],
         ..COMMAND
