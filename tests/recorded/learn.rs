@@ -8,7 +8,8 @@
 #[path = "../../tools/oracle/learn_pure.rs"]
 mod pure;
 
-use fwlib32::spec::{Field, Func, Int::*, Overflow, Param, Records, Short, every_class, skip, to};
+use fwlib32::spec::table::base::COMMAND;
+use fwlib32::spec::{Field, Func, Int::*, Param, Records, every_class, skip, to};
 use pure::*;
 
 const HEADER: &str = "
@@ -201,16 +202,7 @@ fn a_described_entry_agrees_with_the_byte_map_and_a_wrong_one_does_not() {
                 arg: None,
             },
         ],
-        records: None,
-        payload: None,
-        more: &[],
-        local: None,
-        short: Short::Zeros,
-        overflow: Overflow::Cut,
-        dims: &[],
-        zero_without_first: false,
-        learnt: None,
-        zero_unless: None,
+        ..COMMAND
     };
     const WRONG: Func = Func {
         reply: &[skip(I32), to(I32, "value", I32), to(I32, "u", I32)],
@@ -278,15 +270,7 @@ fn records_repeat_and_match_a_records_entry() {
             count: None,
             room: None,
         }),
-        payload: None,
-        more: &[],
-        local: None,
-        short: Short::Zeros,
-        overflow: Overflow::Cut,
-        dims: &[],
-        zero_without_first: false,
-        learnt: None,
-        zero_unless: None,
+        ..COMMAND
     };
     // three asked: the three records written
     let e = expected(&ENTRY, std::slice::from_ref(&rec), 64, 3).unwrap();

@@ -8,7 +8,8 @@
 
 use super::types::*;
 
-mod base;
+/// The entries others start from (`..COMMAND`).
+pub mod base;
 mod feed;
 pub mod history;
 pub mod info;

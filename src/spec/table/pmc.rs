@@ -11,14 +11,5 @@ pub const FUNCS: &[Func] = &[Func {
     checks: &[],
     forms: &[pmc(cmd::PMC_COUNT, &[])],
     reply: &[to(I32, "", I32)],
-    records: None,
-    payload: None,
-    more: &[],
-    local: None,
-    short: Short::Zeros,
-    overflow: Overflow::Cut,
-    dims: &[],
-    zero_without_first: false,
-    learnt: None,
-    zero_unless: None,
+    ..super::base::COMMAND
 }];
