@@ -3150,6 +3150,15 @@ short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
 short cnc_rdmdipntro8(unsigned short FlibHndl, struct ODBMDIPO8 *mdipntr);
 
 /*
+ Reads the MDI program's status bits: 0 no MDI program, 2 one is stored,
+ 4 it starts from its top (the execution pointer at 0).
+
+ # Safety
+ `stat` must be NULL or point to a writable unsigned short.
+ */
+short cnc_rdmdiprgstat(unsigned short FlibHndl, unsigned short *stat);
+
+/*
  Reads the MDI program's text into `data` (no NUL), `*length` set to its
  length. A text longer than `*length`: EW_LENGTH after the exchange,
  nothing written, as FANUC's library.
@@ -3159,6 +3168,15 @@ short cnc_rdmdipntro8(unsigned short FlibHndl, struct ODBMDIPO8 *mdipntr);
  `*length` writable bytes.
  */
 short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
+
+/*
+ Reads the multiple-piece machining number (4 bytes written into the
+ `long`).
+
+ # Safety
+ `number` must be NULL or point to a writable long.
+ */
+short cnc_rdmultipieceno(unsigned short FlibHndl, long *number);
 
 /*
  Reads the number of tool life groups.

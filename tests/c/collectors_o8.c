@@ -1,5 +1,5 @@
 /* The 8-digit program reads (cnc_rddynamico8, cnc_rdprogdiro8,
- * cnc_rdprogdir2o8), called through the .so against focas-sim; prints
+ * cnc_rdprogdir2o8), cnc_rdmdiprgstat and cnc_rdmultipieceno, called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_o8 HOST PORT */
 #include <stdio.h>
@@ -61,6 +61,24 @@ int main(int argc, char **argv) {
     for (int i = 0; i < num; i++)
         printf("dir2o8.%d=%ld,%ld,%.51s\n", i, (long)rec[i].number, (long)rec[i].length,
                rec[i].comment);
+
+    /* The MDI program's status before and after one is written, and with
+     * its execution pointer moved off the top. */
+    unsigned short stat = 0xffff;
+    check("rdmdiprgstat", cnc_rdmdiprgstat(h, &stat));
+    printf("mdistat.none=%u\n", stat);
+    char mdi[] = "G91 G00 X1.;\n%";
+    check("wrmdiprog", cnc_wrmdiprog(h, (short)strlen(mdi), mdi));
+    check("wrmdipntr", cnc_wrmdipntr(h, 0));
+    check("rdmdiprgstat", cnc_rdmdiprgstat(h, &stat));
+    printf("mdistat.top=%u\n", stat);
+    check("wrmdipntr", cnc_wrmdipntr(h, 5));
+    check("rdmdiprgstat", cnc_rdmdiprgstat(h, &stat));
+    printf("mdistat.pointer=%u\n", stat);
+
+    long piece = -1;
+    check("rdmultipieceno", cnc_rdmultipieceno(h, &piece));
+    printf("multipiece=%d\n", (int)piece);
 
     cnc_freelibhndl(h);
     return 0;

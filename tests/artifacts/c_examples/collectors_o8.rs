@@ -1,6 +1,7 @@
-//! tests/c/collectors_o8.c: cnc_rddynamico8, cnc_rdprogdiro8 and
-//! cnc_rdprogdir2o8 through the .so, compared with the simulator's state
-//! (a program with an 8-digit number in cycle and in memory).
+//! tests/c/collectors_o8.c: cnc_rddynamico8, cnc_rdprogdiro8,
+//! cnc_rdprogdir2o8, cnc_rdmdiprgstat and cnc_rdmultipieceno through the
+//! .so, compared with the simulator's state (a program with an 8-digit
+//! number in cycle and in memory; the MDI program the C test writes).
 
 use super::run_c_test;
 use fwlib32::sim::Profile;
@@ -11,7 +12,7 @@ const O8: i32 = 12345678;
 
 /// The default profile with program 1234 renumbered O8 and in cycle, its
 /// first block (no motion) lasting the whole test: the axes stay where the
-/// profile puts them.
+/// profile puts them; multiple-piece machining number 37.
 fn profile() -> Profile {
     let mut text = DEFAULT_PROFILE.to_string();
     for (from, to) in [
@@ -22,6 +23,7 @@ fn profile() -> Profile {
             "block_seconds = 0.5 ",
             "block_seconds = 100000 ".to_string(),
         ),
+        ("multi_piece = 0 ", "multi_piece = 37 ".to_string()),
     ] {
         assert_eq!(
             text.matches(from).count(),
@@ -77,4 +79,11 @@ fn eight_digit_program_reads_follow_the_machine() {
     assert_eq!(rec[0], O8.to_string());
     assert!(rec[1].parse::<i32>().unwrap() > 0, "size {}", rec[1]);
     assert_eq!(rec[2], format!("({})", q.comment));
+    // No MDI program, then one (MDI_EXIST 2) from its top (MDI_START_TOP
+    // 4), then with its pointer moved.
+    assert_eq!(kv["mdistat.none"], "0");
+    assert_eq!(kv["mdistat.top"], "6");
+    assert_eq!(kv["mdistat.pointer"], "2");
+    assert_eq!(kv["multipiece"], path.cycle.multi_piece.to_string());
+    assert_eq!(path.cycle.multi_piece, 37);
 }
