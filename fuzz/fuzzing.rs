@@ -113,7 +113,7 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pa::rdalmhisno(), cx, r),
     },
     Decoder {
-        names: &["cnc_rddynamic", "cnc_rddynamic2"],
+        names: &["cnc_rddynamic", "cnc_rddynamic2", "cnc_rddynamico8"],
         run: |cx, a, r| go(Dynamic { axis: a[0] as i16 }, cx, r),
     },
     Decoder {
@@ -433,7 +433,13 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pg::rdopmode(), cx, r),
     },
     Decoder {
-        names: &["cnc_rdprogdir", "cnc_rdprogdir2", "cnc_rdprogdir3"],
+        names: &[
+            "cnc_rdprogdir",
+            "cnc_rdprogdir2",
+            "cnc_rdprogdir3",
+            "cnc_rdprogdiro8",
+            "cnc_rdprogdir2o8",
+        ],
         run: |cx, a, r| go(pg::progdir(a[0], a[1], a[2]), cx, r),
     },
     Decoder {
