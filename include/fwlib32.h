@@ -4436,7 +4436,9 @@ short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
  Writes a CNC parameter. The parameter's attributes are read first
  (one exchange); `length` must then equal 4 + the size of the values
  (one value, or one per axis of the path for `type` -1), else EW_LENGTH
- and nothing is written. The input is read with the l32 layout (values
+ and nothing is written. A 30i type word other than 0..4 (none a CNC
+ uses) is written back as it came with every value zero, whatever
+ `length`, as FANUC's library does. The input is read with the l32 layout (values
  from offset 4). The write is sent once; the CNC decides whether it is
  allowed (parameter write enable, MDI mode ...). A 16i-class write
  carries one value slot per axis of the CNC's maximum (as FANUC's library);

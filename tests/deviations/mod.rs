@@ -806,6 +806,10 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdspeed_*short1*",
             "fuzz_rdspeed_*cut*",
             "fuzz_rdspeed_*empty*",
+            // 30i: a 0x24 answer of the value word alone (4 bytes, the
+            // layout cnc_actf reads): the decimals are read from the next
+            // subpacket's header (its class word, 1).
+            "fuzz_rdspeed_v3*_s4L_*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
     },

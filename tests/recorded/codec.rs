@@ -447,7 +447,11 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                             number,
                                             axis: i16::from_le_bytes([raw[2], raw[3]]),
                                             ptype: info.ptype,
-                                            values: vec![info.elem.get(&raw[4..])],
+                                            values: info
+                                                .elem
+                                                .map(|e| e.get(&raw[4..]))
+                                                .into_iter()
+                                                .collect(),
                                         };
                                         stamped(&w, &cx, path)
                                     }
