@@ -3977,7 +3977,7 @@ short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct 
  then per tool its use number (1, 2, ...), tool number, length and radius
  offset numbers and information. A group answered without tools (its
  number of tools 0 or less) gets the head only, and an answer under 4
- bytes `grp_num` 0 only, both `EW_OK` without asking for tools, as from
+ bytes or of group 0 `grp_num` 0 only, both `EW_OK` without asking for tools, as from
  FANUC's library; a record cut short reads its missing words as 0.
  `length` must hold the 20-byte head
  (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
