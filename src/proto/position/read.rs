@@ -3,14 +3,16 @@
 //! payloads long enough.
 
 use crate::error::{Error, Result};
-use crate::proto::call::{payload, sub};
+use crate::proto::call::sub;
 use crate::proto::packet::RespSub;
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
-/// The value records of subpacket `i`, at least `need` of them.
+/// The whole value records of subpacket `i`, at least `need` of them: a
+/// ragged tail is ignored, as FANUC's library counts them (payload / 8)
+/// [fuzz, rddynamic `s8Tlong`: a 9-byte position answer].
 pub(super) fn records(resp: &[RespSub], i: usize, need: usize) -> Result<Vec<Value>> {
-    let v: Vec<Value> = payload(resp, i)?;
+    let v = whole_records(resp, i)?;
     if v.len() < need {
         return Err(Error::short("fewer value records than the function needs"));
     }
