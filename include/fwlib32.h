@@ -627,6 +627,22 @@ typedef struct ODBDY2 {
 } ODBDY2;
 
 /*
+ cnc_rddynamico8: dynamic data, the alarm status as a short, the program
+ numbers `long` (FANUC's library writes only their low 16 bits there).
+ */
+typedef struct ODBDYO8 {
+    short dummy;
+    short axis;
+    short alarm;
+    LONG prgnum;
+    LONG prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY_POS pos;
+} ODBDYO8;
+
+/*
  cnc_rdexecpt: a program pointer (declared for programs that call it; no
  FANUC Ethernet library implements it).
  */
@@ -1291,6 +1307,16 @@ typedef struct PRGDIR2 {
     char comment[51];
     char dummy;
 } PRGDIR2;
+
+/*
+ cnc_rdprogdir2o8: one program of the directory, its number 8 digits.
+ */
+typedef struct PRGDIR2O8 {
+    LONG number;
+    LONG length;
+    char comment[51];
+    char dummy;
+} PRGDIR2O8;
 
 /*
  A date of PRGDIR3 (`mdate`, `cdate`).
@@ -2957,6 +2983,17 @@ short cnc_rddynamic(unsigned short FlibHndl, short axis, short length, struct OD
 short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct ODBDY2 *buf);
 
 /*
+ cnc_rddynamic2 with the alarm status as a short (ODBDYO8; `length` ≥ 44
+ for one axis, 540 for all): the same nine subpackets. The program numbers
+ are their low 16 bits sign-extended, as FANUC's library writes them
+ (despite the name, no 8 digits).
+
+ # Safety
+ `buf` must point to `length` writable bytes.
+ */
+short cnc_rddynamico8(unsigned short FlibHndl, short axis, short length, struct ODBDYO8 *buf);
+
+/*
  Reads the Ethernet board's type and device.
 
  # Safety
@@ -3113,6 +3150,15 @@ short cnc_rdmdipntr(unsigned short FlibHndl, struct ODBMDIP *mdipntr);
 short cnc_rdmdipntro8(unsigned short FlibHndl, struct ODBMDIPO8 *mdipntr);
 
 /*
+ Reads the MDI program's status bits: 0 no MDI program, 2 one is stored,
+ 4 it starts from its top (the execution pointer at 0).
+
+ # Safety
+ `stat` must be NULL or point to a writable unsigned short.
+ */
+short cnc_rdmdiprgstat(unsigned short FlibHndl, unsigned short *stat);
+
+/*
  Reads the MDI program's text into `data` (no NUL), `*length` set to its
  length. A text longer than `*length`: EW_LENGTH after the exchange,
  nothing written, as FANUC's library.
@@ -3122,6 +3168,15 @@ short cnc_rdmdipntro8(unsigned short FlibHndl, struct ODBMDIPO8 *mdipntr);
  `*length` writable bytes.
  */
 short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
+
+/*
+ Reads the multiple-piece machining number (4 bytes written into the
+ `long`).
+
+ # Safety
+ `number` must be NULL or point to a writable long.
+ */
+short cnc_rdmultipieceno(unsigned short FlibHndl, long *number);
 
 /*
  Reads the number of tool life groups.
@@ -3643,6 +3698,7 @@ short cnc_rdproctime(unsigned short FlibHndl, struct ODBPTIME *proc_time);
  not fit ends the text ("%" still written) with EW_LENGTH. Type not 0..2:
  EW_ATTRIB, `datano_s` > `datano_e`: EW_NUMBER, `length` 0: EW_LENGTH, all
  without traffic. Asks the CNC for 19 programs per exchange, as FANUC's.
+ (FANUC's library calls cnc_rdprogdiro8 with the numbers sign-extended.)
 
  # Safety
  `prg_dir` must point to `length` writable bytes.
@@ -3662,6 +3718,8 @@ short cnc_rdprogdir(unsigned short FlibHndl,
  number as a short read back from `buf` (with no program, what `buf`
  held: FANUC's library does so). Type not 0..2: EW_ATTRIB, `*num_prog` ≤ 0:
  EW_LENGTH, without traffic. 19 programs per exchange at most.
+ (FANUC's library calls cnc_rdprogdir2o8 with `*top_prog` sign-extended
+ and keeps the low 16 bits of the number it gives back.)
 
  # Safety
  `top_prog` and `num_prog` must point to readable and writable shorts;
@@ -3672,6 +3730,24 @@ short cnc_rdprogdir2(unsigned short FlibHndl,
                      short *top_prog,
                      short *num_prog,
                      struct PRGDIR2 *buf);
+
+/*
+ cnc_rdprogdir2 with 8-digit program numbers: `*top_prog` a 4-byte
+ `long` (sent as it is), PRGDIR2O8 records; out, `*top_prog` = the first
+ record's number read back from `buf` (with no program, the 4 bytes
+ `buf` held, as FANUC's library), `*num_prog` the records read. The same
+ checks and exchanges.
+
+ # Safety
+ `top_prog` must point to 4 readable and writable bytes, `num_prog` to a
+ readable and writable short; `buf` must have `*num_prog` writable
+ PRGDIR2O8.
+ */
+short cnc_rdprogdir2o8(unsigned short FlibHndl,
+                       short type,
+                       long *top_prog,
+                       short *num_prog,
+                       struct PRGDIR2O8 *buf);
 
 /*
  Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
@@ -3691,6 +3767,21 @@ short cnc_rdprogdir3(unsigned short FlibHndl,
                      long *top_prog,
                      short *num_prog,
                      struct PRGDIR3 *buf);
+
+/*
+ cnc_rdprogdir with 8-digit program numbers: the programs numbered
+ `datano_s` to `datano_e` (32 bits each, sent as they are), the same text,
+ checks and exchanges.
+
+ # Safety
+ `prg_dir` must point to `length` writable bytes.
+ */
+short cnc_rdprogdiro8(unsigned short FlibHndl,
+                      short type,
+                      long datano_s,
+                      long datano_e,
+                      unsigned short length,
+                      struct PRGDIR *prg_dir);
 
 /*
  Reads program memory information: `type` 0 into `prog->u.bin`, 1 as the

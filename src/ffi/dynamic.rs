@@ -1,21 +1,31 @@
-//! Dynamic data: cnc_rddynamic2 and cnc_rddynamic, one frame written into
-//! ODBDY2 / ODBDY.
+//! Dynamic data: cnc_rddynamic2, cnc_rddynamic and cnc_rddynamico8, one
+//! frame written into ODBDY2 / ODBDY / ODBDYO8.
 
 use super::{ffi_read, nonnull, put_at};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_ATTRIB;
 use crate::proto::position::{Dynamic, DynamicData, low16};
-use crate::types::{MAX_AXIS, ODBDY, ODBDY_FAXIS, ODBDY_OAXIS, ODBDY2};
+use crate::types::{MAX_AXIS, ODBDY, ODBDY_FAXIS, ODBDY_OAXIS, ODBDY2, ODBDYO8};
 use std::mem::{offset_of, size_of};
 use std::os::raw::{c_short, c_ushort};
+
+/// How alarm, prgnum and prgmnum are written.
+#[derive(Clone, Copy)]
+enum Num {
+    /// The low 16 bits, sign-extended into a 4-byte `long` (ODBDY2;
+    /// ODBDYO8's program numbers).
+    Low16,
+    /// The low 16 bits into a `short` (ODBDY; ODBDYO8's alarm).
+    Short,
+}
 
 /// Byte offsets of the fields the dynamic functions write.
 struct DynLayout {
     axis: usize,
-    /// alarm, prgnum, prgmnum: 4 bytes (ODBDY2) or 2 bytes (ODBDY).
+    /// alarm, prgnum, prgmnum, each written as `widths` says.
     numbers: [usize; 3],
-    wide: bool,
+    widths: [Num; 3],
     seqnum: usize,
     actf: usize,
     acts: usize,
@@ -32,7 +42,7 @@ const DY2: DynLayout = DynLayout {
         offset_of!(ODBDY2, prgnum),
         offset_of!(ODBDY2, prgmnum),
     ],
-    wide: true,
+    widths: [Num::Low16; 3],
     seqnum: offset_of!(ODBDY2, seqnum),
     actf: offset_of!(ODBDY2, actf),
     acts: offset_of!(ODBDY2, acts),
@@ -48,13 +58,32 @@ const DY: DynLayout = DynLayout {
         offset_of!(ODBDY, prgnum),
         offset_of!(ODBDY, prgmnum),
     ],
-    wide: false,
+    widths: [Num::Short; 3],
     seqnum: offset_of!(ODBDY, seqnum),
     actf: offset_of!(ODBDY, actf),
     acts: offset_of!(ODBDY, acts),
     pos: offset_of!(ODBDY, pos),
     one: offset_of!(ODBDY, pos) + size_of::<ODBDY_OAXIS>(),
     all: size_of::<ODBDY>(),
+};
+
+const DYO8: DynLayout = DynLayout {
+    axis: offset_of!(ODBDYO8, axis),
+    numbers: [
+        offset_of!(ODBDYO8, alarm),
+        offset_of!(ODBDYO8, prgnum),
+        offset_of!(ODBDYO8, prgmnum),
+    ],
+    // FANUC's library keeps the low 16 bits of the program numbers here
+    // too [code: inter_rddynamic<odbdyo8>, movswl/cwtl; fuzz
+    // rddynamico8 `s1L`, `s1Tw`]: no 8 digits despite the name.
+    widths: [Num::Short, Num::Low16, Num::Low16],
+    seqnum: offset_of!(ODBDYO8, seqnum),
+    actf: offset_of!(ODBDYO8, actf),
+    acts: offset_of!(ODBDYO8, acts),
+    pos: offset_of!(ODBDYO8, pos),
+    one: offset_of!(ODBDYO8, pos) + size_of::<ODBDY_OAXIS>(),
+    all: size_of::<ODBDYO8>(),
 };
 
 /// Offsets of absolute, machine, relative, distance within `faxis`.
@@ -113,7 +142,9 @@ fn dynamic(l: &DynLayout, h: c_ushort, axis: c_short, length: c_short, out: *mut
                     }
                 } else {
                     for (k, vals) in pos.iter().enumerate() {
-                        put_at(base, l.pos + 4 * k, vals[0]);
+                        if let Some(v) = vals.first() {
+                            put_at(base, l.pos + 4 * k, *v);
+                        }
                     }
                 }
             }
@@ -129,16 +160,16 @@ fn dynamic(l: &DynLayout, h: c_ushort, axis: c_short, length: c_short, out: *mut
 }
 
 /// Alarm, program or main program number `k`: FANUC takes the low 16 bits,
-/// sign-extended (4 bytes in ODBDY2, 2 in ODBDY).
+/// sign-extended (4 bytes in ODBDY2, 2 in ODBDY; ODBDYO8 the alarm 2 and
+/// the program numbers 4).
 ///
 /// # Safety
 /// `base` must point to a writable struct of layout `l`.
 unsafe fn put_number(l: &DynLayout, base: *mut u8, k: usize, v: i32) {
     unsafe {
-        if l.wide {
-            put_at(base, l.numbers[k], low16(v));
-        } else {
-            put_at(base, l.numbers[k], v as i16);
+        match l.widths[k] {
+            Num::Low16 => put_at(base, l.numbers[k], low16(v)),
+            Num::Short => put_at(base, l.numbers[k], v as i16),
         }
     }
 }
@@ -178,5 +209,24 @@ pub unsafe extern "C" fn cnc_rddynamic(
 ) -> c_short {
     ffi_read!("cnc_rddynamic", {
         dynamic(&DY, FlibHndl, axis, length, buf.cast())
+    })
+}
+
+/// cnc_rddynamic2 with the alarm status as a short (ODBDYO8; `length` ≥ 44
+/// for one axis, 540 for all): the same nine subpackets. The program numbers
+/// are their low 16 bits sign-extended, as FANUC's library writes them
+/// (despite the name, no 8 digits).
+///
+/// # Safety
+/// `buf` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rddynamico8(
+    FlibHndl: c_ushort,
+    axis: c_short,
+    length: c_short,
+    buf: *mut ODBDYO8,
+) -> c_short {
+    ffi_read!("cnc_rddynamico8", {
+        dynamic(&DYO8, FlibHndl, axis, length, buf.cast())
     })
 }

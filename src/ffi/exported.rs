@@ -25,7 +25,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_dwnend3", "cnc_dwnstart4", "cnc_download4", "cnc_dwnend4", "cnc_dncstart", "cnc_dnc",
         "cnc_dncend", "cnc_dncstart2", "cnc_dnc2", "cnc_dncend2",
     ]),
-    ("dynamic", &["cnc_rddynamic2", "cnc_rddynamic"]),
+    ("dynamic", &["cnc_rddynamic2", "cnc_rddynamic", "cnc_rddynamico8"]),
     ("folder", &[
         "cnc_rdpdf_drive", "cnc_rdpdf_inf", "cnc_rdpdf_curdir", "cnc_wrpdf_curdir",
         "cnc_rdpdf_subdirn", "cnc_pdf_rdmain", "cnc_pdf_add", "cnc_pdf_del", "cnc_pdf_slctmain",
@@ -50,7 +50,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_wrmacror2",
     ]),
     ("memory", &[
-        "cnc_rdprogdir2", "cnc_rdmdiprog", "cnc_wrmdiprog", "cnc_rdproginfo",
+        "cnc_rdprogdir2", "cnc_rdmdiprog", "cnc_wrmdiprog", "cnc_rdproginfo", "cnc_rdprogdir2o8",
     ]),
     ("offset", &[
         "cnc_rdtofs", "cnc_wrtofs", "cnc_rdtofsr", "cnc_rdzofs", "cnc_wrzofs", "cnc_wrwkcdshft",
@@ -76,6 +76,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ("program", &[
         "cnc_exeprgname", "cnc_exeprgname2", "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
         "cnc_settimer", "cnc_rdopmode", "cnc_rdprogdir", "cnc_rdprogdir3",
+        "cnc_rdprogdiro8",
     ]),
     ("spindle", &[
         "cnc_acts2", "cnc_rdspeed", "cnc_rdspload", "cnc_rdspmaxrpm", "cnc_rdspgear",

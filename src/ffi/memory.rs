@@ -10,11 +10,12 @@ use crate::proto::call::Single;
 use crate::proto::open::CncClass;
 use crate::proto::packet::ReqSub;
 use crate::proto::program::{PathName, ProgInfo, RDMDIPROG, RDPROGINFO, WRMDIPROG};
-use crate::types::{ODBNC, ODBNC_bin, PRGDIR2};
-use std::os::raw::{c_char, c_short, c_ushort};
+use crate::types::{ODBNC, ODBNC_bin, PRGDIR2, PRGDIR2O8};
+use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
-/// Size of one PRGDIR2 record (60 bytes).
+/// Size of one PRGDIR2 / PRGDIR2O8 record (60 bytes).
 const PRGDIR2_SIZE: usize = std::mem::size_of::<PRGDIR2>();
+const _: () = assert!(PRGDIR2_SIZE == std::mem::size_of::<PRGDIR2O8>());
 
 /// Reads up to `*num_prog` programs numbered `*top_prog` or more: `type` 0
 /// the numbers, 1 also the comments, 2 also the sizes (as FANUC's library:
@@ -23,6 +24,8 @@ const PRGDIR2_SIZE: usize = std::mem::size_of::<PRGDIR2>();
 /// number as a short read back from `buf` (with no program, what `buf`
 /// held: FANUC's library does so). Type not 0..2: EW_ATTRIB, `*num_prog` ≤ 0:
 /// EW_LENGTH, without traffic. 19 programs per exchange at most.
+/// (FANUC's library calls cnc_rdprogdir2o8 with `*top_prog` sign-extended
+/// and keeps the low 16 bits of the number it gives back.)
 ///
 /// # Safety
 /// `top_prog` and `num_prog` must point to readable and writable shorts;
@@ -36,40 +39,83 @@ pub unsafe extern "C" fn cnc_rdprogdir2(
     buf: *mut PRGDIR2,
 ) -> c_short {
     ffi_boundary!("cnc_rdprogdir2", {
-        let h = handles::get(FlibHndl)?;
-        let (top, num) = (nonnull(top_prog)?, nonnull(num_prog)?);
-        let out = nonnull(buf)?.cast::<u8>();
-        if !(0..=2).contains(&r#type) {
-            return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or 2"));
-        }
-        let want = unsafe { num.read_unaligned() };
-        if want <= 0 {
-            return Err(Error::local(EW_LENGTH, "*num_prog must be at least 1"));
-        }
-        let start = i32::from(unsafe { top.read_unaligned() });
-        let got = progdir_records(&h, i32::from(r#type), start, want as usize)?;
-        for (i, e) in got.iter().enumerate() {
-            let at = unsafe { out.add(i * PRGDIR2_SIZE) };
-            unsafe {
-                put(at.cast::<i32>(), e.number);
-                if r#type >= 1 {
-                    put(
-                        at.add(8).cast::<[u8; 51]>(),
-                        e.comment[..51].try_into().expect("51"),
-                    );
-                }
-                if r#type == 2 {
-                    put(at.add(4).cast::<i32>(), e.length);
-                }
-            }
-        }
-        unsafe {
-            put(num, got.len() as c_short);
-            // FANUC's library reads it back from the first record, written or not.
-            put(top, out.cast::<c_short>().read_unaligned());
-        }
+        let top = nonnull(top_prog)?;
+        let mut wide = i32::from(unsafe { top.read_unaligned() });
+        progdir2(FlibHndl, r#type, &mut wide, num_prog, buf.cast())?;
+        unsafe { put(top, wide as c_short) };
         Ok(())
     })
+}
+
+/// cnc_rdprogdir2 with 8-digit program numbers: `*top_prog` a 4-byte
+/// `long` (sent as it is), PRGDIR2O8 records; out, `*top_prog` = the first
+/// record's number read back from `buf` (with no program, the 4 bytes
+/// `buf` held, as FANUC's library), `*num_prog` the records read. The same
+/// checks and exchanges.
+///
+/// # Safety
+/// `top_prog` must point to 4 readable and writable bytes, `num_prog` to a
+/// readable and writable short; `buf` must have `*num_prog` writable
+/// PRGDIR2O8.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdprogdir2o8(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    top_prog: *mut c_long,
+    num_prog: *mut c_short,
+    buf: *mut PRGDIR2O8,
+) -> c_short {
+    ffi_boundary!("cnc_rdprogdir2o8", {
+        // FANUC's x86-64 library reads and writes 4 bytes through a `long *`.
+        let top = nonnull(top_prog)?.cast::<i32>();
+        let mut wide = unsafe { top.read_unaligned() };
+        progdir2(FlibHndl, r#type, &mut wide, num_prog, buf.cast())?;
+        unsafe { put(top, wide) };
+        Ok(())
+    })
+}
+
+/// cnc_rdprogdir2 / cnc_rdprogdir2o8: `top` in, the first record's number
+/// (4 bytes read back from `buf`) out when the call succeeds.
+fn progdir2(
+    hndl: c_ushort,
+    r#type: c_short,
+    top: &mut i32,
+    num_prog: *mut c_short,
+    buf: *mut u8,
+) -> crate::error::Result<()> {
+    let h = handles::get(hndl)?;
+    let num = nonnull(num_prog)?;
+    let out = nonnull(buf)?;
+    if !(0..=2).contains(&r#type) {
+        return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or 2"));
+    }
+    let want = unsafe { num.read_unaligned() };
+    if want <= 0 {
+        return Err(Error::local(EW_LENGTH, "*num_prog must be at least 1"));
+    }
+    let got = progdir_records(&h, i32::from(r#type), *top, want as usize)?;
+    for (i, e) in got.iter().enumerate() {
+        let at = unsafe { out.add(i * PRGDIR2_SIZE) };
+        unsafe {
+            put(at.cast::<i32>(), e.number);
+            if r#type >= 1 {
+                put(
+                    at.add(8).cast::<[u8; 51]>(),
+                    e.comment[..51].try_into().expect("51"),
+                );
+            }
+            if r#type == 2 {
+                put(at.add(4).cast::<i32>(), e.length);
+            }
+        }
+    }
+    unsafe {
+        put(num, got.len() as c_short);
+        // FANUC's library reads it back from the first record, written or not.
+        *top = out.cast::<i32>().read_unaligned();
+    }
+    Ok(())
 }
 
 /// Reads the MDI program's text into `data` (no NUL), `*length` set to its

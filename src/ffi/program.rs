@@ -268,6 +268,7 @@ pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) ->
 /// not fit ends the text ("%" still written) with EW_LENGTH. Type not 0..2:
 /// EW_ATTRIB, `datano_s` > `datano_e`: EW_NUMBER, `length` 0: EW_LENGTH, all
 /// without traffic. Asks the CNC for 19 programs per exchange, as FANUC's.
+/// (FANUC's library calls cnc_rdprogdiro8 with the numbers sign-extended.)
 ///
 /// # Safety
 /// `prg_dir` must point to `length` writable bytes.
@@ -281,54 +282,107 @@ pub unsafe extern "C" fn cnc_rdprogdir(
     prg_dir: *mut PRGDIR,
 ) -> c_short {
     ffi_boundary!("cnc_rdprogdir", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(prg_dir)?.cast::<u8>();
-        if !(0..=2).contains(&r#type) {
-            return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or 2"));
-        }
-        if datano_s > datano_e {
-            return Err(Error::local(EW_NUMBER, "datano_s is after datano_e"));
-        }
-        if length == 0 {
-            return Err(Error::local(EW_LENGTH, "length must be at least 1"));
-        }
-        let mut text = pp::DirText::new(r#type, length);
-        let mut start = i32::from(datano_s);
-        // A number past datano_e ends the text, not the exchanges: FANUC's
-        // library goes on from the last number answered while it is below
-        // datano_e [fuzz, rdprogdir `s0Tvwwww`].
-        let mut past_end = false;
-        'exchanges: loop {
-            let d = h.call(&pp::progdir(start, pp::PROGDIR_CHUNK, i32::from(r#type)))?;
-            let Some(last) = d.0.last().map(|e| e.number) else {
-                break;
-            };
-            for e in d.0.iter().take(pp::PROGDIR_CHUNK as usize) {
-                past_end |= e.number > i32::from(datano_e);
-                if past_end {
-                    break;
-                }
-                if !text.push(e) {
+        progdir_text(
+            FlibHndl,
+            r#type,
+            i32::from(datano_s),
+            i32::from(datano_e),
+            length,
+            prg_dir,
+        )
+    })
+}
+
+/// cnc_rdprogdir with 8-digit program numbers: the programs numbered
+/// `datano_s` to `datano_e` (32 bits each, sent as they are), the same text,
+/// checks and exchanges.
+///
+/// # Safety
+/// `prg_dir` must point to `length` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cnc_rdprogdiro8(
+    FlibHndl: c_ushort,
+    r#type: c_short,
+    datano_s: c_long,
+    datano_e: c_long,
+    length: c_ushort,
+    prg_dir: *mut PRGDIR,
+) -> c_short {
+    ffi_boundary!("cnc_rdprogdiro8", {
+        // FANUC's x86-64 library reads the low 32 bits of a `long` argument.
+        progdir_text(
+            FlibHndl,
+            r#type,
+            datano_s as i32,
+            datano_e as i32,
+            length,
+            prg_dir,
+        )
+    })
+}
+
+/// The exchanges of cnc_rdprogdir / cnc_rdprogdiro8 at most: 77824
+/// programs, more than a CNC's directory holds (FANUC's library would ask
+/// for ever of a CNC answering the same numbers again and again).
+const PROGDIR_EXCHANGES: usize = 4096;
+
+/// cnc_rdprogdir / cnc_rdprogdiro8.
+fn progdir_text(
+    hndl: c_ushort,
+    r#type: c_short,
+    datano_s: i32,
+    datano_e: i32,
+    length: c_ushort,
+    prg_dir: *mut PRGDIR,
+) -> crate::error::Result<()> {
+    let h = handles::get(hndl)?;
+    let out = nonnull(prg_dir)?.cast::<u8>();
+    if !(0..=2).contains(&r#type) {
+        return Err(Error::local(EW_ATTRIB, "type must be 0, 1 or 2"));
+    }
+    if datano_s > datano_e {
+        return Err(Error::local(EW_NUMBER, "datano_s is after datano_e"));
+    }
+    if length == 0 {
+        return Err(Error::local(EW_LENGTH, "length must be at least 1"));
+    }
+    let mut text = pp::DirText::new(r#type, length);
+    let mut start = datano_s;
+    'exchanges: for _ in 0..PROGDIR_EXCHANGES {
+        let d = h.call(&pp::progdir(start, pp::PROGDIR_CHUNK, i32::from(r#type)))?;
+        let Some(last) = d.0.last().map(|e| e.number) else {
+            break;
+        };
+        // A number past datano_e ends this answer's entries, not the
+        // exchanges [fuzz, rdprogdir `s0Tvwwww`; rdprogdiro8 `s0Tvwwww`:
+        // the next answer's entries are written].
+        for e in d.0.iter().take(pp::PROGDIR_CHUNK as usize) {
+            if e.number > datano_e || !text.push(e) {
+                if text.full {
                     break 'exchanges;
                 }
-            }
-            // Numbers must grow from one exchange to the next.
-            if last < start || last >= i32::from(datano_e) {
                 break;
             }
-            start = last + 1;
         }
-        let b = text.finish();
-        let n = b.len().min(length as usize);
-        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, n) };
-        if text.full {
-            return Err(Error::local(
-                EW_LENGTH,
-                "the directory does not fit in length bytes",
-            ));
+        // FANUC's library asks on from the last number answered + 1 (32
+        // bits, wrapping: after 2147483647 from -2147483648), whatever the
+        // number asked from, while that is not past datano_e [fuzz,
+        // rdprogdiro8 `s0Tvwwww`, `s0Twwwwwmoreshort1`].
+        start = last.wrapping_add(1);
+        if start > datano_e {
+            break;
         }
-        Ok(())
-    })
+    }
+    let b = text.finish();
+    let n = b.len().min(length as usize);
+    unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, n) };
+    if text.full {
+        return Err(Error::local(
+            EW_LENGTH,
+            "the directory does not fit in length bytes",
+        ));
+    }
+    Ok(())
 }
 
 /// Up to `want` directory records from program `start` on, in exchanges

@@ -7,7 +7,7 @@ use super::Machine;
 use super::route::{Route, none};
 use super::service::Reply;
 use crate::proto::cmd::{
-    CONDENSE, COPYPROG, DELALL, DELETE, RDMDIPNTR, RENAMEPROG, SEARCH, WRMDIPNTR,
+    CONDENSE, COPYPROG, DELALL, DELETE, RDMDIPNTR, RDMDIPRGSTAT, RENAMEPROG, SEARCH, WRMDIPNTR,
 };
 use crate::proto::packet::ReqSub;
 use crate::proto::program::{ProgInfo, RDMDIPROG, RDPROGINFO, WRMDIPROG};
@@ -42,7 +42,25 @@ pub(super) const ROUTES: &[Route] = &[
             vec![0, n, 0, n]
         })
     }),
+    // cnc_rdmdiprgstat: MDI_EXIST (2) with an MDI program stored
+    // (cnc_wrmdiprog), and then MDI_START_TOP (4) while its execution
+    // pointer is at the top (cnc_wrmdipntr 0); MDI_NO_PROG (0) without one.
+    Route::table(RDMDIPRGSTAT, |m, q| {
+        m.store.path(q.path).map(|p| {
+            let stat = match (p.mdi.is_empty(), p.mdi_pntr) {
+                (true, _) => 0,
+                (false, 0) => MDI_EXIST | MDI_START_TOP,
+                (false, _) => MDI_EXIST,
+            };
+            vec![stat]
+        })
+    }),
 ];
+
+/// cnc_rdmdiprgstat's bits (FANUC's names): an MDI program is stored; it
+/// starts from its top.
+const MDI_EXIST: i64 = 1 << 1;
+const MDI_START_TOP: i64 = 1 << 2;
 
 impl Machine {
     /// The program commands answered as bytes: memory information

@@ -270,6 +270,7 @@ impl Machine {
             program: main,
             block_seconds: p.cycle.block_seconds,
             repeat: false,
+            multi_piece: p.cycle.multi_piece,
         };
         let plan = Arc::new(Plan::parse(&text, &p.axes, &cycle));
         let held0 = self.held_before(i, t);
@@ -388,6 +389,7 @@ impl Machine {
             program: 0,
             block_seconds: p.cycle.block_seconds,
             repeat: false,
+            multi_piece: p.cycle.multi_piece,
         };
         let plan = Plan::parse(&body, &p.axes, &cycle);
         let first = body.lines().next().unwrap_or("");

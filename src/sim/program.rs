@@ -10,7 +10,7 @@ use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
 use crate::proto::cmd::RDPROCTIME;
-use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND};
+use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND, RDMULTIPIECENO};
 use crate::proto::program::{
     AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
     ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
@@ -53,6 +53,10 @@ pub(super) const ROUTES: &[Route] = &[
     }),
     Route::table(RDPROCTIME, processing_times),
     Route::table(RDCOMMAND, commanded),
+    // cnc_rdmultipieceno: the path's `[path.cycle] multi_piece`.
+    Route::table(RDMULTIPIECENO, |m, q| {
+        Ok(vec![i64::from(m.path(q.path)?.cycle.multi_piece)])
+    }),
 ];
 
 /// cnc_rdcommand \[type, block\]: the values in force in the block in

@@ -289,6 +289,8 @@ commands! {
     RDSPCSS = CLASS_CNC 0x0158 [cnc_rdspcss];
     RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];
     RDACTPT = CLASS_CNC 0x0162 [cnc_rdactpt];
+    /// cnc_rdmultipieceno: no arguments; the answer is an i32.
+    RDMULTIPIECENO = CLASS_CNC 0x0171 [cnc_rdmultipieceno];
     PDF_COPY = CLASS_CNC 0x0188 [cnc_pdf_copy];
     PDF_MOVE = CLASS_CNC 0x0189 [cnc_pdf_move];
     /// cnc_rdophistry4's command.
@@ -310,6 +312,8 @@ commands! {
     RENAMEPROG = CLASS_CNC 0x01c7 [cnc_renameprog];
     CONDENSE = CLASS_CNC 0x01c8 [cnc_condense];
     RDALMHISTRY5 = CLASS_CNC 0x01d1 [cnc_rdalmhistry5];
+    /// cnc_rdmdiprgstat: no arguments; the answer is a u16 of status bits.
+    RDMDIPRGSTAT = CLASS_CNC 0x02a0 [cnc_rdmdiprgstat];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];

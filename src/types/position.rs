@@ -98,6 +98,22 @@ pub struct ODBDY {
     pub pos: ODBDY_POS,
 }
 
+/// cnc_rddynamico8: dynamic data, the alarm status as a short, the program
+/// numbers `long` (FANUC's library writes only their low 16 bits there).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ODBDYO8 {
+    pub dummy: c_short,
+    pub axis: c_short,
+    pub alarm: c_short,
+    pub prgnum: LONG,
+    pub prgmnum: LONG,
+    pub seqnum: LONG,
+    pub actf: LONG,
+    pub acts: LONG,
+    pub pos: ODBDY_POS,
+}
+
 /// cnc_actf / cnc_acts: actual feed rate or spindle speed.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -339,6 +339,27 @@ impl Default for PRGDIR2 {
     }
 }
 
+/// cnc_rdprogdir2o8: one program of the directory, its number 8 digits.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PRGDIR2O8 {
+    pub number: LONG,
+    pub length: LONG,
+    pub comment: [c_char; 51],
+    pub dummy: c_char,
+}
+
+impl Default for PRGDIR2O8 {
+    fn default() -> Self {
+        PRGDIR2O8 {
+            number: 0,
+            length: 0,
+            comment: [0; 51],
+            dummy: 0,
+        }
+    }
+}
+
 /// cnc_rdpdf_drive: the program drives ("CNC_MEM" ...).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

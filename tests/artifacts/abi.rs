@@ -302,6 +302,7 @@ rust_layouts! {
     ODBSPDLNAME { name, suff1, suff2, suff3 }
     ODBDY2 { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
     ODBDY { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
+    ODBDYO8 { dummy, axis, alarm, prgnum, prgmnum, seqnum, actf, acts, pos }
     ODBACT { dummy, data }
     ODBACT2 { datano, r#type, data }
     SPEEDELM { data, dec, unit, disp, name, suff }
@@ -328,6 +329,7 @@ rust_layouts! {
     PRGDIR { prg_data }
     PRGDIR3 { number, length, page, comment, mdate, cdate }
     PRGDIR2 { number, length, comment, dummy }
+    PRGDIR2O8 { number, length, comment, dummy }
     ODBNC { u }
     ODBMDIP { mdiprog, mdipntr, crntprog, crntpntr }
     ODBMDIPO8 { mdiprog, mdipntr, crntprog, crntpntr }

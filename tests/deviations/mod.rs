@@ -169,6 +169,22 @@ pub const ORACLE: &[Deviation] = &[
         reason: FIELDS_PAST_PAYLOAD,
     },
     Deviation {
+        function: "cnc_rddynamico8",
+        cases: &[
+            "rddynamico8_v3_shape_empty",
+            "rddynamico8_v3_shape_half",
+            "rddynamico8_v3_shape_short1",
+            "rddynamico8_v3_shape_missing_sub2",
+            "rddynamico8_v3_shape_half_sub2",
+            "rddynamico8_v2_shape_empty",
+            "rddynamico8_v2_shape_half",
+            "rddynamico8_v2_shape_short1",
+            "rddynamico8_v2_shape_missing_sub2",
+            "rddynamico8_v2_shape_half_sub2",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
         function: "cnc_rdspload",
         cases: &[
             "rdspload_v3_shape_empty",
@@ -611,6 +627,11 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library writes every program record a longer answer holds, past the *num_prog records asked for (and counts them); ours writes at most *num_prog",
     },
     Deviation {
+        function: "cnc_rdprogdir2o8",
+        cases: &["fuzz_rdprogdir2o8_*more*"],
+        reason: "FANUC's library writes every program record a longer answer holds, past the *num_prog records asked for (and counts them); ours writes at most *num_prog",
+    },
+    Deviation {
         function: "cnc_rdprogdir3",
         cases: &["fuzz_rdprogdir3_*more*"],
         reason: "FANUC's library writes every program record a longer answer holds, past the *num_prog records asked for (and counts them); ours writes at most *num_prog",
@@ -834,6 +855,24 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rddynamic_*empty*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rddynamico8",
+        cases: &[
+            "fuzz_rddynamico8_*short1*",
+            "fuzz_rddynamico8_*cut*",
+            "fuzz_rddynamico8_*empty*",
+            // Feed or speed (0x24, 0x25) answered from another function's
+            // 4-byte layout: shorter than the 8-byte value record.
+            "fuzz_rddynamico8_*s3L*",
+            "fuzz_rddynamico8_*s4L*",
+        ],
+        reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rddynamico8",
+        cases: &["fuzz_rddynamico8_*s8T*more*"],
+        reason: "for one axis FANUC's library writes every record of a longer distance-to-go answer after `oaxis`, past the 44 bytes of ODBDYO8 the caller sized; ours writes the first (the one axis asked for)",
     },
     Deviation {
         function: "cnc_rddynamic2",

@@ -123,3 +123,25 @@ fn oracle_vectors_replay() {
         failures.join("\n\n")
     );
 }
+
+/// The oracle builds its probe with -m32 for a 32-bit library (FANUC's x86
+/// build): told by the ELF class byte, not by the name.
+#[test]
+fn a_32_bit_library_is_told_by_its_elf_class() {
+    let dir = toolchain::scratch("elf-class");
+    let file = |name: &str, bytes: &[u8]| {
+        let p = dir.join(name);
+        std::fs::write(&p, bytes).unwrap();
+        p
+    };
+    let elf = |class: u8| [0x7f, b'E', b'L', b'F', class, 1, 1, 0];
+    assert!(probe::elf32(&file("x86.so", &elf(1))));
+    assert!(!probe::elf32(&file("x64.so", &elf(2))));
+    assert!(!probe::elf32(&file("text.so", b"\x7fELX\x01 not an ELF")));
+    assert!(!probe::elf32(&file("short.so", b"\x7fEL")));
+    assert!(!probe::elf32(&dir.join("absent.so")));
+    // Our own library (the build's target): 64-bit on x86-64 and aarch64.
+    if cfg!(target_pointer_width = "64") {
+        assert!(!probe::elf32(&toolchain::cdylib()));
+    }
+}

@@ -277,9 +277,21 @@ fn our_lib() -> PathBuf {
 
 fn main() {
     let a = args();
-    let probe_exe = probe::build(
+    // A 32-bit library (FANUC's x86 build) needs a probe built with -m32:
+    // record, learn and list only (compare, verify and fuzz run our 64-bit
+    // library with the same probe).
+    let m32 = a.lib.as_deref().is_some_and(probe::elf32);
+    if m32 && !matches!(a.cmd.as_str(), "record" | "learn" | "list") {
+        eprintln!(
+            "oracle {}: a 32-bit library can be recorded and learnt only",
+            a.cmd
+        );
+        std::process::exit(2);
+    }
+    let probe_exe = probe::build_for(
         &root(),
         &std::env::temp_dir().join(format!("focas-oracle-{}", std::process::id())),
+        m32,
     );
     let need_lib = || {
         a.lib
@@ -331,7 +343,7 @@ fn main() {
                 }
                 let file = json!({
                     "function": function,
-                    "source": "recorded by tools/oracle from FANUC's Linux x86-64 library against focas-sim behind the oracle's reply-shaping proxy",
+                    "source": format!("recorded by tools/oracle from FANUC's Linux {} library against focas-sim behind the oracle's reply-shaping proxy", if m32 { "x86 (32-bit)" } else { "x86-64" }),
                     "cases": out,
                 });
                 let path = a.out.join(format!("{function}.json"));

@@ -358,6 +358,7 @@ static short w_callx(void) {
     /* position */                                                                                \
     WORD(rddynamic2, return F(cnc_rddynamic2)(H, N(1), N(2), B0))                                 \
     WORD(rddynamic, return F(cnc_rddynamic)(H, N(1), N(2), B0))                                   \
+    WORD(rddynamico8, return F(cnc_rddynamico8)(H, N(1), N(2), B0))                              \
     WORD(acts2, return F(cnc_acts2)(H, N(1), B0))                                                 \
     WORD(rdspeed, return F(cnc_rdspeed)(H, N(1), B0))                                             \
     WORD(rdspload, return F(cnc_rdspload)(H, N(1), B0))                                           \
@@ -392,11 +393,15 @@ static short w_callx(void) {
                      return F(cnc_settimer)(H, B0); })                                            \
     WORD(rdopmode, return F(cnc_rdopmode)(H, B0))                                                 \
     WORD(rdprogdir, return F(cnc_rdprogdir)(H, N(1), N(2), N(3), N(4), B0))                       \
+    WORD(rdprogdiro8, return F(cnc_rdprogdiro8)(H, N(1), N(2), N(3), N(4), B0))                   \
     WORD(rdprogdir3, { int32_t top[2] = {(int32_t)N(2), (int32_t)0xCCCCCCCC}; short n = N(3);     \
                        short r = F(cnc_rdprogdir3)(H, N(1), (long *)top, &n, B0);                 \
                        field("top_prog", (uint32_t)top[0]); field("num_prog", n); return r; })    \
     WORD(rdprogdir2, { short top = N(2), n = N(3); short r = F(cnc_rdprogdir2)(H, N(1), &top, &n, B0); \
                        field("top_prog", top); field("num_prog", n); return r; })                 \
+    WORD(rdprogdir2o8, { int32_t top[2] = {(int32_t)N(2), (int32_t)0xCCCCCCCC}; short n = N(3);  \
+                         short r = F(cnc_rdprogdir2o8)(H, N(1), (long *)top, &n, B0);             \
+                         field("top_prog", top[0]); field("num_prog", n); return r; })            \
     WORD(rdproginfo, return F(cnc_rdproginfo)(H, N(1), N(2), B0))                                 \
     WORD(rdmdiprog, SHORT_IO(length, 1, F(cnc_rdmdiprog)(H, &length, B0)))                        \
     WORD(wrmdiprog, { fill_hex(b1, 2); return F(cnc_wrmdiprog)(H, N(1), B1); })                   \

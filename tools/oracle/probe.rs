@@ -6,8 +6,28 @@ use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
 
-/// Compiles the probe against our header into `dir`; returns its path.
+/// Compiles the probe against our header into `dir`; returns its path
+/// (tests/recorded, tests/ffi: our 64-bit library).
+#[allow(dead_code)]
 pub fn build(root: &Path, dir: &Path) -> PathBuf {
+    build_for(root, dir, false)
+}
+
+/// Whether `lib` is a 32-bit ELF object (ELFCLASS32): FANUC's x86 build,
+/// which only a probe compiled with `-m32` can load (the oracle; tested by
+/// tests/recorded/oracle.rs).
+#[allow(dead_code)]
+pub fn elf32(lib: &Path) -> bool {
+    let mut head = [0u8; 5];
+    std::fs::File::open(lib)
+        .and_then(|mut f| std::io::Read::read_exact(&mut f, &mut head))
+        .is_ok_and(|()| head[..4] == *b"\x7fELF" && head[4] == 1)
+}
+
+/// [`build`], for a 32-bit library when `m32`: compiled with `-m32` (a
+/// multilib C compiler, gcc-multilib on Debian) and linked with the
+/// 32-bit C++ runtime, which FANUC's x86 build uses without naming it.
+pub fn build_for(root: &Path, dir: &Path, m32: bool) -> PathBuf {
     std::fs::create_dir_all(dir).expect("probe directory");
     let exe = dir.join("focas-probe");
     let src = root.join("tools/oracle/probe.c");
@@ -29,12 +49,22 @@ pub fn build(root: &Path, dir: &Path) -> PathBuf {
         .arg("-o")
         .arg(&exe)
         .args(["-rdynamic", "-ldl", "-lpthread"])
+        .args(if m32 {
+            &["-m32", "-Wl,--no-as-needed", "-l:libstdc++.so.6"][..]
+        } else {
+            &[]
+        })
         .output()
         .unwrap_or_else(|e| panic!("cannot run {cc}: {e}"));
     assert!(
         out.status.success(),
-        "compiling {} failed:\n{}",
+        "compiling {}{} failed:\n{}",
         src.display(),
+        if m32 {
+            " with -m32 (a 32-bit library: needs a multilib C compiler and the 32-bit libstdc++)"
+        } else {
+            ""
+        },
         String::from_utf8_lossy(&out.stderr)
     );
     exe

@@ -17,7 +17,8 @@ pub struct Dynamic {
 /// What the frame carries, as far as it was read: FANUC's library writes
 /// each group of fields as it reads its subpacket, so an error in a later
 /// subpacket leaves the earlier fields written. `pos` = absolute, machine,
-/// relative, distance values (one per record received).
+/// relative, distance values (one per record received; a kind not read
+/// yet is empty).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct DynamicData {
     pub alarm: Option<u32>,
@@ -86,19 +87,16 @@ impl Call for Dynamic {
         step!(3, d.actf = Some(value_word(resp, 3)?));
         step!(4, d.acts = Some(value_word(resp, 4)?));
         d.axis = true;
-        // One axis needs its record; all axes take what came.
+        // One axis needs its record; all axes take what came. Each kind is
+        // kept as it is read: an error in a later position subpacket leaves
+        // the earlier kinds written [fuzz, rddynamico8 `e13053s7`].
         let need = usize::from(self.axis != -1);
-        let mut pos: [Vec<i32>; 4] = Default::default();
-        for (k, p) in pos.iter_mut().enumerate() {
-            step!(
-                5 + k,
-                *p = records(resp, 5 + k, need)?
-                    .iter()
-                    .map(|v| v.value)
-                    .collect()
-            );
+        for k in 0..4 {
+            step!(5 + k, {
+                let v = records(resp, 5 + k, need)?;
+                d.pos.get_or_insert_with(Default::default)[k] = v.iter().map(|v| v.value).collect();
+            });
         }
-        d.pos = Some(pos);
         Ok(d)
     }
 }

@@ -46,6 +46,8 @@ pub struct Cycle {
     pub block_seconds: f64,
     /// Repeat the program when it ends (M30 and restart), counting parts.
     pub repeat: bool,
+    /// The multiple-piece machining number (cnc_rdmultipieceno; 0: none).
+    pub multi_piece: i32,
 }
 
 impl Default for Cycle {
@@ -54,6 +56,7 @@ impl Default for Cycle {
             program: 0,
             block_seconds: 1.0,
             repeat: true,
+            multi_piece: 0,
         }
     }
 }

@@ -24,6 +24,24 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdmdiprgstat",
+        doc: "Reads the MDI program's status bits: 0 no MDI program, 2 one is stored, 4 it starts from its top (the execution pointer at 0).",
+        params: &[Param::Out("stat", "unsigned short")],
+        forms: &[every_class(cmd::RDMDIPRGSTAT, &[])],
+        reply: &[to(U16, "", U16)],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdmultipieceno",
+        doc: "Reads the multiple-piece machining number (4 bytes written into the `long`).",
+        params: &[Param::Out("number", "long")],
+        forms: &[every_class(cmd::RDMULTIPIECENO, &[])],
+        reply: &[to(I32, "", I32)],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdseqnum",
         doc: "Reads the sequence number of the block being executed.",
         params: &[Param::Out("seqnum", "ODBSEQ")],
