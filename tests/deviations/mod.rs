@@ -852,7 +852,6 @@ pub const ORACLE: &[Deviation] = &[
         cases: &[
             "fuzz_rddynamic_*short1*",
             "fuzz_rddynamic_*cut*",
-            "fuzz_rddynamic_*empty*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
     },
@@ -862,10 +861,6 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rddynamico8_*short1*",
             "fuzz_rddynamico8_*cut*",
             "fuzz_rddynamico8_*empty*",
-            // Feed or speed (0x24, 0x25) answered from another function's
-            // 4-byte layout: shorter than the 8-byte value record.
-            "fuzz_rddynamico8_*s3L*",
-            "fuzz_rddynamico8_*s4L*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
     },
