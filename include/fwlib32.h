@@ -1192,6 +1192,26 @@ typedef struct IODBPMAINTE {
 } IODBPMAINTE;
 
 /*
+ cnc_rdpmacro: one P-code macro variable. The value is
+ `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
+ */
+typedef struct ODBPM {
+    /*
+     Variable number.
+     */
+    LONG datano;
+    short dummy;
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} ODBPM;
+
+/*
  cnc_rdpmacroinfo: the P-code macro variables' information.
  */
 typedef struct ODBPMINF {
@@ -1208,6 +1228,36 @@ typedef struct ODBPMINF {
      */
     short v2_type;
 } ODBPMINF;
+
+/*
+ cnc_rdpmacroinfo2: the P-code macro variables' information (2).
+ */
+typedef struct ODBPMINF2 {
+    /*
+     Variables #10000.. the CNC has.
+     */
+    LONG use_no1;
+    /*
+     Extended variables #20000..
+     */
+    LONG use_no2;
+    /*
+     Extended variables #200000..
+     */
+    LONG use_no20;
+    /*
+     Type of the variables #10000..
+     */
+    short v1_type;
+    /*
+     Type of the extended variables #20000..
+     */
+    short v2_type;
+    /*
+     Type of the extended variables #200000..
+     */
+    short v20_type;
+} ODBPMINF2;
 
 /*
  cnc_rdposerrs2: the position deviations of spindles 1 and 2.
@@ -3558,6 +3608,18 @@ short cnc_rdpm_item(unsigned short FlibHndl,
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
 
 /*
+ Reads the P-code macro variable `number` (#10000..): `mcr_val ·
+ 10^-dec_val` (a vacant variable: 0 and -1; a binary record, as a
+ 16i-class CNC may send, converted as cnc_rdmacro converts it); `number`
+ is written back to `datano`, `dummy` is left as it was; an answer
+ shorter than the record is EW_PROTOCOL, nothing written.
+
+ # Safety
+ `buf` must be NULL or point to a writable ODBPM.
+ */
+short cnc_rdpmacro(unsigned short FlibHndl, long number, struct ODBPM *buf);
+
+/*
  Reads the P-code macro variables' information: `use_no1` the variables
  #10000.., `use_no2` the extended variables #20000.. (0 when `v2_type` is
  2 or more, as FANUC's library writes it), `v2_type` their type.
@@ -3566,6 +3628,16 @@ short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num
  `pmacinfo` must be NULL or point to a writable ODBPMINF.
  */
 short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
+
+/*
+ Reads the P-code macro variables' information (2): how many variables
+ #10000.. (`use_no1`), extended #20000.. (`use_no2`) and #200000..
+ (`use_no20`) the CNC has, and each range's type.
+
+ # Safety
+ `pmacinfo` must be NULL or point to a writable ODBPMINF2.
+ */
+short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
 
 /*
  Reads the position deviation of each spindle (spindle position control),

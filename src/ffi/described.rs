@@ -241,6 +241,8 @@ unsafe fn write_fields(
                     Int::U16 => put(p.cast::<u16>(), x as u16),
                     Int::I32 => put(p.cast::<i32>(), x as i32),
                     Int::U32 => put(p.cast::<u32>(), x as u32),
+                    // A C member is never of this wire kind (places are I16).
+                    Int::BaseExp => put(p.cast::<i16>(), x as i16),
                 }
             }
         }

@@ -6,6 +6,7 @@
 use super::call::{Call, Ctx, sub};
 use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
+use super::value::{BASE_10, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
 use crate::spec::{Field, Form, Func, Int, ONE, Overflow, Short, Word, ZERO};
@@ -220,6 +221,7 @@ fn cast(v: i64, c: Int) -> i64 {
         Int::U16 => i64::from(v as u16),
         Int::I32 => i64::from(v as i32),
         Int::U32 => i64::from(v as u32),
+        Int::BaseExp => i64::from(v as i16),
     }
 }
 
@@ -258,6 +260,8 @@ pub fn payload_values(
                     (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
                     (_, Int::U32) => i64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
+                    // A C member is never of this wire kind.
+                    (_, Int::BaseExp) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
                 });
             }
         }
@@ -293,14 +297,24 @@ fn read_fields(
                 out.push(i64::from(v));
                 continue;
             }
-            out.push(match field.wire {
+            let v = match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
                 Int::U8 => i64::from(r.u8()?),
                 Int::I16 => i64::from(r.i16()?),
                 Int::U16 => i64::from(r.u16()?),
                 Int::I32 => i64::from(r.i32()?),
                 Int::U32 => i64::from(r.u32()?),
-            });
+                Int::BaseExp => {
+                    // The value read before it and this base and exponent
+                    // are one record: its decimal digits and places.
+                    let (base, exp) = (r.u16()?, r.i16()?);
+                    let value = out.pop().unwrap_or(0) as i32;
+                    let (d, p) = Value { value, base, exp }.to_decimal();
+                    out.push(i64::from(d));
+                    i64::from(p)
+                }
+            };
+            out.push(v);
         }
     }
     Ok(())
@@ -347,6 +361,11 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
                 Int::I8 | Int::U8 => w.u8(*x as u8),
                 Int::I16 | Int::U16 => w.u16(*x as u16),
                 Int::I32 | Int::U32 => w.u32(*x as u32),
+                // The digits went as the value: a decimal record.
+                Int::BaseExp => {
+                    w.u16(BASE_10);
+                    w.u16(*x as i16 as u16);
+                }
             }
         }
     }

@@ -7,7 +7,7 @@ pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{RDMACROINFO, RDPMACROINFO};
+use crate::proto::cmd::{RDMACROINFO, RDPMACRO, RDPMACROINFO, RDPMACROINFO2};
 use crate::proto::macros::{
     Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
 };
@@ -42,7 +42,61 @@ pub(super) const ROUTES: &[Route] = &[
             .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
     }),
     Route::table(RDPMACROINFO, pcode_info),
+    Route::table(RDPMACRO, pcode_read),
+    Route::table(RDPMACROINFO2, pcode_info2),
 ];
+
+/// Variables of `p` within `a..=b`.
+fn pcode_count(p: &PCodeMacros, a: i32, b: i32) -> i64 {
+    p.vars
+        .ranges
+        .iter()
+        .map(|&(s, e)| {
+            let (s, e) = (s.max(a), e.min(b));
+            if s > e {
+                0
+            } else {
+                i64::from(e) - i64::from(s) + 1
+            }
+        })
+        .sum::<i64>()
+}
+
+/// cnc_rdpmacroinfo2: how many P-code variables the path has, #10000..
+/// #19999, #20000..#199999 and #200000.., and each range's type (the
+/// profile's `[path.pmacros]`), in words 3..8 where FANUC's library reads
+/// them; words 0..2, which it never reads, sent as 0.
+fn pcode_info2(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let p = m.pcode(q.path)?;
+    Ok(vec![
+        0,
+        0,
+        0,
+        pcode_count(p, 10000, 19999),
+        pcode_count(p, 20000, 199_999),
+        pcode_count(p, 200_000, i32::MAX),
+        i64::from(p.v1_type),
+        i64::from(p.v2_type),
+        i64::from(p.v20_type),
+    ])
+}
+
+/// cnc_rdpmacro: P-code variables `s..=e` (the request's first two words)
+/// of the path's store (`[path.pmacros]`, or what writes left there), one
+/// value record each (vacant: 0 with -1 places); a number the path does
+/// not have is EW_NUMBER. The answer starts with the number FANUC's
+/// library writes back (not sent).
+fn pcode_read(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let p = &m.pcode(q.path)?.vars;
+    let (s, e) = (q.words[0], q.words[1]);
+    p.check_range(s, e)?;
+    let mut v = vec![i64::from(s)];
+    for n in s..=e {
+        let r = p.record(n);
+        v.extend([i64::from(r.value), i64::from(r.exp)]);
+    }
+    Ok(v)
+}
 
 /// cnc_rdpmacroinfo: how many P-code variables the path has, #10000..#19999
 /// and the extended #20000.., and the extended ones' type (the profile's

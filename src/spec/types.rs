@@ -174,6 +174,17 @@ pub enum Int {
     U16,
     I32,
     U32,
+    /// A wire kind only: the base (u16) and exponent (i16) words of a
+    /// value record (`value · base^-exp`: base 10 from a 30i-class CNC,
+    /// base 2 from the 16i class), after the record's value, an `I32`
+    /// field of one element right before it ([`value_record`]). Decoded,
+    /// the pair is the number's decimal digits (the `I32` field's integer)
+    /// and decimal places (this one's), as FANUC's library converts a
+    /// binary record (`crate::proto::value::Value::to_decimal`); sent, the
+    /// digits and places become a base-10 record, or a binary one where
+    /// the request goes to a CNC whose class the form's [`Form::binary`]
+    /// names. Its C type (`c`) is the places' member, an `I16`.
+    BaseExp,
 }
 
 impl Int {
@@ -181,7 +192,7 @@ impl Int {
         match self {
             Int::I8 | Int::U8 => 1,
             Int::I16 | Int::U16 => 2,
-            Int::I32 | Int::U32 => 4,
+            Int::I32 | Int::U32 | Int::BaseExp => 4,
         }
     }
     /// `v` converted to this integer, as a C cast converts it.
@@ -193,6 +204,7 @@ impl Int {
             Int::U16 => v as u16 as i64,
             Int::I32 => v as i32 as i64,
             Int::U32 => v as u32 as i64,
+            Int::BaseExp => v as i16 as i64,
         }
     }
     /// The Rust type of a C field of this width.
@@ -204,6 +216,7 @@ impl Int {
             Int::U16 => "u16",
             Int::I32 => "i32",
             Int::U32 => "u32",
+            Int::BaseExp => "i16",
         }
     }
 }
@@ -460,6 +473,20 @@ pub const fn to_out(out: u8, wire: Int, to: &'static str, c: Int) -> Field {
         c,
         arg: None,
     }
+}
+
+/// A value record's value word (its first 4 bytes), followed by
+/// [`places`]: decoded, the number's decimal digits, written to output
+/// `out`'s member `to` (a `long`, 32 bits).
+pub const fn digits(out: u8, to: &'static str) -> Field {
+    to_out(out, Int::I32, to, Int::I32)
+}
+
+/// A value record's base and exponent words ([`Int::BaseExp`]), right
+/// after its [`digits`]: decoded, the number's decimal places, written to
+/// output `out`'s member `to` (a `short`).
+pub const fn places(out: u8, to: &'static str) -> Field {
+    to_out(out, Int::BaseExp, to, Int::I16)
 }
 
 /// A reply field nobody reads.

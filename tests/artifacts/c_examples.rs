@@ -550,5 +550,6 @@ fn maintenance_example_reports_the_histories() {
 /// The C tests of tests/c, one module per program.
 mod collectors;
 mod collectors_panel_system;
+mod collectors_pcode;
 mod collectors_programs_macros;
 mod collectors_tool_axis;

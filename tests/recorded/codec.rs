@@ -1494,6 +1494,7 @@ proptest! {
                     Some(Int::U16) => i64::from(*s as u16),
                     Some(Int::I32) => i64::from(*s as i32),
                     Some(Int::U32) => i64::from(*s),
+                    Some(Int::BaseExp) => i64::from(*s as u16 as i16),
                 })
                 .collect();
             if seed.is_empty() && !all.is_empty() {

@@ -1028,6 +1028,7 @@ fn int_name(i: Int) -> &'static str {
         Int::U16 => "U16",
         Int::I32 => "I32",
         Int::U32 => "U32",
+        Int::BaseExp => "BaseExp",
     }
 }
 

@@ -55,4 +55,43 @@ pub const FUNCS: &[Func] = &[
         }),
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdpmacro",
+        learnt: Some(&[]),
+        doc: "Reads the P-code macro variable `number` (#10000..): `mcr_val · 10^-dec_val` (a vacant variable: 0 and -1; a binary record, as a 16i-class CNC may send, converted as cnc_rdmacro converts it); `number` is written back to `datano`, `dummy` is left as it was; an answer shorter than the record is EW_PROTOCOL, nothing written.",
+        params: &[Param::Long("number"), Param::Out("buf", "ODBPM")],
+        forms: &[every_class(cmd::RDPMACRO, &[Word::Arg(0), Word::Arg(0)])],
+        reply: &[
+            echo(0, "datano", I32),
+            digits(0, "mcr_val"),
+            places(0, "dec_val"),
+        ],
+        // FANUC's library writes mcr_val 0 and an uninitialised dec_val
+        // from an answer shorter than the record (tests/deviations).
+        short: Short::Error,
+        // #20000..#89999 and #200000.. (on the 30i class) are left out:
+        // there FANUC's library asks cnc_rdpmacroinfo2's command first
+        // (docs/protocol/macro.md).
+        dims: &["10000|10001|10099|10100|9999|19999|0|-1|2147483647"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdpmacroinfo2",
+        learnt: Some(&[]),
+        doc: "Reads the P-code macro variables' information (2): how many variables #10000.. (`use_no1`), extended #20000.. (`use_no2`) and #200000.. (`use_no20`) the CNC has, and each range's type.",
+        params: &[Param::Out("pmacinfo", "ODBPMINF2")],
+        forms: &[every_class(cmd::RDPMACROINFO2, &[])],
+        reply: &[
+            skip(I32),
+            skip(I32),
+            skip(I32),
+            to(I32, "use_no1", I32),
+            to(I32, "use_no2", I32),
+            to(I32, "use_no20", I32),
+            to(I16, "v1_type", I16),
+            to(I16, "v2_type", I16),
+            to(I16, "v20_type", I16),
+        ],
+        ..COMMAND
+    },
 ];

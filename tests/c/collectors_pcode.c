@@ -1,0 +1,44 @@
+/* The P-code macro reads added from FANUC's library (cnc_rdpmacroinfo2,
+ * cnc_rdpmacro), called through the .so against focas-sim; prints
+ * key=value lines that tests/artifacts compares with the simulator's
+ * machine state. Usage: collectors_pcode HOST PORT */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "fwlib32.h"
+
+static int check(const char *what, short rc) {
+    if (rc != EW_OK) {
+        fprintf(stderr, "%s: %d\n", what, rc);
+        exit(1);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv) {
+    unsigned short h;
+    long n;
+    if (argc != 3) return 2;
+    check("allclibhndl3", cnc_allclibhndl3(argv[1], (unsigned short)atoi(argv[2]), 10, &h));
+
+    ODBPMINF2 inf;
+    memset(&inf, 0, sizeof inf);
+    check("rdpmacroinfo2", cnc_rdpmacroinfo2(h, &inf));
+    printf("pmacroinfo2=%d,%d,%d,%d,%d,%d\n", (int)inf.use_no1, (int)inf.use_no2,
+           (int)inf.use_no20, inf.v1_type, inf.v2_type, inf.v20_type);
+
+    for (n = 10000; n <= 10002; n++) {
+        ODBPM pm;
+        memset(&pm, 0, sizeof pm);
+        check("rdpmacro", cnc_rdpmacro(h, n, &pm));
+        printf("pmacro.%ld=%d,%d,%d\n", n, (int)pm.datano, (int)pm.mcr_val, pm.dec_val);
+    }
+    /* A number the CNC does not have. */
+    {
+        ODBPM pm;
+        printf("pmacro.absent=%d\n", cnc_rdpmacro(h, 9999, &pm));
+    }
+
+    cnc_freelibhndl(h);
+    return 0;
+}
