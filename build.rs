@@ -497,10 +497,16 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     words.join(", ")
                 )
             }
-            (None, None) => {
-                "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[], words: &[] }"
-                    .to_string()
-            }
+            // No payload, or one of the numbers (types::NUMBERS).
+            (None, None)
+            | (
+                Some(types::Payload {
+                    count: types::NUMBERS,
+                    ..
+                }),
+                None,
+            ) => "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[], words: &[] }"
+                .to_string(),
             _ => panic!(
                 "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
                 f.name

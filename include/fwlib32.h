@@ -4586,6 +4586,14 @@ short cnc_wrpm_item(unsigned short FlibHndl,
 short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num, char (*item)[62]);
 
 /*
+ Writes the P-code macro variable `number` = `mcr_val · 10^-dec_val`,
+ sent as one value record (binary to the 16i class but Series 15, as
+ cnc_wrmacro sends it); `number` below 100 is EW_NUMBER and `dec_val`
+ outside -128..127 EW_DATA, before any traffic.
+ */
+short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec_val);
+
+/*
  Writes one tool offset value. `data` is sent as its low 32 bits, as
  FANUC's x86-64 library does.
 

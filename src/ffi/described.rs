@@ -7,7 +7,7 @@ use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
-use crate::proto::described::{Described, form, payload_records, payload_values};
+use crate::proto::described::{Described, form, payload_numbers, payload_records, payload_values};
 use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
 use crate::spec::{Field, Func, Int, Learnt, Overflow};
@@ -99,7 +99,7 @@ pub(crate) unsafe fn exec(
         }
         None => None,
     };
-    if f.payload.is_some() {
+    if f.input().is_some() {
         let input = nonnull(pay.input.cast_mut())?;
         outs_set()?;
         for ((_, c), (at, off)) in f.inputs().zip(args[numbers..].iter_mut().zip(pay.words)) {
@@ -143,6 +143,7 @@ pub(crate) unsafe fn exec(
     let n = payload_records(f, args);
     let payload = match n {
         0 => Vec::new(),
+        _ if f.input().is_none() => payload_numbers(f, cx.class, args).unwrap_or_default(),
         // SAFETY: the caller's array holds at least `n` records (contract).
         n => payload_values(
             f,

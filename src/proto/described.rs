@@ -4,12 +4,13 @@
 //! payload is the layout's big-endian integers, one after another.
 
 use super::call::{Call, Ctx, sub};
+use super::macros::to_base2;
 use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
-use super::value::{BASE_10, Value};
+use super::value::{BASE_2, BASE_10, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Field, Form, Func, Int, ONE, Overflow, Short, Word, ZERO};
+use crate::spec::{Field, Form, Func, Int, NUMBERS, ONE, Overflow, Short, Word, ZERO};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -83,8 +84,19 @@ impl Call for Described<'_> {
             Some(p) => {
                 let mut w = Writer::new();
                 let per: usize = p.fields.iter().map(|x| usize::from(x.n)).sum();
+                let binary = self.f.binary.is_some_and(|c| {
+                    c.matches(
+                        cx.class.is_16i(),
+                        matches!(cx.class, CncClass::Series16 { kind: 2 }),
+                    )
+                });
                 for rec in self.payload.chunks(per.max(1)) {
-                    write_fields(&mut w, p.fields, &mut rec.iter());
+                    if binary {
+                        let rec = binary_records(p.fields, rec);
+                        write_fields_in(&mut w, p.fields, &mut rec.iter(), BASE_2);
+                    } else {
+                        write_fields(&mut w, p.fields, &mut rec.iter());
+                    }
                 }
                 sub.with_payload(w.into_vec())
             }
@@ -269,12 +281,30 @@ pub fn payload_values(
     out
 }
 
+/// The integers of the one payload record of a write whose payload is
+/// its numbers ([`NUMBERS`]): the number arguments no request word of the
+/// class's form carries, in order; None for another write.
+pub fn payload_numbers(f: &Func, class: CncClass, args: &[i32]) -> Option<Vec<i64>> {
+    if f.payload?.count != NUMBERS {
+        return None;
+    }
+    let carried: Vec<usize> = form(f, class)
+        .map(|fm| fm.words.iter().filter_map(|w| f.word_arg(w)).collect())
+        .unwrap_or_default();
+    Some(
+        (0..f.numbers().count())
+            .filter(|i| !carried.contains(i))
+            .map(|i| i64::from(args.get(i).copied().unwrap_or(0)))
+            .collect(),
+    )
+}
+
 /// How many payload records a write sends: its count argument ([`ONE`]:
 /// one), at most the payload's `max` (0 without a payload).
 pub fn payload_records(f: &Func, args: &[i32]) -> usize {
     f.payload.map_or(0, |p| {
         let n = match p.count {
-            ONE => 1,
+            ONE | NUMBERS => 1,
             c => args.get(usize::from(c)).copied().unwrap_or(0),
         };
         usize::try_from(n).unwrap_or(0).min(usize::from(p.max))
@@ -351,7 +381,34 @@ pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeEr
     Ok(w.into_vec())
 }
 
+/// One record's integers with each value record ([`Int::BaseExp`] and
+/// the digits before it) as FANUC's library sends it binary: the
+/// digits and places become `m` and `e` of `m · 2^-e`.
+fn binary_records(fields: &[Field], rec: &[i64]) -> Vec<i64> {
+    let mut v = rec.to_vec();
+    let mut at = 0;
+    for field in fields {
+        if field.wire == Int::BaseExp && at > 0 && at < v.len() {
+            let (m, e) = to_base2(v[at - 1] as i32, v[at] as i16);
+            v[at - 1] = i64::from(m);
+            v[at] = i64::from(e);
+        }
+        at += usize::from(field.n);
+    }
+    v
+}
+
 fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item = &'a i64>) {
+    write_fields_in(w, fields, v, BASE_10)
+}
+
+/// [`write_fields`], value records in `base`.
+fn write_fields_in<'a>(
+    w: &mut Writer,
+    fields: &[Field],
+    v: &mut impl Iterator<Item = &'a i64>,
+    base: u16,
+) {
     for field in fields {
         for x in v.by_ref().take(field.n as usize) {
             if field.arg.is_some() {
@@ -361,9 +418,9 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
                 Int::I8 | Int::U8 => w.u8(*x as u8),
                 Int::I16 | Int::U16 => w.u16(*x as u16),
                 Int::I32 | Int::U32 => w.u32(*x as u32),
-                // The digits went as the value: a decimal record.
+                // The digits went as the value.
                 Int::BaseExp => {
-                    w.u16(BASE_10);
+                    w.u16(base);
                     w.u16(*x as i16 as u16);
                 }
             }

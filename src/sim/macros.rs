@@ -7,7 +7,7 @@ pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{RDMACROINFO, RDPMACRO, RDPMACROINFO, RDPMACROINFO2};
+use crate::proto::cmd::{RDMACROINFO, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRPMACRO};
 use crate::proto::macros::{
     Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
 };
@@ -44,7 +44,54 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDPMACROINFO, pcode_info),
     Route::table(RDPMACRO, pcode_read),
     Route::table(RDPMACROINFO2, pcode_info2),
+    Route::table(WRPMACRO, pcode_write),
 ];
+
+/// cnc_wrpmacro: P-code variables `s..=e` (the request's first two words)
+/// from the payload's records (digits, places), which later reads of the
+/// store give back. All or nothing: a number the path does not have is
+/// EW_NUMBER, a protected one EW_PROT, a value that is neither vacant
+/// (0 with -1 places) nor of 0..=9 places EW_DATA, too few records
+/// EW_LENGTH; then nothing is written.
+fn pcode_write(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let (s, e) = (q.words[0], q.words[1]);
+    // A 16i (not Series 15) gets binary records, which read back with 9
+    // significant digits: kept in their shortest decimal form, as
+    // cnc_wrmacro's are.
+    let binary = m.profile.cnc.class == Class::Series16 && m.profile.cnc.kind != 2;
+    let p = m
+        .profile
+        .paths
+        .get_mut(usize::from(q.path).wrapping_sub(1))
+        .map(|p| &mut p.pmacros.vars)
+        .ok_or(CncError::PATH)?;
+    p.check_range(s, e)?;
+    let n = usize::try_from(i64::from(e) - i64::from(s) + 1).unwrap_or(0);
+    if q.payload.len() < 2 * n {
+        return Err(CncError::new(ew::EW_LENGTH));
+    }
+    if (s..=e).any(|k| p.protected(k)) {
+        return Err(CncError::new(ew::EW_PROT));
+    }
+    let new = q.payload[..2 * n]
+        .chunks(2)
+        .map(|r| {
+            let (mut v, mut d) = (r[0] as i32, r[1] as i16);
+            while binary && d > 0 && v % 10 == 0 {
+                v /= 10;
+                d -= 1;
+            }
+            check_value(v, d)
+        })
+        .collect::<Reply<Vec<_>>>()?;
+    for (k, v) in (s..=e).zip(new) {
+        match v {
+            Some(v) => p.values.insert(k, v),
+            None => p.values.remove(&k),
+        };
+    }
+    Ok(Vec::new())
+}
 
 /// Variables of `p` within `a..=b`.
 fn pcode_count(p: &PCodeMacros, a: i32, b: i32) -> i64 {

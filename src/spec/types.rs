@@ -73,6 +73,8 @@ pub enum Classes {
     S16,
     /// Series 15 alone (16i class, kind 2).
     S15,
+    /// The 16i class without Series 15.
+    S16Not15,
 }
 
 /// One word of a request's argument block.
@@ -101,6 +103,7 @@ impl Classes {
             Classes::S30 => !s16,
             Classes::S16 => s16,
             Classes::S15 => s15,
+            Classes::S16Not15 => s16 && !s15,
         }
     }
 }
@@ -175,15 +178,15 @@ pub enum Int {
     I32,
     U32,
     /// A wire kind only: the base (u16) and exponent (i16) words of a
-    /// value record (`value · base^-exp`: base 10 from a 30i-class CNC,
-    /// base 2 from the 16i class), after the record's value, an `I32`
-    /// field of one element right before it ([`value_record`]). Decoded,
-    /// the pair is the number's decimal digits (the `I32` field's integer)
-    /// and decimal places (this one's), as FANUC's library converts a
-    /// binary record (`crate::proto::value::Value::to_decimal`); sent, the
-    /// digits and places become a base-10 record, or a binary one where
-    /// the request goes to a CNC whose class the form's [`Form::binary`]
-    /// names. Its C type (`c`) is the places' member, an `I16`.
+    /// value record (`value · base^-exp`: base 10, or 2 for a binary
+    /// record), after the record's value, an `I32` field of one element
+    /// right before it ([`digits`], [`places`]). Decoded, the pair is the
+    /// number's decimal digits (the `I32` field's integer) and decimal
+    /// places (this one's), as FANUC's library converts a binary record
+    /// (`crate::proto::value::Value::to_decimal`); sent (a write's payload,
+    /// the simulator's answer), the digits and places become a base-10
+    /// record, or a binary one where [`Func::binary`] says. Its C type
+    /// (`c`) is the places' member, an `I16`.
     BaseExp,
 }
 
@@ -290,6 +293,12 @@ impl Records {
 /// element, the one its [`Param::In`] points to.
 pub const ONE: u8 = u8::MAX;
 
+/// [`Payload::count`] of a write without an input array ([`Param::In`]):
+/// it sends one record whose fields' integers are its number parameters
+/// that no request word carries, in order (cnc_wrpmacro's `mcr_val` and
+/// `dec_val`); the fields' `to` and `elem` are not read.
+pub const NUMBERS: u8 = u8::MAX - 1;
+
 /// The records a write sends as its request's payload, read from its
 /// [`Param::In`] array: number parameter `count` of them ([`ONE`]: one),
 /// at most `max`.
@@ -370,6 +379,11 @@ pub struct Func {
     /// A member FANUC's library writes as 0 unless another member's value
     /// is in a range.
     pub zero_unless: Option<ZeroUnless>,
+    /// The classes to which a write sends its value records ([`Int::BaseExp`]
+    /// fields of its payload) binary, `m · 2^-e` as FANUC's library
+    /// converts the digits and places (`crate::proto::macros::to_base2`,
+    /// as for cnc_wrmacro); base 10 to the others.
+    pub binary: Option<Classes>,
 }
 
 /// Output 0's member `zero` reads 0 unless member `of` (its value cut to

@@ -1,5 +1,5 @@
-/* The P-code macro reads added from FANUC's library (cnc_rdpmacroinfo2,
- * cnc_rdpmacro), called through the .so against focas-sim; prints
+/* The P-code macro functions added from FANUC's library (cnc_rdpmacroinfo2,
+ * cnc_rdpmacro, cnc_wrpmacro), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_pcode HOST PORT */
 #include <stdio.h>
@@ -38,6 +38,21 @@ int main(int argc, char **argv) {
         ODBPM pm;
         printf("pmacro.absent=%d\n", cnc_rdpmacro(h, 9999, &pm));
     }
+
+    /* Write #10002 = -4.75, then #10003 vacant, and read both back. */
+    check("wrpmacro", cnc_wrpmacro(h, 10002, -475, 2));
+    check("wrpmacro", cnc_wrpmacro(h, 10003, 0, -1));
+    for (n = 10002; n <= 10003; n++) {
+        ODBPM pm;
+        memset(&pm, 0, sizeof pm);
+        check("rdpmacro", cnc_rdpmacro(h, n, &pm));
+        printf("written.%ld=%d,%d,%d\n", n, (int)pm.datano, (int)pm.mcr_val, pm.dec_val);
+    }
+    /* Refused before any traffic: a local variable, decimals past a byte;
+     * by the CNC: a number it does not have (nothing written). */
+    printf("wr.local=%d\n", cnc_wrpmacro(h, 99, 1, 0));
+    printf("wr.dec=%d\n", cnc_wrpmacro(h, 10004, 1, 128));
+    printf("wr.absent=%d\n", cnc_wrpmacro(h, 9999, 1, 0));
 
     cnc_freelibhndl(h);
     return 0;

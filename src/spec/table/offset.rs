@@ -4,6 +4,7 @@ use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
+use crate::ew::{EW_DATA, EW_NUMBER};
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -91,6 +92,46 @@ pub const FUNCS: &[Func] = &[
             to(I16, "v1_type", I16),
             to(I16, "v2_type", I16),
             to(I16, "v20_type", I16),
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrpmacro",
+        learnt: Some(&[]),
+        doc: "Writes the P-code macro variable `number` = `mcr_val · 10^-dec_val`, sent as one value record (binary to the 16i class but Series 15, as cnc_wrmacro sends it); `number` below 100 is EW_NUMBER and `dec_val` outside -128..127 EW_DATA, before any traffic.",
+        params: &[
+            Param::Long("number"),
+            Param::Long("mcr_val"),
+            Param::Short("dec_val"),
+        ],
+        checks: &[
+            Check {
+                arg: 0,
+                lo: 100,
+                hi: i32::MAX,
+                code: EW_NUMBER,
+            },
+            Check {
+                arg: 2,
+                lo: -128,
+                hi: 127,
+                code: EW_DATA,
+            },
+        ],
+        forms: &[every_class(cmd::WRPMACRO, &[Word::Arg(0), Word::Arg(0)])],
+        payload: Some(Payload {
+            fields: &[digits(0, ""), places(0, "")],
+            elem: "",
+            count: NUMBERS,
+            max: 1,
+        }),
+        // 16i: the record binary, as cnc_wrmacro sends it; Series 15 and
+        // the 30i class: base 10.
+        binary: Some(Classes::S16Not15),
+        dims: &[
+            "10000|10001|10099|10100|100|99|-1",
+            "125|0|-1|2147483647|-2147483648",
+            "1|0|-1|9|127|-128|128",
         ],
         ..COMMAND
     },
