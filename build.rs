@@ -455,8 +455,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     format!("offset_of!({}, {})", rust_type(ty), ident(r.to))
                 };
                 let (stride, offs) = element(r.elem, r.fields);
-                // With a count the output is the caller's array of that many.
-                if c_size(ty).is_none() && count.is_none() {
+                // With a count the output is the caller's array of that many;
+                // with a room, of the size the caller gives.
+                if c_size(ty).is_none() && count.is_none() && r.room.is_none() {
                     checks.push(format!(
                         "const _: () = if {base} + {} * {stride} > size_of::<{ty}>() {{\n    panic!(\"{}: the records do not fit in {ty}\")\n}};\n",
                         r.max, f.name

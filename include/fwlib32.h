@@ -1260,6 +1260,38 @@ typedef struct ODBPMINF2 {
 } ODBPMINF2;
 
 /*
+ One variable of IODBPR.
+ */
+typedef struct IODBPR_data {
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} IODBPR_data;
+
+/*
+ cnc_rdpmacror / cnc_wrpmacror: a range of P-code macro variables.
+ FANUC's header declares 5 records; callers pass larger buffers for more
+ (`length` = 12 + 8 · count).
+ */
+typedef struct IODBPR {
+    /*
+     First variable number.
+     */
+    LONG datano_s;
+    short dummy;
+    /*
+     Last variable number.
+     */
+    LONG datano_e;
+    struct IODBPR_data data[5];
+} IODBPR;
+
+/*
  cnc_rdposerrs2: the position deviations of spindles 1 and 2.
  */
 typedef struct ODBPSER {
@@ -3638,6 +3670,23 @@ short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
  `pmacinfo` must be NULL or point to a writable ODBPMINF2.
  */
 short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
+
+/*
+ Reads the P-code macro variables `s_no`..`e_no` (at most 179: the
+ request stops at `s_no` + 178) into `buf->data`, 8 bytes each; `s_no`
+ after `e_no` is EW_NUMBER before any traffic; every record answered must
+ fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH,
+ nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
+ `dummy` is left as it was.
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBPR.
+ */
+short cnc_rdpmacror(unsigned short FlibHndl,
+                    long s_no,
+                    long e_no,
+                    short length,
+                    struct IODBPR *buf);
 
 /*
  Reads the position deviation of each spindle (spindle position control),

@@ -113,6 +113,13 @@ pub(crate) unsafe fn exec(
         }
     }
     for c in f.checks {
+        if c.arg == crate::spec::ORDERED {
+            let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
+            if at(c.lo) > at(c.hi) {
+                return Err(Error::local(c.code, "range asked backwards"));
+            }
+            continue;
+        }
         let v = match c.arg {
             crate::spec::OPTION => i32::from(h.pair.info.option & 1),
             a => args[a as usize],

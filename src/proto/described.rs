@@ -10,7 +10,7 @@ use super::packet::{CLASS_PMC, ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Field, Form, Func, Int, NUMBERS, ONE, Overflow, Short, Word, ZERO};
+use crate::spec::{Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, Word, ZERO};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -66,6 +66,10 @@ impl Call for Described<'_> {
                 *w = match *f {
                     Word::Const(c) => c,
                     Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
+                    Word::Upto(s, e, n) => {
+                        let at = |i: u8| self.args.get(usize::from(i)).copied().unwrap_or(0);
+                        at(e).min(at(s).saturating_add(n))
+                    }
                     Word::Arg(_) | Word::Input(..) => self
                         .f
                         .word_arg(f)
@@ -193,8 +197,18 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             // than it asked for.
             Overflow::Refuse => usize::MAX,
         };
-        for _ in 0..(r.remaining() / size).min(most) {
+        let n = (r.remaining() / size).min(most);
+        for _ in 0..n {
             read_fields(&mut r, rec.fields, args, &mut out)?;
+        }
+        // The last number answered: argument 0 + records - 1.
+        let mut at = 0;
+        for field in f.reply {
+            if field.arg == Some(LAST) {
+                let n = i32::try_from(n).unwrap_or(i32::MAX);
+                out[at] = i64::from(args.first().copied().unwrap_or(0).wrapping_add(n - 1));
+            }
+            at += usize::from(field.n);
         }
     }
     Ok(out)
@@ -322,6 +336,8 @@ fn read_fields(
             if let Some(a) = field.arg {
                 let v = match a {
                     ZERO => 0,
+                    // Patched once the records are decoded (`decode`).
+                    LAST => args.first().copied().unwrap_or(0).wrapping_sub(1),
                     a => args.get(usize::from(a)).copied().unwrap_or(0),
                 };
                 out.push(i64::from(v));
@@ -452,7 +468,7 @@ pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
 /// cnc_rdposerrz \[3\] on 0x0058), the ones whose constants the request
 /// carries (words a form leaves out are 0; a write's fifth word, its
 /// payload's length, is not compared). Among those (or, when none, among
-/// all of the command's) the one with the longest reply layout describes
+/// all of the command's) the one with the longest reply layout ([`longest`]) describes
 /// the whole answer and the others read a prefix of it (cnc_rdtofsinfo and
 /// cnc_rdtofsinfo2).
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
@@ -476,8 +492,15 @@ pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
     };
     of_cmd()
         .filter(carried)
-        .max_by_key(|f| f.reply_len())
-        .or_else(|| of_cmd().max_by_key(|f| f.reply_len()))
+        .max_by_key(|f| longest(f))
+        .or_else(|| of_cmd().max_by_key(|f| longest(f)))
+}
+
+/// The longest answer a function's layout describes: its fixed fields and
+/// as many records as it takes (cnc_rdpmacror's records before
+/// cnc_rdpmacro's one record, on the same command).
+fn longest(f: &Func) -> usize {
+    f.reply_len() + f.records.map_or(0, |r| r.wire_len() * usize::from(r.max))
 }
 
 /// The arguments the request carries (inverse of the form's words:

@@ -128,16 +128,18 @@ fn pcode_info2(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> 
     ])
 }
 
-/// cnc_rdpmacro: P-code variables `s..=e` (the request's first two words)
+/// cnc_rdpmacro, cnc_rdpmacror: P-code variables `s..=e` (the request's first two words)
 /// of the path's store (`[path.pmacros]`, or what writes left there), one
 /// value record each (vacant: 0 with -1 places); a number the path does
-/// not have is EW_NUMBER. The answer starts with the number FANUC's
-/// library writes back (not sent).
+/// not have is EW_NUMBER.
 fn pcode_read(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
     let p = &m.pcode(q.path)?.vars;
     let (s, e) = (q.words[0], q.words[1]);
     p.check_range(s, e)?;
-    let mut v = vec![i64::from(s)];
+    // The fields FANUC's library fills without the wire (the numbers it
+    // writes back) come first in the layout the dispatch encodes.
+    let skipped = q.f.reply.iter().filter(|x| x.arg.is_some()).count();
+    let mut v = vec![i64::from(s); skipped];
     for n in s..=e {
         let r = p.record(n);
         v.extend([i64::from(r.value), i64::from(r.exp)]);

@@ -116,7 +116,7 @@ commands! {
     RDPMACROINFO = CLASS_CNC 0x002f [cnc_rdpmacroinfo];
     /// cnc_rdpmacro: (1,0x002d)[s, e] P-code macro variables s..e, one
     /// value record each.
-    RDPMACRO = CLASS_CNC 0x002d [cnc_rdpmacro];
+    RDPMACRO = CLASS_CNC 0x002d [cnc_rdpmacro cnc_rdpmacror];
     /// cnc_wrpmacro: (1,0x002e)[s, e, 0, 0, 8] + one value record per
     /// variable s..e.
     WRPMACRO = CLASS_CNC 0x002e [cnc_wrpmacro];

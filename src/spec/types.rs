@@ -93,6 +93,10 @@ pub enum Word {
     /// the converted value in the member (the caller sees it when `.1` is
     /// narrower than a `short`).
     Input(&'static str, Int),
+    /// Number parameter `.1`'s value, at most `.2` past number parameter
+    /// `.0`'s (`min(e, s + .2)`): the end of a range FANUC's library asks
+    /// for, cut to the most one answer carries (cnc_rdpmacror).
+    Upto(u8, u8, i32),
 }
 
 impl Classes {
@@ -149,6 +153,22 @@ pub struct Check {
 /// [`Check::arg`] for the CNC's FOCAS option bit, which FANUC's library
 /// learns at connect.
 pub const OPTION: u8 = u8::MAX;
+
+/// [`Check::arg`] of an order check: number parameter `lo` (an index)
+/// greater than number parameter `hi` (an index) returns `code` (a range
+/// asked backwards, cnc_rdpmacror's `s_no` after `e_no`).
+pub const ORDERED: u8 = u8::MAX - 1;
+
+/// A range's start (`s`, number parameter `s`) at most its end (`e`):
+/// else EW_NUMBER before any traffic.
+pub const fn ordered(s: u8, e: u8) -> Check {
+    Check {
+        arg: ORDERED,
+        lo: s as i32,
+        hi: e as i32,
+        code: crate::ew::EW_NUMBER,
+    }
+}
 
 /// A count (number parameter `arg`) below 1: EW_LENGTH before any traffic.
 pub const fn at_least_one(arg: u8) -> Check {
@@ -246,6 +266,11 @@ pub struct Field {
 /// [`Field::arg`] of a field not on the wire that FANUC's library writes
 /// as 0 ([`zero`]).
 pub const ZERO: u8 = u8::MAX;
+
+/// [`Field::arg`] of a field not on the wire that FANUC's library writes
+/// as the last number the records answered: number argument 0 plus the
+/// records decoded, less one ([`last`]; no record: argument 0 less one).
+pub const LAST: u8 = u8::MAX - 1;
 
 impl Field {
     /// The bytes of this field on the wire.
@@ -438,6 +463,7 @@ impl Func {
         match *w {
             Word::Arg(i) => Some(usize::from(i)),
             Word::Asked => self.count(),
+            Word::Upto(_, e, _) => Some(usize::from(e)),
             Word::Const(_) => None,
             Word::Input(m, _) => self
                 .inputs()
@@ -525,6 +551,19 @@ pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
         to: Some(to),
         c,
         arg: Some(arg),
+    }
+}
+
+/// The number of the last record answered (not on the wire, [`LAST`])
+/// written to output 0's member `to`.
+pub const fn last(to: &'static str, c: Int) -> Field {
+    Field {
+        wire: c,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c,
+        arg: Some(LAST),
     }
 }
 

@@ -93,3 +93,27 @@ pub struct ODBPMINF2 {
     /// Type of the extended variables #200000..
     pub v20_type: c_short,
 }
+
+/// One variable of IODBPR.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBPR_data {
+    /// Value digits.
+    pub mcr_val: LONG,
+    /// Decimal places (-1: vacant).
+    pub dec_val: c_short,
+}
+
+/// cnc_rdpmacror / cnc_wrpmacror: a range of P-code macro variables.
+/// FANUC's header declares 5 records; callers pass larger buffers for more
+/// (`length` = 12 + 8 · count).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBPR {
+    /// First variable number.
+    pub datano_s: LONG,
+    pub dummy: c_short,
+    /// Last variable number.
+    pub datano_e: LONG,
+    pub data: [IODBPR_data; 5],
+}

@@ -446,6 +446,7 @@ rust_layouts! {
     // --- P-code macros and settings (issue 24) ---
     ODBPM { datano, dummy, mcr_val, dec_val }
     ODBPMINF2 { use_no1, use_no2, use_no20, v1_type, v2_type, v20_type }
+    IODBPR { datano_s, dummy, datano_e, data }
 }
 
 #[test]

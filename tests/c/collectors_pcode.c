@@ -1,5 +1,5 @@
 /* The P-code macro functions added from FANUC's library (cnc_rdpmacroinfo2,
- * cnc_rdpmacro, cnc_wrpmacro), called through the .so against focas-sim; prints
+ * cnc_rdpmacro, cnc_wrpmacro, cnc_rdpmacror), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_pcode HOST PORT */
 #include <stdio.h>
@@ -47,6 +47,18 @@ int main(int argc, char **argv) {
         memset(&pm, 0, sizeof pm);
         check("rdpmacro", cnc_rdpmacro(h, n, &pm));
         printf("written.%ld=%d,%d,%d\n", n, (int)pm.datano, (int)pm.mcr_val, pm.dec_val);
+    }
+    /* #10000..#10004 in one read: room for 5 records (12 + 5 * 8 bytes). */
+    {
+        IODBPR pr;
+        int i;
+        memset(&pr, 0, sizeof pr);
+        check("rdpmacror", cnc_rdpmacror(h, 10000, 10004, 52, &pr));
+        printf("range=%d,%d", (int)pr.datano_s, (int)pr.datano_e);
+        for (i = 0; i < 5; i++) printf(";%d,%d", (int)pr.data[i].mcr_val, pr.data[i].dec_val);
+        printf("\n");
+        printf("range.short=%d\n", cnc_rdpmacror(h, 10000, 10004, 44, &pr));
+        printf("range.backwards=%d\n", cnc_rdpmacror(h, 10004, 10000, 52, &pr));
     }
     /* Refused before any traffic: a local variable, decimals past a byte;
      * by the CNC: a number it does not have (nothing written). */

@@ -135,4 +135,38 @@ pub const FUNCS: &[Func] = &[
         ],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdpmacror",
+        learnt: Some(&[]),
+        doc: "Reads the P-code macro variables `s_no`..`e_no` (at most 179: the request stops at `s_no` + 178) into `buf->data`, 8 bytes each; `s_no` after `e_no` is EW_NUMBER before any traffic; every record answered must fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH, nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1; `dummy` is left as it was.",
+        params: &[
+            Param::Long("s_no"),
+            Param::Long("e_no"),
+            Param::Short("length"),
+            Param::Out("buf", "IODBPR"),
+        ],
+        checks: &[ordered(0, 1)],
+        forms: &[every_class(
+            cmd::RDPMACRO,
+            &[Word::Arg(0), Word::Upto(0, 1, 178)],
+        )],
+        reply: &[echo(0, "datano_s", I32), last("datano_e", I32)],
+        records: Some(Records {
+            fields: &[digits(0, "mcr_val"), places(0, "dec_val")],
+            out: 0,
+            to: "data",
+            elem: "IODBPR_data",
+            max: 179,
+            count: None,
+            room: Some(2),
+        }),
+        // Starts below #10000 (#1.. and #9999) are left out: FANUC's library
+        // cuts or refuses them by ranges not settled (docs/protocol/macro.md).
+        dims: &[
+            "10000|10001|10099|10100",
+            "10004|10000|9999|10099|10200|20000|1",
+            "52|12|20|44|4096|0|65535",
+        ],
+        ..COMMAND
+    },
 ];

@@ -1,5 +1,5 @@
-//! tests/c/collectors_pcode.c: cnc_rdpmacroinfo2, cnc_rdpmacro and
-//! cnc_wrpmacro through the .so, compared with the simulator's P-code
+//! tests/c/collectors_pcode.c: cnc_rdpmacroinfo2, cnc_rdpmacro,
+//! cnc_wrpmacro and cnc_rdpmacror through the .so, compared with the simulator's P-code
 //! variable store (on the 30i and the 16i class: binary records there).
 
 use super::run_c_test;
@@ -60,6 +60,18 @@ fn check(p: Profile) {
     // Written from C, read back from C and in the simulator's store.
     assert_eq!(kv["written.10002"], "10002,-475,2");
     assert_eq!(kv["written.10003"], "10003,0,-1");
+    // The range after the writes: the profile's, then the written ones.
+    let rec = |n: i32| match n {
+        10002 => (-475, 2),
+        10003 => (0, -1),
+        n => pm.vars.values.get(&n).copied().unwrap_or((0, -1)),
+    };
+    let want: Vec<String> = std::iter::once("10000,10004".to_string())
+        .chain((10000..=10004).map(|n| format!("{},{}", rec(n).0, rec(n).1)))
+        .collect();
+    assert_eq!(kv["range"], want.join(";"));
+    assert_eq!(kv["range.short"], fwlib32::ew::EW_LENGTH.to_string());
+    assert_eq!(kv["range.backwards"], fwlib32::ew::EW_NUMBER.to_string());
     assert_eq!(kv["wr.local"], fwlib32::ew::EW_NUMBER.to_string());
     assert_eq!(kv["wr.dec"], fwlib32::ew::EW_DATA.to_string());
     assert_eq!(kv["wr.absent"], fwlib32::ew::EW_NUMBER.to_string());
