@@ -455,8 +455,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     format!("offset_of!({}, {})", rust_type(ty), ident(r.to))
                 };
                 let (stride, offs) = element(r.elem, r.fields);
-                // With a count the output is the caller's array of that many.
-                if c_size(ty).is_none() && count.is_none() {
+                // With a count the output is the caller's array of that many;
+                // with a room, of the size the caller gives.
+                if c_size(ty).is_none() && count.is_none() && r.room.is_none() {
                     checks.push(format!(
                         "const _: () = if {base} + {} * {stride} > size_of::<{ty}>() {{\n    panic!(\"{}: the records do not fit in {ty}\")\n}};\n",
                         r.max, f.name
@@ -497,10 +498,16 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     words.join(", ")
                 )
             }
-            (None, None) => {
-                "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[], words: &[] }"
-                    .to_string()
-            }
+            // No payload, or one of the numbers (types::NUMBERS).
+            (None, None)
+            | (
+                Some(types::Payload {
+                    count: types::NUMBERS,
+                    ..
+                }),
+                None,
+            ) => "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[], words: &[] }"
+                .to_string(),
             _ => panic!(
                 "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
                 f.name

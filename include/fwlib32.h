@@ -1208,6 +1208,26 @@ typedef struct IODBPMAINTE {
 } IODBPMAINTE;
 
 /*
+ cnc_rdpmacro: one P-code macro variable. The value is
+ `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
+ */
+typedef struct ODBPM {
+    /*
+     Variable number.
+     */
+    LONG datano;
+    short dummy;
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} ODBPM;
+
+/*
  cnc_rdpmacroinfo: the P-code macro variables' information.
  */
 typedef struct ODBPMINF {
@@ -1224,6 +1244,68 @@ typedef struct ODBPMINF {
      */
     short v2_type;
 } ODBPMINF;
+
+/*
+ cnc_rdpmacroinfo2: the P-code macro variables' information (2).
+ */
+typedef struct ODBPMINF2 {
+    /*
+     Variables #10000.. the CNC has.
+     */
+    LONG use_no1;
+    /*
+     Extended variables #20000..
+     */
+    LONG use_no2;
+    /*
+     Extended variables #200000..
+     */
+    LONG use_no20;
+    /*
+     Type of the variables #10000..
+     */
+    short v1_type;
+    /*
+     Type of the extended variables #20000..
+     */
+    short v2_type;
+    /*
+     Type of the extended variables #200000..
+     */
+    short v20_type;
+} ODBPMINF2;
+
+/*
+ One variable of IODBPR.
+ */
+typedef struct IODBPR_data {
+    /*
+     Value digits.
+     */
+    LONG mcr_val;
+    /*
+     Decimal places (-1: vacant).
+     */
+    short dec_val;
+} IODBPR_data;
+
+/*
+ cnc_rdpmacror / cnc_wrpmacror: a range of P-code macro variables.
+ FANUC's header declares 5 records; callers pass larger buffers for more
+ (`length` = 12 + 8 · count).
+ */
+typedef struct IODBPR {
+    /*
+     First variable number.
+     */
+    LONG datano_s;
+    short dummy;
+    /*
+     Last variable number.
+     */
+    LONG datano_e;
+    struct IODBPR_data data[5];
+} IODBPR;
 
 /*
  cnc_rdposerrs2: the position deviations of spindles 1 and 2.
@@ -3613,6 +3695,18 @@ short cnc_rdpm_item(unsigned short FlibHndl,
 short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num, char (*item)[62]);
 
 /*
+ Reads the P-code macro variable `number` (#10000..): `mcr_val ·
+ 10^-dec_val` (a vacant variable: 0 and -1; a binary record, as a
+ 16i-class CNC may send, converted as cnc_rdmacro converts it); `number`
+ is written back to `datano`, `dummy` is left as it was; an answer
+ shorter than the record is EW_PROTOCOL, nothing written.
+
+ # Safety
+ `buf` must be NULL or point to a writable ODBPM.
+ */
+short cnc_rdpmacro(unsigned short FlibHndl, long number, struct ODBPM *buf);
+
+/*
  Reads the P-code macro variables' information: `use_no1` the variables
  #10000.., `use_no2` the extended variables #20000.. (0 when `v2_type` is
  2 or more, as FANUC's library writes it), `v2_type` their type.
@@ -3621,6 +3715,33 @@ short cnc_rdpm_mcnitem(unsigned short FlibHndl, short start_num, short *data_num
  `pmacinfo` must be NULL or point to a writable ODBPMINF.
  */
 short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
+
+/*
+ Reads the P-code macro variables' information (2): how many variables
+ #10000.. (`use_no1`), extended #20000.. (`use_no2`) and #200000..
+ (`use_no20`) the CNC has, and each range's type.
+
+ # Safety
+ `pmacinfo` must be NULL or point to a writable ODBPMINF2.
+ */
+short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
+
+/*
+ Reads the P-code macro variables `s_no`..`e_no` (at most 179: the
+ request stops at `s_no` + 178) into `buf->data`, 8 bytes each; `s_no`
+ after `e_no` is EW_NUMBER before any traffic; every record answered must
+ fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH,
+ nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
+ `dummy` is left as it was.
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBPR.
+ */
+short cnc_rdpmacror(unsigned short FlibHndl,
+                    long s_no,
+                    long e_no,
+                    short length,
+                    struct IODBPR *buf);
 
 /*
  Reads the position deviation of each spindle (spindle position control),
@@ -4068,7 +4189,7 @@ short cnc_rdtooldata(unsigned short FlibHndl, short tool_no, short *num, struct 
  then per tool its use number (1, 2, ...), tool number, length and radius
  offset numbers and information. A group answered without tools (its
  number of tools 0 or less) gets the head only, and an answer under 4
- bytes `grp_num` 0 only, both `EW_OK` without asking for tools, as from
+ bytes or of group 0 `grp_num` 0 only, both `EW_OK` without asking for tools, as from
  FANUC's library; a record cut short reads its missing words as 0.
  `length` must hold the 20-byte head
  (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
@@ -4527,7 +4648,9 @@ short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
  Writes a CNC parameter. The parameter's attributes are read first
  (one exchange); `length` must then equal 4 + the size of the values
  (one value, or one per axis of the path for `type` -1), else EW_LENGTH
- and nothing is written. The input is read with the l32 layout (values
+ and nothing is written. A 30i type word other than 0..4 (none a CNC
+ uses) is written back as it came with every value zero, whatever
+ `length`, as FANUC's library does. The input is read with the l32 layout (values
  from offset 4). The write is sent once; the CNC decides whether it is
  allowed (parameter write enable, MDI mode ...). A 16i-class write
  carries one value slot per axis of the CNC's maximum (as FANUC's library);
@@ -4603,6 +4726,14 @@ short cnc_wrpm_item(unsigned short FlibHndl,
  `item` must be NULL or point to `data_num` readable `char[62]` (at most 22 are read).
  */
 short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num, char (*item)[62]);
+
+/*
+ Writes the P-code macro variable `number` = `mcr_val · 10^-dec_val`,
+ sent as one value record (binary to the 16i class but Series 15, as
+ cnc_wrmacro sends it); `number` below 100 is EW_NUMBER and `dec_val`
+ outside -128..127 EW_DATA, before any traffic.
+ */
+short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec_val);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

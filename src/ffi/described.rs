@@ -7,7 +7,7 @@ use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::EW_FUNC;
-use crate::proto::described::{Described, form, payload_records, payload_values};
+use crate::proto::described::{Described, form, payload_numbers, payload_records, payload_values};
 use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
 use crate::spec::{Field, Func, Int, Learnt, Overflow};
@@ -99,7 +99,7 @@ pub(crate) unsafe fn exec(
         }
         None => None,
     };
-    if f.payload.is_some() {
+    if f.input().is_some() {
         let input = nonnull(pay.input.cast_mut())?;
         outs_set()?;
         for ((_, c), (at, off)) in f.inputs().zip(args[numbers..].iter_mut().zip(pay.words)) {
@@ -113,6 +113,13 @@ pub(crate) unsafe fn exec(
         }
     }
     for c in f.checks {
+        if c.arg == crate::spec::ORDERED {
+            let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
+            if at(c.lo) > at(c.hi) {
+                return Err(Error::local(c.code, "range asked backwards"));
+            }
+            continue;
+        }
         let v = match c.arg {
             crate::spec::OPTION => i32::from(h.pair.info.option & 1),
             a => args[a as usize],
@@ -143,6 +150,7 @@ pub(crate) unsafe fn exec(
     let n = payload_records(f, args);
     let payload = match n {
         0 => Vec::new(),
+        _ if f.input().is_none() => payload_numbers(f, cx.class, args).unwrap_or_default(),
         // SAFETY: the caller's array holds at least `n` records (contract).
         n => payload_values(
             f,
@@ -241,6 +249,8 @@ unsafe fn write_fields(
                     Int::U16 => put(p.cast::<u16>(), x as u16),
                     Int::I32 => put(p.cast::<i32>(), x as i32),
                     Int::U32 => put(p.cast::<u32>(), x as u32),
+                    // A C member is never of this wire kind (places are I16).
+                    Int::BaseExp => put(p.cast::<i16>(), x as i16),
                 }
             }
         }

@@ -139,7 +139,9 @@ pub unsafe extern "C" fn cnc_rddiag(
 /// Writes a CNC parameter. The parameter's attributes are read first
 /// (one exchange); `length` must then equal 4 + the size of the values
 /// (one value, or one per axis of the path for `type` -1), else EW_LENGTH
-/// and nothing is written. The input is read with the l32 layout (values
+/// and nothing is written. A 30i type word other than 0..4 (none a CNC
+/// uses) is written back as it came with every value zero, whatever
+/// `length`, as FANUC's library does. The input is read with the l32 layout (values
 /// from offset 4). The write is sent once; the CNC decides whether it is
 /// allowed (parameter write enable, MDI mode ...). A 16i-class write
 /// carries one value slot per axis of the CNC's maximum (as FANUC's library);
@@ -166,17 +168,22 @@ pub unsafe extern "C" fn cnc_wrparam(
         let number = i16::from_le_bytes([raw[0], raw[1]]) as i32;
         let axis = i16::from_le_bytes([raw[2], raw[3]]);
         let info = h.call(&ParamInfo { number })?;
-        let count = if axis == -1 { h.ctx().axes() } else { 1 };
-        let size = info.elem.size();
-        if length as i32 != (4 + size * count) as i32 {
-            return Err(Error::local(
-                EW_LENGTH,
-                "length is not 4 + the size of the parameter's values",
-            ));
-        }
-        let values = (0..count)
-            .map(|i| info.elem.get(&raw[4 + i * size..]))
-            .collect();
+        // A type word FANUC's library does not know (30i: not 0..4): no
+        // length check, every value slot sent as zero, the CNC decides.
+        let values = match info.elem {
+            Some(elem) => {
+                let count = if axis == -1 { h.ctx().axes() } else { 1 };
+                let size = elem.size();
+                if length as i32 != (4 + size * count) as i32 {
+                    return Err(Error::local(
+                        EW_LENGTH,
+                        "length is not 4 + the size of the parameter's values",
+                    ));
+                }
+                (0..count).map(|i| elem.get(&raw[4 + i * size..])).collect()
+            }
+            None => Vec::new(),
+        };
         h.call(&WriteParam {
             number,
             axis,

@@ -22,7 +22,7 @@ use std::os::raw::{c_char, c_short, c_ushort};
 /// then per tool its use number (1, 2, ...), tool number, length and radius
 /// offset numbers and information. A group answered without tools (its
 /// number of tools 0 or less) gets the head only, and an answer under 4
-/// bytes `grp_num` 0 only, both `EW_OK` without asking for tools, as from
+/// bytes or of group 0 `grp_num` 0 only, both `EW_OK` without asking for tools, as from
 /// FANUC's library; a record cut short reads its missing words as 0.
 /// `length` must hold the 20-byte head
 /// (else the code EW_LENGTH before any traffic) and every tool the CNC sent (else
@@ -47,8 +47,8 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
             return Err(Error::length());
         }
         let Some(g) = h.call(&tlgroup(number))? else {
-            // An answer under 4 bytes: grp_num 0 and nothing else, as
-            // FANUC's library writes.
+            // An answer under 4 bytes or of group 0: grp_num 0 and
+            // nothing else, as FANUC's library writes.
             unsafe { put_at(out, 0, 0 as c_short) };
             return Ok(());
         };

@@ -4,11 +4,13 @@
 //! payload is the layout's big-endian integers, one after another.
 
 use super::call::{Call, Ctx, sub};
+use super::macros::to_base2;
 use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
+use super::value::{BASE_2, BASE_10, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Field, Form, Func, Int, ONE, Overflow, Short, Word, ZERO};
+use crate::spec::{Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, Word, ZERO};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -64,6 +66,10 @@ impl Call for Described<'_> {
                 *w = match *f {
                     Word::Const(c) => c,
                     Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
+                    Word::Upto(s, e, n) => {
+                        let at = |i: u8| self.args.get(usize::from(i)).copied().unwrap_or(0);
+                        at(e).min(at(s).saturating_add(n))
+                    }
                     Word::Arg(_) | Word::Input(..) => self
                         .f
                         .word_arg(f)
@@ -82,8 +88,19 @@ impl Call for Described<'_> {
             Some(p) => {
                 let mut w = Writer::new();
                 let per: usize = p.fields.iter().map(|x| usize::from(x.n)).sum();
+                let binary = self.f.binary.is_some_and(|c| {
+                    c.matches(
+                        cx.class.is_16i(),
+                        matches!(cx.class, CncClass::Series16 { kind: 2 }),
+                    )
+                });
                 for rec in self.payload.chunks(per.max(1)) {
-                    write_fields(&mut w, p.fields, &mut rec.iter());
+                    if binary {
+                        let rec = binary_records(p.fields, rec);
+                        write_fields_in(&mut w, p.fields, &mut rec.iter(), BASE_2);
+                    } else {
+                        write_fields(&mut w, p.fields, &mut rec.iter());
+                    }
                 }
                 sub.with_payload(w.into_vec())
             }
@@ -180,8 +197,18 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             // than it asked for.
             Overflow::Refuse => usize::MAX,
         };
-        for _ in 0..(r.remaining() / size).min(most) {
+        let n = (r.remaining() / size).min(most);
+        for _ in 0..n {
             read_fields(&mut r, rec.fields, args, &mut out)?;
+        }
+        // The last number answered: argument 0 + records - 1.
+        let mut at = 0;
+        for field in f.reply {
+            if field.arg == Some(LAST) {
+                let n = i32::try_from(n).unwrap_or(i32::MAX);
+                out[at] = i64::from(args.first().copied().unwrap_or(0).wrapping_add(n - 1));
+            }
+            at += usize::from(field.n);
         }
     }
     Ok(out)
@@ -220,6 +247,7 @@ fn cast(v: i64, c: Int) -> i64 {
         Int::U16 => i64::from(v as u16),
         Int::I32 => i64::from(v as i32),
         Int::U32 => i64::from(v as u32),
+        Int::BaseExp => i64::from(v as i16),
     }
 }
 
@@ -258,6 +286,8 @@ pub fn payload_values(
                     (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
                     (_, Int::U32) => i64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
+                    // A C member is never of this wire kind.
+                    (_, Int::BaseExp) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
                 });
             }
         }
@@ -265,12 +295,30 @@ pub fn payload_values(
     out
 }
 
+/// The integers of the one payload record of a write whose payload is
+/// its numbers ([`NUMBERS`]): the number arguments no request word of the
+/// class's form carries, in order; None for another write.
+pub fn payload_numbers(f: &Func, class: CncClass, args: &[i32]) -> Option<Vec<i64>> {
+    if f.payload?.count != NUMBERS {
+        return None;
+    }
+    let carried: Vec<usize> = form(f, class)
+        .map(|fm| fm.words.iter().filter_map(|w| f.word_arg(w)).collect())
+        .unwrap_or_default();
+    Some(
+        (0..f.numbers().count())
+            .filter(|i| !carried.contains(i))
+            .map(|i| i64::from(args.get(i).copied().unwrap_or(0)))
+            .collect(),
+    )
+}
+
 /// How many payload records a write sends: its count argument ([`ONE`]:
 /// one), at most the payload's `max` (0 without a payload).
 pub fn payload_records(f: &Func, args: &[i32]) -> usize {
     f.payload.map_or(0, |p| {
         let n = match p.count {
-            ONE => 1,
+            ONE | NUMBERS => 1,
             c => args.get(usize::from(c)).copied().unwrap_or(0),
         };
         usize::try_from(n).unwrap_or(0).min(usize::from(p.max))
@@ -288,19 +336,31 @@ fn read_fields(
             if let Some(a) = field.arg {
                 let v = match a {
                     ZERO => 0,
+                    // Patched once the records are decoded (`decode`).
+                    LAST => args.first().copied().unwrap_or(0).wrapping_sub(1),
                     a => args.get(usize::from(a)).copied().unwrap_or(0),
                 };
                 out.push(i64::from(v));
                 continue;
             }
-            out.push(match field.wire {
+            let v = match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
                 Int::U8 => i64::from(r.u8()?),
                 Int::I16 => i64::from(r.i16()?),
                 Int::U16 => i64::from(r.u16()?),
                 Int::I32 => i64::from(r.i32()?),
                 Int::U32 => i64::from(r.u32()?),
-            });
+                Int::BaseExp => {
+                    // The value read before it and this base and exponent
+                    // are one record: its decimal digits and places.
+                    let (base, exp) = (r.u16()?, r.i16()?);
+                    let value = out.pop().unwrap_or(0) as i32;
+                    let (d, p) = Value { value, base, exp }.to_decimal();
+                    out.push(i64::from(d));
+                    i64::from(p)
+                }
+            };
+            out.push(v);
         }
     }
     Ok(())
@@ -337,7 +397,34 @@ pub fn encode(f: &Func, values: &[i64]) -> std::result::Result<Vec<u8>, DecodeEr
     Ok(w.into_vec())
 }
 
+/// One record's integers with each value record ([`Int::BaseExp`] and
+/// the digits before it) as FANUC's library sends it binary: the
+/// digits and places become `m` and `e` of `m · 2^-e`.
+fn binary_records(fields: &[Field], rec: &[i64]) -> Vec<i64> {
+    let mut v = rec.to_vec();
+    let mut at = 0;
+    for field in fields {
+        if field.wire == Int::BaseExp && at > 0 && at < v.len() {
+            let (m, e) = to_base2(v[at - 1] as i32, v[at] as i16);
+            v[at - 1] = i64::from(m);
+            v[at] = i64::from(e);
+        }
+        at += usize::from(field.n);
+    }
+    v
+}
+
 fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item = &'a i64>) {
+    write_fields_in(w, fields, v, BASE_10)
+}
+
+/// [`write_fields`], value records in `base`.
+fn write_fields_in<'a>(
+    w: &mut Writer,
+    fields: &[Field],
+    v: &mut impl Iterator<Item = &'a i64>,
+    base: u16,
+) {
     for field in fields {
         for x in v.by_ref().take(field.n as usize) {
             if field.arg.is_some() {
@@ -347,6 +434,11 @@ fn write_fields<'a>(w: &mut Writer, fields: &[Field], v: &mut impl Iterator<Item
                 Int::I8 | Int::U8 => w.u8(*x as u8),
                 Int::I16 | Int::U16 => w.u16(*x as u16),
                 Int::I32 | Int::U32 => w.u32(*x as u32),
+                // The digits went as the value.
+                Int::BaseExp => {
+                    w.u16(base);
+                    w.u16(*x as i16 as u16);
+                }
             }
         }
     }
@@ -376,7 +468,7 @@ pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
 /// cnc_rdposerrz \[3\] on 0x0058), the ones whose constants the request
 /// carries (words a form leaves out are 0; a write's fifth word, its
 /// payload's length, is not compared). Among those (or, when none, among
-/// all of the command's) the one with the longest reply layout describes
+/// all of the command's) the one with the longest reply layout ([`longest`]) describes
 /// the whole answer and the others read a prefix of it (cnc_rdtofsinfo and
 /// cnc_rdtofsinfo2).
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
@@ -400,8 +492,15 @@ pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
     };
     of_cmd()
         .filter(carried)
-        .max_by_key(|f| f.reply_len())
-        .or_else(|| of_cmd().max_by_key(|f| f.reply_len()))
+        .max_by_key(|f| longest(f))
+        .or_else(|| of_cmd().max_by_key(|f| longest(f)))
+}
+
+/// The longest answer a function's layout describes: its fixed fields and
+/// as many records as it takes (cnc_rdpmacror's records before
+/// cnc_rdpmacro's one record, on the same command).
+fn longest(f: &Func) -> usize {
+    f.reply_len() + f.records.map_or(0, |r| r.wire_len() * usize::from(r.max))
 }
 
 /// The arguments the request carries (inverse of the form's words:

@@ -36,8 +36,10 @@ pub fn tlinsert(grp: i16, tuse: i16, tool: i32) -> Single<super::offset::Ack> {
 }
 
 /// cnc_rdtoolgrp's first frame, 0x008b [grp, grp]: None for an answer
-/// under 4 bytes (FANUC's library then writes grp_num 0 only); a longer
-/// one short of the record reads its missing words as zeros.
+/// under 4 bytes or whose group number is 0 (FANUC's library then writes
+/// grp_num 0 only [fuzz, rdtoolgrp `s0L`: an 8-byte answer of group 0 and
+/// 2 tools]); a longer one short of the record reads its missing words as
+/// zeros.
 pub fn tlgroup(grp: i16) -> TlGroup {
     TlGroup(i32::from(grp))
 }
@@ -55,7 +57,8 @@ impl Call for TlGroup {
             return Ok(None);
         }
         let full = ToolGroup::default().to_bytes().len();
-        Ok(Some(payload_padded(resp, 0, full)?))
+        let g: ToolGroup = payload_padded(resp, 0, full)?;
+        Ok((g.grp != 0).then_some(g))
     }
 }
 

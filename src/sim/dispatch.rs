@@ -441,6 +441,9 @@ mod tests {
                         *w = match *f {
                             crate::spec::Word::Const(c) => c,
                             crate::spec::Word::Asked => 0,
+                            crate::spec::Word::Upto(_, e, _) => {
+                                args.get(usize::from(e)).copied().unwrap_or(0)
+                            }
                             crate::spec::Word::Arg(_) | crate::spec::Word::Input(..) => func
                                 .word_arg(f)
                                 .and_then(|a| args.get(a).copied())

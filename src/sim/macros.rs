@@ -7,7 +7,7 @@ pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{RDMACROINFO, RDPMACROINFO};
+use crate::proto::cmd::{RDMACROINFO, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRPMACRO};
 use crate::proto::macros::{
     Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
 };
@@ -42,7 +42,110 @@ pub(super) const ROUTES: &[Route] = &[
             .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
     }),
     Route::table(RDPMACROINFO, pcode_info),
+    Route::table(RDPMACRO, pcode_read),
+    Route::table(RDPMACROINFO2, pcode_info2),
+    Route::table(WRPMACRO, pcode_write),
 ];
+
+/// cnc_wrpmacro: P-code variables `s..=e` (the request's first two words)
+/// from the payload's records (digits, places), which later reads of the
+/// store give back. All or nothing: a number the path does not have is
+/// EW_NUMBER, a protected one EW_PROT, a value that is neither vacant
+/// (0 with -1 places) nor of 0..=9 places EW_DATA, too few records
+/// EW_LENGTH; then nothing is written.
+fn pcode_write(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let (s, e) = (q.words[0], q.words[1]);
+    // A 16i (not Series 15) gets binary records, which read back with 9
+    // significant digits: kept in their shortest decimal form, as
+    // cnc_wrmacro's are.
+    let binary = m.profile.cnc.class == Class::Series16 && m.profile.cnc.kind != 2;
+    let p = m
+        .profile
+        .paths
+        .get_mut(usize::from(q.path).wrapping_sub(1))
+        .map(|p| &mut p.pmacros.vars)
+        .ok_or(CncError::PATH)?;
+    p.check_range(s, e)?;
+    let n = usize::try_from(i64::from(e) - i64::from(s) + 1).unwrap_or(0);
+    if q.payload.len() < 2 * n {
+        return Err(CncError::new(ew::EW_LENGTH));
+    }
+    if (s..=e).any(|k| p.protected(k)) {
+        return Err(CncError::new(ew::EW_PROT));
+    }
+    let new = q.payload[..2 * n]
+        .chunks(2)
+        .map(|r| {
+            let (mut v, mut d) = (r[0] as i32, r[1] as i16);
+            while binary && d > 0 && v % 10 == 0 {
+                v /= 10;
+                d -= 1;
+            }
+            check_value(v, d)
+        })
+        .collect::<Reply<Vec<_>>>()?;
+    for (k, v) in (s..=e).zip(new) {
+        match v {
+            Some(v) => p.values.insert(k, v),
+            None => p.values.remove(&k),
+        };
+    }
+    Ok(Vec::new())
+}
+
+/// Variables of `p` within `a..=b`.
+fn pcode_count(p: &PCodeMacros, a: i32, b: i32) -> i64 {
+    p.vars
+        .ranges
+        .iter()
+        .map(|&(s, e)| {
+            let (s, e) = (s.max(a), e.min(b));
+            if s > e {
+                0
+            } else {
+                i64::from(e) - i64::from(s) + 1
+            }
+        })
+        .sum::<i64>()
+}
+
+/// cnc_rdpmacroinfo2: how many P-code variables the path has, #10000..
+/// #19999, #20000..#199999 and #200000.., and each range's type (the
+/// profile's `[path.pmacros]`), in words 3..8 where FANUC's library reads
+/// them; words 0..2, which it never reads, sent as 0.
+fn pcode_info2(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let p = m.pcode(q.path)?;
+    Ok(vec![
+        0,
+        0,
+        0,
+        pcode_count(p, 10000, 19999),
+        pcode_count(p, 20000, 199_999),
+        pcode_count(p, 200_000, i32::MAX),
+        i64::from(p.v1_type),
+        i64::from(p.v2_type),
+        i64::from(p.v20_type),
+    ])
+}
+
+/// cnc_rdpmacro, cnc_rdpmacror: P-code variables `s..=e` (the request's first two words)
+/// of the path's store (`[path.pmacros]`, or what writes left there), one
+/// value record each (vacant: 0 with -1 places); a number the path does
+/// not have is EW_NUMBER.
+fn pcode_read(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let p = &m.pcode(q.path)?.vars;
+    let (s, e) = (q.words[0], q.words[1]);
+    p.check_range(s, e)?;
+    // The fields FANUC's library fills without the wire (the numbers it
+    // writes back) come first in the layout the dispatch encodes.
+    let skipped = q.f.reply.iter().filter(|x| x.arg.is_some()).count();
+    let mut v = vec![i64::from(s); skipped];
+    for n in s..=e {
+        let r = p.record(n);
+        v.extend([i64::from(r.value), i64::from(r.exp)]);
+    }
+    Ok(v)
+}
 
 /// cnc_rdpmacroinfo: how many P-code variables the path has, #10000..#19999
 /// and the extended #20000.., and the extended ones' type (the profile's

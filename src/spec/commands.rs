@@ -114,6 +114,15 @@ commands! {
         cnc_rdprstrinfo];
     /// cnc_rdpmacroinfo: (1,0x002f) the P-code macro variables' counts and type.
     RDPMACROINFO = CLASS_CNC 0x002f [cnc_rdpmacroinfo];
+    /// cnc_rdpmacro: (1,0x002d)[s, e] P-code macro variables s..e, one
+    /// value record each.
+    RDPMACRO = CLASS_CNC 0x002d [cnc_rdpmacro cnc_rdpmacror];
+    /// cnc_wrpmacro: (1,0x002e)[s, e, 0, 0, 8] + one value record per
+    /// variable s..e.
+    WRPMACRO = CLASS_CNC 0x002e [cnc_wrpmacro];
+    /// cnc_rdpmacroinfo2: (1,0x00e7) the P-code macro variables' counts
+    /// and types (three ranges).
+    RDPMACROINFO2 = CLASS_CNC 0x00e7 [cnc_rdpmacroinfo2];
     /// 16i: read diagnosis data [s, e, axis].
     DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
     /// Both classes: diagnosis numbers and attributes [s, n].

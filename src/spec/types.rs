@@ -73,6 +73,8 @@ pub enum Classes {
     S16,
     /// Series 15 alone (16i class, kind 2).
     S15,
+    /// The 16i class without Series 15.
+    S16Not15,
 }
 
 /// One word of a request's argument block.
@@ -91,6 +93,10 @@ pub enum Word {
     /// the converted value in the member (the caller sees it when `.1` is
     /// narrower than a `short`).
     Input(&'static str, Int),
+    /// Number parameter `.1`'s value, at most `.2` past number parameter
+    /// `.0`'s (`min(e, s + .2)`): the end of a range FANUC's library asks
+    /// for, cut to the most one answer carries (cnc_rdpmacror).
+    Upto(u8, u8, i32),
 }
 
 impl Classes {
@@ -101,6 +107,7 @@ impl Classes {
             Classes::S30 => !s16,
             Classes::S16 => s16,
             Classes::S15 => s15,
+            Classes::S16Not15 => s16 && !s15,
         }
     }
 }
@@ -147,6 +154,22 @@ pub struct Check {
 /// learns at connect.
 pub const OPTION: u8 = u8::MAX;
 
+/// [`Check::arg`] of an order check: number parameter `lo` (an index)
+/// greater than number parameter `hi` (an index) returns `code` (a range
+/// asked backwards, cnc_rdpmacror's `s_no` after `e_no`).
+pub const ORDERED: u8 = u8::MAX - 1;
+
+/// A range's start (`s`, number parameter `s`) at most its end (`e`):
+/// else EW_NUMBER before any traffic.
+pub const fn ordered(s: u8, e: u8) -> Check {
+    Check {
+        arg: ORDERED,
+        lo: s as i32,
+        hi: e as i32,
+        code: crate::ew::EW_NUMBER,
+    }
+}
+
 /// A count (number parameter `arg`) below 1: EW_LENGTH before any traffic.
 pub const fn at_least_one(arg: u8) -> Check {
     Check {
@@ -174,6 +197,17 @@ pub enum Int {
     U16,
     I32,
     U32,
+    /// A wire kind only: the base (u16) and exponent (i16) words of a
+    /// value record (`value · base^-exp`: base 10, or 2 for a binary
+    /// record), after the record's value, an `I32` field of one element
+    /// right before it ([`digits`], [`places`]). Decoded, the pair is the
+    /// number's decimal digits (the `I32` field's integer) and decimal
+    /// places (this one's), as FANUC's library converts a binary record
+    /// (`crate::proto::value::Value::to_decimal`); sent (a write's payload,
+    /// the simulator's answer), the digits and places become a base-10
+    /// record, or a binary one where [`Func::binary`] says. Its C type
+    /// (`c`) is the places' member, an `I16`.
+    BaseExp,
 }
 
 impl Int {
@@ -181,7 +215,7 @@ impl Int {
         match self {
             Int::I8 | Int::U8 => 1,
             Int::I16 | Int::U16 => 2,
-            Int::I32 | Int::U32 => 4,
+            Int::I32 | Int::U32 | Int::BaseExp => 4,
         }
     }
     /// `v` converted to this integer, as a C cast converts it.
@@ -193,6 +227,7 @@ impl Int {
             Int::U16 => v as u16 as i64,
             Int::I32 => v as i32 as i64,
             Int::U32 => v as u32 as i64,
+            Int::BaseExp => v as i16 as i64,
         }
     }
     /// The Rust type of a C field of this width.
@@ -204,6 +239,7 @@ impl Int {
             Int::U16 => "u16",
             Int::I32 => "i32",
             Int::U32 => "u32",
+            Int::BaseExp => "i16",
         }
     }
 }
@@ -230,6 +266,11 @@ pub struct Field {
 /// [`Field::arg`] of a field not on the wire that FANUC's library writes
 /// as 0 ([`zero`]).
 pub const ZERO: u8 = u8::MAX;
+
+/// [`Field::arg`] of a field not on the wire that FANUC's library writes
+/// as the last number the records answered: number argument 0 plus the
+/// records decoded, less one ([`last`]; no record: argument 0 less one).
+pub const LAST: u8 = u8::MAX - 1;
 
 impl Field {
     /// The bytes of this field on the wire.
@@ -276,6 +317,12 @@ impl Records {
 /// [`Payload::count`] of a write without a count parameter: it sends one
 /// element, the one its [`Param::In`] points to.
 pub const ONE: u8 = u8::MAX;
+
+/// [`Payload::count`] of a write without an input array ([`Param::In`]):
+/// it sends one record whose fields' integers are its number parameters
+/// that no request word carries, in order (cnc_wrpmacro's `mcr_val` and
+/// `dec_val`); the fields' `to` and `elem` are not read.
+pub const NUMBERS: u8 = u8::MAX - 1;
 
 /// The records a write sends as its request's payload, read from its
 /// [`Param::In`] array: number parameter `count` of them ([`ONE`]: one),
@@ -357,6 +404,11 @@ pub struct Func {
     /// A member FANUC's library writes as 0 unless another member's value
     /// is in a range.
     pub zero_unless: Option<ZeroUnless>,
+    /// The classes to which a write sends its value records ([`Int::BaseExp`]
+    /// fields of its payload) binary, `m · 2^-e` as FANUC's library
+    /// converts the digits and places (`crate::proto::macros::to_base2`,
+    /// as for cnc_wrmacro); base 10 to the others.
+    pub binary: Option<Classes>,
 }
 
 /// Output 0's member `zero` reads 0 unless member `of` (its value cut to
@@ -411,6 +463,7 @@ impl Func {
         match *w {
             Word::Arg(i) => Some(usize::from(i)),
             Word::Asked => self.count(),
+            Word::Upto(_, e, _) => Some(usize::from(e)),
             Word::Const(_) => None,
             Word::Input(m, _) => self
                 .inputs()
@@ -462,6 +515,20 @@ pub const fn to_out(out: u8, wire: Int, to: &'static str, c: Int) -> Field {
     }
 }
 
+/// A value record's value word (its first 4 bytes), followed by
+/// [`places`]: decoded, the number's decimal digits, written to output
+/// `out`'s member `to` (a `long`, 32 bits).
+pub const fn digits(out: u8, to: &'static str) -> Field {
+    to_out(out, Int::I32, to, Int::I32)
+}
+
+/// A value record's base and exponent words ([`Int::BaseExp`]), right
+/// after its [`digits`]: decoded, the number's decimal places, written to
+/// output `out`'s member `to` (a `short`).
+pub const fn places(out: u8, to: &'static str) -> Field {
+    to_out(out, Int::BaseExp, to, Int::I16)
+}
+
 /// A reply field nobody reads.
 pub const fn skip(wire: Int) -> Field {
     Field {
@@ -484,6 +551,19 @@ pub const fn echo(arg: u8, to: &'static str, c: Int) -> Field {
         to: Some(to),
         c,
         arg: Some(arg),
+    }
+}
+
+/// The number of the last record answered (not on the wire, [`LAST`])
+/// written to output 0's member `to`.
+pub const fn last(to: &'static str, c: Int) -> Field {
+    Field {
+        wire: c,
+        n: 1,
+        out: 0,
+        to: Some(to),
+        c,
+        arg: Some(LAST),
     }
 }
 

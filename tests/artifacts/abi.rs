@@ -444,6 +444,11 @@ rust_layouts! {
     // --- tool_axis collectors (issue 24) ---
     ODBPSER { poserr1, poserr2 }
     ODBCMD { adrs, num, flag, cmd_val, dec_val }
+
+    // --- P-code macros and settings (issue 24) ---
+    ODBPM { datano, dummy, mcr_val, dec_val }
+    ODBPMINF2 { use_no1, use_no2, use_no20, v1_type, v2_type, v20_type }
+    IODBPR { datano_s, dummy, datano_e, data }
 }
 
 #[test]

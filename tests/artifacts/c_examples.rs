@@ -551,5 +551,6 @@ fn maintenance_example_reports_the_histories() {
 mod collectors;
 mod collectors_o8;
 mod collectors_panel_system;
+mod collectors_pcode;
 mod collectors_programs_macros;
 mod collectors_tool_axis;

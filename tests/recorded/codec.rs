@@ -447,7 +447,11 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                             number,
                                             axis: i16::from_le_bytes([raw[2], raw[3]]),
                                             ptype: info.ptype,
-                                            values: vec![info.elem.get(&raw[4..])],
+                                            values: info
+                                                .elem
+                                                .map(|e| e.get(&raw[4..]))
+                                                .into_iter()
+                                                .collect(),
                                         };
                                         stamped(&w, &cx, path)
                                     }
@@ -1494,6 +1498,7 @@ proptest! {
                     Some(Int::U16) => i64::from(*s as u16),
                     Some(Int::I32) => i64::from(*s as i32),
                     Some(Int::U32) => i64::from(*s),
+                    Some(Int::BaseExp) => i64::from(*s as u16 as i16),
                 })
                 .collect();
             if seed.is_empty() && !all.is_empty() {
@@ -1504,6 +1509,15 @@ proptest! {
             // FANUC's library's zeroed member reads 0 (cnc_rdpmacroinfo's use_no2).
             let mut expect = values.clone();
             fwlib32::proto::described::zero_unless(f, &mut expect);
+            // The last number answered (Field::arg LAST): argument 0 (none:
+            // 0) plus the records, less one.
+            let mut at = 0;
+            for x in f.reply {
+                if x.arg == Some(fwlib32::spec::LAST) {
+                    expect[at] = n as i64 - 1;
+                }
+                at += x.n as usize;
+            }
             prop_assert_eq!(decode(f, &[], &bytes).expect("decode"), expect, "{}", f.name);
         }
     }

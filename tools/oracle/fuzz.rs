@@ -71,7 +71,7 @@ fn int_value(rng: &mut Rng, t: Int) -> i64 {
         Int::I16 => (i16::MIN.into(), i16::MAX.into()),
         Int::U16 => (0, u16::MAX.into()),
         Int::I32 => (i32::MIN.into(), i32::MAX.into()),
-        Int::U32 => (0, u32::MAX.into()),
+        Int::U32 | Int::BaseExp => (0, u32::MAX.into()),
     };
     match rng.below(9) {
         0 | 1 => 0,

@@ -1028,6 +1028,7 @@ fn int_name(i: Int) -> &'static str {
         Int::U16 => "U16",
         Int::I32 => "I32",
         Int::U32 => "U32",
+        Int::BaseExp => "BaseExp",
     }
 }
 
@@ -1299,6 +1300,7 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             Some(spec::Word::Const(c)) => WordSrc::Const(*c),
             Some(spec::Word::Asked) => WordSrc::Arg(f.count().unwrap_or(usize::MAX)),
             Some(spec::Word::Input(m, _)) => WordSrc::Input(m),
+            Some(spec::Word::Upto(_, e, _)) => WordSrc::Arg(*e as usize),
             None => WordSrc::Const(0),
         })
         .collect();

@@ -12,17 +12,21 @@ use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
 /// What cnc_wrparam learns before writing: the element kind and whether
-/// the parameter is an axis parameter.
+/// the parameter is an axis parameter. `elem` is `None` for a 30i type
+/// word other than 0..4: FANUC's library then checks no length and writes
+/// the type word with every value slot zero [fuzz, wrparam `s0Tw`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct WriteInfo {
     pub ptype: u16,
-    pub elem: Elem,
+    pub elem: Option<Elem>,
     pub axis: bool,
 }
 
 /// First step of cnc_wrparam: read the parameter's attributes.
-/// 30i: 0x00a0 [number, 1], exactly 28 bytes; 16i: 0x0010 [number, 1].
-/// Anything else (wrong size, unknown type) is EW_NUMBER, as FANUC's library answers.
+/// 30i: 0x00a0 [number, 1], exactly 28 bytes (another size is EW_NUMBER,
+/// as FANUC's library answers); a type word 0..4 names the element kind,
+/// any other is kept as it is (the write carries it, with zero values);
+/// 16i: 0x0010 [number, 1], exactly one entry (else EW_NUMBER).
 #[derive(Debug, Clone, Copy)]
 pub struct ParamInfo {
     pub number: i32,
@@ -46,9 +50,7 @@ impl Call for ParamInfo {
                     return Err(bad());
                 }
                 let t = ParamType30::from_bytes(&s.payload)?;
-                let elem = Elem::of_param(t.ptype)
-                    .filter(|_| t.ptype <= 4)
-                    .ok_or_else(bad)?;
+                let elem = Elem::of_param(t.ptype).filter(|_| t.ptype <= 4);
                 Ok(WriteInfo {
                     ptype: t.ptype,
                     elem,
@@ -66,7 +68,7 @@ impl Call for ParamInfo {
                 let ptype = (e.ptype & 3) as u16;
                 Ok(WriteInfo {
                     ptype,
-                    elem: Elem::of_param(ptype).ok_or_else(bad)?,
+                    elem: Some(Elem::of_param(ptype).ok_or_else(bad)?),
                     axis: e.ptype & INFO_AXIS != 0,
                 })
             }

@@ -3,7 +3,7 @@
 
 use super::codes::{ALL, pos};
 use super::payload::{AxisNames, Count, Name, UnitWords};
-use super::read::{expect_subs, whole_records, zext};
+use super::read::{expect_subs, whole, whole_records, zext};
 use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx, payload, sub};
 use crate::proto::cmd::{
@@ -240,9 +240,12 @@ impl Call for AxisDataCall {
         let names = match &self.what {
             AxisData::Positions(_) => {
                 let names: AxisNames = payload(resp, 1)?;
-                let u1: Vec<UnitWords> = payload(resp, 2)?;
-                let u2: Vec<UnitWords> = payload(resp, 3)?;
-                let flags: Vec<u32> = payload(resp, 4)?;
+                // Whole 4-byte entries: FANUC's library reads the count's
+                // entries and ignores a longer tail [fuzz, rdposition
+                // `s2Twlong`]; too few for the count stays EW_PROTOCOL below.
+                let u1: Vec<UnitWords> = whole(&sub(resp, 2)?.payload, 4)?;
+                let u2: Vec<UnitWords> = whole(&sub(resp, 3)?.payload, 4)?;
+                let flags: Vec<u32> = whole(&sub(resp, 4)?.payload, 4)?;
                 Some((names, u1, u2, flags))
             }
             _ => None,

@@ -2,12 +2,11 @@
 
 use super::codes::pos;
 use super::payload::{AlarmBits, ProgNums, SeqNum};
-use super::read::{expect_subs, records};
+use super::read::{expect_subs, need, records};
 use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx, payload, sub};
 use crate::proto::cmd::{ACTF, ACTS, ALARM, POSITION, PRGNUM, SEQNUM};
 use crate::proto::packet::{ReqSub, RespSub};
-use crate::proto::value::Value;
 
 /// The 9-subpacket frame of cnc_rddynamic2 / cnc_rddynamic.
 #[derive(Debug, Clone, Copy)]
@@ -82,8 +81,11 @@ impl Call for Dynamic {
             d.prgnum = Some((p.data, p.mdata));
         });
         step!(2, d.seqnum = Some(payload::<SeqNum>(resp, 2)?.data));
-        step!(3, d.actf = Some(payload::<Value>(resp, 3)?.value));
-        step!(4, d.acts = Some(payload::<Value>(resp, 4)?.value));
+        // actf / acts: FANUC's library takes the record's value word only,
+        // so a payload holding that word is whole [fuzz, rddynamic `s5L`:
+        // a 4-byte 0x25 answer].
+        step!(3, d.actf = Some(value_word(resp, 3)?));
+        step!(4, d.acts = Some(value_word(resp, 4)?));
         d.axis = true;
         // One axis needs its record; all axes take what came. Each kind is
         // kept as it is read: an error in a later position subpacket leaves
@@ -97,4 +99,13 @@ impl Call for Dynamic {
         }
         Ok(d)
     }
+}
+
+/// The value word (the first 4 bytes) of subpacket `i`'s value record;
+/// a payload shorter than the word is EW_PROTOCOL (FANUC's library reads
+/// the rest from the next subpacket's header, listed).
+fn value_word(resp: &[RespSub], i: usize) -> Result<i32> {
+    let p = &sub(resp, i)?.payload;
+    need(p, 4, "value word")?;
+    Ok(i32::from_be_bytes([p[0], p[1], p[2], p[3]]))
 }

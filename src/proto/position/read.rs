@@ -8,8 +8,9 @@ use crate::proto::packet::RespSub;
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
-/// The whole value records of subpacket `i` (a ragged tail is no record),
-/// at least `need` of them.
+/// The whole value records of subpacket `i`, at least `need` of them: a
+/// ragged tail is ignored, as FANUC's library counts them (payload / 8)
+/// [fuzz, rddynamic `s8Tlong`: a 9-byte position answer].
 pub(super) fn records(resp: &[RespSub], i: usize, need: usize) -> Result<Vec<Value>> {
     let v = whole_records(resp, i)?;
     if v.len() < need {

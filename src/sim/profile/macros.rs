@@ -101,6 +101,11 @@ pub struct PCodeMacros {
     /// `v2_type` of cnc_rdpmacroinfo: the type of the extended variables
     /// #20000.. (a CNC setting, reported as it is).
     pub v2_type: i16,
+    /// `v1_type` of cnc_rdpmacroinfo2: the type of the variables #10000..
+    pub v1_type: i16,
+    /// `v20_type` of cnc_rdpmacroinfo2: the type of the extended variables
+    /// #200000..
+    pub v20_type: i16,
 }
 
 /// The P-code variables a path has when its profile names none: #10000-#10099.
@@ -115,6 +120,8 @@ impl Default for PCodeMacros {
                 values: BTreeMap::new(),
             },
             v2_type: 0,
+            v1_type: 0,
+            v20_type: 0,
         }
     }
 }
@@ -123,6 +130,10 @@ impl Default for PCodeMacros {
 struct PCodeToml {
     #[serde(default)]
     v2_type: i16,
+    #[serde(default)]
+    v1_type: i16,
+    #[serde(default)]
+    v20_type: i16,
     #[serde(flatten)]
     vars: MacrosToml,
 }
@@ -133,6 +144,8 @@ impl TryFrom<PCodeToml> for PCodeMacros {
         Ok(PCodeMacros {
             vars: Macros::from_toml(t.vars, PCODE_RANGES.to_vec())?,
             v2_type: t.v2_type,
+            v1_type: t.v1_type,
+            v20_type: t.v20_type,
         })
     }
 }

@@ -1,0 +1,94 @@
+//! tests/c/collectors_pcode.c: cnc_rdpmacroinfo2, cnc_rdpmacro,
+//! cnc_wrpmacro and cnc_rdpmacror through the .so, compared with the simulator's P-code
+//! variable store (on the 30i and the 16i class: binary records there).
+
+use super::run_c_test;
+use fwlib32::sim::Profile;
+use fwlib32::sim::profile::DEFAULT_PROFILE;
+
+/// The default profile with more P-code variables (#10000-#10199 and the
+/// extended #20000-#20049) and a type for each range.
+fn profile() -> Profile {
+    profile_of(DEFAULT_PROFILE)
+}
+
+fn profile_of(base: &str) -> Profile {
+    let p = "[path.pmacros]\nranges = [[10000, 10099]]\nprotected = []\nv2_type = 0\nv1_type = 0\nv20_type = 0\n";
+    assert!(
+        base.contains(p),
+        "the default profile's [path.pmacros] moved"
+    );
+    let text = base.replace(
+        p,
+        "[path.pmacros]\nranges = [[10000, 10199], [20000, 20049]]\nprotected = []\nv2_type = 2\nv1_type = 1\nv20_type = 3\n",
+    );
+    Profile::parse(&text).expect("profile")
+}
+
+#[test]
+fn pcode_reads_and_writes_follow_the_store() {
+    check(profile());
+}
+
+/// The same on a 16i, to which cnc_wrpmacro sends binary records.
+#[test]
+fn pcode_on_a_16i() {
+    let text = DEFAULT_PROFILE.replacen("class = \"30i\"", "class = \"16i\"", 1);
+    assert_ne!(text, DEFAULT_PROFILE, "the default profile's class moved");
+    let p = profile_of(&text);
+    assert_eq!(p.cnc.class, fwlib32::sim::profile::Class::Series16);
+    check(p);
+}
+
+fn check(p: Profile) {
+    let (kv, sim) = run_c_test("collectors_pcode", p.clone());
+    let pm = &p.paths[0].pmacros;
+    assert_eq!(
+        kv["pmacroinfo2"],
+        format!("200,50,0,{},{},{}", pm.v1_type, pm.v2_type, pm.v20_type)
+    );
+    assert_eq!(kv["pmacroinfo2"], "200,50,0,1,2,3");
+    for n in 10000..=10002 {
+        let (v, d) = pm.vars.values.get(&n).copied().unwrap_or((0, -1));
+        assert_eq!(kv[&format!("pmacro.{n}")], format!("{n},{v},{d}"));
+    }
+    // The profile's "12.5" and "-3"; #10002 vacant.
+    assert_eq!(kv["pmacro.10000"], "10000,125,1");
+    assert_eq!(kv["pmacro.10001"], "10001,-3,0");
+    assert_eq!(kv["pmacro.10002"], "10002,0,-1");
+    assert_eq!(kv["pmacro.absent"], fwlib32::ew::EW_NUMBER.to_string());
+    // Written from C, read back from C and in the simulator's store.
+    assert_eq!(kv["written.10002"], "10002,-475,2");
+    assert_eq!(kv["written.10003"], "10003,0,-1");
+    // The range after the writes: the profile's, then the written ones.
+    let rec = |n: i32| match n {
+        10002 => (-475, 2),
+        10003 => (0, -1),
+        n => pm.vars.values.get(&n).copied().unwrap_or((0, -1)),
+    };
+    let want: Vec<String> = std::iter::once("10000,10004".to_string())
+        .chain((10000..=10004).map(|n| format!("{},{}", rec(n).0, rec(n).1)))
+        .collect();
+    assert_eq!(kv["range"], want.join(";"));
+    assert_eq!(kv["range.short"], fwlib32::ew::EW_LENGTH.to_string());
+    assert_eq!(kv["range.backwards"], fwlib32::ew::EW_NUMBER.to_string());
+    assert_eq!(kv["wr.local"], fwlib32::ew::EW_NUMBER.to_string());
+    assert_eq!(kv["wr.dec"], fwlib32::ew::EW_DATA.to_string());
+    assert_eq!(kv["wr.absent"], fwlib32::ew::EW_NUMBER.to_string());
+    // The simulator keeps them: read on a connection of its own, after the
+    // C program ended; the refused writes changed nothing.
+    let read = |n: i32| {
+        let mut h = 0u16;
+        let ip = std::ffi::CString::new("127.0.0.1").unwrap();
+        let rc = unsafe { fwlib32::cnc_allclibhndl3(ip.as_ptr(), sim.port(), 10, &mut h) };
+        assert_eq!(rc, fwlib32::ew::EW_OK);
+        let mut pm = fwlib32::types::ODBPM::default();
+        let rc = unsafe { fwlib32::cnc_rdpmacro(h, std::os::raw::c_long::from(n), &mut pm) };
+        fwlib32::cnc_freelibhndl(h);
+        assert_eq!(rc, fwlib32::ew::EW_OK);
+        (pm.mcr_val, pm.dec_val)
+    };
+    assert_eq!(read(10002), (-475, 2));
+    assert_eq!(read(10003), (0, -1));
+    assert_eq!(read(10004), (0, -1));
+}
