@@ -4227,7 +4227,8 @@ short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct I
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
  P1..) for one axis or all axes (-1). An all-axes answer must carry a
  value per axis (FANUC's library writes uninitialised memory otherwise;
- we return the code EW_PROTOCOL).
+ we return the code EW_PROTOCOL); a one-axis answer without a whole
+ value record gives the value 0, as from FANUC's library.
 
  # Safety
  `zofs` must point to `length` writable bytes.

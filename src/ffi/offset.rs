@@ -157,7 +157,8 @@ pub unsafe extern "C" fn cnc_rdtofsr(
 /// Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
 /// P1..) for one axis or all axes (-1). An all-axes answer must carry a
 /// value per axis (FANUC's library writes uninitialised memory otherwise;
-/// we return the code EW_PROTOCOL).
+/// we return the code EW_PROTOCOL); a one-axis answer without a whole
+/// value record gives the value 0, as from FANUC's library.
 ///
 /// # Safety
 /// `zofs` must point to `length` writable bytes.
@@ -191,13 +192,20 @@ pub unsafe extern "C" fn cnc_rdzofs(
             })?
             .0;
         let n = if axis < 0 { h.ctx().axes() } else { 1 };
-        if v.len() < n {
+        // One axis: the header and the zero first value come first, so an
+        // answer without a whole record (empty or cut) leaves data[0] = 0,
+        // EW_OK [fuzz, rdzofs `s0Twcut`, `short1`, `empty`: FANUC's library
+        // wrote 0 for each, not the bytes it lacked]. All axes: FANUC's
+        // library writes uninitialised memory past the records, ours
+        // EW_PROTOCOL.
+        if axis < 0 && v.len() < n {
             return Err(short());
         }
         unsafe {
             put_member!(out, IODBZOFS, datano, number);
             put_member!(out, IODBZOFS, r#type, axis);
-            for (i, r) in v[..n].iter().enumerate() {
+            put_member!(out, IODBZOFS, data[0], 0);
+            for (i, r) in v.iter().take(n).enumerate() {
                 put_member!(out, IODBZOFS, data[i], r.value);
             }
         }

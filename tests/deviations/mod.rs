@@ -477,18 +477,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
-        function: "cnc_rdzofs",
-        cases: &[
-            "rdzofs_v2_shape_empty",
-            "rdzofs_v2_shape_half",
-            "rdzofs_v2_shape_short1",
-            "rdzofs_v3_shape_empty",
-            "rdzofs_v3_shape_half",
-            "rdzofs_v3_shape_short1",
-        ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_wrzofs",
         cases: &["wrzofs_v3p2_path2", "wrzofs_v2p2_path2"],
         reason: "its read-back, cnc_rdzofs for all axes answered by an error (a path without work offsets), makes FANUC's library fill the caller's buffer after datano, type and the first value with stale bytes of earlier calls; ours writes those 8 bytes only",
@@ -849,13 +837,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: FUZZ_SHORT,
     },
     Deviation {
-        function: "cnc_rdzofs",
-        // A longer answer cut inside its last record reads the whole
-        // records (fuzz_rdzofs_*cut*: as FANUC's library).
-        cases: &["fuzz_rdzofs_*short1*", "fuzz_rdzofs_*empty*"],
-        reason: FUZZ_SHORT,
-    },
-    Deviation {
         function: "cnc_modal",
         cases: &["fuzz_modal_*_a1_m1_*more*", "fuzz_modal_*_a1_m1_*long*"],
         reason: "FANUC's library writes every G code of a longer all-groups answer, past g_data's 35 bytes; ours writes at most 35",
@@ -871,8 +852,11 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdtool",
-        cases: &["fuzz_rdtool_v2_a2_2_request_s0Twwwww_7bd156a85a419758"],
-        reason: "FANUC's library takes a negative record count as it came: it adds it to the records read (*num becomes garbage, 11164 for 2 asked) and asks again from top + count; ours reads it as no records and asks again from the same top (two such answers end the call)",
+        cases: &[
+            "fuzz_rdtool_v2_a2_2_request_s0Twwwww_7bd156a85a419758",
+            "fuzz_rdtool_v2_base_answer_s0Twwwww_5d6ceffaaf40d131",
+        ],
+        reason: "FANUC's library takes the record count word as it came: a negative one is added to the records read (*num becomes garbage, 11164 for 2 asked) and it asks again from top + count; one above the records asked writes that many records, past the caller's *num (4 for 1 asked, from an answer holding 1, the rest from past it); ours reads a negative count as no records and asks again from the same top (two such answers end the call), and takes at most the records asked that the answer holds",
     },
     Deviation {
         function: "cnc_rdspeed",
@@ -934,6 +918,10 @@ pub const ORACLE: &[Deviation] = &[
             // An empty 0x56 (data) answer: the axis records are read
             // from the last 0xa4's header.
             "fuzz_rdaxisdata_*Ln0*",
+            // Class 5: a speed answer of the value word (4 bytes, the
+            // layout cnc_actf reads) or a few more: the decimals are
+            // read from past it (the next subpacket's length word).
+            "fuzz_rdaxisdata_v3_c_5_*_s4L*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
     },
