@@ -139,7 +139,7 @@ fn padded(short: Short, payload: &[u8], need: usize) -> Result<Vec<u8>> {
 /// call's `args` back.
 pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     let need = f.reply_len();
-    let mut padded;
+    let mut zeros;
     let mut p = payload;
     if p.len() < need {
         match f.short {
@@ -151,9 +151,9 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
                 .into());
             }
             Short::Zeros => {
-                padded = p.to_vec();
-                padded.resize(need, 0);
-                p = &padded;
+                zeros = p.to_vec();
+                zeros.resize(need, 0);
+                p = &zeros;
             }
         }
     }
@@ -180,7 +180,25 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             // than it asked for.
             Overflow::Refuse => usize::MAX,
         };
-        for _ in 0..(r.remaining() / size).min(most) {
+        let Some(k) = f.counted else {
+            for _ in 0..(r.remaining() / size).min(most) {
+                read_fields(&mut r, rec.fields, args, &mut out)?;
+            }
+            return Ok(out);
+        };
+        // As many as the CNC's count says, read past the payload's end as
+        // a short answer is.
+        let at: usize = f.reply[..usize::from(k)]
+            .iter()
+            .map(|x| usize::from(x.n))
+            .sum();
+        let n = out
+            .get(at)
+            .map_or(0, |v| usize::try_from(*v).unwrap_or(0))
+            .min(most);
+        let rest = padded(f.short, &p[p.len() - r.remaining()..], n * size)?;
+        let mut r = Reader::new(&rest);
+        for _ in 0..n {
             read_fields(&mut r, rec.fields, args, &mut out)?;
         }
     }

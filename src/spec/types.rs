@@ -357,6 +357,13 @@ pub struct Func {
     /// A member FANUC's library writes as 0 unless another member's value
     /// is in a range.
     pub zero_unless: Option<ZeroUnless>,
+    /// `Some(k)`: the number of records is reply field k's value (the
+    /// count the CNC sends before them), not what the payload's length
+    /// holds: that many are read (at most the caller's count, with
+    /// [`Overflow::Cut`]; none below 1), records past the payload's end
+    /// read as [`Func::short`] says (zeros: FANUC's library reads them from
+    /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
+    pub counted: Option<u8>,
 }
 
 /// Output 0's member `zero` reads 0 unless member `of` (its value cut to

@@ -21,6 +21,7 @@ pub const COMMAND: Func = Func {
     zero_without_first: false,
     learnt: None,
     zero_unless: None,
+    counted: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -50,4 +51,5 @@ pub const SERVO_LONGS: Func = Func {
     zero_without_first: false,
     learnt: None,
     zero_unless: None,
+    counted: None,
 };
