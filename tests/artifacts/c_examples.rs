@@ -551,4 +551,5 @@ fn maintenance_example_reports_the_histories() {
 mod collectors;
 mod collectors_panel_system;
 mod collectors_programs_macros;
+mod collectors_system_ids;
 mod collectors_tool_axis;
