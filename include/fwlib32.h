@@ -3972,7 +3972,7 @@ short cnc_rdsyshard(unsigned short FlibHndl, short s_no, short *num, struct ODBS
 
  # Safety
  `num` must be NULL or point to a writable short.
- `total` must be NULL or point to `*num` writable short.
+ `total` must be NULL or point to a writable short.
  `syssoft` must be NULL or point to `*num` writable ODBSYSS3.
  */
 short cnc_rdsyssoft3(unsigned short FlibHndl,
