@@ -547,8 +547,15 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 Some(c) => std::iter::once(format!(
                     "/// `{c}` must be NULL or point to a writable short."
                 ))
-                .chain(outs.iter().map(|(n, t)| {
-                    format!("/// `{n}` must be NULL or point to `*{c}` writable {}.", doc_type(t))
+                .chain(outs.iter().enumerate().map(|(i, (n, t))| {
+                    // The records' output is the caller's array of `*count`;
+                    // another output (cnc_rdsyssoft3's `total`) one value.
+                    match &f.records {
+                        Some(r) if usize::from(r.out) != i => {
+                            format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t))
+                        }
+                        _ => format!("/// `{n}` must be NULL or point to `*{c}` writable {}.", doc_type(t)),
+                    }
                 }))
                 .collect(),
             };

@@ -652,6 +652,37 @@ typedef struct PRGPNT {
 } PRGPNT;
 
 /*
+ cnc_rdservoid / cnc_rdfromservoid: the specifications and serial
+ numbers of an axis's servo motor, pulse coder, servo amplifier and
+ power supply (characters as the CNC sent them).
+ */
+typedef struct ODBCSVID {
+    char mt_spc[20];
+    char mt_srn[10];
+    char plc_spc[22];
+    char plc_srn[9];
+    char svm_spc[22];
+    char svm_srn[12];
+    char psm_spc[22];
+    char psm_srn[12];
+} ODBCSVID;
+
+/*
+ cnc_rdspindleid / cnc_rdfromspindleid: the specifications and serial
+ numbers of a spindle's motor, sub motor, amplifier and power supply.
+ */
+typedef struct ODBCSPID {
+    char mt_spc[20];
+    char mt_srn[10];
+    char sbmt_spc[20];
+    char sbmt_srn[10];
+    char spm_spc[22];
+    char spm_srn[12];
+    char psm_spc[22];
+    char psm_srn[12];
+} ODBCSPID;
+
+/*
  cnc_rdgrpid2: the tool life group of a tool number.
  */
 typedef struct ODBTLIFE5 {
@@ -1559,6 +1590,32 @@ typedef struct ODBSPLOAD {
 typedef struct ODBSVLOAD {
     struct LOADELM svload;
 } ODBSVLOAD;
+
+/*
+ cnc_rdsyshard: one board (hardware) of the CNC: its two ID words, its
+ group and hardware IDs, how many of it are mounted, its slot, and the
+ display format of each ID.
+ */
+typedef struct ODBSYSH {
+    ULONG id1;
+    ULONG id2;
+    short group_id;
+    short hard_id;
+    short hard_num;
+    short slot_no;
+    short id1_format;
+    short id2_format;
+} ODBSYSH;
+
+/*
+ cnc_rdsyssoft3: one software of the CNC: its ID, series and edition
+ (four characters each, then a fifth byte as the CNC sent it).
+ */
+typedef struct ODBSYSS3 {
+    short soft_id;
+    char soft_series[5];
+    char soft_edition[5];
+} ODBSYSS3;
 
 /*
  cnc_rdtimer: a timer as minutes and milliseconds.
@@ -3110,6 +3167,24 @@ short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blk
 short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
 
 /*
+ Reads the servo ID information of axis `axis` the CNC saved (its last ID
+ check), as cnc_rdservoid.
+
+ # Safety
+ `servoid` must be NULL or point to a writable ODBCSVID.
+ */
+short cnc_rdfromservoid(unsigned short FlibHndl, short axis, struct ODBCSVID *servoid);
+
+/*
+ Reads the spindle ID information of spindle `sp_no` the CNC saved (its
+ last ID check), as cnc_rdspindleid.
+
+ # Safety
+ `spindleid` must be NULL or point to a writable ODBCSPID.
+ */
+short cnc_rdfromspindleid(unsigned short FlibHndl, short sp_no, struct ODBCSPID *spindleid);
+
+/*
  Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
  untouched).
 
@@ -3952,6 +4027,16 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 
 /*
+ Reads the specification and serial number of the servo motor, pulse
+ coder, servo amplifier and power supply of axis `axis` (`slct` sent as
+ the second word); the characters as the CNC sent them.
+
+ # Safety
+ `servoid` must be NULL or point to a writable ODBCSVID.
+ */
+short cnc_rdservoid(unsigned short FlibHndl, short axis, short slct, struct ODBCSVID *servoid);
+
+/*
  Reads the smallest and largest setting data numbers and how many setting
  data there are.
 
@@ -4017,6 +4102,16 @@ short cnc_rdspeed(unsigned short FlibHndl, short type, struct ODBSPEED *speed);
 short cnc_rdspgear(unsigned short FlibHndl, short sp_no, struct ODBSPN *serialspindle);
 
 /*
+ Reads the specification and serial number of the motor, sub motor,
+ amplifier and power supply of spindle `sp_no` (`slct` sent as the second
+ word); the characters as the CNC sent them.
+
+ # Safety
+ `spindleid` must be NULL or point to a writable ODBCSPID.
+ */
+short cnc_rdspindleid(unsigned short FlibHndl, short sp_no, short slct, struct ODBCSPID *spindleid);
+
+/*
  Reads the load of serial spindle `sp_no` (1..8, or -1 all): `datano` =
  sp_no, `data[i]` = low 16 bits of each value (`type` not written).
 
@@ -4067,6 +4162,36 @@ short cnc_rdsrvspeed(unsigned short FlibHndl,
  writable ODBSVLOAD.
  */
 short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *loadmeter);
+
+/*
+ Reads the CNC's boards (hardware IDs) from the `s_no`-th on: `*num` in
+ is how many (sent as it is), out how many were written (the count the
+ CNC answered). Never more boards than asked are written (FANUC's library
+ writes as many as the CNC's count says).
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `syshard` must be NULL or point to `*num` writable ODBSYSH.
+ */
+short cnc_rdsyshard(unsigned short FlibHndl, short s_no, short *num, struct ODBSYSH *syshard);
+
+/*
+ Reads the CNC's software series and editions from the `s_no`-th on:
+ `*num` in is how many (sent as it is), out how many were written (the
+ count the CNC answered); `*total` is how many the CNC has. Never more
+ entries than asked are written (FANUC's library writes as many as the
+ CNC's count says).
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `total` must be NULL or point to a writable short.
+ `syssoft` must be NULL or point to `*num` writable ODBSYSS3.
+ */
+short cnc_rdsyssoft3(unsigned short FlibHndl,
+                     short s_no,
+                     short *num,
+                     short *total,
+                     struct ODBSYSS3 *syssoft);
 
 /*
  Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4

@@ -156,7 +156,7 @@ fn padded(short: Short, payload: &[u8], need: usize) -> Result<Vec<u8>> {
 /// call's `args` back.
 pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     let need = f.reply_len();
-    let mut padded;
+    let mut zeros;
     let mut p = payload;
     if p.len() < need {
         match f.short {
@@ -168,9 +168,9 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
                 .into());
             }
             Short::Zeros => {
-                padded = p.to_vec();
-                padded.resize(need, 0);
-                p = &padded;
+                zeros = p.to_vec();
+                zeros.resize(need, 0);
+                p = &zeros;
             }
         }
     }
@@ -197,7 +197,24 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             // than it asked for.
             Overflow::Refuse => usize::MAX,
         };
-        let n = (r.remaining() / size).min(most);
+        let rest;
+        let (n, mut r) = match f.counted {
+            None => ((r.remaining() / size).min(most), r),
+            // As many as the CNC's count says, read past the payload's end
+            // as a short answer is.
+            Some(k) => {
+                let at: usize = f.reply[..usize::from(k)]
+                    .iter()
+                    .map(|x| usize::from(x.n))
+                    .sum();
+                let n = out
+                    .get(at)
+                    .map_or(0, |v| usize::try_from(*v).unwrap_or(0))
+                    .min(most);
+                rest = padded(f.short, &p[p.len() - r.remaining()..], n * size)?;
+                (n, Reader::new(&rest))
+            }
+        };
         for _ in 0..n {
             read_fields(&mut r, rec.fields, args, &mut out)?;
         }

@@ -12,6 +12,7 @@ pub mod maintenance;
 pub mod offset;
 pub mod param;
 pub mod program;
+pub mod system;
 pub mod window;
 
 use serde::Deserialize;
@@ -73,6 +74,9 @@ pub struct Profile {
     /// The software operator panel (src/sim/operate.rs).
     #[serde(default)]
     pub operator_panel: OperatorPanel,
+    /// The CNC's boards and software (cnc_rdsyshard, cnc_rdsyssoft3).
+    #[serde(default)]
+    pub system: system::System,
     // --- tool ---
 
     // --- upload ---

@@ -5,9 +5,12 @@
 use super::Machine;
 use super::profile::{Class, MachineKind};
 use super::route::{Asked, Route, enc};
-use super::service::Reply;
+use super::service::{CncError, Reply};
+use crate::ew::EW_LENGTH;
 use crate::proto::cmd;
-use crate::proto::cmd::RDETHERINFO;
+use crate::proto::cmd::{
+    RDETHERINFO, RDFROMSERVOID, RDFROMSPINDLEID, RDSERVOID, RDSPINDLEID, RDSYSHARD, RDSYSSOFT3,
+};
 use crate::proto::open::OpenBody;
 use crate::proto::position::SPINDLE_SHOWN15;
 use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
@@ -43,7 +46,98 @@ pub(super) const ROUTES: &[Route] = &[
         enc(Ok(CncId(m.profile.cnc.cnc_id.clone())))
     }),
     Route::table(RDETHERINFO, ether_info),
+    Route::table(RDSYSHARD, boards),
+    Route::table(RDSYSSOFT3, software),
+    Route::table(RDSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
+    Route::table(RDFROMSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
+    Route::table(RDSPINDLEID, |m, q| drive_id(&m.profile.system.spindle, q)),
+    Route::table(RDFROMSPINDLEID, |m, q| {
+        drive_id(&m.profile.system.spindle, q)
+    }),
 ];
+
+/// cnc_rdservoid / cnc_rdspindleid and their saved copies (the simulated
+/// CNC's last ID check found the drives it has): drive `q.arg(0)` (1 the
+/// first) of the profile's list, each string in its field, NUL-padded and
+/// cut to leave a NUL (the field lengths are the reply layout's); no such
+/// drive is EW_NUMBER.
+fn drive_id(drives: &[super::profile::system::DriveId], q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let d = usize::try_from(q.arg(0) - 1)
+        .ok()
+        .and_then(|k| drives.get(k))
+        .ok_or(CncError::NUMBER)?;
+    let parts = [&d.motor, &d.sub, &d.amplifier, &d.power_supply];
+    let texts = parts.iter().flat_map(|p| p.iter());
+    let mut v = Vec::new();
+    for (f, t) in q.f.reply.iter().zip(texts) {
+        let n = usize::from(f.n);
+        let b = t.as_bytes();
+        v.extend((0..n).map(|i| match b.get(i) {
+            Some(c) if i + 1 < n => i64::from(*c as i8),
+            _ => 0,
+        }));
+    }
+    Ok(v)
+}
+
+/// The entries `s_no` (1 the first) on a list of `len` that a request for
+/// `num` of them answers, at most `max`: a `num` below 1 is EW_LENGTH, an
+/// `s_no` below 1 EW_NUMBER; past the list's end, none.
+fn listed(len: usize, s_no: i32, num: i32, max: u16) -> Reply<std::ops::Range<usize>> {
+    if num < 1 {
+        return Err(CncError::new(EW_LENGTH));
+    }
+    let first = usize::try_from(s_no - 1).map_err(|_| CncError::NUMBER)?;
+    let n = (num as usize).min(usize::from(max));
+    Ok(first.min(len)..(first + n).min(len))
+}
+
+/// cnc_rdsyshard: the profile's boards (`[[system.board]]`) from `s_no` on,
+/// after a 32-bit count.
+fn boards(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let all = &m.profile.system.boards;
+    let max = q.f.records.map_or(0, |r| r.max);
+    let got = &all[listed(all.len(), q.arg(0), q.arg(1), max)?];
+    let mut v = vec![0, got.len() as i64];
+    for b in got {
+        v.extend([i64::from(b.id1), i64::from(b.id2)]);
+        v.extend(
+            [
+                b.group_id,
+                b.hard_id,
+                b.hard_num,
+                b.slot_no,
+                b.id1_format,
+                b.id2_format,
+            ]
+            .map(i64::from),
+        );
+    }
+    Ok(v)
+}
+
+/// cnc_rdsyssoft3: the profile's software (`[system] software`) from
+/// `s_no` on, after their count and the total; series and edition are 4
+/// characters each (space-padded), then a 0.
+fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let all = &m.profile.system.software;
+    let max = q.f.records.map_or(0, |r| r.max);
+    let got = &all[listed(all.len(), q.arg(0), q.arg(1), max)?];
+    let mut v = vec![got.len() as i64, all.len() as i64];
+    let chars = |s: &str| -> [i64; 5] {
+        let b = s.as_bytes();
+        std::array::from_fn(|i| match i {
+            4 => 0,
+            _ => i64::from(b.get(i).copied().unwrap_or(b' ') as i8),
+        })
+    };
+    for s in got {
+        v.push(i64::from(s.id));
+        v.extend(chars(&s.series));
+        v.extend(chars(&s.edition));
+    }
+    Ok(v)
+}
 
 fn ether_info(m: &mut Machine, _: &Asked<'_>) -> Reply<Vec<i64>> {
     let c = &m.profile.cnc;

@@ -310,6 +310,12 @@ commands! {
     WRHISSGNL3 = CLASS_CNC 0x01b3 [cnc_wrhissgnl3];
     RDOMHISNO = CLASS_CNC 0x01b4 [cnc_rdomhisno];
     RDOMHISTRY2 = CLASS_CNC 0x01b5 [cnc_rdomhistry2];
+    /// cnc_rdsyssoft3: `(1,0x01b8)[s_no, num]`; the answer is `{num, total}`
+    /// then `num` 12-byte entries {id, series\[5\], edition\[5\]}.
+    RDSYSSOFT3 = CLASS_CNC 0x01b8 [cnc_rdsyssoft3];
+    /// cnc_rdsyshard: `(1,0x01b9)[s_no, num]`; the answer is a 32-bit count,
+    /// then that many 20-byte boards.
+    RDSYSHARD = CLASS_CNC 0x01b9 [cnc_rdsyshard];
     PDF_RDACTPT = CLASS_CNC 0x01ba [cnc_pdf_rdactpt];
     PDF_WRACTPT = CLASS_CNC 0x01bb [cnc_pdf_wractpt];
     /// cnc_rdtlusegrp on the 30i class: the optional group number of group
@@ -323,6 +329,14 @@ commands! {
     RDALMHISTRY5 = CLASS_CNC 0x01d1 [cnc_rdalmhistry5];
     /// cnc_rdmdiprgstat: no arguments; the answer is a u16 of status bits.
     RDMDIPRGSTAT = CLASS_CNC 0x02a0 [cnc_rdmdiprgstat];
+    /// cnc_rdservoid: `(1,0x028e)[axis, slct]`, the 129-byte ODBCSVID answered.
+    RDSERVOID = CLASS_CNC 0x028e [cnc_rdservoid];
+    /// cnc_rdspindleid: `(1,0x028f)[sp_no, slct]`, the 128-byte ODBCSPID answered.
+    RDSPINDLEID = CLASS_CNC 0x028f [cnc_rdspindleid];
+    /// cnc_rdfromservoid: `(1,0x0290)[axis]`, as cnc_rdservoid's answer.
+    RDFROMSERVOID = CLASS_CNC 0x0290 [cnc_rdfromservoid];
+    /// cnc_rdfromspindleid: `(1,0x0291)[sp_no]`, as cnc_rdspindleid's answer.
+    RDFROMSPINDLEID = CLASS_CNC 0x0291 [cnc_rdfromspindleid];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];

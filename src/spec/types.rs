@@ -409,6 +409,13 @@ pub struct Func {
     /// converts the digits and places (`crate::proto::macros::to_base2`,
     /// as for cnc_wrmacro); base 10 to the others.
     pub binary: Option<Classes>,
+    /// `Some(k)`: the number of records is reply field k's value (the
+    /// count the CNC sends before them), not what the payload's length
+    /// holds: that many are read (at most the caller's count, with
+    /// [`Overflow::Cut`]; none below 1), records past the payload's end
+    /// read as [`Func::short`] says (zeros: FANUC's library reads them from
+    /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
+    pub counted: Option<u8>,
 }
 
 /// Output 0's member `zero` reads 0 unless member `of` (its value cut to

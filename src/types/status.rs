@@ -1,6 +1,6 @@
 //! Connection group and status structures.
 
-use super::{LONG, MAX_AXIS, MAX_CNCPATH};
+use super::{LONG, MAX_AXIS, MAX_CNCPATH, ULONG};
 use std::os::raw::{c_char, c_short};
 
 /// cnc_sysinfo: CNC system information.
@@ -204,4 +204,61 @@ pub struct IODBRDNA {
     pub sgnl6_name: [c_char; 9],
     pub sgnl7_name: [c_char; 9],
     pub sgnl8_name: [c_char; 9],
+}
+
+/// cnc_rdsyshard: one board (hardware) of the CNC: its two ID words, its
+/// group and hardware IDs, how many of it are mounted, its slot, and the
+/// display format of each ID.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSYSH {
+    pub id1: ULONG,
+    pub id2: ULONG,
+    pub group_id: c_short,
+    pub hard_id: c_short,
+    pub hard_num: c_short,
+    pub slot_no: c_short,
+    pub id1_format: c_short,
+    pub id2_format: c_short,
+}
+
+/// cnc_rdsyssoft3: one software of the CNC: its ID, series and edition
+/// (four characters each, then a fifth byte as the CNC sent it).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSYSS3 {
+    pub soft_id: c_short,
+    pub soft_series: [c_char; 5],
+    pub soft_edition: [c_char; 5],
+}
+
+/// cnc_rdservoid / cnc_rdfromservoid: the specifications and serial
+/// numbers of an axis's servo motor, pulse coder, servo amplifier and
+/// power supply (characters as the CNC sent them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBCSVID {
+    pub mt_spc: [c_char; 20],
+    pub mt_srn: [c_char; 10],
+    pub plc_spc: [c_char; 22],
+    pub plc_srn: [c_char; 9],
+    pub svm_spc: [c_char; 22],
+    pub svm_srn: [c_char; 12],
+    pub psm_spc: [c_char; 22],
+    pub psm_srn: [c_char; 12],
+}
+
+/// cnc_rdspindleid / cnc_rdfromspindleid: the specifications and serial
+/// numbers of a spindle's motor, sub motor, amplifier and power supply.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBCSPID {
+    pub mt_spc: [c_char; 20],
+    pub mt_srn: [c_char; 10],
+    pub sbmt_spc: [c_char; 20],
+    pub sbmt_srn: [c_char; 10],
+    pub spm_spc: [c_char; 22],
+    pub spm_srn: [c_char; 12],
+    pub psm_spc: [c_char; 22],
+    pub psm_srn: [c_char; 12],
 }

@@ -279,6 +279,10 @@ macro_rules! rust_layouts {
 // Every structure of src/types/ must be listed here (checked below).
 rust_layouts! {
     ODBSYS { addinfo, max_axis, cnc_type, mt_type, series, version, axes }
+    ODBSYSH { id1, id2, group_id, hard_id, hard_num, slot_no, id1_format, id2_format }
+    ODBSYSS3 { soft_id, soft_series, soft_edition }
+    ODBCSVID { mt_spc, mt_srn, plc_spc, plc_srn, svm_spc, svm_srn, psm_spc, psm_srn }
+    ODBCSPID { mt_spc, mt_srn, sbmt_spc, sbmt_srn, spm_spc, spm_srn, psm_spc, psm_srn }
     ODBST { hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit }
     ODBST2 {
         hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit,

@@ -1088,6 +1088,46 @@ pub const ORACLE: &[Deviation] = &[
         reason: FUZZ_RECORDS_PAST_COUNT,
     },
     Deviation {
+        function: "cnc_rdsyshard",
+        // oracle fuzz: the answer's count above the `*num` asked for.
+        cases: &[
+            "fuzz_rdsyshard_v3_a2_1_answer_s0Ln70_30263259685eab9b",
+            "fuzz_rdsyshard_v3_a2_1_answer_s0Ln1cut_fd07e687988bc57e",
+            "fuzz_rdsyshard_v2_a1_7_answer_s0Ln0c_d4ae8131ca5897fc",
+            "fuzz_rdsyshard_v3_a1_6_answer_s0Ln70short1_ff46133ec645ef34",
+            "fuzz_rdsyshard_v2_a2_1_answer_s0Ln37_d59fe66db85e81f5",
+            "fuzz_rdsyshard_v2_a1_7_answer_s0Ln48cut_fb9f3c4f233b2309",
+            "fuzz_rdsyshard_v3_a1_100_answer_s0Ln70_d83080ae95e8762b",
+            "fuzz_rdsyshard_v3_a1_6_answer_s0Ln5_753f2aef1d21ec1e",
+            "fuzz_rdsyshard_v3_a1_6_answer_s0Ln65_6a1e8a53b29b7675",
+            "fuzz_rdsyshard_v3_base_answer_s0Ln70short1_dcdcd4aab1a18b1d",
+            "fuzz_rdsyshard_v2_a1_7_answer_s0Ln70cut_c31b84e4534cbd6e",
+            "fuzz_rdsyshard_s15_base_answer_s0Ln70_2ec075fba306f98c",
+            "fuzz_rdsyshard_v2_base_answer_s0Ln70long_b66518fbe3ea1980",
+            "fuzz_rdsyshard_v3_base_answer_s0Ln70_bdc61e9911a2d551",
+            "fuzz_rdsyshard_v3p2_path2_answer_s0Ln70long_435f0c0db49fae4e",
+        ],
+        reason: FUZZ_COUNT_PAST_ASKED,
+    },
+    Deviation {
+        function: "cnc_rdsyssoft3",
+        // oracle fuzz: the answer's count above the `*num` asked for.
+        cases: &[
+            "fuzz_rdsyssoft3_s15_base_answer_s0Ln11_caf9a9c7e71734ba",
+            "fuzz_rdsyssoft3_v3_a1_8_answer_s0Ln1cut_a91d631a1a8c1ec8",
+            "fuzz_rdsyssoft3_v2_a2_1_answer_s0Ln116_fceb8a858a6006fd",
+            "fuzz_rdsyssoft3_s15_base_answer_s0Ln113_943e90b986f13fe1",
+            "fuzz_rdsyssoft3_s15_base_answer_s0Ln116_29f753fc97b3feaf",
+            "fuzz_rdsyssoft3_v2_a1_100_answer_s0Ln116_9b34eff74b1c8283",
+            "fuzz_rdsyssoft3_v3_a2_1_answer_s0Ln116_d62e058c305f313f",
+            "fuzz_rdsyssoft3_v3_a2_1_answer_s0Ln116_a5299134705185b9",
+            "fuzz_rdsyssoft3_v3_a2_2_answer_s0Ln105_a42ef4391d0a0237",
+            "fuzz_rdsyssoft3_v3p2_path3_answer_s0Ln116_da9f345c914ee42f",
+            "fuzz_rdsyssoft3_v2_a1_9_answer_s0Ln53cut_bca100fa30687f8a",
+        ],
+        reason: FUZZ_COUNT_PAST_ASKED,
+    },
+    Deviation {
         function: "cnc_toolnum",
         cases: &["fuzz_toolnum_*_a2_*empty*"],
         reason: REQUEST_BYTES_PAST_ANSWER,
@@ -1114,6 +1154,8 @@ pub const ORACLE: &[Deviation] = &[
 const FUZZ_SHORT: &str = "FANUC's library reads the bytes a payload cut inside its fields lacks from its receive buffer (the request's and earlier frames' bytes, or the next subpacket's header) and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing";
 
 /// The oracle fuzz's longer answers to record reads with a caller's count.
+const FUZZ_COUNT_PAST_ASKED: &str = "FANUC's library writes as many records as the count the CNC answered says (zeros past the answer's end), past the `*num` the caller asked for, and sets `*num` to that count; ours writes at most `*num` records and sets `*num` to the number written";
+
 const FUZZ_RECORDS_PAST_COUNT: &str = "FANUC's library writes every record a longer answer holds, past the count the caller asked for (and says so in the count); ours writes at most the records asked for";
 
 /// Fields read past the end of an empty answer, where FANUC's receive

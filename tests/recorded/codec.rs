@@ -1440,6 +1440,44 @@ fn his_rec() -> impl Strategy<Value = fwlib32::proto::alarm::AlmHisRecord> {
         })
 }
 
+/// Records counted by the CNC's count (Func::counted, cnc_rdsyshard): that
+/// many, at most the caller's `*num`, past the payload's end zeros (as
+/// FANUC's library reads them); a negative count none.
+#[test]
+fn counted_records_follow_the_cncs_count() {
+    use fwlib32::proto::described::decode;
+    let f = (fwlib32::spec::FUNCS.iter())
+        .find(|f| f.name == "cnc_rdsyshard")
+        .unwrap();
+    let board: Vec<u8> = (1..=20).collect();
+    let answer = |count: i16, boards: usize| {
+        let mut p = vec![0x12, 0x34];
+        p.extend(count.to_be_bytes());
+        (0..boards).for_each(|_| p.extend(&board));
+        p
+    };
+    let rec: Vec<i64> = vec![
+        0x01020304, 0x05060708, 0x090a, 0x0b0c, 0x0d0e, 0x0f10, 0x1112, 0x1314,
+    ];
+    let mut two = vec![0x1234, 2];
+    two.extend(&rec);
+    two.extend([0; 8]);
+    assert_eq!(
+        decode(f, &[1, 4], &answer(2, 1)).unwrap(),
+        two,
+        "the second from zeros"
+    );
+    let mut one = vec![0x1234, 3];
+    one.extend(&rec);
+    assert_eq!(
+        decode(f, &[1, 1], &answer(3, 3)).unwrap(),
+        one,
+        "at most *num"
+    );
+    assert_eq!(decode(f, &[1, 4], &answer(-1, 2)).unwrap(), [0x1234, -1]);
+    assert_eq!(decode(f, &[1, 4], &answer(0, 2)).unwrap(), [0x1234, 0]);
+}
+
 #[test]
 fn history_decoder_drops_a_ragged_tail() {
     use fwlib32::proto::alarm::AlmHistory;
@@ -1487,7 +1525,7 @@ proptest! {
             });
             let n = f.records.map_or(0, |r| records.min(r.max as usize));
             let all: Vec<Option<Int>> = widths.iter().copied().chain((0..n).flat_map(|_| rec.iter().copied())).collect();
-            let values: Vec<i64> = all
+            let mut values: Vec<i64> = all
                 .iter()
                 .zip(seed.iter().cycle())
                 .map(|(w, s)| match w {
@@ -1503,6 +1541,12 @@ proptest! {
                 .collect();
             if seed.is_empty() && !all.is_empty() {
                 continue;
+            }
+            // Records counted by a reply field (Func::counted): the CNC's
+            // count is theirs.
+            if let Some(k) = f.counted.map(usize::from) {
+                let at: usize = f.reply[..k].iter().map(|x| x.n as usize).sum();
+                values[at] = n as i64;
             }
             let bytes = encode(f, &values).expect("encode");
             prop_assert_eq!(bytes.len(), f.reply_len() + n * f.records.map_or(0, |r| r.wire_len()));

@@ -152,6 +152,18 @@ fn from_layout(rng: &mut Rng, f: &Func, template: &[u8]) -> (Vec<u8>, String) {
             fields(rng, r.fields, &mut p);
         }
         label = format!("Ln{n}");
+        // A count the CNC sends before the records (Func::counted): mostly
+        // theirs, else the random one drawn (label `c`).
+        if let Some(k) = f.counted.map(usize::from) {
+            if rng.below(4) == 0 {
+                label.push('c');
+            } else if let Some(c) = f.reply.get(k) {
+                let at: usize = f.reply[..k].iter().map(|x| x.wire_len()).sum();
+                let mut b = Vec::new();
+                put_int(&mut b, c.wire, n as i64);
+                p[at..at + b.len()].copy_from_slice(&b);
+            }
+        }
     }
     let t = tail(rng, &mut p, rec);
     (p, format!("{label}{t}"))

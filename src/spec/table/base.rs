@@ -22,6 +22,7 @@ pub const COMMAND: Func = Func {
     learnt: None,
     zero_unless: None,
     binary: None,
+    counted: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -52,4 +53,5 @@ pub const SERVO_LONGS: Func = Func {
     learnt: None,
     zero_unless: None,
     binary: None,
+    counted: None,
 };

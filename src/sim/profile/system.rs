@@ -1,0 +1,104 @@
+//! `[system]`: what the CNC is built of, as its system configuration
+//! screen lists it: its boards (cnc_rdsyshard), its software series and
+//! editions (cnc_rdsyssoft3), and the ID information of its servo and
+//! spindle drives (cnc_rdservoid, cnc_rdspindleid and their saved copies).
+
+use serde::Deserialize;
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct System {
+    /// The boards, first to last (cnc_rdsyshard's `s_no` 1 is the first).
+    #[serde(rename = "board")]
+    pub boards: Vec<Board>,
+    /// The software, first to last (cnc_rdsyssoft3's `s_no` 1 is the first).
+    pub software: Vec<Software>,
+    /// The servo drives, axis 1 first (cnc_rdservoid, cnc_rdfromservoid).
+    pub servo: Vec<DriveId>,
+    /// The spindle drives, spindle 1 first (cnc_rdspindleid,
+    /// cnc_rdfromspindleid; `sub_motor` is the sub spindle motor).
+    pub spindle: Vec<DriveId>,
+}
+
+/// One drive's ID information: each part's specification and serial
+/// number (cut to the field's length less its NUL).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DriveId {
+    pub motor: [String; 2],
+    /// The pulse coder (servo) or the sub motor (spindle).
+    pub sub: [String; 2],
+    pub amplifier: [String; 2],
+    pub power_supply: [String; 2],
+}
+
+/// One board: its two ID words, group and hardware IDs, how many are
+/// mounted, its slot, and how each ID is shown (format codes).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Board {
+    pub id1: u32,
+    pub id2: u32,
+    pub group_id: i16,
+    pub hard_id: i16,
+    pub hard_num: i16,
+    pub slot_no: i16,
+    pub id1_format: i16,
+    pub id2_format: i16,
+}
+
+/// One software: its ID, series and edition (4 characters each; the CNC
+/// sends a fifth byte after each, 0).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Software {
+    pub id: i16,
+    pub series: String,
+    pub edition: String,
+}
+
+impl Default for System {
+    fn default() -> Self {
+        let board = |group_id, hard_id, slot_no, id1, id2| Board {
+            id1,
+            id2,
+            group_id,
+            hard_id,
+            hard_num: 1,
+            slot_no,
+            id1_format: 0,
+            id2_format: 0,
+        };
+        let soft = |id, series: &str, edition: &str| Software {
+            id,
+            series: series.into(),
+            edition: edition.into(),
+        };
+        System {
+            boards: vec![
+                board(1, 1, 0, 0x0001_0203, 0x0000_0010),
+                board(1, 2, 0, 0x0001_0405, 0x0000_0020),
+                board(2, 1, 1, 0x0002_0101, 0x0000_0001),
+            ],
+            software: vec![
+                soft(1, "G421", "08.0"),
+                soft(2, "90E0", "10.0"),
+                soft(3, "40A1", "05.0"),
+            ],
+            servo: (1..=3)
+                .map(|k| DriveId {
+                    motor: ["A06B-0075-B103".into(), format!("C11A0{k}123")],
+                    sub: ["A860-2000-T301".into(), format!("P2{k}456")],
+                    amplifier: ["A06B-6240-H105".into(), format!("V09B0{k}789")],
+                    power_supply: ["A06B-6200-H011".into(), "E0AC12345".into()],
+                })
+                .collect(),
+            spindle: vec![DriveId {
+                motor: ["A06B-1446-B103".into(), "C20A12345".into()],
+                sub: [String::new(), String::new()],
+                amplifier: ["A06B-6220-H011".into(), "V10B12345".into()],
+                power_supply: ["A06B-6200-H011".into(), "E0AC12345".into()],
+            }],
+        }
+    }
+}

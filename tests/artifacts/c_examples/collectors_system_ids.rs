@@ -1,0 +1,68 @@
+//! tests/c/collectors_system_ids.c: the CNC's boards, software and drive
+//! IDs through the .so, against the profile's `[system]` section.
+
+use super::run_c_test;
+use fwlib32::sim::Profile;
+use fwlib32::sim::profile::DEFAULT_PROFILE;
+
+#[test]
+fn system_ids_follow_the_profile() {
+    let p = Profile::parse(DEFAULT_PROFILE).expect("profile");
+    let sys = &p.system;
+    assert!(
+        sys.boards.len() >= 2 && sys.software.len() >= 2,
+        "the default profile lists boards and software"
+    );
+    let (kv, _sim) = run_c_test("collectors_system_ids", p.clone());
+
+    // cnc_rdsyshard: every board, then the second alone; past the end none.
+    let board = |k: usize| {
+        let b = &sys.boards[k];
+        format!(
+            "{},{},{},{},{},{},{},{}",
+            b.id1, b.id2, b.group_id, b.hard_id, b.hard_num, b.slot_no, b.id1_format, b.id2_format
+        )
+    };
+    let all: Vec<String> = (0..sys.boards.len()).map(board).collect();
+    assert_eq!(
+        kv["hard.all"],
+        format!("{};{};untouched", all.len(), all.join("|"))
+    );
+    assert_eq!(kv["hard.second"], format!("1;{};untouched", board(1)));
+    assert_eq!(kv["hard.past"], "0;;untouched");
+    assert_eq!(kv["hard.none"], "2", "EW_LENGTH: no board asked for");
+
+    // cnc_rdsyssoft3: every software and the total, then from the third.
+    let soft = |k: usize| {
+        let s = &sys.software[k];
+        format!("{}:{:4}:{:4}:00", s.id, s.series, s.edition)
+    };
+    let n = sys.software.len();
+    let all: Vec<String> = (0..n).map(soft).collect();
+    assert_eq!(kv["soft.all"], format!("{n},{n};{}", all.join("|")));
+    assert_eq!(
+        kv["soft.last"],
+        format!("{},{n};{}", n - 2, all[2..].join("|"))
+    );
+    assert_eq!(kv["soft.zero"], "3", "EW_NUMBER: s_no 0");
+
+    // cnc_rdservoid / cnc_rdspindleid and the saved copies: the profile's
+    // drives, each string cut to its field less the NUL.
+    let drive = |d: &fwlib32::sim::profile::system::DriveId, lens: [usize; 8]| {
+        let parts = [&d.motor, &d.sub, &d.amplifier, &d.power_supply];
+        let texts = parts.iter().flat_map(|p| p.iter());
+        (texts.zip(lens))
+            .map(|(t, n)| t.chars().take(n - 1).collect::<String>())
+            .collect::<Vec<_>>()
+            .join("|")
+    };
+    const SERVO: [usize; 8] = [20, 10, 22, 9, 22, 12, 22, 12];
+    const SPINDLE: [usize; 8] = [20, 10, 20, 10, 22, 12, 22, 12];
+    assert!(sys.servo.len() >= 3 && !sys.spindle.is_empty());
+    assert_eq!(kv["servo.2"], drive(&sys.servo[1], SERVO));
+    assert_eq!(kv["fromservo.3"], drive(&sys.servo[2], SERVO));
+    assert_eq!(kv["servo.none"], "3", "EW_NUMBER: axis 0");
+    assert_eq!(kv["spindle.1"], drive(&sys.spindle[0], SPINDLE));
+    assert_eq!(kv["fromspindle.1"], drive(&sys.spindle[0], SPINDLE));
+    assert_eq!(kv["spindle.none"], "3", "EW_NUMBER: no spindle 9");
+}
