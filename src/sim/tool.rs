@@ -7,7 +7,7 @@ use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
-use crate::proto::cmd::{RDNGRP, RDTLINFO};
+use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
@@ -56,6 +56,23 @@ pub(super) const ROUTES: &[Route] = &[
         v.extend(m.tl_limits(q.path)?);
         v.truncate(q.f.reply.len());
         Ok(v)
+    }),
+    // cnc_rd1tlifedata [grp, n]: the group, tool n's number, its use
+    // number (a word cnc_rd1tlifedata does not read; the simulator's
+    // choice), its H and D codes and information; tool 0 is the one in use.
+    Route::table(RD1TLIFEDATA, |m, q| {
+        let l = m.tl_list(q.path, q.arg(0), q.arg(1), q.arg(1))?;
+        let t = l.tools.first().ok_or(NUMBER)?;
+        Ok([
+            l.grp,
+            t.tool_num,
+            l.first,
+            t.length_num,
+            t.radius_num,
+            t.tinfo,
+        ]
+        .map(i64::from)
+        .to_vec())
     }),
     // cnc_rdtlinfo on the 30i class: a word cnc_rdtlinfo does not read (the
     // simulator's: the number of groups, as on the 16i class), the limits.

@@ -19,6 +19,7 @@ pub const COMMAND: Func = Func {
     overflow: Overflow::Cut,
     dims: &[],
     zero_without_first: false,
+    zeroed: &[],
     learnt: None,
     zero_unless: None,
 };
@@ -48,6 +49,7 @@ pub const SERVO_LONGS: Func = Func {
     overflow: Overflow::Cut,
     dims: &[],
     zero_without_first: false,
+    zeroed: &[],
     learnt: None,
     zero_unless: None,
 };

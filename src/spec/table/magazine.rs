@@ -1,0 +1,97 @@
+//! The tool management reads of the tool life state (the limits, the
+//! groups in use, one tool of a group) and the magazine.
+
+use super::super::commands as cmd;
+use super::super::types::Int::*;
+use super::super::types::*;
+use super::base::COMMAND;
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_rdmaxgrp",
+        doc: "Reads the most tool life groups the CNC manages (`data`; `datano` and `type` untouched).",
+        params: &[Param::Out("maxgrp", "ODBLFNO")],
+        forms: &[every_class(cmd::RDNGRP, &[])],
+        // The number of groups, then the limits (cnc_rdtlinfo's on the 16i class).
+        reply: &[skip(I32), to(I32, "data", I16)],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdmaxtool",
+        doc: "Reads the most tools a tool life group holds (`data`; `datano` and `type` untouched).",
+        params: &[Param::Out("maxtool", "ODBLFNO")],
+        forms: &[every_class(cmd::RDNGRP, &[])],
+        reply: &[skip(I32), skip(I32), to(I32, "data", I16)],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdusegrpid",
+        doc: "Reads the next, in-use and selected tool life groups (`datano` and `type` untouched).",
+        params: &[Param::Out("usegrp", "ODBUSEGR")],
+        forms: &[every_class(cmd::TLUSEGRP, &[])],
+        reply: &[
+            to(I32, "next", I32),
+            to(I32, "use", I32),
+            to(I32, "slct", I32),
+        ],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rd1tlifedata",
+        doc: "Reads tool `tuse_num` of tool life group `grp_num`: its number, H and D codes and information (`datano` the group the CNC answered; `type` untouched).",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tldata", "IODBTD"),
+        ],
+        forms: &[every_class(
+            cmd::RD1TLIFEDATA,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "tool_num", I32),
+            skip(I32),
+            to(I32, "h_code", I32),
+            to(I32, "d_code", I32),
+            to(I32, "tool_inf", I32),
+        ],
+        // An answer for group 0: H, D codes and information read 0.
+        zero_without_first: true,
+        zeroed: &["h_code", "d_code", "tool_inf"],
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rd2tlifedata",
+        doc: "Reads tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered, the tool's number, H and D codes and information.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tldata", "IODBTD"),
+        ],
+        forms: &[every_class(
+            cmd::TLTOOLS,
+            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            to(I32, "tool_num", I32),
+            to(I32, "h_code", I32),
+            to(I32, "d_code", I32),
+            to(I32, "tool_inf", I32),
+        ],
+        short: Short::Request,
+        // An answer for group 0: the tool's fields read 0 (`type` as sent).
+        zero_without_first: true,
+        zeroed: &["tool_num", "h_code", "d_code", "tool_inf"],
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+];

@@ -1,0 +1,71 @@
+//! tests/c/collectors_magazine.c: the tool life reads of the magazine and
+//! tool management family through the .so, compared with the simulator's
+//! tool life state.
+
+use super::run_c_test;
+use fwlib32::sim::Profile;
+use fwlib32::sim::profile::DEFAULT_PROFILE;
+
+fn ints(v: &str) -> Vec<i64> {
+    v.split(',').map(|x| x.parse().unwrap()).collect()
+}
+
+/// The default profile, idle, with limits and a third tool in group 1
+/// that no other profile value repeats, which is the T code in effect.
+fn profile() -> Profile {
+    let limits = "max_group = 128\nmax_tool = 16\n";
+    let tools = "  { number = 11, length = 11, radius = 11, info = 0 },\n";
+    let (cycle, t) = ("program = 1234 ", "108 = 1 }");
+    assert!(
+        [limits, tools, cycle, t]
+            .iter()
+            .all(|s| DEFAULT_PROFILE.contains(s)),
+        "the default profile's tool life section, cycle or modal T moved"
+    );
+    let text = DEFAULT_PROFILE
+        .replacen(limits, "max_group = 77\nmax_tool = 9\n", 1)
+        .replacen(cycle, "program = 0 ", 1)
+        .replacen(t, "108 = 23 }", 1)
+        .replacen(
+            tools,
+            &format!("{tools}  {{ number = 23, length = 31, radius = 42, info = 6 }},\n"),
+            1,
+        );
+    Profile::parse(&text).expect("profile")
+}
+
+#[test]
+fn tool_life_reads_follow_the_machine() {
+    let p = profile();
+    let (kv, _sim) = run_c_test("collectors_magazine", p.clone());
+    let path = &p.paths[0];
+    assert_eq!(kv["maxgrp"], path.tool_life.max_group.to_string());
+    assert_eq!(kv["maxtool"], path.tool_life.max_tool.to_string());
+    // Idle: the group holding the profile's modal T (tool 23, group 1) is
+    // next, in use and selected.
+    assert_eq!(ints(&kv["usegrp"]), [1, 1, 1]);
+    for g in path.tool_groups.iter().filter(|g| g.number <= 2) {
+        for (k, t) in g.tools.iter().enumerate() {
+            let n = k as i64 + 1;
+            let want = |ty: i64| {
+                vec![
+                    i64::from(g.number),
+                    ty,
+                    i64::from(t.number),
+                    i64::from(t.length),
+                    i64::from(t.radius),
+                    i64::from(t.info),
+                ]
+            };
+            // cnc_rd1tlifedata leaves `type` untouched (0 before the call).
+            assert_eq!(ints(&kv[&format!("rd1.{}.{n}", g.number)]), want(0));
+            assert_eq!(ints(&kv[&format!("rd2.{}.{n}", g.number)]), want(n));
+        }
+        // Past the last tool: EW_NUMBER (3) from both.
+        assert_eq!(
+            kv[&format!("tools{}", g.number)],
+            format!("{},3", g.tools.len())
+        );
+    }
+    assert_eq!(path.tool_groups[0].tools.len(), 3);
+}

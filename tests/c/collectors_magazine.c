@@ -1,0 +1,66 @@
+/* The magazine and tool management family added from FANUC's library
+ * (cnc_rdmaxgrp, cnc_rdmaxtool, cnc_rdusegrpid, cnc_rd1tlifedata,
+ * cnc_rd2tlifedata), called through the .so against focas-sim; prints
+ * key=value lines that tests/artifacts compares with the simulator's
+ * machine state. Usage: collectors_magazine HOST PORT */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "fwlib32.h"
+
+static void check(const char *what, short rc) {
+    if (rc != EW_OK) {
+        fprintf(stderr, "%s: %d\n", what, rc);
+        exit(1);
+    }
+}
+
+static void print_td(const char *key, const IODBTD *t) {
+    printf("%s=%d,%d,%d,%d,%d,%d\n", key, t->datano, t->type, (int)t->tool_num, (int)t->h_code,
+           (int)t->d_code, (int)t->tool_inf);
+}
+
+int main(int argc, char **argv) {
+    unsigned short h;
+    if (argc != 3) return 2;
+    check("allclibhndl3", cnc_allclibhndl3(argv[1], (unsigned short)atoi(argv[2]), 10, &h));
+
+    ODBLFNO no;
+    memset(&no, 0, sizeof no);
+    check("rdmaxgrp", cnc_rdmaxgrp(h, &no));
+    printf("maxgrp=%d\n", no.data);
+    check("rdmaxtool", cnc_rdmaxtool(h, &no));
+    printf("maxtool=%d\n", no.data);
+
+    ODBUSEGR use;
+    memset(&use, 0, sizeof use);
+    check("rdusegrpid", cnc_rdusegrpid(h, &use));
+    printf("usegrp=%d,%d,%d\n", (int)use.next, (int)use.use, (int)use.slct);
+
+    /* Every tool of groups 1 and 2 through both reads. */
+    for (short g = 1; g <= 2; g++) {
+        for (short n = 1;; n++) {
+            IODBTD t1, t2;
+            char key[32];
+            memset(&t1, 0, sizeof t1);
+            memset(&t2, 0, sizeof t2);
+            short r1 = cnc_rd1tlifedata(h, g, n, &t1);
+            short r2 = cnc_rd2tlifedata(h, g, n, &t2);
+            if (r1 != r2) {
+                fprintf(stderr, "group %d tool %d: rd1tlifedata %d, rd2tlifedata %d\n", g, n, r1, r2);
+                return 1;
+            }
+            if (r1 != EW_OK) {
+                printf("tools%d=%d,%d\n", g, n - 1, r1);
+                break;
+            }
+            snprintf(key, sizeof key, "rd1.%d.%d", g, n);
+            print_td(key, &t1);
+            snprintf(key, sizeof key, "rd2.%d.%d", g, n);
+            print_td(key, &t2);
+        }
+    }
+
+    cnc_freelibhndl(h);
+    return 0;
+}
