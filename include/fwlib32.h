@@ -4474,6 +4474,13 @@ short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
 short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
 /*
+ Puts tool management data number `tool_index` in pot `pot` of magazine
+ `magazine` (0: empties the pot); the three go as request words, no local
+ check.
+ */
+short cnc_wrmagazine(unsigned short FlibHndl, short magazine, short pot, short tool_index);
+
+/*
  Sets the execution pointer of MDI operation.
  */
 short cnc_wrmdipntr(unsigned short FlibHndl, long exe_pntr);

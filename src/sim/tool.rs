@@ -7,7 +7,7 @@ use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
-use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO};
+use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO, WRMAGAZINE};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
@@ -56,6 +56,11 @@ pub(super) const ROUTES: &[Route] = &[
         v.extend(m.tl_limits(q.path)?);
         v.truncate(q.f.reply.len());
         Ok(v)
+    }),
+    // cnc_wrmagazine [magazine, pot, tool_index]: the magazine is where
+    // the tool management data say their tools are.
+    Route::table(WRMAGAZINE, |m, q| {
+        none(m.put_in_pot(q.path, q.arg(0), q.arg(1), q.arg(2)))
     }),
     // cnc_rd1tlifedata [grp, n]: the group, tool n's number, its use
     // number (a word cnc_rd1tlifedata does not read; the simulator's
@@ -154,6 +159,30 @@ impl Machine {
             .find(|g| g.tools.iter().any(|t| t.number == tno))
             .map(|g| g.number)
             .ok_or(NUMBER)
+    }
+
+    /// 0x0151 [magazine, pot, tool_index]: tool management data number
+    /// `tool_index` (`[[path.managed_tool]]`, 1, 2, ...) moves to the pot,
+    /// whose tool (if another) leaves the magazine (magazine and pot 0);
+    /// `tool_index` 0 empties the pot. A magazine or pot below 1, or a
+    /// data number the table lacks: EW_NUMBER, nothing changed.
+    pub fn put_in_pot(&mut self, path: u16, magazine: i32, pot: i32, index: i32) -> Reply<()> {
+        let tools = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .managed_tools;
+        if magazine < 1 || pot < 1 || index < 0 || index as usize > tools.len() {
+            return Err(NUMBER);
+        }
+        for t in tools.iter_mut() {
+            if (t.magazine, t.pot) == (magazine, pot) {
+                (t.magazine, t.pot) = (0, 0);
+            }
+        }
+        if let Some(t) = tools.get_mut((index as usize).wrapping_sub(1)) {
+            (t.magazine, t.pot) = (magazine, pot);
+        }
+        Ok(())
     }
 
     /// 0x004a: how many tool life groups the path has.

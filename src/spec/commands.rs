@@ -291,6 +291,9 @@ commands! {
     /// cnc_rdtool: tool management data, args [top, n] (n at most
     /// `TOOLS_PER_MNG`).
     TLMNG = CLASS_CNC 0x014b [cnc_rdtool];
+    /// cnc_wrmagazine: (1,0x0151)[magazine, pot, tool_index]: puts tool
+    /// management data number tool_index in the pot (0: empties it).
+    WRMAGAZINE = CLASS_CNC 0x0151 [cnc_wrmagazine];
     RDSPCSS = CLASS_CNC 0x0158 [cnc_rdspcss];
     RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];
     RDACTPT = CLASS_CNC 0x0162 [cnc_rdactpt];

@@ -1,6 +1,6 @@
 /* The magazine and tool management family added from FANUC's library
  * (cnc_rdmaxgrp, cnc_rdmaxtool, cnc_rdusegrpid, cnc_rd1tlifedata,
- * cnc_rd2tlifedata), called through the .so against focas-sim; prints
+ * cnc_rd2tlifedata, cnc_wrmagazine), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_magazine HOST PORT */
 #include <stdio.h>
@@ -60,6 +60,26 @@ int main(int argc, char **argv) {
             print_td(key, &t2);
         }
     }
+
+    /* The magazine: tool management data 2 to magazine 2 pot 5, read back
+     * with cnc_rdtool; a data number the table lacks is refused. */
+    check("wrmagazine", cnc_wrmagazine(h, 2, 5, 2));
+    IODBTLMNG tool;
+    short num = 1;
+    check("rdtool", cnc_rdtool(h, 2, &num, &tool));
+    printf("mag.tool2=%d,%d\n", tool.magazine, tool.pot);
+    printf("mag.refused=%d\n", cnc_wrmagazine(h, 1, 1, 999));
+    num = 1;
+    check("rdtool", cnc_rdtool(h, 1, &num, &tool));
+    printf("mag.tool1=%d,%d\n", tool.magazine, tool.pot);
+    /* Tool 1 into the pot tool 2 now holds: tool 2 leaves the magazine. */
+    check("wrmagazine", cnc_wrmagazine(h, 2, 5, 1));
+    num = 1;
+    check("rdtool", cnc_rdtool(h, 1, &num, &tool));
+    printf("mag.moved1=%d,%d\n", tool.magazine, tool.pot);
+    num = 1;
+    check("rdtool", cnc_rdtool(h, 2, &num, &tool));
+    printf("mag.moved2=%d,%d\n", tool.magazine, tool.pot);
 
     cnc_freelibhndl(h);
     return 0;

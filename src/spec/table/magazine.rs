@@ -94,4 +94,20 @@ pub const FUNCS: &[Func] = &[
         learnt: Some(&[]),
         ..COMMAND
     },
+    Func {
+        name: "cnc_wrmagazine",
+        doc: "Puts tool management data number `tool_index` in pot `pot` of magazine `magazine` (0: empties the pot); the three go as request words, no local check.",
+        params: &[
+            Param::Short("magazine"),
+            Param::Short("pot"),
+            Param::Short("tool_index"),
+        ],
+        forms: &[every_class(
+            cmd::WRMAGAZINE,
+            &[Word::Arg(0), Word::Arg(1), Word::Arg(2)],
+        )],
+        dims: &["1|0|-1|2|9999", "3|0|-1|1|9999", "2|0|-1|1|9999"],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
 ];

@@ -1,10 +1,14 @@
-//! tests/c/collectors_magazine.c: the tool life reads of the magazine and
-//! tool management family through the .so, compared with the simulator's
-//! tool life state.
+//! tests/c/collectors_magazine.c: the magazine and tool management family
+//! through the .so, compared with the simulator's tool life state; the
+//! magazine's writes read back from C and checked in the simulator
+//! (through a second connection).
 
 use super::run_c_test;
-use fwlib32::sim::Profile;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
+use fwlib32::sim::{Profile, Simulator};
+use fwlib32::types::IODBTLMNG;
+use fwlib32::{cnc_allclibhndl3, cnc_freelibhndl, cnc_rdtool};
+use std::ffi::CString;
 
 fn ints(v: &str) -> Vec<i64> {
     v.split(',').map(|x| x.parse().unwrap()).collect()
@@ -37,7 +41,7 @@ fn profile() -> Profile {
 #[test]
 fn tool_life_reads_follow_the_machine() {
     let p = profile();
-    let (kv, _sim) = run_c_test("collectors_magazine", p.clone());
+    let (kv, sim) = run_c_test("collectors_magazine", p.clone());
     let path = &p.paths[0];
     assert_eq!(kv["maxgrp"], path.tool_life.max_group.to_string());
     assert_eq!(kv["maxtool"], path.tool_life.max_tool.to_string());
@@ -68,4 +72,38 @@ fn tool_life_reads_follow_the_machine() {
         );
     }
     assert_eq!(path.tool_groups[0].tools.len(), 3);
+
+    // cnc_wrmagazine: data number 2 went to magazine 2 pot 5; 999 was
+    // refused (EW_NUMBER) and changed nothing; then data number 1 took
+    // that pot and data number 2 left the magazine.
+    let t = &path.managed_tools;
+    assert_eq!((t[0].magazine, t[0].pot), (1, 1), "the profile's pots");
+    assert_eq!(ints(&kv["mag.tool2"]), [2, 5]);
+    assert_eq!(kv["mag.refused"], "3");
+    assert_eq!(ints(&kv["mag.tool1"]), [1, 1]);
+    assert_eq!(ints(&kv["mag.moved1"]), [2, 5]);
+    assert_eq!(ints(&kv["mag.moved2"]), [0, 0]);
+    // The simulator's state, through a second connection.
+    assert_eq!(pots(&sim), [(2, 5), (0, 0)]);
+}
+
+/// Magazine and pot of tool management data 1 and 2, read by cnc_rdtool
+/// on a connection of its own.
+fn pots(sim: &Simulator) -> Vec<(i16, i16)> {
+    let mut h = 0u16;
+    let ip = CString::new("127.0.0.1").unwrap();
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), sim.port(), 10, &mut h) },
+        0
+    );
+    let v = (1..=2)
+        .map(|n| {
+            let mut t = IODBTLMNG::default();
+            let mut num = 1i16;
+            assert_eq!(unsafe { cnc_rdtool(h, n, &mut num, &mut t) }, 0);
+            (t.magazine, t.pot)
+        })
+        .collect();
+    assert_eq!(cnc_freelibhndl(h), 0);
+    v
 }
