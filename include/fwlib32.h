@@ -4618,6 +4618,16 @@ short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num,
 short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length, long data);
 
 /*
+ Writes tool management data number `tool_no` from `tool` (the record
+ cnc_rdtool reads; `edge_num`, `reserve_c` and `reserved` are not sent).
+ `tool_no` < 1 is EW_NUMBER without traffic.
+
+ # Safety
+ `tool` must be NULL or point to a readable IODBTLMNG.
+ */
+short cnc_wrtool(unsigned short FlibHndl, short tool_no, struct IODBTLMNG *tool);
+
+/*
  Writes the work coordinate shift of one axis (`type`) or of all axes
  (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
 

@@ -7,7 +7,7 @@ use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
-use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO, WRMAGAZINE};
+use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO, WRMAGAZINE, WRTOOL};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
@@ -61,6 +61,10 @@ pub(super) const ROUTES: &[Route] = &[
     // the tool management data say their tools are.
     Route::table(WRMAGAZINE, |m, q| {
         none(m.put_in_pot(q.path, q.arg(0), q.arg(1), q.arg(2)))
+    }),
+    // cnc_wrtool [tool_no] + the record cnc_rdtool reads.
+    Route::table(WRTOOL, |m, q| {
+        none(m.write_managed(q.path, q.arg(0), q.payload))
     }),
     // cnc_rd1tlifedata [grp, n]: the group, tool n's number, its use
     // number (a word cnc_rd1tlifedata does not read; the simulator's
@@ -182,6 +186,40 @@ impl Machine {
         if let Some(t) = tools.get_mut((index as usize).wrapping_sub(1)) {
             (t.magazine, t.pot) = (magazine, pot);
         }
+        Ok(())
+    }
+
+    /// 0x014c [tool_no] + a record (cnc_wrtool's payload fields: T code,
+    /// life counter, life, rest (not kept), life status, custom bits,
+    /// tool information, H, D, spindle speed, feedrate, magazine, pot, G,
+    /// W, gno, grp, edge, original magazine and pot, custom 1..20):
+    /// tool management data number `tool_no` takes them (what the
+    /// simulator keeps: T code, life and counter, life status, H, D,
+    /// speed, feedrate, magazine, pot, group, custom data). A data number
+    /// the table lacks: EW_NUMBER; a life status past 3, a negative life
+    /// or counter, or a payload short of a record: EW_DATA; nothing
+    /// changed.
+    pub fn write_managed(&mut self, path: u16, tool_no: i32, v: &[i64]) -> Reply<()> {
+        let tools = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .managed_tools;
+        let t = (tool_no as usize)
+            .checked_sub(1)
+            .and_then(|i| tools.get_mut(i))
+            .ok_or(NUMBER)?;
+        let w = |i: usize| v.get(i).map_or(0, |x| *x as i32);
+        let data = CncError::new(ew::EW_DATA);
+        if v.len() < 40 || !(0..=3).contains(&w(4)) || w(1) < 0 || w(2) < 0 {
+            return Err(data);
+        }
+        t.number = w(0);
+        (t.life_count, t.max_life, t.life_stat) = (w(1), w(2), w(4) as u8);
+        (t.length, t.radius) = (w(7) as i16 as i32, w(8) as i16 as i32);
+        (t.spindle_speed, t.feedrate) = (w(9), w(10));
+        (t.magazine, t.pot) = (w(11) as i16 as i32, w(12) as i16 as i32);
+        t.group = w(16);
+        t.custom = (20..40).map(w).collect();
         Ok(())
     }
 

@@ -293,6 +293,9 @@ commands! {
     TLMNG = CLASS_CNC 0x014b [cnc_rdtool];
     /// cnc_wrmagazine: (1,0x0151)[magazine, pot, tool_index]: puts tool
     /// management data number tool_index in the pot (0: empties it).
+    /// cnc_wrtool: (1,0x014c)[tool_no, 0, 0, 0, 156] + one tool management
+    /// record, the 39 words cnc_rdtool's answer holds.
+    WRTOOL = CLASS_CNC 0x014c [cnc_wrtool];
     WRMAGAZINE = CLASS_CNC 0x0151 [cnc_wrmagazine];
     RDSPCSS = CLASS_CNC 0x0158 [cnc_rdspcss];
     RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];

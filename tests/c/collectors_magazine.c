@@ -1,6 +1,6 @@
 /* The magazine and tool management family added from FANUC's library
  * (cnc_rdmaxgrp, cnc_rdmaxtool, cnc_rdusegrpid, cnc_rd1tlifedata,
- * cnc_rd2tlifedata, cnc_wrmagazine), called through the .so against focas-sim; prints
+ * cnc_rd2tlifedata, cnc_wrmagazine, cnc_wrtool), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_magazine HOST PORT */
 #include <stdio.h>
@@ -80,6 +80,39 @@ int main(int argc, char **argv) {
     num = 1;
     check("rdtool", cnc_rdtool(h, 2, &num, &tool));
     printf("mag.moved2=%d,%d\n", tool.magazine, tool.pot);
+
+    /* cnc_wrtool: data number 2 rewritten from what cnc_rdtool read, then
+     * read back; a life status the CNC does not know is refused. */
+    num = 1;
+    check("rdtool", cnc_rdtool(h, 2, &num, &tool));
+    tool.T_code = 4711;
+    tool.life_count = 7;
+    tool.max_life = 250;
+    tool.life_stat = 1;
+    tool.H_code = 21;
+    tool.D_code = -4;
+    tool.spindle_speed = 2200;
+    tool.feedrate = 333;
+    tool.magazine = 3;
+    tool.pot = 9;
+    tool.grp = 0;
+    tool.custom1 = -5;
+    tool.custom20 = 20;
+    check("wrtool", cnc_wrtool(h, 2, &tool));
+    IODBTLMNG back;
+    num = 1;
+    check("rdtool", cnc_rdtool(h, 2, &num, &back));
+    printf("tool2=%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d,%d\n", (int)back.T_code,
+           (int)back.life_count, (int)back.max_life, (int)back.rest_life, back.life_stat,
+           back.H_code, back.D_code, (int)back.spindle_speed, (int)back.feedrate, back.magazine,
+           back.pot, (int)back.custom1, (int)back.custom20);
+    tool.life_stat = 9;
+    tool.T_code = 1;
+    printf("tool.refused=%d\n", cnc_wrtool(h, 2, &tool));
+    printf("tool.refused_no=%d\n", cnc_wrtool(h, 0, &tool));
+    num = 1;
+    check("rdtool", cnc_rdtool(h, 2, &num, &back));
+    printf("tool2.after=%d,%d\n", (int)back.T_code, back.life_stat);
 
     cnc_freelibhndl(h);
     return 0;

@@ -5,6 +5,54 @@ use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
+use crate::ew::EW_NUMBER;
+
+/// One tool management record as cnc_wrtool sends it (the 39 words of
+/// cnc_rdtool's answer): the `short` members sign-extended, the unsigned
+/// ones zero-extended, `grp` and `edge` the two halves of one word, `edge_num`, `reserve_c` and
+/// `reserved` not sent.
+const TOOL_RECORD: &[Field] = &[
+    to(I32, "T_code", I32),
+    to(I32, "life_count", I32),
+    to(I32, "max_life", I32),
+    to(I32, "rest_life", I32),
+    to(I32, "life_stat", U8),
+    to(I32, "cust_bits", U8),
+    to(I32, "tool_info", U16),
+    to(I32, "H_code", I16),
+    to(I32, "D_code", I16),
+    to(I32, "spindle_speed", I32),
+    to(I32, "feedrate", I32),
+    to(I32, "magazine", I16),
+    to(I32, "pot", I16),
+    to(I32, "G_code", I16),
+    to(I32, "W_code", I16),
+    to(I32, "gno", I16),
+    to(I16, "grp", I16),
+    to(I16, "edge", I16),
+    to(I32, "org_magazine", I16),
+    to(I32, "org_pot", I16),
+    to(I32, "custom1", I32),
+    to(I32, "custom2", I32),
+    to(I32, "custom3", I32),
+    to(I32, "custom4", I32),
+    to(I32, "custom5", I32),
+    to(I32, "custom6", I32),
+    to(I32, "custom7", I32),
+    to(I32, "custom8", I32),
+    to(I32, "custom9", I32),
+    to(I32, "custom10", I32),
+    to(I32, "custom11", I32),
+    to(I32, "custom12", I32),
+    to(I32, "custom13", I32),
+    to(I32, "custom14", I32),
+    to(I32, "custom15", I32),
+    to(I32, "custom16", I32),
+    to(I32, "custom17", I32),
+    to(I32, "custom18", I32),
+    to(I32, "custom19", I32),
+    to(I32, "custom20", I32),
+];
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -107,6 +155,27 @@ pub const FUNCS: &[Func] = &[
             &[Word::Arg(0), Word::Arg(1), Word::Arg(2)],
         )],
         dims: &["1|0|-1|2|9999", "3|0|-1|1|9999", "2|0|-1|1|9999"],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrtool",
+        doc: "Writes tool management data number `tool_no` from `tool` (the record cnc_rdtool reads; `edge_num`, `reserve_c` and `reserved` are not sent). `tool_no` < 1 is EW_NUMBER without traffic.",
+        params: &[Param::Short("tool_no"), Param::In("tool", "IODBTLMNG")],
+        checks: &[Check {
+            arg: 0,
+            lo: 1,
+            hi: i32::MAX,
+            code: EW_NUMBER,
+        }],
+        forms: &[every_class(cmd::WRTOOL, &[Word::Arg(0)])],
+        payload: Some(Payload {
+            fields: TOOL_RECORD,
+            elem: "IODBTLMNG",
+            count: ONE,
+            max: 1,
+        }),
+        dims: &["2|0|-1|1|3|99"],
         learnt: Some(&[]),
         ..COMMAND
     },

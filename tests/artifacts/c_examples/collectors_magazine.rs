@@ -1,6 +1,6 @@
 //! tests/c/collectors_magazine.c: the magazine and tool management family
 //! through the .so, compared with the simulator's tool life state; the
-//! magazine's writes read back from C and checked in the simulator
+//! writes (cnc_wrmagazine, cnc_wrtool) read back from C and checked in the simulator
 //! (through a second connection).
 
 use super::run_c_test;
@@ -39,7 +39,7 @@ fn profile() -> Profile {
 }
 
 #[test]
-fn tool_life_reads_follow_the_machine() {
+fn magazine_and_tool_data_follow_the_machine() {
     let p = profile();
     let (kv, sim) = run_c_test("collectors_magazine", p.clone());
     let path = &p.paths[0];
@@ -83,8 +83,37 @@ fn tool_life_reads_follow_the_machine() {
     assert_eq!(ints(&kv["mag.tool1"]), [1, 1]);
     assert_eq!(ints(&kv["mag.moved1"]), [2, 5]);
     assert_eq!(ints(&kv["mag.moved2"]), [0, 0]);
-    // The simulator's state, through a second connection.
-    assert_eq!(pots(&sim), [(2, 5), (0, 0)]);
+    // The simulator's state, through a second connection (cnc_wrtool
+    // below then put data number 2 in magazine 3 pot 9).
+    assert_eq!(pots(&sim), [(2, 5), (3, 9)]);
+
+    // cnc_wrtool: what C wrote reads back (rest = life - counter); the
+    // refused writes (life status 9: EW_DATA; data number 0: EW_NUMBER
+    // before traffic) changed nothing.
+    assert_eq!(
+        ints(&kv["tool2"]),
+        [4711, 7, 250, 243, 1, 21, -4, 2200, 333, 3, 9, -5, 20]
+    );
+    assert_eq!(kv["tool.refused"], "5");
+    assert_eq!(kv["tool.refused_no"], "3");
+    assert_eq!(ints(&kv["tool2.after"]), [4711, 1]);
+    assert_eq!(managed(&sim, 2), (4711, 7, 250, 21, -4));
+}
+
+/// T code, life counter, life, H and D codes of tool management data
+/// `n`, read by cnc_rdtool on a connection of its own.
+fn managed(sim: &Simulator, n: i16) -> (i32, i32, i32, i16, i16) {
+    let mut h = 0u16;
+    let ip = CString::new("127.0.0.1").unwrap();
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), sim.port(), 10, &mut h) },
+        0
+    );
+    let mut t = IODBTLMNG::default();
+    let mut num = 1i16;
+    assert_eq!(unsafe { cnc_rdtool(h, n, &mut num, &mut t) }, 0);
+    assert_eq!(cnc_freelibhndl(h), 0);
+    (t.T_code, t.life_count, t.max_life, t.H_code, t.D_code)
 }
 
 /// Magazine and pot of tool management data 1 and 2, read by cnc_rdtool
