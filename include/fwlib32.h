@@ -277,6 +277,19 @@ typedef struct ODBMDL {
 } ODBMDL;
 
 /*
+ cnc_rd1tlifedata / cnc_rd2tlifedata: one tool of a tool life group:
+ its number, H and D codes and information.
+ */
+typedef struct IODBTD {
+    short datano;
+    short type;
+    LONG tool_num;
+    LONG h_code;
+    LONG d_code;
+    LONG tool_inf;
+} IODBTD;
+
+/*
  One record of ODBAHIS (48 bytes).
  */
 typedef struct ODBAHIS_ALM {
@@ -807,6 +820,16 @@ typedef struct IODBMR {
     short datano_e;
     struct IODBMR_data data[5];
 } IODBMR;
+
+/*
+ cnc_rdmaxgrp / cnc_rdmaxtool: the most tool life groups, or tools in a
+ group (`datano` and `type` untouched).
+ */
+typedef struct ODBLFNO {
+    short datano;
+    short type;
+    short data;
+} ODBLFNO;
 
 /*
  cnc_rdmdipntr: execution pointers of MDI operation.
@@ -1874,6 +1897,18 @@ typedef struct ODBPTLINF {
 } ODBPTLINF;
 
 /*
+ cnc_rdusegrpid: the next, in-use and selected tool life groups
+ (`datano` and `type` untouched).
+ */
+typedef struct ODBUSEGR {
+    short datano;
+    short type;
+    LONG next;
+    LONG use;
+    LONG slct;
+} ODBUSEGR;
+
+/*
  cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
  all axes.
  */
@@ -2841,6 +2876,32 @@ short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
 short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *block);
 
 /*
+ Reads tool `tuse_num` of tool life group `grp_num`: its number, H and D
+ codes and information (`datano` the group the CNC answered; `type`
+ untouched).
+
+ # Safety
+ `tldata` must be NULL or point to a writable IODBTD.
+ */
+short cnc_rd1tlifedata(unsigned short FlibHndl,
+                       short grp_num,
+                       short tuse_num,
+                       struct IODBTD *tldata);
+
+/*
+ Reads tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's
+ request): `datano` the group and `type` the use number the CNC answered,
+ the tool's number, H and D codes and information.
+
+ # Safety
+ `tldata` must be NULL or point to a writable IODBTD.
+ */
+short cnc_rd2tlifedata(unsigned short FlibHndl,
+                       short grp_num,
+                       short tuse_num,
+                       struct IODBTD *tldata);
+
+/*
  Reads the execution pointer: program number and block number (4 bytes
  written into each `long`).
 
@@ -3288,6 +3349,24 @@ short cnc_rdmacror(unsigned short FlibHndl,
  `*num` writable doubles.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
+ Reads the most tool life groups the CNC manages (`data`; `datano` and
+ `type` untouched).
+
+ # Safety
+ `maxgrp` must be NULL or point to a writable ODBLFNO.
+ */
+short cnc_rdmaxgrp(unsigned short FlibHndl, struct ODBLFNO *maxgrp);
+
+/*
+ Reads the most tools a tool life group holds (`data`; `datano` and
+ `type` untouched).
+
+ # Safety
+ `maxtool` must be NULL or point to a writable ODBLFNO.
+ */
+short cnc_rdmaxtool(unsigned short FlibHndl, struct ODBLFNO *maxtool);
 
 /*
  Reads the execution pointers of MDI operation.
@@ -4339,6 +4418,15 @@ short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct 
 short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
 
 /*
+ Reads the next, in-use and selected tool life groups (`datano` and
+ `type` untouched).
+
+ # Safety
+ `usegrp` must be NULL or point to a writable ODBUSEGR.
+ */
+short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
+
+/*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into
  `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else
  EW_LENGTH after the reply).
@@ -4724,6 +4812,13 @@ short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
 short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
 /*
+ Puts tool management data number `tool_index` in pot `pot` of magazine
+ `magazine` (0: empties the pot); the three go as request words, no local
+ check.
+ */
+short cnc_wrmagazine(unsigned short FlibHndl, short magazine, short pot, short tool_index);
+
+/*
  Sets the execution pointer of MDI operation.
  */
 short cnc_wrmdipntr(unsigned short FlibHndl, long exe_pntr);
@@ -4869,6 +4964,16 @@ short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec
  No pointer arguments.
  */
 short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length, long data);
+
+/*
+ Writes tool management data number `tool_no` from `tool` (the record
+ cnc_rdtool reads; `edge_num`, `reserve_c` and `reserved` are not sent).
+ `tool_no` < 1 is EW_NUMBER without traffic.
+
+ # Safety
+ `tool` must be NULL or point to a readable IODBTLMNG.
+ */
+short cnc_wrtool(unsigned short FlibHndl, short tool_no, struct IODBTLMNG *tool);
 
 /*
  Writes the work coordinate shift of one axis (`type`) or of all axes

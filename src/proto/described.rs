@@ -108,9 +108,20 @@ impl Call for Described<'_> {
         });
         out.extend(self.f.more.iter().map(|ws| sub_of(ws)));
     }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
         if self.f.more.is_empty() {
-            return decode(self.f, self.args, &sub(resp, 0)?.payload);
+            let payload = &sub(resp, 0)?.payload;
+            let need = self.f.reply_len();
+            if self.f.short == Short::Request && payload.len() < need {
+                // The response body's payload starts at byte 18, where
+                // the request body held its subpacket's byte 16.
+                let body = crate::proto::packet::encode_request(&self.request(cx));
+                let p: Vec<u8> = (payload.len()..need)
+                    .map(|k| body.get(18 + k).copied().unwrap_or(0))
+                    .collect();
+                return decode(self.f, self.args, &[payload.as_slice(), &p].concat());
+            }
+            return decode(self.f, self.args, payload);
         }
         // Each subpacket's answer is its share of the reply's fields.
         let mut out = Vec::new();
@@ -146,7 +157,7 @@ fn padded(short: Short, payload: &[u8], need: usize) -> Result<Vec<u8>> {
                 }
                 .into());
             }
-            Short::Zeros => p.resize(need, 0),
+            Short::Zeros | Short::Request => p.resize(need, 0),
         }
     }
     Ok(p)
@@ -167,7 +178,7 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
                 }
                 .into());
             }
-            Short::Zeros => {
+            Short::Zeros | Short::Request => {
                 zeros = p.to_vec();
                 zeros.resize(need, 0);
                 p = &zeros;
@@ -178,11 +189,16 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
     let mut out = Vec::new();
     read_fields(&mut r, f.reply, args, &mut out)?;
     if f.zero_without_first && out.first().is_some_and(|v| *v as u16 == 0) {
-        // No such group: its `data` reads 0 (the other fields as sent).
+        // No such group: its `data` (or `zeroed`) reads 0 (the other
+        // fields as sent).
         let mut at = 0;
         for field in f.reply {
             let n = usize::from(field.n);
-            if field.to == Some("data") {
+            let zeroed = match f.zeroed {
+                [] => &["data"][..],
+                z => z,
+            };
+            if field.to.is_some_and(|m| zeroed.contains(&m)) {
                 out[at..at + n].iter_mut().for_each(|v| *v = 0);
             }
             at += n;

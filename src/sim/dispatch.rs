@@ -359,6 +359,10 @@ mod tests {
             "the group records cnc_rdgrpinfo reads; three functions read a part of them",
         ),
         (
+            (CLASS_CNC, crate::proto::tool::TLUSEGRP),
+            "the groups in use and their optional groups (cnc_rdtlusegrp); cnc_rdusegrpid reads the first three",
+        ),
+        (
             (CLASS_CNC, crate::proto::tool::TLTOOLS),
             "the tools of a group (cnc_rdtoolrng); cnc_toolnum reads one of them",
         ),

@@ -7,7 +7,7 @@ use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
-use crate::proto::cmd::{RDNGRP, RDTLINFO};
+use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO, WRMAGAZINE, WRTOOL};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, MNG_WORDS, MngList, MngRecord, PTLDATA, PTLINFO,
@@ -56,6 +56,32 @@ pub(super) const ROUTES: &[Route] = &[
         v.extend(m.tl_limits(q.path)?);
         v.truncate(q.f.reply.len());
         Ok(v)
+    }),
+    // cnc_wrmagazine [magazine, pot, tool_index]: the magazine is where
+    // the tool management data say their tools are.
+    Route::table(WRMAGAZINE, |m, q| {
+        none(m.put_in_pot(q.path, q.arg(0), q.arg(1), q.arg(2)))
+    }),
+    // cnc_wrtool [tool_no] + the record cnc_rdtool reads.
+    Route::table(WRTOOL, |m, q| {
+        none(m.write_managed(q.path, q.arg(0), q.payload))
+    }),
+    // cnc_rd1tlifedata [grp, n]: the group, tool n's number, its use
+    // number (a word cnc_rd1tlifedata does not read; the simulator's
+    // choice), its H and D codes and information; tool 0 is the one in use.
+    Route::table(RD1TLIFEDATA, |m, q| {
+        let l = m.tl_list(q.path, q.arg(0), q.arg(1), q.arg(1))?;
+        let t = l.tools.first().ok_or(NUMBER)?;
+        Ok([
+            l.grp,
+            t.tool_num,
+            l.first,
+            t.length_num,
+            t.radius_num,
+            t.tinfo,
+        ]
+        .map(i64::from)
+        .to_vec())
     }),
     // cnc_rdtlinfo on the 30i class: a word cnc_rdtlinfo does not read (the
     // simulator's: the number of groups, as on the 16i class), the limits.
@@ -137,6 +163,64 @@ impl Machine {
             .find(|g| g.tools.iter().any(|t| t.number == tno))
             .map(|g| g.number)
             .ok_or(NUMBER)
+    }
+
+    /// 0x0151 [magazine, pot, tool_index]: tool management data number
+    /// `tool_index` (`[[path.managed_tool]]`, 1, 2, ...) moves to the pot,
+    /// whose tool (if another) leaves the magazine (magazine and pot 0);
+    /// `tool_index` 0 empties the pot. A magazine or pot below 1, or a
+    /// data number the table lacks: EW_NUMBER, nothing changed.
+    pub fn put_in_pot(&mut self, path: u16, magazine: i32, pot: i32, index: i32) -> Reply<()> {
+        let tools = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .managed_tools;
+        if magazine < 1 || pot < 1 || index < 0 || index as usize > tools.len() {
+            return Err(NUMBER);
+        }
+        for t in tools.iter_mut() {
+            if (t.magazine, t.pot) == (magazine, pot) {
+                (t.magazine, t.pot) = (0, 0);
+            }
+        }
+        if let Some(t) = tools.get_mut((index as usize).wrapping_sub(1)) {
+            (t.magazine, t.pot) = (magazine, pot);
+        }
+        Ok(())
+    }
+
+    /// 0x014c [tool_no] + a record (cnc_wrtool's payload fields: T code,
+    /// life counter, life, rest (not kept), life status, custom bits,
+    /// tool information, H, D, spindle speed, feedrate, magazine, pot, G,
+    /// W, gno, grp, edge, original magazine and pot, custom 1..20):
+    /// tool management data number `tool_no` takes them (what the
+    /// simulator keeps: T code, life and counter, life status, H, D,
+    /// speed, feedrate, magazine, pot, group, custom data). A data number
+    /// the table lacks: EW_NUMBER; a life status past 3, a negative life
+    /// or counter, or a payload short of a record: EW_DATA; nothing
+    /// changed.
+    pub fn write_managed(&mut self, path: u16, tool_no: i32, v: &[i64]) -> Reply<()> {
+        let tools = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .managed_tools;
+        let t = (tool_no as usize)
+            .checked_sub(1)
+            .and_then(|i| tools.get_mut(i))
+            .ok_or(NUMBER)?;
+        let w = |i: usize| v.get(i).map_or(0, |x| *x as i32);
+        let data = CncError::new(ew::EW_DATA);
+        if v.len() < 40 || !(0..=3).contains(&w(4)) || w(1) < 0 || w(2) < 0 {
+            return Err(data);
+        }
+        t.number = w(0);
+        (t.life_count, t.max_life, t.life_stat) = (w(1), w(2), w(4) as u8);
+        (t.length, t.radius) = (w(7) as i16 as i32, w(8) as i16 as i32);
+        (t.spindle_speed, t.feedrate) = (w(9), w(10));
+        (t.magazine, t.pot) = (w(11) as i16 as i32, w(12) as i16 as i32);
+        t.group = w(16);
+        t.custom = (20..40).map(w).collect();
+        Ok(())
     }
 
     /// 0x004a: how many tool life groups the path has.

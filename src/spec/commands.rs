@@ -148,15 +148,20 @@ commands! {
     SETTIMER = CLASS_CNC 0x0046 [cnc_settimer];
     RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2];
     /// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
-    TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp];
+    TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp cnc_rdusegrpid];
     /// (1,0x004a): the number of tool life groups; on the 16i class with
     /// `[0, 0, 0, 0, 0x10000]`, cnc_rdtlinfo's limits after it.
-    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp cnc_rdtlinfo];
+    /// cnc_rdmaxgrp and cnc_rdmaxtool (no args) read the second and third word.
+    RDNGRP = CLASS_CNC 0x004a [cnc_rdngrp cnc_rdtlinfo cnc_rdmaxgrp cnc_rdmaxtool];
     /// cnc_wrgrpinfo: args [s, e, 0, 0, payload length] + one
     /// `GroupWrite` per group s..=e.
     WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
     /// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
-    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum];
+    /// cnc_rd2tlifedata: [grp, n, n], the group, n and tool n's record.
+    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata];
+    /// cnc_rd1tlifedata: (1,0x004f)[grp, n]: the group, tool n's number, a
+    /// word it does not read, its H and D codes and information.
+    RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata];
     DELTLIFEGRP = CLASS_CNC 0x0053 [cnc_deltlifegrp];
     /// Inserts a tool into a group: args [grp, tuse_num, tool number].
     TLINSERT = CLASS_CNC 0x0054 [cnc_instlifedt];
@@ -295,6 +300,12 @@ commands! {
     /// cnc_rdtool: tool management data, args [top, n] (n at most
     /// `TOOLS_PER_MNG`).
     TLMNG = CLASS_CNC 0x014b [cnc_rdtool];
+    /// cnc_wrmagazine: (1,0x0151)[magazine, pot, tool_index]: puts tool
+    /// management data number tool_index in the pot (0: empties it).
+    /// cnc_wrtool: (1,0x014c)[tool_no, 0, 0, 0, 156] + one tool management
+    /// record, the 39 words cnc_rdtool's answer holds.
+    WRTOOL = CLASS_CNC 0x014c [cnc_wrtool];
+    WRMAGAZINE = CLASS_CNC 0x0151 [cnc_wrmagazine];
     RDSPCSS = CLASS_CNC 0x0158 [cnc_rdspcss];
     RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];
     RDACTPT = CLASS_CNC 0x0162 [cnc_rdactpt];

@@ -346,6 +346,13 @@ pub enum Short {
     Zeros,
     /// EW_PROTOCOL, nothing written.
     Error,
+    /// The missing bytes read as the request's at the same offsets of the
+    /// frame body (FANUC's library reads the answer into the buffer that
+    /// held its request): payload byte k is the request subpacket's byte
+    /// 16 + k (its third argument word on, then its payload), zeros past
+    /// the request (cnc_rd2tlifedata: an empty answer's `datano` is the
+    /// use number asked for).
+    Request,
 }
 
 /// What a reply holding more records than the caller's count
@@ -396,6 +403,8 @@ pub struct Func {
     /// group); when its low 16 bits are 0 the `data` member reads as 0, as
     /// FANUC's library writes it (no such group).
     pub zero_without_first: bool,
+    /// The members [`Func::zero_without_first`] writes as 0 (empty: `data`).
+    pub zeroed: &'static [&'static str],
     /// Learnt from FANUC's library (`oracle learn`, tools/oracle/learn.rs):
     /// what the learner's draft left unsettled, which review settled by
     /// probing (empty: nothing); `None` for entries written from the

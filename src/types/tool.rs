@@ -211,3 +211,38 @@ pub struct ODBTLINFO {
     pub max_minute: LONG,
     pub max_cycle: LONG,
 }
+
+/// cnc_rdusegrpid: the next, in-use and selected tool life groups
+/// (`datano` and `type` untouched).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBUSEGR {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub next: LONG,
+    pub r#use: LONG,
+    pub slct: LONG,
+}
+
+/// cnc_rdmaxgrp / cnc_rdmaxtool: the most tool life groups, or tools in a
+/// group (`datano` and `type` untouched).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBLFNO {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: c_short,
+}
+
+/// cnc_rd1tlifedata / cnc_rd2tlifedata: one tool of a tool life group:
+/// its number, H and D codes and information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTD {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub tool_num: LONG,
+    pub h_code: LONG,
+    pub d_code: LONG,
+    pub tool_inf: LONG,
+}

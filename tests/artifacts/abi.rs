@@ -406,6 +406,9 @@ rust_layouts! {
     ODBTG { grp_num, dummy, ntool, life, count, data }
     IODBTGI { s_grp, dummy, e_grp, data }
     ODBUSEGRP { next, r#use, slct, opt_next, opt_use, opt_slct }
+    ODBUSEGR { datano, r#type, next, r#use, slct }
+    ODBLFNO { datano, r#type, data }
+    IODBTD { datano, r#type, tool_num, h_code, d_code, tool_inf }
     IODBTLMNG {
         T_code, life_count, max_life, rest_life, life_stat, cust_bits, tool_info, H_code, D_code,
         spindle_speed, feedrate, magazine, pot, G_code, W_code, gno, grp, edge, org_magazine,

@@ -1147,6 +1147,22 @@ pub const ORACLE: &[Deviation] = &[
         cases: &["fuzz_wrzofs_v3p2_path2_*", "fuzz_wrzofs_v2p2_path2_*"],
         reason: "its read-back, cnc_rdzofs for all axes answered by an error (a path without work offsets), makes FANUC's library fill the caller's buffer after datano, type and the first value with stale bytes of earlier calls; ours writes those 8 bytes only",
     },
+    // The magazine and tool management family (issue 24).
+    Deviation {
+        function: "cnc_rd1tlifedata",
+        cases: &[
+            "rd1tlifedata_*_a1_m1",
+            "rd1tlifedata_*_a1_9999",
+            "rd1tlifedata_*_a2_m1",
+            "rd1tlifedata_*_a2_99",
+            "rd1tlifedata_*_shape_err*",
+            "rd1tlifedata_*_path2",
+            // oracle fuzz: an error answer, drawn or the simulator's.
+            "fuzz_rd1tlifedata_*_answer_e*",
+            "fuzz_rd1tlifedata_*_answer__*",
+        ],
+        reason: "on an error answer FANUC's library fills the caller's IODBTD (all but `type`) with uninitialised memory (stack bytes, pointers among them) and returns the error; ours writes nothing",
+    },
 ];
 
 /// The oracle fuzz's short answers (a payload one byte short, cut inside a

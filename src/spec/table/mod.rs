@@ -13,6 +13,7 @@ pub mod base;
 mod feed;
 pub mod history;
 pub mod info;
+pub mod magazine;
 mod maintenance;
 pub mod memory;
 mod names;
@@ -38,6 +39,7 @@ const AREAS: &[&[Func]] = &[
     memory::FUNCS,
     history::FUNCS,
     tool_life::FUNCS,
+    magazine::FUNCS,
     maintenance::FUNCS,
     names::FUNCS,
     setting::FUNCS,
