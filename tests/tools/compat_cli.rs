@@ -478,3 +478,48 @@ fn source_files_list_the_focas_names_they_call() {
         assert_eq!(got, names, "{file}: {j}");
     }
 }
+
+/// The families data collectors call (operator panel signals, system and
+/// software IDs, 8-digit programs, P-code macros, settings, magazine and
+/// tool information, spindle and position errors): a program calling every
+/// one of them, built against a stand-in for FANUC's library, is told
+/// nothing is missing.
+#[test]
+fn the_collector_families_are_all_supported() {
+    #[rustfmt::skip]
+    const FAMILIES: &[&str] = &[
+        "cnc_rdopnlsgnl", "cnc_wropnlsgnl", "cnc_rdopnlgnrl", "cnc_wropnlgnrl", "cnc_rdopnlgsname", "cnc_wropnlgsname",
+        "cnc_rdsyshard", "cnc_rdsyssoft3", "cnc_rdservoid", "cnc_rdspindleid", "cnc_rdfromservoid", "cnc_rdfromspindleid",
+        "cnc_rdprgnumo8", "cnc_rddynamico8", "cnc_rdprogdiro8", "cnc_rdprogdir2o8", "cnc_searcho8", "cnc_deleteo8", "cnc_rdmdipntro8",
+        "cnc_rdpmacro", "cnc_wrpmacro", "cnc_rdpmacror", "cnc_rdpmacroinfo", "cnc_rdpmacroinfo2",
+        "cnc_rdsetnum",
+        "cnc_rdtlinfo", "cnc_rdmaxgrp", "cnc_rdmaxtool", "cnc_rdusegrpid", "cnc_rd1tlifedata", "cnc_rd2tlifedata", "cnc_wrmagazine", "cnc_wrtool",
+        "cnc_rdnspdl", "cnc_rdspcss", "cnc_rdcommand", "cnc_rdposerrs", "cnc_rdposerrs2", "cnc_rdposerrz",
+    ];
+    let dir = toolchain::scratch("compat-collectors");
+    let stub: String = FAMILIES
+        .iter()
+        .map(|f| format!("short {f}(void) {{ return -15; }}\n"))
+        .collect();
+    let decls: String = FAMILIES
+        .iter()
+        .map(|f| format!("short {f}(void);\n"))
+        .collect();
+    let calls: String = FAMILIES
+        .iter()
+        .map(|f| format!("    r |= {f}();\n"))
+        .collect();
+    let prog = format!("{decls}int main(void) {{\n    short r = 0;\n{calls}    return r;\n}}\n");
+    let exe = build_against_stub(&dir, &stub, &prog);
+    let o = focas(&["compat", path(&exe)]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{text}");
+    assert!(text.contains(" 0 missing\n"), "{text}");
+    let (code, j) = compat_json(&exe);
+    assert_eq!(code, Some(0));
+    let st = statuses(&j);
+    assert_eq!(st.len(), FAMILIES.len(), "{j}");
+    for (f, s) in &st {
+        assert_eq!(s, "supported", "{f}: {j}");
+    }
+}
