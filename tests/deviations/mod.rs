@@ -1128,11 +1128,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: FUZZ_COUNT_PAST_ASKED,
     },
     Deviation {
-        function: "cnc_toolnum",
-        cases: &["fuzz_toolnum_*_a2_*empty*"],
-        reason: REQUEST_BYTES_PAST_ANSWER,
-    },
-    Deviation {
         function: "cnc_rdspgear",
         cases: &["fuzz_rdspgear_*s2Tempty*"],
         reason: REQUEST_BYTES_PAST_ANSWER,
@@ -1176,7 +1171,7 @@ const FUZZ_RECORDS_PAST_COUNT: &str = "FANUC's library writes every record a lon
 
 /// Fields read past the end of an empty answer, where FANUC's receive
 /// buffer still holds the request.
-const REQUEST_BYTES_PAST_ANSWER: &str = "FANUC's library reads the fields an empty answer lacks from its receive buffer, which still holds the request's bytes there (cnc_toolnum: datano becomes the request's third word, tuse_num; cnc_rdspgear: the spindle count of an empty last 0xa4 payload becomes a word of the request's last subpacket header, 1), and returns EW_OK with them; ours reads them as zeros (cnc_toolnum: datano 0; cnc_rdspgear: count 0, EW_NOOPT)";
+const REQUEST_BYTES_PAST_ANSWER: &str = "FANUC's library reads the fields an empty answer lacks from its receive buffer, which still holds the request's bytes there (cnc_rdspgear: the spindle count of an empty last 0xa4 payload becomes a word of the request's last subpacket header, 1), and returns EW_OK with them; ours reads them as zeros (count 0, EW_NOOPT)";
 
 /// cnc_rdctrldi / cnc_rdctrldo.
 const CTRL_SIGNALS_PAST_STRUCT: &str = "FANUC's library writes one 4-byte word per two bytes of the answer, up to the CNC's maximum spindles (8 words, 32 bytes), into the caller's 4-byte ODBSPDI / ODBSPDO, the words past the answer from its receive buffer; ours writes the first word, the struct, only";

@@ -24,7 +24,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "type", I16),
             to(I32, "data", I32),
         ],
-        short: Short::Zeros,
+        short: Short::Request,
         dims: &["1|0|-1|2|9999", "0|1|-1|2|99"],
         zero_without_first: true,
         ..COMMAND
