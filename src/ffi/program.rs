@@ -294,18 +294,21 @@ pub unsafe extern "C" fn cnc_rdprogdir(
         }
         let mut text = pp::DirText::new(r#type, length);
         let mut start = i32::from(datano_s);
-        // A number past datano_e ends the text, not the exchanges: FANUC's
-        // library goes on from the last number answered while it is below
-        // datano_e [fuzz, rdprogdir `s0Tvwwww`].
-        let mut past_end = false;
+        let mut wrapped = false;
+        // A number past datano_e ends that exchange's text, not the
+        // exchanges: FANUC's library goes on from the last number answered
+        // + 1 while that is not past datano_e [fuzz, rdprogdir `s0Tvwwww`],
+        // in 32-bit arithmetic: after 0x7fffffff it asks from 0x80000000 and
+        // writes the programs of that answer too [fuzz, rdprogdir 16i
+        // `s0Tvwwwwlong`]. Ours wraps once only (FANUC's would ask for ever
+        // of a CNC answering 0x7fffffff each time).
         'exchanges: loop {
             let d = h.call(&pp::progdir(start, pp::PROGDIR_CHUNK, i32::from(r#type)))?;
             let Some(last) = d.0.last().map(|e| e.number) else {
                 break;
             };
             for e in d.0.iter().take(pp::PROGDIR_CHUNK as usize) {
-                past_end |= e.number > i32::from(datano_e);
-                if past_end {
+                if e.number > i32::from(datano_e) {
                     break;
                 }
                 if !text.push(e) {
@@ -313,10 +316,15 @@ pub unsafe extern "C" fn cnc_rdprogdir(
                 }
             }
             // Numbers must grow from one exchange to the next.
-            if last < start || last >= i32::from(datano_e) {
+            if last < start {
                 break;
             }
-            start = last + 1;
+            let next = last.wrapping_add(1);
+            if next > i32::from(datano_e) || (next < start && std::mem::replace(&mut wrapped, true))
+            {
+                break;
+            }
+            start = next;
         }
         let b = text.finish();
         let n = b.len().min(length as usize);

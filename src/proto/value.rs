@@ -41,7 +41,7 @@ impl Value {
     ///   when |x| ≥ 1e-9) and written with a 9-digit mantissa
     ///   (10^8 ≤ |digits| < 10^9, trailing zeros added): 5·2^-1 → 250000000
     ///   with 8 decimals; values of 10^9 and more keep 9 significant digits
-    ///   with negative decimals. Below 1e-9: `tiny_to_decimal` (FANUC's
+    ///   (cut, not rounded) with negative decimals. Below 1e-9: `tiny_to_decimal` (FANUC's
     ///   rounding there, probed); beyond f64's range (exponents below about
     ///   -1000) it was not probed: we give ±999999999 · 10^300.
     pub fn to_decimal(&self) -> (i32, i16) {
@@ -77,7 +77,16 @@ fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
         let h = dec / 2;
         x * 10f64.powi(h) * 10f64.powi(dec - h)
     };
-    let digits = |dec: i32| scaled(dec).round();
+    // Past 9 digits (|x| ≥ 10^9, negative dec) FANUC's library cuts the
+    // mantissa toward zero [fuzz, rdmacror `s0Tvww`: -1069980923·2^10 →
+    // -109566046 · 10^4, not ...47]; below, it rounds (half away from 0).
+    let digits = |dec: i32| {
+        if dec < 0 {
+            (x / 10f64.powi(-dec)).trunc()
+        } else {
+            scaled(dec).round()
+        }
+    };
     let mut dec = 8 - floor_log10(x, scaled);
     let mut m = digits(dec);
     if m.abs() >= 1e9 {
@@ -176,6 +185,9 @@ mod tests {
         }
         let mut dec = 8 - x.abs().log10().floor() as i32;
         let digits = |dec: i32| {
+            if dec < 0 {
+                return (x / 10f64.powi(-dec)).trunc();
+            }
             let h = dec / 2;
             (x * 10f64.powi(h) * 10f64.powi(dec - h)).round()
         };
@@ -224,6 +236,15 @@ mod tests {
         for &(v, e, digits, dec) in probed {
             assert_eq!(binary_to_decimal(v, e), (digits, dec), "{v}·2^-{e}");
         }
+    }
+
+    /// Past 9 digits the mantissa is cut toward zero, as FANUC's Linux
+    /// library wrote it (oracle fuzz, cnc_rdmacror).
+    #[test]
+    fn large_values_are_cut_to_nine_digits() {
+        assert_eq!(binary_to_decimal(-1069980923, -10), (-109566046, -4));
+        assert_eq!(binary_to_decimal(1069980923, -10), (109566046, -4));
+        assert_eq!(binary_to_decimal(1234567891, 0), (123456789, -1));
     }
 
     #[test]
