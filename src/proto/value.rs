@@ -41,7 +41,8 @@ impl Value {
     ///   when |x| ≥ 1e-9) and written with a 9-digit mantissa
     ///   (10^8 ≤ |digits| < 10^9, trailing zeros added): 5·2^-1 → 250000000
     ///   with 8 decimals; values of 10^9 and more keep 9 significant digits
-    ///   with negative decimals. Below 1e-9: `tiny_to_decimal` (FANUC's
+    ///   with negative decimals; a 10-digit value is rounded to 9 digits
+    ///   (one decimal less) before it is scaled. Below 1e-9: `tiny_to_decimal` (FANUC's
     ///   rounding there, probed); beyond f64's range (exponents below about
     ///   -1000) it was not probed: we give ±999999999 · 10^300.
     pub fn to_decimal(&self) -> (i32, i16) {
@@ -55,6 +56,18 @@ impl Value {
 fn binary_to_decimal(value: i32, exp: i16) -> (i32, i16) {
     if value == 0 {
         return (0, exp);
+    }
+    // A value of 10 digits is first rounded to 9 (one decimal less), then
+    // scaled [fuzz, rdmacror `s0Tvww`: -1069980923·2^10 → -106998092·10 ·
+    // 2^10 → -109566046·10^4, where the exact product gives ...47; probed
+    // against FANUC's library: -1526768537·2^16 → -100058303·10^5].
+    // (Seen for whole numbers, exponent 0 or below, within f64's range;
+    // other exponents convert the value as it came.)
+    let whole = f64::from(value) * 2f64.powi(-i32::from(exp));
+    if value.unsigned_abs() >= 1_000_000_000 && exp <= 0 && whole.is_finite() {
+        let cut = (f64::from(value) / 10.0).round() as i32;
+        let (m, dec) = binary_to_decimal(cut, exp);
+        return (m, dec - 1);
     }
     let x = f64::from(value) * 2f64.powi(-i32::from(exp));
     if !x.is_finite() {
@@ -159,6 +172,11 @@ mod tests {
         if value == 0 {
             return (0, exp);
         }
+        let whole = f64::from(value) * 2f64.powi(-i32::from(exp));
+        if value.unsigned_abs() >= 1_000_000_000 && exp <= 0 && whole.is_finite() {
+            let (m, dec) = with_log10((f64::from(value) / 10.0).round() as i32, exp);
+            return (m, dec - 1);
+        }
         let x = f64::from(value) * 2f64.powi(-i32::from(exp));
         if !x.is_finite() {
             return (999_999_999 * value.signum(), -300);
@@ -224,6 +242,19 @@ mod tests {
         for &(v, e, digits, dec) in probed {
             assert_eq!(binary_to_decimal(v, e), (digits, dec), "{v}·2^-{e}");
         }
+    }
+
+    /// A 10-digit value is rounded to 9 digits before it is scaled, as
+    /// FANUC's Linux library converted these (oracle fuzz and probes,
+    /// cnc_rdmacror; recorded conversions).
+    #[test]
+    fn ten_digit_values_are_rounded_first() {
+        assert_eq!(binary_to_decimal(-1069980923, -10), (-109566046, -4));
+        assert_eq!(binary_to_decimal(-1526768537, -16), (-100058303, -6));
+        assert_eq!(binary_to_decimal(-908813196, -27), (-121978842, -9));
+        assert_eq!(binary_to_decimal(908813196, -27), (121978842, -9));
+        assert_eq!(binary_to_decimal(3, -29), (161061274, -1));
+        assert_eq!(binary_to_decimal(1234567891, 0), (123456789, -1));
     }
 
     #[test]

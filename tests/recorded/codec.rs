@@ -1135,13 +1135,16 @@ proptest! {
     }
 
     /// A binary record converts to the same number in decimal: 9 significant
-    /// digits, rounded at 9 decimal places.
+    /// digits, rounded at 9 decimal places; a 10-digit value is rounded to 9
+    /// digits first, as FANUC's library does, which may put the result a
+    /// digit further off.
     #[test]
     fn base2_records_keep_their_value(value in any::<i32>(), exp in -40i16..40) {
         let (m, d) = Value { value, base: 2, exp }.to_decimal();
         let want = f64::from(value) / 2f64.powi(i32::from(exp));
         let got = f64::from(m) / 10f64.powi(i32::from(d));
-        prop_assert!((want - got).abs() <= 0.51e-9 + want.abs() * 0.51e-8, "{} {} {}", want, m, d);
+        let digit = if value.unsigned_abs() >= 1_000_000_000 && exp <= 0 { 1.01e-8 } else { 0.51e-8 };
+        prop_assert!((want - got).abs() <= 0.51e-9 + want.abs() * digit, "{} {} {}", want, m, d);
         if value != 0 {
             prop_assert!((100_000_000..1_000_000_000).contains(&m.unsigned_abs()), "{}", m);
         }
