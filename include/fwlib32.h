@@ -290,6 +290,16 @@ typedef struct IODBTD {
 } IODBTD;
 
 /*
+ cnc_rd3dtooltip: the tool tip of the 3D handle feed, `axes[i]` and
+ `data[i]` for each of the axes the CNC answers (at most 5; the elements
+ past them are not written).
+ */
+typedef struct ODB3DHDL {
+    short axes[5];
+    LONG data[5];
+} ODB3DHDL;
+
+/*
  One record of ODBAHIS (48 bytes).
  */
 typedef struct ODBAHIS_ALM {
@@ -2900,6 +2910,15 @@ short cnc_rd2tlifedata(unsigned short FlibHndl,
                        short grp_num,
                        short tuse_num,
                        struct IODBTD *tldata);
+
+/*
+ Reads the tool tip of the 3D handle feed (needs the FOCAS option, else
+ EW_NOOPT; the elements past the CNC's axes are not written).
+
+ # Safety
+ `data` must be NULL or point to a writable ODB3DHDL.
+ */
+short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
 
 /*
  Reads the execution pointer: program number and block number (4 bytes

@@ -190,6 +190,24 @@ pub(crate) unsafe fn exec(
             return Err(Error::length());
         }
     }
+    if f.columns.is_some() {
+        // Columns: as many elements in each (at most its field's `n`).
+        let n = values.len() / f.reply.len().max(1);
+        for (k, field) in f.reply.iter().enumerate() {
+            let one = [Field {
+                n: n as u16,
+                ..*field
+            }];
+            let mut v = values[k * n..].iter().copied();
+            // SAFETY: the caller's contract; `n` is at most the field's `n`.
+            unsafe { write_fields(&one, outs, |_| offsets[k], &mut v) };
+        }
+        if let Some(e) = late.into_inner().ok().flatten() {
+            h.note(&e);
+            return Err(e);
+        }
+        return Ok(());
+    }
     let mut v = values.into_iter();
     // SAFETY: the caller's contract (offsets and elements in the outputs).
     unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };

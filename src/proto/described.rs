@@ -10,7 +10,9 @@ use super::packet::{CLASS_PMC, ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, Word, ZERO};
+use crate::spec::{
+    Columns, Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, Word, ZERO,
+};
 
 /// The request form for the CNC's class, if the function has one.
 pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
@@ -60,7 +62,7 @@ impl Call for Described<'_> {
         let Some(form) = form(self.f, cx.class) else {
             return;
         };
-        let sub_of = |ws: &[Word]| {
+        let sub_of = |cmd: u16, ws: &[Word]| {
             let mut words = [0i32; 5];
             for (w, f) in words.iter_mut().zip(ws) {
                 *w = match *f {
@@ -78,12 +80,12 @@ impl Call for Described<'_> {
                 };
             }
             if form.class == CLASS_PMC {
-                ReqSub::pmc(form.cmd, &words)
+                ReqSub::pmc(cmd, &words)
             } else {
-                ReqSub::cnc(form.cmd, &words)
+                ReqSub::cnc(cmd, &words)
             }
         };
-        let sub = sub_of(form.words);
+        let sub = sub_of(form.cmd, form.words);
         out.push(match &self.f.payload {
             Some(p) => {
                 let mut w = Writer::new();
@@ -106,9 +108,15 @@ impl Call for Described<'_> {
             }
             None => sub,
         });
-        out.extend(self.f.more.iter().map(|ws| sub_of(ws)));
+        out.extend(self.f.more.iter().enumerate().map(|(i, ws)| {
+            let cmd = self.f.more_cmds.get(i).copied().unwrap_or(form.cmd);
+            sub_of(cmd, ws)
+        }));
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
+        if let Some(c) = self.f.columns {
+            return columns(self.f, c, resp, self.late);
+        }
         if self.f.more.is_empty() {
             let payload = &sub(resp, 0)?.payload;
             let need = self.f.reply_len();
@@ -142,6 +150,50 @@ impl Call for Described<'_> {
         }
         Ok(out)
     }
+}
+
+/// The elements of a reply of columns ([`Columns`]), column after column,
+/// as many in each: the first column's elements the count. An error of a
+/// later subpacket (past the columns) goes to `late`, the columns being
+/// returned.
+fn columns(
+    f: &Func,
+    c: Columns,
+    resp: &[RespSub],
+    late: Option<&std::sync::Mutex<Option<crate::error::Error>>>,
+) -> Result<Vec<i64>> {
+    let stride = |k: usize| usize::from(c.stride.get(k).copied().unwrap_or(1).max(1));
+    let cols = f.reply.len();
+    for k in 0..cols {
+        sub(resp, k)?;
+    }
+    let n = f.reply.first().map_or(0, |first| {
+        (resp[0].payload.len() / stride(0)).min(usize::from(first.n))
+    });
+    let mut out = Vec::with_capacity(n * cols);
+    for (k, field) in f.reply.iter().enumerate() {
+        let p = padded(Short::Zeros, &resp[k].payload, n * stride(k))?;
+        for i in 0..n {
+            let one = Field { n: 1, ..*field };
+            let mut r = Reader::new(&p[i * stride(k)..]);
+            read_fields(&mut r, &[one], &[], &mut out)?;
+        }
+    }
+    // The first later subpacket answering `none` ends the reply.
+    let ended = resp.get(cols).is_some_and(|s| s.error == c.none);
+    let later = (cols..=f.more.len())
+        .filter(|_| !ended)
+        .find_map(|k| sub(resp, k).err());
+    match (later, late) {
+        (Some(e), Some(l)) => {
+            if let Ok(mut l) = l.lock() {
+                *l = Some(e);
+            }
+        }
+        (Some(e), None) => return Err(e),
+        (None, _) => {}
+    }
+    Ok(out)
 }
 
 /// A subpacket's payload at least `need` bytes long, as [`Short`] says

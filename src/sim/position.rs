@@ -13,7 +13,7 @@ use super::profile::{Axis, Spindle};
 use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
-use crate::proto::cmd::{POSERR, RDSPCSS, RDSPDLALM};
+use crate::proto::cmd::{HDL3D_AXES, HDL3D_TIP, POSERR, RDSPCSS, RDSPDLALM};
 use crate::proto::machine::RDCTRLSIG;
 use crate::proto::position::{
     ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
@@ -22,6 +22,7 @@ use crate::proto::position::{
 };
 use crate::proto::program::AUX_ORDER;
 use crate::proto::value::{BASE_10, Value};
+use crate::proto::wire::Writer;
 
 pub(super) const ROUTES: &[Route] = &[
     Route::cnc(ALARM, |m, q| enc(m.alarm_bits(q.path))),
@@ -88,7 +89,39 @@ pub(super) const ROUTES: &[Route] = &[
         }
     }),
     Route::table(RDSPCSS, spindle_css),
+    // cnc_rd3dtooltip: [1] the 3D handle's axes and their tool tip.
+    Route::cnc(HDL3D_AXES, |m, q| m.handle3d(q.path, q.args[0], false)),
+    Route::cnc(HDL3D_TIP, |m, q| m.handle3d(q.path, q.args[0], true)),
 ];
+
+/// The most axes the 3D handle answers for (ODB3DHDL's arrays).
+const HANDLE3D_AXES: usize = 5;
+
+impl Machine {
+    /// cnc_rd3dtooltip's subpackets: `[1]` the path's first axes (at most
+    /// [`HANDLE3D_AXES`]), their numbers (0x0110, `axes`) or the tool tip,
+    /// each axis's absolute position (the programmed tool tip), as value
+    /// records (0x0111, `data`). `[2]` (a second
+    /// set FANUC's library asks for) is not on this CNC: EW_NOOPT, which
+    /// FANUC's library reads as "none" [ours].
+    fn handle3d(&self, path: u16, k: i32, tip: bool) -> Reply<Vec<u8>> {
+        let p = self.path(path)?;
+        match k {
+            1 => {}
+            2 => return Err(CncError::new(crate::ew::EW_NOOPT)),
+            _ => return Err(NUMBER),
+        }
+        let axes = p.axes.iter().take(HANDLE3D_AXES);
+        if !tip {
+            let mut w = Writer::new();
+            (1..=axes.len()).for_each(|n| w.i16(n as i16));
+            return Ok(w.into_vec());
+        }
+        enc(Ok(axes
+            .map(|a| Value::decimal(a.absolute, a.decimals))
+            .collect::<Vec<Value>>()))
+    }
+}
 
 /// cnc_rdspdlalm: the alarm word of each spindle (at most 8).
 fn spindle_alarms(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {

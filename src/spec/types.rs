@@ -390,6 +390,13 @@ pub struct Func {
     /// `reply`'s fields, in order (the simulator answers each with the
     /// first share's layout); no records.
     pub more: &'static [&'static [Word]],
+    /// The command of each of [`Func::more`]'s subpackets, in order (empty:
+    /// the form's command for all): subpackets of alternating commands
+    /// (cnc_rd3dtooltip asks 0x0110 and 0x0111, twice).
+    pub more_cmds: &'static [u16],
+    /// The reply as columns, one per subpacket ([`Columns`]); `None`: the
+    /// fields as [`Func::more`] shares them.
+    pub columns: Option<Columns>,
     /// Classes on which no request is sent (no form of theirs): the
     /// answer is what the library learnt at connect.
     pub local: Option<Local>,
@@ -425,6 +432,25 @@ pub struct Func {
     /// read as [`Func::short`] says (zeros: FANUC's library reads them from
     /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
     pub counted: Option<u8>,
+}
+
+/// A reply of columns (with [`Func::more`]): reply field k (its `n` the
+/// most elements, its `to` an array member of output 0) is read from
+/// subpacket k's answer (the form's first, then `more`'s), one element
+/// every `stride[k]` bytes (the field's integer first, the rest of the
+/// element skipped: the base and exponent of a value record). The
+/// elements are as many as subpacket 0's payload holds (its length /
+/// `stride[0]`), at most the field's `n`; a column's answer shorter than
+/// that reads zeros past its end. A column's subpacket answering an error
+/// makes it the call's, nothing written. The subpackets past the reply's
+/// fields are not read into the outputs (cnc_rd3dtooltip's second pair,
+/// which FANUC's library writes past the caller's struct): the first of
+/// them answering error `none` ends the reply; another error of theirs is
+/// the call's, returned once the columns are written.
+#[derive(Debug, Clone, Copy)]
+pub struct Columns {
+    pub stride: &'static [u8],
+    pub none: i16,
 }
 
 /// Output 0's member `zero` reads 0 unless member `of` (its value cut to

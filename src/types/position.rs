@@ -248,3 +248,13 @@ pub struct ODBPSER {
     pub poserr1: LONG,
     pub poserr2: LONG,
 }
+
+/// cnc_rd3dtooltip: the tool tip of the 3D handle feed, `axes[i]` and
+/// `data[i]` for each of the axes the CNC answers (at most 5; the elements
+/// past them are not written).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODB3DHDL {
+    pub axes: [c_short; 5],
+    pub data: [LONG; 5],
+}

@@ -451,6 +451,7 @@ rust_layouts! {
     // --- tool_axis collectors (issue 24) ---
     ODBPSER { poserr1, poserr2 }
     ODBCMD { adrs, num, flag, cmd_val, dec_val }
+    ODB3DHDL { axes, data }
 
     // --- P-code macros and settings (issue 24) ---
     ODBPM { datano, dummy, mcr_val, dec_val }

@@ -73,6 +73,33 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library reads the bytes a short (empty or halved) subpacket answer lacks from its receive buffer: the next subpacket's header, or bytes past the last one; ours reads them as zeros",
     },
     Deviation {
+        function: "cnc_rd3dtooltip",
+        cases: &["rd3dtooltip_*_shape_longer"],
+        reason: "FANUC's library writes an element for every two bytes of the axes answer, past the caller's ODB3DHDL (5 axes) for a longer one; ours writes at most 5",
+    },
+    Deviation {
+        function: "cnc_rd3dtooltip",
+        cases: &["rd3dtooltip_*_shape_half_sub2"],
+        reason: "FANUC's library reads the values a short tool-tip answer lacks from its receive buffer (the next subpacket's header); ours reads them as zeros",
+    },
+    Deviation {
+        function: "cnc_rd3dtooltip",
+        cases: &[
+            // oracle fuzz: an axes answer of another length (s0L), a
+            // tool-tip answer emptied, cut or one byte short.
+            "fuzz_rd3dtooltip_*_s0L*",
+            "fuzz_rd3dtooltip_*_s1Tv*empty*",
+            "fuzz_rd3dtooltip_*_s1Tv*cut*",
+            "fuzz_rd3dtooltip_*_s1Tv*short1*",
+        ],
+        reason: "an axes answer of another length, or a tool-tip answer shorter than it: FANUC's library writes an element per two bytes of the axes answer (past the caller's ODB3DHDL beyond 5) and reads the values the tool-tip answer lacks from the next subpacket's header; ours writes at most 5, the missing values as zeros",
+    },
+    Deviation {
+        function: "cnc_rd3dtooltip",
+        cases: &["rd3dtooltip_*_shape_missing_sub2"],
+        reason: "with the second subpacket missing from the answer and the later ones shifted up, FANUC's library reads the third (0x0110[2]) in its place and returns its error (the simulator's EW_NOOPT), writing nothing; ours sees that the shifted subpacket does not echo the command asked and returns EW_PROTOCOL (-17), writing nothing",
+    },
+    Deviation {
         function: "cnc_rdparam3",
         cases: &["rdparam3_v2_shape_empty", "rdparam3_v3_shape_empty"],
         reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",

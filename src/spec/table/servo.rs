@@ -125,4 +125,35 @@ pub const FUNCS: &[Func] = &[
         reply: &[to(I32, "", I32)],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rd3dtooltip",
+        learnt: Some(&[
+            "3 more subpackets or frames after the first",
+            "every coded reply was refused (a count, length or type tag inside)",
+            "no output written and no input read",
+        ]),
+        doc: "Reads the tool tip of the 3D handle feed (needs the FOCAS option, else EW_NOOPT; the elements past the CNC's axes are not written).",
+        params: &[Param::Out("data", "ODB3DHDL")],
+        checks: &[NEEDS_OPTION],
+        forms: &[every_class(cmd::HDL3D_AXES, &[Word::Const(1)])],
+        more: &[&[Word::Const(1)], &[Word::Const(2)], &[Word::Const(2)]],
+        more_cmds: &[cmd::HDL3D_TIP, cmd::HDL3D_AXES, cmd::HDL3D_TIP],
+        // The axes from 0x0110[1], the value word of each 0x0111[1] record;
+        // the second pair ([2]) is not read (deviation 3dtooltip_second).
+        reply: &[
+            Field {
+                n: 5,
+                ..to(I16, "axes", I16)
+            },
+            Field {
+                n: 5,
+                ..to(I32, "data", I32)
+            },
+        ],
+        columns: Some(Columns {
+            stride: &[2, 8],
+            none: crate::ew::EW_NOOPT,
+        }),
+        ..COMMAND
+    },
 ];
