@@ -553,4 +553,5 @@ mod collectors_o8;
 mod collectors_panel_system;
 mod collectors_pcode;
 mod collectors_programs_macros;
+mod collectors_settings;
 mod collectors_tool_axis;
