@@ -3337,6 +3337,20 @@ short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct OD
 short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
 
 /*
+ Reads the number of the custom macro variable named `name` (a C string
+ of at most 63 characters, sent in a 64-byte field, zeros after its NUL;
+ no NUL in its first 64 bytes is EW_DATA before any traffic) into
+ `number`, and the attribute word the CNC answers after it into `attr`;
+ `length` goes as the request's first word, whatever it is.
+
+ # Safety
+ `number` must be NULL or point to a writable long.
+ `attr` must be NULL or point to a writable short.
+ `name` must be NULL or point to a readable char.
+ */
+short cnc_rdmacronum(unsigned short FlibHndl, char *name, long length, long *number, short *attr);
+
+/*
  Reads the custom macro variables `s_no`..`e_no` into `buf->data`
  (8 bytes per variable, as FANUC's x86-64 library writes them).
  `e_no < s_no` is EW_NUMBER without traffic; the request stops at the end

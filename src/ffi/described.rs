@@ -6,7 +6,7 @@
 use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::EW_FUNC;
+use crate::ew::{EW_DATA, EW_FUNC};
 use crate::proto::described::{Described, form, payload_numbers, payload_records, payload_values};
 use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
@@ -147,9 +147,34 @@ pub(crate) unsafe fn exec(
         unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
         return Ok(());
     };
+    // A C string input: up to its NUL, at most the field's bytes.
+    let text = match f.payload {
+        Some(p) if p.count == crate::spec::TEXT && !pay.input.is_null() => {
+            let room = pay.stride;
+            // SAFETY: the caller's string, read up to its NUL and at most
+            // the field's `room` bytes.
+            let len = (0..room).find(|&k| unsafe { pay.input.add(k).read() } == 0);
+            let Some(len) = len else {
+                // FANUC's library reports detail 1 (the first argument).
+                let mut s = h.state.lock();
+                if !s.detail_frozen {
+                    s.detail = (1, 0);
+                }
+                return Err(Error::local(EW_DATA, "no NUL in the text field"));
+            };
+            let mut b = unsafe { std::slice::from_raw_parts(pay.input, len) }.to_vec();
+            b.resize(room, 0);
+            Some(b)
+        }
+        _ => None,
+    };
     let n = payload_records(f, args);
     let payload = match n {
         0 => Vec::new(),
+        _ if text.is_some() => {
+            let b = text.as_deref().unwrap_or_default();
+            payload_values(f, b, pay.stride, pay.offsets, 1)
+        }
         _ if f.input().is_none() => payload_numbers(f, cx.class, args).unwrap_or_default(),
         // SAFETY: the caller's array holds at least `n` records (contract).
         n => payload_values(

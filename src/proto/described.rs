@@ -11,7 +11,7 @@ use super::value::{BASE_2, BASE_10, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
 use crate::spec::{
-    Columns, Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, Word, ZERO,
+    Columns, Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, TEXT, Word, ZERO,
 };
 
 /// The request form for the CNC's class, if the function has one.
@@ -403,7 +403,7 @@ pub fn payload_numbers(f: &Func, class: CncClass, args: &[i32]) -> Option<Vec<i6
 pub fn payload_records(f: &Func, args: &[i32]) -> usize {
     f.payload.map_or(0, |p| {
         let n = match p.count {
-            ONE | NUMBERS => 1,
+            ONE | NUMBERS | TEXT => 1,
             c => args.get(usize::from(c)).copied().unwrap_or(0),
         };
         usize::try_from(n).unwrap_or(0).min(usize::from(p.max))

@@ -7,7 +7,7 @@ pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{RDMACROINFO, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRPMACRO};
+use crate::proto::cmd::{RDMACROINFO, RDMACRONUM, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRPMACRO};
 use crate::proto::macros::{
     Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
 };
@@ -45,7 +45,26 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDPMACRO, pcode_read),
     Route::table(RDPMACROINFO2, pcode_info2),
     Route::table(WRPMACRO, pcode_write),
+    Route::table(RDMACRONUM, macro_number),
 ];
+
+/// cnc_rdmacronum: the number and attribute of the custom macro variable
+/// whose name is the payload's bytes (up to a NUL), from the path's
+/// `[path.macros.names]`; a name the path does not have is EW_DATA.
+fn macro_number(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let name: Vec<u8> = q
+        .payload
+        .iter()
+        .map(|&b| b as u8)
+        .take_while(|&b| b != 0)
+        .collect();
+    let names = &m.macros(q.path)?.names;
+    let (n, attr) = std::str::from_utf8(&name)
+        .ok()
+        .and_then(|k| names.get(k))
+        .ok_or(CncError::new(ew::EW_DATA))?;
+    Ok(vec![i64::from(*n), i64::from(*attr)])
+}
 
 /// cnc_wrpmacro: P-code variables `s..=e` (the request's first two words)
 /// from the payload's records (digits, places), which later reads of the

@@ -123,6 +123,9 @@ commands! {
     /// cnc_rdpmacroinfo2: (1,0x00e7) the P-code macro variables' counts
     /// and types (three ranges).
     RDPMACROINFO2 = CLASS_CNC 0x00e7 [cnc_rdpmacroinfo2];
+    /// cnc_rdmacronum: (1,0x029f)[length, 0, 0, 0, length] + the name's
+    /// `length` bytes; the answer: u32 number, i16 attribute.
+    RDMACRONUM = CLASS_CNC 0x029f [cnc_rdmacronum];
     /// 16i: read diagnosis data [s, e, axis].
     DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
     /// Both classes: diagnosis numbers and attributes [s, n].

@@ -324,6 +324,13 @@ pub const ONE: u8 = u8::MAX;
 /// `dec_val`); the fields' `to` and `elem` are not read.
 pub const NUMBERS: u8 = u8::MAX - 1;
 
+/// [`Payload::count`] of an input that is a C string (cnc_rdmacronum's
+/// name): one record, its one `U8` field of `n` bytes the string up to
+/// its NUL and zeros after it (the caller's bytes past the NUL are never
+/// read); a string with no NUL in its first `n` bytes is EW_DATA before
+/// any traffic.
+pub const TEXT: u8 = u8::MAX - 2;
+
 /// The records a write sends as its request's payload, read from its
 /// [`Param::In`] array: number parameter `count` of them ([`ONE`]: one),
 /// at most `max`.

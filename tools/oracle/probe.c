@@ -46,6 +46,9 @@ static unsigned short port;
 static unsigned short slots[16] = {0xCCCC};
 static int cur;
 static unsigned char b0[BUF], b1[BUF];
+/* The input a function reads beside two outputs (cnc_rdmacronum's name):
+ * filled from its hex argument, never reported (the outputs are b0, b1). */
+static unsigned char b2[BUF];
 static char *argv_[MAXARG];
 static int argc_;
 static jmp_buf missing;
@@ -124,6 +127,7 @@ static long long N(int i) {
 #define H (slots[cur])
 #define B0 ((void *)b0)
 #define B1 ((void *)b1)
+#define B2 ((void *)b2)
 
 static void field(const char *name, long long v) {
     size_t n = strlen(fields);
@@ -641,6 +645,7 @@ int main(int argc, char **argv) {
             fill = FILL;
             memset(b0, FILL, BUF);
             memset(b1, FILL, BUF);
+            memset(b2, FILL, BUF);
         }
         fields[0] = 0;
         sent = 0;

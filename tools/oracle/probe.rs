@@ -83,6 +83,13 @@ pub fn generated_words() -> String {
         // A count goes through probe.c's SHORT_IO as `num`, the name the
         // cases record its value out under.
         let mut count = None;
+        // An input beside two outputs goes in b2 (the outputs keep b0, b1).
+        let pointers = f
+            .params
+            .iter()
+            .filter(|p| matches!(p, Param::Out(..) | Param::In(..)))
+            .count();
+        let in_b2 = pointers > 2 && f.input().is_some();
         let args: Vec<String> = f
             .params
             .iter()
@@ -96,6 +103,7 @@ pub fn generated_words() -> String {
                     count = Some(n);
                     "&num".to_string()
                 }
+                Param::In(..) if in_b2 => "B2".to_string(),
                 Param::Out(..) | Param::In(..) => {
                     b += 1;
                     format!("B{}", b - 1)
@@ -104,7 +112,7 @@ pub fn generated_words() -> String {
             .collect();
         // A write's records come as the hex argument after the numbers.
         let fill = match f.input() {
-            Some(_) => format!("fill_hex(b0, {}); ", n + 1),
+            Some(_) => format!("fill_hex(b{}, {}); ", if in_b2 { 2 } else { 0 }, n + 1),
             None => String::new(),
         };
         let call = format!(

@@ -19,6 +19,9 @@ pub struct Macros {
     pub protected: Vec<(i32, i32)>,
     /// Values (digits, decimal places); a missing number is vacant.
     pub values: BTreeMap<i32, (i32, i16)>,
+    /// Variable names (`NAME = [number, attr]`): cnc_rdmacronum answers a
+    /// name's number and the attribute word it reads after it.
+    pub names: BTreeMap<String, (i32, i16)>,
 }
 
 impl Default for Macros {
@@ -28,6 +31,7 @@ impl Default for Macros {
             ranges: vec![(100, 199), (500, 999)],
             protected: Vec::new(),
             values: BTreeMap::new(),
+            names: BTreeMap::new(),
         }
     }
 }
@@ -42,6 +46,9 @@ struct MacrosToml {
     /// number = "decimal text" ("12.500" keeps three places).
     #[serde(default)]
     values: BTreeMap<String, String>,
+    /// NAME = [number, attr] (cnc_rdmacronum).
+    #[serde(default)]
+    names: BTreeMap<String, (i32, i16)>,
 }
 
 impl TryFrom<MacrosToml> for Macros {
@@ -72,6 +79,7 @@ impl Macros {
             },
             protected: pairs(t.protected)?,
             values: BTreeMap::new(),
+            names: t.names,
         };
         for (k, v) in t.values {
             let n: i32 = k
@@ -118,6 +126,7 @@ impl Default for PCodeMacros {
                 ranges: PCODE_RANGES.to_vec(),
                 protected: Vec::new(),
                 values: BTreeMap::new(),
+                names: BTreeMap::new(),
             },
             v2_type: 0,
             v1_type: 0,

@@ -169,4 +169,32 @@ pub const FUNCS: &[Func] = &[
         ],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdmacronum",
+        learnt: Some(&[]),
+        doc: "Reads the number of the custom macro variable named `name` (a C string of at most 63 characters, sent in a 64-byte field, zeros after its NUL; no NUL in its first 64 bytes is EW_DATA before any traffic) into `number`, and the attribute word the CNC answers after it into `attr`; `length` goes as the request's first word, whatever it is.",
+        params: &[
+            Param::In("name", "char"),
+            Param::Long("length"),
+            Param::Out("number", "long"),
+            Param::Out("attr", "short"),
+        ],
+        forms: &[every_class(cmd::RDMACRONUM, &[Word::Arg(0)])],
+        reply: &[to(U32, "", U32), to_out(1, I16, "", I16)],
+        // The name in a 64-byte field (63 characters and its NUL).
+        payload: Some(Payload {
+            fields: &[Field {
+                wire: U8,
+                n: 64,
+                out: 0,
+                to: Some(""),
+                c: U8,
+                arg: None,
+            }],
+            elem: "char[64]",
+            count: TEXT,
+            max: 1,
+        }),
+        ..COMMAND
+    },
 ];
