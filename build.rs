@@ -30,6 +30,9 @@ mod ew;
 #[path = "src/ffi/exported.rs"]
 mod exported;
 #[allow(dead_code)]
+#[path = "src/spec/reply.rs"]
+mod reply;
+#[allow(dead_code)]
 #[path = "src/spec/table/mod.rs"]
 mod table;
 #[allow(dead_code)]

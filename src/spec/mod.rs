@@ -2,6 +2,7 @@
 //! entry each in [`FUNCS`]. Everything above reads it; it reads nothing.
 
 pub mod commands;
+pub mod reply;
 pub mod table;
 pub mod types;
 
