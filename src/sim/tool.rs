@@ -189,7 +189,7 @@ impl Machine {
         Ok(())
     }
 
-    /// 0x014c [tool_no] + a record (cnc_wrtool's payload fields: T code,
+    /// `0x014c [tool_no]` + a record (cnc_wrtool's payload fields: T code,
     /// life counter, life, rest (not kept), life status, custom bits,
     /// tool information, H, D, spindle speed, feedrate, magazine, pot, G,
     /// W, gno, grp, edge, original magazine and pot, custom 1..20):

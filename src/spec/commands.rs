@@ -299,10 +299,10 @@ commands! {
     PDF_DELLINE = CLASS_CNC 0x00f2 [cnc_pdf_delline];
     PDF_DELALL = CLASS_CNC 0x00f3 [cnc_pdf_delall];
     EXEPRGNAME2 = CLASS_CNC 0x00fc [cnc_exeprgname2];
-    /// (1,0x0110)[k]: the 3D handle's axes (i16 each), k 1 or 2; sent with
-    /// 0x0111[k], twice, in one request.
+    /// `(1,0x0110)[k]`: the 3D handle's axes (i16 each), k 1 or 2; sent with
+    /// `0x0111[k]`, twice, in one request.
     HDL3D_AXES = CLASS_CNC 0x0110 [cnc_rd3dtooltip];
-    /// (1,0x0111)[k]: the 3D handle's tool tip, a value record per axis.
+    /// `(1,0x0111)[k]`: the 3D handle's tool tip, a value record per axis.
     HDL3D_TIP = CLASS_CNC 0x0111 [cnc_rd3dtooltip];
     RDTIMER = CLASS_CNC 0x0120 [cnc_rdtimer];
     /// cnc_rdtool: tool management data, args [top, n] (n at most

@@ -24,7 +24,7 @@ pub enum Int {
     /// places (this one's), as FANUC's library converts a binary record
     /// (`crate::proto::value::Value::to_decimal`); sent (a write's payload,
     /// the simulator's answer), the digits and places become a base-10
-    /// record, or a binary one where [`Func::binary`] says. Its C type
+    /// record, or a binary one where [`Func::binary`](super::Func::binary) says. Its C type
     /// (`c`) is the places' member, an `I16`.
     BaseExp,
 }
@@ -151,7 +151,7 @@ pub enum Short {
 }
 
 /// What a reply holding more records than the caller's count
-/// ([`Param::Count`]) asked for means.
+/// ([`Param::Count`](super::Param::Count)) asked for means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Overflow {
     /// The records past the count are left out.
@@ -162,7 +162,7 @@ pub enum Overflow {
     Refuse,
 }
 
-/// A reply of columns (with [`Func::more`]): reply field k (its `n` the
+/// A reply of columns (with [`Func::more`](super::Func::more)): reply field k (its `n` the
 /// most elements, its `to` an array member of output 0) is read from
 /// subpacket k's answer (the form's first, then `more`'s), one element
 /// every `stride[k]` bytes (the field's integer first, the rest of the
