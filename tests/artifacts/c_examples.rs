@@ -6,6 +6,7 @@ use fwlib32::sim::{Profile, Simulator};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use crate::toolchain;
 
@@ -57,7 +58,12 @@ fn build_c(src: &Path, dir: &Path) -> PathBuf {
 /// its arguments). It must exit 0; its `key=value` lines are returned with
 /// the simulator, for the test to compare with the machine's state.
 pub(crate) fn run_c_test(name: &str, profile: Profile) -> (HashMap<String, String>, Simulator) {
-    let dir = toolchain::lib_dir(name);
+    // A directory of its own per run: tests running the same program on
+    // other profiles at the same time must not build over each other
+    // ("Text file busy") nor remove each other's directory.
+    static RUNS: AtomicUsize = AtomicUsize::new(0);
+    let run = RUNS.fetch_add(1, Ordering::Relaxed);
+    let dir = toolchain::lib_dir(&format!("{name}-{run}"));
     let exe = build_c(&root().join("tests/c").join(format!("{name}.c")), &dir);
     let sim = Simulator::start(profile, "127.0.0.1:0").unwrap();
     let out = toolchain::target_command(&exe)

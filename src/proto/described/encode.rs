@@ -113,29 +113,46 @@ pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
 /// payload's length, is not compared). Among those (or, when none, among
 /// all of the command's) the one with the longest reply layout (`longest`) describes
 /// the whole answer and the others read a prefix of it (cnc_rdtofsinfo and
-/// cnc_rdtofsinfo2).
+/// cnc_rdtofsinfo2). A subpacket no function sends first is the later
+/// subpacket of the function whose frame carries it, then any of the
+/// command's.
 pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
     let of_cmd = || {
         crate::spec::FUNCS.iter().filter(|f| {
             form(f, class).is_some_and(|form| form.cmd == sub.cmd && form.class == sub.class)
         })
     };
-    let carried = |f: &&Func| {
+    // Whether the request carries the constants of these words.
+    let carries = |f: &Func, words: &[Word]| {
+        (0..5).all(|k| {
+            let want = match words.get(k) {
+                Some(Word::Const(c)) => *c,
+                Some(_) => return true,
+                None if k == 4 && f.payload.is_some() => return true,
+                None => 0,
+            };
+            sub.args.get(k).copied().unwrap_or(0) == want
+        })
+    };
+    let carried = |f: &&Func| form(f, class).is_some_and(|form| carries(f, form.words));
+    // A later subpacket of a function's frame (cnc_rdposerrs2's \[2\]).
+    let later = |f: &&Func| {
         form(f, class).is_some_and(|form| {
-            (0..5).all(|k| {
-                let want = match form.words.get(k) {
-                    Some(Word::Const(c)) => *c,
-                    Some(_) => return true,
-                    None if k == 4 && f.payload.is_some() => return true,
-                    None => 0,
-                };
-                sub.args.get(k).copied().unwrap_or(0) == want
-            })
+            form.class == sub.class
+                && f.more.iter().enumerate().any(|(i, ws)| {
+                    f.more_cmds.get(i).copied().unwrap_or(form.cmd) == sub.cmd && carries(f, ws)
+                })
         })
     };
     of_cmd()
         .filter(carried)
         .max_by_key(|f| longest(f))
+        .or_else(|| {
+            crate::spec::FUNCS
+                .iter()
+                .filter(later)
+                .max_by_key(|f| longest(f))
+        })
         .or_else(|| of_cmd().max_by_key(|f| longest(f)))
 }
 
