@@ -379,6 +379,10 @@ mod tests {
             "names as 62-byte text fields",
         ),
         (
+            (CLASS_CNC, crate::proto::cmd::HDL3D_AXES),
+            "cnc_rd3dtooltip's columns: the axes (0x0110) and their tool tip (0x0111) answer in subpackets of their own, which no one layout encodes",
+        ),
+        (
             (CLASS_CNC, crate::proto::maintenance::RDPM_ITEM),
             "the item records of src/proto/maintenance.rs (PmItem)",
         ),

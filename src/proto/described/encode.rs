@@ -3,7 +3,12 @@
 //! (client), and, for the simulator, a request's arguments and payload read
 //! back and the function a request subpacket belongs to.
 
-use super::*;
+use crate::proto::macros::to_base2;
+use crate::proto::open::CncClass;
+use crate::proto::packet::ReqSub;
+use crate::proto::value::BASE_10;
+use crate::proto::wire::{DecodeError, Writer};
+use crate::spec::{Field, Form, Func, Int, Word};
 
 /// The reply payload for these integers (simulator side): the fixed
 /// fields, then whole records; each integer cut to its wire width, as the
@@ -87,24 +92,6 @@ pub(super) fn write_fields_in<'a>(
     }
 }
 
-/// The integers of a write's request payload (simulator side): whole
-/// records of [`Func::payload`]'s fields, as [`Described`] sent them; a
-/// trailing part record is left out.
-pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
-    let Some(p) = &f.payload else {
-        return Vec::new();
-    };
-    let size: usize = p.fields.iter().map(Field::wire_len).sum();
-    let mut out = Vec::new();
-    let mut r = Reader::new(bytes);
-    for _ in 0..bytes.len() / size.max(1) {
-        if read_fields(&mut r, p.fields, &[], &mut out).is_err() {
-            break;
-        }
-    }
-    out
-}
-
 /// The described function a request subpacket asks for, on a CNC of this
 /// class (simulator dispatch). Where functions share a command and their
 /// forms' constant words tell them apart (cnc_rdposerrs \[0\] and
@@ -179,4 +166,12 @@ pub fn args_of(f: &Func, class: CncClass, sub: &ReqSub) -> Vec<i32> {
         }
     }
     args
+}
+
+/// The request form for the CNC's class, if the function has one.
+pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
+    f.form(
+        class.is_16i(),
+        matches!(class, CncClass::Series16 { kind: 2 }),
+    )
 }

@@ -4,27 +4,18 @@
 //! payload is the layout's big-endian integers, one after another.
 
 use super::call::{Call, Ctx, sub};
-use super::macros::to_base2;
 use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
-use super::value::{BASE_2, BASE_10, Value};
+use super::value::{BASE_2, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
 use crate::spec::{
-    Columns, Field, Form, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, TEXT, Word, ZERO,
+    Columns, Field, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, TEXT, Word, ZERO,
 };
 
 mod encode;
-pub use encode::{args_of, encode, for_request, payload_of};
+pub use encode::{args_of, encode, for_request, form};
 use encode::{binary_records, write_fields, write_fields_in};
-
-/// The request form for the CNC's class, if the function has one.
-pub fn form(f: &Func, class: CncClass) -> Option<&'static Form> {
-    f.form(
-        class.is_16i(),
-        matches!(class, CncClass::Series16 { kind: 2 }),
-    )
-}
 
 /// One call of a described function with the caller's number arguments
 /// (then the input members its request words carry, [`Func::inputs`];
@@ -453,4 +444,22 @@ fn read_fields(
         }
     }
     Ok(())
+}
+
+/// The integers of a write's request payload (simulator side): whole
+/// records of [`Func::payload`]'s fields, as [`Described`] sent them; a
+/// trailing part record is left out.
+pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
+    let Some(p) = &f.payload else {
+        return Vec::new();
+    };
+    let size: usize = p.fields.iter().map(Field::wire_len).sum();
+    let mut out = Vec::new();
+    let mut r = Reader::new(bytes);
+    for _ in 0..bytes.len() / size.max(1) {
+        if read_fields(&mut r, p.fields, &[], &mut out).is_err() {
+            break;
+        }
+    }
+    out
 }
