@@ -179,6 +179,19 @@ impl Call for ReadExt {
                     }
                     v.resize(8, 0);
                 }
+                // The frame's last value answer cut inside its values reads
+                // zeros past its end too [fuzz, rddiag_ext32 30i `s3Tvwwwwcut`:
+                // a value of 3 bytes `5e3bb7` is 0x5e3bb700, decimals 0].
+                if 2 * k + 2 >= resp.len() {
+                    let rec = match cx.class {
+                        CncClass::Series16 { kind } if kind != 2 => 4,
+                        _ => 8,
+                    };
+                    let full = 8 + rec * count;
+                    if v.len() < full {
+                        v.resize(full, 0);
+                    }
+                }
                 let ptype = i16::from_be_bytes([v[6], v[7]]);
                 let (axis, info, unit) = ext_fields(self.table, cx.class, a);
                 // Values of every axis from the block's byte 8: a 30i or

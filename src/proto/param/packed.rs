@@ -107,7 +107,10 @@ impl Packed {
     pub fn of_block(b: &Param30, axes: usize) -> Result<Packed> {
         let ptype = b.ptype as u8;
         let real = Self::elem(ptype) == Some(Elem::Real);
-        let n = Self::count(b.axis as i8, axes);
+        // The axis word's sign decides the count, its low byte is the
+        // record's axis byte [fuzz + `oracle verify`: 0x0080 one value,
+        // byte 0x80; 0x8000 every axis, byte 0x00].
+        let n = if b.axis < 0 { axes } else { 1 };
         if b.values.len() < n {
             return Err(Error::short(
                 "parameter block carries fewer values than its axis word needs",
@@ -140,13 +143,16 @@ impl Packed {
         let axis = i16::from_be_bytes([inp[4], inp[5]]);
         let ptype = u16::from_be_bytes([inp[6], inp[7]]) as u8;
         let real = Self::elem(ptype) == Some(Elem::Real);
-        let n = Self::count(axis as i8, axes);
+        // All axes when the axis word is negative; the record keeps the
+        // word's low byte [fuzz, rdparar 16i `s0Twwwww`: word 0x9877 is
+        // axis byte 0x77 with max_axes values, EW_LENGTH in 8 bytes].
+        let n = if axis < 0 { axes } else { 1 };
         let words = if real { 2 * n } else { n };
         let body = inp.get(8..8 + 4 * words).ok_or_else(short)?;
         let w = |i: usize| i32::from_be_bytes(body[4 * i..4 * i + 4].try_into().unwrap());
         Ok(Packed {
             number: number as i16,
-            axis: if axis < 0 { -1 } else { axis as i8 },
+            axis: axis as i8,
             ptype,
             values: (0..n)
                 .map(|i| {
