@@ -565,6 +565,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
         let mut safety = safety;
         if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
             match f.numbers().nth(usize::from(p.count)) {
+                // types::TEXT: read up to its NUL, at most the field's bytes.
+                _ if p.count == types::TEXT => safety.push(format!(
+                    "/// `{n}` must be NULL or point to {} readable bytes, or to a C string ending within them.",
+                    p.fields.iter().map(|x| x.wire_len()).sum::<usize>()
+                )),
                 Some(count) => safety.push(format!(
                     "/// `{n}` must be NULL or point to `{count}` readable {} (at most {} are read).",
                     doc_type(t),

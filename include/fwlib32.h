@@ -3346,7 +3346,7 @@ short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
  # Safety
  `number` must be NULL or point to a writable long.
  `attr` must be NULL or point to a writable short.
- `name` must be NULL or point to a readable char.
+ `name` must be NULL or point to 64 readable bytes, or to a C string ending within them.
  */
 short cnc_rdmacronum(unsigned short FlibHndl, char *name, long length, long *number, short *attr);
 
