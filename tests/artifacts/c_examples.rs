@@ -58,6 +58,12 @@ fn build_c(src: &Path, dir: &Path) -> PathBuf {
 /// its arguments). It must exit 0; its `key=value` lines are returned with
 /// the simulator, for the test to compare with the machine's state.
 pub(crate) fn run_c_test(name: &str, profile: Profile) -> (HashMap<String, String>, Simulator) {
+    let sim = Simulator::start(profile, "127.0.0.1:0").unwrap();
+    (run_c_against(name, &sim), sim)
+}
+
+/// [`run_c_test`] against a simulator already started (and set up).
+pub(crate) fn run_c_against(name: &str, sim: &Simulator) -> HashMap<String, String> {
     // A directory of its own per run: tests running the same program on
     // other profiles at the same time must not build over each other
     // ("Text file busy") nor remove each other's directory.
@@ -65,7 +71,6 @@ pub(crate) fn run_c_test(name: &str, profile: Profile) -> (HashMap<String, Strin
     let run = RUNS.fetch_add(1, Ordering::Relaxed);
     let dir = toolchain::lib_dir(&format!("{name}-{run}"));
     let exe = build_c(&root().join("tests/c").join(format!("{name}.c")), &dir);
-    let sim = Simulator::start(profile, "127.0.0.1:0").unwrap();
     let out = toolchain::target_command(&exe)
         .args(["127.0.0.1", &sim.port().to_string()])
         .env("LD_LIBRARY_PATH", &*dir)
@@ -77,7 +82,7 @@ pub(crate) fn run_c_test(name: &str, profile: Profile) -> (HashMap<String, Strin
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
-    (key_values(&out.stdout), sim)
+    key_values(&out.stdout)
 }
 
 fn key_values(stdout: &[u8]) -> HashMap<String, String> {

@@ -2,8 +2,7 @@
 //! deviations, spindles, commanded values, tool tip, magazine, set zone)
 //! through the .so, compared with the simulator's state.
 
-use super::{build_c, key_values, root};
-use crate::toolchain;
+use super::run_c_against;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
 use fwlib32::sim::{Profile, Simulator};
 use std::collections::HashMap;
@@ -27,22 +26,9 @@ fn profile() -> Profile {
 /// tests/c/collectors_tool_axis.c run against a simulator of `p` whose
 /// clock stands at `at` (every read of a run sees one machine state).
 fn run_at(p: &Profile, at: Duration) -> HashMap<String, String> {
-    let dir = toolchain::lib_dir("collectors_tool_axis");
-    let exe = build_c(&root().join("tests/c/collectors_tool_axis.c"), &dir);
     let sim = Simulator::start(p.clone(), "127.0.0.1:0").unwrap();
     sim.set_elapsed(at);
-    let out = toolchain::target_command(&exe)
-        .args(["127.0.0.1", &sim.port().to_string()])
-        .env("LD_LIBRARY_PATH", &*dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "tests/c/collectors_tool_axis.c failed: {}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    key_values(&out.stdout)
+    run_c_against("collectors_tool_axis", &sim)
 }
 
 fn ints(v: &str) -> Vec<i64> {
