@@ -433,6 +433,10 @@ fn described_exports(funcs: &[types::Func]) -> String {
             let len = field.c.size() * field.n as usize;
             match (field.to, c_size(ty)) {
                 (None, _) => {}
+                // The scalar output as an array: `n` elements of its width
+                // from the pointee on (cnc_sdtread1shot's 8 `unsigned
+                // short`s); the header promises their bytes.
+                (Some(""), Some(size)) if field.n > 1 && field.c.size() == size => {}
                 (Some(_), Some(size)) => assert!(
                     len <= size,
                     "src/spec/table/: {}: {len} bytes written into a {ty}",
@@ -544,7 +548,13 @@ fn described_exports(funcs: &[types::Func]) -> String {
                                 ),
                             }
                         }
-                        _ => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
+                        _ => match fixed_array(f, i, t) {
+                            Some(k) => format!(
+                                "/// `{n}` must be NULL or point to {} writable bytes: {k} `{t}`s.",
+                                k * c_size(t).unwrap_or(0)
+                            ),
+                            None => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
+                        },
                     })
                     .collect(),
                 Some(c) => std::iter::once(format!(
@@ -727,6 +737,19 @@ fn doc_type(t: &str) -> String {
 }
 
 /// N of a `char[N]` output.
+/// The elements a function's fixed reply fields write into its scalar
+/// output `i` (of C type `t`) as an array (a field of `to: ""` and `n` of
+/// them, of `t`'s width), if more than one.
+fn fixed_array(f: &types::Func, i: usize, t: &str) -> Option<usize> {
+    let size = c_size(t)?;
+    f.reply
+        .iter()
+        .filter(|x| usize::from(x.out) == i && x.to == Some("") && x.c.size() == size)
+        .map(|x| usize::from(x.n))
+        .max()
+        .filter(|&k| k > 1)
+}
+
 fn char_array(c: &str) -> Option<usize> {
     c.strip_prefix("char[")?.strip_suffix(']')?.parse().ok()
 }

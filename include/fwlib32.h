@@ -4557,6 +4557,40 @@ short cnc_reset2(unsigned short FlibHndl);
 short cnc_resetconnect(unsigned short FlibHndl);
 
 /*
+ Cancels the servo data sampling (sends `(1,0x0136)`; FANUC's 32-bit
+ library only).
+ */
+short cnc_sdtcancelsmpl(unsigned short FlibHndl);
+
+/*
+ Clears the servo data sampling channels (sends `(1,0x0134)`, nothing
+ else; FANUC's 32-bit library only).
+ */
+short cnc_sdtclrchnl(unsigned short FlibHndl);
+
+/*
+ Ends the servo data sampling (sends `(1,0x0138)`; FANUC's 32-bit library
+ only).
+ */
+short cnc_sdtendsmpl(unsigned short FlibHndl);
+
+/*
+ Reads the current value of each servo data sampling channel: always 8
+ `unsigned short`s (16 bytes) written, the ones the answer does not hold
+ as 0 (FANUC's 32-bit library only).
+
+ # Safety
+ `data` must be NULL or point to 16 writable bytes: 8 `unsigned short`s.
+ */
+short cnc_sdtread1shot(unsigned short FlibHndl, unsigned short *data);
+
+/*
+ Starts sampling the servo data channels: `type` and `cycle` are sent as
+ the request's two words, unchecked (FANUC's 32-bit library only).
+ */
+short cnc_sdtstartsmpl(unsigned short FlibHndl, short type, long cycle);
+
+/*
  Selects program `prog_no` as the main program.
  */
 short cnc_search(unsigned short FlibHndl, short prog_no);

@@ -10,7 +10,7 @@ use super::route::{Answer, Asked, Route};
 use super::service::{CncError, CncService, Reply, respond};
 use super::{
     folder, history, macros, maintenance, memory, offset, operate, param, pmc_answers, position,
-    program, status, tool,
+    program, sampling, status, tool,
 };
 use crate::proto::described;
 use crate::proto::open::{CncClass, OpenBody};
@@ -33,6 +33,7 @@ const AREAS: &[&[Route]] = &[
     memory::ROUTES,
     folder::ROUTES,
     maintenance::ROUTES,
+    sampling::ROUTES,
 ];
 
 /// The CNC classes a described function's form is chosen by, in the

@@ -38,6 +38,7 @@ pub mod profile;
 pub mod program;
 pub mod route;
 pub mod run;
+pub mod sampling;
 pub mod server;
 pub mod service;
 pub mod session;

@@ -390,11 +390,7 @@ impl Machine {
             0 => Value::decimal(a.loop_gain.unwrap_or(DEFAULT_LOOP_GAIN), 0),
             1 => Value::decimal(a.servo_load, 0),
             2 => Value::decimal(a.servo_speed, 0),
-            _ => {
-                let rated = a.rated_current.unwrap_or(DEFAULT_RATED_CURRENT);
-                let tenths = (rated * 10.0 * f64::from(a.servo_load) / 100.0).round();
-                Value::decimal(tenths as i32, 1)
-            }
+            _ => Value::decimal(current_tenths(a), 1),
         };
         match code {
             0..=3 => {
@@ -571,4 +567,11 @@ impl Machine {
         }
         Ok(out)
     }
+}
+
+/// An axis's servo current in 0.1 A: its load's share of its rated current
+/// (cnc_rdaxisdata class 2 type 2, the sampling channels' `current`).
+pub(super) fn current_tenths(a: &Axis) -> i32 {
+    let rated = a.rated_current.unwrap_or(DEFAULT_RATED_CURRENT);
+    (rated * 10.0 * f64::from(a.servo_load) / 100.0).round() as i32
 }

@@ -243,6 +243,12 @@ pub struct Path {
     /// A punch press's tool data, data numbers 1, 2, ... (cnc_rdtooldata).
     #[serde(rename = "punch_tool")]
     pub punch_tools: Vec<offset::PunchTool>,
+
+    // --- sampling ---
+    /// Servo data sampling channels, channel 1 first (cnc_sdtread1shot,
+    /// cnc_sdtstartsmpl; cnc_sdtclrchnl clears them).
+    #[serde(rename = "sample_channel")]
+    pub sample_channels: Vec<super::sampling::SampleChannel>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]

@@ -71,6 +71,8 @@ pub struct PathRun {
     /// Where the last reset (or cycle start) interrupted a running program
     /// (cnc_rdprstrinfo's program restart data); None before any.
     pub restart: Option<Restart>,
+    /// Servo data sampling: its channels and whether it runs (cnc_sdt*).
+    pub sampling: super::sampling::Sampling,
     /// What the clock needs: parsed program, profile base values, caches.
     pub(crate) engine: Engine,
 }
@@ -224,6 +226,7 @@ impl PathRun {
                         .unwrap_or_default(),
                     alarms: p.alarms.clone(),
                     spindle_speed: p.spindles.first().map_or(0, |s| s.speed),
+                    sampling: super::sampling::Sampling::new(&p.sample_channels),
                     engine: Engine {
                         plan,
                         base_status: p.status,

@@ -305,6 +305,18 @@ commands! {
     /// `(1,0x0111)[k]`: the 3D handle's tool tip, a value record per axis.
     HDL3D_TIP = CLASS_CNC 0x0111 [cnc_rd3dtooltip];
     RDTIMER = CLASS_CNC 0x0120 [cnc_rdtimer];
+    /// Servo data sampling (FANUC's x86 build 1.0.0 exports the senders;
+    /// docs/protocol/position.md): `(1,0x0134)` clears the channels.
+    SDTCLRCHNL = CLASS_CNC 0x0134 [cnc_sdtclrchnl];
+    /// `(1,0x0135)[type, long]` starts sampling the channels; the answer's
+    /// fourth 16-bit word not 0 lets FANUC's library ask for samples.
+    SDTSTARTSMPL = CLASS_CNC 0x0135 [cnc_sdtstartsmpl];
+    /// `(1,0x0136)` cancels the sampling.
+    SDTCANCELSMPL = CLASS_CNC 0x0136 [cnc_sdtcancelsmpl];
+    /// `(1,0x0138)` ends the sampling.
+    SDTENDSMPL = CLASS_CNC 0x0138 [cnc_sdtendsmpl];
+    /// `(1,0x013a)`: the channels' current values, a u16 each (at most 8).
+    SDTREAD1SHOT = CLASS_CNC 0x013a [cnc_sdtread1shot];
     /// cnc_rdtool: tool management data, args [top, n] (n at most
     /// `TOOLS_PER_MNG`).
     TLMNG = CLASS_CNC 0x014b [cnc_rdtool];

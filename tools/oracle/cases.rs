@@ -753,6 +753,20 @@ const WORDS: &[Word] = &[
             ],
         )
     },
+    // Servo data sampling (FANUC's 32-bit library): cleared channels read
+    // back as zeros and refuse a start; a start's sampling cancelled and
+    // ended (src/sim/sampling.rs).
+    Word {
+        after: &["sdtread1shot", "sdtstartsmpl 0 8", "sdtread1shot"],
+        ..w("sdtclrchnl", &[])
+    },
+    Word {
+        after: &["sdtread1shot", "sdtcancelsmpl", "sdtendsmpl"],
+        ..w(
+            "sdtstartsmpl",
+            &["0|1|2|-1|32767|-32768", "8|0|1|100|65536|-1|2147483647"],
+        )
+    },
     // The general purpose switches (F0072): each write read back.
     Word {
         after: &["rdopnlgnrl 255"],

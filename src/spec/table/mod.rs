@@ -22,6 +22,7 @@ pub mod offset_life;
 pub mod operation;
 pub mod pmc;
 pub mod program;
+mod sampling;
 pub mod servo;
 mod setting;
 pub mod tool_life;
@@ -43,6 +44,7 @@ const AREAS: &[&[Func]] = &[
     maintenance::FUNCS,
     names::FUNCS,
     setting::FUNCS,
+    sampling::FUNCS,
 ];
 
 const LEN: usize = {

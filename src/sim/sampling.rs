@@ -1,0 +1,135 @@
+//! Servo data sampling (cnc_sdt*, FANUC's 32-bit library): the channels
+//! each path samples (the profile's `[[path.sample_channel]]`, cleared by
+//! cnc_sdtclrchnl), whether sampling runs (cnc_sdtstartsmpl until
+//! cnc_sdtcancelsmpl or cnc_sdtendsmpl), and each channel's current value
+//! (cnc_sdtread1shot) read from the servo state the simulator models for
+//! the axis: its motor speed, load meter or current, as the running
+//! program leaves them.
+
+use super::Machine;
+use super::profile::Axis;
+use super::route::{Asked, Route};
+use super::service::{CncError, Reply};
+use crate::ew::{EW_DATA, EW_PATH};
+use crate::proto::cmd::{SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSTARTSMPL};
+use serde::Deserialize;
+use std::time::Instant;
+
+pub(super) const ROUTES: &[Route] = &[
+    Route::table(SDTCLRCHNL, |m, q| {
+        m.sampling_mut(q.path)?.channels.clear();
+        Ok(Vec::new())
+    }),
+    Route::table(SDTSTARTSMPL, start),
+    Route::table(SDTCANCELSMPL, stop),
+    Route::table(SDTENDSMPL, stop),
+    Route::table(SDTREAD1SHOT, one_shot),
+];
+
+/// The most channels a CNC samples (cnc_sdtread1shot writes 8 values).
+pub const MAX_CHANNELS: usize = 8;
+
+/// The servo figure a channel samples, of the simulator's model of its axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Datum {
+    /// The motor speed, rpm (cnc_rdsrvspeed).
+    #[default]
+    Speed,
+    /// The load meter, % (cnc_rdsvmeter).
+    Load,
+    /// The motor current, 0.1 A: the load's share of the rated current
+    /// (cnc_rdaxisdata class 2 type 2).
+    Current,
+}
+
+/// One sampling channel: a figure of an axis of the path (1-based).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct SampleChannel {
+    pub axis: u16,
+    pub datum: Datum,
+}
+
+/// A path's sampling state.
+#[derive(Debug, Clone, Default)]
+pub struct Sampling {
+    /// The channels, channel 1 first (at most [`MAX_CHANNELS`] answered).
+    pub channels: Vec<SampleChannel>,
+    /// Sampling runs: since when, with cnc_sdtstartsmpl's two arguments.
+    pub running: Option<Running>,
+}
+
+/// Sampling started by cnc_sdtstartsmpl.
+#[derive(Debug, Clone, Copy)]
+pub struct Running {
+    pub since: Instant,
+    pub kind: i32,
+    pub cycle: i32,
+}
+
+impl Sampling {
+    /// The state a path starts with: its profile's channels.
+    pub fn new(channels: &[SampleChannel]) -> Sampling {
+        Sampling {
+            channels: channels.to_vec(),
+            running: None,
+        }
+    }
+}
+
+/// The current value of `d` of axis `a`, as the channel's 16 bits.
+fn value(a: &Axis, d: Datum) -> u16 {
+    let v = match d {
+        Datum::Speed => i64::from(a.servo_speed),
+        Datum::Load => i64::from(a.servo_load),
+        Datum::Current => i64::from(super::position::current_tenths(a)),
+    };
+    v as u16
+}
+
+impl Machine {
+    fn sampling_mut(&mut self, path: u16) -> Reply<&mut Sampling> {
+        (self.run.get_mut(usize::from(path).wrapping_sub(1)))
+            .map(|r| &mut r.sampling)
+            .ok_or(CncError::new(EW_PATH))
+    }
+}
+
+/// cnc_sdtstartsmpl: sampling runs from now on; with no channel to sample
+/// EW_DATA, nothing started.
+fn start(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let now = m.now;
+    let s = m.sampling_mut(q.path)?;
+    if s.channels.is_empty() {
+        return Err(CncError::new(EW_DATA));
+    }
+    s.running = Some(Running {
+        since: now,
+        kind: q.arg(0),
+        cycle: q.arg(1),
+    });
+    Ok(Vec::new())
+}
+
+/// cnc_sdtcancelsmpl, cnc_sdtendsmpl: sampling stops (none running: nothing
+/// to stop, no error).
+fn stop(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    m.sampling_mut(q.path)?.running = None;
+    Ok(Vec::new())
+}
+
+/// cnc_sdtread1shot: each channel's current value, 8 values, the ones
+/// past the channels (and a channel on an axis the path lacks) 0.
+fn one_shot(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let p = m.path(q.path)?;
+    let s = &m.live(q.path)?.sampling;
+    let mut v: Vec<i64> = (s.channels.iter().take(MAX_CHANNELS))
+        .map(|c| {
+            let a = p.axes.get(usize::from(c.axis).wrapping_sub(1));
+            i64::from(a.map_or(0, |a| value(a, c.datum)))
+        })
+        .collect();
+    v.resize(MAX_CHANNELS, 0);
+    Ok(v)
+}
