@@ -133,3 +133,38 @@ fn one_shot(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     v.resize(MAX_CHANNELS, 0);
     Ok(v)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::proto::packet::ReqSub;
+    use crate::sim::Profile;
+    use crate::sim::service::CncService;
+
+    fn ask(m: &mut Machine, cmd: u16, args: &[i32]) -> i16 {
+        let q = ReqSub {
+            path: 1,
+            ..ReqSub::cnc(cmd, args)
+        };
+        m.answer(&q).error
+    }
+
+    #[test]
+    fn start_runs_until_cancel_or_end_and_needs_a_channel() {
+        let mut m = Machine::new(Profile::default());
+        assert!(!m.run[0].sampling.channels.is_empty());
+        assert_eq!(ask(&mut m, SDTSTARTSMPL, &[3, 250]), 0);
+        let r = m.run[0].sampling.running.expect("sampling runs");
+        assert_eq!((r.kind, r.cycle, r.since), (3, 250, m.now));
+        assert_eq!(ask(&mut m, SDTCANCELSMPL, &[]), 0);
+        assert!(m.run[0].sampling.running.is_none());
+        assert_eq!(ask(&mut m, SDTSTARTSMPL, &[0, 8]), 0);
+        assert_eq!(ask(&mut m, SDTENDSMPL, &[]), 0);
+        assert!(m.run[0].sampling.running.is_none());
+        // Cleared channels: a start is refused and changes nothing.
+        assert_eq!(ask(&mut m, SDTCLRCHNL, &[]), 0);
+        assert!(m.run[0].sampling.channels.is_empty());
+        assert_eq!(ask(&mut m, SDTSTARTSMPL, &[0, 8]), EW_DATA);
+        assert!(m.run[0].sampling.running.is_none());
+    }
+}

@@ -569,3 +569,4 @@ mod collectors_programs_macros;
 mod collectors_settings;
 mod collectors_system_ids;
 mod collectors_tool_axis;
+mod sampling;
