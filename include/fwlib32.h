@@ -4585,8 +4585,9 @@ short cnc_sdtendsmpl(unsigned short FlibHndl);
 short cnc_sdtread1shot(unsigned short FlibHndl, unsigned short *data);
 
 /*
- Starts sampling the servo data channels: `type` and `cycle` are sent as
- the request's two words, unchecked (FANUC's 32-bit library only).
+ Starts sampling the servo data channels: `type` (as an unsigned 16-bit
+ number) and `cycle` are sent as the request's two words, unchecked
+ (FANUC's 32-bit library only).
  */
 short cnc_sdtstartsmpl(unsigned short FlibHndl, short type, long cycle);
 
