@@ -382,6 +382,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
         let c_param = |p: &Param| match *p {
             Param::Short(n) | Param::ShortAs(n, _) => format!("{}: c_short", ident(n)),
             Param::Long(n) => format!("{}: c_long", ident(n)),
+            Param::ULong(n) => format!("{}: c_ulong", ident(n)),
+            Param::Text(n, _) => format!("{}: *mut c_char", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
             Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
@@ -477,6 +479,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 )
             }
         };
+        // The text parameters' strings.
+        let texts: Vec<String> = f
+            .texts()
+            .map(|(n, _)| format!("{}.cast_const()", ident(n)))
+            .collect();
+        let texts = format!("texts: &[{}]", texts.join(", "));
         // A write's payload: where each field's member is in one element.
         let pay = match (&f.payload, f.input()) {
             (Some(p), Some((n, _))) => {
@@ -495,7 +503,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     })
                     .collect();
                 format!(
-                    "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}], words: &[{}] }}",
+                    "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}], words: &[{}], {texts} }}",
                     ident(n),
                     offs.join(", "),
                     words.join(", ")
@@ -509,8 +517,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     ..
                 }),
                 None,
-            ) => "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[], words: &[] }"
-                .to_string(),
+            ) => format!(
+                "PayloadAt {{ input: std::ptr::null(), stride: 0, offsets: &[], words: &[], {texts} }}"
+            ),
             _ => panic!(
                 "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
                 f.name
@@ -587,12 +596,17 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 )),
             }
         }
+        for (n, size) in f.texts() {
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to {size} readable bytes, or to a C string ending within them."
+            ));
+        }
         assert!(
             f.numbers().count() + f.inputs().count() <= 8,
             "src/spec/table/: {}: more arguments than exec takes (MAX_NUMBERS)",
             f.name
         );
-        let pointers = !outs.is_empty() || f.input().is_some();
+        let pointers = !outs.is_empty() || f.input().is_some() || f.texts().next().is_some();
         s.push_str(&format!(
             r#"
 {doc}{safety}

@@ -2792,10 +2792,11 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
 short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
 
 /*
- Creates a program or (a name ending in '/') a folder.
+ Creates a program or (a name ending in '/') a folder: `path` sent in a
+ 256-byte field.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_add(unsigned short FlibHndl, char *path);
 
@@ -2808,26 +2809,28 @@ short cnc_pdf_add(unsigned short FlibHndl, char *path);
 short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
 
 /*
- Deletes a program or an empty folder.
+ Deletes a program or an empty folder: `path` sent in a 256-byte field.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_del(unsigned short FlibHndl, char *path);
 
 /*
- Deletes every program of a folder (`type` as FANUC's: sent after a 1).
+ Deletes every program of a folder (`type` as FANUC's: sent after a 1;
+ `path` in a 256-byte field).
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_delall(unsigned short FlibHndl, short type, char *path);
 
 /*
- Deletes `count` lines of a program from line `line_no`.
+ Deletes `count` lines of a program (`path`, in a 256-byte field) from
+ line `line_no`.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_delline(unsigned short FlibHndl,
                       char *path,
@@ -2868,10 +2871,10 @@ short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
 short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
 
 /*
- Selects a program as the main program.
+ Selects a program as the main program: `path` sent in a 256-byte field.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
 

@@ -214,39 +214,6 @@ pub unsafe extern "C" fn cnc_pdf_rdmain(FlibHndl: c_ushort, path_name: *mut c_ch
     })
 }
 
-/// Creates a program or (a name ending in '/') a folder.
-///
-/// # Safety
-/// `path` must be readable up to its NUL or 256 bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_add(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
-    ffi_boundary!("cnc_pdf_add", {
-        unsafe { pdf(FlibHndl, pp::PDF_ADD, &[], &[(path, 256)]) }.map(drop)
-    })
-}
-
-/// Deletes a program or an empty folder.
-///
-/// # Safety
-/// `path` must be readable up to its NUL or 256 bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_del(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
-    ffi_boundary!("cnc_pdf_del", {
-        unsafe { pdf(FlibHndl, pp::PDF_DEL, &[], &[(path, 256)]) }.map(drop)
-    })
-}
-
-/// Selects a program as the main program.
-///
-/// # Safety
-/// `path` must be readable up to its NUL or 256 bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_slctmain(FlibHndl: c_ushort, path: *mut c_char) -> c_short {
-    ffi_boundary!("cnc_pdf_slctmain", {
-        unsafe { pdf(FlibHndl, pp::PDF_SLCTMAIN, &[], &[(path, 256)]) }.map(drop)
-    })
-}
-
 /// Renames a program or folder (`to`: the new name, 36 bytes sent).
 ///
 /// # Safety
@@ -289,39 +256,6 @@ pub unsafe extern "C" fn cnc_pdf_move(
 ) -> c_short {
     ffi_boundary!("cnc_pdf_move", {
         unsafe { pdf(FlibHndl, pp::PDF_MOVE, &[], &[(from, 256), (to, 256)]) }.map(drop)
-    })
-}
-
-/// Deletes every program of a folder (`type` as FANUC's: sent after a 1).
-///
-/// # Safety
-/// `path` must be readable up to its NUL or 256 bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_delall(
-    FlibHndl: c_ushort,
-    r#type: c_short,
-    path: *mut c_char,
-) -> c_short {
-    ffi_boundary!("cnc_pdf_delall", {
-        let w = [1, r#type.into()];
-        unsafe { pdf(FlibHndl, pp::PDF_DELALL, &w, &[(path, 256)]) }.map(drop)
-    })
-}
-
-/// Deletes `count` lines of a program from line `line_no`.
-///
-/// # Safety
-/// `path` must be readable up to its NUL or 256 bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_delline(
-    FlibHndl: c_ushort,
-    path: *mut c_char,
-    line_no: c_ulong,
-    count: c_ulong,
-) -> c_short {
-    ffi_boundary!("cnc_pdf_delline", {
-        let w = [line_no as i32, count as i32];
-        unsafe { pdf(FlibHndl, pp::PDF_DELLINE, &w, &[(path, 256)]) }.map(drop)
     })
 }
 

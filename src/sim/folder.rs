@@ -6,7 +6,7 @@
 //! EW_BUSY, EW_OVRFLOW); a type other than 1/2 EW_ATTRIB.
 
 use super::Machine;
-use super::route::Route;
+use super::route::{Asked, Route, none};
 use super::service::{CncError, Reply};
 use super::store::{FOLDERS, Program};
 use crate::ew;
@@ -20,19 +20,19 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(pp::PDF_RDCURDIR, Machine::folder_request),
     Route::cnc(pp::PDF_WRCURDIR, Machine::folder_request),
     Route::cnc(pp::PDF_SUBDIRN, Machine::folder_request),
-    Route::cnc(pp::PDF_ADD, Machine::folder_request),
-    Route::cnc(pp::PDF_DEL, Machine::folder_request),
+    Route::table(pp::PDF_ADD, |m, q| none(m.pdf_add(&q.text(0)))),
+    Route::table(pp::PDF_DEL, |m, q| none(m.pdf_del(&q.text(0)))),
     Route::cnc(pp::PDF_RENAME, Machine::folder_request),
     Route::cnc(pp::PDF_RDMAIN, Machine::folder_request),
-    Route::cnc(pp::PDF_SLCTMAIN, Machine::folder_request),
+    Route::table(pp::PDF_SLCTMAIN, |m, q| none(m.pdf_slctmain(&q.text(0)))),
     Route::cnc(pp::PDF_COPY, Machine::folder_request),
     Route::cnc(pp::PDF_MOVE, Machine::folder_request),
     Route::cnc(pp::PDF_SUBDIR, Machine::folder_request),
     Route::cnc(pp::PDF_ALLDIR, Machine::folder_request),
     Route::cnc(pp::PDF_RDLINE, Machine::line_request),
     Route::cnc(pp::PDF_WRLINE, Machine::line_request),
-    Route::cnc(pp::PDF_DELLINE, Machine::line_request),
-    Route::cnc(pp::PDF_DELALL, Machine::line_request),
+    Route::table(pp::PDF_DELLINE, |m, q| none(m.pdf_delline(q))),
+    Route::table(pp::PDF_DELALL, |m, q| none(m.pdf_delall(&q.text(0)))),
     Route::cnc(pp::PDF_RDACTPT, Machine::folder_request),
     Route::cnc(pp::PDF_WRACTPT, Machine::folder_request),
 ];
@@ -77,23 +77,86 @@ impl Machine {
         self.line_answer(sub, &a)
     }
 
+    /// Deletes every program of a path's folder (cnc_pdf_delall).
+    fn pdf_delall(&mut self, name: &str) -> Reply<()> {
+        let paths = self.run.len() as u16;
+        let (folder, _) = self.store.locate(name)?;
+        let p = (1..=paths).find(|n| folder == format!("//CNC_MEM/USER/PATH{n}/"));
+        self.store
+            .remove_all(p.ok_or(CncError::new(ew::EW_DATA))?)
+            .map(drop)
+    }
+
+    /// Deletes `count` lines of a program ("<folder>O<n>") from line
+    /// `line_no` (1 the first; cnc_pdf_delline).
+    fn pdf_delline(&mut self, q: &Asked<'_>) -> Reply<()> {
+        let today = self.today();
+        let (from, n) = (q.arg(0).max(0) as usize, q.arg(1).max(0) as usize);
+        let at = from.saturating_sub(1);
+        let (_, prog) = self.store.locate(&q.text(0))?;
+        let (p, number) = prog.ok_or(CncError::new(ew::EW_DATA))?;
+        self.store.edit_lines(p, number, today, |l| {
+            let end = (at + n).min(l.len());
+            l.drain(at.min(end)..end);
+        })
+    }
+
+    /// Creates a program or (a name ending in '/') a folder.
+    fn pdf_add(&mut self, a: &str) -> Reply<()> {
+        let today = self.today();
+        let st = &mut self.store;
+        if let Some(inner) = a.strip_suffix('/') {
+            let parent = &a[..inner.rfind('/').map_or(0, |i| i + 1)];
+            if st.folders.iter().any(|f| f == a) || !st.folders.iter().any(|f| f == parent) {
+                return err(ew::EW_DATA);
+            }
+            st.folders.push(a.to_string());
+            return Ok(());
+        }
+        let (_, Some((p, n))) = st.locate(a)? else {
+            return err(ew::EW_DATA);
+        };
+        st.insert(p, Program::new(&format!("O{n:04};\n%\n"), today))
+    }
+
+    /// Deletes a program or an empty folder of the user's.
+    fn pdf_del(&mut self, a: &str) -> Reply<()> {
+        let st = &mut self.store;
+        match st.locate(a)? {
+            (_, Some((p, n))) => st.remove(p, n).map(drop),
+            (f, None) => {
+                // The CNC's own folders stay, and a folder with folders in it.
+                let at = st.folders.iter().position(|g| *g == f);
+                let full = st
+                    .folders
+                    .iter()
+                    .any(|g| g.len() > f.len() && g.starts_with(&f));
+                if full || at < Some(FOLDERS.len() + self.run.len()) {
+                    return err(ew::EW_DATA);
+                }
+                st.folders.retain(|g| *g != f);
+                Ok(())
+            }
+        }
+    }
+
+    /// Selects a program as the main program.
+    fn pdf_slctmain(&mut self, a: &str) -> Reply<()> {
+        let (_, Some((p, n))) = self.store.locate(a)? else {
+            return err(ew::EW_DATA);
+        };
+        self.store.select(p, n)
+    }
+
     /// The line commands on a program ("<folder>O<n>"): read `args[1]`
     /// lines from line `args[0]` (1 the first), write the bytes after the
-    /// name after line `args[0]`, delete `args[1]` lines from line
-    /// `args[0]`; and delete all of a path's folder.
+    /// name after line `args[0]`.
     fn line_answer(&mut self, sub: &ReqSub, name: &str) -> Reply<Vec<u8>> {
         let today = self.today();
-        let paths = self.run.len() as u16;
         let st = &mut self.store;
         let (from, n) = (sub.args[0].max(0) as usize, sub.args[1].max(0) as usize);
         let at = from.saturating_sub(1);
-        let (folder, prog) = st.locate(name)?;
-        if sub.cmd == pp::PDF_DELALL {
-            let p = (1..=paths).find(|n| folder == format!("//CNC_MEM/USER/PATH{n}/"));
-            return st
-                .remove_all(p.ok_or(CncError::new(ew::EW_DATA))?)
-                .map(|_| Vec::new());
-        }
+        let (_, prog) = st.locate(name)?;
         let (p, number) = prog.ok_or(CncError::new(ew::EW_DATA))?;
         match sub.cmd {
             pp::PDF_RDLINE => {
@@ -101,7 +164,7 @@ impl Machine {
                 let lines = text.split_inclusive('\n').skip(at).take(n);
                 Ok(lines.collect::<String>().into_bytes())
             }
-            pp::PDF_WRLINE => {
+            _ => {
                 let add = sub.payload.get(256..).unwrap_or(&[]);
                 let add = String::from_utf8_lossy(add).into_owned();
                 st.edit_lines(p, number, today, |l| {
@@ -110,12 +173,6 @@ impl Machine {
                 })
                 .map(|()| Vec::new())
             }
-            _ => st
-                .edit_lines(p, number, today, |l| {
-                    let end = (at + n).min(l.len());
-                    l.drain(at.min(end)..end);
-                })
-                .map(|()| Vec::new()),
         }
     }
 
@@ -171,34 +228,6 @@ impl Machine {
                 w.i32(subs.count() as i32);
                 w.i32(files as i32);
             }
-            pp::PDF_ADD if a.ends_with('/') => {
-                let parent = &a[..a[..a.len() - 1].rfind('/').map_or(0, |i| i + 1)];
-                if st.folders.iter().any(|f| f == a) || !st.folders.iter().any(|f| f == parent) {
-                    return err(ew::EW_DATA);
-                }
-                st.folders.push(a.to_string());
-            }
-            pp::PDF_ADD => {
-                let (_, Some((p, n))) = st.locate(a)? else {
-                    return err(ew::EW_DATA);
-                };
-                st.insert(p, Program::new(&format!("O{n:04};\n%\n"), today))?;
-            }
-            pp::PDF_DEL => match st.locate(a)? {
-                (_, Some((p, n))) => drop(st.remove(p, n)?),
-                (f, None) => {
-                    // The CNC's own folders stay, and a folder with folders in it.
-                    let at = st.folders.iter().position(|g| *g == f);
-                    let full = st
-                        .folders
-                        .iter()
-                        .any(|g| g.len() > f.len() && g.starts_with(&f));
-                    if full || at < Some(FOLDERS.len() + self.run.len()) {
-                        return err(ew::EW_DATA);
-                    }
-                    st.folders.retain(|g| *g != f);
-                }
-            },
             pp::PDF_RENAME => {
                 let (Ok((_, Some((p, n)))), Some(to)) = (st.locate(a), new_number(b)) else {
                     return err(ew::EW_DATA);
@@ -280,12 +309,6 @@ impl Machine {
             pp::PDF_RDMAIN => {
                 let main = st.path(path)?.main;
                 return Ok(name256(&format!("//CNC_MEM/USER/PATH{path}/O{main:04}")));
-            }
-            pp::PDF_SLCTMAIN => {
-                let (_, Some((p, n))) = st.locate(a)? else {
-                    return err(ew::EW_DATA);
-                };
-                st.select(p, n)?;
             }
             _ => {
                 // PDF_COPY / PDF_MOVE: to a program, or into a folder.

@@ -115,7 +115,7 @@ pub fn for_request(sub: &ReqSub, class: CncClass) -> Option<&'static Func> {
             let want = match words.get(k) {
                 Some(Word::Const(c)) => *c,
                 Some(_) => return true,
-                None if k == 4 && f.payload.is_some() => return true,
+                None if k == 4 && f.sends_payload() => return true,
                 None => 0,
             };
             sub.args.get(k).copied().unwrap_or(0) == want

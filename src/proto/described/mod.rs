@@ -25,6 +25,9 @@ pub struct Described<'a> {
     pub f: &'static Func,
     pub args: &'a [i32],
     pub payload: &'a [i64],
+    /// The text parameters' fields ([`Func::texts`]), sent before the
+    /// payload's records.
+    pub text: &'a [u8],
     /// With [`Func::more`]: where an error of a later subpacket goes, the
     /// earlier ones' integers being returned (FANUC's library writes each
     /// subpacket's fields before it reads the next). None: the error is
@@ -39,6 +42,7 @@ impl<'a> Described<'a> {
             f,
             args,
             payload: &[],
+            text: &[],
             late: None,
         }
     }
@@ -82,8 +86,10 @@ impl Call for Described<'_> {
         };
         let sub = sub_of(form.cmd, form.words);
         out.push(match &self.f.payload {
+            None if self.f.texts().next().is_some() => sub.with_payload(self.text.to_vec()),
             Some(p) => {
                 let mut w = Writer::new();
+                w.bytes(self.text);
                 let per: usize = p.fields.iter().map(|x| usize::from(x.n)).sum();
                 let binary = self.f.binary.is_some_and(|c| {
                     c.matches(
@@ -447,12 +453,14 @@ fn read_fields(
 }
 
 /// The integers of a write's request payload (simulator side): whole
-/// records of [`Func::payload`]'s fields, as [`Described`] sent them; a
-/// trailing part record is left out.
+/// records of [`Func::payload`]'s fields, as [`Described`] sent them
+/// (after the text parameters' fields); a trailing part record is left out.
 pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
     let Some(p) = &f.payload else {
         return Vec::new();
     };
+    let texts: usize = f.texts().map(|(_, n)| n).sum();
+    let bytes = bytes.get(texts..).unwrap_or_default();
     let size: usize = p.fields.iter().map(Field::wire_len).sum();
     let mut out = Vec::new();
     let mut r = Reader::new(bytes);
