@@ -2801,10 +2801,12 @@ short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL 
 short cnc_pdf_add(unsigned short FlibHndl, char *path);
 
 /*
- Copies a program (`to`: a program or a folder).
+ Copies a program (`to`: a program or a folder; each name sent in a
+ 256-byte field).
 
  # Safety
- Both names must be readable up to their NUL or field size.
+ `from` must be NULL or point to 256 readable bytes, or to a C string ending within them.
+ `to` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
 
@@ -2838,10 +2840,12 @@ short cnc_pdf_delline(unsigned short FlibHndl,
                       unsigned long count);
 
 /*
- Moves a program (`to`: a program or a folder).
+ Moves a program (`to`: a program or a folder; each name sent in a
+ 256-byte field).
 
  # Safety
- Both names must be readable up to their NUL or field size.
+ `from` must be NULL or point to 256 readable bytes, or to a C string ending within them.
+ `to` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
 
@@ -2863,10 +2867,12 @@ short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
 short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
 
 /*
- Renames a program or folder (`to`: the new name, 36 bytes sent).
+ Renames a program or folder (`from` sent in a 256-byte field; `to`, the
+ new name, in a 36-byte field).
 
  # Safety
- Both names must be readable up to their NUL or field size.
+ `from` must be NULL or point to 256 readable bytes, or to a C string ending within them.
+ `to` must be NULL or point to 36 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
 
@@ -3777,10 +3783,13 @@ short cnc_rdpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
 
 /*
- Reads a drive's used and total capacity and directories.
+ Reads a drive's used and total capacity (pages) and directories
+ (`drv_name` sent in a 12-byte field; a short answer is EW_PROTOCOL,
+ nothing written).
 
  # Safety
- `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
+ `inf` must be NULL or point to a writable ODBPDFINF.
+ `drv_name` must be NULL or point to 12 readable bytes, or to a C string ending within them.
  */
 short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct ODBPDFINF *inf);
 
@@ -3817,10 +3826,12 @@ short cnc_rdpdf_subdir(unsigned short FlibHndl,
                        struct ODBPDFSDIR *out);
 
 /*
- Reads how many directories and files a directory holds.
+ Reads how many directories and files the directory `path` (sent in a
+ 256-byte field) holds (the low 16 bits of each answered word).
 
  # Safety
- `path` readable; `num_fil` a writable ODBPDFNFIL.
+ `num_fil` must be NULL or point to a writable ODBPDFNFIL.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *num_fil);
 
@@ -4937,10 +4948,11 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
 
 /*
- Sets the current directory of `type`.
+ Sets the current directory of `type` (1 foreground, 2 background) to
+ `dir_name` (sent in a 256-byte field).
 
  # Safety
- `dir_name` readable.
+ `dir_name` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_wrpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 

@@ -10,9 +10,7 @@ use crate::proto::call::Single;
 use crate::proto::packet::ReqSub;
 use crate::proto::program::{self as pp, PathName};
 use crate::proto::wire::{Reader, Wire};
-use crate::types::{
-    IDBPDFADIR, IDBPDFSDIR, ODBPDFADIR, ODBPDFDRV, ODBPDFINF, ODBPDFNFIL, ODBPDFSDIR,
-};
+use crate::types::{IDBPDFADIR, IDBPDFSDIR, ODBPDFADIR, ODBPDFDRV, ODBPDFSDIR};
 use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// Sends folder command `cmd` with `words` and the strings, each as a field
@@ -108,32 +106,6 @@ pub unsafe extern "C" fn cnc_rdpdf_drive(FlibHndl: c_ushort, drive: *mut ODBPDFD
     })
 }
 
-/// Reads a drive's used and total capacity and directories.
-///
-/// # Safety
-/// `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpdf_inf(
-    FlibHndl: c_ushort,
-    drv_name: *mut c_char,
-    r#type: c_short,
-    inf: *mut ODBPDFINF,
-) -> c_short {
-    ffi_boundary!("cnc_rdpdf_inf", {
-        let out = nonnull(inf)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_INF, &[r#type.into()], &[(drv_name, 12)]) }?;
-        let v = words(&b, 4, false)?;
-        let i = ODBPDFINF {
-            used_page: v[0],
-            all_page: v[1],
-            used_dir: v[2],
-            all_dir: v[3],
-        };
-        unsafe { put(out, i) };
-        Ok(())
-    })
-}
-
 /// Reads the current directory of `type` (1 foreground, 2 background).
 ///
 /// # Safety
@@ -151,56 +123,6 @@ pub unsafe extern "C" fn cnc_rdpdf_curdir(
     })
 }
 
-/// Sets the current directory of `type`.
-///
-/// # Safety
-/// `dir_name` readable.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_wrpdf_curdir(
-    FlibHndl: c_ushort,
-    r#type: c_short,
-    dir_name: *mut c_char,
-) -> c_short {
-    ffi_boundary!("cnc_wrpdf_curdir", {
-        unsafe {
-            pdf(
-                FlibHndl,
-                pp::PDF_WRCURDIR,
-                &[r#type.into()],
-                &[(dir_name, 256)],
-            )
-        }
-        .map(drop)
-    })
-}
-
-/// Reads how many directories and files a directory holds.
-///
-/// # Safety
-/// `path` readable; `num_fil` a writable ODBPDFNFIL.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpdf_subdirn(
-    FlibHndl: c_ushort,
-    path: *mut c_char,
-    num_fil: *mut ODBPDFNFIL,
-) -> c_short {
-    ffi_boundary!("cnc_rdpdf_subdirn", {
-        let out = nonnull(num_fil)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_SUBDIRN, &[], &[(path, 256)]) }?;
-        let v = words(&b, 2, true)?;
-        unsafe {
-            put(
-                out,
-                ODBPDFNFIL {
-                    dir_num: v[0] as c_short,
-                    file_num: v[1] as c_short,
-                },
-            )
-        };
-        Ok(())
-    })
-}
-
 /// Reads the main program's path name.
 ///
 /// # Safety
@@ -211,51 +133,6 @@ pub unsafe extern "C" fn cnc_pdf_rdmain(FlibHndl: c_ushort, path_name: *mut c_ch
         nonnull(path_name)?;
         let b = unsafe { pdf(FlibHndl, pp::PDF_RDMAIN, &[], &[]) }?;
         unsafe { put_name(path_name, &b) }
-    })
-}
-
-/// Renames a program or folder (`to`: the new name, 36 bytes sent).
-///
-/// # Safety
-/// Both names must be readable up to their NUL or field size.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_rename(
-    FlibHndl: c_ushort,
-    from: *mut c_char,
-    to: *mut c_char,
-) -> c_short {
-    ffi_boundary!("cnc_pdf_rename", {
-        unsafe { pdf(FlibHndl, pp::PDF_RENAME, &[], &[(from, 256), (to, 36)]) }.map(drop)
-    })
-}
-
-/// Copies a program (`to`: a program or a folder).
-///
-/// # Safety
-/// Both names must be readable up to their NUL or field size.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_copy(
-    FlibHndl: c_ushort,
-    from: *mut c_char,
-    to: *mut c_char,
-) -> c_short {
-    ffi_boundary!("cnc_pdf_copy", {
-        unsafe { pdf(FlibHndl, pp::PDF_COPY, &[], &[(from, 256), (to, 256)]) }.map(drop)
-    })
-}
-
-/// Moves a program (`to`: a program or a folder).
-///
-/// # Safety
-/// Both names must be readable up to their NUL or field size.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_move(
-    FlibHndl: c_ushort,
-    from: *mut c_char,
-    to: *mut c_char,
-) -> c_short {
-    ffi_boundary!("cnc_pdf_move", {
-        unsafe { pdf(FlibHndl, pp::PDF_MOVE, &[], &[(from, 256), (to, 256)]) }.map(drop)
     })
 }
 

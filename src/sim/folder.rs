@@ -16,17 +16,25 @@ use crate::proto::wire::Writer;
 
 pub(super) const ROUTES: &[Route] = &[
     Route::cnc(pp::PDF_DRIVE, Machine::folder_request),
-    Route::cnc(pp::PDF_INF, Machine::folder_request),
+    Route::table(pp::PDF_INF, |m, _| m.pdf_inf()),
     Route::cnc(pp::PDF_RDCURDIR, Machine::folder_request),
-    Route::cnc(pp::PDF_WRCURDIR, Machine::folder_request),
-    Route::cnc(pp::PDF_SUBDIRN, Machine::folder_request),
+    Route::table(pp::PDF_WRCURDIR, |m, q| {
+        none(m.pdf_wrcurdir(q.arg(0), &q.text(0)))
+    }),
+    Route::table(pp::PDF_SUBDIRN, |m, q| m.pdf_subdirn(&q.text(0))),
     Route::table(pp::PDF_ADD, |m, q| none(m.pdf_add(&q.text(0)))),
     Route::table(pp::PDF_DEL, |m, q| none(m.pdf_del(&q.text(0)))),
-    Route::cnc(pp::PDF_RENAME, Machine::folder_request),
+    Route::table(pp::PDF_RENAME, |m, q| {
+        none(m.pdf_rename(&q.text(0), &q.text(1)))
+    }),
     Route::cnc(pp::PDF_RDMAIN, Machine::folder_request),
     Route::table(pp::PDF_SLCTMAIN, |m, q| none(m.pdf_slctmain(&q.text(0)))),
-    Route::cnc(pp::PDF_COPY, Machine::folder_request),
-    Route::cnc(pp::PDF_MOVE, Machine::folder_request),
+    Route::table(pp::PDF_COPY, |m, q| {
+        none(m.pdf_copy(&q.text(0), &q.text(1), false))
+    }),
+    Route::table(pp::PDF_MOVE, |m, q| {
+        none(m.pdf_copy(&q.text(0), &q.text(1), true))
+    }),
     Route::cnc(pp::PDF_SUBDIR, Machine::folder_request),
     Route::cnc(pp::PDF_ALLDIR, Machine::folder_request),
     Route::cnc(pp::PDF_RDLINE, Machine::line_request),
@@ -55,25 +63,21 @@ fn err<T>(code: i16) -> Reply<T> {
 }
 
 impl Machine {
-    /// The request's two names: the payload's 256-byte field and what
-    /// follows it.
-    fn names(sub: &ReqSub) -> (String, String) {
+    /// The request's name: the payload's 256-byte field.
+    fn name(sub: &ReqSub) -> String {
         let p = &sub.payload;
-        (
-            field(p.get(..256).unwrap_or(p)),
-            field(p.get(256..).unwrap_or(&[])),
-        )
+        field(p.get(..256).unwrap_or(p))
     }
 
-    /// A folder command: its names and arguments.
+    /// A folder command: its name and arguments.
     fn folder_request(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
-        let (a, b) = Self::names(sub);
-        self.folder_answer(sub.cmd, sub.path, sub.args, &a, &b)
+        let a = Self::name(sub);
+        self.folder_answer(sub.cmd, sub.path, sub.args, &a)
     }
 
     /// A line command: the program's name and the arguments.
     fn line_request(&mut self, sub: &ReqSub) -> Reply<Vec<u8>> {
-        let (a, _) = Self::names(sub);
+        let a = Self::name(sub);
         self.line_answer(sub, &a)
     }
 
@@ -176,63 +180,16 @@ impl Machine {
         }
     }
 
-    fn folder_answer(
-        &mut self,
-        cmd: u16,
-        path: u16,
-        args: [i32; 5],
-        a: &str,
-        b: &str,
-    ) -> Reply<Vec<u8>> {
+    fn folder_answer(&mut self, cmd: u16, path: u16, args: [i32; 5], a: &str) -> Reply<Vec<u8>> {
         let (word, block) = (args[0], args[1]);
-        let today = self.today();
         let st = &mut self.store;
         let mut w = Writer::new();
         match cmd {
             pp::PDF_DRIVE => {
                 w.bytes(b"CNC_MEM\0\0\0\0\0");
             }
-            pp::PDF_INF => {
-                let (mut used, mut all) = (0, 0);
-                for n in 1..=self.run.len() as u16 {
-                    let s = st.path(n)?;
-                    (used, all) = (used + s.used(), all + s.capacity);
-                }
-                let dirs = st.folders.len();
-                for v in [used.div_ceil(256), all / 256, dirs, 1000] {
-                    w.i32(v as i32);
-                }
-            }
-            pp::PDF_RDCURDIR | pp::PDF_WRCURDIR => {
-                let k = usize::try_from(word - 1).ok().filter(|k| *k < 2);
-                let k = k.ok_or(CncError::new(ew::EW_ATTRIB))?;
-                if cmd == pp::PDF_RDCURDIR {
-                    return Ok(name256(&st.curdir[k]));
-                }
-                match st.locate(a)? {
-                    (f, None) => st.curdir[k] = f,
-                    _ => return err(ew::EW_DATA),
-                }
-            }
-            pp::PDF_SUBDIRN => {
-                let (f, None) = st.locate(a)? else {
-                    return err(ew::EW_DATA);
-                };
-                let subs = st.folders.iter().filter(|g| {
-                    g.strip_prefix(f.as_str())
-                        .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
-                });
-                let files = (1..=self.run.len() as u16)
-                    .find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"))
-                    .map_or(0, |n| st.iter(n).count());
-                w.i32(subs.count() as i32);
-                w.i32(files as i32);
-            }
-            pp::PDF_RENAME => {
-                let (Ok((_, Some((p, n)))), Some(to)) = (st.locate(a), new_number(b)) else {
-                    return err(ew::EW_DATA);
-                };
-                st.rename(p, n, to, today)?;
+            pp::PDF_RDCURDIR => {
+                return Ok(name256(&st.curdir[curdir(word)?]));
             }
             pp::PDF_SUBDIR | pp::PDF_ALLDIR => {
                 let (f, None) = st.locate(a)? else {
@@ -310,32 +267,94 @@ impl Machine {
                 let main = st.path(path)?.main;
                 return Ok(name256(&format!("//CNC_MEM/USER/PATH{path}/O{main:04}")));
             }
-            _ => {
-                // PDF_COPY / PDF_MOVE: to a program, or into a folder.
-                let (_, Some((p, n))) = st.locate(a)? else {
-                    return err(ew::EW_DATA);
-                };
-                let (q, m) = match st.locate(b)? {
-                    (_, Some(to)) => to,
-                    (f, None) => match st.locate(&format!("{f}O{n:04}"))? {
-                        (_, Some(to)) => to,
-                        _ => return err(ew::EW_DATA),
-                    },
-                };
-                let mut prog = st.path(p)?.find(n)?.clone();
-                if cmd == pp::PDF_MOVE {
-                    st.path(p)?.editable(n)?;
-                } else {
-                    (prog.created, prog.modified, prog.protect) = (today, today, false);
-                }
-                st.insert(q, prog.renumbered(m))?;
-                if cmd == pp::PDF_MOVE {
-                    st.remove(p, n)?;
-                }
-            }
+            _ => return Err(CncError::FUNC),
         }
         Ok(w.into_vec())
     }
+
+    /// The drives' used and total pages (256 bytes each), the folders,
+    /// and room for 1000 (cnc_rdpdf_inf).
+    fn pdf_inf(&mut self) -> Reply<Vec<i64>> {
+        let (mut used, mut all) = (0, 0);
+        for n in 1..=self.run.len() as u16 {
+            let s = self.store.path(n)?;
+            (used, all) = (used + s.used(), all + s.capacity);
+        }
+        let dirs = self.store.folders.len();
+        Ok([used.div_ceil(256), all / 256, dirs, 1000]
+            .map(|v| v as i64)
+            .to_vec())
+    }
+
+    /// Sets the current folder of `type` (1 foreground, 2 background).
+    fn pdf_wrcurdir(&mut self, word: i32, a: &str) -> Reply<()> {
+        let k = curdir(word)?;
+        match self.store.locate(a)? {
+            (f, None) => self.store.curdir[k] = f,
+            _ => return err(ew::EW_DATA),
+        }
+        Ok(())
+    }
+
+    /// The folders and the programs a folder holds.
+    fn pdf_subdirn(&mut self, a: &str) -> Reply<Vec<i64>> {
+        let st = &self.store;
+        let (f, None) = st.locate(a)? else {
+            return err(ew::EW_DATA);
+        };
+        let subs = st.folders.iter().filter(|g| {
+            g.strip_prefix(f.as_str())
+                .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
+        });
+        let files = (1..=self.run.len() as u16)
+            .find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"))
+            .map_or(0, |n| st.iter(n).count());
+        Ok(vec![subs.count() as i64, files as i64])
+    }
+
+    /// Renames a program to "O`<number>`".
+    fn pdf_rename(&mut self, a: &str, b: &str) -> Reply<()> {
+        let today = self.today();
+        let st = &mut self.store;
+        let (Ok((_, Some((p, n)))), Some(to)) = (st.locate(a), new_number(b)) else {
+            return err(ew::EW_DATA);
+        };
+        st.rename(p, n, to, today)
+    }
+
+    /// Copies (or, `moved`, moves) a program to a program, or into a
+    /// folder.
+    fn pdf_copy(&mut self, a: &str, b: &str, moved: bool) -> Reply<()> {
+        let today = self.today();
+        let st = &mut self.store;
+        let (_, Some((p, n))) = st.locate(a)? else {
+            return err(ew::EW_DATA);
+        };
+        let (q, m) = match st.locate(b)? {
+            (_, Some(to)) => to,
+            (f, None) => match st.locate(&format!("{f}O{n:04}"))? {
+                (_, Some(to)) => to,
+                _ => return err(ew::EW_DATA),
+            },
+        };
+        let mut prog = st.path(p)?.find(n)?.clone();
+        if moved {
+            st.path(p)?.editable(n)?;
+        } else {
+            (prog.created, prog.modified, prog.protect) = (today, today, false);
+        }
+        st.insert(q, prog.renumbered(m))?;
+        if moved {
+            st.remove(p, n)?;
+        }
+        Ok(())
+    }
+}
+
+/// The current folder's index of a `type` (1 or 2; else EW_ATTRIB).
+fn curdir(word: i32) -> Reply<usize> {
+    let k = usize::try_from(word - 1).ok().filter(|k| *k < 2);
+    k.ok_or(CncError::new(ew::EW_ATTRIB))
 }
 
 /// The program number of a new name "O<number>".

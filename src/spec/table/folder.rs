@@ -5,6 +5,7 @@
 //! cuts it).
 
 use super::super::commands as cmd;
+use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
@@ -49,6 +50,63 @@ pub const FUNCS: &[Func] = &[
             Param::ULong("count"),
         ],
         forms: &[every_class(cmd::PDF_DELLINE, &[Word::Arg(0), Word::Arg(1)])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_pdf_rename",
+        doc: "Renames a program or folder (`from` sent in a 256-byte field; `to`, the new name, in a 36-byte field).",
+        params: &[Param::Text("from", 256), Param::Text("to", 36)],
+        forms: &[every_class(cmd::PDF_RENAME, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_pdf_copy",
+        doc: "Copies a program (`to`: a program or a folder; each name sent in a 256-byte field).",
+        params: &[Param::Text("from", 256), Param::Text("to", 256)],
+        forms: &[every_class(cmd::PDF_COPY, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_pdf_move",
+        doc: "Moves a program (`to`: a program or a folder; each name sent in a 256-byte field).",
+        params: &[Param::Text("from", 256), Param::Text("to", 256)],
+        forms: &[every_class(cmd::PDF_MOVE, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrpdf_curdir",
+        doc: "Sets the current directory of `type` (1 foreground, 2 background) to `dir_name` (sent in a 256-byte field).",
+        params: &[Param::Short("type"), Param::Text("dir_name", 256)],
+        forms: &[every_class(cmd::PDF_WRCURDIR, &[Word::Arg(0)])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdpdf_subdirn",
+        doc: "Reads how many directories and files the directory `path` (sent in a 256-byte field) holds (the low 16 bits of each answered word).",
+        params: &[
+            Param::Text("path", 256),
+            Param::Out("num_fil", "ODBPDFNFIL"),
+        ],
+        forms: &[every_class(cmd::PDF_SUBDIRN, &[])],
+        reply: &[to(I32, "dir_num", I16), to(I32, "file_num", I16)],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdpdf_inf",
+        doc: "Reads a drive's used and total capacity (pages) and directories (`drv_name` sent in a 12-byte field; a short answer is EW_PROTOCOL, nothing written).",
+        params: &[
+            Param::Text("drv_name", 12),
+            Param::Short("type"),
+            Param::Out("inf", "ODBPDFINF"),
+        ],
+        forms: &[every_class(cmd::PDF_INF, &[Word::Arg(0)])],
+        reply: &[
+            to(I32, "used_page", I32),
+            to(I32, "all_page", I32),
+            to(I32, "used_dir", I32),
+            to(I32, "all_dir", I32),
+        ],
+        short: Short::Error,
         ..COMMAND
     },
 ];
