@@ -553,7 +553,10 @@ fn described_exports(funcs: &[types::Func]) -> String {
                                 ),
                             }
                         }
-                        _ => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
+                        _ => match text_buf(t) {
+                            Some(size) => format!("/// `{n}` must be NULL or point to {size} writable bytes."),
+                            None => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
+                        },
                     })
                     .collect(),
                 Some(c) => std::iter::once(format!(
@@ -723,9 +726,10 @@ fn rust_type(c: &str) -> String {
         "short" => "c_short".into(),
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
-        t => match char_array(t) {
-            Some(n) => format!("[c_char; {n}]"),
-            None => t.into(),
+        t => match (char_array(t), text_buf(t)) {
+            (Some(n), _) => format!("[c_char; {n}]"),
+            (_, Some(_)) => "c_char".into(),
+            _ => t.into(),
         },
     }
 }
@@ -740,6 +744,11 @@ fn doc_type(t: &str) -> String {
     }
 }
 
+/// N of a `text[N]` output: a `char *` to N bytes.
+fn text_buf(c: &str) -> Option<usize> {
+    c.strip_prefix("text[")?.strip_suffix(']')?.parse().ok()
+}
+
 /// N of a `char[N]` output.
 fn char_array(c: &str) -> Option<usize> {
     c.strip_prefix("char[")?.strip_suffix(']')?.parse().ok()
@@ -752,6 +761,6 @@ fn c_size(c: &str) -> Option<usize> {
         "char" => Some(1),
         "short" | "unsigned short" => Some(2),
         "long" => Some(4),
-        t => char_array(t),
+        t => char_array(t).or_else(|| text_buf(t)),
     }
 }

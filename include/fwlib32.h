@@ -2859,10 +2859,11 @@ short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
 short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
 
 /*
- Reads the main program's path name.
+ Reads the main program's path name: 256 bytes written, the answer's up
+ to its NUL and zeros after.
 
  # Safety
- `path_name` must have 256 writable bytes.
+ `path_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
 
@@ -3766,19 +3767,21 @@ short cnc_rdpdf_alldir(unsigned short FlibHndl,
                        struct ODBPDFADIR *out);
 
 /*
- Reads the current directory of `type` (1 foreground, 2 background).
+ Reads the current directory of `type` (1 foreground, 2 background): 256
+ bytes written, the answer's up to its NUL and zeros after.
 
  # Safety
- `dir_name` must have 256 writable bytes.
+ `dir_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_rdpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 
 /*
- Reads the program drives ("CNC_MEM" ...): their number and names (the
- answer is the names, 12 bytes each).
+ Reads the program drives ("CNC_MEM" ...): the answer's 12-byte names, as
+ many as it holds (16 at most), each up to its NUL and zeros after, and
+ their number into `max_num` (`dummy` not written).
 
  # Safety
- `drive` must point to a writable ODBPDFDRV.
+ `drive` must be NULL or point to a writable ODBPDFDRV.
  */
 short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
 

@@ -307,7 +307,7 @@ unsafe fn write_fields(
                 let p = outs[field.out as usize].add(at(k) + e * field.c.size());
                 match field.c {
                     Int::I8 => put(p.cast::<i8>(), x as i8),
-                    Int::U8 => put(p, x as u8),
+                    Int::U8 | Int::Char => put(p, x as u8),
                     Int::I16 => put(p.cast::<i16>(), x as i16),
                     Int::U16 => put(p.cast::<u16>(), x as u16),
                     Int::I32 => put(p.cast::<i32>(), x as i32),

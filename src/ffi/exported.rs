@@ -27,7 +27,6 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("dynamic", &["cnc_rddynamic2", "cnc_rddynamic", "cnc_rddynamico8"]),
     ("folder", &[
-        "cnc_rdpdf_drive", "cnc_rdpdf_curdir", "cnc_pdf_rdmain",
         "cnc_pdf_rdactpt", "cnc_pdf_wractpt", "cnc_rdpdf_line", "cnc_wrpdf_line",
         "cnc_rdpdf_subdir", "cnc_rdpdf_alldir",
     ]),

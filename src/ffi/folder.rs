@@ -10,7 +10,7 @@ use crate::proto::call::Single;
 use crate::proto::packet::ReqSub;
 use crate::proto::program::{self as pp, PathName};
 use crate::proto::wire::{Reader, Wire};
-use crate::types::{IDBPDFADIR, IDBPDFSDIR, ODBPDFADIR, ODBPDFDRV, ODBPDFSDIR};
+use crate::types::{IDBPDFADIR, IDBPDFSDIR, ODBPDFADIR, ODBPDFSDIR};
 use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// Sends folder command `cmd` with `words` and the strings, each as a field
@@ -68,72 +68,6 @@ fn words(b: &[u8], n: usize, zeros: bool) -> Result<Vec<i32>> {
     Ok((0..n)
         .map(|_| i32::decode(&mut r))
         .collect::<std::result::Result<_, _>>()?)
-}
-
-/// Writes an answered path name as FANUC's library does: 256 bytes, the
-/// answer's and zeros after it.
-unsafe fn put_name(out: *mut c_char, name: &[u8]) -> Result<()> {
-    // Up to its NUL, zeros after (as FANUC's library copies it, whatever
-    // follows the NUL in the answer).
-    let end = name.iter().position(|c| *c == 0).unwrap_or(name.len());
-    let mut b = name[..end.min(256)].to_vec();
-    b.resize(256, 0);
-    unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), nonnull(out)?.cast::<u8>(), 256) };
-    Ok(())
-}
-
-/// Reads the program drives ("CNC_MEM" ...): their number and names (the
-/// answer is the names, 12 bytes each).
-///
-/// # Safety
-/// `drive` must point to a writable ODBPDFDRV.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpdf_drive(FlibHndl: c_ushort, drive: *mut ODBPDFDRV) -> c_short {
-    ffi_boundary!("cnc_rdpdf_drive", {
-        let out = nonnull(drive)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_DRIVE, &[], &[]) }?;
-        // 12 bytes per drive name, as many as the answer holds (16 at most),
-        // each copied up to its NUL and zero-filled; `dummy` is not written.
-        let names = b.chunks_exact(12).take(16);
-        unsafe { put(out.cast::<c_short>(), names.len() as c_short) };
-        for (i, n) in names.enumerate() {
-            let mut name = [0u8; 12];
-            let end = n.iter().position(|&c| c == 0).unwrap_or(12);
-            name[..end].copy_from_slice(&n[..end]);
-            unsafe { put(out.cast::<u8>().add(4 + 12 * i).cast::<[u8; 12]>(), name) };
-        }
-        Ok(())
-    })
-}
-
-/// Reads the current directory of `type` (1 foreground, 2 background).
-///
-/// # Safety
-/// `dir_name` must have 256 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdpdf_curdir(
-    FlibHndl: c_ushort,
-    r#type: c_short,
-    dir_name: *mut c_char,
-) -> c_short {
-    ffi_boundary!("cnc_rdpdf_curdir", {
-        nonnull(dir_name)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_RDCURDIR, &[r#type.into()], &[]) }?;
-        unsafe { put_name(dir_name, &b) }
-    })
-}
-
-/// Reads the main program's path name.
-///
-/// # Safety
-/// `path_name` must have 256 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_pdf_rdmain(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
-    ffi_boundary!("cnc_pdf_rdmain", {
-        nonnull(path_name)?;
-        let b = unsafe { pdf(FlibHndl, pp::PDF_RDMAIN, &[], &[]) }?;
-        unsafe { put_name(path_name, &b) }
-    })
 }
 
 /// Reads the execution pointer: the program's path name (the answer's

@@ -15,9 +15,11 @@ use crate::proto::program as pp;
 use crate::proto::wire::Writer;
 
 pub(super) const ROUTES: &[Route] = &[
-    Route::cnc(pp::PDF_DRIVE, Machine::folder_request),
+    Route::table(pp::PDF_DRIVE, |_, _| Ok(bytes(b"CNC_MEM\0\0\0\0\0"))),
     Route::table(pp::PDF_INF, |m, _| m.pdf_inf()),
-    Route::cnc(pp::PDF_RDCURDIR, Machine::folder_request),
+    Route::table(pp::PDF_RDCURDIR, |m, q| {
+        Ok(bytes(&name256(&m.store.curdir[curdir(q.arg(0))?])))
+    }),
     Route::table(pp::PDF_WRCURDIR, |m, q| {
         none(m.pdf_wrcurdir(q.arg(0), &q.text(0)))
     }),
@@ -27,7 +29,11 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(pp::PDF_RENAME, |m, q| {
         none(m.pdf_rename(&q.text(0), &q.text(1)))
     }),
-    Route::cnc(pp::PDF_RDMAIN, Machine::folder_request),
+    Route::table(pp::PDF_RDMAIN, |m, q| {
+        let main = m.store.path(q.path)?.main;
+        let name = format!("//CNC_MEM/USER/PATH{}/O{main:04}", q.path);
+        Ok(bytes(&name256(&name)))
+    }),
     Route::table(pp::PDF_SLCTMAIN, |m, q| none(m.pdf_slctmain(&q.text(0)))),
     Route::table(pp::PDF_COPY, |m, q| {
         none(m.pdf_copy(&q.text(0), &q.text(1), false))
@@ -56,6 +62,11 @@ fn name256(s: &str) -> Vec<u8> {
     let mut b = s.as_bytes()[..s.len().min(255)].to_vec();
     b.resize(256, 0);
     b
+}
+
+/// A text's characters as a described answer's integers.
+fn bytes(b: &[u8]) -> Vec<i64> {
+    b.iter().map(|&c| i64::from(c)).collect()
 }
 
 fn err<T>(code: i16) -> Reply<T> {
@@ -185,12 +196,6 @@ impl Machine {
         let st = &mut self.store;
         let mut w = Writer::new();
         match cmd {
-            pp::PDF_DRIVE => {
-                w.bytes(b"CNC_MEM\0\0\0\0\0");
-            }
-            pp::PDF_RDCURDIR => {
-                return Ok(name256(&st.curdir[curdir(word)?]));
-            }
             pp::PDF_SUBDIR | pp::PDF_ALLDIR => {
                 let (f, None) = st.locate(a)? else {
                     return err(ew::EW_DATA);
@@ -262,10 +267,6 @@ impl Machine {
                 };
                 self.store.path(p)?.find(n)?;
                 w.i32(block);
-            }
-            pp::PDF_RDMAIN => {
-                let main = st.path(path)?.main;
-                return Ok(name256(&format!("//CNC_MEM/USER/PATH{path}/O{main:04}")));
             }
             _ => return Err(CncError::FUNC),
         }

@@ -410,9 +410,6 @@ static short w_callx(void) {
     WORD(rdmdiprog, SHORT_IO(length, 1, F(cnc_rdmdiprog)(H, &length, B0)))                        \
     WORD(wrmdiprog, { fill_hex(b1, 2); return F(cnc_wrmdiprog)(H, N(1), B1); })                   \
     /* program data folders (30i) */                                                              \
-    WORD(rdpdf_drive, return F(cnc_rdpdf_drive)(H, B0))                                           \
-    WORD(rdpdf_curdir, return F(cnc_rdpdf_curdir)(H, N(1), B0))                                   \
-    WORD(pdf_rdmain, return F(cnc_pdf_rdmain)(H, B0))                                             \
     WORD(rdpdf_subdir, { short n = N(1); IDBPDFSDIR in; memset(&in, 0, sizeof in);                \
                          strncpy(in.path, argv_[2], sizeof in.path - 1); in.req_num = N(3);       \
                          short r = F(cnc_rdpdf_subdir)(H, &n, &in, B0); field("num", n);          \

@@ -328,7 +328,7 @@ pub fn zero_unless(f: &Func, out: &mut [i64]) {
 fn cast(v: i64, c: Int) -> i64 {
     match c {
         Int::I8 => i64::from(v as i8),
-        Int::U8 => i64::from(v as u8),
+        Int::U8 | Int::Char => i64::from(v as u8),
         Int::I16 => i64::from(v as i16),
         Int::U16 => i64::from(v as u16),
         Int::I32 => i64::from(v as i32),
@@ -367,7 +367,7 @@ pub fn payload_values(
                 out.push(match (field.to, field.c) {
                     (None, _) => 0,
                     (_, Int::I8) => i64::from(b(0) as i8),
-                    (_, Int::U8) => i64::from(b(0)),
+                    (_, Int::U8 | Int::Char) => i64::from(b(0)),
                     (_, Int::I16) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
@@ -418,6 +418,13 @@ fn read_fields(
     out: &mut Vec<i64>,
 ) -> Result<()> {
     for field in fields {
+        if field.wire == Int::Char && field.arg.is_none() {
+            // A text: its characters up to the first NUL, zeros after.
+            let b = r.bytes(usize::from(field.n))?;
+            let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+            out.extend((0..b.len()).map(|i| if i < end { i64::from(b[i]) } else { 0 }));
+            continue;
+        }
         for _ in 0..field.n {
             if let Some(a) = field.arg {
                 let v = match a {
@@ -431,7 +438,7 @@ fn read_fields(
             }
             let v = match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
-                Int::U8 => i64::from(r.u8()?),
+                Int::U8 | Int::Char => i64::from(r.u8()?),
                 Int::I16 => i64::from(r.i16()?),
                 Int::U16 => i64::from(r.u16()?),
                 Int::I32 => i64::from(r.i32()?),

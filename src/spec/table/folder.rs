@@ -109,4 +109,36 @@ pub const FUNCS: &[Func] = &[
         short: Short::Error,
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdpdf_curdir",
+        doc: "Reads the current directory of `type` (1 foreground, 2 background): 256 bytes written, the answer's up to its NUL and zeros after.",
+        params: &[Param::Short("type"), Param::Out("dir_name", "text[256]")],
+        forms: &[every_class(cmd::PDF_RDCURDIR, &[Word::Arg(0)])],
+        reply: &[text(256, "")],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_pdf_rdmain",
+        doc: "Reads the main program's path name: 256 bytes written, the answer's up to its NUL and zeros after.",
+        params: &[Param::Out("path_name", "text[256]")],
+        forms: &[every_class(cmd::PDF_RDMAIN, &[])],
+        reply: &[text(256, "")],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdpdf_drive",
+        doc: "Reads the program drives (\"CNC_MEM\" ...): the answer's 12-byte names, as many as it holds (16 at most), each up to its NUL and zeros after, and their number into `max_num` (`dummy` not written).",
+        params: &[Param::Out("drive", "ODBPDFDRV")],
+        forms: &[every_class(cmd::PDF_DRIVE, &[])],
+        records: Some(Records {
+            fields: &[text(12, "")],
+            out: 0,
+            to: "drive",
+            elem: "char[12]",
+            max: 16,
+            count: Some("max_num"),
+            room: None,
+        }),
+        ..COMMAND
+    },
 ];
