@@ -74,6 +74,33 @@ fn err<T>(code: i16) -> Reply<T> {
 }
 
 impl Machine {
+    /// The path and number of program `a` ("<folder>O<n>"), else EW_DATA.
+    fn program(&self, a: &str) -> Reply<(u16, i32)> {
+        self.store.locate(a)?.1.ok_or(CncError::new(ew::EW_DATA))
+    }
+
+    /// Folder `a`, else (a program, or no such folder) EW_DATA.
+    fn folder(&self, a: &str) -> Reply<String> {
+        match self.store.locate(a)? {
+            (f, None) => Ok(f),
+            _ => err(ew::EW_DATA),
+        }
+    }
+
+    /// The path whose programs folder `f` holds, if any.
+    fn path_of(&self, f: &str) -> Option<u16> {
+        (1..=self.run.len() as u16).find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"))
+    }
+
+    /// The folders right inside folder `f`.
+    fn subfolders(&self, f: &str) -> Vec<&String> {
+        let inside = |g: &&String| {
+            g.strip_prefix(f)
+                .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
+        };
+        self.store.folders.iter().filter(inside).collect()
+    }
+
     /// The request's name: the payload's 256-byte field.
     fn name(sub: &ReqSub) -> String {
         let p = &sub.payload;
@@ -94,12 +121,9 @@ impl Machine {
 
     /// Deletes every program of a path's folder (cnc_pdf_delall).
     fn pdf_delall(&mut self, name: &str) -> Reply<()> {
-        let paths = self.run.len() as u16;
         let (folder, _) = self.store.locate(name)?;
-        let p = (1..=paths).find(|n| folder == format!("//CNC_MEM/USER/PATH{n}/"));
-        self.store
-            .remove_all(p.ok_or(CncError::new(ew::EW_DATA))?)
-            .map(drop)
+        let p = self.path_of(&folder).ok_or(CncError::new(ew::EW_DATA))?;
+        self.store.remove_all(p).map(drop)
     }
 
     /// Deletes `count` lines of a program ("<folder>O<n>") from line
@@ -108,8 +132,7 @@ impl Machine {
         let today = self.today();
         let (from, n) = (q.arg(0).max(0) as usize, q.arg(1).max(0) as usize);
         let at = from.saturating_sub(1);
-        let (_, prog) = self.store.locate(&q.text(0))?;
-        let (p, number) = prog.ok_or(CncError::new(ew::EW_DATA))?;
+        let (p, number) = self.program(&q.text(0))?;
         self.store.edit_lines(p, number, today, |l| {
             let end = (at + n).min(l.len());
             l.drain(at.min(end)..end);
@@ -119,19 +142,18 @@ impl Machine {
     /// Creates a program or (a name ending in '/') a folder.
     fn pdf_add(&mut self, a: &str) -> Reply<()> {
         let today = self.today();
-        let st = &mut self.store;
         if let Some(inner) = a.strip_suffix('/') {
             let parent = &a[..inner.rfind('/').map_or(0, |i| i + 1)];
+            let st = &mut self.store;
             if st.folders.iter().any(|f| f == a) || !st.folders.iter().any(|f| f == parent) {
                 return err(ew::EW_DATA);
             }
             st.folders.push(a.to_string());
             return Ok(());
         }
-        let (_, Some((p, n))) = st.locate(a)? else {
-            return err(ew::EW_DATA);
-        };
-        st.insert(p, Program::new(&format!("O{n:04};\n%\n"), today))
+        let (p, n) = self.program(a)?;
+        self.store
+            .insert(p, Program::new(&format!("O{n:04};\n%\n"), today))
     }
 
     /// Deletes a program or an empty folder of the user's.
@@ -157,9 +179,7 @@ impl Machine {
 
     /// Selects a program as the main program.
     fn pdf_slctmain(&mut self, a: &str) -> Reply<()> {
-        let (_, Some((p, n))) = self.store.locate(a)? else {
-            return err(ew::EW_DATA);
-        };
+        let (p, n) = self.program(a)?;
         self.store.select(p, n)
     }
 
@@ -168,11 +188,10 @@ impl Machine {
     /// name after line `args[0]`.
     fn line_answer(&mut self, sub: &ReqSub, name: &str) -> Reply<Vec<u8>> {
         let today = self.today();
-        let st = &mut self.store;
         let (from, n) = (sub.args[0].max(0) as usize, sub.args[1].max(0) as usize);
         let at = from.saturating_sub(1);
-        let (_, prog) = st.locate(name)?;
-        let (p, number) = prog.ok_or(CncError::new(ew::EW_DATA))?;
+        let (p, number) = self.program(name)?;
+        let st = &mut self.store;
         match sub.cmd {
             pp::PDF_RDLINE => {
                 let text = st.path(p)?.find(number)?.text.clone();
@@ -193,25 +212,16 @@ impl Machine {
 
     fn folder_answer(&mut self, cmd: u16, path: u16, args: [i32; 5], a: &str) -> Reply<Vec<u8>> {
         let (word, block) = (args[0], args[1]);
-        let st = &mut self.store;
         let mut w = Writer::new();
         match cmd {
             pp::PDF_SUBDIR | pp::PDF_ALLDIR => {
-                let (f, None) = st.locate(a)? else {
-                    return err(ew::EW_DATA);
-                };
+                let f = self.folder(a)?;
                 let (from, n) = (word.max(0) as usize, block.max(0) as usize);
-                let subs: Vec<&String> = st
-                    .folders
-                    .iter()
-                    .filter(|g| {
-                        g.strip_prefix(f.as_str())
-                            .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
-                    })
-                    .collect();
-                let path =
-                    (1..=self.run.len() as u16).find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"));
-                let progs: Vec<&Program> = path.map_or(Vec::new(), |p| st.iter(p).collect());
+                let subs = self.subfolders(&f);
+                let st = &self.store;
+                let progs: Vec<&Program> = self
+                    .path_of(&f)
+                    .map_or(Vec::new(), |p| st.iter(p).collect());
                 let fixed = |s: &str, n: usize| {
                     let mut b = s.as_bytes()[..s.len().min(n - 1)].to_vec();
                     b.resize(n, 0);
@@ -262,9 +272,7 @@ impl Machine {
                 let _ = number;
             }
             pp::PDF_WRACTPT => {
-                let (_, Some((p, n))) = self.store.locate(a)? else {
-                    return err(ew::EW_DATA);
-                };
+                let (p, n) = self.program(a)?;
                 self.store.path(p)?.find(n)?;
                 w.i32(block);
             }
@@ -290,47 +298,32 @@ impl Machine {
     /// Sets the current folder of `type` (1 foreground, 2 background).
     fn pdf_wrcurdir(&mut self, word: i32, a: &str) -> Reply<()> {
         let k = curdir(word)?;
-        match self.store.locate(a)? {
-            (f, None) => self.store.curdir[k] = f,
-            _ => return err(ew::EW_DATA),
-        }
+        self.store.curdir[k] = self.folder(a)?;
         Ok(())
     }
 
     /// The folders and the programs a folder holds.
     fn pdf_subdirn(&mut self, a: &str) -> Reply<Vec<i64>> {
-        let st = &self.store;
-        let (f, None) = st.locate(a)? else {
-            return err(ew::EW_DATA);
-        };
-        let subs = st.folders.iter().filter(|g| {
-            g.strip_prefix(f.as_str())
-                .is_some_and(|r| !r.is_empty() && r.find('/') == Some(r.len() - 1))
-        });
-        let files = (1..=self.run.len() as u16)
-            .find(|n| f == format!("//CNC_MEM/USER/PATH{n}/"))
-            .map_or(0, |n| st.iter(n).count());
-        Ok(vec![subs.count() as i64, files as i64])
+        let f = self.folder(a)?;
+        let files = self.path_of(&f).map_or(0, |n| self.store.iter(n).count());
+        Ok(vec![self.subfolders(&f).len() as i64, files as i64])
     }
 
     /// Renames a program to "O`<number>`".
     fn pdf_rename(&mut self, a: &str, b: &str) -> Reply<()> {
         let today = self.today();
-        let st = &mut self.store;
-        let (Ok((_, Some((p, n)))), Some(to)) = (st.locate(a), new_number(b)) else {
+        let (Ok((p, n)), Some(to)) = (self.program(a), new_number(b)) else {
             return err(ew::EW_DATA);
         };
-        st.rename(p, n, to, today)
+        self.store.rename(p, n, to, today)
     }
 
     /// Copies (or, `moved`, moves) a program to a program, or into a
     /// folder.
     fn pdf_copy(&mut self, a: &str, b: &str, moved: bool) -> Reply<()> {
         let today = self.today();
+        let (p, n) = self.program(a)?;
         let st = &mut self.store;
-        let (_, Some((p, n))) = st.locate(a)? else {
-            return err(ew::EW_DATA);
-        };
         let (q, m) = match st.locate(b)? {
             (_, Some(to)) => to,
             (f, None) => match st.locate(&format!("{f}O{n:04}"))? {
