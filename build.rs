@@ -382,6 +382,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
         let c_param = |p: &Param| match *p {
             Param::Short(n) | Param::ShortAs(n, _) => format!("{}: c_short", ident(n)),
             Param::Long(n) => format!("{}: c_long", ident(n)),
+            Param::ULong(n) => format!("{}: c_ulong", ident(n)),
+            Param::Text(n, _) => format!("{}: *mut c_char", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
             Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
@@ -481,6 +483,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 )
             }
         };
+        // The text parameters' strings.
+        let texts: Vec<String> = f
+            .texts()
+            .map(|(n, _)| format!("{}.cast_const()", ident(n)))
+            .collect();
+        let texts = format!("texts: &[{}]", texts.join(", "));
         // A write's payload: where each field's member is in one element.
         let pay = match (&f.payload, f.input()) {
             (Some(p), Some((n, _))) => {
@@ -499,7 +507,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     })
                     .collect();
                 format!(
-                    "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}], words: &[{}] }}",
+                    "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}], words: &[{}], {texts} }}",
                     ident(n),
                     offs.join(", "),
                     words.join(", ")
@@ -513,8 +521,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     ..
                 }),
                 None,
-            ) => "PayloadAt { input: std::ptr::null(), stride: 0, offsets: &[], words: &[] }"
-                .to_string(),
+            ) => format!(
+                "PayloadAt {{ input: std::ptr::null(), stride: 0, offsets: &[], words: &[], {texts} }}"
+            ),
             _ => panic!(
                 "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
                 f.name
@@ -548,11 +557,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                                 ),
                             }
                         }
-                        _ => match fixed_array(f, i, t) {
-                            Some(k) => format!(
+                        _ => match text_buf(t).map(|size| format!("/// `{n}` must be NULL or point to {size} writable bytes.")).or_else(|| fixed_array(f, i, t).map(|k| format!(
                                 "/// `{n}` must be NULL or point to {} writable bytes: {k} `{t}`s.",
                                 k * c_size(t).unwrap_or(0)
-                            ),
+                            ))) {
+                            Some(text) => text,
                             None => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
                         },
                     })
@@ -597,12 +606,17 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 )),
             }
         }
+        for (n, size) in f.texts() {
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to {size} readable bytes, or to a C string ending within them."
+            ));
+        }
         assert!(
             f.numbers().count() + f.inputs().count() <= 8,
             "src/spec/table/: {}: more arguments than exec takes (MAX_NUMBERS)",
             f.name
         );
-        let pointers = !outs.is_empty() || f.input().is_some();
+        let pointers = !outs.is_empty() || f.input().is_some() || f.texts().next().is_some();
         s.push_str(&format!(
             r#"
 {doc}{safety}
@@ -719,9 +733,10 @@ fn rust_type(c: &str) -> String {
         "short" => "c_short".into(),
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
-        t => match char_array(t) {
-            Some(n) => format!("[c_char; {n}]"),
-            None => t.into(),
+        t => match (char_array(t), text_buf(t)) {
+            (Some(n), _) => format!("[c_char; {n}]"),
+            (_, Some(_)) => "c_char".into(),
+            _ => t.into(),
         },
     }
 }
@@ -736,7 +751,11 @@ fn doc_type(t: &str) -> String {
     }
 }
 
-/// N of a `char[N]` output.
+/// N of a `text[N]` output: a `char *` to N bytes.
+fn text_buf(c: &str) -> Option<usize> {
+    c.strip_prefix("text[")?.strip_suffix(']')?.parse().ok()
+}
+
 /// The elements a function's fixed reply fields write into its scalar
 /// output `i` (of C type `t`) as an array (a field of `to: ""` and `n` of
 /// them, of `t`'s width), if more than one.
@@ -750,6 +769,7 @@ fn fixed_array(f: &types::Func, i: usize, t: &str) -> Option<usize> {
         .filter(|&k| k > 1)
 }
 
+/// N of a `char[N]` output.
 fn char_array(c: &str) -> Option<usize> {
     c.strip_prefix("char[")?.strip_suffix(']')?.parse().ok()
 }
@@ -761,6 +781,6 @@ fn c_size(c: &str) -> Option<usize> {
         "char" => Some(1),
         "short" | "unsigned short" => Some(2),
         "long" => Some(4),
-        t => char_array(t),
+        t => char_array(t).or_else(|| text_buf(t)),
     }
 }

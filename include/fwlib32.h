@@ -2792,42 +2792,47 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
 short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
 
 /*
- Creates a program or (a name ending in '/') a folder.
+ Creates a program or (a name ending in '/') a folder: `path` sent in a
+ 256-byte field.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_add(unsigned short FlibHndl, char *path);
 
 /*
- Copies a program (`to`: a program or a folder).
+ Copies a program (`to`: a program or a folder; each name sent in a
+ 256-byte field).
 
  # Safety
- Both names must be readable up to their NUL or field size.
+ `from` must be NULL or point to 256 readable bytes, or to a C string ending within them.
+ `to` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
 
 /*
- Deletes a program or an empty folder.
+ Deletes a program or an empty folder: `path` sent in a 256-byte field.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_del(unsigned short FlibHndl, char *path);
 
 /*
- Deletes every program of a folder (`type` as FANUC's: sent after a 1).
+ Deletes every program of a folder (`type` as FANUC's: sent after a 1;
+ `path` in a 256-byte field).
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_delall(unsigned short FlibHndl, short type, char *path);
 
 /*
- Deletes `count` lines of a program from line `line_no`.
+ Deletes `count` lines of a program (`path`, in a 256-byte field) from
+ line `line_no`.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_delline(unsigned short FlibHndl,
                       char *path,
@@ -2835,10 +2840,12 @@ short cnc_pdf_delline(unsigned short FlibHndl,
                       unsigned long count);
 
 /*
- Moves a program (`to`: a program or a folder).
+ Moves a program (`to`: a program or a folder; each name sent in a
+ 256-byte field).
 
  # Safety
- Both names must be readable up to their NUL or field size.
+ `from` must be NULL or point to 256 readable bytes, or to a C string ending within them.
+ `to` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
 
@@ -2852,26 +2859,29 @@ short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
 short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
 
 /*
- Reads the main program's path name.
+ Reads the main program's path name: 256 bytes written, the answer's up
+ to its NUL and zeros after.
 
  # Safety
- `path_name` must have 256 writable bytes.
+ `path_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
 
 /*
- Renames a program or folder (`to`: the new name, 36 bytes sent).
+ Renames a program or folder (`from` sent in a 256-byte field; `to`, the
+ new name, in a 36-byte field).
 
  # Safety
- Both names must be readable up to their NUL or field size.
+ `from` must be NULL or point to 256 readable bytes, or to a C string ending within them.
+ `to` must be NULL or point to 36 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
 
 /*
- Selects a program as the main program.
+ Selects a program as the main program: `path` sent in a 256-byte field.
 
  # Safety
- `path` must be readable up to its NUL or 256 bytes.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
 
@@ -3757,27 +3767,32 @@ short cnc_rdpdf_alldir(unsigned short FlibHndl,
                        struct ODBPDFADIR *out);
 
 /*
- Reads the current directory of `type` (1 foreground, 2 background).
+ Reads the current directory of `type` (1 foreground, 2 background): 256
+ bytes written, the answer's up to its NUL and zeros after.
 
  # Safety
- `dir_name` must have 256 writable bytes.
+ `dir_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_rdpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 
 /*
- Reads the program drives ("CNC_MEM" ...): their number and names (the
- answer is the names, 12 bytes each).
+ Reads the program drives ("CNC_MEM" ...): the answer's 12-byte names, as
+ many as it holds (16 at most), each up to its NUL and zeros after, and
+ their number into `max_num` (`dummy` not written).
 
  # Safety
- `drive` must point to a writable ODBPDFDRV.
+ `drive` must be NULL or point to a writable ODBPDFDRV.
  */
 short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
 
 /*
- Reads a drive's used and total capacity and directories.
+ Reads a drive's used and total capacity (pages) and directories
+ (`drv_name` sent in a 12-byte field; a short answer is EW_PROTOCOL,
+ nothing written).
 
  # Safety
- `drv_name` readable (12 bytes are sent); `inf` a writable ODBPDFINF.
+ `inf` must be NULL or point to a writable ODBPDFINF.
+ `drv_name` must be NULL or point to 12 readable bytes, or to a C string ending within them.
  */
 short cnc_rdpdf_inf(unsigned short FlibHndl, char *drv_name, short type, struct ODBPDFINF *inf);
 
@@ -3814,10 +3829,12 @@ short cnc_rdpdf_subdir(unsigned short FlibHndl,
                        struct ODBPDFSDIR *out);
 
 /*
- Reads how many directories and files a directory holds.
+ Reads how many directories and files the directory `path` (sent in a
+ 256-byte field) holds (the low 16 bits of each answered word).
 
  # Safety
- `path` readable; `num_fil` a writable ODBPDFNFIL.
+ `num_fil` must be NULL or point to a writable ODBPDFNFIL.
+ `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *num_fil);
 
@@ -4969,10 +4986,11 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
 
 /*
- Sets the current directory of `type`.
+ Sets the current directory of `type` (1 foreground, 2 background) to
+ `dir_name` (sent in a 256-byte field).
 
  # Safety
- `dir_name` readable.
+ `dir_name` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_wrpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 

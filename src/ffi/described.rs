@@ -16,7 +16,7 @@ use crate::types::*;
 #[allow(unused_imports)]
 use std::mem::offset_of;
 #[allow(unused_imports)]
-use std::os::raw::{c_char, c_long, c_short, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// Most number parameters a described function has (build.rs checks).
 pub(crate) const MAX_NUMBERS: usize = 8;
@@ -46,6 +46,8 @@ pub(crate) struct PayloadAt<'a> {
     /// The offset in the first element of each input member a request
     /// word carries ([`Func::inputs`], in order).
     pub words: &'a [usize],
+    /// The C strings of the text parameters ([`Func::texts`], in order).
+    pub texts: &'a [*const c_char],
 }
 
 /// Runs described function `f`: the handle, its checks and NULL outputs
@@ -67,7 +69,8 @@ pub(crate) struct PayloadAt<'a> {
 /// `pay.input` is NULL or holds the records its count argument says (at
 /// most the payload's `max` are read; one without a count parameter),
 /// `pay.stride` bytes each, and `pay.words` are offsets of `short`
-/// members inside its first (written back converted).
+/// members inside its first (written back converted); each of
+/// `pay.texts` is NULL or readable up to its NUL or its field's size.
 pub(crate) unsafe fn exec(
     f: &'static Func,
     h: c_ushort,
@@ -129,6 +132,22 @@ pub(crate) unsafe fn exec(
         }
     }
     outs_set()?;
+    // The text parameters' fields: each string up to its NUL, cut to its
+    // field, zeros after.
+    let mut fields = Vec::new();
+    for (&p, (_, n)) in pay.texts.iter().zip(f.texts()) {
+        let p = nonnull(p.cast_mut())?;
+        let at = fields.len();
+        fields.resize(at + n, 0);
+        for (i, b) in fields[at..].iter_mut().enumerate() {
+            // SAFETY: the caller's string, read up to its NUL and at most
+            // its field's bytes (contract).
+            match unsafe { p.add(i).read() } {
+                0 => break,
+                c => *b = c as u8,
+            }
+        }
+    }
     let cx = h.ctx();
     let Some(form) = form(f, cx.class) else {
         // No request on this class: FANUC's library answers from what it
@@ -190,6 +209,7 @@ pub(crate) unsafe fn exec(
         f,
         args,
         payload: &payload,
+        text: &fields,
         late: Some(&late),
     };
     let values = if form.class == CLASS_PMC {
@@ -287,7 +307,7 @@ unsafe fn write_fields(
                 let p = outs[field.out as usize].add(at(k) + e * field.c.size());
                 match field.c {
                     Int::I8 => put(p.cast::<i8>(), x as i8),
-                    Int::U8 => put(p, x as u8),
+                    Int::U8 | Int::Char => put(p, x as u8),
                     Int::I16 => put(p.cast::<i16>(), x as i16),
                     Int::U16 => put(p.cast::<u16>(), x as u16),
                     Int::I32 => put(p.cast::<i32>(), x as i32),

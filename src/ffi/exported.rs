@@ -27,9 +27,6 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("dynamic", &["cnc_rddynamic2", "cnc_rddynamic", "cnc_rddynamico8"]),
     ("folder", &[
-        "cnc_rdpdf_drive", "cnc_rdpdf_inf", "cnc_rdpdf_curdir", "cnc_wrpdf_curdir",
-        "cnc_rdpdf_subdirn", "cnc_pdf_rdmain", "cnc_pdf_add", "cnc_pdf_del", "cnc_pdf_slctmain",
-        "cnc_pdf_rename", "cnc_pdf_copy", "cnc_pdf_move", "cnc_pdf_delall", "cnc_pdf_delline",
         "cnc_pdf_rdactpt", "cnc_pdf_wractpt", "cnc_rdpdf_line", "cnc_wrpdf_line",
         "cnc_rdpdf_subdir", "cnc_rdpdf_alldir",
     ]),

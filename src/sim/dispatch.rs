@@ -158,6 +158,7 @@ impl Machine {
                     args: &args,
                     words: sub.args,
                     payload: &payload,
+                    bytes: &sub.payload,
                 };
                 let v = f(self, &asked)?;
                 described::encode(func, &v).map_err(|_| CncError::FUNC)
@@ -465,6 +466,7 @@ mod tests {
                         args: &args[..n.min(5)],
                         words,
                         payload: &[],
+                        bytes: &[],
                     };
                     if let Ok(v) = f(&mut m, &q) {
                         answered += 1;

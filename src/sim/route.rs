@@ -35,12 +35,25 @@ pub struct Asked<'a> {
     /// A write's payload integers (`Func::payload`'s fields, record after
     /// record; whole records only).
     pub payload: &'a [i64],
+    /// The request's payload bytes as sent (the text parameters' fields
+    /// first, [`Asked::text`]).
+    pub bytes: &'a [u8],
 }
 
 impl Asked<'_> {
     /// Number argument `i` (0 if the function has fewer).
     pub fn arg(&self, i: usize) -> i32 {
         self.args.get(i).copied().unwrap_or(0)
+    }
+    /// Text parameter `k`'s field (`Func::texts`) up to its NUL ("" if the
+    /// request is shorter).
+    pub fn text(&self, k: usize) -> String {
+        let at: usize = self.f.texts().take(k).map(|(_, n)| n).sum();
+        let n = self.f.texts().nth(k).map_or(0, |(_, n)| n);
+        let b = self.bytes.get(at..).unwrap_or_default();
+        let b = &b[..n.min(b.len())];
+        let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+        String::from_utf8_lossy(&b[..end]).into_owned()
     }
 }
 

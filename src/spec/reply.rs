@@ -27,12 +27,17 @@ pub enum Int {
     /// record, or a binary one where [`Func::binary`](super::Func::binary) says. Its C type
     /// (`c`) is the places' member, an `I16`.
     BaseExp,
+    /// A character of a text field: a byte on the wire and in C (as
+    /// `U8`); decoded, the field's characters after its first NUL read as
+    /// 0 (a C string as FANUC's library copies it, whatever the answer
+    /// holds after the NUL).
+    Char,
 }
 
 impl Int {
     pub const fn size(self) -> usize {
         match self {
-            Int::I8 | Int::U8 => 1,
+            Int::I8 | Int::U8 | Int::Char => 1,
             Int::I16 | Int::U16 => 2,
             Int::I32 | Int::U32 | Int::BaseExp => 4,
         }
@@ -41,7 +46,7 @@ impl Int {
     pub const fn cut(self, v: i64) -> i64 {
         match self {
             Int::I8 => v as i8 as i64,
-            Int::U8 => v as u8 as i64,
+            Int::U8 | Int::Char => v as u8 as i64,
             Int::I16 => v as i16 as i64,
             Int::U16 => v as u16 as i64,
             Int::I32 => v as i32 as i64,
@@ -53,7 +58,7 @@ impl Int {
     pub const fn rust(self) -> &'static str {
         match self {
             Int::I8 => "i8",
-            Int::U8 => "u8",
+            Int::U8 | Int::Char => "u8",
             Int::I16 => "i16",
             Int::U16 => "u16",
             Int::I32 => "i32",
@@ -228,6 +233,19 @@ pub const fn digits(out: u8, to: &'static str) -> Field {
 /// output `out`'s member `to` (a `short`).
 pub const fn places(out: u8, to: &'static str) -> Field {
     to_out(out, Int::BaseExp, to, Int::I16)
+}
+
+/// `n` characters of a text ([`Int::Char`]: up to its first NUL, zeros
+/// after) written to output 0's member `to`.
+pub const fn text(n: u16, to: &'static str) -> Field {
+    Field {
+        wire: Int::Char,
+        n,
+        out: 0,
+        to: Some(to),
+        c: Int::Char,
+        arg: None,
+    }
 }
 
 /// A reply field nobody reads.

@@ -22,13 +22,16 @@ pub enum Param {
     Short(&'static str),
     /// `long NAME`: a number the caller passes (32 bits go on the wire).
     Long(&'static str),
+    /// `unsigned long NAME`: as [`Param::Long`] (32 bits go on the wire).
+    ULong(&'static str),
     /// `short NAME` that FANUC's library converts to `.1` (as a C cast)
     /// before anything else: its request word and any echo of it carry
     /// the converted value.
     ShortAs(&'static str, Int),
     /// `TYPE *NAME`: an output the reply fills. TYPE is a struct of
     /// src/types, or `char`, `short`, `unsigned short` or `long` (4 bytes written,
-    /// as FANUC's x86-64 library writes a `long *`), or `char[N]`.
+    /// as FANUC's x86-64 library writes a `long *`), or `char[N]`, or
+    /// `text[N]`: a `char *` to N bytes (a text of [`Int::Char`]s).
     Out(&'static str, &'static str),
     /// `short *NAME`: the records' count, in and out. In, how many records
     /// the caller's array holds (a number parameter, read once the pointers
@@ -38,6 +41,12 @@ pub enum Param {
     /// `TYPE *NAME`: the records a write sends, read from the caller's
     /// array ([`Func::payload`]). TYPE as for [`Param::Out`].
     In(&'static str, &'static str),
+    /// `char *NAME`: a C string the request's payload carries in a field
+    /// of `.1` bytes: its characters up to its NUL, cut to the field,
+    /// zeros after (bytes past the NUL, or past the field, never read).
+    /// The text parameters' fields go first, in parameter order, before
+    /// any [`Func::payload`] records; NULL is EW_DATA before any traffic.
+    Text(&'static str, u16),
 }
 
 impl Param {
@@ -47,19 +56,21 @@ impl Param {
     pub const fn conv(&self, v: i64) -> Option<i32> {
         match *self {
             Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
-            Param::Long(_) => Some(v as i32),
+            Param::Long(_) | Param::ULong(_) => Some(v as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
-            Param::Out(..) | Param::In(..) => None,
+            Param::Out(..) | Param::In(..) | Param::Text(..) => None,
         }
     }
     pub const fn name(&self) -> &'static str {
         match *self {
             Param::Short(n)
             | Param::Long(n)
+            | Param::ULong(n)
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
-            | Param::In(n, _) => n,
+            | Param::In(n, _)
+            | Param::Text(n, _) => n,
         }
     }
 }
@@ -296,9 +307,25 @@ impl Func {
     /// The number parameters, in order (the values a caller passes).
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Short(n) | Param::Long(n) | Param::ShortAs(n, _) | Param::Count(n) => Some(n),
-            Param::Out(..) | Param::In(..) => None,
+            Param::Short(n)
+            | Param::Long(n)
+            | Param::ULong(n)
+            | Param::ShortAs(n, _)
+            | Param::Count(n) => Some(n),
+            Param::Out(..) | Param::In(..) | Param::Text(..) => None,
         })
+    }
+    /// The [`Param::Text`] parameters, in order: (name, field size).
+    pub fn texts(&self) -> impl Iterator<Item = (&'static str, usize)> + '_ {
+        self.params.iter().filter_map(|p| match *p {
+            Param::Text(n, size) => Some((n, usize::from(size))),
+            _ => None,
+        })
+    }
+    /// Whether the request carries a payload (text fields or records),
+    /// its length in the fifth word.
+    pub fn sends_payload(&self) -> bool {
+        self.payload.is_some() || self.texts().next().is_some()
     }
     /// The [`Param::Count`] parameter, if any: its index among the number
     /// parameters.

@@ -1534,7 +1534,7 @@ proptest! {
                 .map(|(w, s)| match w {
                     None => 0,
                     Some(Int::I8) => i64::from(*s as u8 as i8),
-                    Some(Int::U8) => i64::from(*s as u8),
+                    Some(Int::U8 | Int::Char) => i64::from(*s as u8),
                     Some(Int::I16) => i64::from(*s as u16 as i16),
                     Some(Int::U16) => i64::from(*s as u16),
                     Some(Int::I32) => i64::from(*s as i32),
@@ -1556,6 +1556,19 @@ proptest! {
             // FANUC's library's zeroed member reads 0 (cnc_rdpmacroinfo's use_no2).
             let mut expect = values.clone();
             fwlib32::proto::described::zero_unless(f, &mut expect);
+            // A text (Int::Char) reads as zeros after its first NUL.
+            let per_rec = f.records.map_or(&[][..], |r| r.fields);
+            let layout = f.reply.iter().chain((0..n).flat_map(|_| per_rec.iter()));
+            let mut at = 0;
+            for x in layout {
+                let run = &mut expect[at..at + x.n as usize];
+                if x.wire == Int::Char && x.arg.is_none() {
+                    if let Some(nul) = run.iter().position(|v| *v == 0) {
+                        run[nul..].iter_mut().for_each(|v| *v = 0);
+                    }
+                }
+                at += x.n as usize;
+            }
             // The last number answered (Field::arg LAST): argument 0 (none:
             // 0) plus the records, less one.
             let mut at = 0;

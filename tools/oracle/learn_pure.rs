@@ -1029,6 +1029,7 @@ fn int_name(i: Int) -> &'static str {
         Int::I32 => "I32",
         Int::U32 => "U32",
         Int::BaseExp => "BaseExp",
+        Int::Char => "Char",
     }
 }
 

@@ -410,18 +410,6 @@ static short w_callx(void) {
     WORD(rdmdiprog, SHORT_IO(length, 1, F(cnc_rdmdiprog)(H, &length, B0)))                        \
     WORD(wrmdiprog, { fill_hex(b1, 2); return F(cnc_wrmdiprog)(H, N(1), B1); })                   \
     /* program data folders (30i) */                                                              \
-    WORD(rdpdf_drive, return F(cnc_rdpdf_drive)(H, B0))                                           \
-    WORD(rdpdf_inf, return F(cnc_rdpdf_inf)(H, argv_[1], N(2), B0))                               \
-    WORD(rdpdf_curdir, return F(cnc_rdpdf_curdir)(H, N(1), B0))                                   \
-    WORD(wrpdf_curdir, return F(cnc_wrpdf_curdir)(H, N(1), argv_[2]))                             \
-    WORD(rdpdf_subdirn, return F(cnc_rdpdf_subdirn)(H, argv_[1], B0))                             \
-    WORD(pdf_add, return F(cnc_pdf_add)(H, argv_[1]))                                             \
-    WORD(pdf_del, return F(cnc_pdf_del)(H, argv_[1]))                                             \
-    WORD(pdf_slctmain, return F(cnc_pdf_slctmain)(H, argv_[1]))                                   \
-    WORD(pdf_rdmain, return F(cnc_pdf_rdmain)(H, B0))                                             \
-    WORD(pdf_rename, return F(cnc_pdf_rename)(H, argv_[1], argv_[2]))                             \
-    WORD(pdf_copy, return F(cnc_pdf_copy)(H, argv_[1], argv_[2]))                                 \
-    WORD(pdf_move, return F(cnc_pdf_move)(H, argv_[1], argv_[2]))                                 \
     WORD(rdpdf_subdir, { short n = N(1); IDBPDFSDIR in; memset(&in, 0, sizeof in);                \
                          strncpy(in.path, argv_[2], sizeof in.path - 1); in.req_num = N(3);       \
                          short r = F(cnc_rdpdf_subdir)(H, &n, &in, B0); field("num", n);          \
@@ -431,8 +419,6 @@ static short w_callx(void) {
                          in.size_kind = N(4); in.type = N(5);                                     \
                          short r = F(cnc_rdpdf_alldir)(H, &n, &in, B0); field("num", n);          \
                          return r; })                                                             \
-    WORD(pdf_delall, return F(cnc_pdf_delall)(H, N(1), argv_[2]))                                 \
-    WORD(pdf_delline, return F(cnc_pdf_delline)(H, argv_[1], N(2), N(3)))                         \
     WORD(pdf_rdactpt, LONG_IO(blk, 1, F(cnc_pdf_rdactpt)(H, B0, (long *)blk)))                    \
     WORD(pdf_wractpt, LONG_IO(blk, 3, F(cnc_pdf_wractpt)(H, argv_[1], N(2), (long *)blk)))        \
     WORD(rdpdf_line, { int32_t ln[2] = {(int32_t)N(3), (int32_t)0xCCCCCCCC};                      \

@@ -94,9 +94,14 @@ pub fn generated_words() -> String {
             .params
             .iter()
             .map(|p| match p {
-                Param::Short(_) | Param::Long(_) | Param::ShortAs(..) => {
+                Param::Short(_) | Param::Long(_) | Param::ULong(_) | Param::ShortAs(..) => {
                     n += 1;
                     format!("N({n})")
+                }
+                // A C string: the command line's word itself, in its place.
+                Param::Text(..) => {
+                    n += 1;
+                    format!("argv_[{n}]")
                 }
                 Param::Count(_) => {
                     n += 1;

@@ -25,6 +25,9 @@ pub struct Described<'a> {
     pub f: &'static Func,
     pub args: &'a [i32],
     pub payload: &'a [i64],
+    /// The text parameters' fields ([`Func::texts`]), sent before the
+    /// payload's records.
+    pub text: &'a [u8],
     /// With [`Func::more`]: where an error of a later subpacket goes, the
     /// earlier ones' integers being returned (FANUC's library writes each
     /// subpacket's fields before it reads the next). None: the error is
@@ -39,6 +42,7 @@ impl<'a> Described<'a> {
             f,
             args,
             payload: &[],
+            text: &[],
             late: None,
         }
     }
@@ -82,8 +86,10 @@ impl Call for Described<'_> {
         };
         let sub = sub_of(form.cmd, form.words);
         out.push(match &self.f.payload {
+            None if self.f.texts().next().is_some() => sub.with_payload(self.text.to_vec()),
             Some(p) => {
                 let mut w = Writer::new();
+                w.bytes(self.text);
                 let per: usize = p.fields.iter().map(|x| usize::from(x.n)).sum();
                 let binary = self.f.binary.is_some_and(|c| {
                     c.matches(
@@ -322,7 +328,7 @@ pub fn zero_unless(f: &Func, out: &mut [i64]) {
 fn cast(v: i64, c: Int) -> i64 {
     match c {
         Int::I8 => i64::from(v as i8),
-        Int::U8 => i64::from(v as u8),
+        Int::U8 | Int::Char => i64::from(v as u8),
         Int::I16 => i64::from(v as i16),
         Int::U16 => i64::from(v as u16),
         Int::I32 => i64::from(v as i32),
@@ -361,7 +367,7 @@ pub fn payload_values(
                 out.push(match (field.to, field.c) {
                     (None, _) => 0,
                     (_, Int::I8) => i64::from(b(0) as i8),
-                    (_, Int::U8) => i64::from(b(0)),
+                    (_, Int::U8 | Int::Char) => i64::from(b(0)),
                     (_, Int::I16) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
@@ -412,6 +418,13 @@ fn read_fields(
     out: &mut Vec<i64>,
 ) -> Result<()> {
     for field in fields {
+        if field.wire == Int::Char && field.arg.is_none() {
+            // A text: its characters up to the first NUL, zeros after.
+            let b = r.bytes(usize::from(field.n))?;
+            let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
+            out.extend((0..b.len()).map(|i| if i < end { i64::from(b[i]) } else { 0 }));
+            continue;
+        }
         for _ in 0..field.n {
             if let Some(a) = field.arg {
                 let v = match a {
@@ -425,7 +438,7 @@ fn read_fields(
             }
             let v = match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
-                Int::U8 => i64::from(r.u8()?),
+                Int::U8 | Int::Char => i64::from(r.u8()?),
                 Int::I16 => i64::from(r.i16()?),
                 Int::U16 => i64::from(r.u16()?),
                 Int::I32 => i64::from(r.i32()?),
@@ -447,12 +460,14 @@ fn read_fields(
 }
 
 /// The integers of a write's request payload (simulator side): whole
-/// records of [`Func::payload`]'s fields, as [`Described`] sent them; a
-/// trailing part record is left out.
+/// records of [`Func::payload`]'s fields, as [`Described`] sent them
+/// (after the text parameters' fields); a trailing part record is left out.
 pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
     let Some(p) = &f.payload else {
         return Vec::new();
     };
+    let texts: usize = f.texts().map(|(_, n)| n).sum();
+    let bytes = bytes.get(texts..).unwrap_or_default();
     let size: usize = p.fields.iter().map(Field::wire_len).sum();
     let mut out = Vec::new();
     let mut r = Reader::new(bytes);

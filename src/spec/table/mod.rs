@@ -11,6 +11,7 @@ use super::types::*;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
 mod feed;
+pub mod folder;
 pub mod history;
 pub mod info;
 pub mod magazine;
@@ -31,6 +32,7 @@ pub mod tool_life;
 const AREAS: &[&[Func]] = &[
     operation::FUNCS,
     program::FUNCS,
+    folder::FUNCS,
     feed::FUNCS,
     offset::FUNCS,
     info::FUNCS,
