@@ -429,10 +429,6 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["cnc_rdopmode"],
-        run: |cx, _, r| go(pg::rdopmode(), cx, r),
-    },
-    Decoder {
         names: &[
             "cnc_rdprogdir",
             "cnc_rdprogdir2",

@@ -3562,15 +3562,16 @@ short cnc_rdophistry4(unsigned short FlibHndl,
 
 /*
  Reads the operation mode word (of the spindle: 0 others, 1 normal, 2
- orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning,
- by FANUC's Windows header). An answer without a whole word writes
- nothing (EW_OK), as FANUC's library; further words are not written
- (FANUC's library writes them all, past the short).
+ orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning, by
+ FANUC's Windows header). An answer without a whole word writes nothing
+ (EW_OK), as FANUC's library; further words are not written (FANUC's
+ library writes them all, past the short).
 
  # Safety
- `mode` must point to a writable short.
+ `mode` must be NULL or point to 2 writable bytes: one 2-byte `short` per record answered, at most 1.
  */
-short cnc_rdopmode(unsigned short FlibHndl, short *mode);
+short cnc_rdopmode(unsigned short FlibHndl,
+                   short *mode);
 
 /*
  Reads the operator message of `type` 0 into OPMSG: number, type,

@@ -75,7 +75,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("program", &[
         "cnc_exeprgname", "cnc_exeprgname2", "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
-        "cnc_settimer", "cnc_rdopmode", "cnc_rdprogdir", "cnc_rdprogdir3",
+        "cnc_settimer", "cnc_rdprogdir", "cnc_rdprogdir3",
         "cnc_rdprogdiro8",
     ]),
     ("spindle", &[

@@ -239,27 +239,6 @@ pub unsafe extern "C" fn cnc_settimer(FlibHndl: c_ushort, time: *mut IODBTIMER) 
     })
 }
 
-/// Reads the operation mode word (of the spindle: 0 others, 1 normal, 2
-/// orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning,
-/// by FANUC's Windows header). An answer without a whole word writes
-/// nothing (EW_OK), as FANUC's library; further words are not written
-/// (FANUC's library writes them all, past the short).
-///
-/// # Safety
-/// `mode` must point to a writable short.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) -> c_short {
-    ffi_read!("cnc_rdopmode", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(mode)?;
-        let m = h.call(&pp::rdopmode())?;
-        if let Some(w) = m.0.first() {
-            unsafe { put(out, *w) };
-        }
-        Ok(())
-    })
-}
-
 /// Reads the program directory as text: the programs numbered `datano_s`
 /// to `datano_e`, `type` 0 "O1O1000%", 1 "%\nO1\nO1000(COMMENT)\n%", 2
 /// "O1100O1000(COMMENT)2048%" (number, comment, size in bytes run

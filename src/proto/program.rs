@@ -104,14 +104,6 @@ wire_struct! {
 }
 
 wire_struct! {
-    /// Payload of 0x0057 (cnc_rdopmode): the mode word (FANUC's library
-    /// copies every further word too; a CNC sends one).
-    pub struct OpMode {
-        pub mode: i16,
-    }
-}
-
-wire_struct! {
     /// One G-code group of 0x0021: code within the group, flag (bit 0: commanded in the block).
     pub struct GCode {
         pub code: u8,
@@ -244,29 +236,6 @@ impl Call for SetTimer {
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
         super::call::sub(resp, 0).map(|_| ())
     }
-}
-
-/// Answer of 0x0057 as FANUC's library reads it: every whole i16 word
-/// (possibly none; a CNC sends one, [`OpMode`]); an odd trailing byte is
-/// ignored.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct OpModeWords(pub Vec<i16>);
-
-impl Wire for OpModeWords {
-    fn encode(&self, w: &mut Writer) {
-        self.0.encode(w);
-    }
-    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        let n = r.remaining() / 2;
-        (0..n)
-            .map(|_| r.i16())
-            .collect::<Result<_, _>>()
-            .map(OpModeWords)
-    }
-}
-
-pub fn rdopmode() -> Single<OpModeWords> {
-    Single::new(ReqSub::cnc(RDOPMODE, &[]))
 }
 
 /// What cnc_modal reads for a `type`.

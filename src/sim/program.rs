@@ -13,8 +13,8 @@ use crate::proto::cmd::RDPROCTIME;
 use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND, RDMULTIPIECENO};
 use crate::proto::program::{
     AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
-    ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
-    RDOPMODE, RDPROGDIR, RDTIMER, SETTIMER, Timer,
+    ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, PathName, ProgDir, RDEXECPROG, RDOPMODE,
+    RDPROGDIR, RDTIMER, SETTIMER, Timer,
 };
 
 pub(super) const ROUTES: &[Route] = &[
@@ -32,7 +32,8 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(SETTIMER, |m, q| {
         m.set_clock(q.args[0], &q.payload).map(|()| Vec::new())
     }),
-    Route::cnc(RDOPMODE, |m, q| enc(m.opmode(q.path))),
+    // cnc_rdopmode: the path's `opmode` word.
+    Route::table(RDOPMODE, |m, q| Ok(vec![i64::from(m.path(q.path)?.opmode)])),
     Route::cnc(RDPROGDIR, |m, q| {
         enc(m.prog_dir(q.path, q.args[0], q.args[1], q.args[2]))
     }),
@@ -347,12 +348,6 @@ impl Machine {
             .as_second();
         self.profile.timers.clock_offset += t - now;
         Ok(())
-    }
-
-    pub(crate) fn opmode(&self, path: u16) -> Reply<OpMode> {
-        Ok(OpMode {
-            mode: self.path(path)?.opmode,
-        })
     }
 
     /// 0x0023 (cnc_rdalmmsg/2, cnc_rdalminfo): up to `num` active alarms of

@@ -27,7 +27,7 @@ use fwlib32::proto::alarm::{self as pa, AlmMsg, OpMsg};
 use fwlib32::proto::position::{AlarmBits, ProgNums, SeqNum};
 use fwlib32::proto::program::{
     self as pp, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, NTool,
-    OpMode, PathName, Timer, ToolNum,
+    PathName, Timer, ToolNum,
 };
 use fwlib32::proto::status::{
     CncId, StatInfo, Status, Status2, SysInfo, Word, rdcncid, sysinfo_at_connect,
@@ -1721,7 +1721,6 @@ proptest! {
         prop_assert_eq!(c.to_bytes().len(), 12);
         roundtrip(&ToolNum { datano: w[0], kind: w[1], data: w[2] })?;
         roundtrip(&NTool { datano: w[0], data: w[1] })?;
-        roundtrip(&OpMode { mode: h[0] })?;
         roundtrip(&GModal(g.iter().map(|(code, flag)| GCode { code: *code, flag: *flag }).collect()))?;
         roundtrip(&AuxModal(aux.clone()))?;
         prop_assert_eq!(AuxModal(aux.clone()).to_bytes().len(), 8 * aux.len());

@@ -215,7 +215,6 @@ const WORDS: &[Word] = &[
             ],
         )
     },
-    w("rdopmode", &[]),
     w(
         "rdprogdir",
         &[

@@ -395,7 +395,6 @@ static short w_callx(void) {
     WORD(settimer, { for (int k = 0; k < 4; k++) { short v = (short)N(1 + k);                     \
                          memcpy(b0 + (k ? 2 + 2 * k : 0), &v, 2); }                               \
                      return F(cnc_settimer)(H, B0); })                                            \
-    WORD(rdopmode, return F(cnc_rdopmode)(H, B0))                                                 \
     WORD(rdprogdir, return F(cnc_rdprogdir)(H, N(1), N(2), N(3), N(4), B0))                       \
     WORD(rdprogdiro8, return F(cnc_rdprogdiro8)(H, N(1), N(2), N(3), N(4), B0))                   \
     WORD(rdprogdir3, { int32_t top[2] = {(int32_t)N(2), (int32_t)0xCCCCCCCC}; short n = N(3);     \

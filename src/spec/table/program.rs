@@ -104,4 +104,21 @@ pub const FUNCS: &[Func] = &[
         dims: &["-1|0|5|6|12|18|19|25|26|-2", "0|1|2|-1", "8|1|0|-1|26|27"],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdopmode",
+        doc: "Reads the operation mode word (of the spindle: 0 others, 1 normal, 2 orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning, by FANUC's Windows header). An answer without a whole word writes nothing (EW_OK), as FANUC's library; further words are not written (FANUC's library writes them all, past the short).",
+        params: &[Param::Out("mode", "short")],
+        forms: &[every_class(cmd::RDOPMODE, &[])],
+        // One whole word, if the answer holds one.
+        records: Some(Records {
+            fields: &[to(I16, "", I16)],
+            out: 0,
+            to: "",
+            elem: "short",
+            max: 1,
+            count: None,
+            room: None,
+        }),
+        ..COMMAND
+    },
 ];
