@@ -709,6 +709,7 @@ fn rust_type(c: &str) -> String {
         "short" => "c_short".into(),
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
+        "unsigned long" => "c_ulong".into(),
         t => match char_array(t) {
             Some(n) => format!("[c_char; {n}]"),
             None => t.into(),
@@ -737,7 +738,8 @@ fn c_size(c: &str) -> Option<usize> {
     match c {
         "char" => Some(1),
         "short" | "unsigned short" => Some(2),
-        "long" => Some(4),
+        // 4 bytes written, as FANUC's x86-64 library writes them.
+        "long" | "unsigned long" => Some(4),
         t => char_array(t),
     }
 }

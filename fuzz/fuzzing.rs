@@ -81,10 +81,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(st::StatInfo::<st::Status2>::new(), cx, r),
     },
     Decoder {
-        names: &["cnc_rdcncid"],
-        run: |cx, _, r| go(st::rdcncid(), cx, r),
-    },
-    Decoder {
         names: &["cnc_alarm", "cnc_alarm2"],
         run: |cx, _, r| go(pa::alarm(), cx, r),
     },

@@ -3077,18 +3077,18 @@ short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAM
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 
 /*
- Reads the CNC's identification number: four 32-bit words.
-
- The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
- FANUC's x86-64 library does, four 4-byte words are written (16 bytes):
- pass a `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words).
- Only the words the CNC sent are written, at most four (FANUC's library
- writes every word of a longer answer, past the four).
+ Reads the CNC's identification number: four 32-bit words. The pointer
+ keeps FANUC's `unsigned long *` spelling, but, exactly as FANUC's x86-64
+ library does, four 4-byte words are written (16 bytes): pass a
+ `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words). Only the
+ words the CNC sent are written, at most four (FANUC's library writes
+ every word of a longer answer, past the four).
 
  # Safety
- `cncid` must point to 16 writable bytes.
+ `cncid` must be NULL or point to 16 writable bytes: one 4-byte `unsigned long` per record answered, at most 4.
  */
-short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
+short cnc_rdcncid(unsigned short FlibHndl,
+                  unsigned long *cncid);
 
 /*
  Reads the commanded values of block `block` (0: the block in execution)

@@ -16,7 +16,7 @@ use crate::types::*;
 #[allow(unused_imports)]
 use std::mem::offset_of;
 #[allow(unused_imports)]
-use std::os::raw::{c_char, c_long, c_short, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
 
 /// Most number parameters a described function has (build.rs checks).
 pub(crate) const MAX_NUMBERS: usize = 8;

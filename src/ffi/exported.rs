@@ -82,7 +82,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_acts2", "cnc_rdspeed", "cnc_rdspload", "cnc_rdspmaxrpm", "cnc_rdspgear",
     ]),
     ("status", &[
-        "cnc_sysinfo", "cnc_sysinfo_ex", "cnc_statinfo", "cnc_statinfo2", "cnc_rdcncid",
+        "cnc_sysinfo", "cnc_sysinfo_ex", "cnc_statinfo", "cnc_statinfo2",
     ]),
     ("tool", &[
         "cnc_rdtoolgrp", "cnc_rdtlctldata", "cnc_instlifedt", "cnc_rdgrpinfo", "cnc_wrgrpinfo",

@@ -29,9 +29,7 @@ use fwlib32::proto::program::{
     self as pp, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, NTool,
     PathName, Timer, ToolNum,
 };
-use fwlib32::proto::status::{
-    CncId, StatInfo, Status, Status2, SysInfo, Word, rdcncid, sysinfo_at_connect,
-};
+use fwlib32::proto::status::{StatInfo, Status, Status2, SysInfo, Word, sysinfo_at_connect};
 use fwlib32::proto::wire::{DecodeError, Wire, Writer};
 use fwlib32::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
 // --- macros ---
@@ -299,7 +297,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&StatInfo::<Status>::new(), &cx, path)
                                 }
                                 "statinfo2" => stamped(&StatInfo::<Status2>::new(), &cx, path),
-                                "rdcncid" => stamped(&rdcncid(), &cx, path),
                                 // --- macros ---
                                 "rdmacro" => {
                                     let n = num(&args[0]) as i32;
@@ -689,9 +686,10 @@ fn payload_length_word_bounds_the_payload() {
     let subs = decode_response(&body).unwrap();
     assert_eq!(subs[0].payload, vec![0, 1, 2, 3]);
     assert!(!canonical_response(&body));
+    let f = described("rdcncid").unwrap();
     assert_eq!(
-        CncId::from_bytes(&subs[0].payload).unwrap(),
-        CncId(vec![0x00010203])
+        fwlib32::proto::described::decode(f, &[], &subs[0].payload).unwrap(),
+        vec![0x00010203]
     );
 }
 
@@ -903,7 +901,6 @@ proptest! {
         st in status(),
         st2 in status2(),
         w in any::<i16>(),
-        id in vec(any::<u32>(), 0..=4),
         p in param16(),
     ) {
         roundtrip(&s)?;
@@ -913,7 +910,6 @@ proptest! {
         roundtrip(&st2)?;
         prop_assert_eq!(st2.to_bytes().len(), 22);
         roundtrip(&Word { value: w })?;
-        roundtrip(&CncId(id))?;
         roundtrip(&p)?;
     }
 
@@ -928,7 +924,6 @@ proptest! {
         let _ = Status::from_bytes(&b);
         let _ = Status2::from_bytes(&b);
         let _ = Word::from_bytes(&b);
-        let _ = CncId::from_bytes(&b);
         let _ = Param16::from_bytes(&b);
         let _ = Vec::<u32>::from_bytes(&b);
     }

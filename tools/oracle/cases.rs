@@ -93,7 +93,6 @@ const WORDS: &[Word] = &[
     w("sysinfo_ex", &[]),
     w("statinfo", &[]),
     w("statinfo2", &[]),
-    w("rdcncid", &[]),
     w("getpath", &[]),
     Word {
         after: &["getpath", "statinfo", "sysinfo"],

@@ -358,7 +358,6 @@ static short w_callx(void) {
     WORD(sysinfo_ex, return F(cnc_sysinfo_ex)(H, B0))                                             \
     WORD(statinfo, return F(cnc_statinfo)(H, B0))                                                 \
     WORD(statinfo2, return F(cnc_statinfo2)(H, B0))                                               \
-    WORD(rdcncid, return F(cnc_rdcncid)(H, B0))                                                   \
     /* position */                                                                                \
     WORD(rddynamic2, return F(cnc_rddynamic2)(H, N(1), N(2), B0))                                 \
     WORD(rddynamic, return F(cnc_rddynamic)(H, N(1), N(2), B0))                                   \

@@ -24,6 +24,7 @@ pub mod pmc;
 pub mod program;
 pub mod servo;
 mod setting;
+pub mod status;
 pub mod tool_life;
 
 /// The areas' entries, in this order.
@@ -43,6 +44,7 @@ const AREAS: &[&[Func]] = &[
     maintenance::FUNCS,
     names::FUNCS,
     setting::FUNCS,
+    status::FUNCS,
 ];
 
 const LEN: usize = {
