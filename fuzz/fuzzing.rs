@@ -213,10 +213,6 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["pmc_rdpmctitle"],
-        run: |cx, _, r| go(pmc::Title, cx, r),
-    },
-    Decoder {
         names: &["pmc_rdalmmsg"],
         run: |cx, a, r| go(pmc::AlarmMsgs { s: a[0], n: a[1] }, cx, r),
     },

@@ -5144,7 +5144,7 @@ short pmc_rdpmcrng(unsigned short FlibHndl,
  zeroed, as FANUC's library; a short answer reads as zeros.
 
  # Safety
- `title` must point to a writable ODBPMCTITLE.
+ `title` must be NULL or point to a writable ODBPMCTITLE.
  */
 short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
 

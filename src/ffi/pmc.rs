@@ -4,14 +4,12 @@ use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_DATA, EW_LENGTH, EW_NUMBER};
-use crate::proto::pmc::{
-    ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs, SetTimerTypes, TITLE, TimerTypes, Title,
-};
+use crate::proto::pmc::{ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs, SetTimerTypes, TimerTypes};
 use crate::proto::pmc::{
     PMCINFO_MAX, PmcRange, ReadPmc, SelectUnit, UnitTypes, WritePmc, elem_size, rdpmcinfo,
     swap_elements,
 };
-use crate::types::{IODBPMC, ODBPMCALM, ODBPMCERR, ODBPMCINF, ODBPMCINF_info, ODBPMCTITLE};
+use crate::types::{IODBPMC, ODBPMCALM, ODBPMCERR, ODBPMCINF, ODBPMCINF_info};
 use std::os::raw::c_char;
 use std::os::raw::{c_long, c_short, c_ushort};
 use std::ptr::addr_of_mut;
@@ -248,32 +246,6 @@ pub unsafe extern "C" fn pmc_get_pmc_unit_types(
             if n > 0 {
                 put(count, n as i32);
             }
-        }
-        Ok(())
-    })
-}
-
-/// Reads the PMC program's title data: each text as the CNC sent it (32,
-/// 32, 32, 4, 2, 32, 16, 32, 32 and 32 bytes), the rest of its member
-/// zeroed, as FANUC's library; a short answer reads as zeros.
-///
-/// # Safety
-/// `title` must point to a writable ODBPMCTITLE.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_rdpmctitle(FlibHndl: c_ushort, title: *mut ODBPMCTITLE) -> c_short {
-    ffi_read!("pmc_rdpmctitle", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(title)?.cast::<u8>();
-        let mut data = h.call_pmc(&Title)?;
-        data.resize(TITLE.iter().map(|t| t.0).sum(), 0);
-        let (mut from, mut to) = (0, 0);
-        for (wire, size) in TITLE {
-            for k in 0..size {
-                let b = if k < wire { data[from + k] } else { 0 };
-                // SAFETY: `to + k` lies in ODBPMCTITLE (380 bytes).
-                unsafe { put(out.add(to + k), b) };
-            }
-            (from, to) = (from + wire, to + size);
         }
         Ok(())
     })

@@ -157,35 +157,6 @@ pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
 // PMC units (pmc_get_number_of_pmc is described in src/spec/table/)
 // ---------------------------------------------------------------------------
 
-/// The ten title texts of 0x800b's answer: (bytes on the wire, bytes in
-/// ODBPMCTITLE), in order; the rest of each member is zero.
-pub const TITLE: [(usize, usize); 10] = [
-    (32, 48),
-    (32, 48),
-    (32, 48),
-    (4, 8),
-    (2, 4),
-    (32, 48),
-    (16, 32),
-    (32, 48),
-    (32, 48),
-    (32, 48),
-];
-
-/// pmc_rdpmctitle: the answer's bytes.
-#[derive(Debug, Clone, Copy)]
-pub struct Title;
-
-impl Call for Title {
-    type Output = Vec<u8>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::pmc(RDPMCTITLE, &[])]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<u8>> {
-        Ok(sub(resp, 0)?.payload.clone())
-    }
-}
-
 /// pmc_get_pmc_unit_types: up to `most` unit types, as many whole i32 as
 /// the answer holds.
 #[derive(Debug, Clone, Copy)]

@@ -3,7 +3,8 @@
 
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, TITLE, elem_size};
+use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, elem_size};
+use crate::spec::Func;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -161,16 +162,19 @@ impl Pmc {
         (self.info.get(usize::from(unit).wrapping_sub(1))).ok_or(CncError::new(ew::EW_NOPMC))
     }
 
-    /// 0x800b's answer on unit `unit`: the title texts, each cut or
-    /// zero-padded to its size on the wire.
-    pub fn title_bytes(&self, unit: u16) -> Reply<Vec<u8>> {
-        let title = &self.unit_info(unit)?.title;
+    /// pmc_rdpmctitle's answer on unit `unit`: each text of the reply
+    /// layout `f` (its wire fields, in order) from the unit's title texts,
+    /// cut or zero-padded to its characters; the zeros after each.
+    pub fn title(&self, unit: u16, f: &Func) -> Reply<Vec<i64>> {
+        let mut texts = self.unit_info(unit)?.title.iter();
         let mut out = Vec::new();
-        for (i, (n, _)) in TITLE.iter().enumerate() {
-            let t = title.get(i).map_or(&[][..], |t| t.as_bytes());
-            let at = out.len();
-            out.extend(&t[..t.len().min(*n)]);
-            out.resize(at + n, 0);
+        for field in f.reply {
+            let n = usize::from(field.n);
+            let t = match field.arg {
+                Some(_) => &[][..],
+                None => texts.next().map_or(&[][..], |t| t.as_bytes()),
+            };
+            out.extend((0..n).map(|k| i64::from(t.get(k).copied().unwrap_or(0))));
         }
         Ok(out)
     }
@@ -294,13 +298,16 @@ struct PmcToml {
     unit: Option<BTreeMap<String, PmcToml>>,
 }
 
+/// The texts of pmc_rdpmctitle's answer.
+const TITLE_TEXTS: usize = 10;
+
 /// A unit's title, messages and timer types from the profile.
 fn unit_info(
     title: Vec<String>,
     messages: Vec<String>,
     types: Vec<i16>,
 ) -> Result<UnitInfo, String> {
-    if title.len() > TITLE.len() {
+    if title.len() > TITLE_TEXTS {
         return Err("[pmc] title: at most 10 texts".to_string());
     }
     if types.len() > TIMERS {

@@ -29,7 +29,7 @@ pub(super) const ROUTES: &[Route] = &[
     Route::pmc(SELECT_UNIT, |m, q| {
         m.profile.pmc.select(q.args[0]).map(|()| Vec::new())
     }),
-    Route::pmc(RDPMCTITLE, |m, q| m.profile.pmc.title_bytes(q.path)),
+    Route::pmc_table(RDPMCTITLE, |m, q| m.profile.pmc.title(q.path, q.f)),
     Route::pmc(PMC_RDALMMSG, |m, q| {
         m.profile.pmc.alarm_messages(q.path, q.args[0], q.args[1])
     }),

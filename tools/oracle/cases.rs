@@ -687,7 +687,6 @@ const WORDS: &[Word] = &[
     w("rdtool", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("rdtooldata", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("rdtoolinfo", &[]),
-    w("pmc_rdpmctitle", &[]),
     // PMC alarm messages (A bits of the profile's messages) and timer
     // types, on unit 1, then with many alarms (A0-A1 written: 14, more
     // than one answer holds) and on unit 2.
