@@ -217,21 +217,6 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pmc::AlarmMsgs { s: a[0], n: a[1] }, cx, r),
     },
     Decoder {
-        names: &["pmc_get_timer_type"],
-        run: |cx, a, r| {
-            let (s, e) = (a[0] as u16, a[1] as u16);
-            go(pmc::TimerTypes { s, e }, cx, r)
-        },
-    },
-    Decoder {
-        names: &["pmc_set_timer_type"],
-        run: |cx, a, r| {
-            let (s, e) = (a[0] as u16, a[1] as u16);
-            let types = vec![a[2] as i16; (a[3] & 7) as usize];
-            go(pmc::SetTimerTypes { s, e, types }, cx, r)
-        },
-    },
-    Decoder {
         names: &["cnc_wrwkcdshft"],
         run: |cx, a, r| go(po::wrwkcdshft(a[0] as i16, &[a[1], a[2]]), cx, r),
     },

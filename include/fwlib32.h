@@ -5063,10 +5063,11 @@ short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *cou
 /*
  Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
  into `types`, one short each. No more than the range holds is written
- (FANUC's library copies the whole answer).
+ (FANUC's library copies the whole answer). `s_number` below 1 or after
+ `e_number`: EW_NUMBER before any traffic.
 
  # Safety
- `types` must point to `e_number - s_number + 1` writable shorts.
+ `types` must be NULL or point to `e_number - s_number + 1` writable `short` elements (one per record answered).
  */
 short pmc_get_timer_type(unsigned short FlibHndl,
                          unsigned short s_number,
@@ -5155,11 +5156,12 @@ short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
 short pmc_select_pmc_unit(unsigned short FlibHndl, long unittype);
 
 /*
- Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
- from `types`, one short each.
+ Sets the types (accuracy codes) of PMC timers `s_number..=e_number` from
+ `types`, one short each (sent as the request's payload). `s_number`
+ below 1 or after `e_number`: EW_NUMBER before any traffic.
 
  # Safety
- `types` must point to `e_number - s_number + 1` readable shorts.
+ `types` must be NULL or point to `e_number - s_number + 1` readable `short` elements.
  */
 short pmc_set_timer_type(unsigned short FlibHndl,
                          unsigned short s_number,

@@ -4,7 +4,7 @@ use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_DATA, EW_LENGTH, EW_NUMBER};
-use crate::proto::pmc::{ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs, SetTimerTypes, TimerTypes};
+use crate::proto::pmc::{ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs};
 use crate::proto::pmc::{
     PMCINFO_MAX, PmcRange, ReadPmc, SelectUnit, UnitTypes, WritePmc, elem_size, rdpmcinfo,
     swap_elements,
@@ -312,74 +312,5 @@ pub unsafe extern "C" fn pmc_rdalmmsg(
             put(exist, more as c_short);
         }
         Ok(())
-    })
-}
-
-/// The local check of the timer functions: timers `s_number..=e_number`
-/// from 1 on, else EW_NUMBER before any traffic.
-fn timer_range(s_number: c_ushort, e_number: c_ushort) -> Result<usize> {
-    if s_number < 1 || e_number < s_number {
-        return Err(Error::local(
-            EW_NUMBER,
-            "timer numbers out of order or below 1",
-        ));
-    }
-    Ok(usize::from(e_number - s_number) + 1)
-}
-
-/// Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
-/// into `types`, one short each. No more than the range holds is written
-/// (FANUC's library copies the whole answer).
-///
-/// # Safety
-/// `types` must point to `e_number - s_number + 1` writable shorts.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_get_timer_type(
-    FlibHndl: c_ushort,
-    s_number: c_ushort,
-    e_number: c_ushort,
-    types: *mut c_short,
-) -> c_short {
-    ffi_read!("pmc_get_timer_type", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(types)?;
-        let n = timer_range(s_number, e_number)?;
-        let t = h.call_pmc(&TimerTypes {
-            s: s_number,
-            e: e_number,
-        })?;
-        for (i, v) in t.iter().take(n).enumerate() {
-            // SAFETY: i < the range's length.
-            unsafe { put(out.add(i), *v) };
-        }
-        Ok(())
-    })
-}
-
-/// Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
-/// from `types`, one short each.
-///
-/// # Safety
-/// `types` must point to `e_number - s_number + 1` readable shorts.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_set_timer_type(
-    FlibHndl: c_ushort,
-    s_number: c_ushort,
-    e_number: c_ushort,
-    types: *mut c_short,
-) -> c_short {
-    ffi_boundary!("pmc_set_timer_type", {
-        let h = handles::get(FlibHndl)?;
-        let inp = nonnull(types)?;
-        let n = timer_range(s_number, e_number)?;
-        // SAFETY: the caller's array holds the range.
-        let types = (0..n)
-            .map(|i| unsafe { inp.add(i).read_unaligned() })
-            .collect();
-        h.call_pmc(&SetTimerTypes {
-            s: s_number,
-            e: e_number,
-            types,
-        })
     })
 }

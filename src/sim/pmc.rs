@@ -231,28 +231,25 @@ impl Pmc {
         Ok(s as usize - 1..=e as usize - 1)
     }
 
-    /// Command 0x804a[s, e] on unit `unit`: the timers' types, big-endian
-    /// i16 each.
-    pub fn timer_types(&self, unit: u16, s: i32, e: i32) -> Reply<Vec<u8>> {
+    /// Command 0x804a[s, e] on unit `unit`: the timers' types, one record
+    /// each (pmc_get_timer_type's layout).
+    pub fn timer_types(&self, unit: u16, s: i32, e: i32) -> Reply<Vec<i64>> {
         let r = Self::timer_range(s, e)?;
         let t = &self.unit_info(unit)?.timer_types;
-        Ok(t[r].iter().flat_map(|v| v.to_be_bytes()).collect())
+        Ok(t[r].iter().map(|v| i64::from(*v)).collect())
     }
 
     /// Command 0x804b[s, e] on unit `unit`: sets the timers' types from
-    /// the payload (big-endian i16 each); all or nothing: a payload of
-    /// another length is EW_LENGTH, a type outside 0..=5 EW_DATA with the
-    /// timer's number as detail.
-    pub fn set_timer_types(&mut self, unit: u16, s: i32, e: i32, data: &[u8]) -> Reply<()> {
+    /// the payload's records (pmc_set_timer_type's layout, one i16 each);
+    /// all or nothing: another number of them is EW_LENGTH, a type outside
+    /// 0..=5 EW_DATA with the timer's number as detail.
+    pub fn set_timer_types(&mut self, unit: u16, s: i32, e: i32, data: &[i64]) -> Reply<()> {
         let r = Self::timer_range(s, e)?;
         self.unit_info(unit)?;
-        if data.len() != 2 * r.clone().count() {
+        if data.len() != r.clone().count() {
             return Err(CncError::new(ew::EW_LENGTH));
         }
-        let v: Vec<i16> = data
-            .chunks_exact(2)
-            .map(|c| i16::from_be_bytes([c[0], c[1]]))
-            .collect();
+        let v: Vec<i16> = data.iter().map(|t| *t as i16).collect();
         if let Some(k) = v.iter().position(|t| !(0..=TIMER_TYPE_MAX).contains(t)) {
             return Err(CncError {
                 code: ew::EW_DATA,

@@ -22,6 +22,9 @@ pub enum Param {
     Short(&'static str),
     /// `long NAME`: a number the caller passes (32 bits go on the wire).
     Long(&'static str),
+    /// `unsigned short NAME`: a number the caller passes, 0..=65535 (its
+    /// checks and request word see it unsigned).
+    UShort(&'static str),
     /// `short NAME` that FANUC's library converts to `.1` (as a C cast)
     /// before anything else: its request word and any echo of it carry
     /// the converted value.
@@ -48,6 +51,7 @@ impl Param {
         match *self {
             Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
             Param::Long(_) => Some(v as i32),
+            Param::UShort(_) => Some(v as u16 as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
             Param::Out(..) | Param::In(..) => None,
         }
@@ -56,6 +60,7 @@ impl Param {
         match *self {
             Param::Short(n)
             | Param::Long(n)
+            | Param::UShort(n)
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
@@ -207,6 +212,10 @@ pub const NUMBERS: u8 = u8::MAX - 1;
 /// any traffic.
 pub const TEXT: u8 = u8::MAX - 2;
 
+/// [`Payload::count`] of a write whose records are as many as its range
+/// holds ([`Func::span`]): pmc_set_timer_type's timers `s..=e`.
+pub const SPAN: u8 = u8::MAX - 3;
+
 /// The records a write sends as its request's payload, read from its
 /// [`Param::In`] array: number parameter `count` of them ([`ONE`]: one),
 /// at most `max`.
@@ -286,6 +295,11 @@ pub struct Func {
     /// read as [`Func::short`] says (zeros: FANUC's library reads them from
     /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
     pub counted: Option<u8>,
+    /// `Some((s, e))`: the function asks for a range, number parameters
+    /// `s..=e`: the records written are at most `e - s + 1` (the caller's
+    /// array holds that many), and a write ([`SPAN`]) sends that many
+    /// (pmc_get_timer_type, pmc_set_timer_type).
+    pub span: Option<(u8, u8)>,
 }
 
 impl Func {
@@ -296,7 +310,11 @@ impl Func {
     /// The number parameters, in order (the values a caller passes).
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Short(n) | Param::Long(n) | Param::ShortAs(n, _) | Param::Count(n) => Some(n),
+            Param::Short(n)
+            | Param::Long(n)
+            | Param::UShort(n)
+            | Param::ShortAs(n, _)
+            | Param::Count(n) => Some(n),
             Param::Out(..) | Param::In(..) => None,
         })
     }
@@ -336,6 +354,13 @@ impl Func {
                 .position(|(x, _)| x == m)
                 .map(|k| self.numbers().count() + k),
         }
+    }
+    /// The records a range asks for ([`Func::span`]), from the call's
+    /// arguments (0 for one asked backwards); None without a range.
+    pub fn span_len(&self, args: &[i32]) -> Option<usize> {
+        let (s, e) = self.span?;
+        let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
+        Some(usize::try_from(at(e) - at(s) + 1).unwrap_or(0))
     }
     /// The output parameters, in order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {

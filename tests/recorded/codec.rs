@@ -1476,6 +1476,22 @@ fn counted_records_follow_the_cncs_count() {
     assert_eq!(decode(f, &[1, 4], &answer(0, 2)).unwrap(), [0x1234, 0]);
 }
 
+/// A range's records (Func::span, pmc_get_timer_type): at most `e - s + 1`
+/// of those the answer holds, whole words only; a write (pmc_set_timer_type)
+/// sends that many.
+#[test]
+fn a_range_bounds_its_records() {
+    use fwlib32::proto::described::{decode, payload_records};
+    let f = described("pmc_get_timer_type").unwrap();
+    let answer = [0, 1, 0, 2, 0, 3, 0, 4, 9];
+    assert_eq!(decode(f, &[2, 3], &answer).unwrap(), [1, 2]);
+    assert_eq!(decode(f, &[1, 250], &answer).unwrap(), [1, 2, 3, 4]);
+    assert_eq!(decode(f, &[5, 5], &[]).unwrap(), Vec::<i64>::new());
+    let w = described("pmc_set_timer_type").unwrap();
+    assert_eq!(payload_records(w, &[3, 7]), 5);
+    assert_eq!(payload_records(w, &[1, 1]), 1);
+}
+
 #[test]
 fn history_decoder_drops_a_ragged_tail() {
     use fwlib32::proto::alarm::AlmHistory;
@@ -1560,7 +1576,14 @@ proptest! {
                 }
                 at += x.n as usize;
             }
-            prop_assert_eq!(decode(f, &[], &bytes).expect("decode"), expect, "{}", f.name);
+            // A range (Func::span) asks for the n records: 1..=n.
+            let args: Vec<i32> = f.span.map_or(Vec::new(), |(s, e)| {
+                let mut a = vec![0; usize::from(s.max(e)) + 1];
+                a[usize::from(s)] = 1;
+                a[usize::from(e)] = n as i32;
+                a
+            });
+            prop_assert_eq!(decode(f, &args, &bytes).expect("decode"), expect, "{}", f.name);
         }
     }
 

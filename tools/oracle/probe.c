@@ -499,8 +499,6 @@ static short w_callx(void) {
     WORD(rdtoolinfo, return F(cnc_rdtoolinfo)(H, B0))                                             \
     WORD(instlifedt, { fill_hex(b0, 1); return F(cnc_instlifedt)(H, B0); })                       \
     WORD(pmc_rdalmmsg, SHORT_IO(num, 2, F(pmc_rdalmmsg)(H, N(1), &num, (short *)B1, B0))) \
-    WORD(pmc_get_timer_type, return F(pmc_get_timer_type)(H, N(1), N(2), B0))                     \
-    WORD(pmc_set_timer_type, { fill_hex(b0, 3); return F(pmc_set_timer_type)(H, N(1), N(2), B0); }) \
     /* upload */                                                                                  \
     WORD(upstart, return F(cnc_upstart)(H, N(1)))                                                 \
     WORD(upstart3, return F(cnc_upstart3)(H, N(1), N(2), N(3)))                                   \

@@ -21,6 +21,18 @@ const fn zeros(to: &'static str, n: u16) -> Field {
     Field { n, ..zero(to, I8) }
 }
 
+/// The timer functions' checks: timers `s_number..=e_number` from 1 on,
+/// else EW_NUMBER before any traffic.
+const TIMER_RANGE: &[Check] = &[
+    Check {
+        arg: 0,
+        lo: 1,
+        hi: i32::MAX,
+        code: crate::ew::EW_NUMBER,
+    },
+    ordered(0, 1),
+];
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "pmc_get_number_of_pmc",
@@ -29,6 +41,48 @@ pub const FUNCS: &[Func] = &[
         checks: &[],
         forms: &[pmc(cmd::PMC_COUNT, &[])],
         reply: &[to(I32, "", I32)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_get_timer_type",
+        doc: "Reads the types (accuracy codes) of PMC timers `s_number..=e_number` into `types`, one short each. No more than the range holds is written (FANUC's library copies the whole answer). `s_number` below 1 or after `e_number`: EW_NUMBER before any traffic.",
+        params: &[
+            Param::UShort("s_number"),
+            Param::UShort("e_number"),
+            Param::Out("types", "short"),
+        ],
+        checks: TIMER_RANGE,
+        forms: &[pmc(cmd::GET_TIMER_TYPE, &[Word::Arg(0), Word::Arg(1)])],
+        // As many whole words as the answer holds, at most the range's.
+        records: Some(Records {
+            fields: &[to(I16, "", I16)],
+            out: 0,
+            to: "",
+            elem: "short",
+            max: u16::MAX,
+            count: None,
+            room: None,
+        }),
+        span: Some((0, 1)),
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_set_timer_type",
+        doc: "Sets the types (accuracy codes) of PMC timers `s_number..=e_number` from `types`, one short each (sent as the request's payload). `s_number` below 1 or after `e_number`: EW_NUMBER before any traffic.",
+        params: &[
+            Param::UShort("s_number"),
+            Param::UShort("e_number"),
+            Param::In("types", "short"),
+        ],
+        checks: TIMER_RANGE,
+        forms: &[pmc(cmd::SET_TIMER_TYPE, &[Word::Arg(0), Word::Arg(1)])],
+        payload: Some(Payload {
+            fields: &[to(I16, "", I16)],
+            elem: "short",
+            count: SPAN,
+            max: u16::MAX,
+        }),
+        span: Some((0, 1)),
         ..super::base::COMMAND
     },
     Func {
