@@ -5037,7 +5037,7 @@ short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
  selected), without traffic. Writes 4 bytes into the `long`.
 
  # Safety
- `unittype` must be NULL or point to 4 writable bytes.
+ `unittype` must be NULL or point to a writable long.
  */
 short pmc_get_current_pmc_unit(unsigned short FlibHndl, long *unittype);
 

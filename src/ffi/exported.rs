@@ -65,7 +65,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("pmc", &[
         "pmc_rdpmcrng", "pmc_wrpmcrng", "pmc_getdtailerr", "pmc_rdpmcinfo", "pmc_select_pmc_unit",
-        "pmc_get_current_pmc_unit", "pmc_get_pmc_unit_types", "pmc_rdalmmsg",
+        "pmc_get_pmc_unit_types", "pmc_rdalmmsg",
     ]),
     ("position", &[
         "cnc_rdposition", "cnc_absolute", "cnc_absolute2", "cnc_machine", "cnc_relative",

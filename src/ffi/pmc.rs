@@ -200,25 +200,6 @@ pub extern "C" fn pmc_select_pmc_unit(FlibHndl: c_ushort, unittype: c_long) -> c
     })
 }
 
-/// Reads the PMC unit this handle's PMC calls address (1 until one is
-/// selected), without traffic. Writes 4 bytes into the `long`.
-///
-/// # Safety
-/// `unittype` must be NULL or point to 4 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_get_current_pmc_unit(
-    FlibHndl: c_ushort,
-    unittype: *mut c_long,
-) -> c_short {
-    ffi_boundary!("pmc_get_current_pmc_unit", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(unittype)?.cast::<i32>();
-        let unit = h.state.lock().pmc_unit;
-        unsafe { put(out, i32::from(unit)) };
-        Ok(())
-    })
-}
-
 /// Reads the types of the CNC's PMC units: `*count` in is the room in
 /// `unittypes` (4 bytes per `long`), out the number written; an answer
 /// with none leaves `*count` as it was, as FANUC's library does.

@@ -125,6 +125,10 @@ impl Classes {
 pub enum Learnt {
     /// The CNC's maximum spindles.
     MaxSpindles,
+    /// The PMC unit the handle's PMC calls address: kept by the library
+    /// for the handle (pmc_select_pmc_unit's, 1 until one is selected),
+    /// not learnt from the CNC.
+    PmcUnit,
 }
 
 /// The answer of a function that sends nothing on some classes: the

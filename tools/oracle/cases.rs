@@ -581,7 +581,6 @@ const WORDS: &[Word] = &[
         after: &["pmc_get_current_pmc_unit", "pmc_rdpmcrng 9 0 0 3 12"],
         ..w("pmc_select_pmc_unit", &["2|1|0|3|-1|9"])
     },
-    w("pmc_get_current_pmc_unit", &[]),
     w("pmc_get_pmc_unit_types", &["4|1|2|0|-1|8"]),
     // Offsets and tools.
     w(

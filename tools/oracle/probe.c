@@ -479,7 +479,6 @@ static short w_callx(void) {
     WORD(pmc_getdtailerr, return F(pmc_getdtailerr)(H, B0))                                       \
     WORD(pmc_rdpmcinfo, return F(pmc_rdpmcinfo)(H, N(1), B0))                                     \
     WORD(pmc_select_pmc_unit, return F(pmc_select_pmc_unit)(H, N(1)))                             \
-    WORD(pmc_get_current_pmc_unit, return F(pmc_get_current_pmc_unit)(H, B0))                    \
     WORD(pmc_get_pmc_unit_types, LONG_IO(count, 1, F(pmc_get_pmc_unit_types)(H, B0, (long *)count))) \
     /* offsets, tools */                                                                          \
     WORD(rdtofs, return F(cnc_rdtofs)(H, N(1), N(2), N(3), B0))                                   \

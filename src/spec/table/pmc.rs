@@ -44,6 +44,17 @@ pub const FUNCS: &[Func] = &[
         ..super::base::COMMAND
     },
     Func {
+        name: "pmc_get_current_pmc_unit",
+        doc: "Reads the PMC unit this handle's PMC calls address (1 until one is selected), without traffic. Writes 4 bytes into the `long`.",
+        params: &[Param::Out("unittype", "long")],
+        reply: &[to(I32, "", I32)],
+        local: Some(Local {
+            classes: Classes::All,
+            values: &[Learnt::PmcUnit],
+        }),
+        ..super::base::COMMAND
+    },
+    Func {
         name: "pmc_get_timer_type",
         doc: "Reads the types (accuracy codes) of PMC timers `s_number..=e_number` into `types`, one short each. No more than the range holds is written (FANUC's library copies the whole answer). `s_number` below 1 or after `e_number`: EW_NUMBER before any traffic.",
         params: &[
