@@ -2693,10 +2693,12 @@ short cnc_dwnstart3(unsigned short FlibHndl, short type);
 short cnc_dwnstart4(unsigned short FlibHndl, short type, char *prgname);
 
 /*
- Reads the name and O number of the running program.
+ Reads the name and O number of the running program. The name as a C
+ string: the characters up to its NUL, zeros after (FANUC's library
+ copies it so, whatever follows in the answer).
 
  # Safety
- `exeprg` must point to a writable ODBEXEPRG.
+ `exeprg` must be NULL or point to a writable ODBEXEPRG.
  */
 short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
 

@@ -7,38 +7,12 @@ use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::program::{self as pp, AUX_ORDER, Clock, Modal, ModalCall, ModalKind};
-use crate::types::{IODBTIMER, ODBEXEPRG, ODBMDL, PRGDIR, PRGDIR3};
+use crate::types::{IODBTIMER, ODBMDL, PRGDIR, PRGDIR3};
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// The low 16 bits, as FANUC's library stores 32-bit numbers in shorts.
 pub(crate) fn low16(v: i32) -> c_short {
     v as u32 as u16 as c_short
-}
-
-/// Reads the name and O number of the running program.
-///
-/// # Safety
-/// `exeprg` must point to a writable ODBEXEPRG.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_exeprgname(FlibHndl: c_ushort, exeprg: *mut ODBEXEPRG) -> c_short {
-    ffi_read!("cnc_exeprgname", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(exeprg)?;
-        let e = h.call(&pp::exeprgname())?;
-        // The name as a C string: the bytes up to its NUL, zeros after
-        // (FANUC's library copies it so, whatever follows in the answer).
-        let end = e.name.iter().position(|b| *b == 0).unwrap_or(e.name.len());
-        let mut name = [0 as c_char; 36];
-        for (d, s) in name.iter_mut().zip(&e.name[..end]) {
-            *d = *s as c_char;
-        }
-        let v = ODBEXEPRG {
-            name,
-            o_num: e.o_num,
-        };
-        unsafe { put(out, v) };
-        Ok(())
-    })
 }
 
 /// Size of cnc_exeprgname2's output.

@@ -37,35 +37,6 @@ wire_struct! {
     }
 }
 
-/// Payload of 0x00cf (cnc_exeprgname): O number and a 36-byte name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ExePrgName {
-    pub o_num: i32,
-    pub name: [u8; 36],
-}
-
-impl Default for ExePrgName {
-    fn default() -> Self {
-        ExePrgName {
-            o_num: 0,
-            name: [0; 36],
-        }
-    }
-}
-
-impl Wire for ExePrgName {
-    fn encode(&self, w: &mut Writer) {
-        w.i32(self.o_num);
-        w.bytes(&self.name);
-    }
-    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        Ok(ExePrgName {
-            o_num: r.i32()?,
-            name: r.array()?,
-        })
-    }
-}
-
 wire_struct! {
     /// Payload of 0x0120 (cnc_rdtimer): minutes and milliseconds.
     pub struct Timer {
@@ -200,10 +171,6 @@ impl Wire for AuxModal {
         r.bytes(r.remaining())?;
         Ok(AuxModal(v))
     }
-}
-
-pub fn exeprgname() -> Single<ExePrgName> {
-    Single::padded(ReqSub::cnc(EXEPRGNAME, &[]))
 }
 
 pub fn exeprgname2() -> Single<PathName> {

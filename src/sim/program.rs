@@ -12,13 +12,13 @@ use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
 use crate::proto::cmd::RDPROCTIME;
 use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND, RDMULTIPIECENO};
 use crate::proto::program::{
-    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
-    ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, PathName, ProgDir, RDEXECPROG, RDOPMODE,
-    RDPROGDIR, RDTIMER, SETTIMER, Timer,
+    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExecProg, GCode,
+    GETTIMER, GModal, MODAL_AUX, MODAL_G, PathName, ProgDir, RDEXECPROG, RDOPMODE, RDPROGDIR,
+    RDTIMER, SETTIMER, Timer,
 };
 
 pub(super) const ROUTES: &[Route] = &[
-    Route::cnc(EXEPRGNAME, |m, q| enc(m.exe_prgname(q.path))),
+    Route::table(EXEPRGNAME, |m, q| m.exe_prgname(q.path)),
     Route::cnc(EXEPRGNAME2, |m, q| enc(m.exe_prgname2(q.path))),
     Route::cnc(RDEXECPROG, |m, q| enc(m.exec_prog(q.path, q.args[0]))),
     Route::cnc(MODAL_G, |m, q| enc(m.g_modal(q.path, q.args[0]))),
@@ -158,16 +158,20 @@ impl Machine {
         Ok((s.main, p.unwrap_or_default()))
     }
 
-    pub(crate) fn exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
+    /// cnc_exeprgname's layout: the O number, then the name's 36
+    /// characters (at most 35, zeros after).
+    pub(crate) fn exe_prgname(&self, path: u16) -> Reply<Vec<i64>> {
         let full = self.full_name(path)?;
-        let short = full.rsplit('/').next().unwrap_or("");
-        let mut name = [0u8; 36];
-        let n = short.len().min(35);
-        name[..n].copy_from_slice(&short.as_bytes()[..n]);
-        Ok(ExePrgName {
-            o_num: self.shown_program(path)?.0,
-            name,
-        })
+        let short = full.rsplit('/').next().unwrap_or("").as_bytes();
+        let mut v = vec![i64::from(self.shown_program(path)?.0)];
+        v.extend((0..36).map(|k| {
+            i64::from(if k < 35 {
+                short.get(k).copied().unwrap_or(0)
+            } else {
+                0
+            })
+        }));
+        Ok(v)
     }
 
     pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<PathName> {

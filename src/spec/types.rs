@@ -304,6 +304,10 @@ pub struct Func {
     /// array holds that many), and a write ([`SPAN`]) sends that many
     /// (pmc_get_timer_type, pmc_set_timer_type).
     pub span: Option<(u8, u8)>,
+    /// Reply members read as C strings: the characters up to the field's
+    /// first 0, zeros after it, whatever the answer holds there (FANUC's
+    /// library copies a name with strncpy: cnc_exeprgname).
+    pub strings: &'static [&'static str],
 }
 
 impl Func {

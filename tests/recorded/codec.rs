@@ -26,8 +26,8 @@ use fwlib32::proto::param::{
 use fwlib32::proto::alarm::{self as pa, AlmMsg, OpMsg};
 use fwlib32::proto::position::{AlarmBits, ProgNums, SeqNum};
 use fwlib32::proto::program::{
-    self as pp, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, NTool,
-    PathName, Timer, ToolNum,
+    self as pp, ActPt, AuxCode, AuxModal, Clock, ExecProg, GCode, GModal, NTool, PathName, Timer,
+    ToolNum,
 };
 use fwlib32::proto::status::{StatInfo, Status, Status2, SysInfo, Word, sysinfo_at_connect};
 use fwlib32::proto::wire::{DecodeError, Wire, Writer};
@@ -350,7 +350,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
                                 }
                                 // --- program ---
-                                "exeprgname" => stamped(&pp::exeprgname(), &cx, path),
                                 "exeprgname2" => stamped(&pp::exeprgname2(), &cx, path),
                                 "rdexecprog" => {
                                     stamped(&pp::rdexecprog(num(&args[0]) as u16), &cx, path)
@@ -1492,6 +1491,26 @@ fn a_range_bounds_its_records() {
     assert_eq!(payload_records(w, &[1, 1]), 1);
 }
 
+/// A C string member (Func::strings, cnc_exeprgname's name): the
+/// characters after its first NUL read as zeros; a short answer as zeros.
+#[test]
+fn a_c_string_ends_at_its_nul() {
+    use fwlib32::proto::described::decode;
+    let f = described("exeprgname").unwrap();
+    let mut p = vec![0, 0, 0x04, 0xd2];
+    p.extend(b"O1234\0XY");
+    p.resize(40, b'Z');
+    let mut want = vec![1234];
+    want.extend(b"O1234".iter().map(|c| i64::from(*c)));
+    want.resize(37, 0);
+    assert_eq!(decode(f, &[], &p).unwrap(), want);
+    assert_eq!(
+        decode(f, &[], &p[..6]).unwrap()[..3],
+        [1234, i64::from(b'O'), i64::from(b'1')]
+    );
+    assert_eq!(decode(f, &[], &p[..6]).unwrap()[3..], [0; 34]);
+}
+
 #[test]
 fn history_decoder_drops_a_ragged_tail() {
     use fwlib32::proto::alarm::AlmHistory;
@@ -1567,6 +1586,8 @@ proptest! {
             // FANUC's library's zeroed member reads 0 (cnc_rdpmacroinfo's use_no2).
             let mut expect = values.clone();
             fwlib32::proto::described::zero_unless(f, &mut expect);
+            // A C string's characters after its first 0 read as 0 (Func::strings).
+            fwlib32::proto::described::c_strings(f, &mut expect);
             // The last number answered (Field::arg LAST): argument 0 (none:
             // 0) plus the records, less one.
             let mut at = 0;
@@ -1714,7 +1735,6 @@ proptest! {
     fn program_and_alarm_structs_roundtrip(
         w in any::<[i32; 4]>(),
         h in any::<[i16; 6]>(),
-        name in vec(any::<u8>(), 36),
         text in vec(any::<u8>(), 0..300),
         g in vec(any::<(u8, u8)>(), 1..40),
         aux in vec(aux_code(), 1..40),
@@ -1725,10 +1745,6 @@ proptest! {
         roundtrip(&ProgNums { data: w[0], mdata: w[1] })?;
         roundtrip(&SeqNum { data: w[2] })?;
         roundtrip(&ActPt { prog_no: w[0], blk_no: w[1] })?;
-        let mut n = [0u8; 36];
-        n.copy_from_slice(&name);
-        roundtrip(&ExePrgName { o_num: w[3], name: n })?;
-        prop_assert_eq!(ExePrgName { o_num: w[3], name: n }.to_bytes().len(), 40);
         roundtrip(&PathName(text.clone()))?;
         roundtrip(&ExecProg { blknum: Some(w[0]), text: text.clone() })?;
         roundtrip(&ExecProg::default())?;
@@ -1757,7 +1773,6 @@ proptest! {
         let _ = Vec::<AlmMsg<32>>::from_bytes(&b);
         let _ = Vec::<AlmMsg<64>>::from_bytes(&b);
         let _ = OpMsg::from_bytes(&b);
-        let _ = ExePrgName::from_bytes(&b);
         let _ = Clock::from_bytes(&b);
         // Short payloads are errors, never garbage.
         if b.len() < 12 {

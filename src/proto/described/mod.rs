@@ -252,6 +252,7 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
         }
     }
     zero_unless(f, &mut out);
+    c_strings(f, &mut out);
     if let Some(rec) = &f.records {
         let size = rec.wire_len().max(1);
         let most = match f.overflow {
@@ -316,6 +317,22 @@ pub fn zero_unless(f: &Func, out: &mut [i64]) {
         {
             out[ib] = 0;
         }
+    }
+}
+
+/// [`Func::strings`] applied to the decoded reply's integers: each such
+/// member's characters after its first 0 read as 0.
+pub fn c_strings(f: &Func, out: &mut [i64]) {
+    let mut at = 0;
+    for field in f.reply {
+        let n = usize::from(field.n);
+        if field.to.is_some_and(|m| f.strings.contains(&m))
+            && let Some(s) = out.get_mut(at..at + n)
+            && let Some(end) = s.iter().position(|c| *c as u8 == 0)
+        {
+            s[end..].iter_mut().for_each(|c| *c = 0);
+        }
+        at += n;
     }
 }
 

@@ -7,6 +7,21 @@ use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[
     Func {
+        name: "cnc_exeprgname",
+        doc: "Reads the name and O number of the running program. The name as a C string: the characters up to its NUL, zeros after (FANUC's library copies it so, whatever follows in the answer).",
+        params: &[Param::Out("exeprg", "ODBEXEPRG")],
+        forms: &[every_class(cmd::EXEPRGNAME, &[])],
+        reply: &[
+            to(I32, "o_num", I32),
+            Field {
+                n: 36,
+                ..to(U8, "name", I8)
+            },
+        ],
+        strings: &["name"],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdprgnum",
         doc: "Reads the running and main program numbers (the low 16 bits of each, as FANUC's library stores them in the default ODBPRO's shorts).",
         params: &[Param::Out("prgnum", "ODBPRO")],
