@@ -555,6 +555,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                                 ),
                             }
                         }
+                        // A `char *` to a text buffer (`chars[N]`).
+                        _ if chars(t).is_some() => format!(
+                            "/// `{n}` must be NULL or point to {} writable bytes.",
+                            chars(t).unwrap_or_default()
+                        ),
                         _ => format!("/// `{n}` must be NULL or point to a writable {}.", doc_type(t)),
                     })
                     .collect(),
@@ -725,6 +730,7 @@ fn rust_type(c: &str) -> String {
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
         "unsigned long" => "c_ulong".into(),
+        t if chars(t).is_some() => "c_char".into(),
         t => match char_array(t) {
             Some(n) => format!("[c_char; {n}]"),
             None => t.into(),
@@ -742,6 +748,11 @@ fn doc_type(t: &str) -> String {
     }
 }
 
+/// N of a `chars[N]` output: a `char *` to a buffer of N bytes (cnc_exeprgname2's).
+fn chars(c: &str) -> Option<usize> {
+    c.strip_prefix("chars[")?.strip_suffix(']')?.parse().ok()
+}
+
 /// N of a `char[N]` output.
 fn char_array(c: &str) -> Option<usize> {
     c.strip_prefix("char[")?.strip_suffix(']')?.parse().ok()
@@ -755,6 +766,6 @@ fn c_size(c: &str) -> Option<usize> {
         "short" | "unsigned short" => Some(2),
         // 4 bytes written, as FANUC's x86-64 library writes them.
         "long" | "unsigned long" => Some(4),
-        t => char_array(t),
+        t => char_array(t).or_else(|| chars(t)),
     }
 }

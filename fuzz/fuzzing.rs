@@ -364,10 +364,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pt::PunchInfo, cx, r),
     },
     Decoder {
-        names: &["cnc_exeprgname2"],
-        run: |cx, _, r| go(pg::exeprgname2(), cx, r),
-    },
-    Decoder {
         names: &["cnc_rdexecprog"],
         run: |cx, a, r| go(pg::rdexecprog(a[0] as u16), cx, r),
     },

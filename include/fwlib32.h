@@ -2703,11 +2703,12 @@ short cnc_dwnstart4(unsigned short FlibHndl, short type, char *prgname);
 short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
 
 /*
- Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
- 256 bytes, NUL-terminated and zero-filled.
+ Reads the full path name of the running program
+ ("//CNC_MEM/USER/PATH1/O1234"): 256 bytes, NUL-terminated and
+ zero-filled (the name's characters up to its NUL, at most 255).
 
  # Safety
- `path_name` must point to 256 writable bytes.
+ `path_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_exeprgname2(unsigned short FlibHndl, char *path_name);
 

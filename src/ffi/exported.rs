@@ -73,7 +73,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_getfigure",
     ]),
     ("program", &[
-        "cnc_exeprgname2", "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
+        "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
         "cnc_settimer", "cnc_rdprogdir", "cnc_rdprogdir3",
         "cnc_rdprogdiro8",
     ]),

@@ -15,29 +15,6 @@ pub(crate) fn low16(v: i32) -> c_short {
     v as u32 as u16 as c_short
 }
 
-/// Size of cnc_exeprgname2's output.
-const PATH_NAME_LEN: usize = 256;
-
-/// Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
-/// 256 bytes, NUL-terminated and zero-filled.
-///
-/// # Safety
-/// `path_name` must point to 256 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
-    ffi_read!("cnc_exeprgname2", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(path_name)?.cast::<u8>();
-        let n = h.call(&pp::exeprgname2())?;
-        let mut b = [0u8; PATH_NAME_LEN];
-        let s = n.0.split(|c| *c == 0).next().unwrap_or(&[]);
-        let k = s.len().min(PATH_NAME_LEN - 1);
-        b[..k].copy_from_slice(&s[..k]);
-        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, PATH_NAME_LEN) };
-        Ok(())
-    })
-}
-
 /// Reads the text of the block being executed and the blocks after it.
 /// `*length` in: size of `data` in bytes; out: characters read (the text
 /// is NUL-terminated and, unlike FANUC's library, never longer than

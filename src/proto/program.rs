@@ -123,8 +123,7 @@ impl Wire for ExecProg {
     }
 }
 
-/// A payload as bytes: 0x00fc (cnc_exeprgname2), the program's path name;
-/// 0x0036 / 0x0037, the MDI program's text.
+/// A payload as bytes: 0x0036 / 0x0037, the MDI program's text.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct PathName(pub Vec<u8>);
 
@@ -171,10 +170,6 @@ impl Wire for AuxModal {
         r.bytes(r.remaining())?;
         Ok(AuxModal(v))
     }
-}
-
-pub fn exeprgname2() -> Single<PathName> {
-    Single::new(ReqSub::cnc(EXEPRGNAME2, &[]))
 }
 
 /// (1,0x20)\[length\], cut to what fits in one answer.

@@ -13,13 +13,13 @@ use crate::proto::cmd::RDPROCTIME;
 use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND, RDMULTIPIECENO};
 use crate::proto::program::{
     AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExecProg, GCode,
-    GETTIMER, GModal, MODAL_AUX, MODAL_G, PathName, ProgDir, RDEXECPROG, RDOPMODE, RDPROGDIR,
-    RDTIMER, SETTIMER, Timer,
+    GETTIMER, GModal, MODAL_AUX, MODAL_G, ProgDir, RDEXECPROG, RDOPMODE, RDPROGDIR, RDTIMER,
+    SETTIMER, Timer,
 };
 
 pub(super) const ROUTES: &[Route] = &[
     Route::table(EXEPRGNAME, |m, q| m.exe_prgname(q.path)),
-    Route::cnc(EXEPRGNAME2, |m, q| enc(m.exe_prgname2(q.path))),
+    Route::table(EXEPRGNAME2, |m, q| m.exe_prgname2(q.path)),
     Route::cnc(RDEXECPROG, |m, q| enc(m.exec_prog(q.path, q.args[0]))),
     Route::cnc(MODAL_G, |m, q| enc(m.g_modal(q.path, q.args[0]))),
     Route::cnc(MODAL_AUX, |m, q| enc(m.aux_modal(q.path, q.args[0]))),
@@ -174,11 +174,19 @@ impl Machine {
         Ok(v)
     }
 
-    pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<PathName> {
-        let mut b = self.full_name(path)?.into_bytes();
-        b.truncate(255);
-        b.push(0);
-        Ok(PathName(b))
+    /// cnc_exeprgname2's layout: the full name's 255 characters (zeros
+    /// after it), then the NUL.
+    pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<Vec<i64>> {
+        let b = self.full_name(path)?.into_bytes();
+        Ok((0..256)
+            .map(|k| {
+                i64::from(if k < 255 {
+                    b.get(k).copied().unwrap_or(0)
+                } else {
+                    0
+                })
+            })
+            .collect())
     }
 
     /// The executing text, at most `length` bytes. A path with no text to

@@ -31,7 +31,8 @@ pub enum Param {
     ShortAs(&'static str, Int),
     /// `TYPE *NAME`: an output the reply fills. TYPE is a struct of
     /// src/types, or `char`, `short`, `unsigned short` or `long` (4 bytes written,
-    /// as FANUC's x86-64 library writes a `long *`), or `char[N]`.
+    /// as FANUC's x86-64 library writes a `long *`), or `char[N]`, or
+    /// `chars[N]`: a `char *` to a text buffer of N bytes.
     Out(&'static str, &'static str),
     /// `short *NAME`: the records' count, in and out. In, how many records
     /// the caller's array holds (a number parameter, read once the pointers

@@ -350,7 +350,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
                                 }
                                 // --- program ---
-                                "exeprgname2" => stamped(&pp::exeprgname2(), &cx, path),
                                 "rdexecprog" => {
                                     stamped(&pp::rdexecprog(num(&args[0]) as u16), &cx, path)
                                 }

@@ -188,7 +188,6 @@ const WORDS: &[Word] = &[
     wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     w("getfigure", &["0|1|-1|2|3"]),
     // Program.
-    w("exeprgname2", &[]),
     w("rdexecprog", &["256|0|1|10|100|1024|4096|65535"]),
     w(
         "modal",

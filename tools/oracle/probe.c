@@ -383,7 +383,6 @@ static short w_callx(void) {
                       short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);                            \
                       field("valid_fig", v); return r; })                                         \
     /* program */                                                                                 \
-    WORD(exeprgname2, return F(cnc_exeprgname2)(H, B0))                                          \
     WORD(rdexecprog, { static unsigned short l; static short blk; l = (unsigned short)N(1);       \
                        blk = (short)0xCCCC; io_note("length", &l, 2); io_note("blknum", &blk, 1); \
                        short r = F(cnc_rdexecprog)(H, &l, &blk, B0);                              \

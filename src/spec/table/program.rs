@@ -22,6 +22,21 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_exeprgname2",
+        doc: "Reads the full path name of the running program (\"//CNC_MEM/USER/PATH1/O1234\"): 256 bytes, NUL-terminated and zero-filled (the name's characters up to its NUL, at most 255).",
+        params: &[Param::Out("path_name", "chars[256]")],
+        forms: &[every_class(cmd::EXEPRGNAME2, &[])],
+        reply: &[
+            Field {
+                n: 255,
+                ..to(U8, "", I8)
+            },
+            zero("[255]", I8),
+        ],
+        strings: &[""],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdprgnum",
         doc: "Reads the running and main program numbers (the low 16 bits of each, as FANUC's library stores them in the default ODBPRO's shorts).",
         params: &[Param::Out("prgnum", "ODBPRO")],
