@@ -384,6 +384,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Long(n) => format!("{}: c_long", ident(n)),
             Param::ULong(n) => format!("{}: c_ulong", ident(n)),
             Param::Text(n, _) => format!("{}: *mut c_char", ident(n)),
+            Param::UShort(n) => format!("{}: c_ushort", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
             Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
@@ -529,12 +530,22 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 f.name
             ),
         };
+        // A range's records: `e - s + 1` of them (types::Func::span).
+        let span = f.span.map(|(s, e)| {
+            let name = |i: u8| f.numbers().nth(usize::from(i)).unwrap_or("?");
+            format!("`{} - {} + 1`", name(e), name(s))
+        });
         let safety: Vec<String> =
             match &count {
                 None => outs
                     .iter()
                     .enumerate()
                     .map(|(i, (n, t))| match (&f.records, c_size(t)) {
+                        (Some(r), Some(_)) if usize::from(r.out) == i && span.is_some() => format!(
+                            "/// `{n}` must be NULL or point to {} writable `{}` elements (one per record answered).",
+                            span.as_deref().unwrap_or_default(),
+                            r.elem
+                        ),
                         // Records into a scalar output: an array of them, at
                         // most `max`, each the element's size as FANUC's
                         // library writes it (4 bytes per `long`).
@@ -585,6 +596,10 @@ fn described_exports(funcs: &[types::Func]) -> String {
         if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
             match f.numbers().nth(usize::from(p.count)) {
                 // types::TEXT: read up to its NUL, at most the field's bytes.
+                _ if p.count == types::SPAN => safety.push(format!(
+                    "/// `{n}` must be NULL or point to {} readable `{t}` elements.",
+                    span.as_deref().unwrap_or_default(),
+                )),
                 _ if p.count == types::TEXT => safety.push(format!(
                     "/// `{n}` must be NULL or point to {} readable bytes, or to a C string ending within them.",
                     p.fields.iter().map(|x| x.wire_len()).sum::<usize>()
@@ -733,6 +748,7 @@ fn rust_type(c: &str) -> String {
         "short" => "c_short".into(),
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
+        "unsigned long" => "c_ulong".into(),
         t => match (char_array(t), text_buf(t)) {
             (Some(n), _) => format!("[c_char; {n}]"),
             (_, Some(_)) => "c_char".into(),
@@ -780,7 +796,8 @@ fn c_size(c: &str) -> Option<usize> {
     match c {
         "char" => Some(1),
         "short" | "unsigned short" => Some(2),
-        "long" => Some(4),
+        // 4 bytes written, as FANUC's x86-64 library writes them.
+        "long" | "unsigned long" => Some(4),
         t => char_array(t).or_else(|| text_buf(t)),
     }
 }

@@ -81,10 +81,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(st::StatInfo::<st::Status2>::new(), cx, r),
     },
     Decoder {
-        names: &["cnc_rdcncid"],
-        run: |cx, _, r| go(st::rdcncid(), cx, r),
-    },
-    Decoder {
         names: &["cnc_alarm", "cnc_alarm2"],
         run: |cx, _, r| go(pa::alarm(), cx, r),
     },
@@ -203,27 +199,8 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["pmc_rdpmctitle"],
-        run: |cx, _, r| go(pmc::Title, cx, r),
-    },
-    Decoder {
         names: &["pmc_rdalmmsg"],
         run: |cx, a, r| go(pmc::AlarmMsgs { s: a[0], n: a[1] }, cx, r),
-    },
-    Decoder {
-        names: &["pmc_get_timer_type"],
-        run: |cx, a, r| {
-            let (s, e) = (a[0] as u16, a[1] as u16);
-            go(pmc::TimerTypes { s, e }, cx, r)
-        },
-    },
-    Decoder {
-        names: &["pmc_set_timer_type"],
-        run: |cx, a, r| {
-            let (s, e) = (a[0] as u16, a[1] as u16);
-            let types = vec![a[2] as i16; (a[3] & 7) as usize];
-            go(pmc::SetTimerTypes { s, e, types }, cx, r)
-        },
     },
     Decoder {
         names: &["cnc_wrwkcdshft"],
@@ -373,14 +350,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pt::PunchInfo, cx, r),
     },
     Decoder {
-        names: &["cnc_exeprgname"],
-        run: |cx, _, r| go(pg::exeprgname(), cx, r),
-    },
-    Decoder {
-        names: &["cnc_exeprgname2"],
-        run: |cx, _, r| go(pg::exeprgname2(), cx, r),
-    },
-    Decoder {
         names: &["cnc_rdexecprog"],
         run: |cx, a, r| go(pg::rdexecprog(a[0] as u16), cx, r),
     },
@@ -413,10 +382,6 @@ const HAND: &[Decoder] = &[
                 r,
             )
         },
-    },
-    Decoder {
-        names: &["cnc_rdopmode"],
-        run: |cx, _, r| go(pg::rdopmode(), cx, r),
     },
     Decoder {
         names: &[

@@ -2693,19 +2693,22 @@ short cnc_dwnstart3(unsigned short FlibHndl, short type);
 short cnc_dwnstart4(unsigned short FlibHndl, short type, char *prgname);
 
 /*
- Reads the name and O number of the running program.
+ Reads the name and O number of the running program. The name as a C
+ string: the characters up to its NUL, zeros after (FANUC's library
+ copies it so, whatever follows in the answer).
 
  # Safety
- `exeprg` must point to a writable ODBEXEPRG.
+ `exeprg` must be NULL or point to a writable ODBEXEPRG.
  */
 short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
 
 /*
- Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
- 256 bytes, NUL-terminated and zero-filled.
+ Reads the full path name of the running program
+ ("//CNC_MEM/USER/PATH1/O1234"): 256 bytes, NUL-terminated and
+ zero-filled (the name's characters up to its NUL, at most 255).
 
  # Safety
- `path_name` must point to 256 writable bytes.
+ `path_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_exeprgname2(unsigned short FlibHndl, char *path_name);
 
@@ -3087,18 +3090,18 @@ short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAM
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 
 /*
- Reads the CNC's identification number: four 32-bit words.
-
- The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
- FANUC's x86-64 library does, four 4-byte words are written (16 bytes):
- pass a `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words).
- Only the words the CNC sent are written, at most four (FANUC's library
- writes every word of a longer answer, past the four).
+ Reads the CNC's identification number: four 32-bit words. The pointer
+ keeps FANUC's `unsigned long *` spelling, but, exactly as FANUC's x86-64
+ library does, four 4-byte words are written (16 bytes): pass a
+ `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words). Only the
+ words the CNC sent are written, at most four (FANUC's library writes
+ every word of a longer answer, past the four).
 
  # Safety
- `cncid` must point to 16 writable bytes.
+ `cncid` must be NULL or point to 16 writable bytes: one 4-byte `unsigned long` per record answered, at most 4.
  */
-short cnc_rdcncid(unsigned short FlibHndl, unsigned long *cncid);
+short cnc_rdcncid(unsigned short FlibHndl,
+                  unsigned long *cncid);
 
 /*
  Reads the commanded values of block `block` (0: the block in execution)
@@ -3572,15 +3575,16 @@ short cnc_rdophistry4(unsigned short FlibHndl,
 
 /*
  Reads the operation mode word (of the spindle: 0 others, 1 normal, 2
- orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning,
- by FANUC's Windows header). An answer without a whole word writes
- nothing (EW_OK), as FANUC's library; further words are not written
- (FANUC's library writes them all, past the short).
+ orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning, by
+ FANUC's Windows header). An answer without a whole word writes nothing
+ (EW_OK), as FANUC's library; further words are not written (FANUC's
+ library writes them all, past the short).
 
  # Safety
- `mode` must point to a writable short.
+ `mode` must be NULL or point to 2 writable bytes: one 2-byte `short` per record answered, at most 1.
  */
-short cnc_rdopmode(unsigned short FlibHndl, short *mode);
+short cnc_rdopmode(unsigned short FlibHndl,
+                   short *mode);
 
 /*
  Reads the operator message of `type` 0 into OPMSG: number, type,
@@ -5089,7 +5093,7 @@ short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
  selected), without traffic. Writes 4 bytes into the `long`.
 
  # Safety
- `unittype` must be NULL or point to 4 writable bytes.
+ `unittype` must be NULL or point to a writable long.
  */
 short pmc_get_current_pmc_unit(unsigned short FlibHndl, long *unittype);
 
@@ -5115,10 +5119,11 @@ short pmc_get_pmc_unit_types(unsigned short FlibHndl, long *unittypes, long *cou
 /*
  Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
  into `types`, one short each. No more than the range holds is written
- (FANUC's library copies the whole answer).
+ (FANUC's library copies the whole answer). `s_number` below 1 or after
+ `e_number`: EW_NUMBER before any traffic.
 
  # Safety
- `types` must point to `e_number - s_number + 1` writable shorts.
+ `types` must be NULL or point to `e_number - s_number + 1` writable `short` elements (one per record answered).
  */
 short pmc_get_timer_type(unsigned short FlibHndl,
                          unsigned short s_number,
@@ -5196,7 +5201,7 @@ short pmc_rdpmcrng(unsigned short FlibHndl,
  zeroed, as FANUC's library; a short answer reads as zeros.
 
  # Safety
- `title` must point to a writable ODBPMCTITLE.
+ `title` must be NULL or point to a writable ODBPMCTITLE.
  */
 short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
 
@@ -5207,11 +5212,12 @@ short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
 short pmc_select_pmc_unit(unsigned short FlibHndl, long unittype);
 
 /*
- Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
- from `types`, one short each.
+ Sets the types (accuracy codes) of PMC timers `s_number..=e_number` from
+ `types`, one short each (sent as the request's payload). `s_number`
+ below 1 or after `e_number`: EW_NUMBER before any traffic.
 
  # Safety
- `types` must point to `e_number - s_number + 1` readable shorts.
+ `types` must be NULL or point to `e_number - s_number + 1` readable `short` elements.
  */
 short pmc_set_timer_type(unsigned short FlibHndl,
                          unsigned short s_number,

@@ -161,6 +161,7 @@ pub(crate) unsafe fn exec(
         };
         let mut v = l.values.iter().map(|x| match x {
             Learnt::MaxSpindles => i64::from(cx.max_spindles),
+            Learnt::PmcUnit => i64::from(h.state.lock().pmc_unit),
         });
         // SAFETY: the caller's contract (offsets and elements in the outputs).
         unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };

@@ -62,8 +62,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("pmc", &[
         "pmc_rdpmcrng", "pmc_wrpmcrng", "pmc_getdtailerr", "pmc_rdpmcinfo", "pmc_select_pmc_unit",
-        "pmc_get_current_pmc_unit", "pmc_get_pmc_unit_types", "pmc_rdpmctitle", "pmc_rdalmmsg",
-        "pmc_get_timer_type", "pmc_set_timer_type",
+        "pmc_get_pmc_unit_types", "pmc_rdalmmsg",
     ]),
     ("position", &[
         "cnc_rdposition", "cnc_absolute", "cnc_absolute2", "cnc_machine", "cnc_relative",
@@ -71,15 +70,15 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_getfigure",
     ]),
     ("program", &[
-        "cnc_exeprgname", "cnc_exeprgname2", "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
-        "cnc_settimer", "cnc_rdopmode", "cnc_rdprogdir", "cnc_rdprogdir3",
+        "cnc_rdexecprog", "cnc_modal", "cnc_gettimer",
+        "cnc_settimer", "cnc_rdprogdir", "cnc_rdprogdir3",
         "cnc_rdprogdiro8",
     ]),
     ("spindle", &[
         "cnc_acts2", "cnc_rdspeed", "cnc_rdspload", "cnc_rdspmaxrpm", "cnc_rdspgear",
     ]),
     ("status", &[
-        "cnc_sysinfo", "cnc_sysinfo_ex", "cnc_statinfo", "cnc_statinfo2", "cnc_rdcncid",
+        "cnc_sysinfo", "cnc_sysinfo_ex", "cnc_statinfo", "cnc_statinfo2",
     ]),
     ("tool", &[
         "cnc_rdtoolgrp", "cnc_rdtlctldata", "cnc_instlifedt", "cnc_rdgrpinfo", "cnc_wrgrpinfo",

@@ -4,14 +4,12 @@ use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_DATA, EW_LENGTH, EW_NUMBER};
-use crate::proto::pmc::{
-    ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs, SetTimerTypes, TITLE, TimerTypes, Title,
-};
+use crate::proto::pmc::{ALMMSG_LEN, ALMMSG_MAX, AlarmMsgs};
 use crate::proto::pmc::{
     PMCINFO_MAX, PmcRange, ReadPmc, SelectUnit, UnitTypes, WritePmc, elem_size, rdpmcinfo,
     swap_elements,
 };
-use crate::types::{IODBPMC, ODBPMCALM, ODBPMCERR, ODBPMCINF, ODBPMCINF_info, ODBPMCTITLE};
+use crate::types::{IODBPMC, ODBPMCALM, ODBPMCERR, ODBPMCINF, ODBPMCINF_info};
 use std::os::raw::c_char;
 use std::os::raw::{c_long, c_short, c_ushort};
 use std::ptr::addr_of_mut;
@@ -202,25 +200,6 @@ pub extern "C" fn pmc_select_pmc_unit(FlibHndl: c_ushort, unittype: c_long) -> c
     })
 }
 
-/// Reads the PMC unit this handle's PMC calls address (1 until one is
-/// selected), without traffic. Writes 4 bytes into the `long`.
-///
-/// # Safety
-/// `unittype` must be NULL or point to 4 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_get_current_pmc_unit(
-    FlibHndl: c_ushort,
-    unittype: *mut c_long,
-) -> c_short {
-    ffi_boundary!("pmc_get_current_pmc_unit", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(unittype)?.cast::<i32>();
-        let unit = h.state.lock().pmc_unit;
-        unsafe { put(out, i32::from(unit)) };
-        Ok(())
-    })
-}
-
 /// Reads the types of the CNC's PMC units: `*count` in is the room in
 /// `unittypes` (4 bytes per `long`), out the number written; an answer
 /// with none leaves `*count` as it was, as FANUC's library does.
@@ -248,32 +227,6 @@ pub unsafe extern "C" fn pmc_get_pmc_unit_types(
             if n > 0 {
                 put(count, n as i32);
             }
-        }
-        Ok(())
-    })
-}
-
-/// Reads the PMC program's title data: each text as the CNC sent it (32,
-/// 32, 32, 4, 2, 32, 16, 32, 32 and 32 bytes), the rest of its member
-/// zeroed, as FANUC's library; a short answer reads as zeros.
-///
-/// # Safety
-/// `title` must point to a writable ODBPMCTITLE.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_rdpmctitle(FlibHndl: c_ushort, title: *mut ODBPMCTITLE) -> c_short {
-    ffi_read!("pmc_rdpmctitle", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(title)?.cast::<u8>();
-        let mut data = h.call_pmc(&Title)?;
-        data.resize(TITLE.iter().map(|t| t.0).sum(), 0);
-        let (mut from, mut to) = (0, 0);
-        for (wire, size) in TITLE {
-            for k in 0..size {
-                let b = if k < wire { data[from + k] } else { 0 };
-                // SAFETY: `to + k` lies in ODBPMCTITLE (380 bytes).
-                unsafe { put(out.add(to + k), b) };
-            }
-            (from, to) = (from + wire, to + size);
         }
         Ok(())
     })
@@ -340,74 +293,5 @@ pub unsafe extern "C" fn pmc_rdalmmsg(
             put(exist, more as c_short);
         }
         Ok(())
-    })
-}
-
-/// The local check of the timer functions: timers `s_number..=e_number`
-/// from 1 on, else EW_NUMBER before any traffic.
-fn timer_range(s_number: c_ushort, e_number: c_ushort) -> Result<usize> {
-    if s_number < 1 || e_number < s_number {
-        return Err(Error::local(
-            EW_NUMBER,
-            "timer numbers out of order or below 1",
-        ));
-    }
-    Ok(usize::from(e_number - s_number) + 1)
-}
-
-/// Reads the types (accuracy codes) of PMC timers `s_number..=e_number`
-/// into `types`, one short each. No more than the range holds is written
-/// (FANUC's library copies the whole answer).
-///
-/// # Safety
-/// `types` must point to `e_number - s_number + 1` writable shorts.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_get_timer_type(
-    FlibHndl: c_ushort,
-    s_number: c_ushort,
-    e_number: c_ushort,
-    types: *mut c_short,
-) -> c_short {
-    ffi_read!("pmc_get_timer_type", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(types)?;
-        let n = timer_range(s_number, e_number)?;
-        let t = h.call_pmc(&TimerTypes {
-            s: s_number,
-            e: e_number,
-        })?;
-        for (i, v) in t.iter().take(n).enumerate() {
-            // SAFETY: i < the range's length.
-            unsafe { put(out.add(i), *v) };
-        }
-        Ok(())
-    })
-}
-
-/// Sets the types (accuracy codes) of PMC timers `s_number..=e_number`
-/// from `types`, one short each.
-///
-/// # Safety
-/// `types` must point to `e_number - s_number + 1` readable shorts.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn pmc_set_timer_type(
-    FlibHndl: c_ushort,
-    s_number: c_ushort,
-    e_number: c_ushort,
-    types: *mut c_short,
-) -> c_short {
-    ffi_boundary!("pmc_set_timer_type", {
-        let h = handles::get(FlibHndl)?;
-        let inp = nonnull(types)?;
-        let n = timer_range(s_number, e_number)?;
-        // SAFETY: the caller's array holds the range.
-        let types = (0..n)
-            .map(|i| unsafe { inp.add(i).read_unaligned() })
-            .collect();
-        h.call_pmc(&SetTimerTypes {
-            s: s_number,
-            e: e_number,
-            types,
-        })
     })
 }

@@ -7,61 +7,12 @@ use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_ATTRIB, EW_LENGTH, EW_NUMBER};
 use crate::proto::program::{self as pp, AUX_ORDER, Clock, Modal, ModalCall, ModalKind};
-use crate::types::{IODBTIMER, ODBEXEPRG, ODBMDL, PRGDIR, PRGDIR3};
+use crate::types::{IODBTIMER, ODBMDL, PRGDIR, PRGDIR3};
 use std::os::raw::{c_char, c_long, c_short, c_ushort};
 
 /// The low 16 bits, as FANUC's library stores 32-bit numbers in shorts.
 pub(crate) fn low16(v: i32) -> c_short {
     v as u32 as u16 as c_short
-}
-
-/// Reads the name and O number of the running program.
-///
-/// # Safety
-/// `exeprg` must point to a writable ODBEXEPRG.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_exeprgname(FlibHndl: c_ushort, exeprg: *mut ODBEXEPRG) -> c_short {
-    ffi_read!("cnc_exeprgname", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(exeprg)?;
-        let e = h.call(&pp::exeprgname())?;
-        // The name as a C string: the bytes up to its NUL, zeros after
-        // (FANUC's library copies it so, whatever follows in the answer).
-        let end = e.name.iter().position(|b| *b == 0).unwrap_or(e.name.len());
-        let mut name = [0 as c_char; 36];
-        for (d, s) in name.iter_mut().zip(&e.name[..end]) {
-            *d = *s as c_char;
-        }
-        let v = ODBEXEPRG {
-            name,
-            o_num: e.o_num,
-        };
-        unsafe { put(out, v) };
-        Ok(())
-    })
-}
-
-/// Size of cnc_exeprgname2's output.
-const PATH_NAME_LEN: usize = 256;
-
-/// Reads the full path name of the running program ("//CNC_MEM/USER/PATH1/O1234"):
-/// 256 bytes, NUL-terminated and zero-filled.
-///
-/// # Safety
-/// `path_name` must point to 256 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_exeprgname2(FlibHndl: c_ushort, path_name: *mut c_char) -> c_short {
-    ffi_read!("cnc_exeprgname2", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(path_name)?.cast::<u8>();
-        let n = h.call(&pp::exeprgname2())?;
-        let mut b = [0u8; PATH_NAME_LEN];
-        let s = n.0.split(|c| *c == 0).next().unwrap_or(&[]);
-        let k = s.len().min(PATH_NAME_LEN - 1);
-        b[..k].copy_from_slice(&s[..k]);
-        unsafe { std::ptr::copy_nonoverlapping(b.as_ptr(), out, PATH_NAME_LEN) };
-        Ok(())
-    })
 }
 
 /// Reads the text of the block being executed and the blocks after it.
@@ -236,27 +187,6 @@ pub unsafe extern "C" fn cnc_settimer(FlibHndl: c_ushort, time: *mut IODBTIMER) 
             }
         };
         h.call(&pp::SetTimer { kind: t, clock })
-    })
-}
-
-/// Reads the operation mode word (of the spindle: 0 others, 1 normal, 2
-/// orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning,
-/// by FANUC's Windows header). An answer without a whole word writes
-/// nothing (EW_OK), as FANUC's library; further words are not written
-/// (FANUC's library writes them all, past the short).
-///
-/// # Safety
-/// `mode` must point to a writable short.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdopmode(FlibHndl: c_ushort, mode: *mut c_short) -> c_short {
-    ffi_read!("cnc_rdopmode", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(mode)?;
-        let m = h.call(&pp::rdopmode())?;
-        if let Some(w) = m.0.first() {
-            unsafe { put(out, *w) };
-        }
-        Ok(())
     })
 }
 

@@ -4,10 +4,10 @@ use super::{ffi_boundary, ffi_read, nonnull, put, put_at, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::EW_PATH;
-use crate::proto::status::{StatInfo, StatWords, Status, Status2, StatusWords, rdcncid};
+use crate::proto::status::{StatInfo, StatWords, Status, Status2, StatusWords};
 use crate::types::{MAX_CNCPATH, ODBST, ODBST2, ODBSYS, ODBSYSEX, ODBSYSEX_PATH, chars};
 use std::mem::{offset_of, size_of};
-use std::os::raw::{c_short, c_ulong, c_ushort};
+use std::os::raw::{c_short, c_ushort};
 
 /// Reads the CNC's system information (series, version, axes) of the
 /// handle's current path, as the CNC reported it at connect time.
@@ -125,28 +125,5 @@ pub unsafe extern "C" fn cnc_statinfo2(FlibHndl: c_ushort, statinfo: *mut ODBST2
         let h = handles::get(FlibHndl)?;
         let out = nonnull(statinfo)?.cast::<u8>();
         unsafe { read_status::<Status2, 11>(&h, out) }
-    })
-}
-
-/// Reads the CNC's identification number: four 32-bit words.
-///
-/// The pointer keeps FANUC's `unsigned long *` spelling, but, exactly as
-/// FANUC's x86-64 library does, four 4-byte words are written (16 bytes):
-/// pass a `uint32_t[4]` (or an `unsigned long[4]` read as 32-bit words).
-/// Only the words the CNC sent are written, at most four (FANUC's library
-/// writes every word of a longer answer, past the four).
-///
-/// # Safety
-/// `cncid` must point to 16 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdcncid(FlibHndl: c_ushort, cncid: *mut c_ulong) -> c_short {
-    ffi_read!("cnc_rdcncid", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(cncid)?.cast::<u32>();
-        let id = h.call(&rdcncid())?;
-        for (i, w) in id.0.iter().take(4).enumerate() {
-            unsafe { put(out.add(i), *w) };
-        }
-        Ok(())
     })
 }

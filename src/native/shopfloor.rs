@@ -11,6 +11,7 @@ use super::cnc::Cnc;
 use super::error::{Error, Result};
 use super::part::{Part, via};
 use crate::proto::alarm as pa;
+use crate::proto::described::Described;
 use crate::proto::offset as po;
 use crate::proto::position::{SpindleData, spdl};
 use crate::proto::program as pp;
@@ -68,9 +69,10 @@ fn speeds_part() -> impl Part<Out = Vec<i32>> + Send + 'static {
 }
 
 fn name_part() -> impl Part<Out = String> + Send + 'static {
-    via("cnc_exeprgname2", pp::exeprgname2(), 256, |n| {
-        let s = n.0.split(|c| *c == 0).next().unwrap_or(&[]);
-        Ok(String::from_utf8_lossy(s).into_owned())
+    let f = crate::spec::find("cnc_exeprgname2").expect("a described function");
+    via("cnc_exeprgname2", Described::new(f, &[]), 256, |n| {
+        let s: Vec<u8> = n.iter().map(|c| *c as u8).take_while(|c| *c != 0).collect();
+        Ok(String::from_utf8_lossy(&s).into_owned())
     })
 }
 

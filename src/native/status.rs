@@ -324,12 +324,10 @@ impl Cnc {
 
     /// The CNC's identification number (cnc_rdcncid): four 32-bit words.
     pub fn cnc_id(&self) -> Result<Vec<u32>> {
-        self.run(via(
-            "cnc_rdcncid",
-            crate::proto::status::rdcncid(),
-            16,
-            |id| Ok(id.0),
-        ))
+        let f = crate::spec::find("cnc_rdcncid").expect("a described function");
+        self.run(via("cnc_rdcncid", Described::new(f, &[]), 16, |id| {
+            Ok(id.into_iter().map(|w| w as u32).collect())
+        }))
     }
 
     /// What the current path executes (see [`Execution`]), in one frame.

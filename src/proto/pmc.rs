@@ -157,35 +157,6 @@ pub fn rdpmcinfo(adr_type: i16) -> super::call::Single<PmcInfo> {
 // PMC units (pmc_get_number_of_pmc is described in src/spec/table/)
 // ---------------------------------------------------------------------------
 
-/// The ten title texts of 0x800b's answer: (bytes on the wire, bytes in
-/// ODBPMCTITLE), in order; the rest of each member is zero.
-pub const TITLE: [(usize, usize); 10] = [
-    (32, 48),
-    (32, 48),
-    (32, 48),
-    (4, 8),
-    (2, 4),
-    (32, 48),
-    (16, 32),
-    (32, 48),
-    (32, 48),
-    (32, 48),
-];
-
-/// pmc_rdpmctitle: the answer's bytes.
-#[derive(Debug, Clone, Copy)]
-pub struct Title;
-
-impl Call for Title {
-    type Output = Vec<u8>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::pmc(RDPMCTITLE, &[])]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<u8>> {
-        Ok(sub(resp, 0)?.payload.clone())
-    }
-}
-
 /// pmc_get_pmc_unit_types: up to `most` unit types, as many whole i32 as
 /// the answer holds.
 #[derive(Debug, Clone, Copy)]
@@ -270,52 +241,5 @@ impl Call for AlarmMsgs {
         let mut text = p[8..].to_vec();
         text.resize(n * ALMMSG_LEN, 0);
         Ok(AlarmMsgAnswer { count, exist, text })
-    }
-}
-
-/// pmc_get_timer_type: the types of timers `s..=e`.
-#[derive(Debug, Clone, Copy)]
-pub struct TimerTypes {
-    pub s: u16,
-    pub e: u16,
-}
-
-impl Call for TimerTypes {
-    type Output = Vec<i16>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::pmc(
-            GET_TIMER_TYPE,
-            &[i32::from(self.s), i32::from(self.e)],
-        )]
-    }
-    /// As many whole i16 as the answer holds (FANUC's library copies the
-    /// whole answer; the caller cuts it to its range).
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<i16>> {
-        Ok(sub(resp, 0)?
-            .payload
-            .chunks_exact(2)
-            .map(|c| i16::from_be_bytes([c[0], c[1]]))
-            .collect())
-    }
-}
-
-/// pmc_set_timer_type: sets the types of timers `s..=e`.
-#[derive(Debug, Clone)]
-pub struct SetTimerTypes {
-    pub s: u16,
-    pub e: u16,
-    pub types: Vec<i16>,
-}
-
-impl Call for SetTimerTypes {
-    type Output = ();
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        let data = self.types.iter().flat_map(|t| t.to_be_bytes()).collect();
-        vec![
-            ReqSub::pmc(SET_TIMER_TYPE, &[i32::from(self.s), i32::from(self.e)]).with_payload(data),
-        ]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
-        sub(resp, 0).map(|_| ())
     }
 }

@@ -37,35 +37,6 @@ wire_struct! {
     }
 }
 
-/// Payload of 0x00cf (cnc_exeprgname): O number and a 36-byte name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ExePrgName {
-    pub o_num: i32,
-    pub name: [u8; 36],
-}
-
-impl Default for ExePrgName {
-    fn default() -> Self {
-        ExePrgName {
-            o_num: 0,
-            name: [0; 36],
-        }
-    }
-}
-
-impl Wire for ExePrgName {
-    fn encode(&self, w: &mut Writer) {
-        w.i32(self.o_num);
-        w.bytes(&self.name);
-    }
-    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        Ok(ExePrgName {
-            o_num: r.i32()?,
-            name: r.array()?,
-        })
-    }
-}
-
 wire_struct! {
     /// Payload of 0x0120 (cnc_rdtimer): minutes and milliseconds.
     pub struct Timer {
@@ -100,14 +71,6 @@ wire_struct! {
     pub struct NTool {
         pub datano: i32,
         pub data: i32,
-    }
-}
-
-wire_struct! {
-    /// Payload of 0x0057 (cnc_rdopmode): the mode word (FANUC's library
-    /// copies every further word too; a CNC sends one).
-    pub struct OpMode {
-        pub mode: i16,
     }
 }
 
@@ -160,8 +123,7 @@ impl Wire for ExecProg {
     }
 }
 
-/// A payload as bytes: 0x00fc (cnc_exeprgname2), the program's path name;
-/// 0x0036 / 0x0037, the MDI program's text.
+/// A payload as bytes: 0x0036 / 0x0037, the MDI program's text.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct PathName(pub Vec<u8>);
 
@@ -210,14 +172,6 @@ impl Wire for AuxModal {
     }
 }
 
-pub fn exeprgname() -> Single<ExePrgName> {
-    Single::padded(ReqSub::cnc(EXEPRGNAME, &[]))
-}
-
-pub fn exeprgname2() -> Single<PathName> {
-    Single::new(ReqSub::cnc(EXEPRGNAME2, &[]))
-}
-
 /// (1,0x20)\[length\], cut to what fits in one answer.
 pub fn rdexecprog(length: u16) -> Single<ExecProg> {
     let n = i32::from(length).min(super::packet::MAX_ANSWER as i32);
@@ -244,29 +198,6 @@ impl Call for SetTimer {
     fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<()> {
         super::call::sub(resp, 0).map(|_| ())
     }
-}
-
-/// Answer of 0x0057 as FANUC's library reads it: every whole i16 word
-/// (possibly none; a CNC sends one, [`OpMode`]); an odd trailing byte is
-/// ignored.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct OpModeWords(pub Vec<i16>);
-
-impl Wire for OpModeWords {
-    fn encode(&self, w: &mut Writer) {
-        self.0.encode(w);
-    }
-    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        let n = r.remaining() / 2;
-        (0..n)
-            .map(|_| r.i16())
-            .collect::<Result<_, _>>()
-            .map(OpModeWords)
-    }
-}
-
-pub fn rdopmode() -> Single<OpModeWords> {
-    Single::new(ReqSub::cnc(RDOPMODE, &[]))
 }
 
 /// What cnc_modal reads for a `type`.

@@ -1,9 +1,9 @@
 //! Connection-group and status structures: sysinfo, statinfo, statinfo2, CNC id.
 
-use super::call::{Call, Ctx, Single, sub};
+use super::call::{Call, Ctx, sub};
 use super::cmd;
 use super::packet::{ReqSub, RespSub};
-use super::wire::{DecodeError, Reader, Wire, Writer};
+use super::wire::Wire;
 use crate::error::{Error, Result};
 use crate::wire_struct;
 
@@ -69,21 +69,6 @@ wire_struct! {
     /// Payload of 0x00e1 (handle retrace) and 0x0098 (T/M mode): one word used.
     pub struct Word {
         pub value: i16,
-    }
-}
-
-/// Payload of 0x00e8 (cnc_rdcncid): 32-bit words (a CNC sends four); a
-/// ragged tail is ignored, as FANUC's library ignores it.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct CncId(pub Vec<u32>);
-
-impl Wire for CncId {
-    fn encode(&self, w: &mut Writer) {
-        self.0.iter().for_each(|x| w.u32(*x));
-    }
-    fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        let n = r.remaining() / 4;
-        (0..n).map(|_| r.u32()).collect::<Result<_, _>>().map(CncId)
     }
 }
 
@@ -205,8 +190,4 @@ pub fn sysinfo_at_connect(paths: &[u16]) -> Vec<ReqSub> {
             s
         })
         .collect()
-}
-
-pub fn rdcncid() -> Single<CncId> {
-    Single::new(ReqSub::cnc(cmd::RDCNCID, &[]))
 }

@@ -3,7 +3,8 @@
 
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, TITLE, elem_size};
+use crate::proto::pmc::{PMCINFO_MAX, PmcAreaInfo, PmcInfo, PmcRange, elem_size};
+use crate::spec::Func;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -161,16 +162,19 @@ impl Pmc {
         (self.info.get(usize::from(unit).wrapping_sub(1))).ok_or(CncError::new(ew::EW_NOPMC))
     }
 
-    /// 0x800b's answer on unit `unit`: the title texts, each cut or
-    /// zero-padded to its size on the wire.
-    pub fn title_bytes(&self, unit: u16) -> Reply<Vec<u8>> {
-        let title = &self.unit_info(unit)?.title;
+    /// pmc_rdpmctitle's answer on unit `unit`: each text of the reply
+    /// layout `f` (its wire fields, in order) from the unit's title texts,
+    /// cut or zero-padded to its characters; the zeros after each.
+    pub fn title(&self, unit: u16, f: &Func) -> Reply<Vec<i64>> {
+        let mut texts = self.unit_info(unit)?.title.iter();
         let mut out = Vec::new();
-        for (i, (n, _)) in TITLE.iter().enumerate() {
-            let t = title.get(i).map_or(&[][..], |t| t.as_bytes());
-            let at = out.len();
-            out.extend(&t[..t.len().min(*n)]);
-            out.resize(at + n, 0);
+        for field in f.reply {
+            let n = usize::from(field.n);
+            let t = match field.arg {
+                Some(_) => &[][..],
+                None => texts.next().map_or(&[][..], |t| t.as_bytes()),
+            };
+            out.extend((0..n).map(|k| i64::from(t.get(k).copied().unwrap_or(0))));
         }
         Ok(out)
     }
@@ -227,28 +231,25 @@ impl Pmc {
         Ok(s as usize - 1..=e as usize - 1)
     }
 
-    /// Command 0x804a[s, e] on unit `unit`: the timers' types, big-endian
-    /// i16 each.
-    pub fn timer_types(&self, unit: u16, s: i32, e: i32) -> Reply<Vec<u8>> {
+    /// Command 0x804a[s, e] on unit `unit`: the timers' types, one record
+    /// each (pmc_get_timer_type's layout).
+    pub fn timer_types(&self, unit: u16, s: i32, e: i32) -> Reply<Vec<i64>> {
         let r = Self::timer_range(s, e)?;
         let t = &self.unit_info(unit)?.timer_types;
-        Ok(t[r].iter().flat_map(|v| v.to_be_bytes()).collect())
+        Ok(t[r].iter().map(|v| i64::from(*v)).collect())
     }
 
     /// Command 0x804b[s, e] on unit `unit`: sets the timers' types from
-    /// the payload (big-endian i16 each); all or nothing: a payload of
-    /// another length is EW_LENGTH, a type outside 0..=5 EW_DATA with the
-    /// timer's number as detail.
-    pub fn set_timer_types(&mut self, unit: u16, s: i32, e: i32, data: &[u8]) -> Reply<()> {
+    /// the payload's records (pmc_set_timer_type's layout, one i16 each);
+    /// all or nothing: another number of them is EW_LENGTH, a type outside
+    /// 0..=5 EW_DATA with the timer's number as detail.
+    pub fn set_timer_types(&mut self, unit: u16, s: i32, e: i32, data: &[i64]) -> Reply<()> {
         let r = Self::timer_range(s, e)?;
         self.unit_info(unit)?;
-        if data.len() != 2 * r.clone().count() {
+        if data.len() != r.clone().count() {
             return Err(CncError::new(ew::EW_LENGTH));
         }
-        let v: Vec<i16> = data
-            .chunks_exact(2)
-            .map(|c| i16::from_be_bytes([c[0], c[1]]))
-            .collect();
+        let v: Vec<i16> = data.iter().map(|t| *t as i16).collect();
         if let Some(k) = v.iter().position(|t| !(0..=TIMER_TYPE_MAX).contains(t)) {
             return Err(CncError {
                 code: ew::EW_DATA,
@@ -294,13 +295,16 @@ struct PmcToml {
     unit: Option<BTreeMap<String, PmcToml>>,
 }
 
+/// The texts of pmc_rdpmctitle's answer.
+const TITLE_TEXTS: usize = 10;
+
 /// A unit's title, messages and timer types from the profile.
 fn unit_info(
     title: Vec<String>,
     messages: Vec<String>,
     types: Vec<i16>,
 ) -> Result<UnitInfo, String> {
-    if title.len() > TITLE.len() {
+    if title.len() > TITLE_TEXTS {
         return Err("[pmc] title: at most 10 texts".to_string());
     }
     if types.len() > TIMERS {

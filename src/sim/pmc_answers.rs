@@ -29,17 +29,17 @@ pub(super) const ROUTES: &[Route] = &[
     Route::pmc(SELECT_UNIT, |m, q| {
         m.profile.pmc.select(q.args[0]).map(|()| Vec::new())
     }),
-    Route::pmc(RDPMCTITLE, |m, q| m.profile.pmc.title_bytes(q.path)),
+    Route::pmc_table(RDPMCTITLE, |m, q| m.profile.pmc.title(q.path, q.f)),
     Route::pmc(PMC_RDALMMSG, |m, q| {
         m.profile.pmc.alarm_messages(q.path, q.args[0], q.args[1])
     }),
-    Route::pmc(GET_TIMER_TYPE, |m, q| {
-        m.profile.pmc.timer_types(q.path, q.args[0], q.args[1])
+    Route::pmc_table(GET_TIMER_TYPE, |m, q| {
+        m.profile.pmc.timer_types(q.path, q.arg(0), q.arg(1))
     }),
-    Route::pmc(SET_TIMER_TYPE, |m, q| {
+    Route::pmc_table(SET_TIMER_TYPE, |m, q| {
         m.profile
             .pmc
-            .set_timer_types(q.path, q.args[0], q.args[1], &q.payload)
+            .set_timer_types(q.path, q.arg(0), q.arg(1), q.payload)
             .map(|()| Vec::new())
     }),
     Route::pmc_table(PMC_COUNT, |m, _| Ok(vec![m.profile.pmc.units() as i64])),

@@ -12,14 +12,14 @@ use crate::proto::alarm::{OpMsg, RDALMMSG, RDOPMSG, RDOPMSG3};
 use crate::proto::cmd::RDPROCTIME;
 use crate::proto::cmd::{RDACTPT, RDBLKCOUNT, RDCOMMAND, RDMULTIPIECENO};
 use crate::proto::program::{
-    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExePrgName,
-    ExecProg, GCode, GETTIMER, GModal, MODAL_AUX, MODAL_G, OpMode, PathName, ProgDir, RDEXECPROG,
-    RDOPMODE, RDPROGDIR, RDTIMER, SETTIMER, Timer,
+    AUX_ORDER, ActPt, AuxCode, AuxModal, Clock, DirEntry, EXEPRGNAME, EXEPRGNAME2, ExecProg, GCode,
+    GETTIMER, GModal, MODAL_AUX, MODAL_G, ProgDir, RDEXECPROG, RDOPMODE, RDPROGDIR, RDTIMER,
+    SETTIMER, Timer,
 };
 
 pub(super) const ROUTES: &[Route] = &[
-    Route::cnc(EXEPRGNAME, |m, q| enc(m.exe_prgname(q.path))),
-    Route::cnc(EXEPRGNAME2, |m, q| enc(m.exe_prgname2(q.path))),
+    Route::table(EXEPRGNAME, |m, q| m.exe_prgname(q.path)),
+    Route::table(EXEPRGNAME2, |m, q| m.exe_prgname2(q.path)),
     Route::cnc(RDEXECPROG, |m, q| enc(m.exec_prog(q.path, q.args[0]))),
     Route::cnc(MODAL_G, |m, q| enc(m.g_modal(q.path, q.args[0]))),
     Route::cnc(MODAL_AUX, |m, q| enc(m.aux_modal(q.path, q.args[0]))),
@@ -32,7 +32,8 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(SETTIMER, |m, q| {
         m.set_clock(q.args[0], &q.payload).map(|()| Vec::new())
     }),
-    Route::cnc(RDOPMODE, |m, q| enc(m.opmode(q.path))),
+    // cnc_rdopmode: the path's `opmode` word.
+    Route::table(RDOPMODE, |m, q| Ok(vec![i64::from(m.path(q.path)?.opmode)])),
     Route::cnc(RDPROGDIR, |m, q| {
         enc(m.prog_dir(q.path, q.args[0], q.args[1], q.args[2]))
     }),
@@ -157,23 +158,35 @@ impl Machine {
         Ok((s.main, p.unwrap_or_default()))
     }
 
-    pub(crate) fn exe_prgname(&self, path: u16) -> Reply<ExePrgName> {
+    /// cnc_exeprgname's layout: the O number, then the name's 36
+    /// characters (at most 35, zeros after).
+    pub(crate) fn exe_prgname(&self, path: u16) -> Reply<Vec<i64>> {
         let full = self.full_name(path)?;
-        let short = full.rsplit('/').next().unwrap_or("");
-        let mut name = [0u8; 36];
-        let n = short.len().min(35);
-        name[..n].copy_from_slice(&short.as_bytes()[..n]);
-        Ok(ExePrgName {
-            o_num: self.shown_program(path)?.0,
-            name,
-        })
+        let short = full.rsplit('/').next().unwrap_or("").as_bytes();
+        let mut v = vec![i64::from(self.shown_program(path)?.0)];
+        v.extend((0..36).map(|k| {
+            i64::from(if k < 35 {
+                short.get(k).copied().unwrap_or(0)
+            } else {
+                0
+            })
+        }));
+        Ok(v)
     }
 
-    pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<PathName> {
-        let mut b = self.full_name(path)?.into_bytes();
-        b.truncate(255);
-        b.push(0);
-        Ok(PathName(b))
+    /// cnc_exeprgname2's layout: the full name's 255 characters (zeros
+    /// after it), then the NUL.
+    pub(crate) fn exe_prgname2(&self, path: u16) -> Reply<Vec<i64>> {
+        let b = self.full_name(path)?.into_bytes();
+        Ok((0..256)
+            .map(|k| {
+                i64::from(if k < 255 {
+                    b.get(k).copied().unwrap_or(0)
+                } else {
+                    0
+                })
+            })
+            .collect())
     }
 
     /// The executing text, at most `length` bytes. A path with no text to
@@ -347,12 +360,6 @@ impl Machine {
             .as_second();
         self.profile.timers.clock_offset += t - now;
         Ok(())
-    }
-
-    pub(crate) fn opmode(&self, path: u16) -> Reply<OpMode> {
-        Ok(OpMode {
-            mode: self.path(path)?.opmode,
-        })
     }
 
     /// 0x0023 (cnc_rdalmmsg/2, cnc_rdalminfo): up to `num` active alarms of

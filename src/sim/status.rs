@@ -13,7 +13,7 @@ use crate::proto::cmd::{
 };
 use crate::proto::open::OpenBody;
 use crate::proto::position::SPINDLE_SHOWN15;
-use crate::proto::status::{CncId, Status, Status2, SysInfo, Word};
+use crate::proto::status::{Status, Status2, SysInfo, Word};
 
 pub(super) const ROUTES: &[Route] = &[
     Route::cnc(cmd::SYSINFO, |m, q| enc(m.sysinfo(q.path))),
@@ -42,8 +42,9 @@ pub(super) const ROUTES: &[Route] = &[
         m.series15()?;
         enc(m.spindle_shown15(q.path))
     }),
-    Route::cnc(cmd::RDCNCID, |m, _| {
-        enc(Ok(CncId(m.profile.cnc.cnc_id.clone())))
+    // cnc_rdcncid: the profile's `cnc_id` words (at most four).
+    Route::table(cmd::RDCNCID, |m, _| {
+        Ok(m.profile.cnc.cnc_id.iter().map(|w| i64::from(*w)).collect())
     }),
     Route::table(RDETHERINFO, ether_info),
     Route::table(RDSYSHARD, boards),

@@ -24,6 +24,9 @@ pub enum Param {
     Long(&'static str),
     /// `unsigned long NAME`: as [`Param::Long`] (32 bits go on the wire).
     ULong(&'static str),
+    /// `unsigned short NAME`: a number the caller passes, 0..=65535 (its
+    /// checks and request word see it unsigned).
+    UShort(&'static str),
     /// `short NAME` that FANUC's library converts to `.1` (as a C cast)
     /// before anything else: its request word and any echo of it carry
     /// the converted value.
@@ -57,6 +60,7 @@ impl Param {
         match *self {
             Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
             Param::Long(_) | Param::ULong(_) => Some(v as i32),
+            Param::UShort(_) => Some(v as u16 as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
             Param::Out(..) | Param::In(..) | Param::Text(..) => None,
         }
@@ -66,6 +70,7 @@ impl Param {
             Param::Short(n)
             | Param::Long(n)
             | Param::ULong(n)
+            | Param::UShort(n)
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
@@ -131,6 +136,10 @@ impl Classes {
 pub enum Learnt {
     /// The CNC's maximum spindles.
     MaxSpindles,
+    /// The PMC unit the handle's PMC calls address: kept by the library
+    /// for the handle (pmc_select_pmc_unit's, 1 until one is selected),
+    /// not learnt from the CNC.
+    PmcUnit,
 }
 
 /// The answer of a function that sends nothing on some classes: the
@@ -218,6 +227,10 @@ pub const NUMBERS: u8 = u8::MAX - 1;
 /// any traffic.
 pub const TEXT: u8 = u8::MAX - 2;
 
+/// [`Payload::count`] of a write whose records are as many as its range
+/// holds ([`Func::span`]): pmc_set_timer_type's timers `s..=e`.
+pub const SPAN: u8 = u8::MAX - 3;
+
 /// The records a write sends as its request's payload, read from its
 /// [`Param::In`] array: number parameter `count` of them ([`ONE`]: one),
 /// at most `max`.
@@ -297,6 +310,11 @@ pub struct Func {
     /// read as [`Func::short`] says (zeros: FANUC's library reads them from
     /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
     pub counted: Option<u8>,
+    /// `Some((s, e))`: the function asks for a range, number parameters
+    /// `s..=e`: the records written are at most `e - s + 1` (the caller's
+    /// array holds that many), and a write ([`SPAN`]) sends that many
+    /// (pmc_get_timer_type, pmc_set_timer_type).
+    pub span: Option<(u8, u8)>,
 }
 
 impl Func {
@@ -310,6 +328,7 @@ impl Func {
             Param::Short(n)
             | Param::Long(n)
             | Param::ULong(n)
+            | Param::UShort(n)
             | Param::ShortAs(n, _)
             | Param::Count(n) => Some(n),
             Param::Out(..) | Param::In(..) | Param::Text(..) => None,
@@ -363,6 +382,13 @@ impl Func {
                 .position(|(x, _)| x == m)
                 .map(|k| self.numbers().count() + k),
         }
+    }
+    /// The records a range asks for ([`Func::span`]), from the call's
+    /// arguments (0 for one asked backwards); None without a range.
+    pub fn span_len(&self, args: &[i32]) -> Option<usize> {
+        let (s, e) = self.span?;
+        let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
+        Some(usize::try_from(at(e) - at(s) + 1).unwrap_or(0))
     }
     /// The output parameters, in order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {

@@ -26,12 +26,10 @@ use fwlib32::proto::param::{
 use fwlib32::proto::alarm::{self as pa, AlmMsg, OpMsg};
 use fwlib32::proto::position::{AlarmBits, ProgNums, SeqNum};
 use fwlib32::proto::program::{
-    self as pp, ActPt, AuxCode, AuxModal, Clock, ExePrgName, ExecProg, GCode, GModal, NTool,
-    OpMode, PathName, Timer, ToolNum,
+    self as pp, ActPt, AuxCode, AuxModal, Clock, ExecProg, GCode, GModal, NTool, PathName, Timer,
+    ToolNum,
 };
-use fwlib32::proto::status::{
-    CncId, StatInfo, Status, Status2, SysInfo, Word, rdcncid, sysinfo_at_connect,
-};
+use fwlib32::proto::status::{StatInfo, Status, Status2, SysInfo, Word, sysinfo_at_connect};
 use fwlib32::proto::wire::{DecodeError, Wire, Writer};
 use fwlib32::proto::{OPTION_PARAM_15, OPTION_PARAM_16, cmd};
 // --- macros ---
@@ -299,7 +297,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&StatInfo::<Status>::new(), &cx, path)
                                 }
                                 "statinfo2" => stamped(&StatInfo::<Status2>::new(), &cx, path),
-                                "rdcncid" => stamped(&rdcncid(), &cx, path),
                                 // --- macros ---
                                 "rdmacro" => {
                                     let n = num(&args[0]) as i32;
@@ -353,8 +350,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&Raw(position_request(w, &args).unwrap()), &cx, path)
                                 }
                                 // --- program ---
-                                "exeprgname" => stamped(&pp::exeprgname(), &cx, path),
-                                "exeprgname2" => stamped(&pp::exeprgname2(), &cx, path),
                                 "rdexecprog" => {
                                     stamped(&pp::rdexecprog(num(&args[0]) as u16), &cx, path)
                                 }
@@ -689,9 +684,10 @@ fn payload_length_word_bounds_the_payload() {
     let subs = decode_response(&body).unwrap();
     assert_eq!(subs[0].payload, vec![0, 1, 2, 3]);
     assert!(!canonical_response(&body));
+    let f = described("rdcncid").unwrap();
     assert_eq!(
-        CncId::from_bytes(&subs[0].payload).unwrap(),
-        CncId(vec![0x00010203])
+        fwlib32::proto::described::decode(f, &[], &subs[0].payload).unwrap(),
+        vec![0x00010203]
     );
 }
 
@@ -903,7 +899,6 @@ proptest! {
         st in status(),
         st2 in status2(),
         w in any::<i16>(),
-        id in vec(any::<u32>(), 0..=4),
         p in param16(),
     ) {
         roundtrip(&s)?;
@@ -913,7 +908,6 @@ proptest! {
         roundtrip(&st2)?;
         prop_assert_eq!(st2.to_bytes().len(), 22);
         roundtrip(&Word { value: w })?;
-        roundtrip(&CncId(id))?;
         roundtrip(&p)?;
     }
 
@@ -928,7 +922,6 @@ proptest! {
         let _ = Status::from_bytes(&b);
         let _ = Status2::from_bytes(&b);
         let _ = Word::from_bytes(&b);
-        let _ = CncId::from_bytes(&b);
         let _ = Param16::from_bytes(&b);
         let _ = Vec::<u32>::from_bytes(&b);
     }
@@ -1481,6 +1474,42 @@ fn counted_records_follow_the_cncs_count() {
     assert_eq!(decode(f, &[1, 4], &answer(0, 2)).unwrap(), [0x1234, 0]);
 }
 
+/// A range's records (Func::span, pmc_get_timer_type): at most `e - s + 1`
+/// of those the answer holds, whole words only; a write (pmc_set_timer_type)
+/// sends that many.
+#[test]
+fn a_range_bounds_its_records() {
+    use fwlib32::proto::described::{decode, payload_records};
+    let f = described("pmc_get_timer_type").unwrap();
+    let answer = [0, 1, 0, 2, 0, 3, 0, 4, 9];
+    assert_eq!(decode(f, &[2, 3], &answer).unwrap(), [1, 2]);
+    assert_eq!(decode(f, &[1, 250], &answer).unwrap(), [1, 2, 3, 4]);
+    assert_eq!(decode(f, &[5, 5], &[]).unwrap(), Vec::<i64>::new());
+    let w = described("pmc_set_timer_type").unwrap();
+    assert_eq!(payload_records(w, &[3, 7]), 5);
+    assert_eq!(payload_records(w, &[1, 1]), 1);
+}
+
+/// A text member (`Int::Char`, cnc_exeprgname's name): the
+/// characters after its first NUL read as zeros; a short answer as zeros.
+#[test]
+fn a_c_string_ends_at_its_nul() {
+    use fwlib32::proto::described::decode;
+    let f = described("exeprgname").unwrap();
+    let mut p = vec![0, 0, 0x04, 0xd2];
+    p.extend(b"O1234\0XY");
+    p.resize(40, b'Z');
+    let mut want = vec![1234];
+    want.extend(b"O1234".iter().map(|c| i64::from(*c)));
+    want.resize(37, 0);
+    assert_eq!(decode(f, &[], &p).unwrap(), want);
+    assert_eq!(
+        decode(f, &[], &p[..6]).unwrap()[..3],
+        [1234, i64::from(b'O'), i64::from(b'1')]
+    );
+    assert_eq!(decode(f, &[], &p[..6]).unwrap()[3..], [0; 34]);
+}
+
 #[test]
 fn history_decoder_drops_a_ragged_tail() {
     use fwlib32::proto::alarm::AlmHistory;
@@ -1578,7 +1607,14 @@ proptest! {
                 }
                 at += x.n as usize;
             }
-            prop_assert_eq!(decode(f, &[], &bytes).expect("decode"), expect, "{}", f.name);
+            // A range (Func::span) asks for the n records: 1..=n.
+            let args: Vec<i32> = f.span.map_or(Vec::new(), |(s, e)| {
+                let mut a = vec![0; usize::from(s.max(e)) + 1];
+                a[usize::from(s)] = 1;
+                a[usize::from(e)] = n as i32;
+                a
+            });
+            prop_assert_eq!(decode(f, &args, &bytes).expect("decode"), expect, "{}", f.name);
         }
     }
 
@@ -1709,7 +1745,6 @@ proptest! {
     fn program_and_alarm_structs_roundtrip(
         w in any::<[i32; 4]>(),
         h in any::<[i16; 6]>(),
-        name in vec(any::<u8>(), 36),
         text in vec(any::<u8>(), 0..300),
         g in vec(any::<(u8, u8)>(), 1..40),
         aux in vec(aux_code(), 1..40),
@@ -1720,10 +1755,6 @@ proptest! {
         roundtrip(&ProgNums { data: w[0], mdata: w[1] })?;
         roundtrip(&SeqNum { data: w[2] })?;
         roundtrip(&ActPt { prog_no: w[0], blk_no: w[1] })?;
-        let mut n = [0u8; 36];
-        n.copy_from_slice(&name);
-        roundtrip(&ExePrgName { o_num: w[3], name: n })?;
-        prop_assert_eq!(ExePrgName { o_num: w[3], name: n }.to_bytes().len(), 40);
         roundtrip(&PathName(text.clone()))?;
         roundtrip(&ExecProg { blknum: Some(w[0]), text: text.clone() })?;
         roundtrip(&ExecProg::default())?;
@@ -1734,7 +1765,6 @@ proptest! {
         prop_assert_eq!(c.to_bytes().len(), 12);
         roundtrip(&ToolNum { datano: w[0], kind: w[1], data: w[2] })?;
         roundtrip(&NTool { datano: w[0], data: w[1] })?;
-        roundtrip(&OpMode { mode: h[0] })?;
         roundtrip(&GModal(g.iter().map(|(code, flag)| GCode { code: *code, flag: *flag }).collect()))?;
         roundtrip(&AuxModal(aux.clone()))?;
         prop_assert_eq!(AuxModal(aux.clone()).to_bytes().len(), 8 * aux.len());
@@ -1753,7 +1783,6 @@ proptest! {
         let _ = Vec::<AlmMsg<32>>::from_bytes(&b);
         let _ = Vec::<AlmMsg<64>>::from_bytes(&b);
         let _ = OpMsg::from_bytes(&b);
-        let _ = ExePrgName::from_bytes(&b);
         let _ = Clock::from_bytes(&b);
         // Short payloads are errors, never garbage.
         if b.len() < 12 {

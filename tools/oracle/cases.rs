@@ -93,7 +93,6 @@ const WORDS: &[Word] = &[
     w("sysinfo_ex", &[]),
     w("statinfo", &[]),
     w("statinfo2", &[]),
-    w("rdcncid", &[]),
     w("getpath", &[]),
     Word {
         after: &["getpath", "statinfo", "sysinfo"],
@@ -189,8 +188,6 @@ const WORDS: &[Word] = &[
     wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     w("getfigure", &["0|1|-1|2|3"]),
     // Program.
-    w("exeprgname", &[]),
-    w("exeprgname2", &[]),
     w("rdexecprog", &["256|0|1|10|100|1024|4096|65535"]),
     w(
         "modal",
@@ -215,7 +212,6 @@ const WORDS: &[Word] = &[
             ],
         )
     },
-    w("rdopmode", &[]),
     w(
         "rdprogdir",
         &[
@@ -583,7 +579,6 @@ const WORDS: &[Word] = &[
         after: &["pmc_get_current_pmc_unit", "pmc_rdpmcrng 9 0 0 3 12"],
         ..w("pmc_select_pmc_unit", &["2|1|0|3|-1|9"])
     },
-    w("pmc_get_current_pmc_unit", &[]),
     w("pmc_get_pmc_unit_types", &["4|1|2|0|-1|8"]),
     // Offsets and tools.
     w(
@@ -689,7 +684,6 @@ const WORDS: &[Word] = &[
     w("rdtool", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("rdtooldata", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("rdtoolinfo", &[]),
-    w("pmc_rdpmctitle", &[]),
     // PMC alarm messages (A bits of the profile's messages) and timer
     // types, on unit 1, then with many alarms (A0-A1 written: 14, more
     // than one answer holds) and on unit 2.

@@ -358,7 +358,6 @@ static short w_callx(void) {
     WORD(sysinfo_ex, return F(cnc_sysinfo_ex)(H, B0))                                             \
     WORD(statinfo, return F(cnc_statinfo)(H, B0))                                                 \
     WORD(statinfo2, return F(cnc_statinfo2)(H, B0))                                               \
-    WORD(rdcncid, return F(cnc_rdcncid)(H, B0))                                                   \
     /* position */                                                                                \
     WORD(rddynamic2, return F(cnc_rddynamic2)(H, N(1), N(2), B0))                                 \
     WORD(rddynamic, return F(cnc_rddynamic)(H, N(1), N(2), B0))                                   \
@@ -384,8 +383,6 @@ static short w_callx(void) {
                       short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);                            \
                       field("valid_fig", v); return r; })                                         \
     /* program */                                                                                 \
-    WORD(exeprgname, return F(cnc_exeprgname)(H, B0))                                             \
-    WORD(exeprgname2, return F(cnc_exeprgname2)(H, B0))                                          \
     WORD(rdexecprog, { static unsigned short l; static short blk; l = (unsigned short)N(1);       \
                        blk = (short)0xCCCC; io_note("length", &l, 2); io_note("blknum", &blk, 1); \
                        short r = F(cnc_rdexecprog)(H, &l, &blk, B0);                              \
@@ -395,7 +392,6 @@ static short w_callx(void) {
     WORD(settimer, { for (int k = 0; k < 4; k++) { short v = (short)N(1 + k);                     \
                          memcpy(b0 + (k ? 2 + 2 * k : 0), &v, 2); }                               \
                      return F(cnc_settimer)(H, B0); })                                            \
-    WORD(rdopmode, return F(cnc_rdopmode)(H, B0))                                                 \
     WORD(rdprogdir, return F(cnc_rdprogdir)(H, N(1), N(2), N(3), N(4), B0))                       \
     WORD(rdprogdiro8, return F(cnc_rdprogdiro8)(H, N(1), N(2), N(3), N(4), B0))                   \
     WORD(rdprogdir3, { int32_t top[2] = {(int32_t)N(2), (int32_t)0xCCCCCCCC}; short n = N(3);     \
@@ -467,7 +463,6 @@ static short w_callx(void) {
     WORD(pmc_getdtailerr, return F(pmc_getdtailerr)(H, B0))                                       \
     WORD(pmc_rdpmcinfo, return F(pmc_rdpmcinfo)(H, N(1), B0))                                     \
     WORD(pmc_select_pmc_unit, return F(pmc_select_pmc_unit)(H, N(1)))                             \
-    WORD(pmc_get_current_pmc_unit, return F(pmc_get_current_pmc_unit)(H, B0))                    \
     WORD(pmc_get_pmc_unit_types, LONG_IO(count, 1, F(pmc_get_pmc_unit_types)(H, B0, (long *)count))) \
     /* offsets, tools */                                                                          \
     WORD(rdtofs, return F(cnc_rdtofs)(H, N(1), N(2), N(3), B0))                                   \
@@ -486,10 +481,7 @@ static short w_callx(void) {
     WORD(rdtooldata, SHORT_IO(num, 2, F(cnc_rdtooldata)(H, N(1), &num, B0)))                      \
     WORD(rdtoolinfo, return F(cnc_rdtoolinfo)(H, B0))                                             \
     WORD(instlifedt, { fill_hex(b0, 1); return F(cnc_instlifedt)(H, B0); })                       \
-    WORD(pmc_rdpmctitle, return F(pmc_rdpmctitle)(H, B0))                                         \
     WORD(pmc_rdalmmsg, SHORT_IO(num, 2, F(pmc_rdalmmsg)(H, N(1), &num, (short *)B1, B0))) \
-    WORD(pmc_get_timer_type, return F(pmc_get_timer_type)(H, N(1), N(2), B0))                     \
-    WORD(pmc_set_timer_type, { fill_hex(b0, 3); return F(pmc_set_timer_type)(H, N(1), N(2), B0); }) \
     /* upload */                                                                                  \
     WORD(upstart, return F(cnc_upstart)(H, N(1)))                                                 \
     WORD(upstart3, return F(cnc_upstart3)(H, N(1), N(2), N(3)))                                   \

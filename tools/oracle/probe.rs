@@ -94,7 +94,11 @@ pub fn generated_words() -> String {
             .params
             .iter()
             .map(|p| match p {
-                Param::Short(_) | Param::Long(_) | Param::ULong(_) | Param::ShortAs(..) => {
+                Param::Short(_)
+                | Param::Long(_)
+                | Param::ULong(_)
+                | Param::UShort(_)
+                | Param::ShortAs(..) => {
                     n += 1;
                     format!("N({n})")
                 }

@@ -10,7 +10,7 @@ use super::value::{BASE_2, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
 use crate::spec::{
-    Columns, Field, Func, Int, LAST, NUMBERS, ONE, Overflow, Short, TEXT, Word, ZERO,
+    Columns, Field, Func, Int, LAST, NUMBERS, ONE, Overflow, SPAN, Short, TEXT, Word, ZERO,
 };
 
 mod encode;
@@ -265,7 +265,8 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             // As many as the answer holds: the caller's side refuses more
             // than it asked for.
             Overflow::Refuse => usize::MAX,
-        };
+        }
+        .min(f.span_len(args).unwrap_or(usize::MAX));
         let rest;
         let (n, mut r) = match f.counted {
             None => ((r.remaining() / size).min(most), r),
@@ -405,6 +406,9 @@ pub fn payload_records(f: &Func, args: &[i32]) -> usize {
     f.payload.map_or(0, |p| {
         let n = match p.count {
             ONE | NUMBERS | TEXT => 1,
+            SPAN => f
+                .span_len(args)
+                .map_or(0, |n| i32::try_from(n).unwrap_or(i32::MAX)),
             c => args.get(usize::from(c)).copied().unwrap_or(0),
         };
         usize::try_from(n).unwrap_or(0).min(usize::from(p.max))

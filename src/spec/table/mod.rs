@@ -26,6 +26,7 @@ pub mod program;
 mod sampling;
 pub mod servo;
 mod setting;
+pub mod status;
 pub mod tool_life;
 
 /// The areas' entries, in this order.
@@ -47,6 +48,7 @@ const AREAS: &[&[Func]] = &[
     names::FUNCS,
     setting::FUNCS,
     sampling::FUNCS,
+    status::FUNCS,
 ];
 
 const LEN: usize = {

@@ -7,6 +7,22 @@ use super::base::COMMAND;
 
 pub const FUNCS: &[Func] = &[
     Func {
+        name: "cnc_exeprgname",
+        doc: "Reads the name and O number of the running program. The name as a C string: the characters up to its NUL, zeros after (FANUC's library copies it so, whatever follows in the answer).",
+        params: &[Param::Out("exeprg", "ODBEXEPRG")],
+        forms: &[every_class(cmd::EXEPRGNAME, &[])],
+        reply: &[to(I32, "o_num", I32), text(36, "name")],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_exeprgname2",
+        doc: "Reads the full path name of the running program (\"//CNC_MEM/USER/PATH1/O1234\"): 256 bytes, NUL-terminated and zero-filled (the name's characters up to its NUL, at most 255).",
+        params: &[Param::Out("path_name", "text[256]")],
+        forms: &[every_class(cmd::EXEPRGNAME2, &[])],
+        reply: &[text(255, ""), zero("[255]", I8)],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdprgnum",
         doc: "Reads the running and main program numbers (the low 16 bits of each, as FANUC's library stores them in the default ODBPRO's shorts).",
         params: &[Param::Out("prgnum", "ODBPRO")],
@@ -102,6 +118,23 @@ pub const FUNCS: &[Func] = &[
         }),
         overflow: Overflow::Refuse,
         dims: &["-1|0|5|6|12|18|19|25|26|-2", "0|1|2|-1", "8|1|0|-1|26|27"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdopmode",
+        doc: "Reads the operation mode word (of the spindle: 0 others, 1 normal, 2 orientation, 3 synchronous, 4 rigid tap, 5 Cs contour, 6 positioning, by FANUC's Windows header). An answer without a whole word writes nothing (EW_OK), as FANUC's library; further words are not written (FANUC's library writes them all, past the short).",
+        params: &[Param::Out("mode", "short")],
+        forms: &[every_class(cmd::RDOPMODE, &[])],
+        // One whole word, if the answer holds one.
+        records: Some(Records {
+            fields: &[to(I16, "", I16)],
+            out: 0,
+            to: "",
+            elem: "short",
+            max: 1,
+            count: None,
+            room: None,
+        }),
         ..COMMAND
     },
 ];
