@@ -501,6 +501,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     words.join(", ")
                 )
             }
+            // A typed parameter block (types::Block): the one struct.
+            (None, Some((n, t))) if f.block.is_some() => format!(
+                "PayloadAt {{ input: {}.cast_const().cast(), stride: size_of::<{}>(), offsets: &[], words: &[] }}",
+                ident(n),
+                rust_type(t)
+            ),
             // No payload, or one of the numbers (types::NUMBERS).
             (None, None)
             | (
@@ -563,6 +569,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 .collect(),
             };
         let mut safety = safety;
+        if let (None, Some((n, t))) = (&f.payload, f.input()) {
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to a readable {}.",
+                doc_type(t)
+            ));
+        }
         if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
             match f.numbers().nth(usize::from(p.count)) {
                 // types::TEXT: read up to its NUL, at most the field's bytes.

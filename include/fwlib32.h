@@ -4149,6 +4149,20 @@ short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 short cnc_rdservoid(unsigned short FlibHndl, short axis, short slct, struct ODBCSVID *servoid);
 
 /*
+ Reads one setting data item into IODBPSD, as cnc_rdparam reads a
+ parameter: `length` must hold 4 + the values answered (one, or one per
+ axis for an answer with a negative axis word).
+
+ # Safety
+ `param` must be NULL or point to a writable IODBPSD.
+ */
+short cnc_rdset(unsigned short FlibHndl,
+                short number,
+                short axis,
+                short length,
+                struct IODBPSD *param);
+
+/*
  Reads the smallest and largest setting data numbers and how many setting
  data there are.
 
@@ -4988,6 +5002,16 @@ short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num,
  outside -128..127 EW_DATA, before any traffic.
  */
 short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec_val);
+
+/*
+ Writes one setting data item from IODBPSD, as cnc_wrparam writes a
+ parameter: its attributes read first, `length` must be 4 + the size of
+ its values.
+
+ # Safety
+ `param` must be NULL or point to a readable IODBPSD.
+ */
+short cnc_wrset(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

@@ -6,11 +6,13 @@
 use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_DATA, EW_FUNC};
+use crate::ew::{EW_DATA, EW_FUNC, EW_LENGTH};
+use crate::proto::described::block::{fits, write_values};
 use crate::proto::described::{Described, form, payload_numbers, payload_records, payload_values};
 use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
-use crate::spec::{Field, Func, Int, Learnt, Overflow};
+use crate::proto::param::{Elem, ParamInfo};
+use crate::spec::{Block, Field, Func, Int, Learnt, Overflow};
 #[allow(unused_imports)]
 use crate::types::*;
 #[allow(unused_imports)]
@@ -147,6 +149,10 @@ pub(crate) unsafe fn exec(
         unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
         return Ok(());
     };
+    if let Some(b) = f.block {
+        // SAFETY: the caller's contract (output 0 an IODBPSD; the input one).
+        return unsafe { block(f, b, &h, args, outs, pay.input) };
+    }
     // A C string input: up to its NUL, at most the field's bytes.
     let text = match f.payload {
         Some(p) if p.count == crate::spec::TEXT && !pay.input.is_null() => {
@@ -260,6 +266,92 @@ pub(crate) unsafe fn exec(
         }
     }
     Ok(())
+}
+
+/// A typed parameter block ([`Block`]): a read into output 0, or a write
+/// of the input's block (its attributes read first where the block says).
+///
+/// # Safety
+/// A read's output 0 points to a writable IODBPSD; a write's `input` to a
+/// readable one.
+unsafe fn block(
+    f: &'static Func,
+    b: Block,
+    h: &handles::Handle,
+    args: &[i32],
+    outs: &[*mut u8],
+    input: *const u8,
+) -> Result<()> {
+    let length = args.get(usize::from(b.length)).copied().unwrap_or(0) as i16;
+    let Some(attributes) = b.attributes else {
+        let values = h.call(&Described::new(f, args))?;
+        // Below the 4-byte header nothing is written; else the header is,
+        // before `length` is checked against the values (FANUC's library).
+        if length < 4 {
+            return Err(Error::local(EW_LENGTH, "length is below the 4-byte header"));
+        }
+        let out = outs[0];
+        let head = |k: usize| values.get(k).copied().unwrap_or(0) as i16;
+        // SAFETY: output 0 is an IODBPSD (the caller's contract).
+        unsafe {
+            put(out.cast::<i16>(), head(0));
+            put(out.add(2).cast::<i16>(), head(1));
+        }
+        if !fits(&b, args, &values) {
+            return Err(Error::local(
+                EW_LENGTH,
+                "length below 4 + the size of the values answered",
+            ));
+        }
+        let data: Vec<u8> = values.iter().skip(2).map(|v| *v as u8).collect();
+        // SAFETY: at most max-axes values of at most 8 bytes: IODBPSD's union.
+        unsafe { std::ptr::copy_nonoverlapping(data.as_ptr(), out.add(4), data.len()) };
+        return Ok(());
+    };
+    let input = nonnull(input.cast_mut())?;
+    // SAFETY: the caller's IODBPSD, read unaligned.
+    let raw: [u8; 260] = unsafe { input.cast::<[u8; 260]>().read_unaligned() };
+    let number = i32::from(i16::from_le_bytes([raw[0], raw[1]]));
+    let axis = i16::from_le_bytes([raw[2], raw[3]]);
+    let cx = h.ctx();
+    let class = (
+        cx.class.is_16i(),
+        matches!(cx.class, CncClass::Series16 { kind: 2 }),
+    );
+    // The type and its kind: from the attributes the CNC answers, or (a
+    // Series 15) from the `type` member, `(type << 8) | (axis & 0xff)`.
+    let (ptype, elem, axis) = if attributes.matches(class.0, class.1) {
+        let info = h.call(&ParamInfo { number })?;
+        (info.ptype, info.elem, axis)
+    } else {
+        let ptype = (axis as u16) >> 8;
+        let elem = Elem::of_param(ptype).filter(|_| ptype <= 4);
+        (ptype, elem, i16::from(axis as i8))
+    };
+    // A type FANUC's library does not know (not 0..4): no length
+    // check, every value sent as zero, the CNC decides.
+    let values = match elem {
+        Some(elem) => {
+            let count = if axis < 0 { cx.axes() } else { 1 };
+            let size = elem.size();
+            if i32::from(length) != (4 + size * count) as i32 {
+                return Err(Error::local(
+                    EW_LENGTH,
+                    "length is not 4 + the size of the values",
+                ));
+            }
+            (0..count).map(|i| elem.get(&raw[4 + i * size..])).collect()
+        }
+        None => Vec::new(),
+    };
+    let payload = write_values(number, axis, ptype, &values);
+    h.call(&Described {
+        f,
+        args,
+        payload: &payload,
+        late: None,
+    })
+    .map(|_| ())
 }
 
 /// Writes `fields`' integers, field k's elements from byte `at(k)` of its

@@ -41,6 +41,7 @@ pub mod run;
 pub mod server;
 pub mod service;
 pub mod session;
+pub mod setting;
 pub mod shared;
 pub mod status;
 pub mod store;

@@ -77,6 +77,8 @@ pub enum Classes {
     S15,
     /// The 16i class without Series 15.
     S16Not15,
+    /// Every class but Series 15.
+    Not15,
 }
 
 /// One word of a request's argument block.
@@ -110,6 +112,7 @@ impl Classes {
             Classes::S16 => s16,
             Classes::S15 => s15,
             Classes::S16Not15 => s16 && !s15,
+            Classes::Not15 => !s15,
         }
     }
 }
@@ -221,6 +224,35 @@ pub struct Payload {
     pub max: u16,
 }
 
+/// A typed parameter block instead of reply fields or a payload
+/// ([`Func::block`]): IODBPSD's layout, `short datano`, `short type`, then
+/// one value or one per axis, each of the size the parameter's type decides
+/// (bit and byte 1, word 2, 2-word 4, real 8: value and decimals). On the
+/// wire it is the parameter answer or write block (`i32` number, `i16`
+/// axis, `u16` type, then 8-byte value records on the 30i class, `i32`
+/// words on the 16i class and Series 15), as cnc_rdparam reads and
+/// cnc_wrparam writes it (src/proto/param, whose codec it uses).
+///
+/// A read (`attributes` None): the answer's axis word decides how many
+/// values (negative: max axes, else one); `length` below 4 writes nothing,
+/// else `datano` and `type` (the answer's axis word; from a Series 15,
+/// `(type << 8) | (axis & 0xff)`) are written, then `length` below 4 + the
+/// values' size is EW_LENGTH, else the values are written.
+///
+/// A write (`attributes` Some): the block is read from the [`Param::In`]
+/// struct; on the classes `attributes` names, the parameter's attributes
+/// are read first (cnc_wrparam's exchange) and decide the values' type and
+/// size, `length` having to be 4 + their size (`type` -1: per axis) else
+/// EW_LENGTH and no write; the write is the form's command with the block
+/// as its payload.
+#[derive(Debug, Clone, Copy)]
+pub struct Block {
+    /// Number parameter: the caller's `length`.
+    pub length: u8,
+    /// A write: the classes whose CNC is asked for the attributes first.
+    pub attributes: Option<Classes>,
+}
+
 /// One FOCAS function.
 #[derive(Debug, Clone, Copy)]
 pub struct Func {
@@ -286,6 +318,9 @@ pub struct Func {
     /// read as [`Func::short`] says (zeros: FANUC's library reads them from
     /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
     pub counted: Option<u8>,
+    /// The reply (a read) or the payload (a write) is a typed parameter
+    /// block ([`Block`]), not `reply`'s fields.
+    pub block: Option<Block>,
 }
 
 impl Func {

@@ -907,6 +907,49 @@ const WORDS: &[Word] = &[
             ],
         )
     },
+    // Setting data: the byte setting 20 and the bit setting 0 written,
+    // read back as settings and as the parameter.
+    Word {
+        after: &["rdset 20 0 8", "rdset 0 0 8", "rdparam 20 0 8"],
+        writes: true,
+        ..wc(
+            "wrset",
+            &[],
+            &[
+                "5 hex:1400000007",
+                "5 hex:0000000003",
+                "5 hex:14000000ff",
+                "4 hex:1400000007",
+                "6 hex:140000000700",
+                "8 hex:1400000007000000",
+                "0 hex:1400000007",
+                "-1 hex:1400000007",
+                "5 hex:1400ffff07",
+                "5 hex:1400010007",
+                "5 hex:6400000007",
+                "5 hex:e903000001",
+                "5 hex:ffff000007",
+                "5 hex:cccccccccc",
+                "36 hex:1400ffff07",
+                // Series 15 reads the type and axis from `type`:
+                // `(type << 8) | (axis & 0xff)`.
+                "5 hex:1400000107",
+                "6 hex:140000020700",
+                "8 hex:1400000307000000",
+                "12 hex:140000040700000001000000",
+                "5 hex:1400000507",
+                "5 hex:1400ff0007",
+                "36 hex:1400ff000707070707070707070707070707070707070707070707070707070707070707",
+                "36 hex:1400ff01070707",
+                "6 hex:1400010207",
+                // Other negative axes: every axis, as -1?
+                "5 hex:1400feff07",
+                "36 hex:1400feff07",
+                "5 hex:1400fe0007",
+                "36 hex:1400fe0007",
+            ],
+        )
+    },
     Word {
         after: &[
             "rdparam 6711 0 8",

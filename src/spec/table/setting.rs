@@ -6,20 +6,86 @@ use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
-pub const FUNCS: &[Func] = &[Func {
-    name: "cnc_rdsetnum",
-    learnt: Some(&[]),
-    doc: "Reads the smallest and largest setting data numbers and how many setting data there are.",
-    params: &[Param::Out("setnum", "ODBSETNUM")],
-    forms: &[every_class(cmd::RDSETNUM, &[])],
-    // Three 32-bit words; their low halves are the numbers.
-    reply: &[
-        skip(I16),
-        to(U16, "set_min", U16),
-        skip(I16),
-        to(U16, "set_max", U16),
-        skip(I16),
-        to(U16, "total_no", U16),
-    ],
-    ..COMMAND
-}];
+/// The setting data read's and write's forms on each class.
+const fn set_form(classes: Classes, cmd: u16, words: &'static [Word]) -> Form {
+    Form {
+        classes,
+        class: cmd::CLASS_CNC,
+        cmd,
+        words,
+    }
+}
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_rdsetnum",
+        learnt: Some(&[]),
+        doc: "Reads the smallest and largest setting data numbers and how many setting data there are.",
+        params: &[Param::Out("setnum", "ODBSETNUM")],
+        forms: &[every_class(cmd::RDSETNUM, &[])],
+        // Three 32-bit words; their low halves are the numbers.
+        reply: &[
+            skip(I16),
+            to(U16, "set_min", U16),
+            skip(I16),
+            to(U16, "set_max", U16),
+            skip(I16),
+            to(U16, "total_no", U16),
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdset",
+        learnt: Some(&[]),
+        doc: "Reads one setting data item into IODBPSD, as cnc_rdparam reads a parameter: `length` must hold 4 + the values answered (one, or one per axis for an answer with a negative axis word).",
+        params: &[
+            Param::Short("number"),
+            Param::Short("axis"),
+            Param::Short("length"),
+            Param::Out("param", "IODBPSD"),
+        ],
+        forms: &[
+            set_form(
+                Classes::S30,
+                cmd::RDSET,
+                &[Word::Arg(0), Word::Arg(0), Word::Arg(1)],
+            ),
+            set_form(
+                Classes::S15,
+                cmd::RDSET,
+                &[Word::Arg(0), Word::Arg(0), Word::Arg(1)],
+            ),
+            set_form(
+                Classes::S16Not15,
+                cmd::RDSET16,
+                &[Word::Arg(0), Word::Arg(0), Word::Arg(1)],
+            ),
+        ],
+        block: Some(Block {
+            length: 2,
+            attributes: None,
+        }),
+        dims: &[
+            "0|1|2|3|6|20|99|100|-1|9999",
+            "0|1|-1|2|33|-2",
+            "8|4|5|6|0|-1|12|132|260",
+        ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrset",
+        learnt: Some(&[]),
+        doc: "Writes one setting data item from IODBPSD, as cnc_wrparam writes a parameter: its attributes read first, `length` must be 4 + the size of its values.",
+        params: &[Param::Short("length"), Param::In("param", "IODBPSD")],
+        forms: &[
+            set_form(Classes::S30, cmd::WRSET, &[]),
+            set_form(Classes::S15, cmd::WRSET, &[]),
+            set_form(Classes::S16Not15, cmd::WRSET16, &[]),
+        ],
+        block: Some(Block {
+            length: 0,
+            attributes: Some(Classes::Not15),
+        }),
+        ..COMMAND
+    },
+];
