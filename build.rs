@@ -385,6 +385,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
             Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
+            Param::Io(n) => format!("{}: *mut c_short", ident(n)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
         let count = f.params.iter().find_map(|p| match *p {
@@ -401,6 +402,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 });
                 match (&count, cut) {
                     (Some(c), _) if *c == ident(n) => "0".to_string(),
+                    // Read by exec through its pointer (`io`).
+                    _ if f.params.contains(&Param::Io(n)) => "0".to_string(),
                     // As FANUC's library converts it before anything else.
                     (_, Some(t)) => format!("{} as {t} as i32", ident(n)),
                     _ => format!("{} as i32", ident(n)),
@@ -446,10 +449,21 @@ fn described_exports(funcs: &[types::Func]) -> String {
             }
             offsets.push(off);
         }
+        let ios: Vec<String> = f
+            .params
+            .iter()
+            .filter_map(|p| match *p {
+                Param::Io(n) => Some(ident(n)),
+                _ => None,
+            })
+            .collect();
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
-            None => "RecordsAt { base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut() }".to_string(),
+            None => format!(
+                "RecordsAt {{ base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut(), io: &[{}] }}",
+                ios.join(", ")
+            ),
             Some(r) => {
                 let (_, ty) = outs[r.out as usize];
                 let base = if r.to.is_empty() {
@@ -472,8 +486,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 };
                 let asked = count.as_deref().unwrap_or("std::ptr::null_mut()");
                 format!(
-                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {member}, asked: {asked} }}",
-                    offs.join(", ")
+                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {member}, asked: {asked}, io: &[{}] }}",
+                    offs.join(", "),
+                    ios.join(", ")
                 )
             }
         };
@@ -569,6 +584,21 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 .collect(),
             };
         let mut safety = safety;
+        for n in &ios {
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to a readable and writable short."
+            ));
+        }
+        if let Some(r) = f.block.and_then(|b| b.range.map(|_| b)) {
+            // The packed records go to the caller's `*length` bytes.
+            let len = f.numbers().nth(usize::from(r.length)).unwrap_or("?");
+            for (n, _) in &outs {
+                let line = format!("/// `{n}` must be NULL or point to");
+                if let Some(l) = safety.iter_mut().find(|l| l.starts_with(&line)) {
+                    *l = format!("{line} `*{len}` writable bytes.");
+                }
+            }
+        }
         if let (None, Some((n, t))) = (&f.payload, f.input()) {
             safety.push(format!(
                 "/// `{n}` must be NULL or point to a readable {}.",
@@ -634,8 +664,9 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
                 String::new()
             },
             unsafe_ = if pointers { "unsafe " } else { "" },
-            // A read may join a batch (fwlib_batch_begin); a command not.
-            boundary = if outs.is_empty() {
+            // A read may join a batch (fwlib_batch_begin); a command not,
+            // nor a range read (its next request needs the answer).
+            boundary = if outs.is_empty() || f.block.is_some_and(|b| b.range.is_some()) {
                 "ffi_boundary"
             } else {
                 "ffi_read"
@@ -721,6 +752,7 @@ fn rust_type(c: &str) -> String {
         "short" => "c_short".into(),
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
+        "void" => "c_void".into(),
         t => match char_array(t) {
             Some(n) => format!("[c_char; {n}]"),
             None => t.into(),

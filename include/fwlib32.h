@@ -4172,6 +4172,27 @@ short cnc_rdset(unsigned short FlibHndl,
 short cnc_rdsetnum(unsigned short FlibHndl, struct ODBSETNUM *setnum);
 
 /*
+ Reads the setting data `*s_number..=*e_number` into `param` as packed
+ records, as cnc_rdparar reads parameters: i16 number, i16 `(type << 8) |
+ (axis & 0xff)`, the values, each record padded to a multiple of 4; asks
+ again from the last number + 1 until `*e_number`. Then `*s_number` is
+ the first number read, `*e_number` the last, `*length` (in: the buffer's
+ size) the bytes used.
+
+ # Safety
+ `param` must be NULL or point to `*length` writable bytes.
+ `s_number` must be NULL or point to a readable and writable short.
+ `e_number` must be NULL or point to a readable and writable short.
+ `length` must be NULL or point to a readable and writable short.
+ */
+short cnc_rdsetr(unsigned short FlibHndl,
+                 short *s_number,
+                 short axis,
+                 short *e_number,
+                 short *length,
+                 void *param);
+
+/*
  Reads the commanded spindle speed, constant surface speed and maximum
  spindle speed.
 

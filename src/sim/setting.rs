@@ -1,4 +1,4 @@
-//! The setting data (cnc_rdset, cnc_wrset): the profile's parameters
+//! The setting data (cnc_rdset, cnc_rdsetr, cnc_wrset): the profile's parameters
 //! numbered up to `[param] setting_max` (cnc_rdsetnum counts them), read
 //! and written with the setting commands in the parameter block form of
 //! src/sim/param.rs. A number above `setting_max` (or none) is EW_NUMBER;
@@ -42,17 +42,34 @@ impl Machine {
     }
 }
 
-/// cnc_rdset: [n, n, axis]: the setting's parameter block, as cnc_rdparam's
-/// answer (30i: value records; 16i class and Series 15: words).
+/// cnc_rdset [n, n, axis]: the setting's parameter block, as cnc_rdparam's
+/// answer (30i: value records; 16i class and Series 15: words);
+/// cnc_rdsetr [s, e, axis], s < e: the blocks of the settings from s on,
+/// as cnc_rdparar's (the range ends at `setting_max`).
 fn read(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
-    let (number, axis) = (q.arg(0), q.arg(1) as i16);
-    m.setting(number)?;
+    let [s, e, axis, ..] = q.words;
+    let axis = axis as i16;
     let class = m.set_class();
-    let bytes = match class {
-        CncClass::Series30 => m.table_read30(q.path, Table::Param, number, number, axis)?,
-        CncClass::Series16 { .. } => m
-            .table_read16(q.path, Table::Param, number, axis)?
-            .to_bytes(),
+    let bytes = if s == e {
+        m.setting(s)?;
+        match class {
+            CncClass::Series30 => m.table_read30(q.path, Table::Param, s, s, axis)?,
+            CncClass::Series16 { .. } => m.table_read16(q.path, Table::Param, s, axis)?.to_bytes(),
+        }
+    } else {
+        let max = m.profile.param.setting_max;
+        if s > max {
+            return Err(CncError::NUMBER);
+        }
+        let e = e.min(max).max(s);
+        // A Series 15's range in the 30i form, as FANUC's cnc_rdparar
+        // reads a range from it.
+        match class {
+            CncClass::Series30 | CncClass::Series16 { kind: 2 } => {
+                m.table_read30(q.path, Table::Param, s, e, axis)?
+            }
+            CncClass::Series16 { .. } => m.table_read16_range(q.path, Table::Param, s, e, axis)?,
+        }
     };
     block::wire_values(class, false, &bytes).map_err(|_| CncError::FUNC)
 }

@@ -38,6 +38,11 @@ pub enum Param {
     /// `TYPE *NAME`: the records a write sends, read from the caller's
     /// array ([`Func::payload`]). TYPE as for [`Param::Out`].
     In(&'static str, &'static str),
+    /// `short *NAME`: a number the caller passes by pointer (read once the
+    /// pointers are checked, as [`Param::Count`]'s)
+    /// and the reply writes back ([`Range`]: the numbers read and the
+    /// bytes used).
+    Io(&'static str),
 }
 
 impl Param {
@@ -46,7 +51,7 @@ impl Param {
     /// conversion); None for a pointer.
     pub const fn conv(&self, v: i64) -> Option<i32> {
         match *self {
-            Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
+            Param::Short(_) | Param::Count(_) | Param::Io(_) => Some(v as i16 as i32),
             Param::Long(_) => Some(v as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
             Param::Out(..) | Param::In(..) => None,
@@ -59,6 +64,7 @@ impl Param {
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
+            | Param::Io(n)
             | Param::In(n, _) => n,
         }
     }
@@ -251,6 +257,27 @@ pub struct Block {
     pub length: u8,
     /// A write: the classes whose CNC is asked for the attributes first.
     pub attributes: Option<Classes>,
+    /// A range read instead of one item ([`Range`]).
+    pub range: Option<Range>,
+}
+
+/// A range read of typed parameter blocks ([`Block::range`]), as
+/// cnc_rdparar reads parameters: number parameters `s` and `e` (the start
+/// and end numbers) and the block's `length` (the output's room in bytes)
+/// are [`Param::Io`]. The request's words carry the start, the end and the
+/// axis; each answer block becomes a packed record in the output (i16
+/// number, i16 `(type << 8) | (axis & 0xff)`, the values, padded to a
+/// multiple of 4; src/proto/param/packed.rs), and the CNC is asked again
+/// from the last number answered + 1 until the end is reached (an
+/// EW_NUMBER answer after some records ends the read). Then `s` is the
+/// first number read, `e` the last and `length` the bytes used. A start
+/// above the end is EW_NUMBER before any traffic; a record that does not
+/// fit is EW_LENGTH (the records before it written, its 4-byte header too
+/// if that fits; the pointers keep their values).
+#[derive(Debug, Clone, Copy)]
+pub struct Range {
+    pub s: u8,
+    pub e: u8,
 }
 
 /// One FOCAS function.
@@ -331,7 +358,11 @@ impl Func {
     /// The number parameters, in order (the values a caller passes).
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Short(n) | Param::Long(n) | Param::ShortAs(n, _) | Param::Count(n) => Some(n),
+            Param::Short(n)
+            | Param::Long(n)
+            | Param::ShortAs(n, _)
+            | Param::Count(n)
+            | Param::Io(n) => Some(n),
             Param::Out(..) | Param::In(..) => None,
         })
     }

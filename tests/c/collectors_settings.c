@@ -1,5 +1,5 @@
 /* The settings-family functions added from FANUC's library (cnc_rdmacronum,
- * cnc_rdset, cnc_wrset),
+ * cnc_rdset, cnc_wrset, cnc_rdsetr),
  * called through the .so against focas-sim; prints key=value lines that
  * tests/artifacts compares with the simulator's machine state.
  * Usage: collectors_settings HOST PORT */
@@ -36,6 +36,24 @@ static void write_setting(unsigned short h, const char *key, short number, short
     p.type = 0;
     p.u.cdata = v;
     printf("%s=%d\n", key, cnc_wrset(h, length, &p));
+}
+
+/* cnc_rdsetr of s..e without axis into `room` bytes: the code, the three
+ * shorts after, then each packed record's number, type word and first
+ * value byte (records of one byte value: 5 bytes, padded to 8). */
+static void settings_in(unsigned short h, const char *key, short s, short e, short room) {
+    unsigned char buf[256];
+    short length = room, rc, at;
+    memset(buf, 0xcc, sizeof buf);
+    rc = cnc_rdsetr(h, &s, 0, &e, &length, buf);
+    printf("%s=%d,%d,%d,%d", key, rc, s, e, length);
+    for (at = 0; rc == EW_OK && at + 5 <= length; at += 8) {
+        short number, type;
+        memcpy(&number, buf + at, 2);
+        memcpy(&type, buf + at + 2, 2);
+        printf(",%d:%d:%d", number, type, (signed char)buf[at + 4]);
+    }
+    printf("\n");
 }
 
 int main(int argc, char **argv) {
@@ -86,6 +104,11 @@ int main(int argc, char **argv) {
     write_setting(h, "set.badlength", 20, 6, 11);
     write_setting(h, "set.notsetting", 1001, 5, 1);
     setting_of(h, "set.kept", 20, 5);
+    /* Every setting, as packed records; then room for one record only. */
+    settings_in(h, "setr.all", 0, 99, 100);
+    settings_in(h, "setr.room", 0, 99, 10);
+    /* Start past the end: refused before any traffic. */
+    settings_in(h, "setr.backwards", 20, 0, 100);
 
     cnc_freelibhndl(h);
     return 0;

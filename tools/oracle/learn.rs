@@ -1172,6 +1172,7 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> Vec<String> {
                     | fwlib32::spec::Param::ShortAs(..)
                     | fwlib32::spec::Param::Long(_)
                     | fwlib32::spec::Param::Count(_)
+                    | fwlib32::spec::Param::Io(_)
             )
         })
         .map(|(i, _)| i)

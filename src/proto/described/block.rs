@@ -4,7 +4,8 @@
 //! src/proto/param (cnc_rdparam's and cnc_wrparam's).
 //!
 //! The integers of a read (client side, [`read`]): `datano`, `type` as
-//! the C struct gets them, then the values' C bytes, one integer each.
+//! the C struct gets them, then the values' C bytes, one integer each; of
+//! a range read ([`range`]), packed records.
 //! The integers of a write's payload ([`write_payload`]): number, axis,
 //! type word, then each value's digits and decimals. The integers of the
 //! simulator's answer ([`encode`], [`wire_values`]): the wire block's, in
@@ -16,10 +17,10 @@ use crate::error::Result;
 use crate::proto::call::{Call, Ctx};
 use crate::proto::open::CncClass;
 use crate::proto::packet::RespSub;
-use crate::proto::param::{Num, Param16, Param30, ReadOne, Table, WriteParam};
+use crate::proto::param::{Num, Param16, Param30, ReadOne, ReadRange, Table, WriteParam};
 use crate::proto::value::Value;
 use crate::proto::wire::{DecodeError, Wire};
-use crate::spec::Block;
+use crate::spec::{Block, Short};
 
 /// Whether the block is of 8-byte value records (else 4-byte words): a
 /// read's answer on the 30i class, a write's payload on the 30i class and
@@ -33,18 +34,23 @@ pub fn records(class: CncClass, write: bool) -> bool {
     }
 }
 
-/// A read's answer shorter than one block of the CNC's max axes reads as
-/// zeros past its end (FANUC's library reads it from its zeroed buffer:
-/// an empty answer is number 0, axis word 0, value 0).
-fn padded(cx: &Ctx, resp: &[RespSub]) -> Vec<RespSub> {
+/// A read's answer shorter than one block of the CNC's max axes, as
+/// [`Short`] says: EW_PROTOCOL, zeros past its end, or (`Short::Request`,
+/// FANUC's library reading the answer into the buffer that held its
+/// request) payload byte k the request body's byte 18 + k, zeros past the
+/// request (an empty answer to `[n, n, axis]` is number `axis`, then
+/// zeros).
+fn padded(cx: &Ctx, resp: &[RespSub], short: Short, request: &[u8]) -> Vec<RespSub> {
     let slot = if records(cx.class, false) { 8 } else { 4 };
     let need = 8 + slot * cx.axes();
     resp.iter()
         .enumerate()
         .map(|(i, s)| {
             let mut s = s.clone();
-            if i == 0 && s.error == 0 && s.payload.len() < need {
-                s.payload.resize(need, 0);
+            if i == 0 && s.error == 0 && s.payload.len() < need && short != Short::Error {
+                let have = s.payload.len();
+                s.payload
+                    .extend((have..need).map(|k| request.get(18 + k).copied().unwrap_or(0)));
             }
             s
         })
@@ -54,20 +60,42 @@ fn padded(cx: &Ctx, resp: &[RespSub]) -> Vec<RespSub> {
 /// A read's answer as IODBPSD gets it: `datano` (the number's low 16
 /// bits), `type` (the answer's axis word; from a Series 15 `(type << 8) |
 /// (axis & 0xff)`, as FANUC's library writes it), then the values' bytes.
-pub fn read(cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
+pub fn read(cx: &Ctx, resp: &[RespSub], short: Short, request: &[u8]) -> Result<Vec<i64>> {
     let one = ReadOne {
         table: Table::Param,
         number: 0,
         axis: 0,
         flag: 0,
     };
-    let item = one.decode(cx, &padded(cx, resp))?;
+    let item = one.decode(cx, &padded(cx, resp, short, request))?;
     let type_field = match cx.class {
         CncClass::Series16 { kind: 2 } => ((item.ptype & 0xff) << 8) as i16 | (item.axis & 0xff),
         _ => item.axis,
     };
     let mut out = vec![i64::from(item.number as i16), i64::from(type_field)];
     out.extend(item.data_bytes().into_iter().map(i64::from));
+    Ok(out)
+}
+
+/// A range read's answer (cnc_rdparar's, [`ReadRange`] decoding it) as
+/// packed records: per record its number, the bytes it takes with its
+/// padding, how many bytes it has, then those bytes.
+pub fn range(cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
+    let one = ReadRange {
+        start: 0,
+        end: 0,
+        axis: 0,
+    };
+    let mut out = Vec::new();
+    for r in one.decode(cx, resp)? {
+        let bytes = r.to_c();
+        out.extend([
+            i64::from(r.number),
+            r.padded_len() as i64,
+            bytes.len() as i64,
+        ]);
+        out.extend(bytes.into_iter().map(i64::from));
+    }
     Ok(out)
 }
 

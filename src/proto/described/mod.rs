@@ -116,7 +116,15 @@ impl Call for Described<'_> {
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
         match self.f.block {
-            Some(b) if b.attributes.is_none() => return block::read(cx, resp),
+            Some(b) if b.range.is_some() => return block::range(cx, resp),
+            Some(b) if b.attributes.is_none() => {
+                // What a short answer's missing bytes read as ([`Short`]).
+                let request = match self.f.short {
+                    Short::Request => crate::proto::packet::encode_request(&self.request(cx)),
+                    Short::Zeros | Short::Error => Vec::new(),
+                };
+                return block::read(cx, resp, self.f.short, &request);
+            }
             Some(_) => return sub(resp, 0).map(|_| Vec::new()),
             None => {}
         }

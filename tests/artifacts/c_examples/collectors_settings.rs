@@ -1,4 +1,4 @@
-//! tests/c/collectors_settings.c: cnc_rdmacronum, cnc_rdset and cnc_wrset
+//! tests/c/collectors_settings.c: cnc_rdmacronum, cnc_rdset, cnc_rdsetr and cnc_wrset
 //! through the .so, compared with the simulator's custom macro variable
 //! names (`[path.macros.names]`) and its setting data (the parameters up to
 //! `[param] setting_max`), each write checked in the simulator.
@@ -72,6 +72,23 @@ fn settings_follow_the_machine(p: Profile) {
     assert_eq!(kv["set.badlength"], "2");
     assert_eq!(kv["set.notsetting"], "3");
     assert_eq!(kv["set.kept"], "0,20,0,9");
+    // cnc_rdsetr: the settings as packed records (number, type word
+    // `(type << 8) | axis`: 0 bit, 1 byte), the write's value among them.
+    let settings: Vec<&fwlib32::sim::profile::param::Entry> = (p.param.parameters.iter())
+        .filter(|e| e.number <= p.param.setting_max)
+        .collect();
+    assert_eq!(
+        settings.iter().map(|e| e.number).collect::<Vec<_>>(),
+        [0, 20]
+    );
+    assert_eq!(kv["setr.all"], format!("0,0,20,16,0:0:{s0},20:256:9"));
+    // Room for the first record only: EW_LENGTH, the first record written
+    // (the line prints no record for an error), the shorts kept.
+    assert_eq!(kv["setr.room"], "2,0,99,10");
+    assert_eq!(
+        kv["setr.backwards"],
+        format!("{},20,0,100", fwlib32::ew::EW_NUMBER)
+    );
     // The simulator's state, through a connection of its own.
     let cnc = Cnc::connect(&sim.addr().to_string(), Duration::from_secs(10)).unwrap();
     assert_eq!(cnc.param::<i32>(20, None).unwrap(), 9);
