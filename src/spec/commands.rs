@@ -92,12 +92,12 @@ commands! {
     RDSETNUM = CLASS_CNC 0x002c [cnc_rdsetnum];
     /// 16i class: read setting data [s, e, axis] (cnc_rdparam's 0x000e
     /// answer: a typed parameter block).
-    RDSET16 = CLASS_CNC 0x0029 [cnc_rdset];
+    RDSET16 = CLASS_CNC 0x0029 [cnc_rdset cnc_rdsetr];
     /// 16i class: write one setting data block (cnc_wrparam's 0x000f block).
     WRSET16 = CLASS_CNC 0x002a [cnc_wrset];
     /// 30i class and Series 15: read setting data [s, e, axis] (cnc_rdparam's
     /// 0x008d answer).
-    RDSET = CLASS_CNC 0x0090 [cnc_rdset];
+    RDSET = CLASS_CNC 0x0090 [cnc_rdset cnc_rdsetr];
     /// 30i class and Series 15: write one setting data block (cnc_wrparam's
     /// 0x008e block).
     WRSET = CLASS_CNC 0x0091 [cnc_wrset];
