@@ -77,6 +77,10 @@ pub fn words() -> Vec<Word> {
         .map(|f| Word {
             word: f.word(),
             dims: f.dims,
+            combos: COMBOS
+                .iter()
+                .find(|(w, _)| *w == f.word())
+                .map_or(&[][..], |(_, c)| c),
             ..w("", &[])
         });
     described.chain(WORDS.iter().map(copy)).collect()
@@ -85,6 +89,25 @@ pub fn words() -> Vec<Word> {
 fn copy(x: &Word) -> Word {
     Word { ..*x }
 }
+
+/// Explicit combinations of described functions' arguments (run on every
+/// class, Series 15 included, where the dimensions' variations are not).
+const COMBOS: &[(&str, &[&str])] = &[
+    (
+        "rdset",
+        &["20 0 8", "20 0 4", "20 0 0", "1001 0 8", "0 -1 8", "20 1 8"],
+    ),
+    (
+        "rdsetr",
+        &[
+            "20 0 99 100",
+            "0 0 99 8",
+            "0 0 99 4",
+            "100 0 200 100",
+            "20 0 0 100",
+        ],
+    ),
+];
 
 /// The words written by hand: functions not (yet) described as data.
 const WORDS: &[Word] = &[
