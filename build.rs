@@ -388,6 +388,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
             Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
+            Param::Io(n) => format!("{}: *mut c_short", ident(n)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
         let count = f.params.iter().find_map(|p| match *p {
@@ -404,6 +405,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 });
                 match (&count, cut) {
                     (Some(c), _) if *c == ident(n) => "0".to_string(),
+                    // Read by exec through its pointer (`io`).
+                    _ if f.params.contains(&Param::Io(n)) => "0".to_string(),
                     // As FANUC's library converts it before anything else.
                     (_, Some(t)) => format!("{} as {t} as i32", ident(n)),
                     _ => format!("{} as i32", ident(n)),
@@ -453,10 +456,21 @@ fn described_exports(funcs: &[types::Func]) -> String {
             }
             offsets.push(off);
         }
+        let ios: Vec<String> = f
+            .params
+            .iter()
+            .filter_map(|p| match *p {
+                Param::Io(n) => Some(ident(n)),
+                _ => None,
+            })
+            .collect();
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
-            None => "RecordsAt { base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut() }".to_string(),
+            None => format!(
+                "RecordsAt {{ base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut(), io: &[{}] }}",
+                ios.join(", ")
+            ),
             Some(r) => {
                 let (_, ty) = outs[r.out as usize];
                 let base = if r.to.is_empty() {
@@ -479,8 +493,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 };
                 let asked = count.as_deref().unwrap_or("std::ptr::null_mut()");
                 format!(
-                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {member}, asked: {asked} }}",
-                    offs.join(", ")
+                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {member}, asked: {asked}, io: &[{}] }}",
+                    offs.join(", "),
+                    ios.join(", ")
                 )
             }
         };
@@ -514,6 +529,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     words.join(", ")
                 )
             }
+            // A typed parameter block (types::Block): the one struct.
+            (None, Some((n, t))) if f.block.is_some() => format!(
+                "PayloadAt {{ input: {}.cast_const().cast(), stride: size_of::<{}>(), offsets: &[], words: &[], {texts} }}",
+                ident(n),
+                rust_type(t)
+            ),
             // No payload, or one of the numbers (types::NUMBERS).
             (None, None)
             | (
@@ -593,6 +614,27 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 .collect(),
             };
         let mut safety = safety;
+        for n in &ios {
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to a readable and writable short."
+            ));
+        }
+        if let Some(r) = f.block.and_then(|b| b.range.map(|_| b)) {
+            // The packed records go to the caller's `*length` bytes.
+            let len = f.numbers().nth(usize::from(r.length)).unwrap_or("?");
+            for (n, _) in &outs {
+                let line = format!("/// `{n}` must be NULL or point to");
+                if let Some(l) = safety.iter_mut().find(|l| l.starts_with(&line)) {
+                    *l = format!("{line} `*{len}` writable bytes.");
+                }
+            }
+        }
+        if let (None, Some((n, t))) = (&f.payload, f.input()) {
+            safety.push(format!(
+                "/// `{n}` must be NULL or point to a readable {}.",
+                doc_type(t)
+            ));
+        }
         if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
             match f.numbers().nth(usize::from(p.count)) {
                 // types::TEXT: read up to its NUL, at most the field's bytes.
@@ -661,8 +703,9 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
                 String::new()
             },
             unsafe_ = if pointers { "unsafe " } else { "" },
-            // A read may join a batch (fwlib_batch_begin); a command not.
-            boundary = if outs.is_empty() {
+            // A read may join a batch (fwlib_batch_begin); a command not,
+            // nor a range read (its next request needs the answer).
+            boundary = if outs.is_empty() || f.block.is_some_and(|b| b.range.is_some()) {
                 "ffi_boundary"
             } else {
                 "ffi_read"
@@ -749,6 +792,7 @@ fn rust_type(c: &str) -> String {
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
         "unsigned long" => "c_ulong".into(),
+        "void" => "c_void".into(),
         t => match (char_array(t), text_buf(t)) {
             (Some(n), _) => format!("[c_char; {n}]"),
             (_, Some(_)) => "c_char".into(),

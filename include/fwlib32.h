@@ -4170,6 +4170,20 @@ short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
 short cnc_rdservoid(unsigned short FlibHndl, short axis, short slct, struct ODBCSVID *servoid);
 
 /*
+ Reads one setting data item into IODBPSD, as cnc_rdparam reads a
+ parameter: `length` must hold 4 + the values answered (one, or one per
+ axis for an answer with a negative axis word).
+
+ # Safety
+ `param` must be NULL or point to a writable IODBPSD.
+ */
+short cnc_rdset(unsigned short FlibHndl,
+                short number,
+                short axis,
+                short length,
+                struct IODBPSD *param);
+
+/*
  Reads the smallest and largest setting data numbers and how many setting
  data there are.
 
@@ -4177,6 +4191,27 @@ short cnc_rdservoid(unsigned short FlibHndl, short axis, short slct, struct ODBC
  `setnum` must be NULL or point to a writable ODBSETNUM.
  */
 short cnc_rdsetnum(unsigned short FlibHndl, struct ODBSETNUM *setnum);
+
+/*
+ Reads the setting data `*s_number..=*e_number` into `param` as packed
+ records, as cnc_rdparar reads parameters: i16 number, i16 `(type << 8) |
+ (axis & 0xff)`, the values, each record padded to a multiple of 4; asks
+ again from the last number + 1 until `*e_number`. Then `*s_number` is
+ the first number read, `*e_number` the last, `*length` (in: the buffer's
+ size) the bytes used.
+
+ # Safety
+ `param` must be NULL or point to `*length` writable bytes.
+ `s_number` must be NULL or point to a readable and writable short.
+ `e_number` must be NULL or point to a readable and writable short.
+ `length` must be NULL or point to a readable and writable short.
+ */
+short cnc_rdsetr(unsigned short FlibHndl,
+                 short *s_number,
+                 short axis,
+                 short *e_number,
+                 short *length,
+                 void *param);
 
 /*
  Reads the commanded spindle speed, constant surface speed and maximum
@@ -5045,6 +5080,16 @@ short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num,
  outside -128..127 EW_DATA, before any traffic.
  */
 short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec_val);
+
+/*
+ Writes one setting data item from IODBPSD, as cnc_wrparam writes a
+ parameter: its attributes read first, `length` must be 4 + the size of
+ its values.
+
+ # Safety
+ `param` must be NULL or point to a readable IODBPSD.
+ */
+short cnc_wrset(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as

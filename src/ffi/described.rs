@@ -6,17 +6,19 @@
 use super::{ffi_boundary, ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_DATA, EW_FUNC};
+use crate::ew::{EW_DATA, EW_FUNC, EW_LENGTH};
+use crate::proto::described::block::{fits, write_values};
 use crate::proto::described::{Described, form, payload_numbers, payload_records, payload_values};
 use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
-use crate::spec::{Field, Func, Int, Learnt, Overflow};
+use crate::proto::param::{Elem, ParamInfo};
+use crate::spec::{Block, Field, Func, Int, Learnt, Overflow};
 #[allow(unused_imports)]
 use crate::types::*;
 #[allow(unused_imports)]
 use std::mem::offset_of;
 #[allow(unused_imports)]
-use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort};
+use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort, c_void};
 
 /// Most number parameters a described function has (build.rs checks).
 pub(crate) const MAX_NUMBERS: usize = 8;
@@ -34,6 +36,9 @@ pub(crate) struct RecordsAt<'a> {
     /// [`Param::Count`](crate::spec::Param::Count)); NULL for a function
     /// without one.
     pub asked: *mut c_short,
+    /// The caller's numbers by pointer
+    /// ([`Param::Io`](crate::spec::Param::Io)), in order.
+    pub io: &'a [*mut c_short],
 }
 
 /// Where a write's payload records are read from: the caller's array (NULL
@@ -80,6 +85,7 @@ pub(crate) unsafe fn exec(
     rec: RecordsAt<'_>,
     pay: PayloadAt<'_>,
 ) -> Result<()> {
+    let io = rec.io;
     let h = handles::get(h)?;
     let mut a = [0i32; MAX_NUMBERS];
     a[..args.len()].copy_from_slice(args);
@@ -102,6 +108,25 @@ pub(crate) unsafe fn exec(
         }
         None => None,
     };
+    // Numbers passed by pointer: the pointers are checked first.
+    let io_at: Vec<usize> = f
+        .params
+        .iter()
+        .filter_map(|p| match *p {
+            crate::spec::Param::Io(n) => f.numbers().position(|m| m == n),
+            _ => None,
+        })
+        .collect();
+    if !io.is_empty() {
+        for p in io {
+            nonnull(*p)?;
+        }
+        outs_set()?;
+        for (p, i) in io.iter().zip(&io_at) {
+            // SAFETY: the caller's short, checked non-NULL.
+            args[*i] = i32::from(unsafe { p.read_unaligned() });
+        }
+    }
     if f.input().is_some() {
         let input = nonnull(pay.input.cast_mut())?;
         outs_set()?;
@@ -167,6 +192,19 @@ pub(crate) unsafe fn exec(
         unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
         return Ok(());
     };
+    if let Some(b) = f.block {
+        // SAFETY: the caller's contract (output 0 an IODBPSD; the input one).
+        if let Some(r) = b.range {
+            let at = |k: u8| {
+                let i = io_at.iter().position(|i| *i == usize::from(k));
+                i.map_or(std::ptr::null_mut(), |i| io[i])
+            };
+            let ptrs = [at(r.s), at(r.e), at(b.length)];
+            // SAFETY: the caller's contract (`*length` bytes at output 0).
+            return unsafe { range(f, r, &h, args, outs[0], ptrs) };
+        }
+        return unsafe { block(f, b, &h, args, outs, pay.input) };
+    }
     // A C string input: up to its NUL, at most the field's bytes.
     let text = match f.payload {
         Some(p) if p.count == crate::spec::TEXT && !pay.input.is_null() => {
@@ -281,6 +319,174 @@ pub(crate) unsafe fn exec(
         }
     }
     Ok(())
+}
+
+/// A typed parameter block ([`Block`]): a read into output 0, or a write
+/// of the input's block (its attributes read first where the block says).
+///
+/// # Safety
+/// A read's output 0 points to a writable IODBPSD; a write's `input` to a
+/// readable one.
+unsafe fn block(
+    f: &'static Func,
+    b: Block,
+    h: &handles::Handle,
+    args: &[i32],
+    outs: &[*mut u8],
+    input: *const u8,
+) -> Result<()> {
+    let length = args.get(usize::from(b.length)).copied().unwrap_or(0) as i16;
+    let Some(attributes) = b.attributes else {
+        let values = h.call(&Described::new(f, args))?;
+        // Below the 4-byte header nothing is written; else the header is,
+        // before `length` is checked against the values (FANUC's library).
+        if length < 4 {
+            return Err(Error::local(EW_LENGTH, "length is below the 4-byte header"));
+        }
+        let out = outs[0];
+        let head = |k: usize| values.get(k).copied().unwrap_or(0) as i16;
+        // SAFETY: output 0 is an IODBPSD (the caller's contract).
+        unsafe {
+            put(out.cast::<i16>(), head(0));
+            put(out.add(2).cast::<i16>(), head(1));
+        }
+        if !fits(&b, args, &values) {
+            return Err(Error::local(
+                EW_LENGTH,
+                "length below 4 + the size of the values answered",
+            ));
+        }
+        let data: Vec<u8> = values.iter().skip(2).map(|v| *v as u8).collect();
+        // SAFETY: at most max-axes values of at most 8 bytes: IODBPSD's union.
+        unsafe { std::ptr::copy_nonoverlapping(data.as_ptr(), out.add(4), data.len()) };
+        return Ok(());
+    };
+    let input = nonnull(input.cast_mut())?;
+    // SAFETY: the caller's IODBPSD, read unaligned.
+    let raw: [u8; 260] = unsafe { input.cast::<[u8; 260]>().read_unaligned() };
+    let number = i32::from(i16::from_le_bytes([raw[0], raw[1]]));
+    let axis = i16::from_le_bytes([raw[2], raw[3]]);
+    let cx = h.ctx();
+    let class = (
+        cx.class.is_16i(),
+        matches!(cx.class, CncClass::Series16 { kind: 2 }),
+    );
+    // The type and its kind: from the attributes the CNC answers, or (a
+    // Series 15) from the `type` member, `(type << 8) | (axis & 0xff)`.
+    let (ptype, elem, axis) = if attributes.matches(class.0, class.1) {
+        let info = h.call(&ParamInfo { number })?;
+        (info.ptype, info.elem, axis)
+    } else {
+        let ptype = (axis as u16) >> 8;
+        let elem = Elem::of_param(ptype).filter(|_| ptype <= 4);
+        (ptype, elem, i16::from(axis as i8))
+    };
+    // A type FANUC's library does not know (not 0..4): no length
+    // check, every value sent as zero, the CNC decides.
+    let values = match elem {
+        Some(elem) => {
+            let count = if axis < 0 { cx.axes() } else { 1 };
+            let size = elem.size();
+            if i32::from(length) != (4 + size * count) as i32 {
+                return Err(Error::local(
+                    EW_LENGTH,
+                    "length is not 4 + the size of the values",
+                ));
+            }
+            (0..count).map(|i| elem.get(&raw[4 + i * size..])).collect()
+        }
+        None => Vec::new(),
+    };
+    let payload = write_values(number, axis, ptype, &values);
+    h.call(&Described {
+        f,
+        args,
+        payload: &payload,
+        text: &[],
+        late: None,
+    })
+    .map(|_| ())
+}
+
+/// A range read of typed parameter blocks ([`crate::spec::Range`]) into
+/// `out` as packed records, asked again from the last number + 1 until the
+/// end; `ptrs` are the start, end and length shorts, written back at the end.
+///
+/// # Safety
+/// `out` points to the `*length` writable bytes; `ptrs` are the caller's
+/// shorts, checked non-NULL.
+unsafe fn range(
+    f: &'static Func,
+    r: crate::spec::Range,
+    h: &handles::Handle,
+    args: &mut [i32],
+    out: *mut u8,
+    [s_number, e_number, length]: [*mut c_short; 3],
+) -> Result<()> {
+    let (s, e) = (args[usize::from(r.s)], args[usize::from(r.e)]);
+    let room = unsafe { length.read_unaligned() }.max(0) as usize;
+    let mut used = 0usize;
+    let mut first: Option<i32> = None;
+    let mut last: Option<i32> = None;
+    let mut next = s;
+    loop {
+        args[usize::from(r.s)] = next;
+        let values = match h.call(&Described::new(f, args)) {
+            // No more numbers after some were read: done.
+            Err(Error::Cnc {
+                code: crate::ew::EW_NUMBER,
+                ..
+            }) if last.is_some() => break,
+            v => v?,
+        };
+        for rec in records_of(&values) {
+            let (number, padded, bytes) = rec;
+            if used + padded > room {
+                // Its header, as FANUC's library writes it, if it fits.
+                if used + 4 <= room {
+                    unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), 4) };
+                }
+                return Err(Error::length());
+            }
+            unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), bytes.len()) };
+            used += padded;
+            first.get_or_insert(number);
+            last = Some(number);
+        }
+        let Some(l) = last else {
+            return Err(Error::short("parameter range answer without a block"));
+        };
+        // On from the last number + 1, even when the CNC went back.
+        if l >= e {
+            break;
+        }
+        next = l + 1;
+    }
+    unsafe {
+        put(s_number, first.unwrap_or(s) as i16);
+        put(length, used as c_short);
+        put(e_number, last.unwrap_or(e) as c_short);
+    }
+    Ok(())
+}
+
+/// The packed records of a range answer's integers
+/// ([`crate::proto::described::block::range`]): number, bytes taken with
+/// the padding, the record's bytes.
+fn records_of(v: &[i64]) -> Vec<(i32, usize, Vec<u8>)> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    while at + 3 <= v.len() {
+        let (number, padded, n) = (v[at] as i32, v[at + 1] as usize, v[at + 2] as usize);
+        let end = (at + 3 + n).min(v.len());
+        out.push((
+            number,
+            padded,
+            v[at + 3..end].iter().map(|b| *b as u8).collect(),
+        ));
+        at = end;
+    }
+    out
 }
 
 /// Writes `fields`' integers, field k's elements from byte `at(k)` of its

@@ -10,7 +10,7 @@ use super::route::{Answer, Asked, Route};
 use super::service::{CncError, CncService, Reply, respond};
 use super::{
     folder, history, macros, maintenance, memory, offset, operate, param, pmc_answers, position,
-    program, sampling, status, tool,
+    program, sampling, setting, status, tool,
 };
 use crate::proto::described;
 use crate::proto::open::{CncClass, OpenBody};
@@ -34,6 +34,7 @@ const AREAS: &[&[Route]] = &[
     folder::ROUTES,
     maintenance::ROUTES,
     sampling::ROUTES,
+    setting::ROUTES,
 ];
 
 /// The CNC classes a described function's form is chosen by, in the
@@ -151,7 +152,7 @@ impl Machine {
                 row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
                 let func = described::for_request(sub, class).ok_or(CncError::FUNC)?;
                 let args = described::args_of(func, class, sub);
-                let payload = described::payload_of(func, &sub.payload);
+                let payload = described::payload_in(func, class, &sub.payload);
                 let asked = Asked {
                     f: func,
                     path: p,
@@ -161,7 +162,7 @@ impl Machine {
                     bytes: &sub.payload,
                 };
                 let v = f(self, &asked)?;
-                described::encode(func, &v).map_err(|_| CncError::FUNC)
+                described::encode_in(func, class, &v).map_err(|_| CncError::FUNC)
             }
         }
     }
@@ -470,7 +471,7 @@ mod tests {
                     };
                     if let Ok(v) = f(&mut m, &q) {
                         answered += 1;
-                        let e = described::encode(func, &v);
+                        let e = described::encode_in(func, *class, &v);
                         assert!(e.is_ok(), "{} on {class:?}: {} values", func.name, v.len());
                     }
                 }

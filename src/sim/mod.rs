@@ -42,6 +42,7 @@ pub mod sampling;
 pub mod server;
 pub mod service;
 pub mod session;
+pub mod setting;
 pub mod shared;
 pub mod status;
 pub mod store;

@@ -77,7 +77,7 @@ commands! {
     WRPARAM16 = CLASS_CNC 0x000f [cnc_wrparam cnc_wrparas];
     /// Both classes: parameter numbers and attributes [s, n] (cnc_rdparainfo;
     /// the 16i cnc_wrparam reads one entry of it first).
-    RDPARAINFO = CLASS_CNC 0x0010 [cnc_rdparainfo cnc_wrparam cnc_rdparam_ext];
+    RDPARAINFO = CLASS_CNC 0x0010 [cnc_rdparainfo cnc_wrparam cnc_rdparam_ext cnc_wrset];
     /// cnc_rdparanum: smallest, largest and count of parameter numbers.
     RDPARANUM = CLASS_CNC 0x0011 [cnc_rdparanum];
     RDPITCHR = CLASS_CNC 0x0012 [cnc_rdpitchr];
@@ -90,6 +90,17 @@ commands! {
     /// cnc_rdsetnum: (1,0x002c) the setting data's smallest and largest
     /// numbers and how many there are.
     RDSETNUM = CLASS_CNC 0x002c [cnc_rdsetnum];
+    /// 16i class: read setting data [s, e, axis] (cnc_rdparam's 0x000e
+    /// answer: a typed parameter block).
+    RDSET16 = CLASS_CNC 0x0029 [cnc_rdset cnc_rdsetr];
+    /// 16i class: write one setting data block (cnc_wrparam's 0x000f block).
+    WRSET16 = CLASS_CNC 0x002a [cnc_wrset];
+    /// 30i class and Series 15: read setting data [s, e, axis] (cnc_rdparam's
+    /// 0x008d answer).
+    RDSET = CLASS_CNC 0x0090 [cnc_rdset cnc_rdsetr];
+    /// 30i class and Series 15: write one setting data block (cnc_wrparam's
+    /// 0x008e block).
+    WRSET = CLASS_CNC 0x0091 [cnc_wrset];
     SYSINFO = CLASS_CNC 0x0018 [cnc_sysinfo cnc_allclibhndl3];
     STATINFO = CLASS_CNC 0x0019 [cnc_statinfo];
     /// Alarm status bits (cnc_alarm, cnc_alarm2, rddynamic2 `alarm`).
@@ -248,7 +259,7 @@ commands! {
     /// cnc_rdtooldata (punch press): args [0, tool_no, n].
     PTLDATA = CLASS_CNC 0x009c [cnc_rdtooldata];
     /// 30i: the attribute record of one parameter [number, 1] (28 bytes).
-    PARAMTYPE = CLASS_CNC 0x00a0 [cnc_wrparam cnc_rdparam_ext];
+    PARAMTYPE = CLASS_CNC 0x00a0 [cnc_wrparam cnc_rdparam_ext cnc_wrset];
     /// 30i: the attribute record of one diagnosis item [number, 1] (28 bytes).
     DIAGTYPE = CLASS_CNC 0x00a2 [cnc_rddiag_ext];
     /// Display flags per axis (u32).

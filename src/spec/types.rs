@@ -50,6 +50,11 @@ pub enum Param {
     /// The text parameters' fields go first, in parameter order, before
     /// any [`Func::payload`] records; NULL is EW_DATA before any traffic.
     Text(&'static str, u16),
+    /// `short *NAME`: a number the caller passes by pointer (read once the
+    /// pointers are checked, as [`Param::Count`]'s)
+    /// and the reply writes back ([`Range`]: the numbers read and the
+    /// bytes used).
+    Io(&'static str),
 }
 
 impl Param {
@@ -58,7 +63,7 @@ impl Param {
     /// conversion); None for a pointer.
     pub const fn conv(&self, v: i64) -> Option<i32> {
         match *self {
-            Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
+            Param::Short(_) | Param::Count(_) | Param::Io(_) => Some(v as i16 as i32),
             Param::Long(_) | Param::ULong(_) => Some(v as i32),
             Param::UShort(_) => Some(v as u16 as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
@@ -75,6 +80,7 @@ impl Param {
             | Param::Out(n, _)
             | Param::Count(n)
             | Param::In(n, _)
+            | Param::Io(n)
             | Param::Text(n, _) => n,
         }
     }
@@ -93,6 +99,8 @@ pub enum Classes {
     S15,
     /// The 16i class without Series 15.
     S16Not15,
+    /// Every class but Series 15.
+    Not15,
 }
 
 /// One word of a request's argument block.
@@ -126,6 +134,7 @@ impl Classes {
             Classes::S16 => s16,
             Classes::S15 => s15,
             Classes::S16Not15 => s16 && !s15,
+            Classes::Not15 => !s15,
         }
     }
 }
@@ -245,6 +254,56 @@ pub struct Payload {
     pub max: u16,
 }
 
+/// A typed parameter block instead of reply fields or a payload
+/// ([`Func::block`]): IODBPSD's layout, `short datano`, `short type`, then
+/// one value or one per axis, each of the size the parameter's type decides
+/// (bit and byte 1, word 2, 2-word 4, real 8: value and decimals). On the
+/// wire it is the parameter answer or write block (`i32` number, `i16`
+/// axis, `u16` type, then 8-byte value records on the 30i class, `i32`
+/// words on the 16i class and Series 15), as cnc_rdparam reads and
+/// cnc_wrparam writes it (src/proto/param, whose codec it uses).
+///
+/// A read (`attributes` None): the answer's axis word decides how many
+/// values (negative: max axes, else one); `length` below 4 writes nothing,
+/// else `datano` and `type` (the answer's axis word; from a Series 15,
+/// `(type << 8) | (axis & 0xff)`) are written, then `length` below 4 + the
+/// values' size is EW_LENGTH, else the values are written.
+///
+/// A write (`attributes` Some): the block is read from the [`Param::In`]
+/// struct; on the classes `attributes` names, the parameter's attributes
+/// are read first (cnc_wrparam's exchange) and decide the values' type and
+/// size, `length` having to be 4 + their size (`type` -1: per axis) else
+/// EW_LENGTH and no write; the write is the form's command with the block
+/// as its payload.
+#[derive(Debug, Clone, Copy)]
+pub struct Block {
+    /// Number parameter: the caller's `length`.
+    pub length: u8,
+    /// A write: the classes whose CNC is asked for the attributes first.
+    pub attributes: Option<Classes>,
+    /// A range read instead of one item ([`Range`]).
+    pub range: Option<Range>,
+}
+
+/// A range read of typed parameter blocks ([`Block::range`]), as
+/// cnc_rdparar reads parameters: number parameters `s` and `e` (the start
+/// and end numbers) and the block's `length` (the output's room in bytes)
+/// are [`Param::Io`]. The request's words carry the start, the end and the
+/// axis; each answer block becomes a packed record in the output (i16
+/// number, i16 `(type << 8) | (axis & 0xff)`, the values, padded to a
+/// multiple of 4; src/proto/param/packed.rs), and the CNC is asked again
+/// from the last number answered + 1 until the end is reached (an
+/// EW_NUMBER answer after some records ends the read). Then `s` is the
+/// first number read, `e` the last and `length` the bytes used. A start
+/// above the end is EW_NUMBER before any traffic; a record that does not
+/// fit is EW_LENGTH (the records before it written, its 4-byte header too
+/// if that fits; the pointers keep their values).
+#[derive(Debug, Clone, Copy)]
+pub struct Range {
+    pub s: u8,
+    pub e: u8,
+}
+
 /// One FOCAS function.
 #[derive(Debug, Clone, Copy)]
 pub struct Func {
@@ -315,6 +374,9 @@ pub struct Func {
     /// array holds that many), and a write ([`SPAN`]) sends that many
     /// (pmc_get_timer_type, pmc_set_timer_type).
     pub span: Option<(u8, u8)>,
+    /// The reply (a read) or the payload (a write) is a typed parameter
+    /// block ([`Block`]), not `reply`'s fields.
+    pub block: Option<Block>,
 }
 
 impl Func {
@@ -330,7 +392,8 @@ impl Func {
             | Param::ULong(n)
             | Param::UShort(n)
             | Param::ShortAs(n, _)
-            | Param::Count(n) => Some(n),
+            | Param::Count(n)
+            | Param::Io(n) => Some(n),
             Param::Out(..) | Param::In(..) | Param::Text(..) => None,
         })
     }

@@ -492,7 +492,7 @@ fn the_collector_families_are_all_supported() {
         "cnc_rdsyshard", "cnc_rdsyssoft3", "cnc_rdservoid", "cnc_rdspindleid", "cnc_rdfromservoid", "cnc_rdfromspindleid",
         "cnc_rdprgnumo8", "cnc_rddynamico8", "cnc_rdprogdiro8", "cnc_rdprogdir2o8", "cnc_searcho8", "cnc_deleteo8", "cnc_rdmdipntro8",
         "cnc_rdpmacro", "cnc_wrpmacro", "cnc_rdpmacror", "cnc_rdpmacroinfo", "cnc_rdpmacroinfo2", "cnc_rdmacronum",
-        "cnc_rdsetnum",
+        "cnc_rdsetnum", "cnc_rdset", "cnc_wrset", "cnc_rdsetr",
         "cnc_rdtlinfo", "cnc_rdmaxgrp", "cnc_rdmaxtool", "cnc_rdusegrpid", "cnc_rd1tlifedata", "cnc_rd2tlifedata", "cnc_wrmagazine", "cnc_wrtool",
         "cnc_rdnspdl", "cnc_rdspcss", "cnc_rdcommand", "cnc_rd3dtooltip", "cnc_rdposerrs", "cnc_rdposerrs2", "cnc_rdposerrz",
     ];

@@ -77,6 +77,10 @@ pub fn words() -> Vec<Word> {
         .map(|f| Word {
             word: f.word(),
             dims: f.dims,
+            combos: COMBOS
+                .iter()
+                .find(|(w, _)| *w == f.word())
+                .map_or(&[][..], |(_, c)| c),
             ..w("", &[])
         });
     described.chain(WORDS.iter().map(copy)).collect()
@@ -85,6 +89,25 @@ pub fn words() -> Vec<Word> {
 fn copy(x: &Word) -> Word {
     Word { ..*x }
 }
+
+/// Explicit combinations of described functions' arguments (run on every
+/// class, Series 15 included, where the dimensions' variations are not).
+const COMBOS: &[(&str, &[&str])] = &[
+    (
+        "rdset",
+        &["20 0 8", "20 0 4", "20 0 0", "1001 0 8", "0 -1 8", "20 1 8"],
+    ),
+    (
+        "rdsetr",
+        &[
+            "20 0 99 100",
+            "0 0 99 8",
+            "0 0 99 4",
+            "100 0 200 100",
+            "20 0 0 100",
+        ],
+    ),
+];
 
 /// The words written by hand: functions not (yet) described as data.
 const WORDS: &[Word] = &[
@@ -912,6 +935,49 @@ const WORDS: &[Word] = &[
                 "10 hex:371a0000e8030000",
                 "36 hex:371a0000e8030000",
                 "260 hex:371a0000e8030000",
+            ],
+        )
+    },
+    // Setting data: the byte setting 20 and the bit setting 0 written,
+    // read back as settings and as the parameter.
+    Word {
+        after: &["rdset 20 0 8", "rdset 0 0 8", "rdparam 20 0 8"],
+        writes: true,
+        ..wc(
+            "wrset",
+            &[],
+            &[
+                "5 hex:1400000007",
+                "5 hex:0000000003",
+                "5 hex:14000000ff",
+                "4 hex:1400000007",
+                "6 hex:140000000700",
+                "8 hex:1400000007000000",
+                "0 hex:1400000007",
+                "-1 hex:1400000007",
+                "5 hex:1400ffff07",
+                "5 hex:1400010007",
+                "5 hex:6400000007",
+                "5 hex:e903000001",
+                "5 hex:ffff000007",
+                "5 hex:cccccccccc",
+                "36 hex:1400ffff07",
+                // Series 15 reads the type and axis from `type`:
+                // `(type << 8) | (axis & 0xff)`.
+                "5 hex:1400000107",
+                "6 hex:140000020700",
+                "8 hex:1400000307000000",
+                "12 hex:140000040700000001000000",
+                "5 hex:1400000507",
+                "5 hex:1400ff0007",
+                "36 hex:1400ff000707070707070707070707070707070707070707070707070707070707070707",
+                "36 hex:1400ff01070707",
+                "6 hex:1400010207",
+                // Other negative axes: every axis, as -1?
+                "5 hex:1400feff07",
+                "36 hex:1400feff07",
+                "5 hex:1400fe0007",
+                "36 hex:1400fe0007",
             ],
         )
     },

@@ -1174,6 +1174,7 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> Vec<String> {
                     | fwlib32::spec::Param::ULong(_)
                     | fwlib32::spec::Param::UShort(_)
                     | fwlib32::spec::Param::Count(_)
+                    | fwlib32::spec::Param::Io(_)
             )
         })
         .map(|(i, _)| i)

@@ -83,6 +83,7 @@ pub fn generated_words() -> String {
         // A count goes through probe.c's SHORT_IO as `num`, the name the
         // cases record its value out under.
         let mut count = None;
+        let mut ios: Vec<(&str, usize)> = Vec::new();
         // An input beside two outputs goes in b2 (the outputs keep b0, b1).
         let pointers = f
             .params
@@ -112,6 +113,13 @@ pub fn generated_words() -> String {
                     count = Some(n);
                     "&num".to_string()
                 }
+                // A number by pointer: a static short of its name, its
+                // value out as a field of that name.
+                Param::Io(name) => {
+                    n += 1;
+                    ios.push((name, n));
+                    format!("&{name}")
+                }
                 Param::In(..) if in_b2 => "B2".to_string(),
                 Param::Out(..) | Param::In(..) => {
                     b += 1;
@@ -131,6 +139,21 @@ pub fn generated_words() -> String {
         );
         let body = match count {
             Some(i) => format!("SHORT_IO(num, {i}, {call})"),
+            None if !ios.is_empty() => {
+                let set: String = ios
+                    .iter()
+                    .map(|(m, i)| {
+                        format!(
+                            "static short {m}; {m} = (short)N({i}); io_note(\"{m}\", &{m}, 1); "
+                        )
+                    })
+                    .collect();
+                let get: String = ios
+                    .iter()
+                    .map(|(m, _)| format!("field(\"{m}\", {m}); "))
+                    .collect();
+                format!("{{ {set}short r_ = {call}; {get}return r_; }}")
+            }
             None => format!("{{ {fill}return {call}; }}"),
         };
         s.push_str(&format!(" \\\n    WORD({}, {body})", f.word()));

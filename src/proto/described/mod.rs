@@ -13,6 +13,7 @@ use crate::spec::{
     Columns, Field, Func, Int, LAST, NUMBERS, ONE, Overflow, SPAN, Short, TEXT, Word, ZERO,
 };
 
+pub mod block;
 mod encode;
 pub use encode::{args_of, encode, for_request, form};
 use encode::{binary_records, write_fields, write_fields_in};
@@ -85,6 +86,11 @@ impl Call for Described<'_> {
             }
         };
         let sub = sub_of(form.cmd, form.words);
+        if self.f.block.is_some_and(|b| b.attributes.is_some()) {
+            // A typed parameter block: its integers are the block's.
+            out.push(sub.with_payload(block::write_payload(cx, self.payload)));
+            return;
+        }
         out.push(match &self.f.payload {
             None if self.f.texts().next().is_some() => sub.with_payload(self.text.to_vec()),
             Some(p) => {
@@ -115,6 +121,19 @@ impl Call for Described<'_> {
         }));
     }
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
+        match self.f.block {
+            Some(b) if b.range.is_some() => return block::range(cx, resp),
+            Some(b) if b.attributes.is_none() => {
+                // What a short answer's missing bytes read as ([`Short`]).
+                let request = match self.f.short {
+                    Short::Request => crate::proto::packet::encode_request(&self.request(cx)),
+                    Short::Zeros | Short::Error => Vec::new(),
+                };
+                return block::read(cx, resp, self.f.short, &request);
+            }
+            Some(_) => return sub(resp, 0).map(|_| Vec::new()),
+            None => {}
+        }
         if let Some(c) = self.f.columns {
             return columns(self.f, c, resp, self.late);
         }
@@ -461,6 +480,28 @@ fn read_fields(
         }
     }
     Ok(())
+}
+
+/// [`payload_of`] on a CNC of this class: a typed parameter block's
+/// integers ([`block::wire_values`]; none when it does not decode).
+pub fn payload_in(f: &Func, class: CncClass, bytes: &[u8]) -> Vec<i64> {
+    match f.block {
+        Some(_) => block::wire_values(class, true, bytes).unwrap_or_default(),
+        None => payload_of(f, bytes),
+    }
+}
+
+/// [`encode`] on a CNC of this class: a typed parameter block's answer
+/// in the class's form ([`block::encode`]).
+pub fn encode_in(
+    f: &Func,
+    class: CncClass,
+    values: &[i64],
+) -> std::result::Result<Vec<u8>, DecodeError> {
+    match f.block {
+        Some(_) => block::encode(class, false, values),
+        None => encode(f, values),
+    }
 }
 
 /// The integers of a write's request payload (simulator side): whole

@@ -58,6 +58,11 @@ impl Call for ParamInfo {
                 })
             }
             CncClass::Series16 { .. } => {
+                // Exactly one entry's answer (16 bytes): a longer one,
+                // ragged or not, is EW_NUMBER [fuzz, cnc_wrset].
+                if s.payload.len() != 16 {
+                    return Err(bad());
+                }
                 let l = InfoList::from_bytes(&s.payload).map_err(|_| bad())?;
                 // FANUC's library wants exactly the one entry asked for (a
                 // longer answer is EW_NUMBER, nothing written).

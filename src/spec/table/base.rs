@@ -27,6 +27,7 @@ pub const COMMAND: Func = Func {
     binary: None,
     counted: None,
     span: None,
+    block: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -62,4 +63,5 @@ pub const SERVO_LONGS: Func = Func {
     binary: None,
     counted: None,
     span: None,
+    block: None,
 };
