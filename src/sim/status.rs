@@ -9,7 +9,8 @@ use super::service::{CncError, Reply};
 use crate::ew::EW_LENGTH;
 use crate::proto::cmd;
 use crate::proto::cmd::{
-    RDETHERINFO, RDFROMSERVOID, RDFROMSPINDLEID, RDSERVOID, RDSPINDLEID, RDSYSHARD, RDSYSSOFT3,
+    RDETHERINFO, RDFROMSERVOID, RDFROMSPINDLEID, RDSERVOID, RDSPINDLEID, RDSYSHARD, RDSYSSOFT,
+    RDSYSSOFT3,
 };
 use crate::proto::open::OpenBody;
 use crate::proto::position::SPINDLE_SHOWN15;
@@ -48,6 +49,7 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDETHERINFO, ether_info),
     Route::table(RDSYSHARD, boards),
     Route::table(RDSYSSOFT3, software),
+    Route::table(RDSYSSOFT, slots_software),
     Route::table(RDSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
     Route::table(RDFROMSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
     Route::table(RDSPINDLEID, |m, q| drive_id(&m.profile.system.spindle, q)),
@@ -135,6 +137,93 @@ fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
         v.push(i64::from(s.id));
         v.extend(chars(&s.series));
         v.extend(chars(&s.edition));
+    }
+    Ok(v)
+}
+
+/// cnc_rdsyssoft / cnc_rdsyssoft2: the profile's slots (`[system] slot`,
+/// logical order) and named software (`named`), each software's series and
+/// edition from `software` (so cnc_rdsyssoft3 lists them alike), walked
+/// along the reply's fields (the longer cnc_rdsyssoft2's): the physical
+/// slots ascending then 0xff; module and software IDs at each slot's place
+/// in its bank; the logical table's words the physical slot in the high
+/// byte (0xffff unused); series and edition by logical slot; each named
+/// member its software's, unset characters 0xff; `soft_inst`; zeros
+/// elsewhere.
+fn slots_software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    use crate::spec::Int;
+    use crate::spec::table::info::{LOGICAL, MODULES, SERIES, SLOTS, SOFTS};
+    let sys = &m.profile.system;
+    let slots = &sys.slots[..sys.slots.len().min(16)];
+    let mut physical: Vec<u8> = slots.iter().map(|s| s.slot).collect();
+    physical.sort_unstable();
+    // A software's 8 characters: series then edition, 0xff unset.
+    let chars = |id: Option<i16>| -> [i64; 8] {
+        let s = id.and_then(|id| sys.software.iter().find(|s| s.id == id));
+        std::array::from_fn(|i| {
+            let text = s.map(|s| if i < 4 { &s.series } else { &s.edition });
+            text.and_then(|t| t.as_bytes().get(i % 4).copied())
+                .map_or(-1, |c| i64::from(c as i8))
+        })
+    };
+    // Reply field k's `n` integers by ID (`id` of a slot) at each slot's
+    // place in bank `high`.
+    let by_slot = |n: usize, high: bool, id: fn(&super::profile::system::Slot) -> i16| {
+        let mut w = vec![0; n];
+        for s in slots.iter().filter(|s| (s.slot >= 0x80) == high) {
+            if let Some(x) = w.get_mut(usize::from(s.slot & 0xf)) {
+                *x = i64::from(id(s));
+            }
+        }
+        w
+    };
+    let mut v = Vec::new();
+    for (k, f) in q.f.reply.iter().enumerate() {
+        let n = usize::from(f.n);
+        let k = k as u8;
+        let part: Vec<i64> = if k == SLOTS {
+            (0..n)
+                .map(|i| physical.get(i).map_or(-1, |s| i64::from(*s as i8)))
+                .collect()
+        } else if k == MODULES.0 || k == MODULES.1 {
+            by_slot(n, k == MODULES.1, |s| s.module_id)
+        } else if k == SOFTS.0 || k == SOFTS.1 {
+            by_slot(n, k == SOFTS.1, |s| s.software)
+        } else if k == LOGICAL {
+            (0..n)
+                .map(|i| match (i % 2, slots.get(i / 2)) {
+                    (0, Some(s)) => i64::from(s.slot),
+                    (_, Some(_)) => 0,
+                    (_, None) => 0xff,
+                })
+                .collect()
+        } else if k == SERIES {
+            (0..n)
+                .map(|i| {
+                    let s = slots.get(i / 8).map(|s| s.software);
+                    chars(s)[i % 8]
+                })
+                .collect()
+        } else {
+            match (f.to, f.arg, f.wire) {
+                (Some(member), None, Int::Char) => {
+                    // `boot_ser`: the series of the software named `boot`.
+                    let named = member
+                        .strip_suffix("_ser")
+                        .map(|x| (x, 0))
+                        .or_else(|| member.strip_suffix("_ver").map(|x| (x, 4)));
+                    let (id, at) = match named {
+                        Some((name, at)) => (sys.named.get(name).copied(), at),
+                        None => (None, 0),
+                    };
+                    chars(id)[at..at + n.min(4)].to_vec()
+                }
+                (Some("soft_inst"), None, _) => vec![i64::from(sys.soft_inst)],
+                // The NULs (ZERO fields) and the bytes nobody reads.
+                _ => vec![0; n],
+            }
+        };
+        v.extend(part);
     }
     Ok(v)
 }

@@ -143,6 +143,9 @@ commands! {
     /// Spindle data: args [code, spindle]; value records.
     SPINDLE = CLASS_CNC 0x0040 [cnc_acts2 cnc_rdspmeter cnc_rdspload cnc_rdspmaxrpm cnc_rdspgear
         cnc_rdaxisdata];
+    /// cnc_rdsyssoft / cnc_rdsyssoft2: no arguments; a fixed answer of
+    /// slot tables, IDs and 4-character series/versions (docs/protocol/machine.md).
+    RDSYSSOFT = CLASS_CNC 0x0041 [cnc_rdsyssoft cnc_rdsyssoft2];
     /// cnc_rdprstrinfo: (1,0x0043)\[k\] for k 0..4 (block counter, M, T, S and
     /// B codes), then the position command 0x0026 [13, -1] (restart position)
     /// and [14, -1] (distance to it), in one frame.

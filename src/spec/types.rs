@@ -286,6 +286,9 @@ pub struct Func {
     /// read as [`Func::short`] says (zeros: FANUC's library reads them from
     /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
     pub counted: Option<u8>,
+    /// Output members filled by looking values up in the reply
+    /// ([`Lookup`]), after the reply's fields are read (cnc_rdsyssoft).
+    pub lookups: &'static [Lookup],
 }
 
 impl Func {

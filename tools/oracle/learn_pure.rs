@@ -1023,6 +1023,7 @@ pub struct Draft {
 fn int_name(i: Int) -> &'static str {
     match i {
         Int::I8 => "I8",
+        Int::Char => "Char",
         Int::U8 => "U8",
         Int::I16 => "I16",
         Int::U16 => "U16",
