@@ -1787,6 +1787,18 @@ typedef struct ODBSYSS3 {
 } ODBSYSS3;
 
 /*
+ cnc_rdsyssoft3_str: one software of the CNC: its ID, name, series and
+ edition (the bytes as the CNC sent them).
+ */
+typedef struct ODBSYSS3_STR {
+    short soft_id;
+    char soft_name[13];
+    char soft_series[5];
+    char soft_edition[5];
+    char dummy[3];
+} ODBSYSS3_STR;
+
+/*
  cnc_rdtimer: a timer as minutes and milliseconds.
  */
 typedef struct IODBTIME {
@@ -4461,6 +4473,24 @@ short cnc_rdsyssoft3(unsigned short FlibHndl,
                      short *num,
                      short *total,
                      struct ODBSYSS3 *syssoft);
+
+/*
+ Reads the CNC's software IDs, names, series and editions from the
+ `s_no`-th on: `*num` in is how many (sent as it is), out how many were
+ written (the count the CNC answered); `*total` is how many the CNC has.
+ The bytes are copied as the CNC sent them. Never more entries than asked
+ are written (FANUC's library writes as many as the CNC's count says).
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `total` must be NULL or point to a writable short.
+ `syssoft` must be NULL or point to `*num` writable ODBSYSS3_STR.
+ */
+short cnc_rdsyssoft3_str(unsigned short FlibHndl,
+                         short s_no,
+                         short *num,
+                         short *total,
+                         struct ODBSYSS3_STR *syssoft);
 
 /*
  Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4

@@ -10,7 +10,7 @@ use crate::ew::EW_LENGTH;
 use crate::proto::cmd;
 use crate::proto::cmd::{
     RDETHERINFO, RDFROMSERVOID, RDFROMSPINDLEID, RDSERVOID, RDSPINDLEID, RDSYSHARD, RDSYSSOFT,
-    RDSYSSOFT3,
+    RDSYSSOFT3, RDSYSSOFT3_STR,
 };
 use crate::proto::open::OpenBody;
 use crate::proto::position::SPINDLE_SHOWN15;
@@ -49,6 +49,7 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDETHERINFO, ether_info),
     Route::table(RDSYSHARD, boards),
     Route::table(RDSYSSOFT3, software),
+    Route::table(RDSYSSOFT3_STR, software),
     Route::table(RDSYSSOFT, slots_software),
     Route::table(RDSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
     Route::table(RDFROMSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
@@ -118,9 +119,10 @@ fn boards(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     Ok(v)
 }
 
-/// cnc_rdsyssoft3: the profile's software (`[system] software`) from
-/// `s_no` on, after their count and the total; series and edition are 4
-/// characters each (space-padded), then a 0.
+/// cnc_rdsyssoft3 / cnc_rdsyssoft3_str: the profile's software (`[system]
+/// software`) from `s_no` on, after their count and the total; series and
+/// edition are 4 characters each (space-padded), then a 0; for
+/// cnc_rdsyssoft3_str each with its name before them.
 fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let all = &m.profile.system.software;
     let max = q.f.records.map_or(0, |r| r.max);
@@ -133,10 +135,25 @@ fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
             _ => i64::from(b.get(i).copied().unwrap_or(b' ') as i8),
         })
     };
+    // cnc_rdsyssoft3_str's records: the name, NUL-padded in its field
+    // (13 bytes, cut to leave a NUL), before the series; 3 zero bytes after.
+    let named =
+        q.f.records
+            .is_some_and(|r| r.fields.iter().any(|f| f.to == Some("soft_name")));
     for s in got {
         v.push(i64::from(s.id));
+        if named {
+            let b = s.name.as_bytes();
+            v.extend((0..13).map(|i| match b.get(i) {
+                Some(c) if i < 12 => i64::from(*c as i8),
+                _ => 0,
+            }));
+        }
         v.extend(chars(&s.series));
         v.extend(chars(&s.edition));
+        if named {
+            v.extend([0; 3]);
+        }
     }
     Ok(v)
 }

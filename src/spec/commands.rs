@@ -338,6 +338,10 @@ commands! {
     /// cnc_rdsyshard: `(1,0x01b9)[s_no, num]`; the answer is a 32-bit count,
     /// then that many 20-byte boards.
     RDSYSHARD = CLASS_CNC 0x01b9 [cnc_rdsyshard];
+    /// cnc_rdsyssoft3_str: `(1,0x022e)[s_no, num]`; the answer is `{num,
+    /// total}` then `num` 28-byte entries {id, name\[13\], series\[5\],
+    /// edition\[5\], dummy\[3\]}.
+    RDSYSSOFT3_STR = CLASS_CNC 0x022e [cnc_rdsyssoft3_str];
     PDF_RDACTPT = CLASS_CNC 0x01ba [cnc_pdf_rdactpt];
     PDF_WRACTPT = CLASS_CNC 0x01bb [cnc_pdf_wractpt];
     /// cnc_rdtlusegrp on the 30i class: the optional group number of group

@@ -369,6 +369,18 @@ pub struct ODBSYSS3 {
     pub soft_edition: [c_char; 5],
 }
 
+/// cnc_rdsyssoft3_str: one software of the CNC: its ID, name, series and
+/// edition (the bytes as the CNC sent them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSYSS3_STR {
+    pub soft_id: c_short,
+    pub soft_name: [c_char; 13],
+    pub soft_series: [c_char; 5],
+    pub soft_edition: [c_char; 5],
+    pub dummy: [c_char; 3],
+}
+
 /// cnc_rdservoid / cnc_rdfromservoid: the specifications and serial
 /// numbers of an axis's servo motor, pulse coder, servo amplifier and
 /// power supply (characters as the CNC sent them).

@@ -1,5 +1,5 @@
 /* The system ID collector functions (cnc_rdsyshard, cnc_rdsyssoft3,
- * cnc_rdsyssoft, cnc_rdsyssoft2,
+ * cnc_rdsyssoft, cnc_rdsyssoft2, cnc_rdsyssoft3_str,
  * cnc_rdservoid, cnc_rdspindleid, cnc_rdfromservoid, cnc_rdfromspindleid), called
  * through the .so against focas-sim; the key=value lines it prints are
  * compared by tests/artifacts/c_examples/collectors_system_ids.rs with the
@@ -41,6 +41,19 @@ static void software(unsigned short h, const char *key, short s_no, short num) {
         printf("%s%d:%.4s:%.4s:%d%d", i ? "|" : "", s[i].soft_id, s[i].soft_series,
                s[i].soft_edition, s[i].soft_series[4], s[i].soft_edition[4]);
     printf("\n");
+}
+
+/* Software with names s_no.. (num asked): key=count,total;id:name:series:edition|... */
+static void software_str(unsigned short h, const char *key, short s_no, short num) {
+    ODBSYSS3_STR s[8];
+    short total = -1;
+    memset(s, 0xee, sizeof s);
+    check(key, cnc_rdsyssoft3_str(h, s_no, &num, &total, s));
+    printf("%s=%d,%d;", key, num, total);
+    for (int i = 0; i < num; i++)
+        printf("%s%d:%.13s:%.4s:%.4s", i ? "|" : "", s[i].soft_id, s[i].soft_name,
+               s[i].soft_series, s[i].soft_edition);
+    printf(";%s\n", num < 8 && s[num].soft_id == (short)0xeeee ? "untouched" : "written");
 }
 
 /* cnc_rdsyssoft / cnc_rdsyssoft2's common part (both structs begin alike):
@@ -97,6 +110,9 @@ int main(int argc, char **argv) {
     short total = 0;
     ODBSYSS3 two[2];
     printf("soft.zero=%d\n", cnc_rdsyssoft3(h, 0, &num, &total, two));
+
+    software_str(h, "softstr.all", 1, 8);
+    software_str(h, "softstr.second", 2, 1);
 
     /* The slots and their software, as cnc_rdsyssoft and cnc_rdsyssoft2 read them. */
     ODBSYSS ss;

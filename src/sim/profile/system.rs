@@ -70,12 +70,14 @@ pub struct Board {
     pub id2_format: i16,
 }
 
-/// One software: its ID, series and edition (4 characters each; the CNC
-/// sends a fifth byte after each, 0).
+/// One software: its ID, name, series and edition (4 characters each; the
+/// CNC sends a fifth byte after each, 0).
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Software {
     pub id: i16,
+    /// Its name (cnc_rdsyssoft3_str: 12 characters and a NUL at most).
+    pub name: String,
     pub series: String,
     pub edition: String,
 }
@@ -92,8 +94,9 @@ impl Default for System {
             id1_format: 0,
             id2_format: 0,
         };
-        let soft = |id, series: &str, edition: &str| Software {
+        let soft = |id, name: &str, series: &str, edition: &str| Software {
             id,
+            name: name.into(),
             series: series.into(),
             edition: edition.into(),
         };
@@ -104,12 +107,12 @@ impl Default for System {
                 board(2, 1, 1, 0x0002_0101, 0x0000_0001),
             ],
             software: vec![
-                soft(1, "G421", "08.0"),
-                soft(2, "90E0", "10.0"),
-                soft(3, "40A1", "05.0"),
-                soft(4, "60W3", "01.0"),
-                soft(5, "90D0", "24.0"),
-                soft(6, "40B1", "03.0"),
+                soft(1, "BASIC", "G421", "08.0"),
+                soft(2, "OPTION-A1", "90E0", "10.0"),
+                soft(3, "SUB CPU", "40A1", "05.0"),
+                soft(4, "BOOT", "60W3", "01.0"),
+                soft(5, "SERVO", "90D0", "24.0"),
+                soft(6, "PMC", "40B1", "03.0"),
             ],
             servo: (1..=3)
                 .map(|k| DriveId {

@@ -435,6 +435,43 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdsyssoft3_str",
+        learnt: Some(&[
+            "the answer's first word is the records' number, the second the total: disassembled, probed",
+        ]),
+        doc: "Reads the CNC's software IDs, names, series and editions from the `s_no`-th on: `*num` in is how many (sent as it is), out how many were written (the count the CNC answered); `*total` is how many the CNC has. The bytes are copied as the CNC sent them. Never more entries than asked are written (FANUC's library writes as many as the CNC's count says).",
+        params: &[
+            Param::Short("s_no"),
+            Param::Count("num"),
+            Param::Out("total", "short"),
+            Param::Out("syssoft", "ODBSYSS3_STR"),
+        ],
+        forms: &[every_class(
+            cmd::RDSYSSOFT3_STR,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: &[skip(I16), to_out(0, I16, "", I16)],
+        records: Some(Records {
+            fields: &[
+                to_out(1, I16, "soft_id", I16),
+                bytes(13, "soft_name"),
+                bytes(5, "soft_series"),
+                bytes(5, "soft_edition"),
+                bytes(3, "dummy"),
+            ],
+            out: 1,
+            to: "",
+            elem: "ODBSYSS3_STR",
+            // As many as one answer holds.
+            max: 50,
+            count: None,
+            room: None,
+        }),
+        counted: Some(0),
+        dims: &["1|0|-1|2|8|9|100", "4|0|-1|1|2|50|51|200"],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdservoid",
         learnt: Some(&[]),
         doc: "Reads the specification and serial number of the servo motor, pulse coder, servo amplifier and power supply of axis `axis` (`slct` sent as the second word); the characters as the CNC sent them.",
@@ -490,6 +527,18 @@ const fn chars(n: u16, to: &'static str) -> Field {
         wire: I8,
         n,
         out: 0,
+        to: Some(to),
+        c: I8,
+        arg: None,
+    }
+}
+
+/// `n` bytes of a record into output 1's member `to`, as sent.
+const fn bytes(n: u16, to: &'static str) -> Field {
+    Field {
+        wire: I8,
+        n,
+        out: 1,
         to: Some(to),
         c: I8,
         arg: None,

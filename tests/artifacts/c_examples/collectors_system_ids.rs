@@ -46,6 +46,23 @@ fn system_ids_follow_the_profile() {
     );
     assert_eq!(kv["soft.zero"], "3", "EW_NUMBER: s_no 0");
 
+    // cnc_rdsyssoft3_str: the same software with their names.
+    let named_soft = |k: usize| {
+        let s = &sys.software[k];
+        format!("{}:{}:{:4}:{:4}", s.id, s.name, s.series, s.edition)
+    };
+    assert!(
+        sys.software
+            .iter()
+            .all(|s| !s.name.is_empty() && s.name.len() <= 12)
+    );
+    let all: Vec<String> = (0..n).map(named_soft).collect();
+    assert_eq!(
+        kv["softstr.all"],
+        format!("{n},{n};{};untouched", all.join("|"))
+    );
+    assert_eq!(kv["softstr.second"], format!("1,{n};{};untouched", all[1]));
+
     // cnc_rdsyssoft / cnc_rdsyssoft2: the physical slots ascending, each
     // one's place in the profile's (logical) order, module and software ID,
     // and that software's series and edition (as cnc_rdsyssoft3 lists it);
