@@ -165,11 +165,10 @@ fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
 /// slots ascending then 0xff; module and software IDs at each slot's place
 /// in its bank; the logical table's words the physical slot in the high
 /// byte (0xffff unused); series and edition by logical slot; each named
-/// member its software's, unset characters 0xff; `soft_inst`; zeros
-/// elsewhere.
+/// pair (`SYSSOFT_PAIRS`) its software's, unset characters 0xff;
+/// `soft_inst`; zeros elsewhere.
 fn slots_software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
-    use crate::spec::Int;
-    use crate::spec::table::info::{LOGICAL, MODULES, SERIES, SLOTS, SOFTS};
+    use crate::spec::table::info::{LOGICAL, MODULES, SERIES, SLOTS, SOFTS, SYSSOFT_PAIRS};
     let sys = &m.profile.system;
     let slots = &sys.slots[..sys.slots.len().min(16)];
     let mut physical: Vec<u8> = slots.iter().map(|s| s.slot).collect();
@@ -221,24 +220,17 @@ fn slots_software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
                     chars(s)[i % 8]
                 })
                 .collect()
+        } else if let Some((_, names)) = SYSSOFT_PAIRS.iter().find(|(at, _)| *at == k) {
+            // Each named pair: its software's series, then its edition.
+            (names.iter())
+                .flat_map(|name| chars(sys.named.get(*name).copied()))
+                .take(n)
+                .collect()
+        } else if f.to == Some("soft_inst") {
+            vec![i64::from(sys.soft_inst)]
         } else {
-            match (f.to, f.arg, f.wire) {
-                (Some(member), None, Int::Char) => {
-                    // `boot_ser`: the series of the software named `boot`.
-                    let named = member
-                        .strip_suffix("_ser")
-                        .map(|x| (x, 0))
-                        .or_else(|| member.strip_suffix("_ver").map(|x| (x, 4)));
-                    let (id, at) = match named {
-                        Some((name, at)) => (sys.named.get(name).copied(), at),
-                        None => (None, 0),
-                    };
-                    chars(id)[at..at + n.min(4)].to_vec()
-                }
-                (Some("soft_inst"), None, _) => vec![i64::from(sys.soft_inst)],
-                // The NULs (ZERO fields) and the bytes nobody reads.
-                _ => vec![0; n],
-            }
+            // The bytes nobody reads.
+            vec![0; n]
         };
         v.extend(part);
     }

@@ -212,6 +212,8 @@ pub enum Key {
     /// The elements [`Lookup`] k (an index in `lookups`, an earlier one)
     /// wrote.
     Lookup(u8),
+    /// The element's own index i (a run of fixed places).
+    Own,
 }
 
 /// What a [`Lookup`] finds for a key (its low byte, `k`). A reply field

@@ -1515,7 +1515,8 @@ fn syssoft_lookups_follow_fanucs_loops() {
     let (l, rest) = tail.split_at(16);
     let (module, rest) = rest.split_at(16);
     let (soft, rest) = rest.split_at(16);
-    let (series, version) = rest.split_at(80);
+    let (series, rest) = rest.split_at(80);
+    let (version, pairs) = rest.split_at(80);
     let mut want = vec![-1i64; 16];
     want[..3].copy_from_slice(&[1, -1, 0]);
     assert_eq!(l, want, "slot_no_l: 0x05 has none");
@@ -1534,9 +1535,8 @@ fn syssoft_lookups_follow_fanucs_loops() {
     assert!(series[5..].iter().all(|x| *x == 0), "ended at slot 0x05");
     assert_eq!(text(&version[..5]), "2222\0");
     assert!(version[5..].iter().all(|x| *x == 0));
-    // boot_ser, as the fixed fields go: 4 characters, then a NUL.
-    let at: usize = f.reply[..8].iter().map(|x| usize::from(x.n)).sum();
-    assert_eq!(text(&v[at..at + 5]), "BOOT\0");
+    // The named pairs from boot_ser on: 4 characters, then a NUL.
+    assert_eq!(text(&pairs[..10]), "BOOT\0\0\0\0\0\0");
 }
 
 #[test]

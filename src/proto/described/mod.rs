@@ -322,6 +322,7 @@ pub fn lookups(f: &Func, reply: &[i64]) -> Vec<i64> {
         for i in 0..usize::from(l.n) {
             let key = match l.key {
                 Key::Field(k) => elem(k, i),
+                Key::Own => i as i64,
                 Key::Lookup(k) => match starts.get(usize::from(k)) {
                     Some(&s) if usize::from(k) < starts.len() - 1 => out[s + i],
                     _ => i64::from(l.end),

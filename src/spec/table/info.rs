@@ -5,47 +5,60 @@ use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
 
-/// The reply of cnc_rdsyssoft and cnc_rdsyssoft2 (command 0x0041), as
-/// FANUC's library reads it (payload offsets): the physical slots at 0
-/// (0xff ends the list), module IDs by physical slot at 16 (slots below
-/// 0x80) and 48, software IDs likewise at 80 and 112, the logical slots'
-/// table at 144 (16 words, the high byte a physical slot), series and
-/// version (4 + 4 characters) by logical slot at 208, boot, servo, PMC
-/// and ladder at 336, then two more pairs (into `reserve[6]` and
-/// `reserve[7]`) at 368, `soft_inst` the byte at 465, and from 472 on the
-/// pairs `$m`, each 4 characters (0xff as 0) into member `$m`, then a 0
-/// at `$z`. Field indices: [`SLOTS`] 0, [`MODULES`] 1/2, [`SOFTS`] 3/4,
-/// [`LOGICAL`] 5, [`SERIES`] 7.
-macro_rules! syssoft_reply {
-    ($($m:literal $z:literal)*) => {
-        &[
-            Field { wire: I8, n: 16, out: 0, to: Some("slot_no_p"), c: I8, arg: None },
-            skips(I16, 16),
-            skips(I16, 16),
-            skips(I16, 16),
-            skips(I16, 16),
-            skips(U8, 32),
-            skips(U8, 32),
-            skips(Char, 128),
-            chars4("boot_ser"), zero("boot_ser[4]", I8),
-            chars4("boot_ver"), zero("boot_ver[4]", I8),
-            chars4("servo_ser"), zero("servo_ser[4]", I8),
-            chars4("servo_ver"), zero("servo_ver[4]", I8),
-            chars4("pmc_ser"), zero("pmc_ser[4]", I8),
-            chars4("pmc_ver"), zero("pmc_ver[4]", I8),
-            chars4("ladder_ser"), zero("ladder_ser[4]", I8),
-            chars4("ladder_ver"), zero("ladder_ver[4]", I8),
-            chars4("reserve[30]"), zero("reserve[34]", I8),
-            chars4("reserve[35]"), zero("reserve[39]", I8),
-            skips(U8, 89),
-            to(U8, "soft_inst", I16),
-            skips(U8, 6),
-            $(chars4($m), zero($z, I8),)*
-        ]
-    };
-}
+/// The reply of cnc_rdsyssoft (its 664 bytes; cnc_rdsyssoft2 reads 160
+/// more, [`SYSSOFT2_MORE`]) as FANUC's library reads it (payload offsets):
+/// the physical slots at 0 (0xff ends the list), module IDs by physical
+/// slot at 16 (slots below 0x80) and 48, software IDs likewise at 80 and
+/// 112, the logical slots' table at 144 (16 words, the high byte a physical
+/// slot), series and version (4 + 4 characters) by logical slot at 208, the
+/// pairs of boot, servo, PMC and ladder at 336, two more pairs at 368,
+/// `soft_inst` the byte at 465, and 24 pairs from 472 on. Every character
+/// 0xff reads as 0 ([`Int::Char`]); the pairs go to the members by the
+/// lookups ([`SYSSOFT_LOOKUPS`]).
+const SYSSOFT_REPLY: &[Field] = &[
+    Field {
+        wire: I8,
+        n: 16,
+        out: 0,
+        to: Some("slot_no_p"),
+        c: I8,
+        arg: None,
+    },
+    skips(I16, 16),
+    skips(I16, 16),
+    skips(I16, 16),
+    skips(I16, 16),
+    skips(U8, 32),
+    skips(U8, 32),
+    skips(Char, 128),
+    skips(Char, 32),
+    skips(Char, 8),
+    skips(U8, 89),
+    to(U8, "soft_inst", I16),
+    skips(U8, 6),
+    skips(Char, 192),
+];
 
-/// [`syssoft_reply`]'s field of the physical slots.
+/// cnc_rdsyssoft2's reply: cnc_rdsyssoft's, then 20 more pairs from 664.
+const SYSSOFT2_REPLY: &[Field] = &[
+    SYSSOFT_REPLY[0],
+    SYSSOFT_REPLY[1],
+    SYSSOFT_REPLY[2],
+    SYSSOFT_REPLY[3],
+    SYSSOFT_REPLY[4],
+    SYSSOFT_REPLY[5],
+    SYSSOFT_REPLY[6],
+    SYSSOFT_REPLY[7],
+    SYSSOFT_REPLY[8],
+    SYSSOFT_REPLY[9],
+    SYSSOFT_REPLY[10],
+    SYSSOFT_REPLY[11],
+    SYSSOFT_REPLY[12],
+    SYSSOFT_REPLY[13],
+    skips(Char, 160),
+];
+
+/// [`SYSSOFT_REPLY`]'s field of the physical slots.
 pub const SLOTS: u8 = 0;
 /// Its fields of the module IDs (slots below 0x80, then from 0x80).
 pub const MODULES: (u8, u8) = (1, 2);
@@ -57,12 +70,53 @@ pub const LOGICAL: u8 = 5;
 /// Its field of the series and versions by logical slot (8 characters
 /// each).
 pub const SERIES: u8 = 7;
+/// The fields of named pairs (a series, then a version, 4 characters
+/// each), in wire order, and whose pairs they are (the members' names less
+/// `_ser`/`_ver`; `""`: a reserved pair); the pairs go to consecutive
+/// 5-byte members: field 8 from `boot_ser` on, 9 to `reserve[6]` and
+/// `reserve[7]`, 13 from `mcrlib_ser` (to `reserve[5]`), cnc_rdsyssoft2's
+/// 14 from `embEthe_ser`.
+pub const SYSSOFT_PAIRS: &[(u8, &[&str])] = &[
+    (8, &["boot", "servo", "pmc", "ladder"]),
+    (9, &["", ""]),
+    (13, NAMES13),
+    (14, NAMES14),
+];
+const NAMES13: &[&str] = &[
+    "mcrlib",
+    "mcrapl",
+    "spl1",
+    "spl2",
+    "spl3",
+    "c_exelib",
+    "c_exeapl",
+    "int_vga",
+    "out_vga",
+    "pmm",
+    "pmc_mng",
+    "pmc_shin",
+    "pmc_shout",
+    "pmc_c",
+    "pmc_edit",
+    "lddr_mng",
+    "lddr_apl",
+    "spl4",
+    "mcr2",
+    "mcr3",
+    "eth_boot",
+    "",
+    "",
+    "",
+];
+const NAMES14: &[&str] = &[
+    "embEthe", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "", "",
+];
 
 /// FANUC's library's lookups of cnc_rdsyssoft and cnc_rdsyssoft2: each
 /// physical slot's logical slot (its index in the logical table; 0xff
 /// none), module and software IDs by physical slot (0xffff past the
 /// list), series and version by logical slot (zeros from the first slot
-/// without one).
+/// without one); then the named pairs, each 4 characters and a NUL.
 const SYSSOFT_LOOKUPS: &[Lookup] = &[
     Lookup {
         to: "slot_no_l",
@@ -131,7 +185,42 @@ const SYSSOFT_LOOKUPS: &[Lookup] = &[
             width: 4,
         },
     },
+    pairs("boot_ser", 8, 8),
+    pairs("reserve[30]", 9, 2),
+    pairs("mcrlib_ser", 13, 48),
 ];
+
+/// cnc_rdsyssoft2's lookups: cnc_rdsyssoft's, then its 20 more pairs.
+const SYSSOFT2_LOOKUPS: &[Lookup] = &[
+    SYSSOFT_LOOKUPS[0],
+    SYSSOFT_LOOKUPS[1],
+    SYSSOFT_LOOKUPS[2],
+    SYSSOFT_LOOKUPS[3],
+    SYSSOFT_LOOKUPS[4],
+    SYSSOFT_LOOKUPS[5],
+    SYSSOFT_LOOKUPS[6],
+    SYSSOFT_LOOKUPS[7],
+    pairs("embEthe_ser", 14, 40),
+];
+
+/// `n` runs of 4 characters of reply field `field`, each then a NUL, into
+/// consecutive 5-byte members from `to` on.
+const fn pairs(to: &'static str, field: u8, n: u16) -> Lookup {
+    Lookup {
+        to,
+        c: I8,
+        n,
+        fill: 0,
+        key: Key::Own,
+        end: 0xff,
+        pick: Pick::Chars {
+            field,
+            stride: 4,
+            at: 0,
+            width: 4,
+        },
+    }
+}
 
 /// `n` reply integers nobody reads as they are (a lookup's table).
 const fn skips(wire: Int, n: u16) -> Field {
@@ -141,18 +230,6 @@ const fn skips(wire: Int, n: u16) -> Field {
         out: 0,
         to: None,
         c: wire,
-        arg: None,
-    }
-}
-
-/// 4 characters into member `to`, 0xff read as 0.
-const fn chars4(to: &'static str) -> Field {
-    Field {
-        wire: Char,
-        n: 4,
-        out: 0,
-        to: Some(to),
-        c: I8,
         arg: None,
     }
 }
@@ -280,56 +357,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the CNC's slots and software: the physical slots as sent (0xff ends the list), each one's logical slot (its place in the CNC's logical table; 0xff none), module and software ID (0xffff past the list), the series and version of the software on each, then the named software's series and versions (4 characters, 0xff as 0, then a NUL).",
         params: &[Param::Out("syssoft", "ODBSYSS")],
         forms: &[every_class(cmd::RDSYSSOFT, &[])],
-        reply: syssoft_reply!(
-            "mcrlib_ser" "mcrlib_ser[4]"
-            "mcrlib_ver" "mcrlib_ver[4]"
-            "mcrapl_ser" "mcrapl_ser[4]"
-            "mcrapl_ver" "mcrapl_ver[4]"
-            "spl1_ser" "spl1_ser[4]"
-            "spl1_ver" "spl1_ver[4]"
-            "spl2_ser" "spl2_ser[4]"
-            "spl2_ver" "spl2_ver[4]"
-            "spl3_ser" "spl3_ser[4]"
-            "spl3_ver" "spl3_ver[4]"
-            "c_exelib_ser" "c_exelib_ser[4]"
-            "c_exelib_ver" "c_exelib_ver[4]"
-            "c_exeapl_ser" "c_exeapl_ser[4]"
-            "c_exeapl_ver" "c_exeapl_ver[4]"
-            "int_vga_ser" "int_vga_ser[4]"
-            "int_vga_ver" "int_vga_ver[4]"
-            "out_vga_ser" "out_vga_ser[4]"
-            "out_vga_ver" "out_vga_ver[4]"
-            "pmm_ser" "pmm_ser[4]"
-            "pmm_ver" "pmm_ver[4]"
-            "pmc_mng_ser" "pmc_mng_ser[4]"
-            "pmc_mng_ver" "pmc_mng_ver[4]"
-            "pmc_shin_ser" "pmc_shin_ser[4]"
-            "pmc_shin_ver" "pmc_shin_ver[4]"
-            "pmc_shout_ser" "pmc_shout_ser[4]"
-            "pmc_shout_ver" "pmc_shout_ver[4]"
-            "pmc_c_ser" "pmc_c_ser[4]"
-            "pmc_c_ver" "pmc_c_ver[4]"
-            "pmc_edit_ser" "pmc_edit_ser[4]"
-            "pmc_edit_ver" "pmc_edit_ver[4]"
-            "lddr_mng_ser" "lddr_mng_ser[4]"
-            "lddr_mng_ver" "lddr_mng_ver[4]"
-            "lddr_apl_ser" "lddr_apl_ser[4]"
-            "lddr_apl_ver" "lddr_apl_ver[4]"
-            "spl4_ser" "spl4_ser[4]"
-            "spl4_ver" "spl4_ver[4]"
-            "mcr2_ser" "mcr2_ser[4]"
-            "mcr2_ver" "mcr2_ver[4]"
-            "mcr3_ser" "mcr3_ser[4]"
-            "mcr3_ver" "mcr3_ver[4]"
-            "eth_boot_ser" "eth_boot_ser[4]"
-            "eth_boot_ver" "eth_boot_ver[4]"
-            "reserve[0]" "reserve[4]"
-            "reserve[5]" "reserve[9]"
-            "reserve[10]" "reserve[14]"
-            "reserve[15]" "reserve[19]"
-            "reserve[20]" "reserve[24]"
-            "reserve[25]" "reserve[29]"
-        ),
+        reply: SYSSOFT_REPLY,
         lookups: SYSSOFT_LOOKUPS,
         ..COMMAND
     },
@@ -341,97 +369,8 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the CNC's slots and software as cnc_rdsyssoft, then the embedded Ethernet's series and version and the reserved pairs after it.",
         params: &[Param::Out("syssoft", "ODBSYSS2")],
         forms: &[every_class(cmd::RDSYSSOFT, &[])],
-        reply: syssoft_reply!(
-            "mcrlib_ser" "mcrlib_ser[4]"
-            "mcrlib_ver" "mcrlib_ver[4]"
-            "mcrapl_ser" "mcrapl_ser[4]"
-            "mcrapl_ver" "mcrapl_ver[4]"
-            "spl1_ser" "spl1_ser[4]"
-            "spl1_ver" "spl1_ver[4]"
-            "spl2_ser" "spl2_ser[4]"
-            "spl2_ver" "spl2_ver[4]"
-            "spl3_ser" "spl3_ser[4]"
-            "spl3_ver" "spl3_ver[4]"
-            "c_exelib_ser" "c_exelib_ser[4]"
-            "c_exelib_ver" "c_exelib_ver[4]"
-            "c_exeapl_ser" "c_exeapl_ser[4]"
-            "c_exeapl_ver" "c_exeapl_ver[4]"
-            "int_vga_ser" "int_vga_ser[4]"
-            "int_vga_ver" "int_vga_ver[4]"
-            "out_vga_ser" "out_vga_ser[4]"
-            "out_vga_ver" "out_vga_ver[4]"
-            "pmm_ser" "pmm_ser[4]"
-            "pmm_ver" "pmm_ver[4]"
-            "pmc_mng_ser" "pmc_mng_ser[4]"
-            "pmc_mng_ver" "pmc_mng_ver[4]"
-            "pmc_shin_ser" "pmc_shin_ser[4]"
-            "pmc_shin_ver" "pmc_shin_ver[4]"
-            "pmc_shout_ser" "pmc_shout_ser[4]"
-            "pmc_shout_ver" "pmc_shout_ver[4]"
-            "pmc_c_ser" "pmc_c_ser[4]"
-            "pmc_c_ver" "pmc_c_ver[4]"
-            "pmc_edit_ser" "pmc_edit_ser[4]"
-            "pmc_edit_ver" "pmc_edit_ver[4]"
-            "lddr_mng_ser" "lddr_mng_ser[4]"
-            "lddr_mng_ver" "lddr_mng_ver[4]"
-            "lddr_apl_ser" "lddr_apl_ser[4]"
-            "lddr_apl_ver" "lddr_apl_ver[4]"
-            "spl4_ser" "spl4_ser[4]"
-            "spl4_ver" "spl4_ver[4]"
-            "mcr2_ser" "mcr2_ser[4]"
-            "mcr2_ver" "mcr2_ver[4]"
-            "mcr3_ser" "mcr3_ser[4]"
-            "mcr3_ver" "mcr3_ver[4]"
-            "eth_boot_ser" "eth_boot_ser[4]"
-            "eth_boot_ver" "eth_boot_ver[4]"
-            "reserve[0]" "reserve[4]"
-            "reserve[5]" "reserve[9]"
-            "reserve[10]" "reserve[14]"
-            "reserve[15]" "reserve[19]"
-            "reserve[20]" "reserve[24]"
-            "reserve[25]" "reserve[29]"
-            "embEthe_ser" "embEthe_ser[4]"
-            "embEthe_ver" "embEthe_ver[4]"
-            "reserve2[0]" "reserve2[4]"
-            "reserve2[5]" "reserve2[9]"
-            "reserve2[10]" "reserve2[14]"
-            "reserve2[15]" "reserve2[19]"
-            "reserve2[20]" "reserve2[24]"
-            "reserve2[25]" "reserve2[29]"
-            "reserve2[30]" "reserve2[34]"
-            "reserve2[35]" "reserve2[39]"
-            "reserve2[40]" "reserve2[44]"
-            "reserve2[45]" "reserve2[49]"
-            "reserve2[50]" "reserve2[54]"
-            "reserve2[55]" "reserve2[59]"
-            "reserve2[60]" "reserve2[64]"
-            "reserve2[65]" "reserve2[69]"
-            "reserve2[70]" "reserve2[74]"
-            "reserve2[75]" "reserve2[79]"
-            "reserve2[80]" "reserve2[84]"
-            "reserve2[85]" "reserve2[89]"
-            "reserve2[90]" "reserve2[94]"
-            "reserve2[95]" "reserve2[99]"
-            "reserve2[100]" "reserve2[104]"
-            "reserve2[105]" "reserve2[109]"
-            "reserve2[110]" "reserve2[114]"
-            "reserve2[115]" "reserve2[119]"
-            "reserve2[120]" "reserve2[124]"
-            "reserve2[125]" "reserve2[129]"
-            "reserve2[130]" "reserve2[134]"
-            "reserve2[135]" "reserve2[139]"
-            "reserve2[140]" "reserve2[144]"
-            "reserve2[145]" "reserve2[149]"
-            "reserve2[150]" "reserve2[154]"
-            "reserve2[155]" "reserve2[159]"
-            "reserve2[160]" "reserve2[164]"
-            "reserve2[165]" "reserve2[169]"
-            "reserve2[170]" "reserve2[174]"
-            "reserve2[175]" "reserve2[179]"
-            "reserve2[180]" "reserve2[184]"
-            "reserve2[185]" "reserve2[189]"
-        ),
-        lookups: SYSSOFT_LOOKUPS,
+        reply: SYSSOFT2_REPLY,
+        lookups: SYSSOFT2_LOOKUPS,
         ..COMMAND
     },
     Func {
