@@ -464,6 +464,23 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 _ => None,
             })
             .collect();
+        // Lookups (types::Lookup): their members' offsets after the reply
+        // fields'; each whole array must fit in output 0.
+        for l in f.lookups {
+            let (_, ty) = outs[0];
+            let off = member_offset(&rust_type(ty), l.to, l.c.size());
+            let len = l.c.size() * l.values();
+            assert!(
+                f.records.is_none() && c_size(ty).is_none(),
+                "src/spec/table/: {}: lookups go to a struct, without records",
+                f.name
+            );
+            checks.push(format!(
+                "const _: () = if {off} + {len} > size_of::<{ty}>() {{\n    panic!(\"{}: a lookup does not fit in {ty}\")\n}};\n",
+                f.name
+            ));
+            offsets.push(off);
+        }
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
@@ -752,6 +769,8 @@ fn member_offset(ty: &str, m: &str, size: usize) -> String {
             match name {
                 // An element of the array the record element itself is.
                 "" => (i * size).to_string(),
+                // Element 0: the member's own offset (no `+ 0`).
+                name if i == 0 => format!("offset_of!({ty}, {})", ident(name)),
                 name => format!("offset_of!({ty}, {}) + {}", ident(name), i * size),
             }
         }

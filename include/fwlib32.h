@@ -1641,6 +1641,142 @@ typedef struct ODBSYSH {
 } ODBSYSH;
 
 /*
+ cnc_rdsyssoft: the CNC's slots (physical `slot_no_p`, 0xff ending the
+ list; logical `slot_no_l`), the module and software ID of each, the
+ series and version of the software on each (4 characters, then a NUL),
+ and the series and version of the named software (boot, servo, PMC,
+ ladder, macro, C executor, ...).
+ */
+typedef struct ODBSYSS {
+    char slot_no_p[16];
+    char slot_no_l[16];
+    short module_id[16];
+    short soft_id[16];
+    char soft_series[16][5];
+    char soft_version[16][5];
+    short soft_inst;
+    char boot_ser[5];
+    char boot_ver[5];
+    char servo_ser[5];
+    char servo_ver[5];
+    char pmc_ser[5];
+    char pmc_ver[5];
+    char ladder_ser[5];
+    char ladder_ver[5];
+    char mcrlib_ser[5];
+    char mcrlib_ver[5];
+    char mcrapl_ser[5];
+    char mcrapl_ver[5];
+    char spl1_ser[5];
+    char spl1_ver[5];
+    char spl2_ser[5];
+    char spl2_ver[5];
+    char spl3_ser[5];
+    char spl3_ver[5];
+    char c_exelib_ser[5];
+    char c_exelib_ver[5];
+    char c_exeapl_ser[5];
+    char c_exeapl_ver[5];
+    char int_vga_ser[5];
+    char int_vga_ver[5];
+    char out_vga_ser[5];
+    char out_vga_ver[5];
+    char pmm_ser[5];
+    char pmm_ver[5];
+    char pmc_mng_ser[5];
+    char pmc_mng_ver[5];
+    char pmc_shin_ser[5];
+    char pmc_shin_ver[5];
+    char pmc_shout_ser[5];
+    char pmc_shout_ver[5];
+    char pmc_c_ser[5];
+    char pmc_c_ver[5];
+    char pmc_edit_ser[5];
+    char pmc_edit_ver[5];
+    char lddr_mng_ser[5];
+    char lddr_mng_ver[5];
+    char lddr_apl_ser[5];
+    char lddr_apl_ver[5];
+    char spl4_ser[5];
+    char spl4_ver[5];
+    char mcr2_ser[5];
+    char mcr2_ver[5];
+    char mcr3_ser[5];
+    char mcr3_ver[5];
+    char eth_boot_ser[5];
+    char eth_boot_ver[5];
+    char reserve[8][5];
+} ODBSYSS;
+
+/*
+ cnc_rdsyssoft2: ODBSYSS, then the embedded Ethernet's series and
+ version and more reserved entries.
+ */
+typedef struct ODBSYSS2 {
+    char slot_no_p[16];
+    char slot_no_l[16];
+    short module_id[16];
+    short soft_id[16];
+    char soft_series[16][5];
+    char soft_version[16][5];
+    short soft_inst;
+    char boot_ser[5];
+    char boot_ver[5];
+    char servo_ser[5];
+    char servo_ver[5];
+    char pmc_ser[5];
+    char pmc_ver[5];
+    char ladder_ser[5];
+    char ladder_ver[5];
+    char mcrlib_ser[5];
+    char mcrlib_ver[5];
+    char mcrapl_ser[5];
+    char mcrapl_ver[5];
+    char spl1_ser[5];
+    char spl1_ver[5];
+    char spl2_ser[5];
+    char spl2_ver[5];
+    char spl3_ser[5];
+    char spl3_ver[5];
+    char c_exelib_ser[5];
+    char c_exelib_ver[5];
+    char c_exeapl_ser[5];
+    char c_exeapl_ver[5];
+    char int_vga_ser[5];
+    char int_vga_ver[5];
+    char out_vga_ser[5];
+    char out_vga_ver[5];
+    char pmm_ser[5];
+    char pmm_ver[5];
+    char pmc_mng_ser[5];
+    char pmc_mng_ver[5];
+    char pmc_shin_ser[5];
+    char pmc_shin_ver[5];
+    char pmc_shout_ser[5];
+    char pmc_shout_ver[5];
+    char pmc_c_ser[5];
+    char pmc_c_ver[5];
+    char pmc_edit_ser[5];
+    char pmc_edit_ver[5];
+    char lddr_mng_ser[5];
+    char lddr_mng_ver[5];
+    char lddr_apl_ser[5];
+    char lddr_apl_ver[5];
+    char spl4_ser[5];
+    char spl4_ver[5];
+    char mcr2_ser[5];
+    char mcr2_ver[5];
+    char mcr3_ser[5];
+    char mcr3_ver[5];
+    char eth_boot_ser[5];
+    char eth_boot_ver[5];
+    char reserve[8][5];
+    char embEthe_ser[5];
+    char embEthe_ver[5];
+    char reserve2[38][5];
+} ODBSYSS2;
+
+/*
  cnc_rdsyssoft3: one software of the CNC: its ID, series and edition
  (four characters each, then a fifth byte as the CNC sent it).
  */
@@ -1649,6 +1785,18 @@ typedef struct ODBSYSS3 {
     char soft_series[5];
     char soft_edition[5];
 } ODBSYSS3;
+
+/*
+ cnc_rdsyssoft3_str: one software of the CNC: its ID, name, series and
+ edition (the bytes as the CNC sent them).
+ */
+typedef struct ODBSYSS3_STR {
+    short soft_id;
+    char soft_name[13];
+    char soft_series[5];
+    char soft_edition[5];
+    char dummy[3];
+} ODBSYSS3_STR;
 
 /*
  cnc_rdtimer: a timer as minutes and milliseconds.
@@ -4344,6 +4492,27 @@ short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *
 short cnc_rdsyshard(unsigned short FlibHndl, short s_no, short *num, struct ODBSYSH *syshard);
 
 /*
+ Reads the CNC's slots and software: the physical slots as sent (0xff
+ ends the list), each one's logical slot (its place in the CNC's logical
+ table; 0xff none), module and software ID (0xffff past the list), the
+ series and version of the software on each, then the named software's
+ series and versions (4 characters, 0xff as 0, then a NUL).
+
+ # Safety
+ `syssoft` must be NULL or point to a writable ODBSYSS.
+ */
+short cnc_rdsyssoft(unsigned short FlibHndl, struct ODBSYSS *syssoft);
+
+/*
+ Reads the CNC's slots and software as cnc_rdsyssoft, then the embedded
+ Ethernet's series and version and the reserved pairs after it.
+
+ # Safety
+ `syssoft` must be NULL or point to a writable ODBSYSS2.
+ */
+short cnc_rdsyssoft2(unsigned short FlibHndl, struct ODBSYSS2 *syssoft);
+
+/*
  Reads the CNC's software series and editions from the `s_no`-th on:
  `*num` in is how many (sent as it is), out how many were written (the
  count the CNC answered); `*total` is how many the CNC has. Never more
@@ -4360,6 +4529,24 @@ short cnc_rdsyssoft3(unsigned short FlibHndl,
                      short *num,
                      short *total,
                      struct ODBSYSS3 *syssoft);
+
+/*
+ Reads the CNC's software IDs, names, series and editions from the
+ `s_no`-th on: `*num` in is how many (sent as it is), out how many were
+ written (the count the CNC answered); `*total` is how many the CNC has.
+ The bytes are copied as the CNC sent them. Never more entries than asked
+ are written (FANUC's library writes as many as the CNC's count says).
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `total` must be NULL or point to a writable short.
+ `syssoft` must be NULL or point to `*num` writable ODBSYSS3_STR.
+ */
+short cnc_rdsyssoft3_str(unsigned short FlibHndl,
+                         short s_no,
+                         short *num,
+                         short *total,
+                         struct ODBSYSS3_STR *syssoft);
 
 /*
  Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4

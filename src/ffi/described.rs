@@ -251,11 +251,14 @@ pub(crate) unsafe fn exec(
         text: &fields,
         late: Some(&late),
     };
-    let values = if form.class == CLASS_PMC {
+    let mut values = if form.class == CLASS_PMC {
         h.call_pmc(&call)?
     } else {
         h.call(&call)?
     };
+    // The lookups' integers follow the reply's (decode).
+    let looked: usize = f.lookups.iter().map(|l| l.values()).sum();
+    let looked = values.split_off(values.len().saturating_sub(looked));
     if let Some(r) = f.records.as_ref().filter(|r| r.room.is_some()) {
         let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
         let n = values.len().saturating_sub(fixed) / r.values().max(1);
@@ -295,6 +298,20 @@ pub(crate) unsafe fn exec(
     let mut v = values.into_iter();
     // SAFETY: the caller's contract (offsets and elements in the outputs).
     unsafe { write_fields(f.reply, outs, |k| offsets[k], &mut v) };
+    let mut l = looked.into_iter();
+    for (k, x) in f.lookups.iter().enumerate() {
+        let all = [Field {
+            wire: x.c,
+            n: x.values() as u16,
+            out: 0,
+            to: Some(x.to),
+            c: x.c,
+            arg: None,
+        }];
+        // SAFETY: the caller's contract: the lookup's offset (after the
+        // reply fields') and its elements lie in output 0 (build.rs).
+        unsafe { write_fields(&all, outs, |_| offsets[f.reply.len() + k], &mut l) };
+    }
     if let Some(e) = late.into_inner().ok().flatten() {
         h.note(&e);
         return Err(e);
@@ -513,7 +530,7 @@ unsafe fn write_fields(
             unsafe {
                 let p = outs[field.out as usize].add(at(k) + e * field.c.size());
                 match field.c {
-                    Int::I8 => put(p.cast::<i8>(), x as i8),
+                    Int::I8 | Int::IdChar => put(p.cast::<i8>(), x as i8),
                     Int::U8 | Int::Char => put(p, x as u8),
                     Int::I16 => put(p.cast::<i16>(), x as i16),
                     Int::U16 => put(p.cast::<u16>(), x as u16),

@@ -9,7 +9,8 @@ use super::service::{CncError, Reply};
 use crate::ew::EW_LENGTH;
 use crate::proto::cmd;
 use crate::proto::cmd::{
-    RDETHERINFO, RDFROMSERVOID, RDFROMSPINDLEID, RDSERVOID, RDSPINDLEID, RDSYSHARD, RDSYSSOFT3,
+    RDETHERINFO, RDFROMSERVOID, RDFROMSPINDLEID, RDSERVOID, RDSPINDLEID, RDSYSHARD, RDSYSSOFT,
+    RDSYSSOFT3, RDSYSSOFT3_STR,
 };
 use crate::proto::open::OpenBody;
 use crate::proto::position::SPINDLE_SHOWN15;
@@ -49,6 +50,8 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDETHERINFO, ether_info),
     Route::table(RDSYSHARD, boards),
     Route::table(RDSYSSOFT3, software),
+    Route::table(RDSYSSOFT3_STR, software),
+    Route::table(RDSYSSOFT, slots_software),
     Route::table(RDSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
     Route::table(RDFROMSERVOID, |m, q| drive_id(&m.profile.system.servo, q)),
     Route::table(RDSPINDLEID, |m, q| drive_id(&m.profile.system.spindle, q)),
@@ -117,9 +120,10 @@ fn boards(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     Ok(v)
 }
 
-/// cnc_rdsyssoft3: the profile's software (`[system] software`) from
-/// `s_no` on, after their count and the total; series and edition are 4
-/// characters each (space-padded), then a 0.
+/// cnc_rdsyssoft3 / cnc_rdsyssoft3_str: the profile's software (`[system]
+/// software`) from `s_no` on, after their count and the total; series and
+/// edition are 4 characters each (space-padded), then a 0; for
+/// cnc_rdsyssoft3_str each with its name before them.
 fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let all = &m.profile.system.software;
     let max = q.f.records.map_or(0, |r| r.max);
@@ -132,10 +136,104 @@ fn software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
             _ => i64::from(b.get(i).copied().unwrap_or(b' ') as i8),
         })
     };
+    // cnc_rdsyssoft3_str's records: the name, NUL-padded in its field
+    // (13 bytes, cut to leave a NUL), before the series; 3 zero bytes after.
+    let named =
+        q.f.records
+            .is_some_and(|r| r.fields.iter().any(|f| f.to == Some("soft_name")));
     for s in got {
         v.push(i64::from(s.id));
+        if named {
+            let b = s.name.as_bytes();
+            v.extend((0..13).map(|i| match b.get(i) {
+                Some(c) if i < 12 => i64::from(*c as i8),
+                _ => 0,
+            }));
+        }
         v.extend(chars(&s.series));
         v.extend(chars(&s.edition));
+        if named {
+            v.extend([0; 3]);
+        }
+    }
+    Ok(v)
+}
+
+/// cnc_rdsyssoft / cnc_rdsyssoft2: the profile's slots (`[system] slot`,
+/// logical order) and named software (`named`), each software's series and
+/// edition from `software` (so cnc_rdsyssoft3 lists them alike), walked
+/// along the reply's fields (the longer cnc_rdsyssoft2's): the physical
+/// slots ascending then 0xff; module and software IDs at each slot's place
+/// in its bank; the logical table's words the physical slot in the high
+/// byte (0xffff unused); series and edition by logical slot; each named
+/// pair (`SYSSOFT_PAIRS`) its software's, unset characters 0xff;
+/// `soft_inst`; zeros elsewhere.
+fn slots_software(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    use crate::spec::table::info::{LOGICAL, MODULES, SERIES, SLOTS, SOFTS, SYSSOFT_PAIRS};
+    let sys = &m.profile.system;
+    let slots = &sys.slots[..sys.slots.len().min(16)];
+    let mut physical: Vec<u8> = slots.iter().map(|s| s.slot).collect();
+    physical.sort_unstable();
+    // A software's 8 characters: series then edition, 0xff unset.
+    let chars = |id: Option<i16>| -> [i64; 8] {
+        let s = id.and_then(|id| sys.software.iter().find(|s| s.id == id));
+        std::array::from_fn(|i| {
+            let text = s.map(|s| if i < 4 { &s.series } else { &s.edition });
+            text.and_then(|t| t.as_bytes().get(i % 4).copied())
+                .map_or(-1, |c| i64::from(c as i8))
+        })
+    };
+    // Reply field k's `n` integers by ID (`id` of a slot) at each slot's
+    // place in bank `high`.
+    let by_slot = |n: usize, high: bool, id: fn(&super::profile::system::Slot) -> i16| {
+        let mut w = vec![0; n];
+        for s in slots.iter().filter(|s| (s.slot >= 0x80) == high) {
+            if let Some(x) = w.get_mut(usize::from(s.slot & 0xf)) {
+                *x = i64::from(id(s));
+            }
+        }
+        w
+    };
+    let mut v = Vec::new();
+    for (k, f) in q.f.reply.iter().enumerate() {
+        let n = usize::from(f.n);
+        let k = k as u8;
+        let part: Vec<i64> = if k == SLOTS {
+            (0..n)
+                .map(|i| physical.get(i).map_or(-1, |s| i64::from(*s as i8)))
+                .collect()
+        } else if k == MODULES.0 || k == MODULES.1 {
+            by_slot(n, k == MODULES.1, |s| s.module_id)
+        } else if k == SOFTS.0 || k == SOFTS.1 {
+            by_slot(n, k == SOFTS.1, |s| s.software)
+        } else if k == LOGICAL {
+            (0..n)
+                .map(|i| match (i % 2, slots.get(i / 2)) {
+                    (0, Some(s)) => i64::from(s.slot),
+                    (_, Some(_)) => 0,
+                    (_, None) => 0xff,
+                })
+                .collect()
+        } else if k == SERIES {
+            (0..n)
+                .map(|i| {
+                    let s = slots.get(i / 8).map(|s| s.software);
+                    chars(s)[i % 8]
+                })
+                .collect()
+        } else if let Some((_, names)) = SYSSOFT_PAIRS.iter().find(|(at, _)| *at == k) {
+            // Each named pair: its software's series, then its edition.
+            (names.iter())
+                .flat_map(|name| chars(sys.named.get(*name).copied()))
+                .take(n)
+                .collect()
+        } else if f.to == Some("soft_inst") {
+            vec![i64::from(sys.soft_inst)]
+        } else {
+            // The bytes nobody reads.
+            vec![0; n]
+        };
+        v.extend(part);
     }
     Ok(v)
 }

@@ -154,6 +154,9 @@ commands! {
     /// Spindle data: args [code, spindle]; value records.
     SPINDLE = CLASS_CNC 0x0040 [cnc_acts2 cnc_rdspmeter cnc_rdspload cnc_rdspmaxrpm cnc_rdspgear
         cnc_rdaxisdata];
+    /// cnc_rdsyssoft / cnc_rdsyssoft2: no arguments; a fixed answer of
+    /// slot tables, IDs and 4-character series/versions (docs/protocol/machine.md).
+    RDSYSSOFT = CLASS_CNC 0x0041 [cnc_rdsyssoft cnc_rdsyssoft2];
     /// cnc_rdprstrinfo: (1,0x0043)\[k\] for k 0..4 (block counter, M, T, S and
     /// B codes), then the position command 0x0026 [13, -1] (restart position)
     /// and [14, -1] (distance to it), in one frame.
@@ -358,6 +361,10 @@ commands! {
     /// cnc_rdsyshard: `(1,0x01b9)[s_no, num]`; the answer is a 32-bit count,
     /// then that many 20-byte boards.
     RDSYSHARD = CLASS_CNC 0x01b9 [cnc_rdsyshard];
+    /// cnc_rdsyssoft3_str: `(1,0x022e)[s_no, num]`; the answer is `{num,
+    /// total}` then `num` 28-byte entries {id, name\[13\], series\[5\],
+    /// edition\[5\], dummy\[3\]}.
+    RDSYSSOFT3_STR = CLASS_CNC 0x022e [cnc_rdsyssoft3_str];
     PDF_RDACTPT = CLASS_CNC 0x01ba [cnc_pdf_rdactpt];
     PDF_WRACTPT = CLASS_CNC 0x01bb [cnc_pdf_wractpt];
     /// cnc_rdtlusegrp on the 30i class: the optional group number of group

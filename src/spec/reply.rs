@@ -32,12 +32,17 @@ pub enum Int {
     /// 0 (a C string as FANUC's library copies it, whatever the answer
     /// holds after the NUL).
     Char,
+    /// A character of an ID (a series or edition): a byte, read as 0
+    /// where the CNC sent 0xff (FANUC's library writes a series' or
+    /// edition's unset characters as NULs, cnc_rdsyssoft). Its C type
+    /// (`c`) is `I8`.
+    IdChar,
 }
 
 impl Int {
     pub const fn size(self) -> usize {
         match self {
-            Int::I8 | Int::U8 | Int::Char => 1,
+            Int::I8 | Int::U8 | Int::Char | Int::IdChar => 1,
             Int::I16 | Int::U16 => 2,
             Int::I32 | Int::U32 | Int::BaseExp => 4,
         }
@@ -45,7 +50,7 @@ impl Int {
     /// `v` converted to this integer, as a C cast converts it.
     pub const fn cut(self, v: i64) -> i64 {
         match self {
-            Int::I8 => v as i8 as i64,
+            Int::I8 | Int::IdChar => v as i8 as i64,
             Int::U8 | Int::Char => v as u8 as i64,
             Int::I16 => v as i16 as i64,
             Int::U16 => v as u16 as i64,
@@ -57,7 +62,7 @@ impl Int {
     /// The Rust type of a C field of this width.
     pub const fn rust(self) -> &'static str {
         match self {
-            Int::I8 => "i8",
+            Int::I8 | Int::IdChar => "i8",
             Int::U8 | Int::Char => "u8",
             Int::I16 => "i16",
             Int::U16 => "u16",
@@ -184,6 +189,74 @@ pub enum Overflow {
 pub struct Columns {
     pub stride: &'static [u8],
     pub none: i16,
+}
+
+/// An array member of output 0 that FANUC's library fills by looking its
+/// elements up in the reply (cnc_rdsyssoft: the logical slot of each
+/// physical slot, the module ID by slot): every element first holds
+/// `fill`; then element i, for each key i in turn until the first key
+/// (its low byte) equal to `end`, is what `pick` finds for key i (nothing
+/// found: `fill` stays). Elements are `c`, `n` of them, each
+/// [`Pick::per`] integers; not on the wire: the decoded reply's integers
+/// are followed by the lookups', in order.
+#[derive(Debug, Clone, Copy)]
+pub struct Lookup {
+    pub to: &'static str,
+    pub c: Int,
+    pub n: u16,
+    pub fill: i64,
+    pub key: Key,
+    pub end: u8,
+    pub pick: Pick,
+}
+
+/// Where a [`Lookup`]'s keys come from: key i is element i of it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Key {
+    /// Reply field k (an index in `reply`), as decoded.
+    Field(u8),
+    /// The elements [`Lookup`] k (an index in `lookups`, an earlier one)
+    /// wrote.
+    Lookup(u8),
+    /// The element's own index i (a run of fixed places).
+    Own,
+}
+
+/// What a [`Lookup`] finds for a key (its low byte, `k`). A reply field
+/// is an index in `reply`; an element past a field's end reads 0.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pick {
+    /// The first `j` whose element `j · stride` of reply field `field`
+    /// equals `k` (its low byte), `j` below `n`.
+    Index { field: u8, stride: u8, n: u8 },
+    /// Element `k & mask` of reply field `low` for a `k` below 0x80, of
+    /// reply field `high` from 0x80.
+    Split { mask: u8, low: u8, high: u8 },
+    /// `width` elements of reply field `field` from element `k · stride +
+    /// at` on, then a 0 (each lookup element `width + 1` integers).
+    Chars {
+        field: u8,
+        stride: u8,
+        at: u8,
+        width: u8,
+    },
+}
+
+impl Pick {
+    /// The integers of one element.
+    pub const fn per(&self) -> usize {
+        match *self {
+            Pick::Chars { width, .. } => width as usize + 1,
+            Pick::Index { .. } | Pick::Split { .. } => 1,
+        }
+    }
+}
+
+impl Lookup {
+    /// The integers this lookup adds to the decoded reply.
+    pub const fn values(&self) -> usize {
+        self.n as usize * self.pick.per()
+    }
 }
 
 /// Output 0's member `zero` reads 0 unless member `of` (its value cut to

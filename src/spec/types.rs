@@ -377,6 +377,9 @@ pub struct Func {
     /// The reply (a read) or the payload (a write) is a typed parameter
     /// block ([`Block`]), not `reply`'s fields.
     pub block: Option<Block>,
+    /// Output members filled by looking values up in the reply
+    /// ([`Lookup`]), after the reply's fields are read (cnc_rdsyssoft).
+    pub lookups: &'static [Lookup],
 }
 
 impl Func {

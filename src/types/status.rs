@@ -222,6 +222,143 @@ pub struct ODBSYSH {
     pub id2_format: c_short,
 }
 
+/// cnc_rdsyssoft: the CNC's slots (physical `slot_no_p`, 0xff ending the
+/// list; logical `slot_no_l`), the module and software ID of each, the
+/// series and version of the software on each (4 characters, then a NUL),
+/// and the series and version of the named software (boot, servo, PMC,
+/// ladder, macro, C executor, ...).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBSYSS {
+    pub slot_no_p: [c_char; 16],
+    pub slot_no_l: [c_char; 16],
+    pub module_id: [c_short; 16],
+    pub soft_id: [c_short; 16],
+    pub soft_series: [[c_char; 5]; 16],
+    pub soft_version: [[c_char; 5]; 16],
+    pub soft_inst: c_short,
+    pub boot_ser: [c_char; 5],
+    pub boot_ver: [c_char; 5],
+    pub servo_ser: [c_char; 5],
+    pub servo_ver: [c_char; 5],
+    pub pmc_ser: [c_char; 5],
+    pub pmc_ver: [c_char; 5],
+    pub ladder_ser: [c_char; 5],
+    pub ladder_ver: [c_char; 5],
+    pub mcrlib_ser: [c_char; 5],
+    pub mcrlib_ver: [c_char; 5],
+    pub mcrapl_ser: [c_char; 5],
+    pub mcrapl_ver: [c_char; 5],
+    pub spl1_ser: [c_char; 5],
+    pub spl1_ver: [c_char; 5],
+    pub spl2_ser: [c_char; 5],
+    pub spl2_ver: [c_char; 5],
+    pub spl3_ser: [c_char; 5],
+    pub spl3_ver: [c_char; 5],
+    pub c_exelib_ser: [c_char; 5],
+    pub c_exelib_ver: [c_char; 5],
+    pub c_exeapl_ser: [c_char; 5],
+    pub c_exeapl_ver: [c_char; 5],
+    pub int_vga_ser: [c_char; 5],
+    pub int_vga_ver: [c_char; 5],
+    pub out_vga_ser: [c_char; 5],
+    pub out_vga_ver: [c_char; 5],
+    pub pmm_ser: [c_char; 5],
+    pub pmm_ver: [c_char; 5],
+    pub pmc_mng_ser: [c_char; 5],
+    pub pmc_mng_ver: [c_char; 5],
+    pub pmc_shin_ser: [c_char; 5],
+    pub pmc_shin_ver: [c_char; 5],
+    pub pmc_shout_ser: [c_char; 5],
+    pub pmc_shout_ver: [c_char; 5],
+    pub pmc_c_ser: [c_char; 5],
+    pub pmc_c_ver: [c_char; 5],
+    pub pmc_edit_ser: [c_char; 5],
+    pub pmc_edit_ver: [c_char; 5],
+    pub lddr_mng_ser: [c_char; 5],
+    pub lddr_mng_ver: [c_char; 5],
+    pub lddr_apl_ser: [c_char; 5],
+    pub lddr_apl_ver: [c_char; 5],
+    pub spl4_ser: [c_char; 5],
+    pub spl4_ver: [c_char; 5],
+    pub mcr2_ser: [c_char; 5],
+    pub mcr2_ver: [c_char; 5],
+    pub mcr3_ser: [c_char; 5],
+    pub mcr3_ver: [c_char; 5],
+    pub eth_boot_ser: [c_char; 5],
+    pub eth_boot_ver: [c_char; 5],
+    pub reserve: [[c_char; 5]; 8],
+}
+
+/// cnc_rdsyssoft2: ODBSYSS, then the embedded Ethernet's series and
+/// version and more reserved entries.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct ODBSYSS2 {
+    pub slot_no_p: [c_char; 16],
+    pub slot_no_l: [c_char; 16],
+    pub module_id: [c_short; 16],
+    pub soft_id: [c_short; 16],
+    pub soft_series: [[c_char; 5]; 16],
+    pub soft_version: [[c_char; 5]; 16],
+    pub soft_inst: c_short,
+    pub boot_ser: [c_char; 5],
+    pub boot_ver: [c_char; 5],
+    pub servo_ser: [c_char; 5],
+    pub servo_ver: [c_char; 5],
+    pub pmc_ser: [c_char; 5],
+    pub pmc_ver: [c_char; 5],
+    pub ladder_ser: [c_char; 5],
+    pub ladder_ver: [c_char; 5],
+    pub mcrlib_ser: [c_char; 5],
+    pub mcrlib_ver: [c_char; 5],
+    pub mcrapl_ser: [c_char; 5],
+    pub mcrapl_ver: [c_char; 5],
+    pub spl1_ser: [c_char; 5],
+    pub spl1_ver: [c_char; 5],
+    pub spl2_ser: [c_char; 5],
+    pub spl2_ver: [c_char; 5],
+    pub spl3_ser: [c_char; 5],
+    pub spl3_ver: [c_char; 5],
+    pub c_exelib_ser: [c_char; 5],
+    pub c_exelib_ver: [c_char; 5],
+    pub c_exeapl_ser: [c_char; 5],
+    pub c_exeapl_ver: [c_char; 5],
+    pub int_vga_ser: [c_char; 5],
+    pub int_vga_ver: [c_char; 5],
+    pub out_vga_ser: [c_char; 5],
+    pub out_vga_ver: [c_char; 5],
+    pub pmm_ser: [c_char; 5],
+    pub pmm_ver: [c_char; 5],
+    pub pmc_mng_ser: [c_char; 5],
+    pub pmc_mng_ver: [c_char; 5],
+    pub pmc_shin_ser: [c_char; 5],
+    pub pmc_shin_ver: [c_char; 5],
+    pub pmc_shout_ser: [c_char; 5],
+    pub pmc_shout_ver: [c_char; 5],
+    pub pmc_c_ser: [c_char; 5],
+    pub pmc_c_ver: [c_char; 5],
+    pub pmc_edit_ser: [c_char; 5],
+    pub pmc_edit_ver: [c_char; 5],
+    pub lddr_mng_ser: [c_char; 5],
+    pub lddr_mng_ver: [c_char; 5],
+    pub lddr_apl_ser: [c_char; 5],
+    pub lddr_apl_ver: [c_char; 5],
+    pub spl4_ser: [c_char; 5],
+    pub spl4_ver: [c_char; 5],
+    pub mcr2_ser: [c_char; 5],
+    pub mcr2_ver: [c_char; 5],
+    pub mcr3_ser: [c_char; 5],
+    pub mcr3_ver: [c_char; 5],
+    pub eth_boot_ser: [c_char; 5],
+    pub eth_boot_ver: [c_char; 5],
+    pub reserve: [[c_char; 5]; 8],
+    pub embEthe_ser: [c_char; 5],
+    pub embEthe_ver: [c_char; 5],
+    pub reserve2: [[c_char; 5]; 38],
+}
+
 /// cnc_rdsyssoft3: one software of the CNC: its ID, series and edition
 /// (four characters each, then a fifth byte as the CNC sent it).
 #[repr(C)]
@@ -230,6 +367,18 @@ pub struct ODBSYSS3 {
     pub soft_id: c_short,
     pub soft_series: [c_char; 5],
     pub soft_edition: [c_char; 5],
+}
+
+/// cnc_rdsyssoft3_str: one software of the CNC: its ID, name, series and
+/// edition (the bytes as the CNC sent them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBSYSS3_STR {
+    pub soft_id: c_short,
+    pub soft_name: [c_char; 13],
+    pub soft_series: [c_char; 5],
+    pub soft_edition: [c_char; 5],
+    pub dummy: [c_char; 3],
 }
 
 /// cnc_rdservoid / cnc_rdfromservoid: the specifications and serial

@@ -1,4 +1,5 @@
 /* The system ID collector functions (cnc_rdsyshard, cnc_rdsyssoft3,
+ * cnc_rdsyssoft, cnc_rdsyssoft2, cnc_rdsyssoft3_str,
  * cnc_rdservoid, cnc_rdspindleid, cnc_rdfromservoid, cnc_rdfromspindleid), called
  * through the .so against focas-sim; the key=value lines it prints are
  * compared by tests/artifacts/c_examples/collectors_system_ids.rs with the
@@ -42,6 +43,41 @@ static void software(unsigned short h, const char *key, short s_no, short num) {
     printf("\n");
 }
 
+/* Software with names s_no.. (num asked): key=count,total;id:name:series:edition|... */
+static void software_str(unsigned short h, const char *key, short s_no, short num) {
+    ODBSYSS3_STR s[8];
+    short total = -1;
+    memset(s, 0xee, sizeof s);
+    check(key, cnc_rdsyssoft3_str(h, s_no, &num, &total, s));
+    printf("%s=%d,%d;", key, num, total);
+    for (int i = 0; i < num; i++)
+        printf("%s%d:%.13s:%.4s:%.4s", i ? "|" : "", s[i].soft_id, s[i].soft_name,
+               s[i].soft_series, s[i].soft_edition);
+    printf(";%s\n", num < 8 && s[num].soft_id == (short)0xeeee ? "untouched" : "written");
+}
+
+/* cnc_rdsyssoft / cnc_rdsyssoft2's common part (both structs begin alike):
+ * key=phys:logical:module:soft:series:version|... over the physical slots up
+ * to the 0xff ending them; then the entry after the last, the named series
+ * and versions, soft_inst. */
+#define SYSSOFT(key, s)                                                                           \
+    do {                                                                                          \
+        int n_ = 0;                                                                               \
+        printf("%s=", key);                                                                       \
+        while (n_ < 16 && (unsigned char)(s).slot_no_p[n_] != 0xff) {                             \
+            printf("%s%02x:%d:%d:%d:%s:%s", n_ ? "|" : "", (unsigned char)(s).slot_no_p[n_],       \
+                   (unsigned char)(s).slot_no_l[n_], (s).module_id[n_], (s).soft_id[n_],            \
+                   (s).soft_series[n_], (s).soft_version[n_]);                                     \
+            n_++;                                                                                 \
+        }                                                                                         \
+        printf("\n%s.after=%02x:%d:%d:%d:%d\n", key, (unsigned char)(s).slot_no_l[n_],            \
+               (s).module_id[n_], (s).soft_id[n_], (s).soft_series[n_][0], (s).soft_version[n_][4]); \
+        printf("%s.named=%s:%s|%s:%s|%s:%s|%s:%s|%s:%s\n", key, (s).boot_ser, (s).boot_ver,       \
+               (s).servo_ser, (s).servo_ver, (s).pmc_ser, (s).pmc_ver, (s).ladder_ser,             \
+               (s).ladder_ver, (s).eth_boot_ser, (s).eth_boot_ver);                               \
+        printf("%s.inst=%d\n", key, (s).soft_inst);                                              \
+    } while (0)
+
 /* A drive's eight ID strings, `|`-separated (each NUL-terminated in its field). */
 #define ID8(key, d, a, b, c, e, f, g, i, j)                                                  \
     printf("%s=%.*s|%.*s|%.*s|%.*s|%.*s|%.*s|%.*s|%.*s\n", key, (int)sizeof d.a, d.a,           \
@@ -74,6 +110,22 @@ int main(int argc, char **argv) {
     short total = 0;
     ODBSYSS3 two[2];
     printf("soft.zero=%d\n", cnc_rdsyssoft3(h, 0, &num, &total, two));
+
+    software_str(h, "softstr.all", 1, 8);
+    software_str(h, "softstr.second", 2, 1);
+
+    /* The slots and their software, as cnc_rdsyssoft and cnc_rdsyssoft2 read them. */
+    ODBSYSS ss;
+    ODBSYSS2 ss2;
+    memset(&ss, 0xee, sizeof ss);
+    check("rdsyssoft", cnc_rdsyssoft(h, &ss));
+    SYSSOFT("syssoft", ss);
+    memset(&ss2, 0xee, sizeof ss2);
+    check("rdsyssoft2", cnc_rdsyssoft2(h, &ss2));
+    SYSSOFT("syssoft2", ss2);
+    printf("syssoft2.embethe=%s:%s\n", ss2.embEthe_ser, ss2.embEthe_ver);
+    printf("syssoft.same=%d\n", memcmp(&ss, &ss2, sizeof ss) == 0);
+    printf("syssoft.null=%d\n", cnc_rdsyssoft(h, NULL));
 
     /* The servo and spindle drives' ID information, now and as saved. */
     ODBCSVID sv;

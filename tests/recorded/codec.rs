@@ -1510,6 +1510,64 @@ fn a_c_string_ends_at_its_nul() {
     assert_eq!(decode(f, &[], &p[..6]).unwrap()[3..], [0; 34]);
 }
 
+/// Lookups (Func::lookups, cnc_rdsyssoft): a physical slot missing from the
+/// logical table gets no logical slot (0xff) and ends the series lookups
+/// there, while the IDs go on to the list's end (0xff); the second bank's
+/// IDs from the second table; unset characters (0xff) read as NULs.
+#[test]
+fn syssoft_lookups_follow_fanucs_loops() {
+    use fwlib32::proto::described::decode;
+    let f = (fwlib32::spec::FUNCS.iter())
+        .find(|f| f.name == "cnc_rdsyssoft")
+        .unwrap();
+    let mut p = vec![0u8; 664];
+    // Physical slots 0x02, 0x05 (not in the logical table), 0x81; then 0xff.
+    p[..16].fill(0xff);
+    p[..3].copy_from_slice(&[0x02, 0x05, 0x81]);
+    let word = |p: &mut Vec<u8>, at: usize, v: u16| p[at..at + 2].copy_from_slice(&v.to_be_bytes());
+    word(&mut p, 16 + 4, 0x0a02); // module of 0x02
+    word(&mut p, 16 + 10, 0x0a05); // module of 0x05
+    word(&mut p, 48 + 2, 0x0a81); // module of 0x81 (second bank)
+    word(&mut p, 80 + 4, 2);
+    word(&mut p, 80 + 10, 5);
+    word(&mut p, 112 + 2, 0x81);
+    // Logical table: 0x81 first, then 0x02.
+    word(&mut p, 144, 0x8100);
+    word(&mut p, 146, 0x0200);
+    (148..176).for_each(|k| p[k] = 0xff);
+    p[208..216].copy_from_slice(b"AAAA1111");
+    p[216..224].copy_from_slice(b"BB\xff\xff2222");
+    p[336..340].copy_from_slice(b"BOOT");
+    let v = decode(f, &[], &p).unwrap();
+    let looked: usize = f.lookups.iter().map(|l| l.values()).sum();
+    let tail = &v[v.len() - looked..];
+    let (l, rest) = tail.split_at(16);
+    let (module, rest) = rest.split_at(16);
+    let (soft, rest) = rest.split_at(16);
+    let (series, rest) = rest.split_at(80);
+    let (version, pairs) = rest.split_at(80);
+    let mut want = vec![-1i64; 16];
+    want[..3].copy_from_slice(&[1, -1, 0]);
+    assert_eq!(l, want, "slot_no_l: 0x05 has none");
+    let mut want = vec![-1i64; 16];
+    want[..3].copy_from_slice(&[0x0a02, 0x0a05, 0x0a81]);
+    assert_eq!(module, want, "module_id to the list's end");
+    let mut want = vec![-1i64; 16];
+    want[..3].copy_from_slice(&[2, 5, 0x81]);
+    assert_eq!(soft, want);
+    let text = |c: &[i64]| c.iter().map(|x| *x as u8 as char).collect::<String>();
+    assert_eq!(
+        text(&series[..10]),
+        "BB\0\0\0\0\0\0\0\0",
+        "series of logical slot 1, then none"
+    );
+    assert!(series[5..].iter().all(|x| *x == 0), "ended at slot 0x05");
+    assert_eq!(text(&version[..5]), "2222\0");
+    assert!(version[5..].iter().all(|x| *x == 0));
+    // The named pairs from boot_ser on: 4 characters, then a NUL.
+    assert_eq!(text(&pairs[..10]), "BOOT\0\0\0\0\0\0");
+}
+
 #[test]
 fn history_decoder_drops_a_ragged_tail() {
     use fwlib32::proto::alarm::AlmHistory;
@@ -1562,7 +1620,7 @@ proptest! {
                 .zip(seed.iter().cycle())
                 .map(|(w, s)| match w {
                     None => 0,
-                    Some(Int::I8) => i64::from(*s as u8 as i8),
+                    Some(Int::I8 | Int::IdChar) => i64::from(*s as u8 as i8),
                     Some(Int::U8 | Int::Char) => i64::from(*s as u8),
                     Some(Int::I16) => i64::from(*s as u16 as i16),
                     Some(Int::U16) => i64::from(*s as u16),
@@ -1607,6 +1665,12 @@ proptest! {
                 }
                 at += x.n as usize;
             }
+            // An unset character (0xff) reads as a NUL.
+            for (e, w) in expect.iter_mut().zip(&all) {
+                if *w == Some(Int::IdChar) && *e == -1 {
+                    *e = 0;
+                }
+            }
             // A range (Func::span) asks for the n records: 1..=n.
             let args: Vec<i32> = f.span.map_or(Vec::new(), |(s, e)| {
                 let mut a = vec![0; usize::from(s.max(e)) + 1];
@@ -1614,7 +1678,12 @@ proptest! {
                 a[usize::from(e)] = n as i32;
                 a
             });
-            prop_assert_eq!(decode(f, &args, &bytes).expect("decode"), expect, "{}", f.name);
+            // The lookups' integers (Func::lookups) follow the reply's.
+            let mut got = decode(f, &args, &bytes).expect("decode");
+            let looked: usize = f.lookups.iter().map(|l| l.values()).sum();
+            prop_assert_eq!(got.len(), expect.len() + looked, "{}", f.name);
+            got.truncate(expect.len());
+            prop_assert_eq!(got, expect, "{}", f.name);
         }
     }
 

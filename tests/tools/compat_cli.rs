@@ -489,7 +489,7 @@ fn the_collector_families_are_all_supported() {
     #[rustfmt::skip]
     const FAMILIES: &[&str] = &[
         "cnc_rdopnlsgnl", "cnc_wropnlsgnl", "cnc_rdopnlgnrl", "cnc_wropnlgnrl", "cnc_rdopnlgsname", "cnc_wropnlgsname",
-        "cnc_rdsyshard", "cnc_rdsyssoft3", "cnc_rdservoid", "cnc_rdspindleid", "cnc_rdfromservoid", "cnc_rdfromspindleid",
+        "cnc_rdsyshard", "cnc_rdsyssoft3", "cnc_rdsyssoft", "cnc_rdsyssoft2", "cnc_rdsyssoft3_str", "cnc_rdservoid", "cnc_rdspindleid", "cnc_rdfromservoid", "cnc_rdfromspindleid",
         "cnc_rdprgnumo8", "cnc_rddynamico8", "cnc_rdprogdiro8", "cnc_rdprogdir2o8", "cnc_searcho8", "cnc_deleteo8", "cnc_rdmdipntro8",
         "cnc_rdpmacro", "cnc_wrpmacro", "cnc_rdpmacror", "cnc_rdpmacroinfo", "cnc_rdpmacroinfo2", "cnc_rdmacronum",
         "cnc_rdsetnum", "cnc_rdset", "cnc_wrset", "cnc_rdsetr",

@@ -66,7 +66,7 @@ const ERRORS: &[i16] = &[
 
 fn int_value(rng: &mut Rng, t: Int) -> i64 {
     let (min, max): (i64, i64) = match t {
-        Int::I8 => (i8::MIN.into(), i8::MAX.into()),
+        Int::I8 | Int::IdChar => (i8::MIN.into(), i8::MAX.into()),
         Int::U8 | Int::Char => (0, u8::MAX.into()),
         Int::I16 => (i16::MIN.into(), i16::MAX.into()),
         Int::U16 => (0, u16::MAX.into()),

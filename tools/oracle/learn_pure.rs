@@ -1023,13 +1023,14 @@ pub struct Draft {
 fn int_name(i: Int) -> &'static str {
     match i {
         Int::I8 => "I8",
+        Int::Char => "Char",
         Int::U8 => "U8",
         Int::I16 => "I16",
         Int::U16 => "U16",
         Int::I32 => "I32",
         Int::U32 => "U32",
         Int::BaseExp => "BaseExp",
-        Int::Char => "Char",
+        Int::IdChar => "IdChar",
     }
 }
 

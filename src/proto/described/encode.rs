@@ -79,7 +79,7 @@ pub(super) fn write_fields_in<'a>(
                 continue;
             }
             match field.wire {
-                Int::I8 | Int::U8 | Int::Char => w.u8(*x as u8),
+                Int::I8 | Int::U8 | Int::Char | Int::IdChar => w.u8(*x as u8),
                 Int::I16 | Int::U16 => w.u16(*x as u16),
                 Int::I32 | Int::U32 => w.u32(*x as u32),
                 // The digits went as the value.

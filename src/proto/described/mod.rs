@@ -10,7 +10,8 @@ use super::value::{BASE_2, Value};
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
 use crate::spec::{
-    Columns, Field, Func, Int, LAST, NUMBERS, ONE, Overflow, SPAN, Short, TEXT, Word, ZERO,
+    Columns, Field, Func, Int, Key, LAST, NUMBERS, ONE, Overflow, Pick, SPAN, Short, TEXT, Word,
+    ZERO,
 };
 
 pub mod block;
@@ -317,7 +318,75 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
             at += usize::from(field.n);
         }
     }
+    if !f.lookups.is_empty() {
+        let found = lookups(f, &out);
+        out.extend(found);
+    }
     Ok(out)
+}
+
+/// The integers of [`Func::lookups`], lookup after lookup, from the reply
+/// fields' decoded integers (`reply`, in layout order).
+pub fn lookups(f: &Func, reply: &[i64]) -> Vec<i64> {
+    // Reply field k's elements.
+    let field = |k: u8| -> &[i64] {
+        let at: usize = f.reply[..usize::from(k).min(f.reply.len())]
+            .iter()
+            .map(|x| usize::from(x.n))
+            .sum();
+        let n = f.reply.get(usize::from(k)).map_or(0, |x| usize::from(x.n));
+        reply.get(at..at + n).unwrap_or(&[])
+    };
+    let elem = |k: u8, i: usize| field(k).get(i).copied().unwrap_or(0);
+    let mut out: Vec<i64> = Vec::new();
+    // Where each lookup's integers start in `out`.
+    let mut starts = Vec::with_capacity(f.lookups.len());
+    for l in f.lookups {
+        let start = out.len();
+        starts.push(start);
+        let per = l.pick.per();
+        out.resize(start + l.values(), l.fill);
+        for i in 0..usize::from(l.n) {
+            let key = match l.key {
+                Key::Field(k) => elem(k, i),
+                Key::Own => i as i64,
+                Key::Lookup(k) => match starts.get(usize::from(k)) {
+                    Some(&s) if usize::from(k) < starts.len() - 1 => out[s + i],
+                    _ => i64::from(l.end),
+                },
+            } as u8;
+            if key == l.end {
+                break;
+            }
+            let at = start + i * per;
+            match l.pick {
+                Pick::Index { field, stride, n } => {
+                    let hit = (0..usize::from(n))
+                        .find(|j| elem(field, j * usize::from(stride)) as u8 == key);
+                    if let Some(j) = hit {
+                        out[at] = j as i64;
+                    }
+                }
+                Pick::Split { mask, low, high } => {
+                    let from = if key < 0x80 { low } else { high };
+                    out[at] = elem(from, usize::from(key & mask));
+                }
+                Pick::Chars {
+                    field,
+                    stride,
+                    at: first,
+                    width,
+                } => {
+                    let from = usize::from(key) * usize::from(stride) + usize::from(first);
+                    for e in 0..usize::from(width) {
+                        out[at + e] = elem(field, from + e);
+                    }
+                    out[at + usize::from(width)] = 0;
+                }
+            }
+        }
+    }
+    out
 }
 
 /// [`Func::zero_unless`] applied to the decoded reply's integers: the
@@ -347,7 +416,7 @@ pub fn zero_unless(f: &Func, out: &mut [i64]) {
 /// `v` as a C field of type `c` holds it.
 fn cast(v: i64, c: Int) -> i64 {
     match c {
-        Int::I8 => i64::from(v as i8),
+        Int::I8 | Int::IdChar => i64::from(v as i8),
         Int::U8 | Int::Char => i64::from(v as u8),
         Int::I16 => i64::from(v as i16),
         Int::U16 => i64::from(v as u16),
@@ -386,7 +455,7 @@ pub fn payload_values(
                 let b = |k: usize| bytes.get(at + k).copied().unwrap_or(0);
                 out.push(match (field.to, field.c) {
                     (None, _) => 0,
-                    (_, Int::I8) => i64::from(b(0) as i8),
+                    (_, Int::I8 | Int::IdChar) => i64::from(b(0) as i8),
                     (_, Int::U8 | Int::Char) => i64::from(b(0)),
                     (_, Int::I16) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
@@ -462,6 +531,11 @@ fn read_fields(
             let v = match field.wire {
                 Int::I8 => i64::from(r.u8()? as i8),
                 Int::U8 | Int::Char => i64::from(r.u8()?),
+                // An unset character (0xff) reads as a NUL.
+                Int::IdChar => match r.u8()? {
+                    0xff => 0,
+                    c => i64::from(c as i8),
+                },
                 Int::I16 => i64::from(r.i16()?),
                 Int::U16 => i64::from(r.u16()?),
                 Int::I32 => i64::from(r.i32()?),

@@ -1,6 +1,7 @@
 //! `[system]`: what the CNC is built of, as its system configuration
 //! screen lists it: its boards (cnc_rdsyshard), its software series and
-//! editions (cnc_rdsyssoft3), and the ID information of its servo and
+//! editions (cnc_rdsyssoft3), the slots they are on and the named ones
+//! (cnc_rdsyssoft, cnc_rdsyssoft2), and the ID information of its servo and
 //! spindle drives (cnc_rdservoid, cnc_rdspindleid and their saved copies).
 
 use serde::Deserialize;
@@ -18,6 +19,28 @@ pub struct System {
     /// The spindle drives, spindle 1 first (cnc_rdspindleid,
     /// cnc_rdfromspindleid; `sub_motor` is the sub spindle motor).
     pub spindle: Vec<DriveId>,
+    /// The slots, in the CNC's logical order (cnc_rdsyssoft's logical
+    /// slots; its physical list is theirs in ascending order).
+    #[serde(rename = "slot")]
+    pub slots: Vec<Slot>,
+    /// The software in named places, by ID (`software`'s): the keys are
+    /// ODBSYSS2's member names less `_ser`/`_ver` (`boot`, `servo`, `pmc`,
+    /// `ladder`, `mcrlib`, ..., `eth_boot`, `embEthe`); the others are
+    /// unset (cnc_rdsyssoft, cnc_rdsyssoft2).
+    pub named: std::collections::BTreeMap<String, i16>,
+    /// cnc_rdsyssoft's `soft_inst` (the one byte the CNC sends).
+    pub soft_inst: u8,
+}
+
+/// One slot: its physical number (from 0x80 the second bank; the low 4
+/// bits place it in its bank), its module's ID and the ID of the software
+/// on it (`software`'s, whose series and edition it shows).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Slot {
+    pub slot: u8,
+    pub module_id: i16,
+    pub software: i16,
 }
 
 /// One drive's ID information: each part's specification and serial
@@ -47,12 +70,14 @@ pub struct Board {
     pub id2_format: i16,
 }
 
-/// One software: its ID, series and edition (4 characters each; the CNC
-/// sends a fifth byte after each, 0).
+/// One software: its ID, name, series and edition (4 characters each; the
+/// CNC sends a fifth byte after each, 0).
 #[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Software {
     pub id: i16,
+    /// Its name (cnc_rdsyssoft3_str: 12 characters and a NUL at most).
+    pub name: String,
     pub series: String,
     pub edition: String,
 }
@@ -69,8 +94,9 @@ impl Default for System {
             id1_format: 0,
             id2_format: 0,
         };
-        let soft = |id, series: &str, edition: &str| Software {
+        let soft = |id, name: &str, series: &str, edition: &str| Software {
             id,
+            name: name.into(),
             series: series.into(),
             edition: edition.into(),
         };
@@ -81,9 +107,12 @@ impl Default for System {
                 board(2, 1, 1, 0x0002_0101, 0x0000_0001),
             ],
             software: vec![
-                soft(1, "G421", "08.0"),
-                soft(2, "90E0", "10.0"),
-                soft(3, "40A1", "05.0"),
+                soft(1, "BASIC", "G421", "08.0"),
+                soft(2, "OPTION-A1", "90E0", "10.0"),
+                soft(3, "SUB CPU", "40A1", "05.0"),
+                soft(4, "BOOT", "60W3", "01.0"),
+                soft(5, "SERVO", "90D0", "24.0"),
+                soft(6, "PMC", "40B1", "03.0"),
             ],
             servo: (1..=3)
                 .map(|k| DriveId {
@@ -99,6 +128,27 @@ impl Default for System {
                 amplifier: ["A06B-6220-H011".into(), "V10B12345".into()],
                 power_supply: ["A06B-6200-H011".into(), "E0AC12345".into()],
             }],
+            slots: vec![
+                Slot {
+                    slot: 0x01,
+                    module_id: 0x00c4,
+                    software: 2,
+                },
+                Slot {
+                    slot: 0x00,
+                    module_id: 0x0040,
+                    software: 1,
+                },
+                Slot {
+                    slot: 0x82,
+                    module_id: 0x00a8,
+                    software: 3,
+                },
+            ],
+            named: [("boot", 4), ("servo", 5), ("pmc", 6)]
+                .map(|(k, v)| (k.to_string(), v))
+                .into(),
+            soft_inst: 0,
         }
     }
 }

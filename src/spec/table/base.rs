@@ -28,6 +28,7 @@ pub const COMMAND: Func = Func {
     counted: None,
     span: None,
     block: None,
+    lookups: &[],
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -64,4 +65,5 @@ pub const SERVO_LONGS: Func = Func {
     counted: None,
     span: None,
     block: None,
+    lookups: &[],
 };

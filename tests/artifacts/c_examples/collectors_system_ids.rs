@@ -46,6 +46,70 @@ fn system_ids_follow_the_profile() {
     );
     assert_eq!(kv["soft.zero"], "3", "EW_NUMBER: s_no 0");
 
+    // cnc_rdsyssoft3_str: the same software with their names.
+    let named_soft = |k: usize| {
+        let s = &sys.software[k];
+        format!("{}:{}:{:4}:{:4}", s.id, s.name, s.series, s.edition)
+    };
+    assert!(
+        sys.software
+            .iter()
+            .all(|s| !s.name.is_empty() && s.name.len() <= 12)
+    );
+    let all: Vec<String> = (0..n).map(named_soft).collect();
+    assert_eq!(
+        kv["softstr.all"],
+        format!("{n},{n};{};untouched", all.join("|"))
+    );
+    assert_eq!(kv["softstr.second"], format!("1,{n};{};untouched", all[1]));
+
+    // cnc_rdsyssoft / cnc_rdsyssoft2: the physical slots ascending, each
+    // one's place in the profile's (logical) order, module and software ID,
+    // and that software's series and edition (as cnc_rdsyssoft3 lists it);
+    // then nothing (0xff, -1, -1, NULs); the named software's, the others
+    // unset (empty).
+    assert!(
+        sys.slots.len() >= 2 && sys.slots.iter().any(|s| s.slot >= 0x80),
+        "the default profile has slots in both banks"
+    );
+    let series = |id: i16| {
+        let s = sys.software.iter().find(|s| s.id == id).expect("software");
+        format!("{}:{}", s.series, s.edition)
+    };
+    let mut physical: Vec<_> = sys.slots.iter().collect();
+    physical.sort_by_key(|s| s.slot);
+    let slots: Vec<String> = physical
+        .iter()
+        .map(|s| {
+            let logical = sys.slots.iter().position(|x| x.slot == s.slot).unwrap();
+            format!(
+                "{:02x}:{logical}:{}:{}:{}",
+                s.slot,
+                s.module_id,
+                s.software,
+                series(s.software)
+            )
+        })
+        .collect();
+    let named = |k: &str| sys.named.get(k).map_or(":".to_string(), |id| series(*id));
+    let names = ["boot", "servo", "pmc", "ladder", "eth_boot"].map(named);
+    assert!(
+        names[..3].iter().all(|n| n.len() == 9),
+        "named in the profile"
+    );
+    for key in ["syssoft", "syssoft2"] {
+        assert_eq!(kv[key], slots.join("|"), "{key}");
+        assert_eq!(kv[&format!("{key}.after")], "ff:-1:-1:0:0", "{key}");
+        assert_eq!(kv[&format!("{key}.named")], names.join("|"), "{key}");
+        assert_eq!(kv[&format!("{key}.inst")], sys.soft_inst.to_string());
+    }
+    assert_eq!(kv["syssoft2.embethe"], named("embEthe"));
+    assert_eq!(
+        kv["syssoft.same"], "1",
+        "cnc_rdsyssoft2 begins as cnc_rdsyssoft"
+    );
+    assert_eq!(kv["syssoft.null"], fwlib32::ew::EW_DATA.to_string());
+
     // cnc_rdservoid / cnc_rdspindleid and the saved copies: the profile's
     // drives, each string cut to its field less the NUL.
     let drive = |d: &fwlib32::sim::profile::system::DriveId, lens: [usize; 8]| {
