@@ -248,7 +248,7 @@ pub struct Path {
     /// Servo data sampling channels, channel 1 first (cnc_sdtread1shot,
     /// cnc_sdtstartsmpl; cnc_sdtclrchnl clears them).
     #[serde(rename = "sample_channel")]
-    pub sample_channels: Vec<super::sampling::SampleChannel>,
+    pub sample_channels: Vec<SampleChannel>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]
@@ -514,4 +514,26 @@ impl Profile {
         }
         Ok(())
     }
+}
+
+/// The servo figure a channel samples, of the simulator's model of its axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Datum {
+    /// The motor speed, rpm (cnc_rdsrvspeed).
+    #[default]
+    Speed,
+    /// The load meter, % (cnc_rdsvmeter).
+    Load,
+    /// The motor current, 0.1 A: the load's share of the rated current
+    /// (cnc_rdaxisdata class 2 type 2).
+    Current,
+}
+
+/// One sampling channel: a figure of an axis of the path (1-based).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct SampleChannel {
+    pub axis: u16,
+    pub datum: Datum,
 }

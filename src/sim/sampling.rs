@@ -7,12 +7,11 @@
 //! program leaves them.
 
 use super::Machine;
-use super::profile::Axis;
+use super::profile::{Axis, Datum, SampleChannel};
 use super::route::{Asked, Route};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_PATH};
 use crate::proto::cmd::{SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSTARTSMPL};
-use serde::Deserialize;
 use std::time::Instant;
 
 pub(super) const ROUTES: &[Route] = &[
@@ -28,28 +27,6 @@ pub(super) const ROUTES: &[Route] = &[
 
 /// The most channels a CNC samples (cnc_sdtread1shot writes 8 values).
 pub const MAX_CHANNELS: usize = 8;
-
-/// The servo figure a channel samples, of the simulator's model of its axis.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum Datum {
-    /// The motor speed, rpm (cnc_rdsrvspeed).
-    #[default]
-    Speed,
-    /// The load meter, % (cnc_rdsvmeter).
-    Load,
-    /// The motor current, 0.1 A: the load's share of the rated current
-    /// (cnc_rdaxisdata class 2 type 2).
-    Current,
-}
-
-/// One sampling channel: a figure of an axis of the path (1-based).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
-#[serde(deny_unknown_fields, default)]
-pub struct SampleChannel {
-    pub axis: u16,
-    pub datum: Datum,
-}
 
 /// A path's sampling state.
 #[derive(Debug, Clone, Default)]
