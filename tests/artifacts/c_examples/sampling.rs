@@ -5,7 +5,7 @@ use super::run_c_test;
 use fwlib32::ew::{EW_DATA, EW_OK};
 use fwlib32::sim::Profile;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
-use fwlib32::sim::sampling::Datum;
+use fwlib32::sim::profile::Datum;
 
 /// The default profile with path 1 idle (no program in cycle: the servo
 /// state stays as the profile puts it) and the X axis's motor turning.
