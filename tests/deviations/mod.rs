@@ -534,44 +534,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library copies the whole reply into the caller's buffer, past the requested range and length; ours writes no more than they hold",
     },
     Deviation {
-        function: "cnc_rdparam_ext",
-        cases: &[
-            "rdparam_ext32_v3_shape_half",
-            "rdparam_ext_v3_shape_half",
-            "rdparam_ext32_v2_shape_short1",
-            "rdparam_ext_v2_shape_short1",
-        ],
-        reason: EXT_ATTR_PAST_PAYLOAD,
-    },
-    Deviation {
-        function: "cnc_rddiag_ext",
-        cases: &[
-            "rddiag_ext32_v3_shape_half",
-            "rddiag_ext32_v2_shape_short1",
-            // 16i: the first attribute answer (0x31) one byte short.
-            "fuzz_rddiag_ext*_v2*_s0T#short1_*",
-        ],
-        reason: EXT_ATTR_PAST_PAYLOAD,
-    },
-    Deviation {
-        function: "cnc_rdparar",
-        cases: &[
-            "rdparar_v3_shape_empty",
-            "rdparar_v3_shape_half",
-            "rdparar_v3_shape_short1",
-            "rdparar_v3_shape_err2",
-            "rdparar_v2_shape_empty",
-            "rdparar_v2_shape_half",
-            "rdparar_v2_shape_short1",
-            "rdparar_v2_shape_err2",
-            "rdparar_s15_base",
-            // oracle fuzz: a Series 15 case whose drawn reply is an earlier
-            // exchange's, the range answer our simulator's 4-byte form.
-            "fuzz_rdparar_s15_*_request_*",
-        ],
-        reason: "when an answer holds no whole block (8 + 8 or 4 bytes per axis of the CNC's maximum; error 2 is read as an answer) FANUC's library asks again from its last number received + 1, number 1 before any, so it restarts from the table's first parameter (or repeats its request for ever); ours returns EW_PROTOCOL (-17), or the CNC's error 2, with the records before it written (the Series 15 case: our simulator answers a Series 15 in 4-byte values, shorter than the 8-byte record blocks FANUC's library reads)",
-    },
-    Deviation {
         function: "pmc_get_timer_type",
         cases: &[
             "pmc_get_timer_type_v3_shape_longer",
@@ -970,15 +932,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: FIELDS_PAST_PAYLOAD,
     },
     Deviation {
-        function: "cnc_rdparar",
-        cases: &[
-            "fuzz_rdparar_*short1*",
-            "fuzz_rdparar_*cut*",
-            "fuzz_rdparar_*empty*",
-        ],
-        reason: "when an answer holds no whole block FANUC's library asks again from its last number received + 1 (number 1 before any); ours returns EW_PROTOCOL (-17) with the records before it written",
-    },
-    Deviation {
         function: "cnc_rdparam3",
         cases: &["fuzz_rdparam3_*_s0T#empty_*"],
         reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns what they make (EW_OK with them, or EW_LENGTH from a length word among them); ours returns EW_PROTOCOL (-17) and writes nothing",
@@ -1222,9 +1175,6 @@ const AXIS_COUNT_PAST_PAYLOAD: &str = "FANUC's library reads the axis count of a
 
 /// cnc_rdaxisdata / cnc_rdsvmeter on the 30i class.
 const NAMES_PAST_PAYLOAD: &str = "FANUC's library reads the axis names a short 0x89 answer lacks from the next subpacket's header; ours returns EW_PROTOCOL (-17) and writes nothing";
-
-/// cnc_rdparam_ext / cnc_rddiag_ext.
-const EXT_ATTR_PAST_PAYLOAD: &str = "FANUC's library reads the attribute fields a short attribute answer lacks (30i: axis, unit and info words of a 12-byte answer; 16i: the low byte of the info word) from the next subpacket's header; ours returns EW_PROTOCOL (-17), the records before it written";
 
 /// cnc_rddynamic / cnc_rddynamic2.
 const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload shorter than them from the next subpacket's header, and with a subpacket missing reads the later ones shifted, writing that into the caller's struct; ours returns EW_PROTOCOL (-17) and writes nothing";
