@@ -867,6 +867,8 @@ pub const ORACLE: &[Deviation] = &[
             // layout cnc_actf reads): the decimals are read from the next
             // subpacket's header (its class word, 1).
             "fuzz_rdspeed_v3*_s4L_*",
+            // The same of the 0x25 answer (type 1 or -1) [seed 0x20281128].
+            "fuzz_rdspeed_v3*_s5L_*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
     },
