@@ -915,7 +915,6 @@ pub const ORACLE: &[Deviation] = &[
         function: "cnc_rdaxisdata",
         cases: &[
             "fuzz_rdaxisdata_*short1*",
-            "fuzz_rdaxisdata_*empty*",
             // An empty 0x56 (data) answer: the axis records are read
             // from the last 0xa4's header.
             "fuzz_rdaxisdata_*Ln0*",
@@ -1037,6 +1036,12 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdspmaxrpm_*s0Tw*empty*",
         ],
         reason: COUNT_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rdspmaxrpm",
+        // oracle fuzz [seed 0x20291128]: the closing 0xa4 count one byte.
+        cases: &["fuzz_rdspmaxrpm_*s2#short1*"],
+        reason: "FANUC's library reads the byte a one-byte closing 0xa4 count lacks from its receive buffer past the answer, where the longer request it sent still lies (there the request's class word: count 1), and writes the spindle record by that count; ours reads the count zero-extended (0: EW_NOOPT (6), nothing written)",
     },
     Deviation {
         function: "cnc_rdspload",
