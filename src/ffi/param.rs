@@ -239,7 +239,11 @@ pub unsafe extern "C" fn cnc_rddiagnum(FlibHndl: c_ushort, diagnum: *mut ODBDIAG
 /// the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
 /// decimals), each record padded to a multiple of 4 (the padding bytes are
 /// not written). Asks the CNC again from the last number received + 1
-/// until `*e_number` is reached. On success `*s_number` is the first
+/// (the block's whole 32-bit number, wrapping) while that is not above
+/// `*e_number`; an answer without a whole block asks again from there too
+/// (from 1 before any block), and ends in EW_PROTOCOL when that would
+/// repeat the request just answered (FANUC's library repeats it for ever).
+/// On success `*s_number` is the first
 /// number read, `*e_number` the last, and `*length` (in: the buffer's
 /// size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
 /// traffic. A record that does not fit with its padding is EW_LENGTH: the
@@ -273,7 +277,11 @@ pub unsafe extern "C" fn cnc_rdparar(
         }
         let mut used = 0usize;
         let mut first: Option<i16> = None;
-        let mut last: Option<i32> = None;
+        // FANUC's library's loop [fuzz, seed 0x21b01128]: `last` is the i32
+        // number of the last block received (0 before any); after each
+        // answer it asks on from last + 1 (wrapping) while that is ≤ e, so
+        // an answer without a block restarts from 1, or repeats the request.
+        let mut last: i32 = 0;
         let mut next = s;
         loop {
             let recs = match h.call(&ReadRange {
@@ -284,10 +292,10 @@ pub unsafe extern "C" fn cnc_rdparar(
                 // No more numbers after some were read: done.
                 Err(Error::Cnc {
                     code: EW_NUMBER, ..
-                }) if last.is_some() => break,
+                }) if first.is_some() => break,
                 r => r?,
             };
-            for r in &recs {
+            for (number, r) in &recs {
                 let bytes = r.to_c();
                 if used + r.padded_len() > room {
                     // Its header, as FANUC's library writes it, if it fits.
@@ -301,23 +309,28 @@ pub unsafe extern "C" fn cnc_rdparar(
                 };
                 used += r.padded_len();
                 first.get_or_insert(r.number);
-                last = Some(r.number as i32);
+                last = *number;
             }
-            let Some(l) = last else {
-                return Err(Error::short("parameter range answer without a block"));
-            };
-            // As FANUC's library: on from the last number + 1, even when the
-            // CNC went back (every record takes room in the buffer, so a CNC
-            // that does not move on ends in EW_LENGTH).
-            if l >= e {
+            let asked = next;
+            next = last.wrapping_add(1);
+            // A request answered without a block that FANUC's library would
+            // send again: it asks for ever of a CNC that answers the same;
+            // ours ends there (every record takes room in the buffer, so a
+            // CNC that goes back without end ends in EW_LENGTH).
+            if recs.is_empty() && next == asked {
+                return Err(Error::short(
+                    "parameter range answer without a block, to the request it would repeat",
+                ));
+            }
+            if next > e {
                 break;
             }
-            next = l + 1;
         }
         unsafe {
             put(s_number, first.unwrap_or(s as i16));
             put(length, used as c_short);
-            put(e_number, last.unwrap_or(e) as c_short);
+            // The last block's number (low 16 bits), 0 before any.
+            put(e_number, last as c_short);
         }
         Ok(())
     })

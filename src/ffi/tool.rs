@@ -65,7 +65,10 @@ pub unsafe extern "C" fn cnc_rdtoolgrp(
             // No tools: the head only, and no second exchange.
             return Ok(());
         }
-        let t = h.call(&tltools(g.grp, g.ntool.value))?;
+        // The group asked for is the head's `grp_num` (the answer's low 16
+        // bits) sign-extended [fuzz, seed 0x20271128 `s0L`: group word
+        // 0x7fffffff asks 0x004d for group -1].
+        let t = h.call(&tltools(i32::from(g.grp as c_short), g.ntool.value))?;
         if offset_of!(ODBTG, data) + size_of::<ODBTG_DATA>() * t.tools.len() > room {
             return Err(Error::length());
         }

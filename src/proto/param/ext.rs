@@ -11,7 +11,8 @@ use crate::proto::cmd::{
     RDPARAM, RDPARAM16,
 };
 use crate::proto::open::CncClass;
-use crate::proto::packet::{ReqSub, RespSub};
+use crate::proto::packet::{ReqSub, RespSub, encode_request};
+use std::borrow::Cow;
 
 /// One IODBPRM record of cnc_rdparam_ext / cnc_rddiag_ext.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -116,6 +117,60 @@ fn ext_attr_len(class: CncClass) -> usize {
     }
 }
 
+/// The first `need` bytes FANUC's library reads from subpacket `k`'s
+/// payload on. Its receive buffer holds the frame as received over the
+/// request it sent, so a payload shorter than its fields goes on into the
+/// next subpackets' headers (length, class, path, command, error, two
+/// details, payload length: 16 bytes, big-endian) and payloads, past the
+/// answer's end into the bytes of the request (`req`: its body, built
+/// only then), and past both into zeros [fuzz, seeds 0x21b01128 and
+/// 0x21b11128: every recorded 30i, 16i and Series 15 case of both
+/// functions, short, cut, empty and error answers in any place;
+/// docs/protocol/param.md]. `k` must be a subpacket of `resp`.
+fn read_on<'a>(
+    resp: &'a [RespSub],
+    k: usize,
+    need: usize,
+    req: impl FnOnce() -> Vec<u8>,
+) -> Cow<'a, [u8]> {
+    let p = &resp[k].payload;
+    if p.len() >= need {
+        return Cow::Borrowed(p);
+    }
+    let mut v = Vec::with_capacity(need + 16);
+    v.extend_from_slice(p);
+    for s in &resp[k + 1..] {
+        if v.len() >= need {
+            break;
+        }
+        // The header as the frame carried it (packet.rs checks that a
+        // frame's subpacket lengths add up).
+        let len = (16 + s.payload.len()) as u16;
+        for w in [
+            len,
+            s.class,
+            s.path,
+            s.cmd,
+            s.error as u16,
+            s.detail1,
+            s.detail2,
+        ] {
+            v.extend_from_slice(&w.to_be_bytes());
+        }
+        v.extend_from_slice(&(s.payload.len() as u16).to_be_bytes());
+        v.extend_from_slice(&s.payload);
+    }
+    if v.len() < need {
+        // The answer's body: its count word, then every subpacket.
+        let body = 2 + resp.iter().map(|s| 16 + s.payload.len()).sum::<usize>();
+        if let Some(rest) = req().get(body..) {
+            v.extend_from_slice(rest);
+        }
+    }
+    v.resize(need.max(v.len()), 0);
+    Cow::Owned(v)
+}
+
 /// Up to [`ext_per_frame`] numbers: per number its attributes and its
 /// all-axes values (`ext_cmds`: [no, 1] and [no, no, -1]).
 #[derive(Debug, Clone)]
@@ -151,6 +206,20 @@ impl Call for ReadExt {
                 })
             )
         };
+        // A value block: 8 bytes, then per axis a 30i / Series 15 record
+        // {i32 value, i16 base, i16 decimals} or a 16i word.
+        let rec = match cx.class {
+            CncClass::Series16 { kind } if kind != 2 => 4,
+            _ => 8,
+        };
+        // The request as sent (the session stamps the handle's path).
+        let req = || {
+            let mut subs = self.request(cx);
+            for s in subs.iter_mut().filter(|s| s.path == 0) {
+                s.path = cx.path;
+            }
+            encode_request(&subs)
+        };
         let mut out = Vec::with_capacity(self.numbers.len());
         for (k, n) in self.numbers.iter().enumerate() {
             let one = || -> Result<ExtRecord> {
@@ -160,55 +229,29 @@ impl Call for ReadExt {
                 if number3(&a) || number3(&v) {
                     return Ok(ExtRecord::Missing);
                 }
-                let (a, mut v) = (&a?.payload, v?.payload.clone());
-                // The number asked must be the one answered (an answer too
-                // short to hold it is no answer for it).
-                if a.len() < 12 || i32::from_be_bytes([a[8], a[9], a[10], a[11]]) != *n {
+                a?;
+                v?;
+                // Both read at their fixed offsets, a short payload going on
+                // into what follows it in the frame (`read_on`).
+                let a = read_on(resp, 2 * k, ext_attr_len(cx.class), req);
+                let v = read_on(resp, 2 * k + 1, 8 + rec * count, req);
+                // The number asked must be the one answered.
+                if i32::from_be_bytes([a[8], a[9], a[10], a[11]]) != *n {
                     return Ok(ExtRecord::Missing);
                 }
-                if a.len() < ext_attr_len(cx.class) {
-                    return Err(Error::short("attribute answer shorter than its fields"));
-                }
-                if v.len() < 8 {
-                    // The frame's last subpacket reads as zeros past its
-                    // payload (framing.md) [fuzz, rddiag_ext32 `s3T..empty`:
-                    // an empty last value answer is type 0, values 0];
-                    // a middle one would read the next subpacket's header.
-                    if 2 * k + 2 < resp.len() {
-                        return Err(Error::short("value answer shorter than its header"));
-                    }
-                    v.resize(8, 0);
-                }
-                // The frame's last value answer cut inside its values reads
-                // zeros past its end too [fuzz, rddiag_ext32 30i `s3Tvwwwwcut`:
-                // a value of 3 bytes `5e3bb7` is 0x5e3bb700, decimals 0].
-                if 2 * k + 2 >= resp.len() {
-                    let rec = match cx.class {
-                        CncClass::Series16 { kind } if kind != 2 => 4,
-                        _ => 8,
-                    };
-                    let full = 8 + rec * count;
-                    if v.len() < full {
-                        v.resize(full, 0);
-                    }
-                }
                 let ptype = i16::from_be_bytes([v[6], v[7]]);
-                let (axis, info, unit) = ext_fields(self.table, cx.class, a);
+                let (axis, info, unit) = ext_fields(self.table, cx.class, &a);
                 // Values of every axis from the block's byte 8: a 30i or
-                // Series 15 record {i32 value, i16 base, i16 decimals}, a
-                // 16i word (decimals 0). Values the block lacks read as 0.
+                // Series 15 record (base ignored), a 16i word (decimals 0).
                 let vals = &v[8..];
                 let data = (0..count)
-                    .map(|i| match cx.class {
-                        CncClass::Series16 { kind } if kind != 2 => vals
-                            .get(4 * i..4 * i + 4)
-                            .map_or((0, 0), |b| (i32::from_be_bytes(b.try_into().unwrap()), 0)),
-                        _ => vals.get(8 * i..8 * i + 8).map_or((0, 0), |b| {
-                            (
-                                i32::from_be_bytes([b[0], b[1], b[2], b[3]]),
-                                i16::from_be_bytes([b[6], b[7]]) as i32,
-                            )
-                        }),
+                    .map(|i| {
+                        let b = &vals[rec * i..rec * (i + 1)];
+                        let value = i32::from_be_bytes([b[0], b[1], b[2], b[3]]);
+                        match rec {
+                            4 => (value, 0),
+                            _ => (value, i16::from_be_bytes([b[6], b[7]]) as i32),
+                        }
                     })
                     .collect();
                 Ok(ExtRecord::Found {

@@ -220,10 +220,11 @@ pub fn block_len(class: CncClass, max_axes: usize) -> usize {
     }
 }
 
-/// One exchange of cnc_rdparar: [s, e, axis] → the records of the answer's
-/// whole blocks ([`block_len`] each; a ragged tail is ignored). A CNC
-/// error 2 is read as an answer (its blocks are used), as FANUC's library
-/// reads it.
+/// One exchange of cnc_rdparar: [s, e, axis] → per whole block of the
+/// answer ([`block_len`] each; a ragged tail is ignored) its i32 number
+/// and its record. A CNC error 2 is read as an answer (its blocks are
+/// used), as FANUC's library reads it; an answer without a whole block
+/// gives none (the caller asks again, as FANUC's library does).
 #[derive(Debug, Clone, Copy)]
 pub struct ReadRange {
     pub start: i32,
@@ -232,7 +233,9 @@ pub struct ReadRange {
 }
 
 impl Call for ReadRange {
-    type Output = Vec<Packed>;
+    /// (the block's i32 number, its record); the record keeps the
+    /// number's low 16 bits.
+    type Output = Vec<(i32, Packed)>;
     fn request(&self, cx: &Ctx) -> Vec<ReqSub> {
         let cmd = match cx.class {
             CncClass::Series16 { kind } if kind != 2 => RDPARAM16,
@@ -240,33 +243,23 @@ impl Call for ReadRange {
         };
         vec![ReqSub::cnc(cmd, &[self.start, self.end, self.axis as i32])]
     }
-    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<Packed>> {
+    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Self::Output> {
         let s = match sub(resp, 0) {
             Err(Error::Cnc { code: 2, .. }) => &resp[0],
             r => r?,
         };
         let axes = cx.axes();
         let size = block_len(cx.class, cx.max_axes as usize);
-        if s.payload.len() < size {
-            if s.error != 0 {
-                return sub(resp, 0).map(|_| Vec::new());
-            }
-            // FANUC's library then asks again from its last number + 1
-            // (number 1 before any record); we stop.
-            return Err(Error::short(
-                "parameter range answer shorter than one block",
-            ));
-        }
         let n = s.payload.len() / size;
         (0..n)
-            .map(|i| match cx.class {
-                CncClass::Series16 { kind } if kind != 2 => {
-                    Packed::of_block16(&s.payload[i * size..], axes)
-                }
-                _ => Packed::of_block(
-                    &Param30::from_bytes(&s.payload[i * size..(i + 1) * size])?,
-                    axes,
-                ),
+            .map(|i| {
+                let b = &s.payload[i * size..];
+                let number = i32::from_be_bytes([b[0], b[1], b[2], b[3]]);
+                let rec = match cx.class {
+                    CncClass::Series16 { kind } if kind != 2 => Packed::of_block16(b, axes),
+                    _ => Packed::of_block(&Param30::from_bytes(&b[..size])?, axes),
+                };
+                Ok((number, rec?))
             })
             .collect()
     }

@@ -219,6 +219,19 @@ impl Call for AxisDataCall {
         let first = (p0.len() >= 2).then(|| u16::from_be_bytes([p0[0], p0[1]]));
         let room = self.limit.max(0) as usize;
         let last_at = data_at + codes.len();
+        // A closing count of 0 answered without an error: no records,
+        // EW_OK, whatever error an earlier subpacket holds [fuzz, seed
+        // 0x20271128, rdsvmeter path 2 `e4s2`: error 4 in the data
+        // subpacket, closing count 0: num 0, EW_OK].
+        if let Ok(s) = sub(resp, last_at) {
+            if u16::from_be_bytes(zext(&s.payload)) == 0 {
+                return Ok(AxisDataReply {
+                    count: 0,
+                    values: vec![vec![]; codes.len()],
+                    error: None,
+                });
+            }
+        }
         for i in 1..resp.len() {
             if let Err(e @ Error::Cnc { .. }) = sub(resp, i) {
                 // An error in the closing count: FANUC's library returns it

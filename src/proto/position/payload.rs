@@ -60,13 +60,29 @@ impl Wire for AxisNames {
         self.axes.encode(w);
     }
     fn decode(r: &mut Reader<'_>) -> Result<Self, DecodeError> {
-        // Whole entries only (FANUC's library ignores a longer tail).
+        // Whole entries (FANUC's library ignores a longer tail), and a last
+        // one cut in its unused fourth word: FANUC's library reads the
+        // three names alone [fuzz, seed 0x20271128, rdaxisdata `s1Twwcut`:
+        // 51 bytes for 3 axes are 3 axes]; the cut word reads as zeros.
         let count = r.i32()?;
-        let n = r.remaining() / 16;
-        let axes = (0..n)
-            .map(|_| PosNames::decode(r))
-            .collect::<Result<_, _>>()?;
-        r.bytes(r.remaining())?;
+        let rest = r.bytes(r.remaining())?;
+        let word = |c: &[u8], at: usize| -> [u8; 4] {
+            let mut w = [0u8; 4];
+            let b = c.get(at..).unwrap_or(&[]);
+            let n = b.len().min(4);
+            w[..n].copy_from_slice(&b[..n]);
+            w
+        };
+        let axes = rest
+            .chunks(16)
+            .take_while(|c| c.len() >= 12)
+            .map(|c| PosNames {
+                absolute: word(c, 0),
+                machine: word(c, 4),
+                relative: word(c, 8),
+                other: word(c, 12),
+            })
+            .collect();
         Ok(AxisNames { count, axes })
     }
 }

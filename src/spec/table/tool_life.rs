@@ -76,6 +76,9 @@ pub const FUNCS: &[Func] = &[
         ],
         short: Short::Zeros,
         dims: &["1|0|-1|2|9999"],
+        // As cnc_rdlife [fuzz, seed 0x202a1128 `s0Twwwshort1`: group 0,
+        // counter word 0x376b988b, data written 0].
+        zero_without_first: true,
         ..COMMAND
     },
     Func {
