@@ -384,7 +384,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Long(n) => format!("{}: c_long", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
-            Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
+            Param::In(n, t) | Param::InOut(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
         let count = f.params.iter().find_map(|p| match *p {
@@ -408,8 +408,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
             })
             .collect();
         assert!(
-            count.is_none() || f.records.is_some(),
-            "src/spec/table/: {}: a Param::Count counts records",
+            count.is_none() || f.records.is_some() || f.pages.is_some(),
+            "src/spec/table/: {}: a Param::Count counts records (or a paging function's)",
             f.name
         );
         assert!(
@@ -425,7 +425,16 @@ fn described_exports(funcs: &[types::Func]) -> String {
         let mut offsets = Vec::new();
         let mut checks = Vec::new();
         for field in f.reply {
-            let (_, ty) = outs[field.out as usize];
+            // A field nobody reads may have no output (a paging write's count).
+            let Some(&(_, ty)) = outs.get(field.out as usize) else {
+                assert!(
+                    field.to.is_none(),
+                    "src/spec/table/: {}: a reply field without its output",
+                    f.name
+                );
+                offsets.push("0".to_string());
+                continue;
+            };
             let off = match field.to {
                 Some(m) if !m.is_empty() => member_offset(&rust_type(ty), m, field.c.size()),
                 _ => "0".to_string(),
@@ -449,7 +458,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
-            None => "RecordsAt { base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut() }".to_string(),
+            // No records: a paging write's count is still the caller's.
+            None => format!(
+                "RecordsAt {{ base: 0, stride: 0, offsets: &[], count: None, asked: {} }}",
+                count.as_deref().unwrap_or("std::ptr::null_mut()")
+            ),
             Some(r) => {
                 let (_, ty) = outs[r.out as usize];
                 let base = if r.to.is_empty() {
@@ -569,6 +582,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 _ if p.count == types::TEXT => safety.push(format!(
                     "/// `{n}` must be NULL or point to {} readable bytes, or to a C string ending within them.",
                     p.fields.iter().map(|x| x.wire_len()).sum::<usize>()
+                )),
+                // Paging: every record of the caller's count is read.
+                Some(count) if f.pages.is_some() => safety.push(format!(
+                    "/// `{n}` must be NULL or point to `*{count}` readable {}.",
+                    doc_type(t)
                 )),
                 Some(count) => safety.push(format!(
                     "/// `{n}` must be NULL or point to `{count}` readable {} (at most {} are read).",

@@ -156,6 +156,14 @@ typedef struct ODBUP {
 } ODBUP;
 
 /*
+ cnc_delmagazine: one pot of the magazine management data.
+ */
+typedef struct IODBTLMAG2 {
+    short magazine;
+    short pot;
+} IODBTLMAG2;
+
+/*
  A real diagnosis value: `dgn_val · 10^-dec_val`.
  */
 typedef struct REALDGN {
@@ -830,6 +838,16 @@ typedef struct IODBMR {
     short datano_e;
     struct IODBMR_data data[5];
 } IODBMR;
+
+/*
+ cnc_rdmagazine, cnc_regmagazine: one pot of the magazine management
+ data and the tool management data number in it.
+ */
+typedef struct IODBTLMAG {
+    short magazine;
+    short pot;
+    short tool_index;
+} IODBTLMAG;
 
 /*
  cnc_rdmaxgrp / cnc_rdmaxtool: the most tool life groups, or tools in a
@@ -2560,6 +2578,18 @@ short cnc_delete(unsigned short FlibHndl, short prog_no);
 short cnc_deleteo8(unsigned short FlibHndl, long prog_no);
 
 /*
+ Deletes the `*num` pots of `data` (`magazine`, `pot`) from the magazine
+ management data, 177 per request; `*num` becomes the pots the CNC
+ deleted. `*num` < 1 is EW_NUMBER without traffic; an answer deleting
+ fewer than sent ends the call.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `data` must be NULL or point to `*num` readable IODBTLMAG2.
+ */
+short cnc_delmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG2 *data);
+
+/*
  Deletes the `tuse_num`-th tool of tool life group `grpno`.
  */
 short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
@@ -3382,6 +3412,18 @@ short cnc_rdmacror(unsigned short FlibHndl,
  `*num` writable doubles.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
+ Reads the tool management data number in each of the `*num` pots `data`
+ names (`magazine`, `pot`) into its `tool_index`, 118 pots per request;
+ `*num` becomes the pots read. `*num` < 1 is EW_NUMBER without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `data` must be NULL or point to `*num` writable IODBTLMAG.
+ `data` must be NULL or point to `*num` readable IODBTLMAG.
+ */
+short cnc_rdmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG *data);
 
 /*
  Reads the most tool life groups the CNC manages (`data`; `datano` and
@@ -4514,6 +4556,30 @@ short cnc_rdzofsr(unsigned short FlibHndl,
                   short e_number,
                   short length,
                   struct IODBZOR *zofsr);
+
+/*
+ Registers the `*num` pots of `data` (`magazine`, `pot` and the tool
+ management data number `tool_index` put in it), 118 per request; `*num`
+ becomes the pots the CNC registered. `*num` < 1 is EW_NUMBER without
+ traffic; an answer registering fewer than sent ends the call.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `data` must be NULL or point to `*num` readable IODBTLMAG.
+ */
+short cnc_regmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG *data);
+
+/*
+ Registers the `*num` tools of `tool` as tool management data numbers
+ `top`, `top` + 1 ... (cnc_wrtool's record each), 9 per request, each
+ request's number moved on by the tools registered; `*num` becomes the
+ tools the CNC registered. `top` < 1 is EW_NUMBER without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `tool` must be NULL or point to `*num` readable IODBTLMNG.
+ */
+short cnc_regtool(unsigned short FlibHndl, short top, short *num, struct IODBTLMNG *tool);
 
 /*
  Reads the relative position.

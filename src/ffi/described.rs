@@ -168,6 +168,10 @@ pub(crate) unsafe fn exec(
         }
         _ => None,
     };
+    if f.pages.is_some() {
+        // SAFETY: the caller's contract, as for the rest of exec.
+        return unsafe { pages(f, &h, args, outs, offsets, &rec, &pay, count) };
+    }
     let n = payload_records(f, args);
     let payload = match n {
         0 => Vec::new(),
@@ -260,6 +264,105 @@ pub(crate) unsafe fn exec(
         }
     }
     Ok(())
+}
+
+/// The exchanges of a paging function ([`Func::pages`]): each request
+/// carries the next slice of the caller's records (its count argument the
+/// slice's length, [`crate::spec::Pages::advance`]'s argument moved on by
+/// the records done), each answer's records go to the caller's array from
+/// the first not done, and its first integer advances `done`; `*count`
+/// becomes `done` whatever the end.
+///
+/// # Safety
+/// As [`exec`]: `pay.input` holds `*count` records of `pay.stride` bytes,
+/// and the records' output (with [`Param::InOut`](crate::spec::Param::InOut)
+/// the same array) `*count` elements of `rec.stride` bytes.
+#[allow(clippy::too_many_arguments)]
+unsafe fn pages(
+    f: &'static Func,
+    h: &handles::Handle,
+    args: &[i32],
+    outs: &[*mut u8],
+    offsets: &[usize],
+    rec: &RecordsAt<'_>,
+    pay: &PayloadAt<'_>,
+    count: Option<*mut c_short>,
+) -> Result<()> {
+    let (Some(pg), Some(per_page), Some(ci), Some(count)) =
+        (f.pages, f.per_page(), f.count(), count)
+    else {
+        return Err(Error::local(EW_FUNC, "a paging function without its count"));
+    };
+    let total = usize::try_from(args[ci]).unwrap_or(0);
+    let (mut done, mut empty) = (0usize, 0);
+    let r = loop {
+        if done >= total {
+            break Ok(());
+        }
+        let k = (total - done).min(per_page.max(1));
+        let mut a = args.to_vec();
+        a[ci] = k as i32;
+        if let Some(i) = pg.advance {
+            let i = usize::from(i);
+            a[i] = a[i].wrapping_add(done as i32);
+        }
+        let payload = match f.payload {
+            Some(_) if !pay.input.is_null() => {
+                // SAFETY: records done..done + k of the caller's `*count`.
+                let b = unsafe {
+                    std::slice::from_raw_parts(pay.input.add(done * pay.stride), k * pay.stride)
+                };
+                payload_values(f, b, pay.stride, pay.offsets, k)
+            }
+            _ => Vec::new(),
+        };
+        let call = Described {
+            f,
+            args: &a,
+            payload: &payload,
+            late: None,
+        };
+        let values = match h.call(&call) {
+            Ok(v) => v,
+            Err(e) => break Err(e),
+        };
+        // The answer's count: the records it did, at most those sent.
+        let did = values
+            .first()
+            .map_or(0, |v| usize::try_from(*v).unwrap_or(0))
+            .min(k);
+        let mut v = values.into_iter();
+        // SAFETY: the caller's contract (offsets and elements in the outputs).
+        unsafe { write_fields(f.reply, outs, |j| offsets[j], &mut v) };
+        if let Some(r) = &f.records {
+            let per = r.values();
+            let mut i = 0;
+            while v.len() >= per && per > 0 && i < did {
+                let at = |j: usize| rec.base + (done + i) * rec.stride + rec.offsets[j];
+                // SAFETY: done + i < `*count`, the caller's array.
+                unsafe { write_fields(r.fields, outs, at, &mut v) };
+                i += 1;
+            }
+        }
+        if did == 0 {
+            // FANUC's library asks again, for ever while the CNC answers
+            // none: a read asks once more (a second in a row ends it), a
+            // write never sends its records again.
+            empty += 1;
+            if f.records.is_none() || empty == 2 {
+                break Ok(());
+            }
+            continue;
+        }
+        empty = 0;
+        done += did;
+        if did < k && !pg.resume {
+            break Ok(());
+        }
+    };
+    // SAFETY: the caller's count, checked non-NULL.
+    unsafe { put(count, done as c_short) };
+    r
 }
 
 /// Writes `fields`' integers, field k's elements from byte `at(k)` of its

@@ -38,6 +38,11 @@ pub enum Param {
     /// `TYPE *NAME`: the records a write sends, read from the caller's
     /// array ([`Func::payload`]). TYPE as for [`Param::Out`].
     In(&'static str, &'static str),
+    /// `TYPE *NAME`: the caller's records, both sent (the payload reads
+    /// them, as from a [`Param::In`]) and answered (the records are written
+    /// back into them, as into a [`Param::Out`]): cnc_rdmagazine sends the
+    /// pots and reads back their tools. It is an output and the input.
+    InOut(&'static str, &'static str),
 }
 
 impl Param {
@@ -49,7 +54,7 @@ impl Param {
             Param::Short(_) | Param::Count(_) => Some(v as i16 as i32),
             Param::Long(_) => Some(v as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
-            Param::Out(..) | Param::In(..) => None,
+            Param::Out(..) | Param::In(..) | Param::InOut(..) => None,
         }
     }
     pub const fn name(&self) -> &'static str {
@@ -59,7 +64,8 @@ impl Param {
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
-            | Param::In(n, _) => n,
+            | Param::In(n, _)
+            | Param::InOut(n, _) => n,
         }
     }
 }
@@ -221,6 +227,37 @@ pub struct Payload {
     pub max: u16,
 }
 
+/// A function that pages ([`Func::pages`]): it repeats its request and
+/// reply over the caller's records, as many per request as
+/// `bytes` of the payload hold ([`Func::payload`]'s records; none: the
+/// records the reply's [`Records`] take, by their wire size), the count
+/// parameter's value ([`Param::Count`]) the records in that request. Each
+/// request carries the next slice of the caller's records (from the first
+/// not done on); the reply's first integer is the records the answer did
+/// (read or registered), which advance `done`; it asks again while
+/// `done` < the caller's count, and the count becomes `done` at the end.
+/// An error answer returns its code, the records before it kept (and the
+/// count `done`). An answer doing none (or a negative number): a read (a
+/// function with [`Records`]) asks the same again, and ends with EW_OK at
+/// the second in a row; a write ends there with EW_OK (ours: FANUC's
+/// library asks again, for ever while the CNC answers none); one doing
+/// more than it was sent counts as doing what was sent (ours: FANUC's
+/// library writes and counts them all, past the caller's array).
+#[derive(Debug, Clone, Copy)]
+pub struct Pages {
+    /// The most payload bytes one request carries.
+    pub bytes: u16,
+    /// Number parameter `a` goes on the wire as its value plus `done`
+    /// (cnc_regtool's first data number), if any.
+    pub advance: Option<u8>,
+    /// An answer doing fewer records than its request carried: true, the
+    /// next request carries the rest from the first not done (as FANUC's
+    /// library does); false, the call ends there with EW_OK (ours: FANUC's
+    /// library goes on with the records after the ones it sent, reading
+    /// past the caller's array).
+    pub resume: bool,
+}
+
 /// One FOCAS function.
 #[derive(Debug, Clone, Copy)]
 pub struct Func {
@@ -286,6 +323,8 @@ pub struct Func {
     /// read as [`Func::short`] says (zeros: FANUC's library reads them from
     /// its zeroed buffer) (cnc_rdsyshard, cnc_rdsyssoft3).
     pub counted: Option<u8>,
+    /// The request repeated over the caller's records ([`Pages`]).
+    pub pages: Option<Pages>,
 }
 
 impl Func {
@@ -297,7 +336,7 @@ impl Func {
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
             Param::Short(n) | Param::Long(n) | Param::ShortAs(n, _) | Param::Count(n) => Some(n),
-            Param::Out(..) | Param::In(..) => None,
+            Param::Out(..) | Param::In(..) | Param::InOut(..) => None,
         })
     }
     /// The [`Param::Count`] parameter, if any: its index among the number
@@ -306,10 +345,11 @@ impl Func {
         self.numbers()
             .position(|n| self.params.contains(&Param::Count(n)))
     }
-    /// The [`Param::In`] parameter, if any: (name, C type).
+    /// The [`Param::In`] (or [`Param::InOut`]) parameter, if any: (name,
+    /// C type).
     pub fn input(&self) -> Option<(&'static str, &'static str)> {
         self.params.iter().find_map(|p| match *p {
-            Param::In(n, t) => Some((n, t)),
+            Param::In(n, t) | Param::InOut(n, t) => Some((n, t)),
             _ => None,
         })
     }
@@ -337,12 +377,25 @@ impl Func {
                 .map(|k| self.numbers().count() + k),
         }
     }
-    /// The output parameters, in order: (name, C type).
+    /// The output parameters ([`Param::Out`], [`Param::InOut`]), in
+    /// order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Out(n, t) => Some((n, t)),
+            Param::Out(n, t) | Param::InOut(n, t) => Some((n, t)),
             _ => None,
         })
+    }
+    /// The records one request of a paging function ([`Func::pages`])
+    /// carries at most: its byte budget over one record's wire bytes (the
+    /// payload's, else the reply records'); None for another function.
+    pub fn per_page(&self) -> Option<usize> {
+        let pg = self.pages?;
+        let size: usize = match (&self.payload, &self.records) {
+            (Some(p), _) => p.fields.iter().map(Field::wire_len).sum(),
+            (None, Some(r)) => r.fields.iter().map(Field::wire_len).sum(),
+            (None, None) => 0,
+        };
+        Some(usize::from(pg.bytes) / size.max(1))
     }
     /// The reply payload's length in bytes (of every subpacket's answer).
     pub fn reply_len(&self) -> usize {

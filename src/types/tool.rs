@@ -161,6 +161,24 @@ pub struct IODBTLMNG {
     pub custom20: LONG,
 }
 
+/// cnc_rdmagazine, cnc_regmagazine: one pot of the magazine management
+/// data and the tool management data number in it.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLMAG {
+    pub magazine: c_short,
+    pub pot: c_short,
+    pub tool_index: c_short,
+}
+
+/// cnc_delmagazine: one pot of the magazine management data.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLMAG2 {
+    pub magazine: c_short,
+    pub pot: c_short,
+}
+
 /// cnc_rdtooldata: the tool data of a punch press.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

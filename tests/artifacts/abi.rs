@@ -406,6 +406,8 @@ rust_layouts! {
     ODBTG { grp_num, dummy, ntool, life, count, data }
     IODBTGI { s_grp, dummy, e_grp, data }
     ODBUSEGRP { next, r#use, slct, opt_next, opt_use, opt_slct }
+    IODBTLMAG { magazine, pot, tool_index }
+    IODBTLMAG2 { magazine, pot }
     ODBUSEGR { datano, r#type, next, r#use, slct }
     ODBLFNO { datano, r#type, data }
     IODBTD { datano, r#type, tool_num, h_code, d_code, tool_inf }

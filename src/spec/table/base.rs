@@ -26,6 +26,7 @@ pub const COMMAND: Func = Func {
     zero_unless: None,
     binary: None,
     counted: None,
+    pages: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -60,4 +61,5 @@ pub const SERVO_LONGS: Func = Func {
     zero_unless: None,
     binary: None,
     counted: None,
+    pages: None,
 };
