@@ -270,7 +270,7 @@ pub(crate) unsafe fn exec(
 /// carries the next slice of the caller's records (its count argument the
 /// slice's length, [`crate::spec::Pages::advance`]'s argument moved on by
 /// the records done), each answer's records go to the caller's array from
-/// the first not done, and its first integer advances `done`; `*count`
+/// the slice's first, and its first integer advances `done`; `*count`
 /// becomes `done` whatever the end.
 ///
 /// # Safety
@@ -293,13 +293,20 @@ unsafe fn pages(
     else {
         return Err(Error::local(EW_FUNC, "a paging function without its count"));
     };
-    let total = usize::try_from(args[ci]).unwrap_or(0);
-    let (mut done, mut empty) = (0usize, 0);
+    let total = i64::from(args[ci]).max(0) as usize;
+    // Records done (the answers' counts), records sent, answers of none
+    // in a row.
+    let (mut done, mut sent, mut empty) = (0usize, 0usize, 0);
     let r = loop {
         if done >= total {
             break Ok(());
         }
         let k = (total - done).min(per_page.max(1));
+        let start = if pg.from_done { done } else { sent };
+        if start + k > total {
+            // FANUC's library sends the records after the caller's array.
+            break Ok(());
+        }
         let mut a = args.to_vec();
         a[ci] = k as i32;
         if let Some(i) = pg.advance {
@@ -308,9 +315,9 @@ unsafe fn pages(
         }
         let payload = match f.payload {
             Some(_) if !pay.input.is_null() => {
-                // SAFETY: records done..done + k of the caller's `*count`.
+                // SAFETY: records start..start + k of the caller's `*count`.
                 let b = unsafe {
-                    std::slice::from_raw_parts(pay.input.add(done * pay.stride), k * pay.stride)
+                    std::slice::from_raw_parts(pay.input.add(start * pay.stride), k * pay.stride)
                 };
                 payload_values(f, b, pay.stride, pay.offsets, k)
             }
@@ -326,42 +333,45 @@ unsafe fn pages(
             Ok(v) => v,
             Err(e) => break Err(e),
         };
-        // The answer's count: the records it did, at most those sent.
-        let did = values
+        // The answer's count (a negative one as none).
+        let n = values
             .first()
-            .map_or(0, |v| usize::try_from(*v).unwrap_or(0))
-            .min(k);
+            .map_or(0, |v| usize::try_from(*v).unwrap_or(0));
         let mut v = values.into_iter();
         // SAFETY: the caller's contract (offsets and elements in the outputs).
         unsafe { write_fields(f.reply, outs, |j| offsets[j], &mut v) };
+        let mut written = 0;
         if let Some(r) = &f.records {
             let per = r.values();
-            let mut i = 0;
-            while v.len() >= per && per > 0 && i < did {
-                let at = |j: usize| rec.base + (done + i) * rec.stride + rec.offsets[j];
-                // SAFETY: done + i < `*count`, the caller's array.
+            // At most the slice's (FANUC's library writes every record the
+            // count announces, past the caller's array).
+            while v.len() >= per && per > 0 && written < n.min(k) {
+                let at = |j: usize| rec.base + (start + written) * rec.stride + rec.offsets[j];
+                // SAFETY: start + written < start + k <= `*count`.
                 unsafe { write_fields(r.fields, outs, at, &mut v) };
-                i += 1;
+                written += 1;
             }
         }
-        if did == 0 {
-            // FANUC's library asks again, for ever while the CNC answers
-            // none: a read asks once more (a second in a row ends it), a
-            // write never sends its records again.
-            empty += 1;
-            if f.records.is_none() || empty == 2 {
-                break Ok(());
+        sent += k;
+        if pg.from_done {
+            // A read: the records written.
+            done += written;
+            if written == 0 {
+                // FANUC's library asks the same again, for ever while the
+                // CNC answers none: ours once more.
+                empty += 1;
+                if empty == 2 {
+                    break Ok(());
+                }
+                continue;
             }
-            continue;
-        }
-        empty = 0;
-        done += did;
-        if did < k && !pg.resume {
-            break Ok(());
+            empty = 0;
+        } else {
+            done = done.saturating_add(n);
         }
     };
     // SAFETY: the caller's count, checked non-NULL.
-    unsafe { put(count, done as c_short) };
+    unsafe { put(count, done.min(i16::MAX as usize) as c_short) };
     r
 }
 

@@ -228,21 +228,24 @@ pub struct Payload {
 }
 
 /// A function that pages ([`Func::pages`]): it repeats its request and
-/// reply over the caller's records, as many per request as
-/// `bytes` of the payload hold ([`Func::payload`]'s records; none: the
-/// records the reply's [`Records`] take, by their wire size), the count
-/// parameter's value ([`Param::Count`]) the records in that request. Each
-/// request carries the next slice of the caller's records (from the first
-/// not done on); the reply's first integer is the records the answer did
-/// (read or registered), which advance `done`; it asks again while
-/// `done` < the caller's count, and the count becomes `done` at the end.
-/// An error answer returns its code, the records before it kept (and the
-/// count `done`). An answer doing none (or a negative number): a read (a
-/// function with [`Records`]) asks the same again, and ends with EW_OK at
-/// the second in a row; a write ends there with EW_OK (ours: FANUC's
-/// library asks again, for ever while the CNC answers none); one doing
-/// more than it was sent counts as doing what was sent (ours: FANUC's
-/// library writes and counts them all, past the caller's array).
+/// reply over the caller's records, as many per request as `bytes` of the
+/// payload hold ([`Func::payload`]'s records; none: the reply's
+/// [`Records`]', by their wire size), the count parameter's value
+/// ([`Param::Count`]) the records in that request: the caller's count
+/// less `done`, at most that many. The reply's first integer is the
+/// records the answer did (read or registered; a negative one none),
+/// which advance `done`; it asks again while `done` < the caller's count,
+/// and the count becomes `done` at the end (a write's as the CNC counted,
+/// past the caller's count too). An error answer returns its code, the
+/// records before it kept (and the count `done`).
+///
+/// Ours where FANUC's library is broken: a request whose slice would end
+/// past the caller's array is not sent, the call ending there with EW_OK
+/// (FANUC's library sends the bytes after the array: a write answered
+/// with fewer than it sent); a read answered with none asks once more and
+/// ends at the second in a row (FANUC's library asks for ever), and
+/// answered with more records than it asked writes and counts those it
+/// asked (FANUC's library writes them all, past the caller's array).
 #[derive(Debug, Clone, Copy)]
 pub struct Pages {
     /// The most payload bytes one request carries.
@@ -250,12 +253,11 @@ pub struct Pages {
     /// Number parameter `a` goes on the wire as its value plus `done`
     /// (cnc_regtool's first data number), if any.
     pub advance: Option<u8>,
-    /// An answer doing fewer records than its request carried: true, the
-    /// next request carries the rest from the first not done (as FANUC's
-    /// library does); false, the call ends there with EW_OK (ours: FANUC's
-    /// library goes on with the records after the ones it sent, reading
-    /// past the caller's array).
-    pub resume: bool,
+    /// Where the next request's slice starts: true, at the first record
+    /// not done, the answer's records counted as done (a read:
+    /// cnc_rdmagazine); false, after the records sent, `done` the CNC's
+    /// counts (a write: cnc_regmagazine).
+    pub from_done: bool,
 }
 
 /// One FOCAS function.

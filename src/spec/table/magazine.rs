@@ -226,14 +226,14 @@ pub const FUNCS: &[Func] = &[
         pages: Some(Pages {
             bytes: 1416,
             advance: None,
-            resume: true,
+            from_done: true,
         }),
         learnt: Some(&[]),
         ..COMMAND
     },
     Func {
         name: "cnc_regmagazine",
-        doc: "Registers the `*num` pots of `data` (`magazine`, `pot` and the tool management data number `tool_index` put in it), 118 per request; `*num` becomes the pots the CNC registered. `*num` < 1 is EW_NUMBER without traffic; an answer registering fewer than sent ends the call.",
+        doc: "Registers the `*num` pots of `data` (`magazine`, `pot` and the tool management data number `tool_index` put in it), 118 per request; `*num` becomes the pots the CNC registered. `*num` < 1 is EW_NUMBER without traffic;.",
         params: &[Param::Count("num"), Param::In("data", "IODBTLMAG")],
         checks: &[NUM_AT_LEAST_ONE],
         forms: &[every_class(cmd::REGMAGAZINE, &[])],
@@ -248,14 +248,14 @@ pub const FUNCS: &[Func] = &[
         pages: Some(Pages {
             bytes: 1416,
             advance: None,
-            resume: false,
+            from_done: false,
         }),
         learnt: Some(&[]),
         ..COMMAND
     },
     Func {
         name: "cnc_delmagazine",
-        doc: "Deletes the `*num` pots of `data` (`magazine`, `pot`) from the magazine management data, 177 per request; `*num` becomes the pots the CNC deleted. `*num` < 1 is EW_NUMBER without traffic; an answer deleting fewer than sent ends the call.",
+        doc: "Deletes the `*num` pots of `data` (`magazine`, `pot`) from the magazine management data, 177 per request; `*num` becomes the pots the CNC deleted. `*num` < 1 is EW_NUMBER without traffic;.",
         params: &[Param::Count("num"), Param::In("data", "IODBTLMAG2")],
         checks: &[NUM_AT_LEAST_ONE],
         forms: &[every_class(cmd::DELMAGAZINE, &[])],
@@ -270,7 +270,7 @@ pub const FUNCS: &[Func] = &[
         pages: Some(Pages {
             bytes: 1416,
             advance: None,
-            resume: false,
+            from_done: false,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -301,7 +301,7 @@ pub const FUNCS: &[Func] = &[
         pages: Some(Pages {
             bytes: 1416,
             advance: Some(0),
-            resume: true,
+            from_done: false,
         }),
         learnt: Some(&[]),
         ..COMMAND
