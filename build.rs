@@ -640,8 +640,9 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
                 String::new()
             },
             unsafe_ = if pointers { "unsafe " } else { "" },
-            // A read may join a batch (fwlib_batch_begin); a command not.
-            boundary = if outs.is_empty() {
+            // A read may join a batch (fwlib_batch_begin); a command not,
+            // nor a paging read (several exchanges, as cnc_rdtool).
+            boundary = if outs.is_empty() || f.pages.is_some() {
                 "ffi_boundary"
             } else {
                 "ffi_read"
