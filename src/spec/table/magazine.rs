@@ -228,7 +228,10 @@ pub const FUNCS: &[Func] = &[
             advance: None,
             from_done: true,
         }),
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "crashed on coded replies (8, 64, 1428 bytes): the answer's first word is the pots' count, which a coded reply makes huge (records past *num written); probed with counted answers (1, 2 of 4 with 1 record, 5 of 4)",
+            "every coded reply was refused: the count and the pots asked again while done < *num; settled by recording",
+        ]),
         ..COMMAND
     },
     Func {
