@@ -293,25 +293,31 @@ unsafe fn pages(
     else {
         return Err(Error::local(EW_FUNC, "a paging function without its count"));
     };
-    let total = i64::from(args[ci]).max(0) as usize;
-    // Records done (the answers' counts), records sent, answers of none
-    // in a row.
-    let (mut done, mut sent, mut empty) = (0usize, 0usize, 0);
+    // The caller's count is a `short`; so is `done`, which FANUC's library
+    // advances by each answer's count cut to 16 bits.
+    let total = args[ci] as i16;
+    // Records done, records sent, answers of none in a row.
+    let (mut done, mut sent, mut empty) = (0i16, 0usize, 0);
     let r = loop {
         if done >= total {
             break Ok(());
         }
-        let k = (total - done).min(per_page.max(1));
-        let start = if pg.from_done { done } else { sent };
-        if start + k > total {
-            // FANUC's library sends the records after the caller's array.
+        let k = ((i32::from(total) - i32::from(done)) as usize).min(per_page.max(1));
+        let start = if pg.from_done {
+            usize::try_from(done).ok()
+        } else {
+            Some(sent)
+        };
+        // FANUC's library sends the records before or after the caller's
+        // array.
+        let Some(start) = start.filter(|s| s + k <= total as usize) else {
             break Ok(());
-        }
+        };
         let mut a = args.to_vec();
         a[ci] = k as i32;
         if let Some(i) = pg.advance {
             let i = usize::from(i);
-            a[i] = a[i].wrapping_add(done as i32);
+            a[i] = a[i].wrapping_add(i32::from(done));
         }
         let payload = match f.payload {
             Some(_) if !pay.input.is_null() => {
@@ -333,19 +339,17 @@ unsafe fn pages(
             Ok(v) => v,
             Err(e) => break Err(e),
         };
-        // The answer's count (a negative one as none).
-        let n = values
-            .first()
-            .map_or(0, |v| usize::try_from(*v).unwrap_or(0));
+        // The answer's count (an i32).
+        let n = values.first().copied().unwrap_or(0);
         let mut v = values.into_iter();
         // SAFETY: the caller's contract (offsets and elements in the outputs).
         unsafe { write_fields(f.reply, outs, |j| offsets[j], &mut v) };
-        let mut written = 0;
         if let Some(r) = &f.records {
             let per = r.values();
+            let mut written = 0;
             // At most the slice's (FANUC's library writes every record the
             // count announces, past the caller's array).
-            while v.len() >= per && per > 0 && written < n.min(k) {
+            while v.len() >= per && per > 0 && (written as i64) < n.min(k as i64) {
                 let at = |j: usize| rec.base + (start + written) * rec.stride + rec.offsets[j];
                 // SAFETY: start + written < start + k <= `*count`.
                 unsafe { write_fields(r.fields, outs, at, &mut v) };
@@ -353,25 +357,25 @@ unsafe fn pages(
             }
         }
         sent += k;
-        if pg.from_done {
-            // A read: the records written.
-            done += written;
-            if written == 0 {
-                // FANUC's library asks the same again, for ever while the
-                // CNC answers none: ours once more.
-                empty += 1;
-                if empty == 2 {
-                    break Ok(());
-                }
-                continue;
+        if pg.from_done && n == 0 {
+            // FANUC's library asks the same again, for ever while the CNC
+            // answers none: ours once more.
+            empty += 1;
+            if empty == 2 {
+                break Ok(());
             }
-            empty = 0;
-        } else {
-            done = done.saturating_add(n);
+            continue;
         }
+        empty = 0;
+        done = if pg.from_done && n > k as i64 {
+            // Ours: the records asked (FANUC's library counts them all).
+            done.wrapping_add(k as i16)
+        } else {
+            done.wrapping_add(n as i16)
+        };
     };
     // SAFETY: the caller's count, checked non-NULL.
-    unsafe { put(count, done.min(i16::MAX as usize) as c_short) };
+    unsafe { put(count, done) };
     r
 }
 

@@ -6,7 +6,7 @@ use super::profile::offset::{ToolGroupProfile, ToolProfile};
 use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{DELMAGAZINE, RDMAGAZINE, REGMAGAZINE, REGTOOL};
+use crate::proto::cmd::{DELMAGAZINE, RDMAGAZINE, REGMAGAZINE, REGTOOL, REGTOOL_F2};
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
 use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO, WRMAGAZINE, WRTOOL};
 use crate::proto::packet::ReqSub;
@@ -76,10 +76,9 @@ pub(super) const ROUTES: &[Route] = &[
         m.delete_pots(q.path, q.payload).map(|n| vec![n])
     }),
     // cnc_regtool [top] + records as cnc_wrtool's: data numbers top, top + 1 ...
-    Route::table(REGTOOL, |m, q| {
-        m.register_managed(q.path, q.arg(0), q.payload)
-            .map(|n| vec![n])
-    }),
+    Route::table(REGTOOL, |m, q| m.register_tools(q)),
+    // cnc_regtool_f2: the same with 40 custom data a record.
+    Route::table(REGTOOL_F2, |m, q| m.register_tools(q)),
     // cnc_wrtool [tool_no] + the record cnc_rdtool reads.
     Route::table(WRTOOL, |m, q| {
         none(m.write_managed(q.path, q.arg(0), q.payload))
@@ -273,15 +272,15 @@ impl Machine {
         Ok(recs.len() as i64)
     }
 
-    /// 0x0149 `[top]` + records as cnc_wrtool sends them (40 integers
-    /// each): tool management data numbers `top`, `top + 1` ... take them
+    /// 0x0149 `[top]` + records as cnc_wrtool sends them (`per` integers
+    /// each: 40, or 60 with cnc_regtool_f2's 40 custom data): tool management data numbers `top`, `top + 1` ... take them
     /// as [`Machine::write_managed`] writes one, a number one past the
     /// table's end adding an entry; the answer is the tools registered. A
     /// number below 1 or further past the end: EW_NUMBER; a record
     /// cnc_wrtool's checks refuse: EW_DATA; nothing changed.
-    pub fn register_managed(&mut self, path: u16, top: i32, v: &[i64]) -> Reply<i64> {
+    pub fn register_managed(&mut self, path: u16, top: i32, v: &[i64], per: usize) -> Reply<i64> {
         let tools = &self.path(path)?.managed_tools;
-        let n = v.len() / 40;
+        let n = v.len() / per;
         if top < 1 || top as usize - 1 > tools.len() {
             return Err(NUMBER);
         }
@@ -289,13 +288,21 @@ impl Machine {
         let mut copy = self.clone_managed(path)?;
         copy.resize((top as usize - 1 + n).max(copy.len()), Default::default());
         let all = std::mem::replace(self.managed_mut(path)?, copy);
-        for (k, rec) in v.chunks_exact(40).enumerate() {
+        for (k, rec) in v.chunks_exact(per).enumerate() {
             if let Err(e) = self.write_managed(path, top + k as i32, rec) {
                 *self.managed_mut(path)? = all;
                 return Err(e);
             }
         }
         Ok(n as i64)
+    }
+
+    /// cnc_regtool's and cnc_regtool_f2's answer: [`Machine::register_managed`]
+    /// with records of the function's payload (40 or 60 integers).
+    fn register_tools(&mut self, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+        let per = q.f.payload.map_or(40, |p| p.fields.len());
+        let n = self.register_managed(q.path, q.arg(0), q.payload, per)?;
+        Ok(vec![n])
     }
 
     fn clone_managed(&self, path: u16) -> Reply<Vec<super::profile::offset::ManagedTool>> {
@@ -339,7 +346,8 @@ impl Machine {
         (t.spindle_speed, t.feedrate) = (w(9), w(10));
         (t.magazine, t.pot) = (w(11) as i16 as i32, w(12) as i16 as i32);
         t.group = w(16);
-        t.custom = (20..40).map(w).collect();
+        // Custom 1..20 (cnc_wrtool), or 1..40 (cnc_regtool_f2).
+        t.custom = (20..v.len()).map(w).collect();
         Ok(())
     }
 

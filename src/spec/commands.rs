@@ -318,6 +318,9 @@ commands! {
     /// 156-byte records, 9 per request; the answer's i32 the tools
     /// registered.
     REGTOOL = CLASS_CNC 0x0149 [cnc_regtool];
+    /// cnc_regtool_f2: as cnc_regtool, records of 59 words (40 custom
+    /// data), 6 per request.
+    REGTOOL_F2 = CLASS_CNC 0x0185 [cnc_regtool_f2];
     /// cnc_regmagazine: (1,0x014e)[0, 0, 0, 0, len] + records i32
     /// magazine, pot, tool_index, 118 per request; the answer's i32 the
     /// records registered.

@@ -233,16 +233,19 @@ pub struct Payload {
 /// [`Records`]', by their wire size), the count parameter's value
 /// ([`Param::Count`]) the records in that request: the caller's count
 /// less `done`, at most that many. The reply's first integer is the
-/// records the answer did (read or registered; a negative one none),
-/// which advance `done`; it asks again while `done` < the caller's count,
-/// and the count becomes `done` at the end (a write's as the CNC counted,
-/// past the caller's count too). An error answer returns its code, the
-/// records before it kept (and the count `done`).
+/// records the answer did (read or registered), which advances `done` (a
+/// `short`, as FANUC's library keeps it: the count cut to 16 bits is
+/// added; a read writes its records only for a count above 0); it asks
+/// again while `done` < the caller's count, and the count becomes `done`
+/// at the end (as the CNC counted, past the caller's count too). An error
+/// answer returns its code, the records before it kept (and the count
+/// `done`).
 ///
-/// Ours where FANUC's library is broken: a request whose slice would end
-/// past the caller's array is not sent, the call ending there with EW_OK
-/// (FANUC's library sends the bytes after the array: a write answered
-/// with fewer than it sent); a read answered with none asks once more and
+/// Ours where FANUC's library is broken: a request whose slice would start
+/// before or end past the caller's array is not sent, the call ending
+/// there with EW_OK (FANUC's library sends the bytes around the array: a
+/// write answered with fewer than it sent, a read's `done` gone negative);
+/// a read answered with none asks once more and
 /// ends at the second in a row (FANUC's library asks for ever), and
 /// answered with more records than it asked writes and counts those it
 /// asked (FANUC's library writes them all, past the caller's array).
