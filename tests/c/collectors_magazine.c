@@ -1,7 +1,7 @@
 /* The magazine and tool management family added from FANUC's library
  * (cnc_rdmaxgrp, cnc_rdmaxtool, cnc_rdusegrpid, cnc_rd1tlifedata,
  * cnc_rd2tlifedata, cnc_wrmagazine, cnc_wrtool, and the paging cnc_rdmagazine,
- * cnc_regmagazine, cnc_delmagazine, cnc_regtool), called through the .so against focas-sim; prints
+ * cnc_regmagazine, cnc_delmagazine, cnc_regtool, cnc_regtool_f2), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_magazine HOST PORT */
 #include <stdio.h>
@@ -211,6 +211,24 @@ int main(int argc, char **argv) {
     num = 1;
     rc = cnc_regtool(h, 0, &num, tools);
     printf("regtool.refused0=%d,%d\n", rc, num);
+
+    /* cnc_regtool_f2: 7 entries with 40 custom data from data number 13
+     * on (6, then 1 per exchange), read back with cnc_rdtool (custom 1..20). */
+    static IODBTLMNG_F2 f2[7];
+    for (int k = 0; k < 7; k++) {
+        memset(&f2[k], 0, sizeof f2[k]);
+        f2[k].T_code = 200 + k;
+        f2[k].max_life = 70;
+        f2[k].custom20 = 2000 + k;
+        f2[k].custom40 = 4000 + k;
+    }
+    num = 7;
+    check("regtool_f2", cnc_regtool_f2(h, 13, &num, f2));
+    printf("regtool_f2=%d\n", num);
+    num = 7;
+    check("rdtool", cnc_rdtool(h, 13, &num, back10));
+    printf("regtool_f2.back=%d,%d,%d,%d\n", num, (int)back10[0].T_code, (int)back10[6].T_code,
+           (int)back10[6].custom20);
 
     cnc_freelibhndl(h);
     return 0;

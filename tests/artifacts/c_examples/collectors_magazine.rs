@@ -1,7 +1,7 @@
 //! tests/c/collectors_magazine.c: the magazine and tool management family
 //! through the .so, compared with the simulator's tool life state; the
 //! writes (cnc_wrmagazine, cnc_wrtool, and the paging cnc_regmagazine,
-//! cnc_delmagazine, cnc_regtool) read back from C (cnc_rdmagazine,
+//! cnc_delmagazine, cnc_regtool, cnc_regtool_f2) read back from C (cnc_rdmagazine,
 //! cnc_rdtool) and checked in the simulator (through a second connection).
 
 use super::run_c_test;
@@ -127,7 +127,11 @@ fn magazine_and_tool_data_follow_the_machine() {
     // tools registered.
     assert_eq!(pots(&sim), [(0, 0), (0, 0)]);
     assert_eq!(managed(&sim, 12), (109, 9, 59, 10, 0));
-    assert_eq!(tool_count(&sim), 12);
+    // cnc_regtool_f2: data numbers 13..19 added (6, then 1), read back.
+    assert_eq!(kv["regtool_f2"], "7");
+    assert_eq!(ints(&kv["regtool_f2.back"]), [7, 200, 206, 2006]);
+    assert_eq!(tool_count(&sim), 19);
+    assert_eq!(managed(&sim, 19), (206, 0, 70, 0, 0));
 }
 
 /// How many entries the simulator's tool management data holds: the
