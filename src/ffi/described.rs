@@ -293,31 +293,28 @@ unsafe fn pages(
     else {
         return Err(Error::local(EW_FUNC, "a paging function without its count"));
     };
-    // The caller's count is a `short`; so is `done`, which FANUC's library
-    // advances by each answer's count cut to 16 bits.
-    let total = args[ci] as i16;
-    // Records done, records sent, answers of none in a row.
-    let (mut done, mut sent, mut empty) = (0i16, 0usize, 0);
+    // As FANUC's library counts: the records still to do, an `int` less
+    // each answer's count; the slice's start moves by the records written
+    // (a read) or sent (a write); the count becomes the caller's less what
+    // remains, cut to a `short`.
+    let total = args[ci];
+    // Records to do, the next slice's start, answers of none in a row.
+    let (mut left, mut next, mut empty) = (total, 0usize, 0);
     let r = loop {
-        if done >= total {
+        if left <= 0 {
             break Ok(());
         }
-        let k = ((i32::from(total) - i32::from(done)) as usize).min(per_page.max(1));
-        let start = if pg.from_done {
-            usize::try_from(done).ok()
-        } else {
-            Some(sent)
-        };
-        // FANUC's library sends the records before or after the caller's
-        // array.
-        let Some(start) = start.filter(|s| s + k <= total as usize) else {
+        let k = (left as usize).min(per_page.max(1));
+        let start = next;
+        if start + k > usize::try_from(total).unwrap_or(0) {
+            // FANUC's library sends the records after the caller's array.
             break Ok(());
-        };
+        }
         let mut a = args.to_vec();
         a[ci] = k as i32;
         if let Some(i) = pg.advance {
             let i = usize::from(i);
-            a[i] = a[i].wrapping_add(i32::from(done));
+            a[i] = a[i].wrapping_add(total.wrapping_sub(left));
         }
         let payload = match f.payload {
             Some(_) if !pay.input.is_null() => {
@@ -340,24 +337,28 @@ unsafe fn pages(
             Err(e) => break Err(e),
         };
         // The answer's count (an i32).
-        let n = values.first().copied().unwrap_or(0);
+        let n = values.first().copied().unwrap_or(0) as i32;
         let mut v = values.into_iter();
         // SAFETY: the caller's contract (offsets and elements in the outputs).
         unsafe { write_fields(f.reply, outs, |j| offsets[j], &mut v) };
+        let mut written = 0;
         if let Some(r) = &f.records {
             let per = r.values();
-            let mut written = 0;
             // At most the slice's (FANUC's library writes every record the
             // count announces, past the caller's array).
-            while v.len() >= per && per > 0 && (written as i64) < n.min(k as i64) {
+            while v.len() >= per && per > 0 && (written as i64) < i64::from(n).min(k as i64) {
                 let at = |j: usize| rec.base + (start + written) * rec.stride + rec.offsets[j];
                 // SAFETY: start + written < start + k <= `*count`.
                 unsafe { write_fields(r.fields, outs, at, &mut v) };
                 written += 1;
             }
         }
-        sent += k;
-        if pg.from_done && n == 0 {
+        if !pg.from_done {
+            next += k;
+            left = left.wrapping_sub(n);
+            continue;
+        }
+        if n == 0 {
             // FANUC's library asks the same again, for ever while the CNC
             // answers none: ours once more.
             empty += 1;
@@ -367,15 +368,13 @@ unsafe fn pages(
             continue;
         }
         empty = 0;
-        done = if pg.from_done && n > k as i64 {
-            // Ours: the records asked (FANUC's library counts them all).
-            done.wrapping_add(k as i16)
-        } else {
-            done.wrapping_add(n as i16)
-        };
+        next += written;
+        // Ours: more than asked counts as the records asked (FANUC's
+        // library counts them all).
+        left = left.wrapping_sub(n.min(k as i32));
     };
     // SAFETY: the caller's count, checked non-NULL.
-    unsafe { put(count, done) };
+    unsafe { put(count, total.wrapping_sub(left) as c_short) };
     r
 }
 

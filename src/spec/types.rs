@@ -231,20 +231,20 @@ pub struct Payload {
 /// reply over the caller's records, as many per request as `bytes` of the
 /// payload hold ([`Func::payload`]'s records; none: the reply's
 /// [`Records`]', by their wire size), the count parameter's value
-/// ([`Param::Count`]) the records in that request: the caller's count
-/// less `done`, at most that many. The reply's first integer is the
-/// records the answer did (read or registered), which advances `done` (a
-/// `short`, as FANUC's library keeps it: the count cut to 16 bits is
-/// added; a read writes its records only for a count above 0); it asks
-/// again while `done` < the caller's count, and the count becomes `done`
-/// at the end (as the CNC counted, past the caller's count too). An error
-/// answer returns its code, the records before it kept (and the count
-/// `done`).
+/// ([`Param::Count`]) the records in that request: the caller's records
+/// still to do, at most that many. The reply's first integer is the
+/// records the answer did (read or registered), taken from those still to
+/// do (an `int`, as FANUC's library counts; a read writes its records only
+/// for a count above 0); it asks again while some remain, the next slice
+/// starting after the records written (a read) or sent (a write), and the
+/// count becomes the caller's less those remaining, cut to a `short` (as
+/// the CNC counted, past the caller's count too). An error answer returns
+/// its code, the records before it kept (and the count as at the end).
 ///
 /// Ours where FANUC's library is broken: a request whose slice would start
 /// before or end past the caller's array is not sent, the call ending
-/// there with EW_OK (FANUC's library sends the bytes around the array: a
-/// write answered with fewer than it sent, a read's `done` gone negative);
+/// there with EW_OK (FANUC's library sends the bytes after the array: a
+/// write answered with fewer than it sent, a read with a negative count);
 /// a read answered with none asks once more and
 /// ends at the second in a row (FANUC's library asks for ever), and
 /// answered with more records than it asked writes and counts those it
@@ -256,10 +256,9 @@ pub struct Pages {
     /// Number parameter `a` goes on the wire as its value plus `done`
     /// (cnc_regtool's first data number), if any.
     pub advance: Option<u8>,
-    /// Where the next request's slice starts: true, at the first record
-    /// not done, the answer's records counted as done (a read:
-    /// cnc_rdmagazine); false, after the records sent, `done` the CNC's
-    /// counts (a write: cnc_regmagazine).
+    /// Where the next request's slice starts: true, after the records the
+    /// answers wrote (a read: cnc_rdmagazine); false, after the records
+    /// sent (a write: cnc_regmagazine).
     pub from_done: bool,
 }
 

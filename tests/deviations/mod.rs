@@ -447,7 +447,13 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdmagazine",
-        cases: &["rdmagazine_*_reply1"],
+        cases: &[
+            "rdmagazine_*_reply1",
+            // oracle fuzz: counts past the pots asked; a negative count,
+            // then the next request past the array.
+            "fuzz_rdmagazine_*_answer_s0Ln*",
+            "fuzz_rdmagazine_*_request_*",
+        ],
         reason: PAGED_READ,
     },
     Deviation {
@@ -1287,7 +1293,7 @@ const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload
 const VALUE_RECORDS: &str = "value records a CNC does not send (a base other than 10 and 2, drawn from the layout or a changed word, or a binary exponent of -32768 or 32767): FANUC's library writes uninitialised bytes for the huge exponents (different on every run), copies a base-0 record as decimal (125 · 0^-0: 125, 0 places) and gives -429496729 for -2^31 · 65535^1 (a cut, not a rounded, 9-digit mantissa); ours converts every base but 10 as binary, as cnc_rdmacro converts it (Value::to_decimal); those rules of FANUC's P-code conversion are not settled";
 
 /// The paging reads' (spec `Pages`, from the first record not done).
-const PAGED_READ: &str = "an answer of more pots than asked makes FANUC's library write them all, past the caller's array, and count them in *num; ours writes and counts the pots it asked (an answer of none: FANUC's library asks the same again, for ever while the CNC answers none; ours once more, then ends with EW_OK)";
+const PAGED_READ: &str = "an answer of more pots than asked makes FANUC's library write them all, past the caller's array, and count them in *num; ours writes and counts the pots it asked (an answer of none: FANUC's library asks the same again, for ever while the CNC answers none; ours once more, then ends with EW_OK; a negative count leaves more to do than the array holds: FANUC's library then sends pots read past the array, ours ends with EW_OK)";
 
 /// The paging writes' (spec `Pages`, from after the records sent).
 const PAGED_WRITE: &str = "an answer counting fewer records than the request sent (none, or a short answer) makes FANUC's library send the next request with the records after those it sent, read past the caller's array (for ever while the CNC answers none); ours does not send a request reaching past the caller's array: the call ends with EW_OK, *num the records the CNC counted";
