@@ -387,7 +387,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::UShort(n) => format!("{}: c_ushort", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
-            Param::In(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
+            Param::In(n, t) | Param::InOut(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Io(n) => format!("{}: *mut c_short", ident(n)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
@@ -414,8 +414,8 @@ fn described_exports(funcs: &[types::Func]) -> String {
             })
             .collect();
         assert!(
-            count.is_none() || f.records.is_some(),
-            "src/spec/table/: {}: a Param::Count counts records",
+            count.is_none() || f.records.is_some() || f.pages.is_some(),
+            "src/spec/table/: {}: a Param::Count counts records (or a paging function's)",
             f.name
         );
         assert!(
@@ -431,7 +431,16 @@ fn described_exports(funcs: &[types::Func]) -> String {
         let mut offsets = Vec::new();
         let mut checks = Vec::new();
         for field in f.reply {
-            let (_, ty) = outs[field.out as usize];
+            // A field nobody reads may have no output (a paging write's count).
+            let Some(&(_, ty)) = outs.get(field.out as usize) else {
+                assert!(
+                    field.to.is_none(),
+                    "src/spec/table/: {}: a reply field without its output",
+                    f.name
+                );
+                offsets.push("0".to_string());
+                continue;
+            };
             let off = match field.to {
                 Some(m) if !m.is_empty() => member_offset(&rust_type(ty), m, field.c.size()),
                 _ => "0".to_string(),
@@ -484,8 +493,10 @@ fn described_exports(funcs: &[types::Func]) -> String {
         // Records: where the array starts, one element's size, each field's
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
+            // No records: a paging write's count is still the caller's.
             None => format!(
-                "RecordsAt {{ base: 0, stride: 0, offsets: &[], count: None, asked: std::ptr::null_mut(), io: &[{}] }}",
+                "RecordsAt {{ base: 0, stride: 0, offsets: &[], count: None, asked: {}, io: &[{}] }}",
+                count.as_deref().unwrap_or("std::ptr::null_mut()"),
                 ios.join(", ")
             ),
             Some(r) => {
@@ -663,6 +674,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     "/// `{n}` must be NULL or point to {} readable bytes, or to a C string ending within them.",
                     p.fields.iter().map(|x| x.wire_len()).sum::<usize>()
                 )),
+                // Paging: every record of the caller's count is read.
+                Some(count) if f.pages.is_some() => safety.push(format!(
+                    "/// `{n}` must be NULL or point to `*{count}` readable {}.",
+                    doc_type(t)
+                )),
                 Some(count) => safety.push(format!(
                     "/// `{n}` must be NULL or point to `{count}` readable {} (at most {} are read).",
                     doc_type(t),
@@ -721,8 +737,12 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             },
             unsafe_ = if pointers { "unsafe " } else { "" },
             // A read may join a batch (fwlib_batch_begin); a command not,
-            // nor a range read (its next request needs the answer).
-            boundary = if outs.is_empty() || f.block.is_some_and(|b| b.range.is_some()) {
+            // nor a range read (its next request needs the answer), nor a
+            // paging read (several exchanges, as cnc_rdtool).
+            boundary = if outs.is_empty()
+                || f.block.is_some_and(|b| b.range.is_some())
+                || f.pages.is_some()
+            {
                 "ffi_boundary"
             } else {
                 "ffi_read"

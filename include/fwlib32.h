@@ -156,6 +156,14 @@ typedef struct ODBUP {
 } ODBUP;
 
 /*
+ cnc_delmagazine: one pot of the magazine management data.
+ */
+typedef struct IODBTLMAG2 {
+    short magazine;
+    short pot;
+} IODBTLMAG2;
+
+/*
  A real diagnosis value: `dgn_val · 10^-dec_val`.
  */
 typedef struct REALDGN {
@@ -830,6 +838,16 @@ typedef struct IODBMR {
     short datano_e;
     struct IODBMR_data data[5];
 } IODBMR;
+
+/*
+ cnc_rdmagazine, cnc_regmagazine: one pot of the magazine management
+ data and the tool management data number in it.
+ */
+typedef struct IODBTLMAG {
+    short magazine;
+    short pot;
+    short tool_index;
+} IODBTLMAG;
 
 /*
  cnc_rdmaxgrp / cnc_rdmaxtool: the most tool life groups, or tools in a
@@ -2097,6 +2115,76 @@ typedef struct IODBZOR {
 } IODBZOR;
 
 /*
+ cnc_regtool_f2: one tool of the tool management data with 40 custom
+ data (IODBTLMNG's members, then custom21..custom40).
+ */
+typedef struct IODBTLMNG_F2 {
+    LONG T_code;
+    LONG life_count;
+    LONG max_life;
+    LONG rest_life;
+    unsigned char life_stat;
+    unsigned char cust_bits;
+    unsigned short tool_info;
+    short H_code;
+    short D_code;
+    LONG spindle_speed;
+    LONG feedrate;
+    short magazine;
+    short pot;
+    short G_code;
+    short W_code;
+    short gno;
+    short grp;
+    short edge;
+    short org_magazine;
+    short org_pot;
+    unsigned char edge_num;
+    char reserve_c;
+    LONG reserved[2];
+    LONG custom1;
+    LONG custom2;
+    LONG custom3;
+    LONG custom4;
+    LONG custom5;
+    LONG custom6;
+    LONG custom7;
+    LONG custom8;
+    LONG custom9;
+    LONG custom10;
+    LONG custom11;
+    LONG custom12;
+    LONG custom13;
+    LONG custom14;
+    LONG custom15;
+    LONG custom16;
+    LONG custom17;
+    LONG custom18;
+    LONG custom19;
+    LONG custom20;
+    LONG custom21;
+    LONG custom22;
+    LONG custom23;
+    LONG custom24;
+    LONG custom25;
+    LONG custom26;
+    LONG custom27;
+    LONG custom28;
+    LONG custom29;
+    LONG custom30;
+    LONG custom31;
+    LONG custom32;
+    LONG custom33;
+    LONG custom34;
+    LONG custom35;
+    LONG custom36;
+    LONG custom37;
+    LONG custom38;
+    LONG custom39;
+    LONG custom40;
+} IODBTLMNG_F2;
+
+/*
  cnc_statinfo: CNC status information.
  */
 typedef struct ODBST {
@@ -2706,6 +2794,17 @@ short cnc_delete(unsigned short FlibHndl, short prog_no);
  Deletes program `prog_no` (8 digits).
  */
 short cnc_deleteo8(unsigned short FlibHndl, long prog_no);
+
+/*
+ Deletes the `*num` pots of `data` (`magazine`, `pot`) from the magazine
+ management data, 177 per request; `*num` becomes the pots the CNC
+ deleted. `*num` < 1 is EW_NUMBER without traffic;.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `data` must be NULL or point to `*num` readable IODBTLMAG2.
+ */
+short cnc_delmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG2 *data);
 
 /*
  Deletes the `tuse_num`-th tool of tool life group `grpno`.
@@ -3543,6 +3642,18 @@ short cnc_rdmacror(unsigned short FlibHndl,
  `*num` writable doubles.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
+
+/*
+ Reads the tool management data number in each of the `*num` pots `data`
+ names (`magazine`, `pot`) into its `tool_index`, 118 pots per request;
+ `*num` becomes the pots read. `*num` < 1 is EW_NUMBER without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `data` must be NULL or point to `*num` writable IODBTLMAG.
+ `data` must be NULL or point to `*num` readable IODBTLMAG.
+ */
+short cnc_rdmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG *data);
 
 /*
  Reads the most tool life groups the CNC manages (`data`; `datano` and
@@ -4757,6 +4868,43 @@ short cnc_rdzofsr(unsigned short FlibHndl,
                   short e_number,
                   short length,
                   struct IODBZOR *zofsr);
+
+/*
+ Registers the `*num` pots of `data` (`magazine`, `pot` and the tool
+ management data number `tool_index` put in it), 118 per request; `*num`
+ becomes the pots the CNC registered. `*num` < 1 is EW_NUMBER without
+ traffic;.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `data` must be NULL or point to `*num` readable IODBTLMAG.
+ */
+short cnc_regmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG *data);
+
+/*
+ Registers the `*num` tools of `tool` as tool management data numbers
+ `top`, `top` + 1 ... (cnc_wrtool's record each), 9 per request, each
+ request's number moved on by the tools registered; `*num` becomes the
+ tools the CNC registered. `top` < 1 is EW_NUMBER without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `tool` must be NULL or point to `*num` readable IODBTLMNG.
+ */
+short cnc_regtool(unsigned short FlibHndl, short top, short *num, struct IODBTLMNG *tool);
+
+/*
+ cnc_regtool with 40 custom data: registers the `*num` tools of `tool` as
+ tool management data numbers `top`, `top` + 1 ... (59 words each), 6 per
+ request, each request's number moved on by the tools registered; `*num`
+ becomes the tools the CNC registered. `top` < 1 is EW_NUMBER without
+ traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `tool` must be NULL or point to `*num` readable IODBTLMNG_F2.
+ */
+short cnc_regtool_f2(unsigned short FlibHndl, short top, short *num, struct IODBTLMNG_F2 *tool);
 
 /*
  Reads the relative position.

@@ -6,6 +6,7 @@ use super::profile::offset::{ToolGroupProfile, ToolProfile};
 use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
+use crate::proto::cmd::{DELMAGAZINE, RDMAGAZINE, REGMAGAZINE, REGTOOL, REGTOOL_F2};
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
 use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO, WRMAGAZINE, WRTOOL};
 use crate::proto::packet::ReqSub;
@@ -62,6 +63,22 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(WRMAGAZINE, |m, q| {
         none(m.put_in_pot(q.path, q.arg(0), q.arg(1), q.arg(2)))
     }),
+    // cnc_rdmagazine + pots (magazine, pot, 0): the pots answered, each
+    // with the data number of the tool the magazine holds there.
+    Route::table(RDMAGAZINE, |m, q| m.read_pots(q.path, q.payload)),
+    // cnc_regmagazine + pots (magazine, pot, tool_index): each tool put in
+    // its pot; the pots registered.
+    Route::table(REGMAGAZINE, |m, q| {
+        m.register_pots(q.path, q.payload).map(|n| vec![n])
+    }),
+    // cnc_delmagazine + pots (magazine, pot): each pot emptied.
+    Route::table(DELMAGAZINE, |m, q| {
+        m.delete_pots(q.path, q.payload).map(|n| vec![n])
+    }),
+    // cnc_regtool [top] + records as cnc_wrtool's: data numbers top, top + 1 ...
+    Route::table(REGTOOL, |m, q| m.register_tools(q)),
+    // cnc_regtool_f2: the same with 40 custom data a record.
+    Route::table(REGTOOL_F2, |m, q| m.register_tools(q)),
     // cnc_wrtool [tool_no] + the record cnc_rdtool reads.
     Route::table(WRTOOL, |m, q| {
         none(m.write_managed(q.path, q.arg(0), q.payload))
@@ -189,6 +206,116 @@ impl Machine {
         Ok(())
     }
 
+    /// 0x0150 + pots (i32 magazine, pot, 0 each): `[n, (magazine, pot,
+    /// tool_index) * n]`, every pot asked, `tool_index` the data number of
+    /// the `[[path.managed_tool]]` in it (0: an empty pot). A magazine or
+    /// pot below 1: EW_NUMBER.
+    pub fn read_pots(&self, path: u16, pots: &[i64]) -> Reply<Vec<i64>> {
+        let tools = &self.path(path)?.managed_tools;
+        let mut v = vec![(pots.len() / 3) as i64];
+        for p in pots.chunks_exact(3) {
+            let (mg, pot) = (p[0] as i32, p[1] as i32);
+            if mg < 1 || pot < 1 {
+                return Err(NUMBER);
+            }
+            let at = tools.iter().position(|t| (t.magazine, t.pot) == (mg, pot));
+            v.extend([
+                i64::from(mg),
+                i64::from(pot),
+                at.map_or(0, |i| i as i64 + 1),
+            ]);
+        }
+        Ok(v)
+    }
+
+    /// 0x014e + pots (i32 magazine, pot, tool_index each): each tool
+    /// management data number goes to its pot (as cnc_wrmagazine puts it);
+    /// the answer is the pots registered. A magazine or pot below 1, a data
+    /// number below 1 or that the table lacks: EW_NUMBER; a pot already
+    /// holding a tool, or one pot twice: EW_DATA; nothing changed.
+    pub fn register_pots(&mut self, path: u16, pots: &[i64]) -> Reply<i64> {
+        let tools = &self.path(path)?.managed_tools;
+        let recs: Vec<(i32, i32, i32)> = pots
+            .chunks_exact(3)
+            .map(|p| (p[0] as i32, p[1] as i32, p[2] as i32))
+            .collect();
+        for (k, &(mg, pot, index)) in recs.iter().enumerate() {
+            if mg < 1 || pot < 1 || index < 1 || index as usize > tools.len() {
+                return Err(NUMBER);
+            }
+            let taken = tools.iter().any(|t| (t.magazine, t.pot) == (mg, pot));
+            if taken || recs[..k].iter().any(|r| (r.0, r.1) == (mg, pot)) {
+                return Err(CncError::new(ew::EW_DATA));
+            }
+        }
+        for &(mg, pot, index) in &recs {
+            self.put_in_pot(path, mg, pot, index)?;
+        }
+        Ok(recs.len() as i64)
+    }
+
+    /// 0x014f + pots (i32 magazine, pot each): the tool in each pot leaves
+    /// the magazine (an empty pot stays empty); the answer is the pots
+    /// deleted. A magazine or pot below 1: EW_NUMBER, nothing changed.
+    pub fn delete_pots(&mut self, path: u16, pots: &[i64]) -> Reply<i64> {
+        self.path(path)?;
+        let recs: Vec<(i32, i32)> = pots
+            .chunks_exact(2)
+            .map(|p| (p[0] as i32, p[1] as i32))
+            .collect();
+        if recs.iter().any(|&(mg, pot)| mg < 1 || pot < 1) {
+            return Err(NUMBER);
+        }
+        for &(mg, pot) in &recs {
+            self.put_in_pot(path, mg, pot, 0)?;
+        }
+        Ok(recs.len() as i64)
+    }
+
+    /// 0x0149 `[top]` + records as cnc_wrtool sends them (`per` integers
+    /// each: 40, or 60 with cnc_regtool_f2's 40 custom data): tool management data numbers `top`, `top + 1` ... take them
+    /// as [`Machine::write_managed`] writes one, a number one past the
+    /// table's end adding an entry; the answer is the tools registered. A
+    /// number below 1 or further past the end: EW_NUMBER; a record
+    /// cnc_wrtool's checks refuse: EW_DATA; nothing changed.
+    pub fn register_managed(&mut self, path: u16, top: i32, v: &[i64], per: usize) -> Reply<i64> {
+        let tools = &self.path(path)?.managed_tools;
+        let n = v.len() / per;
+        if top < 1 || top as usize - 1 > tools.len() {
+            return Err(NUMBER);
+        }
+        // Checked on a copy: a refused record changes nothing.
+        let mut copy = self.clone_managed(path)?;
+        copy.resize((top as usize - 1 + n).max(copy.len()), Default::default());
+        let all = std::mem::replace(self.managed_mut(path)?, copy);
+        for (k, rec) in v.chunks_exact(per).enumerate() {
+            if let Err(e) = self.write_managed(path, top + k as i32, rec) {
+                *self.managed_mut(path)? = all;
+                return Err(e);
+            }
+        }
+        Ok(n as i64)
+    }
+
+    /// cnc_regtool's and cnc_regtool_f2's answer: [`Machine::register_managed`]
+    /// with records of the function's payload (40 or 60 integers).
+    fn register_tools(&mut self, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+        let per = q.f.payload.map_or(40, |p| p.fields.len());
+        let n = self.register_managed(q.path, q.arg(0), q.payload, per)?;
+        Ok(vec![n])
+    }
+
+    fn clone_managed(&self, path: u16) -> Reply<Vec<super::profile::offset::ManagedTool>> {
+        Ok(self.path(path)?.managed_tools.clone())
+    }
+
+    fn managed_mut(&mut self, path: u16) -> Reply<&mut Vec<super::profile::offset::ManagedTool>> {
+        Ok(&mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .managed_tools)
+    }
+
     /// `0x014c [tool_no]` + a record (cnc_wrtool's payload fields: T code,
     /// life counter, life, rest (not kept), life status, custom bits,
     /// tool information, H, D, spindle speed, feedrate, magazine, pot, G,
@@ -219,7 +346,8 @@ impl Machine {
         (t.spindle_speed, t.feedrate) = (w(9), w(10));
         (t.magazine, t.pot) = (w(11) as i16 as i32, w(12) as i16 as i32);
         t.group = w(16);
-        t.custom = (20..40).map(w).collect();
+        // Custom 1..20 (cnc_wrtool), or 1..40 (cnc_regtool_f2).
+        t.custom = (20..v.len()).map(w).collect();
         Ok(())
     }
 

@@ -340,6 +340,24 @@ commands! {
     /// record, the 39 words cnc_rdtool's answer holds.
     WRTOOL = CLASS_CNC 0x014c [cnc_wrtool];
     WRMAGAZINE = CLASS_CNC 0x0151 [cnc_wrmagazine];
+    /// cnc_regtool: (1,0x0149)[top + done, 0, 0, 0, len] + cnc_wrtool's
+    /// 156-byte records, 9 per request; the answer's i32 the tools
+    /// registered.
+    REGTOOL = CLASS_CNC 0x0149 [cnc_regtool];
+    /// cnc_regtool_f2: as cnc_regtool, records of 59 words (40 custom
+    /// data), 6 per request.
+    REGTOOL_F2 = CLASS_CNC 0x0185 [cnc_regtool_f2];
+    /// cnc_regmagazine: (1,0x014e)[0, 0, 0, 0, len] + records i32
+    /// magazine, pot, tool_index, 118 per request; the answer's i32 the
+    /// records registered.
+    REGMAGAZINE = CLASS_CNC 0x014e [cnc_regmagazine];
+    /// cnc_delmagazine: (1,0x014f)[0, 0, 0, 0, len] + records i32
+    /// magazine, pot, 177 per request; the answer's i32 the records deleted.
+    DELMAGAZINE = CLASS_CNC 0x014f [cnc_delmagazine];
+    /// cnc_rdmagazine: (1,0x0150)[0, 0, 0, 0, len] + records i32 magazine,
+    /// pot, 0, 118 per request; the answer: i32 n, then n records i32
+    /// magazine, pot, tool_index.
+    RDMAGAZINE = CLASS_CNC 0x0150 [cnc_rdmagazine];
     RDSPCSS = CLASS_CNC 0x0158 [cnc_rdspcss];
     RDETHERINFO = CLASS_CNC 0x0159 [cnc_rdetherinfo];
     RDACTPT = CLASS_CNC 0x0162 [cnc_rdactpt];

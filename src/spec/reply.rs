@@ -156,7 +156,9 @@ pub enum Short {
     /// held its request): payload byte k is the request subpacket's byte
     /// 16 + k (its third argument word on, then its payload), zeros past
     /// the request (cnc_rd2tlifedata: an empty answer's `datano` is the
-    /// use number asked for).
+    /// use number asked for). So do the records a
+    /// [`Func::counted`](super::Func::counted) count announces past the
+    /// answer's end (cnc_rdmagazine: its own request's pots).
     Request,
 }
 

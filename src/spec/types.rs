@@ -55,6 +55,11 @@ pub enum Param {
     /// and the reply writes back ([`Range`]: the numbers read and the
     /// bytes used).
     Io(&'static str),
+    /// `TYPE *NAME`: the caller's records, both sent (the payload reads
+    /// them, as from a [`Param::In`]) and answered (the records are written
+    /// back into them, as into a [`Param::Out`]): cnc_rdmagazine sends the
+    /// pots and reads back their tools. It is an output and the input.
+    InOut(&'static str, &'static str),
 }
 
 impl Param {
@@ -67,7 +72,7 @@ impl Param {
             Param::Long(_) | Param::ULong(_) => Some(v as i32),
             Param::UShort(_) => Some(v as u16 as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
-            Param::Out(..) | Param::In(..) | Param::Text(..) => None,
+            Param::Out(..) | Param::In(..) | Param::InOut(..) | Param::Text(..) => None,
         }
     }
     pub const fn name(&self) -> &'static str {
@@ -81,7 +86,8 @@ impl Param {
             | Param::Count(n)
             | Param::In(n, _)
             | Param::Io(n)
-            | Param::Text(n, _) => n,
+            | Param::Text(n, _)
+            | Param::InOut(n, _) => n,
         }
     }
 }
@@ -304,6 +310,41 @@ pub struct Range {
     pub e: u8,
 }
 
+/// A function that pages ([`Func::pages`]): it repeats its request and
+/// reply over the caller's records, as many per request as `bytes` of the
+/// payload hold ([`Func::payload`]'s records; none: the reply's
+/// [`Records`]', by their wire size), the count parameter's value
+/// ([`Param::Count`]) the records in that request: the caller's records
+/// still to do, at most that many. The reply's first integer is the
+/// records the answer did (read or registered), taken from those still to
+/// do (an `int`, as FANUC's library counts; a read writes its records only
+/// for a count above 0); it asks again while some remain, the next slice
+/// starting after the records written (a read) or sent (a write), and the
+/// count becomes the caller's less those remaining, cut to a `short` (as
+/// the CNC counted, past the caller's count too). An error answer returns
+/// its code, the records before it kept (and the count as at the end).
+///
+/// Ours where FANUC's library is broken: a request whose slice would start
+/// before or end past the caller's array is not sent, the call ending
+/// there with EW_OK (FANUC's library sends the bytes after the array: a
+/// write answered with fewer than it sent, a read with a negative count);
+/// a read answered with none asks once more and
+/// ends at the second in a row (FANUC's library asks for ever), and
+/// answered with more records than it asked writes and counts those it
+/// asked (FANUC's library writes them all, past the caller's array).
+#[derive(Debug, Clone, Copy)]
+pub struct Pages {
+    /// The most payload bytes one request carries.
+    pub bytes: u16,
+    /// Number parameter `a` goes on the wire as its value plus `done`
+    /// (cnc_regtool's first data number), if any.
+    pub advance: Option<u8>,
+    /// Where the next request's slice starts: true, after the records the
+    /// answers wrote (a read: cnc_rdmagazine); false, after the records
+    /// sent (a write: cnc_regmagazine).
+    pub from_done: bool,
+}
+
 /// One FOCAS function.
 #[derive(Debug, Clone, Copy)]
 pub struct Func {
@@ -380,6 +421,8 @@ pub struct Func {
     /// Output members filled by looking values up in the reply
     /// ([`Lookup`]), after the reply's fields are read (cnc_rdsyssoft).
     pub lookups: &'static [Lookup],
+    /// The request repeated over the caller's records ([`Pages`]).
+    pub pages: Option<Pages>,
 }
 
 impl Func {
@@ -397,7 +440,7 @@ impl Func {
             | Param::ShortAs(n, _)
             | Param::Count(n)
             | Param::Io(n) => Some(n),
-            Param::Out(..) | Param::In(..) | Param::Text(..) => None,
+            Param::Out(..) | Param::In(..) | Param::InOut(..) | Param::Text(..) => None,
         })
     }
     /// The [`Param::Text`] parameters, in order: (name, field size).
@@ -418,10 +461,11 @@ impl Func {
         self.numbers()
             .position(|n| self.params.contains(&Param::Count(n)))
     }
-    /// The [`Param::In`] parameter, if any: (name, C type).
+    /// The [`Param::In`] (or [`Param::InOut`]) parameter, if any: (name,
+    /// C type).
     pub fn input(&self) -> Option<(&'static str, &'static str)> {
         self.params.iter().find_map(|p| match *p {
-            Param::In(n, t) => Some((n, t)),
+            Param::In(n, t) | Param::InOut(n, t) => Some((n, t)),
             _ => None,
         })
     }
@@ -456,12 +500,25 @@ impl Func {
         let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
         Some(usize::try_from(at(e) - at(s) + 1).unwrap_or(0))
     }
-    /// The output parameters, in order: (name, C type).
+    /// The output parameters ([`Param::Out`], [`Param::InOut`]), in
+    /// order: (name, C type).
     pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
         self.params.iter().filter_map(|p| match *p {
-            Param::Out(n, t) => Some((n, t)),
+            Param::Out(n, t) | Param::InOut(n, t) => Some((n, t)),
             _ => None,
         })
+    }
+    /// The records one request of a paging function ([`Func::pages`])
+    /// carries at most: its byte budget over one record's wire bytes (the
+    /// payload's, else the reply records'); None for another function.
+    pub fn per_page(&self) -> Option<usize> {
+        let pg = self.pages?;
+        let size: usize = match (&self.payload, &self.records) {
+            (Some(p), _) => p.fields.iter().map(Field::wire_len).sum(),
+            (None, Some(r)) => r.fields.iter().map(Field::wire_len).sum(),
+            (None, None) => 0,
+        };
+        Some(usize::from(pg.bytes) / size.max(1))
     }
     /// The reply payload's length in bytes (of every subpacket's answer).
     pub fn reply_len(&self) -> usize {

@@ -161,6 +161,95 @@ pub struct IODBTLMNG {
     pub custom20: LONG,
 }
 
+/// cnc_regtool_f2: one tool of the tool management data with 40 custom
+/// data (IODBTLMNG's members, then custom21..custom40).
+#[allow(non_snake_case)]
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLMNG_F2 {
+    pub T_code: LONG,
+    pub life_count: LONG,
+    pub max_life: LONG,
+    pub rest_life: LONG,
+    pub life_stat: c_uchar,
+    pub cust_bits: c_uchar,
+    pub tool_info: c_ushort,
+    pub H_code: c_short,
+    pub D_code: c_short,
+    pub spindle_speed: LONG,
+    pub feedrate: LONG,
+    pub magazine: c_short,
+    pub pot: c_short,
+    pub G_code: c_short,
+    pub W_code: c_short,
+    pub gno: c_short,
+    pub grp: c_short,
+    pub edge: c_short,
+    pub org_magazine: c_short,
+    pub org_pot: c_short,
+    pub edge_num: c_uchar,
+    pub reserve_c: c_char,
+    pub reserved: [LONG; 2],
+    pub custom1: LONG,
+    pub custom2: LONG,
+    pub custom3: LONG,
+    pub custom4: LONG,
+    pub custom5: LONG,
+    pub custom6: LONG,
+    pub custom7: LONG,
+    pub custom8: LONG,
+    pub custom9: LONG,
+    pub custom10: LONG,
+    pub custom11: LONG,
+    pub custom12: LONG,
+    pub custom13: LONG,
+    pub custom14: LONG,
+    pub custom15: LONG,
+    pub custom16: LONG,
+    pub custom17: LONG,
+    pub custom18: LONG,
+    pub custom19: LONG,
+    pub custom20: LONG,
+    pub custom21: LONG,
+    pub custom22: LONG,
+    pub custom23: LONG,
+    pub custom24: LONG,
+    pub custom25: LONG,
+    pub custom26: LONG,
+    pub custom27: LONG,
+    pub custom28: LONG,
+    pub custom29: LONG,
+    pub custom30: LONG,
+    pub custom31: LONG,
+    pub custom32: LONG,
+    pub custom33: LONG,
+    pub custom34: LONG,
+    pub custom35: LONG,
+    pub custom36: LONG,
+    pub custom37: LONG,
+    pub custom38: LONG,
+    pub custom39: LONG,
+    pub custom40: LONG,
+}
+
+/// cnc_rdmagazine, cnc_regmagazine: one pot of the magazine management
+/// data and the tool management data number in it.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLMAG {
+    pub magazine: c_short,
+    pub pot: c_short,
+    pub tool_index: c_short,
+}
+
+/// cnc_delmagazine: one pot of the magazine management data.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLMAG2 {
+    pub magazine: c_short,
+    pub pot: c_short,
+}
+
 /// cnc_rdtooldata: the tool data of a punch press.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

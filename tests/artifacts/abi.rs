@@ -409,6 +409,8 @@ rust_layouts! {
     ODBTG { grp_num, dummy, ntool, life, count, data }
     IODBTGI { s_grp, dummy, e_grp, data }
     ODBUSEGRP { next, r#use, slct, opt_next, opt_use, opt_slct }
+    IODBTLMAG { magazine, pot, tool_index }
+    IODBTLMAG2 { magazine, pot }
     ODBUSEGR { datano, r#type, next, r#use, slct }
     ODBLFNO { datano, r#type, data }
     IODBTD { datano, r#type, tool_num, h_code, d_code, tool_inf }
@@ -418,6 +420,15 @@ rust_layouts! {
         org_pot, edge_num, reserve_c, reserved, custom1, custom2, custom3, custom4, custom5,
         custom6, custom7, custom8, custom9, custom10, custom11, custom12, custom13, custom14,
         custom15, custom16, custom17, custom18, custom19, custom20
+    }
+    IODBTLMNG_F2 {
+        T_code, life_count, max_life, rest_life, life_stat, cust_bits, tool_info, H_code, D_code,
+        spindle_speed, feedrate, magazine, pot, G_code, W_code, gno, grp, edge, org_magazine,
+        org_pot, edge_num, reserve_c, reserved, custom1, custom2, custom3, custom4, custom5,
+        custom6, custom7, custom8, custom9, custom10, custom11, custom12, custom13, custom14,
+        custom15, custom16, custom17, custom18, custom19, custom20, custom21, custom22, custom23,
+        custom24, custom25, custom26, custom27, custom28, custom29, custom30, custom31, custom32,
+        custom33, custom34, custom35, custom36, custom37, custom38, custom39, custom40
     }
     IODBTLDT {
         slct, tool_no, x_axis_ofs, y_axis_ofs, turret_pos, chg_tl_no, punch_count, tool_life,

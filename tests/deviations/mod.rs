@@ -458,6 +458,65 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library writes every double the CNC sends, past the requested *num (an overrun); ours writes at most *num",
     },
     Deviation {
+        function: "cnc_rdmagazine",
+        cases: &[
+            "rdmagazine_*_reply1",
+            // oracle fuzz: counts past the pots asked; a negative count,
+            // then the next request past the array.
+            "fuzz_rdmagazine_*_answer_s0Ln*",
+            "fuzz_rdmagazine_*_request_*",
+        ],
+        reason: PAGED_READ,
+    },
+    Deviation {
+        function: "cnc_regmagazine",
+        cases: &[
+            "regmagazine_*_shape_empty",
+            "regmagazine_*_shape_half",
+            "regmagazine_*_shape_short1",
+            "regmagazine_*_reply0",
+            // oracle fuzz: partial answers (the next request past the array).
+            "fuzz_regmagazine_*_request_*",
+        ],
+        reason: PAGED_WRITE,
+    },
+    Deviation {
+        function: "cnc_delmagazine",
+        cases: &[
+            "delmagazine_*_shape_empty",
+            "delmagazine_*_shape_half",
+            "delmagazine_*_shape_short1",
+            "delmagazine_*_reply0",
+            // oracle fuzz: partial answers (the next request past the array).
+            "fuzz_delmagazine_*_request_*",
+        ],
+        reason: PAGED_WRITE,
+    },
+    Deviation {
+        function: "cnc_regtool",
+        cases: &[
+            "regtool_*_shape_empty",
+            "regtool_*_shape_half",
+            "regtool_*_shape_short1",
+            "regtool_*_reply0",
+            // oracle fuzz: partial answers (the next request past the array).
+            "fuzz_regtool_*_request_*",
+        ],
+        reason: PAGED_WRITE,
+    },
+    Deviation {
+        function: "cnc_regtool_f2",
+        cases: &[
+            "regtool_f2_*_shape_empty",
+            "regtool_f2_*_shape_half",
+            "regtool_f2_*_shape_short1",
+            "regtool_f2_*_reply0",
+            // oracle fuzz: partial answers (the next request past the array).
+            "fuzz_regtool_f2_*_request_*",
+        ],
+        reason: PAGED_WRITE,
+    },
+    Deviation {
         function: "cnc_rdophistry4",
         cases: &["fuzz_rdophistry4_*_request_*"],
         reason: "an answer saying \"more\" with no record makes FANUC's library ask the same again, for ever while the CNC keeps saying so (a hang); ours ends the read there with EW_OK and never resends a request",
@@ -1203,6 +1262,12 @@ const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload
 /// An answer with its second subpacket left out (the later ones shifted up).
 /// cnc_rdpmacro / cnc_rdpmacror: value records no CNC sends.
 const VALUE_RECORDS: &str = "value records a CNC does not send (a base other than 10 and 2, drawn from the layout or a changed word, or a binary exponent of -32768 or 32767): FANUC's library writes uninitialised bytes for the huge exponents (different on every run), copies a base-0 record as decimal (125 · 0^-0: 125, 0 places) and gives -429496729 for -2^31 · 65535^1 (a cut, not a rounded, 9-digit mantissa); ours converts every base but 10 as binary, as cnc_rdmacro converts it (Value::to_decimal); those rules of FANUC's P-code conversion are not settled";
+
+/// The paging reads' (spec `Pages`, from the first record not done).
+const PAGED_READ: &str = "an answer of more pots than asked makes FANUC's library write them all, past the caller's array, and count them in *num; ours writes and counts the pots it asked (an answer of none: FANUC's library asks the same again, for ever while the CNC answers none; ours once more, then ends with EW_OK; a negative count leaves more to do than the array holds: FANUC's library then sends pots read past the array, ours ends with EW_OK)";
+
+/// The paging writes' (spec `Pages`, from after the records sent).
+const PAGED_WRITE: &str = "an answer counting fewer records than the request sent (none, or a short answer) makes FANUC's library send the next request with the records after those it sent, read past the caller's array (for ever while the CNC answers none); ours does not send a request reaching past the caller's array: the call ends with EW_OK, *num the records the CNC counted";
 
 const SHIFTED_ANSWER: &str = "with a subpacket missing from the answer and the later ones shifted up, FANUC's library returns EW_PROTOCOL (-17) after writing the fields it took from the shifted subpackets (cnc_statinfo/2: hdck and tmmode; cnc_rdprstrinfo: the fields of the subpackets it read); ours sees that the shifted subpacket does not echo the command asked (the reply check, README.md \"Where we differ\") and returns EW_PROTOCOL writing nothing";
 

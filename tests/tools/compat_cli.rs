@@ -494,6 +494,7 @@ fn the_collector_families_are_all_supported() {
         "cnc_rdpmacro", "cnc_wrpmacro", "cnc_rdpmacror", "cnc_rdpmacroinfo", "cnc_rdpmacroinfo2", "cnc_rdmacronum",
         "cnc_rdsetnum", "cnc_rdset", "cnc_wrset", "cnc_rdsetr",
         "cnc_rdtlinfo", "cnc_rdmaxgrp", "cnc_rdmaxtool", "cnc_rdusegrpid", "cnc_rd1tlifedata", "cnc_rd2tlifedata", "cnc_wrmagazine", "cnc_wrtool",
+        "cnc_rdmagazine", "cnc_regmagazine", "cnc_delmagazine", "cnc_regtool", "cnc_regtool_f2",
         "cnc_rdnspdl", "cnc_rdspcss", "cnc_rdcommand", "cnc_rd3dtooltip", "cnc_rdposerrs", "cnc_rdposerrs2", "cnc_rdposerrz",
     ];
     let dir = toolchain::scratch("compat-collectors");

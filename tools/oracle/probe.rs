@@ -88,7 +88,7 @@ pub fn generated_words() -> String {
         let pointers = f
             .params
             .iter()
-            .filter(|p| matches!(p, Param::Out(..) | Param::In(..)))
+            .filter(|p| matches!(p, Param::Out(..) | Param::In(..) | Param::InOut(..)))
             .count();
         let in_b2 = pointers > 2 && f.input().is_some();
         let args: Vec<String> = f
@@ -121,7 +121,7 @@ pub fn generated_words() -> String {
                     format!("&{name}")
                 }
                 Param::In(..) if in_b2 => "B2".to_string(),
-                Param::Out(..) | Param::In(..) => {
+                Param::Out(..) | Param::In(..) | Param::InOut(..) => {
                     b += 1;
                     format!("B{}", b - 1)
                 }
@@ -138,6 +138,9 @@ pub fn generated_words() -> String {
             args.iter().map(|a| format!(", {a}")).collect::<String>()
         );
         let body = match count {
+            // A paging write (or read of the caller's records): its records
+            // first, then the count.
+            Some(i) if !fill.is_empty() => format!("{{ {fill}SHORT_IO(num, {i}, {call}); }}"),
             Some(i) => format!("SHORT_IO(num, {i}, {call})"),
             None if !ios.is_empty() => {
                 let set: String = ios

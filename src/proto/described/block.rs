@@ -78,7 +78,7 @@ pub fn read(cx: &Ctx, resp: &[RespSub], short: Short, request: &[u8]) -> Result<
 }
 
 /// A range read's answer (cnc_rdparar's, [`ReadRange`] decoding it) as
-/// packed records: per record its number, the bytes it takes with its
+/// packed records: per record its (whole 32-bit) number, the bytes it takes with its
 /// padding, how many bytes it has, then those bytes.
 pub fn range(cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
     let one = ReadRange {
@@ -87,13 +87,9 @@ pub fn range(cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i64>> {
         axis: 0,
     };
     let mut out = Vec::new();
-    for r in one.decode(cx, resp)? {
+    for (whole, r) in one.decode(cx, resp)? {
         let bytes = r.to_c();
-        out.extend([
-            i64::from(r.number),
-            r.padded_len() as i64,
-            bytes.len() as i64,
-        ]);
+        out.extend([i64::from(whole), r.padded_len() as i64, bytes.len() as i64]);
         out.extend(bytes.into_iter().map(i64::from));
     }
     Ok(out)

@@ -140,15 +140,13 @@ impl Call for Described<'_> {
         }
         if self.f.more.is_empty() {
             let payload = &sub(resp, 0)?.payload;
-            let need = self.f.reply_len();
-            if self.f.short == Short::Request && payload.len() < need {
+            if self.f.short == Short::Request {
                 // The response body's payload starts at byte 18, where
-                // the request body held its subpacket's byte 16.
+                // the request body held its subpacket's byte 16: the bytes
+                // past the answer's end are the request's from there.
                 let body = crate::proto::packet::encode_request(&self.request(cx));
-                let p: Vec<u8> = (payload.len()..need)
-                    .map(|k| body.get(18 + k).copied().unwrap_or(0))
-                    .collect();
-                return decode(self.f, self.args, &[payload.as_slice(), &p].concat());
+                let tail = body.get(18 + payload.len()..).unwrap_or_default();
+                return decode_tail(self.f, self.args, payload, tail);
             }
             return decode(self.f, self.args, payload);
         }
@@ -239,7 +237,15 @@ fn padded(short: Short, payload: &[u8], need: usize) -> Result<Vec<u8>> {
 /// The reply payload's integers (client side); echo fields give the
 /// call's `args` back.
 pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
+    decode_tail(f, args, payload, &[])
+}
+
+/// [`decode`] of an answer whose missing bytes ([`Short::Request`]) read as
+/// `tail` (the request's bytes from the answer's end on), then zeros: the
+/// fixed fields', and [`Func::counted`]'s records' past the payload.
+fn decode_tail(f: &Func, args: &[i32], payload: &[u8], tail: &[u8]) -> Result<Vec<i64>> {
     let need = f.reply_len();
+    let ext = [payload, tail].concat();
     let mut zeros;
     let mut p = payload;
     if p.len() < need {
@@ -252,7 +258,7 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
                 .into());
             }
             Short::Zeros | Short::Request => {
-                zeros = p.to_vec();
+                zeros = ext.clone();
                 zeros.resize(need, 0);
                 p = &zeros;
             }
@@ -301,7 +307,12 @@ pub fn decode(f: &Func, args: &[i32], payload: &[u8]) -> Result<Vec<i64>> {
                     .get(at)
                     .map_or(0, |v| usize::try_from(*v).unwrap_or(0))
                     .min(most);
-                rest = padded(f.short, &p[p.len() - r.remaining()..], n * size)?;
+                let at = p.len() - r.remaining();
+                let from = match f.short {
+                    Short::Request => ext.get(at..).unwrap_or_default(),
+                    _ => &p[at..],
+                };
+                rest = padded(f.short, from, n * size)?;
                 (n, Reader::new(&rest))
             }
         };

@@ -29,6 +29,7 @@ pub const COMMAND: Func = Func {
     span: None,
     block: None,
     lookups: &[],
+    pages: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -66,4 +67,5 @@ pub const SERVO_LONGS: Func = Func {
     span: None,
     block: None,
     lookups: &[],
+    pages: None,
 };

@@ -1,7 +1,8 @@
 //! tests/c/collectors_magazine.c: the magazine and tool management family
 //! through the .so, compared with the simulator's tool life state; the
-//! writes (cnc_wrmagazine, cnc_wrtool) read back from C and checked in the simulator
-//! (through a second connection).
+//! writes (cnc_wrmagazine, cnc_wrtool, and the paging cnc_regmagazine,
+//! cnc_delmagazine, cnc_regtool, cnc_regtool_f2) read back from C (cnc_rdmagazine,
+//! cnc_rdtool) and checked in the simulator (through a second connection).
 
 use super::run_c_test;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
@@ -83,9 +84,6 @@ fn magazine_and_tool_data_follow_the_machine() {
     assert_eq!(ints(&kv["mag.tool1"]), [1, 1]);
     assert_eq!(ints(&kv["mag.moved1"]), [2, 5]);
     assert_eq!(ints(&kv["mag.moved2"]), [0, 0]);
-    // The simulator's state, through a second connection (cnc_wrtool
-    // below then put data number 2 in magazine 3 pot 9).
-    assert_eq!(pots(&sim), [(2, 5), (3, 9)]);
 
     // cnc_wrtool: what C wrote reads back (rest = life - counter); the
     // refused writes (life status 9: EW_DATA; data number 0: EW_NUMBER
@@ -98,6 +96,59 @@ fn magazine_and_tool_data_follow_the_machine() {
     assert_eq!(kv["tool.refused_no"], "3");
     assert_eq!(ints(&kv["tool2.after"]), [4711, 1]);
     assert_eq!(managed(&sim, 2), (4711, 7, 250, 21, -4));
+
+    // cnc_rdmagazine, 130 pots (two exchanges): magazine 2 pot 5 holds
+    // data number 1, magazine 3 pot 9 data number 2 (where the writes above
+    // put them), magazine 4's pots none; `*num` 0: EW_NUMBER, untouched.
+    assert_eq!(ints(&kv["rdmag"]), [130, 2, 5, 1, 2, 0]);
+    assert_eq!(ints(&kv["rdmag.num0"]), [3, 0]);
+    // cnc_regmagazine: both pots registered, read back; the taken pot was
+    // refused (EW_DATA, `*num` 0) and changed nothing.
+    assert_eq!(kv["regmag"], "2");
+    assert_eq!(ints(&kv["regmag.back"]), [2, 1, 0, 0]);
+    assert_eq!(ints(&kv["regmag.refused"]), [5, 0]);
+    assert_eq!(kv["regmag.after"], "2");
+    // 150 pots in one call (118, then 32): data number 1 ends in the last.
+    assert_eq!(ints(&kv["regmag.paged"]), [6, 150]);
+    // cnc_delmagazine: both pots emptied; a pot 0 refused (EW_NUMBER).
+    assert_eq!(kv["delmag"], "2");
+    assert_eq!(ints(&kv["delmag.back"]), [0, 0]);
+    assert_eq!(kv["delmag.refused"], "3");
+    // cnc_regtool: data numbers 3..12 added (9, then 1 per exchange) and
+    // read back; 20 (past the end) refused by the CNC, 0 before traffic
+    // (EW_NUMBER both), nothing changed.
+    assert_eq!(kv["regtool"], "10");
+    assert_eq!(ints(&kv["regtool.back"]), [10, 100, 109, 59, 9, 10, 10]);
+    assert_eq!(ints(&kv["regtool.refused"]), [3, 0]);
+    assert_eq!(ints(&kv["regtool.refused0"]), [3, 1]);
+    // The simulator's state, through a second connection: after the
+    // writes above (data number 1 to magazine 2 pot 5, cnc_wrtool's 2 to
+    // magazine 3 pot 9, both registered elsewhere), the pots deleted, the
+    // tools registered.
+    assert_eq!(pots(&sim), [(0, 0), (0, 0)]);
+    assert_eq!(managed(&sim, 12), (109, 9, 59, 10, 0));
+    // cnc_regtool_f2: data numbers 13..19 added (6, then 1), read back.
+    assert_eq!(kv["regtool_f2"], "7");
+    assert_eq!(ints(&kv["regtool_f2.back"]), [7, 200, 206, 2006]);
+    assert_eq!(tool_count(&sim), 19);
+    assert_eq!(managed(&sim, 19), (206, 0, 70, 0, 0));
+}
+
+/// How many entries the simulator's tool management data holds: the
+/// number cnc_rdtool reads from data number 1 asking for 40.
+fn tool_count(sim: &Simulator) -> i16 {
+    let mut h = 0u16;
+    let ip = CString::new("127.0.0.1").unwrap();
+    assert_eq!(
+        unsafe { cnc_allclibhndl3(ip.as_ptr(), sim.port(), 10, &mut h) },
+        0
+    );
+    let mut t = [IODBTLMNG::default(); 40];
+    let mut num = 40i16;
+    let rc = unsafe { cnc_rdtool(h, 1, &mut num, t.as_mut_ptr()) };
+    assert_eq!(cnc_freelibhndl(h), 0);
+    assert!(rc == 0 || rc == 3, "cnc_rdtool: {rc}");
+    num
 }
 
 /// T code, life counter, life, H and D codes of tool management data
