@@ -3994,7 +3994,11 @@ short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
  the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
  decimals), each record padded to a multiple of 4 (the padding bytes are
  not written). Asks the CNC again from the last number received + 1
- until `*e_number` is reached. On success `*s_number` is the first
+ (the block's whole 32-bit number, wrapping) while that is not above
+ `*e_number`; an answer without a whole block asks again from there too
+ (from 1 before any block), and ends in EW_PROTOCOL when that would
+ repeat the request just answered (FANUC's library repeats it for ever).
+ On success `*s_number` is the first
  number read, `*e_number` the last, and `*length` (in: the buffer's
  size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
  traffic. A record that does not fit with its padding is EW_LENGTH: the
