@@ -161,6 +161,9 @@ mod tests {
         }
         assert_eq!(written_in("absent"), set(ABSENT.iter().map(|a| a.0)));
         assert_eq!(written_in("ext"), set(EXTENSIONS.iter().copied()));
-        assert!(WRITTEN.iter().map(|a| a.1.len()).sum::<usize>() > 150);
+        assert!(
+            WRITTEN.iter().all(|a| !a.1.is_empty()),
+            "an area lists no function"
+        );
     }
 }

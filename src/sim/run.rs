@@ -7,7 +7,7 @@
 use super::modal::ProgramModal;
 use super::plan::{EXEC_LINES, Plan};
 pub use super::profile::cycle::{ACTIONS, Alarm, Cycle, Event, StoredProgram};
-use super::profile::{Profile, StatusWords};
+use super::profile::{Profile, SampleChannel, StatusWords};
 use super::store::{Program, Store};
 use std::sync::Arc;
 
@@ -72,7 +72,7 @@ pub struct PathRun {
     /// (cnc_rdprstrinfo's program restart data); None before any.
     pub restart: Option<Restart>,
     /// Servo data sampling: its channels and whether it runs (cnc_sdt*).
-    pub sampling: super::sampling::Sampling,
+    pub sampling: Sampling,
     /// What the clock needs: parsed program, profile base values, caches.
     pub(crate) engine: Engine,
 }
@@ -226,7 +226,7 @@ impl PathRun {
                         .unwrap_or_default(),
                     alarms: p.alarms.clone(),
                     spindle_speed: p.spindles.first().map_or(0, |s| s.speed),
-                    sampling: super::sampling::Sampling::new(&p.sample_channels),
+                    sampling: Sampling::new(&p.sample_channels),
                     engine: Engine {
                         plan,
                         base_status: p.status,
@@ -246,5 +246,32 @@ impl PathRun {
                 }
             })
             .collect()
+    }
+}
+
+/// A path's sampling state.
+#[derive(Debug, Clone, Default)]
+pub struct Sampling {
+    /// The channels, channel 1 first (at most 8 answered: src/sim/sampling.rs).
+    pub channels: Vec<SampleChannel>,
+    /// Sampling runs: since when, with cnc_sdtstartsmpl's two arguments.
+    pub running: Option<Running>,
+}
+
+/// Sampling started by cnc_sdtstartsmpl.
+#[derive(Debug, Clone, Copy)]
+pub struct Running {
+    pub since: std::time::Instant,
+    pub kind: i32,
+    pub cycle: i32,
+}
+
+impl Sampling {
+    /// The state a path starts with: its profile's channels.
+    pub fn new(channels: &[SampleChannel]) -> Sampling {
+        Sampling {
+            channels: channels.to_vec(),
+            running: None,
+        }
     }
 }

@@ -7,12 +7,12 @@
 //! program leaves them.
 
 use super::Machine;
-use super::profile::{Axis, Datum, SampleChannel};
+use super::profile::{Axis, Datum};
 use super::route::{Asked, Route};
+use super::run::{Running, Sampling};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_PATH};
 use crate::proto::cmd::{SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSTARTSMPL};
-use std::time::Instant;
 
 pub(super) const ROUTES: &[Route] = &[
     Route::table(SDTCLRCHNL, |m, q| {
@@ -27,33 +27,6 @@ pub(super) const ROUTES: &[Route] = &[
 
 /// The most channels a CNC samples (cnc_sdtread1shot writes 8 values).
 pub const MAX_CHANNELS: usize = 8;
-
-/// A path's sampling state.
-#[derive(Debug, Clone, Default)]
-pub struct Sampling {
-    /// The channels, channel 1 first (at most [`MAX_CHANNELS`] answered).
-    pub channels: Vec<SampleChannel>,
-    /// Sampling runs: since when, with cnc_sdtstartsmpl's two arguments.
-    pub running: Option<Running>,
-}
-
-/// Sampling started by cnc_sdtstartsmpl.
-#[derive(Debug, Clone, Copy)]
-pub struct Running {
-    pub since: Instant,
-    pub kind: i32,
-    pub cycle: i32,
-}
-
-impl Sampling {
-    /// The state a path starts with: its profile's channels.
-    pub fn new(channels: &[SampleChannel]) -> Sampling {
-        Sampling {
-            channels: channels.to_vec(),
-            running: None,
-        }
-    }
-}
 
 /// The current value of `d` of axis `a`, as the channel's 16 bits.
 fn value(a: &Axis, d: Datum) -> u16 {
