@@ -4,6 +4,7 @@
 //! ```text
 //! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h [--only f,g] [--out FILE]
 //! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h --check   # the described functions
+//! cargo run --release --example oracle -- learn --lib FANUC.so --lib FANUC32.so --header fwlib32.h --check   # those only in the 32-bit build from it
 //! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h --unexported
 //! ```
 //!
@@ -56,6 +57,10 @@ pub struct Opts {
     pub out: Option<PathBuf>,
     pub check: bool,
     pub unexported: bool,
+    /// Further libraries (`--lib` again) and the probe built for each:
+    /// a function not in `lib` is learnt from the first that has it
+    /// (FANUC's 32-bit x86 build has functions its x86-64 one lacks).
+    pub more: Vec<(PathBuf, PathBuf)>,
 }
 
 /// One live conversation: a fake CNC of a class and a probe connected to it.
@@ -392,6 +397,9 @@ struct ClassLearnt {
     moved_past: Vec<String>,
     payload: Vec<Placed>,
     inputs: Vec<usize>,
+    /// C strings sent in a fixed field: (argument, payload offset, bytes
+    /// of the string sent in order).
+    texts: Vec<(usize, usize, usize)>,
     outputs: Vec<usize>,
     /// (output's argument, leaf, C integer, number argument echoed)
     echoes: Vec<(usize, String, Int, usize)>,
@@ -561,7 +569,7 @@ fn learn_class(
             flags.push(format!("word {k} computed: {v:?}"));
         }
     }
-    let form = DForm {
+    let mut form = DForm {
         classes: "All",
         class: first.class,
         cmd: first.cmd,
@@ -577,6 +585,7 @@ fn learn_class(
     // Inputs: each pointer's bytes position-coded; the request bytes from it.
     let mut payload = Vec::new();
     let mut inputs = Vec::new();
+    let mut texts = Vec::new();
     let base_req = req_bytes(&first);
     for i in 0..n {
         let (Some((_, span)), ty) = (
@@ -627,20 +636,63 @@ fn learn_class(
                 }
             }
         }
+        // A C string sent in a fixed field: its bytes in order from a
+        // payload offset (as many as the field holds, up to the string's).
+        if from_it && is_bytes(&sh.args[i]) {
+            if let Some(Src::At(r0)) = map
+                .first()
+                .copied()
+                .filter(|s| matches!(s, Src::At(r) if *r >= 20))
+            {
+                let n = map
+                    .iter()
+                    .enumerate()
+                    .take_while(|(q, s)| **s == Src::At(r0 + q))
+                    .count();
+                inputs.push(i);
+                texts.push((i, r0 - 20, n));
+                continue;
+            }
+        }
         if from_it {
             inputs.push(i);
             let mut lv = Vec::new();
             leaves(&ty, 0, "", &mut lv);
+            // A member whose low byte lands in a request word's low byte
+            // (its higher bytes the word's next ones, or not sent): the
+            // word is that member, when the plain call saw it constant.
+            let mut map = map;
+            for l in &lv {
+                let Some(Src::At(r)) = map.get(l.off).copied() else {
+                    continue;
+                };
+                let size = l.ty.size().min(map.len() - l.off);
+                let sent = (1..size)
+                    .take_while(|b| r >= *b && map[l.off + b] == Src::At(r - b))
+                    .count()
+                    + 1;
+                let whole = (sent..size).all(|b| map[l.off + b] == Src::Kept);
+                if r < 20 && r % 4 == 3 && sent <= 4 && whole {
+                    if let Some(w @ WordSrc::Const(_)) = form.words.get_mut(r / 4) {
+                        *w = WordSrc::Input(l.path.clone());
+                        for b in 0..size {
+                            map[l.off + b] = Src::Kept;
+                        }
+                    }
+                }
+            }
             let mut odd = Vec::new();
             let mut p = placed(0, &map, &lv, &mut odd);
+            // A member in a request word: the word is that member (its
+            // position codes seen there), when the plain call saw it
+            // constant; otherwise flagged.
             for x in &mut p {
                 if x.at < 20 {
-                    flags.push(format!(
-                        "input {}'s {} goes in word {}",
-                        i,
-                        x.path,
-                        x.at / 4
-                    ));
+                    let k = x.at / 4;
+                    match form.words.get_mut(k) {
+                        Some(w @ WordSrc::Const(_)) => *w = WordSrc::Input(x.path.clone()),
+                        _ => flags.push(format!("input {}'s {} goes in word {}", i, x.path, k)),
+                    }
                 }
             }
             p.retain(|x| x.at >= 20);
@@ -865,6 +917,7 @@ fn learn_class(
         moved_past,
         payload,
         inputs,
+        texts,
         outputs,
         echoes,
         flags,
@@ -1346,8 +1399,20 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> Vec<String> {
                 Err(e) => bad.push(format!("payload on {cname}: {e}")),
             }
         }
-        if false {
-            bad.push(format!("reply on {cname}: not mapped"));
+        // Text fields: each C string's bytes from its field's offset, as
+        // many as the field holds (the learner's string is STRING long).
+        let mut want_texts = Vec::new();
+        let mut at = 0;
+        for (n, size) in f.texts() {
+            let pos = f.params.iter().position(|p| p.name() == n);
+            want_texts.push((pos.unwrap_or(usize::MAX), at, size.min(STRING)));
+            at += size;
+        }
+        if want_texts != cl.texts {
+            bad.push(format!(
+                "text fields on {cname}: committed {want_texts:?}, learnt {:?} (argument, payload offset, bytes)",
+                cl.texts
+            ));
         }
     }
     bad
@@ -1436,7 +1501,20 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
     let mut calls = 0;
     let started = std::time::Instant::now();
     for name in &names {
-        match learn(probe_exe, &o.lib, &hdr, name, &mut calls) {
+        let mut got = learn(probe_exe, &o.lib, &hdr, name, &mut calls);
+        let mut from = String::new();
+        for (lib, exe) in &o.more {
+            if !matches!(&got, Err(e) if e.starts_with("not in FANUC's library")) {
+                break;
+            }
+            got = learn(exe, lib, &hdr, name, &mut calls);
+            from = if crate::probe::elf32(lib) {
+                " (checked against the 32-bit build)".into()
+            } else {
+                format!(" (checked against {})", lib.display())
+            };
+        }
+        match got {
             Ok(l) => {
                 let t = l.draft.text();
                 lines.push(t.lines().count());
@@ -1459,16 +1537,16 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
                     let bad = compare(f, &l, &hdr);
                     if bad.is_empty() {
                         agree += 1;
-                        println!("AGREE {name}");
+                        println!("AGREE {name}{from}");
                     } else {
-                        println!("DIFFER {name}\n  {}", bad.join("\n  "));
+                        println!("DIFFER {name}{from}\n  {}", bad.join("\n  "));
                     }
                 } else {
                     println!("{kind} {name} ({} flags)", l.draft.flags.len());
                 }
             }
             Err(e) => {
-                println!("FAILED {name}: {e}");
+                println!("FAILED {name}{from}: {e}");
                 *counts.entry(format!("failed: {}", reason(&e))).or_default() += 1;
                 if o.check {
                     compared += 1;

@@ -640,8 +640,9 @@ pub enum WordSrc {
     /// Changes, not as any argument: the values seen.
     Computed(Vec<i32>),
     /// A member of the write's input (committed entries' `Word::Input`;
-    /// the learner flags it as "input N's M goes in word K").
-    Input(&'static str),
+    /// learnt when an input's position-coded member lands in a word the
+    /// plain call saw constant).
+    Input(String),
 }
 
 /// One run for [`learn_words`]: the number arguments as passed, the first
@@ -861,13 +862,21 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
     }
     if let Some(r) = &f.records {
         let ty = outs.get(r.out as usize).ok_or("no output")?;
+        // `elem` spelled `T[N]`: each record an N-element array from the
+        // member on (consecutive `char name[N]` members, one a record).
+        let arr = r
+            .elem
+            .strip_suffix(']')
+            .and_then(|e| e.rsplit_once('['))
+            .and_then(|(_, n)| n.parse::<usize>().ok());
         let (base, stride, elem_ty) = if r.to.is_empty() {
             (0, ty.size(), ty.clone())
         } else {
             let (o, t) = member(ty, r.to).ok_or("no records member")?;
-            match t {
-                Ty::Array(e, _) => (o, e.size(), *e),
-                t => (o, t.size(), t),
+            match (t, arr) {
+                (Ty::Array(e, _), Some(n)) => (o, n * e.size(), Ty::Array(e, n)),
+                (Ty::Array(e, _), None) => (o, e.size(), *e),
+                (t, _) => (o, t.size(), t),
             }
         };
         let rl = r.wire_len();
@@ -1300,12 +1309,13 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             Some(spec::Word::Arg(i)) => WordSrc::Arg(*i as usize),
             Some(spec::Word::Const(c)) => WordSrc::Const(*c),
             Some(spec::Word::Asked) => WordSrc::Arg(f.count().unwrap_or(usize::MAX)),
-            Some(spec::Word::Input(m, _)) => WordSrc::Input(m),
+            Some(spec::Word::Input(m, _)) => WordSrc::Input(m.to_string()),
             Some(spec::Word::Upto(_, e, _)) => WordSrc::Arg(*e as usize),
             None => WordSrc::Const(0),
         })
         .collect();
-    if f.payload.is_some() {
+    // text fields or records: the payload's length in the fifth word
+    if f.sends_payload() {
         w[4] = WordSrc::Len;
     }
     Some((form.class, form.cmd, w))
