@@ -73,6 +73,8 @@ struct Session<'a> {
     /// Calls that took longer than a second (the library waited for a
     /// reply that never came): after three, no more calls are made.
     pub slow: usize,
+    /// A call sent nothing, then its request from a fresh process.
+    pub stateful: bool,
 }
 
 /// What one call did.
@@ -94,6 +96,7 @@ impl<'a> Session<'a> {
             probe: None,
             calls: 0,
             slow: 0,
+            stateful: false,
         }
     }
     fn probe(&mut self) -> &mut Probe {
@@ -427,7 +430,25 @@ fn learn_class(
         vals: sh.args.iter().map(base_val).collect(),
         fill_ptr: vec![None; n],
     };
-    let run = |sess: &mut Session, s: &Setup| sess.call(0xCC, &command(name, sh, s), None);
+    // A call that sends nothing is made again by a fresh process: FANUC's
+    // library keeps state between some calls (a sampling started refuses
+    // the next start locally), which is not a local check.
+    let run = |sess: &mut Session, s: &Setup| {
+        let cmd = command(name, sh, s);
+        let c = sess.call(0xCC, &cmd, None);
+        if traffic(&c) || c.crashed || c.missing || sess.slow > 0 {
+            return c;
+        }
+        if let Some(p) = sess.probe.take() {
+            p.finish();
+        }
+        let again = sess.call(0xCC, &cmd, None);
+        if traffic(&again) {
+            sess.stateful = true;
+            return again;
+        }
+        c
+    };
     let mut c0 = run(sess, &base);
     if c0.missing {
         return Err("not in FANUC's library".into());
@@ -909,6 +930,12 @@ fn learn_class(
     }
     if sess.slow >= 3 {
         flags.push("calls timed out: learning stopped early".into());
+    }
+    if sess.stateful {
+        flags.push(
+            "state kept between calls: a call that sent nothing sent its request from a fresh process"
+                .into(),
+        );
     }
     Ok(ClassLearnt {
         form: Some(form),
@@ -1561,6 +1588,7 @@ fn category(flag: &str) -> &'static str {
         ("no output written", "no output written, no input read"),
         ("punch press", "learnt on a punch press"),
         ("a local answer on that class", "no request on some class"),
+        ("state kept between calls", "state kept between calls"),
         ("reply:", "computed or constant output bytes"),
     ];
     KINDS

@@ -874,8 +874,11 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
         } else {
             let (o, t) = member(ty, r.to).ok_or("no records member")?;
             match (t, arr) {
-                (Ty::Array(e, _), Some(n)) => (o, n * e.size(), Ty::Array(e, n)),
-                (Ty::Array(e, _), None) => (o, e.size(), *e),
+                // (a two-dimensional member's rows are the records already)
+                (Ty::Array(e, _), Some(n)) if !matches!(*e, Ty::Array(..)) => {
+                    (o, n * e.size(), Ty::Array(e, n))
+                }
+                (Ty::Array(e, _), _) => (o, e.size(), *e),
                 (t, _) => (o, t.size(), t),
             }
         };
