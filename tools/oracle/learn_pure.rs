@@ -1343,27 +1343,22 @@ pub fn same_form(learnt: &DForm, committed: &(u16, u16, Vec<WordSrc>)) -> Result
     Ok(())
 }
 
-/// Does a learnt check set agree with the committed one on the values
-/// swept? `sweep[i]` are argument i's values; a value refused by either
-/// side only is a disagreement.
-pub fn same_checks(
-    learnt: &[LearntCheck],
+/// Do the committed checks answer each swept value as observed?
+/// `observed[i]`: argument i's values (as the C parameter holds them) and
+/// what each did (`Some(code)` without traffic, None a request sent).
+pub fn same_answers(
+    observed: &[Vec<(i64, Option<i16>)>],
     committed: &[spec::Check],
-    sweep: &[Vec<i64>],
     conv: &[fn(i64) -> i32],
 ) -> Result<(), String> {
-    for (i, vals) in sweep.iter().enumerate() {
-        for v in vals {
-            let l = learnt
-                .iter()
-                .find(|c| c.arg == i && (*v < c.lo || *v > c.hi))
-                .map(|c| c.code);
+    for (i, vals) in observed.iter().enumerate() {
+        for (v, l) in vals {
             let cv = conv.get(i).map_or(*v as i32, |c| c(*v));
             let c = committed
                 .iter()
                 .find(|c| c.arg as usize == i && (cv < c.lo || cv > c.hi))
                 .map(|c| c.code);
-            if l != c {
+            if *l != c {
                 return Err(format!("argument {i} = {v}: learnt {l:?}, committed {c:?}"));
             }
         }
