@@ -1640,6 +1640,7 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
     let mut flag_reasons: BTreeMap<String, usize> = BTreeMap::new();
     let mut lines = Vec::new();
     let mut calls = 0;
+    let mut further = 0;
     let started = std::time::Instant::now();
     for name in &names {
         let mut got = learn(probe_exe, &o.lib, &hdr, name, &mut calls);
@@ -1649,6 +1650,9 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
                 break;
             }
             got = learn(exe, lib, &hdr, name, &mut calls);
+            if got.is_ok() {
+                further += 1;
+            }
             from = if crate::probe::elf32(lib) {
                 " (checked against the 32-bit build)".into()
             } else {
@@ -1735,7 +1739,10 @@ pub fn run(o: &Opts, probe_exe: &Path) -> i32 {
         .filter(|(k, _)| k.contains("not in FANUC's library"))
         .map(|(_, n)| n)
         .sum::<usize>();
-    println!("  in FANUC's library: {}", names.len() - missing);
+    println!(
+        "  in FANUC's library: {} ({further} of them only in a further --lib)",
+        names.len() - missing
+    );
     if !lines.is_empty() {
         lines.sort();
         println!(
