@@ -345,9 +345,8 @@ fn local_checks_from_a_sweep() {
     assert_eq!(learn_check(1, &[(0, None), (5, None)]).unwrap(), None);
     // a hole inside the accepted values cannot be one range
     assert!(learn_check(0, &[(0, None), (5, Some(3)), (9, None)]).is_err());
-    // the committed form of the same check agrees on the swept values,
-    // a different bound does not
-    let vals = vec![sweep.iter().map(|s| s.0).collect::<Vec<_>>()];
+    // the committed form of the same check answers each swept value as
+    // observed, a different bound does not
     let conv: [fn(i64) -> i32; 1] = [|v| v as i16 as i32];
     let same = fwlib32::spec::Check {
         arg: 0,
@@ -355,9 +354,24 @@ fn local_checks_from_a_sweep() {
         hi: 32,
         code: 3,
     };
-    assert!(same_checks(&[c], &[same], &vals, &conv).is_ok());
+    assert!(same_answers(std::slice::from_ref(&sweep), &[same], &conv).is_ok());
     let other = fwlib32::spec::Check { hi: 31, ..same };
-    assert!(same_checks(&[c], &[other], &vals, &conv).is_err());
+    let e = same_answers(std::slice::from_ref(&sweep), &[other], &conv).unwrap_err();
+    assert!(e.contains("argument 0 = 32"), "{e}");
+    // another code for the same values differs too
+    let code = fwlib32::spec::Check { code: 2, ..same };
+    assert!(same_answers(std::slice::from_ref(&sweep), &[code], &conv).is_err());
+    // a sweep that is not one range (no learnt check) is still compared
+    // value by value: a committed range refusing the accepted 9 differs
+    let holed = vec![(0, None), (5, Some(3)), (9, None)];
+    let range = fwlib32::spec::Check {
+        arg: 0,
+        lo: 0,
+        hi: 4,
+        code: 3,
+    };
+    let e = same_answers(&[holed], &[range], &conv).unwrap_err();
+    assert!(e.contains("argument 0 = 9"), "{e}");
 }
 
 #[test]
@@ -404,4 +418,71 @@ fn a_draft_is_table_syntax_with_its_flags() {
         open.contains("\n            \"out 0 name[3]: [Computed]\",\n"),
         "{t}"
     );
+}
+
+/// A text parameter's payload (a C string in a fixed field) puts its
+/// length in the fifth word, as a records payload does; a form without
+/// payload leaves the word 0.
+#[test]
+fn a_text_parameter_sends_its_length_in_the_fifth_word() {
+    const TEXT: Func = Func {
+        name: "cnc_text",
+        doc: "",
+        params: &[Param::Short("type"), Param::Text("path", 256)],
+        checks: &[],
+        forms: &[every_class(0x0123, &[fwlib32::spec::Word::Arg(0)])],
+        ..COMMAND
+    };
+    let (class, cmd, w) = committed_words(&TEXT, false, false).unwrap();
+    assert_eq!((class, cmd), (1, 0x0123));
+    assert_eq!(w[0], WordSrc::Arg(0));
+    assert_eq!(w[4], WordSrc::Len);
+    const NONE: Func = Func {
+        params: &[Param::Short("type")],
+        ..TEXT
+    };
+    assert_eq!(
+        committed_words(&NONE, false, false).unwrap().2[4],
+        WordSrc::Const(0)
+    );
+}
+
+/// Records `elem: "char[N]"` from a `char[N]` member on: each record one
+/// name of N bytes (consecutive members), not one character.
+#[test]
+fn records_of_char_arrays_step_by_the_array() {
+    let hdr = Header::parse(
+        "typedef struct names { short no; short type; char n1[5]; char n2[5]; char n3[5]; } NAMES;",
+    );
+    let ty = hdr.types["NAMES"].clone();
+    const ENTRY: Func = Func {
+        name: "cnc_names",
+        doc: "",
+        params: &[Param::Out("buf", "NAMES")],
+        checks: &[],
+        forms: &[every_class(3, &[])],
+        records: Some(Records {
+            fields: &[Field {
+                wire: U8,
+                n: 4,
+                out: 0,
+                to: Some(""),
+                c: I8,
+                arg: None,
+            }],
+            out: 0,
+            to: "n1",
+            elem: "char[5]",
+            max: 3,
+            count: None,
+            room: None,
+        }),
+        ..COMMAND
+    };
+    let m = moves(&expected(&ENTRY, &[ty], 12, usize::MAX).unwrap());
+    // record k: reply bytes 4k.. into bytes 4 + 5k..
+    let want: Vec<(usize, usize, Src)> = (0..3)
+        .flat_map(|k| (0..4).map(move |b| (0, 4 + 5 * k + b, Src::At(4 * k + b))))
+        .collect();
+    assert_eq!(m, want);
 }

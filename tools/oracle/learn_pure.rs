@@ -640,8 +640,9 @@ pub enum WordSrc {
     /// Changes, not as any argument: the values seen.
     Computed(Vec<i32>),
     /// A member of the write's input (committed entries' `Word::Input`;
-    /// the learner flags it as "input N's M goes in word K").
-    Input(&'static str),
+    /// learnt when an input's position-coded member lands in a word the
+    /// plain call saw constant).
+    Input(String),
 }
 
 /// One run for [`learn_words`]: the number arguments as passed, the first
@@ -861,13 +862,24 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
     }
     if let Some(r) = &f.records {
         let ty = outs.get(r.out as usize).ok_or("no output")?;
+        // `elem` spelled `T[N]`: each record an N-element array from the
+        // member on (consecutive `char name[N]` members, one a record).
+        let arr = r
+            .elem
+            .strip_suffix(']')
+            .and_then(|e| e.rsplit_once('['))
+            .and_then(|(_, n)| n.parse::<usize>().ok());
         let (base, stride, elem_ty) = if r.to.is_empty() {
             (0, ty.size(), ty.clone())
         } else {
             let (o, t) = member(ty, r.to).ok_or("no records member")?;
-            match t {
-                Ty::Array(e, _) => (o, e.size(), *e),
-                t => (o, t.size(), t),
+            match (t, arr) {
+                // (a two-dimensional member's rows are the records already)
+                (Ty::Array(e, _), Some(n)) if !matches!(*e, Ty::Array(..)) => {
+                    (o, n * e.size(), Ty::Array(e, n))
+                }
+                (Ty::Array(e, _), _) => (o, e.size(), *e),
+                (t, _) => (o, t.size(), t),
             }
         };
         let rl = r.wire_len();
@@ -1301,12 +1313,13 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             Some(spec::Word::Arg(i)) => WordSrc::Arg(*i as usize),
             Some(spec::Word::Const(c)) => WordSrc::Const(*c),
             Some(spec::Word::Asked) => WordSrc::Arg(f.count().unwrap_or(usize::MAX)),
-            Some(spec::Word::Input(m, _)) => WordSrc::Input(m),
+            Some(spec::Word::Input(m, _)) => WordSrc::Input(m.to_string()),
             Some(spec::Word::Upto(_, e, _)) => WordSrc::Arg(*e as usize),
             None => WordSrc::Const(0),
         })
         .collect();
-    if f.payload.is_some() {
+    // text fields or records: the payload's length in the fifth word
+    if f.sends_payload() {
         w[4] = WordSrc::Len;
     }
     Some((form.class, form.cmd, w))
@@ -1331,27 +1344,22 @@ pub fn same_form(learnt: &DForm, committed: &(u16, u16, Vec<WordSrc>)) -> Result
     Ok(())
 }
 
-/// Does a learnt check set agree with the committed one on the values
-/// swept? `sweep[i]` are argument i's values; a value refused by either
-/// side only is a disagreement.
-pub fn same_checks(
-    learnt: &[LearntCheck],
+/// Do the committed checks answer each swept value as observed?
+/// `observed[i]`: argument i's values (as the C parameter holds them) and
+/// what each did (`Some(code)` without traffic, None a request sent).
+pub fn same_answers(
+    observed: &[Vec<(i64, Option<i16>)>],
     committed: &[spec::Check],
-    sweep: &[Vec<i64>],
     conv: &[fn(i64) -> i32],
 ) -> Result<(), String> {
-    for (i, vals) in sweep.iter().enumerate() {
-        for v in vals {
-            let l = learnt
-                .iter()
-                .find(|c| c.arg == i && (*v < c.lo || *v > c.hi))
-                .map(|c| c.code);
+    for (i, vals) in observed.iter().enumerate() {
+        for (v, l) in vals {
             let cv = conv.get(i).map_or(*v as i32, |c| c(*v));
             let c = committed
                 .iter()
                 .find(|c| c.arg as usize == i && (cv < c.lo || cv > c.hi))
                 .map(|c| c.code);
-            if l != c {
+            if *l != c {
                 return Err(format!("argument {i} = {v}: learnt {l:?}, committed {c:?}"));
             }
         }

@@ -6,7 +6,7 @@
 //! cargo run --example oracle -- verify  --lib LIB.so [FILE.json ...]
 //! cargo run --example oracle -- list    [--only WORD]
 //! cargo run --release --example oracle -- fuzz --lib FANUC.so [--seconds N] [--seed S] [--only f,g]
-//! cargo run --release --example oracle -- learn --lib FANUC.so --header fwlib32.h [--only f,g] [--check | --unexported] [--out FILE]
+//! cargo run --release --example oracle -- learn --lib FANUC.so [--lib FANUC32.so] --header fwlib32.h [--only f,g] [--check | --unexported] [--out FILE]
 //! ```
 //!
 //! `record` runs every generated case (tools/oracle/cases.rs) against a
@@ -168,6 +168,8 @@ fn call_json(r: &Ran) -> Value {
 struct Args {
     cmd: String,
     lib: Option<PathBuf>,
+    /// `--lib` given again (learn: the functions the first lacks).
+    more_libs: Vec<PathBuf>,
     ours: Option<PathBuf>,
     only: Vec<String>,
     out: PathBuf,
@@ -184,6 +186,7 @@ fn args() -> Args {
     let mut r = Args {
         cmd: a.next().unwrap_or_default(),
         lib: std::env::var_os("ORACLE_LIB").map(PathBuf::from),
+        more_libs: Vec::new(),
         ours: None,
         only: Vec::new(),
         out: root().join("tests/vectors"),
@@ -194,9 +197,14 @@ fn args() -> Args {
         check: false,
         unexported: false,
     };
+    let mut lib_given = false;
     while let Some(x) = a.next() {
         match x.as_str() {
-            "--lib" => r.lib = a.next().map(PathBuf::from),
+            "--lib" if lib_given => r.more_libs.extend(a.next().map(PathBuf::from)),
+            "--lib" => {
+                lib_given = true;
+                r.lib = a.next().map(PathBuf::from)
+            }
             "--ours" => r.ours = a.next().map(PathBuf::from),
             "--header" => r.header = a.next().map(PathBuf::from),
             "--check" => r.check = true,
@@ -419,9 +427,23 @@ fn main() {
                 }),
                 check: a.check,
                 unexported: a.unexported,
+                // each further library with a probe of its own width
+                more: a
+                    .more_libs
+                    .iter()
+                    .enumerate()
+                    .map(|(k, l)| {
+                        let dir = std::env::temp_dir()
+                            .join(format!("focas-oracle-{}-{k}", std::process::id()));
+                        (l.clone(), probe::build_for(&root(), &dir, probe::elf32(l)))
+                    })
+                    .collect(),
             };
             let code = learn::run(&opts, &probe_exe);
             let _ = std::fs::remove_dir_all(probe_exe.parent().unwrap());
+            for (_, exe) in &opts.more {
+                let _ = std::fs::remove_dir_all(exe.parent().unwrap());
+            }
             std::process::exit(code);
         }
         "fuzz" => {
