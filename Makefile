@@ -68,6 +68,7 @@ TARGET_FLAG := --target $(TARGET)
 endif
 
 RUSTC    ?= rustc
+comma := ,
 HOST     := $(shell $(RUSTC) -vV 2>/dev/null | sed -n 's/^host: //p')
 RUST_SRC := $(shell $(RUSTC) --print sysroot 2>/dev/null)/lib/rustlib/src/rust/library/std
 ifeq ($(STD),)
@@ -80,10 +81,19 @@ ifeq ($(STD),slim)
 # default features, and would overwrite these.
 LIB_TARGET := $(if $(TARGET),$(TARGET),$(HOST))
 LIB_OUT := $(CARGO_TARGET_DIR)/slim-std/$(LIB_TARGET)/release
+# For size, also unstable (the same RUSTC_BOOTSTRAP): panics name no source
+# location (-Zlocation-detail=none; the C boundary still catches them), std's
+# optimize_for_size, and for a native build the toolchain's own lld folding
+# identical functions (--icf=all): 0.997 MB instead of 1.04 MB with 284
+# functions, x86-64.
+LLD_DIR := $(shell $(RUSTC) --print sysroot 2>/dev/null)/lib/rustlib/$(HOST)/bin/gcc-ld
+SLIM_FLAGS := -Zlocation-detail=none $(if $(and $(if $(TARGET),,native),$(wildcard $(LLD_DIR)/ld.lld)),\
+    -Clink-arg=-B$(LLD_DIR) -Clink-arg=-fuse-ld=lld -Clink-arg=-Wl$(comma)--icf=all)
 LIB_BUILD := RUSTC_BOOTSTRAP=1 CARGO_PROFILE_RELEASE_OPT_LEVEL=$(OPT) \
+    RUSTFLAGS="$(strip $(RUSTFLAGS) $(SLIM_FLAGS))" \
     $(CARGO) build --release --locked --lib --no-default-features \
     --target $(LIB_TARGET) --target-dir $(CARGO_TARGET_DIR)/slim-std \
-    -Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind
+    -Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind,optimize_for_size
 else ifeq ($(STD),prebuilt)
 LIB_OUT := $(CARGO_TARGET_DIR)/lib-only/$(if $(TARGET),$(TARGET)/)release
 LIB_BUILD := CARGO_PROFILE_RELEASE_OPT_LEVEL=$(OPT) \
