@@ -58,7 +58,7 @@ const SYSSOFT2_REPLY: &[Field] = &[
     skips(IdChar, 160),
 ];
 
-/// [`SYSSOFT_REPLY`]'s field of the physical slots.
+/// `SYSSOFT_REPLY`'s field of the physical slots.
 pub const SLOTS: u8 = 0;
 /// Its fields of the module IDs (slots below 0x80, then from 0x80).
 pub const MODULES: (u8, u8) = (1, 2);
