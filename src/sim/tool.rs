@@ -284,15 +284,12 @@ impl Machine {
         if top < 1 || top as usize - 1 > tools.len() {
             return Err(NUMBER);
         }
-        // Checked on a copy: a refused record changes nothing.
-        let mut copy = self.clone_managed(path)?;
-        copy.resize((top as usize - 1 + n).max(copy.len()), Default::default());
-        let all = std::mem::replace(self.managed_mut(path)?, copy);
+        // Every record is checked first: a refused record changes nothing.
+        v.chunks_exact(per).try_for_each(managed_record_ok)?;
+        let end = (top as usize - 1 + n).max(tools.len());
+        self.managed_mut(path)?.resize(end, Default::default());
         for (k, rec) in v.chunks_exact(per).enumerate() {
-            if let Err(e) = self.write_managed(path, top + k as i32, rec) {
-                *self.managed_mut(path)? = all;
-                return Err(e);
-            }
+            self.write_managed(path, top + k as i32, rec)?;
         }
         Ok(n as i64)
     }
@@ -303,10 +300,6 @@ impl Machine {
         let per = q.f.payload.map_or(40, |p| p.fields.len());
         let n = self.register_managed(q.path, q.arg(0), q.payload, per)?;
         Ok(vec![n])
-    }
-
-    fn clone_managed(&self, path: u16) -> Reply<Vec<super::profile::offset::ManagedTool>> {
-        Ok(self.path(path)?.managed_tools.clone())
     }
 
     fn managed_mut(&mut self, path: u16) -> Reply<&mut Vec<super::profile::offset::ManagedTool>> {
@@ -335,11 +328,8 @@ impl Machine {
             .checked_sub(1)
             .and_then(|i| tools.get_mut(i))
             .ok_or(NUMBER)?;
+        managed_record_ok(v)?;
         let w = |i: usize| v.get(i).map_or(0, |x| *x as i32);
-        let data = CncError::new(ew::EW_DATA);
-        if v.len() < 40 || !(0..=3).contains(&w(4)) || w(1) < 0 || w(2) < 0 {
-            return Err(data);
-        }
         t.number = w(0);
         (t.life_count, t.max_life, t.life_stat) = (w(1), w(2), w(4) as u8);
         (t.length, t.radius) = (w(7) as i16 as i32, w(8) as i16 as i32);
@@ -638,4 +628,14 @@ impl Machine {
                 .collect(),
         })
     }
+}
+
+/// cnc_wrtool's checks on a record: a payload short of a record, a life
+/// status past 3, a negative life or counter: EW_DATA.
+fn managed_record_ok(v: &[i64]) -> Reply<()> {
+    let w = |i: usize| v.get(i).map_or(0, |x| *x as i32);
+    if v.len() < 40 || !(0..=3).contains(&w(4)) || w(1) < 0 || w(2) < 0 {
+        return Err(CncError::new(ew::EW_DATA));
+    }
+    Ok(())
 }

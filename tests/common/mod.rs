@@ -11,6 +11,8 @@ use std::collections::BTreeMap;
 use std::io::{ErrorKind, Read, Write};
 use std::net::{Shutdown, TcpListener, TcpStream};
 use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
@@ -381,6 +383,11 @@ pub struct Replay {
     thread: Option<JoinHandle<()>>,
     pending: Option<Vec<String>>,
     broken: bool,
+    /// Set once the client's call has returned: a blocking library sends
+    /// nothing more for it, so the server stops waiting for frames that
+    /// will not come (a listed deviation that sends less than FANUC's
+    /// library) instead of waiting out [`IO_TIMEOUT`].
+    returned: Arc<AtomicBool>,
 }
 
 impl Replay {
@@ -389,6 +396,8 @@ impl Replay {
         let port = listener.local_addr().expect("local_addr").port();
         let (tx, srx) = mpsc::channel::<Msg>();
         let (stx, rx) = mpsc::channel::<Reply>();
+        let returned = Arc::new(AtomicBool::new(false));
+        let flag = returned.clone();
         let thread = std::thread::Builder::new()
             .name(format!("replay-cnc-{port}"))
             .spawn(move || {
@@ -397,6 +406,7 @@ impl Replay {
                     conns: BTreeMap::new(),
                     last_label: String::from("(start)"),
                     broken: false,
+                    returned: flag,
                 };
                 while let Ok(m) = srx.recv() {
                     match m {
@@ -430,6 +440,7 @@ impl Replay {
             thread: Some(thread),
             pending: None,
             broken: false,
+            returned,
         }
     }
 
@@ -444,6 +455,7 @@ impl Replay {
     /// has checked that nothing is left over from the previous call.
     pub fn begin(&mut self, label: &str, events: Vec<Event>) {
         assert!(self.pending.is_none(), "begin without end");
+        self.returned.store(false, Ordering::SeqCst);
         self.tx
             .send(Msg::Step(label.to_string(), events))
             .expect("replay server gone");
@@ -456,6 +468,7 @@ impl Replay {
     /// Waits until the server has played the step; its mismatches.
     pub fn end(&mut self) -> Vec<String> {
         let mut out = self.pending.take().expect("end without begin");
+        self.returned.store(true, Ordering::SeqCst);
         match self.reply() {
             Reply::Done { mismatches, broken } => {
                 out.extend(mismatches);
@@ -507,6 +520,7 @@ impl Replay {
     /// pending, and the client must have closed every connection.
     pub fn finish(mut self) -> Vec<String> {
         assert!(self.pending.is_none(), "finish during a step");
+        self.returned.store(true, Ordering::SeqCst);
         let _ = self.tx.send(Msg::Finish);
         let r = match self.rx.recv_timeout(STEP_TIMEOUT) {
             Ok(Reply::Done { mismatches, .. }) => mismatches,
@@ -534,6 +548,30 @@ struct Server {
     last_label: String,
     /// An earlier step failed on I/O: later steps are not played.
     broken: bool,
+    /// The client's call has returned ([`Replay::returned`]).
+    returned: Arc<AtomicBool>,
+}
+
+/// Waits until `fd` is readable, at most [`io_timeout`], or until the
+/// client's call has returned and nothing is there: what it sent before
+/// returning is already in the socket (loopback).
+fn ready(fd: std::os::fd::RawFd, returned: &AtomicBool) -> bool {
+    let deadline = Instant::now() + io_timeout();
+    loop {
+        let done = returned.load(Ordering::SeqCst);
+        let left = deadline.saturating_duration_since(Instant::now());
+        let wait = if done {
+            Duration::ZERO
+        } else {
+            left.min(Duration::from_millis(20))
+        };
+        if readable(fd, wait) {
+            return true;
+        }
+        if done || left.is_zero() {
+            return false;
+        }
+    }
 }
 
 /// Waits until `fd` is readable (a pending connection or data), at most `t`.
@@ -573,9 +611,17 @@ fn is_eof(e: &std::io::Error) -> bool {
 }
 
 /// Reads exactly `buf.len()` bytes; on failure the number of bytes read.
-fn read_full(s: &mut TcpStream, buf: &mut [u8]) -> Result<(), (usize, ReadEnd)> {
+fn read_full(
+    s: &mut TcpStream,
+    buf: &mut [u8],
+    returned: &AtomicBool,
+) -> Result<(), (usize, ReadEnd)> {
+    use std::os::fd::AsRawFd;
     let mut got = 0;
     while got < buf.len() {
+        if !ready(s.as_raw_fd(), returned) {
+            return Err((got, ReadEnd::Timeout));
+        }
         match s.read(&mut buf[got..]) {
             Ok(0) => return Err((got, ReadEnd::Eof)),
             Ok(n) => got += n,
@@ -589,10 +635,14 @@ fn read_full(s: &mut TcpStream, buf: &mut [u8]) -> Result<(), (usize, ReadEnd)> 
 
 /// Reads until end of file (bounded by the read timeout); what arrived, and
 /// whether the end was reached.
-fn read_to_eof(s: &mut TcpStream) -> (Vec<u8>, bool) {
+fn read_to_eof(s: &mut TcpStream, returned: &AtomicBool) -> (Vec<u8>, bool) {
+    use std::os::fd::AsRawFd;
     let mut all = Vec::new();
     let mut buf = [0u8; 4096];
     loop {
+        if !ready(s.as_raw_fd(), returned) {
+            return (all, false);
+        }
         match s.read(&mut buf) {
             Ok(0) => return (all, true),
             Ok(n) => all.extend_from_slice(&buf[..n]),
@@ -637,9 +687,9 @@ impl Server {
         match &e.ev {
             Ev::Accept => {
                 use std::os::fd::AsRawFd;
-                if !readable(self.listener.as_raw_fd(), io_timeout()) {
+                if !ready(self.listener.as_raw_fd(), &self.returned) {
                     return Err(format!(
-                        "expected a connection for conn {c}, none within {:?}",
+                        "expected a connection for conn {c}, none before the call returned (or within {:?})",
                         io_timeout()
                     ));
                 }
@@ -653,15 +703,16 @@ impl Server {
                 self.conns.insert(c, s);
             }
             Ev::Req(want) => {
+                let returned = self.returned.clone();
                 let s = self.conn(c)?;
                 let mut head = [0u8; 10];
-                if let Err((n, end)) = read_full(s, &mut head) {
+                if let Err((n, end)) = read_full(s, &mut head, &returned) {
                     return Err(format!(
                         "conn {c}: expected request {}, got {} after {}",
                         hex(want),
                         match end {
                             ReadEnd::Eof => "end of file",
-                            ReadEnd::Timeout => "nothing more (timeout)",
+                            ReadEnd::Timeout => "nothing more (the call returned, or a timeout)",
                         },
                         if n == 0 {
                             "no bytes".to_string()
@@ -673,7 +724,7 @@ impl Server {
                 let len = u16::from_be_bytes([head[8], head[9]]) as usize;
                 let mut got = head.to_vec();
                 got.resize(10 + len, 0);
-                if let Err((n, _)) = read_full(s, &mut got[10..]) {
+                if let Err((n, _)) = read_full(s, &mut got[10..], &returned) {
                     got.truncate(10 + n);
                     return Err(format!(
                         "conn {c}: expected request {}, got a truncated frame {}",
@@ -698,7 +749,7 @@ impl Server {
             Ev::Eof => {
                 // Tolerated when the connection is already gone (closed by the client earlier).
                 if let Some(mut s) = self.conns.remove(&c) {
-                    let (extra, eof) = read_to_eof(&mut s);
+                    let (extra, eof) = read_to_eof(&mut s, &self.returned);
                     if !extra.is_empty() {
                         out.push(format!(
                             "{label}: conn {c}: expected the client to close, got unexpected bytes {}",
@@ -707,7 +758,7 @@ impl Server {
                     }
                     if !eof {
                         return Err(format!(
-                            "conn {c}: the client did not close it within {:?}",
+                            "conn {c}: the client did not close it (the call returned, or within {:?})",
                             io_timeout()
                         ));
                     }
@@ -772,7 +823,7 @@ impl Server {
         let mut out = self.pending_check();
         let label = self.last_label.clone();
         for (c, mut s) in std::mem::take(&mut self.conns) {
-            let (extra, eof) = read_to_eof(&mut s);
+            let (extra, eof) = read_to_eof(&mut s, &self.returned);
             if !extra.is_empty() {
                 out.push(format!(
                     "end of case (after {label}): conn {c}: unexpected bytes {}",
