@@ -9,8 +9,8 @@ use super::profile::Class;
 use super::route::{Answer, Asked, Route};
 use super::service::{CncError, CncService, Reply, respond};
 use super::{
-    folder, history, macros, maintenance, memory, offset, operate, param, pmc_answers, position,
-    program, sampling, setting, status, tool,
+    folder, history, macros, magazine, maintenance, memory, offset, operate, param, pmc_answers,
+    position, program, sampling, setting, status, tool,
 };
 use crate::proto::described;
 use crate::proto::open::{CncClass, OpenBody};
@@ -29,6 +29,7 @@ const AREAS: &[&[Route]] = &[
     pmc_answers::ROUTES,
     offset::ROUTES,
     tool::ROUTES,
+    magazine::ROUTES,
     history::ROUTES,
     memory::ROUTES,
     folder::ROUTES,

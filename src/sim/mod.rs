@@ -24,6 +24,7 @@ pub mod folder;
 pub mod history;
 pub mod machine;
 pub mod macros;
+pub mod magazine;
 pub mod maintenance;
 pub mod memory;
 pub mod modal;
