@@ -55,6 +55,14 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-env-changed={UPDATE_VAR}");
 
+    // The installed library's build (the Makefile's, FWLIB32_SLIM=1): the
+    // static table leaves out what only build.rs, the oracle and
+    // COMPATIBILITY.md read (src/spec/table/mod.rs, `kept`).
+    println!("cargo:rerun-if-env-changed=FWLIB32_SLIM");
+    if env::var("FWLIB32_SLIM").as_deref() == Ok("1") {
+        println!("cargo:rustc-cfg=fwlib32_slim");
+    }
+
     // Soname, cdylib only (the staticlib and rlib have none).
     let major = env::var("CARGO_PKG_VERSION_MAJOR").expect("CARGO_PKG_VERSION_MAJOR");
     if env::var("CARGO_CFG_TARGET_OS").as_deref() != Ok("macos") {
