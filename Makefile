@@ -36,6 +36,12 @@
 # opt-level; 3 is cargo's release default): 0.98 MB instead of 1.03 MB with
 # 268 functions, STD=slim, x86-64. A call's time is the network's and the
 # CNC's, not the codec's (docs/benchmarks.md measures cargo's release build).
+#
+# Today's installed library (STD=slim, OPT=z, x86-64): 879,776 bytes
+# stripped with 284 functions (997,152 before the relaxed relocations,
+# FWLIB32_SLIM and ffi::described's one `run`); a described function costs
+# about 1,040 bytes of it (1,497 before). tests/artifacts/install.rs holds
+# it to 1,000,000; docs/benchmarks.md, "Library size", says where it goes.
 
 PREFIX     ?= /usr/local
 DESTDIR    ?=
