@@ -36,6 +36,12 @@
 # opt-level; 3 is cargo's release default): 0.98 MB instead of 1.03 MB with
 # 268 functions, STD=slim, x86-64. A call's time is the network's and the
 # CNC's, not the codec's (docs/benchmarks.md measures cargo's release build).
+#
+# Today's installed library (STD=slim, OPT=z, x86-64): 879,776 bytes
+# stripped with 284 functions (997,152 before the relaxed relocations,
+# FWLIB32_SLIM and ffi::described's one `run`); a described function costs
+# about 1,040 bytes of it (1,497 before). tests/artifacts/install.rs holds
+# it to 1,000,000; docs/benchmarks.md, "Library size", says where it goes.
 
 PREFIX     ?= /usr/local
 DESTDIR    ?=
@@ -74,6 +80,10 @@ RUST_SRC := $(shell $(RUSTC) --print sysroot 2>/dev/null)/lib/rustlib/src/rust/l
 ifeq ($(STD),)
 STD := $(if $(wildcard $(RUST_SRC)),slim,prebuilt)
 endif
+# Either build sets FWLIB32_SLIM=1: the library's table of described
+# functions leaves out their documentation, the oracle's sweeps and the
+# learner's notes, which no call reads (build.rs, src/spec/table/mod.rs):
+# 29 KB on x86-64 with 135 entries.
 ifeq ($(STD),slim)
 # The library is built without the simulator and the command line
 # (--no-default-features: libfwlib32.a holds no tokio), in its own target
@@ -85,18 +95,22 @@ LIB_OUT := $(CARGO_TARGET_DIR)/slim-std/$(LIB_TARGET)/release
 # location (-Zlocation-detail=none; the C boundary still catches them), std's
 # optimize_for_size, and for a native build the toolchain's own lld folding
 # identical functions (--icf=all): 0.997 MB instead of 1.04 MB with 284
-# functions, x86-64.
+# functions, x86-64. -Zrelax-elf-relocations=yes lets the linker turn a call
+# or address through the GOT (rustc's default without a PLT) into a direct one
+# where the target is in the library, as every Rust function of it is: no GOT
+# slot and dynamic relocation per function (1,456 of them, 47 KB on x86-64;
+# the static library's objects then need binutils 2.26 or later to link).
 LLD_DIR := $(shell $(RUSTC) --print sysroot 2>/dev/null)/lib/rustlib/$(HOST)/bin/gcc-ld
-SLIM_FLAGS := -Zlocation-detail=none $(if $(and $(if $(TARGET),,native),$(wildcard $(LLD_DIR)/ld.lld)),\
+SLIM_FLAGS := -Zlocation-detail=none -Zrelax-elf-relocations=yes $(if $(and $(if $(TARGET),,native),$(wildcard $(LLD_DIR)/ld.lld)),\
     -Clink-arg=-B$(LLD_DIR) -Clink-arg=-fuse-ld=lld -Clink-arg=-Wl$(comma)--icf=all)
-LIB_BUILD := RUSTC_BOOTSTRAP=1 CARGO_PROFILE_RELEASE_OPT_LEVEL=$(OPT) \
+LIB_BUILD := RUSTC_BOOTSTRAP=1 FWLIB32_SLIM=1 CARGO_PROFILE_RELEASE_OPT_LEVEL=$(OPT) \
     RUSTFLAGS="$(strip $(RUSTFLAGS) $(SLIM_FLAGS))" \
     $(CARGO) build --release --locked --lib --no-default-features \
     --target $(LIB_TARGET) --target-dir $(CARGO_TARGET_DIR)/slim-std \
     -Zbuild-std=std,panic_unwind -Zbuild-std-features=panic-unwind,optimize_for_size
 else ifeq ($(STD),prebuilt)
 LIB_OUT := $(CARGO_TARGET_DIR)/lib-only/$(if $(TARGET),$(TARGET)/)release
-LIB_BUILD := CARGO_PROFILE_RELEASE_OPT_LEVEL=$(OPT) \
+LIB_BUILD := FWLIB32_SLIM=1 CARGO_PROFILE_RELEASE_OPT_LEVEL=$(OPT) \
     $(CARGO) build --release --locked --lib --no-default-features $(TARGET_FLAG) \
     --target-dir $(CARGO_TARGET_DIR)/lib-only
 else

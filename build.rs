@@ -55,6 +55,14 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-env-changed={UPDATE_VAR}");
 
+    // The installed library's build (the Makefile's, FWLIB32_SLIM=1): the
+    // static table leaves out what only build.rs, the oracle and
+    // COMPATIBILITY.md read (src/spec/table/mod.rs, `kept`).
+    println!("cargo:rerun-if-env-changed=FWLIB32_SLIM");
+    if env::var("FWLIB32_SLIM").as_deref() == Ok("1") {
+        println!("cargo:rustc-cfg=fwlib32_slim");
+    }
+
     // Soname, cdylib only (the staticlib and rlib have none).
     let major = env::var("CARGO_PKG_VERSION_MAJOR").expect("CARGO_PKG_VERSION_MAJOR");
     if env::var("CARGO_CFG_TARGET_OS").as_deref() != Ok("macos") {
@@ -494,11 +502,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
         // member in the element; the whole array must fit in a struct output.
         let records = match &f.records {
             // No records: a paging write's count is still the caller's.
-            None => format!(
-                "RecordsAt {{ base: 0, stride: 0, offsets: &[], count: None, asked: {}, io: &[{}] }}",
-                count.as_deref().unwrap_or("std::ptr::null_mut()"),
-                ios.join(", ")
-            ),
+            None => "rec_base: 0, rec_stride: 0, rec_offsets: &[], rec_count: None".to_string(),
             Some(r) => {
                 let (_, ty) = outs[r.out as usize];
                 let base = if r.to.is_empty() {
@@ -519,11 +523,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     Some(m) => format!("Some(offset_of!({}, {}))", rust_type(ty), ident(m)),
                     None => "None".to_string(),
                 };
-                let asked = count.as_deref().unwrap_or("std::ptr::null_mut()");
                 format!(
-                    "RecordsAt {{ base: {base}, stride: {stride}, offsets: &[{}], count: {member}, asked: {asked}, io: &[{}] }}",
+                    "rec_base: {base}, rec_stride: {stride}, rec_offsets: &[{}], rec_count: {member}",
                     offs.join(", "),
-                    ios.join(", ")
                 )
             }
         };
@@ -532,9 +534,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
             .texts()
             .map(|(n, _)| format!("{}.cast_const()", ident(n)))
             .collect();
-        let texts = format!("texts: &[{}]", texts.join(", "));
+
         // A write's payload: where each field's member is in one element.
-        let pay = match (&f.payload, f.input()) {
+        let (input, pay) = match (&f.payload, f.input()) {
             (Some(p), Some((n, _))) => {
                 let (stride, offs) = element(p.elem, p.fields);
                 // The input members request words carry, in the first element.
@@ -550,18 +552,22 @@ fn described_exports(funcs: &[types::Func]) -> String {
                         format!("offset_of!({}, {})", p.elem, ident(m))
                     })
                     .collect();
-                format!(
-                    "PayloadAt {{ input: {}.cast_const().cast(), stride: {stride}, offsets: &[{}], words: &[{}], {texts} }}",
-                    ident(n),
-                    offs.join(", "),
-                    words.join(", ")
+                (
+                    format!("{}.cast_const().cast()", ident(n)),
+                    format!(
+                        "pay_stride: {stride}, pay_offsets: &[{}], pay_words: &[{}]",
+                        offs.join(", "),
+                        words.join(", ")
+                    ),
                 )
             }
             // A typed parameter block (types::Block): the one struct.
-            (None, Some((n, t))) if f.block.is_some() => format!(
-                "PayloadAt {{ input: {}.cast_const().cast(), stride: size_of::<{}>(), offsets: &[], words: &[], {texts} }}",
-                ident(n),
-                rust_type(t)
+            (None, Some((n, t))) if f.block.is_some() => (
+                format!("{}.cast_const().cast()", ident(n)),
+                format!(
+                    "pay_stride: size_of::<{}>(), pay_offsets: &[], pay_words: &[]",
+                    rust_type(t)
+                ),
             ),
             // No payload, or one of the numbers (types::NUMBERS).
             (None, None)
@@ -571,8 +577,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     ..
                 }),
                 None,
-            ) => format!(
-                "PayloadAt {{ input: std::ptr::null(), stride: 0, offsets: &[], words: &[], {texts} }}"
+            ) => (
+                "std::ptr::null()".to_string(),
+                "pay_stride: 0, pay_offsets: &[], pay_words: &[]".to_string(),
             ),
             _ => panic!(
                 "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
@@ -706,26 +713,43 @@ fn described_exports(funcs: &[types::Func]) -> String {
             "src/spec/table/: {}: more arguments than exec takes (MAX_NUMBERS)",
             f.name
         );
+        assert!(
+            outs.len() <= 4 && ios.len() <= 4 && texts.len() <= 4,
+            "src/spec/table/: {}: more outputs, numbers by pointer or texts than a Call holds (MAX_POINTERS)",
+            f.name
+        );
         let pointers = !outs.is_empty() || f.input().is_some() || f.texts().next().is_some();
         s.push_str(&format!(
             r#"
 {doc}{safety}
 #[unsafe(no_mangle)]
 pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
-    {boundary}!("{name}", {{
-        // SAFETY: the outputs are the caller's, as documented; none without pointers.
-        unsafe {{
-            exec(
-                &crate::spec::FUNCS[{i}],
-                FlibHndl,
-                &[{numbers}],
-                &[{out_ptrs}],
-                &[{offsets}],
-                {records},
-                {pay},
-            )
-        }}
-    }})
+    static SITE: Site = Site {{
+        func: {i},
+        batch: {batch},
+        numbers: {n_numbers},
+        outs: {n_outs},
+        io: {n_io},
+        texts: {n_texts},
+        offsets: &[{offsets}],
+        {records},
+        {pay},
+    }};
+    // SAFETY: the outputs are the caller's, as documented; none without pointers.
+    unsafe {{
+        run(
+            &SITE,
+            FlibHndl,
+            Call {{
+                numbers: [{numbers}],
+                outs: [{out_ptrs}],
+                asked: {asked},
+                io: [{ios}],
+                input: {input},
+                texts: [{texts}],
+            }},
+        )
+    }}
 }}
 {checks}"#,
             doc = wrap_doc(f.doc),
@@ -739,19 +763,22 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             // A read may join a batch (fwlib_batch_begin); a command not,
             // nor a range read (its next request needs the answer), nor a
             // paging read (several exchanges, as cnc_rdtool).
-            boundary = if outs.is_empty()
+            batch = !(outs.is_empty()
                 || f.block.is_some_and(|b| b.range.is_some())
-                || f.pages.is_some()
-            {
-                "ffi_boundary"
-            } else {
-                "ffi_read"
-            },
+                || f.pages.is_some()),
+            n_numbers = numbers.len(),
+            n_outs = out_ptrs.len(),
+            n_io = ios.len(),
+            n_texts = texts.len(),
+            asked = count.as_deref().unwrap_or("std::ptr::null_mut()"),
+            ios = padded(&ios, "std::ptr::null_mut()", 4),
+            input = input,
+            texts = padded(&texts, "std::ptr::null()", 4),
             name = f.name,
             params = params.iter().map(|p| format!(", {p}")).collect::<String>(),
             checks = checks.concat(),
-            numbers = numbers.join(", "),
-            out_ptrs = out_ptrs.join(", "),
+            numbers = padded(&numbers, "0", 8),
+            out_ptrs = padded(&out_ptrs, "std::ptr::null_mut()", 4),
             offsets = offsets.join(", "),
             records = records,
             pay = pay,
@@ -799,6 +826,15 @@ fn member_offset(ty: &str, m: &str, size: usize) -> String {
 }
 
 /// `text` as `///` lines of at most 76 columns.
+/// `items` then `fill` up to `len` of them, as a Rust array's elements
+/// (ffi::described's `Call`: MAX_NUMBERS, MAX_POINTERS).
+fn padded(items: &[String], fill: &str, len: usize) -> String {
+    assert!(items.len() <= len, "{items:?}: more than {len}");
+    let mut all = items.to_vec();
+    all.resize(len, fill.to_string());
+    all.join(", ")
+}
+
 fn wrap_doc(text: &str) -> String {
     let mut lines = vec![String::from("///")];
     for w in text.split_whitespace() {

@@ -3,7 +3,7 @@
 //! body one `exec` call) into `$OUT_DIR/described.rs`, included here; the
 //! header's declarations come from the same file (cbindgen reads it).
 
-use super::{ffi_boundary, ffi_read, nonnull, put};
+use super::{nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_FUNC, EW_LENGTH};
@@ -22,6 +22,97 @@ use std::os::raw::{c_char, c_long, c_short, c_ulong, c_ushort, c_void};
 
 /// Most number parameters a described function has (build.rs checks).
 pub(crate) const MAX_NUMBERS: usize = 8;
+/// Most outputs, numbers by pointer ([`Param::Io`](crate::spec::Param::Io))
+/// and text parameters a described function has (build.rs checks).
+pub(crate) const MAX_POINTERS: usize = 4;
+
+/// What a described export passes to [`exec`] that is not the caller's:
+/// build.rs writes one `static` per export. The caller's values go in a
+/// [`Call`], and every export runs through [`run`]: one body, and one
+/// closure for the C boundary and the batch, for all of them (a closure
+/// each, with its vtable, unwind tables and `call_once` shim, cost about
+/// 400 bytes a function in the installed library).
+pub(crate) struct Site {
+    /// Its entry: `crate::spec::FUNCS[func]`.
+    pub func: usize,
+    /// A read that may join a batch (`ffi_read!`), else `ffi_boundary!`'s.
+    pub batch: bool,
+    /// How many of [`Call`]'s numbers, outputs, numbers by pointer and
+    /// texts the function has.
+    pub numbers: u8,
+    pub outs: u8,
+    pub io: u8,
+    pub texts: u8,
+    /// [`exec`]'s `offsets`.
+    pub offsets: &'static [usize],
+    /// [`RecordsAt`]'s `base`, `stride`, `offsets` and `count`.
+    pub rec_base: usize,
+    pub rec_stride: usize,
+    pub rec_offsets: &'static [usize],
+    pub rec_count: Option<usize>,
+    /// [`PayloadAt`]'s `stride`, `offsets` and `words`.
+    pub pay_stride: usize,
+    pub pay_offsets: &'static [usize],
+    pub pay_words: &'static [usize],
+}
+
+/// The caller's values of one call of a described export (the first of
+/// each array that its [`Site`] says): kept by value, as a batched read
+/// keeps its arguments.
+#[derive(Clone, Copy)]
+pub(crate) struct Call {
+    pub numbers: [i32; MAX_NUMBERS],
+    pub outs: [*mut u8; MAX_POINTERS],
+    /// [`RecordsAt`]'s `asked`.
+    pub asked: *mut c_short,
+    pub io: [*mut c_short; MAX_POINTERS],
+    /// [`PayloadAt`]'s `input`.
+    pub input: *const u8,
+    pub texts: [*const c_char; MAX_POINTERS],
+}
+
+/// Runs described export `site` for handle `h` with the caller's values,
+/// at the C boundary (a read that may join a batch as `ffi_read!` runs
+/// it, another as `ffi_boundary!`).
+///
+/// # Safety
+/// As [`exec`]'s, for `site`'s offsets and `call`'s pointers.
+pub(crate) unsafe fn run(site: &'static Site, h: c_ushort, call: Call) -> c_short {
+    let f = &crate::spec::FUNCS[site.func];
+    let mut body = move || -> Result<()> {
+        let c = &call;
+        // SAFETY: as this function's caller promises.
+        unsafe {
+            exec(
+                f,
+                h,
+                &c.numbers[..usize::from(site.numbers)],
+                &c.outs[..usize::from(site.outs)],
+                site.offsets,
+                RecordsAt {
+                    base: site.rec_base,
+                    stride: site.rec_stride,
+                    offsets: site.rec_offsets,
+                    count: site.rec_count,
+                    asked: c.asked,
+                    io: &c.io[..usize::from(site.io)],
+                },
+                PayloadAt {
+                    input: c.input,
+                    stride: site.pay_stride,
+                    offsets: site.pay_offsets,
+                    words: site.pay_words,
+                    texts: &c.texts[..usize::from(site.texts)],
+                },
+            )
+        }
+    };
+    if site.batch && crate::client::batch::active() {
+        super::read_boundary(f.name, Box::new(body))
+    } else {
+        super::boundary(f.name, &mut body)
+    }
+}
 
 /// Where a described function's records go: the byte offset of the array
 /// in its output, the size of one element, and the offset of each record

@@ -68,7 +68,7 @@ static ALL: [Func; LEN] = {
     while i < AREAS.len() {
         let mut j = 0;
         while j < AREAS[i].len() {
-            all[n] = AREAS[i][j];
+            all[n] = kept(AREAS[i][j]);
             n += 1;
             j += 1;
         }
@@ -79,3 +79,23 @@ static ALL: [Func; LEN] = {
 
 /// Every described function, area by area.
 pub const FUNCS: &[Func] = &ALL;
+
+/// Entry `f` as the static table keeps it. The installed library (`make`'s
+/// build, `--cfg fwlib32_slim`: build.rs sets it when `FWLIB32_SLIM` is 1)
+/// keeps only what a call reads: its [`Func::doc`], [`Func::dims`] and
+/// [`Func::learnt`] (read by build.rs, the oracle and COMPATIBILITY.md,
+/// never by a call: tests/artifacts/size.rs checks) are left out, so their
+/// text and pointers are not in the library (about 30 KB). The entries
+/// above are constants: only what this static holds is in the binary.
+const fn kept(f: Func) -> Func {
+    if cfg!(fwlib32_slim) {
+        Func {
+            doc: "",
+            dims: &[],
+            learnt: None,
+            ..f
+        }
+    } else {
+        f
+    }
+}
