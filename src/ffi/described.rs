@@ -146,8 +146,13 @@ pub(crate) unsafe fn exec(
         let c = h.ctx().class;
         (c.is_16i(), matches!(c, CncClass::Series16 { kind: 2 }))
     };
-    // A request before the function's own, before the local checks.
-    if let Some(fr) = f.first.filter(|_| f.sends_first(args, class.0, class.1)) {
+    // A request before the function's own, before the local checks; its
+    // answer changes nothing, so a batch (one exchange a call) leaves it out.
+    let batching = h.batching.load(std::sync::atomic::Ordering::Acquire);
+    if let Some(fr) = f
+        .first
+        .filter(|_| !batching && f.sends_first(args, class.0, class.1))
+    {
         h.call(&Prelude { cmd: fr.cmd })?;
     }
     let option = h.pair.info.option & 1 == 1;

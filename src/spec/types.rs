@@ -176,8 +176,9 @@ pub enum End {
 /// parameter `arg` is in one of the `(lo, hi)` ranges ([`Func::first`]):
 /// its command with no words, its answer not read (an error answer
 /// neither ends the call nor changes what follows). It goes before the
-/// local checks. cnc_rdpmacror's `(1,0x00e7)` on the 30i class for
-/// #20000.. and #200000.. (why FANUC's library asks is not known).
+/// local checks; a batch (fwlib32_ext.h) leaves it out. cnc_rdpmacror's
+/// `(1,0x00e7)` on the 30i class for #20000.. and #200000.. (why FANUC's
+/// library asks is not known).
 #[derive(Debug, Clone, Copy)]
 pub struct First {
     pub classes: Classes,
