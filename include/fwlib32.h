@@ -4198,10 +4198,13 @@ short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
 short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
 
 /*
- Reads the P-code macro variables `s_no`..`e_no` (at most 179: the
- request stops at `s_no` + 178) into `buf->data`, 8 bytes each; `s_no`
- after `e_no` is EW_NUMBER before any traffic; every record answered must
- fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH,
+ Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8
+ bytes each: at most to the end of `s_no`'s range (#99, #499, #999,
+ #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) and at
+ most 179 (the request stops at `s_no` + 178); `s_no` after `e_no` is
+ EW_NUMBER before any traffic, and so is, on the 16i class, an `e_no`
+ past a `s_no` of #1000..#9999 or below 0; every record answered must fit
+ in `length` (12 + 8 · records, after the reply), else EW_LENGTH,
  nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
  `dummy` is left as it was.
 

@@ -8,7 +8,9 @@ use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_FUNC, EW_LENGTH};
 use crate::proto::described::block::{fits, write_values};
-use crate::proto::described::{Described, form, payload_numbers, payload_records, payload_values};
+use crate::proto::described::{
+    Described, Prelude, form, payload_numbers, payload_records, payload_values,
+};
 use crate::proto::open::CncClass;
 use crate::proto::packet::CLASS_PMC;
 use crate::proto::param::{Elem, ParamInfo};
@@ -231,21 +233,22 @@ pub(crate) unsafe fn exec(
             *at = v as i32;
         }
     }
-    for c in f.checks {
-        if c.arg == crate::spec::ORDERED {
-            let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
-            if at(c.lo) > at(c.hi) {
-                return Err(Error::local(c.code, "range asked backwards"));
-            }
-            continue;
-        }
-        let v = match c.arg {
-            crate::spec::OPTION => i32::from(h.pair.info.option & 1),
-            a => args[a as usize],
-        };
-        if v < c.lo || v > c.hi {
-            return Err(Error::local(c.code, "argument out of range"));
-        }
+    let class = {
+        let c = h.ctx().class;
+        (c.is_16i(), matches!(c, CncClass::Series16 { kind: 2 }))
+    };
+    // A request before the function's own, before the local checks; its
+    // answer changes nothing, so a batch (one exchange a call) leaves it out.
+    let batching = h.batching.load(std::sync::atomic::Ordering::Acquire);
+    if let Some(fr) = f
+        .first
+        .filter(|_| !batching && f.sends_first(args, class.0, class.1))
+    {
+        h.call(&Prelude { cmd: fr.cmd })?;
+    }
+    let option = h.pair.info.option & 1 == 1;
+    if let Some(code) = f.refusal(args, class.0, class.1, option) {
+        return Err(Error::local(code, "argument out of range"));
     }
     outs_set()?;
     // The text parameters' fields: each string up to its NUL, cut to its

@@ -125,9 +125,13 @@ pub enum Word {
     /// the converted value in the member (the caller sees it when `.1` is
     /// narrower than a `short`).
     Input(&'static str, Int),
-    /// Number parameter `.1`'s value, at most `.2` past number parameter
-    /// `.0`'s (`min(e, s + .2)`): the end of a range FANUC's library asks
-    /// for, cut to the most one answer carries (cnc_rdpmacror).
+    /// Number parameter `.1`'s value (`e`) cut to the end of the range
+    /// number parameter `.0` (`s`) starts in ([`Func::ends`], on the CNC's
+    /// class), then to `.2` past `s` when the range holds more than `.2 + 1`
+    /// numbers, counted as FANUC's library counts them (`e - s + 1` in 32
+    /// bits, wrapping: a range from a negative start to near `i32::MAX`
+    /// is not cut): the end of a range FANUC's library asks for, cut to the
+    /// most one answer carries (cnc_rdpmacror). [`Func::upto`] computes it.
     Upto(u8, u8, i32),
 }
 
@@ -143,6 +147,44 @@ impl Classes {
             Classes::Not15 => !s15,
         }
     }
+}
+
+/// Where a range of numbers ends, for a start in `lo..=hi` on `classes`
+/// ([`Func::ends`]): FANUC's library asks for no number past the end of
+/// the start's range ([`Word::Upto`]); a start in no listed range is not
+/// cut. P-code macro variables: #0..#99, #100..#499, #500..#999,
+/// #10000..#19999 ... ([`End`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Ends {
+    pub classes: Classes,
+    pub lo: i32,
+    pub hi: i32,
+    pub end: End,
+}
+
+/// The end of a range of numbers ([`Ends`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum End {
+    /// The range ends at this number: a further end is cut to it.
+    At(i32),
+    /// The start is read alone: an end past it is EW_NUMBER before any
+    /// traffic (the 16i class's #1000..#9999 and negative P-code numbers).
+    Alone,
+}
+
+/// A request sent before the function's own on `classes` when number
+/// parameter `arg` is in one of the `(lo, hi)` ranges ([`Func::first`]):
+/// its command with no words, its answer not read (an error answer
+/// neither ends the call nor changes what follows). It goes before the
+/// local checks; a batch (fwlib32_ext.h) leaves it out. cnc_rdpmacror's
+/// `(1,0x00e7)` on the 30i class for #20000.. and #200000.. (why FANUC's
+/// library asks is not known).
+#[derive(Debug, Clone, Copy)]
+pub struct First {
+    pub classes: Classes,
+    pub cmd: u16,
+    pub arg: u8,
+    pub ranges: &'static [(i32, i32)],
 }
 
 /// A figure FANUC's library learnt from the CNC at connect (the open
@@ -423,6 +465,11 @@ pub struct Func {
     pub lookups: &'static [Lookup],
     /// The request repeated over the caller's records ([`Pages`]).
     pub pages: Option<Pages>,
+    /// Where the ranges a [`Word::Upto`] asks for end, per class
+    /// ([`Ends`]; a start in none: not cut).
+    pub ends: &'static [Ends],
+    /// A request sent before the function's own ([`First`]), if any.
+    pub first: Option<First>,
 }
 
 impl Func {
@@ -499,6 +546,65 @@ impl Func {
         let (s, e) = self.span?;
         let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
         Some(usize::try_from(at(e) - at(s) + 1).unwrap_or(0))
+    }
+    /// The [`Ends`] entry of start `s` on a CNC of the 16i class (`s16`)
+    /// or Series 15 (`s15`), if any.
+    pub fn end_of(&self, s: i32, s16: bool, s15: bool) -> Option<End> {
+        self.ends
+            .iter()
+            .find(|x| x.classes.matches(s16, s15) && (x.lo..=x.hi).contains(&s))
+            .map(|x| x.end)
+    }
+    /// The word a [`Word::Upto`]`(s, e, n)` sends for start `s` and end
+    /// `e` on a CNC of the 16i class (`s16`) or Series 15 (`s15`).
+    pub fn upto(&self, s: i32, e: i32, n: i32, s16: bool, s15: bool) -> i32 {
+        let e = match self.end_of(s, s16, s15) {
+            Some(End::At(end)) => e.min(end),
+            _ => e,
+        };
+        // As FANUC's library counts: in 32 bits, wrapping.
+        if e.wrapping_sub(s).wrapping_add(1) > n.wrapping_add(1) {
+            s.wrapping_add(n)
+        } else {
+            e
+        }
+    }
+    /// Whether the call's number arguments `args` send [`Func::first`]'s
+    /// request on a CNC of the 16i class (`s16`) or Series 15 (`s15`).
+    pub fn sends_first(&self, args: &[i32], s16: bool, s15: bool) -> bool {
+        self.first.is_some_and(|f| {
+            let v = args.get(usize::from(f.arg)).copied().unwrap_or(0);
+            f.classes.matches(s16, s15) && f.ranges.iter().any(|r| (r.0..=r.1).contains(&v))
+        })
+    }
+    /// The EW_* code FANUC's library returns for the call's number
+    /// arguments `args` on a CNC of the 16i class (`s16`) or Series 15
+    /// (`s15`) without sending its own request, if any: its checks (the
+    /// FOCAS option's: `option` says whether the CNC has it) and the ends
+    /// of its ranges ([`End::Alone`]). They come after a
+    /// [`Func::first`] request.
+    pub fn refusal(&self, args: &[i32], s16: bool, s15: bool, option: bool) -> Option<i16> {
+        let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
+        for c in self.checks {
+            let bad = match c.arg {
+                ORDERED => at(c.lo) > at(c.hi),
+                OPTION => !(c.lo..=c.hi).contains(&i32::from(option)),
+                a => !(c.lo..=c.hi).contains(&at(i32::from(a))),
+            };
+            if bad {
+                return Some(c.code);
+            }
+        }
+        let upto = self.forms.iter().filter(|f| f.classes.matches(s16, s15));
+        for w in upto.flat_map(|f| f.words.iter()).take(5) {
+            if let Word::Upto(s, e, _) = *w {
+                let (s, e) = (at(i32::from(s)), at(i32::from(e)));
+                if self.end_of(s, s16, s15) == Some(End::Alone) && e > s {
+                    return Some(crate::ew::EW_NUMBER);
+                }
+            }
+        }
+        None
     }
     /// The output parameters ([`Param::Out`], [`Param::InOut`]), in
     /// order: (name, C type).

@@ -486,3 +486,55 @@ fn records_of_char_arrays_step_by_the_array() {
         .collect();
     assert_eq!(m, want);
 }
+
+/// The committed answer `oracle learn --check` compares a sweep with is the
+/// whole entry's on each class: cnc_rdpmacror's order check, the ends of
+/// its ranges (the 16i class reads #1000..#9999 and negative starts alone)
+/// and its first request on the 30i class (traffic before the checks);
+/// and its end word as FANUC's library sent it (tests/vectors).
+#[test]
+fn a_range_reads_ends_and_first_request_per_class() {
+    let f = fwlib32::spec::find("cnc_rdpmacror").unwrap();
+    const M: i32 = i32::MAX;
+    // (s, e) -> the end word sent on 30i, 16i, Series 15
+    for (s, e, ends) in [
+        (0, M, [99, 99, 99]),
+        (100, M, [278, 278, 199]),
+        (322, M, [499, 499, 500]),
+        (822, M, [999, 999, 999]),
+        (19822, M, [19999, 19999, 20000]),
+        (99822, M, [99999, 99999, 99999]),
+        (199822, M, [199999, 199999, 200000]),
+        (-1, M, [M, M, M]),
+        (-1, 4999, [177, 177, 177]),
+        (i32::MIN, M, [M, M, M]),
+        (i32::MIN, -2147478648, [-2147483470; 3]),
+    ] {
+        for (k, (s16, s15)) in [(false, false), (true, false), (true, true)]
+            .into_iter()
+            .enumerate()
+        {
+            assert_eq!(f.upto(s, e, 178, s16, s15), ends[k], "{s} {e} class {k}");
+        }
+    }
+    let answer = |a: &[i32], s16, s15| {
+        if f.sends_first(a, s16, s15) {
+            None
+        } else {
+            f.refusal(a, s16, s15, true)
+        }
+    };
+    let number = Some(fwlib32::ew::EW_NUMBER);
+    // backwards: refused, but on the 30i after its first request
+    assert_eq!(answer(&[10001, 10000, 52], false, false), number);
+    assert_eq!(answer(&[20000, 10004, 52], false, false), None);
+    assert_eq!(answer(&[20000, 10004, 52], true, false), number);
+    // read alone on the 16i class only
+    for (s, e) in [(1000, 1001), (9999, 10004), (-1, 0), (i32::MIN, M)] {
+        assert_eq!(answer(&[s, e, 52], true, false), number, "{s} {e}");
+        assert_eq!(answer(&[s, e, 52], true, true), None, "{s} {e}");
+        assert_eq!(answer(&[s, e, 52], false, false), None, "{s} {e}");
+    }
+    assert_eq!(answer(&[1000, 1000, 52], true, false), None);
+    assert_eq!(answer(&[-1, -1, 52], true, false), None);
+}

@@ -574,6 +574,9 @@ fn learn_class(
             seen.iter().map(|(k, v)| (conv(*k) as i64, *v)).collect();
         sweep.sort_by_key(|s| s.0);
         sweep.dedup_by_key(|s| s.0);
+        if std::env::var_os("ORACLE_LEARN_SWEEP").is_some() {
+            eprintln!("sweep arg {i}: {sweep:?}");
+        }
         observed[i] = sweep.clone();
         match learn_check(i, &sweep) {
             Ok(Some(c)) => checks.push(c),
@@ -1341,48 +1344,31 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                 t => conv_of(t),
             })
             .collect();
-        let pos = |i: i32| positions.get(i as usize).copied().unwrap_or(99);
-        let committed_checks: Vec<fwlib32::spec::Check> = f
-            .checks
-            .iter()
-            .filter(|c| c.arg != fwlib32::spec::OPTION)
-            .flat_map(|c| {
-                if c.arg == fwlib32::spec::ORDERED {
-                    // start after end: while one is swept the other is
-                    // at its plain value, so a range on each
-                    let (s, e) = (pos(c.lo), pos(c.hi));
-                    let at = |p: usize| {
-                        cl.base
-                            .get(p)
-                            .map_or(0, |v| convs.get(p).map_or(*v as i32, |c| c(*v)))
-                    };
-                    vec![
-                        fwlib32::spec::Check {
-                            arg: s as u8,
-                            lo: i32::MIN,
-                            hi: at(e),
-                            code: c.code,
-                        },
-                        fwlib32::spec::Check {
-                            arg: e as u8,
-                            lo: at(s),
-                            hi: i32::MAX,
-                            code: c.code,
-                        },
-                    ]
-                } else {
-                    vec![fwlib32::spec::Check {
-                        arg: pos(c.arg as i32) as u8,
-                        ..*c
-                    }]
-                }
-            })
-            .collect();
         // value by value as observed (a sweep that is not one range has
-        // no learnt check, yet each value's answer is known)
-        if let Err(e) = same_answers(&cl.observed, &committed_checks, &convs) {
+        // no learnt check, yet each value's answer is known): the committed
+        // entry's answer on this class for the plain call with that one
+        // argument changed (its checks, an order check included, the ends
+        // of its ranges; traffic where its first request goes)
+        let at = |p: usize, v: i64| convs.get(p).map_or(v as i32, |c| c(v));
+        let plain: Vec<i32> = positions
+            .iter()
+            .map(|&p| cl.base.get(p).map_or(0, |v| at(p, *v)))
+            .collect();
+        let answer = |p: usize, v: i64| {
+            let mut a = plain.clone();
+            if let Some(k) = positions.iter().position(|&q| q == p) {
+                a[k] = at(p, v);
+            }
+            if f.sends_first(&a, s16, s15) {
+                None
+            } else {
+                f.refusal(&a, s16, s15, true)
+            }
+        };
+        if let Err(e) = same_answers_by(&cl.observed, answer) {
             bad.push(format!("checks on {cname}: {e}"));
         }
+
         // The reply: what the committed entry moves for the same payload.
         let why = reply_not_comparable(f, cl);
         if let Some(w) = &why {

@@ -1347,18 +1347,33 @@ pub fn same_form(learnt: &DForm, committed: &(u16, u16, Vec<WordSrc>)) -> Result
 /// Do the committed checks answer each swept value as observed?
 /// `observed[i]`: argument i's values (as the C parameter holds them) and
 /// what each did (`Some(code)` without traffic, None a request sent).
+/// (`oracle learn --check` asks the whole entry, [`same_answers_by`].)
+#[allow(dead_code)] // tests/recorded/learn.rs
 pub fn same_answers(
     observed: &[Vec<(i64, Option<i16>)>],
     committed: &[spec::Check],
     conv: &[fn(i64) -> i32],
 ) -> Result<(), String> {
+    same_answers_by(observed, |i, v| {
+        let cv = conv.get(i).map_or(v as i32, |c| c(v));
+        committed
+            .iter()
+            .find(|c| c.arg as usize == i && (cv < c.lo || cv > c.hi))
+            .map(|c| c.code)
+    })
+}
+
+/// Does `answer(i, v)` (the committed entry's answer with argument i, by
+/// C position, at `v`: `Some(code)` without traffic, None a request sent)
+/// answer each swept value as observed? `observed[i]`: argument i's values
+/// and what each did.
+pub fn same_answers_by(
+    observed: &[Vec<(i64, Option<i16>)>],
+    answer: impl Fn(usize, i64) -> Option<i16>,
+) -> Result<(), String> {
     for (i, vals) in observed.iter().enumerate() {
         for (v, l) in vals {
-            let cv = conv.get(i).map_or(*v as i32, |c| c(*v));
-            let c = committed
-                .iter()
-                .find(|c| c.arg as usize == i && (cv < c.lo || cv > c.hi))
-                .map(|c| c.code);
+            let c = answer(i, *v);
             if *l != c {
                 return Err(format!("argument {i} = {v}: learnt {l:?}, committed {c:?}"));
             }

@@ -50,6 +50,23 @@ impl<'a> Described<'a> {
     }
 }
 
+/// The request a function sends before its own ([`crate::spec::First`]):
+/// its command alone, no words; its answer is not read (an error answer
+/// too, as FANUC's library ignores it).
+pub struct Prelude {
+    pub cmd: u16,
+}
+
+impl Call for Prelude {
+    type Output = ();
+    fn request(&self, _cx: &Ctx) -> Vec<ReqSub> {
+        vec![ReqSub::cnc(self.cmd, &[0; 5])]
+    }
+    fn decode(&self, _cx: &Ctx, _resp: &[RespSub]) -> Result<()> {
+        Ok(())
+    }
+}
+
 impl Call for Described<'_> {
     /// The reply's integers, in layout order (each field's `n` elements).
     type Output = Vec<i64>;
@@ -71,7 +88,11 @@ impl Call for Described<'_> {
                     Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
                     Word::Upto(s, e, n) => {
                         let at = |i: u8| self.args.get(usize::from(i)).copied().unwrap_or(0);
-                        at(e).min(at(s).saturating_add(n))
+                        let (s16, s15) = (
+                            cx.class.is_16i(),
+                            matches!(cx.class, CncClass::Series16 { kind: 2 }),
+                        );
+                        self.f.upto(at(s), at(e), n, s16, s15)
                     }
                     Word::Arg(_) | Word::Input(..) => self
                         .f

@@ -30,6 +30,8 @@ pub const COMMAND: Func = Func {
     block: None,
     lookups: &[],
     pages: None,
+    ends: &[],
+    first: None,
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -68,4 +70,6 @@ pub const SERVO_LONGS: Func = Func {
     block: None,
     lookups: &[],
     pages: None,
+    ends: &[],
+    first: None,
 };

@@ -6,6 +6,49 @@ use super::super::types::*;
 use super::base::COMMAND;
 use crate::ew::{EW_DATA, EW_NUMBER};
 
+/// Where the ranges of P-code macro variables end, as FANUC's library
+/// cuts a range read or write at the end of its start's range
+/// (cnc_rdpmacror; docs/protocol/macro.md): #0..#99, #100..#499,
+/// #500..#999, #10000..#19999, #20000..#99999, #100000..#199999 on the
+/// 30i and 16i classes (no end from #1000 to #9999 nor from #200000 on);
+/// #0..#99, #100..#199, #200..#999, #10000..#99999 on a Series 15. On the
+/// 16i class a start of #1000..#9999 or below 0 is read alone.
+pub const P_CODE_ENDS: &[Ends] = &[
+    ends(Classes::Not15, 0, 99, End::At(99)),
+    ends(Classes::Not15, 100, 499, End::At(499)),
+    ends(Classes::Not15, 500, 999, End::At(999)),
+    ends(Classes::Not15, 10000, 19999, End::At(19999)),
+    ends(Classes::Not15, 20000, 99999, End::At(99999)),
+    ends(Classes::Not15, 100000, 199999, End::At(199999)),
+    ends(Classes::S16Not15, 1000, 9999, End::Alone),
+    ends(Classes::S16Not15, i32::MIN, -1, End::Alone),
+    ends(Classes::S15, 0, 99, End::At(99)),
+    ends(Classes::S15, 100, 199, End::At(199)),
+    ends(Classes::S15, 200, 999, End::At(999)),
+    ends(Classes::S15, 10000, 99999, End::At(99999)),
+];
+
+const fn ends(classes: Classes, lo: i32, hi: i32, end: End) -> Ends {
+    Ends {
+        classes,
+        lo,
+        hi,
+        end,
+    }
+}
+
+/// cnc_rdpmacroinfo2's request, which FANUC's library sends first on the
+/// 30i class for a start of #20000..#85500 and #200000..#986000, its
+/// answer ignored (probed with `e_no` past the 179 a request carries; the
+/// bounds are settled to within 100 and 1000; a backwards range sends it
+/// for starts up to #4999999: the rule is not known; docs/protocol/macro.md).
+pub const P_CODE_INFO_FIRST: First = First {
+    classes: Classes::S30,
+    cmd: cmd::RDPMACROINFO2,
+    arg: 0,
+    ranges: &[(20000, 85500), (200000, 986000)],
+};
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdtofsinfo",
@@ -138,7 +181,7 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdpmacror",
         learnt: Some(&[]),
-        doc: "Reads the P-code macro variables `s_no`..`e_no` (at most 179: the request stops at `s_no` + 178) into `buf->data`, 8 bytes each; `s_no` after `e_no` is EW_NUMBER before any traffic; every record answered must fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH, nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1; `dummy` is left as it was.",
+        doc: "Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8 bytes each: at most to the end of `s_no`'s range (#99, #499, #999, #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) and at most 179 (the request stops at `s_no` + 178); `s_no` after `e_no` is EW_NUMBER before any traffic, and so is, on the 16i class, an `e_no` past a `s_no` of #1000..#9999 or below 0; every record answered must fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH, nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1; `dummy` is left as it was.",
         params: &[
             Param::Long("s_no"),
             Param::Long("e_no"),
@@ -160,8 +203,11 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: Some(2),
         }),
-        // Starts below #10000 (#1.. and #9999) are left out: FANUC's library
-        // cuts or refuses them by ranges not settled (docs/protocol/macro.md).
+        ends: P_CODE_ENDS,
+        first: Some(P_CODE_INFO_FIRST),
+        // The starts' cases are the oracle's combinations
+        // (tools/oracle/cases.rs); #100000.. on the 16i class are left out
+        // there: FANUC's library asks (1,0x012c) first (docs/protocol/macro.md).
         dims: &[
             "10000|10001|10099|10100",
             "10004|10000|9999|10099|10200|20000|1",
