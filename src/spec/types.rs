@@ -129,6 +129,9 @@ pub enum Word {
     /// `.0`'s (`min(e, s + .2)`): the end of a range FANUC's library asks
     /// for, cut to the most one answer carries (cnc_rdpmacror).
     Upto(u8, u8, i32),
+    /// `.1` when number parameter `.0` is not 0, else 0: a flag FANUC's
+    /// library sends for a nonzero argument (cnc_rdparam3's `type`).
+    Nonzero(u8, i32),
 }
 
 impl Classes {
@@ -289,6 +292,10 @@ pub struct Block {
     pub attributes: Option<Classes>,
     /// A range read instead of one item ([`Range`]).
     pub range: Option<Range>,
+    /// Diagnosis data: the answer's type word names the value's kind by
+    /// the diagnosis codes (0 byte, 1 word, 2 2-word, 3 and 4 bit, 5
+    /// real), not the parameter codes (cnc_diagnoss).
+    pub diag: bool,
 }
 
 /// A range read of typed parameter blocks ([`Block::range`]), as
@@ -486,7 +493,7 @@ impl Func {
             Word::Arg(i) => Some(usize::from(i)),
             Word::Asked => self.count(),
             Word::Upto(_, e, _) => Some(usize::from(e)),
-            Word::Const(_) => None,
+            Word::Const(_) | Word::Nonzero(..) => None,
             Word::Input(m, _) => self
                 .inputs()
                 .position(|(x, _)| x == m)

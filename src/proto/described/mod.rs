@@ -73,6 +73,10 @@ impl Call for Described<'_> {
                         let at = |i: u8| self.args.get(usize::from(i)).copied().unwrap_or(0);
                         at(e).min(at(s).saturating_add(n))
                     }
+                    Word::Nonzero(i, v) => {
+                        let set = self.args.get(usize::from(i)).is_some_and(|a| *a != 0);
+                        if set { v } else { 0 }
+                    }
                     Word::Arg(_) | Word::Input(..) => self
                         .f
                         .word_arg(f)
@@ -130,7 +134,7 @@ impl Call for Described<'_> {
                     Short::Request => crate::proto::packet::encode_request(&self.request(cx)),
                     Short::Zeros | Short::Error => Vec::new(),
                 };
-                return block::read(cx, resp, self.f.short, &request);
+                return block::read(cx, resp, self.f.short, &request, b.diag);
             }
             Some(_) => return sub(resp, 0).map(|_| Vec::new()),
             None => {}
