@@ -305,9 +305,12 @@ pub struct Block {
 /// axis; each answer block becomes a packed record in the output (i16
 /// number, i16 `(type << 8) | (axis & 0xff)`, the values, padded to a
 /// multiple of 4; src/proto/param/packed.rs), and the CNC is asked again
-/// from the last number answered + 1 until the end is reached (an
-/// EW_NUMBER answer after some records ends the read). Then `s` is the
-/// first number read, `e` the last and `length` the bytes used. A start
+/// from the last number answered + 1 (its whole 32-bit number, 0 before
+/// any) while that is not above the end (an EW_NUMBER answer after some
+/// records ends the read; a request answered without a block is sent once
+/// more, FANUC's library repeating it while the CNC answers so). Then `s`
+/// is the first number read (none: the output's first short, as FANUC's
+/// library), `e` the last and `length` the bytes used. A start
 /// above the end is EW_NUMBER before any traffic; a record that does not
 /// fit is EW_LENGTH (the records before it written, its 4-byte header too
 /// if that fits; the pointers keep their values).
