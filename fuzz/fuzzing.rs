@@ -394,18 +394,6 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pg::progdir(a[0], a[1], a[2]), cx, r),
     },
     Decoder {
-        names: &["cnc_rdparam", "cnc_rdparam3", "cnc_diagnoss", "cnc_rddiag"],
-        run: |cx, a, r| {
-            let c = pp::ReadOne {
-                table: table(a[0]),
-                number: a[1],
-                axis: a[2] as i16,
-                flag: a[3] & 0x10000,
-            };
-            go(c, cx, r)
-        },
-    },
-    Decoder {
         names: &["cnc_rdparainfo", "cnc_rddiaginfo"],
         run: |cx, a, r| {
             let c = pp::ReadInfo {
@@ -417,47 +405,12 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["cnc_wrparam"],
-        run: |cx, a, r| go(pp::ParamInfo { number: a[0] }, cx, r),
-    },
-    Decoder {
-        names: &["cnc_wrparam"],
-        run: |cx, a, r| {
-            let c = pp::WriteParam {
-                number: a[0],
-                axis: a[1] as i16,
-                ptype: a[2] as u16,
-                values: vec![pp::Num::int(a[3]); (a[3] & 3) as usize],
-            };
-            go(c, cx, r)
-        },
-    },
-    Decoder {
         names: &["cnc_rdparam_ext", "cnc_rddiag_ext"],
         run: |cx, a, r| {
             let numbers = (0..(a[1] & 15)).map(|k| a[2].wrapping_add(k)).collect();
             let c = pp::ReadExt {
                 table: table(a[0]),
                 numbers,
-            };
-            go(c, cx, r)
-        },
-    },
-    Decoder {
-        names: &["cnc_rdparanum"],
-        run: |cx, _, r| go(pp::rdnum(pp::Table::Param), cx, r),
-    },
-    Decoder {
-        names: &["cnc_rddiagnum"],
-        run: |cx, _, r| go(pp::rdnum(pp::Table::Diag), cx, r),
-    },
-    Decoder {
-        names: &["cnc_rdparar"],
-        run: |cx, a, r| {
-            let c = pp::ReadRange {
-                start: a[0],
-                end: a[1],
-                axis: a[2] as i16,
             };
             go(c, cx, r)
         },

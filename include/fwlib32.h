@@ -2821,7 +2821,7 @@ short cnc_deltlifegrp(unsigned short FlibHndl, short grpno);
  and bit 1, word 2, 2-word 4, real 8).
 
  # Safety
- `diag` must point to a writable ODBDGN.
+ `diag` must be NULL or point to a writable ODBDGN.
  */
 short cnc_diagnoss(unsigned short FlibHndl,
                    short number,
@@ -3403,7 +3403,7 @@ short cnc_rdcurrent(unsigned short FlibHndl,
  The same as cnc_diagnoss (an alias some programs use).
 
  # Safety
- `diag` must point to a writable ODBDGN.
+ `diag` must be NULL or point to a writable ODBDGN.
  */
 short cnc_rddiag(unsigned short FlibHndl,
                  short number,
@@ -3435,7 +3435,7 @@ short cnc_rddiaginfo(unsigned short FlibHndl,
  Reads the smallest and largest diagnosis numbers and how many there are.
 
  # Safety
- `diagnum` must point to a writable ODBDIAGNUM.
+ `diagnum` must be NULL or point to a writable ODBDIAGNUM.
  */
 short cnc_rddiagnum(unsigned short FlibHndl, struct ODBDIAGNUM *diagnum);
 
@@ -3945,7 +3945,7 @@ short cnc_rdparainfo3(unsigned short FlibHndl,
  is written). A Series 15 is asked with the 30i command (0x8d).
 
  # Safety
- `param` must point to a writable IODBPSD.
+ `param` must be NULL or point to a writable IODBPSD.
  */
 short cnc_rdparam(unsigned short FlibHndl,
                   short number,
@@ -3958,7 +3958,7 @@ short cnc_rdparam(unsigned short FlibHndl,
  the request's fifth word (what the CNC makes of it is not known).
 
  # Safety
- `param` must point to a writable IODBPSD.
+ `param` must be NULL or point to a writable IODBPSD.
  */
 short cnc_rdparam3(unsigned short FlibHndl,
                    short number,
@@ -3983,32 +3983,33 @@ short cnc_rdparam_ext(unsigned short FlibHndl, long *prm_no, short num, struct I
  Reads the smallest and largest parameter numbers and how many there are.
 
  # Safety
- `paranum` must point to a writable ODBPARANUM.
+ `paranum` must be NULL or point to a writable ODBPARANUM.
  */
 short cnc_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
 
 /*
  Reads the parameters `*s_number..=*e_number` (those the CNC has) into
  `param` as packed records: i16 number, i16 type word `(type << 8) |
- (axis & 0xff)`, then one value (axis -1: one per axis of the CNC) of
- the type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
+ (axis & 0xff)`, then one value (axis -1: one per axis of the CNC) of the
+ type's size (bit and byte 1, word 2, 2-word 4, real 8 = value and
  decimals), each record padded to a multiple of 4 (the padding bytes are
- not written). Asks the CNC again from the last number received + 1
- (the block's whole 32-bit number, wrapping) while that is not above
+ not written). Asks the CNC again from the last number received + 1 (the
+ block's whole 32-bit number, wrapping) while that is not above
  `*e_number`; an answer without a whole block asks again from there too
  (from 1 before any block), and ends in EW_PROTOCOL when that would
  repeat the request just answered (FANUC's library repeats it for ever).
- On success `*s_number` is the first
- number read, `*e_number` the last, and `*length` (in: the buffer's
- size) the bytes used. `*s_number > *e_number` is EW_NUMBER without
- traffic. A record that does not fit with its padding is EW_LENGTH: the
- records before it stay written, as does its 4-byte header if that fits,
- and the three pointers keep their values (all as FANUC's library, checked
- against it with our simulator).
+ On success `*s_number` is the first number read, `*e_number` the last,
+ and `*length` (in: the buffer's size) the bytes used. `*s_number >
+ *e_number` is EW_NUMBER without traffic. A record that does not fit with
+ its padding is EW_LENGTH: the records before it stay written, as does
+ its 4-byte header if that fits, and the three pointers keep their values
+ (all as FANUC's library, checked against it with our simulator).
 
  # Safety
- `s_number`, `e_number` and `length` must point to readable and writable
- shorts, `param` to `*length` writable bytes.
+ `param` must be NULL or point to `*length` writable bytes.
+ `s_number` must be NULL or point to a readable and writable short.
+ `e_number` must be NULL or point to a readable and writable short.
+ `length` must be NULL or point to a readable and writable short.
  */
 short cnc_rdparar(unsigned short FlibHndl,
                   short *s_number,
@@ -5332,20 +5333,22 @@ short cnc_wropnlgsname(unsigned short FlibHndl, struct IODBRDNA *buf);
 short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
 
 /*
- Writes a CNC parameter. The parameter's attributes are read first
- (one exchange); `length` must then equal 4 + the size of the values
- (one value, or one per axis of the path for `type` -1), else EW_LENGTH
- and nothing is written. A 30i type word other than 0..4 (none a CNC
- uses) is written back as it came with every value zero, whatever
- `length`, as FANUC's library does. The input is read with the l32 layout (values
- from offset 4). The write is sent once; the CNC decides whether it is
- allowed (parameter write enable, MDI mode ...). A 16i-class write
- carries one value slot per axis of the CNC's maximum (as FANUC's library);
- a Series 15 gets EW_LENGTH without traffic for every length, as from
- FANUC's library.
+ Writes a CNC parameter. The parameter's attributes are read first (one
+ exchange); `length` must then equal 4 + the size of the values (one
+ value, or one per axis of the CNC's maximum for a negative `type`: -1,
+ -2 and -32768 alike, as FANUC's library counts), else EW_LENGTH and
+ nothing is written. A 30i type word other than 0..4 (none a CNC uses) is
+ written back as it came with every value zero, whatever `length`, as
+ FANUC's library does. The input is read with the l32 layout (values from
+ offset 4). The write is sent once; the CNC decides whether it is allowed
+ (parameter write enable, MDI mode ...). A 16i-class write carries one
+ value slot per axis of the CNC's maximum (as FANUC's library). A Series
+ 15 is not asked for the attributes: as FANUC's library, its type and
+ axis come from `type`, `(type << 8) | (axis & 0xff)`, and the 30i write
+ block is sent (0x8e).
 
  # Safety
- `param` must point to a readable IODBPSD.
+ `param` must be NULL or point to a readable IODBPSD.
  */
 short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
 

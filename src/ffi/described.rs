@@ -524,8 +524,15 @@ unsafe fn block(
 }
 
 /// A range read of typed parameter blocks ([`crate::spec::Range`]) into
-/// `out` as packed records, asked again from the last number + 1 until the
-/// end; `ptrs` are the start, end and length shorts, written back at the end.
+/// `out` as packed records; `ptrs` are the start, end and length shorts,
+/// written back on success. FANUC's library's loop [fuzz, seed
+/// 0x21b01128]: `last` is the whole 32-bit number of the last block
+/// received (0 before any); after each answer it asks on from last + 1
+/// (wrapping) while that is not above the end, so an answer without a
+/// block restarts from 1, or repeats the request (FANUC's library while
+/// the CNC answers so; ours once, a second such answer in a row ending in
+/// EW_PROTOCOL). Read without a block, `*s_number` is the caller's
+/// buffer's first short, as FANUC's library takes it from there.
 ///
 /// # Safety
 /// `out` points to the `*length` writable bytes; `ptrs` are the caller's
@@ -541,9 +548,11 @@ unsafe fn range(
     let (s, e) = (args[usize::from(r.s)], args[usize::from(r.e)]);
     let room = unsafe { length.read_unaligned() }.max(0) as usize;
     let mut used = 0usize;
-    let mut first: Option<i32> = None;
-    let mut last: Option<i32> = None;
+    let mut first: Option<i16> = None;
+    let mut last: i32 = 0;
     let mut next = s;
+    // The request just answered without a block was sent again.
+    let mut again = false;
     loop {
         args[usize::from(r.s)] = next;
         let values = match h.call(&Described::new(f, args)) {
@@ -551,11 +560,11 @@ unsafe fn range(
             Err(Error::Cnc {
                 code: crate::ew::EW_NUMBER,
                 ..
-            }) if last.is_some() => break,
+            }) if first.is_some() => break,
             v => v?,
         };
-        for rec in records_of(&values) {
-            let (number, padded, bytes) = rec;
+        let recs = records_of(&values);
+        for (number, padded, bytes) in &recs {
             if used + padded > room {
                 // Its header, as FANUC's library writes it, if it fits.
                 if used + 4 <= room {
@@ -565,22 +574,39 @@ unsafe fn range(
             }
             unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), out.add(used), bytes.len()) };
             used += padded;
-            first.get_or_insert(number);
-            last = Some(number);
+            first.get_or_insert(*number as i16);
+            last = *number;
         }
-        let Some(l) = last else {
-            return Err(Error::short("parameter range answer without a block"));
-        };
-        // On from the last number + 1, even when the CNC went back.
-        if l >= e {
+        let asked = next;
+        next = last.wrapping_add(1);
+        // A request answered without a block, sent again: ours once (every
+        // record takes room in the buffer, so a CNC that goes back without
+        // end ends in EW_LENGTH).
+        if recs.is_empty() && next == asked {
+            if again {
+                return Err(Error::short(
+                    "parameter range answered twice without a block",
+                ));
+            }
+            again = true;
+            continue;
+        }
+        again = false;
+        if next > e {
             break;
         }
-        next = l + 1;
     }
+    // None read: the buffer's first short (FANUC's library's first record).
+    let first = first.unwrap_or_else(|| match room {
+        // SAFETY: `*length` bytes of `out` (the caller's contract).
+        2.. => unsafe { out.cast::<i16>().read_unaligned() },
+        _ => s as i16,
+    });
     unsafe {
-        put(s_number, first.unwrap_or(s) as i16);
+        put(s_number, first);
         put(length, used as c_short);
-        put(e_number, last.unwrap_or(e) as c_short);
+        // The last block's number (low 16 bits), 0 before any.
+        put(e_number, last as c_short);
     }
     Ok(())
 }

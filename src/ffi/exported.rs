@@ -53,10 +53,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_rdtofs", "cnc_wrtofs", "cnc_rdtofsr", "cnc_rdzofs", "cnc_wrzofs", "cnc_wrwkcdshft",
         "cnc_rdzofsr",
     ]),
-    ("param", &[
-        "cnc_rdparam", "cnc_rdparam3", "cnc_diagnoss", "cnc_rddiag", "cnc_wrparam",
-        "cnc_rdparanum", "cnc_rddiagnum", "cnc_rdparar", "cnc_wrparas",
-    ]),
+    ("param", &["cnc_wrparas"]),
     ("paraminfo", &[
         "cnc_rdparainfo", "cnc_rddiaginfo", "cnc_rdparam_ext", "cnc_rddiag_ext", "cnc_rdparainfo3",
     ]),

@@ -50,7 +50,11 @@ fn described_names<'a>(
                     && args.is_none_or(|a| {
                         form.words.iter().zip(a).all(|(w, v)| match w {
                             Word::Const(c) => c == v,
-                            Word::Arg(_) | Word::Asked | Word::Input(..) | Word::Upto(..) => true,
+                            Word::Arg(_)
+                            | Word::Asked
+                            | Word::Input(..)
+                            | Word::Upto(..)
+                            | Word::Nonzero(..) => true,
                         })
                     })
             })

@@ -456,6 +456,10 @@ mod tests {
                             crate::spec::Word::Upto(_, e, _) => {
                                 args.get(usize::from(e)).copied().unwrap_or(0)
                             }
+                            crate::spec::Word::Nonzero(a, v) => {
+                                let set = args.get(usize::from(a)).is_some_and(|x| *x != 0);
+                                if set { v } else { 0 }
+                            }
                             crate::spec::Word::Arg(_) | crate::spec::Word::Input(..) => func
                                 .word_arg(f)
                                 .and_then(|a| args.get(a).copied())

@@ -13,6 +13,7 @@ use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::RDSETNUM;
+use crate::proto::described::block;
 use crate::proto::param::{
     DIAGNOSS, DIAGNOSS16, DIAGTYPE, INFO3_FLAG, InfoEntry, InfoList, NumRange, PARAMTYPE, Param16,
     Param30, ParamType30, RDDIAGINFO, RDDIAGNUM, RDPARAINFO, RDPARAM, RDPARAM16, RDPARANUM, Table,
@@ -51,22 +52,29 @@ const fn err(code: i16) -> CncError {
 }
 
 pub(super) const ROUTES: &[Route] = &[
-    // [s, e, axis]: the 16i-class reads, one item (s == e) or a range.
-    Route::cnc(RDPARAM16, |m, q| {
-        m.param16(q.path, q.args[0], q.args[1], q.args[2] as i16)
+    // [s, e, axis]: the 16i-class reads, one item (s == e) or a range
+    // (cnc_rdparam, cnc_rdparar ...), through the block layout
+    // (src/proto/described/block.rs) the client decodes with.
+    Route::table(RDPARAM16, |m, q| {
+        let r = m.param16(q.path, q.words[0], q.words[1], q.words[2] as i16);
+        m.block_values(r)
     }),
-    Route::cnc(DIAGNOSS16, |m, q| {
+    Route::table(DIAGNOSS16, |m, q| {
         m.class16()?;
-        m.table_read16_range(q.path, Table::Diag, q.args[0], q.args[1], q.args[2] as i16)
+        let [s, e, axis, ..] = q.words;
+        let r = m.table_read16_range(q.path, Table::Diag, s, e, axis as i16);
+        m.block_values(r)
     }),
     // [s, e, axis]: the 30i-class reads (a Series 15's too).
-    Route::cnc(RDPARAM, |m, q| {
-        let a = q.args;
-        m.param_read30(q.path, Table::Param, a[0], a[1], a[2] as i16)
+    Route::table(RDPARAM, |m, q| {
+        let [s, e, axis, ..] = q.words;
+        let r = m.param_read30(q.path, Table::Param, s, e, axis as i16);
+        m.block_values(r)
     }),
-    Route::cnc(DIAGNOSS, |m, q| {
-        let a = q.args;
-        m.param_read30(q.path, Table::Diag, a[0], a[1], a[2] as i16)
+    Route::table(DIAGNOSS, |m, q| {
+        let [s, e, axis, ..] = q.words;
+        let r = m.param_read30(q.path, Table::Diag, s, e, axis as i16);
+        m.block_values(r)
     }),
     // With the list flag (args[4]): cnc_rdparainfo3, parameters from s on;
     // else the attribute record of one parameter.
@@ -81,26 +89,46 @@ pub(super) const ROUTES: &[Route] = &[
         m.class30()?;
         enc(m.table_type30(Table::Diag, q.args[0]))
     }),
-    Route::cnc(RDPARANUM, |m, _| enc(Ok(m.table_num(Table::Param)))),
+    Route::table(RDPARANUM, |m, _| Ok(num_values(m.table_num(Table::Param)))),
     Route::table(RDSETNUM, setting_num),
-    Route::cnc(RDDIAGNUM, |m, _| enc(Ok(m.table_num(Table::Diag)))),
+    Route::table(RDDIAGNUM, |m, _| Ok(num_values(m.table_num(Table::Diag)))),
     Route::cnc(RDPARAINFO, |m, q| {
         enc(m.table_info(Table::Param, q.args[0], q.args[1]))
     }),
     Route::cnc(RDDIAGINFO, |m, q| {
         enc(m.table_info(Table::Diag, q.args[0], q.args[1]))
     }),
-    Route::cnc(WRPARAM, |m, q| {
+    // cnc_wrparam's block (cnc_wrparas' blocks too), as sent.
+    Route::table(WRPARAM, |m, q| {
         m.class30()?;
-        m.table_write(q.path, false, &q.payload)
+        m.table_write(q.path, false, q.bytes).map(|_| Vec::new())
     }),
-    Route::cnc(WRPARAM16, |m, q| {
+    Route::table(WRPARAM16, |m, q| {
         m.class16()?;
-        m.table_write(q.path, true, &q.payload)
+        m.table_write(q.path, true, q.bytes).map(|_| Vec::new())
     }),
 ];
 
+/// A number range's answer as its layout's integers: each 32-bit word as
+/// its high and low halves.
+fn num_values(r: NumRange) -> Vec<i64> {
+    [r.min, r.max, r.total]
+        .iter()
+        .flat_map(|w| [i64::from(*w >> 16), i64::from(*w & 0xffff)])
+        .collect()
+}
+
 impl Machine {
+    /// A parameter block answer's bytes as the integers of its layout
+    /// ([`block::wire_values`], which the dispatch encodes back).
+    fn block_values(&self, r: Reply<Vec<u8>>) -> Reply<Vec<i64>> {
+        let bytes = r?;
+        if bytes.is_empty() {
+            return Ok(Vec::new());
+        }
+        block::wire_values(self.set_class(), false, &bytes).map_err(|_| CncError::FUNC)
+    }
+
     /// EW_FUNC unless the CNC is of the 16i class.
     fn class16(&self) -> Reply<()> {
         match self.profile.cnc.class {

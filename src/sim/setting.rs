@@ -24,7 +24,7 @@ pub(super) const ROUTES: &[Route] = &[
 
 impl Machine {
     /// The CNC's class, as the block form goes.
-    fn set_class(&self) -> CncClass {
+    pub(super) fn set_class(&self) -> CncClass {
         let c = &self.profile.cnc;
         match c.class {
             Class::Series30 => CncClass::Series30,

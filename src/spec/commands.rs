@@ -72,7 +72,7 @@ commands! {
     WRZOFS = CLASS_CNC 0x000c [cnc_wrzofs];
     RDZOFSINFO = CLASS_CNC 0x000d [cnc_rdzofsinfo];
     /// 16i class: read parameter (also the FOCAS option probe, parameter 9968).
-    RDPARAM16 = CLASS_CNC 0x000e [cnc_rdparam cnc_rdparar cnc_rdparam_ext];
+    RDPARAM16 = CLASS_CNC 0x000e [cnc_rdparam cnc_rdparam3 cnc_rdparar cnc_rdparam_ext];
     /// 16i: write one parameter, 40-byte payload.
     WRPARAM16 = CLASS_CNC 0x000f [cnc_wrparam cnc_wrparas];
     /// Both classes: parameter numbers and attributes [s, n] (cnc_rdparainfo;
@@ -239,7 +239,7 @@ commands! {
     /// Series 15 start-up companion of sysinfo.
     SYSINFO15 = CLASS_CNC 0x008c [cnc_allclibhndl3 cnc_rdposition];
     /// 30i class: read parameter (Series 15: option probe, parameter 9153).
-    RDPARAM = CLASS_CNC 0x008d [cnc_rdparam cnc_rdparam_ext cnc_rdparar cnc_allclibhndl3];
+    RDPARAM = CLASS_CNC 0x008d [cnc_rdparam cnc_rdparam3 cnc_rdparam_ext cnc_rdparar cnc_allclibhndl3];
     /// 30i: write one parameter, 264-byte payload.
     WRPARAM = CLASS_CNC 0x008e [cnc_wrparam cnc_wrparas];
     /// Series 15: parameter numbers and attributes [s, n] (cnc_rdparainfo).

@@ -133,6 +133,9 @@ pub enum Word {
     /// is not cut): the end of a range FANUC's library asks for, cut to the
     /// most one answer carries (cnc_rdpmacror). [`Func::upto`] computes it.
     Upto(u8, u8, i32),
+    /// `.1` when number parameter `.0` is not 0, else 0: a flag FANUC's
+    /// library sends for a nonzero argument (cnc_rdparam3's `type`).
+    Nonzero(u8, i32),
 }
 
 impl Classes {
@@ -331,6 +334,10 @@ pub struct Block {
     pub attributes: Option<Classes>,
     /// A range read instead of one item ([`Range`]).
     pub range: Option<Range>,
+    /// Diagnosis data: the answer's type word names the value's kind by
+    /// the diagnosis codes (0 byte, 1 word, 2 2-word, 3 and 4 bit, 5
+    /// real), not the parameter codes (cnc_diagnoss).
+    pub diag: bool,
 }
 
 /// A range read of typed parameter blocks ([`Block::range`]), as
@@ -340,9 +347,12 @@ pub struct Block {
 /// axis; each answer block becomes a packed record in the output (i16
 /// number, i16 `(type << 8) | (axis & 0xff)`, the values, padded to a
 /// multiple of 4; src/proto/param/packed.rs), and the CNC is asked again
-/// from the last number answered + 1 until the end is reached (an
-/// EW_NUMBER answer after some records ends the read). Then `s` is the
-/// first number read, `e` the last and `length` the bytes used. A start
+/// from the last number answered + 1 (its whole 32-bit number, 0 before
+/// any) while that is not above the end (an EW_NUMBER answer after some
+/// records ends the read; a request answered without a block is sent once
+/// more, FANUC's library repeating it while the CNC answers so). Then `s`
+/// is the first number read (none: the output's first short, as FANUC's
+/// library), `e` the last and `length` the bytes used. A start
 /// above the end is EW_NUMBER before any traffic; a record that does not
 /// fit is EW_LENGTH (the records before it written, its 4-byte header too
 /// if that fits; the pointers keep their values).
@@ -533,7 +543,7 @@ impl Func {
             Word::Arg(i) => Some(usize::from(i)),
             Word::Asked => self.count(),
             Word::Upto(_, e, _) => Some(usize::from(e)),
-            Word::Const(_) => None,
+            Word::Const(_) | Word::Nonzero(..) => None,
             Word::Input(m, _) => self
                 .inputs()
                 .position(|(x, _)| x == m)

@@ -605,19 +605,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library copies the whole reply into the caller's buffer, past the requested range and length; ours writes no more than they hold",
     },
     Deviation {
-        function: "cnc_rdsetr",
-        cases: &[
-            "rdsetr_*_shape_empty",
-            "rdsetr_*_shape_err2",
-            // oracle fuzz: answers cut, emptied or of error 2 (drawn): no
-            // whole block, or a cut one after whole ones.
-            "fuzz_rdsetr_*_request_s0L*",
-            "fuzz_rdsetr_*_request_s0Twwwww*",
-            "fuzz_rdsetr_*_answer_s0L_*",
-        ],
-        reason: "as cnc_rdparar (cnc_rdsetr is its range read on the setting commands): when an answer holds no whole block (error 2 is read as an answer) FANUC's library asks again from its last number received + 1, number 1 before any, so it restarts from the first setting (or repeats its request for ever), and when the start is the end it returns EW_OK with `*length` 0 and `*s_number` read from the caller's buffer (whatever it held); ours returns EW_PROTOCOL (-17), or the CNC's error 2, with the records before it written",
-    },
-    Deviation {
         function: "pmc_get_timer_type",
         cases: &[
             "pmc_get_timer_type_v3_shape_longer",

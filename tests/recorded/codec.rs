@@ -20,7 +20,7 @@ use fwlib32::proto::packet::{
     ReqSub, RespSub, decode_request, decode_response, encode_request, encode_response,
 };
 use fwlib32::proto::param::{
-    Param16, ParamInfo, ReadExt, ReadInfo, ReadOne, Table, WriteParam, ext_per_frame,
+    Param16, ParamInfo, ReadExt, ReadInfo, Table, WriteParam, ext_per_frame,
 };
 // --- program ---
 use fwlib32::proto::alarm::{self as pa, AlmMsg, OpMsg};
@@ -337,7 +337,8 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&WritePmc { range, data }, &cx, path)
                                 }
                                 // --- described as data (src/spec) ---
-                                w if described(w).is_some() => {
+                                // (cnc_wrparam: two exchanges, the attribute read first, below.)
+                                w if described(w).is_some() && w != "wrparam" => {
                                     let f = described(w).unwrap();
                                     let nums = c_args(f, &args);
                                     stamped(&Described::new(f, &nums), &cx, path)
@@ -375,19 +376,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                 ),
                                 "rdopmsg" => stamped(&pa::rdopmsg(num(&args[0]) as i16), &cx, path),
                                 // --- param ---
-                                w @ ("rdparam" | "diagnoss") if first => {
-                                    let r = ReadOne {
-                                        table: if w == "rdparam" {
-                                            Table::Param
-                                        } else {
-                                            Table::Diag
-                                        },
-                                        number: num(&args[0]) as i16 as i32,
-                                        axis: num(&args[1]) as i16,
-                                        flag: 0,
-                                    };
-                                    stamped(&r, &cx, path)
-                                }
                                 w @ ("rdparainfo" | "rddiaginfo") if first => {
                                     let r = ReadInfo {
                                         table: if w == "rdparainfo" {

@@ -434,21 +434,12 @@ static short w_callx(void) {
     WORD(rdalmhistry, return F(cnc_rdalmhistry)(H, N(1), N(2), N(3), B0))                         \
     WORD(rdalmhistry2, return F(cnc_rdalmhistry2)(H, N(1), N(2), N(3), B0))                       \
     /* param, diagnosis */                                                                        \
-    WORD(rdparam, return F(cnc_rdparam)(H, N(1), N(2), N(3), B0))                                 \
-    WORD(wrparam, { fill_hex(b0, 2); return F(cnc_wrparam)(H, N(1), B0); })                       \
     WORD(rdparam_ext, return F(cnc_rdparam_ext)(H, longs(2, N(1), 1), N(1), B0))                  \
     WORD(rdparam_ext32, return F(cnc_rdparam_ext)(H, longs(2, N(1), 0), N(1), B0))                \
     WORD(rddiag_ext32, return F(cnc_rddiag_ext)(H, longs(2, N(1), 0), N(1), B0))                  \
-    WORD(rdparar, { short s = N(1), e = N(3), l = N(4);                                           \
-                    short r = F(cnc_rdparar)(H, &s, N(2), &e, &l, B0);                            \
-                    field("s_number", s); field("e_number", e); field("length", l); return r; })  \
     WORD(wrparas, { fill_hex(b0, 2); return F(cnc_wrparas)(H, N(1), B0); })                       \
     WORD(rdparainfo, return F(cnc_rdparainfo)(H, N(1), N(2), B0))                                 \
-    WORD(rdparanum, return F(cnc_rdparanum)(H, B0))                                               \
-    WORD(diagnoss, return F(cnc_diagnoss)(H, N(1), N(2), N(3), B0))                               \
-    WORD(rddiag, return F(cnc_rddiag)(H, N(1), N(2), N(3), B0))                                   \
     WORD(rddiaginfo, return F(cnc_rddiaginfo)(H, N(1), N(2), B0))                                 \
-    WORD(rddiagnum, return F(cnc_rddiagnum)(H, B0))                                               \
     /* macros */                                                                                  \
     WORD(rdmacro, return F(cnc_rdmacro)(H, N(1), N(2), B0))                                       \
     WORD(wrmacro, return F(cnc_wrmacro)(H, N(1), N(2), N(3), N(4)))                               \
@@ -517,7 +508,6 @@ static short w_callx(void) {
     WORD(accdecdly, return F(cnc_accdecdly)(H, N(1), N(2), B0)) \
     WORD(srvdelay, return F(cnc_srvdelay)(H, N(1), N(2), B0)) \
     WORD(skip, return F(cnc_skip)(H, N(1), N(2), B0)) \
-    WORD(rdparam3, return F(cnc_rdparam3)(H, N(1), N(2), N(3), N(4), B0)) \
     WORD(rdparainfo3, { short n = N(2), pv = (short)0xCCCC, nx = (short)0xCCCC; short r = F(cnc_rdparainfo3)(H, N(1), &n, &pv, &nx, B0); field("num", n); field("prev", pv); field("next", nx); return r; }) \
     WORD(rdpitchr, return F(cnc_rdpitchr)(H, N(1), N(2), N(3), B0)) \
     /* machine data (issue 11) */                                                                \

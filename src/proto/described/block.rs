@@ -60,9 +60,15 @@ fn padded(cx: &Ctx, resp: &[RespSub], short: Short, request: &[u8]) -> Vec<RespS
 /// A read's answer as IODBPSD gets it: `datano` (the number's low 16
 /// bits), `type` (the answer's axis word; from a Series 15 `(type << 8) |
 /// (axis & 0xff)`, as FANUC's library writes it), then the values' bytes.
-pub fn read(cx: &Ctx, resp: &[RespSub], short: Short, request: &[u8]) -> Result<Vec<i64>> {
+pub fn read(
+    cx: &Ctx,
+    resp: &[RespSub],
+    short: Short,
+    request: &[u8],
+    diag: bool,
+) -> Result<Vec<i64>> {
     let one = ReadOne {
-        table: Table::Param,
+        table: if diag { Table::Diag } else { Table::Param },
         number: 0,
         axis: 0,
         flag: 0,

@@ -94,6 +94,10 @@ impl Call for Described<'_> {
                         );
                         self.f.upto(at(s), at(e), n, s16, s15)
                     }
+                    Word::Nonzero(i, v) => {
+                        let set = self.args.get(usize::from(i)).is_some_and(|a| *a != 0);
+                        if set { v } else { 0 }
+                    }
                     Word::Arg(_) | Word::Input(..) => self
                         .f
                         .word_arg(f)
@@ -151,7 +155,7 @@ impl Call for Described<'_> {
                     Short::Request => crate::proto::packet::encode_request(&self.request(cx)),
                     Short::Zeros | Short::Error => Vec::new(),
                 };
-                return block::read(cx, resp, self.f.short, &request);
+                return block::read(cx, resp, self.f.short, &request, b.diag);
             }
             Some(_) => return sub(resp, 0).map(|_| Vec::new()),
             None => {}

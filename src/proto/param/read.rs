@@ -1,13 +1,12 @@
-//! cnc_rdparam / cnc_diagnoss: one item read, its `length` check, and the
-//! number ranges (cnc_rdparanum / cnc_rddiagnum).
+//! One parameter or diagnosis item read (the typed parameter block of
+//! cnc_rdparam / cnc_diagnoss, src/proto/described/block.rs), and the
+//! number range answer (cnc_rdparanum / cnc_rddiagnum's, the simulator's).
 
 use super::data::{Elem, Num, Param16, Param30, num_of_value};
 use crate::error::{Error, Result};
-use crate::ew::EW_LENGTH;
 use crate::proto::call::{Call, Ctx, payload};
 use crate::proto::cmd::{
-    DIAGNOSS, DIAGNOSS16, RDDIAGINFO, RDDIAGINFO15, RDDIAGNUM, RDPARAINFO, RDPARAINFO15, RDPARAM,
-    RDPARAM16, RDPARANUM,
+    DIAGNOSS, DIAGNOSS16, RDDIAGINFO, RDDIAGINFO15, RDPARAINFO, RDPARAINFO15, RDPARAM, RDPARAM16,
 };
 use crate::proto::open::CncClass;
 use crate::proto::packet::{ReqSub, RespSub};
@@ -158,22 +157,6 @@ impl Call for ReadOne {
     }
 }
 
-/// The `length` cnc_rdparam / cnc_diagnoss need for one value of `elem`
-/// (FANUC checks it after the exchange).
-/// cnc_rdparam / cnc_diagnoss after the exchange (FANUC's library):
-/// `length` must hold 4 + the size of every value answered (one, or
-/// max-axes for an answer with a negative axis word).
-pub fn check_length(length: i16, item: &Item) -> Result<()> {
-    let need = 4 + item.elem.map_or(0, Elem::size) * item.values.len();
-    if (length as i32) < need as i32 {
-        return Err(Error::local(
-            EW_LENGTH,
-            "length below 4 + the size of the values answered",
-        ));
-    }
-    Ok(())
-}
-
 wire_struct! {
     /// Payload of 0x0011 / 0x0032: three i32, of which the library keeps the low 16 bits.
     pub struct NumRange {
@@ -181,14 +164,4 @@ wire_struct! {
         pub max: i32,
         pub total: i32,
     }
-}
-
-pub fn rdnum(table: Table) -> crate::proto::call::Single<NumRange> {
-    crate::proto::call::Single::new(ReqSub::cnc(
-        match table {
-            Table::Param => RDPARANUM,
-            Table::Diag => RDDIAGNUM,
-        },
-        &[],
-    ))
 }

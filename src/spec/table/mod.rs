@@ -21,6 +21,7 @@ mod names;
 pub mod offset;
 pub mod offset_life;
 pub mod operation;
+mod param;
 pub mod pmc;
 pub mod program;
 mod sampling;
@@ -46,6 +47,7 @@ const AREAS: &[&[Func]] = &[
     magazine::FUNCS,
     maintenance::FUNCS,
     names::FUNCS,
+    param::FUNCS,
     setting::FUNCS,
     sampling::FUNCS,
     status::FUNCS,

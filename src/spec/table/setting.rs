@@ -65,6 +65,7 @@ pub const FUNCS: &[Func] = &[
             length: 2,
             attributes: None,
             range: None,
+            diag: false,
         }),
         // An empty or short answer: FANUC's library reads the rest from
         // its buffer, which held the request (datano = the axis asked).
@@ -90,6 +91,7 @@ pub const FUNCS: &[Func] = &[
             length: 0,
             attributes: Some(Classes::Not15),
             range: None,
+            diag: false,
         }),
         ..COMMAND
     },
@@ -126,6 +128,7 @@ pub const FUNCS: &[Func] = &[
             length: 3,
             attributes: None,
             range: Some(Range { s: 0, e: 2 }),
+            diag: false,
         }),
         dims: &[
             "0|20|1|-1|99|100",
