@@ -1,0 +1,124 @@
+//! Paging functions (spec::Pages: cnc_rdmagazine, cnc_regmagazine,
+//! cnc_delmagazine, cnc_regtool ...): one request per slice of the caller's records.
+
+use super::at::{PayloadAt, RecordsAt, write_fields};
+use crate::client::handles;
+use crate::error::{Error, Result};
+use crate::ew::EW_FUNC;
+use crate::ffi::put;
+use crate::proto::described::{Described, payload_values};
+use crate::spec::Func;
+use std::os::raw::c_short;
+
+/// The exchanges of a paging function ([`Func::pages`]): each request
+/// carries the next slice of the caller's records (its count argument the
+/// slice's length, [`crate::spec::Pages::advance`]'s argument moved on by
+/// the records done), each answer's records go to the caller's array from
+/// the slice's first, and its first integer advances `done`; `*count`
+/// becomes `done` whatever the end.
+///
+/// # Safety
+/// As [`exec`]: `pay.input` holds `*count` records of `pay.stride` bytes,
+/// and the records' output (with [`Param::InOut`](crate::spec::Param::InOut)
+/// the same array) `*count` elements of `rec.stride` bytes.
+#[allow(clippy::too_many_arguments)]
+pub(super) unsafe fn pages(
+    f: &'static Func,
+    h: &handles::Handle,
+    args: &[i32],
+    outs: &[*mut u8],
+    offsets: &[usize],
+    rec: &RecordsAt<'_>,
+    pay: &PayloadAt<'_>,
+    count: Option<*mut c_short>,
+) -> Result<()> {
+    let (Some(pg), Some(per_page), Some(ci), Some(count)) =
+        (f.pages, f.per_page(), f.count(), count)
+    else {
+        return Err(Error::local(EW_FUNC, "a paging function without its count"));
+    };
+    // As FANUC's library counts: the records still to do, an `int` less
+    // each answer's count; the slice's start moves by the records written
+    // (a read) or sent (a write); the count becomes the caller's less what
+    // remains, cut to a `short`.
+    let total = args[ci];
+    // Records to do, the next slice's start, answers of none in a row.
+    let (mut left, mut next, mut empty) = (total, 0usize, 0);
+    let r = loop {
+        if left <= 0 {
+            break Ok(());
+        }
+        let k = (left as usize).min(per_page.max(1));
+        let start = next;
+        if start + k > usize::try_from(total).unwrap_or(0) {
+            // FANUC's library sends the records after the caller's array.
+            break Ok(());
+        }
+        let mut a = args.to_vec();
+        a[ci] = k as i32;
+        if let Some(i) = pg.advance {
+            let i = usize::from(i);
+            a[i] = a[i].wrapping_add(total.wrapping_sub(left));
+        }
+        let payload = match f.payload {
+            Some(_) if !pay.input.is_null() => {
+                // SAFETY: records start..start + k of the caller's `*count`.
+                let b = unsafe {
+                    std::slice::from_raw_parts(pay.input.add(start * pay.stride), k * pay.stride)
+                };
+                payload_values(f, b, pay.stride, pay.offsets, k)
+            }
+            _ => Vec::new(),
+        };
+        let call = Described {
+            f,
+            args: &a,
+            payload: &payload,
+            text: &[],
+            late: None,
+        };
+        let values = match h.call(&call) {
+            Ok(v) => v,
+            Err(e) => break Err(e),
+        };
+        // The answer's count (an i32).
+        let n = values.first().copied().unwrap_or(0) as i32;
+        let mut v = values.into_iter();
+        // SAFETY: the caller's contract (offsets and elements in the outputs).
+        unsafe { write_fields(f.reply, outs, |j| offsets[j], &mut v) };
+        let mut written = 0;
+        if let Some(r) = &f.records {
+            let per = r.values();
+            // At most the slice's (FANUC's library writes every record the
+            // count announces, past the caller's array).
+            while v.len() >= per && per > 0 && (written as i64) < i64::from(n).min(k as i64) {
+                let at = |j: usize| rec.base + (start + written) * rec.stride + rec.offsets[j];
+                // SAFETY: start + written < start + k <= `*count`.
+                unsafe { write_fields(r.fields, outs, at, &mut v) };
+                written += 1;
+            }
+        }
+        if !pg.from_done {
+            next += k;
+            left = left.wrapping_sub(n);
+            continue;
+        }
+        if n == 0 {
+            // FANUC's library asks the same again, for ever while the CNC
+            // answers none: ours once more.
+            empty += 1;
+            if empty == 2 {
+                break Ok(());
+            }
+            continue;
+        }
+        empty = 0;
+        next += written;
+        // Ours: more than asked counts as the records asked (FANUC's
+        // library counts them all).
+        left = left.wrapping_sub(n.min(k as i32));
+    };
+    // SAFETY: the caller's count, checked non-NULL.
+    unsafe { put(count, total.wrapping_sub(left) as c_short) };
+    r
+}
