@@ -17,7 +17,7 @@
 
 // The data build.rs writes code from: the function descriptions
 // (src/spec/, with the command registry they name), whose exported
-// functions src/ffi/described.rs includes; the result codes (src/ew.rs),
+// functions src/ffi/described/mod.rs includes; the result codes (src/ew.rs),
 // the header's `EW_*` block; the functions src/ffi/ exports by hand
 // (src/ffi/exported.rs), the export table.
 #[allow(dead_code)]
@@ -29,6 +29,9 @@ mod ew;
 #[allow(dead_code)]
 #[path = "src/ffi/exported.rs"]
 mod exported;
+#[allow(dead_code)]
+#[path = "src/spec/func.rs"]
+mod func;
 #[allow(dead_code)]
 #[path = "src/spec/reply.rs"]
 mod reply;

@@ -2,6 +2,7 @@
 //! entry each in [`FUNCS`]. Everything above reads it; it reads nothing.
 
 pub mod commands;
+mod func;
 pub mod reply;
 pub mod table;
 pub mod types;

@@ -6,18 +6,21 @@
 use super::call::{Call, Ctx, sub};
 use super::open::CncClass;
 use super::packet::{CLASS_PMC, ReqSub, RespSub};
-use super::value::{BASE_2, Value};
+use super::value::BASE_2;
 use super::wire::{DecodeError, Reader, Writer};
 use crate::error::Result;
-use crate::spec::{
-    Columns, Field, Func, Int, Key, LAST, NUMBERS, ONE, Overflow, Pick, SPAN, Short, TEXT, Word,
-    ZERO,
-};
+use crate::spec::{Columns, Field, Func, Int, Key, LAST, Overflow, Pick, Short, Word};
 
 pub mod block;
 mod encode;
+mod fields;
+mod payload;
 pub use encode::{args_of, encode, for_request, form};
 use encode::{binary_records, write_fields, write_fields_in};
+use fields::read_fields;
+pub use payload::{
+    asked, encode_in, payload_in, payload_numbers, payload_of, payload_records, payload_values,
+};
 
 /// One call of a described function with the caller's number arguments
 /// (then the input members its request words carry, [`Func::inputs`];
@@ -460,176 +463,4 @@ fn cast(v: i64, c: Int) -> i64 {
         Int::U32 => i64::from(v as u32),
         Int::BaseExp => i64::from(v as i16),
     }
-}
-
-/// The records asked for ([`Word::Asked`]): the count parameter's value,
-/// at most the records' `max`; None without a count parameter.
-pub fn asked(f: &Func, args: &[i32]) -> Option<usize> {
-    let n = *args.get(f.count()?)?;
-    let max = f.records.map_or(0, |r| r.max as usize);
-    Some(usize::try_from(n).unwrap_or(0).min(max))
-}
-
-/// The integers of a write's payload records (see [`Described`]): `n`
-/// records of `bytes` (the caller's array, native byte order), each
-/// `stride` bytes, field k's member at `offsets[k]` in it.
-pub fn payload_values(
-    f: &Func,
-    bytes: &[u8],
-    stride: usize,
-    offsets: &[usize],
-    n: usize,
-) -> Vec<i64> {
-    let Some(p) = &f.payload else {
-        return Vec::new();
-    };
-    let mut out = Vec::new();
-    for i in 0..n {
-        for (field, off) in p.fields.iter().zip(offsets) {
-            for e in 0..usize::from(field.n) {
-                let at = i * stride + off + e * field.c.size();
-                let b = |k: usize| bytes.get(at + k).copied().unwrap_or(0);
-                out.push(match (field.to, field.c) {
-                    (None, _) => 0,
-                    (_, Int::I8 | Int::IdChar) => i64::from(b(0) as i8),
-                    (_, Int::U8 | Int::Char) => i64::from(b(0)),
-                    (_, Int::I16) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
-                    (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
-                    (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
-                    (_, Int::U32) => i64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
-                    // A C member is never of this wire kind.
-                    (_, Int::BaseExp) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
-                });
-            }
-        }
-    }
-    out
-}
-
-/// The integers of the one payload record of a write whose payload is
-/// its numbers ([`NUMBERS`]): the number arguments no request word of the
-/// class's form carries, in order; None for another write.
-pub fn payload_numbers(f: &Func, class: CncClass, args: &[i32]) -> Option<Vec<i64>> {
-    if f.payload?.count != NUMBERS {
-        return None;
-    }
-    let carried: Vec<usize> = form(f, class)
-        .map(|fm| fm.words.iter().filter_map(|w| f.word_arg(w)).collect())
-        .unwrap_or_default();
-    Some(
-        (0..f.numbers().count())
-            .filter(|i| !carried.contains(i))
-            .map(|i| i64::from(args.get(i).copied().unwrap_or(0)))
-            .collect(),
-    )
-}
-
-/// How many payload records a write sends: its count argument ([`ONE`]:
-/// one), at most the payload's `max` (0 without a payload).
-pub fn payload_records(f: &Func, args: &[i32]) -> usize {
-    f.payload.map_or(0, |p| {
-        let n = match p.count {
-            ONE | NUMBERS | TEXT => 1,
-            SPAN => f
-                .span_len(args)
-                .map_or(0, |n| i32::try_from(n).unwrap_or(i32::MAX)),
-            c => args.get(usize::from(c)).copied().unwrap_or(0),
-        };
-        usize::try_from(n).unwrap_or(0).min(usize::from(p.max))
-    })
-}
-
-fn read_fields(
-    r: &mut Reader<'_>,
-    fields: &[Field],
-    args: &[i32],
-    out: &mut Vec<i64>,
-) -> Result<()> {
-    for field in fields {
-        if field.wire == Int::Char && field.arg.is_none() {
-            // A text: its characters up to the first NUL, zeros after.
-            let b = r.bytes(usize::from(field.n))?;
-            let end = b.iter().position(|&c| c == 0).unwrap_or(b.len());
-            out.extend((0..b.len()).map(|i| if i < end { i64::from(b[i]) } else { 0 }));
-            continue;
-        }
-        for _ in 0..field.n {
-            if let Some(a) = field.arg {
-                let v = match a {
-                    ZERO => 0,
-                    // Patched once the records are decoded (`decode`).
-                    LAST => args.first().copied().unwrap_or(0).wrapping_sub(1),
-                    a => args.get(usize::from(a)).copied().unwrap_or(0),
-                };
-                out.push(i64::from(v));
-                continue;
-            }
-            let v = match field.wire {
-                Int::I8 => i64::from(r.u8()? as i8),
-                Int::U8 | Int::Char => i64::from(r.u8()?),
-                // An unset character (0xff) reads as a NUL.
-                Int::IdChar => match r.u8()? {
-                    0xff => 0,
-                    c => i64::from(c as i8),
-                },
-                Int::I16 => i64::from(r.i16()?),
-                Int::U16 => i64::from(r.u16()?),
-                Int::I32 => i64::from(r.i32()?),
-                Int::U32 => i64::from(r.u32()?),
-                Int::BaseExp => {
-                    // The value read before it and this base and exponent
-                    // are one record: its decimal digits and places.
-                    let (base, exp) = (r.u16()?, r.i16()?);
-                    let value = out.pop().unwrap_or(0) as i32;
-                    let (d, p) = Value { value, base, exp }.to_decimal();
-                    out.push(i64::from(d));
-                    i64::from(p)
-                }
-            };
-            out.push(v);
-        }
-    }
-    Ok(())
-}
-
-/// [`payload_of`] on a CNC of this class: a typed parameter block's
-/// integers ([`block::wire_values`]; none when it does not decode).
-pub fn payload_in(f: &Func, class: CncClass, bytes: &[u8]) -> Vec<i64> {
-    match f.block {
-        Some(_) => block::wire_values(class, true, bytes).unwrap_or_default(),
-        None => payload_of(f, bytes),
-    }
-}
-
-/// [`encode`] on a CNC of this class: a typed parameter block's answer
-/// in the class's form ([`block::encode`]).
-pub fn encode_in(
-    f: &Func,
-    class: CncClass,
-    values: &[i64],
-) -> std::result::Result<Vec<u8>, DecodeError> {
-    match f.block {
-        Some(_) => block::encode(class, false, values),
-        None => encode(f, values),
-    }
-}
-
-/// The integers of a write's request payload (simulator side): whole
-/// records of [`Func::payload`]'s fields, as [`Described`] sent them
-/// (after the text parameters' fields); a trailing part record is left out.
-pub fn payload_of(f: &Func, bytes: &[u8]) -> Vec<i64> {
-    let Some(p) = &f.payload else {
-        return Vec::new();
-    };
-    let texts: usize = f.texts().map(|(_, n)| n).sum();
-    let bytes = bytes.get(texts..).unwrap_or_default();
-    let size: usize = p.fields.iter().map(Field::wire_len).sum();
-    let mut out = Vec::new();
-    let mut r = Reader::new(bytes);
-    for _ in 0..bytes.len() / size.max(1) {
-        if read_fields(&mut r, p.fields, &[], &mut out).is_err() {
-            break;
-        }
-    }
-    out
 }

@@ -1,5 +1,5 @@
 //! Every function described by data alone (src/spec/types.rs): one entry
-//! each. build.rs exports them (src/ffi/described.rs), the codec and the
+//! each. build.rs exports them (src/ffi/described/), the codec and the
 //! simulator read them through `crate::spec::FUNCS`, the oracle generates
 //! their probe words and cases from them.
 //!

@@ -1,0 +1,173 @@
+//! What a [`Func`] entry implies: its parameters by kind, its probe word,
+//! the counts and shares of its reply (read by every layer, as the entry).
+//!
+//! Compiled into build.rs too (`#[path]`), beside src/spec/types.rs.
+
+use super::types::*;
+
+impl Func {
+    /// The probe word the oracle and the vectors call this function by.
+    pub fn word(&self) -> &'static str {
+        self.name.strip_prefix("cnc_").unwrap_or(self.name)
+    }
+    /// The number parameters, in order (the values a caller passes).
+    pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.params.iter().filter_map(|p| match *p {
+            Param::Short(n)
+            | Param::Long(n)
+            | Param::ULong(n)
+            | Param::UShort(n)
+            | Param::ShortAs(n, _)
+            | Param::Count(n)
+            | Param::Io(n) => Some(n),
+            Param::Out(..) | Param::In(..) | Param::InOut(..) | Param::Text(..) => None,
+        })
+    }
+    /// The [`Param::Text`] parameters, in order: (name, field size).
+    pub fn texts(&self) -> impl Iterator<Item = (&'static str, usize)> + '_ {
+        self.params.iter().filter_map(|p| match *p {
+            Param::Text(n, size) => Some((n, usize::from(size))),
+            _ => None,
+        })
+    }
+    /// Whether the request carries a payload (text fields or records),
+    /// its length in the fifth word.
+    pub fn sends_payload(&self) -> bool {
+        self.payload.is_some() || self.texts().next().is_some()
+    }
+    /// The [`Param::Count`] parameter, if any: its index among the number
+    /// parameters.
+    pub fn count(&self) -> Option<usize> {
+        self.numbers()
+            .position(|n| self.params.contains(&Param::Count(n)))
+    }
+    /// The [`Param::In`] (or [`Param::InOut`]) parameter, if any: (name,
+    /// C type).
+    pub fn input(&self) -> Option<(&'static str, &'static str)> {
+        self.params.iter().find_map(|p| match *p {
+            Param::In(n, t) | Param::InOut(n, t) => Some((n, t)),
+            _ => None,
+        })
+    }
+    /// The input members sent as request words ([`Word::Input`]), each
+    /// once, in the order the forms name them: the call's arguments after
+    /// its number parameters.
+    pub fn inputs(&self) -> impl Iterator<Item = (&'static str, Int)> + '_ {
+        let all = self.forms.iter().flat_map(|f| f.words.iter());
+        all.clone().enumerate().filter_map(move |(k, w)| match *w {
+            Word::Input(m, c) if !all.clone().take(k).any(|x| *x == *w) => Some((m, c)),
+            _ => None,
+        })
+    }
+    /// The index in the call's arguments (numbers, then [`Func::inputs`])
+    /// a request word carries, if any: `Arg(i)` is `i`, `Asked` the count.
+    pub fn word_arg(&self, w: &Word) -> Option<usize> {
+        match *w {
+            Word::Arg(i) => Some(usize::from(i)),
+            Word::Asked => self.count(),
+            Word::Upto(_, e, _) => Some(usize::from(e)),
+            Word::Const(_) | Word::Nonzero(..) => None,
+            Word::Input(m, _) => self
+                .inputs()
+                .position(|(x, _)| x == m)
+                .map(|k| self.numbers().count() + k),
+        }
+    }
+    /// The records a range asks for ([`Func::span`]), from the call's
+    /// arguments (0 for one asked backwards); None without a range.
+    pub fn span_len(&self, args: &[i32]) -> Option<usize> {
+        let (s, e) = self.span?;
+        let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
+        Some(usize::try_from(at(e) - at(s) + 1).unwrap_or(0))
+    }
+    /// The [`Ends`] entry of start `s` on a CNC of the 16i class (`s16`)
+    /// or Series 15 (`s15`), if any.
+    pub fn end_of(&self, s: i32, s16: bool, s15: bool) -> Option<End> {
+        self.ends
+            .iter()
+            .find(|x| x.classes.matches(s16, s15) && (x.lo..=x.hi).contains(&s))
+            .map(|x| x.end)
+    }
+    /// The word a [`Word::Upto`]`(s, e, n)` sends for start `s` and end
+    /// `e` on a CNC of the 16i class (`s16`) or Series 15 (`s15`).
+    pub fn upto(&self, s: i32, e: i32, n: i32, s16: bool, s15: bool) -> i32 {
+        let e = match self.end_of(s, s16, s15) {
+            Some(End::At(end)) => e.min(end),
+            _ => e,
+        };
+        // As FANUC's library counts: in 32 bits, wrapping.
+        if e.wrapping_sub(s).wrapping_add(1) > n.wrapping_add(1) {
+            s.wrapping_add(n)
+        } else {
+            e
+        }
+    }
+    /// Whether the call's number arguments `args` send [`Func::first`]'s
+    /// request on a CNC of the 16i class (`s16`) or Series 15 (`s15`).
+    pub fn sends_first(&self, args: &[i32], s16: bool, s15: bool) -> bool {
+        self.first.is_some_and(|f| {
+            let v = args.get(usize::from(f.arg)).copied().unwrap_or(0);
+            f.classes.matches(s16, s15) && f.ranges.iter().any(|r| (r.0..=r.1).contains(&v))
+        })
+    }
+    /// The EW_* code FANUC's library returns for the call's number
+    /// arguments `args` on a CNC of the 16i class (`s16`) or Series 15
+    /// (`s15`) without sending its own request, if any: its checks (the
+    /// FOCAS option's: `option` says whether the CNC has it) and the ends
+    /// of its ranges ([`End::Alone`]). They come after a
+    /// [`Func::first`] request.
+    pub fn refusal(&self, args: &[i32], s16: bool, s15: bool, option: bool) -> Option<i16> {
+        let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
+        for c in self.checks {
+            let bad = match c.arg {
+                ORDERED => at(c.lo) > at(c.hi),
+                OPTION => !(c.lo..=c.hi).contains(&i32::from(option)),
+                a => !(c.lo..=c.hi).contains(&at(i32::from(a))),
+            };
+            if bad {
+                return Some(c.code);
+            }
+        }
+        let upto = self.forms.iter().filter(|f| f.classes.matches(s16, s15));
+        for w in upto.flat_map(|f| f.words.iter()).take(5) {
+            if let Word::Upto(s, e, _) = *w {
+                let (s, e) = (at(i32::from(s)), at(i32::from(e)));
+                if self.end_of(s, s16, s15) == Some(End::Alone) && e > s {
+                    return Some(crate::ew::EW_NUMBER);
+                }
+            }
+        }
+        None
+    }
+    /// The output parameters ([`Param::Out`], [`Param::InOut`]), in
+    /// order: (name, C type).
+    pub fn outs(&self) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
+        self.params.iter().filter_map(|p| match *p {
+            Param::Out(n, t) | Param::InOut(n, t) => Some((n, t)),
+            _ => None,
+        })
+    }
+    /// The records one request of a paging function ([`Func::pages`])
+    /// carries at most: its byte budget over one record's wire bytes (the
+    /// payload's, else the reply records'); None for another function.
+    pub fn per_page(&self) -> Option<usize> {
+        let pg = self.pages?;
+        let size: usize = match (&self.payload, &self.records) {
+            (Some(p), _) => p.fields.iter().map(Field::wire_len).sum(),
+            (None, Some(r)) => r.fields.iter().map(Field::wire_len).sum(),
+            (None, None) => 0,
+        };
+        Some(usize::from(pg.bytes) / size.max(1))
+    }
+    /// The reply payload's length in bytes (of every subpacket's answer).
+    pub fn reply_len(&self) -> usize {
+        self.reply.iter().map(Field::wire_len).sum()
+    }
+    /// The reply fields subpacket `i`'s answer carries (all of them
+    /// without [`Func::more`]).
+    pub fn share(&self, i: usize) -> &'static [Field] {
+        let n = self.reply.len() / (1 + self.more.len());
+        let at = (i * n).min(self.reply.len());
+        &self.reply[at..(at + n).min(self.reply.len())]
+    }
+}
