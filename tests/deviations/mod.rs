@@ -38,23 +38,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "an answer of several records (48 bytes or more; 16 bytes pass): FANUC's library returns EW_LENGTH after writing datano, mcr_val 0 and an uninitialised dec_val; ours reads the first record (the length FANUC's library refuses from is not settled, docs/protocol/macro.md)",
     },
     Deviation {
-        function: "cnc_rdpmacro",
-        cases: &[
-            "fuzz_rdpmacro_*_answer_s0L_*",
-            "fuzz_rdpmacro_*_answer_s0Tv*",
-            "fuzz_rdpmacro_*_answer_s0Tw*",
-        ],
-        reason: VALUE_RECORDS,
-    },
-    Deviation {
-        function: "cnc_rdpmacror",
-        cases: &[
-            "fuzz_rdpmacror_*_answer_s0L*",
-            "fuzz_rdpmacror_*_answer_s0T*",
-        ],
-        reason: VALUE_RECORDS,
-    },
-    Deviation {
         function: "cnc_rdposerrs2",
         cases: &[
             "rdposerrs2_v3_shape_empty",
@@ -1258,10 +1241,6 @@ const NAMES_PAST_PAYLOAD: &str = "FANUC's library reads the axis names a short 0
 
 /// cnc_rddynamic / cnc_rddynamic2.
 const FIELDS_PAST_PAYLOAD: &str = "FANUC's library reads the fields of a payload shorter than them from the next subpacket's header, and with a subpacket missing reads the later ones shifted, writing that into the caller's struct; ours returns EW_PROTOCOL (-17) and writes nothing";
-
-/// An answer with its second subpacket left out (the later ones shifted up).
-/// cnc_rdpmacro / cnc_rdpmacror: value records no CNC sends.
-const VALUE_RECORDS: &str = "value records a CNC does not send (a base other than 10 and 2, drawn from the layout or a changed word, or a binary exponent of -32768 or 32767): FANUC's library writes uninitialised bytes for the huge exponents (different on every run), copies a base-0 record as decimal (125 · 0^-0: 125, 0 places) and gives -429496729 for -2^31 · 65535^1 (a cut, not a rounded, 9-digit mantissa); ours converts every base but 10 as binary, as cnc_rdmacro converts it (Value::to_decimal); those rules of FANUC's P-code conversion are not settled";
 
 /// The paging reads' (spec `Pages`, from the first record not done).
 const PAGED_READ: &str = "an answer of more pots than asked makes FANUC's library write them all, past the caller's array, and count them in *num; ours writes and counts the pots it asked (an answer of none: FANUC's library asks the same again, for ever while the CNC answers none; ours once more, then ends with EW_OK; a negative count leaves more to do than the array holds: FANUC's library then sends pots read past the array, ours ends with EW_OK)";

@@ -1128,9 +1128,8 @@ proptest! {
     }
 
     /// A binary record converts to the same number in decimal: 9 significant
-    /// digits, rounded at 9 decimal places; a 10-digit value is rounded to 9
-    /// digits first, as FANUC's library does, which may put the result a
-    /// digit further off.
+    /// digits, computed as FANUC's library computes them in its own 32-bit
+    /// float (its truncated 10^-9 may take a unit or two off the 9th digit).
     #[test]
     fn base2_records_keep_their_value(value in any::<i32>(), exp in -40i16..40) {
         let (m, d) = Value { value, base: 2, exp }.to_decimal();
