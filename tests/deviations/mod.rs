@@ -534,7 +534,18 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdparam",
-        cases: &["rdparam_v2_shape_empty", "rdparam_v3_shape_empty"],
+        cases: &[
+            "rdparam_v2_shape_empty",
+            "rdparam_v3_shape_empty",
+            // Oracle fuzz (seed 0x20271129): an answer emptied.
+            "fuzz_rdparam_*_s0T#empty_*",
+        ],
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+    },
+    Deviation {
+        function: "cnc_diagnoss",
+        // Oracle fuzz (seed 0x20271129): an answer emptied, as cnc_rdparam's.
+        cases: &["fuzz_diagnoss_*_s0T#empty_*"],
         reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
