@@ -5,7 +5,7 @@ use super::call::{Call, Ctx, records, sub};
 pub use super::cmd::{RDMACRO, RDMACROR2, WRMACRO, WRMACROR2};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
-use super::value::{BASE_2, BASE_10, Value};
+use super::value::{BASE_2, BASE_10, Float, Value};
 use super::wire::Wire;
 use crate::error::Result;
 use crate::wire_struct;
@@ -119,72 +119,6 @@ pub fn to_base2(value: i32, dec: i16) -> (i32, i16) {
         }
     };
     (r.m, r.e as i16)
-}
-
-/// FANUC's library's binary float: m · 2^-e, m normalised (see [`to_base2`]).
-#[derive(Debug, Clone, Copy)]
-struct Float {
-    m: i32,
-    e: i32,
-}
-
-impl Float {
-    /// 10^9 = 2000000000 · 2^-1.
-    const E9: Float = Float {
-        m: 2_000_000_000,
-        e: 1,
-    };
-    /// 10^-9, truncated: 0x44b82fa0 · 2^-60.
-    const E_9: Float = Float {
-        m: 0x44b8_2fa0,
-        e: 60,
-    };
-
-    fn normalized(mut m: i32, mut e: i32) -> Float {
-        if m == 0 {
-            return Float { m: 0, e: 0 };
-        }
-        // Normalised when m + 2^30 overflows (m ≥ 2^30) or stays below 0
-        // (m < -2^30).
-        while m.wrapping_add(0x4000_0000) >= 0 {
-            m = m.wrapping_add(m);
-            e += 1;
-        }
-        Float { m, e }
-    }
-
-    fn from_int(v: i32) -> Float {
-        Float::normalized(v, 0)
-    }
-
-    /// The 64-bit product shifted up to 62 significant bits, its high word
-    /// (an arithmetic shift: floor).
-    fn mul(self, o: Float) -> Float {
-        let mut p = i64::from(self.m) * i64::from(o.m);
-        if p >> 32 == 0 {
-            return Float { m: 0, e: 0 };
-        }
-        let mut e = self.e + o.e - 32;
-        while p.wrapping_add(0x4000_0000_0000_0000) >= 0 {
-            p = p.wrapping_add(p);
-            e += 1;
-        }
-        Float::normalized((p >> 32) as i32, e)
-    }
-
-    /// (m << 31) / o.m when |m| < |o.m|, else (m << 30) / o.m, truncated
-    /// toward zero.
-    fn div(self, o: Float) -> Float {
-        if o.m == 0 {
-            return self;
-        }
-        let (num, e) = if self.m.unsigned_abs() < o.m.unsigned_abs() {
-            (i64::from(self.m) << 31, self.e - o.e + 31)
-        } else {
-            (i64::from(self.m) << 30, self.e - o.e + 30)
-        };
-        Float::normalized((num / i64::from(o.m)) as i32, e)
-    }
 }
 
 impl Call for WriteMacros {

@@ -45,10 +45,11 @@ pub(super) fn read_fields(
                 Int::U32 => i64::from(r.u32()?),
                 Int::BaseExp => {
                     // The value read before it and this base and exponent
-                    // are one record: its decimal digits and places.
+                    // are one record: its decimal digits and places (only
+                    // the P-code reads have one: their conversion).
                     let (base, exp) = (r.u16()?, r.i16()?);
                     let value = out.pop().unwrap_or(0) as i32;
-                    let (d, p) = Value { value, base, exp }.to_decimal();
+                    let (d, p) = Value { value, base, exp }.to_decimal_pcode();
                     out.push(i64::from(d));
                     i64::from(p)
                 }
