@@ -39,7 +39,7 @@ impl Value {
     ///   (0, exp) unchanged;
     /// * otherwise a 9-digit mantissa (10^8 ≤ |digits| < 10^9) computed as
     ///   FANUC's library computes it, in its own 32-bit float
-    ///   ([`Float::to_fix`]): close to x rounded to 9 digits, but its
+    ///   (`Float::to_fix`): close to x rounded to 9 digits, but its
     ///   truncated 10^-9 takes up to 2 units off big values (2147483647·2^11
     ///   → 439804650·10^4, exactly 439804650.9), and tiny ones are rounded
     ///   their own way (docs/protocol/macro.md).

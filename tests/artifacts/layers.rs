@@ -602,6 +602,39 @@ fn src() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src")
 }
 
+/// Issue 23: a file past a few hundred lines splits by meaning.
+const MOST_LINES: usize = 600;
+
+#[test]
+fn no_source_file_is_past_600_lines() {
+    fn walk(dir: &Path, out: &mut Vec<(usize, PathBuf)>) {
+        for e in std::fs::read_dir(dir).expect("read src") {
+            let p = e.expect("entry").path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                let text = std::fs::read_to_string(&p).expect("read a source file");
+                out.push((text.lines().count(), p));
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(&src(), &mut files);
+    assert!(files.len() > 100, "only {} files under src/", files.len());
+    files.sort();
+    let long: Vec<String> = files
+        .iter()
+        .filter(|(n, _)| *n > MOST_LINES)
+        .map(|(n, p)| format!("{} ({n} lines)", p.display()))
+        .collect();
+    println!("longest: {:?}", files.last());
+    assert!(
+        long.is_empty(),
+        "past {MOST_LINES} lines (split by meaning):\n  {}",
+        long.join("\n  ")
+    );
+}
+
 #[test]
 fn src_module_graph_has_no_cycle() {
     let c = Crate::load(&src());

@@ -10,8 +10,21 @@ fn root() -> PathBuf {
 
 fn exported() -> BTreeSet<String> {
     let mut out = BTreeSet::new();
-    for e in std::fs::read_dir(root().join("src/ffi")).unwrap() {
-        let text = std::fs::read_to_string(e.unwrap().path()).unwrap();
+    // src/ffi/*.rs and the area folders under it (src/ffi/described/).
+    let mut files: Vec<PathBuf> = Vec::new();
+    let mut dirs = vec![root().join("src/ffi")];
+    while let Some(d) = dirs.pop() {
+        for e in std::fs::read_dir(d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                dirs.push(p)
+            } else {
+                files.push(p)
+            }
+        }
+    }
+    for f in files {
+        let text = std::fs::read_to_string(f).unwrap();
         for line in text.lines() {
             if let Some(rest) = line.trim_start().split("extern \"C\" fn ").nth(1) {
                 out.insert(rest.split('(').next().unwrap().trim().to_string());
