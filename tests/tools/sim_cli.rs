@@ -138,8 +138,10 @@ fn a_large_fleet_runs_on_the_threads_of_one_runtime() {
 
 #[test]
 fn consecutive_ports_from_a_given_one() {
-    // A free port to start from; retried if one of the next ones is taken.
-    for _ in 0..5 {
+    // A free port to start from; retried if one of the next ones is taken
+    // (other tests of this crate bind hundreds of ephemeral ports at once).
+    let mut last = String::new();
+    for _ in 0..20 {
         let base = std::net::TcpListener::bind("127.0.0.1:0")
             .unwrap()
             .local_addr()
@@ -170,8 +172,9 @@ fn consecutive_ports_from_a_given_one() {
             assert_eq!(out, want);
             return;
         }
+        last = format!("from {base}: {out:?}");
     }
-    panic!("no three free consecutive ports found");
+    panic!("no three free consecutive ports found (last try {last})");
 }
 
 #[test]
