@@ -58,7 +58,9 @@ impl Call for TlGroup {
         }
         let full = ToolGroup::default().to_bytes().len();
         let g: ToolGroup = payload_padded(resp, 0, full)?;
-        Ok((g.grp != 0).then_some(g))
+        // Group 0 is the answer's low 16 bits, as FANUC's library reads
+        // it [fuzz, seed 0x202a1129 `s0L`: 0x80000000 is no group].
+        Ok((g.grp as i16 != 0).then_some(g))
     }
 }
 
