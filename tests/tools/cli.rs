@@ -351,7 +351,7 @@ fn watch() {
 
 #[test]
 fn watch_a_dead_cnc_keeps_trying() {
-    let port = dead_port();
+    let (_dead, port) = dead_port();
     let o = run_port(port, &["watch", "-n", "3", "-i", "0"]);
     assert_eq!(o.status.code(), Some(1), "the last sample failed");
     assert!(
@@ -440,7 +440,7 @@ impl Drop for SimProcess {
 #[test]
 fn watch_shows_an_outage_and_reconnects() {
     use std::io::BufRead;
-    let listen = format!("127.0.0.1:{}", dead_port());
+    let listen = format!("127.0.0.1:{}", free_port());
     let sim = SimProcess::start(&listen);
     // --count bounds the run should the test fail half-way.
     let mut watch = toolchain::target_command(env!("CARGO_BIN_EXE_focas"))
@@ -557,13 +557,14 @@ fn json_errors_are_json_on_stdout() {
     let m = e["message"].as_str().unwrap();
     assert!(m.contains("cnc_wrmacro: EW_NUMBER (3)"), "{m}");
     // --json after the subcommand, a dead CNC.
-    let e = json_fails(run_port(dead_port(), &["status", "--json"]), 1);
+    let (_dead, port) = dead_port();
+    let e = json_fails(run_port(port, &["status", "--json"]), 1);
     assert_eq!(
         (e["function"].as_str(), e["code"].as_i64(), e["ew"].as_str()),
         (Some("cnc_allclibhndl3"), Some(-16), Some("EW_SOCKET"))
     );
     // A bad command line: exit 2.
-    let e = json_fails(run_port(dead_port(), &["pmc", "Q1", "--json"]), 2);
+    let e = json_fails(run_port(port, &["pmc", "Q1", "--json"]), 2);
     assert_eq!(e["usage"], true);
     assert!(
         e["message"].as_str().unwrap().contains("no PMC area"),
@@ -661,16 +662,41 @@ fn an_ipv6_host_with_its_port() {
 }
 
 /// A port nobody listens on.
-fn dead_port() -> u16 {
+/// A port free when asked (for a simulator to listen on).
+fn free_port() -> u16 {
     let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     l.local_addr().unwrap().port()
+}
+
+/// A port no CNC answers on, held while the socket lives: bound but not
+/// listening, so a connection is refused and no other test of the run can
+/// take the port (a closed free port can be).
+fn dead_port() -> (std::os::fd::OwnedFd, u16) {
+    use std::os::fd::FromRawFd;
+    unsafe {
+        let fd = libc::socket(libc::AF_INET, libc::SOCK_STREAM, 0);
+        assert!(fd >= 0, "socket: {}", std::io::Error::last_os_error());
+        let fd = std::os::fd::OwnedFd::from_raw_fd(fd);
+        let mut sa: libc::sockaddr_in = std::mem::zeroed();
+        sa.sin_family = libc::AF_INET as libc::sa_family_t;
+        sa.sin_addr.s_addr = u32::from(std::net::Ipv4Addr::LOCALHOST).to_be();
+        let len = size_of::<libc::sockaddr_in>() as libc::socklen_t;
+        use std::os::fd::AsRawFd;
+        let r = libc::bind(fd.as_raw_fd(), (&raw const sa).cast(), len);
+        assert_eq!(r, 0, "bind: {}", std::io::Error::last_os_error());
+        let mut got: libc::sockaddr_in = std::mem::zeroed();
+        let mut n = len;
+        let r = libc::getsockname(fd.as_raw_fd(), (&raw mut got).cast(), &mut n);
+        assert_eq!(r, 0, "getsockname: {}", std::io::Error::last_os_error());
+        (fd, u16::from_be(got.sin_port))
+    }
 }
 
 #[test]
 fn arguments_are_checked_before_connecting() {
     // The CNC is down: a bad argument is still a usage error (exit 2)
     // that names the argument, not EW_SOCKET.
-    let port = dead_port();
+    let (_dead, port) = dead_port();
     for (args, says) in [
         (&["pmc", "D1OO"][..], "\"D1OO\" is not an address"),
         (&["pmc", "Q1"][..], "no PMC area \"Q\""),
@@ -702,7 +728,7 @@ fn arguments_are_checked_before_connecting() {
 /// by script(1)) the bar shows the rate and the time left.
 #[test]
 fn a_slow_transfer_with_rate_and_eta() {
-    let listen = format!("127.0.0.1:{}", dead_port());
+    let listen = format!("127.0.0.1:{}", free_port());
     let _sim = SimProcess::with(&listen, &["--delay-ms", "20"]);
     let dir = toolchain::scratch("cli-slow-transfer");
     let file = dir.join("O4343.nc");
