@@ -63,6 +63,31 @@ const fn num_range(min: &'static str, max: &'static str) -> [Field; 6] {
 const PARAM_FORMS: [Form; 2] = forms(cmd::RDPARAM16, cmd::RDPARAM, ONE);
 const DIAG_FORMS: [Form; 2] = forms(cmd::DIAGNOSS16, cmd::DIAGNOSS, ONE);
 
+/// A typed parameter block written (cnc_wrparam, cnc_wrset): its
+/// attributes read first, except on Series 15.
+pub(super) const WRITE: Block = Block {
+    length: 0,
+    attributes: Some(Classes::Not15),
+    range: None,
+    diag: false,
+};
+
+/// cnc_diagnoss, and cnc_rddiag its alias.
+const DIAGNOSS: Func = Func {
+    name: "cnc_diagnoss",
+    doc: "Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte and bit 1, word 2, 2-word 4, real 8).",
+    params: &[
+        READ_PARAMS[0],
+        READ_PARAMS[1],
+        READ_PARAMS[2],
+        Param::Out("diag", "ODBDGN"),
+    ],
+    forms: &DIAG_FORMS,
+    block: Some(read(true)),
+    short: Short::Error,
+    ..COMMAND
+};
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdparam",
@@ -104,45 +129,18 @@ pub const FUNCS: &[Func] = &[
         short: Short::Error,
         ..COMMAND
     },
-    Func {
-        name: "cnc_diagnoss",
-        doc: "Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte and bit 1, word 2, 2-word 4, real 8).",
-        params: &[
-            READ_PARAMS[0],
-            READ_PARAMS[1],
-            READ_PARAMS[2],
-            Param::Out("diag", "ODBDGN"),
-        ],
-        forms: &DIAG_FORMS,
-        block: Some(read(true)),
-        short: Short::Error,
-        ..COMMAND
-    },
+    DIAGNOSS,
     Func {
         name: "cnc_rddiag",
         doc: "The same as cnc_diagnoss (an alias some programs use).",
-        params: &[
-            READ_PARAMS[0],
-            READ_PARAMS[1],
-            READ_PARAMS[2],
-            Param::Out("diag", "ODBDGN"),
-        ],
-        forms: &DIAG_FORMS,
-        block: Some(read(true)),
-        short: Short::Error,
-        ..COMMAND
+        ..DIAGNOSS
     },
     Func {
         name: "cnc_wrparam",
         doc: "Writes a CNC parameter. The parameter's attributes are read first (one exchange); `length` must then equal 4 + the size of the values (one value, or one per axis of the CNC's maximum for a negative `type`: -1, -2 and -32768 alike, as FANUC's library counts), else EW_LENGTH and nothing is written. A 30i type word other than 0..4 (none a CNC uses) is written back as it came with every value zero, whatever `length`, as FANUC's library does. The input is read with the l32 layout (values from offset 4). The write is sent once; the CNC decides whether it is allowed (parameter write enable, MDI mode ...). A 16i-class write carries one value slot per axis of the CNC's maximum (as FANUC's library). A Series 15 is not asked for the attributes: as FANUC's library, its type and axis come from `type`, `(type << 8) | (axis & 0xff)`, and the 30i write block is sent (0x8e).",
         params: &[Param::Short("length"), Param::In("param", "IODBPSD")],
         forms: &forms(cmd::WRPARAM16, cmd::WRPARAM, &[]),
-        block: Some(Block {
-            length: 0,
-            attributes: Some(Classes::Not15),
-            range: None,
-            diag: false,
-        }),
+        block: Some(WRITE),
         ..COMMAND
     },
     Func {

@@ -87,12 +87,7 @@ pub const FUNCS: &[Func] = &[
             set_form(Classes::S15, cmd::WRSET, &[]),
             set_form(Classes::S16Not15, cmd::WRSET16, &[]),
         ],
-        block: Some(Block {
-            length: 0,
-            attributes: Some(Classes::Not15),
-            range: None,
-            diag: false,
-        }),
+        block: Some(super::param::WRITE),
         ..COMMAND
     },
     Func {
