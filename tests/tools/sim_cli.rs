@@ -153,7 +153,7 @@ fn consecutive_ports_from_a_given_one() {
         let listen = format!("127.0.0.1:{base}");
         let mut child = command(&["--fleet", "3", "--listen", &listen])
             .stdout(Stdio::piped())
-            .stderr(Stdio::null())
+            .stderr(Stdio::piped())
             .spawn()
             .unwrap();
         let mut out = String::new();
@@ -164,7 +164,11 @@ fn consecutive_ports_from_a_given_one() {
             out.push(line[0] as char);
         }
         let _ = child.kill();
-        let _ = child.wait();
+        let status = child.wait();
+        let mut err = String::new();
+        if let Some(mut e) = child.stderr.take() {
+            let _ = e.read_to_string(&mut err);
+        }
         if out.matches('\n').count() == 3 {
             let want: String = (0..3)
                 .map(|i| format!("listening on 127.0.0.1:{}\n", base + i))
@@ -172,7 +176,7 @@ fn consecutive_ports_from_a_given_one() {
             assert_eq!(out, want);
             return;
         }
-        last = format!("from {base}: {out:?}");
+        last = format!("from {base}: {out:?}, {status:?}, stderr {err:?}");
     }
     panic!("no three free consecutive ports found (last try {last})");
 }
