@@ -198,8 +198,11 @@ fn an_idle_path_has_an_empty_executing_text() {
 
 #[test]
 fn modal_codes_equal_the_profile() {
-    let (_s, h) = start("");
-    let prof = Profile::default();
+    // Idle: a running program sets the codes it reaches (M06, M03 ...),
+    // which state::modal_codes_follow_the_running_program checks.
+    let mut prof = Profile::default();
+    prof.paths[0].cycle.program = 0;
+    let (_s, h) = sim::start_alloc(prof.clone());
     let m = &prof.paths[0].modal;
     let aux = |t: i32| m.aux.get(&t.to_string()).copied().unwrap_or(0);
 
