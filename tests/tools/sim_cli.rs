@@ -138,16 +138,23 @@ fn a_large_fleet_runs_on_the_threads_of_one_runtime() {
 
 #[test]
 fn consecutive_ports_from_a_given_one() {
-    // A free port to start from; retried if one of the next ones is taken
-    // (other tests of this crate bind hundreds of ephemeral ports at once).
+    // Three consecutive ports below the kernel's ephemeral range, where the
+    // other tests' `127.0.0.1:0` listeners and outgoing connections (hundreds
+    // at once in a full run) never land; seen free just before the start,
+    // and retried if something else took one meanwhile.
+    let low = std::fs::read_to_string("/proc/sys/net/ipv4/ip_local_port_range")
+        .ok()
+        .and_then(|r| r.split_whitespace().next()?.parse::<u16>().ok())
+        .unwrap_or(32768);
+    let mut pick = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.subsec_nanos() ^ std::process::id());
     let mut last = String::new();
     for _ in 0..20 {
-        let base = std::net::TcpListener::bind("127.0.0.1:0")
-            .unwrap()
-            .local_addr()
-            .unwrap()
-            .port();
-        if base > 65000 {
+        pick = pick.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+        let base = 10_000 + (pick >> 8) as u16 % low.saturating_sub(10_003).max(1);
+        let free = (0..3).all(|i| std::net::TcpListener::bind(("127.0.0.1", base + i)).is_ok());
+        if !free {
             continue;
         }
         let listen = format!("127.0.0.1:{base}");
