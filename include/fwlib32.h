@@ -2641,12 +2641,19 @@ extern "C" {
 #endif // __cplusplus
 
 /*
- Reads the absolute position of one axis (`length` ≥ 8) or all axes (-1).
+ Reads the absolute position of axis `axis` (1..) or of every axis (-1):
+ an axis above 32 is EW_ATTRIB before any traffic; every whole value
+ record answered (at most 32) must fit in `length` (4 + 4 bytes a record,
+ read as an unsigned short), else EW_LENGTH, nothing written; then `type`
+ = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_absolute(unsigned short FlibHndl,
+                   short axis,
+                   short length,
+                   struct ODBAXIS *buf);
 
 /*
  Reads the absolute position (form 2: 0x26 code 0).
@@ -4210,7 +4217,7 @@ short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
  `dummy` is left as it was.
 
  # Safety
- `buf` must be NULL or point to a writable IODBPR.
+ `buf` must be NULL or point to `length` writable bytes (at most one IODBPR; nothing is written past `length` bytes).
  */
 short cnc_rdpmacror(unsigned short FlibHndl,
                     long s_no,
@@ -4827,9 +4834,12 @@ short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
  EW_LENGTH after the reply).
 
  # Safety
- `shift` must be NULL or point to a writable IODBWCSF.
+ `shift` must be NULL or point to `length` writable bytes (at most one IODBWCSF; nothing is written past `length` bytes).
  */
-short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct IODBWCSF *shift);
+short cnc_rdwkcdshft(unsigned short FlibHndl,
+                     short axis,
+                     short length,
+                     struct IODBWCSF *shift);
 
 /*
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
