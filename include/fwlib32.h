@@ -2656,12 +2656,20 @@ short cnc_absolute(unsigned short FlibHndl,
                    struct ODBAXIS *buf);
 
 /*
- Reads the absolute position (form 2: 0x26 code 0).
+ Reads the absolute position (second form) of axis `axis` (1..) or of
+ every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
+ whole value record answered (at most 32) must fit in `length` (4 + 4
+ bytes a record, read as an unsigned short), else EW_LENGTH, nothing
+ written; then `type` = `axis` and the records' values (an empty answer
+ writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_absolute2(unsigned short FlibHndl,
+                    short axis,
+                    short length,
+                    struct ODBAXIS *buf);
 
 /*
  Reads the acceleration/deceleration delay of one axis or all axes (-1).

@@ -166,22 +166,6 @@ fn axis_values(
     }
 }
 
-/// Reads the absolute position (form 2: 0x26 code 0).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_absolute2(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_absolute2", {
-        axis_values(pos::ABSOLUTE2, FlibHndl, axis, length, buf)
-    })
-}
-
 /// Reads the machine position.
 ///
 /// # Safety

@@ -55,9 +55,17 @@ macro_rules! doc {
     };
 }
 
-pub const FUNCS: &[Func] = &[Func {
-    name: "cnc_absolute",
-    doc: doc!("the absolute position"),
-    forms: &[every_class(cmd::POSITION, &[Word::Const(4), Word::Arg(0)])],
-    ..AXIS_VALUES
-}];
+pub const FUNCS: &[Func] = &[
+    Func {
+        name: "cnc_absolute",
+        doc: doc!("the absolute position"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(4), Word::Arg(0)])],
+        ..AXIS_VALUES
+    },
+    Func {
+        name: "cnc_absolute2",
+        doc: doc!("the absolute position (second form)"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(0), Word::Arg(0)])],
+        ..AXIS_VALUES
+    },
+];
