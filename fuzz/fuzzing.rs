@@ -169,7 +169,6 @@ const HAND: &[Decoder] = &[
     },
     Decoder {
         names: &[
-            "cnc_machine",
             "cnc_relative",
             "cnc_relative2",
             "cnc_distance",

@@ -3035,12 +3035,19 @@ short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
 short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
 
 /*
- Reads the machine position.
+ Reads the machine position of axis `axis` (1..) or of every axis (-1):
+ an axis above 32 is EW_ATTRIB before any traffic; every whole value
+ record answered (at most 32) must fit in `length` (4 + 4 bytes a record,
+ read as an unsigned short), else EW_LENGTH, nothing written; then `type`
+ = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_machine(unsigned short FlibHndl,
+                  short axis,
+                  short length,
+                  struct ODBAXIS *buf);
 
 /*
  Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,

@@ -166,22 +166,6 @@ fn axis_values(
     }
 }
 
-/// Reads the machine position.
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_machine(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_machine", {
-        axis_values(pos::MACHINE, FlibHndl, axis, length, buf)
-    })
-}
-
 /// Reads the relative position.
 ///
 /// # Safety

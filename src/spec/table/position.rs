@@ -68,4 +68,10 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::POSITION, &[Word::Const(0), Word::Arg(0)])],
         ..AXIS_VALUES
     },
+    Func {
+        name: "cnc_machine",
+        doc: doc!("the machine position"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(1), Word::Arg(0)])],
+        ..AXIS_VALUES
+    },
 ];
