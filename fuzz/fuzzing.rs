@@ -169,7 +169,6 @@ const HAND: &[Decoder] = &[
     },
     Decoder {
         names: &[
-            "cnc_relative",
             "cnc_relative2",
             "cnc_distance",
             "cnc_skip",

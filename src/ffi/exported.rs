@@ -62,7 +62,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "pmc_get_pmc_unit_types", "pmc_rdalmmsg",
     ]),
     ("position", &[
-        "cnc_rdposition", "cnc_relative",
+        "cnc_rdposition",
         "cnc_relative2", "cnc_distance", "cnc_skip", "cnc_srvdelay", "cnc_accdecdly",
         "cnc_getfigure",
     ]),

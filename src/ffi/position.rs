@@ -166,22 +166,6 @@ fn axis_values(
     }
 }
 
-/// Reads the relative position.
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_relative(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_relative", {
-        axis_values(pos::RELATIVE, FlibHndl, axis, length, buf)
-    })
-}
-
 /// Reads the relative position (form 2: 0x26 code 2).
 ///
 /// # Safety

@@ -1255,7 +1255,6 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
         limit: 8,
     };
     let code = |w: &str| match w {
-        "relative" => pos::RELATIVE,
         "relative2" => pos::RELATIVE2,
         _ => pos::DISTANCE,
     };
@@ -1303,7 +1302,7 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
             t => axes(vec![t as i32]),
         }
         .request(&cx),
-        "relative" | "relative2" | "distance" => position(code(w), n(0) as i16).request(&cx),
+        "relative2" | "distance" => position(code(w), n(0) as i16).request(&cx),
         "getfigure" => getfigure(n(0) as i16).request(&cx),
         _ => return None,
     })

@@ -74,4 +74,10 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::POSITION, &[Word::Const(1), Word::Arg(0)])],
         ..AXIS_VALUES
     },
+    Func {
+        name: "cnc_relative",
+        doc: doc!("the relative position"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(6), Word::Arg(0)])],
+        ..AXIS_VALUES
+    },
 ];
