@@ -166,22 +166,6 @@ fn axis_values(
     }
 }
 
-/// Reads the relative position (form 2: 0x26 code 2).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_relative2(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_relative2", {
-        axis_values(pos::RELATIVE2, FlibHndl, axis, length, buf)
-    })
-}
-
 /// Reads the distance to go.
 ///
 /// # Safety

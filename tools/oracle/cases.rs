@@ -93,6 +93,7 @@ fn copy(x: &Word) -> Word {
 /// Explicit combinations of described functions' arguments (run on every
 /// class, Series 15 included, where the dimensions' variations are not).
 const COMBOS: &[(&str, &[&str])] = &[
+    ("relative2", &["-1 132", "-1 16"]),
     ("relative", &["-1 132", "-1 16"]),
     ("machine", &["-1 132", "-1 16"]),
     ("absolute2", &["-1 132", "-1 16"]),
@@ -253,7 +254,6 @@ const WORDS: &[Word] = &[
         ],
     ),
     w("rdposition", &["-1|0|1|2|3|4|5|-2", "4|1|0|2|3|32|33|-1"]),
-    wc("relative2", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     w("getfigure", &["0|1|-1|2|3"]),
     // Program.

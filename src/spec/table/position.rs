@@ -80,4 +80,10 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::POSITION, &[Word::Const(6), Word::Arg(0)])],
         ..AXIS_VALUES
     },
+    Func {
+        name: "cnc_relative2",
+        doc: doc!("the relative position (second form)"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(2), Word::Arg(0)])],
+        ..AXIS_VALUES
+    },
 ];
