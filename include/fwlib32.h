@@ -2845,12 +2845,19 @@ short cnc_diagnoss(unsigned short FlibHndl,
                    struct ODBDGN *diag);
 
 /*
- Reads the distance to go.
+ Reads the distance to go of axis `axis` (1..) or of every axis (-1): an
+ axis above 32 is EW_ATTRIB before any traffic; every whole value record
+ answered (at most 32) must fit in `length` (4 + 4 bytes a record, read
+ as an unsigned short), else EW_LENGTH, nothing written; then `type` =
+ `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_distance(unsigned short FlibHndl,
+                   short axis,
+                   short length,
+                   struct ODBAXIS *buf);
 
 /*
  Sends `number` (0..40959) bytes of the DNC program (the first call

@@ -166,22 +166,6 @@ fn axis_values(
     }
 }
 
-/// Reads the distance to go.
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_distance(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_distance", {
-        axis_values(pos::DISTANCE, FlibHndl, axis, length, buf)
-    })
-}
-
 /// Reads the skip position of one axis or all axes (-1).
 ///
 /// # Safety

@@ -1298,7 +1298,6 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
             t => axes(vec![t as i32]),
         }
         .request(&cx),
-        "distance" => position(pos::DISTANCE, n(0) as i16).request(&cx),
         "getfigure" => getfigure(n(0) as i16).request(&cx),
         _ => return None,
     })

@@ -64,9 +64,6 @@ const fn wc(
     }
 }
 
-const AXIS: &str = "1|-1|2|3|0|4|32|33|-2";
-const AXLEN: &str = "8|4|7|12|0|-1|132|136";
-
 /// Every word the generator covers: the functions described as data
 /// (src/spec/table/, their dimensions there) and the words below.
 pub fn words() -> Vec<Word> {
@@ -93,6 +90,7 @@ fn copy(x: &Word) -> Word {
 /// Explicit combinations of described functions' arguments (run on every
 /// class, Series 15 included, where the dimensions' variations are not).
 const COMBOS: &[(&str, &[&str])] = &[
+    ("distance", &["-1 132", "-1 16"]),
     ("relative2", &["-1 132", "-1 16"]),
     ("relative", &["-1 132", "-1 16"]),
     ("machine", &["-1 132", "-1 16"]),
@@ -254,7 +252,6 @@ const WORDS: &[Word] = &[
         ],
     ),
     w("rdposition", &["-1|0|1|2|3|4|5|-2", "4|1|0|2|3|32|33|-1"]),
-    wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     w("getfigure", &["0|1|-1|2|3"]),
     // Program.
     w("rdexecprog", &["256|0|1|10|100|1024|4096|65535"]),

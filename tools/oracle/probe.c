@@ -373,7 +373,6 @@ static short w_callx(void) {
                        for (int k = 0; k < n && k < MAXARG; k++) t[k] = (short)N(3 + k);          \
                        SHORT_IO(len, 3 + n, F(cnc_rdaxisdata)(H, N(1), t, n, &len, B0)); })       \
     WORD(rdposition, SHORT_IO(num, 2, F(cnc_rdposition)(H, N(1), &num, B0)))                      \
-    WORD(distance, return F(cnc_distance)(H, N(1), N(2), B0))                                     \
     WORD(getfigure, { static short v; v = (short)0xCCCC; io_note("valid_fig", &v, 1);            \
                       short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);                            \
                       field("valid_fig", v); return r; })                                         \

@@ -86,4 +86,10 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::POSITION, &[Word::Const(2), Word::Arg(0)])],
         ..AXIS_VALUES
     },
+    Func {
+        name: "cnc_distance",
+        doc: doc!("the distance to go"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(7), Word::Arg(0)])],
+        ..AXIS_VALUES
+    },
 ];
