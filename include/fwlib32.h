@@ -5068,12 +5068,20 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
 
 /*
- Reads the skip position of one axis or all axes (-1).
+ Reads the skip position (where the skip signal came) of axis `axis`
+ (1..) or of every axis (-1): an axis above 32 is EW_ATTRIB before any
+ traffic; every whole value record answered (at most 32) must fit in
+ `length` (4 + 4 bytes a record, read as an unsigned short), else
+ EW_LENGTH, nothing written; then `type` = `axis` and the records' values
+ (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_skip(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_skip(unsigned short FlibHndl,
+               short axis,
+               short length,
+               struct ODBAXIS *buf);
 
 /*
  Reads the servo delay (position deviation) of one axis or all axes (-1).

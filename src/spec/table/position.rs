@@ -92,4 +92,11 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::POSITION, &[Word::Const(7), Word::Arg(0)])],
         ..AXIS_VALUES
     },
+    Func {
+        name: "cnc_skip",
+        doc: doc!("the skip position (where the skip signal came)"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(8), Word::Arg(0)])],
+        dims: &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
+        ..AXIS_VALUES
+    },
 ];
