@@ -168,7 +168,7 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["cnc_srvdelay", "cnc_accdecdly"],
+        names: &["cnc_accdecdly"],
         run: |cx, a, r| go(ps::position(a[0], a[1] as i16), cx, r),
     },
     Decoder {

@@ -166,22 +166,6 @@ fn axis_values(
     }
 }
 
-/// Reads the servo delay (position deviation) of one axis or all axes (-1).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_srvdelay(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_boundary!("cnc_srvdelay", {
-        axis_values(pos::SERVO_DELAY, FlibHndl, axis, length, buf)
-    })
-}
-
 /// Reads the acceleration/deceleration delay of one axis or all axes (-1).
 ///
 /// # Safety

@@ -90,6 +90,7 @@ fn copy(x: &Word) -> Word {
 /// Explicit combinations of described functions' arguments (run on every
 /// class, Series 15 included, where the dimensions' variations are not).
 const COMBOS: &[(&str, &[&str])] = &[
+    ("srvdelay", &["-1 132", "-1 20", "2 8"]),
     ("skip", &["-1 132", "-1 20", "2 8"]),
     ("distance", &["-1 132", "-1 16"]),
     ("relative2", &["-1 132", "-1 16"]),
@@ -497,11 +498,6 @@ const WORDS: &[Word] = &[
     ),
     wc(
         "accdecdly",
-        &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
-        &["-1 132", "-1 20", "2 8"],
-    ),
-    wc(
-        "srvdelay",
         &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
         &["-1 132", "-1 20", "2 8"],
     ),

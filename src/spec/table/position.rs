@@ -99,4 +99,11 @@ pub const FUNCS: &[Func] = &[
         dims: &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
         ..AXIS_VALUES
     },
+    Func {
+        name: "cnc_srvdelay",
+        doc: doc!("the servo delay (position deviation)"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(9), Word::Arg(0)])],
+        dims: &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
+        ..AXIS_VALUES
+    },
 ];
