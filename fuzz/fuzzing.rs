@@ -168,10 +168,6 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["cnc_accdecdly"],
-        run: |cx, a, r| go(ps::position(a[0], a[1] as i16), cx, r),
-    },
-    Decoder {
         // Byte answers (src/ffi/folder.rs, src/ffi/memory.rs).
         names: &[
             "cnc_rdmdiprog",

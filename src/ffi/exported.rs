@@ -63,7 +63,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("position", &[
         "cnc_rdposition",
-        "cnc_accdecdly",
+       
         "cnc_getfigure",
     ]),
     ("program", &[

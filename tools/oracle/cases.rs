@@ -90,6 +90,7 @@ fn copy(x: &Word) -> Word {
 /// Explicit combinations of described functions' arguments (run on every
 /// class, Series 15 included, where the dimensions' variations are not).
 const COMBOS: &[(&str, &[&str])] = &[
+    ("accdecdly", &["-1 132", "-1 20", "2 8"]),
     ("srvdelay", &["-1 132", "-1 20", "2 8"]),
     ("skip", &["-1 132", "-1 20", "2 8"]),
     ("distance", &["-1 132", "-1 16"]),
@@ -495,11 +496,6 @@ const WORDS: &[Word] = &[
     w(
         "rdalmhistry5",
         &["1|0|2|-1", "3|1|10|0|100", "4096|0|4|520|1036|5164"],
-    ),
-    wc(
-        "accdecdly",
-        &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
-        &["-1 132", "-1 20", "2 8"],
     ),
     w(
         "rdparam3",

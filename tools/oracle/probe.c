@@ -499,7 +499,6 @@ static short w_callx(void) {
     WORD(rdomhistry, USHORT_IO(length, 2, F(cnc_rdomhistry)(H, N(1), &length, B0))) \
     WORD(rdomhistry2, return F(cnc_rdomhistry2)(H, N(1), N(2), N(3), B0)) \
     WORD(rdalmhistry5, return F(cnc_rdalmhistry5)(H, N(1), N(2), N(3), B0)) \
-    WORD(accdecdly, return F(cnc_accdecdly)(H, N(1), N(2), B0)) \
     WORD(rdparainfo3, { short n = N(2), pv = (short)0xCCCC, nx = (short)0xCCCC; short r = F(cnc_rdparainfo3)(H, N(1), &n, &pv, &nx, B0); field("num", n); field("prev", pv); field("next", nx); return r; }) \
     WORD(rdpitchr, return F(cnc_rdpitchr)(H, N(1), N(2), N(3), B0)) \
     /* machine data (issue 11) */                                                                \

@@ -7,13 +7,10 @@ use super::super::types::*;
 use super::base::COMMAND;
 use crate::ew::EW_ATTRIB;
 
-/// One axis's (1..) or every axis's (-1) value of a 0x0026 code into
-/// ODBAXIS, as FANUC's library reads it: an axis above 32 (its MAX_AXIS) is
-/// EW_ATTRIB before any traffic (0, -2 ... go to the CNC); every whole value
-/// record answered, at most 32, must fit in `length` (read as an unsigned
-/// short: 4 + 4 · records, after the reply), else EW_LENGTH, nothing
-/// written; then `type` = `axis` and each record's value word (its base
-/// and exponent not read); an empty answer writes `type` alone.
+/// What every per-axis read shares (its doc: `doc!`): the axis
+/// checked against 32 (FANUC's MAX_AXIS; 0, -2 ... go to the CNC), `type`
+/// the axis echoed, then each whole value record's value word (its base
+/// and exponent not read), the records held to the caller's `length`.
 const AXIS_VALUES: Func = Func {
     params: &[
         Param::Short("axis"),
@@ -43,6 +40,8 @@ const AXIS_VALUES: Func = Func {
 /// The oracle's dimensions: the axis, then `length`.
 const AXIS: &str = "1|-1|2|3|0|4|32|33|-2";
 const AXLEN: &str = "8|4|7|12|0|-1|132|136";
+/// The dimensions the skip and delay reads were recorded with.
+const FEWER: &[&str] = &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"];
 
 /// A position read's doc: what it reads, then what they all do.
 macro_rules! doc {
@@ -96,14 +95,21 @@ pub const FUNCS: &[Func] = &[
         name: "cnc_skip",
         doc: doc!("the skip position (where the skip signal came)"),
         forms: &[every_class(cmd::POSITION, &[Word::Const(8), Word::Arg(0)])],
-        dims: &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
+        dims: FEWER,
         ..AXIS_VALUES
     },
     Func {
         name: "cnc_srvdelay",
         doc: doc!("the servo delay (position deviation)"),
         forms: &[every_class(cmd::POSITION, &[Word::Const(9), Word::Arg(0)])],
-        dims: &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
+        dims: FEWER,
+        ..AXIS_VALUES
+    },
+    Func {
+        name: "cnc_accdecdly",
+        doc: doc!("the acceleration/deceleration delay"),
+        forms: &[every_class(cmd::POSITION, &[Word::Const(10), Word::Arg(0)])],
+        dims: FEWER,
         ..AXIS_VALUES
     },
 ];
