@@ -168,20 +168,6 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &[
-            "cnc_absolute",
-            "cnc_absolute2",
-            "cnc_machine",
-            "cnc_relative",
-            "cnc_relative2",
-            "cnc_distance",
-            "cnc_skip",
-            "cnc_srvdelay",
-            "cnc_accdecdly",
-        ],
-        run: |cx, a, r| go(ps::position(a[0], a[1] as i16), cx, r),
-    },
-    Decoder {
         // Byte answers (src/ffi/folder.rs, src/ffi/memory.rs).
         names: &[
             "cnc_rdmdiprog",

@@ -2641,28 +2641,51 @@ extern "C" {
 #endif // __cplusplus
 
 /*
- Reads the absolute position of one axis (`length` ≥ 8) or all axes (-1).
+ Reads the absolute position of axis `axis` (1..) or of every axis (-1):
+ an axis above 32 is EW_ATTRIB before any traffic; every whole value
+ record answered (at most 32) must fit in `length` (4 + 4 bytes a record,
+ read as an unsigned short), else EW_LENGTH, nothing written; then `type`
+ = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_absolute(unsigned short FlibHndl,
+                   short axis,
+                   short length,
+                   struct ODBAXIS *buf);
 
 /*
- Reads the absolute position (form 2: 0x26 code 0).
+ Reads the absolute position (second form) of axis `axis` (1..) or of
+ every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
+ whole value record answered (at most 32) must fit in `length` (4 + 4
+ bytes a record, read as an unsigned short), else EW_LENGTH, nothing
+ written; then `type` = `axis` and the records' values (an empty answer
+ writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_absolute2(unsigned short FlibHndl,
+                    short axis,
+                    short length,
+                    struct ODBAXIS *buf);
 
 /*
- Reads the acceleration/deceleration delay of one axis or all axes (-1).
+ Reads the acceleration/deceleration delay of axis `axis` (1..) or of
+ every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
+ whole value record answered (at most 32) must fit in `length` (4 + 4
+ bytes a record, read as an unsigned short), else EW_LENGTH, nothing
+ written; then `type` = `axis` and the records' values (an empty answer
+ writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_accdecdly(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_accdecdly(unsigned short FlibHndl,
+                    short axis,
+                    short length,
+                    struct ODBAXIS *buf);
 
 /*
  Reads the actual feed rate (F).
@@ -2830,12 +2853,19 @@ short cnc_diagnoss(unsigned short FlibHndl,
                    struct ODBDGN *diag);
 
 /*
- Reads the distance to go.
+ Reads the distance to go of axis `axis` (1..) or of every axis (-1): an
+ axis above 32 is EW_ATTRIB before any traffic; every whole value record
+ answered (at most 32) must fit in `length` (4 + 4 bytes a record, read
+ as an unsigned short), else EW_LENGTH, nothing written; then `type` =
+ `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_distance(unsigned short FlibHndl,
+                   short axis,
+                   short length,
+                   struct ODBAXIS *buf);
 
 /*
  Sends `number` (0..40959) bytes of the DNC program (the first call
@@ -3020,12 +3050,19 @@ short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
 short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
 
 /*
- Reads the machine position.
+ Reads the machine position of axis `axis` (1..) or of every axis (-1):
+ an axis above 32 is EW_ATTRIB before any traffic; every whole value
+ record answered (at most 32) must fit in `length` (4 + 4 bytes a record,
+ read as an unsigned short), else EW_LENGTH, nothing written; then `type`
+ = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_machine(unsigned short FlibHndl,
+                  short axis,
+                  short length,
+                  struct ODBAXIS *buf);
 
 /*
  Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
@@ -4210,7 +4247,7 @@ short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
  `dummy` is left as it was.
 
  # Safety
- `buf` must be NULL or point to a writable IODBPR.
+ `buf` must be NULL or point to `length` writable bytes (at most one IODBPR; nothing is written past `length` bytes).
  */
 short cnc_rdpmacror(unsigned short FlibHndl,
                     long s_no,
@@ -4827,9 +4864,12 @@ short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
  EW_LENGTH after the reply).
 
  # Safety
- `shift` must be NULL or point to a writable IODBWCSF.
+ `shift` must be NULL or point to `length` writable bytes (at most one IODBWCSF; nothing is written past `length` bytes).
  */
-short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct IODBWCSF *shift);
+short cnc_rdwkcdshft(unsigned short FlibHndl,
+                     short axis,
+                     short length,
+                     struct IODBWCSF *shift);
 
 /*
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
@@ -4915,20 +4955,35 @@ short cnc_regtool(unsigned short FlibHndl, short top, short *num, struct IODBTLM
 short cnc_regtool_f2(unsigned short FlibHndl, short top, short *num, struct IODBTLMNG_F2 *tool);
 
 /*
- Reads the relative position.
+ Reads the relative position of axis `axis` (1..) or of every axis (-1):
+ an axis above 32 is EW_ATTRIB before any traffic; every whole value
+ record answered (at most 32) must fit in `length` (4 + 4 bytes a record,
+ read as an unsigned short), else EW_LENGTH, nothing written; then `type`
+ = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_relative(unsigned short FlibHndl,
+                   short axis,
+                   short length,
+                   struct ODBAXIS *buf);
 
 /*
- Reads the relative position (form 2: 0x26 code 2).
+ Reads the relative position (second form) of axis `axis` (1..) or of
+ every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
+ whole value record answered (at most 32) must fit in `length` (4 + 4
+ bytes a record, read as an unsigned short), else EW_LENGTH, nothing
+ written; then `type` = `axis` and the records' values (an empty answer
+ writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_relative2(unsigned short FlibHndl,
+                    short axis,
+                    short length,
+                    struct ODBAXIS *buf);
 
 /*
  Renumbers program `old_num` as `new_num`.
@@ -5021,20 +5076,36 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
 
 /*
- Reads the skip position of one axis or all axes (-1).
+ Reads the skip position (where the skip signal came) of axis `axis`
+ (1..) or of every axis (-1): an axis above 32 is EW_ATTRIB before any
+ traffic; every whole value record answered (at most 32) must fit in
+ `length` (4 + 4 bytes a record, read as an unsigned short), else
+ EW_LENGTH, nothing written; then `type` = `axis` and the records' values
+ (an empty answer writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_skip(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_skip(unsigned short FlibHndl,
+               short axis,
+               short length,
+               struct ODBAXIS *buf);
 
 /*
- Reads the servo delay (position deviation) of one axis or all axes (-1).
+ Reads the servo delay (position deviation) of axis `axis` (1..) or of
+ every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
+ whole value record answered (at most 32) must fit in `length` (4 + 4
+ bytes a record, read as an unsigned short), else EW_LENGTH, nothing
+ written; then `type` = `axis` and the records' values (an empty answer
+ writes `type` alone).
 
  # Safety
- `buf` must point to `length` writable bytes.
+ `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
  */
-short cnc_srvdelay(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+short cnc_srvdelay(unsigned short FlibHndl,
+                   short axis,
+                   short length,
+                   struct ODBAXIS *buf);
 
 /*
  Cycle start: the CNC runs the selected main program (MEMORY mode, no

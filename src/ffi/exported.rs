@@ -62,8 +62,8 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "pmc_get_pmc_unit_types", "pmc_rdalmmsg",
     ]),
     ("position", &[
-        "cnc_rdposition", "cnc_absolute", "cnc_absolute2", "cnc_machine", "cnc_relative",
-        "cnc_relative2", "cnc_distance", "cnc_skip", "cnc_srvdelay", "cnc_accdecdly",
+        "cnc_rdposition",
+       
         "cnc_getfigure",
     ]),
     ("program", &[

@@ -1,4 +1,5 @@
-//! Positions: cnc_absolute & co. (ODBAXIS), cnc_rdposition, cnc_getfigure.
+//! Positions: cnc_rdposition, cnc_getfigure (cnc_absolute & co. are
+//! described as data: src/spec/table/position.rs).
 //! The rest of the axes and spindles area: dynamic data (dynamic.rs),
 //! spindles, feed and speed (spindle.rs), load meters and axis data
 //! (axisdata.rs).
@@ -7,14 +8,13 @@
 //! FANUC's library writes (so a caller's buffer of `length` bytes is never
 //! overrun), and only on success; so in the other three files.
 
-use super::{ffi_boundary, ffi_read, nonnull, put, put_at};
+use super::{ffi_read, nonnull, put};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_ATTRIB, EW_LENGTH};
+use crate::ew::EW_ATTRIB;
 use crate::proto::open::CncClass;
-use crate::proto::position::{AxisData, AxisDataCall, Position16, getfigure, pos, position};
-use crate::types::{MAX_AXIS, ODBAXIS, ODBPOS, POSELM};
-use std::mem::offset_of;
+use crate::proto::position::{AxisData, AxisDataCall, Position16, getfigure, pos};
+use crate::types::{MAX_AXIS, ODBPOS, POSELM};
 use std::os::raw::{c_char, c_short, c_ushort};
 
 /// A `short *` in/out count, read before any traffic.
@@ -120,193 +120,6 @@ pub unsafe extern "C" fn cnc_rdposition(
         }
         unsafe { put(data_num, r.count as c_short) };
         r.error.map_or(Ok(()), Err)
-    })
-}
-
-// ---------------------------------------------------------------------------
-// Positions (ODBAXIS)
-// ---------------------------------------------------------------------------
-
-/// FANUC's order: an axis above MAX_AXIS is EW_ATTRIB before any traffic
-/// (0, -2 ... go to the CNC); after the exchange `length`, read as an
-/// unsigned short, must hold the header and every whole record received
-/// (else EW_LENGTH, nothing written). Then `type` = axis and the values;
-/// an empty answer writes `type` alone.
-fn axis_values(
-    code: i32,
-    h: c_ushort,
-    axis: c_short,
-    length: c_short,
-    out: *mut ODBAXIS,
-) -> Result<()> {
-    {
-        let h = handles::get(h)?;
-        let base = nonnull(out)?.cast::<u8>();
-        if axis > MAX_AXIS as c_short {
-            return Err(Error::local(EW_ATTRIB, "axis beyond MAX_AXIS"));
-        }
-        let data = offset_of!(ODBAXIS, data);
-        let recs = h.call(&position(code, axis))?;
-        // More values than MAX_AXIS: the first MAX_AXIS count, as FANUC's
-        // library reads them (the rest is ignored, not a length error).
-        if (length as c_ushort as usize) < data + 4 * recs.len().min(MAX_AXIS) {
-            return Err(Error::local(
-                EW_LENGTH,
-                "length too small for the values received",
-            ));
-        }
-        unsafe {
-            put_at(base, offset_of!(ODBAXIS, r#type), axis);
-            // Never past the struct (FANUC writes every record received).
-            for (i, r) in recs.iter().take(MAX_AXIS).enumerate() {
-                put_at(base, data + 4 * i, r.value);
-            }
-        }
-        Ok(())
-    }
-}
-
-/// Reads the absolute position of one axis (`length` ≥ 8) or all axes (-1).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_absolute(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_absolute", {
-        axis_values(pos::ABSOLUTE, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the absolute position (form 2: 0x26 code 0).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_absolute2(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_absolute2", {
-        axis_values(pos::ABSOLUTE2, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the machine position.
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_machine(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_machine", {
-        axis_values(pos::MACHINE, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the relative position.
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_relative(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_relative", {
-        axis_values(pos::RELATIVE, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the relative position (form 2: 0x26 code 2).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_relative2(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_relative2", {
-        axis_values(pos::RELATIVE2, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the distance to go.
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_distance(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_read!("cnc_distance", {
-        axis_values(pos::DISTANCE, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the skip position of one axis or all axes (-1).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_skip(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_boundary!("cnc_skip", {
-        axis_values(pos::SKIP, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the servo delay (position deviation) of one axis or all axes (-1).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_srvdelay(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_boundary!("cnc_srvdelay", {
-        axis_values(pos::SERVO_DELAY, FlibHndl, axis, length, buf)
-    })
-}
-
-/// Reads the acceleration/deceleration delay of one axis or all axes (-1).
-///
-/// # Safety
-/// `buf` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_accdecdly(
-    FlibHndl: c_ushort,
-    axis: c_short,
-    length: c_short,
-    buf: *mut ODBAXIS,
-) -> c_short {
-    ffi_boundary!("cnc_accdecdly", {
-        axis_values(pos::ACCDEC_DELAY, FlibHndl, axis, length, buf)
     })
 }
 

@@ -38,8 +38,14 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(ACTF, |m, q| enc(m.actual(q.path, false))),
     Route::cnc(ACTS, |m, q| enc(m.actual(q.path, true))),
     Route::cnc(SPEED_A5, |m, q| enc(m.speed_a5(q.path))),
-    Route::cnc(POSITION, |m, q| {
-        enc(m.positions(q.path, q.args[0], q.args[1]))
+    // [code, axis]: cnc_absolute & co.'s layout (`type` not sent, then the
+    // value records), which cnc_rddynamic2, cnc_rdaxisdata ... read too.
+    Route::table(POSITION, |m, q| {
+        let v = m.positions(q.path, q.words[0], q.words[1])?;
+        let recs = v
+            .iter()
+            .flat_map(|r| [r.value, r.base.into(), r.exp.into()]);
+        Ok(std::iter::once(0).chain(recs.map(i64::from)).collect())
     }),
     Route::cnc(GETFIGURE, |m, q| enc(m.figures(q.path, q.args[0]))),
     // [-1]: the names per position kind; else the 4-byte axis names.

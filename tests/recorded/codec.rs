@@ -1254,14 +1254,6 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
         what: AxisData::Positions(codes),
         limit: 8,
     };
-    let code = |w: &str| match w {
-        "absolute" => pos::ABSOLUTE,
-        "absolute2" => pos::ABSOLUTE2,
-        "machine" => pos::MACHINE,
-        "relative" => pos::RELATIVE,
-        "relative2" => pos::RELATIVE2,
-        _ => pos::DISTANCE,
-    };
     Some(match w {
         "rddynamic2" | "rddynamic" => Dynamic { axis: n(0) as i16 }.request(&cx),
         "acts2" => SpindleData {
@@ -1306,9 +1298,6 @@ fn position_request(w: &str, a: &[String]) -> Option<Vec<ReqSub>> {
             t => axes(vec![t as i32]),
         }
         .request(&cx),
-        "absolute" | "absolute2" | "machine" | "relative" | "relative2" | "distance" => {
-            position(code(w), n(0) as i16).request(&cx)
-        }
         "getfigure" => getfigure(n(0) as i16).request(&cx),
         _ => return None,
     })

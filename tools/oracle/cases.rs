@@ -64,9 +64,6 @@ const fn wc(
     }
 }
 
-const AXIS: &str = "1|-1|2|3|0|4|32|33|-2";
-const AXLEN: &str = "8|4|7|12|0|-1|132|136";
-
 /// Every word the generator covers: the functions described as data
 /// (src/spec/table/, their dimensions there) and the words below.
 pub fn words() -> Vec<Word> {
@@ -93,6 +90,15 @@ fn copy(x: &Word) -> Word {
 /// Explicit combinations of described functions' arguments (run on every
 /// class, Series 15 included, where the dimensions' variations are not).
 const COMBOS: &[(&str, &[&str])] = &[
+    ("accdecdly", &["-1 132", "-1 20", "2 8"]),
+    ("srvdelay", &["-1 132", "-1 20", "2 8"]),
+    ("skip", &["-1 132", "-1 20", "2 8"]),
+    ("distance", &["-1 132", "-1 16"]),
+    ("relative2", &["-1 132", "-1 16"]),
+    ("relative", &["-1 132", "-1 16"]),
+    ("machine", &["-1 132", "-1 16"]),
+    ("absolute2", &["-1 132", "-1 16"]),
+    ("absolute", &["-1 132", "-1 16", "-1 20"]),
     // The starts' ranges (src/spec/table/offset.rs P_CODE_ENDS) and the
     // 30i's first request; #100000..#986000 are left out (the 16i class
     // asks (1,0x012c) first there, not described).
@@ -249,12 +255,6 @@ const WORDS: &[Word] = &[
         ],
     ),
     w("rdposition", &["-1|0|1|2|3|4|5|-2", "4|1|0|2|3|32|33|-1"]),
-    wc("absolute", &[AXIS, AXLEN], &["-1 132", "-1 16", "-1 20"]),
-    wc("absolute2", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
-    wc("machine", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
-    wc("relative", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
-    wc("relative2", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
-    wc("distance", &[AXIS, AXLEN], &["-1 132", "-1 16"]),
     w("getfigure", &["0|1|-1|2|3"]),
     // Program.
     w("rdexecprog", &["256|0|1|10|100|1024|4096|65535"]),
@@ -496,21 +496,6 @@ const WORDS: &[Word] = &[
     w(
         "rdalmhistry5",
         &["1|0|2|-1", "3|1|10|0|100", "4096|0|4|520|1036|5164"],
-    ),
-    wc(
-        "accdecdly",
-        &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
-        &["-1 132", "-1 20", "2 8"],
-    ),
-    wc(
-        "srvdelay",
-        &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
-        &["-1 132", "-1 20", "2 8"],
-    ),
-    wc(
-        "skip",
-        &["1|-1|0|2|3|4|33", "8|4|12|0|-1|132"],
-        &["-1 132", "-1 20", "2 8"],
     ),
     w(
         "rdparam3",

@@ -373,12 +373,6 @@ static short w_callx(void) {
                        for (int k = 0; k < n && k < MAXARG; k++) t[k] = (short)N(3 + k);          \
                        SHORT_IO(len, 3 + n, F(cnc_rdaxisdata)(H, N(1), t, n, &len, B0)); })       \
     WORD(rdposition, SHORT_IO(num, 2, F(cnc_rdposition)(H, N(1), &num, B0)))                      \
-    WORD(absolute, return F(cnc_absolute)(H, N(1), N(2), B0))                                     \
-    WORD(absolute2, return F(cnc_absolute2)(H, N(1), N(2), B0))                                   \
-    WORD(machine, return F(cnc_machine)(H, N(1), N(2), B0))                                       \
-    WORD(relative, return F(cnc_relative)(H, N(1), N(2), B0))                                     \
-    WORD(relative2, return F(cnc_relative2)(H, N(1), N(2), B0))                                   \
-    WORD(distance, return F(cnc_distance)(H, N(1), N(2), B0))                                     \
     WORD(getfigure, { static short v; v = (short)0xCCCC; io_note("valid_fig", &v, 1);            \
                       short r = F(cnc_getfigure)(H, N(1), &v, B0, B1);                            \
                       field("valid_fig", v); return r; })                                         \
@@ -505,9 +499,6 @@ static short w_callx(void) {
     WORD(rdomhistry, USHORT_IO(length, 2, F(cnc_rdomhistry)(H, N(1), &length, B0))) \
     WORD(rdomhistry2, return F(cnc_rdomhistry2)(H, N(1), N(2), N(3), B0)) \
     WORD(rdalmhistry5, return F(cnc_rdalmhistry5)(H, N(1), N(2), N(3), B0)) \
-    WORD(accdecdly, return F(cnc_accdecdly)(H, N(1), N(2), B0)) \
-    WORD(srvdelay, return F(cnc_srvdelay)(H, N(1), N(2), B0)) \
-    WORD(skip, return F(cnc_skip)(H, N(1), N(2), B0)) \
     WORD(rdparainfo3, { short n = N(2), pv = (short)0xCCCC, nx = (short)0xCCCC; short r = F(cnc_rdparainfo3)(H, N(1), &n, &pv, &nx, B0); field("num", n); field("prev", pv); field("next", nx); return r; }) \
     WORD(rdpitchr, return F(cnc_rdpitchr)(H, N(1), N(2), N(3), B0)) \
     /* machine data (issue 11) */                                                                \

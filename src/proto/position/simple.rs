@@ -1,35 +1,11 @@
-//! Simple calls: cnc_absolute & co. (0x26 per axis) and cnc_getfigure.
+//! Simple calls: cnc_getfigure.
 
 use super::payload::Figures;
-use super::read::{whole, whole_records, zext};
+use super::read::{whole, zext};
 use crate::error::Result;
 use crate::proto::call::{Call, Ctx, sub};
-use crate::proto::cmd::{GETFIGURE, POSITION};
+use crate::proto::cmd::GETFIGURE;
 use crate::proto::packet::{ReqSub, RespSub};
-use crate::proto::value::Value;
-
-/// cnc_absolute & co.: 0x26[code, axis], value records.
-#[derive(Debug, Clone, Copy)]
-pub struct AxisPositions {
-    pub code: i32,
-    pub axis: i16,
-}
-
-impl Call for AxisPositions {
-    type Output = Vec<Value>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(POSITION, &[self.code, i32::from(self.axis)])]
-    }
-    /// Every whole record (none from an empty or short payload): the
-    /// function checks the count against `length`.
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Value>> {
-        whole_records(resp, 0)
-    }
-}
-
-pub fn position(code: i32, axis: i16) -> AxisPositions {
-    AxisPositions { code, axis }
-}
 
 /// cnc_getfigure: FANUC's library sends type 3 as 5, others as given.
 #[derive(Debug, Clone, Copy)]

@@ -23,6 +23,7 @@ pub mod offset_life;
 pub mod operation;
 mod param;
 pub mod pmc;
+mod position;
 pub mod program;
 mod sampling;
 pub mod servo;
@@ -39,6 +40,7 @@ const AREAS: &[&[Func]] = &[
     offset::FUNCS,
     info::FUNCS,
     servo::FUNCS,
+    position::FUNCS,
     offset_life::FUNCS,
     pmc::FUNCS,
     memory::FUNCS,
