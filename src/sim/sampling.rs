@@ -7,14 +7,18 @@
 //! program leaves them.
 
 use super::Machine;
+use super::profile::SampleChannel;
 use super::profile::{Axis, Datum};
 use super::route::{Asked, Route};
 use super::run::{Running, Sampling};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_PATH};
-use crate::proto::cmd::{SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSTARTSMPL};
+use crate::proto::cmd::{
+    SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSETCHNL, SDTSTARTSMPL,
+};
 
 pub(super) const ROUTES: &[Route] = &[
+    Route::table(SDTSETCHNL, set_channels),
     Route::table(SDTCLRCHNL, |m, q| {
         m.sampling_mut(q.path)?.channels.clear();
         Ok(Vec::new())
@@ -34,6 +38,7 @@ fn value(a: &Axis, d: Datum) -> u16 {
         Datum::Speed => i64::from(a.servo_speed),
         Datum::Load => i64::from(a.servo_load),
         Datum::Current => i64::from(super::position::current_tenths(a)),
+        Datum::Other => 0,
     };
     v as u16
 }
@@ -44,6 +49,44 @@ impl Machine {
             .map(|r| &mut r.sampling)
             .ok_or(CncError::new(EW_PATH))
     }
+}
+
+/// cnc_sdtsetchnl: each channel record (`chno`, `axis`, `cycle`, the
+/// shift byte, 0, the code) sets channel `chno` to the figure its code's
+/// magnitude names in the profile's `sample_code` list (another: a figure
+/// not modelled) of axis `axis` (-1, a spindle: none modelled); channels
+/// before it that were never set sample nothing. A channel outside 1..8
+/// is EW_DATA, nothing set.
+fn set_channels(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let codes = m.path(q.path)?.sample_codes.clone();
+    let records: Vec<&[i64]> = q.payload.chunks_exact(6).collect();
+    if records
+        .iter()
+        .any(|r| !(1..=MAX_CHANNELS as i64).contains(&r[0]))
+    {
+        return Err(CncError::new(EW_DATA));
+    }
+    let s = m.sampling_mut(q.path)?;
+    for r in records {
+        let at = r[0] as usize - 1;
+        let datum = (codes.iter().find(|c| i64::from(c.code) == r[5].abs()))
+            .map_or(Datum::Other, |c| c.datum);
+        let channel = SampleChannel {
+            axis: u16::try_from(r[1]).unwrap_or(0),
+            datum,
+        };
+        if s.channels.len() <= at {
+            s.channels.resize(
+                at + 1,
+                SampleChannel {
+                    axis: 0,
+                    datum: Datum::Other,
+                },
+            );
+        }
+        s.channels[at] = channel;
+    }
+    Ok(Vec::new())
 }
 
 /// cnc_sdtstartsmpl: sampling runs from now on; with no channel to sample

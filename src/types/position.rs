@@ -258,3 +258,16 @@ pub struct ODB3DHDL {
     pub axes: [c_short; 5],
     pub data: [LONG; 5],
 }
+
+/// cnc_sdtsetchnl: one servo data sampling channel: `type` the datum
+/// sampled (0..37 of an axis, 0..12 of a spindle, `axis` -1), `chno` the
+/// channel (1..8), `axis` the axis (1..the CNC's axes, or -1), `shift`
+/// the bits the value is shifted right by (0..15).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IDBSDTCHAN {
+    pub r#type: c_short,
+    pub chno: c_char,
+    pub axis: c_char,
+    pub shift: std::os::raw::c_ushort,
+}

@@ -2,7 +2,7 @@
 //! the .so, compared with the simulator's servo state.
 
 use super::run_c_test;
-use fwlib32::ew::{EW_DATA, EW_OK};
+use fwlib32::ew::{EW_DATA, EW_NUMBER, EW_OK};
 use fwlib32::sim::Profile;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
 use fwlib32::sim::profile::Datum;
@@ -50,6 +50,7 @@ fn channels_read_the_servo_state_and_clear() {
                     let rated = a.rated_current.unwrap_or(10.0);
                     (rated * 10.0 * f64::from(a.servo_load) / 100.0).round() as i64
                 }
+                Datum::Other => 0,
             };
             i64::from(v as u16)
         })
@@ -78,4 +79,38 @@ fn channels_read_the_servo_state_and_clear() {
     assert_eq!(kv["start_cleared"], EW_DATA.to_string());
     assert_eq!(kv["end_cleared"], ok);
     assert_eq!(kv["null"], EW_DATA.to_string());
+
+    // cnc_sdtsetchnl: channel 1 samples Y's figure of code 4, channel 2
+    // X's of code 5 (the profile's `sample_code` list), channel 3 a
+    // spindle (not modelled: 0).
+    let datum = |code: i16| {
+        let c = path.sample_codes.iter().find(|c| c.code == code);
+        c.expect("the profile names codes 4 and 5").datum
+    };
+    let figure = |axis: usize, d: Datum| {
+        let a = &path.axes[axis - 1];
+        match d {
+            Datum::Speed => i64::from(a.servo_speed as u16),
+            Datum::Load => i64::from(a.servo_load as u16),
+            _ => panic!("the test expects speed or load for codes 4 and 5"),
+        }
+    };
+    let mut set = vec![figure(2, datum(4)), figure(1, datum(5)), 0];
+    assert_eq!(set[1], 1500, "channel 2 samples the X axis's speed");
+    set.resize(8, 0);
+    set.push(FILL16);
+    assert_eq!(kv["set"], ok);
+    assert_eq!(ints(&kv["set_shot"]), set);
+    for k in [
+        "bad_type",
+        "bad_spindle",
+        "bad_chno",
+        "bad_cycle",
+        "null_chan",
+    ] {
+        assert_eq!(kv[k], EW_DATA.to_string(), "{k}");
+    }
+    assert_eq!(kv["bad_n"], EW_NUMBER.to_string());
+    // The refused calls changed nothing.
+    assert_eq!(ints(&kv["refused_shot"]), set);
 }
