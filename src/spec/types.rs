@@ -434,12 +434,14 @@ pub struct Rule {
 /// An exchange FANUC's library makes for a payload record before the
 /// function's request, once the record's [`Rule`]s pass ([`Func::each`]):
 /// on `classes`, for a record whose payload field `when.0` (the key) is
-/// within `when.1..=when.2`, subpacket `(1, cmd)` with `words` (path word
-/// `path`; 0: the handle's path), no payload. Of the entries whose classes
+/// within `when.1..=when.2`, subpacket `(1, cmd)` with `words`, no
+/// payload, on the handle's path; `tens`: on path `1 + key / 10` whatever
+/// the handle's, the key's units the axis in it (the 16i class's axes
+/// 1..8, 11..18, 21..28 of cnc_sdtsetchnl). Of the entries whose classes
 /// and `when` match, the first is sent; none: no exchange. An error answer
 /// ends the call with `error` (None: the answer's own code); an answer of
 /// any length is used. `value` Some((at, stride, c)): the record's value
-/// is the answer's bytes at `at + stride · (key − 1)` read as `c`
+/// is the answer's bytes at `at + stride · (i − 1)`, `i` the key (with `tens`, its units), read as `c`
 /// (big-endian; past the answer's end, 0), for its [`Code::negate`]
 /// (cnc_sdtsetchnl's parameter 1023 of the channel's axis, its low byte).
 #[derive(Debug, Clone, Copy)]
@@ -448,7 +450,7 @@ pub struct Each {
     pub when: (u8, i32, i32),
     pub cmd: u16,
     pub words: &'static [i32],
-    pub path: u16,
+    pub tens: bool,
     pub value: Option<(u16, u16, Int)>,
     pub error: Option<i16>,
 }

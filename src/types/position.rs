@@ -261,8 +261,10 @@ pub struct ODB3DHDL {
 
 /// cnc_sdtsetchnl: one servo data sampling channel: `type` the datum
 /// sampled (0..37 of an axis, 0..12 of a spindle, `axis` -1), `chno` the
-/// channel (1..8), `axis` the axis (1..the CNC's axes, or -1), `shift`
-/// the bits the value is shifted right by (0..15).
+/// channel (1..8), `axis` the axis (-1 a spindle; 1..the path's axes on
+/// the 30i class, 1..8, 11..18, 21..28, -2 or -3 on the 16i class),
+/// `shift` 0..15 (sent as `0x0c | shift << 4`; a signed `char` is read
+/// as FANUC's x86 library reads it, sign-extended).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct IDBSDTCHAN {

@@ -65,6 +65,10 @@ int main(int argc, char **argv) {
     printf("bad_n=%d\n", cnc_sdtsetchnl(h, 9, 8, chan));
     printf("null_chan=%d\n", cnc_sdtsetchnl(h, 1, 8, NULL));
     one_shot(h, "refused_shot");
+    printf("start_set=%d\n", cnc_sdtstartsmpl(h, 0, 8));
+    printf("end_set=%d\n", cnc_sdtendsmpl(h));
+    /* cycle -1: the 30i class takes it, the 16i class refuses it. */
+    printf("cycle_m1=%d\n", cnc_sdtsetchnl(h, 1, -1, chan));
 
     /* A NULL output: refused before any traffic. */
     printf("null=%d\n", cnc_sdtread1shot(h, NULL));

@@ -859,6 +859,13 @@ const WORDS: &[Word] = &[
                 "1 -2 hex:000001010000",
                 "8 8 hex:000001010000010002020100020003030200030004010300040005020400050006030500060007010600070008020700",
                 "2 9 hex:050001ff03001e0002020400",
+                // The 16i class's axes 12 and 22 (which axis's parameter
+                // 1023 signs the code), -3, and a second channel refused
+                // there after the first's parameter read.
+                "1 8 hex:0300010c0000",
+                "1 8 hex:030001160000",
+                "1 8 hex:000001fd0000",
+                "2 8 hex:000001010000000002090000",
             ],
         )
     },

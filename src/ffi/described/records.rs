@@ -44,13 +44,16 @@ pub(super) fn prepare(
         let value = match f.each_of(&read, class.0, class.1) {
             Some(e) => {
                 let ask = || {
-                    h.call(&EachCall { each: e })
-                        .map_err(|x| match (x, e.error) {
-                            (Error::Cnc { .. }, Some(code)) => {
-                                Error::local(code, "an error answer to the record's exchange")
-                            }
-                            (x, _) => x,
-                        })
+                    h.call(&EachCall {
+                        each: e,
+                        key: at(e.when.0),
+                    })
+                    .map_err(|x| match (x, e.error) {
+                        (Error::Cnc { .. }, Some(code)) => {
+                            Error::local(code, "an error answer to the record's exchange")
+                        }
+                        (x, _) => x,
+                    })
                 };
                 each_value(e, &ask()?, at(e.when.0))
             }

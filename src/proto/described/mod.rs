@@ -75,6 +75,8 @@ impl Call for Prelude {
 /// answer's payload.
 pub struct EachCall {
     pub each: &'static crate::spec::Each,
+    /// The record's key field's integer.
+    pub key: i64,
 }
 
 impl Call for EachCall {
@@ -85,7 +87,9 @@ impl Call for EachCall {
             *w = *v;
         }
         let mut s = ReqSub::cnc(self.each.cmd, &words);
-        s.path = self.each.path;
+        if self.each.tens {
+            s.path = (1 + self.key / 10) as u16;
+        }
         vec![s]
     }
     fn decode(&self, _cx: &Ctx, resp: &[RespSub]) -> Result<Vec<u8>> {
@@ -97,7 +101,7 @@ impl Call for EachCall {
 /// key field), as [`crate::spec::Each::value`] places it; None without one.
 pub fn each_value(e: &crate::spec::Each, p: &[u8], key: i64) -> Option<i64> {
     let (at, stride, c) = e.value?;
-    let i = usize::try_from(key - 1).ok()?;
+    let i = usize::try_from(if e.tens { key % 10 } else { key } - 1).ok()?;
     let at = usize::from(at) + usize::from(stride) * i;
     let b = |k: usize| p.get(at + k).copied().unwrap_or(0);
     let v = match c.size() {

@@ -107,18 +107,19 @@ pub const FUNCS: &[Func] = &[
                 when: (AXIS, 1, 127),
                 cmd: cmd::RDPARAM,
                 words: &[1023, 1023, -1, 0, 0x10000],
-                path: 0,
+                tens: false,
                 value: Some((11, 8, I8)),
                 error: Some(crate::ew::EW_UNEXP),
             },
-            // cnc_rdparam's 16i form, 4-byte values, on path 1 whatever the
-            // handle's path; an error answer's code is the call's.
+            // cnc_rdparam's 16i form, 4-byte values, on the path the axis's
+            // tens name (1 for 1..8) whatever the handle's; an error
+            // answer's code is the call's.
             Each {
                 classes: Classes::S16,
                 when: (AXIS, 1, 127),
                 cmd: cmd::RDPARAM16,
                 words: &[1023, 1023, -1, 0, 0],
-                path: 1,
+                tens: true,
                 value: Some((11, 4, I8)),
                 error: None,
             },
@@ -130,7 +131,7 @@ pub const FUNCS: &[Func] = &[
                 when: (AXIS, -3, -2),
                 cmd: cmd::DIAGNOSS16,
                 words: &[400, 400, 0, 0, 0],
-                path: 1,
+                tens: true,
                 value: None,
                 error: Some(crate::ew::EW_UNEXP),
             },
@@ -139,7 +140,7 @@ pub const FUNCS: &[Func] = &[
                 when: (AXIS, -3, -2),
                 cmd: cmd::DIAGNOSS,
                 words: &[400, 400, 0, 0, 0],
-                path: 1,
+                tens: true,
                 value: None,
                 error: Some(crate::ew::EW_UNEXP),
             },
