@@ -2185,6 +2185,21 @@ typedef struct IODBTLMNG_F2 {
 } IODBTLMNG_F2;
 
 /*
+ cnc_sdtsetchnl: one servo data sampling channel: `type` the datum
+ sampled (0..37 of an axis, 0..12 of a spindle, `axis` -1), `chno` the
+ channel (1..8), `axis` the axis (-1 a spindle; 1..the path's axes on
+ the 30i class, 1..8, 11..18, 21..28, -2 or -3 on the 16i class),
+ `shift` 0..15 (sent as `0x0c | shift << 4`; a signed `char` is read
+ as FANUC's x86 library reads it, sign-extended).
+ */
+typedef struct IDBSDTCHAN {
+    short type;
+    char chno;
+    char axis;
+    unsigned short shift;
+} IDBSDTCHAN;
+
+/*
  cnc_statinfo: CNC status information.
  */
 typedef struct ODBST {
@@ -5037,6 +5052,21 @@ short cnc_sdtendsmpl(unsigned short FlibHndl);
  `data` must be NULL or point to 16 writable bytes: 8 `unsigned short`s.
  */
 short cnc_sdtread1shot(unsigned short FlibHndl, unsigned short *data);
+
+/*
+ Sets `n` servo data sampling channels (1..8) from `chan[]`, sampled
+ every `cycle` (8 or more; -1 too on the 30i class; else EW_DATA, detail
+ 3). Each channel in turn is checked (`type` 0..37 of an axis or 0..12 of
+ a spindle, `axis` -1; `chno` 1..8; `axis` -1 or an axis of the path;
+ `shift` 0..15: else EW_DATA, details 20..23) and, on an axis, the axes'
+ parameter 1023 read; then all are sent, 12 bytes each: `chno`, `axis`,
+ `cycle`, `0x0c | shift << 4`, 0 and the code of `type`, negated for an
+ axis whose parameter 1023 is even (FANUC's 32-bit library only).
+
+ # Safety
+ `chan` must be NULL or point to `n` readable IDBSDTCHAN (at most 8 are read).
+ */
+short cnc_sdtsetchnl(unsigned short FlibHndl, short n, long cycle, struct IDBSDTCHAN *chan);
 
 /*
  Starts sampling the servo data channels: `type` (as an unsigned 16-bit

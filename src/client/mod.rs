@@ -85,6 +85,15 @@ impl Handle {
         }
     }
 
+    /// Sets the first detail word cnc_getdtailerr reports (a local check
+    /// FANUC's library numbers), unless a socket error froze it.
+    pub fn set_detail(&self, d: i16) {
+        let mut s = self.state.lock();
+        if !s.detail_frozen {
+            s.detail = (d, 0);
+        }
+    }
+
     /// Updates the detail words cnc_getdtailerr reports.
     pub fn note(&self, e: &Error) {
         let mut s = self.state.lock();

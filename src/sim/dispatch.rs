@@ -127,6 +127,16 @@ pub fn find(class: u16, cmd: u16) -> Option<&'static Row> {
         .map(|i| &t[i])
 }
 
+/// Whether a described function's record exchange ([`crate::spec::Each`])
+/// sends this subpacket's command on a Series 15 (`class`) that no form of
+/// that class sends, the 16i class's forms answering it.
+fn each_in_16i_form(sub: &ReqSub, class: CncClass) -> bool {
+    class == (CncClass::Series16 { kind: 2 })
+        && crate::spec::FUNCS
+            .iter()
+            .any(|f| (f.each.iter()).any(|e| e.classes.matches(true, true) && e.cmd == sub.cmd))
+}
+
 impl Machine {
     /// The CNC's class, as its open body gives it.
     fn cnc_class(&self) -> CncClass {
@@ -149,7 +159,13 @@ impl Machine {
         match row.route.answer {
             Answer::Bytes(f) => f(self, sub),
             Answer::Values(f) => {
-                let class = self.cnc_class();
+                let mut class = self.cnc_class();
+                if row.layouts[class_index(class)].is_none() && each_in_16i_form(sub, class) {
+                    // A Series 15 asked in the 16i form, by a record's
+                    // exchange alone (cnc_sdtsetchnl's parameter read):
+                    // answered as the 16i class answers it.
+                    class = CncClass::Series16 { kind: 0 };
+                }
                 row.layouts[class_index(class)].ok_or(CncError::FUNC)?;
                 let func = described::for_request(sub, class).ok_or(CncError::FUNC)?;
                 let args = described::args_of(func, class, sub);

@@ -249,6 +249,10 @@ pub struct Path {
     /// cnc_sdtstartsmpl; cnc_sdtclrchnl clears them).
     #[serde(rename = "sample_channel")]
     pub sample_channels: Vec<SampleChannel>,
+    /// The data codes a cnc_sdtsetchnl channel carries and the figure each
+    /// samples (a code not listed: a figure not modelled, read as 0).
+    #[serde(rename = "sample_code")]
+    pub sample_codes: Vec<SampleCode>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]
@@ -528,6 +532,18 @@ pub enum Datum {
     /// The motor current, 0.1 A: the load's share of the rated current
     /// (cnc_rdaxisdata class 2 type 2).
     Current,
+    /// A figure the simulator does not model (a cnc_sdtsetchnl code the
+    /// profile's `sample_code` list does not name, a spindle's): read as 0.
+    Other,
+}
+
+/// A data code of cnc_sdtsetchnl's channels (its magnitude: the sign
+/// follows the axis's parameter 1023) and the figure it samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(deny_unknown_fields, default)]
+pub struct SampleCode {
+    pub code: i16,
+    pub datum: Datum,
 }
 
 /// One sampling channel: a figure of an axis of the path (1-based).

@@ -1,20 +1,24 @@
 //! Servo data sampling (cnc_sdt*, FANUC's 32-bit library): the channels
-//! each path samples (the profile's `[[path.sample_channel]]`, cleared by
-//! cnc_sdtclrchnl), whether sampling runs (cnc_sdtstartsmpl until
+//! each path samples (the profile's `[[path.sample_channel]]`, set by
+//! cnc_sdtsetchnl, cleared by cnc_sdtclrchnl), whether sampling runs (cnc_sdtstartsmpl until
 //! cnc_sdtcancelsmpl or cnc_sdtendsmpl), and each channel's current value
 //! (cnc_sdtread1shot) read from the servo state the simulator models for
 //! the axis: its motor speed, load meter or current, as the running
 //! program leaves them.
 
 use super::Machine;
+use super::profile::SampleChannel;
 use super::profile::{Axis, Datum};
 use super::route::{Asked, Route};
 use super::run::{Running, Sampling};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_DATA, EW_PATH};
-use crate::proto::cmd::{SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSTARTSMPL};
+use crate::proto::cmd::{
+    SDTCANCELSMPL, SDTCLRCHNL, SDTENDSMPL, SDTREAD1SHOT, SDTSETCHNL, SDTSTARTSMPL,
+};
 
 pub(super) const ROUTES: &[Route] = &[
+    Route::table(SDTSETCHNL, set_channels),
     Route::table(SDTCLRCHNL, |m, q| {
         m.sampling_mut(q.path)?.channels.clear();
         Ok(Vec::new())
@@ -34,6 +38,7 @@ fn value(a: &Axis, d: Datum) -> u16 {
         Datum::Speed => i64::from(a.servo_speed),
         Datum::Load => i64::from(a.servo_load),
         Datum::Current => i64::from(super::position::current_tenths(a)),
+        Datum::Other => 0,
     };
     v as u16
 }
@@ -44,6 +49,44 @@ impl Machine {
             .map(|r| &mut r.sampling)
             .ok_or(CncError::new(EW_PATH))
     }
+}
+
+/// cnc_sdtsetchnl: each channel record (`chno`, `axis`, `cycle`, the
+/// shift byte, 0, the code) sets channel `chno` to the figure its code's
+/// magnitude names in the profile's `sample_code` list (another: a figure
+/// not modelled) of axis `axis` (-1, a spindle: none modelled); channels
+/// before it that were never set sample nothing. A channel outside 1..8
+/// is EW_DATA, nothing set.
+fn set_channels(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let codes = m.path(q.path)?.sample_codes.clone();
+    let records: Vec<&[i64]> = q.payload.chunks_exact(6).collect();
+    if records
+        .iter()
+        .any(|r| !(1..=MAX_CHANNELS as i64).contains(&r[0]))
+    {
+        return Err(CncError::new(EW_DATA));
+    }
+    let s = m.sampling_mut(q.path)?;
+    for r in records {
+        let at = r[0] as usize - 1;
+        let datum = (codes.iter().find(|c| i64::from(c.code) == r[5].abs()))
+            .map_or(Datum::Other, |c| c.datum);
+        let channel = SampleChannel {
+            axis: u16::try_from(r[1]).unwrap_or(0),
+            datum,
+        };
+        if s.channels.len() <= at {
+            s.channels.resize(
+                at + 1,
+                SampleChannel {
+                    axis: 0,
+                    datum: Datum::Other,
+                },
+            );
+        }
+        s.channels[at] = channel;
+    }
+    Ok(Vec::new())
 }
 
 /// cnc_sdtstartsmpl: sampling runs from now on; with no channel to sample
@@ -116,5 +159,55 @@ mod tests {
         assert!(m.run[0].sampling.channels.is_empty());
         assert_eq!(ask(&mut m, SDTSTARTSMPL, &[0, 8]), EW_DATA);
         assert!(m.run[0].sampling.running.is_none());
+    }
+
+    /// One cnc_sdtsetchnl record: `chno`, `axis`, `cycle` 8, shift byte
+    /// 0x0c, 0, `code`.
+    fn record(chno: i16, axis: i16, code: i16) -> Vec<u8> {
+        let mut b = Vec::new();
+        b.extend(chno.to_be_bytes());
+        b.extend(axis.to_be_bytes());
+        b.extend(8i32.to_be_bytes());
+        b.extend([0x0c, 0]);
+        b.extend(code.to_be_bytes());
+        b
+    }
+
+    fn set(m: &mut Machine, records: &[Vec<u8>]) -> i16 {
+        let n = records.len() as i32;
+        let q = ReqSub {
+            path: 1,
+            ..ReqSub::cnc(SDTSETCHNL, &[n, 0, 0, 0, 12 * n]).with_payload(records.concat())
+        };
+        m.answer(&q).error
+    }
+
+    #[test]
+    fn set_channels_sample_the_codes_figures_by_magnitude() {
+        let mut m = Machine::new(Profile::default());
+        let codes = m.profile.paths[0].sample_codes.clone();
+        let load = codes.iter().find(|c| c.datum == Datum::Load);
+        let load = load.expect("the default profile names a load code").code;
+        assert_eq!(ask(&mut m, SDTCLRCHNL, &[]), 0);
+        // Channel 2 on Y, its code negated (an even servo axis number);
+        // channel 1, never set, samples nothing.
+        assert_eq!(set(&mut m, &[record(2, 2, -load)]), 0);
+        let ch = &m.run[0].sampling.channels;
+        assert_eq!(ch.len(), 2);
+        assert_eq!((ch[1].axis, ch[1].datum), (2, Datum::Load));
+        assert_eq!(ch[0].datum, Datum::Other);
+        // A code the profile does not name, a spindle: figures not modelled.
+        assert_eq!(set(&mut m, &[record(1, -1, 13), record(3, 1, 999)]), 0);
+        let ch = &m.run[0].sampling.channels;
+        assert_eq!((ch[0].axis, ch[0].datum), (0, Datum::Other));
+        assert_eq!((ch[2].axis, ch[2].datum), (1, Datum::Other));
+        // A channel outside 1..8: EW_DATA, nothing set (the first record
+        // neither).
+        let before = m.run[0].sampling.channels.clone();
+        assert_eq!(
+            set(&mut m, &[record(4, 1, load), record(9, 1, load)]),
+            EW_DATA
+        );
+        assert_eq!(m.run[0].sampling.channels, before);
     }
 }

@@ -72,7 +72,7 @@ commands! {
     WRZOFS = CLASS_CNC 0x000c [cnc_wrzofs];
     RDZOFSINFO = CLASS_CNC 0x000d [cnc_rdzofsinfo];
     /// 16i class: read parameter (also the FOCAS option probe, parameter 9968).
-    RDPARAM16 = CLASS_CNC 0x000e [cnc_rdparam cnc_rdparam3 cnc_rdparar cnc_rdparam_ext];
+    RDPARAM16 = CLASS_CNC 0x000e [cnc_rdparam cnc_rdparam3 cnc_rdparar cnc_rdparam_ext cnc_sdtsetchnl];
     /// 16i: write one parameter, 40-byte payload.
     WRPARAM16 = CLASS_CNC 0x000f [cnc_wrparam cnc_wrparas];
     /// Both classes: parameter numbers and attributes [s, n] (cnc_rdparainfo;
@@ -138,7 +138,7 @@ commands! {
     /// `length` bytes; the answer: u32 number, i16 attribute.
     RDMACRONUM = CLASS_CNC 0x029f [cnc_rdmacronum];
     /// 16i: read diagnosis data [s, e, axis].
-    DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
+    DIAGNOSS16 = CLASS_CNC 0x0030 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext cnc_sdtsetchnl];
     /// Both classes: diagnosis numbers and attributes [s, n].
     RDDIAGINFO = CLASS_CNC 0x0031 [cnc_rddiaginfo cnc_rddiag_ext];
     /// cnc_rddiagnum: the same for diagnosis data.
@@ -239,13 +239,13 @@ commands! {
     /// Series 15 start-up companion of sysinfo.
     SYSINFO15 = CLASS_CNC 0x008c [cnc_allclibhndl3 cnc_rdposition];
     /// 30i class: read parameter (Series 15: option probe, parameter 9153).
-    RDPARAM = CLASS_CNC 0x008d [cnc_rdparam cnc_rdparam3 cnc_rdparam_ext cnc_rdparar cnc_allclibhndl3];
+    RDPARAM = CLASS_CNC 0x008d [cnc_rdparam cnc_rdparam3 cnc_rdparam_ext cnc_rdparar cnc_allclibhndl3 cnc_sdtsetchnl];
     /// 30i: write one parameter, 264-byte payload.
     WRPARAM = CLASS_CNC 0x008e [cnc_wrparam cnc_wrparas];
     /// Series 15: parameter numbers and attributes [s, n] (cnc_rdparainfo).
     RDPARAINFO15 = CLASS_CNC 0x008f [cnc_rdparainfo cnc_rdparam_ext];
     /// 30i: read diagnosis data [s, e, axis].
-    DIAGNOSS = CLASS_CNC 0x0093 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext];
+    DIAGNOSS = CLASS_CNC 0x0093 [cnc_diagnoss cnc_rddiag cnc_rddiag_ext cnc_sdtsetchnl];
     /// Series 15: diagnosis numbers and attributes [s, n] (cnc_rddiaginfo).
     RDDIAGINFO15 = CLASS_CNC 0x0094 [cnc_rddiaginfo cnc_rddiag_ext];
     /// Series 15: which spindle's name is shown with the speed (1-based; its
@@ -320,7 +320,11 @@ commands! {
     HDL3D_TIP = CLASS_CNC 0x0111 [cnc_rd3dtooltip];
     RDTIMER = CLASS_CNC 0x0120 [cnc_rdtimer];
     /// Servo data sampling (FANUC's x86 build 1.0.0 exports the senders;
-    /// docs/protocol/position.md): `(1,0x0134)` clears the channels.
+    /// docs/protocol/position.md): `(1,0x0133)[n, 0, 0, 0, 12·n]` + 12
+    /// bytes a channel sets the channels (after each axis channel's
+    /// parameter 1023 read).
+    SDTSETCHNL = CLASS_CNC 0x0133 [cnc_sdtsetchnl];
+    /// `(1,0x0134)` clears the channels.
     SDTCLRCHNL = CLASS_CNC 0x0134 [cnc_sdtclrchnl];
     /// `(1,0x0135)[type, long]` starts sampling the channels; the answer's
     /// fourth 16-bit word not 0 lets FANUC's library ask for samples.

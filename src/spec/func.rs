@@ -117,6 +117,106 @@ impl Func {
     /// of its ranges ([`End::Alone`]). They come after a
     /// [`Func::first`] request.
     pub fn refusal(&self, args: &[i32], s16: bool, s15: bool, option: bool) -> Option<i16> {
+        self.refusal_detail(args, s16, s15, option).map(|r| r.0)
+    }
+    /// [`Func::refusal`] with the detail code a [`Rule`] of a number
+    /// parameter sets (its checks first, then its number rules).
+    pub fn refusal_detail(
+        &self,
+        args: &[i32],
+        s16: bool,
+        s15: bool,
+        option: bool,
+    ) -> Option<(i16, Option<i16>)> {
+        if let Some(c) = self.check_refusal(args, s16, s15, option) {
+            return Some((c, None));
+        }
+        let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
+        self.rule_refusal(
+            |of| match of {
+                Of::Arg(i) => Some(at(i)),
+                Of::Field(_) => None,
+            },
+            at,
+            s16,
+            s15,
+            i64::from(AXES),
+        )
+        .map(|(c, d)| (c, Some(d)))
+    }
+    /// The first [`Rule`] that refuses, of the targets `value` gives a value
+    /// for (`when` reads `key`), on a CNC of the 16i class (`s16`) or
+    /// Series 15 (`s15`) whose path has `axes` axes: (code, detail).
+    pub fn rule_refusal(
+        &self,
+        value: impl Fn(Of) -> Option<i64>,
+        key: impl Fn(u8) -> i64,
+        s16: bool,
+        s15: bool,
+        axes: i64,
+    ) -> Option<(i16, i16)> {
+        let mut done: Vec<Of> = Vec::new();
+        for r in self.rules {
+            let Some(v) = value(r.of) else { continue };
+            let applies = r.classes.matches(s16, s15)
+                && r.when
+                    .is_none_or(|(k, lo, hi)| (i64::from(lo)..=i64::from(hi)).contains(&key(k)));
+            if !applies || done.contains(&r.of) {
+                continue;
+            }
+            done.push(r.of);
+            let hi = |h: i32| if h == AXES { axes } else { i64::from(h) };
+            if !r
+                .ok
+                .iter()
+                .any(|&(lo, h)| (i64::from(lo)..=hi(h)).contains(&v))
+            {
+                return Some((r.code, r.detail));
+            }
+        }
+        None
+    }
+    /// The [`Each`] exchange of a payload record (`rec`: its payload
+    /// fields' integers as read) on a CNC of the 16i class (`s16`) or
+    /// Series 15 (`s15`), if any.
+    pub fn each_of(&self, rec: &[i64], s16: bool, s15: bool) -> Option<&'static Each> {
+        self.each.iter().find(|e| {
+            let k = rec.get(usize::from(e.when.0)).copied().unwrap_or(0);
+            e.classes.matches(s16, s15) && (i64::from(e.when.1)..=i64::from(e.when.2)).contains(&k)
+        })
+    }
+    /// A payload record's integers (`rec`, as read) with [`Func::codes`]
+    /// applied: `args` the call's numbers, `value` the record's [`Each`]
+    /// value. Err: EW_DATA, a key outside its table.
+    pub fn coded(&self, rec: &mut [i64], args: &[i32], value: Option<i64>) -> Result<(), i16> {
+        let read = rec.to_vec();
+        let at = |k: u8| read.get(usize::from(k)).copied().unwrap_or(0);
+        let mut done: Vec<u8> = Vec::new();
+        for c in self.codes {
+            let applies = c
+                .when
+                .is_none_or(|(k, lo, hi)| (i64::from(lo)..=i64::from(hi)).contains(&at(k)));
+            if !applies || done.contains(&c.field) || usize::from(c.field) >= rec.len() {
+                continue;
+            }
+            done.push(c.field);
+            let mut v = match c.value {
+                CodeValue::Arg(a) => i64::from(args.get(usize::from(a)).copied().unwrap_or(0)),
+                CodeValue::Table(t) => {
+                    match usize::try_from(at(c.field)).ok().and_then(|i| t.get(i)) {
+                        Some(v) => i64::from(*v),
+                        None => return Err(crate::ew::EW_DATA),
+                    }
+                }
+            };
+            if c.negate && value.is_some_and(|e| e > 0 && e % 2 == 0) {
+                v = -v;
+            }
+            rec[usize::from(c.field)] = v;
+        }
+        Ok(())
+    }
+    fn check_refusal(&self, args: &[i32], s16: bool, s15: bool, option: bool) -> Option<i16> {
         let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
         for c in self.checks {
             let bad = match c.arg {

@@ -258,3 +258,18 @@ pub struct ODB3DHDL {
     pub axes: [c_short; 5],
     pub data: [LONG; 5],
 }
+
+/// cnc_sdtsetchnl: one servo data sampling channel: `type` the datum
+/// sampled (0..37 of an axis, 0..12 of a spindle, `axis` -1), `chno` the
+/// channel (1..8), `axis` the axis (-1 a spindle; 1..the path's axes on
+/// the 30i class, 1..8, 11..18, 21..28, -2 or -3 on the 16i class),
+/// `shift` 0..15 (sent as `0x0c | shift << 4`; a signed `char` is read
+/// as FANUC's x86 library reads it, sign-extended).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IDBSDTCHAN {
+    pub r#type: c_short,
+    pub chno: c_char,
+    pub axis: c_char,
+    pub shift: std::os::raw::c_ushort,
+}

@@ -467,6 +467,9 @@ rust_layouts! {
     ODBCMD { adrs, num, flag, cmd_val, dec_val }
     ODB3DHDL { axes, data }
 
+    // --- servo data sampling (issue 24) ---
+    IDBSDTCHAN { r#type, chno, axis, shift }
+
     // --- P-code macros and settings (issue 24) ---
     ODBPM { datano, dummy, mcr_val, dec_val }
     ODBPMINF2 { use_no1, use_no2, use_no20, v1_type, v2_type, v20_type }

@@ -808,6 +808,52 @@ const WORDS: &[Word] = &[
         after: &["sdtread1shot", "sdtstartsmpl 0 8", "sdtread1shot"],
         ..w("sdtclrchnl", &[])
     },
+    // cnc_sdtsetchnl: parameter 1023 read first, each channel checked, then
+    // set (read back by cnc_sdtread1shot); `n`, `cycle` and each member's
+    // edges (type by axis or spindle, chno, axis, shift).
+    Word {
+        after: &["sdtread1shot"],
+        ..wc(
+            "sdtsetchnl",
+            &[],
+            &[
+                "2 8 hex:000001010000030002020500",
+                "1 8 hex:000001010000",
+                "3 100 hex:000001010000010002020f00020003030100",
+                "1 -1 hex:250001030000",
+                "1 65536 hex:0c0004ff0000",
+                "1 2147483647 hex:0d0001ff0000",
+                "1 8 hex:260001010000",
+                "1 8 hex:ffff01010000",
+                "1 8 hex:000000010000",
+                "1 8 hex:000009010000",
+                "1 8 hex:000008020000",
+                "1 8 hex:000001000000",
+                "1 8 hex:000001fe0000",
+                "1 8 hex:000001040000",
+                "1 8 hex:000001200000",
+                "1 8 hex:000001210000",
+                "1 8 hex:000001011000",
+                "1 8 hex:00000101ffff",
+                "2 8 hex:000001010000000002050000",
+                "0 8 hex:010002020000",
+                "-1 8 hex:010002020000",
+                "9 8 hex:010002020000010002020000010002020000010002020000010002020000010002020000010002020000010002020000010002020000",
+                "1 7 hex:000001010000",
+                "1 0 hex:000001010000",
+                "1 -2 hex:000001010000",
+                "8 8 hex:000001010000010002020100020003030200030004010300040005020400050006030500060007010600070008020700",
+                "2 9 hex:050001ff03001e0002020400",
+                // The 16i class's axes 12 and 22 (which axis's parameter
+                // 1023 signs the code), -3, and a second channel refused
+                // there after the first's parameter read.
+                "1 8 hex:0300010c0000",
+                "1 8 hex:030001160000",
+                "1 8 hex:000001fd0000",
+                "2 8 hex:000001010000000002090000",
+            ],
+        )
+    },
     Word {
         after: &["sdtread1shot", "sdtcancelsmpl", "sdtendsmpl"],
         ..w(

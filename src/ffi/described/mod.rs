@@ -213,7 +213,10 @@ pub(crate) unsafe fn exec(
         h.call(&Prelude { cmd: fr.cmd })?;
     }
     let option = h.pair.info.option & 1 == 1;
-    if let Some(code) = f.refusal(args, class.0, class.1, option) {
+    if let Some((code, detail)) = f.refusal_detail(args, class.0, class.1, option) {
+        if let Some(d) = detail {
+            h.set_detail(d);
+        }
         return Err(Error::local(code, "argument out of range"));
     }
     outs_set()?;
@@ -307,6 +310,10 @@ pub(crate) unsafe fn exec(
             n,
         ),
     };
+    let mut payload = payload;
+    if !f.rules.is_empty() || !f.each.is_empty() || !f.codes.is_empty() {
+        records::prepare(f, &h, args, &mut payload, class)?;
+    }
     let late = std::sync::Mutex::new(None);
     let call = Described {
         f,
@@ -404,6 +411,7 @@ pub(crate) unsafe fn exec(
 mod at;
 mod block;
 mod pages;
+mod records;
 
 use at::write_fields;
 pub(crate) use at::{PayloadAt, RecordsAt};

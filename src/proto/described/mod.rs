@@ -70,6 +70,48 @@ impl Call for Prelude {
     }
 }
 
+/// The exchange FANUC's library makes for a payload record before the
+/// request ([`crate::spec::Each`]): its one subpacket, no payload; the
+/// answer's payload.
+pub struct EachCall {
+    pub each: &'static crate::spec::Each,
+    /// The record's key field's integer.
+    pub key: i64,
+}
+
+impl Call for EachCall {
+    type Output = Vec<u8>;
+    fn request(&self, _cx: &Ctx) -> Vec<ReqSub> {
+        let mut words = [0i32; 5];
+        for (w, v) in words.iter_mut().zip(self.each.words) {
+            *w = *v;
+        }
+        let mut s = ReqSub::cnc(self.each.cmd, &words);
+        if self.each.tens {
+            s.path = (1 + self.key / 10) as u16;
+        }
+        vec![s]
+    }
+    fn decode(&self, _cx: &Ctx, resp: &[RespSub]) -> Result<Vec<u8>> {
+        Ok(sub(resp, 0)?.payload.clone())
+    }
+}
+
+/// A record's value in its [`EachCall`] answer `p` (`key`: the record's
+/// key field), as [`crate::spec::Each::value`] places it; None without one.
+pub fn each_value(e: &crate::spec::Each, p: &[u8], key: i64) -> Option<i64> {
+    let (at, stride, c) = e.value?;
+    let i = usize::try_from(if e.tens { key % 10 } else { key } - 1).ok()?;
+    let at = usize::from(at) + usize::from(stride) * i;
+    let b = |k: usize| p.get(at + k).copied().unwrap_or(0);
+    let v = match c.size() {
+        1 => i64::from(b(0)),
+        2 => i64::from(u16::from_be_bytes([b(0), b(1)])),
+        _ => i64::from(u32::from_be_bytes([b(0), b(1), b(2), b(3)])),
+    };
+    Some(c.cut(v))
+}
+
 impl Call for Described<'_> {
     /// The reply's integers, in layout order (each field's `n` elements).
     type Output = Vec<i64>;

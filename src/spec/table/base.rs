@@ -32,6 +32,9 @@ pub const COMMAND: Func = Func {
     pages: None,
     ends: &[],
     first: None,
+    rules: &[],
+    each: &[],
+    codes: &[],
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -72,4 +75,7 @@ pub const SERVO_LONGS: Func = Func {
     pages: None,
     ends: &[],
     first: None,
+    rules: &[],
+    each: &[],
+    codes: &[],
 };

@@ -2,7 +2,7 @@
 //! the .so, compared with the simulator's servo state.
 
 use super::run_c_test;
-use fwlib32::ew::{EW_DATA, EW_OK};
+use fwlib32::ew::{EW_DATA, EW_NUMBER, EW_OK};
 use fwlib32::sim::Profile;
 use fwlib32::sim::profile::DEFAULT_PROFILE;
 use fwlib32::sim::profile::Datum;
@@ -10,13 +10,24 @@ use fwlib32::sim::profile::Datum;
 /// The default profile with path 1 idle (no program in cycle: the servo
 /// state stays as the profile puts it) and the X axis's motor turning.
 fn idle() -> Profile {
+    idle_as("class = \"30i\"")
+}
+
+/// [`idle`] with the `[cnc]` class line replaced by `class`.
+fn idle_as(class: &str) -> Profile {
+    let line = "class = \"30i\"";
+    assert!(
+        DEFAULT_PROFILE.contains(line),
+        "the default profile's class moved"
+    );
+    let text = DEFAULT_PROFILE.replacen(line, class, 1);
     let cycle = "program = 1234           # O number in cycle (0 = idle)";
     let load = "servo_load = 18          # servo load meter, % (cnc_rdsvmeter)";
     assert!(
         DEFAULT_PROFILE.contains(cycle) && DEFAULT_PROFILE.contains(load),
         "the default profile's cycle or X axis moved"
     );
-    let text = DEFAULT_PROFILE
+    let text = text
         .replace(cycle, "program = 0")
         .replace(load, "servo_load = 18\nservo_speed = 1500");
     Profile::parse(&text).expect("profile")
@@ -31,7 +42,35 @@ const FILL16: i64 = 0x5a5a;
 
 #[test]
 fn channels_read_the_servo_state_and_clear() {
-    let p = idle();
+    channels_follow_the_servo_state(idle());
+}
+
+/// The same on a 16i (cnc_sdtsetchnl reads parameter 1023 with 0x000e,
+/// 4-byte values, and refuses `cycle` -1 as a 30i would not).
+#[test]
+fn channels_read_the_servo_state_on_a_16i() {
+    let p = idle_as("class = \"16i\"");
+    assert_eq!(p.cnc.class, fwlib32::sim::profile::Class::Series16);
+    channels_follow_the_servo_state(p);
+}
+
+/// The same on a Series 15 (the 16i class's parameter read, which no
+/// Series 15 form of cnc_rdparam sends, answered as a 16i answers it).
+#[test]
+fn channels_read_the_servo_state_on_a_series_15() {
+    let p = idle_as("class = \"16i\"\nkind = 2");
+    assert_eq!(p.cnc.kind, 2);
+    channels_follow_the_servo_state(p);
+}
+
+/// The servo parameter 1023 of `axis` (1-based) in the profile.
+fn servo_axis_number(p: &Profile, axis: usize) -> i32 {
+    let e = p.param.parameters.iter().find(|e| e.number == 1023);
+    let e = e.expect("the profile sets parameter 1023");
+    e.values[axis - 1]
+}
+
+fn channels_follow_the_servo_state(p: Profile) {
     let path = &p.paths[0];
     let channels = &path.sample_channels;
     assert!(
@@ -50,6 +89,7 @@ fn channels_read_the_servo_state_and_clear() {
                     let rated = a.rated_current.unwrap_or(10.0);
                     (rated * 10.0 * f64::from(a.servo_load) / 100.0).round() as i64
                 }
+                Datum::Other => 0,
             };
             i64::from(v as u16)
         })
@@ -78,4 +118,48 @@ fn channels_read_the_servo_state_and_clear() {
     assert_eq!(kv["start_cleared"], EW_DATA.to_string());
     assert_eq!(kv["end_cleared"], ok);
     assert_eq!(kv["null"], EW_DATA.to_string());
+
+    // cnc_sdtsetchnl: channel 1 samples Y's figure of code 4, channel 2
+    // X's of code 5 (the profile's `sample_code` list), channel 3 a
+    // spindle (not modelled: 0).
+    let datum = |code: i16| {
+        let c = path.sample_codes.iter().find(|c| c.code == code);
+        c.expect("the profile names codes 4 and 5").datum
+    };
+    let figure = |axis: usize, d: Datum| {
+        let a = &path.axes[axis - 1];
+        match d {
+            Datum::Speed => i64::from(a.servo_speed as u16),
+            Datum::Load => i64::from(a.servo_load as u16),
+            _ => panic!("the test expects speed or load for codes 4 and 5"),
+        }
+    };
+    // Y's servo axis number is even (its code goes negated, which the
+    // simulator reads by magnitude), X's odd; Y's load is not 0.
+    assert_eq!(servo_axis_number(&p, 2) % 2, 0);
+    assert_eq!(servo_axis_number(&p, 1) % 2, 1);
+    assert_ne!(figure(2, Datum::Load), 0);
+    let mut set = vec![figure(2, datum(4)), figure(1, datum(5)), 0];
+    assert_eq!(set[1], 1500, "channel 2 samples the X axis's speed");
+    set.resize(8, 0);
+    set.push(FILL16);
+    assert_eq!(kv["set"], ok);
+    assert_eq!(ints(&kv["set_shot"]), set);
+    for k in [
+        "bad_type",
+        "bad_spindle",
+        "bad_chno",
+        "bad_cycle",
+        "null_chan",
+    ] {
+        assert_eq!(kv[k], EW_DATA.to_string(), "{k}");
+    }
+    assert_eq!(kv["bad_n"], EW_NUMBER.to_string());
+    // The refused calls changed nothing; the channels set start sampling.
+    assert_eq!(ints(&kv["refused_shot"]), set);
+    assert_eq!(kv["start_set"], ok);
+    // `cycle` -1: a 30i takes it, the 16i class refuses it (nothing set).
+    let is16 = p.cnc.class == fwlib32::sim::profile::Class::Series16;
+    let want = if is16 { EW_DATA } else { EW_OK };
+    assert_eq!(kv["cycle_m1"], want.to_string());
 }
