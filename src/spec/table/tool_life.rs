@@ -95,7 +95,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the work coordinate shift of axis `axis` (-1: all axes) into `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else EW_LENGTH after the reply).",
         params: &[
             Param::Short("axis"),
-            Param::Short("length"),
+            Param::ShortAs("length", U16),
             Param::Out("shift", "IODBWCSF"),
         ],
         checks: &[Check {
