@@ -631,7 +631,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
                         // `room` bytes, none written past them.
                         (Some(r), None) if usize::from(r.out) == i && r.room.is_some() => {
                             let k = r.room.and_then(|k| f.numbers().nth(usize::from(k))).unwrap_or("?");
-                            format!("/// `{n}` must be NULL or point to `{k}` writable bytes (at most one {}; nothing is written past `{k}` bytes).", doc_type(t))
+                            format!("/// `{n}` must be NULL or point to `{k}` writable bytes (nothing is written past them).")
                         }
                         _ => match text_buf(t).map(|size| format!("/// `{n}` must be NULL or point to {size} writable bytes.")).or_else(|| fixed_array(f, i, t).map(|k| format!(
                                 "/// `{n}` must be NULL or point to {} writable bytes: {k} `{t}`s.",

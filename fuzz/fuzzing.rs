@@ -293,10 +293,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(pt::tlctl(), cx, r),
     },
     Decoder {
-        names: &["cnc_rdgrpinfo"],
-        run: |cx, a, r| go(pt::grpinfo(a[0] as i16, a[1] as i16), cx, r),
-    },
-    Decoder {
         names: &["cnc_wrgrpinfo"],
         run: |cx, a, r| {
             let g = pt::GroupWrite {

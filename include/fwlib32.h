@@ -2663,12 +2663,9 @@ extern "C" {
  = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_absolute(unsigned short FlibHndl,
-                   short axis,
-                   short length,
-                   struct ODBAXIS *buf);
+short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Reads the absolute position (second form) of axis `axis` (1..) or of
@@ -2679,12 +2676,9 @@ short cnc_absolute(unsigned short FlibHndl,
  writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_absolute2(unsigned short FlibHndl,
-                    short axis,
-                    short length,
-                    struct ODBAXIS *buf);
+short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Reads the acceleration/deceleration delay of axis `axis` (1..) or of
@@ -2695,12 +2689,9 @@ short cnc_absolute2(unsigned short FlibHndl,
  writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_accdecdly(unsigned short FlibHndl,
-                    short axis,
-                    short length,
-                    struct ODBAXIS *buf);
+short cnc_accdecdly(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Reads the actual feed rate (F).
@@ -2875,12 +2866,9 @@ short cnc_diagnoss(unsigned short FlibHndl,
  `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_distance(unsigned short FlibHndl,
-                   short axis,
-                   short length,
-                   struct ODBAXIS *buf);
+short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Sends `number` (0..40959) bytes of the DNC program (the first call
@@ -3072,12 +3060,9 @@ short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
  = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_machine(unsigned short FlibHndl,
-                  short axis,
-                  short length,
-                  struct ODBAXIS *buf);
+short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
@@ -3586,15 +3571,16 @@ short cnc_rdfromspindleid(unsigned short FlibHndl, short sp_no, struct ODBCSPID 
 short cnc_rdgrpid2(unsigned short FlibHndl, long tno, struct ODBTLIFE5 *tlife);
 
 /*
- Reads tool life groups `s_grp..=e_grp` (at most 44 per call): for each,
- its number of tools, life, life counter and counter type; `e_grp` is
- written back as the last group the CNC answered. `s_grp` below 1 or
- `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must
- hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH
- with nothing written (checked after the answer, as FANUC's library).
+ Reads tool life groups `s_grp..=e_grp` (at most 44 per call: the request
+ asks `s_grp + 43` at most): for each, its number of tools, life, life
+ counter and counter type; `e_grp` is written back as the last group the
+ CNC answered. `s_grp` below 1 or `e_grp` below it: EW_NUMBER without
+ traffic; `length` (bytes) must hold the 8-byte head and 16 bytes per
+ group answered, else EW_LENGTH with nothing written (checked after the
+ answer and compared signed, as FANUC's library).
 
  # Safety
- `grpinfo` must point to `length` writable bytes.
+ `grpinfo` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_rdgrpinfo(unsigned short FlibHndl,
                     short s_grp,
@@ -4262,7 +4248,7 @@ short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
  `dummy` is left as it was.
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one IODBPR; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_rdpmacror(unsigned short FlibHndl,
                     long s_no,
@@ -4879,12 +4865,9 @@ short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
  EW_LENGTH after the reply).
 
  # Safety
- `shift` must be NULL or point to `length` writable bytes (at most one IODBWCSF; nothing is written past `length` bytes).
+ `shift` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_rdwkcdshft(unsigned short FlibHndl,
-                     short axis,
-                     short length,
-                     struct IODBWCSF *shift);
+short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct IODBWCSF *shift);
 
 /*
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
@@ -4977,12 +4960,9 @@ short cnc_regtool_f2(unsigned short FlibHndl, short top, short *num, struct IODB
  = `axis` and the records' values (an empty answer writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_relative(unsigned short FlibHndl,
-                   short axis,
-                   short length,
-                   struct ODBAXIS *buf);
+short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Reads the relative position (second form) of axis `axis` (1..) or of
@@ -4993,12 +4973,9 @@ short cnc_relative(unsigned short FlibHndl,
  writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_relative2(unsigned short FlibHndl,
-                    short axis,
-                    short length,
-                    struct ODBAXIS *buf);
+short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Renumbers program `old_num` as `new_num`.
@@ -5114,12 +5091,9 @@ short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
  (an empty answer writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_skip(unsigned short FlibHndl,
-               short axis,
-               short length,
-               struct ODBAXIS *buf);
+short cnc_skip(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Reads the servo delay (position deviation) of axis `axis` (1..) or of
@@ -5130,12 +5104,9 @@ short cnc_skip(unsigned short FlibHndl,
  writes `type` alone).
 
  # Safety
- `buf` must be NULL or point to `length` writable bytes (at most one ODBAXIS; nothing is written past `length` bytes).
+ `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
-short cnc_srvdelay(unsigned short FlibHndl,
-                   short axis,
-                   short length,
-                   struct ODBAXIS *buf);
+short cnc_srvdelay(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
  Cycle start: the CNC runs the selected main program (MEMORY mode, no

@@ -78,7 +78,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_sysinfo", "cnc_sysinfo_ex", "cnc_statinfo", "cnc_statinfo2",
     ]),
     ("tool", &[
-        "cnc_rdtoolgrp", "cnc_rdtlctldata", "cnc_instlifedt", "cnc_rdgrpinfo", "cnc_wrgrpinfo",
+        "cnc_rdtoolgrp", "cnc_rdtlctldata", "cnc_instlifedt", "cnc_wrgrpinfo",
         "cnc_rdtlusegrp", "cnc_rdtool", "cnc_rdtooldata", "cnc_rdtoolinfo",
     ]),
     ("upload", &[

@@ -3,13 +3,13 @@
 //! Recorded from FANUC's library against a fake CNC (src/proto/tool.rs);
 //! outputs written field by field at their l32 offsets, only on success.
 
-use super::{element, ffi_boundary, ffi_read, len_of, nonnull, put, put_at, put_member};
+use super::{element, ffi_boundary, len_of, nonnull, put, put_at, put_member};
 use crate::client::handles;
 use crate::error::Error;
 use crate::ew::{EW_FUNC, EW_NUMBER};
+use crate::proto::tool::wrgrpinfo as wrgrpinfo_call;
 use crate::proto::tool::{GROUPS_PER_WRITE, GroupWrite, MNG_WORDS, OptGroups, RdTool, usegrp};
 use crate::proto::tool::{PunchData, PunchInfo};
-use crate::proto::tool::{grpinfo as grpinfo_call, wrgrpinfo as wrgrpinfo_call};
 use crate::proto::tool::{tlctl as tlctl_call, tlgroup, tlinsert, tltools};
 use crate::types::{
     IDBITD, IODBTGI, IODBTGI_DATA, IODBTLCTL, IODBTLDT, IODBTLMNG, ODBPTLINF, ODBTG, ODBTG_DATA,
@@ -126,54 +126,6 @@ pub unsafe extern "C" fn cnc_instlifedt(FlibHndl: c_ushort, tool: *mut IDBITD) -
         let h = handles::get(FlibHndl)?;
         let t = unsafe { nonnull(tool)?.read_unaligned() };
         h.call(&tlinsert(t.datano, t.r#type, t.data))?;
-        Ok(())
-    })
-}
-
-/// Reads tool life groups `s_grp..=e_grp` (at most 44 per call): for each,
-/// its number of tools, life, life counter and counter type; `e_grp` is
-/// written back as the last group the CNC answered. `s_grp` below 1 or
-/// `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must
-/// hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH
-/// with nothing written (checked after the answer, as FANUC's library).
-///
-/// # Safety
-/// `grpinfo` must point to `length` writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdgrpinfo(
-    FlibHndl: c_ushort,
-    s_grp: c_short,
-    e_grp: c_short,
-    length: c_short,
-    grpinfo: *mut IODBTGI,
-) -> c_short {
-    ffi_read!("cnc_rdgrpinfo", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(grpinfo)?.cast::<u8>();
-        if s_grp < 1 || e_grp < s_grp {
-            return Err(Error::local(EW_NUMBER, "bad group range"));
-        }
-        let r = h.call(&grpinfo_call(s_grp, e_grp))?;
-        let n = r.groups.len();
-        if offset_of!(IODBTGI, data) + size_of::<IODBTGI_DATA>() * n > len_of(length) {
-            return Err(Error::length());
-        }
-        unsafe {
-            put_member!(out, IODBTGI, s_grp, s_grp);
-            put_member!(
-                out,
-                IODBTGI,
-                e_grp,
-                (i32::from(s_grp) + n as i32 - 1) as c_short
-            );
-            for (i, g) in r.groups.iter().enumerate() {
-                let o = element!(out, IODBTGI, data[i]);
-                put_member!(o, IODBTGI_DATA, n_tool, g.ntool);
-                put_member!(o, IODBTGI_DATA, count_value, g.life);
-                put_member!(o, IODBTGI_DATA, counter, g.count);
-                put_member!(o, IODBTGI_DATA, count_type, g.count_type);
-            }
-        }
         Ok(())
     })
 }

@@ -375,10 +375,6 @@ mod tests {
             "one command, three functions: the record's form follows the code word",
         ),
         (
-            (CLASS_CNC, crate::proto::tool::TLGROUP),
-            "the group records cnc_rdgrpinfo reads; three functions read a part of them",
-        ),
-        (
             (CLASS_CNC, crate::proto::tool::TLUSEGRP),
             "the groups in use and their optional groups (cnc_rdtlusegrp); cnc_rdusegrpid reads the first three",
         ),

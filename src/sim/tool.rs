@@ -21,9 +21,27 @@ const T_CODE: i32 = crate::proto::program::AUX_ORDER[8];
 const LENGTH: CncError = CncError::new(ew::EW_LENGTH);
 
 pub(super) const ROUTES: &[Route] = &[
-    // [s, e]: tool life group records (s = e: one group).
-    Route::cnc(TLGROUP, |m, q| {
-        enc(m.tl_groups(q.path, q.args[0], q.args[1]))
+    // [s, e]: tool life group records (s = e: one group), cnc_rdgrpinfo's
+    // layout (`s_grp`, `e_grp` not sent; the first group's number, then
+    // the records), of which cnc_rdlife, cnc_rdcount and cnc_rdntool read
+    // the first group.
+    Route::table(TLGROUP, |m, q| {
+        let r = m.tl_groups(q.path, q.words[0], q.words[1])?;
+        let mut v = vec![0, 0, i64::from(r.first)];
+        for g in &r.groups {
+            let w = [
+                g.ntool,
+                g.w1,
+                g.life,
+                g.count_type,
+                g.count,
+                g.w5,
+                g.opt_grp,
+                g.w7,
+            ];
+            v.extend(w.map(i64::from));
+        }
+        Ok(v)
     }),
     // [grp, s, e]: tools s..=e of a group.
     Route::cnc(TLTOOLS, |m, q| {

@@ -121,8 +121,8 @@ commands! {
     ACTS = CLASS_CNC 0x0025 [cnc_acts cnc_rddynamic2 cnc_rddynamic cnc_rdspeed];
     /// Axis positions: args [type code, axis]; value records.
     POSITION = CLASS_CNC 0x0026 [cnc_absolute cnc_absolute2 cnc_machine cnc_relative
-        cnc_relative2 cnc_distance cnc_rddynamic2 cnc_rddynamic cnc_rdposition cnc_rdaxisdata
-        cnc_rdprstrinfo];
+        cnc_relative2 cnc_distance cnc_skip cnc_srvdelay cnc_accdecdly cnc_rddynamic2
+        cnc_rddynamic cnc_rdposition cnc_rdaxisdata cnc_rdprstrinfo];
     /// cnc_rdpmacroinfo: (1,0x002f) the P-code macro variables' counts and type.
     RDPMACROINFO = CLASS_CNC 0x002f [cnc_rdpmacroinfo];
     /// cnc_rdpmacro: (1,0x002d)[s, e] P-code macro variables s..e, one

@@ -127,8 +127,10 @@ pub struct Records {
     /// goes to, if any.
     pub count: Option<&'static str>,
     /// Number parameter `room` is the caller's size of output `out` in
-    /// bytes (read as an unsigned short): records ending past it are
-    /// EW_LENGTH with nothing written, checked after the reply.
+    /// bytes, its value as the parameter gives it (negative: no room; a
+    /// `short` FANUC's library reads unsigned is a
+    /// [`Param::ShortAs`](super::Param::ShortAs)`(_, U16)`): records ending
+    /// past it are EW_LENGTH with nothing written, checked after the reply.
     pub room: Option<u8>,
 }
 

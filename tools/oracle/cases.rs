@@ -90,6 +90,22 @@ fn copy(x: &Word) -> Word {
 /// Explicit combinations of described functions' arguments (run on every
 /// class, Series 15 included, where the dimensions' variations are not).
 const COMBOS: &[(&str, &[&str])] = &[
+    (
+        "rdgrpinfo",
+        &[
+            "1 9999 1000",
+            "2 9999 1000",
+            "1 44 1000",
+            "1 45 1000",
+            "3 3 88",
+            "2 1 88",
+            "1 2 71",
+            "1 2 72",
+            "1 2 39",
+            "1 2 40",
+            "1 2 56",
+        ],
+    ),
     ("accdecdly", &["-1 132", "-1 20", "2 8"]),
     ("srvdelay", &["-1 132", "-1 20", "2 8"]),
     ("skip", &["-1 132", "-1 20", "2 8"]),
@@ -686,23 +702,6 @@ const WORDS: &[Word] = &[
     w("rdtoolgrp", &["1|0|-1|2|9999", "120|8|0|-1|1000"]),
     w("rdtlctldata", &[]),
     // Tool life groups, tool management and punch-press tool data (tool branch).
-    wc(
-        "rdgrpinfo",
-        &["1|0|-1|2|3|9999", "2|1|0|-1|3|9999", "88|0|-1|8|24|40|1000"],
-        &[
-            "1 9999 1000",
-            "2 9999 1000",
-            "1 44 1000",
-            "1 45 1000",
-            "3 3 88",
-            "2 1 88",
-            "1 2 71",
-            "1 2 72",
-            "1 2 39",
-            "1 2 40",
-            "1 2 56",
-        ],
-    ),
     Word {
         after: &["rdgrpinfo 1 2 40"],
         writes: true,

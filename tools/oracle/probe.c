@@ -459,7 +459,6 @@ static short w_callx(void) {
     WORD(wrwkcdshft, { fill_hex(b0, 2); return F(cnc_wrwkcdshft)(H, N(1), B0); })                 \
     WORD(rdtoolgrp, return F(cnc_rdtoolgrp)(H, N(1), N(2), B0))                                   \
     WORD(rdtlctldata, return F(cnc_rdtlctldata)(H, B0))                                           \
-    WORD(rdgrpinfo, return F(cnc_rdgrpinfo)(H, N(1), N(2), N(3), B0))                             \
     WORD(wrgrpinfo, { fill_hex(b0, 2); return F(cnc_wrgrpinfo)(H, N(1), B0); })                   \
     WORD(rdtlusegrp, return F(cnc_rdtlusegrp)(H, B0))                                             \
     WORD(rdtool, SHORT_IO(num, 2, F(cnc_rdtool)(H, N(1), &num, B0)))                              \

@@ -335,7 +335,7 @@ pub(crate) unsafe fn exec(
         let n = values.len().saturating_sub(fixed) / r.values().max(1);
         let room = r
             .room
-            .map_or(0, |a| usize::from(args[usize::from(a)] as u16));
+            .map_or(0, |a| usize::try_from(args[usize::from(a)]).unwrap_or(0));
         if rec.base + n * rec.stride > room {
             return Err(Error::length());
         }

@@ -185,7 +185,7 @@ pub const FUNCS: &[Func] = &[
         params: &[
             Param::Long("s_no"),
             Param::Long("e_no"),
-            Param::Short("length"),
+            Param::ShortAs("length", U16),
             Param::Out("buf", "IODBPR"),
         ],
         checks: &[ordered(0, 1)],

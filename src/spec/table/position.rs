@@ -14,7 +14,8 @@ use crate::ew::EW_ATTRIB;
 const AXIS_VALUES: Func = Func {
     params: &[
         Param::Short("axis"),
-        Param::Short("length"),
+        // Read unsigned: -1 is 65535 bytes.
+        Param::ShortAs("length", U16),
         Param::Out("buf", "ODBAXIS"),
     ],
     checks: &[Check {

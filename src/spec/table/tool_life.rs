@@ -4,7 +4,7 @@ use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
-use crate::ew::EW_ATTRIB;
+use crate::ew::{EW_ATTRIB, EW_NUMBER};
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -95,7 +95,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the work coordinate shift of axis `axis` (-1: all axes) into `data` (`type` = `axis`; `length` must hold 4 bytes and the axes, else EW_LENGTH after the reply).",
         params: &[
             Param::Short("axis"),
-            Param::Short("length"),
+            Param::ShortAs("length", U16),
             Param::Out("shift", "IODBWCSF"),
         ],
         checks: &[Check {
@@ -116,6 +116,51 @@ pub const FUNCS: &[Func] = &[
             room: Some(1),
         }),
         dims: &["1|-1|0|2|3|4|32|33|-2", "8|4|7|12|0|-1|132|136"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdgrpinfo",
+        doc: "Reads tool life groups `s_grp..=e_grp` (at most 44 per call: the request asks `s_grp + 43` at most): for each, its number of tools, life, life counter and counter type; `e_grp` is written back as the last group the CNC answered. `s_grp` below 1 or `e_grp` below it: EW_NUMBER without traffic; `length` (bytes) must hold the 8-byte head and 16 bytes per group answered, else EW_LENGTH with nothing written (checked after the answer and compared signed, as FANUC's library).",
+        params: &[
+            Param::Short("s_grp"),
+            Param::Short("e_grp"),
+            Param::Short("length"),
+            Param::Out("grpinfo", "IODBTGI"),
+        ],
+        checks: &[
+            Check {
+                arg: 0,
+                lo: 1,
+                hi: i32::MAX,
+                code: EW_NUMBER,
+            },
+            ordered(0, 1),
+        ],
+        forms: &[every_class(
+            cmd::TLGROUP,
+            &[Word::Arg(0), Word::Upto(0, 1, 43)],
+        )],
+        // The first group's number (not read), then 32-byte group records.
+        reply: &[echo(0, "s_grp", I16), last("e_grp", I16), skip(I32)],
+        records: Some(Records {
+            fields: &[
+                to(I32, "n_tool", I32),
+                skip(I32),
+                to(I32, "count_value", I32),
+                to(I32, "count_type", I32),
+                to(I32, "counter", I32),
+                skip(I32),
+                skip(I32),
+                skip(I32),
+            ],
+            out: 0,
+            to: "data",
+            elem: "IODBTGI_DATA",
+            max: 44,
+            count: None,
+            room: Some(2),
+        }),
+        dims: &["1|0|-1|2|3|9999", "2|1|0|-1|3|9999", "88|0|-1|8|24|40|1000"],
         ..COMMAND
     },
     // Base cases on group 2 (cnc_rdlife and others read group 1).
