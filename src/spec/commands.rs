@@ -130,7 +130,7 @@ commands! {
     RDPMACRO = CLASS_CNC 0x002d [cnc_rdpmacro cnc_rdpmacror];
     /// cnc_wrpmacro: (1,0x002e)[s, e, 0, 0, 8] + one value record per
     /// variable s..e.
-    WRPMACRO = CLASS_CNC 0x002e [cnc_wrpmacro];
+    WRPMACRO = CLASS_CNC 0x002e [cnc_wrpmacro cnc_wrpmacror];
     /// cnc_rdpmacroinfo2: (1,0x00e7) the P-code macro variables' counts
     /// and types (three ranges).
     RDPMACROINFO2 = CLASS_CNC 0x00e7 [cnc_rdpmacroinfo2];

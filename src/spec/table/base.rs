@@ -32,6 +32,7 @@ pub const COMMAND: Func = Func {
     pages: None,
     ends: &[],
     first: None,
+    payload_in: "",
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -72,4 +73,5 @@ pub const SERVO_LONGS: Func = Func {
     pages: None,
     ends: &[],
     first: None,
+    payload_in: "",
 };
