@@ -4201,12 +4201,15 @@ short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
 /*
  Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8
  bytes each: at most to the end of `s_no`'s range (#99, #499, #999,
- #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) and at
- most 179 (the request stops at `s_no` + 178); `s_no` after `e_no` is
- EW_NUMBER before any traffic, and so is, on the 16i class, an `e_no`
- past a `s_no` of #1000..#9999 or below 0; every record answered must fit
- in `length` (12 + 8 · records, after the reply), else EW_LENGTH,
- nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
+ #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) 179 a
+ request (a request stops at its start + 178; an answer of 179 records
+ asks again from the next number while the range goes on, an error answer
+ after the first ends the read with the records before it); `s_no` after
+ `e_no` is EW_NUMBER before any traffic, and so is, on the 16i class, an
+ `e_no` past a `s_no` of #1000..#9999, from #5000000 on or below 0; every
+ record answered must fit in `length` (10 + 8 · records, after each
+ answer), else EW_LENGTH, the earlier answers' records written, the rest
+ of `buf` not; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
  `dummy` is left as it was.
 
  # Safety

@@ -342,7 +342,17 @@ pub(crate) unsafe fn exec(
     // The lookups' integers follow the reply's (decode).
     let looked: usize = f.lookups.iter().map(|l| l.values()).sum();
     let looked = values.split_off(values.len().saturating_sub(looked));
-    if let Some(r) = f.records.as_ref().filter(|r| r.room.is_some()) {
+    // A range read cut per answer (Word::Upto): it reads on.
+    let upto = form.words.iter().find_map(|w| match *w {
+        crate::spec::Word::Upto(s, e, n) => Some((s, e, n)),
+        _ => None,
+    });
+    if let Some(u) = upto.filter(|_| f.records.is_some()) {
+        // SAFETY: the caller's contract, as for the rest of exec.
+        // A batch (one exchange a call) reads the first answer alone.
+        let once = batching;
+        unsafe { read_on(f, &h, args, &mut values, u, (class, once), &rec, outs) }?;
+    } else if let Some(r) = f.records.as_ref().filter(|r| r.room.is_some()) {
         let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
         let n = values.len().saturating_sub(fixed) / r.values().max(1);
         let room = r
@@ -427,6 +437,6 @@ mod pages;
 use at::write_fields;
 pub(crate) use at::{PayloadAt, RecordsAt};
 use block::{block, range};
-use pages::{pages, span_pages};
+use pages::{pages, read_on, span_pages};
 
 include!(concat!(env!("OUT_DIR"), "/described.rs"));

@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_FUNC};
 use crate::ffi::put;
 use crate::proto::described::{Described, payload_values};
-use crate::spec::{Func, Int, PLACES};
+use crate::spec::{End, Func, Int, LAST, PLACES};
 use std::os::raw::c_short;
 
 /// The exchanges of a paging function ([`Func::pages`]): each request
@@ -210,6 +210,89 @@ pub(crate) unsafe fn span_pages(
         };
         h.call(&call)?;
         done += k;
+    }
+    Ok(())
+}
+
+/// The further answers of a range read cut per answer
+/// ([`crate::spec::Word::Upto`]`(s, e, n)`, cnc_rdpmacror), as FANUC's
+/// library reads them: while an answer holds `n + 1` records (the most a
+/// request asks for) and the range (its end cut to the end of its start's
+/// range, [`Func::ends`]) goes on, it asks again from the number after
+/// them; their records are appended to `values` and the `LAST` field
+/// moved on. After each answer the records so far must fit the room
+/// ([`crate::spec::Records::room`]), counted from 2 bytes before their
+/// array (FANUC's library takes IODBPR's head as 10 bytes: `10 + 8 ·
+/// records`): else EW_LENGTH, the earlier answers' records written (not
+/// the reply's fields). A CNC's error answer after the first ends the
+/// read: EW_OK with the records before it. `once`: the first answer
+/// alone (a batch's one exchange).
+///
+/// # Safety
+/// As [`exec`](super::exec): the records' output holds `room` bytes.
+#[allow(clippy::too_many_arguments)]
+pub(crate) unsafe fn read_on(
+    f: &'static Func,
+    h: &handles::Handle,
+    args: &[i32],
+    values: &mut Vec<i64>,
+    (si, ei, n): (u8, u8, i32),
+    (class, once): ((bool, bool), bool),
+    rec: &RecordsAt<'_>,
+    outs: &[*mut u8],
+) -> Result<()> {
+    let Some(r) = f.records else {
+        return Ok(());
+    };
+    let per = r.values().max(1);
+    let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
+    let room = r
+        .room
+        .map_or(usize::MAX, |a| usize::from(args[usize::from(a)] as u16));
+    let head = rec.base.saturating_sub(2);
+    let fits = |k: usize| head + k * rec.stride <= room;
+    let at = |i: u8| args.get(usize::from(i)).copied().unwrap_or(0);
+    let (s, e) = (at(si), at(ei));
+    let end = match f.end_of(s, class.0, class.1) {
+        Some(End::At(x)) => e.min(x),
+        _ => e,
+    };
+    let full = usize::try_from(i64::from(n) + 1).unwrap_or(usize::MAX);
+    let mut last = values.len().saturating_sub(fixed) / per;
+    let mut total = last;
+    if !fits(total) {
+        return Err(Error::length());
+    }
+    while !once && last == full && i64::from(s) + (total as i64) <= i64::from(end) {
+        let mut a = args.to_vec();
+        a[usize::from(si)] = s.wrapping_add(total as i32);
+        let call = Described::new(f, &a);
+        let more = match h.call(&call) {
+            Ok(v) => v,
+            Err(crate::error::Error::Cnc { .. }) => break,
+            Err(e) => return Err(e),
+        };
+        last = more.len().saturating_sub(fixed) / per;
+        if !fits(total + last) {
+            // The earlier answers' records, as FANUC's library wrote them.
+            let mut v = values[fixed..fixed + total * per].iter().copied();
+            for i in 0..total {
+                let at = |k: usize| rec.base + i * rec.stride + rec.offsets[k];
+                // SAFETY: record i lies within the room (checked).
+                unsafe { write_fields(r.fields, outs, at, &mut v) };
+            }
+            return Err(Error::length());
+        }
+        values.extend_from_slice(&more[fixed..fixed + last * per]);
+        total += last;
+    }
+    // The last number answered.
+    let mut k = 0;
+    for field in f.reply {
+        if field.arg == Some(LAST) {
+            values[k] = i64::from(s.wrapping_add(total as i32 - 1));
+        }
+        k += usize::from(field.n);
     }
     Ok(())
 }
