@@ -223,7 +223,9 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_wrpmacror",
-        learnt: Some(&[]),
+        // Written from the recordings: the learner sends nothing (its
+        // `length` of 1 is EW_LENGTH before any traffic).
+        learnt: None,
         doc: "Writes the P-code macro variables `datano_s`..`datano_e` from `data` (`mcr_val · 10^-dec_val` each), at most to the end of `datano_s`'s range (as cnc_rdpmacror: #499, #999, #19999, #99999, #199999; a Series 15: #199, #999, #99999; the variables past it are left out), 177 a request (binary records to the 16i class but Series 15, as cnc_wrpmacro). `length` below 12 and, before each request, `10 + 8 ·` the records sent with it above `length` are EW_LENGTH; `datano_s` below 100, after `datano_e`, or on the 16i class of #1000..#9999 with `datano_e` past it are EW_NUMBER; a `dec_val` outside -128..127 is EW_DATA before its request. Each request is written or refused whole by the CNC; a refused one (or a local refusal) ends the call, the requests before it stay written.",
         params: &[Param::UShort("length"), Param::In("buf", "IODBPR")],
         checks: &[
