@@ -540,25 +540,35 @@ fn described_exports(funcs: &[types::Func]) -> String {
 
         // A write's payload: where each field's member is in one element.
         let (input, pay) = match (&f.payload, f.input()) {
-            (Some(p), Some((n, _))) => {
+            (Some(p), Some((n, t))) => {
                 let (stride, offs) = element(p.elem, p.fields);
+                // The records in a member of the input (types::Func::payload_in):
+                // the input members request words carry are the struct's.
+                let (base, of) = match f.payload_in {
+                    "" => ("0".to_string(), p.elem.to_string()),
+                    m => (
+                        format!("offset_of!({}, {})", rust_type(t), ident(m)),
+                        rust_type(t),
+                    ),
+                };
                 // The input members request words carry, in the first element.
                 let words: Vec<String> = f
                     .inputs()
-                    .map(|(m, _)| {
+                    .map(|(m, c)| {
+                        // A `short`, or a 32-bit `long` (types::Word::Input).
+                        let size = if c.size() == 4 { 4 } else { 2 };
                         checks.push(format!(
-                            "const _: () = if offset_of!({e}, {m}) + 2 > size_of::<{e}>() {{\n    panic!(\"{}: an input word does not fit in {e}\")\n}};\n",
+                            "const _: () = if offset_of!({of}, {m}) + {size} > size_of::<{of}>() {{\n    panic!(\"{}: an input word does not fit in {of}\")\n}};\n",
                             f.name,
-                            e = p.elem,
                             m = ident(m),
                         ));
-                        format!("offset_of!({}, {})", p.elem, ident(m))
+                        format!("offset_of!({of}, {})", ident(m))
                     })
                     .collect();
                 (
                     format!("{}.cast_const().cast()", ident(n)),
                     format!(
-                        "pay_stride: {stride}, pay_offsets: &[{}], pay_words: &[{}]",
+                        "pay_base: {base}, pay_stride: {stride}, pay_offsets: &[{}], pay_words: &[{}]",
                         offs.join(", "),
                         words.join(", ")
                     ),
@@ -568,7 +578,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             (None, Some((n, t))) if f.block.is_some() => (
                 format!("{}.cast_const().cast()", ident(n)),
                 format!(
-                    "pay_stride: size_of::<{}>(), pay_offsets: &[], pay_words: &[]",
+                    "pay_base: 0, pay_stride: size_of::<{}>(), pay_offsets: &[], pay_words: &[]",
                     rust_type(t)
                 ),
             ),
@@ -582,7 +592,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 None,
             ) => (
                 "std::ptr::null()".to_string(),
-                "pay_stride: 0, pay_offsets: &[], pay_words: &[]".to_string(),
+                "pay_base: 0, pay_stride: 0, pay_offsets: &[], pay_words: &[]".to_string(),
             ),
             _ => panic!(
                 "src/spec/table/: {}: a payload needs one Param::In, and a Param::In a payload",
@@ -680,7 +690,18 @@ fn described_exports(funcs: &[types::Func]) -> String {
             ));
         }
         if let (Some(p), Some((n, t))) = (&f.payload, f.input()) {
+            let room = f
+                .pages
+                .and_then(|pg| pg.room)
+                .and_then(|(a, _)| f.numbers().nth(usize::from(a)));
             match f.numbers().nth(usize::from(p.count)) {
+                // The records in a member (types::Func::payload_in), read
+                // within the caller's size (types::Pages::room).
+                _ if !f.payload_in.is_empty() => safety.push(format!(
+                    "/// `{n}` must be NULL or point to a readable `{t}` whose `{}` array holds a record for each number written, within `{}` bytes.",
+                    f.payload_in,
+                    room.unwrap_or("?"),
+                )),
                 // types::TEXT: read up to its NUL, at most the field's bytes.
                 _ if p.count == types::SPAN => safety.push(format!(
                     "/// `{n}` must be NULL or point to {} readable `{t}` elements.",
@@ -771,10 +792,15 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             unsafe_ = if pointers { "unsafe " } else { "" },
             // A read may join a batch (fwlib_batch_begin); a command not,
             // nor a range read (its next request needs the answer), nor a
-            // paging read (several exchanges, as cnc_rdtool).
+            // paging read (several exchanges, as cnc_rdtool), nor a read
+            // cut per answer (types::Word::Upto: a full answer asks again,
+            // cnc_rdpmacror).
             batch = !(outs.is_empty()
                 || f.block.is_some_and(|b| b.range.is_some())
-                || f.pages.is_some()),
+                || f.pages.is_some()
+                || f.forms
+                    .iter()
+                    .any(|fm| { fm.words.iter().any(|w| matches!(w, types::Word::Upto(..))) })),
             n_numbers = numbers.len(),
             n_outs = out_ptrs.len(),
             n_io = ios.len(),

@@ -4239,12 +4239,15 @@ short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
 /*
  Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8
  bytes each: at most to the end of `s_no`'s range (#99, #499, #999,
- #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) and at
- most 179 (the request stops at `s_no` + 178); `s_no` after `e_no` is
- EW_NUMBER before any traffic, and so is, on the 16i class, an `e_no`
- past a `s_no` of #1000..#9999 or below 0; every record answered must fit
- in `length` (12 + 8 · records, after the reply), else EW_LENGTH,
- nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
+ #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) 179 a
+ request (a request stops at its start + 178; an answer of 179 records
+ asks again from the next number while the range goes on, an error answer
+ after the first ends the read with the records before it); `s_no` after
+ `e_no` is EW_NUMBER before any traffic, and so is, on the 16i class, an
+ `e_no` past a `s_no` of #1000..#9999, from #5000000 on or below 0; every
+ record answered must fit in `length` (10 + 8 · records, after each
+ answer), else EW_LENGTH, the earlier answers' records written, the rest
+ of `buf` not; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1;
  `dummy` is left as it was.
 
  # Safety
@@ -5497,6 +5500,27 @@ short cnc_wrpm_mcnitem(unsigned short FlibHndl, short start_num, short data_num,
  outside -128..127 EW_DATA, before any traffic.
  */
 short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec_val);
+
+/*
+ Writes the P-code macro variables `datano_s`..`datano_e` from `data`
+ (`mcr_val · 10^-dec_val` each), at most to the end of `datano_s`'s
+ range (as cnc_rdpmacror: #499, #999, #19999, #99999, #199999; a Series
+ 15: #199, #999, #99999; the variables past it are left out), 177 a
+ request (binary records to the 16i class but Series 15, as
+ cnc_wrpmacro). `length` below 12 and, before each request, `10 + 8 ·`
+ the records sent with it above `length` are EW_LENGTH; `datano_s` below
+ 100, after `datano_e`, or on the 16i class of #1000..#9999 with
+ `datano_e` past it are EW_NUMBER; a `dec_val` outside -128..127 is
+ EW_DATA before its request. Each request is written or refused whole by
+ the CNC; a refused one (or a local refusal) ends the call, the requests
+ before it stay written.
+
+ # Safety
+ `buf` must be NULL or point to a readable `IODBPR` whose `data` array holds a record for each number written, within `length` bytes.
+ */
+short cnc_wrpmacror(unsigned short FlibHndl,
+                    unsigned short length,
+                    struct IODBPR *buf);
 
 /*
  Writes one setting data item from IODBPSD, as cnc_wrparam writes a

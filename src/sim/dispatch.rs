@@ -265,6 +265,14 @@ mod tests {
     /// function does.
     const NOT_ANSWERED: &[((u16, u16), &str)] = &[
         (
+            (CLASS_CNC, crate::proto::cmd::RDPMACRO2),
+            "FANUC's cnc_rdpmacror's 0x012c (16i class from #100000, fuzz cases): its answer's form is not known; error 1 makes FANUC's library read with 0x002d",
+        ),
+        (
+            (CLASS_CNC, crate::proto::cmd::WRPMACRO2),
+            "FANUC's cnc_wrpmacror's 0x012d (16i class from #100000, a fuzz case): its payload's and answer's forms are not known; error 1 makes FANUC's library write with 0x002e",
+        ),
+        (
             (CLASS_CNC, crate::proto::param::RDPARAINFO15),
             "Series 15 parameter information (cnc_rdparainfo): its answer's form is not known",
         ),

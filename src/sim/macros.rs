@@ -66,12 +66,14 @@ fn macro_number(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>>
     Ok(vec![i64::from(*n), i64::from(*attr)])
 }
 
-/// cnc_wrpmacro: P-code variables `s..=e` (the request's first two words)
-/// from the payload's records (digits, places), which later reads of the
-/// store give back. All or nothing: a number the path does not have is
+/// cnc_wrpmacro, cnc_wrpmacror: P-code variables `s..=e` (the request's
+/// first two words) from the payload's records (digits, places), which
+/// later reads of the store give back. All or nothing per request: a
+/// number the path does not have (or more than [`PCODE_RECORDS`]) is
 /// EW_NUMBER, a protected one EW_PROT, a value that is neither vacant
 /// (0 with -1 places) nor of 0..=9 places EW_DATA, too few records
-/// EW_LENGTH; then nothing is written.
+/// EW_LENGTH; then nothing of the request is written (cnc_wrpmacror's
+/// earlier requests stay written).
 fn pcode_write(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
     let (s, e) = (q.words[0], q.words[1]);
     // A 16i (not Series 15) gets binary records, which read back with 9
@@ -84,7 +86,7 @@ fn pcode_write(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> 
         .get_mut(usize::from(q.path).wrapping_sub(1))
         .map(|p| &mut p.pmacros.vars)
         .ok_or(CncError::PATH)?;
-    p.check_range(s, e)?;
+    p.check_range_of(s, e, PCODE_RECORDS)?;
     let n = usize::try_from(i64::from(e) - i64::from(s) + 1).unwrap_or(0);
     if q.payload.len() < 2 * n {
         return Err(CncError::new(ew::EW_LENGTH));
@@ -154,7 +156,7 @@ fn pcode_info2(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> 
 fn pcode_read(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
     let p = &m.pcode(q.path)?.vars;
     let (s, e) = (q.words[0], q.words[1]);
-    p.check_range(s, e)?;
+    p.check_range_of(s, e, PCODE_RECORDS)?;
     // The fields FANUC's library fills without the wire (the numbers it
     // writes back) come first in the layout the dispatch encodes.
     let skipped = q.f.reply.iter().filter(|x| x.arg.is_some()).count();
@@ -191,6 +193,11 @@ fn pcode_info(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
 /// smallest frame a CNC sends, 1450 bytes).
 pub const MAX_RECORDS: usize = 100;
 
+/// Most P-code records one read or write may carry: FANUC's library asks
+/// for up to 179 (cnc_rdpmacror) and writes up to 177 (cnc_wrpmacror) a
+/// request.
+pub const PCODE_RECORDS: usize = 179;
+
 impl Macros {
     /// The record a read answers for `n` (vacant: value 0, decimals -1).
     pub fn record(&self, n: i32) -> Value {
@@ -202,9 +209,14 @@ impl Macros {
 
     /// Variables `s..=e` that all exist, else EW_NUMBER.
     fn check_range(&self, s: i32, e: i32) -> Reply<()> {
+        self.check_range_of(s, e, MAX_RECORDS)
+    }
+
+    /// [`Macros::check_range`], at most `max` records.
+    fn check_range_of(&self, s: i32, e: i32, max: usize) -> Reply<()> {
         // abs_diff: the numbers come from the client, any i32 (fuzzing
         // found `e - s` overflowing).
-        if e < s || e.abs_diff(s) as usize >= MAX_RECORDS {
+        if e < s || e.abs_diff(s) as usize >= max {
             return Err(CncError::NUMBER);
         }
         if (s..=e).all(|n| self.exists(n)) {

@@ -130,10 +130,18 @@ commands! {
     RDPMACRO = CLASS_CNC 0x002d [cnc_rdpmacro cnc_rdpmacror];
     /// cnc_wrpmacro: (1,0x002e)[s, e, 0, 0, 8] + one value record per
     /// variable s..e.
-    WRPMACRO = CLASS_CNC 0x002e [cnc_wrpmacro];
+    WRPMACRO = CLASS_CNC 0x002e [cnc_wrpmacro cnc_wrpmacror];
     /// cnc_rdpmacroinfo2: (1,0x00e7) the P-code macro variables' counts
     /// and types (three ranges).
     RDPMACROINFO2 = CLASS_CNC 0x00e7 [cnc_rdpmacroinfo2];
+    /// FANUC's cnc_rdpmacror on the 16i class from #100000 (and on the
+    /// 30i class after some 0x00e7 answers): (1,0x012c)[s, s + 715] before
+    /// 0x002d, which follows on error 1; its answer's form is not known
+    /// (not sent by ours; docs/protocol/macro.md).
+    RDPMACRO2 = CLASS_CNC 0x012c [cnc_rdpmacror];
+    /// FANUC's cnc_wrpmacror likewise: (1,0x012d)[s, e, 0, 0, 10] + 10
+    /// bytes before 0x002e (not sent by ours).
+    WRPMACRO2 = CLASS_CNC 0x012d [cnc_wrpmacror];
     /// cnc_rdmacronum: (1,0x029f)[length, 0, 0, 0, length] + the name's
     /// `length` bytes; the answer: u32 number, i16 attribute.
     RDMACRONUM = CLASS_CNC 0x029f [cnc_rdmacronum];

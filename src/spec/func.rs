@@ -80,6 +80,19 @@ impl Func {
         let at = |i: u8| i64::from(args.get(usize::from(i)).copied().unwrap_or(0));
         Some(usize::try_from(at(e) - at(s) + 1).unwrap_or(0))
     }
+    /// The records a range write ([`Pages`] without a count) sends: its
+    /// span `s..=e` ([`Func::span`]) with `e` cut to the end of `s`'s
+    /// range ([`Func::ends`]) on a CNC of the 16i class (`s16`) or Series
+    /// 15 (`s15`); 0 for one backwards, None without a span.
+    pub fn span_cut(&self, args: &[i32], s16: bool, s15: bool) -> Option<usize> {
+        let (s, e) = self.span?;
+        let at = |i: u8| args.get(usize::from(i)).copied().unwrap_or(0);
+        let (s, mut e) = (at(s), at(e));
+        if let Some(End::At(end)) = self.end_of(s, s16, s15) {
+            e = e.min(end);
+        }
+        Some(usize::try_from(i64::from(e) - i64::from(s) + 1).unwrap_or(0))
+    }
     /// The [`Ends`] entry of start `s` on a CNC of the 16i class (`s16`)
     /// or Series 15 (`s15`), if any.
     pub fn end_of(&self, s: i32, s16: bool, s15: bool) -> Option<End> {
@@ -218,26 +231,41 @@ impl Func {
     }
     fn check_refusal(&self, args: &[i32], s16: bool, s15: bool, option: bool) -> Option<i16> {
         let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
-        for c in self.checks {
+        if let Some(code) = self.checks_fail(self.checks.len(), args, option) {
+            return Some(code);
+        }
+        let upto = self.forms.iter().filter(|f| f.classes.matches(s16, s15));
+        let spans = upto
+            .flat_map(|f| f.words.iter())
+            .take(5)
+            .filter_map(|w| match *w {
+                Word::Upto(s, e, _) => Some((s, e)),
+                _ => None,
+            })
+            // A range write's span (Pages) ends as a range read's.
+            .chain(self.span.filter(|_| self.pages.is_some()));
+        for (s, e) in spans {
+            let (s, e) = (at(i32::from(s)), at(i32::from(e)));
+            if self.end_of(s, s16, s15) == Some(End::Alone) && e > s {
+                return Some(crate::ew::EW_NUMBER);
+            }
+        }
+        None
+    }
+    /// The code of the first of the function's first `n` checks that the
+    /// call's number arguments `args` fail (the FOCAS option's: `option`
+    /// says whether the CNC has it), if any: [`Func::refusal`]'s, and those
+    /// made before a [`Func::first`] request ([`First::after`]).
+    pub fn checks_fail(&self, n: usize, args: &[i32], option: bool) -> Option<i16> {
+        let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
+        self.checks.iter().take(n).find_map(|c| {
             let bad = match c.arg {
                 ORDERED => at(c.lo) > at(c.hi),
                 OPTION => !(c.lo..=c.hi).contains(&i32::from(option)),
                 a => !(c.lo..=c.hi).contains(&at(i32::from(a))),
             };
-            if bad {
-                return Some(c.code);
-            }
-        }
-        let upto = self.forms.iter().filter(|f| f.classes.matches(s16, s15));
-        for w in upto.flat_map(|f| f.words.iter()).take(5) {
-            if let Word::Upto(s, e, _) = *w {
-                let (s, e) = (at(i32::from(s)), at(i32::from(e)));
-                if self.end_of(s, s16, s15) == Some(End::Alone) && e > s {
-                    return Some(crate::ew::EW_NUMBER);
-                }
-            }
-        }
-        None
+            bad.then_some(c.code)
+        })
     }
     /// The output parameters ([`Param::Out`], [`Param::InOut`]), in
     /// order: (name, C type).

@@ -123,7 +123,8 @@ pub enum Word {
     /// [`Param::In`]) converted to `.1` as a C cast converts it: FANUC's
     /// library sends it as a request word, not in the payload, and leaves
     /// the converted value in the member (the caller sees it when `.1` is
-    /// narrower than a `short`).
+    /// narrower than a `short`). With `.1` [`Int::I32`] or [`Int::U32`] the
+    /// member is a 32-bit `long` (cnc_wrpmacror's `datano_s`), read as it is.
     Input(&'static str, Int),
     /// Number parameter `.1`'s value (`e`) cut to the end of the range
     /// number parameter `.0` (`s`) starts in ([`Func::ends`], on the CNC's
@@ -188,6 +189,9 @@ pub struct First {
     pub cmd: u16,
     pub arg: u8,
     pub ranges: &'static [(i32, i32)],
+    /// How many of the function's [`Func::checks`] FANUC's library makes
+    /// before it (cnc_wrpmacror's `length`), the others after it.
+    pub after: u8,
 }
 
 /// A figure FANUC's library learnt from the CNC at connect (the open
@@ -384,6 +388,17 @@ pub struct Range {
 /// ends at the second in a row (FANUC's library asks for ever), and
 /// answered with more records than it asked writes and counts those it
 /// asked (FANUC's library writes them all, past the caller's array).
+///
+/// A write over a range, without a count parameter ([`Func::span`]): the
+/// records are the range's, `s..=e`, its end first cut to the end of
+/// `s`'s range ([`Func::ends`]; a start after the end is EW_NUMBER before
+/// any traffic, a [`Func::checks`] `ORDERED`); each request carries the
+/// next slice of them, its start and end words (the span's two arguments)
+/// the slice's first and last numbers, and an answer (no count) did all it
+/// was sent. Before each request, [`Pages::room`] is checked, then every
+/// value record of the slice ([`Int::BaseExp`]) whose places are outside
+/// [`PLACES`] is EW_DATA. An error answer ends the write: the requests
+/// before it stay written (cnc_wrpmacror).
 #[derive(Debug, Clone, Copy)]
 pub struct Pages {
     /// The most payload bytes one request carries.
@@ -395,6 +410,12 @@ pub struct Pages {
     /// answers wrote (a read: cnc_rdmagazine); false, after the records
     /// sent (a write: cnc_regmagazine).
     pub from_done: bool,
+    /// `Some((a, head))`: number parameter `a` is the caller's buffer size
+    /// in bytes, checked before each request: `head` + the records sent so
+    /// far and this request's (the input's element size each) above it is
+    /// EW_LENGTH, the requests before it staying done (cnc_wrpmacror:
+    /// `10 + 8 · records` against `length`).
+    pub room: Option<(u8, u16)>,
 }
 
 /// What a [`Rule`] checks: a number parameter (its index) or, in each
@@ -480,6 +501,10 @@ pub struct Code {
     pub value: CodeValue,
     pub negate: bool,
 }
+/// The places a value record ([`Int::BaseExp`]) of a range write's input
+/// may have ([`Pages`]): a signed byte, as FANUC's library checks them
+/// (cnc_wrpmacro's `dec_val` too); others are EW_DATA before the request.
+pub const PLACES: (i32, i32) = (i8::MIN as i32, i8::MAX as i32);
 
 /// One FOCAS function.
 #[derive(Debug, Clone, Copy)]
@@ -571,6 +596,10 @@ pub struct Func {
     pub each: &'static [Each],
     /// Payload fields computed, not copied ([`Code`]).
     pub codes: &'static [Code],
+    /// The member of the [`Param::In`] struct whose elements are the
+    /// payload's records (cnc_wrpmacror's IODBPR `data`); `""`: the input
+    /// is the records' array.
+    pub payload_in: &'static str,
 }
 
 /// The one request form of a function that sends the same on every class.

@@ -1,11 +1,26 @@
 /* The P-code macro functions added from FANUC's library (cnc_rdpmacroinfo2,
- * cnc_rdpmacro, cnc_wrpmacro, cnc_rdpmacror), called through the .so against focas-sim; prints
+ * cnc_rdpmacro, cnc_wrpmacro, cnc_rdpmacror, cnc_wrpmacror), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_pcode HOST PORT */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fwlib32.h"
+
+/* An IODBPR of `n` records (FANUC's declares 5; `length` = 12 + 8 * n). */
+static IODBPR *range_buf(int n) {
+    IODBPR *p = calloc(1, offsetof(IODBPR, data) + (size_t)n * sizeof(IODBPR_data));
+    if (!p) exit(3);
+    return p;
+}
+
+static IODBPR_data *rec(IODBPR *p, int i) {
+    return (IODBPR_data *)((char *)p + offsetof(IODBPR, data)) + i;
+}
+
+/* #10000..#10199 read back, 100 a call, as `key=v,d;v,d...`. */
+static void print_200(unsigned short h, const char *key);
 
 static int check(const char *what, short rc) {
     if (rc != EW_OK) {
@@ -66,6 +81,71 @@ int main(int argc, char **argv) {
     printf("wr.dec=%d\n", cnc_wrpmacro(h, 10004, 1, 128));
     printf("wr.absent=%d\n", cnc_wrpmacro(h, 9999, 1, 0));
 
+    /* cnc_wrpmacror: #10000..#10199 in one call (two requests: 177, 23). */
+    {
+        IODBPR *w = range_buf(200);
+        int i;
+        w->datano_s = 10000;
+        w->datano_e = 10199;
+        for (i = 0; i < 200; i++) {
+            rec(w, i)->mcr_val = i * 3 - 100;
+            rec(w, i)->dec_val = (short)(i % 4);
+        }
+        check("wrpmacror", cnc_wrpmacror(h, 12 + 8 * 200, w));
+        print_200(h, "wr200");
+        /* #10023..#10222 with other values: the first request (#10023..#10199)
+         * is written, the second (#10200.., which the CNC does not have)
+         * refused whole. */
+        w->datano_s = 10023;
+        w->datano_e = 10222;
+        for (i = 0; i < 200; i++) {
+            rec(w, i)->mcr_val = 1000 + i;
+            rec(w, i)->dec_val = 0;
+        }
+        printf("wr200.refused=%d\n", cnc_wrpmacror(h, 12 + 8 * 200, w));
+        print_200(h, "wr200.after");
+        /* Refused before any traffic: too short for the 5 records, a
+         * local variable, backwards, decimals past a byte. */
+        w->datano_s = 10000;
+        w->datano_e = 10004;
+        rec(w, 2)->dec_val = 0;
+        printf("wrr.length=%d\n", cnc_wrpmacror(h, 49, w));
+        w->datano_s = 99;
+        printf("wrr.local=%d\n", cnc_wrpmacror(h, 52, w));
+        w->datano_s = 10004;
+        w->datano_e = 10000;
+        printf("wrr.backwards=%d\n", cnc_wrpmacror(h, 52, w));
+        w->datano_s = 10000;
+        w->datano_e = 10004;
+        rec(w, 2)->dec_val = 128;
+        printf("wrr.dec=%d\n", cnc_wrpmacror(h, 52, w));
+        /* By the CNC: #10200.. do not exist (nothing written). */
+        rec(w, 2)->dec_val = 0;
+        w->datano_s = 10198;
+        w->datano_e = 10202;
+        printf("wrr.absent=%d\n", cnc_wrpmacror(h, 52, w));
+        free(w);
+    }
+    print_200(h, "wr200.end");
+
     cnc_freelibhndl(h);
     return 0;
+}
+
+static void print_200(unsigned short h, const char *key) {
+    IODBPR *r = range_buf(100);
+    int part, i;
+    printf("%s=", key);
+    for (part = 0; part < 2; part++) {
+        long s = 10000 + 100 * part;
+        check("rdpmacror", cnc_rdpmacror(h, s, s + 99, 12 + 8 * 100, r));
+        if (r->datano_s != s || r->datano_e != s + 99) {
+            fprintf(stderr, "rdpmacror: %d..%d\n", (int)r->datano_s, (int)r->datano_e);
+            exit(1);
+        }
+        for (i = 0; i < 100; i++)
+            printf("%s%d,%d", part + i ? ";" : "", (int)rec(r, i)->mcr_val, rec(r, i)->dec_val);
+    }
+    printf("\n");
+    free(r);
 }

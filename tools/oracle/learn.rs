@@ -1359,7 +1359,11 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
             if let Some(k) = positions.iter().position(|&q| q == p) {
                 a[k] = at(p, v);
             }
-            if f.sends_first(&a, s16, s15) {
+            // The checks before a first request (First::after), then it.
+            let early = f.first.map_or(0, |fr| usize::from(fr.after));
+            if let Some(code) = f.checks_fail(early, &a, true) {
+                Some(code)
+            } else if f.sends_first(&a, s16, s15) {
                 None
             } else {
                 f.refusal(&a, s16, s15, true)

@@ -28,6 +28,9 @@ pub(crate) struct RecordsAt<'a> {
 /// each payload field's member in the element.
 pub(crate) struct PayloadAt<'a> {
     pub input: *const u8,
+    /// Where the records start in the input ([`Func::payload_in`]'s
+    /// member; 0: the input is their array).
+    pub base: usize,
     pub stride: usize,
     pub offsets: &'a [usize],
     /// The offset in the first element of each input member a request

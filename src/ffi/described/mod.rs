@@ -51,6 +51,7 @@ pub(crate) struct Site {
     pub rec_offsets: &'static [usize],
     pub rec_count: Option<usize>,
     /// [`PayloadAt`]'s `stride`, `offsets` and `words`.
+    pub pay_base: usize,
     pub pay_stride: usize,
     pub pay_offsets: &'static [usize],
     pub pay_words: &'static [usize],
@@ -99,6 +100,7 @@ pub(crate) unsafe fn run(site: &'static Site, h: c_ushort, call: Call) -> c_shor
                 },
                 PayloadAt {
                     input: c.input,
+                    base: site.pay_base,
                     stride: site.pay_stride,
                     offsets: site.pay_offsets,
                     words: site.pay_words,
@@ -190,6 +192,13 @@ pub(crate) unsafe fn exec(
         let input = nonnull(pay.input.cast_mut())?;
         outs_set()?;
         for ((_, c), (at, off)) in f.inputs().zip(args[numbers..].iter_mut().zip(pay.words)) {
+            if c.size() == 4 {
+                // A 32-bit `long` member, read as it is.
+                // SAFETY: the member lies in the caller's struct (build.rs).
+                let p = unsafe { input.cast::<u8>().add(*off).cast::<i32>() };
+                *at = unsafe { p.read_unaligned() };
+                continue;
+            }
             // SAFETY: the `short` member lies in the caller's first element
             // (build.rs), read and written unaligned.
             let p = unsafe { input.cast::<u8>().add(*off).cast::<i16>() };
@@ -206,13 +215,18 @@ pub(crate) unsafe fn exec(
     // A request before the function's own, before the local checks; its
     // answer changes nothing, so a batch (one exchange a call) leaves it out.
     let batching = h.batching.load(std::sync::atomic::Ordering::Acquire);
+    let option = h.pair.info.option & 1 == 1;
+    // The checks FANUC's library makes before that request.
+    let early = f.first.map_or(0, |fr| usize::from(fr.after));
+    if let Some(code) = f.checks_fail(early, args, option) {
+        return Err(Error::local(code, "argument out of range"));
+    }
     if let Some(fr) = f
         .first
         .filter(|_| !batching && f.sends_first(args, class.0, class.1))
     {
         h.call(&Prelude { cmd: fr.cmd })?;
     }
-    let option = h.pair.info.option & 1 == 1;
     if let Some((code, detail)) = f.refusal_detail(args, class.0, class.1, option) {
         if let Some(d) = detail {
             h.set_detail(d);
@@ -291,6 +305,11 @@ pub(crate) unsafe fn exec(
     };
     if f.pages.is_some() {
         // SAFETY: the caller's contract, as for the rest of exec.
+        if f.count().is_none() {
+            // A range write (spec::Pages over Func::span).
+            // SAFETY: the caller's contract, as for the rest of exec.
+            return unsafe { span_pages(f, &h, args, &pay, class) };
+        }
         return unsafe { pages(f, &h, args, outs, offsets, &rec, &pay, count) };
     }
     let n = payload_records(f, args);
@@ -330,7 +349,17 @@ pub(crate) unsafe fn exec(
     // The lookups' integers follow the reply's (decode).
     let looked: usize = f.lookups.iter().map(|l| l.values()).sum();
     let looked = values.split_off(values.len().saturating_sub(looked));
-    if let Some(r) = f.records.as_ref().filter(|r| r.room.is_some()) {
+    // A range read cut per answer (Word::Upto): it reads on.
+    let upto = form.words.iter().find_map(|w| match *w {
+        crate::spec::Word::Upto(s, e, n) => Some((s, e, n)),
+        _ => None,
+    });
+    if let Some(u) = upto.filter(|_| f.records.is_some()) {
+        // SAFETY: the caller's contract, as for the rest of exec.
+        // A batch (one exchange a call) reads the first answer alone.
+        let once = batching;
+        unsafe { read_on(f, &h, args, &mut values, u, (class, once), &rec, outs) }?;
+    } else if let Some(r) = f.records.as_ref().filter(|r| r.room.is_some()) {
         let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
         let n = values.len().saturating_sub(fixed) / r.values().max(1);
         let room = r
@@ -416,6 +445,6 @@ mod records;
 use at::write_fields;
 pub(crate) use at::{PayloadAt, RecordsAt};
 use block::{block, range};
-use pages::pages;
+use pages::{pages, read_on, span_pages};
 
 include!(concat!(env!("OUT_DIR"), "/described.rs"));

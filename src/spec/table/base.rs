@@ -35,6 +35,7 @@ pub const COMMAND: Func = Func {
     rules: &[],
     each: &[],
     codes: &[],
+    payload_in: "",
 };
 
 /// A servo figure of each axis into `long data[]`: the value word of each
@@ -78,4 +79,5 @@ pub const SERVO_LONGS: Func = Func {
     rules: &[],
     each: &[],
     codes: &[],
+    payload_in: "",
 };

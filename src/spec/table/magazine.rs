@@ -291,6 +291,7 @@ pub const FUNCS: &[Func] = &[
             bytes: 1416,
             advance: None,
             from_done: true,
+            room: None,
         }),
         learnt: Some(&[
             "crashed on coded replies (8, 64, 1428 bytes): the answer's first word is the pots' count, which a coded reply makes huge (records past *num written); probed with counted answers (1, 2 of 4 with 1 record, 5 of 4)",
@@ -316,6 +317,7 @@ pub const FUNCS: &[Func] = &[
             bytes: 1416,
             advance: None,
             from_done: false,
+            room: None,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -338,6 +340,7 @@ pub const FUNCS: &[Func] = &[
             bytes: 1416,
             advance: None,
             from_done: false,
+            room: None,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -369,6 +372,7 @@ pub const FUNCS: &[Func] = &[
             bytes: 1416,
             advance: Some(0),
             from_done: false,
+            room: None,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -400,6 +404,7 @@ pub const FUNCS: &[Func] = &[
             bytes: 1416,
             advance: Some(0),
             from_done: false,
+            room: None,
         }),
         learnt: Some(&[]),
         ..COMMAND

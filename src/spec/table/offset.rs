@@ -4,7 +4,7 @@ use super::super::commands as cmd;
 use super::super::types::Int::*;
 use super::super::types::*;
 use super::base::COMMAND;
-use crate::ew::{EW_DATA, EW_NUMBER};
+use crate::ew::{EW_DATA, EW_LENGTH, EW_NUMBER};
 
 /// Where the ranges of P-code macro variables end, as FANUC's library
 /// cuts a range read or write at the end of its start's range
@@ -12,7 +12,9 @@ use crate::ew::{EW_DATA, EW_NUMBER};
 /// #500..#999, #10000..#19999, #20000..#99999, #100000..#199999 on the
 /// 30i and 16i classes (no end from #1000 to #9999 nor from #200000 on);
 /// #0..#99, #100..#199, #200..#999, #10000..#99999 on a Series 15. On the
-/// 16i class a start of #1000..#9999 or below 0 is read alone.
+/// 16i class a start of #1000..#9999, from #5000000 on (cnc_wrpmacror's
+/// `[5000000, 5000004]`; `[4999990, 4999994]` is sent) or below 0 is read
+/// (or written) alone.
 pub const P_CODE_ENDS: &[Ends] = &[
     ends(Classes::Not15, 0, 99, End::At(99)),
     ends(Classes::Not15, 100, 499, End::At(499)),
@@ -22,6 +24,7 @@ pub const P_CODE_ENDS: &[Ends] = &[
     ends(Classes::Not15, 100000, 199999, End::At(199999)),
     ends(Classes::S16Not15, 1000, 9999, End::Alone),
     ends(Classes::S16Not15, i32::MIN, -1, End::Alone),
+    ends(Classes::S16Not15, 5000000, i32::MAX, End::Alone),
     ends(Classes::S15, 0, 99, End::At(99)),
     ends(Classes::S15, 100, 199, End::At(199)),
     ends(Classes::S15, 200, 999, End::At(999)),
@@ -38,15 +41,18 @@ const fn ends(classes: Classes, lo: i32, hi: i32, end: End) -> Ends {
 }
 
 /// cnc_rdpmacroinfo2's request, which FANUC's library sends first on the
-/// 30i class for a start of #20000..#85500 and #200000..#986000, its
-/// answer ignored (probed with `e_no` past the 179 a request carries; the
-/// bounds are settled to within 100 and 1000; a backwards range sends it
-/// for starts up to #4999999: the rule is not known; docs/protocol/macro.md).
+/// 30i class for a start of #20000..#85500, #200000..#986000 and
+/// #2000000..#4999999, whatever the end (a backwards range too), its
+/// answer ignored (probed with `e_no` past the 179 a request carries, with
+/// cnc_wrpmacror's five records and backwards: #4999999 sends it, #5000000
+/// and #100000 do not; the first two upper bounds are settled to within
+/// 100 and 1000; why is not known; docs/protocol/macro.md).
 pub const P_CODE_INFO_FIRST: First = First {
     classes: Classes::S30,
     cmd: cmd::RDPMACROINFO2,
     arg: 0,
-    ranges: &[(20000, 85500), (200000, 986000)],
+    ranges: &[(20000, 85500), (200000, 986000), (2000000, 4999999)],
+    after: 0,
 };
 
 pub const FUNCS: &[Func] = &[
@@ -181,7 +187,7 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdpmacror",
         learnt: Some(&[]),
-        doc: "Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8 bytes each: at most to the end of `s_no`'s range (#99, #499, #999, #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) and at most 179 (the request stops at `s_no` + 178); `s_no` after `e_no` is EW_NUMBER before any traffic, and so is, on the 16i class, an `e_no` past a `s_no` of #1000..#9999 or below 0; every record answered must fit in `length` (12 + 8 · records, after the reply), else EW_LENGTH, nothing written; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1; `dummy` is left as it was.",
+        doc: "Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8 bytes each: at most to the end of `s_no`'s range (#99, #499, #999, #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) 179 a request (a request stops at its start + 178; an answer of 179 records asks again from the next number while the range goes on, an error answer after the first ends the read with the records before it); `s_no` after `e_no` is EW_NUMBER before any traffic, and so is, on the 16i class, an `e_no` past a `s_no` of #1000..#9999, from #5000000 on or below 0; every record answered must fit in `length` (10 + 8 · records, after each answer), else EW_LENGTH, the earlier answers' records written, the rest of `buf` not; `datano_s` = `s_no`, `datano_e` = `s_no` + records - 1; `dummy` is left as it was.",
         params: &[
             Param::Long("s_no"),
             Param::Long("e_no"),
@@ -213,6 +219,57 @@ pub const FUNCS: &[Func] = &[
             "10004|10000|9999|10099|10200|20000|1",
             "52|12|20|44|4096|0|65535",
         ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wrpmacror",
+        // Written from the recordings: the learner sends nothing (its
+        // `length` of 1 is EW_LENGTH before any traffic).
+        learnt: None,
+        doc: "Writes the P-code macro variables `datano_s`..`datano_e` from `data` (`mcr_val · 10^-dec_val` each), at most to the end of `datano_s`'s range (as cnc_rdpmacror: #499, #999, #19999, #99999, #199999; a Series 15: #199, #999, #99999; the variables past it are left out), 177 a request (binary records to the 16i class but Series 15, as cnc_wrpmacro). `length` below 12 and, before each request, `10 + 8 ·` the records sent with it above `length` are EW_LENGTH; `datano_s` below 100, after `datano_e`, or on the 16i class of #1000..#9999 with `datano_e` past it are EW_NUMBER; a `dec_val` outside -128..127 is EW_DATA before its request. Each request is written or refused whole by the CNC; a refused one (or a local refusal) ends the call, the requests before it stay written.",
+        params: &[Param::UShort("length"), Param::In("buf", "IODBPR")],
+        checks: &[
+            Check {
+                arg: 0,
+                lo: 12,
+                hi: i32::MAX,
+                code: EW_LENGTH,
+            },
+            Check {
+                arg: 1,
+                lo: 100,
+                hi: i32::MAX,
+                code: EW_NUMBER,
+            },
+            ordered(1, 2),
+        ],
+        forms: &[every_class(
+            cmd::WRPMACRO,
+            &[Word::Input("datano_s", I32), Word::Input("datano_e", I32)],
+        )],
+        payload: Some(Payload {
+            fields: &[digits(0, "mcr_val"), places(0, "dec_val")],
+            elem: "IODBPR_data",
+            count: SPAN,
+            max: u16::MAX,
+        }),
+        payload_in: "data",
+        span: Some((1, 2)),
+        // 177 records of 8 bytes a request; `length` against 10 + 8 · records.
+        pages: Some(Pages {
+            bytes: 1416,
+            advance: None,
+            from_done: false,
+            room: Some((0, 10)),
+        }),
+        binary: Some(Classes::S16Not15),
+        ends: P_CODE_ENDS,
+        // After the `length` check.
+        first: Some(First {
+            arg: 1,
+            after: 1,
+            ..P_CODE_INFO_FIRST
+        }),
         ..COMMAND
     },
     Func {

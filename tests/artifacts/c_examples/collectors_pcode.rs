@@ -1,5 +1,5 @@
 //! tests/c/collectors_pcode.c: cnc_rdpmacroinfo2, cnc_rdpmacro,
-//! cnc_wrpmacro and cnc_rdpmacror through the .so, compared with the simulator's P-code
+//! cnc_wrpmacro, cnc_rdpmacror and cnc_wrpmacror through the .so, compared with the simulator's P-code
 //! variable store (on the 30i and the 16i class: binary records there).
 
 use super::run_c_test;
@@ -13,7 +13,7 @@ fn profile() -> Profile {
 }
 
 fn profile_of(base: &str) -> Profile {
-    let p = "[path.pmacros]\nranges = [[10000, 10099]]\nprotected = []\nv2_type = 0\nv1_type = 0\nv20_type = 0\n";
+    let p = "[path.pmacros]\nranges = [[10000, 10199]]  # cnc_wrpmacror writes 200 in two requests (tools/oracle)\nprotected = []\nv2_type = 0\nv1_type = 0\nv20_type = 0\n";
     assert!(
         base.contains(p),
         "the default profile's [path.pmacros] moved"
@@ -88,7 +88,49 @@ fn check(p: Profile) {
         assert_eq!(rc, fwlib32::ew::EW_OK);
         (pm.mcr_val, pm.dec_val)
     };
-    assert_eq!(read(10002), (-475, 2));
-    assert_eq!(read(10003), (0, -1));
-    assert_eq!(read(10004), (0, -1));
+    // cnc_wrpmacror: 200 variables written in one call (two requests),
+    // read back from C; a 16i's binary records are kept in their shortest
+    // decimal form (20 with 1 place reads back as 2, 0 places).
+    let s16 = p.cnc.class == fwlib32::sim::profile::Class::Series16;
+    let kept = |v: i32, d: i16| {
+        let (mut v, mut d) = (v, d);
+        while s16 && d > 0 && v % 10 == 0 {
+            v /= 10;
+            d -= 1;
+        }
+        (v, d)
+    };
+    let first = |i: i32| kept(i * 3 - 100, (i % 4) as i16);
+    let list = |f: &dyn Fn(i32) -> (i32, i16)| {
+        (0..200)
+            .map(|i| {
+                let (v, d) = f(i);
+                format!("{v},{d}")
+            })
+            .collect::<Vec<_>>()
+            .join(";")
+    };
+    assert_eq!(kv["wr200"], list(&first));
+    // The second write (#10023..#10222): its first request (#10023..#10199)
+    // written, the second (#10200.., which the CNC does not have) refused
+    // whole.
+    assert_eq!(kv["wr200.refused"], fwlib32::ew::EW_NUMBER.to_string());
+    let second = |i: i32| {
+        if i >= 23 {
+            (1000 + i - 23, 0)
+        } else {
+            first(i)
+        }
+    };
+    assert_eq!(kv["wr200.after"], list(&second));
+    assert_eq!(kv["wrr.length"], fwlib32::ew::EW_LENGTH.to_string());
+    assert_eq!(kv["wrr.local"], fwlib32::ew::EW_NUMBER.to_string());
+    assert_eq!(kv["wrr.backwards"], fwlib32::ew::EW_NUMBER.to_string());
+    assert_eq!(kv["wrr.dec"], fwlib32::ew::EW_DATA.to_string());
+    assert_eq!(kv["wrr.absent"], fwlib32::ew::EW_NUMBER.to_string());
+    // The refused calls changed nothing.
+    assert_eq!(kv["wr200.end"], list(&second));
+    for n in [10000, 10022, 10023, 10190, 10199] {
+        assert_eq!(read(n), second(n - 10000), "#{n} in the simulator");
+    }
 }
