@@ -793,14 +793,16 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             // A read may join a batch (fwlib_batch_begin); a command not,
             // nor a range read (its next request needs the answer), nor a
             // paging read (several exchanges, as cnc_rdtool), nor a read
-            // cut per answer (types::Word::Upto: a full answer asks again,
+            // cut per answer (types::Word::Upto reading on: a full answer asks again,
             // cnc_rdpmacror).
             batch = !(outs.is_empty()
                 || f.block.is_some_and(|b| b.range.is_some())
                 || f.pages.is_some()
-                || f.forms
-                    .iter()
-                    .any(|fm| { fm.words.iter().any(|w| matches!(w, types::Word::Upto(..))) })),
+                || f.forms.iter().any(|fm| {
+                    fm.words
+                        .iter()
+                        .any(|w| matches!(w, types::Word::Upto(_, _, _, true)))
+                })),
             n_numbers = numbers.len(),
             n_outs = out_ptrs.len(),
             n_io = ios.len(),

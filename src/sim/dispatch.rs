@@ -473,7 +473,7 @@ mod tests {
                         *w = match *f {
                             crate::spec::Word::Const(c) => c,
                             crate::spec::Word::Asked => 0,
-                            crate::spec::Word::Upto(_, e, _) => {
+                            crate::spec::Word::Upto(_, e, _, _) => {
                                 args.get(usize::from(e)).copied().unwrap_or(0)
                             }
                             crate::spec::Word::Nonzero(a, v) => {

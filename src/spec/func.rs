@@ -65,7 +65,7 @@ impl Func {
         match *w {
             Word::Arg(i) => Some(usize::from(i)),
             Word::Asked => self.count(),
-            Word::Upto(_, e, _) => Some(usize::from(e)),
+            Word::Upto(_, e, _, _) => Some(usize::from(e)),
             Word::Const(_) | Word::Nonzero(..) => None,
             Word::Input(m, _) => self
                 .inputs()
@@ -239,7 +239,7 @@ impl Func {
             .flat_map(|f| f.words.iter())
             .take(5)
             .filter_map(|w| match *w {
-                Word::Upto(s, e, _) => Some((s, e)),
+                Word::Upto(s, e, _, _) => Some((s, e)),
                 _ => None,
             })
             // A range write's span (Pages) ends as a range read's.

@@ -133,7 +133,11 @@ pub enum Word {
     /// bits, wrapping: a range from a negative start to near `i32::MAX`
     /// is not cut): the end of a range FANUC's library asks for, cut to the
     /// most one answer carries (cnc_rdpmacror). [`Func::upto`] computes it.
-    Upto(u8, u8, i32),
+    /// `.3`: an answer holding `.2 + 1` records is followed by a request
+    /// for the rest, from the next number on, while the range lasts
+    /// (cnc_rdpmacror, recorded); false: one request (cnc_rdgrpinfo, whose
+    /// doc gives at most 44 groups a call).
+    Upto(u8, u8, i32, bool),
     /// `.1` when number parameter `.0` is not 0, else 0: a flag FANUC's
     /// library sends for a nonzero argument (cnc_rdparam3's `type`).
     Nonzero(u8, i32),

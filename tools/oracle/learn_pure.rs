@@ -1314,7 +1314,7 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             Some(spec::Word::Const(c)) => WordSrc::Const(*c),
             Some(spec::Word::Asked) => WordSrc::Arg(f.count().unwrap_or(usize::MAX)),
             Some(spec::Word::Input(m, _)) => WordSrc::Input(m.to_string()),
-            Some(spec::Word::Upto(_, e, _)) => WordSrc::Arg(*e as usize),
+            Some(spec::Word::Upto(_, e, _, _)) => WordSrc::Arg(*e as usize),
             Some(spec::Word::Nonzero(i, _)) => WordSrc::Arg(*i as usize),
             None => WordSrc::Const(0),
         })

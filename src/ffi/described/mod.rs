@@ -349,9 +349,9 @@ pub(crate) unsafe fn exec(
     // The lookups' integers follow the reply's (decode).
     let looked: usize = f.lookups.iter().map(|l| l.values()).sum();
     let looked = values.split_off(values.len().saturating_sub(looked));
-    // A range read cut per answer (Word::Upto): it reads on.
+    // A range read cut per answer that reads on (Word::Upto, `.3`).
     let upto = form.words.iter().find_map(|w| match *w {
-        crate::spec::Word::Upto(s, e, n) => Some((s, e, n)),
+        crate::spec::Word::Upto(s, e, n, true) => Some((s, e, n)),
         _ => None,
     });
     if let Some(u) = upto.filter(|_| f.records.is_some()) {

@@ -246,9 +246,9 @@ pub(crate) unsafe fn read_on(
     };
     let per = r.values().max(1);
     let fixed: usize = f.reply.iter().map(|x| usize::from(x.n)).sum();
-    let room = r
-        .room
-        .map_or(usize::MAX, |a| usize::from(args[usize::from(a)] as u16));
+    let room = r.room.map_or(usize::MAX, |a| {
+        usize::try_from(args[usize::from(a)]).unwrap_or(0)
+    });
     let head = rec.base.saturating_sub(2);
     let fits = |k: usize| head + k * rec.stride <= room;
     let at = |i: u8| args.get(usize::from(i)).copied().unwrap_or(0);

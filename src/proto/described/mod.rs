@@ -131,7 +131,7 @@ impl Call for Described<'_> {
                 *w = match *f {
                     Word::Const(c) => c,
                     Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
-                    Word::Upto(s, e, n) => {
+                    Word::Upto(s, e, n, _) => {
                         let at = |i: u8| self.args.get(usize::from(i)).copied().unwrap_or(0);
                         let (s16, s15) = (
                             cx.class.is_16i(),

@@ -197,7 +197,7 @@ pub const FUNCS: &[Func] = &[
         checks: &[ordered(0, 1)],
         forms: &[every_class(
             cmd::RDPMACRO,
-            &[Word::Arg(0), Word::Upto(0, 1, 178)],
+            &[Word::Arg(0), Word::Upto(0, 1, 178, true)],
         )],
         reply: &[echo(0, "datano_s", I32), last("datano_e", I32)],
         records: Some(Records {

@@ -138,7 +138,7 @@ pub const FUNCS: &[Func] = &[
         ],
         forms: &[every_class(
             cmd::TLGROUP,
-            &[Word::Arg(0), Word::Upto(0, 1, 43)],
+            &[Word::Arg(0), Word::Upto(0, 1, 43, false)],
         )],
         // The first group's number (not read), then 32-byte group records.
         reply: &[echo(0, "s_grp", I16), last("e_grp", I16), skip(I32)],
