@@ -75,7 +75,10 @@ pub(crate) fn read_boundary(
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(&mut body))
     });
     match r {
-        Ok(Err(Error::Queued)) => crate::client::handles::defer(name, body),
+        Ok(Err(Error::Queued)) => {
+            crate::client::end_call(None);
+            crate::client::handles::defer(name, body)
+        }
         r => {
             crate::client::handles::forget();
             finish(name, r)
@@ -84,6 +87,10 @@ pub(crate) fn read_boundary(
 }
 
 pub(crate) fn finish(name: &str, r: std::thread::Result<Result<()>>) -> c_short {
+    crate::client::end_call(match &r {
+        Ok(Err(e)) => Some(e),
+        _ => None,
+    });
     match r {
         Ok(Ok(())) => {
             crate::log_at!(log::CALLS, "{name} -> 0");
