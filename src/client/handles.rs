@@ -119,8 +119,8 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
 }
 
 pub fn get(h: u16) -> Result<Arc<Handle>> {
+    super::call_handle(h);
     let h = lookup(h)?;
-    super::call_handle(&h);
     if h.batching.load(std::sync::atomic::Ordering::Acquire) {
         // A call on a batching handle: refused unless the running export
         // may join the batch; else the handle is where it queues.

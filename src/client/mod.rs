@@ -22,27 +22,31 @@ use handles::Handle;
 /// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2);
 /// a call refused locally with one of these codes sets them too (its own
 /// detail, else 0). Nothing else changes them: a successful call keeps the
-/// words of the last error (docs/protocol/handles.md, cnc_getdtailerr).
+/// words of the last error (docs/protocol/framing.md, cnc_getdtailerr).
 const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
 /// The same for pmc_getdtailerr (SPEC.md §6.2, from FANUC's code).
 const PMC_DETAIL_CODES: [i16; 6] = [3, 5, 8, 13, 17, 18];
 
 thread_local! {
-    /// The handle the running export looked up first (its own handle).
-    static CALL_HANDLE: std::cell::RefCell<Option<std::sync::Arc<Handle>>> =
-        const { std::cell::RefCell::new(None) };
+    /// The number of the handle the running export looked up first (its
+    /// own handle).
+    static CALL_HANDLE: std::cell::Cell<Option<u16>> = const { std::cell::Cell::new(None) };
     /// Whether the running export has set the detail words already.
     static DETAIL_SET: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// Notes the handle an export runs on (the first it looks up).
-pub(crate) fn call_handle(h: &std::sync::Arc<Handle>) {
-    CALL_HANDLE.with(|c| {
-        let mut c = c.borrow_mut();
-        if c.is_none() {
-            *c = Some(h.clone());
-        }
-    });
+pub(crate) fn call_handle(h: u16) {
+    if CALL_HANDLE.get().is_none() {
+        CALL_HANDLE.set(Some(h));
+    }
+}
+
+/// Starts an export: forgets what an earlier call on this thread noted
+/// (one made through the Rust API, which has no export around it).
+pub(crate) fn begin_call() {
+    CALL_HANDLE.set(None);
+    DETAIL_SET.set(false);
 }
 
 /// Marks the running export's error as one that leaves cnc_getdtailerr's
@@ -57,10 +61,11 @@ pub(crate) fn keep_detail() {
 /// the export set them itself (its own detail) or a socket error froze
 /// them. Forgets the export's handle.
 pub(crate) fn end_call(r: Option<&Error>) {
-    let h = CALL_HANDLE.with(|c| c.borrow_mut().take());
+    let h = CALL_HANDLE.take();
     let set = DETAIL_SET.replace(false);
     if let (Some(h), Some(Error::Local { code, .. }), false) = (h, r, set)
         && DETAIL_CODES.contains(code)
+        && let Ok(h) = handles::lookup(h)
     {
         let mut s = h.state.lock();
         if !s.detail_frozen {

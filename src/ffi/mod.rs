@@ -59,6 +59,7 @@ pub(crate) use ffi_read;
 /// boundary), the result becomes its `EW_*` code. One function for every
 /// export (a trait object, not a copy each).
 pub(crate) fn boundary(name: &str, body: &mut dyn FnMut() -> Result<()>) -> c_short {
+    crate::client::begin_call();
     finish(
         name,
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)),
@@ -71,6 +72,7 @@ pub(crate) fn read_boundary(
     name: &'static str,
     mut body: Box<dyn FnMut() -> Result<()>>,
 ) -> c_short {
+    crate::client::begin_call();
     let r = crate::client::batch::batchable(|| {
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(&mut body))
     });
