@@ -16,6 +16,7 @@ use crate::proto::download::Outgoing;
 use crate::proto::upload::{StartReq, decode_error, error_body};
 
 fn not_started() -> Error {
+    super::keep_detail();
     Error::local(EW_FUNC, "no download or DNC operation started")
 }
 

@@ -119,6 +119,7 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
 }
 
 pub fn get(h: u16) -> Result<Arc<Handle>> {
+    super::call_handle(h);
     let h = lookup(h)?;
     if h.batching.load(std::sync::atomic::Ordering::Acquire) {
         // A call on a batching handle: refused unless the running export

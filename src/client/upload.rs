@@ -24,6 +24,7 @@ use std::time::{Duration, Instant};
 const STALL: (i16, i16) = (9, 4);
 
 fn no_upload() -> Error {
+    super::keep_detail();
     Error::local(EW_FUNC, "no upload started (cnc_upstart first)")
 }
 

@@ -59,6 +59,7 @@ pub(crate) use ffi_read;
 /// boundary), the result becomes its `EW_*` code. One function for every
 /// export (a trait object, not a copy each).
 pub(crate) fn boundary(name: &str, body: &mut dyn FnMut() -> Result<()>) -> c_short {
+    crate::client::begin_call();
     finish(
         name,
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(body)),
@@ -71,11 +72,15 @@ pub(crate) fn read_boundary(
     name: &'static str,
     mut body: Box<dyn FnMut() -> Result<()>>,
 ) -> c_short {
+    crate::client::begin_call();
     let r = crate::client::batch::batchable(|| {
         std::panic::catch_unwind(std::panic::AssertUnwindSafe(&mut body))
     });
     match r {
-        Ok(Err(Error::Queued)) => crate::client::handles::defer(name, body),
+        Ok(Err(Error::Queued)) => {
+            crate::client::end_call(None);
+            crate::client::handles::defer(name, body)
+        }
         r => {
             crate::client::handles::forget();
             finish(name, r)
@@ -84,6 +89,10 @@ pub(crate) fn read_boundary(
 }
 
 pub(crate) fn finish(name: &str, r: std::thread::Result<Result<()>>) -> c_short {
+    crate::client::end_call(match &r {
+        Ok(Err(e)) => Some(e),
+        _ => None,
+    });
     match r {
         Ok(Ok(())) => {
             crate::log_at!(log::CALLS, "{name} -> 0");

@@ -1894,6 +1894,131 @@ pub fn connect_cases() -> Vec<Case> {
     out
 }
 
+/// cnc_getdtailerr's words across calls on one handle (recorded into its
+/// vector file): a CNC error answer with detail words, then later calls of
+/// each kind (a successful exchange, an error code FANUC keeps no detail
+/// for, another with one, local refusals, a new handle, PMC calls), each
+/// followed by the detail words, on the 30i and 16i classes.
+pub fn detail_cases() -> Vec<Case> {
+    type Calls = Vec<(String, Option<Shape>)>;
+    let e5 = Some(Shape::ErrorDetail(0, 5, 7, 9));
+    let plain = |c: &str| (c.to_string(), None);
+    let seqs: Vec<(&str, Calls)> = vec![
+        (
+            "err5_then_ok",
+            vec![
+                ("statinfo".into(), e5),
+                plain("getdtailerr"),
+                plain("statinfo"),
+                plain("getdtailerr"),
+                plain("rdparam 6711 0 8 0"),
+                plain("getdtailerr"),
+            ],
+        ),
+        (
+            "err5_then_err2",
+            vec![
+                ("statinfo".into(), e5),
+                ("statinfo".into(), Some(Shape::ErrorDetail(0, 2, 11, 12))),
+                plain("getdtailerr"),
+            ],
+        ),
+        (
+            "err5_then_err3",
+            vec![
+                ("statinfo".into(), e5),
+                ("statinfo".into(), Some(Shape::ErrorDetail(0, 3, 4, 0))),
+                plain("getdtailerr"),
+                plain("statinfo"),
+                plain("getdtailerr"),
+            ],
+        ),
+        (
+            "err5_then_local",
+            vec![
+                ("statinfo".into(), e5),
+                plain("absolute 33 8"),
+                plain("getdtailerr"),
+                plain("gettimer 2"),
+                plain("getdtailerr"),
+            ],
+        ),
+        (
+            "err5_then_locals",
+            [
+                "gettimer -1",
+                "gettimer 5",
+                "settimer 2 1 1 1",
+                "modal 127 0",
+                "acts2 9",
+                "rdalmmsg -1 0",
+                "dncend",
+                "absolute 33 8",
+                "rdtlctldata",
+                "dwnend",
+                "rdmacronum 6 hex:474155474531",
+                "wrmacro 500 10 1 128",
+                "setpath 2",
+                "pmc_rdalmmsg 1 0",
+            ]
+            .iter()
+            .flat_map(|c| [("statinfo".into(), e5), plain(c), plain("getdtailerr")])
+            .collect(),
+        ),
+        (
+            "err5_then_realloc",
+            vec![
+                ("statinfo".into(), e5),
+                plain("free"),
+                plain("alloc 10"),
+                plain("getdtailerr"),
+            ],
+        ),
+        (
+            "err5_then_alloc2",
+            vec![
+                ("statinfo".into(), e5),
+                plain("alloc 10"),
+                plain("getdtailerr"),
+            ],
+        ),
+        (
+            "err5_then_pmc",
+            vec![
+                ("statinfo".into(), e5),
+                plain("pmc_getdtailerr"),
+                (
+                    "pmc_rdpmcinfo -1".into(),
+                    Some(Shape::ErrorDetail(0, 3, 4, 6)),
+                ),
+                plain("pmc_getdtailerr"),
+                plain("getdtailerr"),
+                plain("pmc_rdpmcinfo -1"),
+                plain("pmc_getdtailerr"),
+                plain("getdtailerr"),
+                plain("statinfo"),
+                plain("getdtailerr"),
+                plain("pmc_rdalmmsg 1 0"),
+                plain("pmc_getdtailerr"),
+                plain("getdtailerr"),
+            ],
+        ),
+    ];
+    let mut out = Vec::new();
+    for profile in ["v3", "v2"] {
+        for (label, calls) in &seqs {
+            out.push(Case {
+                name: format!("getdtailerr_{profile}_seq_{label}"),
+                profile,
+                fault: None,
+                calls: calls.clone(),
+                timeout: 10,
+            });
+        }
+    }
+    out
+}
+
 /// Crafted answers a word's base call is recorded with too (the payload of
 /// its first reply subpacket): record types and layouts the simulator's
 /// machine never sends.

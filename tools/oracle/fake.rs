@@ -23,6 +23,9 @@ pub struct Rec {
 pub enum Shape {
     /// Subpacket i answers this error code, with an empty payload.
     Error(usize, i16),
+    /// Subpacket i answers this error code with these two detail words
+    /// (the words cnc_getdtailerr reports), with an empty payload.
+    ErrorDetail(usize, i16, u16, u16),
     /// Subpacket i's payload is empty (no error).
     Empty(usize),
     /// Subpacket i's payload cut to half its length (a multiple of 4).
@@ -417,6 +420,7 @@ pub fn apply(frame: &[u8], shape: Shape) -> Vec<u8> {
     reshape(frame, |subs| {
         let i = match shape {
             Shape::Error(i, _)
+            | Shape::ErrorDetail(i, ..)
             | Shape::Empty(i)
             | Shape::Half(i)
             | Shape::MinusOne(i)
@@ -427,6 +431,11 @@ pub fn apply(frame: &[u8], shape: Shape) -> Vec<u8> {
         let Some(s) = subs.get_mut(i) else { return };
         match shape {
             Shape::Error(_, code) => set_error(s, code),
+            Shape::ErrorDetail(_, code, d1, d2) => {
+                set_error(s, code);
+                s.0[10..12].copy_from_slice(&d1.to_be_bytes());
+                s.0[12..14].copy_from_slice(&d2.to_be_bytes());
+            }
             Shape::Empty(_) => s.1.clear(),
             Shape::Half(_) => s.1.truncate(s.1.len() / 2 / 4 * 4),
             Shape::MinusOne(_) => {

@@ -252,6 +252,12 @@ fn generated(only: &[String]) -> BTreeMap<String, Vec<Case>> {
             .or_default()
             .extend(cases::connect_cases());
     }
+    if keep("getdtailerr") {
+        by_fn
+            .entry("cnc_getdtailerr".into())
+            .or_default()
+            .extend(cases::detail_cases());
+    }
     by_fn
 }
 

@@ -291,10 +291,7 @@ pub(crate) unsafe fn exec(
             let len = (0..room).find(|&k| unsafe { pay.input.add(k).read() } == 0);
             let Some(len) = len else {
                 // FANUC's library reports detail 1 (the first argument).
-                let mut s = h.state.lock();
-                if !s.detail_frozen {
-                    s.detail = (1, 0);
-                }
+                h.set_detail(1);
                 return Err(Error::local(EW_DATA, "no NUL in the text field"));
             };
             let mut b = unsafe { std::slice::from_raw_parts(pay.input, len) }.to_vec();
