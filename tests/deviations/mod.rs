@@ -85,11 +85,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "with the second subpacket missing from the answer and the later ones shifted up, FANUC's library reads the third (0x0110[2]) in its place and returns its error (the simulator's EW_NOOPT), writing nothing; ours sees that the shifted subpacket does not echo the command asked and returns EW_PROTOCOL (-17), writing nothing",
     },
     Deviation {
-        function: "cnc_rdparam3",
-        cases: &["rdparam3_v2_shape_empty", "rdparam3_v3_shape_empty"],
-        reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdomhistry2",
         cases: &[
             "rdomhistry2_v3_a3_0",
@@ -387,7 +382,7 @@ pub const ORACLE: &[Deviation] = &[
             "rddiagnum_v3_shape_half",
             "rddiagnum_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_rdmacro",
@@ -533,22 +528,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps info_no at read_no",
     },
     Deviation {
-        function: "cnc_rdparam",
-        cases: &[
-            "rdparam_v2_shape_empty",
-            "rdparam_v3_shape_empty",
-            // Oracle fuzz (seed 0x20271129): an answer emptied.
-            "fuzz_rdparam_*_s0T#empty_*",
-        ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
-        function: "cnc_diagnoss",
-        // Oracle fuzz (seed 0x20271129): an answer emptied, as cnc_rdparam's.
-        cases: &["fuzz_diagnoss_*_s0T#empty_*"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdparanum",
         cases: &[
             "rdparanum_v2_shape_empty",
@@ -558,7 +537,7 @@ pub const ORACLE: &[Deviation] = &[
             "rdparanum_v3_shape_half",
             "rdparanum_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_rdtofs",
@@ -570,7 +549,7 @@ pub const ORACLE: &[Deviation] = &[
             "rdtofs_v3_shape_half",
             "rdtofs_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_wrzofs",
@@ -587,7 +566,7 @@ pub const ORACLE: &[Deviation] = &[
             "pmc_rdpmcinfo_v3_shape_half",
             "pmc_rdpmcinfo_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "pmc_rdpmcrng",
@@ -810,8 +789,18 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdpdf_drive",
-        cases: &["fuzz_rdpdf_drive_*more*", "fuzz_rdpdf_drive_*long*"],
-        reason: "FANUC's library counts and copies every 12-byte name of a longer answer, past the 16 of ODBPDFDRV; ours writes at most 16",
+        cases: &[
+            "fuzz_rdpdf_drive_*more*",
+            "fuzz_rdpdf_drive_*long*",
+            // Oracle fuzz (seed 0x202a1129): 17 names drawn from the reply
+            // layout (16 + 1); 18..20 (16 + 1 + 0..3, the counts it draws
+            // past the most) replayed to FANUC's library as crafted answers.
+            "*rdpdf_drive_*_s0Ln17*",
+            "*rdpdf_drive_*_s0Ln18*",
+            "*rdpdf_drive_*_s0Ln19*",
+            "*rdpdf_drive_*_s0Ln20*",
+        ],
+        reason: "FANUC's library counts and copies every 12-byte name of a longer answer, past the 16 of ODBPDFDRV (17 names: max_num 17 and 12 bytes written past the struct); ours writes at most 16 and max_num 16",
     },
     Deviation {
         function: "cnc_rdalmhistry",
@@ -1027,11 +1016,6 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rdspmeter_*empty*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
-    },
-    Deviation {
-        function: "cnc_rdparam3",
-        cases: &["fuzz_rdparam3_*_s0T#empty_*"],
-        reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns what they make (EW_OK with them, or EW_LENGTH from a length word among them); ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_rdsvmeter",
