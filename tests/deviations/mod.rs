@@ -950,6 +950,18 @@ pub const ORACLE: &[Deviation] = &[
         reason: FIELDS_PAST_PAYLOAD,
     },
     Deviation {
+        function: "cnc_rddynamic",
+        // Oracle fuzz (seed 0x202b1129): the machine position answer
+        // emptied, one axis; the absolute, machine, relative ones emptied,
+        // one axis and -1, replayed to FANUC's library as crafted answers.
+        cases: &[
+            "*rddynamic_*_s5T#empty*",
+            "*rddynamic_*_s6T#empty*",
+            "*rddynamic_*_s7T#empty*",
+        ],
+        reason: "FANUC's library writes the position records packed, kind after kind, however many each answer holds: an empty one (one axis too) moves the next kinds' values into its place; ours writes each record at its place and leaves an empty kind's place untouched (as for -1 with fewer records than MAX_AXIS, README)",
+    },
+    Deviation {
         function: "cnc_getfigure",
         // oracle fuzz [seed 0x202a1128]: a 16i answer of more figures.
         cases: &["fuzz_getfigure_*more*"],
@@ -1058,7 +1070,17 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdopmode",
-        cases: &["fuzz_rdopmode_*more*", "fuzz_rdopmode_*long*"],
+        cases: &[
+            "fuzz_rdopmode_*more*",
+            "fuzz_rdopmode_*long*",
+            // Oracle fuzz (seed 0x202b1129): 2 words drawn from the reply
+            // layout (its most, 1, + 1); 3..5 (+ 1 + 0..3) replayed to
+            // FANUC's library as crafted answers.
+            "*rdopmode_*_s0Ln2_*",
+            "*rdopmode_*_s0Ln3*",
+            "*rdopmode_*_s0Ln4*",
+            "*rdopmode_*_s0Ln5*",
+        ],
         reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",
     },
     Deviation {
@@ -1088,6 +1110,9 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_acts2_*s0Tw*cut*",
             "fuzz_acts2_*s0Tw*short1*",
             "fuzz_acts2_*s0Tw*empty*",
+            // Oracle fuzz (seed 0x202b1129): the first 0xa4 answer drawn
+            // from the layout, empty (2 paths, path 2).
+            "fuzz_acts2_*_s0L#empty_*",
         ],
         reason: COUNT_PAST_PAYLOAD,
     },
