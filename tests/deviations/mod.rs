@@ -803,6 +803,13 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library counts and copies every 12-byte name of a longer answer, past the 16 of ODBPDFDRV (17 names: max_num 17 and 12 bytes written past the struct); ours writes at most 16 and max_num 16",
     },
     Deviation {
+        function: "cnc_rdmacro",
+        // Oracle fuzz (seed 0x202e1129): 6 records answered (16i); 6
+        // replayed to FANUC's library as a crafted answer.
+        cases: &["*rdmacro_*more*"],
+        reason: "an answer of more than 5 records: FANUC's library returns EW_LENGTH after writing datano and an uninitialised mcr_val (different on every run); ours returns EW_LENGTH and writes nothing",
+    },
+    Deviation {
         function: "cnc_rdpdf_subdir",
         // Oracle fuzz (seed 0x202d1129): 3 records for *num 2; 4 replayed
         // to FANUC's library as a crafted answer.
@@ -953,6 +960,9 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rddynamic_*cut*",
             // 30i, one axis: the fifth subpacket emptied [seed 0x202a1128].
             "fuzz_rddynamic_*_s4T#empty_*",
+            // 16i, one axis: the program numbers' answer emptied [seed
+            // 0x202e1129].
+            "fuzz_rddynamic_*_s1T#empty_*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
     },
