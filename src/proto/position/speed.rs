@@ -115,7 +115,7 @@ impl Call for Speed {
 
 impl Speed {
     /// 30i: actf unit = word 0 of 0x88[3] minus 3, disp 0, name 'F'; acts
-    /// unit 2, and with a display count of 0 disp 0 and name 'S', else disp
+    /// unit 2, and with a display count (first or last 0xa4) of 0 disp 0 and name 'S', else disp
     /// 1 and the first 0x8a entry's name and suffix. FANUC ignores an error
     /// in 0x8a when only the feed is asked.
     fn decode30(&self, resp: &[RespSub]) -> Result<SpeedReply> {
@@ -144,7 +144,7 @@ impl Speed {
         };
         let actf = next(self.feed)?;
         let acts = next(self.spindle)?;
-        let _: Count = payload(resp, at)?;
+        let last: Count = payload(resp, at)?;
         let feed_unit = *units
             .first()
             .ok_or_else(|| Error::short("0x88 unit payload is empty"))?;
@@ -154,8 +154,12 @@ impl Speed {
         };
         Ok(SpeedReply {
             actf: actf.map(|f| speed_value(f, (feed_unit as i16).wrapping_sub(3), 0, b'F', 0)),
+            // The name is shown when both display counts (the first and
+            // the last 0xa4 answers) are not 0 [fuzz seed 0x20301129
+            // `s6Llong`: first 1, last 0 is 'S'; crafted: 1/1, 2/1, 1/2,
+            // 1/0xffff show it, 0/1 and 1/0 do not].
             acts: acts.map(|s| {
-                if count.n == 0 {
+                if count.n == 0 || last.n == 0 {
                     speed_value(s, 2, 0, b'S', 0)
                 } else {
                     speed_value(s, 2, 1, name[0], name[1])
