@@ -141,6 +141,9 @@ fn dynamic(l: &DynLayout, h: c_ushort, axis: c_short, length: c_short, out: *mut
                         }
                     }
                 } else {
+                    // Each kind's first record at its place, an empty kind's
+                    // place untouched (FANUC packs them here too: an empty
+                    // machine answer puts relative in machine's place; README).
                     for (k, vals) in pos.iter().enumerate() {
                         if let Some(v) = vals.first() {
                             put_at(base, l.pos + 4 * k, *v);

@@ -51,6 +51,16 @@ pub unsafe extern "C" fn cnc_rdmacro(
         }
         let n = i32::from(number);
         let recs = h.call(&ReadMacros { s: n, e: n })?;
+        // FANUC's library reads with room for 5 records: an answer of more
+        // whole records is EW_LENGTH [fuzz seed 0x202e1129; crafted: 5
+        // records and 7 bytes pass, 6 do not] (it writes datano and an
+        // uninitialised mcr_val then; ours nothing, README).
+        if recs.len() > RDMACRO_ROOM {
+            return Err(Error::local(
+                EW_LENGTH,
+                "more records than cnc_rdmacro has room for",
+            ));
+        }
         let (mcr_val, dec_val) = first(&recs)?.to_decimal();
         // FANUC writes datano, mcr_val, dec_val; `dummy` stays as it was.
         unsafe {
@@ -82,6 +92,9 @@ fn range_end(s: i64) -> i64 {
         _ => i64::from(i32::MAX),
     }
 }
+
+/// The records cnc_rdmacro takes from an answer (FANUC's library's room).
+const RDMACRO_ROOM: usize = 5;
 
 fn first(recs: &[Value]) -> Result<&Value> {
     recs.first()

@@ -281,7 +281,9 @@ pub unsafe extern "C" fn pmc_rdalmmsg(
             };
             let k = a.records() as i32;
             text.extend_from_slice(&a.text);
-            (total, more) = (total + k, a.exist);
+            // FANUC's library keeps the exist word's low 16 bits, and ends
+            // on those [fuzz seed 0x202e1129: exist 0x80000000 ends it].
+            (total, more) = (total + k, a.exist as i16);
             if more == 0 || more == -1 || k == 0 || total >= want {
                 break;
             }
@@ -290,7 +292,7 @@ pub unsafe extern "C" fn pmc_rdalmmsg(
             // SAFETY: `total` ≤ `*read_num` messages of 128 bytes.
             std::ptr::copy_nonoverlapping(text.as_ptr(), out, total as usize * ALMMSG_LEN);
             put(num, total as c_short);
-            put(exist, more as c_short);
+            put(exist, more);
         }
         Ok(())
     })

@@ -99,11 +99,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "with the second subpacket missing from the answer and the later ones shifted up, FANUC's library reads the third (0x0110[2]) in its place and returns its error (the simulator's EW_NOOPT), writing nothing; ours sees that the shifted subpacket does not echo the command asked and returns EW_PROTOCOL (-17), writing nothing",
     },
     Deviation {
-        function: "cnc_rdparam3",
-        cases: &["rdparam3_v2_shape_empty", "rdparam3_v3_shape_empty"],
-        reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdomhistry2",
         cases: &[
             "rdomhistry2_v3_a3_0",
@@ -302,7 +297,12 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdaxisdata",
-        cases: &["rdaxisdata_v3_shape_half_sub2"],
+        cases: &[
+            "rdaxisdata_v3_shape_half_sub2",
+            // Oracle fuzz (seed 0x202f1129): the names' 0x89 answer
+            // emptied (class 2, 30i).
+            "fuzz_rdaxisdata_*_s1T#empty_*",
+        ],
         reason: NAMES_PAST_PAYLOAD,
     },
     Deviation {
@@ -401,7 +401,7 @@ pub const ORACLE: &[Deviation] = &[
             "rddiagnum_v3_shape_half",
             "rddiagnum_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_rdmacro",
@@ -547,22 +547,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: "FANUC's library writes every entry the CNC sends, past read_no (an overrun); ours caps info_no at read_no",
     },
     Deviation {
-        function: "cnc_rdparam",
-        cases: &[
-            "rdparam_v2_shape_empty",
-            "rdparam_v3_shape_empty",
-            // Oracle fuzz (seed 0x20271129): an answer emptied.
-            "fuzz_rdparam_*_s0T#empty_*",
-        ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
-        function: "cnc_diagnoss",
-        // Oracle fuzz (seed 0x20271129): an answer emptied, as cnc_rdparam's.
-        cases: &["fuzz_diagnoss_*_s0T#empty_*"],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdparanum",
         cases: &[
             "rdparanum_v2_shape_empty",
@@ -572,7 +556,7 @@ pub const ORACLE: &[Deviation] = &[
             "rdparanum_v3_shape_half",
             "rdparanum_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_rdtofs",
@@ -584,7 +568,7 @@ pub const ORACLE: &[Deviation] = &[
             "rdtofs_v3_shape_half",
             "rdtofs_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "cnc_wrzofs",
@@ -601,7 +585,7 @@ pub const ORACLE: &[Deviation] = &[
             "pmc_rdpmcinfo_v3_shape_half",
             "pmc_rdpmcinfo_v3_shape_short1",
         ],
-        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes (e.g. cnc_rdparam's datano becomes the axis asked), and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
+        reason: "FANUC's library reads the bytes a short or empty answer lacks from its receive buffer, which still holds the request's and earlier frames' bytes, and returns EW_OK with them; ours returns EW_PROTOCOL (-17) and writes nothing",
     },
     Deviation {
         function: "pmc_rdpmcrng",
@@ -824,8 +808,32 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdpdf_drive",
-        cases: &["fuzz_rdpdf_drive_*more*", "fuzz_rdpdf_drive_*long*"],
-        reason: "FANUC's library counts and copies every 12-byte name of a longer answer, past the 16 of ODBPDFDRV; ours writes at most 16",
+        cases: &[
+            "fuzz_rdpdf_drive_*more*",
+            "fuzz_rdpdf_drive_*long*",
+            // Oracle fuzz (seed 0x202a1129): 17 names drawn from the reply
+            // layout (16 + 1); 18..20 (16 + 1 + 0..3, the counts it draws
+            // past the most) replayed to FANUC's library as crafted answers.
+            "*rdpdf_drive_*_s0Ln17*",
+            "*rdpdf_drive_*_s0Ln18*",
+            "*rdpdf_drive_*_s0Ln19*",
+            "*rdpdf_drive_*_s0Ln20*",
+        ],
+        reason: "FANUC's library counts and copies every 12-byte name of a longer answer, past the 16 of ODBPDFDRV (17 names: max_num 17 and 12 bytes written past the struct); ours writes at most 16 and max_num 16",
+    },
+    Deviation {
+        function: "cnc_rdmacro",
+        // Oracle fuzz (seed 0x202e1129): 6 records answered (16i); 6
+        // replayed to FANUC's library as a crafted answer.
+        cases: &["*rdmacro_*more*"],
+        reason: "an answer of more than 5 records: FANUC's library returns EW_LENGTH after writing datano and an uninitialised mcr_val (different on every run); ours returns EW_LENGTH and writes nothing",
+    },
+    Deviation {
+        function: "cnc_rdpdf_subdir",
+        // Oracle fuzz (seed 0x202d1129): 3 records for *num 2; 4 replayed
+        // to FANUC's library as a crafted answer.
+        cases: &["*rdpdf_subdir_*more*"],
+        reason: "FANUC's library writes every 40-byte record of a longer answer, past the *num records the caller's array holds, and sets *num to their count; ours writes and counts at most *num",
     },
     Deviation {
         function: "cnc_rdalmhistry",
@@ -971,8 +979,23 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_rddynamic_*cut*",
             // 30i, one axis: the fifth subpacket emptied [seed 0x202a1128].
             "fuzz_rddynamic_*_s4T#empty_*",
+            // 16i, one axis: the program numbers' answer emptied [seed
+            // 0x202e1129].
+            "fuzz_rddynamic_*_s1T#empty_*",
         ],
         reason: FIELDS_PAST_PAYLOAD,
+    },
+    Deviation {
+        function: "cnc_rddynamic",
+        // Oracle fuzz (seed 0x202b1129): the machine position answer
+        // emptied, one axis; the absolute, machine, relative ones emptied,
+        // one axis and -1, replayed to FANUC's library as crafted answers.
+        cases: &[
+            "*rddynamic_*_s5T#empty*",
+            "*rddynamic_*_s6T#empty*",
+            "*rddynamic_*_s7T#empty*",
+        ],
+        reason: "FANUC's library writes the position records packed, kind after kind, however many each answer holds: an empty one (one axis too) moves the next kinds' values into its place; ours writes each record at its place and leaves an empty kind's place untouched (as for -1 with fewer records than MAX_AXIS, README)",
     },
     Deviation {
         function: "cnc_getfigure",
@@ -1043,11 +1066,6 @@ pub const ORACLE: &[Deviation] = &[
         reason: FIELDS_PAST_PAYLOAD,
     },
     Deviation {
-        function: "cnc_rdparam3",
-        cases: &["fuzz_rdparam3_*_s0T#empty_*"],
-        reason: "as cnc_rdparam: FANUC's library reads the bytes an empty answer lacks from its receive buffer and returns what they make (EW_OK with them, or EW_LENGTH from a length word among them); ours returns EW_PROTOCOL (-17) and writes nothing",
-    },
-    Deviation {
         function: "cnc_rdsvmeter",
         cases: &["fuzz_rdsvmeter_*_request_*Ln350*"],
         reason: ANSWER_PAST_RECEIVE_BUFFER,
@@ -1088,7 +1106,17 @@ pub const ORACLE: &[Deviation] = &[
     },
     Deviation {
         function: "cnc_rdopmode",
-        cases: &["fuzz_rdopmode_*more*", "fuzz_rdopmode_*long*"],
+        cases: &[
+            "fuzz_rdopmode_*more*",
+            "fuzz_rdopmode_*long*",
+            // Oracle fuzz (seed 0x202b1129): 2 words drawn from the reply
+            // layout (its most, 1, + 1); 3..5 (+ 1 + 0..3) replayed to
+            // FANUC's library as crafted answers.
+            "*rdopmode_*_s0Ln2_*",
+            "*rdopmode_*_s0Ln3*",
+            "*rdopmode_*_s0Ln4*",
+            "*rdopmode_*_s0Ln5*",
+        ],
         reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",
     },
     Deviation {
@@ -1118,6 +1146,9 @@ pub const ORACLE: &[Deviation] = &[
             "fuzz_acts2_*s0Tw*cut*",
             "fuzz_acts2_*s0Tw*short1*",
             "fuzz_acts2_*s0Tw*empty*",
+            // Oracle fuzz (seed 0x202b1129): the first 0xa4 answer drawn
+            // from the layout, empty (2 paths, path 2).
+            "fuzz_acts2_*_s0L#empty_*",
         ],
         reason: COUNT_PAST_PAYLOAD,
     },

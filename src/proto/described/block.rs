@@ -39,10 +39,10 @@ pub fn records(class: CncClass, write: bool) -> bool {
 /// FANUC's library reading the answer into the buffer that held its
 /// request) payload byte k the request body's byte 18 + k, zeros past the
 /// request (an empty answer to `[n, n, axis]` is number `axis`, then
-/// zeros).
+/// zeros). One block of the CNC's max axes: 8 bytes a value, a 30i value
+/// record or a 16i-form real's two words (value, decimals).
 fn padded(cx: &Ctx, resp: &[RespSub], short: Short, request: &[u8]) -> Vec<RespSub> {
-    let slot = if records(cx.class, false) { 8 } else { 4 };
-    let need = 8 + slot * cx.axes();
+    let need = 8 + 8 * cx.axes();
     resp.iter()
         .enumerate()
         .map(|(i, s)| {

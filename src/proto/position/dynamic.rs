@@ -87,13 +87,15 @@ impl Call for Dynamic {
         step!(3, d.actf = Some(value_word(resp, 3)?));
         step!(4, d.acts = Some(value_word(resp, 4)?));
         d.axis = true;
-        // One axis needs its record; all axes take what came. Each kind is
+        // Each kind takes the whole records that came, none too (FANUC's
+        // library answers EW_OK for an empty position answer, one axis
+        // too; it writes the records packed, ours each at its place,
+        // src/ffi/dynamic.rs, README). Each kind is
         // kept as it is read: an error in a later position subpacket leaves
         // the earlier kinds written [fuzz, rddynamico8 `e13053s7`].
-        let need = usize::from(self.axis != -1);
         for k in 0..4 {
             step!(5 + k, {
-                let v = records(resp, 5 + k, need)?;
+                let v = records(resp, 5 + k, 0)?;
                 d.pos.get_or_insert_with(Default::default)[k] = v.iter().map(|v| v.value).collect();
             });
         }

@@ -4,14 +4,13 @@
 //! PMC G28 of the path; Series 15: 0x24, 0x25, 0x88\[0\], 0x95, 0x8a.
 
 use super::payload::{Count, Name};
-use super::read::{be16, expect_subs, need, zext};
+use super::read::{be16, expect_subs, need, whole, zext};
 use crate::error::{Error, Result};
 use crate::proto::call::{Call, Ctx, payload, sub};
 use crate::proto::cmd::{ACTF, ACTS, COUNT, RDSPDLNAME, SPINDLE_SHOWN15, UNITS};
 use crate::proto::open::CncClass;
 use crate::proto::packet::{ReqSub, RespSub};
 use crate::proto::value::Value;
-use crate::proto::wire::Wire;
 
 /// 16i class: parameters FANUC's library reads with the speeds. 3107 bit 3
 /// shows the actual feed per revolution under G95; what it takes from 3106
@@ -115,21 +114,26 @@ impl Call for Speed {
 
 impl Speed {
     /// 30i: actf unit = word 0 of 0x88[3] minus 3, disp 0, name 'F'; acts
-    /// unit 2, and with a display count of 0 disp 0 and name 'S', else disp
+    /// unit 2, and with a display count (first or last 0xa4) of 0 disp 0 and name 'S', else disp
     /// 1 and the first 0x8a entry's name and suffix. FANUC ignores an error
     /// in 0x8a when only the feed is asked.
     fn decode30(&self, resp: &[RespSub]) -> Result<SpeedReply> {
         let n = 5 + usize::from(self.feed) + usize::from(self.spindle);
         expect_subs(resp, n)?;
         let count: Count = payload(resp, 0)?;
-        let name = if self.spindle {
-            let n: Vec<Name> = payload(resp, 1)?;
-            n.first().map(|n| n.bytes)
-        } else {
-            sub(resp, 1)
+        // The first whole 4-byte 0x8a entry (a ragged tail is none: FANUC
+        // reads no name unless it shows one [fuzz seed 0x20311129: a 1-byte
+        // answer with count 0 is 'S', EW_OK]); its error counts when the
+        // spindle is asked.
+        let first_name = |s: &RespSub| {
+            whole::<Name>(&s.payload, 4)
                 .ok()
-                .and_then(|s| Vec::<Name>::from_bytes(&s.payload).ok())
                 .and_then(|n| n.first().map(|n| n.bytes))
+        };
+        let name = if self.spindle {
+            first_name(sub(resp, 1)?)
+        } else {
+            sub(resp, 1).ok().and_then(first_name)
         };
         let units: Vec<u16> = payload(resp, 2)?;
         let _: Vec<u8> = payload(resp, 3)?;
@@ -144,18 +148,23 @@ impl Speed {
         };
         let actf = next(self.feed)?;
         let acts = next(self.spindle)?;
-        let _: Count = payload(resp, at)?;
+        let last: Count = payload(resp, at)?;
         let feed_unit = *units
             .first()
             .ok_or_else(|| Error::short("0x88 unit payload is empty"))?;
-        let name = match (self.spindle, count.n, name) {
-            (true, 1.., None) => return Err(Error::short("no spindle name entry")),
-            (_, _, n) => n.unwrap_or_default(),
+        let shown = count.n != 0 && last.n != 0;
+        let name = match (self.spindle && shown, name) {
+            (true, None) => return Err(Error::short("no spindle name entry")),
+            (_, n) => n.unwrap_or_default(),
         };
         Ok(SpeedReply {
             actf: actf.map(|f| speed_value(f, (feed_unit as i16).wrapping_sub(3), 0, b'F', 0)),
+            // The name is shown when both display counts (the first and
+            // the last 0xa4 answers) are not 0 [fuzz seed 0x20301129
+            // `s6Llong`: first 1, last 0 is 'S'; crafted: 1/1, 2/1, 1/2,
+            // 1/0xffff show it, 0/1 and 1/0 do not].
             acts: acts.map(|s| {
-                if count.n == 0 {
+                if !shown {
                     speed_value(s, 2, 0, b'S', 0)
                 } else {
                     speed_value(s, 2, 1, name[0], name[1])

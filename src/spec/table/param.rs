@@ -84,7 +84,7 @@ const DIAGNOSS: Func = Func {
     ],
     forms: &DIAG_FORMS,
     block: Some(read(true)),
-    short: Short::Error,
+    short: Short::Request,
     ..COMMAND
 };
 
@@ -100,7 +100,7 @@ pub const FUNCS: &[Func] = &[
         ],
         forms: &PARAM_FORMS,
         block: Some(read(false)),
-        short: Short::Error,
+        short: Short::Request,
         ..COMMAND
     },
     Func {
@@ -126,7 +126,7 @@ pub const FUNCS: &[Func] = &[
             ],
         ),
         block: Some(read(false)),
-        short: Short::Error,
+        short: Short::Request,
         ..COMMAND
     },
     DIAGNOSS,
