@@ -36,6 +36,9 @@ mod func;
 #[path = "src/spec/reply.rs"]
 mod reply;
 #[allow(dead_code)]
+#[path = "src/spec/rules.rs"]
+mod rules;
+#[allow(dead_code)]
 #[path = "src/spec/table/mod.rs"]
 mod table;
 #[allow(dead_code)]

@@ -119,7 +119,7 @@ pub fn insert(pair: Arc<Pair>, timeout: i32) -> Result<u16> {
 }
 
 pub fn get(h: u16) -> Result<Arc<Handle>> {
-    super::call_handle(h);
+    call_handle(h);
     let h = lookup(h)?;
     if h.batching.load(std::sync::atomic::Ordering::Acquire) {
         // A call on a batching handle: refused unless the running export
@@ -212,4 +212,57 @@ pub fn drain() -> Vec<Arc<Handle>> {
 
 pub fn count() -> usize {
     TABLE.read().as_ref().map_or(0, |t| t.map.len())
+}
+
+/// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2);
+/// a call refused locally with one of these codes sets them too (its own
+/// detail, else 0). Nothing else changes them: a successful call keeps the
+/// words of the last error (docs/protocol/framing.md, cnc_getdtailerr).
+pub(crate) const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
+
+thread_local! {
+    /// The number of the handle the running export looked up first (its
+    /// own handle).
+    static CALL_HANDLE: std::cell::Cell<Option<u16>> = const { std::cell::Cell::new(None) };
+    /// Whether the running export has set the detail words already.
+    static DETAIL_SET: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Notes the handle an export runs on (the first it looks up).
+pub(crate) fn call_handle(h: u16) {
+    if CALL_HANDLE.get().is_none() {
+        CALL_HANDLE.set(Some(h));
+    }
+}
+
+/// Starts an export: forgets what an earlier call on this thread noted
+/// (one made through the Rust API, which has no export around it).
+pub(crate) fn begin_call() {
+    CALL_HANDLE.set(None);
+    DETAIL_SET.set(false);
+}
+
+/// Marks the running export's error as one that leaves cnc_getdtailerr's
+/// words alone whatever its code (FANUC: a transfer call with no transfer
+/// started, EW_FUNC).
+pub(crate) fn keep_detail() {
+    DETAIL_SET.set(true);
+}
+
+/// Ends an export: a local refusal whose code is one FANUC keeps details
+/// for sets cnc_getdtailerr's words of the export's handle to 0/0, unless
+/// the export set them itself (its own detail) or a socket error froze
+/// them. Forgets the export's handle.
+pub(crate) fn end_call(r: Option<&Error>) {
+    let h = CALL_HANDLE.take();
+    let set = DETAIL_SET.replace(false);
+    if let (Some(h), Some(Error::Local { code, .. }), false) = (h, r, set)
+        && DETAIL_CODES.contains(code)
+        && let Ok(h) = lookup(h)
+    {
+        let mut s = h.state.lock();
+        if !s.detail_frozen {
+            s.detail = (0, 0);
+        }
+    }
 }

@@ -17,62 +17,11 @@ use crate::proto::download::Outgoing;
 use crate::proto::status::SysInfo;
 use crate::proto::upload::StartReq;
 use conn::Deadline;
-use handles::Handle;
+use handles::{DETAIL_CODES, Handle};
+pub(crate) use handles::{begin_call, end_call, keep_detail};
 
-/// FANUC's rule for which CNC error codes update cnc_getdtailerr (SPEC.md §6.2);
-/// a call refused locally with one of these codes sets them too (its own
-/// detail, else 0). Nothing else changes them: a successful call keeps the
-/// words of the last error (docs/protocol/framing.md, cnc_getdtailerr).
-const DETAIL_CODES: [i16; 9] = [1, 3, 5, 6, 7, 8, 13, 14, 17];
 /// The same for pmc_getdtailerr (SPEC.md §6.2, from FANUC's code).
 const PMC_DETAIL_CODES: [i16; 6] = [3, 5, 8, 13, 17, 18];
-
-thread_local! {
-    /// The number of the handle the running export looked up first (its
-    /// own handle).
-    static CALL_HANDLE: std::cell::Cell<Option<u16>> = const { std::cell::Cell::new(None) };
-    /// Whether the running export has set the detail words already.
-    static DETAIL_SET: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-/// Notes the handle an export runs on (the first it looks up).
-pub(crate) fn call_handle(h: u16) {
-    if CALL_HANDLE.get().is_none() {
-        CALL_HANDLE.set(Some(h));
-    }
-}
-
-/// Starts an export: forgets what an earlier call on this thread noted
-/// (one made through the Rust API, which has no export around it).
-pub(crate) fn begin_call() {
-    CALL_HANDLE.set(None);
-    DETAIL_SET.set(false);
-}
-
-/// Marks the running export's error as one that leaves cnc_getdtailerr's
-/// words alone whatever its code (FANUC: a transfer call with no transfer
-/// started, EW_FUNC).
-pub(crate) fn keep_detail() {
-    DETAIL_SET.set(true);
-}
-
-/// Ends an export: a local refusal whose code is one FANUC keeps details
-/// for sets cnc_getdtailerr's words of the export's handle to 0/0, unless
-/// the export set them itself (its own detail) or a socket error froze
-/// them. Forgets the export's handle.
-pub(crate) fn end_call(r: Option<&Error>) {
-    let h = CALL_HANDLE.take();
-    let set = DETAIL_SET.replace(false);
-    if let (Some(h), Some(Error::Local { code, .. }), false) = (h, r, set)
-        && DETAIL_CODES.contains(code)
-        && let Ok(h) = handles::lookup(h)
-    {
-        let mut s = h.state.lock();
-        if !s.detail_frozen {
-            s.detail = (0, 0);
-        }
-    }
-}
 
 impl Handle {
     /// What calls know about the CNC on this handle's current path.
@@ -132,7 +81,7 @@ impl Handle {
     /// Sets the first detail word cnc_getdtailerr reports (a local check
     /// FANUC's library numbers), unless a socket error froze it.
     pub fn set_detail(&self, d: i16) {
-        DETAIL_SET.set(true);
+        keep_detail();
         let mut s = self.state.lock();
         if !s.detail_frozen {
             s.detail = (d, 0);
@@ -141,7 +90,7 @@ impl Handle {
 
     /// Updates the detail words cnc_getdtailerr reports.
     pub fn note(&self, e: &Error) {
-        DETAIL_SET.set(true);
+        keep_detail();
         let mut s = self.state.lock();
         if s.detail_frozen {
             return;

@@ -4,6 +4,7 @@
 pub mod commands;
 mod func;
 pub mod reply;
+pub mod rules;
 pub mod table;
 pub mod types;
 
