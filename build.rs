@@ -701,9 +701,10 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 // The records in a member (types::Func::payload_in), read
                 // within the caller's size (types::Pages::room).
                 _ if !f.payload_in.is_empty() => safety.push(format!(
-                    "/// `{n}` must be NULL or point to a readable `{t}` whose `{}` array holds a record for each number written, within `{}` bytes.",
-                    f.payload_in,
+                    "/// `{n}` must be NULL or point to `{}` readable bytes: a {} whose `{}` array holds a record for each number written.",
                     room.unwrap_or("?"),
+                    doc_type(t),
+                    f.payload_in,
                 )),
                 // types::TEXT: read up to its NUL, at most the field's bytes.
                 _ if p.count == types::SPAN => safety.push(format!(

@@ -5516,7 +5516,7 @@ short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec
  before it stay written.
 
  # Safety
- `buf` must be NULL or point to a readable `IODBPR` whose `data` array holds a record for each number written, within `length` bytes.
+ `buf` must be NULL or point to `length` readable bytes: a IODBPR whose `data` array holds a record for each number written.
  */
 short cnc_wrpmacror(unsigned short FlibHndl,
                     unsigned short length,

@@ -191,6 +191,18 @@ pub(crate) unsafe fn exec(
     if f.input().is_some() {
         let input = nonnull(pay.input.cast_mut())?;
         outs_set()?;
+        // The leading checks of plain number arguments come before the
+        // struct is read (cnc_wrpmacror's `length` below 12: FANUC's
+        // library checks it before anything, and the caller's buffer may
+        // be that small).
+        let plain = f
+            .checks
+            .iter()
+            .take_while(|c| usize::from(c.arg) < numbers)
+            .count();
+        if let Some(code) = f.checks_fail(plain, args, h.pair.info.option & 1 == 1) {
+            return Err(Error::local(code, "argument out of range"));
+        }
         for ((_, c), (at, off)) in f.inputs().zip(args[numbers..].iter_mut().zip(pay.words)) {
             if c.size() == 4 {
                 // A 32-bit `long` member, read as it is.
