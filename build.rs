@@ -399,6 +399,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::ULong(n) => format!("{}: c_ulong", ident(n)),
             Param::Text(n, _) => format!("{}: *mut c_char", ident(n)),
             Param::UShort(n) => format!("{}: c_ushort", ident(n)),
+            Param::Char(n) => format!("{}: c_char", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
             Param::In(n, t) | Param::InOut(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),

@@ -699,6 +699,29 @@ typedef struct ODBCSVID {
 } ODBCSVID;
 
 /*
+ cnc_rdservoid2 / cnc_rdfromservoid2: ODBCSVID's parts, then the
+ software series and edition of the servo amplifier and of the power
+ supply, and the specifications and serial numbers of power modules 1
+ and 2 (characters as the CNC sent them).
+ */
+typedef struct ODBCSVID2 {
+    char mt_spc[20];
+    char mt_srn[10];
+    char plc_spc[22];
+    char plc_srn[9];
+    char svm_spc[22];
+    char svm_srn[12];
+    char psm_spc[22];
+    char psm_srn[12];
+    char svs_see[9];
+    char pss_see[9];
+    char pm1_spc[22];
+    char pm1_srn[9];
+    char pm2_spc[22];
+    char pm2_srn[9];
+} ODBCSVID2;
+
+/*
  cnc_rdspindleid / cnc_rdfromspindleid: the specifications and serial
  numbers of a spindle's motor, sub motor, amplifier and power supply.
  */
@@ -712,6 +735,22 @@ typedef struct ODBCSPID {
     char psm_spc[22];
     char psm_srn[12];
 } ODBCSPID;
+
+/*
+ cnc_rdspindleid2 / cnc_rdfromspindleid2: ODBCSPID's parts, then the
+ power supply's software series and edition.
+ */
+typedef struct ODBCSPID2 {
+    char mt_spc[20];
+    char mt_srn[10];
+    char sbmt_spc[20];
+    char sbmt_srn[10];
+    char spm_spc[22];
+    char spm_srn[12];
+    char psm_spc[22];
+    char psm_srn[12];
+    char pss_see[9];
+} ODBCSPID2;
 
 /*
  cnc_rdgrpid2: the tool life group of a tool number.
@@ -2776,6 +2815,20 @@ short cnc_allclibhndl4(const char *ip,
                        unsigned short *FlibHndl);
 
 /*
+ Reads a count of the path as cnc_rdaxisdata's counts: `kind` 0 its axes,
+ 1 its spindles.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ */
+short cnc_axisnum(unsigned short FlibHndl, short kind, short *num);
+
+/*
+ Changes the CNC's display language to `lang` (cnc_getlanguage's codes).
+ */
+short cnc_chglang(unsigned short FlibHndl, char lang);
+
+/*
  Clears the operator message history.
  */
 short cnc_clearomhis(unsigned short FlibHndl);
@@ -3003,6 +3056,14 @@ short cnc_exitprocess(void);
 short cnc_freelibhndl(unsigned short FlibHndl);
 
 /*
+ Reads the CNC's model code (the low 16 bits of the 32-bit answer).
+
+ # Safety
+ `model` must be NULL or point to a writable short.
+ */
+short cnc_getcncmodel(unsigned short FlibHndl, short *model);
+
+/*
  Reads the detail words of the last error on this handle.
 
  # Safety
@@ -3023,6 +3084,14 @@ short cnc_getfigure(unsigned short FlibHndl,
                     short *valid_fig,
                     short *dec_fig_in,
                     short *dec_fig_out);
+
+/*
+ Reads the CNC's display language code.
+
+ # Safety
+ `lang` must be NULL or point to a writable short.
+ */
+short cnc_getlanguage(unsigned short FlibHndl, short *lang);
 
 /*
  Reads the current path of this handle and the CNC's number of paths.
@@ -3403,6 +3472,15 @@ short cnc_rdcommand(unsigned short FlibHndl,
                     struct ODBCMD *command);
 
 /*
+ Reads how many additional work coordinate systems (G54.1 P1..) the CNC
+ has (the low 16 bits of the 32-bit answer).
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ */
+short cnc_rdcoordnum(unsigned short FlibHndl, short *num);
+
+/*
  Reads the tool life counter of tool group `number`.
 
  # Safety
@@ -3553,6 +3631,15 @@ short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *
 short cnc_rdfromservoid(unsigned short FlibHndl, short axis, struct ODBCSVID *servoid);
 
 /*
+ Reads the servo ID information of axis `axis` the CNC saved (its last ID
+ check), as cnc_rdservoid2.
+
+ # Safety
+ `servoid` must be NULL or point to a writable ODBCSVID2.
+ */
+short cnc_rdfromservoid2(unsigned short FlibHndl, short axis, struct ODBCSVID2 *servoid);
+
+/*
  Reads the spindle ID information of spindle `sp_no` the CNC saved (its
  last ID check), as cnc_rdspindleid.
 
@@ -3560,6 +3647,15 @@ short cnc_rdfromservoid(unsigned short FlibHndl, short axis, struct ODBCSVID *se
  `spindleid` must be NULL or point to a writable ODBCSPID.
  */
 short cnc_rdfromspindleid(unsigned short FlibHndl, short sp_no, struct ODBCSPID *spindleid);
+
+/*
+ Reads the spindle ID information of spindle `sp_no` the CNC saved (its
+ last ID check), as cnc_rdspindleid2.
+
+ # Safety
+ `spindleid` must be NULL or point to a writable ODBCSPID2.
+ */
+short cnc_rdfromspindleid2(unsigned short FlibHndl, short sp_no, struct ODBCSPID2 *spindleid);
 
 /*
  Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
@@ -3749,6 +3845,15 @@ short cnc_rdmdiprgstat(unsigned short FlibHndl, unsigned short *stat);
 short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
 
 /*
+ Reads the menu switch signals, bit k the k-th switch (the low 16 bits of
+ the 32-bit answer).
+
+ # Safety
+ `data` must be NULL or point to a writable short.
+ */
+short cnc_rdmenuswitch(unsigned short FlibHndl, short *data);
+
+/*
  Reads the multiple-piece machining number (4 bytes written into the
  `long`).
 
@@ -3826,6 +3931,14 @@ short cnc_rdomhistry2(unsigned short FlibHndl,
                       unsigned short e_number,
                       unsigned short length,
                       struct ODBOMHIS2 *omhis);
+
+/*
+ Reads the current operation level (the password's level).
+
+ # Safety
+ `lvl` must be NULL or point to a writable short.
+ */
+short cnc_rdope_lvl(unsigned short FlibHndl, short *lvl);
 
 /*
  Reads the number of operation history entries.
@@ -4460,6 +4573,25 @@ short cnc_rdprogline(unsigned short FlibHndl,
 short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 
 /*
+ Reads the operation levels data kind `kind` needs to be modified
+ (`rd_lvl`) and output (`wt_lvl`).
+
+ # Safety
+ `rd_lvl` must be NULL or point to a writable short.
+ `wt_lvl` must be NULL or point to a writable short.
+ */
+short cnc_rdprt_lvl(unsigned short FlibHndl, short kind, short *rd_lvl, short *wt_lvl);
+
+/*
+ Reads how many times the running program has repeated (4 bytes written
+ into the `long`).
+
+ # Safety
+ `val` must be NULL or point to a writable long.
+ */
+short cnc_rdrepeatval(unsigned short FlibHndl, long *val);
+
+/*
  Reads the sequence number of the block being executed.
 
  # Safety
@@ -4476,6 +4608,16 @@ short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
  `servoid` must be NULL or point to a writable ODBCSVID.
  */
 short cnc_rdservoid(unsigned short FlibHndl, short axis, short slct, struct ODBCSVID *servoid);
+
+/*
+ Reads the servo ID information of axis `axis` as cnc_rdservoid, with the
+ software series and editions of the amplifier and power supply and the
+ power modules' specifications and serial numbers.
+
+ # Safety
+ `servoid` must be NULL or point to a writable ODBCSVID2.
+ */
+short cnc_rdservoid2(unsigned short FlibHndl, short axis, short slct, struct ODBCSVID2 *servoid);
 
 /*
  Reads one setting data item into IODBPSD, as cnc_rdparam reads a
@@ -4586,6 +4728,18 @@ short cnc_rdspgear(unsigned short FlibHndl, short sp_no, struct ODBSPN *serialsp
  `spindleid` must be NULL or point to a writable ODBCSPID.
  */
 short cnc_rdspindleid(unsigned short FlibHndl, short sp_no, short slct, struct ODBCSPID *spindleid);
+
+/*
+ Reads the spindle ID information of spindle `sp_no` as cnc_rdspindleid,
+ with the power supply's software series and edition.
+
+ # Safety
+ `spindleid` must be NULL or point to a writable ODBCSPID2.
+ */
+short cnc_rdspindleid2(unsigned short FlibHndl,
+                       short sp_no,
+                       short slct,
+                       struct ODBCSPID2 *spindleid);
 
 /*
  Reads the load of serial spindle `sp_no` (1..8, or -1 all): `datano` =
@@ -5376,6 +5530,13 @@ short cnc_wrmdipntr(unsigned short FlibHndl, long exe_pntr);
 short cnc_wrmdiprog(unsigned short FlibHndl, short length, char *data);
 
 /*
+ Writes the menu switch signals `mask` selects (bit k: switch k) from
+ `data`'s bits: `data` goes as a request word, `mask` as the payload (32
+ bits, sign-extended).
+ */
+short cnc_wrmenuswitch(unsigned short FlibHndl, short data, short mask);
+
+/*
  Writes the software operator panel's general purpose switches `type`
  selects (bit k: switch k + 1, from `sgnal` bit k); only `type`'s low
  byte is sent, and left in `type` (its high byte cleared); `sgnal` goes
@@ -5521,6 +5682,12 @@ short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec
 short cnc_wrpmacror(unsigned short FlibHndl,
                     unsigned short length,
                     struct IODBPR *buf);
+
+/*
+ Sets the operation levels data kind `kind` needs to be modified
+ (`rd_lvl`) and output (`wt_lvl`), as cnc_rdprt_lvl reads them.
+ */
+short cnc_wrprt_lvl(unsigned short FlibHndl, short kind, short rd_lvl, short wt_lvl);
 
 /*
  Writes one setting data item from IODBPSD, as cnc_wrparam writes a

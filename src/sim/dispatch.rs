@@ -10,7 +10,7 @@ use super::route::{Answer, Asked, Route};
 use super::service::{CncError, CncService, Reply, respond};
 use super::{
     folder, history, macros, magazine, maintenance, memory, offset, operate, param, pmc_answers,
-    position, program, sampling, setting, status, tool,
+    position, program, sampling, screen, setting, status, tool,
 };
 use crate::proto::described;
 use crate::proto::open::{CncClass, OpenBody};
@@ -36,6 +36,7 @@ const AREAS: &[&[Route]] = &[
     maintenance::ROUTES,
     sampling::ROUTES,
     setting::ROUTES,
+    screen::ROUTES,
 ];
 
 /// The CNC classes a described function's form is chosen by, in the

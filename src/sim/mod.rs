@@ -40,6 +40,7 @@ pub mod program;
 pub mod route;
 pub mod run;
 pub mod sampling;
+pub mod screen;
 pub mod server;
 pub mod service;
 pub mod session;

@@ -58,11 +58,22 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDFROMSPINDLEID, |m, q| {
         drive_id(&m.profile.system.spindle, q)
     }),
+    Route::table(cmd::RDSERVOID2, |m, q| drive_id(&m.profile.system.servo, q)),
+    Route::table(cmd::RDFROMSERVOID2, |m, q| {
+        drive_id(&m.profile.system.servo, q)
+    }),
+    Route::table(cmd::RDSPINDLEID2, |m, q| {
+        drive_id(&m.profile.system.spindle, q)
+    }),
+    Route::table(cmd::RDFROMSPINDLEID2, |m, q| {
+        drive_id(&m.profile.system.spindle, q)
+    }),
 ];
 
-/// cnc_rdservoid / cnc_rdspindleid and their saved copies (the simulated
-/// CNC's last ID check found the drives it has): drive `q.arg(0)` (1 the
-/// first) of the profile's list, each string in its field, NUL-padded and
+/// cnc_rdservoid / cnc_rdspindleid, their saved copies and their *2 forms
+/// (the simulated CNC's last ID check found the drives it has): drive
+/// `q.arg(0)` (1 the first) of the profile's list (the parts, the software,
+/// the power modules: as many as the layout has), each string in its field, NUL-padded and
 /// cut to leave a NUL (the field lengths are the reply layout's); no such
 /// drive is EW_NUMBER.
 fn drive_id(drives: &[super::profile::system::DriveId], q: &Asked<'_>) -> Reply<Vec<i64>> {
@@ -71,7 +82,8 @@ fn drive_id(drives: &[super::profile::system::DriveId], q: &Asked<'_>) -> Reply<
         .and_then(|k| drives.get(k))
         .ok_or(CncError::NUMBER)?;
     let parts = [&d.motor, &d.sub, &d.amplifier, &d.power_supply];
-    let texts = parts.iter().flat_map(|p| p.iter());
+    let texts = parts.into_iter().flat_map(|p| p.iter());
+    let texts = texts.chain(&d.software).chain(d.modules.iter().flatten());
     let mut v = Vec::new();
     for (f, t) in q.f.reply.iter().zip(texts) {
         let n = usize::from(f.n);

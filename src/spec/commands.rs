@@ -277,7 +277,7 @@ commands! {
     AXIS_FLAGS = CLASS_CNC 0x00a3 [cnc_rdaxisdata];
     /// Counts: args \[0\] axes, \[1\] spindles, \[2\] servo axes, \[3\] speed display.
     COUNT = CLASS_CNC 0x00a4 [cnc_acts2 cnc_rdaxisdata cnc_rdsvmeter cnc_rdspmeter cnc_rdposition
-        cnc_rdnspdl];
+        cnc_rdnspdl cnc_axisnum];
     /// cnc_rdaxisdata class 5 type 2: a third speed-class value record (its
     /// meaning is not known; FANUC's library names it 'F' and takes its unit
     /// from 0x88\[4\]).
@@ -416,6 +416,35 @@ commands! {
     RDFROMSERVOID = CLASS_CNC 0x0290 [cnc_rdfromservoid];
     /// cnc_rdfromspindleid: `(1,0x0291)[sp_no]`, as cnc_rdspindleid's answer.
     RDFROMSPINDLEID = CLASS_CNC 0x0291 [cnc_rdfromspindleid];
+    /// cnc_rdservoid2: `(1,0x0292)[axis, slct]`, the 209-byte ODBCSVID2 answered.
+    RDSERVOID2 = CLASS_CNC 0x0292 [cnc_rdservoid2];
+    /// cnc_rdspindleid2: `(1,0x0293)[sp_no, slct]`, the 137-byte ODBCSPID2 answered.
+    RDSPINDLEID2 = CLASS_CNC 0x0293 [cnc_rdspindleid2];
+    /// cnc_rdfromservoid2: `(1,0x0294)[axis]`, as cnc_rdservoid2's answer.
+    RDFROMSERVOID2 = CLASS_CNC 0x0294 [cnc_rdfromservoid2];
+    /// cnc_rdfromspindleid2: `(1,0x0295)[sp_no]`, as cnc_rdspindleid2's answer.
+    RDFROMSPINDLEID2 = CLASS_CNC 0x0295 [cnc_rdfromspindleid2];
+    // Family A of the long tail: system state, screen and program state.
+    /// cnc_rdope_lvl: `(1,0x00c0)`, the operation level (i16).
+    RDOPE_LVL = CLASS_CNC 0x00c0 [cnc_rdope_lvl];
+    /// cnc_rdprt_lvl: `(1,0x00c5)[kind]`, the read and write protection levels (i16 each).
+    RDPRT_LVL = CLASS_CNC 0x00c5 [cnc_rdprt_lvl];
+    /// cnc_wrprt_lvl: `(1,0x00c6)[kind, read, write]`.
+    WRPRT_LVL = CLASS_CNC 0x00c6 [cnc_wrprt_lvl];
+    /// cnc_getlanguage: `(1,0x00dd)`, the display language (i16).
+    GETLANGUAGE = CLASS_CNC 0x00dd [cnc_getlanguage];
+    /// cnc_chglang: `(1,0x00f4)[language]`.
+    CHGLANG = CLASS_CNC 0x00f4 [cnc_chglang];
+    /// cnc_rdmenuswitch: `(1,0x0115)`, the menu switches (i32).
+    RDMENUSWITCH = CLASS_CNC 0x0115 [cnc_rdmenuswitch];
+    /// cnc_wrmenuswitch: `(1,0x0116)[data, mask]`.
+    WRMENUSWITCH = CLASS_CNC 0x0116 [cnc_wrmenuswitch];
+    /// cnc_rdcoordnum: `(1,0x015b)`, the additional work coordinate systems (i32).
+    RDCOORDNUM = CLASS_CNC 0x015b [cnc_rdcoordnum];
+    /// cnc_getcncmodel: `(1,0x016f)`, the model code (i32).
+    GETCNCMODEL = CLASS_CNC 0x016f [cnc_getcncmodel];
+    /// cnc_rdrepeatval: `(1,0x02c6)`, the program's repeats (i32).
+    RDREPEATVAL = CLASS_CNC 0x02c6 [cnc_rdrepeatval];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];

@@ -17,6 +17,7 @@ impl Func {
             | Param::Long(n)
             | Param::ULong(n)
             | Param::UShort(n)
+            | Param::Char(n)
             | Param::ShortAs(n, _)
             | Param::Count(n)
             | Param::Io(n) => Some(n),

@@ -25,6 +25,9 @@ pub enum Param {
     Long(&'static str),
     /// `unsigned long NAME`: as [`Param::Long`] (32 bits go on the wire).
     ULong(&'static str),
+    /// `char NAME`: a number the caller passes as a C `char` (signed on
+    /// x86-64, where FANUC's library runs; unsigned on aarch64, as C has it).
+    Char(&'static str),
     /// `unsigned short NAME`: a number the caller passes, 0..=65535 (its
     /// checks and request word see it unsigned).
     UShort(&'static str),
@@ -72,6 +75,7 @@ impl Param {
             Param::Short(_) | Param::Count(_) | Param::Io(_) => Some(v as i16 as i32),
             Param::Long(_) | Param::ULong(_) => Some(v as i32),
             Param::UShort(_) => Some(v as u16 as i32),
+            Param::Char(_) => Some(v as i8 as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
             Param::Out(..) | Param::In(..) | Param::InOut(..) | Param::Text(..) => None,
         }
@@ -82,6 +86,7 @@ impl Param {
             | Param::Long(n)
             | Param::ULong(n)
             | Param::UShort(n)
+            | Param::Char(n)
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)

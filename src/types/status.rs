@@ -411,3 +411,42 @@ pub struct ODBCSPID {
     pub psm_spc: [c_char; 22],
     pub psm_srn: [c_char; 12],
 }
+
+/// cnc_rdservoid2 / cnc_rdfromservoid2: ODBCSVID's parts, then the
+/// software series and edition of the servo amplifier and of the power
+/// supply, and the specifications and serial numbers of power modules 1
+/// and 2 (characters as the CNC sent them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBCSVID2 {
+    pub mt_spc: [c_char; 20],
+    pub mt_srn: [c_char; 10],
+    pub plc_spc: [c_char; 22],
+    pub plc_srn: [c_char; 9],
+    pub svm_spc: [c_char; 22],
+    pub svm_srn: [c_char; 12],
+    pub psm_spc: [c_char; 22],
+    pub psm_srn: [c_char; 12],
+    pub svs_see: [c_char; 9],
+    pub pss_see: [c_char; 9],
+    pub pm1_spc: [c_char; 22],
+    pub pm1_srn: [c_char; 9],
+    pub pm2_spc: [c_char; 22],
+    pub pm2_srn: [c_char; 9],
+}
+
+/// cnc_rdspindleid2 / cnc_rdfromspindleid2: ODBCSPID's parts, then the
+/// power supply's software series and edition.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBCSPID2 {
+    pub mt_spc: [c_char; 20],
+    pub mt_srn: [c_char; 10],
+    pub sbmt_spc: [c_char; 20],
+    pub sbmt_srn: [c_char; 10],
+    pub spm_spc: [c_char; 22],
+    pub spm_srn: [c_char; 12],
+    pub psm_spc: [c_char; 22],
+    pub psm_srn: [c_char; 12],
+    pub pss_see: [c_char; 9],
+}

@@ -567,6 +567,7 @@ mod collectors_panel_system;
 mod collectors_pcode;
 mod collectors_programs_macros;
 mod collectors_settings;
+mod collectors_system;
 mod collectors_system_ids;
 mod collectors_tool_axis;
 mod sampling;

@@ -99,6 +99,7 @@ pub fn generated_words() -> String {
                 | Param::Long(_)
                 | Param::ULong(_)
                 | Param::UShort(_)
+                | Param::Char(_)
                 | Param::ShortAs(..) => {
                     n += 1;
                     format!("N({n})")

@@ -19,6 +19,17 @@ pub struct System {
     /// The spindle drives, spindle 1 first (cnc_rdspindleid,
     /// cnc_rdfromspindleid; `sub_motor` is the sub spindle motor).
     pub spindle: Vec<DriveId>,
+    /// cnc_getcncmodel: the model code.
+    pub model: i16,
+    /// cnc_getlanguage: the display language (cnc_chglang changes it).
+    pub language: i16,
+    /// cnc_rdope_lvl: the operation level.
+    pub operation_level: i16,
+    /// cnc_rdprt_lvl / cnc_wrprt_lvl: per data kind (0 the first), the
+    /// operation levels it needs to be [modified, output].
+    pub protection: Vec<[i16; 2]>,
+    /// cnc_rdmenuswitch / cnc_wrmenuswitch: bit k the k-th menu switch.
+    pub menu_switch: u16,
     /// The slots, in the CNC's logical order (cnc_rdsyssoft's logical
     /// slots; its physical list is theirs in ascending order).
     #[serde(rename = "slot")]
@@ -53,6 +64,13 @@ pub struct DriveId {
     pub sub: [String; 2],
     pub amplifier: [String; 2],
     pub power_supply: [String; 2],
+    /// The software series-editions the *2 forms read after the parts: the
+    /// amplifier's then the power supply's (servo), the power supply's
+    /// (spindle).
+    pub software: Vec<String>,
+    /// Power modules 1 and 2: [specification, serial number] each
+    /// (cnc_rdservoid2).
+    pub modules: [[String; 2]; 2],
 }
 
 /// One board: its two ID words, group and hardware IDs, how many are
@@ -101,6 +119,11 @@ impl Default for System {
             edition: edition.into(),
         };
         System {
+            model: 0,
+            language: 0,
+            operation_level: 4,
+            protection: vec![[4, 4], [4, 4], [7, 7]],
+            menu_switch: 0x0005,
             boards: vec![
                 board(1, 1, 0, 0x0001_0203, 0x0000_0010),
                 board(1, 2, 0, 0x0001_0405, 0x0000_0020),
@@ -120,6 +143,11 @@ impl Default for System {
                     sub: ["A860-2000-T301".into(), format!("P2{k}456")],
                     amplifier: ["A06B-6240-H105".into(), format!("V09B0{k}789")],
                     power_supply: ["A06B-6200-H011".into(), "E0AC12345".into()],
+                    software: vec!["9096-08".into(), "9G00-02".into()],
+                    modules: [
+                        ["A06B-6400-H002".into(), format!("M1A0{k}55")],
+                        [String::new(), String::new()],
+                    ],
                 })
                 .collect(),
             spindle: vec![DriveId {
@@ -127,6 +155,8 @@ impl Default for System {
                 sub: [String::new(), String::new()],
                 amplifier: ["A06B-6220-H011".into(), "V10B12345".into()],
                 power_supply: ["A06B-6200-H011".into(), "E0AC12345".into()],
+                software: vec!["9G00-02".into()],
+                modules: Default::default(),
             }],
             slots: vec![
                 Slot {

@@ -458,6 +458,57 @@ pub const FUNCS: &[Func] = &[
         dims: &["1|0|-1|2|8|9"],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdservoid2",
+        learnt: Some(&[]),
+        doc: "Reads the servo ID information of axis `axis` as cnc_rdservoid, with the software series and editions of the amplifier and power supply and the power modules' specifications and serial numbers.",
+        params: &[
+            Param::Short("axis"),
+            Param::Short("slct"),
+            Param::Out("servoid", "ODBCSVID2"),
+        ],
+        forms: &[every_class(cmd::RDSERVOID2, &[Word::Arg(0), Word::Arg(1)])],
+        reply: SERVO_ID2,
+        dims: &["1|0|-1|2|3|4|32|33", "0|1|-1|2"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdspindleid2",
+        learnt: Some(&[]),
+        doc: "Reads the spindle ID information of spindle `sp_no` as cnc_rdspindleid, with the power supply's software series and edition.",
+        params: &[
+            Param::Short("sp_no"),
+            Param::Short("slct"),
+            Param::Out("spindleid", "ODBCSPID2"),
+        ],
+        forms: &[every_class(
+            cmd::RDSPINDLEID2,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: SPINDLE_ID2,
+        dims: &["1|0|-1|2|8|9", "0|1|-1|2"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdfromservoid2",
+        learnt: Some(&[]),
+        doc: "Reads the servo ID information of axis `axis` the CNC saved (its last ID check), as cnc_rdservoid2.",
+        params: &[Param::Short("axis"), Param::Out("servoid", "ODBCSVID2")],
+        forms: &[every_class(cmd::RDFROMSERVOID2, &[Word::Arg(0)])],
+        reply: SERVO_ID2,
+        dims: &["1|0|-1|2|3|4|32|33"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdfromspindleid2",
+        learnt: Some(&[]),
+        doc: "Reads the spindle ID information of spindle `sp_no` the CNC saved (its last ID check), as cnc_rdspindleid2.",
+        params: &[Param::Short("sp_no"), Param::Out("spindleid", "ODBCSPID2")],
+        forms: &[every_class(cmd::RDFROMSPINDLEID2, &[Word::Arg(0)])],
+        reply: SPINDLE_ID2,
+        dims: &["1|0|-1|2|8|9"],
+        ..COMMAND
+    },
 ];
 
 /// `n` characters of the answer into output 0's member `to`, as sent.
@@ -494,6 +545,38 @@ const SERVO_ID: &[Field] = &[
     chars(12, "svm_srn"),
     chars(22, "psm_spc"),
     chars(12, "psm_srn"),
+];
+
+/// ODBCSVID2's 209 bytes: ODBCSVID's, then the software series/editions and
+/// the power modules.
+const SERVO_ID2: &[Field] = &[
+    chars(20, "mt_spc"),
+    chars(10, "mt_srn"),
+    chars(22, "plc_spc"),
+    chars(9, "plc_srn"),
+    chars(22, "svm_spc"),
+    chars(12, "svm_srn"),
+    chars(22, "psm_spc"),
+    chars(12, "psm_srn"),
+    chars(9, "svs_see"),
+    chars(9, "pss_see"),
+    chars(22, "pm1_spc"),
+    chars(9, "pm1_srn"),
+    chars(22, "pm2_spc"),
+    chars(9, "pm2_srn"),
+];
+
+/// ODBCSPID2's 137 bytes: ODBCSPID's, then the power supply's software.
+const SPINDLE_ID2: &[Field] = &[
+    chars(20, "mt_spc"),
+    chars(10, "mt_srn"),
+    chars(20, "sbmt_spc"),
+    chars(10, "sbmt_srn"),
+    chars(22, "spm_spc"),
+    chars(12, "spm_srn"),
+    chars(22, "psm_spc"),
+    chars(12, "psm_srn"),
+    chars(9, "pss_see"),
 ];
 
 /// ODBCSPID's 128 bytes, copied as the CNC sent them.

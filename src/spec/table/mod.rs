@@ -26,6 +26,7 @@ pub mod pmc;
 mod position;
 pub mod program;
 mod sampling;
+mod screen;
 pub mod servo;
 mod setting;
 pub mod status;
@@ -53,6 +54,7 @@ const AREAS: &[&[Func]] = &[
     setting::FUNCS,
     sampling::FUNCS,
     status::FUNCS,
+    screen::FUNCS,
 ];
 
 const LEN: usize = {
