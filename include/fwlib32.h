@@ -5160,6 +5160,12 @@ short cnc_reset2(unsigned short FlibHndl);
 short cnc_resetconnect(unsigned short FlibHndl);
 
 /*
+ Rewinds the cursor of the path's main program to its top (the path
+ stopped).
+ */
+short cnc_rewind(unsigned short FlibHndl);
+
+/*
  Cancels the servo data sampling (sends `(1,0x0136)`; FANUC's 32-bit
  library only).
  */
@@ -5218,6 +5224,12 @@ short cnc_search(unsigned short FlibHndl, short prog_no);
  Selects program `prog_no` (8 digits) as the main program.
  */
 short cnc_searcho8(unsigned short FlibHndl, long prog_no);
+
+/*
+ Searches the path's main program for sequence number `seq`: the cursor
+ goes to its block (the path stopped).
+ */
+short cnc_seqsrch(unsigned short FlibHndl, long seq);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).

@@ -1,12 +1,15 @@
 //! The CNC's screen and operator state (family A of the long tail): the
 //! model, display language, operation and protection levels and menu
 //! switches of the profile's `[system]` (the writes change them there),
-//! the additional work coordinate systems of the path's offsets and the
-//! running program's repeats.
+//! the additional work coordinate systems of the path's offsets, the
+//! running program's repeats, and the stopped path's cursor (cnc_rewind,
+//! cnc_seqsrch).
 
-use super::route::Route;
+use super::Machine;
+use super::plan::{EXEC_LINES, Plan};
+use super::route::{Route, none};
 use super::service::{CncError, Reply};
-use crate::ew::EW_DATA;
+use crate::ew::{EW_BUSY, EW_DATA};
 use crate::proto::cmd;
 
 pub(super) const ROUTES: &[Route] = &[
@@ -60,7 +63,48 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(cmd::RDREPEATVAL, |m, q| {
         Ok(vec![m.live(q.path)?.runs_done as i64])
     }),
+    Route::table(cmd::REWIND, |m, q| none(m.cursor(q.path, None))),
+    Route::table(cmd::SEQSRCH, |m, q| none(m.cursor(q.path, Some(q.arg(0))))),
 ];
+
+impl Machine {
+    /// cnc_rewind (`seq` None) / cnc_seqsrch: the cursor of the path's main
+    /// program goes to its top (sequence number 0) or to the first block
+    /// numbered N`seq`, as cnc_rdseqnum and cnc_rdexecprog then show; a
+    /// path running or held is EW_BUSY, no such number EW_DATA, nothing
+    /// changed [ours]. A cycle start still runs the program from its top.
+    fn cursor(&mut self, path: u16, seq: Option<i32>) -> Reply<()> {
+        let i = usize::from(path).wrapping_sub(1);
+        let p = self.profile.paths.get(i).ok_or(CncError::PATH)?;
+        if matches!(p.status.run, 2 | 3) {
+            return Err(CncError::new(EW_BUSY));
+        }
+        let main = self.store.path(path)?.main;
+        let prog = self.store.get(path, main).ok_or(CncError::new(EW_DATA))?;
+        let top = || {
+            prog.text
+                .lines()
+                .take(EXEC_LINES)
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        let (seq, line, text) = match seq {
+            None => (0, 0, top()),
+            Some(n) => {
+                let plan = Plan::parse(&prog.text, &p.axes, &p.cycle);
+                // The first block with N`n` (blocks before any N: seq 0).
+                let b = plan.blocks.iter().find(|b| b.seq == n && n != 0);
+                let b = b.ok_or(CncError::new(EW_DATA))?;
+                (b.seq, b.line, b.text.clone())
+            }
+        };
+        let name = prog.display_name();
+        let run = &mut self.run[i];
+        (run.program, run.program_name) = (main, name);
+        (run.seq, run.block, run.exec_text) = (seq, line, text);
+        Ok(())
+    }
+}
 
 /// The highest display language code the simulated CNC has [ours].
 const LANGUAGES: i16 = 15;

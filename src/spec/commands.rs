@@ -445,6 +445,10 @@ commands! {
     GETCNCMODEL = CLASS_CNC 0x016f [cnc_getcncmodel];
     /// cnc_rdrepeatval: `(1,0x02c6)`, the program's repeats (i32).
     RDREPEATVAL = CLASS_CNC 0x02c6 [cnc_rdrepeatval];
+    /// cnc_seqsrch: `(1,0x001e)[seq]`, no answer.
+    SEQSRCH = CLASS_CNC 0x001e [cnc_seqsrch];
+    /// cnc_rewind: `(1,0x001f)`, no answer.
+    REWIND = CLASS_CNC 0x001f [cnc_rewind];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];

@@ -101,6 +101,22 @@ int main(int argc, char **argv) {
     check("rdrepeatval", cnc_rdrepeatval(h, &repeats));
     printf("repeat=%d\n", (int)repeats);
 
+    /* The main program's cursor: refused while it runs; after a reset, a
+     * search (then one for a number it lacks, refused) and a rewind. */
+    ODBSEQ seq;
+    memset(&seq, 0, sizeof seq); /* 4 bytes are written into its long */
+    printf("seqsrch.running=%d\n", cnc_seqsrch(h, 70));
+    check("reset", cnc_reset(h));
+    check("seqsrch", cnc_seqsrch(h, 70));
+    check("rdseqnum", cnc_rdseqnum(h, &seq));
+    printf("seq.searched=%d\n", (int)seq.data);
+    printf("seqsrch.missing=%d\n", cnc_seqsrch(h, 75));
+    check("rdseqnum", cnc_rdseqnum(h, &seq));
+    printf("seq.kept=%d\n", (int)seq.data);
+    check("rewind", cnc_rewind(h));
+    check("rdseqnum", cnc_rdseqnum(h, &seq));
+    printf("seq.rewound=%d\n", (int)seq.data);
+
     check("freelibhndl", cnc_freelibhndl(h));
     return 0;
 }

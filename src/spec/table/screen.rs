@@ -1,7 +1,7 @@
 //! The CNC's screen and operator state (family A of the long tail): its
 //! model, display language, operation and protection levels, menu
-//! switches, and the counts of its axes, additional work coordinate
-//! systems and program repeats.
+//! switches, the counts of its axes, additional work coordinate systems
+//! and program repeats, and the cursor of the main program.
 
 use super::super::commands as cmd;
 use super::super::types::Int::*;
@@ -125,6 +125,22 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::COUNT, &[Word::Arg(0)])],
         reply: &[to(I16, "", I16)],
         dims: &["0|1|2|3|-1|4"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rewind",
+        learnt: Some(&[]),
+        doc: "Rewinds the cursor of the path's main program to its top (the path stopped).",
+        forms: &[every_class(cmd::REWIND, &[])],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_seqsrch",
+        learnt: Some(&[]),
+        doc: "Searches the path's main program for sequence number `seq`: the cursor goes to its block (the path stopped).",
+        params: &[Param::Long("seq")],
+        forms: &[every_class(cmd::SEQSRCH, &[Word::Arg(0)])],
+        dims: &["30|0|-1|1|99999|100000|2147483647"],
         ..COMMAND
     },
 ];

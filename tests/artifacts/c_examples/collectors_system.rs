@@ -77,19 +77,36 @@ fn system_functions_follow_the_profile_and_state() {
     assert_eq!(kv["coordnum"], "3");
     assert_eq!(kv["axisnum.0"], p.paths[0].axes.len().to_string());
     assert_eq!(kv["axisnum.1"], p.paths[0].spindles.len().to_string());
+
+    // The cursor: busy while the program runs; N70 of the main program
+    // found, N75 (not in it) refused and the cursor kept; the top.
+    assert_eq!(p.paths[0].status.run, 3, "the default profile runs");
+    let main = p
+        .programs
+        .iter()
+        .find(|g| g.number == p.paths[0].cycle.program);
+    let text = &main.expect("the main program").text;
+    assert!(text.contains("N70 ") && !text.contains("N75 "));
+    assert_eq!(kv["seqsrch.running"], "-1", "EW_BUSY");
+    assert_eq!(kv["seq.searched"], "70");
+    assert_eq!(kv["seqsrch.missing"], "5", "EW_DATA");
+    assert_eq!(kv["seq.kept"], "70");
+    assert_eq!(kv["seq.rewound"], "0");
 }
 
 /// cnc_rdrepeatval: the running program's completed runs, none at the
 /// start, more once the clock has run far.
 #[test]
 fn repeats_follow_the_running_program() {
-    let p = Profile::parse(DEFAULT_PROFILE).expect("profile");
-    let sim = Simulator::start(p, "127.0.0.1:0").expect("simulator");
-    sim.set_elapsed(Duration::ZERO);
-    let first = run_c_against("collectors_system", &sim);
-    assert_eq!(first["repeat"], "0");
-    sim.set_elapsed(Duration::from_secs(100_000));
-    let later = run_c_against("collectors_system", &sim);
+    // A simulator each: the program resets its path.
+    let at = |secs| {
+        let p = Profile::parse(DEFAULT_PROFILE).expect("profile");
+        let sim = Simulator::start(p, "127.0.0.1:0").expect("simulator");
+        sim.set_elapsed(Duration::from_secs(secs));
+        run_c_against("collectors_system", &sim)
+    };
+    assert_eq!(at(0)["repeat"], "0");
+    let later = at(100_000);
     let n: i64 = later["repeat"].parse().expect("a number");
     assert!(n > 0, "runs completed after 100000 s: {n}");
 }
