@@ -683,6 +683,24 @@ typedef struct PRGPNT {
 } PRGPNT;
 
 /*
+ cnc_rdfixcycle: the canned cycle in force: its mode (G code), the
+ plane's and the drilling axes, the initial level, R point and Z point,
+ the repetitions commanded and done, the cut-in depth and the shifts.
+ */
+typedef struct ODBFIX {
+    short mode;
+    short pln_axes[2];
+    short drl_axes;
+    LONG i_pos;
+    LONG r_pos;
+    LONG z_pos;
+    LONG cmd_cnt;
+    LONG act_cnt;
+    LONG cut;
+    LONG shift[2];
+} ODBFIX;
+
+/*
  cnc_rdservoid / cnc_rdfromservoid: the specifications and serial
  numbers of an axis's servo motor, pulse coder, servo amplifier and
  power supply (characters as the CNC sent them).
@@ -3620,6 +3638,17 @@ short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blk
  Nothing is written through the pointers.
  */
 short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
+
+/*
+ Reads the canned cycle in force: its mode (G code), the plane's two axes
+ and the drilling axis (the low 16 bits of each word), the repetitions
+ commanded and done, then the initial level, R point, Z point, cut-in
+ depth and two shifts (the value word of each value record).
+
+ # Safety
+ `fix` must be NULL or point to a writable ODBFIX.
+ */
+short cnc_rdfixcycle(unsigned short FlibHndl, struct ODBFIX *fix);
 
 /*
  Reads the servo ID information of axis `axis` the CNC saved (its last ID

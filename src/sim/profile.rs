@@ -253,6 +253,8 @@ pub struct Path {
     /// samples (a code not listed: a figure not modelled, read as 0).
     #[serde(rename = "sample_code")]
     pub sample_codes: Vec<SampleCode>,
+    /// The canned cycle in force (cnc_rdfixcycle).
+    pub fixed_cycle: system::FixedCycle,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]

@@ -63,6 +63,17 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(cmd::RDREPEATVAL, |m, q| {
         Ok(vec![m.live(q.path)?.runs_done as i64])
     }),
+    // The value records' second words (decimals) are not read: 0.
+    Route::table(cmd::RDFIXCYCLE, |m, q| {
+        let f = &m.path(q.path)?.fixed_cycle;
+        let head = [f.mode, f.plane_axes[0], f.plane_axes[1], f.drill_axis].map(i64::from);
+        let values = [
+            f.initial, f.r_point, f.z_point, f.cut, f.shift[0], f.shift[1],
+        ];
+        let values = values.into_iter().flat_map(|v| [i64::from(v), 0]);
+        let counts = f.repeats.map(i64::from);
+        Ok(head.into_iter().chain(counts).chain(values).collect())
+    }),
     Route::table(cmd::REWIND, |m, q| none(m.cursor(q.path, None))),
     Route::table(cmd::SEQSRCH, |m, q| none(m.cursor(q.path, Some(q.arg(0))))),
 ];

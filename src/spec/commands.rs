@@ -449,6 +449,9 @@ commands! {
     SEQSRCH = CLASS_CNC 0x001e [cnc_seqsrch];
     /// cnc_rewind: `(1,0x001f)`, no answer.
     REWIND = CLASS_CNC 0x001f [cnc_rewind];
+    /// cnc_rdfixcycle: `(1,0x0119)`: four i32 (mode, the plane's two axes,
+    /// the drilling axis), the two counts, then six value records.
+    RDFIXCYCLE = CLASS_CNC 0x0119 [cnc_rdfixcycle];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];

@@ -273,3 +273,21 @@ pub struct IDBSDTCHAN {
     pub axis: c_char,
     pub shift: std::os::raw::c_ushort,
 }
+
+/// cnc_rdfixcycle: the canned cycle in force: its mode (G code), the
+/// plane's and the drilling axes, the initial level, R point and Z point,
+/// the repetitions commanded and done, the cut-in depth and the shifts.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBFIX {
+    pub mode: c_short,
+    pub pln_axes: [c_short; 2],
+    pub drl_axes: c_short,
+    pub i_pos: LONG,
+    pub r_pos: LONG,
+    pub z_pos: LONG,
+    pub cmd_cnt: LONG,
+    pub act_cnt: LONG,
+    pub cut: LONG,
+    pub shift: [LONG; 2],
+}

@@ -291,6 +291,7 @@ rust_layouts! {
         svs_see, pss_see, pm1_spc, pm1_srn, pm2_spc, pm2_srn,
     }
     ODBCSPID2 { mt_spc, mt_srn, sbmt_spc, sbmt_srn, spm_spc, spm_srn, psm_spc, psm_srn, pss_see }
+    ODBFIX { mode, pln_axes, drl_axes, i_pos, r_pos, z_pos, cmd_cnt, act_cnt, cut, shift }
     ODBST { hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit }
     ODBST2 {
         hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit,

@@ -101,6 +101,14 @@ int main(int argc, char **argv) {
     check("rdrepeatval", cnc_rdrepeatval(h, &repeats));
     printf("repeat=%d\n", (int)repeats);
 
+    /* The canned cycle in force. */
+    ODBFIX fix;
+    memset(&fix, 0xee, sizeof fix);
+    check("rdfixcycle", cnc_rdfixcycle(h, &fix));
+    printf("fixcycle=%d;%d,%d;%d;%d,%d,%d;%d,%d;%d;%d,%d\n", fix.mode, fix.pln_axes[0],
+           fix.pln_axes[1], fix.drl_axes, (int)fix.i_pos, (int)fix.r_pos, (int)fix.z_pos,
+           (int)fix.cmd_cnt, (int)fix.act_cnt, (int)fix.cut, (int)fix.shift[0], (int)fix.shift[1]);
+
     /* The main program's cursor: refused while it runs; after a reset, a
      * search (then one for a number it lacks, refused) and a rewind. */
     ODBSEQ seq;

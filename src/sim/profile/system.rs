@@ -54,6 +54,25 @@ pub struct Slot {
     pub software: i16,
 }
 
+/// `[path.fixed_cycle]`: the canned cycle in force (cnc_rdfixcycle): its
+/// G code (80: none), the plane's two axes and the drilling axis (axis
+/// numbers), the initial level, R point and Z point, the repetitions
+/// commanded and done, the cut-in depth (Q) and the shifts, in the axes'
+/// least input increments.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FixedCycle {
+    pub mode: i16,
+    pub plane_axes: [i16; 2],
+    pub drill_axis: i16,
+    pub initial: i32,
+    pub r_point: i32,
+    pub z_point: i32,
+    pub repeats: [i32; 2],
+    pub cut: i32,
+    pub shift: [i32; 2],
+}
+
 /// One drive's ID information: each part's specification and serial
 /// number (cut to the field's length less its NUL).
 #[derive(Debug, Clone, Default, Deserialize)]

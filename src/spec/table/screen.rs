@@ -143,4 +143,34 @@ pub const FUNCS: &[Func] = &[
         dims: &["30|0|-1|1|99999|100000|2147483647"],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdfixcycle",
+        learnt: Some(&[]),
+        doc: "Reads the canned cycle in force: its mode (G code), the plane's two axes and the drilling axis (the low 16 bits of each word), the repetitions commanded and done, then the initial level, R point, Z point, cut-in depth and two shifts (the value word of each value record).",
+        params: &[Param::Out("fix", "ODBFIX")],
+        forms: &[every_class(cmd::RDFIXCYCLE, &[])],
+        reply: &[
+            to(I32, "mode", I16),
+            Field {
+                n: 2,
+                ..to(I32, "pln_axes", I16)
+            },
+            to(I32, "drl_axes", I16),
+            to(I32, "cmd_cnt", I32),
+            to(I32, "act_cnt", I32),
+            to(I32, "i_pos", I32),
+            skip(I32),
+            to(I32, "r_pos", I32),
+            skip(I32),
+            to(I32, "z_pos", I32),
+            skip(I32),
+            to(I32, "cut", I32),
+            skip(I32),
+            to(I32, "shift[0]", I32),
+            skip(I32),
+            to(I32, "shift[1]", I32),
+            skip(I32),
+        ],
+        ..COMMAND
+    },
 ];

@@ -78,6 +78,31 @@ fn system_functions_follow_the_profile_and_state() {
     assert_eq!(kv["axisnum.0"], p.paths[0].axes.len().to_string());
     assert_eq!(kv["axisnum.1"], p.paths[0].spindles.len().to_string());
 
+    // The canned cycle in force: the path's `fixed_cycle`.
+    let f = &p.paths[0].fixed_cycle;
+    assert!(
+        f.mode != 0 && f.z_point != 0 && f.cut != 0,
+        "set in the default profile"
+    );
+    assert_eq!(
+        kv["fixcycle"],
+        format!(
+            "{};{},{};{};{},{},{};{},{};{};{},{}",
+            f.mode,
+            f.plane_axes[0],
+            f.plane_axes[1],
+            f.drill_axis,
+            f.initial,
+            f.r_point,
+            f.z_point,
+            f.repeats[0],
+            f.repeats[1],
+            f.cut,
+            f.shift[0],
+            f.shift[1]
+        )
+    );
+
     // The cursor: busy while the program runs; N70 of the main program
     // found, N75 (not in it) refused and the cursor kept; the top.
     assert_eq!(p.paths[0].status.run, 3, "the default profile runs");
