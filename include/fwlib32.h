@@ -285,6 +285,31 @@ typedef struct ODBMDL {
 } ODBMDL;
 
 /*
+ cnc_toolnum: tool number of a tool in a tool-life group (cnc_rd1length,
+ cnc_rd2length, cnc_rd1radius, cnc_rd2radius, cnc_t1info, cnc_t2info: its
+ H and D numbers and information).
+ */
+typedef struct ODBTLIFE4 {
+    short datano;
+    short type;
+    LONG data;
+} ODBTLIFE4;
+
+/*
+ cnc_rd1tlifedat2: one tool of a tool life group by a long use number
+ (`dummy` and `type` untouched).
+ */
+typedef struct IODBTD2 {
+    short datano;
+    short dummy;
+    LONG type;
+    LONG tool_num;
+    LONG h_code;
+    LONG d_code;
+    LONG tool_inf;
+} IODBTD2;
+
+/*
  cnc_rd1tlifedata / cnc_rd2tlifedata: one tool of a tool life group:
  its number, H and D codes and information.
  */
@@ -712,6 +737,16 @@ typedef struct ODBCSPID {
     char psm_spc[22];
     char psm_srn[12];
 } ODBCSPID;
+
+/*
+ cnc_rdgrpid: the tool life group of a tool number (`type` the tool
+ number asked for, `dummy` untouched).
+ */
+typedef struct ODBTLIFE1 {
+    short dummy;
+    short type;
+    LONG data;
+} ODBTLIFE1;
 
 /*
  cnc_rdgrpid2: the tool life group of a tool number.
@@ -2283,15 +2318,6 @@ typedef struct ODBSYSEX {
 } ODBSYSEX;
 
 /*
- cnc_toolnum: tool number of a tool in a tool-life group.
- */
-typedef struct ODBTLIFE4 {
-    short datano;
-    short type;
-    LONG data;
-} ODBTLIFE4;
-
-/*
  pmc_getdtailerr: detail of the last PMC error.
  */
 typedef struct ODBPMCERR {
@@ -3183,6 +3209,46 @@ short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
 short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *block);
 
 /*
+ Reads the length offset number (H) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type`
+ the tool's number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd1length(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
+ Reads the radius offset number (D) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type`
+ the tool's number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd1radius(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
+ Reads tool `tuse_num` of tool life group `grp_num` as cnc_rd1tlifedata
+ (its request, `tuse_num` a long): `datano` the group the CNC answered,
+ the tool's number, H and D codes and information (`dummy` and `type`
+ untouched).
+
+ # Safety
+ `tldata` must be NULL or point to a writable IODBTD2.
+ */
+short cnc_rd1tlifedat2(unsigned short FlibHndl,
+                       short grp_num,
+                       long tuse_num,
+                       struct IODBTD2 *tldata);
+
+/*
  Reads tool `tuse_num` of tool life group `grp_num`: its number, H and D
  codes and information (`datano` the group the CNC answered; `type`
  untouched).
@@ -3194,6 +3260,32 @@ short cnc_rd1tlifedata(unsigned short FlibHndl,
                        short grp_num,
                        short tuse_num,
                        struct IODBTD *tldata);
+
+/*
+ Reads the length offset number (H) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use
+ number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd2length(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
+ Reads the radius offset number (D) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use
+ number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd2radius(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
 
 /*
  Reads tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's
@@ -3560,6 +3652,15 @@ short cnc_rdfromservoid(unsigned short FlibHndl, short axis, struct ODBCSVID *se
  `spindleid` must be NULL or point to a writable ODBCSPID.
  */
 short cnc_rdfromspindleid(unsigned short FlibHndl, short sp_no, struct ODBCSPID *spindleid);
+
+/*
+ Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
+ untouched; cnc_rdgrpid2's request).
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE1.
+ */
+short cnc_rdgrpid(unsigned short FlibHndl, short tno, struct ODBTLIFE1 *tlife);
 
 /*
  Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
@@ -5207,6 +5308,26 @@ short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
  `sysinfoex` must point to a writable ODBSYSEX.
  */
 short cnc_sysinfo_ex(unsigned short FlibHndl, struct ODBSYSEX *sysinfoex);
+
+/*
+ Reads the information of tool `tuse_num` of tool life group `grp_num`
+ (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's
+ number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_t1info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
+
+/*
+ Reads the information of tool `tuse_num` of tool life group `grp_num`
+ (cnc_toolnum's request): `datano` the group and `type` the use number
+ the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_t2info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
 
 /*
  Reads the tool number of the `tuse_num`-th tool of tool-life group

@@ -171,7 +171,7 @@ commands! {
     RDPRSTR = CLASS_CNC 0x0043 [cnc_rdprstrinfo];
     GETTIMER = CLASS_CNC 0x0045 [cnc_gettimer];
     SETTIMER = CLASS_CNC 0x0046 [cnc_settimer];
-    RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2];
+    RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2 cnc_rdgrpid];
     /// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
     TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp cnc_rdusegrpid];
     /// (1,0x004a): the number of tool life groups; on the 16i class with
@@ -183,10 +183,10 @@ commands! {
     WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
     /// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
     /// cnc_rd2tlifedata: [grp, n, n], the group, n and tool n's record.
-    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata];
+    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata cnc_rd2length cnc_rd2radius cnc_t2info];
     /// cnc_rd1tlifedata: (1,0x004f)[grp, n]: the group, tool n's number, a
     /// word it does not read, its H and D codes and information.
-    RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata];
+    RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata cnc_rd1length cnc_rd1radius cnc_t1info cnc_rd1tlifedat2];
     DELTLIFEGRP = CLASS_CNC 0x0053 [cnc_deltlifegrp];
     /// Inserts a tool into a group: args [grp, tuse_num, tool number].
     TLINSERT = CLASS_CNC 0x0054 [cnc_instlifedt];
