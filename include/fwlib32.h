@@ -323,6 +323,16 @@ typedef struct IODBTD {
 } IODBTD;
 
 /*
+ cnc_rd3dtofs: the 3-D tool offset mode, its three axes and the offset
+ vector.
+ */
+typedef struct ODB3DTO {
+    short mode;
+    short ofs_axes[3];
+    LONG ofsvct[3];
+} ODB3DTO;
+
+/*
  cnc_rd3dtooltip: the tool tip of the 3D handle feed, `axes[i]` and
  `data[i]` for each of the axes the CNC answers (at most 5; the elements
  past them are not written).
@@ -533,6 +543,16 @@ typedef struct ODBAXISNAME {
     char name;
     char suff;
 } ODBAXISNAME;
+
+/*
+ cnc_rdbtofsinfo: the B-axis tool offsets' memory type, how many there
+ are and the sub function number of offset cancel.
+ */
+typedef struct ODBBTLINF {
+    short ofs_type;
+    short use_no;
+    short sub_no;
+} ODBBTLINF;
 
 /*
  cnc_rdcommand: one commanded value of a block: the address letter,
@@ -1581,6 +1601,16 @@ typedef struct ODBPRS {
     LONG dest[MAX_AXIS];
     LONG dist[MAX_AXIS];
 } ODBPRS;
+
+/*
+ cnc_rdradofs: the cutter compensation mode, the plane's two axes and
+ the offset vector in it.
+ */
+typedef struct ODBROFS {
+    short mode;
+    short pln_axes[2];
+    LONG ofsvct[2];
+} ODBROFS;
 
 /*
  cnc_rdseqnum: sequence number.
@@ -2817,6 +2847,11 @@ short cnc_clearophis(unsigned short FlibHndl, short type);
 short cnc_clralm(unsigned short FlibHndl, short id);
 
 /*
+ Clears every tool offset of type `type` (as cnc_rdtofs numbers them).
+ */
+short cnc_clrtofs(unsigned short FlibHndl, short type);
+
+/*
  Condenses program memory (`type` 0, program `prog_num`).
  */
 short cnc_condense(unsigned short FlibHndl, short type, long prog_num);
@@ -3301,6 +3336,14 @@ short cnc_rd2tlifedata(unsigned short FlibHndl,
                        struct IODBTD *tldata);
 
 /*
+ Reads the 3-D tool offset mode, its three axes and the offset vector.
+
+ # Safety
+ `tofs` must be NULL or point to a writable ODB3DTO.
+ */
+short cnc_rd3dtofs(unsigned short FlibHndl, struct ODB3DTO *tofs);
+
+/*
  Reads the tool tip of the 3D handle feed (needs the FOCAS option, else
  EW_NOOPT; the elements past the CNC's axes are not written).
 
@@ -3464,6 +3507,15 @@ short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAM
  `prog_bc` must be NULL or point to a writable long.
  */
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
+
+/*
+ Reads the B-axis tool offsets' memory type, how many there are and the
+ sub function number of offset cancel.
+
+ # Safety
+ `btlinf` must be NULL or point to a writable ODBBTLINF.
+ */
+short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
 
 /*
  Reads the CNC's identification number: four 32-bit words. The pointer
@@ -4561,6 +4613,15 @@ short cnc_rdprogline(unsigned short FlibHndl,
 short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 
 /*
+ Reads the cutter compensation mode, the axes of its plane and the offset
+ vector in that plane.
+
+ # Safety
+ `rofs` must be NULL or point to a writable ODBROFS.
+ */
+short cnc_rdradofs(unsigned short FlibHndl, struct ODBROFS *rofs);
+
+/*
  Reads the sequence number of the block being executed.
 
  # Safety
@@ -4863,6 +4924,15 @@ short cnc_rdtofs(unsigned short FlibHndl,
                  short type,
                  short length,
                  struct ODBTOFS *tofs);
+
+/*
+ Reads whether the [MEASURE] and [MEASURE+] tool offset measurement can
+ be used (`*enable` 1) or not (0).
+
+ # Safety
+ `enable` must be NULL or point to a writable char.
+ */
+short cnc_rdtofsenbl(unsigned short FlibHndl, char *enable);
 
 /*
  Reads the tool offset memory type and the number of offsets.

@@ -187,6 +187,17 @@ commands! {
     /// cnc_rd1tlifedata: (1,0x004f)[grp, n]: the group, tool n's number, a
     /// word it does not read, its H and D codes and information.
     RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata cnc_rd1length cnc_rd1radius cnc_t1info cnc_rd1tlifedat2];
+    // Tool offsets, family B (issue 24).
+    /// The B-axis tool offsets: memory type, number, cancel sub function.
+    RDBTOFSINFO = CLASS_CNC 0x007e [cnc_rdbtofsinfo];
+    /// The cutter compensation mode, plane axes and vector.
+    RDRADOFS = CLASS_CNC 0x0117 [cnc_rdradofs];
+    /// The 3-D tool offset mode, axes and vector.
+    RD3DTOFS = CLASS_CNC 0x011e [cnc_rd3dtofs];
+    /// Whether [MEASURE] / [MEASURE+] (tool offset measurement) can be used.
+    RDTOFSENBL = CLASS_CNC 0x0195 [cnc_rdtofsenbl];
+    /// [type]: clears every tool offset of a type.
+    CLRTOFS = CLASS_CNC 0x01b7 [cnc_clrtofs];
     DELTLIFEGRP = CLASS_CNC 0x0053 [cnc_deltlifegrp];
     /// Inserts a tool into a group: args [grp, tuse_num, tool number].
     TLINSERT = CLASS_CNC 0x0054 [cnc_instlifedt];
