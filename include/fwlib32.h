@@ -1905,6 +1905,15 @@ typedef struct IODBTLCTL {
 } IODBTLCTL;
 
 /*
+ cnc_rdtldata: the work zero point measurement's TL value and its
+ decimals.
+ */
+typedef struct ODBTLDATA {
+    LONG tl;
+    LONG tl_dp;
+} ODBTLDATA;
+
+/*
  cnc_rdtlinfo: the tool life management's limits.
  */
 typedef struct ODBTLINFO {
@@ -4887,6 +4896,15 @@ short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
  `tlctl` must point to a writable IODBTLCTL.
  */
 short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
+
+/*
+ Reads the TL value of the work zero point measurement (`tl`, with
+ `tl_dp` decimals).
+
+ # Safety
+ `tldata` must be NULL or point to a writable ODBTLDATA.
+ */
+short cnc_rdtldata(unsigned short FlibHndl, struct ODBTLDATA *tldata);
 
 /*
  Reads the tool life management's limits: groups, tools in a group, life

@@ -7,7 +7,7 @@ use super::route::{Asked, Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::RDWKCDSHFT;
-use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTOFSENBL};
+use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
 use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO};
 use crate::proto::offset::{
     Ack, Count, RDTOFS, RDZOFS, TOFS_SINGLE, TofsInfo, WRTOFS, WRWKCDSHFT, WRZOFS,
@@ -49,6 +49,10 @@ pub(super) const ROUTES: &[Route] = &[
         m.offsets(q.path).map(|o| vec![i64::from(o.enable)])
     }),
     Route::table(CLRTOFS, |m, q| none(m.tofs_clear(q.path, q.arg(0)))),
+    Route::table(RDTLDATA, |m, q| {
+        let o = m.offsets(q.path)?;
+        Ok(vec![o.tl.into(), o.decimals.into()])
+    }),
     Route::table(RDBTOFSINFO, |m, q| {
         let o = m.offsets(q.path)?;
         Ok([o.b_axis, o.b_cancel, o.memory].map(i64::from).to_vec())

@@ -194,6 +194,8 @@ commands! {
     RDRADOFS = CLASS_CNC 0x0117 [cnc_rdradofs];
     /// The 3-D tool offset mode, axes and vector.
     RD3DTOFS = CLASS_CNC 0x011e [cnc_rd3dtofs];
+    /// The work zero point measurement's TL value and its decimals.
+    RDTLDATA = CLASS_CNC 0x0191 [cnc_rdtldata];
     /// Whether [MEASURE] / [MEASURE+] (tool offset measurement) can be used.
     RDTOFSENBL = CLASS_CNC 0x0195 [cnc_rdtofsenbl];
     /// [type]: clears every tool offset of a type.

@@ -168,3 +168,12 @@ pub struct ODB3DTO {
     pub ofs_axes: [c_short; 3],
     pub ofsvct: [LONG; 3],
 }
+
+/// cnc_rdtldata: the work zero point measurement's TL value and its
+/// decimals.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLDATA {
+    pub tl: LONG,
+    pub tl_dp: LONG,
+}

@@ -1,6 +1,6 @@
 /* The tool life, tool offset and compensation reads of family B
  * (cnc_rd1length ... cnc_t2info, cnc_rd1tlifedat2, cnc_rdgrpid,
- * cnc_rdtofsenbl, cnc_rdbtofsinfo, cnc_rdradofs, cnc_rd3dtofs) and
+ * cnc_rdtofsenbl, cnc_rdtldata, cnc_rdbtofsinfo, cnc_rdradofs, cnc_rd3dtofs) and
  * cnc_clrtofs, called through the .so against focas-sim; prints key=value
  * lines that tests/artifacts compares with the simulator's machine state.
  * Usage: collectors_tool HOST PORT */
@@ -59,6 +59,9 @@ int main(int argc, char **argv) {
     char enbl = 9;
     check("rdtofsenbl", cnc_rdtofsenbl(h, &enbl));
     printf("rdtofsenbl=%d\n", enbl);
+    ODBTLDATA tl;
+    check("rdtldata", cnc_rdtldata(h, &tl));
+    printf("rdtldata=%d,%d\n", (int)tl.tl, (int)tl.tl_dp);
     ODBBTLINF b;
     check("rdbtofsinfo", cnc_rdbtofsinfo(h, &b));
     printf("rdbtofsinfo=%d,%d,%d\n", b.ofs_type, b.use_no, b.sub_no);

@@ -38,6 +38,15 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdtldata",
+        doc: "Reads the TL value of the work zero point measurement (`tl`, with `tl_dp` decimals).",
+        params: &[Param::Out("tldata", "ODBTLDATA")],
+        forms: &[every_class(cmd::RDTLDATA, &[])],
+        reply: &[to(I32, "tl", I32), to(I32, "tl_dp", I32)],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
         name: "cnc_clrtofs",
         doc: "Clears every tool offset of type `type` (as cnc_rdtofs numbers them).",
         params: &[Param::Short("type")],

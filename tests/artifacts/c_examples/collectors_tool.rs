@@ -89,6 +89,11 @@ fn tool_life_and_offset_reads_follow_the_machine() {
     let o = &path.offset;
     assert_eq!(kv["rdtofsenbl"], o.enable.to_string());
     assert_eq!(
+        ints(&kv["rdtldata"]),
+        [o.tl, o.decimals.into()].map(i64::from)
+    );
+    assert_ne!(o.tl, 0);
+    assert_eq!(
         ints(&kv["rdbtofsinfo"]),
         [o.memory, o.b_axis, o.b_cancel].map(i64::from)
     );
