@@ -1924,6 +1924,18 @@ typedef struct ODBTLINFO {
 } ODBTLINFO;
 
 /*
+ cnc_rdtlmsinfo: the tool length measurement: T and M codes, the
+ measured length and its decimals, the offset number.
+ */
+typedef struct ODBTLMSINF {
+    LONG t;
+    LONG m;
+    LONG hm;
+    LONG hm_dp;
+    LONG tlofs_no;
+} ODBTLMSINF;
+
+/*
  cnc_rdtlusegrp: the next, in-use and selected tool life groups.
  */
 typedef struct ODBUSEGRP {
@@ -4914,6 +4926,16 @@ short cnc_rdtldata(unsigned short FlibHndl, struct ODBTLDATA *tldata);
  `tlinfo` must be NULL or point to a writable ODBTLINFO.
  */
 short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
+
+/*
+ Reads the tool length measurement information: T and M codes, the
+ measured length `hm` (with `hm_dp` decimals) and the offset number it
+ goes to.
+
+ # Safety
+ `tlmsinf` must be NULL or point to a writable ODBTLMSINF.
+ */
+short cnc_rdtlmsinfo(unsigned short FlibHndl, struct ODBTLMSINF *tlmsinf);
 
 /*
  Reads the next, in-use and selected tool life groups, then their

@@ -6,6 +6,7 @@ pub use super::profile::offset::{Offsets, ToolGroupProfile, ToolProfile};
 use super::route::{Asked, Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
+use crate::proto::cmd::RDTLMSINFO;
 use crate::proto::cmd::RDWKCDSHFT;
 use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
 use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO};
@@ -49,6 +50,7 @@ pub(super) const ROUTES: &[Route] = &[
         m.offsets(q.path).map(|o| vec![i64::from(o.enable)])
     }),
     Route::table(CLRTOFS, |m, q| none(m.tofs_clear(q.path, q.arg(0)))),
+    Route::table(RDTLMSINFO, length_measurement),
     Route::table(RDTLDATA, |m, q| {
         let o = m.offsets(q.path)?;
         Ok(vec![o.tl.into(), o.decimals.into()])
@@ -108,6 +110,21 @@ fn offset_3d(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let mut xyz = [0; 3];
     xyz[axes[1] as usize - 1] = v;
     Ok(vec![mode.into(), 1, 2, 3, xyz[0], dec, xyz[1], dec, xyz[2]])
+}
+
+/// cnc_rdtlmsinfo: the T and M codes in effect and the H code's length
+/// (geometry, type 3; its decimals), the offset a measurement writes: the
+/// simulator measures nothing, it shows the length the H code holds.
+fn length_measurement(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let code = |m: &Machine, k: usize| {
+        let c = crate::proto::program::AUX_ORDER[k];
+        m.aux_modal(q.path, c)
+            .map(|a| a.0.first().map_or(0, |a| a.value))
+    };
+    let (t, mc, h) = (code(m, 8)?, code(m, 6)?, code(m, 4)?);
+    let o = m.offsets(q.path)?;
+    let hm = (o.tool.get(h.wrapping_sub(1) as usize)).map_or(0, |r| r.get(3).copied().unwrap_or(0));
+    Ok([t, mc, hm, o.decimals.into(), h].map(i64::from).to_vec())
 }
 
 /// Write payload: exactly `n` whole records.

@@ -196,6 +196,8 @@ commands! {
     RD3DTOFS = CLASS_CNC 0x011e [cnc_rd3dtofs];
     /// The work zero point measurement's TL value and its decimals.
     RDTLDATA = CLASS_CNC 0x0191 [cnc_rdtldata];
+    /// The tool length measurement: T, M, the measured value, offset number.
+    RDTLMSINFO = CLASS_CNC 0x0194 [cnc_rdtlmsinfo];
     /// Whether [MEASURE] / [MEASURE+] (tool offset measurement) can be used.
     RDTOFSENBL = CLASS_CNC 0x0195 [cnc_rdtofsenbl];
     /// [type]: clears every tool offset of a type.

@@ -177,3 +177,15 @@ pub struct ODBTLDATA {
     pub tl: LONG,
     pub tl_dp: LONG,
 }
+
+/// cnc_rdtlmsinfo: the tool length measurement: T and M codes, the
+/// measured length and its decimals, the offset number.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLMSINF {
+    pub t: LONG,
+    pub m: LONG,
+    pub hm: LONG,
+    pub hm_dp: LONG,
+    pub tlofs_no: LONG,
+}

@@ -1,6 +1,6 @@
 /* The tool life, tool offset and compensation reads of family B
  * (cnc_rd1length ... cnc_t2info, cnc_rd1tlifedat2, cnc_rdgrpid,
- * cnc_rdtofsenbl, cnc_rdtldata, cnc_rdbtofsinfo, cnc_rdradofs, cnc_rd3dtofs) and
+ * cnc_rdtofsenbl, cnc_rdtldata, cnc_rdtlmsinfo, cnc_rdbtofsinfo, cnc_rdradofs, cnc_rd3dtofs) and
  * cnc_clrtofs, called through the .so against focas-sim; prints key=value
  * lines that tests/artifacts compares with the simulator's machine state.
  * Usage: collectors_tool HOST PORT */
@@ -62,6 +62,10 @@ int main(int argc, char **argv) {
     ODBTLDATA tl;
     check("rdtldata", cnc_rdtldata(h, &tl));
     printf("rdtldata=%d,%d\n", (int)tl.tl, (int)tl.tl_dp);
+    ODBTLMSINF ms;
+    check("rdtlmsinfo", cnc_rdtlmsinfo(h, &ms));
+    printf("rdtlmsinfo=%d,%d,%d,%d,%d\n", (int)ms.t, (int)ms.m, (int)ms.hm, (int)ms.hm_dp,
+           (int)ms.tlofs_no);
     ODBBTLINF b;
     check("rdbtofsinfo", cnc_rdbtofsinfo(h, &b));
     printf("rdbtofsinfo=%d,%d,%d\n", b.ofs_type, b.use_no, b.sub_no);

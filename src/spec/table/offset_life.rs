@@ -47,6 +47,21 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdtlmsinfo",
+        doc: "Reads the tool length measurement information: T and M codes, the measured length `hm` (with `hm_dp` decimals) and the offset number it goes to.",
+        params: &[Param::Out("tlmsinf", "ODBTLMSINF")],
+        forms: &[every_class(cmd::RDTLMSINFO, &[])],
+        reply: &[
+            to(I32, "t", I32),
+            to(I32, "m", I32),
+            to(I32, "hm", I32),
+            to(I32, "hm_dp", I32),
+            to(I32, "tlofs_no", I32),
+        ],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
         name: "cnc_clrtofs",
         doc: "Clears every tool offset of type `type` (as cnc_rdtofs numbers them).",
         params: &[Param::Short("type")],

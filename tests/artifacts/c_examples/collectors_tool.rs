@@ -12,7 +12,7 @@ use std::ffi::CString;
 
 /// The default profile with group 1's second tool's H, D and information
 /// apart, B-axis offsets, and G18 G41 D3 in effect (the profile's modal
-/// codes and the program in cycle's first block).
+/// codes, no program in cycle).
 fn profile() -> Profile {
     let edits = [
         (
@@ -23,7 +23,8 @@ fn profile() -> Profile {
         ("b_cancel = 0 ", "b_cancel = 9 "),
         ("g = [1, 0, 0, 0, 0, 1, 0, ", "g = [1, 1, 0, 0, 0, 1, 1, "),
         ("aux = { 101 = 1,", "aux = { 101 = 3,"),
-        ("N10 G90 G17 G40 G49 G80;", "N10 G90 G18 G41 D3 G49 G80;"),
+        // No program in cycle: the modal codes are the profile's.
+        ("program = 1234           #", "program = 0              #"),
     ];
     let mut text = DEFAULT_PROFILE.to_string();
     for (from, to) in edits {
@@ -93,6 +94,15 @@ fn tool_life_and_offset_reads_follow_the_machine() {
         [o.tl, o.decimals.into()].map(i64::from)
     );
     assert_ne!(o.tl, 0);
+    // T, M and H in effect (the profile's modal codes), H's length
+    // geometry.
+    let aux = |k: &str| i64::from(path.modal.aux[k]);
+    let hno = aux("104");
+    let hm = i64::from(o.tool[hno as usize - 1][3]);
+    assert_eq!(
+        ints(&kv["rdtlmsinfo"]),
+        [aux("108"), aux("106"), hm, o.decimals.into(), hno]
+    );
     assert_eq!(
         ints(&kv["rdbtofsinfo"]),
         [o.memory, o.b_axis, o.b_cancel].map(i64::from)
