@@ -421,6 +421,7 @@ rust_layouts! {
     ODBROFS { mode, pln_axes, ofsvct }
     ODB3DTO { mode, ofs_axes, ofsvct }
     ODBTLDATA { tl, tl_dp }
+    ODBTLMSINF { t, m, hm, hm_dp, tlofs_no }
     IODBTLMNG {
         T_code, life_count, max_life, rest_life, life_stat, cust_bits, tool_info, H_code, D_code,
         spindle_speed, feedrate, magazine, pot, G_code, W_code, gno, grp, edge, org_magazine,
