@@ -1278,6 +1278,8 @@ pub const ORACLE: &[Deviation] = &[
             "rdgrpid_*_a1_0",
             "rdgrpid_*_a1_9999",
             "rdgrpid_*_a1_32767",
+            "rdgrpid_*_c_12",
+            "rdgrpid_*_c_2",
             "rdgrpid_*_shape_err*",
             "rdgrpid_*_path2",
             // oracle fuzz: an error answer, drawn or the simulator's.
