@@ -285,6 +285,31 @@ typedef struct ODBMDL {
 } ODBMDL;
 
 /*
+ cnc_toolnum: tool number of a tool in a tool-life group (cnc_rd1length,
+ cnc_rd2length, cnc_rd1radius, cnc_rd2radius, cnc_t1info, cnc_t2info: its
+ H and D numbers and information).
+ */
+typedef struct ODBTLIFE4 {
+    short datano;
+    short type;
+    LONG data;
+} ODBTLIFE4;
+
+/*
+ cnc_rd1tlifedat2: one tool of a tool life group by a long use number
+ (`dummy` and `type` untouched).
+ */
+typedef struct IODBTD2 {
+    short datano;
+    short dummy;
+    LONG type;
+    LONG tool_num;
+    LONG h_code;
+    LONG d_code;
+    LONG tool_inf;
+} IODBTD2;
+
+/*
  cnc_rd1tlifedata / cnc_rd2tlifedata: one tool of a tool life group:
  its number, H and D codes and information.
  */
@@ -296,6 +321,16 @@ typedef struct IODBTD {
     LONG d_code;
     LONG tool_inf;
 } IODBTD;
+
+/*
+ cnc_rd3dtofs: the 3-D tool offset mode, its three axes and the offset
+ vector.
+ */
+typedef struct ODB3DTO {
+    short mode;
+    short ofs_axes[3];
+    LONG ofsvct[3];
+} ODB3DTO;
 
 /*
  cnc_rd3dtooltip: the tool tip of the 3D handle feed, `axes[i]` and
@@ -508,6 +543,16 @@ typedef struct ODBAXISNAME {
     char name;
     char suff;
 } ODBAXISNAME;
+
+/*
+ cnc_rdbtofsinfo: the B-axis tool offsets' memory type, how many there
+ are and the sub function number of offset cancel.
+ */
+typedef struct ODBBTLINF {
+    short ofs_type;
+    short use_no;
+    short sub_no;
+} ODBBTLINF;
 
 /*
  cnc_rdcommand: one commanded value of a block: the address letter,
@@ -769,6 +814,16 @@ typedef struct ODBCSPID2 {
     char psm_srn[12];
     char pss_see[9];
 } ODBCSPID2;
+
+/*
+ cnc_rdgrpid: the tool life group of a tool number (`type` the tool
+ number asked for, `dummy` untouched).
+ */
+typedef struct ODBTLIFE1 {
+    short dummy;
+    short type;
+    LONG data;
+} ODBTLIFE1;
 
 /*
  cnc_rdgrpid2: the tool life group of a tool number.
@@ -1605,6 +1660,16 @@ typedef struct ODBPRS {
 } ODBPRS;
 
 /*
+ cnc_rdradofs: the cutter compensation mode, the plane's two axes and
+ the offset vector in it.
+ */
+typedef struct ODBROFS {
+    short mode;
+    short pln_axes[2];
+    LONG ofsvct[2];
+} ODBROFS;
+
+/*
  cnc_rdseqnum: sequence number.
  */
 typedef struct ODBSEQ {
@@ -1897,6 +1962,15 @@ typedef struct IODBTLCTL {
 } IODBTLCTL;
 
 /*
+ cnc_rdtldata: the work zero point measurement's TL value and its
+ decimals.
+ */
+typedef struct ODBTLDATA {
+    LONG tl;
+    LONG tl_dp;
+} ODBTLDATA;
+
+/*
  cnc_rdtlinfo: the tool life management's limits.
  */
 typedef struct ODBTLINFO {
@@ -1905,6 +1979,18 @@ typedef struct ODBTLINFO {
     LONG max_minute;
     LONG max_cycle;
 } ODBTLINFO;
+
+/*
+ cnc_rdtlmsinfo: the tool length measurement: T and M codes, the
+ measured length and its decimals, the offset number.
+ */
+typedef struct ODBTLMSINF {
+    LONG t;
+    LONG m;
+    LONG hm;
+    LONG hm_dp;
+    LONG tlofs_no;
+} ODBTLMSINF;
 
 /*
  cnc_rdtlusegrp: the next, in-use and selected tool life groups.
@@ -2338,15 +2424,6 @@ typedef struct ODBSYSEX {
     short reserved[2];
     struct ODBSYSEX_PATH path[MAX_CNCPATH];
 } ODBSYSEX;
-
-/*
- cnc_toolnum: tool number of a tool in a tool-life group.
- */
-typedef struct ODBTLIFE4 {
-    short datano;
-    short type;
-    LONG data;
-} ODBTLIFE4;
 
 /*
  pmc_getdtailerr: detail of the last PMC error.
@@ -2862,6 +2939,11 @@ short cnc_clearophis(unsigned short FlibHndl, short type);
 short cnc_clralm(unsigned short FlibHndl, short id);
 
 /*
+ Clears every tool offset of type `type` (as cnc_rdtofs numbers them).
+ */
+short cnc_clrtofs(unsigned short FlibHndl, short type);
+
+/*
  Condenses program memory (`type` 0, program `prog_num`).
  */
 short cnc_condense(unsigned short FlibHndl, short type, long prog_num);
@@ -3270,6 +3352,46 @@ short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
 short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *block);
 
 /*
+ Reads the length offset number (H) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type`
+ the tool's number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd1length(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
+ Reads the radius offset number (D) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type`
+ the tool's number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd1radius(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
+ Reads tool `tuse_num` of tool life group `grp_num` as cnc_rd1tlifedata
+ (its request, `tuse_num` a long): `datano` the group the CNC answered,
+ the tool's number, H and D codes and information (`dummy` and `type`
+ untouched).
+
+ # Safety
+ `tldata` must be NULL or point to a writable IODBTD2.
+ */
+short cnc_rd1tlifedat2(unsigned short FlibHndl,
+                       short grp_num,
+                       long tuse_num,
+                       struct IODBTD2 *tldata);
+
+/*
  Reads tool `tuse_num` of tool life group `grp_num`: its number, H and D
  codes and information (`datano` the group the CNC answered; `type`
  untouched).
@@ -3283,6 +3405,32 @@ short cnc_rd1tlifedata(unsigned short FlibHndl,
                        struct IODBTD *tldata);
 
 /*
+ Reads the length offset number (H) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use
+ number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd2length(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
+ Reads the radius offset number (D) of tool `tuse_num` of tool life group
+ `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use
+ number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_rd2radius(unsigned short FlibHndl,
+                    short grp_num,
+                    short tuse_num,
+                    struct ODBTLIFE4 *tlife);
+
+/*
  Reads tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's
  request): `datano` the group and `type` the use number the CNC answered,
  the tool's number, H and D codes and information.
@@ -3294,6 +3442,14 @@ short cnc_rd2tlifedata(unsigned short FlibHndl,
                        short grp_num,
                        short tuse_num,
                        struct IODBTD *tldata);
+
+/*
+ Reads the 3-D tool offset mode, its three axes and the offset vector.
+
+ # Safety
+ `tofs` must be NULL or point to a writable ODB3DTO.
+ */
+short cnc_rd3dtofs(unsigned short FlibHndl, struct ODB3DTO *tofs);
 
 /*
  Reads the tool tip of the 3D handle feed (needs the FOCAS option, else
@@ -3459,6 +3615,15 @@ short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAM
  `prog_bc` must be NULL or point to a writable long.
  */
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
+
+/*
+ Reads the B-axis tool offsets' memory type, how many there are and the
+ sub function number of offset cancel.
+
+ # Safety
+ `btlinf` must be NULL or point to a writable ODBBTLINF.
+ */
+short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
 
 /*
  Reads the CNC's identification number: four 32-bit words. The pointer
@@ -3685,6 +3850,15 @@ short cnc_rdfromspindleid(unsigned short FlibHndl, short sp_no, struct ODBCSPID 
  `spindleid` must be NULL or point to a writable ODBCSPID2.
  */
 short cnc_rdfromspindleid2(unsigned short FlibHndl, short sp_no, struct ODBCSPID2 *spindleid);
+
+/*
+ Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
+ untouched; cnc_rdgrpid2's request).
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE1.
+ */
+short cnc_rdgrpid(unsigned short FlibHndl, short tno, struct ODBTLIFE1 *tlife);
 
 /*
  Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
@@ -4612,6 +4786,15 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 short cnc_rdprt_lvl(unsigned short FlibHndl, short kind, short *rd_lvl, short *wt_lvl);
 
 /*
+ Reads the cutter compensation mode, the axes of its plane and the offset
+ vector in that plane.
+
+ # Safety
+ `rofs` must be NULL or point to a writable ODBROFS.
+ */
+short cnc_rdradofs(unsigned short FlibHndl, struct ODBROFS *rofs);
+
+/*
  Reads how many times the running program has repeated (4 bytes written
  into the `long`).
 
@@ -4910,6 +5093,15 @@ short cnc_rdtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
 short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
 
 /*
+ Reads the TL value of the work zero point measurement (`tl`, with
+ `tl_dp` decimals).
+
+ # Safety
+ `tldata` must be NULL or point to a writable ODBTLDATA.
+ */
+short cnc_rdtldata(unsigned short FlibHndl, struct ODBTLDATA *tldata);
+
+/*
  Reads the tool life management's limits: groups, tools in a group, life
  in minutes and in cycles.
 
@@ -4917,6 +5109,16 @@ short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
  `tlinfo` must be NULL or point to a writable ODBTLINFO.
  */
 short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
+
+/*
+ Reads the tool length measurement information: T and M codes, the
+ measured length `hm` (with `hm_dp` decimals) and the offset number it
+ goes to.
+
+ # Safety
+ `tlmsinf` must be NULL or point to a writable ODBTLMSINF.
+ */
+short cnc_rdtlmsinfo(unsigned short FlibHndl, struct ODBTLMSINF *tlmsinf);
 
 /*
  Reads the next, in-use and selected tool life groups, then their
@@ -4945,6 +5147,15 @@ short cnc_rdtofs(unsigned short FlibHndl,
                  short type,
                  short length,
                  struct ODBTOFS *tofs);
+
+/*
+ Reads whether the [MEASURE] and [MEASURE+] tool offset measurement can
+ be used (`*enable` 1) or not (0).
+
+ # Safety
+ `enable` must be NULL or point to a writable char.
+ */
+short cnc_rdtofsenbl(unsigned short FlibHndl, char *enable);
 
 /*
  Reads the tool offset memory type and the number of offsets.
@@ -5402,6 +5613,26 @@ short cnc_sysinfo(unsigned short FlibHndl, struct ODBSYS *sysinfo);
  `sysinfoex` must point to a writable ODBSYSEX.
  */
 short cnc_sysinfo_ex(unsigned short FlibHndl, struct ODBSYSEX *sysinfoex);
+
+/*
+ Reads the information of tool `tuse_num` of tool life group `grp_num`
+ (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's
+ number the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_t1info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
+
+/*
+ Reads the information of tool `tuse_num` of tool life group `grp_num`
+ (cnc_toolnum's request): `datano` the group and `type` the use number
+ the CNC answered.
+
+ # Safety
+ `tlife` must be NULL or point to a writable ODBTLIFE4.
+ */
+short cnc_t2info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
 
 /*
  Reads the tool number of the `tuse_num`-th tool of tool-life group

@@ -3,10 +3,12 @@
 
 use super::Machine;
 pub use super::profile::offset::{Offsets, ToolGroupProfile, ToolProfile};
-use super::route::{Asked, Route, enc};
+use super::route::{Asked, Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
+use crate::proto::cmd::RDTLMSINFO;
 use crate::proto::cmd::RDWKCDSHFT;
+use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
 use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO};
 use crate::proto::offset::{
     Ack, Count, RDTOFS, RDZOFS, TOFS_SINGLE, TofsInfo, WRTOFS, WRWKCDSHFT, WRZOFS,
@@ -16,6 +18,8 @@ use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
 const NUMBER: CncError = CncError::NUMBER;
+/// cnc_modal's code of the D code (AUX_ORDER position 1, src/sim/modal.rs).
+const D_CODE: i32 = crate::proto::program::AUX_ORDER[1];
 const ATTRIB: CncError = CncError::new(ew::EW_ATTRIB);
 const LENGTH: CncError = CncError::new(ew::EW_LENGTH);
 
@@ -41,6 +45,22 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDZOFSINFO, |m, q| {
         m.zofs_info(q.path).map(|c| vec![i64::from(c.value)])
     }),
+    // [MEASURE] can be used while tool offsets are (cnc_rdtofsinfo2's).
+    Route::table(RDTOFSENBL, |m, q| {
+        m.offsets(q.path).map(|o| vec![i64::from(o.enable)])
+    }),
+    Route::table(CLRTOFS, |m, q| none(m.tofs_clear(q.path, q.arg(0)))),
+    Route::table(RDTLMSINFO, length_measurement),
+    Route::table(RDTLDATA, |m, q| {
+        let o = m.offsets(q.path)?;
+        Ok(vec![o.tl.into(), o.decimals.into()])
+    }),
+    Route::table(RDBTOFSINFO, |m, q| {
+        let o = m.offsets(q.path)?;
+        Ok([o.b_axis, o.b_cancel, o.memory].map(i64::from).to_vec())
+    }),
+    Route::table(RDRADOFS, radius_offset),
+    Route::table(RD3DTOFS, offset_3d),
     Route::table(RDWKCDSHFT, |m, q| {
         m.shift_read(q.path, q.arg(0))
             .map(|r| [vec![i64::from(q.arg(0))], r].concat())
@@ -53,6 +73,58 @@ fn tofs_info(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
         let w = [t.reserved, t.use_no, t.ofs_type, t.enable];
         w.map(i64::from).to_vec()
     })
+}
+
+/// The cutter compensation in effect: G group 07's code (0 G40, 1 G41, 2
+/// G42), its plane's axes (group 02; the path's axes 1, 2, 3 as X, Y, Z),
+/// the offset along the plane's second axis, and the offsets' decimals.
+/// Compensating, the offset is the D code's radius (geometry + wear): the
+/// simulator's tool moves along the plane's first axis, G41 offsets it to
+/// the left (+), G42 to the right (−).
+fn compensation(m: &mut Machine, path: u16) -> Reply<(u8, [i64; 2], i64, i64)> {
+    let (mode, plane) = (m.modal_g(path, 6), m.modal_g(path, 1));
+    let axes = [[1, 2], [3, 1], [2, 3]][usize::from(plane.min(2))];
+    let d = m.aux_modal(path, D_CODE)?.0.first().map_or(0, |a| a.value);
+    let o = m.offsets(path)?;
+    let r = (o.tool.get(d.wrapping_sub(1) as usize))
+        .map_or(0, |t| t.iter().take(2).map(|&v| i64::from(v)).sum());
+    let v = match mode {
+        1 => r,
+        2 => -r,
+        _ => 0,
+    };
+    Ok((mode, axes, v, o.decimals.into()))
+}
+
+/// cnc_rdradofs: mode, plane axes, then the vector as value records
+/// (value, decimals; the last one's decimals not sent).
+fn radius_offset(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let (mode, axes, v, dec) = compensation(m, q.path)?;
+    Ok(vec![mode.into(), axes[0], axes[1], 0, dec, v])
+}
+
+/// cnc_rd3dtofs: the same compensation in X, Y, Z (the simulator follows
+/// no other 3-D tool offset).
+fn offset_3d(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let (mode, axes, v, dec) = compensation(m, q.path)?;
+    let mut xyz = [0; 3];
+    xyz[axes[1] as usize - 1] = v;
+    Ok(vec![mode.into(), 1, 2, 3, xyz[0], dec, xyz[1], dec, xyz[2]])
+}
+
+/// cnc_rdtlmsinfo: the T and M codes in effect and the H code's length
+/// (geometry, type 3; its decimals), the offset a measurement writes: the
+/// simulator measures nothing, it shows the length the H code holds.
+fn length_measurement(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
+    let code = |m: &Machine, k: usize| {
+        let c = crate::proto::program::AUX_ORDER[k];
+        m.aux_modal(q.path, c)
+            .map(|a| a.0.first().map_or(0, |a| a.value))
+    };
+    let (t, mc, h) = (code(m, 8)?, code(m, 6)?, code(m, 4)?);
+    let o = m.offsets(q.path)?;
+    let hm = (o.tool.get(h.wrapping_sub(1) as usize)).map_or(0, |r| r.get(3).copied().unwrap_or(0));
+    Ok([t, mc, hm, o.decimals.into(), h].map(i64::from).to_vec())
 }
 
 /// Write payload: exactly `n` whole records.
@@ -127,6 +199,24 @@ impl Machine {
         let v = records(payload, 1)?;
         o.tool[a][kind as usize] = v[0];
         Ok(Ack)
+    }
+
+    /// 0x01b7 \[type\]: every tool offset of `type` (a column; -1: all)
+    /// set to 0; another type: EW_ATTRIB, nothing changed.
+    pub fn tofs_clear(&mut self, path: u16, t: i32) -> Reply<()> {
+        let o = self.offsets_mut(path)?;
+        let types = o.tool.first().map_or(0, Vec::len) as i32;
+        if !(-1..types).contains(&t) {
+            return Err(ATTRIB);
+        }
+        for row in &mut o.tool {
+            for (k, v) in row.iter_mut().enumerate() {
+                if t == -1 || t == k as i32 {
+                    *v = 0;
+                }
+            }
+        }
+        Ok(())
     }
 
     pub fn tofs_info(&mut self, path: u16) -> Reply<TofsInfo> {

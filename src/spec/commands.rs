@@ -171,7 +171,7 @@ commands! {
     RDPRSTR = CLASS_CNC 0x0043 [cnc_rdprstrinfo];
     GETTIMER = CLASS_CNC 0x0045 [cnc_gettimer];
     SETTIMER = CLASS_CNC 0x0046 [cnc_settimer];
-    RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2];
+    RDGRPID2 = CLASS_CNC 0x0047 [cnc_rdgrpid2 cnc_rdgrpid];
     /// cnc_rdtlusegrp: the next, in-use and selected groups (no args).
     TLUSEGRP = CLASS_CNC 0x0048 [cnc_rdtlusegrp cnc_rdusegrpid];
     /// (1,0x004a): the number of tool life groups; on the 16i class with
@@ -183,10 +183,25 @@ commands! {
     WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
     /// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
     /// cnc_rd2tlifedata: [grp, n, n], the group, n and tool n's record.
-    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata];
+    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata cnc_rd2length cnc_rd2radius cnc_t2info];
     /// cnc_rd1tlifedata: (1,0x004f)[grp, n]: the group, tool n's number, a
     /// word it does not read, its H and D codes and information.
-    RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata];
+    RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata cnc_rd1length cnc_rd1radius cnc_t1info cnc_rd1tlifedat2];
+    // Tool offsets, family B (issue 24).
+    /// The B-axis tool offsets: memory type, number, cancel sub function.
+    RDBTOFSINFO = CLASS_CNC 0x007e [cnc_rdbtofsinfo];
+    /// The cutter compensation mode, plane axes and vector.
+    RDRADOFS = CLASS_CNC 0x0117 [cnc_rdradofs];
+    /// The 3-D tool offset mode, axes and vector.
+    RD3DTOFS = CLASS_CNC 0x011e [cnc_rd3dtofs];
+    /// The work zero point measurement's TL value and its decimals.
+    RDTLDATA = CLASS_CNC 0x0191 [cnc_rdtldata];
+    /// The tool length measurement: T, M, the measured value, offset number.
+    RDTLMSINFO = CLASS_CNC 0x0194 [cnc_rdtlmsinfo];
+    /// Whether [MEASURE] / [MEASURE+] (tool offset measurement) can be used.
+    RDTOFSENBL = CLASS_CNC 0x0195 [cnc_rdtofsenbl];
+    /// [type]: clears every tool offset of a type.
+    CLRTOFS = CLASS_CNC 0x01b7 [cnc_clrtofs];
     DELTLIFEGRP = CLASS_CNC 0x0053 [cnc_deltlifegrp];
     /// Inserts a tool into a group: args [grp, tuse_num, tool number].
     TLINSERT = CLASS_CNC 0x0054 [cnc_instlifedt];

@@ -138,3 +138,54 @@ pub struct IODBWCSF {
     pub r#type: c_short,
     pub data: [LONG; MAX_AXIS],
 }
+
+/// cnc_rdbtofsinfo: the B-axis tool offsets' memory type, how many there
+/// are and the sub function number of offset cancel.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBBTLINF {
+    pub ofs_type: c_short,
+    pub use_no: c_short,
+    pub sub_no: c_short,
+}
+
+/// cnc_rdradofs: the cutter compensation mode, the plane's two axes and
+/// the offset vector in it.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBROFS {
+    pub mode: c_short,
+    pub pln_axes: [c_short; 2],
+    pub ofsvct: [LONG; 2],
+}
+
+/// cnc_rd3dtofs: the 3-D tool offset mode, its three axes and the offset
+/// vector.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODB3DTO {
+    pub mode: c_short,
+    pub ofs_axes: [c_short; 3],
+    pub ofsvct: [LONG; 3],
+}
+
+/// cnc_rdtldata: the work zero point measurement's TL value and its
+/// decimals.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLDATA {
+    pub tl: LONG,
+    pub tl_dp: LONG,
+}
+
+/// cnc_rdtlmsinfo: the tool length measurement: T and M codes, the
+/// measured length and its decimals, the offset number.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLMSINF {
+    pub t: LONG,
+    pub m: LONG,
+    pub hm: LONG,
+    pub hm_dp: LONG,
+    pub tlofs_no: LONG,
+}

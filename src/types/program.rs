@@ -177,7 +177,9 @@ pub struct IODBTIMER {
     pub data: IODBTIMER_data,
 }
 
-/// cnc_toolnum: tool number of a tool in a tool-life group.
+/// cnc_toolnum: tool number of a tool in a tool-life group (cnc_rd1length,
+/// cnc_rd2length, cnc_rd1radius, cnc_rd2radius, cnc_t1info, cnc_t2info: its
+/// H and D numbers and information).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct ODBTLIFE4 {

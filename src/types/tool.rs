@@ -60,6 +60,16 @@ pub struct ODBTLIFE2 {
     pub data: LONG,
 }
 
+/// cnc_rdgrpid: the tool life group of a tool number (`type` the tool
+/// number asked for, `dummy` untouched).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLIFE1 {
+    pub dummy: c_short,
+    pub r#type: c_short,
+    pub data: LONG,
+}
+
 /// cnc_rdgrpid2: the tool life group of a tool number.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -330,6 +340,20 @@ pub struct ODBLFNO {
 pub struct IODBTD {
     pub datano: c_short,
     pub r#type: c_short,
+    pub tool_num: LONG,
+    pub h_code: LONG,
+    pub d_code: LONG,
+    pub tool_inf: LONG,
+}
+
+/// cnc_rd1tlifedat2: one tool of a tool life group by a long use number
+/// (`dummy` and `type` untouched).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTD2 {
+    pub datano: c_short,
+    pub dummy: c_short,
+    pub r#type: LONG,
     pub tool_num: LONG,
     pub h_code: LONG,
     pub d_code: LONG,

@@ -420,6 +420,14 @@ rust_layouts! {
     ODBUSEGR { datano, r#type, next, r#use, slct }
     ODBLFNO { datano, r#type, data }
     IODBTD { datano, r#type, tool_num, h_code, d_code, tool_inf }
+    // tool life and offsets, family B
+    IODBTD2 { datano, dummy, r#type, tool_num, h_code, d_code, tool_inf }
+    ODBTLIFE1 { dummy, r#type, data }
+    ODBBTLINF { ofs_type, use_no, sub_no }
+    ODBROFS { mode, pln_axes, ofsvct }
+    ODB3DTO { mode, ofs_axes, ofsvct }
+    ODBTLDATA { tl, tl_dp }
+    ODBTLMSINF { t, m, hm, hm_dp, tlofs_no }
     IODBTLMNG {
         T_code, life_count, max_life, rest_life, life_stat, cust_bits, tool_info, H_code, D_code,
         spindle_speed, feedrate, magazine, pot, G_code, W_code, gno, grp, edge, org_magazine,

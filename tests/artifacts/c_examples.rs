@@ -569,5 +569,6 @@ mod collectors_programs_macros;
 mod collectors_settings;
 mod collectors_system;
 mod collectors_system_ids;
+mod collectors_tool;
 mod collectors_tool_axis;
 mod sampling;

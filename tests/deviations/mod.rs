@@ -1270,6 +1270,24 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "on an error answer FANUC's library fills the caller's IODBTD (all but `type`) with uninitialised memory (stack bytes, pointers among them) and returns the error; ours writes nothing",
     },
+    // Tool life family B (issue 24).
+    Deviation {
+        function: "cnc_rdgrpid",
+        cases: &[
+            "rdgrpid_*_a1_m1",
+            "rdgrpid_*_a1_0",
+            "rdgrpid_*_a1_9999",
+            "rdgrpid_*_a1_32767",
+            "rdgrpid_*_c_12",
+            "rdgrpid_*_c_2",
+            "rdgrpid_*_shape_err*",
+            "rdgrpid_*_path2",
+            // oracle fuzz: an error answer, drawn or the simulator's.
+            "fuzz_rdgrpid_*_answer_e*",
+            "fuzz_rdgrpid_*_answer__*",
+        ],
+        reason: "on an error answer FANUC's library fills the caller's ODBTLIFE1 `type` and `data` with uninitialised memory (different on every run) and returns the error; ours writes nothing",
+    },
 ];
 
 /// The oracle fuzz's short answers (a payload one byte short, cut inside a

@@ -191,6 +191,17 @@ const COMBOS: &[(&str, &[&str])] = &[
             "20 0 0 100",
         ],
     ),
+    // Tool life and offsets, family B: a second tool, an absent group or
+    // tool, another type, on every class (values the dimensions lack).
+    ("rd1length", &["1 3", "3 1", "2 2"]),
+    ("rd1radius", &["1 3", "3 1"]),
+    ("t1info", &["1 3", "3 1"]),
+    ("rd2length", &["1 3", "3 1", "2 2"]),
+    ("rd2radius", &["1 3", "3 1"]),
+    ("t2info", &["1 3", "3 1"]),
+    ("rd1tlifedat2", &["1 3", "3 1", "2 2"]),
+    ("rdgrpid", &["12", "2"]),
+    ("clrtofs", &["2", "5", "-3"]),
 ];
 
 /// The words written by hand: functions not (yet) described as data.

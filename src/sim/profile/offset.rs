@@ -13,6 +13,13 @@ pub struct Offsets {
     pub memory: i16,
     /// cnc_rdtofsinfo2 `ofs_enable`: 1 when tool offsets are in use.
     pub enable: i16,
+    /// cnc_rdbtofsinfo: how many B-axis tool offsets (0: none) and the
+    /// sub function number of offset cancel.
+    pub b_axis: i16,
+    pub b_cancel: i16,
+    /// cnc_rdtldata: the work zero point measurement's TL value (reference
+    /// tool length, in the offsets' decimals).
+    pub tl: i32,
     /// Tool offsets: row k is offset number k+1, one column per type
     /// (mill, memory C: radius wear, radius geometry, length wear, length
     /// geometry, types 0..3). Every row has the same number of columns.
@@ -31,6 +38,9 @@ impl Default for Offsets {
             decimals: 3,
             memory: 2,
             enable: 1,
+            b_axis: 0,
+            b_cancel: 0,
+            tl: 0,
             tool: Vec::new(),
             work: Vec::new(),
             shift: Vec::new(),

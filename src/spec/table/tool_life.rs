@@ -30,6 +30,179 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rd1length",
+        doc: "Reads the length offset number (H) of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tlife", "ODBTLIFE4"),
+        ],
+        forms: &[every_class(
+            cmd::RD1TLIFEDATA,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            skip(I32),
+            to(I32, "data", I32),
+        ],
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        zero_without_first: true,
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rd1radius",
+        doc: "Reads the radius offset number (D) of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tlife", "ODBTLIFE4"),
+        ],
+        forms: &[every_class(
+            cmd::RD1TLIFEDATA,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            skip(I32),
+            skip(I32),
+            to(I32, "data", I32),
+        ],
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        zero_without_first: true,
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_t1info",
+        doc: "Reads the information of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tlife", "ODBTLIFE4"),
+        ],
+        forms: &[every_class(
+            cmd::RD1TLIFEDATA,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            skip(I32),
+            skip(I32),
+            skip(I32),
+            to(I32, "data", I32),
+        ],
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        zero_without_first: true,
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rd1tlifedat2",
+        doc: "Reads tool `tuse_num` of tool life group `grp_num` as cnc_rd1tlifedata (its request, `tuse_num` a long): `datano` the group the CNC answered, the tool's number, H and D codes and information (`dummy` and `type` untouched).",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Long("tuse_num"),
+            Param::Out("tldata", "IODBTD2"),
+        ],
+        forms: &[every_class(
+            cmd::RD1TLIFEDATA,
+            &[Word::Arg(0), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "tool_num", I32),
+            skip(I32),
+            to(I32, "h_code", I32),
+            to(I32, "d_code", I32),
+            to(I32, "tool_inf", I32),
+        ],
+        zero_without_first: true,
+        zeroed: &["h_code", "d_code", "tool_inf"],
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99|65537"],
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rd2length",
+        doc: "Reads the length offset number (H) of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tlife", "ODBTLIFE4"),
+        ],
+        forms: &[every_class(
+            cmd::TLTOOLS,
+            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            skip(I32),
+            to(I32, "data", I32),
+        ],
+        short: Short::Request,
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        zero_without_first: true,
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rd2radius",
+        doc: "Reads the radius offset number (D) of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tlife", "ODBTLIFE4"),
+        ],
+        forms: &[every_class(
+            cmd::TLTOOLS,
+            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            skip(I32),
+            skip(I32),
+            to(I32, "data", I32),
+        ],
+        short: Short::Request,
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        zero_without_first: true,
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_t2info",
+        doc: "Reads the information of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered.",
+        params: &[
+            Param::Short("grp_num"),
+            Param::Short("tuse_num"),
+            Param::Out("tlife", "ODBTLIFE4"),
+        ],
+        forms: &[every_class(
+            cmd::TLTOOLS,
+            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
+        )],
+        reply: &[
+            to(I32, "datano", I16),
+            to(I32, "type", I16),
+            skip(I32),
+            skip(I32),
+            skip(I32),
+            to(I32, "data", I32),
+        ],
+        short: Short::Request,
+        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+        zero_without_first: true,
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
         name: "cnc_rdntool",
         doc: "Reads the number of tools in tool-life group `grp_num`.",
         params: &[Param::Short("grp_num"), Param::Out("tool", "ODBTLIFE3")],
@@ -79,6 +252,16 @@ pub const FUNCS: &[Func] = &[
         // As cnc_rdlife [fuzz, seed 0x202a1128 `s0Twwwshort1`: group 0,
         // counter word 0x376b988b, data written 0].
         zero_without_first: true,
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdgrpid",
+        doc: "Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy` untouched; cnc_rdgrpid2's request).",
+        params: &[Param::Short("tno"), Param::Out("tlife", "ODBTLIFE1")],
+        forms: &[every_class(cmd::RDGRPID2, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16), to(I32, "data", I32)],
+        dims: &["11|0|-1|1|5|9999|32767"],
+        learnt: Some(&[]),
         ..COMMAND
     },
     Func {
