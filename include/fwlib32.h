@@ -3328,7 +3328,8 @@ short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBAL
 short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
 
 /*
- Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on Ethernet.
+ Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on
+ Ethernet.
 
  # Safety
  Nothing is written through the pointers.

@@ -8,6 +8,7 @@
 
 use super::types::*;
 
+mod absent;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
 mod feed;
@@ -53,6 +54,7 @@ const AREAS: &[&[Func]] = &[
     setting::FUNCS,
     sampling::FUNCS,
     status::FUNCS,
+    absent::FUNCS,
 ];
 
 const LEN: usize = {
