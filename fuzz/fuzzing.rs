@@ -241,18 +241,6 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pa::rdopmsg3(a[0] & 1 != 0, a[1], a[2] as i16, a[3]), cx, r),
     },
     Decoder {
-        names: &["cnc_rdctrldi", "cnc_rdctrldo"],
-        run: |cx, a, r| {
-            go(
-                fwlib32::proto::machine::CtrlSignals {
-                    output: a[0] & 1 != 0,
-                },
-                cx,
-                r,
-            )
-        },
-    },
-    Decoder {
         names: &["cnc_rdprstrinfo"],
         run: |cx, _, r| go(fwlib32::proto::machine::PrstrInfo, cx, r),
     },

@@ -3416,7 +3416,7 @@ short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count
  byte of the CNC's first signal word).
 
  # Safety
- `spdi` must point to a writable ODBSPDI.
+ `spdi` must be NULL or point to a writable ODBSPDI.
  */
 short cnc_rdctrldi(unsigned short FlibHndl, struct ODBSPDI *spdi);
 
@@ -3424,7 +3424,7 @@ short cnc_rdctrldi(unsigned short FlibHndl, struct ODBSPDI *spdi);
  Reads the spindle control output signals (four bytes, as cnc_rdctrldi).
 
  # Safety
- `spdo` must point to a writable ODBSPDO.
+ `spdo` must be NULL or point to a writable ODBSPDO.
  */
 short cnc_rdctrldo(unsigned short FlibHndl, struct ODBSPDO *spdo);
 

@@ -39,9 +39,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_rdophistry", "cnc_rdophistry4", "cnc_rdomhistry", "cnc_rdomhistry2",
         "cnc_rdalmhistry5", "cnc_rdpitchr", "cnc_wrhissgnl3",
     ]),
-    ("machine", &[
-        "cnc_rdctrldi", "cnc_rdctrldo", "cnc_rdprstrinfo",
-    ]),
+    ("machine", &["cnc_rdprstrinfo"]),
     ("macros", &[
         "cnc_rdmacro", "cnc_wrmacro", "cnc_rdmacror", "cnc_wrmacror", "cnc_rdmacror2",
         "cnc_wrmacror2",

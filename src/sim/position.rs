@@ -13,8 +13,7 @@ use super::profile::{Axis, Spindle};
 use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
-use crate::proto::cmd::{HDL3D_AXES, HDL3D_TIP, POSERR, RDSPCSS, RDSPDLALM};
-use crate::proto::machine::RDCTRLSIG;
+use crate::proto::cmd::{HDL3D_AXES, HDL3D_TIP, POSERR, RDCTRLSIG, RDSPCSS, RDSPDLALM};
 use crate::proto::position::{
     ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
     Name, POSITION, PRGNUM, PosNames, ProgNums, RDAXISNAME, RDSPDLNAME, SEQNUM, SERVO_LOAD,

@@ -1601,7 +1601,6 @@ const WORDS: &[Word] = &[
         &["0|-1|1|2|3|4|5|-2", "5|1|0|-1|2|6|12"],
         &["-1 12", "4 1"],
     ),
-    w("rdctrldi", &[]),
     // The signals the operation history records: datano, type, entries
     // filled (a pattern), 0 for NULL, then entry 1's ent_no, pmc_no,
     // sig_no, sig_name.
@@ -1627,7 +1626,6 @@ const WORDS: &[Word] = &[
             ],
         )
     },
-    w("rdctrldo", &[]),
     // After a reset that interrupted the running program: restart data.
     Word {
         setup: &["reset"],

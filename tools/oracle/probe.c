@@ -503,9 +503,7 @@ static short w_callx(void) {
     /* machine data (issue 11) */                                                                \
     WORD(rdophistry4, { unsigned short e = N(2), l = N(3); short r = F(cnc_rdophistry4)(H, N(1), &e, &l, B0); field("e_no", e); field("length", l); return r; }) \
     WORD(rdopmsg3, SHORT_IO(num, 2, F(cnc_rdopmsg3)(H, N(1), &num, B0))) \
-    WORD(rdctrldi, return F(cnc_rdctrldi)(H, B0)) \
     WORD(wrhissgnl3, { short *d = (short *)b0; d[0] = N(1); d[1] = N(2); for (int k = 0; k < N(3) && k < 60; k++) { unsigned char *e = b0 + 4 + 8 * k; short en = k + 1, pm = 1, sn = 10 * k + 7; if (k == 0 && argc_ > 5) en = N(5); if (k == 0 && argc_ > 6) pm = N(6); if (k == 0 && argc_ > 7) sn = N(7); memcpy(e, &en, 2); memcpy(e + 2, &pm, 2); memcpy(e + 4, &sn, 2); e[6] = k == 0 && argc_ > 8 ? N(8) : k & 3; e[7] = (k * 37 + 1) & 0xff; } return F(cnc_wrhissgnl3)(H, argc_ > 4 && N(4) == 0 ? NULL : B0); }) \
-    WORD(rdctrldo, return F(cnc_rdctrldo)(H, B0)) \
     WORD(rdprstrinfo, return F(cnc_rdprstrinfo)(H, B0)) \
     /* declared by FANUC's header, not on Ethernet (EW_MMCSYS) */                                \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \

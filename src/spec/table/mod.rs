@@ -29,6 +29,7 @@ pub mod program;
 mod sampling;
 pub mod servo;
 mod setting;
+mod signals;
 pub mod status;
 pub mod tool_life;
 
@@ -54,6 +55,7 @@ const AREAS: &[&[Func]] = &[
     setting::FUNCS,
     sampling::FUNCS,
     status::FUNCS,
+    signals::FUNCS,
     absent::FUNCS,
 ];
 
