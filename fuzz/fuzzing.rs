@@ -81,10 +81,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(st::StatInfo::<st::Status2>::new(), cx, r),
     },
     Decoder {
-        names: &["cnc_alarm", "cnc_alarm2"],
-        run: |cx, _, r| go(pa::alarm(), cx, r),
-    },
-    Decoder {
         names: &["cnc_rdalmmsg"],
         run: |cx, a, r| go(pa::rdalmmsg::<32>(a[0] as i16, a[1] as i16), cx, r),
     },

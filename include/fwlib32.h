@@ -2722,7 +2722,7 @@ short cnc_acts2(unsigned short FlibHndl, short sp_no, struct ODBACT2 *actualspin
  Reads the alarm status bits; `data` = their low 16 bits.
 
  # Safety
- `alarm` must point to a writable ODBALM.
+ `alarm` must be NULL or point to a writable ODBALM.
  */
 short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
 
@@ -2730,7 +2730,7 @@ short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
  Reads the alarm status bits (32 bits, 4 bytes written into the `long`).
 
  # Safety
- `alarm` must point to 4 writable bytes.
+ `alarm` must be NULL or point to a writable long.
  */
 short cnc_alarm2(unsigned short FlibHndl, long *alarm);
 

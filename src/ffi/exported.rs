@@ -16,7 +16,7 @@ use std::os::raw::c_short;
 #[rustfmt::skip]
 pub const WRITTEN: &[(&str, &[&str])] = &[
     ("alarm", &[
-        "cnc_alarm", "cnc_alarm2", "cnc_rdalmmsg", "cnc_rdalmmsg2", "cnc_rdalminfo", "cnc_rdopmsg",
+        "cnc_rdalmmsg", "cnc_rdalmmsg2", "cnc_rdalminfo", "cnc_rdopmsg",
         "cnc_rdopmsg3", "cnc_rdalmhistry", "cnc_rdalmhistry2", "cnc_rdalmhisno",
     ]),
     ("axisdata", &["cnc_rdsvmeter", "cnc_rdspmeter", "cnc_rdaxisdata"]),

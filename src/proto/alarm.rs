@@ -1,10 +1,9 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
 
 use super::call::Single;
-pub use super::cmd::{ALARM, RDALMHISNO, RDALMHISTRY, RDALMMSG, RDOPMSG, RDOPMSG3};
+pub use super::cmd::{RDALMHISNO, RDALMHISTRY, RDALMMSG, RDOPMSG, RDOPMSG3};
 use super::offset::Count;
 use super::packet::{ReqSub, answer_records};
-use super::position::AlarmBits;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
 
@@ -114,10 +113,6 @@ impl<const N: usize> Wire for AlmMsgs<N> {
             .collect::<Result<_, _>>()
             .map(AlmMsgs)
     }
-}
-
-pub fn alarm() -> Single<AlarmBits> {
-    Single::padded(ReqSub::cnc(ALARM, &[]))
 }
 
 /// cnc_rdalmmsg (N = 32) / cnc_rdalmmsg2 (N = 64): (1,0x23)[type, num, 2,

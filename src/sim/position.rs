@@ -24,7 +24,10 @@ use crate::proto::value::{BASE_10, Value};
 use crate::proto::wire::Writer;
 
 pub(super) const ROUTES: &[Route] = &[
-    Route::cnc(ALARM, |m, q| enc(m.alarm_bits(q.path))),
+    // cnc_alarm's and cnc_alarm2's layout (cnc_rddynamic reads the same bits).
+    Route::table(ALARM, |m, q| {
+        m.alarm_bits(q.path).map(|a| vec![i64::from(a.bits)])
+    }),
     // cnc_rdprgnum's and cnc_rdseqnum's layouts (cnc_rddynamic reads the
     // same words).
     Route::table(PRGNUM, |m, q| {

@@ -479,8 +479,6 @@ const WORDS: &[Word] = &[
         ],
     ),
     // Alarms and messages.
-    w("alarm", &[]),
-    w("alarm2", &[]),
     w(
         "rdalmmsg",
         &[

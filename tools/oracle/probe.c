@@ -418,8 +418,6 @@ static short w_callx(void) {
                        field("line_len", ln[0]); field("data_len", dl[0]); return r; })           \
     WORD(wrpdf_line, { fill_hex(b1, 3); return F(cnc_wrpdf_line)(H, argv_[1], N(2), B1, N(4)); }) \
     /* alarm */                                                                                   \
-    WORD(alarm, return F(cnc_alarm)(H, B0))                                                       \
-    WORD(alarm2, return F(cnc_alarm2)(H, B0))                                                     \
     WORD(rdalmmsg, SHORT_IO(num, 2, F(cnc_rdalmmsg)(H, N(1), &num, B0)))                          \
     WORD(rdalmmsg2, SHORT_IO(num, 2, F(cnc_rdalmmsg2)(H, N(1), &num, B0)))                        \
     WORD(rdalminfo, return F(cnc_rdalminfo)(H, N(1), N(2), N(3), B0))                             \

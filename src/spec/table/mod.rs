@@ -9,6 +9,7 @@
 use super::types::*;
 
 mod absent;
+mod alarm;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
 mod feed;
@@ -56,6 +57,7 @@ const AREAS: &[&[Func]] = &[
     sampling::FUNCS,
     status::FUNCS,
     signals::FUNCS,
+    alarm::FUNCS,
     absent::FUNCS,
 ];
 
