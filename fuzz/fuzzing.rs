@@ -101,10 +101,6 @@ const HAND: &[Decoder] = &[
         run: |cx, a, r| go(pa::rdalmhistry(a[0] as u16, a[1] as u16), cx, r),
     },
     Decoder {
-        names: &["cnc_rdalmhisno"],
-        run: |cx, _, r| go(pa::rdalmhisno(), cx, r),
-    },
-    Decoder {
         names: &["cnc_rddynamic", "cnc_rddynamic2", "cnc_rddynamico8"],
         run: |cx, a, r| go(Dynamic { axis: a[0] as i16 }, cx, r),
     },

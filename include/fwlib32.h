@@ -3228,11 +3228,11 @@ short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
 
 /*
- Reads the number of alarm history entries: the low 16 bits of the
- CNC's 32-bit count, as FANUC's library writes them.
+ Reads the number of alarm history entries: the low 16 bits of the CNC's
+ 32-bit count, as FANUC's library writes them.
 
  # Safety
- `hisno` must point to a writable unsigned short.
+ `hisno` must be NULL or point to a writable unsigned short.
  */
 short cnc_rdalmhisno(unsigned short FlibHndl, unsigned short *hisno);
 

@@ -7,7 +7,7 @@ use super::{element, ffi_boundary, ffi_read, nonnull, put, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
-use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
+use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhistry};
 use crate::proto::open::CncClass;
 use crate::types::{
     ALMINFO, ALMINFO_alm1_rec, ALMINFO_alm2_rec, LONG, ODBAHIS, ODBAHIS_ALM, ODBAHIS2,
@@ -429,22 +429,6 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
                 put_member!(o, ODBAHIS2_ALM, alm_msg, r.msg.map(|b| b as c_char));
             }
         }
-        Ok(())
-    })
-}
-
-/// Reads the number of alarm history entries: the low 16 bits of the
-/// CNC's 32-bit count, as FANUC's library writes them.
-///
-/// # Safety
-/// `hisno` must point to a writable unsigned short.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdalmhisno(FlibHndl: c_ushort, hisno: *mut c_ushort) -> c_short {
-    ffi_boundary!("cnc_rdalmhisno", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(hisno)?;
-        let c = h.call(&rdalmhisno())?;
-        unsafe { put(out, c.value as u16) };
         Ok(())
     })
 }

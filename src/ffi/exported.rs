@@ -17,7 +17,7 @@ use std::os::raw::c_short;
 pub const WRITTEN: &[(&str, &[&str])] = &[
     ("alarm", &[
         "cnc_rdalmmsg", "cnc_rdalmmsg2", "cnc_rdalminfo", "cnc_rdopmsg",
-        "cnc_rdopmsg3", "cnc_rdalmhistry", "cnc_rdalmhistry2", "cnc_rdalmhisno",
+        "cnc_rdopmsg3", "cnc_rdalmhistry", "cnc_rdalmhistry2",
     ]),
     ("axisdata", &["cnc_rdsvmeter", "cnc_rdspmeter", "cnc_rdaxisdata"]),
     ("download", &[

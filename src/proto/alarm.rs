@@ -2,7 +2,6 @@
 
 use super::call::Single;
 pub use super::cmd::{RDALMHISNO, RDALMHISTRY, RDALMMSG, RDOPMSG, RDOPMSG3};
-use super::offset::Count;
 use super::packet::{ReqSub, answer_records};
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
@@ -243,10 +242,6 @@ pub fn rdalmhistry(s: u16, e: u16) -> Single<AlmHistory> {
     let (s, e) = (i32::from(s), i32::from(e));
     let e = s + answer_records(e - s + 1, 60) - 1;
     Single::new(ReqSub::cnc(RDALMHISTRY, &[s, e, 1]))
-}
-
-pub fn rdalmhisno() -> Single<Count> {
-    Single::padded(ReqSub::cnc(RDALMHISNO, &[]))
 }
 
 /// Bytes of one cnc_rdopmsg3 record: i32 number, type, characters, then

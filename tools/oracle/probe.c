@@ -422,7 +422,6 @@ static short w_callx(void) {
     WORD(rdalmmsg2, SHORT_IO(num, 2, F(cnc_rdalmmsg2)(H, N(1), &num, B0)))                        \
     WORD(rdalminfo, return F(cnc_rdalminfo)(H, N(1), N(2), N(3), B0))                             \
     WORD(rdopmsg, return F(cnc_rdopmsg)(H, N(1), N(2), B0))                                       \
-    WORD(rdalmhisno, return F(cnc_rdalmhisno)(H, B0))                                             \
     WORD(rdalmhistry, return F(cnc_rdalmhistry)(H, N(1), N(2), N(3), B0))                         \
     WORD(rdalmhistry2, return F(cnc_rdalmhistry2)(H, N(1), N(2), N(3), B0))                       \
     /* param, diagnosis */                                                                        \
