@@ -285,7 +285,8 @@ fn generate_ext_header(root: &Path) -> String {
 
 /// `fwlib32::ffi::exports::EXPORTS`: every function the library exports, by
 /// name, and how it is made: written by hand in src/ffi/<area>.rs
-/// (`Written`), answering a code without traffic (`NotOnEthernet`, from
+/// (`Written`), answering a code without traffic (`NotOnEthernet`: an
+/// entry of src/spec/table/absent.rs, or cnc_allclibhndl in
 /// src/ffi/absent.rs), one of our extensions (`Extension`, src/ffi/ext.rs),
 /// all three listed in src/ffi/exported.rs; or an entry of src/spec/table/
 /// (`Described`). tests/artifacts/artifacts.rs checks the names against the built
@@ -293,7 +294,14 @@ fn generate_ext_header(root: &Path) -> String {
 fn exports_table(funcs: &[types::Func]) -> String {
     let mut rows: Vec<(String, String)> = funcs
         .iter()
-        .map(|f| (f.name.to_string(), "How::Described".to_string()))
+        .map(|f| match (f.answers(), f.answers().and_then(ew_name)) {
+            // Answering a code on every call: declared, not on Ethernet.
+            (Some(code), Some(ew)) => (
+                f.name.to_string(),
+                format!("How::NotOnEthernet {{ code: {code}, ew: \"{ew}\" }}"),
+            ),
+            _ => (f.name.to_string(), "How::Described".to_string()),
+        })
         .collect();
     for (area, names) in exported::WRITTEN {
         for n in *names {
@@ -304,11 +312,8 @@ fn exports_table(funcs: &[types::Func]) -> String {
         }
     }
     for (name, code) in exported::ABSENT {
-        let ew = ew::CODES
-            .iter()
-            .find(|c| c.1 == *code)
-            .unwrap_or_else(|| panic!("src/ffi/exported.rs: {name}: {code} is no EW_* code"))
-            .0;
+        let ew = ew_name(*code)
+            .unwrap_or_else(|| panic!("src/ffi/exported.rs: {name}: {code} is no EW_* code"));
         rows.push((
             name.to_string(),
             format!("How::NotOnEthernet {{ code: {code}, ew: \"{ew}\" }}"),
@@ -329,6 +334,11 @@ fn exports_table(funcs: &[types::Func]) -> String {
     }
     s.push_str("];\n");
     s
+}
+
+/// The name of EW_* code `code` (src/ew.rs).
+fn ew_name(code: i16) -> Option<&'static str> {
+    ew::CODES.iter().find(|c| c.1 == code).map(|c| c.0)
 }
 
 /// The codes of src/ew.rs as `#define EW_NAME (VALUE) /* comment */` lines
@@ -672,6 +682,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 .collect(),
             };
         let mut safety = safety;
+        if f.answers().is_some() {
+            safety = vec!["/// Nothing is written through the pointers.".to_string()];
+        }
         for n in &ios {
             safety.push(format!(
                 "/// `{n}` must be NULL or point to a readable and writable short."
@@ -801,6 +814,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             // cut per answer (types::Word::Upto reading on: a full answer asks again,
             // cnc_rdpmacror).
             batch = !(outs.is_empty()
+                || f.answers().is_some()
                 || f.block.is_some_and(|b| b.range.is_some())
                 || f.pages.is_some()
                 || f.forms.iter().any(|fm| {

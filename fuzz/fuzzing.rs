@@ -81,10 +81,6 @@ const HAND: &[Decoder] = &[
         run: |cx, _, r| go(st::StatInfo::<st::Status2>::new(), cx, r),
     },
     Decoder {
-        names: &["cnc_alarm", "cnc_alarm2"],
-        run: |cx, _, r| go(pa::alarm(), cx, r),
-    },
-    Decoder {
         names: &["cnc_rdalmmsg"],
         run: |cx, a, r| go(pa::rdalmmsg::<32>(a[0] as i16, a[1] as i16), cx, r),
     },
@@ -103,10 +99,6 @@ const HAND: &[Decoder] = &[
     Decoder {
         names: &["cnc_rdalmhistry", "cnc_rdalmhistry2"],
         run: |cx, a, r| go(pa::rdalmhistry(a[0] as u16, a[1] as u16), cx, r),
-    },
-    Decoder {
-        names: &["cnc_rdalmhisno"],
-        run: |cx, _, r| go(pa::rdalmhisno(), cx, r),
     },
     Decoder {
         names: &["cnc_rddynamic", "cnc_rddynamic2", "cnc_rddynamico8"],
@@ -239,18 +231,6 @@ const HAND: &[Decoder] = &[
     Decoder {
         names: &["cnc_rdopmsg3"],
         run: |cx, a, r| go(pa::rdopmsg3(a[0] & 1 != 0, a[1], a[2] as i16, a[3]), cx, r),
-    },
-    Decoder {
-        names: &["cnc_rdctrldi", "cnc_rdctrldo"],
-        run: |cx, a, r| {
-            go(
-                fwlib32::proto::machine::CtrlSignals {
-                    output: a[0] & 1 != 0,
-                },
-                cx,
-                r,
-            )
-        },
     },
     Decoder {
         names: &["cnc_rdprstrinfo"],

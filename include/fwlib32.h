@@ -2856,7 +2856,7 @@ short cnc_acts2(unsigned short FlibHndl, short sp_no, struct ODBACT2 *actualspin
  Reads the alarm status bits; `data` = their low 16 bits.
 
  # Safety
- `alarm` must point to a writable ODBALM.
+ `alarm` must be NULL or point to a writable ODBALM.
  */
 short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
 
@@ -2864,7 +2864,7 @@ short cnc_alarm(unsigned short FlibHndl, struct ODBALM *alarm);
  Reads the alarm status bits (32 bits, 4 bytes written into the `long`).
 
  # Safety
- `alarm` must point to 4 writable bytes.
+ `alarm` must be NULL or point to a writable long.
  */
 short cnc_alarm2(unsigned short FlibHndl, long *alarm);
 
@@ -3471,11 +3471,11 @@ short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
 
 /*
- Reads the number of alarm history entries: the low 16 bits of the
- CNC's 32-bit count, as FANUC's library writes them.
+ Reads the number of alarm history entries: the low 16 bits of the CNC's
+ 32-bit count, as FANUC's library writes them.
 
  # Safety
- `hisno` must point to a writable unsigned short.
+ `hisno` must be NULL or point to a writable unsigned short.
  */
 short cnc_rdalmhisno(unsigned short FlibHndl, unsigned short *hisno);
 
@@ -3571,7 +3571,8 @@ short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBAL
 short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
 
 /*
- Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on Ethernet.
+ Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on
+ Ethernet.
 
  # Safety
  Nothing is written through the pointers.
@@ -3676,7 +3677,7 @@ short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count
  byte of the CNC's first signal word).
 
  # Safety
- `spdi` must point to a writable ODBSPDI.
+ `spdi` must be NULL or point to a writable ODBSPDI.
  */
 short cnc_rdctrldi(unsigned short FlibHndl, struct ODBSPDI *spdi);
 
@@ -3684,7 +3685,7 @@ short cnc_rdctrldi(unsigned short FlibHndl, struct ODBSPDI *spdi);
  Reads the spindle control output signals (four bytes, as cnc_rdctrldi).
 
  # Safety
- `spdo` must point to a writable ODBSPDO.
+ `spdo` must be NULL or point to a writable ODBSPDO.
  */
 short cnc_rdctrldo(unsigned short FlibHndl, struct ODBSPDO *spdo);
 

@@ -7,44 +7,14 @@ use super::{element, ffi_boundary, ffi_read, nonnull, put, put_member};
 use crate::client::handles::{self, Handle};
 use crate::error::{Error, Result};
 use crate::ew::{EW_ATTRIB, EW_FUNC, EW_LENGTH, EW_NUMBER};
-use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhisno, rdalmhistry};
+use crate::proto::alarm::{self as pa, AlmHisRecord, rdalmhistry};
 use crate::proto::open::CncClass;
 use crate::types::{
     ALMINFO, ALMINFO_alm1_rec, ALMINFO_alm2_rec, LONG, ODBAHIS, ODBAHIS_ALM, ODBAHIS2,
-    ODBAHIS2_ALM, ODBALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3,
+    ODBAHIS2_ALM, ODBALMMSG, ODBALMMSG2, OPMSG, OPMSG3,
 };
 use std::mem::offset_of;
-use std::os::raw::{c_char, c_long, c_short, c_ushort};
-
-/// Reads the alarm status bits; `data` = their low 16 bits.
-///
-/// # Safety
-/// `alarm` must point to a writable ODBALM.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_alarm(FlibHndl: c_ushort, alarm: *mut ODBALM) -> c_short {
-    ffi_read!("cnc_alarm", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(alarm)?;
-        let a = h.call(&pa::alarm())?;
-        unsafe { put(&raw mut (*out).data, a.bits as u16 as c_short) };
-        Ok(())
-    })
-}
-
-/// Reads the alarm status bits (32 bits, 4 bytes written into the `long`).
-///
-/// # Safety
-/// `alarm` must point to 4 writable bytes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_alarm2(FlibHndl: c_ushort, alarm: *mut c_long) -> c_short {
-    ffi_read!("cnc_alarm2", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(alarm)?.cast::<u32>();
-        let a = h.call(&pa::alarm())?;
-        unsafe { put(out, a.bits) };
-        Ok(())
-    })
-}
+use std::os::raw::{c_char, c_short, c_ushort};
 
 /// The common part of cnc_rdalmmsg / cnc_rdalmmsg2: ODBALMMSG-shaped
 /// records of `size` bytes with an N-byte text, at most `*num` of them.
@@ -459,22 +429,6 @@ pub unsafe extern "C" fn cnc_rdalmhistry2(
                 put_member!(o, ODBAHIS2_ALM, alm_msg, r.msg.map(|b| b as c_char));
             }
         }
-        Ok(())
-    })
-}
-
-/// Reads the number of alarm history entries: the low 16 bits of the
-/// CNC's 32-bit count, as FANUC's library writes them.
-///
-/// # Safety
-/// `hisno` must point to a writable unsigned short.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdalmhisno(FlibHndl: c_ushort, hisno: *mut c_ushort) -> c_short {
-    ffi_boundary!("cnc_rdalmhisno", {
-        let h = handles::get(FlibHndl)?;
-        let out = nonnull(hisno)?;
-        let c = h.call(&rdalmhisno())?;
-        unsafe { put(out, c.value as u16) };
         Ok(())
     })
 }

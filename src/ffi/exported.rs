@@ -9,15 +9,15 @@
 //! Compiled into build.rs too (`#[path]`): plain data only (`crate::ew` is
 //! src/ew.rs there as here).
 
-use crate::ew::{EW_MMCSYS, EW_VERSION};
+use crate::ew::EW_MMCSYS;
 use std::os::raw::c_short;
 
 /// The functions written by hand in src/ffi/<area>.rs: (area, names).
 #[rustfmt::skip]
 pub const WRITTEN: &[(&str, &[&str])] = &[
     ("alarm", &[
-        "cnc_alarm", "cnc_alarm2", "cnc_rdalmmsg", "cnc_rdalmmsg2", "cnc_rdalminfo", "cnc_rdopmsg",
-        "cnc_rdopmsg3", "cnc_rdalmhistry", "cnc_rdalmhistry2", "cnc_rdalmhisno",
+        "cnc_rdalmmsg", "cnc_rdalmmsg2", "cnc_rdalminfo", "cnc_rdopmsg",
+        "cnc_rdopmsg3", "cnc_rdalmhistry", "cnc_rdalmhistry2",
     ]),
     ("axisdata", &["cnc_rdsvmeter", "cnc_rdspmeter", "cnc_rdaxisdata"]),
     ("download", &[
@@ -39,9 +39,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
         "cnc_rdophistry", "cnc_rdophistry4", "cnc_rdomhistry", "cnc_rdomhistry2",
         "cnc_rdalmhistry5", "cnc_rdpitchr", "cnc_wrhissgnl3",
     ]),
-    ("machine", &[
-        "cnc_rdctrldi", "cnc_rdctrldo", "cnc_rdprstrinfo",
-    ]),
+    ("machine", &["cnc_rdprstrinfo"]),
     ("macros", &[
         "cnc_rdmacro", "cnc_wrmacro", "cnc_rdmacror", "cnc_wrmacror", "cnc_rdmacror2",
         "cnc_wrmacror2",
@@ -87,19 +85,11 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
 ];
 
-/// FANUC's functions that none of its Ethernet libraries implements
-/// (src/ffi/absent.rs), with the `EW_*` code each answers without traffic
-/// (there read from here).
-pub const ABSENT: &[(&str, c_short)] = &[
-    ("cnc_rdexecpt", EW_VERSION),
-    ("cnc_rdprogline", EW_VERSION),
-    ("cnc_svdtstartrd", EW_VERSION),
-    ("cnc_svdtrddata", EW_VERSION),
-    ("cnc_svdtendrd", EW_VERSION),
-    ("cnc_rdspdlnamem", EW_VERSION),
-    ("cnc_rdalmmsg3", EW_VERSION),
-    ("cnc_allclibhndl", EW_MMCSYS),
-];
+/// FANUC's functions that none of its Ethernet libraries implements and
+/// that take no handle (src/ffi/absent.rs), with the `EW_*` code each
+/// answers without traffic (there read from here); those on a handle are
+/// table entries (src/spec/table/absent.rs).
+pub const ABSENT: &[(&str, c_short)] = &[("cnc_allclibhndl", EW_MMCSYS)];
 
 /// Our `fwlib_*` extensions (src/ffi/ext.rs), declared in fwlib32_ext.h only.
 pub const EXTENSIONS: &[&str] = &[

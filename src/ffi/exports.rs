@@ -14,7 +14,8 @@ pub enum How {
     Described,
     /// Declared by FANUC's header, implemented by none of FANUC's Ethernet
     /// libraries: exported so that programs link and run, answering this
-    /// code without traffic as FANUC's Ethernet library does (src/ffi/absent.rs).
+    /// code without traffic as FANUC's Ethernet library does (table entries
+    /// of src/spec/table/absent.rs; cnc_allclibhndl, src/ffi/absent.rs).
     NotOnEthernet { code: i16, ew: &'static str },
     /// One of our `fwlib_*` extensions (src/ffi/ext.rs, `fwlib32_ext.h`).
     Extension,

@@ -4,7 +4,7 @@ use super::batch::{Batch, Ticket};
 use super::cnc::Cnc;
 use super::error::{Error, Ew, Result};
 use super::part::{Part, via};
-use crate::proto::alarm::{AlmHisRecord, HIS_MSG_LEN, rdalmhisno, rdalmhistry, rdalmmsg};
+use crate::proto::alarm::{AlmHisRecord, HIS_MSG_LEN, rdalmhistry, rdalmmsg};
 use crate::proto::packet::{MAX_ANSWER, answer_records};
 use std::fmt;
 
@@ -221,7 +221,8 @@ impl Cnc {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn alarm_history(&self) -> Result<Vec<HistoryEntry>> {
-        let count = self.run(via("cnc_rdalmhisno", rdalmhisno(), 4, |c| Ok(c.value)))?;
+        let count = self.run(super::status::described("cnc_rdalmhisno"))?;
+        let count = count.first().copied().unwrap_or(0);
         let total = u16::try_from(count.max(0)).unwrap_or(u16::MAX);
         let per = answer_records(i32::MAX, 60) as u16;
         let mut out = Vec::new();

@@ -223,7 +223,7 @@ pub struct Execution {
 }
 
 /// One described function (src/spec/table/) without arguments: its reply's integers.
-fn described(name: &'static str) -> impl Part<Out = Vec<i64>> + Send + 'static {
+pub(super) fn described(name: &'static str) -> impl Part<Out = Vec<i64>> + Send + 'static {
     let f = crate::spec::find(name).expect("a described function");
     via(name, Described::new(f, &[]), f.reply_len(), Ok)
 }

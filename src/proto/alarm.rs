@@ -1,10 +1,8 @@
 //! Alarms, alarm messages, operator messages and the alarm history.
 
 use super::call::Single;
-pub use super::cmd::{ALARM, RDALMHISNO, RDALMHISTRY, RDALMMSG, RDOPMSG, RDOPMSG3};
-use super::offset::Count;
+pub use super::cmd::{RDALMHISNO, RDALMHISTRY, RDALMMSG, RDOPMSG, RDOPMSG3};
 use super::packet::{ReqSub, answer_records};
-use super::position::AlarmBits;
 use super::wire::{DecodeError, Reader, Wire, Writer};
 use crate::wire_struct;
 
@@ -114,10 +112,6 @@ impl<const N: usize> Wire for AlmMsgs<N> {
             .collect::<Result<_, _>>()
             .map(AlmMsgs)
     }
-}
-
-pub fn alarm() -> Single<AlarmBits> {
-    Single::padded(ReqSub::cnc(ALARM, &[]))
 }
 
 /// cnc_rdalmmsg (N = 32) / cnc_rdalmmsg2 (N = 64): (1,0x23)[type, num, 2,
@@ -248,10 +242,6 @@ pub fn rdalmhistry(s: u16, e: u16) -> Single<AlmHistory> {
     let (s, e) = (i32::from(s), i32::from(e));
     let e = s + answer_records(e - s + 1, 60) - 1;
     Single::new(ReqSub::cnc(RDALMHISTRY, &[s, e, 1]))
-}
-
-pub fn rdalmhisno() -> Single<Count> {
-    Single::padded(ReqSub::cnc(RDALMHISNO, &[]))
 }
 
 /// Bytes of one cnc_rdopmsg3 record: i32 number, type, characters, then

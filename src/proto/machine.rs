@@ -1,35 +1,10 @@
-//! Machine data (issue 11): the spindle control signals (cnc_rdctrldi,
-//! cnc_rdctrldo). Learnt with the oracle (docs/protocol/machine.md).
+//! Machine data (issue 11): the program restart information
+//! (cnc_rdprstrinfo). Learnt with the oracle (docs/protocol/machine.md).
 
 use super::call::{Call, Ctx, sub};
-pub use super::cmd::{RDCTRLSIG, RDPRSTR};
+pub use super::cmd::RDPRSTR;
 use super::packet::{ReqSub, RespSub};
 use crate::error::Result;
-
-/// cnc_rdctrldi (`output` false) / cnc_rdctrldo (true): the signal words
-/// FANUC's library takes from the answer: one per two payload bytes, at
-/// most the CNC's maximum spindles, each the big-endian i32 at 4 × its
-/// index (bytes past the payload read as zeros).
-pub struct CtrlSignals {
-    pub output: bool,
-}
-
-impl Call for CtrlSignals {
-    type Output = Vec<i32>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(RDCTRLSIG, &[i32::from(self.output)])]
-    }
-    fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<Vec<i32>> {
-        let p = &sub(resp, 0)?.payload;
-        let n = (p.len() / 2).min(usize::from(cx.max_spindles));
-        Ok((0..n)
-            .map(|i| {
-                let b = |k: usize| p.get(4 * i + k).copied().unwrap_or(0);
-                i32::from_be_bytes([b(0), b(1), b(2), b(3)])
-            })
-            .collect())
-    }
-}
 
 /// The position codes of the restart position and distance.
 pub const PRSTR_DEST: i32 = 13;

@@ -364,6 +364,10 @@ mod tests {
     /// answer is more than one function's layout says.
     const HAND_ANSWERED: &[((u16, u16), &str)] = &[
         (
+            (CLASS_CNC, crate::proto::cmd::RDCTRLSIG),
+            "one signal word per spindle, as a CNC answers; cnc_rdctrldi's layout reads the first",
+        ),
+        (
             (CLASS_CNC, crate::proto::position::ACTF),
             "cnc_actf reads the first word of the value record cnc_rddynamic reads whole",
         ),

@@ -35,7 +35,9 @@ pub(super) const ROUTES: &[Route] = &[
         RDALMHISTRY,
         |m, q| enc(m.history_read(q.args[0], q.args[1])),
     ),
-    Route::cnc(RDALMHISNO, |m, _| enc(m.history_count())),
+    Route::table(RDALMHISNO, |m, _| {
+        m.history_count().map(|c| vec![i64::from(c.value)])
+    }),
     // The range reads of src/proto/history.rs: the answer's bytes for the
     // request's arguments.
     Route::cnc(RDOPHISTRY, |m, q| m.history_bytes(q.path, q.cmd, q.args)),

@@ -13,8 +13,7 @@ use super::profile::{Axis, Spindle};
 use super::route::{Asked, Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
-use crate::proto::cmd::{HDL3D_AXES, HDL3D_TIP, POSERR, RDSPCSS, RDSPDLALM};
-use crate::proto::machine::RDCTRLSIG;
+use crate::proto::cmd::{HDL3D_AXES, HDL3D_TIP, POSERR, RDCTRLSIG, RDSPCSS, RDSPDLALM};
 use crate::proto::position::{
     ACTF, ACTS, ALARM, AXIS_FLAGS, AlarmBits, AxisNames, COUNT, Count, Figure, Figures, GETFIGURE,
     Name, POSITION, PRGNUM, PosNames, ProgNums, RDAXISNAME, RDSPDLNAME, SEQNUM, SERVO_LOAD,
@@ -25,7 +24,10 @@ use crate::proto::value::{BASE_10, Value};
 use crate::proto::wire::Writer;
 
 pub(super) const ROUTES: &[Route] = &[
-    Route::cnc(ALARM, |m, q| enc(m.alarm_bits(q.path))),
+    // cnc_alarm's and cnc_alarm2's layout (cnc_rddynamic reads the same bits).
+    Route::table(ALARM, |m, q| {
+        m.alarm_bits(q.path).map(|a| vec![i64::from(a.bits)])
+    }),
     // cnc_rdprgnum's and cnc_rdseqnum's layouts (cnc_rddynamic reads the
     // same words).
     Route::table(PRGNUM, |m, q| {

@@ -162,6 +162,12 @@ pub enum Short {
     /// [`Func::counted`](super::Func::counted) count announces past the
     /// answer's end (cnc_rdmagazine: its own request's pots).
     Request,
+    /// The answer is one unit of `.0` bytes per spindle: FANUC's library
+    /// reads as many units as it holds, at most the CNC's maximum spindles
+    /// (the open answer's); none (an answer shorter than a unit, or a CNC
+    /// without spindles) writes nothing, EW_OK; else as [`Short::Zeros`]
+    /// (cnc_rdctrldi: its length counted in 2-byte units, 4-byte words read).
+    PerSpindle(u8),
 }
 
 /// What a reply holding more records than the caller's count

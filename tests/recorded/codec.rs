@@ -363,7 +363,6 @@ fn check_requests(case: &Case, handshake: Option<&OpenBody>) -> (usize, Vec<Stri
                                     stamped(&pp::gettimer(num(&args[0]) as i16), &cx, path)
                                 }
                                 // --- alarm ---
-                                "alarm" | "alarm2" => stamped(&pa::alarm(), &cx, path),
                                 "rdalmmsg" => stamped(
                                     &pa::rdalmmsg::<32>(num(&args[0]) as i16, num(&args[1]) as i16),
                                     &cx,

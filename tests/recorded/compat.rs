@@ -43,13 +43,6 @@ const CLASSES: &[(&str, &str)] = &[("v3", "30i"), ("v2", "16i"), ("s15", "Series
 const EXTRA: &[(&str, &str)] = &[
     ("allclibhdl3", "10"),
     ("allclibhndl", ""),
-    ("rdexecpt", ""),
-    ("rdprogline", "1 1"),
-    ("svdtstartrd", "1"),
-    ("svdtrddata", ""),
-    ("svdtendrd", ""),
-    ("rdspdlnamem", "4"),
-    ("rdalmmsg3", "-1 10"),
     ("fwlib_set_reconnect", "1"),
     ("fwlib_batch_begin", ""),
     ("fwlib_batch_end", "16"),

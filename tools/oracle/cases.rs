@@ -490,8 +490,6 @@ const WORDS: &[Word] = &[
         ],
     ),
     // Alarms and messages.
-    w("alarm", &[]),
-    w("alarm2", &[]),
     w(
         "rdalmmsg",
         &[
@@ -518,7 +516,6 @@ const WORDS: &[Word] = &[
         "rdopmsg",
         &["0|1|2|3|4|-1|5", "262|6|0|-1|100|1048|2000|4096"],
     ),
-    w("rdalmhisno", &[]),
     w(
         "rdalmhistry",
         &["1|0|2|3|10|-1", "3|1|5|10|0|100", "486|4|60|100|200|0|4096"],
@@ -1612,7 +1609,6 @@ const WORDS: &[Word] = &[
         &["0|-1|1|2|3|4|5|-2", "5|1|0|-1|2|6|12"],
         &["-1 12", "4 1"],
     ),
-    w("rdctrldi", &[]),
     // The signals the operation history records: datano, type, entries
     // filled (a pattern), 0 for NULL, then entry 1's ent_no, pmc_no,
     // sig_no, sig_name.
@@ -1638,7 +1634,6 @@ const WORDS: &[Word] = &[
             ],
         )
     },
-    w("rdctrldo", &[]),
     // After a reset that interrupted the running program: restart data.
     Word {
         setup: &["reset"],

@@ -418,13 +418,10 @@ static short w_callx(void) {
                        field("line_len", ln[0]); field("data_len", dl[0]); return r; })           \
     WORD(wrpdf_line, { fill_hex(b1, 3); return F(cnc_wrpdf_line)(H, argv_[1], N(2), B1, N(4)); }) \
     /* alarm */                                                                                   \
-    WORD(alarm, return F(cnc_alarm)(H, B0))                                                       \
-    WORD(alarm2, return F(cnc_alarm2)(H, B0))                                                     \
     WORD(rdalmmsg, SHORT_IO(num, 2, F(cnc_rdalmmsg)(H, N(1), &num, B0)))                          \
     WORD(rdalmmsg2, SHORT_IO(num, 2, F(cnc_rdalmmsg2)(H, N(1), &num, B0)))                        \
     WORD(rdalminfo, return F(cnc_rdalminfo)(H, N(1), N(2), N(3), B0))                             \
     WORD(rdopmsg, return F(cnc_rdopmsg)(H, N(1), N(2), B0))                                       \
-    WORD(rdalmhisno, return F(cnc_rdalmhisno)(H, B0))                                             \
     WORD(rdalmhistry, return F(cnc_rdalmhistry)(H, N(1), N(2), N(3), B0))                         \
     WORD(rdalmhistry2, return F(cnc_rdalmhistry2)(H, N(1), N(2), N(3), B0))                       \
     /* param, diagnosis */                                                                        \
@@ -503,20 +500,11 @@ static short w_callx(void) {
     /* machine data (issue 11) */                                                                \
     WORD(rdophistry4, { unsigned short e = N(2), l = N(3); short r = F(cnc_rdophistry4)(H, N(1), &e, &l, B0); field("e_no", e); field("length", l); return r; }) \
     WORD(rdopmsg3, SHORT_IO(num, 2, F(cnc_rdopmsg3)(H, N(1), &num, B0))) \
-    WORD(rdctrldi, return F(cnc_rdctrldi)(H, B0)) \
     WORD(wrhissgnl3, { short *d = (short *)b0; d[0] = N(1); d[1] = N(2); for (int k = 0; k < N(3) && k < 60; k++) { unsigned char *e = b0 + 4 + 8 * k; short en = k + 1, pm = 1, sn = 10 * k + 7; if (k == 0 && argc_ > 5) en = N(5); if (k == 0 && argc_ > 6) pm = N(6); if (k == 0 && argc_ > 7) sn = N(7); memcpy(e, &en, 2); memcpy(e + 2, &pm, 2); memcpy(e + 4, &sn, 2); e[6] = k == 0 && argc_ > 8 ? N(8) : k & 3; e[7] = (k * 37 + 1) & 0xff; } return F(cnc_wrhissgnl3)(H, argc_ > 4 && N(4) == 0 ? NULL : B0); }) \
-    WORD(rdctrldo, return F(cnc_rdctrldo)(H, B0)) \
     WORD(rdprstrinfo, return F(cnc_rdprstrinfo)(H, B0)) \
-    /* declared by FANUC's header, not on Ethernet (EW_VERSION, EW_MMCSYS) */                     \
+    /* declared by FANUC's header, not on Ethernet (EW_MMCSYS) */                                \
     WORD(allclibhdl3, return w_allclibhdl3())                                                     \
     WORD(allclibhndl, return w_allclibhndl())                                                     \
-    WORD(rdexecpt, return F(cnc_rdexecpt)(H, B0, B1))                                             \
-    WORD(rdprogline, return F(cnc_rdprogline)(H, N(1), N(2), B0, B1, (unsigned long *)(b1 + 8)))  \
-    WORD(svdtstartrd, return F(cnc_svdtstartrd)(H, N(1)))                                         \
-    WORD(svdtrddata, return F(cnc_svdtrddata)(H, B0, B1, b0 + 8))                                 \
-    WORD(svdtendrd, return F(cnc_svdtendrd)(H))                                                   \
-    WORD(rdspdlnamem, SHORT_IO(num, 1, F(cnc_rdspdlnamem)(H, &num, B0)))                          \
-    WORD(rdalmmsg3, SHORT_IO(num, 2, F(cnc_rdalmmsg3)(H, N(1), &num, B0)))                        \
     /* our extensions (fwlib32_ext.h) */                                                          \
     WORD(fwlib_set_reconnect, return F(fwlib_set_reconnect)(H, N(1)))                             \
     WORD(callx, return w_callx())

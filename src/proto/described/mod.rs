@@ -198,7 +198,7 @@ impl Call for Described<'_> {
                 // What a short answer's missing bytes read as ([`Short`]).
                 let request = match self.f.short {
                     Short::Request => crate::proto::packet::encode_request(&self.request(cx)),
-                    Short::Zeros | Short::Error => Vec::new(),
+                    Short::Zeros | Short::Error | Short::PerSpindle(_) => Vec::new(),
                 };
                 return block::read(cx, resp, self.f.short, &request, b.diag);
             }
@@ -210,6 +210,11 @@ impl Call for Described<'_> {
         }
         if self.f.more.is_empty() {
             let payload = &sub(resp, 0)?.payload;
+            if let Short::PerSpindle(unit) = self.f.short {
+                if payload.len() < usize::from(unit) || cx.max_spindles == 0 {
+                    return Ok(Vec::new());
+                }
+            }
             if self.f.short == Short::Request {
                 // The response body's payload starts at byte 18, where
                 // the request body held its subpacket's byte 16: the bytes
@@ -298,7 +303,7 @@ fn padded(short: Short, payload: &[u8], need: usize) -> Result<Vec<u8>> {
                 }
                 .into());
             }
-            Short::Zeros | Short::Request => p.resize(need, 0),
+            Short::Zeros | Short::Request | Short::PerSpindle(_) => p.resize(need, 0),
         }
     }
     Ok(p)
@@ -327,7 +332,7 @@ fn decode_tail(f: &Func, args: &[i32], payload: &[u8], tail: &[u8]) -> Result<Ve
                 }
                 .into());
             }
-            Short::Zeros | Short::Request => {
+            Short::Zeros | Short::Request | Short::PerSpindle(_) => {
                 zeros = ext.clone();
                 zeros.resize(need, 0);
                 p = &zeros;

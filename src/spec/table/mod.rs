@@ -8,6 +8,8 @@
 
 use super::types::*;
 
+mod absent;
+mod alarm;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
 mod feed;
@@ -29,6 +31,7 @@ mod sampling;
 mod screen;
 pub mod servo;
 mod setting;
+mod signals;
 pub mod status;
 pub mod tool_life;
 
@@ -55,6 +58,9 @@ const AREAS: &[&[Func]] = &[
     sampling::FUNCS,
     status::FUNCS,
     screen::FUNCS,
+    signals::FUNCS,
+    alarm::FUNCS,
+    absent::FUNCS,
 ];
 
 const LEN: usize = {
