@@ -6,6 +6,58 @@ use super::super::types::*;
 use super::base::COMMAND;
 use crate::ew::{EW_ATTRIB, EW_NUMBER};
 
+/// The reads of one word of tool `tuse_num` of tool life group `grp_num`
+/// into ODBTLIFE4 `data`, by the tool's place (cnc_rd1tlifedata's
+/// request); each entry names the word.
+const BY_TOOL: Func = Func {
+    params: TLIFE4,
+    forms: &[every_class(
+        cmd::RD1TLIFEDATA,
+        &[Word::Arg(0), Word::Arg(1)],
+    )],
+    dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
+    zero_without_first: true,
+    learnt: Some(&[]),
+    ..COMMAND
+};
+
+/// The same words by the tool's use number (cnc_toolnum's request, whose
+/// short answer reads on from the request's bytes).
+const BY_USE: Func = Func {
+    forms: &[every_class(
+        cmd::TLTOOLS,
+        &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
+    )],
+    short: Short::Request,
+    ..BY_TOOL
+};
+
+const TLIFE4: &[Param] = &[
+    Param::Short("grp_num"),
+    Param::Short("tuse_num"),
+    Param::Out("tlife", "ODBTLIFE4"),
+];
+
+macro_rules! by_tool {
+    ($what:literal) => {
+        concat!(
+            "Reads ",
+            $what,
+            " of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered."
+        )
+    };
+}
+
+macro_rules! by_use {
+    ($what:literal) => {
+        concat!(
+            "Reads ",
+            $what,
+            " of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered."
+        )
+    };
+}
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_toolnum",
@@ -31,39 +83,18 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rd1length",
-        doc: "Reads the length offset number (H) of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered.",
-        params: &[
-            Param::Short("grp_num"),
-            Param::Short("tuse_num"),
-            Param::Out("tlife", "ODBTLIFE4"),
-        ],
-        forms: &[every_class(
-            cmd::RD1TLIFEDATA,
-            &[Word::Arg(0), Word::Arg(1)],
-        )],
+        doc: by_tool!("the length offset number (H)"),
         reply: &[
             to(I32, "datano", I16),
             to(I32, "type", I16),
             skip(I32),
             to(I32, "data", I32),
         ],
-        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
-        zero_without_first: true,
-        learnt: Some(&[]),
-        ..COMMAND
+        ..BY_TOOL
     },
     Func {
         name: "cnc_rd1radius",
-        doc: "Reads the radius offset number (D) of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered.",
-        params: &[
-            Param::Short("grp_num"),
-            Param::Short("tuse_num"),
-            Param::Out("tlife", "ODBTLIFE4"),
-        ],
-        forms: &[every_class(
-            cmd::RD1TLIFEDATA,
-            &[Word::Arg(0), Word::Arg(1)],
-        )],
+        doc: by_tool!("the radius offset number (D)"),
         reply: &[
             to(I32, "datano", I16),
             to(I32, "type", I16),
@@ -71,23 +102,11 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             to(I32, "data", I32),
         ],
-        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
-        zero_without_first: true,
-        learnt: Some(&[]),
-        ..COMMAND
+        ..BY_TOOL
     },
     Func {
         name: "cnc_t1info",
-        doc: "Reads the information of tool `tuse_num` of tool life group `grp_num` (cnc_rd1tlifedata's request): `datano` the group and `type` the tool's number the CNC answered.",
-        params: &[
-            Param::Short("grp_num"),
-            Param::Short("tuse_num"),
-            Param::Out("tlife", "ODBTLIFE4"),
-        ],
-        forms: &[every_class(
-            cmd::RD1TLIFEDATA,
-            &[Word::Arg(0), Word::Arg(1)],
-        )],
+        doc: by_tool!("the information"),
         reply: &[
             to(I32, "datano", I16),
             to(I32, "type", I16),
@@ -96,10 +115,7 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             to(I32, "data", I32),
         ],
-        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
-        zero_without_first: true,
-        learnt: Some(&[]),
-        ..COMMAND
+        ..BY_TOOL
     },
     Func {
         name: "cnc_rd1tlifedat2",
@@ -129,40 +145,18 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rd2length",
-        doc: "Reads the length offset number (H) of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered.",
-        params: &[
-            Param::Short("grp_num"),
-            Param::Short("tuse_num"),
-            Param::Out("tlife", "ODBTLIFE4"),
-        ],
-        forms: &[every_class(
-            cmd::TLTOOLS,
-            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
-        )],
+        doc: by_use!("the length offset number (H)"),
         reply: &[
             to(I32, "datano", I16),
             to(I32, "type", I16),
             skip(I32),
             to(I32, "data", I32),
         ],
-        short: Short::Request,
-        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
-        zero_without_first: true,
-        learnt: Some(&[]),
-        ..COMMAND
+        ..BY_USE
     },
     Func {
         name: "cnc_rd2radius",
-        doc: "Reads the radius offset number (D) of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered.",
-        params: &[
-            Param::Short("grp_num"),
-            Param::Short("tuse_num"),
-            Param::Out("tlife", "ODBTLIFE4"),
-        ],
-        forms: &[every_class(
-            cmd::TLTOOLS,
-            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
-        )],
+        doc: by_use!("the radius offset number (D)"),
         reply: &[
             to(I32, "datano", I16),
             to(I32, "type", I16),
@@ -170,24 +164,11 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             to(I32, "data", I32),
         ],
-        short: Short::Request,
-        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
-        zero_without_first: true,
-        learnt: Some(&[]),
-        ..COMMAND
+        ..BY_USE
     },
     Func {
         name: "cnc_t2info",
-        doc: "Reads the information of tool `tuse_num` of tool life group `grp_num` (cnc_toolnum's request): `datano` the group and `type` the use number the CNC answered.",
-        params: &[
-            Param::Short("grp_num"),
-            Param::Short("tuse_num"),
-            Param::Out("tlife", "ODBTLIFE4"),
-        ],
-        forms: &[every_class(
-            cmd::TLTOOLS,
-            &[Word::Arg(0), Word::Arg(1), Word::Arg(1)],
-        )],
+        doc: by_use!("the information"),
         reply: &[
             to(I32, "datano", I16),
             to(I32, "type", I16),
@@ -196,11 +177,7 @@ pub const FUNCS: &[Func] = &[
             skip(I32),
             to(I32, "data", I32),
         ],
-        short: Short::Request,
-        dims: &["1|0|-1|2|9999", "1|0|-1|2|99"],
-        zero_without_first: true,
-        learnt: Some(&[]),
-        ..COMMAND
+        ..BY_USE
     },
     Func {
         name: "cnc_rdntool",
