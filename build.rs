@@ -908,6 +908,7 @@ fn rust_type(c: &str) -> String {
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
         "unsigned long" => "c_ulong".into(),
+        "double" => "f64".into(),
         "void" => "c_void".into(),
         t => match (char_array(t), text_buf(t)) {
             (Some(n), _) => format!("[c_char; {n}]"),
@@ -958,6 +959,7 @@ fn c_size(c: &str) -> Option<usize> {
         "short" | "unsigned short" => Some(2),
         // 4 bytes written, as FANUC's x86-64 library writes them.
         "long" | "unsigned long" => Some(4),
+        "double" => Some(8),
         t => char_array(t).or_else(|| text_buf(t)),
     }
 }
