@@ -7,10 +7,10 @@ pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{RDMACROINFO, RDMACRONUM, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRPMACRO};
-use crate::proto::macros::{
-    Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
+use crate::proto::cmd::{
+    RDMACROINFO, RDMACRONUM, RDMACROR2, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRMACROR2, WRPMACRO,
 };
+use crate::proto::macros::{MacroInfo, RDMACRO, VACANT_DEC, WRMACRO};
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
@@ -26,16 +26,23 @@ pub(super) const ROUTES: &[Route] = &[
             .map(|()| Vec::new()),
         Err(_) => Err(CncError::new(ew::EW_LENGTH)),
     }),
-    // [s, n]
-    Route::cnc(RDMACROR2, |m, q| {
-        enc(m.read_macros_double(q.path, q.args[0], q.args[1]))
+    // [s, n]: the doubles (their bits), at most the records a request
+    // carries (the function's Records::max).
+    Route::table(RDMACROR2, |m, q| {
+        let most = q.f.records.map_or(0, |r| i32::from(r.max));
+        let v = m.read_macros_double(q.path, q.words[0], q.words[1], most)?;
+        Ok(v.into_iter().map(|x| x.to_bits() as i64).collect())
     }),
     // [s] + doubles: answers the count.
-    Route::cnc(WRMACROR2, |m, q| {
-        match Vec::<Double>::from_bytes(&q.payload) {
-            Ok(v) => enc(m.write_macros_double(q.path, q.args[0], &v)),
-            Err(_) => Err(CncError::new(ew::EW_LENGTH)),
-        }
+    Route::table(WRMACROR2, |m, q| {
+        let v: Vec<f64> = q
+            .payload
+            .iter()
+            .map(|b| f64::from_bits(*b as u64))
+            .collect();
+        Ok(vec![i64::from(
+            m.write_macros_double(q.path, q.words[0], &v)?,
+        )])
     }),
     Route::table(RDMACROINFO, |m, q| {
         m.macro_info(q.path)
@@ -329,20 +336,26 @@ impl Machine {
         })
     }
 
-    /// Command 0x00a7: up to `n` variables from `s` as doubles, stopping at
-    /// the first number that does not exist (EW_NUMBER if that is `s`). A
-    /// vacant variable reads as 0.0: how a real CNC marks vacancy in this
-    /// form is not known.
-    pub(crate) fn read_macros_double(&mut self, path: u16, s: i32, n: i32) -> Reply<Vec<Double>> {
+    /// Command 0x00a7: up to `n` (1..=`most`) variables from `s` as
+    /// doubles, stopping at the first number that does not exist (EW_NUMBER
+    /// if that is `s`). A vacant variable reads as 0.0: how a real CNC
+    /// marks vacancy in this form is not known.
+    pub(crate) fn read_macros_double(
+        &mut self,
+        path: u16,
+        s: i32,
+        n: i32,
+        most: i32,
+    ) -> Reply<Vec<f64>> {
         let m = self.macros(path)?;
-        if n <= 0 || n as u32 > RDMACROR2_CHUNK || !m.exists(s) {
+        if n <= 0 || n > most || !m.exists(s) {
             return Err(CncError::NUMBER);
         }
         Ok((s..s.saturating_add(n))
             .take_while(|k| m.exists(*k))
             .map(|k| {
                 let (v, d) = m.values.get(&k).copied().unwrap_or((0, 0));
-                Double(f64::from(v) / 10f64.powi(i32::from(d)))
+                f64::from(v) / 10f64.powi(i32::from(d))
             })
             .collect())
     }
@@ -351,12 +364,7 @@ impl Machine {
     /// (else EW_NUMBER / EW_PROT, nothing written). Each double is kept
     /// with the fewest decimal places (up to 9) that reproduce it; NaN and
     /// infinities are EW_DATA. Answers the count written.
-    pub(crate) fn write_macros_double(
-        &mut self,
-        path: u16,
-        s: i32,
-        values: &[Double],
-    ) -> Reply<i32> {
+    pub(crate) fn write_macros_double(&mut self, path: u16, s: i32, values: &[f64]) -> Reply<i32> {
         let m = self.macros_mut(path)?;
         let n = values.len() as i32;
         if n == 0 {
@@ -371,7 +379,7 @@ impl Machine {
         }
         let new = values
             .iter()
-            .map(|d| double_to_decimal(d.0).ok_or(CncError::new(ew::EW_DATA)))
+            .map(|d| double_to_decimal(*d).ok_or(CncError::new(ew::EW_DATA)))
             .collect::<Reply<Vec<_>>>()?;
         for (k, v) in (s..=e).zip(new) {
             m.values.insert(k, v);

@@ -452,6 +452,9 @@ pub const ORACLE: &[Deviation] = &[
             "rdmacror2_v3_shape_longer",
             "fuzz_rdmacror2_*more*",
             "fuzz_rdmacror2_*long*",
+            // oracle fuzz (the table's layout): answers of more doubles
+            // than the request asked for.
+            "fuzz_rdmacror2_*_answer_s0Ln*",
         ],
         reason: "FANUC's library writes every double the CNC sends, past the requested *num (an overrun); ours writes at most *num",
     },

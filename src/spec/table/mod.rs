@@ -14,6 +14,7 @@ mod feed;
 pub mod folder;
 pub mod history;
 pub mod info;
+pub mod macros;
 pub mod magazine;
 mod maintenance;
 pub mod memory;
@@ -38,6 +39,7 @@ const AREAS: &[&[Func]] = &[
     folder::FUNCS,
     feed::FUNCS,
     offset::FUNCS,
+    macros::FUNCS,
     info::FUNCS,
     servo::FUNCS,
     position::FUNCS,
