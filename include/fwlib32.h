@@ -4265,6 +4265,31 @@ short cnc_rdpmacror(unsigned short FlibHndl,
                     struct IODBPR *buf);
 
 /*
+ Reads `*num` P-code macro variables from `s_no` as IEEE doubles into
+ `data`, as cnc_rdmacror2 reads custom ones (FANUC's library: the same
+ routine), with `type` (0..2; what it selects is not known) as the
+ request's third word: `*num` 0 is EW_LENGTH, then `type` above 2
+ EW_ATTRIB, before any traffic; the count is cut to the end of `s_no`'s
+ range (#99, #499, #999, #19999, #99999, #199999, #986431, #4999999; a
+ Series 15: #99, #199, #999, #39999, #99099, #99199, #99999; compared
+ unsigned) and a count of 0 or below as an `int` reads nothing (`*num`
+ 0). Requests carry at most 179 variables; an answer shorter than its
+ request ends the read. No more than each request's doubles are written
+ (FANUC's library writes whatever the CNC sends). An error answer leaves
+ `*num` as it was; EW_NUMBER after some variables ends the read with
+ them.
+
+ # Safety
+ `num` must be NULL or point to 4 readable and writable bytes (the count).
+ `data` must be NULL or point to `*num` writable double.
+ */
+short cnc_rdpmacror2(unsigned short FlibHndl,
+                     unsigned long s_no,
+                     unsigned long *num,
+                     unsigned short type,
+                     double *data);
+
+/*
  Reads the position deviation of each spindle (spindle position control),
  one `long` per spindle (at most 8; 4 bytes written per `long`).
 
@@ -5530,6 +5555,29 @@ short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec
 short cnc_wrpmacror(unsigned short FlibHndl,
                     unsigned short length,
                     struct IODBPR *buf);
+
+/*
+ Writes `*num` P-code macro variables from `s_no` from the IEEE doubles
+ `data`, as cnc_wrmacror2 writes custom ones (FANUC's library: the same
+ routine), with `type` (0..2; what it selects is not known) as the
+ request's third word: `*num` 0 is EW_LENGTH, then `type` above 2
+ EW_ATTRIB, before any traffic; the variables past the end of `s_no`'s
+ range (as cnc_rdpmacror2) are left out. Requests carry at most 177
+ variables; the next is sent only when the CNC wrote the whole previous
+ one, and `*num` is the sum of the answers' counts (a count cut short in
+ the answer reads as 0). An error answer leaves `*num` as it was, the
+ requests before it written; EW_NUMBER after some variables ends the
+ write with them.
+
+ # Safety
+ `num` must be NULL or point to 4 readable and writable bytes (the count).
+ `data` must be NULL or point to `*num` readable double.
+ */
+short cnc_wrpmacror2(unsigned short FlibHndl,
+                     unsigned long s_no,
+                     unsigned long *num,
+                     unsigned short type,
+                     double *data);
 
 /*
  Writes one setting data item from IODBPSD, as cnc_wrparam writes a
