@@ -5565,7 +5565,8 @@ short cnc_wrpmacror(unsigned short FlibHndl,
  range (as cnc_rdpmacror2) are left out. Requests carry at most 177
  variables; the next is sent only when the CNC wrote the whole previous
  one, and `*num` is the sum of the answers' counts (a count cut short in
- the answer reads as 0). An error answer leaves `*num` as it was, the
+ the answer reads on in the request's bytes, as FANUC's library reads it:
+ the third word, `type`). An error answer leaves `*num` as it was, the
  requests before it written; EW_NUMBER after some variables ends the
  write with them.
 

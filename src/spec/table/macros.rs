@@ -116,8 +116,11 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: &[nonzero(1)],
         forms: &[every_class(cmd::WRMACROR2, &[Word::Arg(0)])],
-        // The answer: how many the CNC wrote.
+        // The answer: how many the CNC wrote; a count cut short reads on
+        // in the request's bytes (FANUC's library reads the answer into
+        // the buffer that held it: the third word, 0; fuzz).
         reply: &[skip(I32)],
+        short: Short::Request,
         payload: Some(Payload {
             fields: DOUBLE,
             elem: "double",
@@ -177,7 +180,7 @@ pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_wrpmacror2",
         learnt: None,
-        doc: "Writes `*num` P-code macro variables from `s_no` from the IEEE doubles `data`, as cnc_wrmacror2 writes custom ones (FANUC's library: the same routine), with `type` (0..2; what it selects is not known) as the request's third word: `*num` 0 is EW_LENGTH, then `type` above 2 EW_ATTRIB, before any traffic; the variables past the end of `s_no`'s range (as cnc_rdpmacror2) are left out. Requests carry at most 177 variables; the next is sent only when the CNC wrote the whole previous one, and `*num` is the sum of the answers' counts (a count cut short in the answer reads as 0). An error answer leaves `*num` as it was, the requests before it written; EW_NUMBER after some variables ends the write with them.",
+        doc: "Writes `*num` P-code macro variables from `s_no` from the IEEE doubles `data`, as cnc_wrmacror2 writes custom ones (FANUC's library: the same routine), with `type` (0..2; what it selects is not known) as the request's third word: `*num` 0 is EW_LENGTH, then `type` above 2 EW_ATTRIB, before any traffic; the variables past the end of `s_no`'s range (as cnc_rdpmacror2) are left out. Requests carry at most 177 variables; the next is sent only when the CNC wrote the whole previous one, and `*num` is the sum of the answers' counts (a count cut short in the answer reads on in the request's bytes, as FANUC's library reads it: the third word, `type`). An error answer leaves `*num` as it was, the requests before it written; EW_NUMBER after some variables ends the write with them.",
         params: &[
             Param::ULong("s_no"),
             Param::LongCount("num"),
@@ -189,7 +192,10 @@ pub const FUNCS: &[Func] = &[
             cmd::WRPMACROR2,
             &[Word::Arg(0), Word::Const(0), Word::Arg(2)],
         )],
+        // A count cut short reads on in the request's bytes: its third
+        // word, `type` (fuzz: `type` 2 and an answer of 3 bytes count 2).
         reply: &[skip(I32)],
+        short: Short::Request,
         payload: Some(Payload {
             fields: DOUBLE,
             elem: "double",
