@@ -412,12 +412,13 @@ fn described_exports(funcs: &[types::Func]) -> String {
             Param::Char(n) => format!("{}: c_char", ident(n)),
             Param::Out(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Count(n) => format!("{}: *mut c_short", ident(n)),
+            Param::LongCount(n) => format!("{}: *mut c_ulong", ident(n)),
             Param::In(n, t) | Param::InOut(n, t) => format!("{}: *mut {}", ident(n), rust_type(t)),
             Param::Io(n) => format!("{}: *mut c_short", ident(n)),
         };
         let params: Vec<String> = f.params.iter().map(c_param).collect();
         let count = f.params.iter().find_map(|p| match *p {
-            Param::Count(n) => Some(ident(n)),
+            Param::Count(n) | Param::LongCount(n) => Some(ident(n)),
             _ => None,
         });
         // The count's value is read by exec, once its pointer is checked.
@@ -666,9 +667,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                         },
                     })
                     .collect(),
-                Some(c) => std::iter::once(format!(
-                    "/// `{c}` must be NULL or point to a writable short."
-                ))
+                Some(c) => std::iter::once(if f.long_count() {
+                    format!("/// `{c}` must be NULL or point to 4 readable and writable bytes (the count).")
+                } else {
+                    format!("/// `{c}` must be NULL or point to a writable short.")
+                })
                 .chain(outs.iter().enumerate().map(|(i, (n, t))| {
                     // The records' output is the caller's array of `*count`;
                     // another output (cnc_rdsyssoft3's `total`) one value.
@@ -826,7 +829,12 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             n_outs = out_ptrs.len(),
             n_io = ios.len(),
             n_texts = texts.len(),
-            asked = count.as_deref().unwrap_or("std::ptr::null_mut()"),
+            // A Param::LongCount's 4 bytes are read through the same pointer.
+            asked = match (&count, f.long_count()) {
+                (Some(c), true) => format!("{c}.cast()"),
+                (Some(c), false) => c.clone(),
+                (None, _) => "std::ptr::null_mut()".to_string(),
+            },
             ios = padded(&ios, "std::ptr::null_mut()", 4),
             input = input,
             texts = padded(&texts, "std::ptr::null()", 4),
@@ -923,6 +931,7 @@ fn rust_type(c: &str) -> String {
         "unsigned short" => "c_ushort".into(),
         "long" => "c_long".into(),
         "unsigned long" => "c_ulong".into(),
+        "double" => "f64".into(),
         "void" => "c_void".into(),
         t => match (char_array(t), text_buf(t)) {
             (Some(n), _) => format!("[c_char; {n}]"),
@@ -973,6 +982,7 @@ fn c_size(c: &str) -> Option<usize> {
         "short" | "unsigned short" => Some(2),
         // 4 bytes written, as FANUC's x86-64 library writes them.
         "long" | "unsigned long" => Some(4),
+        "double" => Some(8),
         t => char_array(t).or_else(|| text_buf(t)),
     }
 }

@@ -436,27 +436,6 @@ const HAND: &[Decoder] = &[
         },
     },
     Decoder {
-        names: &["cnc_rdmacror2"],
-        run: |cx, a, r| {
-            let c = pm::ReadMacrosDouble {
-                s: a[0] as u32,
-                n: a[1] as u32,
-            };
-            go(c, cx, r)
-        },
-    },
-    Decoder {
-        names: &["cnc_wrmacror2"],
-        run: |cx, a, r| {
-            let values = vec![pm::Double(f64::from(a[2])); (a[1] & 7) as usize];
-            let c = pm::WriteMacrosDouble {
-                s: a[0] as u32,
-                values,
-            };
-            go(c, cx, r)
-        },
-    },
-    Decoder {
         names: &["pmc_rdpmcrng"],
         run: |cx, a, r| go(pmc::ReadPmc(range(a)), cx, r),
     },

@@ -3968,16 +3968,21 @@ short cnc_rdmacror(unsigned short FlibHndl,
 
 /*
  Reads `*num` custom macro variables from `s_no` as IEEE doubles into
- `data`; `*num` becomes the number read. As FANUC's x86-64 library,
- `s_no` and `*num` are 32-bit (`*num` is read and written as 4 bytes).
- Requests carry at most 179 variables each; a shorter answer ends the
- read. No more than the requested `*num` doubles are written (FANUC's
- library writes whatever the CNC sends). How a CNC marks a vacant
- variable in this form is not known.
+ `data`, bit-exact; `*num` becomes the number read. `s_no` and `*num` are
+ 32-bit, as in FANUC's x86-64 library (4 bytes of `*num` read and
+ written). `*num` 0 is EW_LENGTH before any traffic; the count is cut to
+ the end of `s_no`'s range (#99, #499, #999; compared unsigned:
+ 0xffffffff reads to the end) and a count of 0 or below as an `int` reads
+ nothing (`*num` 0). Requests carry at most 179 variables; an answer
+ shorter than its request ends the read. No more than each request's
+ doubles are written (FANUC's library writes whatever the CNC sends). An
+ error answer leaves `*num` as it was; EW_NUMBER after some variables
+ ends the read with them. How a CNC marks a vacant variable in this form
+ is not known.
 
  # Safety
- `num` must point to 4 readable and writable bytes (the count), `data` to
- `*num` writable doubles.
+ `num` must be NULL or point to 4 readable and writable bytes (the count).
+ `data` must be NULL or point to `*num` writable double.
  */
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
@@ -4575,6 +4580,31 @@ short cnc_rdpmacror(unsigned short FlibHndl,
                     long e_no,
                     short length,
                     struct IODBPR *buf);
+
+/*
+ Reads `*num` P-code macro variables from `s_no` as IEEE doubles into
+ `data`, as cnc_rdmacror2 reads custom ones (FANUC's library: the same
+ routine), with `type` (0..2; what it selects is not known) as the
+ request's third word: `*num` 0 is EW_LENGTH, then `type` above 2
+ EW_ATTRIB, before any traffic; the count is cut to the end of `s_no`'s
+ range (#99, #499, #999, #19999, #99999, #199999, #986431, #4999999; a
+ Series 15: #99, #199, #999, #39999, #99099, #99199, #99999; compared
+ unsigned) and a count of 0 or below as an `int` reads nothing (`*num`
+ 0). Requests carry at most 179 variables; an answer shorter than its
+ request ends the read. No more than each request's doubles are written
+ (FANUC's library writes whatever the CNC sends). An error answer leaves
+ `*num` as it was; EW_NUMBER after some variables ends the read with
+ them.
+
+ # Safety
+ `num` must be NULL or point to 4 readable and writable bytes (the count).
+ `data` must be NULL or point to `*num` writable double.
+ */
+short cnc_rdpmacror2(unsigned short FlibHndl,
+                     unsigned long s_no,
+                     unsigned long *num,
+                     unsigned short type,
+                     double *data);
 
 /*
  Reads the position deviation of each spindle (spindle position control),
@@ -5767,16 +5797,20 @@ short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_
 short cnc_wrmacror(unsigned short FlibHndl, short length, struct IODBMR *buf);
 
 /*
- Writes `*num` custom macro variables from `s_no` as IEEE doubles;
- `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
- as in FANUC's x86-64 library. Requests carry at most 177 variables; the
- next is sent only when the CNC wrote the whole previous one. As FANUC's
- library, the variables past the end of the start's range (#99, #499,
- #999) are left out, and a count cut short in the reply reads as 0.
+ Writes `*num` custom macro variables from `s_no` from the IEEE doubles
+ `data`, bit-exact; `*num` becomes the number the CNC wrote. `s_no` and
+ `*num` are 32-bit, as in FANUC's x86-64 library. `*num` 0 is EW_LENGTH
+ before any traffic; the variables past the end of `s_no`'s range (#99,
+ #499, #999) are left out, as FANUC's library does. Requests carry at
+ most 177 variables; the next is sent only when the CNC wrote the whole
+ previous one, and `*num` is the sum of the answers' counts (a count cut
+ short in the answer reads as 0). An error answer leaves `*num` as it
+ was, the requests before it written; EW_NUMBER after some variables ends
+ the write with them.
 
  # Safety
- `num` must point to 4 readable and writable bytes (the count), `data` to
- `*num` readable doubles.
+ `num` must be NULL or point to 4 readable and writable bytes (the count).
+ `data` must be NULL or point to `*num` readable double.
  */
 short cnc_wrmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
@@ -5955,6 +5989,30 @@ short cnc_wrpmacro(unsigned short FlibHndl, long number, long mcr_val, short dec
 short cnc_wrpmacror(unsigned short FlibHndl,
                     unsigned short length,
                     struct IODBPR *buf);
+
+/*
+ Writes `*num` P-code macro variables from `s_no` from the IEEE doubles
+ `data`, as cnc_wrmacror2 writes custom ones (FANUC's library: the same
+ routine), with `type` (0..2; what it selects is not known) as the
+ request's third word: `*num` 0 is EW_LENGTH, then `type` above 2
+ EW_ATTRIB, before any traffic; the variables past the end of `s_no`'s
+ range (as cnc_rdpmacror2) are left out. Requests carry at most 177
+ variables; the next is sent only when the CNC wrote the whole previous
+ one, and `*num` is the sum of the answers' counts (a count cut short in
+ the answer reads on in the request's bytes, as FANUC's library reads it:
+ the third word, `type`). An error answer leaves `*num` as it was, the
+ requests before it written; EW_NUMBER after some variables ends the
+ write with them.
+
+ # Safety
+ `num` must be NULL or point to 4 readable and writable bytes (the count).
+ `data` must be NULL or point to `*num` readable double.
+ */
+short cnc_wrpmacror2(unsigned short FlibHndl,
+                     unsigned long s_no,
+                     unsigned long *num,
+                     unsigned short type,
+                     double *data);
 
 /*
  Sets the operation levels data kind `kind` needs to be modified

@@ -41,8 +41,7 @@ pub const WRITTEN: &[(&str, &[&str])] = &[
     ]),
     ("machine", &["cnc_rdprstrinfo"]),
     ("macros", &[
-        "cnc_rdmacro", "cnc_wrmacro", "cnc_rdmacror", "cnc_wrmacror", "cnc_rdmacror2",
-        "cnc_wrmacror2",
+        "cnc_rdmacro", "cnc_wrmacro", "cnc_rdmacror", "cnc_wrmacror",
     ]),
     ("memory", &[
         "cnc_rdprogdir2", "cnc_rdmdiprog", "cnc_wrmdiprog", "cnc_rdproginfo", "cnc_rdprogdir2o8",

@@ -1,17 +1,14 @@
 //! Custom macro variables.
 
-use super::{ffi_boundary, ffi_read, len_of, nonnull, put};
+use super::{ffi_boundary, ffi_read, len_of, nonnull};
 use crate::client::handles;
 use crate::error::{Error, Result};
 use crate::ew::{EW_DATA, EW_LENGTH, EW_NUMBER};
-use crate::proto::macros::{
-    DEC_FORBIDDEN, Double, FIRST_WRITABLE, RDMACROR2_CHUNK, ReadMacros, ReadMacrosDouble,
-    WRMACROR2_CHUNK, WriteMacros, WriteMacrosDouble,
-};
+use crate::proto::macros::{DEC_FORBIDDEN, FIRST_WRITABLE, ReadMacros, WriteMacros};
 use crate::proto::open::CncClass;
 use crate::proto::value::Value;
 use crate::types::{IODBMR, IODBMR_data, ODBM};
-use std::os::raw::{c_long, c_short, c_ulong, c_ushort};
+use std::os::raw::{c_long, c_short, c_ushort};
 use std::ptr::addr_of_mut;
 
 /// Bytes of ODBM FANUC's library requires (datano .. dec_val, l32).
@@ -82,7 +79,7 @@ fn rdmacror_end(s_no: c_short, e_no: c_short) -> i32 {
 }
 
 /// The last variable of the range `s` is in, as FANUC's library splits
-/// cnc_rdmacror / cnc_rdmacror2 requests: #0..#99, #100..#499, #500..#999;
+/// cnc_rdmacror requests: #0..#99, #100..#499, #500..#999;
 /// other numbers have no end.
 fn range_end(s: i64) -> i64 {
     match s {
@@ -267,106 +264,5 @@ pub unsafe extern "C" fn cnc_wrmacror(
             s: i32::from(s),
             values,
         })
-    })
-}
-
-/// Reads `*num` custom macro variables from `s_no` as IEEE doubles into
-/// `data`; `*num` becomes the number read. As FANUC's x86-64 library,
-/// `s_no` and `*num` are 32-bit (`*num` is read and written as 4 bytes).
-/// Requests carry at most 179 variables each; a shorter answer ends the
-/// read. No more than the requested `*num` doubles are written (FANUC's
-/// library writes whatever the CNC sends). How a CNC marks a vacant
-/// variable in this form is not known.
-///
-/// # Safety
-/// `num` must point to 4 readable and writable bytes (the count), `data` to
-/// `*num` writable doubles.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_rdmacror2(
-    FlibHndl: c_ushort,
-    s_no: c_ulong,
-    num: *mut c_ulong,
-    data: *mut f64,
-) -> c_short {
-    ffi_boundary!("cnc_rdmacror2", {
-        let h = handles::get(FlibHndl)?;
-        let num = nonnull(num)?.cast::<u32>();
-        let data = nonnull(data)?;
-        let want = unsafe { num.read_unaligned() };
-        if want == 0 {
-            return Err(Error::length());
-        }
-        let mut got: Vec<f64> = Vec::new();
-        let mut s = s_no as u32;
-        // The requests stop at the end of the start's range (#999 ...).
-        let end = range_end(i64::from(s));
-        while (got.len() as u32) < want {
-            let left = (end - i64::from(s) + 1).clamp(1, i64::from(u32::MAX)) as u32;
-            let n = (want - got.len() as u32).min(RDMACROR2_CHUNK).min(left);
-            let part = h.call(&ReadMacrosDouble { s, n })?;
-            let full = part.len() as u32 >= n;
-            got.extend(part.iter().take(n as usize).map(|d| d.0));
-            if !full || i64::from(s) + i64::from(n) > end {
-                break;
-            }
-            s = s.wrapping_add(n);
-        }
-        unsafe {
-            for (i, v) in got.iter().enumerate() {
-                put(data.add(i), *v);
-            }
-            put(num, got.len() as u32);
-        }
-        Ok(())
-    })
-}
-
-/// Writes `*num` custom macro variables from `s_no` as IEEE doubles;
-/// `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit,
-/// as in FANUC's x86-64 library. Requests carry at most 177 variables; the
-/// next is sent only when the CNC wrote the whole previous one. As FANUC's
-/// library, the variables past the end of the start's range (#99, #499,
-/// #999) are left out, and a count cut short in the reply reads as 0.
-///
-/// # Safety
-/// `num` must point to 4 readable and writable bytes (the count), `data` to
-/// `*num` readable doubles.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cnc_wrmacror2(
-    FlibHndl: c_ushort,
-    s_no: c_ulong,
-    num: *mut c_ulong,
-    data: *mut f64,
-) -> c_short {
-    ffi_boundary!("cnc_wrmacror2", {
-        let h = handles::get(FlibHndl)?;
-        let num = nonnull(num)?.cast::<u32>();
-        let data = nonnull(data)?;
-        let want = unsafe { num.read_unaligned() } as usize;
-        if want == 0 {
-            return Err(Error::length());
-        }
-        // As the read side, the write stops at the end of the start's
-        // range (#99, #499, #999).
-        let left = (range_end(i64::from(s_no as u32)) - i64::from(s_no as u32) + 1).max(1);
-        let want = want.min(usize::try_from(left).unwrap_or(usize::MAX));
-        let values: Vec<Double> = (0..want)
-            .map(|i| Double(unsafe { data.add(i).read_unaligned() }))
-            .collect();
-        let mut s = s_no as u32;
-        let mut written: u32 = 0;
-        for chunk in values.chunks(WRMACROR2_CHUNK as usize) {
-            let n = h.call(&WriteMacrosDouble {
-                s,
-                values: chunk.to_vec(),
-            })?;
-            written = written.wrapping_add(n as u32);
-            if (n.max(0) as usize) < chunk.len() {
-                break;
-            }
-            s = s.wrapping_add(chunk.len() as u32);
-        }
-        unsafe { put(num, written) };
-        Ok(())
     })
 }

@@ -2,7 +2,7 @@
 //! records ([`Value`]) with command 0x0015 / 0x0016.
 
 use super::call::{Call, Ctx, records, sub};
-pub use super::cmd::{RDMACRO, RDMACROR2, WRMACRO, WRMACROR2};
+pub use super::cmd::{RDMACRO, WRMACRO};
 use super::open::CncClass;
 use super::packet::{ReqSub, RespSub};
 use super::value::{BASE_2, BASE_10, Float, Value};
@@ -131,71 +131,10 @@ impl Call for WriteMacros {
     }
 }
 
-/// Most doubles FANUC's library asks for in one cnc_rdmacror2 request.
-pub const RDMACROR2_CHUNK: u32 = 179;
-/// Most doubles FANUC's library sends in one cnc_wrmacror2 request.
-pub const WRMACROR2_CHUNK: u32 = 177;
-
 wire_struct! {
     /// Payload of 0x0017: variable counts (only the low 16 bits reach ODBMVINF).
     pub struct MacroInfo {
         pub use_no1: i32,
         pub use_no2: i32,
-    }
-}
-
-/// A big-endian IEEE double: the element of the rdmacror2/wrmacror2
-/// payloads (bit-exact both ways, NaN included).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Double(pub f64);
-
-impl PartialEq for Double {
-    fn eq(&self, o: &Double) -> bool {
-        self.0.to_bits() == o.0.to_bits()
-    }
-}
-
-impl Wire for Double {
-    fn encode(&self, w: &mut super::wire::Writer) {
-        w.bytes(&self.0.to_bits().to_be_bytes());
-    }
-    fn decode(r: &mut super::wire::Reader<'_>) -> Result<Self, super::wire::DecodeError> {
-        Ok(Double(f64::from_bits(u64::from_be_bytes(r.array()?))))
-    }
-}
-
-/// One cnc_rdmacror2 request: `n` variables from `s`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ReadMacrosDouble {
-    pub s: u32,
-    pub n: u32,
-}
-
-impl Call for ReadMacrosDouble {
-    type Output = Vec<Double>;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(RDMACROR2, &[self.s as i32, self.n as i32])]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<Vec<Double>> {
-        records(resp, 0)
-    }
-}
-
-/// One cnc_wrmacror2 request: variables from `s`; the reply is the count
-/// written. The payload is exactly what [`ReadMacrosDouble`] decodes.
-#[derive(Debug, Clone, PartialEq)]
-pub struct WriteMacrosDouble {
-    pub s: u32,
-    pub values: Vec<Double>,
-}
-
-impl Call for WriteMacrosDouble {
-    type Output = i32;
-    fn request(&self, _: &Ctx) -> Vec<ReqSub> {
-        vec![ReqSub::cnc(WRMACROR2, &[self.s as i32]).with_payload(self.values.to_bytes())]
-    }
-    fn decode(&self, _: &Ctx, resp: &[RespSub]) -> Result<i32> {
-        // FANUC's library reads a count cut short as 0 (zeros follow it).
-        super::call::payload_padded(resp, 0, 4)
     }
 }

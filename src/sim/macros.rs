@@ -7,10 +7,11 @@ pub use super::profile::macros::{MAX_DEC, Macros, PCodeMacros, parse_decimal};
 use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
-use crate::proto::cmd::{RDMACROINFO, RDMACRONUM, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, WRPMACRO};
-use crate::proto::macros::{
-    Double, MacroInfo, RDMACRO, RDMACROR2, RDMACROR2_CHUNK, VACANT_DEC, WRMACRO, WRMACROR2,
+use crate::proto::cmd::{
+    RDMACROINFO, RDMACRONUM, RDMACROR2, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, RDPMACROR2,
+    WRMACROR2, WRPMACRO, WRPMACROR2,
 };
+use crate::proto::macros::{MacroInfo, RDMACRO, VACANT_DEC, WRMACRO};
 use crate::proto::value::Value;
 use crate::proto::wire::Wire;
 
@@ -26,17 +27,13 @@ pub(super) const ROUTES: &[Route] = &[
             .map(|()| Vec::new()),
         Err(_) => Err(CncError::new(ew::EW_LENGTH)),
     }),
-    // [s, n]
-    Route::cnc(RDMACROR2, |m, q| {
-        enc(m.read_macros_double(q.path, q.args[0], q.args[1]))
-    }),
-    // [s] + doubles: answers the count.
-    Route::cnc(WRMACROR2, |m, q| {
-        match Vec::<Double>::from_bytes(&q.payload) {
-            Ok(v) => enc(m.write_macros_double(q.path, q.args[0], &v)),
-            Err(_) => Err(CncError::new(ew::EW_LENGTH)),
-        }
-    }),
+    // cnc_rdmacror2 [s, n], cnc_rdpmacror2 [s, n, type]: the doubles
+    // (their bits) of the custom or the P-code store.
+    Route::table(RDMACROR2, read_doubles),
+    Route::table(RDPMACROR2, read_doubles),
+    // cnc_wrmacror2 [s], cnc_wrpmacror2 [s, 0, type] + doubles: the count.
+    Route::table(WRMACROR2, write_doubles),
+    Route::table(WRPMACROR2, write_doubles),
     Route::table(RDMACROINFO, |m, q| {
         m.macro_info(q.path)
             .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
@@ -47,6 +44,78 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(WRPMACRO, pcode_write),
     Route::table(RDMACRONUM, macro_number),
 ];
+
+/// The store an IEEE-double command reads or writes: the P-code variables
+/// (`[path.pmacros]`) for cnc_rdpmacror2 / cnc_wrpmacror2's commands, the
+/// custom ones (`[path.macros]`) for cnc_rdmacror2 / cnc_wrmacror2's.
+/// Their `type` word (0..=2) is not read: what it selects on a CNC is not
+/// known.
+fn doubles_store<'a>(m: &'a mut Machine, q: &super::route::Asked<'_>) -> Reply<&'a mut Macros> {
+    let pcode = matches!(q.f.forms.first(), Some(f) if f.cmd == RDPMACROR2 || f.cmd == WRPMACROR2);
+    let p = m
+        .profile
+        .paths
+        .get_mut(usize::from(q.path).wrapping_sub(1))
+        .ok_or(CncError::PATH)?;
+    Ok(if pcode {
+        &mut p.pmacros.vars
+    } else {
+        &mut p.macros
+    })
+}
+
+/// cnc_rdmacror2, cnc_rdpmacror2: up to `n` (the second word: 1..= the
+/// records a request carries, the function's `Records::max`) variables
+/// from `s` (the first) as doubles (their bits), stopping at the first
+/// number that does not exist (EW_NUMBER if that is `s`). A vacant
+/// variable reads as 0.0: how a real CNC marks vacancy in this form is not
+/// known.
+fn read_doubles(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let most = q.f.records.map_or(0, |r| i32::from(r.max));
+    let (s, n) = (q.words[0], q.words[1]);
+    let v = doubles_store(m, q)?;
+    if n <= 0 || n > most || !v.exists(s) {
+        return Err(CncError::NUMBER);
+    }
+    Ok((s..s.saturating_add(n))
+        .take_while(|k| v.exists(*k))
+        .map(|k| {
+            let (x, d) = v.values.get(&k).copied().unwrap_or((0, 0));
+            (f64::from(x) / 10f64.powi(i32::from(d))).to_bits() as i64
+        })
+        .collect())
+}
+
+/// cnc_wrmacror2, cnc_wrpmacror2: the payload's doubles (their bits) to
+/// the variables from `s` (the first word), which later reads give back;
+/// all must exist and be writable (else EW_NUMBER / EW_PROT, nothing
+/// written), none EW_LENGTH. Each double is kept with the fewest decimal
+/// places (up to 9) that reproduce it; NaN and infinities are EW_DATA.
+/// Answers the count written.
+fn write_doubles(m: &mut Machine, q: &super::route::Asked<'_>) -> Reply<Vec<i64>> {
+    let s = q.words[0];
+    let v = doubles_store(m, q)?;
+    let n = i32::try_from(q.payload.len()).unwrap_or(i32::MAX);
+    if n == 0 {
+        return Err(CncError::new(ew::EW_LENGTH));
+    }
+    let e = s.checked_add(n - 1).ok_or(CncError::NUMBER)?;
+    if !(s..=e).all(|k| v.exists(k)) {
+        return Err(CncError::NUMBER);
+    }
+    if (s..=e).any(|k| v.protected(k)) {
+        return Err(CncError::new(ew::EW_PROT));
+    }
+    let new = q
+        .payload
+        .iter()
+        .map(|b| double_to_decimal(f64::from_bits(*b as u64)).ok_or(CncError::new(ew::EW_DATA)))
+        .collect::<Reply<Vec<_>>>()?;
+    for (k, x) in (s..=e).zip(new) {
+        v.values.insert(k, x);
+    }
+    Ok(vec![i64::from(n)])
+}
 
 /// cnc_rdmacronum: the number and attribute of the custom macro variable
 /// whose name is the payload's bytes (up to a NUL), from the path's
@@ -327,56 +396,6 @@ impl Machine {
             use_no1: count(100, 499),
             use_no2: count(500, 999),
         })
-    }
-
-    /// Command 0x00a7: up to `n` variables from `s` as doubles, stopping at
-    /// the first number that does not exist (EW_NUMBER if that is `s`). A
-    /// vacant variable reads as 0.0: how a real CNC marks vacancy in this
-    /// form is not known.
-    pub(crate) fn read_macros_double(&mut self, path: u16, s: i32, n: i32) -> Reply<Vec<Double>> {
-        let m = self.macros(path)?;
-        if n <= 0 || n as u32 > RDMACROR2_CHUNK || !m.exists(s) {
-            return Err(CncError::NUMBER);
-        }
-        Ok((s..s.saturating_add(n))
-            .take_while(|k| m.exists(*k))
-            .map(|k| {
-                let (v, d) = m.values.get(&k).copied().unwrap_or((0, 0));
-                Double(f64::from(v) / 10f64.powi(i32::from(d)))
-            })
-            .collect())
-    }
-
-    /// Command 0x00a8: variables from `s`; all must exist and be writable
-    /// (else EW_NUMBER / EW_PROT, nothing written). Each double is kept
-    /// with the fewest decimal places (up to 9) that reproduce it; NaN and
-    /// infinities are EW_DATA. Answers the count written.
-    pub(crate) fn write_macros_double(
-        &mut self,
-        path: u16,
-        s: i32,
-        values: &[Double],
-    ) -> Reply<i32> {
-        let m = self.macros_mut(path)?;
-        let n = values.len() as i32;
-        if n == 0 {
-            return Err(CncError::new(ew::EW_LENGTH));
-        }
-        let e = s.checked_add(n - 1).ok_or(CncError::NUMBER)?;
-        if !(s..=e).all(|k| m.exists(k)) {
-            return Err(CncError::NUMBER);
-        }
-        if (s..=e).any(|k| m.protected(k)) {
-            return Err(CncError::new(ew::EW_PROT));
-        }
-        let new = values
-            .iter()
-            .map(|d| double_to_decimal(d.0).ok_or(CncError::new(ew::EW_DATA)))
-            .collect::<Reply<Vec<_>>>()?;
-        for (k, v) in (s..=e).zip(new) {
-            m.values.insert(k, v);
-        }
-        Ok(n)
     }
 
     /// Sets a macro variable as a running program would (`None`: vacant),

@@ -301,6 +301,12 @@ commands! {
     RDMACROR2 = CLASS_CNC 0x00a7 [cnc_rdmacror2];
     /// cnc_wrmacror2: (1,0x00a8)[s, 0, 0, 0, 8n] + n doubles; reply i32 count.
     WRMACROR2 = CLASS_CNC 0x00a8 [cnc_wrmacror2];
+    /// cnc_rdpmacror2: (1,0x00a9)[s, n, type], payload n IEEE doubles
+    /// big-endian (FANUC's library: cnc_rdmacror2's routine).
+    RDPMACROR2 = CLASS_CNC 0x00a9 [cnc_rdpmacror2];
+    /// cnc_wrpmacror2: (1,0x00aa)[s, 0, type, 0, 8n] + n doubles; reply
+    /// i32 count (cnc_wrmacror2's routine).
+    WRPMACROR2 = CLASS_CNC 0x00aa [cnc_wrpmacror2];
     /// Program data folder commands (30i; src/ffi/folder.rs).
     PDF_DRIVE = CLASS_CNC 0x00ae [cnc_rdpdf_drive];
     PDF_INF = CLASS_CNC 0x00af [cnc_rdpdf_inf];

@@ -26,6 +26,7 @@ impl Func {
             | Param::Char(n)
             | Param::ShortAs(n, _)
             | Param::Count(n)
+            | Param::LongCount(n)
             | Param::Io(n) => Some(n),
             Param::Out(..) | Param::In(..) | Param::InOut(..) | Param::Text(..) => None,
         })
@@ -45,8 +46,14 @@ impl Func {
     /// The [`Param::Count`] parameter, if any: its index among the number
     /// parameters.
     pub fn count(&self) -> Option<usize> {
-        self.numbers()
-            .position(|n| self.params.contains(&Param::Count(n)))
+        self.numbers().position(|n| {
+            self.params.contains(&Param::Count(n)) || self.params.contains(&Param::LongCount(n))
+        })
+    }
+    /// Whether the count is a [`Param::LongCount`] (4 bytes by pointer),
+    /// not a [`Param::Count`]'s `short`.
+    pub fn long_count(&self) -> bool {
+        self.params.iter().any(|p| matches!(p, Param::LongCount(_)))
     }
     /// The [`Param::In`] (or [`Param::InOut`]) parameter, if any: (name,
     /// C type).
@@ -270,6 +277,8 @@ impl Func {
                 ALWAYS => true,
                 ORDERED => at(c.lo) > at(c.hi),
                 OPTION => !(c.lo..=c.hi).contains(&i32::from(option)),
+                // lo above hi: the range wraps (Check).
+                a if c.lo > c.hi => (c.hi + 1..c.lo).contains(&at(i32::from(a))),
                 a => !(c.lo..=c.hi).contains(&at(i32::from(a))),
             };
             bad.then_some(c.code)

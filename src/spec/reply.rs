@@ -37,6 +37,11 @@ pub enum Int {
     /// edition's unset characters as NULs, cnc_rdsyssoft). Its C type
     /// (`c`) is `I8`.
     IdChar,
+    /// An IEEE double: 8 bytes, big-endian on the wire, a native `double`
+    /// in C, copied bit-exact both ways (NaN included: FANUC's library
+    /// swaps the bytes, nothing more; cnc_rdmacror2). Its integer is the
+    /// double's bit pattern (`f64::to_bits` as `i64`).
+    F64,
 }
 
 impl Int {
@@ -45,6 +50,7 @@ impl Int {
             Int::I8 | Int::U8 | Int::Char | Int::IdChar => 1,
             Int::I16 | Int::U16 => 2,
             Int::I32 | Int::U32 | Int::BaseExp => 4,
+            Int::F64 => 8,
         }
     }
     /// `v` converted to this integer, as a C cast converts it.
@@ -57,6 +63,8 @@ impl Int {
             Int::I32 => v as i32 as i64,
             Int::U32 => v as u32 as i64,
             Int::BaseExp => v as i16 as i64,
+            // The bits as they are.
+            Int::F64 => v,
         }
     }
     /// The Rust type of a C field of this width.
@@ -69,6 +77,7 @@ impl Int {
             Int::I32 => "i32",
             Int::U32 => "u32",
             Int::BaseExp => "i16",
+            Int::F64 => "f64",
         }
     }
 }
@@ -316,6 +325,19 @@ pub const fn digits(out: u8, to: &'static str) -> Field {
 /// output `out`'s member `to` (a `short`).
 pub const fn places(out: u8, to: &'static str) -> Field {
     to_out(out, Int::BaseExp, to, Int::I16)
+}
+
+/// `n` IEEE doubles ([`Int::F64`]) written to output `out`'s member `to`
+/// (`""`: the output itself, an array of them).
+pub const fn doubles(out: u8, n: u16, to: &'static str) -> Field {
+    Field {
+        wire: Int::F64,
+        n,
+        out,
+        to: Some(to),
+        c: Int::F64,
+        arg: None,
+    }
 }
 
 /// `n` characters of a text ([`Int::Char`]: up to its first NUL, zeros

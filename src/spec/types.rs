@@ -45,6 +45,10 @@ pub enum Param {
     /// are checked); out, how many were written. The records' output is
     /// then an array of that many elements.
     Count(&'static str),
+    /// `unsigned long *NAME`: a count as [`Param::Count`], of which FANUC's
+    /// x86-64 library reads and writes 4 bytes (its number the 32 bits as
+    /// an `int`; cnc_rdmacror2's `num`).
+    LongCount(&'static str),
     /// `TYPE *NAME`: the records a write sends, read from the caller's
     /// array ([`Func::payload`]). TYPE as for [`Param::Out`].
     In(&'static str, &'static str),
@@ -73,7 +77,7 @@ impl Param {
     pub const fn conv(&self, v: i64) -> Option<i32> {
         match *self {
             Param::Short(_) | Param::Count(_) | Param::Io(_) => Some(v as i16 as i32),
-            Param::Long(_) | Param::ULong(_) => Some(v as i32),
+            Param::Long(_) | Param::ULong(_) | Param::LongCount(_) => Some(v as i32),
             Param::UShort(_) => Some(v as u16 as i32),
             Param::Char(_) => Some(v as i8 as i32),
             Param::ShortAs(_, c) => Some(c.cut(v as i16 as i64) as i32),
@@ -90,6 +94,7 @@ impl Param {
             | Param::ShortAs(n, _)
             | Param::Out(n, _)
             | Param::Count(n)
+            | Param::LongCount(n)
             | Param::In(n, _)
             | Param::Io(n)
             | Param::Text(n, _)
@@ -205,7 +210,9 @@ pub struct Form {
 }
 
 /// A check FANUC's library makes before any traffic: number parameter
-/// `arg` outside `lo..=hi` returns `code`, an `EW_*` constant of src/ew.rs.
+/// `arg` outside `lo..=hi` returns `code`, an `EW_*` constant of src/ew.rs
+/// (`lo` above `hi`: the range wraps, values from `lo` up or to `hi` pass,
+/// [`nonzero`]).
 /// `arg` [`OPTION`] checks the CNC's FOCAS option bit (0 or 1) instead.
 #[derive(Debug, Clone, Copy)]
 pub struct Check {
@@ -249,6 +256,18 @@ pub const fn ordered(s: u8, e: u8) -> Check {
         lo: s as i32,
         hi: e as i32,
         code: crate::ew::EW_NUMBER,
+    }
+}
+
+/// A count (number parameter `arg`) of 0: EW_LENGTH before any traffic,
+/// any other value passes (cnc_rdmacror2's `*num`, which FANUC's library
+/// tests for 0 alone).
+pub const fn nonzero(arg: u8) -> Check {
+    Check {
+        arg,
+        lo: 1,
+        hi: -1,
+        code: EW_LENGTH,
     }
 }
 
@@ -412,6 +431,18 @@ pub struct Pages {
     /// EW_LENGTH, the requests before it staying done (cnc_wrpmacror:
     /// `10 + 8 · records` against `length`).
     pub room: Option<(u8, u16)>,
+    /// As FANUC's library reads and writes IEEE-double macro variables
+    /// (cnc_rdmacror2, cnc_wrmacror2): the count is first cut to the end
+    /// of the range [`Pages::advance`]'s argument starts in ([`Func::ends`];
+    /// the two compared unsigned) and nothing is sent for a cut count of 0
+    /// or below (as an `int`: the count becomes 0); each request's slice
+    /// starts after the records sent or asked before it; an answer that did
+    /// fewer records than its slice ends the call; the count becomes the
+    /// records the answers did (a read: those written; a write: the sum of
+    /// its answers' counts). An error answer returns its code, the count
+    /// as the caller gave it (a read's earlier records written), except
+    /// EW_NUMBER after answers that did some: EW_OK, the count theirs.
+    pub until_short: bool,
 }
 
 /// The places a value record ([`Int::BaseExp`]) of a range write's input

@@ -1,5 +1,6 @@
 /* The P-code macro functions added from FANUC's library (cnc_rdpmacroinfo2,
- * cnc_rdpmacro, cnc_wrpmacro, cnc_rdpmacror, cnc_wrpmacror), called through the .so against focas-sim; prints
+ * cnc_rdpmacro, cnc_wrpmacro, cnc_rdpmacror, cnc_wrpmacror, cnc_rdpmacror2,
+ * cnc_wrpmacror2), called through the .so against focas-sim; prints
  * key=value lines that tests/artifacts compares with the simulator's
  * machine state. Usage: collectors_pcode HOST PORT */
 #include <stddef.h>
@@ -21,6 +22,8 @@ static IODBPR_data *rec(IODBPR *p, int i) {
 
 /* #10000..#10199 read back, 100 a call, as `key=v,d;v,d...`. */
 static void print_200(unsigned short h, const char *key);
+/* The IEEE-double functions (cnc_wrpmacror2, cnc_rdpmacror2). */
+static void doubles(unsigned short h);
 
 static int check(const char *what, short rc) {
     if (rc != EW_OK) {
@@ -127,9 +130,67 @@ int main(int argc, char **argv) {
         free(w);
     }
     print_200(h, "wr200.end");
+    doubles(h);
 
     cnc_freelibhndl(h);
     return 0;
+}
+
+/* `key=d;d;...` of `n` doubles, each exactly (%.17g). */
+static void print_doubles(const char *key, const double *d, unsigned long n) {
+    unsigned long i;
+    printf("%s=", key);
+    for (i = 0; i < n; i++) printf("%s%.17g", i ? ";" : "", d[i]);
+    printf("\n");
+}
+
+static void doubles(unsigned short h) {
+    double three[3] = {2.5, -0.125, 1234.5}, back[3] = {0, 0, 0};
+    double *many = calloc(200, sizeof(double)), *got = calloc(200, sizeof(double));
+    unsigned long num;
+    int i;
+    if (!many || !got) exit(3);
+    /* #10010..#10012 written as doubles, read back as doubles and as value
+     * records (cnc_rdpmacror: the same store). */
+    num = 3;
+    check("wrpmacror2", cnc_wrpmacror2(h, 10010, &num, 0, three));
+    printf("d.wr.num=%lu\n", num);
+    num = 3;
+    check("rdpmacror2", cnc_rdpmacror2(h, 10010, &num, 0, back));
+    printf("d.rd.num=%lu\n", num);
+    print_doubles("d.rd", back, 3);
+    {
+        IODBPR *r = range_buf(3);
+        check("rdpmacror", cnc_rdpmacror(h, 10010, 10012, 12 + 8 * 3, r));
+        printf("d.records=%d,%d,%d,%d,%d,%d\n", (int)rec(r, 0)->mcr_val, rec(r, 0)->dec_val,
+               (int)rec(r, 1)->mcr_val, rec(r, 1)->dec_val, (int)rec(r, 2)->mcr_val,
+               rec(r, 2)->dec_val);
+        free(r);
+    }
+    /* 200 from #10000: two requests each way (177 + 23 written, 179 + 21 read). */
+    for (i = 0; i < 200; i++) many[i] = i * 0.25 - 10;
+    num = 200;
+    check("wrpmacror2", cnc_wrpmacror2(h, 10000, &num, 1, many));
+    printf("d.wr200.num=%lu\n", num);
+    num = 200;
+    check("rdpmacror2", cnc_rdpmacror2(h, 10000, &num, 2, got));
+    printf("d.rd200.num=%lu\n", num);
+    printf("d.rd200.same=%d\n", memcmp(many, got, sizeof(double) * 200) == 0);
+    /* `*num` 0xffffffff from #10190: cut to the end of the range (#19999),
+     * the simulator's #10199 ends the answer: 10 read. */
+    num = 0xffffffffUL;
+    check("rdpmacror2", cnc_rdpmacror2(h, 10190, &num, 0, got));
+    printf("d.huge.num=%lu\n", num);
+    /* Refused before any traffic: `*num` 0, `type` past 2; by the CNC:
+     * #10200 does not exist (the request refused whole, `*num` kept). */
+    num = 0;
+    printf("d.zero=%d,%lu\n", cnc_wrpmacror2(h, 10000, &num, 0, three), num);
+    num = 3;
+    printf("d.type=%d,%lu\n", cnc_rdpmacror2(h, 10000, &num, 3, back), num);
+    num = 3;
+    printf("d.absent=%d,%lu\n", cnc_wrpmacror2(h, 10198, &num, 0, three), num);
+    free(many);
+    free(got);
 }
 
 static void print_200(unsigned short h, const char *key) {

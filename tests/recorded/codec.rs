@@ -1604,6 +1604,8 @@ proptest! {
                     Some(Int::I32) => i64::from(*s as i32),
                     Some(Int::U32) => i64::from(*s),
                     Some(Int::BaseExp) => i64::from(*s as u16 as i16),
+                    // Any bits of a double (the seed's, spread).
+                    Some(Int::F64) => u64::from(*s).wrapping_mul(0x9e37_79b9_7f4a_7c15) as i64,
                 })
                 .collect();
             if seed.is_empty() && !all.is_empty() {

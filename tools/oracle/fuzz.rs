@@ -72,6 +72,8 @@ fn int_value(rng: &mut Rng, t: Int) -> i64 {
         Int::U16 => (0, u16::MAX.into()),
         Int::I32 => (i32::MIN.into(), i32::MAX.into()),
         Int::U32 | Int::BaseExp => (0, u32::MAX.into()),
+        // A double's bits: any pattern (NaNs too).
+        Int::F64 => (i64::MIN, i64::MAX),
     };
     match rng.below(9) {
         0 | 1 => 0,

@@ -1304,6 +1304,7 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                     | fwlib32::spec::Param::UShort(_)
                     | fwlib32::spec::Param::Char(_)
                     | fwlib32::spec::Param::Count(_)
+                    | fwlib32::spec::Param::LongCount(_)
                     | fwlib32::spec::Param::Io(_)
             )
         })

@@ -1043,6 +1043,7 @@ fn int_name(i: Int) -> &'static str {
         Int::U32 => "U32",
         Int::BaseExp => "BaseExp",
         Int::IdChar => "IdChar",
+        Int::F64 => "F64",
     }
 }
 

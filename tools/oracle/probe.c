@@ -436,9 +436,6 @@ static short w_callx(void) {
     WORD(wrmacro, return F(cnc_wrmacro)(H, N(1), N(2), N(3), N(4)))                               \
     WORD(rdmacror, return F(cnc_rdmacror)(H, N(1), N(2), N(3), B0))                               \
     WORD(wrmacror, { fill_hex(b0, 2); return F(cnc_wrmacror)(H, N(1), B0); })                     \
-    WORD(rdmacror2, LONG_IO(num, 2, F(cnc_rdmacror2)(H, N(1), (unsigned long *)num, B0)))         \
-    WORD(wrmacror2, { fill_hex(b0, 3);                                                            \
-                      LONG_IO(num, 2, F(cnc_wrmacror2)(H, N(1), (unsigned long *)num, B0)); })    \
     /* pmc */                                                                                     \
     WORD(pmc_rdpmcrng, return F(pmc_rdpmcrng)(H, N(1), N(2), N(3), N(4), N(5), B0))               \
     WORD(pmc_wrpmcrng, { fill_hex(b0, 2); return F(pmc_wrpmcrng)(H, N(1), B0); })                 \

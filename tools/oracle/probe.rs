@@ -109,7 +109,7 @@ pub fn generated_words() -> String {
                     n += 1;
                     format!("argv_[{n}]")
                 }
-                Param::Count(_) => {
+                Param::Count(_) | Param::LongCount(_) => {
                     n += 1;
                     count = Some(n);
                     "&num".to_string()
@@ -141,6 +141,11 @@ pub fn generated_words() -> String {
         let body = match count {
             // A paging write (or read of the caller's records): its records
             // first, then the count.
+            // A Param::LongCount: probe.c's LONG_IO (4 bytes moved).
+            Some(i) if f.long_count() => format!(
+                "{{ {fill}LONG_IO(num, {i}, {}); }}",
+                call.replace("&num", "(unsigned long *)num")
+            ),
             Some(i) if !fill.is_empty() => format!("{{ {fill}SHORT_IO(num, {i}, {call}); }}"),
             Some(i) => format!("SHORT_IO(num, {i}, {call})"),
             None if !ios.is_empty() => {

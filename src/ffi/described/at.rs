@@ -70,6 +70,8 @@ pub(super) unsafe fn write_fields(
                     Int::U16 => put(p.cast::<u16>(), x as u16),
                     Int::I32 => put(p.cast::<i32>(), x as i32),
                     Int::U32 => put(p.cast::<u32>(), x as u32),
+                    // The double of these bits, native.
+                    Int::F64 => put(p.cast::<f64>(), f64::from_bits(x as u64)),
                     // A C member is never of this wire kind (places are I16).
                     Int::BaseExp => put(p.cast::<i16>(), x as i16),
                 }

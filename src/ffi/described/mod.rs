@@ -163,8 +163,12 @@ pub(crate) unsafe fn exec(
         Some(i) => {
             let c = nonnull(rec.asked)?;
             outs_set()?;
-            // SAFETY: the caller's count, checked above.
-            args[i] = i32::from(unsafe { c.read_unaligned() });
+            // SAFETY: the caller's count, checked above (4 bytes of a
+            // Param::LongCount).
+            args[i] = match f.long_count() {
+                true => unsafe { c.cast::<i32>().read_unaligned() },
+                false => i32::from(unsafe { c.read_unaligned() }),
+            };
             Some(c)
         }
         None => None,
@@ -319,7 +323,7 @@ pub(crate) unsafe fn exec(
             // SAFETY: the caller's contract, as for the rest of exec.
             return unsafe { span_pages(f, &h, args, &pay, class) };
         }
-        return unsafe { pages(f, &h, args, outs, offsets, &rec, &pay, count) };
+        return unsafe { pages(f, &h, args, outs, offsets, &rec, &pay, (count, class)) };
     }
     let n = payload_records(f, args);
     let payload = match n {

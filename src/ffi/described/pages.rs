@@ -4,7 +4,7 @@
 use super::at::{PayloadAt, RecordsAt, write_fields};
 use crate::client::handles;
 use crate::error::{Error, Result};
-use crate::ew::{EW_DATA, EW_FUNC};
+use crate::ew::{EW_DATA, EW_FUNC, EW_NUMBER};
 use crate::ffi::put;
 use crate::proto::described::{Described, payload_values};
 use crate::spec::{End, Func, Int, LAST, PLACES};
@@ -15,7 +15,8 @@ use std::os::raw::c_short;
 /// slice's length, [`crate::spec::Pages::advance`]'s argument moved on by
 /// the records done), each answer's records go to the caller's array from
 /// the slice's first, and its first integer advances `done`; `*count`
-/// becomes `done` whatever the end.
+/// becomes `done` whatever the end ([`crate::spec::Pages::until_short`]:
+/// as that says). `class`: the CNC is of the 16i class, of Series 15.
 ///
 /// # Safety
 /// As [`exec`]: `pay.input` holds `*count` records of `pay.stride` bytes,
@@ -30,7 +31,7 @@ pub(super) unsafe fn pages(
     offsets: &[usize],
     rec: &RecordsAt<'_>,
     pay: &PayloadAt<'_>,
-    count: Option<*mut c_short>,
+    (count, class): (Option<*mut c_short>, (bool, bool)),
 ) -> Result<()> {
     let (Some(pg), Some(per_page), Some(ci), Some(count)) =
         (f.pages, f.per_page(), f.count(), count)
@@ -41,9 +42,18 @@ pub(super) unsafe fn pages(
     // each answer's count; the slice's start moves by the records written
     // (a read) or sent (a write); the count becomes the caller's less what
     // remains, cut to a `short`.
-    let total = args[ci];
-    // Records to do, the next slice's start, answers of none in a row.
-    let (mut left, mut next, mut empty) = (total, 0usize, 0);
+    let mut total = args[ci];
+    if pg.until_short {
+        // Cut to the end of the start's range, compared unsigned.
+        let s = pg.advance.map_or(0, |a| args[usize::from(a)]);
+        if let Some(End::At(end)) = f.end_of(s, class.0, class.1) {
+            let room = end.wrapping_sub(s).wrapping_add(1) as u32;
+            total = room.min(total as u32) as i32;
+        }
+    }
+    // Records to do, the next slice's start, answers of none in a row,
+    // the records the answers did (until_short).
+    let (mut left, mut next, mut empty, mut did) = (total, 0usize, 0, 0i32);
     let r = loop {
         if left <= 0 {
             break Ok(());
@@ -79,10 +89,20 @@ pub(super) unsafe fn pages(
         };
         let values = match h.call(&call) {
             Ok(v) => v,
+            // EW_NUMBER after answers that did some ends the call.
+            Err(Error::Cnc {
+                code: EW_NUMBER, ..
+            }) if pg.until_short && did > 0 => break Ok(()),
+            // The count as the caller gave it.
+            Err(e) if pg.until_short => return Err(e),
             Err(e) => break Err(e),
         };
-        // The answer's count (an i32).
-        let n = values.first().copied().unwrap_or(0) as i32;
+        // The answer's count (an i32); without reply fields, the records
+        // it holds.
+        let n = match (f.reply.is_empty(), &f.records) {
+            (true, Some(r)) => (values.len() / r.values().max(1)) as i32,
+            _ => values.first().copied().unwrap_or(0) as i32,
+        };
         let mut v = values.into_iter();
         // SAFETY: the caller's contract (offsets and elements in the outputs).
         unsafe { write_fields(f.reply, outs, |j| offsets[j], &mut v) };
@@ -97,6 +117,20 @@ pub(super) unsafe fn pages(
                 unsafe { write_fields(r.fields, outs, at, &mut v) };
                 written += 1;
             }
+        }
+        if pg.until_short {
+            // The next slice after this one; a short answer ends.
+            did = did.wrapping_add(if f.records.is_some() {
+                written as i32
+            } else {
+                n
+            });
+            next += k;
+            left = left.wrapping_sub(k as i32);
+            if n < k as i32 {
+                break Ok(());
+            }
+            continue;
         }
         if !pg.from_done {
             next += k;
@@ -118,8 +152,16 @@ pub(super) unsafe fn pages(
         // library counts them all).
         left = left.wrapping_sub(n.min(k as i32));
     };
-    // SAFETY: the caller's count, checked non-NULL.
-    unsafe { put(count, total.wrapping_sub(left) as c_short) };
+    let done = match pg.until_short {
+        true => did,
+        false => total.wrapping_sub(left),
+    };
+    // SAFETY: the caller's count, checked non-NULL (4 bytes of a
+    // Param::LongCount).
+    match f.long_count() {
+        true => unsafe { put(count.cast::<i32>(), done) },
+        false => unsafe { put(count, done as c_short) },
+    }
     r
 }
 

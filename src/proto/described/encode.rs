@@ -82,6 +82,7 @@ pub(super) fn write_fields_in<'a>(
                 Int::I8 | Int::U8 | Int::Char | Int::IdChar => w.u8(*x as u8),
                 Int::I16 | Int::U16 => w.u16(*x as u16),
                 Int::I32 | Int::U32 => w.u32(*x as u32),
+                Int::F64 => w.bytes(&x.to_be_bytes()),
                 // The digits went as the value.
                 Int::BaseExp => {
                     w.u16(base);

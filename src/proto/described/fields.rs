@@ -43,6 +43,8 @@ pub(super) fn read_fields(
                 Int::U16 => i64::from(r.u16()?),
                 Int::I32 => i64::from(r.i32()?),
                 Int::U32 => i64::from(r.u32()?),
+                // The double's bits, big-endian on the wire.
+                Int::F64 => i64::from_be_bytes(r.array()?),
                 Int::BaseExp => {
                     // The value read before it and this base and exponent
                     // are one record: its decimal digits and places (only

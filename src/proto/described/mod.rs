@@ -509,5 +509,6 @@ fn cast(v: i64, c: Int) -> i64 {
         Int::I32 => i64::from(v as i32),
         Int::U32 => i64::from(v as u32),
         Int::BaseExp => i64::from(v as i16),
+        Int::F64 => v,
     }
 }

@@ -44,6 +44,8 @@ pub fn payload_values(
                     (_, Int::U16) => i64::from(u16::from_ne_bytes([b(0), b(1)])),
                     (_, Int::I32) => i64::from(i32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
                     (_, Int::U32) => i64::from(u32::from_ne_bytes([b(0), b(1), b(2), b(3)])),
+                    // A native double's bits.
+                    (_, Int::F64) => i64::from_ne_bytes(std::array::from_fn(b)),
                     // A C member is never of this wire kind.
                     (_, Int::BaseExp) => i64::from(i16::from_ne_bytes([b(0), b(1)])),
                 });

@@ -292,6 +292,7 @@ pub const FUNCS: &[Func] = &[
             advance: None,
             from_done: true,
             room: None,
+            until_short: false,
         }),
         learnt: Some(&[
             "crashed on coded replies (8, 64, 1428 bytes): the answer's first word is the pots' count, which a coded reply makes huge (records past *num written); probed with counted answers (1, 2 of 4 with 1 record, 5 of 4)",
@@ -318,6 +319,7 @@ pub const FUNCS: &[Func] = &[
             advance: None,
             from_done: false,
             room: None,
+            until_short: false,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -341,6 +343,7 @@ pub const FUNCS: &[Func] = &[
             advance: None,
             from_done: false,
             room: None,
+            until_short: false,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -373,6 +376,7 @@ pub const FUNCS: &[Func] = &[
             advance: Some(0),
             from_done: false,
             room: None,
+            until_short: false,
         }),
         learnt: Some(&[]),
         ..COMMAND
@@ -405,6 +409,7 @@ pub const FUNCS: &[Func] = &[
             advance: Some(0),
             from_done: false,
             room: None,
+            until_short: false,
         }),
         learnt: Some(&[]),
         ..COMMAND

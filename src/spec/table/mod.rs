@@ -16,6 +16,7 @@ mod feed;
 pub mod folder;
 pub mod history;
 pub mod info;
+pub mod macros;
 pub mod magazine;
 mod maintenance;
 pub mod memory;
@@ -42,6 +43,7 @@ const AREAS: &[&[Func]] = &[
     folder::FUNCS,
     feed::FUNCS,
     offset::FUNCS,
+    macros::FUNCS,
     info::FUNCS,
     servo::FUNCS,
     position::FUNCS,

@@ -261,6 +261,7 @@ pub const FUNCS: &[Func] = &[
             advance: None,
             from_done: false,
             room: Some((0, 10)),
+            until_short: false,
         }),
         binary: Some(Classes::S16Not15),
         ends: P_CODE_ENDS,

@@ -1,5 +1,6 @@
 //! tests/c/collectors_pcode.c: cnc_rdpmacroinfo2, cnc_rdpmacro,
-//! cnc_wrpmacro, cnc_rdpmacror and cnc_wrpmacror through the .so, compared with the simulator's P-code
+//! cnc_wrpmacro, cnc_rdpmacror, cnc_wrpmacror, cnc_rdpmacror2 and
+//! cnc_wrpmacror2 through the .so, compared with the simulator's P-code
 //! variable store (on the 30i and the 16i class: binary records there).
 
 use super::run_c_test;
@@ -130,7 +131,29 @@ fn check(p: Profile) {
     assert_eq!(kv["wrr.absent"], fwlib32::ew::EW_NUMBER.to_string());
     // The refused calls changed nothing.
     assert_eq!(kv["wr200.end"], list(&second));
-    for n in [10000, 10022, 10023, 10190, 10199] {
-        assert_eq!(read(n), second(n - 10000), "#{n} in the simulator");
+    // cnc_wrpmacror2 / cnc_rdpmacror2: doubles written from C, read back
+    // bit-exact from C, and as value records by cnc_rdpmacror (the same
+    // store, each double kept with its fewest decimal places).
+    assert_eq!(kv["d.wr.num"], "3");
+    assert_eq!(kv["d.rd.num"], "3");
+    assert_eq!(kv["d.rd"], "2.5;-0.125;1234.5");
+    assert_eq!(kv["d.records"], "25,1,-125,3,12345,1");
+    assert_eq!(kv["d.wr200.num"], "200");
+    assert_eq!(kv["d.rd200.num"], "200");
+    assert_eq!(kv["d.rd200.same"], "1");
+    // #10190..#10199: the store's last ten.
+    let last = (10190..).take_while(|n| pm.vars.exists(*n)).count();
+    assert_eq!(kv["d.huge.num"], last.to_string());
+    assert_eq!(last, 10);
+    assert_eq!(kv["d.zero"], format!("{},0", fwlib32::ew::EW_LENGTH));
+    assert_eq!(kv["d.type"], format!("{},3", fwlib32::ew::EW_ATTRIB));
+    assert_eq!(kv["d.absent"], format!("{},3", fwlib32::ew::EW_NUMBER));
+    // The store holds the 200 doubles (i · 0.25 - 10) after the C program
+    // ended; the refused write changed nothing (#10198, #10199).
+    for n in [10000, 10001, 10010, 10012, 10190, 10198, 10199] {
+        let x = f64::from(n - 10000) * 0.25 - 10.0;
+        let want = fwlib32::sim::macros::double_to_decimal(x).expect("a decimal");
+        assert_eq!(read(n), (want.0, want.1), "#{n} in the simulator");
     }
+    assert_eq!(read(10001), (-975, 2));
 }
