@@ -289,6 +289,10 @@ fn conv_of(t: &Ty) -> fn(i64) -> i32 {
     }
 }
 
+/// The argument of a learnt echo that is the last number answered (the
+/// table's `last`: number argument 0 plus the records written, less one).
+const LAST_ECHO: usize = usize::MAX - 1;
+
 /// The length of the C string a `char *` or `void *` argument holds (its
 /// 0 byte reads as kept in the reply map).
 const STRING: usize = 32;
@@ -411,6 +415,12 @@ struct ClassLearnt {
     outputs: Vec<usize>,
     /// (output's argument, leaf, C integer, number argument echoed)
     echoes: Vec<(usize, String, Int, usize)>,
+    /// Output bytes written as 0 whatever the reply, off the wire:
+    /// (output's argument, byte offset).
+    zeros: Vec<(usize, usize)>,
+    /// The leaves all of whose bytes are such zeros: (output's argument,
+    /// leaf, C integer).
+    zero_leaves: Vec<(usize, String, Int)>,
     flags: Vec<String>,
 }
 
@@ -740,6 +750,8 @@ fn learn_class(
     let mut outputs = Vec::new();
     let mut reply_len = 0;
     let mut echoes = Vec::new();
+    let mut zeros = Vec::new();
+    let mut zero_leaves: Vec<(usize, String, Int)> = Vec::new();
     let asked = sh
         .args
         .iter()
@@ -878,7 +890,13 @@ fn learn_class(
                         }
                     }
                     let mut odd = Vec::new();
-                    reply.extend(placed(i, &map, &lv, &mut odd));
+                    let here = placed(i, &map, &lv, &mut odd);
+                    // bytes zeroed off the wire (a string's NUL, a text
+                    // member's rest): learnt as zero fields, not flagged
+                    let (zl, zb) = learnt_zeros(i, &map, &lv);
+                    zeros.extend(zb);
+                    zero_leaves.extend(zl.into_iter().map(|(p, c)| (i, p, c)));
+                    reply.extend(here);
                     // what the first pointee holds (past it: the flag above)
                     let first: Vec<Leaf> = lv.iter().filter(|l| l.off < size).cloned().collect();
                     odd.clear();
@@ -924,8 +942,15 @@ fn learn_class(
                             }
                         }
                     }
+                    let zeroed = |o: &String| {
+                        zero_leaves
+                            .iter()
+                            .any(|(k, p, _)| *k == i && o.starts_with(&format!("out {i} {p}: ")))
+                    };
                     for o in odd {
-                        flags.push(format!("reply: {o}"));
+                        if !zeroed(&o) {
+                            flags.push(format!("reply: {o}"));
+                        }
                     }
                     let _ = hdr_types;
                 }
@@ -956,6 +981,8 @@ fn learn_class(
         texts,
         outputs,
         echoes,
+        zeros,
+        zero_leaves,
         flags,
     })
 }
@@ -1061,8 +1088,10 @@ fn learn(
     let renumber = |f: &DForm| {
         let mut f = f.clone();
         for w in &mut f.words {
-            if let WordSrc::Arg(i) = w {
-                *w = WordSrc::Arg(number_index(*i));
+            match w {
+                WordSrc::Arg(i) => *w = WordSrc::Arg(number_index(*i)),
+                WordSrc::Nonzero(i, k) => *w = WordSrc::Nonzero(number_index(*i), *k),
+                _ => {}
             }
         }
         f
@@ -1191,6 +1220,17 @@ fn learn(
             )
         })
         .collect();
+    d.zeros = l30
+        .zero_leaves
+        .iter()
+        .map(|(o, path, c)| {
+            (
+                out_index.iter().position(|x| x == o).unwrap_or(*o),
+                path.clone(),
+                *c,
+            )
+        })
+        .collect();
     d.payload = l30.payload.clone();
     for f in &l30.flags {
         d.flags.push(f.clone());
@@ -1244,21 +1284,10 @@ fn load_header(path: &Path) -> Header {
     Header::parse(&String::from_utf8_lossy(&out.stdout))
 }
 
-/// The committed entry against the draft: requests per class, checks on
-/// the swept values, the reply's bytes moved.
-/// Why a class's reply cannot be compared byte for byte: the committed
-/// entry converts values rather than moving bytes, or the learner's map of
-/// that class is incomplete (the coded replies refused, crashing, let
-/// through only by a pinned count, or spread over several subpackets).
-fn reply_not_comparable(f: &fwlib32::spec::Func, cl: &ClassLearnt) -> Option<String> {
-    use fwlib32::spec::Int as W;
-    let fields = f
-        .reply
-        .iter()
-        .chain(f.records.iter().flat_map(|r| r.fields.iter()));
-    if fields.clone().any(|x| x.wire == W::BaseExp) {
-        return Some("a value record: digits and decimal places converted, not bytes moved".into());
-    }
+/// What the learner's map of a class leaves incomplete: the coded replies
+/// refused, crashing, let through only by a pinned count, or spread over
+/// several subpackets.
+fn map_incomplete(cl: &ClassLearnt) -> Option<&'static str> {
     const INCOMPLETE: &[(&str, &str)] = &[
         (
             "every coded reply was refused",
@@ -1280,7 +1309,25 @@ fn reply_not_comparable(f: &fwlib32::spec::Func, cl: &ClassLearnt) -> Option<Str
     INCOMPLETE
         .iter()
         .find(|(k, _)| cl.flags.iter().any(|f| f.contains(k)))
-        .map(|(_, why)| why.to_string())
+        .map(|(_, why)| *why)
+}
+
+/// Why a class's reply is not compared byte for byte: the committed entry
+/// reads it otherwise than by moving bytes ([`entry_not_clean`]), with what
+/// the learner saw. Err: the entry reads plain fields, yet the learner
+/// could not map them (a difference, not a reason).
+fn reply_not_comparable(
+    f: &fwlib32::spec::Func,
+    cl: &ClassLearnt,
+) -> Result<Option<String>, String> {
+    match (entry_not_clean(f), map_incomplete(cl)) {
+        (Some(e), Some(seen)) => Ok(Some(format!("{e}; learnt: {seen}"))),
+        (Some(e), None) => Ok(Some(e)),
+        (None, Some(seen)) => Err(format!(
+            "the entry reads plain fields, the learner could not map them: {seen}"
+        )),
+        (None, None) => Ok(None),
+    }
 }
 
 /// The committed entry against the draft: the differences, and per class
@@ -1317,8 +1364,11 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
         match (committed_words(f, s16, s15), &cl.form) {
             (Some(mut c), Some(learnt)) => {
                 for w in &mut c.2 {
-                    if let WordSrc::Arg(i) = w {
-                        *w = WordSrc::Arg(positions.get(*i).copied().unwrap_or(usize::MAX));
+                    let pos = |i: &usize| positions.get(*i).copied().unwrap_or(usize::MAX);
+                    match w {
+                        WordSrc::Arg(i) => *w = WordSrc::Arg(pos(i)),
+                        WordSrc::Nonzero(i, k) => *w = WordSrc::Nonzero(pos(i), *k),
+                        _ => {}
                     }
                 }
                 // a count capped by the entry's max: the same word for
@@ -1374,11 +1424,27 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
         }
 
         // The reply: what the committed entry moves for the same payload.
-        let why = reply_not_comparable(f, cl);
-        if let Some(w) = &why {
-            not_compared.push(format!("reply on {cname}: {w}"));
+        // Lookups: the bytes outside their members are compared.
+        let (why, lookups_only) = match reply_not_comparable(f, cl) {
+            Ok(w) => {
+                let lo = w.is_some() && !f.lookups.is_empty() && map_incomplete(cl).is_none();
+                (w, lo)
+            }
+            Err(e) => {
+                bad.push(format!("reply on {cname}: {e}"));
+                (Some(String::new()), false)
+            }
+        };
+        if let Some(w) = why.as_ref().filter(|w| !w.is_empty()) {
+            let rest = if lookups_only {
+                "; the bytes outside them compared"
+            } else {
+                ""
+            };
+            not_compared.push(format!("reply on {cname}: {w}{rest}"));
         }
-        if why.is_none() && cl.reply_len > 0 {
+        let compare_reply = why.is_none() || lookups_only;
+        if compare_reply && cl.reply_len > 0 {
             // each committed output's element type and C position
             let outs: Vec<(usize, Ty)> = f
                 .outs()
@@ -1412,12 +1478,34 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                     // what FANUC's library writes past it is flagged, and
                     // how many records a CNC sends is the CNC's.
                     // With a count, the caller's array holds what was asked.
+                    // A committed `char[N]` or `text[N]` output: N elements.
                     let n = if f.count().is_some() { cl.asked } else { 1 };
+                    let elems_of = |pos: usize| {
+                        let t = f.params.get(pos).and_then(|p| match p {
+                            fwlib32::spec::Param::Out(_, t) => Some(*t),
+                            _ => None,
+                        });
+                        t.and_then(|t| t.strip_suffix(']'))
+                            .and_then(|t| t.rsplit_once('['))
+                            .and_then(|(_, k)| k.parse::<usize>().ok())
+                            .unwrap_or(1)
+                    };
                     let room = |m: &(usize, usize, Src)| {
                         outs.iter()
                             .find(|o| o.0 == m.0)
-                            .is_some_and(|o| m.1 < n * o.1.size())
+                            .is_some_and(|o| m.1 < n * elems_of(o.0) * o.1.size())
                     };
+                    let spans = if lookups_only {
+                        outs.first()
+                            .map(|(p, t)| (*p, lookup_spans(f, t)))
+                            .unwrap_or((usize::MAX, Vec::new()))
+                    } else {
+                        (usize::MAX, Vec::new())
+                    };
+                    let looked_up = |m: &(usize, usize, Src)| {
+                        m.0 == spans.0 && spans.1.iter().any(|(o, k)| (*o..o + k).contains(&m.1))
+                    };
+                    let room = |m: &(usize, usize, Src)| room(m) && !looked_up(m);
                     let mut me: Vec<_> = moves(&e).into_iter().filter(room).collect();
                     let mut ml: Vec<_> = moves(&cl.reply).into_iter().filter(room).collect();
                     // A member zeroed on a condition of another (the coded
@@ -1452,14 +1540,57 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                             });
                         bad.push(format!("reply on {cname}: {first}"));
                     }
+                    // Bytes written as 0 off the wire (a string's NUL, a
+                    // text member's rest): the entry's zero fields. A
+                    // member zeroed on a condition is left out.
+                    let zu = f.zero_unless.as_ref().and_then(|z| {
+                        let (p, t) = outs.first()?;
+                        let (o, mt) = member(t, z.zero)?;
+                        Some((*p, o, mt.size()))
+                    });
+                    let keep = |z: &(usize, usize)| {
+                        room(&(z.0, z.1, Src::Kept))
+                            && zu.is_none_or(|(p, o, n)| !(z.0 == p && (o..o + n).contains(&z.1)))
+                    };
+                    match committed_zeros(f, &elems) {
+                        Ok(cz) => {
+                            let mut cz: Vec<(usize, usize)> = cz
+                                .into_iter()
+                                .map(|(o, b)| (outs.get(o).map_or(usize::MAX, |x| x.0), b))
+                                .filter(keep)
+                                .collect();
+                            let mut lz: Vec<(usize, usize)> =
+                                cl.zeros.iter().copied().filter(keep).collect();
+                            cz.sort();
+                            lz.sort();
+                            if cz != lz {
+                                let only = |a: &[(usize, usize)], b: &[(usize, usize)]| {
+                                    a.iter()
+                                        .filter(|x| !b.contains(x))
+                                        .take(4)
+                                        .copied()
+                                        .collect::<Vec<_>>()
+                                };
+                                bad.push(format!(
+                                    "zeroed bytes on {cname}: {} committed, {} learnt (committed only {:?}, learnt only {:?}; (argument, byte))",
+                                    cz.len(),
+                                    lz.len(),
+                                    only(&cz, &lz),
+                                    only(&lz, &cz)
+                                ));
+                            }
+                        }
+                        Err(e) => bad.push(format!("zeroed bytes on {cname}: {e}")),
+                    }
                 }
                 Err(e) => bad.push(format!("reply on {cname}: committed entry unreadable: {e}")),
             }
         } else if why.is_none() && (!f.reply.is_empty() || f.records.is_some()) {
             bad.push(format!("reply on {cname}: not mapped"));
         }
-        // Arguments written back into outputs.
-        if cl.reply_len > 0 && why.is_none() {
+        // Arguments written back into outputs (the zero fields compared
+        // above; the last number answered, `LAST`, as no argument).
+        if cl.reply_len > 0 && compare_reply {
             let out_pos = |o: u8| {
                 f.outs()
                     .nth(o as usize)
@@ -1469,7 +1600,7 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                 .reply
                 .iter()
                 .filter_map(|x| {
-                    let a = x.arg?;
+                    let a = x.arg.filter(|a| *a != fwlib32::spec::ZERO)?;
                     Some((
                         out_pos(x.out),
                         x.to.unwrap_or("").to_string(),
@@ -1480,7 +1611,13 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
             let mut got: Vec<(Option<usize>, String, Option<usize>)> = cl
                 .echoes
                 .iter()
-                .map(|(o, path, _, k)| (Some(*o), member_name(path), Some(*k)))
+                .map(|(o, path, _, k)| {
+                    (
+                        Some(*o),
+                        member_name(path),
+                        Some(*k).filter(|k| *k != LAST_ECHO),
+                    )
+                })
                 .collect();
             want.sort();
             got.sort();
