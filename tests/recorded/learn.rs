@@ -614,7 +614,7 @@ fn zeroed_bytes_are_zero_fields() {
         ],
         ..COMMAND
     };
-    assert_eq!(committed_zeros(&F, &[thing()]).unwrap(), zb);
+    assert_eq!(committed_zeros(&F, &[thing()], 3, usize::MAX).unwrap(), zb);
     // a zero field is no echo and moves no reply byte
     assert_eq!(
         moves(&expected(&F, &[thing()], 3, usize::MAX).unwrap()).len(),

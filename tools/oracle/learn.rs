@@ -47,6 +47,8 @@ const CLASSES: [(&str, &str); 3] = [("v3", "S30"), ("v2", "S16"), ("s15", "S15")
 /// The punch press forms of the 30i and 16i classes (no Series 15 one).
 const PUNCH: [(&str, &str); 2] = [("v3pu", "S30"), ("v2pu", "S16")];
 const BUF: usize = 65536;
+/// FANUC's socket error: a connection's trouble, never a local check.
+const EW_SOCKET: i64 = -16;
 /// How long one call may take before the probe is ended.
 const CALL_LIMIT: Duration = Duration::from_secs(6);
 
@@ -289,10 +291,6 @@ fn conv_of(t: &Ty) -> fn(i64) -> i32 {
     }
 }
 
-/// The argument of a learnt echo that is the last number answered (the
-/// table's `last`: number argument 0 plus the records written, less one).
-const LAST_ECHO: usize = usize::MAX - 1;
-
 /// The length of the C string a `char *` or `void *` argument holds (its
 /// 0 byte reads as kept in the reply map).
 const STRING: usize = 32;
@@ -338,7 +336,10 @@ fn command(name: &str, sh: &Shape, s: &Setup) -> String {
         match (a, sh.regions[i]) {
             (Arg::Num(_), _) => c.push_str(&format!(" {}", s.vals[i])),
             (Arg::IntPtr(t), Some((off, _))) => {
-                c.push_str(&format!(" @{off}={}", hex(&native(t, s.vals[i]))))
+                let b = s.fill_ptr[i]
+                    .clone()
+                    .unwrap_or_else(|| native(t, s.vals[i]));
+                c.push_str(&format!(" @{off}={}", hex(&b)))
             }
             (Arg::Ptr(_), Some((off, span))) => match &s.fill_ptr[i] {
                 Some(b) => c.push_str(&format!(" @{off}={}", hex(b))),
@@ -352,6 +353,21 @@ fn command(name: &str, sh: &Shape, s: &Setup) -> String {
         }
     }
     c
+}
+
+/// A plain input: each integer of `t` `w` (little-endian, cut to its
+/// size), the rest 0.
+fn plain_fill(t: &Ty, w: i64) -> Vec<u8> {
+    let mut b = vec![0u8; t.size()];
+    let mut lv = Vec::new();
+    leaves(t, 0, "", &mut lv);
+    for l in lv {
+        let size = l.ty.size();
+        if l.ty.int().is_some() && l.off + size <= b.len() {
+            b[l.off..l.off + size].copy_from_slice(&w.to_le_bytes()[..size]);
+        }
+    }
+    b
 }
 
 /// The data requests of a call as subpackets.
@@ -394,6 +410,7 @@ const EDGES: &[i64] = &[
 ];
 
 /// What was learnt of one function on one class.
+#[derive(Default)]
 struct ClassLearnt {
     form: Option<DForm>,
     checks: Vec<LearntCheck>,
@@ -421,6 +438,16 @@ struct ClassLearnt {
     /// The leaves all of whose bytes are such zeros: (output's argument,
     /// leaf, C integer).
     zero_leaves: Vec<(usize, String, Int)>,
+    /// A leaf learnt as the first number plus this (`LAST_ECHO`): the
+    /// records the coded reply held, less one, when it is the last
+    /// number answered.
+    last_plus: Option<i64>,
+    /// Each pointer's plain contents (an input's integers set alike), if
+    /// not its fill.
+    base_fill: Vec<Option<Vec<u8>>>,
+    /// No request on any class: the integers the call writes, whatever
+    /// the fill (output's argument, leaf, value).
+    local: Option<Vec<(usize, String, i64)>>,
     flags: Vec<String>,
 }
 
@@ -456,10 +483,18 @@ fn learn_class(
         }
         let again = sess.call(0xCC, &cmd, None);
         if traffic(&again) {
-            sess.stateful = true;
+            // a socket error is no state kept (the fake CNC busy)
+            sess.stateful |= c.ret != Some(EW_SOCKET);
             return again;
         }
-        c
+        // A socket error is never a local check: once more.
+        if again.ret == Some(EW_SOCKET) && !again.crashed {
+            let third = sess.call(0xCC, &cmd, None);
+            if traffic(&third) || third.ret != Some(EW_SOCKET) {
+                return third;
+            }
+        }
+        again
     };
     let mut c0 = run(sess, &base);
     if c0.missing {
@@ -469,21 +504,71 @@ fn learn_class(
         return Err("crashed on the plain call".into());
     }
     // No traffic: find values of each number that send something.
+    // The values tried: small and large ones, and the size of each
+    // pointer's pointee (a length in bytes the library checks against
+    // the struct it reads), then the same with every input pointer's
+    // integers 1 (a plain input: the caller's struct filled, not 0xCC).
     if !traffic(&c0) {
-        'search: for i in 0..n {
-            if matches!(sh.args[i], Arg::Ptr(_)) {
-                continue;
+        let mut values: Vec<i64> = vec![0, 4, 100, 1000, -1, 10, 2, 32767];
+        for a in &sh.args {
+            if let Arg::Ptr(t) = a {
+                let size = t.size() as i64;
+                for v in [size, 2 * size] {
+                    if v > 1 && !values.contains(&v) {
+                        values.push(v);
+                    }
+                }
             }
-            for v in [0, 4, 100, 1000, -1, 10, 2, 32767] {
-                let mut s = base.clone();
-                s.vals[i] = v;
-                let c = run(sess, &s);
+        }
+        // every integer of the inputs w: 1, then numbers a caller's
+        // struct may need (a variable number, a range's start and end)
+        let mut starts = vec![base.clone()];
+        for w in [1, 100, 1000, 10000, 0] {
+            let mut plain_in = base.clone();
+            for (i, a) in sh.args.iter().enumerate() {
+                if let (Arg::Ptr(t), Some((_, span))) = (a, sh.regions[i]) {
+                    if !is_bytes(a) && t.size() <= span.min(4096) {
+                        plain_in.fill_ptr[i] = Some(plain_fill(t, w));
+                    }
+                }
+            }
+            if plain_in.fill_ptr.iter().any(Option::is_some) {
+                starts.push(plain_in);
+            }
+        }
+        'search: for (k, start) in starts.iter().enumerate() {
+            if k > 0 {
+                let c = run(sess, start);
                 if traffic(&c) {
-                    base = s;
+                    base = start.clone();
                     c0 = c;
                     break 'search;
                 }
             }
+            for i in 0..n {
+                if matches!(sh.args[i], Arg::Ptr(_)) {
+                    continue;
+                }
+                for &v in &values {
+                    let mut s = start.clone();
+                    s.vals[i] = v;
+                    let c = run(sess, &s);
+                    if std::env::var_os("ORACLE_LEARN_SWEEP").is_some() {
+                        eprintln!("plain search: {} -> {:?}", command(name, sh, &s), c.ret);
+                    }
+                    if traffic(&c) {
+                        base = s;
+                        c0 = c;
+                        break 'search;
+                    }
+                }
+            }
+        }
+        if base.fill_ptr.iter().any(Option::is_some) {
+            flags.push(
+                "plain call: the input's integers set alike (filled with 0xCC it sent nothing)"
+                    .into(),
+            );
         }
     }
     if sess.slow > 0 {
@@ -512,17 +597,34 @@ fn learn_class(
             continue;
         }
         let b = base.vals[i];
-        for v in [b + 1, b + 2, b - 1, b + 5] {
-            let mut s = base.clone();
-            s.vals[i] = v;
-            let c = run(sess, &s);
-            if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
-                if sub.cmd == first.cmd {
-                    runs.push(WordRun {
-                        args: s.vals.clone(),
-                        words: sub.words,
-                        payload_len: sub.payload.len(),
-                    });
+        // Each value alone; when fewer than two sent the request (the
+        // others' checks refuse them: a range's start past its end), again
+        // with the other numbers raised to 10 and 100.
+        let mut sent = 0;
+        for ctx in [None, Some(10), Some(100)] {
+            if ctx.is_some() && sent >= 2 {
+                break;
+            }
+            for v in [b + 1, b + 2, b - 1, b + 5] {
+                let mut s = base.clone();
+                if let Some(x) = ctx {
+                    for (j, a) in sh.args.iter().enumerate() {
+                        if j != i && !matches!(a, Arg::Ptr(_)) {
+                            s.vals[j] = s.vals[j].max(x);
+                        }
+                    }
+                }
+                s.vals[i] = v;
+                let c = run(sess, &s);
+                if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
+                    if sub.cmd == first.cmd {
+                        sent += 1;
+                        runs.push(WordRun {
+                            args: s.vals.clone(),
+                            words: sub.words,
+                            payload_len: sub.payload.len(),
+                        });
+                    }
                 }
             }
         }
@@ -621,16 +723,79 @@ fn learn_class(
             more
         ));
     }
+    // A plain input (its integers set alike for the plain call): each
+    // integer member varied alone; a word the plain call saw constant
+    // that follows it is that member (`Word::Input`).
+    for i in 0..n {
+        let (Some(pf), Arg::Ptr(t)) = (base.fill_ptr[i].clone(), &sh.args[i]) else {
+            continue;
+        };
+        let mut lv = Vec::new();
+        leaves(t, 0, "", &mut lv);
+        let mut evidence = Vec::new();
+        for l in lv.iter().filter(|l| l.ty.int().is_some()) {
+            let size = l.ty.size();
+            let Some(ci) = l.ty.int() else { continue };
+            let at = le_value(&pf[l.off..l.off + size], true);
+            let mut seen: Vec<(i64, [i32; 5], bool)> = vec![(at, first.words, false)];
+            for v in [at + 1, at + 2, at - 1, at + 5] {
+                // alone, then with the other integers raised to it (a
+                // range's end past its new start)
+                for raise in [false, true] {
+                    let mut s = base.clone();
+                    let mut b = pf.clone();
+                    if raise {
+                        for o in lv.iter().filter(|o| o.ty.int().is_some()) {
+                            let z = o.ty.size();
+                            let was = le_value(&b[o.off..o.off + z], true);
+                            if was < v {
+                                b[o.off..o.off + z].copy_from_slice(&v.to_le_bytes()[..z]);
+                            }
+                        }
+                    }
+                    b[l.off..l.off + size].copy_from_slice(&v.to_le_bytes()[..size]);
+                    s.fill_ptr[i] = Some(b);
+                    let c = run(sess, &s);
+                    if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
+                        if sub.cmd == first.cmd {
+                            seen.push((ci.cut(v), sub.words, raise));
+                            break;
+                        }
+                    }
+                }
+            }
+            if seen.len() >= 2 {
+                evidence.push((l.path.clone(), seen));
+            }
+        }
+        // a word follows a member when every run of it does; of several
+        // members (raised together), the one seen varied alone most
+        for (k, w) in form.words.iter_mut().enumerate() {
+            if !matches!(w, WordSrc::Const(_)) {
+                continue;
+            }
+            let best = evidence
+                .iter()
+                .filter(|(_, seen)| seen.iter().all(|(v, ws, _)| ws[k] as i64 == *v))
+                .max_by_key(|(_, seen)| seen.iter().filter(|r| !r.2).count());
+            if let Some((path, _)) = best {
+                *w = WordSrc::Input(path.clone());
+            }
+        }
+    }
     // Inputs: each pointer's bytes position-coded; the request bytes from it.
     let mut payload = Vec::new();
     let mut inputs = Vec::new();
     let mut texts = Vec::new();
     let base_req = req_bytes(&first);
     for i in 0..n {
+        // a pointer to an integer that no request word carries may be an
+        // input too (a write's array of shorts)
         let (Some((_, span)), ty) = (
             sh.regions[i],
             match &sh.args[i] {
                 Arg::Ptr(t) => t.clone(),
+                Arg::IntPtr(t) if !form.words.contains(&WordSrc::Arg(i)) => t.clone(),
                 _ => continue,
             },
         ) else {
@@ -751,6 +916,7 @@ fn learn_class(
     let mut reply_len = 0;
     let mut echoes = Vec::new();
     let mut zeros = Vec::new();
+    let mut last_plus = None;
     let mut zero_leaves: Vec<(usize, String, Int)> = Vec::new();
     let asked = sh
         .args
@@ -838,8 +1004,20 @@ fn learn_class(
                 for &i in &ptrs {
                     let (off, span) = sh.regions[i].unwrap();
                     let cut = |v: &Vec<u8>| v[off..off + span].to_vec();
-                    let region: [[Vec<u8>; 2]; PASSES] =
+                    let mut region: [[Vec<u8>; 2]; PASSES] =
                         std::array::from_fn(|p| [cut(&o[p][0]), cut(&o[p][1])]);
+                    // a plain input's bytes left as they were read as kept
+                    if let Some(pf) = accepted.as_ref().and_then(|a| a.2.fill_ptr[i].as_ref()) {
+                        for (k, b) in pf.iter().enumerate() {
+                            let same = region.iter().flatten().all(|r| r.get(k) == Some(b));
+                            if same {
+                                for r in &mut region {
+                                    r[0][k] = 0xCC;
+                                    r[1][k] = 0x33;
+                                }
+                            }
+                        }
+                    }
                     let mut map = map_bytes(&region);
                     if is_bytes(&sh.args[i]) && map.get(STRING) == Some(&Src::Const(0)) {
                         map[STRING] = Src::Kept; // the string's end, as passed
@@ -917,28 +1095,57 @@ fn learn_class(
                             continue;
                         };
                         let value = le_value(&consts, matches!(c, Int::I8 | Int::I16 | Int::I32));
+                        // the argument itself, or (the first number) plus
+                        // the records written less one: the last number
+                        // answered
+                        let first_num = sh.args.iter().position(|a| matches!(a, Arg::Num(_)));
+                        let mut cands = Vec::new();
                         for (k, a) in sh.args.iter().enumerate() {
                             let Arg::Num(t) = a else { continue };
-                            if conv_of(t)(setup.vals[k]) as i64 != value {
-                                continue;
+                            let v = conv_of(t)(setup.vals[k]) as i64;
+                            if v == value {
+                                cands.push((k, 0, k));
                             }
+                            if Some(k) == first_num && value > v && value - v < 0x8000 {
+                                cands.push((k, value - v, LAST_ECHO));
+                            }
+                        }
+                        'cand: for (k, plus, as_k) in cands {
+                            let Arg::Num(t) = &sh.args[k] else { continue };
                             let mut s2 = setup.clone();
                             s2.vals[k] += 2;
-                            let c2 = sess.call(
-                                0xCC,
-                                &command(name, sh, &s2),
-                                Some(fake_reply::coded(len, 0, pin)),
-                            );
-                            let (off, _) = sh.regions[i].unwrap();
-                            let got = c2.b0.get(off + l.off..off + l.off + consts.len());
-                            let want = conv_of(t)(s2.vals[k]) as i64;
-                            if c2.ret == Some(0)
-                                && got.is_some_and(|g| le_value(g, value < 0 || want < 0) == want)
-                            {
-                                echoes.push((i, l.path.clone(), c, k));
-                                let prefix = format!("out {i} {}: ", l.path);
-                                odd.retain(|o| !o.starts_with(&prefix));
-                                break;
+                            // refused locally: the other numbers raised too
+                            // (a range's end past its new start)
+                            let mut s3 = s2.clone();
+                            for (j, a) in sh.args.iter().enumerate() {
+                                if j != k && matches!(a, Arg::Num(_)) {
+                                    s3.vals[j] = s3.vals[j].max(s2.vals[k]);
+                                }
+                            }
+                            for s2 in [s2, s3] {
+                                let c2 = sess.call(
+                                    0xCC,
+                                    &command(name, sh, &s2),
+                                    Some(fake_reply::coded(len, 0, pin)),
+                                );
+                                let (off, _) = sh.regions[i].unwrap();
+                                let got = c2.b0.get(off + l.off..off + l.off + consts.len());
+                                let want = conv_of(t)(s2.vals[k]) as i64 + plus;
+                                if c2.ret == Some(0)
+                                    && got
+                                        .is_some_and(|g| le_value(g, value < 0 || want < 0) == want)
+                                {
+                                    echoes.push((i, l.path.clone(), c, as_k));
+                                    if as_k == LAST_ECHO {
+                                        last_plus = Some(plus);
+                                    }
+                                    let prefix = format!("out {i} {}: ", l.path);
+                                    odd.retain(|o| !o.starts_with(&prefix));
+                                    break 'cand;
+                                }
+                                if c2.ret == Some(0) {
+                                    break;
+                                }
                             }
                         }
                     }
@@ -983,7 +1190,69 @@ fn learn_class(
         echoes,
         zeros,
         zero_leaves,
+        last_plus,
+        base_fill: base.fill_ptr.clone(),
+        local: None,
         flags,
+    })
+}
+
+/// A function that sends nothing on any class and returns EW_OK: what its
+/// plain call writes into each output (filled 0xCC, then 0x33), the
+/// integers written whatever the fill.
+fn learn_local(sess: &mut Session, name: &str, sh: &Shape) -> Result<ClassLearnt, String> {
+    let n = sh.args.len();
+    let base = Setup {
+        vals: sh
+            .args
+            .iter()
+            .map(|a| if matches!(a, Arg::IntPtr(_)) { 4 } else { 1 })
+            .collect(),
+        fill_ptr: vec![None; n],
+    };
+    let cmd = command(name, sh, &base);
+    let a = sess.call(0xCC, &cmd, None);
+    let b = sess.call(0x33, &cmd, None);
+    if traffic(&a) || traffic(&b) || a.ret != Some(0) || b.ret != Some(0) {
+        return Err("a local answer on one call, not on the next".into());
+    }
+    let mut values = Vec::new();
+    let mut outputs = Vec::new();
+    for (i, arg) in sh.args.iter().enumerate() {
+        let (Some((off, span)), Arg::Ptr(t) | Arg::IntPtr(t)) = (sh.regions[i], arg) else {
+            continue;
+        };
+        let region = |c: &Call| c.b0[off..off + span].to_vec();
+        let obs: [[Vec<u8>; 2]; PASSES] = std::array::from_fn(|_| [region(&a), region(&b)]);
+        let map = map_bytes(&obs);
+        let mut lv = Vec::new();
+        leaves(t, 0, "", &mut lv);
+        for l in lv {
+            let bytes: Option<Vec<u8>> = map
+                .get(l.off..l.off + l.ty.size())
+                .into_iter()
+                .flatten()
+                .map(|s| match s {
+                    Src::Const(v) => Some(*v),
+                    _ => None,
+                })
+                .collect();
+            if let (Some(b), Some(_)) = (bytes, l.ty.int()) {
+                if b.len() == l.ty.size() {
+                    values.push((i, l.path.clone(), le_value(&b, true)));
+                    if !outputs.contains(&i) {
+                        outputs.push(i);
+                    }
+                }
+            }
+        }
+    }
+    Ok(ClassLearnt {
+        base: base.vals,
+        outputs,
+        local: Some(values),
+        flags: vec!["no request on any class: a local answer".into()],
+        ..ClassLearnt::default()
     })
 }
 
@@ -1029,6 +1298,24 @@ fn learn(
                 classes = &PUNCH;
                 continue;
             }
+            // No request on any class, EW_OK: a local answer, its
+            // outputs learnt on each class.
+            Err(e)
+                if per.is_empty()
+                    && machine
+                        .as_deref()
+                        .is_some_and(|m| m.starts_with("no traffic (returns 0 "))
+                    && e.starts_with("no traffic (returns 0 ") =>
+            {
+                for (class, cname) in CLASSES {
+                    let mut s = Session::new(probe_exe, lib, class);
+                    let l = learn_local(&mut s, name, &sh);
+                    *calls += s.calls;
+                    per.push((cname, l?));
+                }
+                machine = None;
+                break;
+            }
             Err(e) if per.is_empty() => return Err(machine.unwrap_or(e)),
             // a local answer on this class: no form for it
             Err(e) if e.starts_with("no traffic") => local.push(format!("on {class}: {e}")),
@@ -1066,6 +1353,8 @@ fn learn(
                 if in_word {
                     numbers.push(i);
                     DParam::Count(pname)
+                } else if l30.inputs.contains(&i) {
+                    DParam::In(pname, c_name(t, &spelled))
                 } else {
                     DParam::Out(pname, c_name(t, &spelled))
                 }
@@ -1123,6 +1412,8 @@ fn learn(
             _ => 2,
         });
         d.forms = v;
+    } else if forms.is_empty() {
+        // a local answer: no request on any class
     } else if forms.iter().all(|f| same(&f.1, &forms[0].1)) {
         d.forms.push(renumber(&forms[0].1));
     } else if forms.len() == 2 {
@@ -1385,6 +1676,44 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                     bad.push(format!("request on {cname}: {e}"));
                 }
             }
+            // a local answer: no form, the entry's learnt figures written
+            (None, None) => {
+                let local = f.local.filter(|l| l.classes.matches(s16, s15));
+                match (local, &cl.local) {
+                    (Some(lo), Some(got)) => {
+                        let fields = f.reply.iter().filter(|x| x.to.is_some());
+                        for (fld, what) in fields.zip(lo.values) {
+                            let want = match what {
+                                fwlib32::spec::Learnt::PmcUnit => 1,
+                                fwlib32::spec::Learnt::MaxSpindles => {
+                                    not_compared.push(format!(
+                                        "local answer on {cname}: the CNC's maximum spindles (learnt at connect)"
+                                    ));
+                                    continue;
+                                }
+                            };
+                            let pos = f
+                                .outs()
+                                .nth(usize::from(fld.out))
+                                .and_then(|(n, _)| f.params.iter().position(|p| p.name() == n));
+                            let path = fld.to.unwrap_or("");
+                            let learnt = got
+                                .iter()
+                                .find(|(o, p, _)| Some(*o) == pos && member_name(p) == path)
+                                .map(|x| fld.c.cut(x.2));
+                            if learnt != Some(want) {
+                                bad.push(format!(
+                                    "local answer on {cname}: {path:?} learnt {learnt:?}, committed {want}"
+                                ));
+                            }
+                        }
+                    }
+                    _ => bad.push(format!(
+                        "request on {cname}: none learnt (a local answer), the entry's local answer {}",
+                        if local.is_some() { "learnt no output" } else { "does not cover this class" }
+                    )),
+                }
+            }
             (c, _) => bad.push(format!("request on {cname}: committed {c:?}")),
         }
         let convs: Vec<fn(i64) -> i32> = proto.params[1..]
@@ -1400,10 +1729,43 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
         // argument changed (its checks, an order check included, the ends
         // of its ranges; traffic where its first request goes)
         let at = |p: usize, v: i64| convs.get(p).map_or(v as i32, |c| c(v));
-        let plain: Vec<i32> = positions
+        let mut plain: Vec<i32> = positions
             .iter()
             .map(|&p| cl.base.get(p).map_or(0, |v| at(p, *v)))
             .collect();
+        // the input members a request word carries, as the plain call's
+        // input held them (the call's arguments after its numbers)
+        if let Some((n, _)) = f.input() {
+            let pos = f.params.iter().position(|p| p.name() == n);
+            let fill = pos.and_then(|p| cl.base_fill.get(p).cloned().flatten());
+            let ty = pos.and_then(|p| match &proto.params.get(p + 1)?.0 {
+                Ty::Ptr(t) => Some((**t).clone()),
+                _ => None,
+            });
+            for (m, c) in f.inputs() {
+                let v = match (&fill, &ty) {
+                    (Some(b), Some(t)) => member(t, m)
+                        .and_then(|(o, mt)| b.get(o..o + mt.size()))
+                        .map_or(0, |b| c.cut(le_value(b, true)) as i32),
+                    // filled with 0xCC
+                    _ => c.cut(le_value(&[0xCC; 4], true)) as i32,
+                };
+                plain.push(v);
+            }
+        }
+        // the input's record size (its records' member's element)
+        let room_elem = f
+            .input()
+            .and_then(|(n, _)| f.params.iter().position(|p| p.name() == n))
+            .and_then(|p| match &proto.params.get(p + 1)?.0 {
+                Ty::Ptr(t) => Some((**t).clone()),
+                _ => None,
+            })
+            .and_then(|t| member(&t, f.payload_in))
+            .map_or(0, |(_, t)| match t {
+                Ty::Array(e, _) => e.size(),
+                t => t.size(),
+            });
         let answer = |p: usize, v: i64| {
             let mut a = plain.clone();
             if let Some(k) = positions.iter().position(|&q| q == p) {
@@ -1415,8 +1777,18 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                 Some(code)
             } else if f.sends_first(&a, s16, s15) {
                 None
+            } else if let Some(code) = f.refusal(&a, s16, s15, true) {
+                Some(code)
             } else {
-                f.refusal(&a, s16, s15, true)
+                // a range write's room before its first request
+                // (Pages::room: head + the first page's records, the
+                // input's element size each, within the caller's bytes)
+                let pg = f.pages?;
+                let (r, head) = pg.room?;
+                let k = f.span_cut(&a, s16, s15)?.min(f.per_page()?);
+                let room = a.get(usize::from(r)).copied()?;
+                (usize::from(head) + k * room_elem > room.max(0) as usize)
+                    .then_some(fwlib32::ew::EW_LENGTH)
             }
         };
         if let Err(e) = same_answers_by(&cl.observed, answer) {
@@ -1491,9 +1863,15 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                             .unwrap_or(1)
                     };
                     let room = |m: &(usize, usize, Src)| {
-                        outs.iter()
-                            .find(|o| o.0 == m.0)
-                            .is_some_and(|o| m.1 < n * elems_of(o.0) * o.1.size())
+                        outs.iter().find(|o| o.0 == m.0).is_some_and(|o| {
+                            // a `char *` the entry reads as `char[N]`
+                            let k = if matches!(o.1, Ty::Int { .. }) {
+                                elems_of(o.0)
+                            } else {
+                                1
+                            };
+                            m.1 < n * k * o.1.size()
+                        })
                     };
                     let spans = if lookups_only {
                         outs.first()
@@ -1552,7 +1930,7 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                         room(&(z.0, z.1, Src::Kept))
                             && zu.is_none_or(|(p, o, n)| !(z.0 == p && (o..o + n).contains(&z.1)))
                     };
-                    match committed_zeros(f, &elems) {
+                    match committed_zeros(f, &elems, cl.reply_len, asked) {
                         Ok(cz) => {
                             let mut cz: Vec<(usize, usize)> = cz
                                 .into_iter()
@@ -1585,7 +1963,8 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                 }
                 Err(e) => bad.push(format!("reply on {cname}: committed entry unreadable: {e}")),
             }
-        } else if why.is_none() && (!f.reply.is_empty() || f.records.is_some()) {
+        } else if why.is_none() && cl.form.is_some() && (!f.reply.is_empty() || f.records.is_some())
+        {
             bad.push(format!("reply on {cname}: not mapped"));
         }
         // Arguments written back into outputs (the zero fields compared
@@ -1621,6 +2000,19 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                 .collect();
             want.sort();
             got.sort();
+            // the last number answered: the first number plus the records
+            // the entry reads from the coded reply, less one
+            let has_last = f.reply.iter().any(|x| x.arg == Some(fwlib32::spec::LAST));
+            if let (true, Some(plus), Some(r)) = (has_last, cl.last_plus, &f.records) {
+                let fixed: usize = f.reply.iter().map(|x| x.wire_len()).sum();
+                let n = (cl.reply_len.saturating_sub(fixed) / r.wire_len().max(1))
+                    .min(usize::from(r.max));
+                if plus + 1 != n as i64 {
+                    bad.push(format!(
+                        "last number answered on {cname}: learnt the first number + {plus}, the entry reads {n} records"
+                    ));
+                }
+            }
             if want != got {
                 bad.push(format!(
                     "echoed arguments on {cname}: committed {want:?}, learnt {got:?}"
@@ -1643,21 +2035,37 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                     Ty::Ptr(t) => (**t).clone(),
                     t => t.clone(),
                 });
-            match elem
-                .ok_or("no input")
-                .and_then(|e| expected_payload(f, &e).map_err(|_| "committed payload unreadable"))
-            {
-                Ok(e) => {
-                    let (me, ml) = (payload_moves(&e), payload_moves(&cl.payload));
-                    if me != ml {
-                        bad.push(format!(
-                            "payload on {cname}: committed {} bytes, learnt {} ({ty})",
-                            me.len(),
-                            ml.len()
-                        ));
+            let values = f.payload.as_ref().is_some_and(|p| {
+                p.fields
+                    .iter()
+                    .any(|x| x.wire == fwlib32::spec::Int::BaseExp)
+            });
+            let computed = !f.codes.is_empty();
+            if values || computed {
+                not_compared.push(format!(
+                    "payload on {cname}: {}",
+                    if values {
+                        "value records: digits and decimal places converted, not bytes moved"
+                    } else {
+                        "fields computed from the input (Func::codes), not bytes moved"
                     }
+                ));
+            } else {
+                match elem.ok_or("no input").and_then(|e| {
+                    expected_payload(f, &e).map_err(|_| "committed payload unreadable")
+                }) {
+                    Ok(e) => {
+                        let (me, ml) = (payload_moves(&e), payload_moves(&cl.payload));
+                        if me != ml {
+                            bad.push(format!(
+                                "payload on {cname}: committed {} bytes, learnt {} ({ty})",
+                                me.len(),
+                                ml.len()
+                            ));
+                        }
+                    }
+                    Err(e) => bad.push(format!("payload on {cname}: {e}")),
                 }
-                Err(e) => bad.push(format!("payload on {cname}: {e}")),
             }
         }
         // Text fields: each C string's bytes from its field's offset, as

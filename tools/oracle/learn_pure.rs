@@ -885,26 +885,7 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
     }
     if let Some(r) = &f.records {
         let ty = outs.get(r.out as usize).ok_or("no output")?;
-        // `elem` spelled `T[N]`: each record an N-element array from the
-        // member on (consecutive `char name[N]` members, one a record).
-        let arr = r
-            .elem
-            .strip_suffix(']')
-            .and_then(|e| e.rsplit_once('['))
-            .and_then(|(_, n)| n.parse::<usize>().ok());
-        let (base, stride, elem_ty) = if r.to.is_empty() {
-            (0, ty.size(), ty.clone())
-        } else {
-            let (o, t) = member(ty, r.to).ok_or("no records member")?;
-            match (t, arr) {
-                // (a two-dimensional member's rows are the records already)
-                (Ty::Array(e, _), Some(n)) if !matches!(*e, Ty::Array(..)) => {
-                    (o, n * e.size(), Ty::Array(e, n))
-                }
-                (Ty::Array(e, _), _) => (o, e.size(), *e),
-                (t, _) => (o, t.size(), t),
-            }
-        };
+        let (base, stride, elem_ty) = records_at(r, ty)?;
         let rl = r.wire_len();
         let n = ((len - at.min(len)) / rl.max(1))
             .min(r.max as usize)
@@ -925,6 +906,31 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
         }
     }
     Ok(v)
+}
+
+/// Where a [`spec::Records`]' records go in its output `ty`: the first's
+/// offset, the stride, one record's type. `elem` spelled `T[N]`: each
+/// record an N-element array from the member on (consecutive `char
+/// name[N]` members, one a record).
+pub fn records_at(r: &spec::Records, ty: &Ty) -> Result<(usize, usize, Ty), String> {
+    let arr = r
+        .elem
+        .strip_suffix(']')
+        .and_then(|e| e.rsplit_once('['))
+        .and_then(|(_, n)| n.parse::<usize>().ok());
+    Ok(if r.to.is_empty() {
+        (0, ty.size(), ty.clone())
+    } else {
+        let (o, t) = member(ty, r.to).ok_or("no records member")?;
+        match (t, arr) {
+            // (a two-dimensional member's rows are the records already)
+            (Ty::Array(e, _), Some(n)) if !matches!(*e, Ty::Array(..)) => {
+                (o, n * e.size(), Ty::Array(e, n))
+            }
+            (Ty::Array(e, _), _) => (o, e.size(), *e),
+            (t, _) => (o, t.size(), t),
+        }
+    })
 }
 
 /// Placed integers as the bytes they move: (out, out byte) ← reply byte,
@@ -1032,6 +1038,10 @@ pub struct DForm {
     /// More than one subpacket or frame: only the first is described.
     pub more: usize,
 }
+
+/// The argument of a learnt echo that is the last number answered (the
+/// table's `last`: number argument 0 plus the records written, less one).
+pub const LAST_ECHO: usize = usize::MAX - 1;
 
 /// A draft table entry.
 #[derive(Debug, Clone, Default)]
@@ -1265,6 +1275,15 @@ impl Draft {
                 } else {
                     format!(" /* output {o} */")
                 };
+                if *k == LAST_ECHO {
+                    let _ = writeln!(
+                        s,
+                        "            last({:?}, {}),{o}",
+                        member_of(path),
+                        int_name(*c)
+                    );
+                    continue;
+                }
                 let _ = writeln!(
                     s,
                     "            echo({k}, {:?}, {}),{o}",
@@ -1498,15 +1517,53 @@ pub fn member_at(ty: &Ty, path: &str, elem: usize) -> Option<usize> {
 /// The output bytes the committed entry writes as 0 off the wire (its
 /// [`spec::ZERO`] fields: a string's NUL, a text member's rest): (output
 /// index among the outputs, byte offset), sorted.
-pub fn committed_zeros(f: &Func, outs: &[Ty]) -> Result<Vec<(usize, usize)>, String> {
+pub fn committed_zeros(
+    f: &Func,
+    outs: &[Ty],
+    len: usize,
+    asked: usize,
+) -> Result<Vec<(usize, usize)>, String> {
     let mut v = Vec::new();
-    for fld in f.reply.iter().filter(|x| x.arg == Some(spec::ZERO)) {
-        let Some(m) = fld.to else { continue };
-        let ty = outs.get(fld.out as usize).ok_or("no output")?;
+    let zero = |fld: &spec::Field, ty: &Ty, base: usize, v: &mut Vec<(usize, usize)>| {
+        let Some(m) = fld.to.filter(|_| fld.arg == Some(spec::ZERO)) else {
+            return Ok(());
+        };
         let size = fld.c.size();
         let off = member_at(ty, m, size).ok_or_else(|| format!("no member {m:?}"))?;
         for b in 0..fld.n as usize * size {
-            v.push((fld.out as usize, off + b));
+            v.push((fld.out as usize, base + off + b));
+        }
+        Ok::<(), String>(())
+    };
+    for fld in f.reply {
+        if fld.arg == Some(spec::ZERO) {
+            zero(
+                fld,
+                outs.get(fld.out as usize).ok_or("no output")?,
+                0,
+                &mut v,
+            )?;
+        }
+    }
+    // each record's zero fields, for the records the reply holds
+    if let Some(r) = &f.records {
+        if r.fields.iter().any(|x| x.arg == Some(spec::ZERO)) {
+            let ty = outs.get(r.out as usize).ok_or("no output")?;
+            let (base, stride, elem_ty) = records_at(r, ty)?;
+            let at: usize = f.reply.iter().map(|x| x.wire_len()).sum();
+            let n = ((len - at.min(len)) / r.wire_len().max(1))
+                .min(r.max as usize)
+                .min(asked);
+            for k in 0..n {
+                for fld in r.fields {
+                    let mut one = Vec::new();
+                    zero(fld, &elem_ty, 0, &mut one)?;
+                    v.extend(
+                        one.into_iter()
+                            .map(|(_, b)| (r.out as usize, base + k * stride + b)),
+                    );
+                }
+            }
         }
     }
     v.sort();
