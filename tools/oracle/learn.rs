@@ -448,6 +448,9 @@ struct ClassLearnt {
     /// No request on any class: the integers the call writes, whatever
     /// the fill (output's argument, leaf, value).
     local: Option<Vec<(usize, String, i64)>>,
+    /// The last request subpacket's form when another command went before
+    /// it (an exchange first).
+    own_form: Option<DForm>,
     flags: Vec<String>,
 }
 
@@ -526,9 +529,12 @@ fn learn_class(
         for w in [1, 100, 1000, 10000, 0] {
             let mut plain_in = base.clone();
             for (i, a) in sh.args.iter().enumerate() {
+                // the caller's array: 16 such elements
                 if let (Arg::Ptr(t), Some((_, span))) = (a, sh.regions[i]) {
                     if !is_bytes(a) && t.size() <= span.min(4096) {
-                        plain_in.fill_ptr[i] = Some(plain_fill(t, w));
+                        let one = plain_fill(t, w);
+                        let k = (span.min(4096) / one.len().max(1)).clamp(1, 16);
+                        plain_in.fill_ptr[i] = Some(one.repeat(k));
                     }
                 }
             }
@@ -590,6 +596,23 @@ fn learn_class(
         words: first.words,
         payload_len: first.payload.len(),
     }];
+    // The call's last subpacket, when another command goes before it (an
+    // exchange: attributes read, a parameter per record): the function's
+    // own request, its words learnt as the first's.
+    let own = s0
+        .iter()
+        .flatten()
+        .last()
+        .filter(|l| l.cmd != first.cmd || l.class != first.class)
+        .cloned();
+    let mut own_runs: Vec<WordRun> = own
+        .iter()
+        .map(|o| WordRun {
+            args: base.vals.clone(),
+            words: o.words,
+            payload_len: o.payload.len(),
+        })
+        .collect();
     let mut observed = vec![Vec::new(); n];
     let mut checks = Vec::new();
     for i in 0..n {
@@ -616,6 +639,15 @@ fn learn_class(
                 }
                 s.vals[i] = v;
                 let c = run(sess, &s);
+                if let (Some(o), Some(l)) = (&own, data_subs(&c).iter().flatten().last()) {
+                    if l.cmd == o.cmd && l.class == o.class {
+                        own_runs.push(WordRun {
+                            args: s.vals.clone(),
+                            words: l.words,
+                            payload_len: l.payload.len(),
+                        });
+                    }
+                }
                 if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
                     if sub.cmd == first.cmd {
                         sent += 1;
@@ -717,6 +749,13 @@ fn learn_class(
         words,
         more,
     };
+    let own_form = own.as_ref().map(|o| DForm {
+        classes: "All",
+        class: o.class,
+        cmd: o.cmd,
+        words: learn_words(&own_runs, &convs),
+        more: 0,
+    });
     if more > 0 {
         flags.push(format!(
             "{} more subpackets or frames after the first",
@@ -1193,6 +1232,7 @@ fn learn_class(
         last_plus,
         base_fill: base.fill_ptr.clone(),
         local: None,
+        own_form,
         flags,
     })
 }
@@ -1611,9 +1651,12 @@ fn reply_not_comparable(
     f: &fwlib32::spec::Func,
     cl: &ClassLearnt,
 ) -> Result<Option<String>, String> {
+    let reads = !f.reply.is_empty() || f.records.is_some() || !f.lookups.is_empty();
     match (entry_not_clean(f), map_incomplete(cl)) {
         (Some(e), Some(seen)) => Ok(Some(format!("{e}; learnt: {seen}"))),
         (Some(e), None) => Ok(Some(e)),
+        // a write that reads nothing of its answer: no reply to map
+        (None, Some(_)) if !reads => Ok(None),
         (None, Some(seen)) => Err(format!(
             "the entry reads plain fields, the learner could not map them: {seen}"
         )),
@@ -1652,7 +1695,26 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
             "S16" => (true, false),
             _ => (true, true),
         };
-        match (committed_words(f, s16, s15), &cl.form) {
+        // An exchange before the function's own request on this class
+        // (a write block's attributes read, a parameter per record): the
+        // last request compared.
+        let exchange = f
+            .block
+            .and_then(|b| b.attributes)
+            .is_some_and(|c| c.matches(s16, s15))
+            || f.each.iter().any(|e| e.classes.matches(s16, s15));
+        let learnt_form = match (&cl.own_form, exchange) {
+            (Some(o), true) => {
+                not_compared.push(format!(
+                    "request on {cname}: an exchange goes first ({:#06x}, {}), the function's own request compared",
+                    cl.form.as_ref().map_or(0, |x| x.cmd),
+                    if f.each.is_empty() { "Block::attributes" } else { "Func::each" }
+                ));
+                Some(o.clone())
+            }
+            _ => cl.form.clone(),
+        };
+        match (committed_words(f, s16, s15), &learnt_form) {
             (Some(mut c), Some(learnt)) => {
                 for w in &mut c.2 {
                     let pos = |i: &usize| positions.get(*i).copied().unwrap_or(usize::MAX);

@@ -1390,8 +1390,9 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             None => WordSrc::Const(0),
         })
         .collect();
-    // text fields or records: the payload's length in the fifth word
-    if f.sends_payload() {
+    // text fields, records or a written block: the payload's length in
+    // the fifth word
+    if f.sends_payload() || f.block.is_some_and(|b| b.attributes.is_some()) {
         w[4] = WordSrc::Len;
     }
     Some((form.class, form.cmd, w))
