@@ -538,3 +538,139 @@ fn a_range_reads_ends_and_first_request_per_class() {
     assert_eq!(answer(&[1000, 1000, 52], true, false), None);
     assert_eq!(answer(&[-1, -1, 52], true, false), None);
 }
+
+/// A flag word: a constant for a nonzero argument, 0 for 0 (the table's
+/// `Word::Nonzero`), learnt as such and compared with the entry's.
+#[test]
+fn a_flag_word_for_a_nonzero_argument() {
+    let run = |a: i64, b: i64| WordRun {
+        args: vec![a, b],
+        words: [a as i32, 0, 0, 0, if b != 0 { 0x10000 } else { 0 }],
+        payload_len: 0,
+    };
+    let runs = vec![run(1, 1), run(2, 1), run(1, 2), run(1, 0), run(1, 6)];
+    let conv: [fn(i64) -> i32; 2] = [|v| v as i16 as i32, |v| v as i16 as i32];
+    let w = learn_words(&runs, &conv);
+    assert_eq!(w[0], WordSrc::Arg(0));
+    assert_eq!(w[4], WordSrc::Nonzero(1, 0x10000));
+    // without a run at 0 it is not told from a computed word
+    let w = learn_words(&runs[..3], &conv);
+    assert!(matches!(w[4], WordSrc::Const(0x10000)), "{w:?}");
+    const F: Func = Func {
+        name: "cnc_flag",
+        doc: "",
+        params: &[Param::Short("a"), Param::Short("b")],
+        forms: &[every_class(
+            1,
+            &[
+                fwlib32::spec::Word::Arg(0),
+                fwlib32::spec::Word::Const(0),
+                fwlib32::spec::Word::Const(0),
+                fwlib32::spec::Word::Const(0),
+                fwlib32::spec::Word::Nonzero(1, 0x10000),
+            ],
+        )],
+        ..COMMAND
+    };
+    let c = committed_words(&F, false, false).unwrap();
+    assert_eq!(c.2[4], WordSrc::Nonzero(1, 0x10000));
+    let learnt = DForm {
+        classes: "All",
+        class: 1,
+        cmd: 1,
+        words: learn_words(&runs, &conv),
+        more: 0,
+    };
+    assert_eq!(same_form(&learnt, &c), Ok(()));
+}
+
+/// Bytes written as 0 off the wire: a name's NUL after its characters.
+/// The learner finds the zero leaf (not the zero-extension of a moved
+/// integer) and the entry's `zero` field names the same bytes.
+#[test]
+fn zeroed_bytes_are_zero_fields() {
+    // name[0..3] from reply bytes 0..3, name[3] always 0; num from a
+    // 2-byte word (its high byte is no zero field: a moved short).
+    fn lib(reply: &[u8], out: &mut [u8]) {
+        out[12..15].copy_from_slice(&reply[0..3]);
+        out[15] = 0;
+        out[0] = reply[4];
+        out[1] = 0;
+    }
+    let map = map_bytes(&observe(lib));
+    let mut lv = Vec::new();
+    leaves(&thing(), 0, "", &mut lv);
+    let (zl, zb) = learnt_zeros(0, &map, &lv);
+    assert_eq!(zl, vec![("name[3]".to_string(), I8)]);
+    assert_eq!(zb, vec![(0, 15)]);
+    const F: Func = Func {
+        name: "cnc_thing",
+        doc: "",
+        params: &[Param::Out("thing", "ODBTHING")],
+        forms: &[every_class(1, &[])],
+        reply: &[
+            fwlib32::spec::text(3, "name"),
+            fwlib32::spec::zero("name[3]", I8),
+        ],
+        ..COMMAND
+    };
+    assert_eq!(committed_zeros(&F, &[thing()], 3, usize::MAX).unwrap(), zb);
+    // a zero field is no echo and moves no reply byte
+    assert_eq!(
+        moves(&expected(&F, &[thing()], 3, usize::MAX).unwrap()).len(),
+        3
+    );
+}
+
+/// A write's reply field read into no output (the records it did) needs no
+/// output; a typed block, value records, lookups, a count in the reply and
+/// several subpackets are why an entry's reply is not bytes moved.
+#[test]
+fn replies_that_do_not_map_say_why() {
+    const W: Func = Func {
+        name: "cnc_write",
+        doc: "",
+        params: &[Param::Short("a")],
+        forms: &[every_class(1, &[])],
+        reply: &[skip(I32)],
+        ..COMMAND
+    };
+    assert_eq!(expected(&W, &[], 4, usize::MAX), Ok(Vec::new()));
+    assert_eq!(entry_not_clean(&W), None);
+    let counted = Func {
+        counted: Some(0),
+        ..W
+    };
+    assert!(entry_not_clean(&counted).unwrap().contains("Func::counted"));
+    const VALUE: &[Field] = &[
+        fwlib32::spec::digits(0, "num"),
+        fwlib32::spec::places(0, "num"),
+    ];
+    let values = Func { reply: VALUE, ..W };
+    assert!(entry_not_clean(&values).unwrap().contains("value record"));
+    let more = Func {
+        more: &[&[fwlib32::spec::Word::Const(2)]],
+        ..W
+    };
+    assert!(entry_not_clean(&more).unwrap().contains("2 answers"));
+    // a lookup's bytes: its member on, its elements' integers
+    const LOOKUP: &[fwlib32::spec::Lookup] = &[fwlib32::spec::Lookup {
+        to: "u",
+        c: I16,
+        n: 2,
+        fill: -1,
+        key: fwlib32::spec::Key::Own,
+        end: 0xff,
+        pick: fwlib32::spec::Pick::Split {
+            mask: 0xf,
+            low: 0,
+            high: 0,
+        },
+    }];
+    let looked = Func {
+        lookups: LOOKUP,
+        ..W
+    };
+    assert!(entry_not_clean(&looked).unwrap().contains("lookups: u"));
+    assert_eq!(lookup_spans(&looked, &thing()), vec![(8, 4)]);
+}

@@ -643,6 +643,9 @@ pub enum WordSrc {
     /// learnt when an input's position-coded member lands in a word the
     /// plain call saw constant).
     Input(String),
+    /// `.1` when number argument `.0` is not 0, else 0 (committed entries'
+    /// `Word::Nonzero`: a flag sent for a nonzero argument).
+    Nonzero(usize, i32),
 }
 
 /// One run for [`learn_words`]: the number arguments as passed, the first
@@ -678,6 +681,23 @@ pub fn learn_words(runs: &[WordRun], conv: &[fn(i64) -> i32]) -> Vec<WordSrc> {
                     && runs.iter().any(|r| r.args[i] != runs[0].args[i])
                 {
                     return WordSrc::Arg(i);
+                }
+            }
+            // a flag: one value for a nonzero argument, 0 for 0
+            for (i, c) in conv.iter().enumerate() {
+                let arg = |r: &WordRun| r.args.get(i).map(|a| c(*a));
+                let Some(k) = runs
+                    .iter()
+                    .find(|r| arg(r).is_some_and(|a| a != 0))
+                    .map(|r| r.words[w])
+                else {
+                    continue;
+                };
+                let fits = runs
+                    .iter()
+                    .all(|r| arg(r).is_some_and(|a| r.words[w] == if a != 0 { k } else { 0 }));
+                if k != 0 && fits && runs.iter().any(|r| arg(r) == Some(0)) {
+                    return WordSrc::Nonzero(i, k);
                 }
             }
             let mut v = vals;
@@ -856,32 +876,16 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
         if at + fld.wire_len() > len {
             break;
         }
-        let ty = outs.get(fld.out as usize).ok_or("no output")?;
-        put(&mut v, at, fld, 0, ty)?;
+        // a field read into no output (skipped, or not on the wire) needs none
+        if fld.to.is_some() && fld.arg.is_none() {
+            let ty = outs.get(fld.out as usize).ok_or("no output")?;
+            put(&mut v, at, fld, 0, ty)?;
+        }
         at += fld.wire_len();
     }
     if let Some(r) = &f.records {
         let ty = outs.get(r.out as usize).ok_or("no output")?;
-        // `elem` spelled `T[N]`: each record an N-element array from the
-        // member on (consecutive `char name[N]` members, one a record).
-        let arr = r
-            .elem
-            .strip_suffix(']')
-            .and_then(|e| e.rsplit_once('['))
-            .and_then(|(_, n)| n.parse::<usize>().ok());
-        let (base, stride, elem_ty) = if r.to.is_empty() {
-            (0, ty.size(), ty.clone())
-        } else {
-            let (o, t) = member(ty, r.to).ok_or("no records member")?;
-            match (t, arr) {
-                // (a two-dimensional member's rows are the records already)
-                (Ty::Array(e, _), Some(n)) if !matches!(*e, Ty::Array(..)) => {
-                    (o, n * e.size(), Ty::Array(e, n))
-                }
-                (Ty::Array(e, _), _) => (o, e.size(), *e),
-                (t, _) => (o, t.size(), t),
-            }
-        };
+        let (base, stride, elem_ty) = records_at(r, ty)?;
         let rl = r.wire_len();
         let n = ((len - at.min(len)) / rl.max(1))
             .min(r.max as usize)
@@ -902,6 +906,31 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
         }
     }
     Ok(v)
+}
+
+/// Where a [`spec::Records`]' records go in its output `ty`: the first's
+/// offset, the stride, one record's type. `elem` spelled `T[N]`: each
+/// record an N-element array from the member on (consecutive `char
+/// name[N]` members, one a record).
+pub fn records_at(r: &spec::Records, ty: &Ty) -> Result<(usize, usize, Ty), String> {
+    let arr = r
+        .elem
+        .strip_suffix(']')
+        .and_then(|e| e.rsplit_once('['))
+        .and_then(|(_, n)| n.parse::<usize>().ok());
+    Ok(if r.to.is_empty() {
+        (0, ty.size(), ty.clone())
+    } else {
+        let (o, t) = member(ty, r.to).ok_or("no records member")?;
+        match (t, arr) {
+            // (a two-dimensional member's rows are the records already)
+            (Ty::Array(e, _), Some(n)) if !matches!(*e, Ty::Array(..)) => {
+                (o, n * e.size(), Ty::Array(e, n))
+            }
+            (Ty::Array(e, _), _) => (o, e.size(), *e),
+            (t, _) => (o, t.size(), t),
+        }
+    })
 }
 
 /// Placed integers as the bytes they move: (out, out byte) ← reply byte,
@@ -1010,6 +1039,10 @@ pub struct DForm {
     pub more: usize,
 }
 
+/// The argument of a learnt echo that is the last number answered (the
+/// table's `last`: number argument 0 plus the records written, less one).
+pub const LAST_ECHO: usize = usize::MAX - 1;
+
 /// A draft table entry.
 #[derive(Debug, Clone, Default)]
 pub struct Draft {
@@ -1028,6 +1061,9 @@ pub struct Draft {
     /// Number arguments written back into an output: (output, leaf,
     /// C integer, number argument).
     pub echoes: Vec<(usize, String, Int, usize)>,
+    /// Leaves written as 0 off the wire (zero fields): (output, leaf, C
+    /// integer).
+    pub zeros: Vec<(usize, String, Int)>,
     /// What the learner could not settle.
     pub flags: Vec<String>,
 }
@@ -1158,6 +1194,7 @@ fn word_text(w: &WordSrc) -> String {
         WordSrc::Len => "Word::Const(0) /* the payload's length */".into(),
         WordSrc::Computed(v) => format!("Word::Const({}) /* computed: {v:?} */", v[0]),
         WordSrc::Input(m) => format!("Word::Input({m:?}, I16)"),
+        WordSrc::Nonzero(i, k) => format!("Word::Nonzero({i}, {k})"),
     }
 }
 
@@ -1231,7 +1268,7 @@ impl Draft {
             );
         }
         let _ = writeln!(s, "        ],");
-        if !self.reply.is_empty() || !self.echoes.is_empty() {
+        if !self.reply.is_empty() || !self.echoes.is_empty() || !self.zeros.is_empty() {
             let _ = writeln!(s, "        reply: &[");
             for (o, path, c, k) in &self.echoes {
                 let o = if *o == 0 {
@@ -1239,6 +1276,15 @@ impl Draft {
                 } else {
                     format!(" /* output {o} */")
                 };
+                if *k == LAST_ECHO {
+                    let _ = writeln!(
+                        s,
+                        "            last({:?}, {}),{o}",
+                        member_of(path),
+                        int_name(*c)
+                    );
+                    continue;
+                }
                 let _ = writeln!(
                     s,
                     "            echo({k}, {:?}, {}),{o}",
@@ -1247,6 +1293,31 @@ impl Draft {
                 );
             }
             s.push_str(&fields_text(&self.reply, 0, "            "));
+            // zero fields, runs of one member's elements as one
+            let mut k = 0;
+            while k < self.zeros.len() {
+                let (o, path, c) = &self.zeros[k];
+                let m = member_of(path);
+                let run = self.zeros[k..]
+                    .iter()
+                    .take_while(|(o2, p2, c2)| o2 == o && c2 == c && member_of(p2) == m)
+                    .count();
+                let o = if *o == 0 {
+                    String::new()
+                } else {
+                    format!(" /* output {o} */")
+                };
+                if run == 1 {
+                    let _ = writeln!(s, "            zero({path:?}, {}),{o}", int_name(*c));
+                } else {
+                    let _ = writeln!(
+                        s,
+                        "            Field {{ n: {run}, ..zero({path:?}, {}) }},{o}",
+                        int_name(*c)
+                    );
+                }
+                k += run;
+            }
             let _ = writeln!(s, "        ],");
         }
         if let Some((rec, r)) = &self.records {
@@ -1316,12 +1387,13 @@ pub fn committed_words(f: &Func, s16: bool, s15: bool) -> Option<(u16, u16, Vec<
             Some(spec::Word::Asked) => WordSrc::Arg(f.count().unwrap_or(usize::MAX)),
             Some(spec::Word::Input(m, _)) => WordSrc::Input(m.to_string()),
             Some(spec::Word::Upto(_, e, _, _)) => WordSrc::Arg(*e as usize),
-            Some(spec::Word::Nonzero(i, _)) => WordSrc::Arg(*i as usize),
+            Some(spec::Word::Nonzero(i, k)) => WordSrc::Nonzero(*i as usize, *k),
             None => WordSrc::Const(0),
         })
         .collect();
-    // text fields or records: the payload's length in the fifth word
-    if f.sends_payload() {
+    // text fields, records or a written block: the payload's length in
+    // the fifth word
+    if f.sends_payload() || f.block.is_some_and(|b| b.attributes.is_some()) {
         w[4] = WordSrc::Len;
     }
     Some((form.class, form.cmd, w))
@@ -1429,4 +1501,150 @@ pub fn payload_moves(p: &[Placed]) -> Vec<(usize, usize)> {
     }
     v.sort();
     v
+}
+
+// --------------------------------------------------------- zeroed bytes
+
+/// The offset of `path` in `ty`: a member (`a.b`), an element of an array
+/// member (`name[i]`, elements of `elem` bytes) or of the pointee (`[i]`).
+pub fn member_at(ty: &Ty, path: &str, elem: usize) -> Option<usize> {
+    let (m, i) = match path.strip_suffix(']').and_then(|p| p.rsplit_once('[')) {
+        Some((m, i)) => (m, i.parse::<usize>().ok()?),
+        None => (path, 0),
+    };
+    let (off, _) = member(ty, m)?;
+    Some(off + i * elem)
+}
+
+/// The output bytes the committed entry writes as 0 off the wire (its
+/// [`spec::ZERO`] fields: a string's NUL, a text member's rest): (output
+/// index among the outputs, byte offset), sorted.
+pub fn committed_zeros(
+    f: &Func,
+    outs: &[Ty],
+    len: usize,
+    asked: usize,
+) -> Result<Vec<(usize, usize)>, String> {
+    let mut v = Vec::new();
+    let zero = |fld: &spec::Field, ty: &Ty, base: usize, v: &mut Vec<(usize, usize)>| {
+        let Some(m) = fld.to.filter(|_| fld.arg == Some(spec::ZERO)) else {
+            return Ok(());
+        };
+        let size = fld.c.size();
+        let off = member_at(ty, m, size).ok_or_else(|| format!("no member {m:?}"))?;
+        for b in 0..fld.n as usize * size {
+            v.push((fld.out as usize, base + off + b));
+        }
+        Ok::<(), String>(())
+    };
+    for fld in f.reply {
+        if fld.arg == Some(spec::ZERO) {
+            zero(
+                fld,
+                outs.get(fld.out as usize).ok_or("no output")?,
+                0,
+                &mut v,
+            )?;
+        }
+    }
+    // each record's zero fields, for the records the reply holds
+    if let Some(r) = &f.records {
+        if r.fields.iter().any(|x| x.arg == Some(spec::ZERO)) {
+            let ty = outs.get(r.out as usize).ok_or("no output")?;
+            let (base, stride, elem_ty) = records_at(r, ty)?;
+            let at: usize = f.reply.iter().map(|x| x.wire_len()).sum();
+            let n = ((len - at.min(len)) / r.wire_len().max(1))
+                .min(r.max as usize)
+                .min(asked);
+            for k in 0..n {
+                for fld in r.fields {
+                    let mut one = Vec::new();
+                    zero(fld, &elem_ty, 0, &mut one)?;
+                    v.extend(
+                        one.into_iter()
+                            .map(|(_, b)| (r.out as usize, base + k * stride + b)),
+                    );
+                }
+            }
+        }
+    }
+    v.sort();
+    v.dedup();
+    Ok(v)
+}
+
+/// A leaf written as 0: its path and C integer.
+pub type ZeroLeaf = (String, Int);
+
+/// The leaves of one output (`lv`) its map shows written as 0 whatever the
+/// reply (every byte `Const(0)`): the zero fields the library writes off
+/// the wire. (path, C integer) each, and their bytes as (out, offset).
+pub fn learnt_zeros(out: usize, map: &[Src], lv: &[Leaf]) -> (Vec<ZeroLeaf>, Vec<(usize, usize)>) {
+    let (mut leaves, mut bytes) = (Vec::new(), Vec::new());
+    for l in lv {
+        let b = map.get(l.off..(l.off + l.ty.size()).min(map.len()));
+        let (Some(b), Some(c)) = (b, l.ty.int()) else {
+            continue;
+        };
+        if !b.is_empty() && b.iter().all(|x| *x == Src::Const(0)) {
+            leaves.push((l.path.clone(), c));
+            bytes.extend((l.off..l.off + b.len()).map(|k| (out, k)));
+        }
+    }
+    (leaves, bytes)
+}
+
+// ------------------------------------------------ replies that do not map
+
+/// Why the committed entry's reply does not map a reply's bytes to output
+/// bytes one for one (what the learner's position-coded replies cannot
+/// show), if so: a typed block, value records, lookups, a count in the
+/// reply, several subpackets.
+pub fn entry_not_clean(f: &Func) -> Option<String> {
+    let fields = f
+        .reply
+        .iter()
+        .chain(f.records.iter().flat_map(|r| r.fields.iter()));
+    if f.block.is_some() {
+        return Some(
+            "a typed parameter block: the answer's type word decides each value's kind and size (Func::block)"
+                .into(),
+        );
+    }
+    if fields.clone().any(|x| x.wire == Int::BaseExp) {
+        return Some("a value record: digits and decimal places converted, not bytes moved".into());
+    }
+    if !f.lookups.is_empty() {
+        let members: Vec<&str> = f.lookups.iter().map(|l| l.to).collect();
+        return Some(format!(
+            "lookups: {} filled by looking keys up in the reply (Func::lookups), not bytes moved",
+            members.join(", ")
+        ));
+    }
+    if let Some(k) = f.counted {
+        return Some(format!(
+            "a count in the reply (field {k}, Func::counted) decides the records read: a coded reply announces more than it holds"
+        ));
+    }
+    if f.columns.is_some() {
+        return Some(
+            "columns: each reply field read from its own subpacket (Func::columns)".into(),
+        );
+    }
+    if !f.more.is_empty() {
+        return Some(format!(
+            "several subpackets: the reply's fields shared over {} answers (Func::more)",
+            f.more.len() + 1
+        ));
+    }
+    None
+}
+
+/// The bytes of output 0 (`ty`) its [`spec::Lookup`]s fill: (offset, length)
+/// from each lookup's member on (its elements' integers, `c` each).
+pub fn lookup_spans(f: &Func, ty: &Ty) -> Vec<(usize, usize)> {
+    f.lookups
+        .iter()
+        .filter_map(|l| member_at(ty, l.to, l.c.size()).map(|o| (o, l.values() * l.c.size())))
+        .collect()
 }
