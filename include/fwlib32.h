@@ -6087,6 +6087,24 @@ short pmc_rdalmmsg(unsigned short FlibHndl,
                    struct ODBPMCALM *pmcalm);
 
 /*
+ Reads the group number of the PMC extended relay's control data (the low
+ 16 bits of the 32-bit answer).
+
+ # Safety
+ `s_number` must be NULL or point to a writable short.
+ */
+short pmc_rdcntl_exrelay_grp(unsigned short FlibHndl, short *s_number);
+
+/*
+ Reads the group number of the PMC data table's control data (the low 16
+ bits of the 32-bit answer).
+
+ # Safety
+ `s_number` must be NULL or point to a writable short.
+ */
+short pmc_rdcntlgrp(unsigned short FlibHndl, short *s_number);
+
+/*
  Reads the PMC's address areas (letter, attribute, first and last
  address). At most 64 areas, and no more than the reply holds, are
  written (FANUC's library trusts the reply's count and can read past its
@@ -6149,6 +6167,18 @@ short pmc_set_timer_type(unsigned short FlibHndl,
                          unsigned short s_number,
                          unsigned short e_number,
                          short *types);
+
+/*
+ Sets the group number of the PMC extended relay's control data, as
+ pmc_rdcntl_exrelay_grp reads it.
+ */
+short pmc_wrcntl_exrelay_grp(unsigned short FlibHndl, short s_number);
+
+/*
+ Sets the group number of the PMC data table's control data, as
+ pmc_rdcntlgrp reads it.
+ */
+short pmc_wrcntlgrp(unsigned short FlibHndl, short s_number);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

@@ -125,4 +125,40 @@ pub const FUNCS: &[Func] = &[
         ],
         ..super::base::COMMAND
     },
+    Func {
+        name: "pmc_rdcntlgrp",
+        learnt: Some(&[]),
+        doc: "Reads the group number of the PMC data table's control data (the low 16 bits of the 32-bit answer).",
+        params: &[Param::Out("s_number", "short")],
+        forms: &[pmc(cmd::RDCNTLGRP, &[])],
+        reply: &[skip(I16), to(I16, "", I16)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_wrcntlgrp",
+        learnt: Some(&[]),
+        doc: "Sets the group number of the PMC data table's control data, as pmc_rdcntlgrp reads it.",
+        params: &[Param::Short("s_number")],
+        forms: &[pmc(cmd::WRCNTLGRP, &[Word::Arg(0)])],
+        dims: &["1|0|-1|2|16|2000|32767"],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_rdcntl_exrelay_grp",
+        learnt: Some(&[]),
+        doc: "Reads the group number of the PMC extended relay's control data (the low 16 bits of the 32-bit answer).",
+        params: &[Param::Out("s_number", "short")],
+        forms: &[pmc(cmd::RDCNTL_EXRELAY_GRP, &[])],
+        reply: &[skip(I16), to(I16, "", I16)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_wrcntl_exrelay_grp",
+        learnt: Some(&[]),
+        doc: "Sets the group number of the PMC extended relay's control data, as pmc_rdcntl_exrelay_grp reads it.",
+        params: &[Param::Short("s_number")],
+        forms: &[pmc(cmd::WRCNTL_EXRELAY_GRP, &[Word::Arg(0)])],
+        dims: &["1|0|-1|2|16|2000|32767"],
+        ..super::base::COMMAND
+    },
 ];
