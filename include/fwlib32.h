@@ -6024,6 +6024,15 @@ short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
 short pmc_get_current_pmc_unit(unsigned short FlibHndl, long *unittype);
 
 /*
+ Reads how many divided ladders the PMC's sequence program has (4 bytes
+ written into the `long`).
+
+ # Safety
+ `number` must be NULL or point to a writable long.
+ */
+short pmc_get_number_of_ladder(unsigned short FlibHndl, long *number);
+
+/*
  Reads how many PMC units the CNC has (4 bytes written into the `long`).
 
  # Safety
@@ -6064,6 +6073,15 @@ short pmc_get_timer_type(unsigned short FlibHndl,
  `err` must point to a writable ODBPMCERR.
  */
 short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
+
+/*
+ Reads the maximum size of the PMC's extended backup memory (4 bytes
+ written into the `unsigned long`).
+
+ # Safety
+ `size` must be NULL or point to a writable unsigned long.
+ */
+short pmc_kpmsiz(unsigned short FlibHndl, unsigned long *size);
 
 /*
  Reads the PMC's alarm messages from the `s_number`-th on: `*read_num`

@@ -142,10 +142,17 @@ pub struct UnitInfo {
     /// The group number of the extended relay's control data
     /// (pmc_rdcntl_exrelay_grp, set by pmc_wrcntl_exrelay_grp).
     pub exrelay_group: i16,
+    /// The extended backup memory's maximum size (pmc_kpmsiz).
+    pub kpm_size: u32,
+    /// How many divided ladders the sequence program has
+    /// (pmc_get_number_of_ladder).
+    pub ladders: i32,
 }
 
 /// The highest control data group number a unit accepts \[ours\].
 pub const GROUP_MAX: i16 = 2000;
+/// The most divided ladders a profile may give a unit \[ours\].
+pub const LADDERS_MAX: i32 = 255;
 
 impl Default for UnitInfo {
     fn default() -> Self {
@@ -155,6 +162,8 @@ impl Default for UnitInfo {
             timer_types: vec![0; TIMERS],
             control_group: 0,
             exrelay_group: 0,
+            kpm_size: 0,
+            ladders: 1,
         }
     }
 }
@@ -297,6 +306,13 @@ impl Pmc {
         } = g;
         Ok(())
     }
+
+    /// Unit `unit`'s extended backup memory size and how many divided
+    /// ladders it has; EW_NOPMC for a unit the CNC lacks.
+    pub fn ladders(&self, unit: u16) -> Reply<(u32, i32)> {
+        let i = self.unit_info(unit)?;
+        Ok((i.kpm_size, i.ladders))
+    }
 }
 
 impl Default for Pmc {
@@ -331,6 +347,11 @@ struct PmcToml {
     /// pmc_rdcntl_exrelay_grp's group number, 0 to GROUP_MAX.
     #[serde(default)]
     exrelay_group: i16,
+    /// pmc_kpmsiz's size.
+    #[serde(default)]
+    kpm_size: u32,
+    /// pmc_get_number_of_ladder's count, 1 to 255 (default 1).
+    ladders: Option<i32>,
     #[serde(default)]
     area: BTreeMap<String, AreaToml>,
     /// Units 2..: `[pmc.unit.2]` ... (an Option: a unit's empty `unit`
@@ -356,6 +377,11 @@ fn unit_info(t: &mut PmcToml) -> Result<UnitInfo, String> {
             return Err(format!("[pmc] {name}: 0 to {GROUP_MAX}"));
         }
     }
+    let ladders = t.ladders.unwrap_or(1);
+    if !(1..=LADDERS_MAX).contains(&ladders) {
+        return Err(format!("[pmc] ladders: 1 to {LADDERS_MAX}"));
+    }
+
     if title.len() > TITLE_TEXTS {
         return Err("[pmc] title: at most 10 texts".to_string());
     }
@@ -370,6 +396,8 @@ fn unit_info(t: &mut PmcToml) -> Result<UnitInfo, String> {
         messages,
         control_group: t.control_group,
         exrelay_group: t.exrelay_group,
+        kpm_size: t.kpm_size,
+        ladders,
         ..UnitInfo::default()
     };
     info.timer_types[..types.len()].copy_from_slice(&types);

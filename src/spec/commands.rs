@@ -500,6 +500,10 @@ commands! {
     RDCNTL_EXRELAY_GRP = CLASS_PMC 0x8059 [pmc_rdcntl_exrelay_grp];
     /// pmc_wrcntl_exrelay_grp: `(2,0x805a)[groups]`, no answer.
     WRCNTL_EXRELAY_GRP = CLASS_PMC 0x805a [pmc_wrcntl_exrelay_grp];
+    /// pmc_kpmsiz: `(2,0x800a)`, the extended backup memory's size (u32).
+    KPMSIZ = CLASS_PMC 0x800a [pmc_kpmsiz];
+    /// pmc_get_number_of_ladder: `(2,0x805e)`, how many ladders (i32).
+    NUMBER_OF_LADDER = CLASS_PMC 0x805e [pmc_get_number_of_ladder];
 }
 
 #[cfg(test)]

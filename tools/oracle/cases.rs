@@ -791,6 +791,15 @@ const WORDS: &[Word] = &[
             &["7", "1999", "2002", "-5"],
         )
     },
+    // The PMC's ladders and backup memory: on unit 1 and unit 2.
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_kpmsiz"],
+        ..w("pmc_kpmsiz", &[])
+    },
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_get_number_of_ladder"],
+        ..w("pmc_get_number_of_ladder", &[])
+    },
     // PMC alarm messages (A bits of the profile's messages) and timer
     // types, on unit 1, then with many alarms (A0-A1 written: 14, more
     // than one answer holds) and on unit 2.

@@ -161,4 +161,22 @@ pub const FUNCS: &[Func] = &[
         dims: &["1|0|-1|2|16|2000|32767"],
         ..super::base::COMMAND
     },
+    Func {
+        name: "pmc_kpmsiz",
+        learnt: Some(&[]),
+        doc: "Reads the maximum size of the PMC's extended backup memory (4 bytes written into the `unsigned long`).",
+        params: &[Param::Out("size", "unsigned long")],
+        forms: &[pmc(cmd::KPMSIZ, &[])],
+        reply: &[to(U32, "", U32)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_get_number_of_ladder",
+        learnt: Some(&[]),
+        doc: "Reads how many divided ladders the PMC's sequence program has (4 bytes written into the `long`).",
+        params: &[Param::Out("number", "long")],
+        forms: &[pmc(cmd::NUMBER_OF_LADDER, &[])],
+        reply: &[to(I32, "", I32)],
+        ..super::base::COMMAND
+    },
 ];

@@ -1,5 +1,5 @@
 //! tests/c/collectors_pmcctl.c: the long-tail PMC control functions
-//! (family C) through the .so, against the profile and the simulator's
+//! (family C: control data groups, ladders, backup memory) through the .so, against the profile and the simulator's
 //! state (a second connection reads what the first wrote).
 
 use super::run_c_test;
@@ -31,4 +31,16 @@ fn pmc_control_functions_follow_the_profile_and_state() {
     assert_eq!(kv["exrelay.other"], "9");
     assert_eq!(kv["cntlgrp.unit2"], u2.control_group.to_string());
     assert_eq!(kv["exrelay.unit2"], u2.exrelay_group.to_string());
+
+    // pmc_kpmsiz: 4 bytes written (on LP64 the `unsigned long`'s high half
+    // keeps the caller's bytes); pmc_get_number_of_ladder; per unit.
+    assert_ne!(u1.kpm_size, u2.kpm_size, "the default profile's differ");
+    assert_ne!(u1.ladders, u2.ladders, "the default profile's differ");
+    assert_eq!(kv["kpmsiz.low"], u1.kpm_size.to_string());
+    if std::mem::size_of::<std::ffi::c_ulong>() == 8 {
+        assert_eq!(kv["kpmsiz.high"], 0xeeee_eeee_u32.to_string());
+    }
+    assert_eq!(kv["ladders"], u1.ladders.to_string());
+    assert_eq!(kv["kpmsiz.unit2"], u2.kpm_size.to_string());
+    assert_eq!(kv["ladders.unit2"], u2.ladders.to_string());
 }
