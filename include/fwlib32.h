@@ -6082,6 +6082,15 @@ short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
 short pmc_get_current_pmc_unit(unsigned short FlibHndl, long *unittype);
 
 /*
+ Reads how many divided ladders the PMC's sequence program has (4 bytes
+ written into the `long`).
+
+ # Safety
+ `number` must be NULL or point to a writable long.
+ */
+short pmc_get_number_of_ladder(unsigned short FlibHndl, long *number);
+
+/*
  Reads how many PMC units the CNC has (4 bytes written into the `long`).
 
  # Safety
@@ -6124,6 +6133,15 @@ short pmc_get_timer_type(unsigned short FlibHndl,
 short pmc_getdtailerr(unsigned short FlibHndl, struct ODBPMCERR *err);
 
 /*
+ Reads the maximum size of the PMC's extended backup memory (4 bytes
+ written into the `unsigned long`).
+
+ # Safety
+ `size` must be NULL or point to a writable unsigned long.
+ */
+short pmc_kpmsiz(unsigned short FlibHndl, unsigned long *size);
+
+/*
  Reads the PMC's alarm messages from the `s_number`-th on: `*read_num`
  in is how many (`pmcalm` holds that many ODBPMCALM), out how many were
  written; `*exist` is -1 (no alarm), 0 (all read) or 1 (more alarms
@@ -6143,6 +6161,24 @@ short pmc_rdalmmsg(unsigned short FlibHndl,
                    short *read_num,
                    short *exist,
                    struct ODBPMCALM *pmcalm);
+
+/*
+ Reads the group number of the PMC extended relay's control data (the low
+ 16 bits of the 32-bit answer).
+
+ # Safety
+ `s_number` must be NULL or point to a writable short.
+ */
+short pmc_rdcntl_exrelay_grp(unsigned short FlibHndl, short *s_number);
+
+/*
+ Reads the group number of the PMC data table's control data (the low 16
+ bits of the 32-bit answer).
+
+ # Safety
+ `s_number` must be NULL or point to a writable short.
+ */
+short pmc_rdcntlgrp(unsigned short FlibHndl, short *s_number);
 
 /*
  Reads the PMC's address areas (letter, attribute, first and last
@@ -6207,6 +6243,18 @@ short pmc_set_timer_type(unsigned short FlibHndl,
                          unsigned short s_number,
                          unsigned short e_number,
                          short *types);
+
+/*
+ Sets the group number of the PMC extended relay's control data, as
+ pmc_rdcntl_exrelay_grp reads it.
+ */
+short pmc_wrcntl_exrelay_grp(unsigned short FlibHndl, short s_number);
+
+/*
+ Sets the group number of the PMC data table's control data, as
+ pmc_rdcntlgrp reads it.
+ */
+short pmc_wrcntlgrp(unsigned short FlibHndl, short s_number);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

@@ -136,7 +136,23 @@ pub struct UnitInfo {
     pub messages: Vec<String>,
     /// The variable timers' types (pmc_get_timer_type), timer 1 first.
     pub timer_types: Vec<i16>,
+    /// The group number of the data table's control data (pmc_rdcntlgrp,
+    /// set by pmc_wrcntlgrp).
+    pub control_group: i16,
+    /// The group number of the extended relay's control data
+    /// (pmc_rdcntl_exrelay_grp, set by pmc_wrcntl_exrelay_grp).
+    pub exrelay_group: i16,
+    /// The extended backup memory's maximum size (pmc_kpmsiz).
+    pub kpm_size: u32,
+    /// How many divided ladders the sequence program has
+    /// (pmc_get_number_of_ladder).
+    pub ladders: i32,
 }
+
+/// The highest control data group number a unit accepts \[ours\].
+pub const GROUP_MAX: i16 = 2000;
+/// The most divided ladders a profile may give a unit \[ours\].
+pub const LADDERS_MAX: i32 = 255;
 
 impl Default for UnitInfo {
     fn default() -> Self {
@@ -144,6 +160,10 @@ impl Default for UnitInfo {
             title: Vec::new(),
             messages: Vec::new(),
             timer_types: vec![0; TIMERS],
+            control_group: 0,
+            exrelay_group: 0,
+            kpm_size: 0,
+            ladders: 1,
         }
     }
 }
@@ -262,6 +282,39 @@ impl Pmc {
     }
 }
 
+impl Pmc {
+    /// Unit `unit`'s control data group numbers: [data table, extended
+    /// relay]; EW_NOPMC for a unit the CNC lacks.
+    pub fn groups(&self, unit: u16) -> Reply<[i16; 2]> {
+        let i = self.unit_info(unit)?;
+        Ok([i.control_group, i.exrelay_group])
+    }
+
+    /// pmc_wrcntlgrp (`extended` false) / pmc_wrcntl_exrelay_grp: sets a
+    /// group number of unit `unit`; outside 0..=GROUP_MAX EW_DATA, nothing
+    /// changed \[ours\].
+    pub fn set_group(&mut self, unit: u16, extended: bool, g: i32) -> Reply<()> {
+        self.unit_info(unit)?;
+        let g = (i16::try_from(g).ok())
+            .filter(|g| (0..=GROUP_MAX).contains(g))
+            .ok_or(CncError::new(ew::EW_DATA))?;
+        let info = &mut self.info[usize::from(unit) - 1];
+        *if extended {
+            &mut info.exrelay_group
+        } else {
+            &mut info.control_group
+        } = g;
+        Ok(())
+    }
+
+    /// Unit `unit`'s extended backup memory size and how many divided
+    /// ladders it has; EW_NOPMC for a unit the CNC lacks.
+    pub fn ladders(&self, unit: u16) -> Reply<(u32, i32)> {
+        let i = self.unit_info(unit)?;
+        Ok((i.kpm_size, i.ladders))
+    }
+}
+
 impl Default for Pmc {
     fn default() -> Self {
         Pmc {
@@ -288,6 +341,17 @@ struct PmcToml {
     /// Timer types from timer 1 on; the rest 0.
     #[serde(default)]
     timer_types: Vec<i16>,
+    /// pmc_rdcntlgrp's group number, 0 to GROUP_MAX.
+    #[serde(default)]
+    control_group: i16,
+    /// pmc_rdcntl_exrelay_grp's group number, 0 to GROUP_MAX.
+    #[serde(default)]
+    exrelay_group: i16,
+    /// pmc_kpmsiz's size.
+    #[serde(default)]
+    kpm_size: u32,
+    /// pmc_get_number_of_ladder's count, 1 to 255 (default 1).
+    ladders: Option<i32>,
     #[serde(default)]
     area: BTreeMap<String, AreaToml>,
     /// Units 2..: `[pmc.unit.2]` ... (an Option: a unit's empty `unit`
@@ -299,11 +363,25 @@ struct PmcToml {
 const TITLE_TEXTS: usize = 10;
 
 /// A unit's title, messages and timer types from the profile.
-fn unit_info(
-    title: Vec<String>,
-    messages: Vec<String>,
-    types: Vec<i16>,
-) -> Result<UnitInfo, String> {
+fn unit_info(t: &mut PmcToml) -> Result<UnitInfo, String> {
+    let (title, messages) = (
+        std::mem::take(&mut t.title),
+        std::mem::take(&mut t.messages),
+    );
+    let types = std::mem::take(&mut t.timer_types);
+    for (name, g) in [
+        ("control_group", t.control_group),
+        ("exrelay_group", t.exrelay_group),
+    ] {
+        if !(0..=GROUP_MAX).contains(&g) {
+            return Err(format!("[pmc] {name}: 0 to {GROUP_MAX}"));
+        }
+    }
+    let ladders = t.ladders.unwrap_or(1);
+    if !(1..=LADDERS_MAX).contains(&ladders) {
+        return Err(format!("[pmc] ladders: 1 to {LADDERS_MAX}"));
+    }
+
     if title.len() > TITLE_TEXTS {
         return Err("[pmc] title: at most 10 texts".to_string());
     }
@@ -316,6 +394,10 @@ fn unit_info(
     let mut info = UnitInfo {
         title,
         messages,
+        control_group: t.control_group,
+        exrelay_group: t.exrelay_group,
+        kpm_size: t.kpm_size,
+        ladders,
         ..UnitInfo::default()
     };
     info.timer_types[..types.len()].copy_from_slice(&types);
@@ -334,9 +416,9 @@ struct AreaToml {
 
 impl TryFrom<PmcToml> for Pmc {
     type Error = String;
-    fn try_from(t: PmcToml) -> Result<Pmc, String> {
+    fn try_from(mut t: PmcToml) -> Result<Pmc, String> {
         let mut pmc = Pmc {
-            info: vec![unit_info(t.title, t.messages, t.timer_types)?],
+            info: vec![unit_info(&mut t)?],
             ..Pmc::default()
         };
         match t.units {
@@ -349,14 +431,14 @@ impl TryFrom<PmcToml> for Pmc {
             Some(n) => return Err(format!("[pmc] units = {n}: 1 to 8")),
             None => {}
         }
-        for (k, u) in t.unit.unwrap_or_default() {
+        for (k, mut u) in t.unit.unwrap_or_default() {
             let n: usize = (k.trim().parse().ok())
                 .filter(|n| (2..=pmc.info.len()).contains(n))
                 .ok_or_else(|| format!("[pmc.unit.{k}]: units 2 to {}", pmc.info.len()))?;
             if u.units.is_some() || u.unit.is_some() {
                 return Err(format!("[pmc.unit.{k}]: units and unit belong in [pmc]"));
             }
-            pmc.info[n - 1] = unit_info(u.title, u.messages, u.timer_types)?;
+            pmc.info[n - 1] = unit_info(&mut u)?;
             apply_areas(&mut pmc.extra[n - 2], u.area)?;
         }
         apply_areas(&mut pmc.areas, t.area)?;

@@ -6,7 +6,10 @@
 use super::Machine;
 use super::route::{Route, enc};
 use super::service::Reply;
-use crate::proto::cmd::PMC_COUNT;
+use crate::proto::cmd::{
+    KPMSIZ, NUMBER_OF_LADDER, PMC_COUNT, RDCNTL_EXRELAY_GRP, RDCNTLGRP, WRCNTL_EXRELAY_GRP,
+    WRCNTLGRP,
+};
 use crate::proto::pmc::{
     GET_TIMER_TYPE, PMC_RDALMMSG, PmcRange, RDPMCINFO, RDPMCRNG, RDPMCTITLE, SELECT_UNIT,
     SET_TIMER_TYPE, UNIT_TYPES, WRPMCRNG,
@@ -43,6 +46,24 @@ pub(super) const ROUTES: &[Route] = &[
             .map(|()| Vec::new())
     }),
     Route::pmc_table(PMC_COUNT, |m, _| Ok(vec![m.profile.pmc.units() as i64])),
+    Route::pmc_table(RDCNTLGRP, |m, q| {
+        Ok(vec![0, i64::from(m.profile.pmc.groups(q.path)?[0])])
+    }),
+    Route::pmc_table(WRCNTLGRP, |m, q| {
+        (m.profile.pmc.set_group(q.path, false, q.arg(0))).map(|()| Vec::new())
+    }),
+    Route::pmc_table(RDCNTL_EXRELAY_GRP, |m, q| {
+        Ok(vec![0, i64::from(m.profile.pmc.groups(q.path)?[1])])
+    }),
+    Route::pmc_table(KPMSIZ, |m, q| {
+        Ok(vec![i64::from(m.profile.pmc.ladders(q.path)?.0)])
+    }),
+    Route::pmc_table(NUMBER_OF_LADDER, |m, q| {
+        Ok(vec![i64::from(m.profile.pmc.ladders(q.path)?.1)])
+    }),
+    Route::pmc_table(WRCNTL_EXRELAY_GRP, |m, q| {
+        (m.profile.pmc.set_group(q.path, true, q.arg(0))).map(|()| Vec::new())
+    }),
 ];
 
 impl Machine {

@@ -496,6 +496,20 @@ commands! {
     /// pmc_set_timer_type: (2,0x804b)[s, e, 0, 0, bytes] with the types as
     /// big-endian i16.
     SET_TIMER_TYPE = CLASS_PMC 0x804b [pmc_set_timer_type];
+    /// pmc_rdcntlgrp: `(2,0x8006)`, the data table's control data group
+    /// number (i32, the low 16 bits read).
+    RDCNTLGRP = CLASS_PMC 0x8006 [pmc_rdcntlgrp];
+    /// pmc_wrcntlgrp: `(2,0x8007)[groups]`, no answer.
+    WRCNTLGRP = CLASS_PMC 0x8007 [pmc_wrcntlgrp];
+    /// pmc_rdcntl_exrelay_grp: `(2,0x8059)`, the extended relay's control
+    /// data group number (i32, the low 16 bits read).
+    RDCNTL_EXRELAY_GRP = CLASS_PMC 0x8059 [pmc_rdcntl_exrelay_grp];
+    /// pmc_wrcntl_exrelay_grp: `(2,0x805a)[groups]`, no answer.
+    WRCNTL_EXRELAY_GRP = CLASS_PMC 0x805a [pmc_wrcntl_exrelay_grp];
+    /// pmc_kpmsiz: `(2,0x800a)`, the extended backup memory's size (u32).
+    KPMSIZ = CLASS_PMC 0x800a [pmc_kpmsiz];
+    /// pmc_get_number_of_ladder: `(2,0x805e)`, how many ladders (i32).
+    NUMBER_OF_LADDER = CLASS_PMC 0x805e [pmc_get_number_of_ladder];
 }
 
 #[cfg(test)]

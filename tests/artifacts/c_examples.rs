@@ -565,6 +565,7 @@ mod collectors_magazine;
 mod collectors_o8;
 mod collectors_panel_system;
 mod collectors_pcode;
+mod collectors_pmcctl;
 mod collectors_programs_macros;
 mod collectors_settings;
 mod collectors_system;

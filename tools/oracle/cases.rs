@@ -783,6 +783,45 @@ const WORDS: &[Word] = &[
     w("rdtool", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("rdtooldata", &["1|0|-1|2|9999", "1|0|-1|2|5|100"]),
     w("rdtoolinfo", &[]),
+    // PMC control data group numbers: read on unit 1 and unit 2; a write
+    // read back (a refused number changes nothing), on every class.
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_rdcntlgrp"],
+        ..w("pmc_rdcntlgrp", &[])
+    },
+    Word {
+        after: &["pmc_rdcntlgrp", "pmc_select_pmc_unit 2", "pmc_rdcntlgrp"],
+        ..wc(
+            "pmc_wrcntlgrp",
+            &["1|0|-1|2|16|2000|2001|32767"],
+            &["7", "1999", "2002", "-5"],
+        )
+    },
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_rdcntl_exrelay_grp"],
+        ..w("pmc_rdcntl_exrelay_grp", &[])
+    },
+    Word {
+        after: &[
+            "pmc_rdcntl_exrelay_grp",
+            "pmc_select_pmc_unit 2",
+            "pmc_rdcntl_exrelay_grp",
+        ],
+        ..wc(
+            "pmc_wrcntl_exrelay_grp",
+            &["1|0|-1|2|16|2000|2001|32767"],
+            &["7", "1999", "2002", "-5"],
+        )
+    },
+    // The PMC's ladders and backup memory: on unit 1 and unit 2.
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_kpmsiz"],
+        ..w("pmc_kpmsiz", &[])
+    },
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_get_number_of_ladder"],
+        ..w("pmc_get_number_of_ladder", &[])
+    },
     // PMC alarm messages (A bits of the profile's messages) and timer
     // types, on unit 1, then with many alarms (A0-A1 written: 14, more
     // than one answer holds) and on unit 2.

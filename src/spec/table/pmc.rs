@@ -125,4 +125,58 @@ pub const FUNCS: &[Func] = &[
         ],
         ..super::base::COMMAND
     },
+    Func {
+        name: "pmc_rdcntlgrp",
+        learnt: Some(&[]),
+        doc: "Reads the group number of the PMC data table's control data (the low 16 bits of the 32-bit answer).",
+        params: &[Param::Out("s_number", "short")],
+        forms: &[pmc(cmd::RDCNTLGRP, &[])],
+        reply: &[skip(I16), to(I16, "", I16)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_wrcntlgrp",
+        learnt: Some(&[]),
+        doc: "Sets the group number of the PMC data table's control data, as pmc_rdcntlgrp reads it.",
+        params: &[Param::Short("s_number")],
+        forms: &[pmc(cmd::WRCNTLGRP, &[Word::Arg(0)])],
+        dims: &["1|0|-1|2|16|2000|32767"],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_rdcntl_exrelay_grp",
+        learnt: Some(&[]),
+        doc: "Reads the group number of the PMC extended relay's control data (the low 16 bits of the 32-bit answer).",
+        params: &[Param::Out("s_number", "short")],
+        forms: &[pmc(cmd::RDCNTL_EXRELAY_GRP, &[])],
+        reply: &[skip(I16), to(I16, "", I16)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_wrcntl_exrelay_grp",
+        learnt: Some(&[]),
+        doc: "Sets the group number of the PMC extended relay's control data, as pmc_rdcntl_exrelay_grp reads it.",
+        params: &[Param::Short("s_number")],
+        forms: &[pmc(cmd::WRCNTL_EXRELAY_GRP, &[Word::Arg(0)])],
+        dims: &["1|0|-1|2|16|2000|32767"],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_kpmsiz",
+        learnt: Some(&[]),
+        doc: "Reads the maximum size of the PMC's extended backup memory (4 bytes written into the `unsigned long`).",
+        params: &[Param::Out("size", "unsigned long")],
+        forms: &[pmc(cmd::KPMSIZ, &[])],
+        reply: &[to(U32, "", U32)],
+        ..super::base::COMMAND
+    },
+    Func {
+        name: "pmc_get_number_of_ladder",
+        learnt: Some(&[]),
+        doc: "Reads how many divided ladders the PMC's sequence program has (4 bytes written into the `long`).",
+        params: &[Param::Out("number", "long")],
+        forms: &[pmc(cmd::NUMBER_OF_LADDER, &[])],
+        reply: &[to(I32, "", I32)],
+        ..super::base::COMMAND
+    },
 ];
