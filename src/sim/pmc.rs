@@ -280,9 +280,7 @@ impl Pmc {
         self.info[i].timer_types[r].copy_from_slice(&v);
         Ok(())
     }
-}
 
-impl Pmc {
     /// Unit `unit`'s control data group numbers: [data table, extended
     /// relay]; EW_NOPMC for a unit the CNC lacks.
     pub fn groups(&self, unit: u16) -> Reply<[i16; 2]> {
@@ -312,6 +310,127 @@ impl Pmc {
     pub fn ladders(&self, unit: u16) -> Reply<(u32, i32)> {
         let i = self.unit_info(unit)?;
         Ok((i.kpm_size, i.ladders))
+    }
+
+    pub fn area(&self, adr_type: i16) -> Option<&PmcArea> {
+        self.areas.iter().find(|a| a.adr_type == adr_type)
+    }
+
+    pub fn area_mut(&mut self, adr_type: i16) -> Option<&mut PmcArea> {
+        self.areas.iter_mut().find(|a| a.adr_type == adr_type)
+    }
+
+    pub fn area_by_letter(&self, letter: &str) -> Option<&PmcArea> {
+        self.areas.iter().find(|a| a.letter == letter)
+    }
+
+    pub fn area_by_letter_mut(&mut self, letter: &str) -> Option<&mut PmcArea> {
+        self.areas.iter_mut().find(|a| a.letter == letter)
+    }
+
+    /// How many PMC units the CNC has.
+    pub fn units(&self) -> usize {
+        1 + self.extra.len()
+    }
+
+    /// The areas of unit `unit` (1..): EW_NOPMC for a unit the CNC lacks.
+    fn unit(&self, unit: u16) -> Reply<&Vec<PmcArea>> {
+        match unit {
+            1 => Ok(&self.areas),
+            n => (self.extra)
+                .get(usize::from(n).wrapping_sub(2))
+                .ok_or(CncError::new(ew::EW_NOPMC)),
+        }
+    }
+
+    fn unit_mut(&mut self, unit: u16) -> Reply<&mut Vec<PmcArea>> {
+        match unit {
+            1 => Ok(&mut self.areas),
+            n => (self.extra)
+                .get_mut(usize::from(n).wrapping_sub(2))
+                .ok_or(CncError::new(ew::EW_NOPMC)),
+        }
+    }
+
+    /// Command 0x800f\[most\]: the unit types (1, 2 ...), at most `most`.
+    pub fn unit_types(&self, most: i32) -> Vec<i32> {
+        (1..=self.units() as i32)
+            .take(most.max(0) as usize)
+            .collect()
+    }
+
+    /// Command 0x800c[unit]: whether the CNC has that unit.
+    pub fn select(&self, unit: i32) -> Reply<()> {
+        let unit = u16::try_from(unit).map_err(|_| CncError::new(ew::EW_NOPMC))?;
+        self.unit(unit).map(|_| ())
+    }
+
+    /// The area and checked address range of a request: EW_TYPE for an
+    /// unknown area or data type, EW_RANGE for addresses outside the area
+    /// or a range that is not whole elements, EW_LENGTH when too long.
+    fn check<'a>(areas: &'a [PmcArea], r: &PmcRange) -> Reply<&'a PmcArea> {
+        let area = (areas.iter())
+            .find(|a| a.adr_type == r.adr_type)
+            .ok_or(CncError::new(ew::EW_TYPE))?;
+        let size = elem_size(r.data_type).ok_or(CncError::new(ew::EW_TYPE))?;
+        let n = r.span();
+        if n == 0 || n % size != 0 || !area.covers(r.s, r.e) {
+            return Err(CncError::new(ew::EW_RANGE));
+        }
+        if n > MAX_BYTES {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        Ok(area)
+    }
+
+    /// Command 0x8001 on unit `unit`: the range's bytes (big-endian
+    /// elements, as stored).
+    pub fn read(&self, unit: u16, r: &PmcRange) -> Reply<Vec<u8>> {
+        let area = Self::check(self.unit(unit)?, r)?;
+        Ok(area.mem[usize::from(r.s)..=usize::from(r.e)].to_vec())
+    }
+
+    /// Command 0x8002 on unit `unit`: all or nothing; read-only areas EW_PROT.
+    pub fn write(&mut self, unit: u16, r: &PmcRange, data: &[u8]) -> Reply<()> {
+        let area = Self::check(self.unit(unit)?, r)?;
+        if data.len() != r.span() {
+            return Err(CncError::new(ew::EW_LENGTH));
+        }
+        if !area.writable {
+            return Err(CncError::new(ew::EW_PROT));
+        }
+        let areas = self.unit_mut(unit)?;
+        let area = areas
+            .iter_mut()
+            .find(|a| a.adr_type == r.adr_type)
+            .expect("checked");
+        std::sync::Arc::make_mut(&mut area.mem)[usize::from(r.s)..=usize::from(r.e)]
+            .copy_from_slice(data);
+        Ok(())
+    }
+
+    /// The 0x8003 answer: one record per address range (K has two), the
+    /// letter's character code, attribute 0, first and last address. What a
+    /// real PMC puts in the attribute word and does with `adr_type` is not
+    /// known; the simulator answers every area whatever `adr_type`.
+    pub fn info(&self, unit: u16, _adr_type: i16) -> Reply<PmcInfo> {
+        let areas: Vec<PmcAreaInfo> = self
+            .unit(unit)?
+            .iter()
+            .flat_map(|a| {
+                a.ranges.iter().map(|&(s, e)| PmcAreaInfo {
+                    adr: u16::from(a.letter.as_bytes()[0]),
+                    attr: 0,
+                    top: i32::from(s),
+                    last: i32::from(e),
+                })
+            })
+            .take(PMCINFO_MAX)
+            .collect();
+        Ok(PmcInfo {
+            count: areas.len() as i32,
+            areas,
+        })
     }
 }
 
@@ -478,129 +597,4 @@ fn apply_areas(areas: &mut [PmcArea], t: BTreeMap<String, AreaToml>) -> Result<(
         areas[i] = area;
     }
     Ok(())
-}
-
-impl Pmc {
-    pub fn area(&self, adr_type: i16) -> Option<&PmcArea> {
-        self.areas.iter().find(|a| a.adr_type == adr_type)
-    }
-
-    pub fn area_mut(&mut self, adr_type: i16) -> Option<&mut PmcArea> {
-        self.areas.iter_mut().find(|a| a.adr_type == adr_type)
-    }
-
-    pub fn area_by_letter(&self, letter: &str) -> Option<&PmcArea> {
-        self.areas.iter().find(|a| a.letter == letter)
-    }
-
-    pub fn area_by_letter_mut(&mut self, letter: &str) -> Option<&mut PmcArea> {
-        self.areas.iter_mut().find(|a| a.letter == letter)
-    }
-
-    /// How many PMC units the CNC has.
-    pub fn units(&self) -> usize {
-        1 + self.extra.len()
-    }
-
-    /// The areas of unit `unit` (1..): EW_NOPMC for a unit the CNC lacks.
-    fn unit(&self, unit: u16) -> Reply<&Vec<PmcArea>> {
-        match unit {
-            1 => Ok(&self.areas),
-            n => (self.extra)
-                .get(usize::from(n).wrapping_sub(2))
-                .ok_or(CncError::new(ew::EW_NOPMC)),
-        }
-    }
-
-    fn unit_mut(&mut self, unit: u16) -> Reply<&mut Vec<PmcArea>> {
-        match unit {
-            1 => Ok(&mut self.areas),
-            n => (self.extra)
-                .get_mut(usize::from(n).wrapping_sub(2))
-                .ok_or(CncError::new(ew::EW_NOPMC)),
-        }
-    }
-
-    /// Command 0x800f\[most\]: the unit types (1, 2 ...), at most `most`.
-    pub fn unit_types(&self, most: i32) -> Vec<i32> {
-        (1..=self.units() as i32)
-            .take(most.max(0) as usize)
-            .collect()
-    }
-
-    /// Command 0x800c[unit]: whether the CNC has that unit.
-    pub fn select(&self, unit: i32) -> Reply<()> {
-        let unit = u16::try_from(unit).map_err(|_| CncError::new(ew::EW_NOPMC))?;
-        self.unit(unit).map(|_| ())
-    }
-
-    /// The area and checked address range of a request: EW_TYPE for an
-    /// unknown area or data type, EW_RANGE for addresses outside the area
-    /// or a range that is not whole elements, EW_LENGTH when too long.
-    fn check<'a>(areas: &'a [PmcArea], r: &PmcRange) -> Reply<&'a PmcArea> {
-        let area = (areas.iter())
-            .find(|a| a.adr_type == r.adr_type)
-            .ok_or(CncError::new(ew::EW_TYPE))?;
-        let size = elem_size(r.data_type).ok_or(CncError::new(ew::EW_TYPE))?;
-        let n = r.span();
-        if n == 0 || n % size != 0 || !area.covers(r.s, r.e) {
-            return Err(CncError::new(ew::EW_RANGE));
-        }
-        if n > MAX_BYTES {
-            return Err(CncError::new(ew::EW_LENGTH));
-        }
-        Ok(area)
-    }
-
-    /// Command 0x8001 on unit `unit`: the range's bytes (big-endian
-    /// elements, as stored).
-    pub fn read(&self, unit: u16, r: &PmcRange) -> Reply<Vec<u8>> {
-        let area = Self::check(self.unit(unit)?, r)?;
-        Ok(area.mem[usize::from(r.s)..=usize::from(r.e)].to_vec())
-    }
-
-    /// Command 0x8002 on unit `unit`: all or nothing; read-only areas EW_PROT.
-    pub fn write(&mut self, unit: u16, r: &PmcRange, data: &[u8]) -> Reply<()> {
-        let area = Self::check(self.unit(unit)?, r)?;
-        if data.len() != r.span() {
-            return Err(CncError::new(ew::EW_LENGTH));
-        }
-        if !area.writable {
-            return Err(CncError::new(ew::EW_PROT));
-        }
-        let areas = self.unit_mut(unit)?;
-        let area = areas
-            .iter_mut()
-            .find(|a| a.adr_type == r.adr_type)
-            .expect("checked");
-        std::sync::Arc::make_mut(&mut area.mem)[usize::from(r.s)..=usize::from(r.e)]
-            .copy_from_slice(data);
-        Ok(())
-    }
-}
-
-impl Pmc {
-    /// The 0x8003 answer: one record per address range (K has two), the
-    /// letter's character code, attribute 0, first and last address. What a
-    /// real PMC puts in the attribute word and does with `adr_type` is not
-    /// known; the simulator answers every area whatever `adr_type`.
-    pub fn info(&self, unit: u16, _adr_type: i16) -> Reply<PmcInfo> {
-        let areas: Vec<PmcAreaInfo> = self
-            .unit(unit)?
-            .iter()
-            .flat_map(|a| {
-                a.ranges.iter().map(|&(s, e)| PmcAreaInfo {
-                    adr: u16::from(a.letter.as_bytes()[0]),
-                    attr: 0,
-                    top: i32::from(s),
-                    last: i32::from(e),
-                })
-            })
-            .take(PMCINFO_MAX)
-            .collect();
-        Ok(PmcInfo {
-            count: areas.len() as i32,
-            areas,
-        })
-    }
 }
