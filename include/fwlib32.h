@@ -3137,8 +3137,9 @@ short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
 
 /*
  Reads the full path name of the running program
- ("//CNC_MEM/USER/PATH1/O1234"): 256 bytes, NUL-terminated and
- zero-filled (the name's characters up to its NUL, at most 255).
+ ("//CNC_MEM/USER/PATH1/O1234") into 256 bytes: the name's characters up
+ to its NUL, zeros after; a name of 256 characters or more fills all 256
+ with no NUL, as FANUC's library writes it.
 
  # Safety
  `path_name` must be NULL or point to 256 writable bytes.

@@ -16,10 +16,10 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_exeprgname2",
-        doc: "Reads the full path name of the running program (\"//CNC_MEM/USER/PATH1/O1234\"): 256 bytes, NUL-terminated and zero-filled (the name's characters up to its NUL, at most 255).",
+        doc: "Reads the full path name of the running program (\"//CNC_MEM/USER/PATH1/O1234\") into 256 bytes: the name's characters up to its NUL, zeros after; a name of 256 characters or more fills all 256 with no NUL, as FANUC's library writes it.",
         params: &[Param::Out("path_name", "text[256]")],
         forms: &[every_class(cmd::EXEPRGNAME2, &[])],
-        reply: &[text(255, ""), zero("[255]", I8)],
+        reply: &[text(256, "")],
         ..COMMAND
     },
     Func {
