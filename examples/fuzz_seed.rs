@@ -92,7 +92,8 @@ fn main() {
                 let (Some(d), false) = (decoder(name), replies.is_empty()) else {
                     continue;
                 };
-                let mut input = vec![d, ctx_byte(class, axes)];
+                let mut input = d.to_be_bytes().to_vec();
+                input.push(ctx_byte(class, axes));
                 for k in 0..4 {
                     input.extend(args.get(k).copied().unwrap_or(0).to_be_bytes());
                 }

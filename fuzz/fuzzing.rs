@@ -35,9 +35,10 @@ use std::hint::black_box;
 use std::sync::OnceLock;
 use std::time::Duration;
 
-/// The bytes before the frames of a [`reply`] input: the decoder, the
-/// CNC the handle talks to, and four argument words.
-pub const REPLY_PREFIX: usize = 2 + 8;
+/// The bytes before the frames of a [`reply`] input: the decoder (two
+/// bytes, big-endian: there are more than 256), the CNC the handle talks
+/// to, and four argument words.
+pub const REPLY_PREFIX: usize = 3 + 8;
 
 /// The caller's argument words of a reply input.
 type Args = [i32; 4];
@@ -488,7 +489,7 @@ pub fn hand_written_names() -> impl Iterator<Item = &'static str> {
 
 /// The decoder of exported function `name` (the first, where several
 /// serve it), for seeding a corpus.
-pub fn decoder(name: &str) -> Option<u8> {
+pub fn decoder(name: &str) -> Option<u16> {
     let i = if name == "cnc_allclibhndl3" {
         0
     } else if let Some(i) = HAND.iter().position(|d| d.names.contains(&name)) {
@@ -496,7 +497,7 @@ pub fn decoder(name: &str) -> Option<u8> {
     } else {
         CONNECT + HAND.len() + fwlib32::spec::FUNCS.iter().position(|f| f.name == name)?
     };
-    u8::try_from(i).ok()
+    u16::try_from(i).ok()
 }
 
 /// The CNC of a reply input: class in bits 0-1 (30i, 16i, Series 15, 16i
@@ -545,7 +546,7 @@ fn frames(mut b: &[u8]) -> impl Iterator<Item = (FrameHeader, &[u8])> {
     })
 }
 
-/// The client's side: `data` is [decoder, CNC (see [`ctx_byte`]), four
+/// The client's side: `data` is [decoder (two bytes), CNC (see [`ctx_byte`]), four
 /// big-endian i16 argument words, then the CNC's frames]. Each frame of
 /// the kind the decoder waits for is decoded (others are skipped, as the
 /// client skips them).
@@ -554,11 +555,11 @@ pub fn reply(data: &[u8]) {
         return;
     }
     let n = decoders();
-    let which = usize::from(data[0]) % n;
-    let cx = ctx_of(data[1]);
+    let which = usize::from(u16::from_be_bytes([data[0], data[1]])) % n;
+    let cx = ctx_of(data[2]);
     let mut a: Args = [0; 4];
     for (k, w) in a.iter_mut().enumerate() {
-        *w = i32::from(i16::from_be_bytes([data[2 + 2 * k], data[3 + 2 * k]]));
+        *w = i32::from(i16::from_be_bytes([data[3 + 2 * k], data[4 + 2 * k]]));
     }
     let stream = &data[REPLY_PREFIX..];
     let mut resp = Vec::new();
