@@ -5887,7 +5887,8 @@ short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
  offset 4). The write is sent once; the CNC decides whether it is allowed
  (parameter write enable, MDI mode ...). A 16i-class write carries one
  value slot per axis of the CNC's maximum (as FANUC's library). A Series
- 15 is not asked for the attributes: as FANUC's library, its type and
+ 15 is not asked for the attributes: as FANUC's library, a `length` below
+ 4 is EW_LENGTH before anything is sent, whatever the type; its type and
  axis come from `type`, `(type << 8) | (axis & 0xff)`, and the 30i write
  block is sent (0x8e).
 

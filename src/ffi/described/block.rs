@@ -67,6 +67,11 @@ pub(super) unsafe fn block(
     let (ptype, elem, axis) = if attributes.matches(class.0, class.1) {
         let info = h.call(&ParamInfo { number })?;
         (info.ptype, info.elem, axis)
+    } else if length < 4 {
+        // Not asked: below the 4-byte header, whatever the type, nothing
+        // is sent (FANUC's library, Series 15: tests/vectors/
+        // cnc_wrparam.s15length.json).
+        return Err(Error::local(EW_LENGTH, "length is below the 4-byte header"));
     } else {
         let ptype = (axis as u16) >> 8;
         let elem = Elem::of_param(ptype).filter(|_| ptype <= 4);
