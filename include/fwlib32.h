@@ -5181,8 +5181,8 @@ short cnc_rdtofs(unsigned short FlibHndl,
                  struct ODBTOFS *tofs);
 
 /*
- Reads whether the [MEASURE] and [MEASURE+] tool offset measurement can
- be used (`*enable` 1) or not (0).
+ Reads whether the `[MEASURE]` and `[MEASURE+]` tool offset measurement
+ can be used (`*enable` 1) or not (0).
 
  # Safety
  `enable` must be NULL or point to a writable char.

@@ -198,9 +198,9 @@ commands! {
     RDTLDATA = CLASS_CNC 0x0191 [cnc_rdtldata];
     /// The tool length measurement: T, M, the measured value, offset number.
     RDTLMSINFO = CLASS_CNC 0x0194 [cnc_rdtlmsinfo];
-    /// Whether [MEASURE] / [MEASURE+] (tool offset measurement) can be used.
+    /// Whether `[MEASURE]` / `[MEASURE+]` (tool offset measurement) can be used.
     RDTOFSENBL = CLASS_CNC 0x0195 [cnc_rdtofsenbl];
-    /// [type]: clears every tool offset of a type.
+    /// `[type]`: clears every tool offset of a type.
     CLRTOFS = CLASS_CNC 0x01b7 [cnc_clrtofs];
     DELTLIFEGRP = CLASS_CNC 0x0053 [cnc_deltlifegrp];
     /// Inserts a tool into a group: args [grp, tuse_num, tool number].

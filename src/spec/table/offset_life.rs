@@ -30,7 +30,7 @@ pub const FUNCS: &[Func] = &[
     },
     Func {
         name: "cnc_rdtofsenbl",
-        doc: "Reads whether the [MEASURE] and [MEASURE+] tool offset measurement can be used (`*enable` 1) or not (0).",
+        doc: "Reads whether the `[MEASURE]` and `[MEASURE+]` tool offset measurement can be used (`*enable` 1) or not (0).",
         params: &[Param::Out("enable", "char")],
         forms: &[every_class(cmd::RDTOFSENBL, &[])],
         reply: &[to(I8, "", I8)],
