@@ -72,11 +72,54 @@ const TYPE: Check = Check {
 /// One IEEE double a record, to or from the caller's `double` array.
 const DOUBLE: &[Field] = &[doubles(0, 1, "")];
 
+/// A read of IEEE doubles: one record a variable into `data`, 179 a
+/// request from `s_no` on, an answer shorter than its request the last.
+const READ: Func = Func {
+    learnt: None,
+    records: Some(Records {
+        fields: DOUBLE,
+        out: 0,
+        to: "",
+        elem: "double",
+        max: 179,
+        count: None,
+        room: None,
+    }),
+    pages: Some(Pages {
+        bytes: 179 * 8,
+        advance: Some(0),
+        from_done: true,
+        room: None,
+        until_short: true,
+    }),
+    ..COMMAND
+};
+
+/// A write of IEEE doubles from `data`: 177 a request from `s_no` on,
+/// the next only when the CNC wrote the whole previous one.
+const WRITE: Func = Func {
+    learnt: None,
+    payload: Some(Payload {
+        fields: DOUBLE,
+        elem: "double",
+        count: 1,
+        max: u16::MAX,
+    }),
+    pages: Some(Pages {
+        bytes: 177 * 8,
+        advance: Some(0),
+        from_done: false,
+        room: None,
+        until_short: true,
+    }),
+    ..COMMAND
+};
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_rdmacror2",
-        // Moved from the hand-written code; its recordings settle it.
-        learnt: None,
+        // Moved from the hand-written code (learnt: None): its recordings
+        // settle it.
         doc: "Reads `*num` custom macro variables from `s_no` as IEEE doubles into `data`, bit-exact; `*num` becomes the number read. `s_no` and `*num` are 32-bit, as in FANUC's x86-64 library (4 bytes of `*num` read and written). `*num` 0 is EW_LENGTH before any traffic; the count is cut to the end of `s_no`'s range (#99, #499, #999; compared unsigned: 0xffffffff reads to the end) and a count of 0 or below as an `int` reads nothing (`*num` 0). Requests carry at most 179 variables; an answer shorter than its request ends the read. No more than each request's doubles are written (FANUC's library writes whatever the CNC sends). An error answer leaves `*num` as it was; EW_NUMBER after some variables ends the read with them. How a CNC marks a vacant variable in this form is not known.",
         params: &[
             Param::ULong("s_no"),
@@ -85,29 +128,11 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: &[nonzero(1)],
         forms: &[every_class(cmd::RDMACROR2, &[Word::Arg(0), Word::Arg(1)])],
-        records: Some(Records {
-            fields: DOUBLE,
-            out: 0,
-            to: "",
-            elem: "double",
-            max: 179,
-            count: None,
-            room: None,
-        }),
-        // 179 doubles a request, from `s_no` on.
-        pages: Some(Pages {
-            bytes: 179 * 8,
-            advance: Some(0),
-            from_done: true,
-            room: None,
-            until_short: true,
-        }),
         ends: MACRO_ENDS,
-        ..COMMAND
+        ..READ
     },
     Func {
         name: "cnc_wrmacror2",
-        learnt: None,
         doc: "Writes `*num` custom macro variables from `s_no` from the IEEE doubles `data`, bit-exact; `*num` becomes the number the CNC wrote. `s_no` and `*num` are 32-bit, as in FANUC's x86-64 library. `*num` 0 is EW_LENGTH before any traffic; the variables past the end of `s_no`'s range (#99, #499, #999) are left out, as FANUC's library does. Requests carry at most 177 variables; the next is sent only when the CNC wrote the whole previous one, and `*num` is the sum of the answers' counts (a count cut short in the answer reads as 0). An error answer leaves `*num` as it was, the requests before it written; EW_NUMBER after some variables ends the write with them.",
         params: &[
             Param::ULong("s_no"),
@@ -121,26 +146,11 @@ pub const FUNCS: &[Func] = &[
         // the buffer that held it: the third word, 0; fuzz).
         reply: &[skip(I32)],
         short: Short::Request,
-        payload: Some(Payload {
-            fields: DOUBLE,
-            elem: "double",
-            count: 1,
-            max: u16::MAX,
-        }),
-        // 177 doubles a request, from `s_no` on.
-        pages: Some(Pages {
-            bytes: 177 * 8,
-            advance: Some(0),
-            from_done: false,
-            room: None,
-            until_short: true,
-        }),
         ends: MACRO_ENDS,
-        ..COMMAND
+        ..WRITE
     },
     Func {
         name: "cnc_rdpmacror2",
-        learnt: None,
         doc: "Reads `*num` P-code macro variables from `s_no` as IEEE doubles into `data`, as cnc_rdmacror2 reads custom ones (FANUC's library: the same routine), with `type` (0..2; what it selects is not known) as the request's third word: `*num` 0 is EW_LENGTH, then `type` above 2 EW_ATTRIB, before any traffic; the count is cut to the end of `s_no`'s range (#99, #499, #999, #19999, #99999, #199999, #986431, #4999999; a Series 15: #99, #199, #999, #39999, #99099, #99199, #99999; compared unsigned) and a count of 0 or below as an `int` reads nothing (`*num` 0). Requests carry at most 179 variables; an answer shorter than its request ends the read. No more than each request's doubles are written (FANUC's library writes whatever the CNC sends). An error answer leaves `*num` as it was; EW_NUMBER after some variables ends the read with them.",
         params: &[
             Param::ULong("s_no"),
@@ -153,33 +163,16 @@ pub const FUNCS: &[Func] = &[
             cmd::RDPMACROR2,
             &[Word::Arg(0), Word::Arg(1), Word::Arg(2)],
         )],
-        records: Some(Records {
-            fields: DOUBLE,
-            out: 0,
-            to: "",
-            elem: "double",
-            max: 179,
-            count: None,
-            room: None,
-        }),
-        pages: Some(Pages {
-            bytes: 179 * 8,
-            advance: Some(0),
-            from_done: true,
-            room: None,
-            until_short: true,
-        }),
         ends: P_MACRO_ENDS,
         dims: &[
             "10000|10100|19990|100|150|0|99999|200000|2147483647",
             "6|1|0|-1|179|180|400",
             "0|1|2|3|65535",
         ],
-        ..COMMAND
+        ..READ
     },
     Func {
         name: "cnc_wrpmacror2",
-        learnt: None,
         doc: "Writes `*num` P-code macro variables from `s_no` from the IEEE doubles `data`, as cnc_wrmacror2 writes custom ones (FANUC's library: the same routine), with `type` (0..2; what it selects is not known) as the request's third word: `*num` 0 is EW_LENGTH, then `type` above 2 EW_ATTRIB, before any traffic; the variables past the end of `s_no`'s range (as cnc_rdpmacror2) are left out. Requests carry at most 177 variables; the next is sent only when the CNC wrote the whole previous one, and `*num` is the sum of the answers' counts (a count cut short in the answer reads on in the request's bytes, as FANUC's library reads it: the third word, `type`). An error answer leaves `*num` as it was, the requests before it written; EW_NUMBER after some variables ends the write with them.",
         params: &[
             Param::ULong("s_no"),
@@ -196,20 +189,7 @@ pub const FUNCS: &[Func] = &[
         // word, `type` (fuzz: `type` 2 and an answer of 3 bytes count 2).
         reply: &[skip(I32)],
         short: Short::Request,
-        payload: Some(Payload {
-            fields: DOUBLE,
-            elem: "double",
-            count: 1,
-            max: u16::MAX,
-        }),
-        pages: Some(Pages {
-            bytes: 177 * 8,
-            advance: Some(0),
-            from_done: false,
-            room: None,
-            until_short: true,
-        }),
         ends: P_MACRO_ENDS,
-        ..COMMAND
+        ..WRITE
     },
 ];
