@@ -447,9 +447,9 @@ pub struct Func {
     pub forms: &'static [Form],
     pub reply: &'static [Field],
     /// Records after `reply`'s fields, if any.
-    pub records: Option<Records>,
+    pub records: Option<&'static Records>,
     /// The records a write sends, if any.
-    pub payload: Option<Payload>,
+    pub payload: Option<&'static Payload>,
     /// Further subpackets of the same request: the form's class and
     /// command with these words, one subpacket each (cnc_rdposerrs2 asks
     /// `[1]` and `[2]`). Each subpacket's answer carries an equal share of
@@ -462,10 +462,10 @@ pub struct Func {
     pub more_cmds: &'static [u16],
     /// The reply as columns, one per subpacket ([`Columns`]); `None`: the
     /// fields as [`Func::more`] shares them.
-    pub columns: Option<Columns>,
+    pub columns: Option<&'static Columns>,
     /// Classes on which no request is sent (no form of theirs): the
     /// answer is what the library learnt at connect.
-    pub local: Option<Local>,
+    pub local: Option<&'static Local>,
     pub short: Short,
     /// More records than the caller's count asked for.
     pub overflow: Overflow,
@@ -485,7 +485,7 @@ pub struct Func {
     pub learnt: Option<&'static [&'static str]>,
     /// A member FANUC's library writes as 0 unless another member's value
     /// is in a range.
-    pub zero_unless: Option<ZeroUnless>,
+    pub zero_unless: Option<&'static ZeroUnless>,
     /// The classes to which a write sends its value records ([`Int::BaseExp`]
     /// fields of its payload) binary, `m · 2^-e` as FANUC's library
     /// converts the digits and places (`crate::proto::macros::to_base2`,
@@ -515,7 +515,7 @@ pub struct Func {
     /// ([`Ends`]; a start in none: not cut).
     pub ends: &'static [Ends],
     /// A request sent before the function's own ([`First`]), if any.
-    pub first: Option<First>,
+    pub first: Option<&'static First>,
     /// Checks with detail codes, of number parameters and of each payload
     /// record ([`Rule`]).
     pub rules: &'static [Rule],

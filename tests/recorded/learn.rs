@@ -256,7 +256,7 @@ fn records_repeat_and_match_a_records_entry() {
         checks: &[],
         forms: &[every_class(2, &[])],
         reply: &[skip(I32)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to(I32, "no", I32),
                 to(I16, "h", I16),
@@ -461,7 +461,7 @@ fn records_of_char_arrays_step_by_the_array() {
         params: &[Param::Out("buf", "NAMES")],
         checks: &[],
         forms: &[every_class(3, &[])],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[Field {
                 wire: U8,
                 n: 4,

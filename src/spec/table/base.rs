@@ -47,7 +47,7 @@ pub const SERVO_LONGS: Func = Func {
     checks: &[],
     forms: &[],
     reply: &[],
-    records: Some(Records {
+    records: Some(&Records {
         fields: &[to(I32, "", I32), skip(I32)],
         out: 0,
         to: "",

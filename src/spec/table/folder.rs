@@ -130,7 +130,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the program drives (\"CNC_MEM\" ...): the answer's 12-byte names, as many as it holds (16 at most), each up to its NUL and zeros after, and their number into `max_num` (`dummy` not written).",
         params: &[Param::Out("drive", "ODBPDFDRV")],
         forms: &[every_class(cmd::PDF_DRIVE, &[])],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[text(12, "")],
             out: 0,
             to: "drive",

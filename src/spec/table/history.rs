@@ -86,7 +86,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the signals the operation history records (as many 16-byte records as the CNC sends, at most 60; datano and type untouched).",
         params: &[Param::Out("sig", "IODBSIG3")],
         forms: &[every_class(cmd::RDHISSGNL3, &[])],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to(I32, "ent_no", I16),
                 to(I32, "pmc_no", I16),

@@ -241,7 +241,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("proc_time", "ODBPTIME")],
         forms: &[every_class(cmd::RDPROCTIME, &[])],
         // Whole 12-byte records, their number written to `num`.
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to(I32, "prg_no", I32),
                 to(I16, "hour", I16),
@@ -280,7 +280,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::RDSYSHARD, &[Word::Arg(0), Word::Arg(1)])],
         // A 32-bit count: FANUC's library takes its low half as a short.
         reply: &[skip(I16), skip(I16)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to(U32, "id1", U32),
                 to(U32, "id2", U32),
@@ -315,7 +315,7 @@ pub const FUNCS: &[Func] = &[
         ],
         forms: &[every_class(cmd::RDSYSSOFT3, &[Word::Arg(0), Word::Arg(1)])],
         reply: &[skip(I16), to_out(0, I16, "", I16)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to_out(1, I16, "soft_id", I16),
                 Field {
@@ -390,7 +390,7 @@ pub const FUNCS: &[Func] = &[
             &[Word::Arg(0), Word::Arg(1)],
         )],
         reply: &[skip(I16), to_out(0, I16, "", I16)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to_out(1, I16, "soft_id", I16),
                 bytes(13, "soft_name"),

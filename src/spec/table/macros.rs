@@ -76,7 +76,7 @@ const DOUBLE: &[Field] = &[doubles(0, 1, "")];
 /// request from `s_no` on, an answer shorter than its request the last.
 const READ: Func = Func {
     learnt: None,
-    records: Some(Records {
+    records: Some(&Records {
         fields: DOUBLE,
         out: 0,
         to: "",
@@ -99,7 +99,7 @@ const READ: Func = Func {
 /// the next only when the CNC wrote the whole previous one.
 const WRITE: Func = Func {
     learnt: None,
-    payload: Some(Payload {
+    payload: Some(&Payload {
         fields: DOUBLE,
         elem: "double",
         count: 1,

@@ -249,7 +249,7 @@ pub const FUNCS: &[Func] = &[
             code: EW_NUMBER,
         }],
         forms: &[every_class(cmd::WRTOOL, &[Word::Arg(0)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: TOOL_RECORD,
             elem: "IODBTLMNG",
             count: ONE,
@@ -267,7 +267,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::RDMAGAZINE, &[])],
         // The pots answered, then their records.
         reply: &[skip(I32)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: POT_RECORD,
             out: 0,
             to: "",
@@ -276,7 +276,7 @@ pub const FUNCS: &[Func] = &[
             count: None,
             room: None,
         }),
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[to(I32, "magazine", I16), to(I32, "pot", I16), skip(I32)],
             elem: "IODBTLMAG",
             count: 0,
@@ -308,7 +308,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::REGMAGAZINE, &[])],
         // The pots registered.
         reply: &[skip(I32)],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: POT_RECORD,
             elem: "IODBTLMAG",
             count: 0,
@@ -332,7 +332,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::DELMAGAZINE, &[])],
         // The pots deleted.
         reply: &[skip(I32)],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[to(I32, "magazine", I16), to(I32, "pot", I16)],
             elem: "IODBTLMAG2",
             count: 0,
@@ -365,7 +365,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::REGTOOL, &[Word::Arg(0)])],
         // The tools registered.
         reply: &[skip(I32)],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: TOOL_RECORD,
             elem: "IODBTLMNG",
             count: 1,
@@ -398,7 +398,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::REGTOOL_F2, &[Word::Arg(0)])],
         // The tools registered.
         reply: &[skip(I32)],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: TOOL_RECORD_F2,
             elem: "IODBTLMNG_F2",
             count: 1,

@@ -55,7 +55,7 @@ const fn names(
         ],
         checks: COUNTED,
         forms,
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[NAME],
             out: 0,
             to: "",
@@ -92,7 +92,7 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: COUNTED,
         forms: &[every_class(cmd::RDPM_ITEM, READ)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: ITEM,
             out: 0,
             to: "",
@@ -114,7 +114,7 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: COUNTED,
         forms: &[every_class(cmd::WRPM_MCNITEM, &[Word::Arg(0)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[NAME],
             elem: "char[62]",
             count: 1,
@@ -133,7 +133,7 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: &[at_least_one(2)],
         forms: &[every_class(cmd::WRPM_ITEM, &[Word::Arg(0), Word::Arg(1)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: ITEM,
             elem: "IODBPMAINTE",
             count: 2,

@@ -18,8 +18,8 @@ const fn ch(to: &'static str) -> Field {
 }
 
 /// Whole 4-byte entries, as many as `*data_num` holds (no other cap).
-const fn entries(fields: &'static [Field], elem: &'static str, max: u16) -> Option<Records> {
-    Some(Records {
+const fn entries(fields: &'static [Field], elem: &'static str, max: u16) -> Records {
+    Records {
         fields,
         out: 0,
         to: "",
@@ -27,8 +27,23 @@ const fn entries(fields: &'static [Field], elem: &'static str, max: u16) -> Opti
         max,
         count: None,
         room: None,
-    })
+    }
 }
+
+// FANUC's library writes at most 32 names (its MAX_AXIS) [fuzz, rdaxisname
+// `s0Ln350`].
+const AXIS_NAMES: Records = entries(
+    &[ch("name"), ch("suff"), skip(U8), skip(U8)],
+    "ODBAXISNAME",
+    32,
+);
+// FANUC's library writes at most 8 names (its maximum spindles) [fuzz,
+// rdspdlname `s0Ln350`].
+const SPINDLE_NAMES: Records = entries(
+    &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
+    "ODBSPDLNAME",
+    8,
+);
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -40,13 +55,7 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: &[at_least_one(0)],
         forms: &[every_class(cmd::RDAXISNAME, &[])],
-        // FANUC's library writes at most 32 names (its MAX_AXIS) [fuzz,
-        // rdaxisname `s0Ln350`].
-        records: entries(
-            &[ch("name"), ch("suff"), skip(U8), skip(U8)],
-            "ODBAXISNAME",
-            32,
-        ),
+        records: Some(&AXIS_NAMES),
         dims: &["4|1|0|-1|2|3|32|33"],
         ..COMMAND
     },
@@ -59,13 +68,7 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: &[at_least_one(0)],
         forms: &[every_class(cmd::RDSPDLNAME, &[])],
-        records: entries(
-            &[ch("name"), ch("suff1"), ch("suff2"), ch("suff3")],
-            "ODBSPDLNAME",
-            // FANUC's library writes at most 8 names (its maximum spindles)
-            // [fuzz, rdspdlname `s0Ln350`].
-            8,
-        ),
+        records: Some(&SPINDLE_NAMES),
         dims: &["4|1|0|-1|2|8|9"],
         ..COMMAND
     },

@@ -97,7 +97,7 @@ pub const FUNCS: &[Func] = &[
             to(I32, "use_no2", I16),
             to(I32, "v2_type", I16),
         ],
-        zero_unless: Some(ZeroUnless {
+        zero_unless: Some(&ZeroUnless {
             zero: "use_no2",
             of: "v2_type",
             lo: i16::MIN as i32,
@@ -168,7 +168,7 @@ pub const FUNCS: &[Func] = &[
             },
         ],
         forms: &[every_class(cmd::WRPMACRO, &[Word::Arg(0), Word::Arg(0)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[digits(0, ""), places(0, "")],
             elem: "",
             count: NUMBERS,
@@ -200,7 +200,7 @@ pub const FUNCS: &[Func] = &[
             &[Word::Arg(0), Word::Upto(0, 1, 178, true)],
         )],
         reply: &[echo(0, "datano_s", I32), last("datano_e", I32)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[digits(0, "mcr_val"), places(0, "dec_val")],
             out: 0,
             to: "data",
@@ -210,7 +210,7 @@ pub const FUNCS: &[Func] = &[
             room: Some(2),
         }),
         ends: P_CODE_ENDS,
-        first: Some(P_CODE_INFO_FIRST),
+        first: Some(&P_CODE_INFO_FIRST),
         // The starts' cases are the oracle's combinations
         // (tools/oracle/cases.rs); #100000.. on the 16i class are left out
         // there: FANUC's library asks (1,0x012c) first (docs/protocol/macro.md).
@@ -247,7 +247,7 @@ pub const FUNCS: &[Func] = &[
             cmd::WRPMACRO,
             &[Word::Input("datano_s", I32), Word::Input("datano_e", I32)],
         )],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[digits(0, "mcr_val"), places(0, "dec_val")],
             elem: "IODBPR_data",
             count: SPAN,
@@ -266,7 +266,7 @@ pub const FUNCS: &[Func] = &[
         binary: Some(Classes::S16Not15),
         ends: P_CODE_ENDS,
         // After the `length` check.
-        first: Some(First {
+        first: Some(&First {
             arg: 1,
             after: 1,
             ..P_CODE_INFO_FIRST
@@ -286,7 +286,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::RDMACRONUM, &[Word::Arg(0)])],
         reply: &[to(U32, "", U32), to_out(1, I16, "", I16)],
         // The name in a 64-byte field (63 characters and its NUL).
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[Field {
                 wire: U8,
                 n: 64,

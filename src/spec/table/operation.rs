@@ -89,7 +89,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Writes the software operator panel's signals: `type` (sent as the first request word) selects them, bit 0 `mode` .. bit 12 `feed_hold` as cnc_rdopnlsgnl reads them; the 13 words are sent, then three zero words, `datano` is not.",
         params: &[Param::In("buf", "IODBSGNL")],
         forms: &[every_class(cmd::WROPNLSGNL, &[Word::Input("type", I16)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[
                 to(I16, "mode", I16),
                 to(I16, "hndl_ax", I16),
@@ -135,7 +135,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Writes the software operator panel's general purpose switches `type` selects (bit k: switch k + 1, from `sgnal` bit k); only `type`'s low byte is sent, and left in `type` (its high byte cleared); `sgnal` goes as a sign-extended word.",
         params: &[Param::In("buf", "IODBGNRL")],
         forms: &[every_class(cmd::WROPNLGNRL, &[Word::Input("type", U8)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[to(I16, "sgnal", I8)],
             elem: "IODBGNRL",
             count: ONE,
@@ -158,7 +158,7 @@ pub const FUNCS: &[Func] = &[
         forms: &[every_class(cmd::RDOPNLGSNAME, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I16)],
         // Whole names only: a short answer leaves the names after it.
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[switch_name(""), zero("[8]", I8)],
             out: 0,
             to: "sgnl1_name",
@@ -179,7 +179,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Writes the names of the general purpose switches `type` selects (bit k: switch k + 1): the first 8 characters of each of the eight names are sent; only `type`'s low byte is sent, and left in `type`.",
         params: &[Param::In("buf", "IODBRDNA")],
         forms: &[every_class(cmd::WROPNLGSNAME, &[Word::Input("type", U8)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: SWITCH_NAMES,
             elem: "IODBRDNA",
             count: ONE,

@@ -48,7 +48,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the PMC unit this handle's PMC calls address (1 until one is selected), without traffic. Writes 4 bytes into the `long`.",
         params: &[Param::Out("unittype", "long")],
         reply: &[to(I32, "", I32)],
-        local: Some(Local {
+        local: Some(&Local {
             classes: Classes::All,
             values: &[Learnt::PmcUnit],
         }),
@@ -65,7 +65,7 @@ pub const FUNCS: &[Func] = &[
         checks: TIMER_RANGE,
         forms: &[pmc(cmd::GET_TIMER_TYPE, &[Word::Arg(0), Word::Arg(1)])],
         // As many whole words as the answer holds, at most the range's.
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[to(I16, "", I16)],
             out: 0,
             to: "",
@@ -87,7 +87,7 @@ pub const FUNCS: &[Func] = &[
         ],
         checks: TIMER_RANGE,
         forms: &[pmc(cmd::SET_TIMER_TYPE, &[Word::Arg(0), Word::Arg(1)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[to(I16, "", I16)],
             elem: "short",
             count: SPAN,

@@ -25,7 +25,7 @@ const AXIS_VALUES: Func = Func {
         code: EW_ATTRIB,
     }],
     reply: &[echo(0, "type", I16)],
-    records: Some(Records {
+    records: Some(&Records {
         fields: &[to(I32, "", I32), skip(U16), skip(I16)],
         out: 0,
         to: "data",

@@ -101,7 +101,7 @@ pub const FUNCS: &[Func] = &[
             Param::Out("command", "ODBCMD"),
         ],
         forms: &[every_class(cmd::RDCOMMAND, &[Word::Arg(0), Word::Arg(1)])],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to(I8, "adrs", I8),
                 to(I8, "num", I8),
@@ -126,7 +126,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("mode", "short")],
         forms: &[every_class(cmd::RDOPMODE, &[])],
         // One whole word, if the answer holds one.
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[to(I16, "", I16)],
             out: 0,
             to: "",

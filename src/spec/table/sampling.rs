@@ -172,7 +172,7 @@ pub const FUNCS: &[Func] = &[
             },
         ],
         forms: &[every_class(cmd::SDTSETCHNL, &[Word::Arg(0)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[
                 to(I16, "chno", I8),
                 to(I16, "axis", I8),

@@ -90,7 +90,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Writes the menu switch signals `mask` selects (bit k: switch k) from `data`'s bits: `data` goes as a request word, `mask` as the payload (32 bits, sign-extended).",
         params: &[Param::Short("data"), Param::Short("mask")],
         forms: &[every_class(cmd::WRMENUSWITCH, &[Word::Arg(0)])],
-        payload: Some(Payload {
+        payload: Some(&Payload {
             fields: &[to(I32, "", I16)],
             elem: "",
             count: NUMBERS,

@@ -24,7 +24,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the actual servo current of each axis.",
         params: &[Param::Out("data", "short")],
         forms: &[every_class(cmd::SERVO_LOAD, &[Word::Const(1)])],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[to(I32, "", I16), skip(I32)],
             out: 0,
             to: "",
@@ -41,7 +41,7 @@ pub const FUNCS: &[Func] = &[
         params: &[Param::Out("data", "char")],
         forms: &[every_class(cmd::RDSPDLALM, &[])],
         // The low byte of each i16, as many as the answer holds.
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[to(I16, "", I8)],
             out: 0,
             to: "",
@@ -75,7 +75,7 @@ pub const FUNCS: &[Func] = &[
             words: &[Word::Const(1)],
         }],
         reply: &[to(I16, "", I16)],
-        local: Some(Local {
+        local: Some(&Local {
             classes: Classes::S16,
             values: &[Learnt::MaxSpindles],
         }),
@@ -89,7 +89,7 @@ pub const FUNCS: &[Func] = &[
         doc: "Reads the position deviation of each spindle (spindle position control), one `long` per spindle (at most 8; 4 bytes written per `long`).",
         params: &[Param::Out("data", "long")],
         forms: &[every_class(cmd::POSERR, &[Word::Const(0)])],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[to(I32, "", I32), skip(I32)],
             out: 0,
             to: "",
@@ -150,7 +150,7 @@ pub const FUNCS: &[Func] = &[
                 ..to(I32, "data", I32)
             },
         ],
-        columns: Some(Columns {
+        columns: Some(&Columns {
             stride: &[2, 8],
             none: crate::ew::EW_NOOPT,
         }),

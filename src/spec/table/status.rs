@@ -11,7 +11,7 @@ pub const FUNCS: &[Func] = &[Func {
     params: &[Param::Out("cncid", "unsigned long")],
     forms: &[every_class(cmd::RDCNCID, &[])],
     // As many whole words as the answer holds, at most four.
-    records: Some(Records {
+    records: Some(&Records {
         fields: &[to(U32, "", U32)],
         out: 0,
         to: "",

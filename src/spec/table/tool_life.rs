@@ -266,7 +266,7 @@ pub const FUNCS: &[Func] = &[
         }],
         forms: &[every_class(cmd::RDWKCDSHFT, &[Word::Arg(0)])],
         reply: &[echo(0, "type", I16)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[to(I32, "", I32), skip(I32)],
             out: 0,
             to: "data",
@@ -302,7 +302,7 @@ pub const FUNCS: &[Func] = &[
         )],
         // The first group's number (not read), then 32-byte group records.
         reply: &[echo(0, "s_grp", I16), last("e_grp", I16), skip(I32)],
-        records: Some(Records {
+        records: Some(&Records {
             fields: &[
                 to(I32, "n_tool", I32),
                 skip(I32),
