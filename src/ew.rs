@@ -97,8 +97,15 @@ mod tests {
         assert!(checks >= 5, "{checks} checks");
         let spec = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/spec");
         let mut files = vec![spec.join("types.rs"), spec.join("mod.rs")];
-        for e in std::fs::read_dir(spec.join("table")).unwrap() {
-            files.push(e.unwrap().path());
+        let mut dirs = vec![spec.join("table")];
+        while let Some(d) = dirs.pop() {
+            for e in std::fs::read_dir(d).unwrap() {
+                let p = e.unwrap().path();
+                match p.is_dir() {
+                    true => dirs.push(p),
+                    false => files.push(p),
+                }
+            }
         }
         let mut named = 0;
         for p in files {
