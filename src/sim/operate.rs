@@ -182,11 +182,13 @@ fn switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
 /// the first NUL; switches before a named one stay unnamed.
 fn write_switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let select = q.arg(0);
-    if q.payload.len() < 8 * NAME {
+    // The bytes as sent: the two writes share the command, and their
+    // payloads (8 or 16 names) one layout.
+    if q.bytes.len() < 8 * NAME {
         return Err(CncError::new(EW_DATA));
     }
     let names = &mut m.profile.operator_panel.switch_names;
-    for (k, b) in q.payload.chunks(NAME).enumerate().take(SWITCHES) {
+    for (k, b) in q.bytes.chunks_exact(NAME).enumerate().take(SWITCHES) {
         if select >> k & 1 == 0 {
             continue;
         }
@@ -194,7 +196,7 @@ fn write_switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
             names.resize(k + 1, String::new());
         }
         // Each byte kept as one character (Latin-1).
-        let bytes = b.iter().map(|&c| c as u8).take_while(|&c| c != 0);
+        let bytes = b.iter().copied().take_while(|&c| c != 0);
         names[k] = bytes.map(char::from).collect();
     }
     Ok(Vec::new())
