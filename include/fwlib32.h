@@ -947,6 +947,38 @@ typedef struct IODBTGI {
 } IODBTGI;
 
 /*
+ One signal of IODBSIG: a PMC signal byte the operation history records
+ (the 16i's form, without the PMC number).
+ */
+typedef struct IODBSIG_DATA {
+    /*
+     The entry's number (1..20).
+     */
+    short ent_no;
+    /*
+     The byte's address number.
+     */
+    short sig_no;
+    /*
+     The address letter as a number (0 G, 1 F, 2 Y, 3 X ...).
+     */
+    char sig_name;
+    /*
+     The bits recorded.
+     */
+    char mask_pat;
+} IODBSIG_DATA;
+
+/*
+ cnc_rdhissgnl: the signals the operation history records, 20 entries.
+ */
+typedef struct IODBSIG {
+    short datano;
+    short type;
+    struct IODBSIG_DATA data[20];
+} IODBSIG;
+
+/*
  One signal of IODBSIG3: a PMC signal byte the operation history records.
  */
 typedef struct IODBSIG3_DATA {
@@ -1261,6 +1293,16 @@ typedef struct IODBGNRL {
 } IODBGNRL;
 
 /*
+ cnc_rdopnlgnrl2 / cnc_wropnlgnrl2: the software operator panel's
+ general purpose switches, `type` and `sgnal` as shorts.
+ */
+typedef struct IODBGNRL2 {
+    short datano;
+    short type;
+    short sgnal;
+} IODBGNRL2;
+
+/*
  cnc_rdopnlgsname / cnc_wropnlgsname: the names of the software
  operator panel's eight general purpose switches (8 characters and a
  NUL each; `type` selects them).
@@ -1277,6 +1319,32 @@ typedef struct IODBRDNA {
     char sgnl7_name[9];
     char sgnl8_name[9];
 } IODBRDNA;
+
+/*
+ cnc_rdopnlgsname2 / cnc_wropnlgsname2: the names of the software
+ operator panel's sixteen general purpose switches (8 characters and a
+ NUL each; `type` selects them).
+ */
+typedef struct IODBRDNA2 {
+    short datano;
+    short type;
+    char sgnl1_name[9];
+    char sgnl2_name[9];
+    char sgnl3_name[9];
+    char sgnl4_name[9];
+    char sgnl5_name[9];
+    char sgnl6_name[9];
+    char sgnl7_name[9];
+    char sgnl8_name[9];
+    char sgnl9_name[9];
+    char sgnl10_name[9];
+    char sgnl11_name[9];
+    char sgnl12_name[9];
+    char sgnl13_name[9];
+    char sgnl14_name[9];
+    char sgnl15_name[9];
+    char sgnl16_name[9];
+} IODBRDNA2;
 
 /*
  cnc_rdopnlsgnl: the software operator panel's signals (`type` selects
@@ -3669,6 +3737,16 @@ short cnc_getfigure(unsigned short FlibHndl,
 short cnc_getlanguage(unsigned short FlibHndl, short *lang);
 
 /*
+ Reads the CNC's Ethernet MAC address as characters: 13 bytes written (12
+ hexadecimal digits and a NUL), the answer's first 13 as they are, zeros
+ past a shorter answer.
+
+ # Safety
+ `mac` must be NULL or point to 13 writable bytes: 13 `char`s.
+ */
+short cnc_getmacaddress(unsigned short FlibHndl, char *mac);
+
+/*
  Reads the current path of this handle and the CNC's number of paths.
 
  # Safety
@@ -3699,6 +3777,24 @@ short cnc_getregprgnum(unsigned short FlibHndl, short *a, short *b, short *c);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_getrtmiorngnum(unsigned short FlibHndl, unsigned long *a);
+
+/*
+ Reads how many real-time custom macro volatile variables the CNC has (4
+ bytes written into the `long`).
+
+ # Safety
+ `num` must be NULL or point to a writable long.
+ */
+short cnc_getrtmrvar(unsigned short FlibHndl, long *num);
+
+/*
+ Reads how many real-time custom macro non-volatile variables the CNC has
+ (4 bytes written into the `long`).
+
+ # Safety
+ `num` must be NULL or point to a writable long.
+ */
+short cnc_getrtmrvars(unsigned short FlibHndl, long *num);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4664,6 +4760,15 @@ short cnc_rdalarmchar(unsigned short FlibHndl, short *a, short *b);
 short cnc_rdalmhisno(unsigned short FlibHndl, unsigned short *hisno);
 
 /*
+ Reads the number of alarm history entries (the 30i's history): the low
+ 16 bits of the CNC's 32-bit count.
+
+ # Safety
+ `hisno` must be NULL or point to a writable unsigned short.
+ */
+short cnc_rdalmhisno3(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
  Reads the alarm history entries `s_number..=e_number` (1 = newest) into
  ODBAHIS: year as year mod 100, the other time fields as bytes, as
  FANUC's library writes them. `e_no` = `s_no` + entries written - 1.
@@ -5233,6 +5338,16 @@ short cnc_rdhipitchinfo(unsigned short FlibHndl, long *a);
 short cnc_rdhipitchr(unsigned short FlibHndl, long a, long *b, long *c);
 
 /*
+ Reads the signals the operation history records, the 16i's form (as many
+ 12-byte records as the CNC sends, at most 20; datano and type
+ untouched).
+
+ # Safety
+ `sig` must be NULL or point to a writable IODBSIG.
+ */
+short cnc_rdhissgnl(unsigned short FlibHndl, struct IODBSIG *sig);
+
+/*
  Reads the signals the operation history records (as many 16-byte records
  as the CNC sends, at most 60; datano and type untouched).
 
@@ -5602,6 +5717,15 @@ short cnc_rdope_lvl(unsigned short FlibHndl, short *lvl);
 short cnc_rdophisno(unsigned short FlibHndl, unsigned short *hisno);
 
 /*
+ Reads the number of operation history entries (the 30i's history): the
+ low 16 bits of the CNC's 32-bit count.
+
+ # Safety
+ `hisno` must be NULL or point to a writable unsigned short.
+ */
+short cnc_rdophisno3(unsigned short FlibHndl, unsigned short *hisno);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -5708,6 +5832,17 @@ short cnc_rdopmsg3m(unsigned short FlibHndl, short a, short *b, struct OPMSG3 *c
 short cnc_rdopnlgnrl(unsigned short FlibHndl, short type, struct IODBGNRL *buf);
 
 /*
+ Reads the software operator panel's general purpose switches as
+ cnc_rdopnlgnrl, into shorts: `type` sent whole and written back, `sgnal`
+ the answer's second byte sign-extended, as FANUC's library writes it
+ (switch 8 on reads negative; `datano` left as it was).
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBGNRL2.
+ */
+short cnc_rdopnlgnrl2(unsigned short FlibHndl, short type, struct IODBGNRL2 *buf);
+
+/*
  Reads the names of the software operator panel's eight general purpose
  switches: 8 characters each, then a NUL; only whole names answered are
  written (`type` sent and written back as its low byte; `datano` left as
@@ -5717,6 +5852,16 @@ short cnc_rdopnlgnrl(unsigned short FlibHndl, short type, struct IODBGNRL *buf);
  `buf` must be NULL or point to a writable IODBRDNA.
  */
 short cnc_rdopnlgsname(unsigned short FlibHndl, short type, struct IODBRDNA *buf);
+
+/*
+ Reads the names of the software operator panel's sixteen general purpose
+ switches: 8 characters each, then a NUL; only whole names answered are
+ written (`type` sent whole and written back; `datano` left as it was).
+
+ # Safety
+ `buf` must be NULL or point to a writable IODBRDNA2.
+ */
+short cnc_rdopnlgsname2(unsigned short FlibHndl, short type, struct IODBRDNA2 *buf);
 
 /*
  Reads the software operator panel's signals (`type` written back;
@@ -8499,6 +8644,16 @@ short cnc_wrmofs(unsigned short FlibHndl, short a, short b, short c, long d);
 short cnc_wropnlgnrl(unsigned short FlibHndl, struct IODBGNRL *buf);
 
 /*
+ Writes the software operator panel's general purpose switches `type`
+ selects (bit k: switch k + 1, from `sgnal` bit k); `type` is sent whole
+ as the first word, `sgnal` as a word.
+
+ # Safety
+ `buf` must be NULL or point to a readable and writable IODBGNRL2.
+ */
+short cnc_wropnlgnrl2(unsigned short FlibHndl, struct IODBGNRL2 *buf);
+
+/*
  Writes the names of the general purpose switches `type` selects (bit k:
  switch k + 1): the first 8 characters of each of the eight names are
  sent; only `type`'s low byte is sent, and left in `type`.
@@ -8507,6 +8662,16 @@ short cnc_wropnlgnrl(unsigned short FlibHndl, struct IODBGNRL *buf);
  `buf` must be NULL or point to a readable and writable IODBRDNA.
  */
 short cnc_wropnlgsname(unsigned short FlibHndl, struct IODBRDNA *buf);
+
+/*
+ Writes the names of the general purpose switches `type` selects (bit k:
+ switch k + 1): the first 8 characters of each of the sixteen names are
+ sent; `type` is sent whole as the first word.
+
+ # Safety
+ `buf` must be NULL or point to a readable and writable IODBRDNA2.
+ */
+short cnc_wropnlgsname2(unsigned short FlibHndl, struct IODBRDNA2 *buf);
 
 /*
  Writes the software operator panel's signals: `type` (sent as the first

@@ -14,8 +14,8 @@ use crate::ew;
 use crate::proto::alarm::{AlmHisRecord, AlmHistory, HIS_MSG_LEN, RDALMHISNO, RDALMHISTRY};
 use crate::proto::cmd::RDPITCHINFO;
 use crate::proto::cmd::{
-    CLEAROMHIS, CLEAROPHIS, RDHISSGNL3, RDOMHISINFO, RDOMHISNO, RDOPHISNO, STARTOMHIS, STARTOPHIS,
-    STOPOMHIS, STOPOPHIS,
+    CLEAROMHIS, CLEAROPHIS, RDALMHISNO3, RDHISSGNL, RDHISSGNL3, RDOMHISINFO, RDOMHISNO, RDOPHISNO,
+    RDOPHISNO3, STARTOMHIS, STARTOPHIS, STOPOMHIS, STOPOPHIS,
 };
 use crate::proto::history::{
     RDALMHISTRY5, RDOMHISTRY, RDOMHISTRY2, RDOPHISTRY, RDOPHISTRY4, RDPITCHR, WRHISSGNL3,
@@ -23,6 +23,9 @@ use crate::proto::history::{
 use crate::proto::offset::Count;
 use crate::proto::packet::ReqSub;
 use std::time::SystemTime;
+
+/// The signals cnc_rdhissgnl reads (IODBSIG's entries).
+const HIS_SIGNALS_16: usize = 20;
 
 /// A count as the history functions answer it (at most 65535).
 fn count(n: usize) -> Vec<i64> {
@@ -47,6 +50,13 @@ pub(super) const ROUTES: &[Route] = &[
     Route::cnc(RDALMHISTRY5, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
     Route::cnc(RDPITCHR, |m, q| m.history_bytes(q.path, q.cmd, q.args)),
     Route::cnc(WRHISSGNL3, |m, q| m.write_signals(q)),
+    // The 30i's counts: all 32 bits.
+    Route::table(RDALMHISNO3, |m, _| {
+        Ok(vec![m.profile.alarm_history.entries.len() as i64])
+    }),
+    Route::table(RDOPHISNO3, |m, _| {
+        Ok(vec![m.profile.operation_history.entries.len() as i64])
+    }),
     Route::table(RDOPHISNO, |m, _| {
         Ok(count(m.profile.operation_history.entries.len()))
     }),
@@ -63,6 +73,12 @@ pub(super) const ROUTES: &[Route] = &[
         Ok(Vec::new())
     }),
     Route::table(RDHISSGNL3, |m, _| Ok(m.signal_table())),
+    // The 16i's form: the first 20 entries, without the PMC number.
+    Route::table(RDHISSGNL, |m, _| {
+        let t = m.signal_table();
+        let recs = t.chunks(7).take(HIS_SIGNALS_16);
+        Ok(recs.flat_map(|r| [r[0], r[2], 0, r[4], r[5], 0]).collect())
+    }),
     Route::table(RDOMHISNO, |m, _| {
         Ok(count(m.profile.operator_message_history.entries.len()))
     }),

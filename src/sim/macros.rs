@@ -8,8 +8,8 @@ use super::route::{Route, enc};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{
-    RDMACROINFO, RDMACRONUM, RDMACROR2, RDPMACRO, RDPMACROINFO, RDPMACROINFO2, RDPMACROR2,
-    WRMACROR2, WRPMACRO, WRPMACROR2,
+    GETRTMRVAR, GETRTMRVARS, RDMACROINFO, RDMACRONUM, RDMACROR2, RDPMACRO, RDPMACROINFO,
+    RDPMACROINFO2, RDPMACROR2, WRMACROR2, WRPMACRO, WRPMACROR2,
 };
 use crate::proto::macros::{MacroInfo, RDMACRO, VACANT_DEC, WRMACRO};
 use crate::proto::value::Value;
@@ -37,6 +37,13 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDMACROINFO, |m, q| {
         m.macro_info(q.path)
             .map(|i| vec![i64::from(i.use_no1), i64::from(i.use_no2)])
+    }),
+    // The real-time custom macro variables' counts.
+    Route::table(GETRTMRVAR, |m, q| {
+        Ok(vec![i64::from(m.path(q.path)?.rt_macros.volatile)])
+    }),
+    Route::table(GETRTMRVARS, |m, q| {
+        Ok(vec![i64::from(m.path(q.path)?.rt_macros.nonvolatile)])
     }),
     Route::table(RDPMACROINFO, pcode_info),
     Route::table(RDPMACRO, pcode_read),

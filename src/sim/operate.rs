@@ -154,14 +154,15 @@ fn general_switches(m: &mut Machine) -> Reply<&mut u8> {
     f.map(|b| &mut b[0]).ok_or(CncError::new(EW_NOPMC))
 }
 
-/// The general purpose switches, as many as IODBRDNA names, and the
-/// characters of a name.
-const SWITCHES: usize = 8;
+/// The general purpose switches, as many as IODBRDNA2 names (IODBRDNA
+/// the first 8), and the characters of a name.
+const SWITCHES: usize = 16;
 const NAME: usize = 8;
 
-/// cnc_rdopnlgsname: `type` (written back), then each switch's name, 8
-/// bytes zero-padded, and the NUL FANUC's library writes after it (not on
-/// the wire).
+/// cnc_rdopnlgsname, cnc_rdopnlgsname2: `type` (written back), then each
+/// of the 16 switches' names, 8 bytes zero-padded, and the NUL FANUC's
+/// library writes after it (not on the wire); cnc_rdopnlgsname reads the
+/// first 8.
 fn switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let names = &m.profile.operator_panel.switch_names;
     let mut v = vec![i64::from(q.arg(0))];
@@ -176,16 +177,18 @@ fn switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     Ok(v)
 }
 
-/// cnc_wropnlgsname: the names `type` selects (bit k: switch k + 1) from
-/// the payload's 8 bytes each, up to the first NUL; switches before a
-/// named one stay unnamed.
+/// cnc_wropnlgsname (8 names), cnc_wropnlgsname2 (16): the names `type`
+/// selects (bit k: switch k + 1) from the payload's 8 bytes each, up to
+/// the first NUL; switches before a named one stay unnamed.
 fn write_switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
     let select = q.arg(0);
-    if q.payload.len() < SWITCHES * NAME {
+    // The bytes as sent: the two writes share the command, and their
+    // payloads (8 or 16 names) one layout.
+    if q.bytes.len() < 8 * NAME {
         return Err(CncError::new(EW_DATA));
     }
     let names = &mut m.profile.operator_panel.switch_names;
-    for (k, b) in q.payload.chunks(NAME).enumerate().take(SWITCHES) {
+    for (k, b) in q.bytes.chunks_exact(NAME).enumerate().take(SWITCHES) {
         if select >> k & 1 == 0 {
             continue;
         }
@@ -193,7 +196,7 @@ fn write_switch_names(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
             names.resize(k + 1, String::new());
         }
         // Each byte kept as one character (Latin-1).
-        let bytes = b.iter().map(|&c| c as u8).take_while(|&c| c != 0);
+        let bytes = b.iter().copied().take_while(|&c| c != 0);
         names[k] = bytes.map(char::from).collect();
     }
     Ok(Vec::new())

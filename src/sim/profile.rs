@@ -83,8 +83,9 @@ pub struct Profile {
 }
 
 /// `[operator_panel]`: the software operator panel's general purpose
-/// switches' names (cnc_rdopnlgsname; cnc_wropnlgsname changes them), at
-/// most 8 characters each; switches past the list have no name.
+/// switches' names (cnc_rdopnlgsname reads 8, cnc_rdopnlgsname2 16;
+/// cnc_wropnlgsname, cnc_wropnlgsname2 change them), at most 8 characters
+/// each; switches past the list have no name.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct OperatorPanel {
@@ -147,6 +148,8 @@ pub struct Cnc {
     /// board, 2 Data Server) and the device in use (0 embedded, 1 PCMCIA card).
     pub ether_type: i16,
     pub ether_device: i16,
+    /// cnc_getmacaddress: the Ethernet MAC address, 12 hexadecimal digits.
+    pub mac_address: String,
 }
 
 impl Default for Cnc {
@@ -165,6 +168,7 @@ impl Default for Cnc {
             option: 1,
             ether_type: 0,
             ether_device: 0,
+            mac_address: "000000000000".into(),
         }
     }
 }
@@ -225,6 +229,8 @@ pub struct Path {
     pub macros: macros::Macros,
     /// P-code macro variables (`[path.pmacros]`).
     pub pmacros: macros::PCodeMacros,
+    /// Real-time custom macro variables (`[path.rt_macros]`).
+    pub rt_macros: macros::RtMacros,
     // --- pmc ---
 
     // --- offset ---

@@ -48,6 +48,11 @@ pub(super) const ROUTES: &[Route] = &[
         Ok(m.profile.cnc.cnc_id.iter().map(|w| i64::from(*w)).collect())
     }),
     Route::table(RDETHERINFO, ether_info),
+    // cnc_getmacaddress: the profile's digits (at most 12) and a NUL.
+    Route::table(cmd::GETMACADDRESS, |m, _| {
+        let mac = m.profile.cnc.mac_address.bytes().take(12);
+        Ok(mac.chain([0]).map(i64::from).collect())
+    }),
     Route::table(RDSYSHARD, boards),
     Route::table(RDSYSSOFT3, software),
     Route::table(RDSYSSOFT3_STR, software),

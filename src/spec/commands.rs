@@ -223,14 +223,14 @@ commands! {
     /// words: writes the software operator panel's signals `type` selects.
     WROPNLSGNL = CLASS_CNC 0x005e [cnc_wropnlsgnl];
     /// cnc_rdopnlgnrl: (1,0x005f)\[type\] the panel's general purpose switches.
-    RDOPNLGNRL = CLASS_CNC 0x005f [cnc_rdopnlgnrl];
+    RDOPNLGNRL = CLASS_CNC 0x005f [cnc_rdopnlgnrl cnc_rdopnlgnrl2];
     /// cnc_wropnlgnrl: (1,0x0060)\[type & 0xff, 0, 0, 0, 2\] + 0, sgnal.
-    WROPNLGNRL = CLASS_CNC 0x0060 [cnc_wropnlgnrl];
+    WROPNLGNRL = CLASS_CNC 0x0060 [cnc_wropnlgnrl cnc_wropnlgnrl2];
     /// cnc_rdopnlgsname: (1,0x0061)\[type & 0xff\] the general purpose
     /// switches' names, 8 bytes each.
-    RDOPNLGSNAME = CLASS_CNC 0x0061 [cnc_rdopnlgsname];
+    RDOPNLGSNAME = CLASS_CNC 0x0061 [cnc_rdopnlgsname cnc_rdopnlgsname2];
     /// cnc_wropnlgsname: (1,0x0062)\[type & 0xff, 0, 0, 0, 64\] + 8 names.
-    WROPNLGSNAME = CLASS_CNC 0x0062 [cnc_wropnlgsname];
+    WROPNLGSNAME = CLASS_CNC 0x0062 [cnc_wropnlgsname cnc_wropnlgsname2];
     RDWKCDSHFT = CLASS_CNC 0x0063 [cnc_rdwkcdshft];
     WRWKCDSHFT = CLASS_CNC 0x0064 [cnc_wrwkcdshft];
     STOPOPHIS = CLASS_CNC 0x0067 [cnc_stopophis];
@@ -466,6 +466,20 @@ commands! {
     GETCNCMODEL = CLASS_CNC 0x016f [cnc_getcncmodel];
     /// cnc_rdrepeatval: `(1,0x02c6)`, the program's repeats (i32).
     RDREPEATVAL = CLASS_CNC 0x02c6 [cnc_rdrepeatval];
+    // Family D of the long tail: histories, timers, machine state.
+    /// cnc_rdhissgnl: `(1,0x006e)`, 12-byte records of the signals the
+    /// operation history records (the 16i's form).
+    RDHISSGNL = CLASS_CNC 0x006e [cnc_rdhissgnl];
+    /// cnc_getmacaddress: `(1,0x01b6)`, the Ethernet MAC address's characters.
+    GETMACADDRESS = CLASS_CNC 0x01b6 [cnc_getmacaddress];
+    /// cnc_rdalmhisno3: `(1,0x00d6)`, the alarm history's entries (i32).
+    RDALMHISNO3 = CLASS_CNC 0x00d6 [cnc_rdalmhisno3];
+    /// cnc_rdophisno3: `(1,0x00d7)`, the operation history's entries (i32).
+    RDOPHISNO3 = CLASS_CNC 0x00d7 [cnc_rdophisno3];
+    /// cnc_getrtmrvars: `(1,0x01db)`, the real-time macro non-volatile variables (i32).
+    GETRTMRVARS = CLASS_CNC 0x01db [cnc_getrtmrvars];
+    /// cnc_getrtmrvar: `(1,0x01de)`, the real-time macro volatile variables (i32).
+    GETRTMRVAR = CLASS_CNC 0x01de [cnc_getrtmrvar];
     /// cnc_seqsrch: `(1,0x001e)[seq]`, no answer.
     SEQSRCH = CLASS_CNC 0x001e [cnc_seqsrch];
     /// cnc_rewind: `(1,0x001f)`, no answer.

@@ -72,6 +72,30 @@ pub struct ODBOMIF {
     pub om_char: c_ushort,
 }
 
+/// One signal of IODBSIG: a PMC signal byte the operation history records
+/// (the 16i's form, without the PMC number).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBSIG_DATA {
+    /// The entry's number (1..20).
+    pub ent_no: c_short,
+    /// The byte's address number.
+    pub sig_no: c_short,
+    /// The address letter as a number (0 G, 1 F, 2 Y, 3 X ...).
+    pub sig_name: c_char,
+    /// The bits recorded.
+    pub mask_pat: c_char,
+}
+
+/// cnc_rdhissgnl: the signals the operation history records, 20 entries.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBSIG {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub data: [IODBSIG_DATA; 20],
+}
+
 /// One signal of IODBSIG3: a PMC signal byte the operation history records.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -206,6 +206,42 @@ pub struct IODBRDNA {
     pub sgnl8_name: [c_char; 9],
 }
 
+/// cnc_rdopnlgnrl2 / cnc_wropnlgnrl2: the software operator panel's
+/// general purpose switches, `type` and `sgnal` as shorts.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBGNRL2 {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub sgnal: c_short,
+}
+
+/// cnc_rdopnlgsname2 / cnc_wropnlgsname2: the names of the software
+/// operator panel's sixteen general purpose switches (8 characters and a
+/// NUL each; `type` selects them).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBRDNA2 {
+    pub datano: c_short,
+    pub r#type: c_short,
+    pub sgnl1_name: [c_char; 9],
+    pub sgnl2_name: [c_char; 9],
+    pub sgnl3_name: [c_char; 9],
+    pub sgnl4_name: [c_char; 9],
+    pub sgnl5_name: [c_char; 9],
+    pub sgnl6_name: [c_char; 9],
+    pub sgnl7_name: [c_char; 9],
+    pub sgnl8_name: [c_char; 9],
+    pub sgnl9_name: [c_char; 9],
+    pub sgnl10_name: [c_char; 9],
+    pub sgnl11_name: [c_char; 9],
+    pub sgnl12_name: [c_char; 9],
+    pub sgnl13_name: [c_char; 9],
+    pub sgnl14_name: [c_char; 9],
+    pub sgnl15_name: [c_char; 9],
+    pub sgnl16_name: [c_char; 9],
+}
+
 /// cnc_rdsyshard: one board (hardware) of the CNC: its two ID words, its
 /// group and hardware IDs, how many of it are mounted, its slot, and the
 /// display format of each ID.

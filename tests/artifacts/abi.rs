@@ -307,6 +307,12 @@ rust_layouts! {
         datano, r#type, sgnl1_name, sgnl2_name, sgnl3_name, sgnl4_name, sgnl5_name, sgnl6_name,
         sgnl7_name, sgnl8_name,
     }
+    IODBGNRL2 { datano, r#type, sgnal }
+    IODBRDNA2 {
+        datano, r#type, sgnl1_name, sgnl2_name, sgnl3_name, sgnl4_name, sgnl5_name, sgnl6_name,
+        sgnl7_name, sgnl8_name, sgnl9_name, sgnl10_name, sgnl11_name, sgnl12_name, sgnl13_name,
+        sgnl14_name, sgnl15_name, sgnl16_name,
+    }
     ODBCSS { srpm, sspm, smax }
     ODBTLINFO { max_group, max_tool, max_minute, max_cycle }
 
@@ -474,6 +480,7 @@ rust_layouts! {
     ODBPRS { datano, r#type, data_info, rstr_bc, rstr_m, rstr_t, rstr_s, rstr_b, dest, dist }
 
     // --- the signals the operation history records ---
+    IODBSIG { datano, r#type, data }
     IODBSIG3 { datano, r#type, data }
 
     // --- tool_axis collectors (issue 24) ---

@@ -187,3 +187,13 @@ impl Macros {
         self.protected.iter().any(|&(a, b)| (a..=b).contains(&n))
     }
 }
+
+/// `[path.rt_macros]`: the real-time custom macro variables a path has
+/// (cnc_getrtmrvar counts the volatile ones, cnc_getrtmrvars the
+/// non-volatile ones).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct RtMacros {
+    pub volatile: i32,
+    pub nonvolatile: i32,
+}

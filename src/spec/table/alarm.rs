@@ -30,4 +30,13 @@ pub const FUNCS: &[Func] = &[
         reply: &[to(I32, "", U16)],
         ..super::base::COMMAND
     },
+    Func {
+        name: "cnc_rdalmhisno3",
+        learnt: Some(&[]),
+        doc: "Reads the number of alarm history entries (the 30i's history): the low 16 bits of the CNC's 32-bit count.",
+        params: &[Param::Out("hisno", "unsigned short")],
+        forms: &[every_class(cmd::RDALMHISNO3, &[])],
+        reply: &[to(I32, "", U16)],
+        ..super::base::COMMAND
+    },
 ];

@@ -15,6 +15,15 @@ pub const FUNCS: &[Func] = &[
         ..COMMAND
     },
     Func {
+        name: "cnc_rdophisno3",
+        learnt: Some(&[]),
+        doc: "Reads the number of operation history entries (the 30i's history): the low 16 bits of the CNC's 32-bit count.",
+        params: &[Param::Out("hisno", "unsigned short")],
+        forms: &[every_class(cmd::RDOPHISNO3, &[])],
+        reply: &[to(I32, "", U16)],
+        ..COMMAND
+    },
+    Func {
         name: "cnc_startophis",
         doc: "Starts recording the operation history.",
         forms: &[every_class(cmd::STARTOPHIS, &[])],
@@ -79,6 +88,32 @@ pub const FUNCS: &[Func] = &[
             },
             every_class(cmd::CLEAROMHIS, &[]),
         ],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdhissgnl",
+        learnt: Some(&[
+            "records: i32 entry and signal numbers (low halves), then a byte, the name, the mask, a byte, as cnc_rdhissgnl3's without the PMC number (recorded; the draft read i16 at bytes 0 and 4)",
+        ]),
+        doc: "Reads the signals the operation history records, the 16i's form (as many 12-byte records as the CNC sends, at most 20; datano and type untouched).",
+        params: &[Param::Out("sig", "IODBSIG")],
+        forms: &[every_class(cmd::RDHISSGNL, &[])],
+        records: Some(&Records {
+            fields: &[
+                to(I32, "ent_no", I16),
+                to(I32, "sig_no", I16),
+                skip(U8),
+                to(U8, "sig_name", I8),
+                to(U8, "mask_pat", I8),
+                skip(U8),
+            ],
+            out: 0,
+            to: "data",
+            elem: "IODBSIG_DATA",
+            max: 20,
+            count: None,
+            room: None,
+        }),
         ..COMMAND
     },
     Func {

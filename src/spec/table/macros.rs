@@ -192,4 +192,22 @@ pub const FUNCS: &[Func] = &[
         ends: P_MACRO_ENDS,
         ..WRITE
     },
+    Func {
+        name: "cnc_getrtmrvar",
+        learnt: Some(&[]),
+        doc: "Reads how many real-time custom macro volatile variables the CNC has (4 bytes written into the `long`).",
+        params: &[Param::Out("num", "long")],
+        forms: &[every_class(cmd::GETRTMRVAR, &[])],
+        reply: &[to(I32, "", I32)],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_getrtmrvars",
+        learnt: Some(&[]),
+        doc: "Reads how many real-time custom macro non-volatile variables the CNC has (4 bytes written into the `long`).",
+        params: &[Param::Out("num", "long")],
+        forms: &[every_class(cmd::GETRTMRVARS, &[])],
+        reply: &[to(I32, "", I32)],
+        ..COMMAND
+    },
 ];

@@ -30,6 +30,26 @@ const SWITCH_NAMES: &[Field] = &[
     switch_name("sgnl8_name"),
 ];
 
+/// The sixteen names as cnc_wropnlgsname2 sends them.
+const SWITCH_NAMES2: &[Field] = &[
+    switch_name("sgnl1_name"),
+    switch_name("sgnl2_name"),
+    switch_name("sgnl3_name"),
+    switch_name("sgnl4_name"),
+    switch_name("sgnl5_name"),
+    switch_name("sgnl6_name"),
+    switch_name("sgnl7_name"),
+    switch_name("sgnl8_name"),
+    switch_name("sgnl9_name"),
+    switch_name("sgnl10_name"),
+    switch_name("sgnl11_name"),
+    switch_name("sgnl12_name"),
+    switch_name("sgnl13_name"),
+    switch_name("sgnl14_name"),
+    switch_name("sgnl15_name"),
+    switch_name("sgnl16_name"),
+];
+
 pub const FUNCS: &[Func] = &[
     Func {
         name: "cnc_start",
@@ -182,6 +202,63 @@ pub const FUNCS: &[Func] = &[
         payload: Some(&Payload {
             fields: SWITCH_NAMES,
             elem: "IODBRDNA",
+            count: ONE,
+            max: 1,
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdopnlgnrl2",
+        learnt: Some(&[]),
+        doc: "Reads the software operator panel's general purpose switches as cnc_rdopnlgnrl, into shorts: `type` sent whole and written back, `sgnal` the answer's second byte sign-extended, as FANUC's library writes it (switch 8 on reads negative; `datano` left as it was).",
+        params: &[Param::Short("type"), Param::Out("buf", "IODBGNRL2")],
+        forms: &[every_class(cmd::RDOPNLGNRL, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16), skip(U8), to(I8, "sgnal", I16)],
+        dims: &["255|0|1|128|-1|256|32767|-32768"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wropnlgnrl2",
+        learnt: Some(&[]),
+        doc: "Writes the software operator panel's general purpose switches `type` selects (bit k: switch k + 1, from `sgnal` bit k); `type` is sent whole as the first word, `sgnal` as a word.",
+        params: &[Param::In("buf", "IODBGNRL2")],
+        forms: &[every_class(cmd::WROPNLGNRL, &[Word::Input("type", I16)])],
+        payload: Some(&Payload {
+            fields: &[to(I16, "sgnal", I16)],
+            elem: "IODBGNRL2",
+            count: ONE,
+            max: 1,
+        }),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdopnlgsname2",
+        learnt: Some(&[]),
+        doc: "Reads the names of the software operator panel's sixteen general purpose switches: 8 characters each, then a NUL; only whole names answered are written (`type` sent whole and written back; `datano` left as it was).",
+        params: &[Param::Short("type"), Param::Out("buf", "IODBRDNA2")],
+        forms: &[every_class(cmd::RDOPNLGSNAME, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16)],
+        records: Some(&Records {
+            fields: &[switch_name(""), zero("[8]", I8)],
+            out: 0,
+            to: "sgnl1_name",
+            elem: "char[9]",
+            max: 16,
+            count: None,
+            room: None,
+        }),
+        dims: &["255|0|1|128|-1|256|32767|-32768"],
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wropnlgsname2",
+        learnt: Some(&[]),
+        doc: "Writes the names of the general purpose switches `type` selects (bit k: switch k + 1): the first 8 characters of each of the sixteen names are sent; `type` is sent whole as the first word.",
+        params: &[Param::In("buf", "IODBRDNA2")],
+        forms: &[every_class(cmd::WROPNLGSNAME, &[Word::Input("type", I16)])],
+        payload: Some(&Payload {
+            fields: SWITCH_NAMES2,
+            elem: "IODBRDNA2",
             count: ONE,
             max: 1,
         }),
