@@ -431,6 +431,13 @@ fn c_param(p: &str) -> Option<(String, Option<String>)> {
     Some((format!("{}{base}", ptr.repeat(stars)), name))
 }
 
+/// Byte offsets and sizes as a `Site` keeps them: `u16`s (`at` fails the
+/// build for one past 65535).
+fn narrow(list: &[String]) -> String {
+    let each: Vec<String> = list.iter().map(|x| format!("at({x})")).collect();
+    each.join(", ")
+}
+
 /// The name of EW_* code `code` (src/ew.rs).
 fn ew_name(code: i16) -> Option<&'static str> {
     ew::CODES.iter().find(|c| c.1 == code).map(|c| c.0)
@@ -633,12 +640,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                     ));
                 }
                 let member = match r.count {
-                    Some(m) => format!("Some(offset_of!({}, {}))", rust_type(ty), ident(m)),
+                    Some(m) => format!("Some(at(offset_of!({}, {})))", rust_type(ty), ident(m)),
                     None => "None".to_string(),
                 };
                 format!(
-                    "rec_base: {base}, rec_stride: {stride}, rec_offsets: &[{}], rec_count: {member}",
-                    offs.join(", "),
+                    "rec_base: at({base}), rec_stride: at({stride}), rec_offsets: &[{}], rec_count: {member}",
+                    narrow(&offs),
                 )
             }
         };
@@ -678,9 +685,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 (
                     format!("{}.cast_const().cast()", ident(n)),
                     format!(
-                        "pay_base: {base}, pay_stride: {stride}, pay_offsets: &[{}], pay_words: &[{}]",
-                        offs.join(", "),
-                        words.join(", ")
+                        "pay_base: at({base}), pay_stride: at({stride}), pay_offsets: &[{}], pay_words: &[{}]",
+                        narrow(&offs),
+                        narrow(&words)
                     ),
                 )
             }
@@ -688,7 +695,7 @@ fn described_exports(funcs: &[types::Func]) -> String {
             (None, Some((n, t))) if f.block.is_some() => (
                 format!("{}.cast_const().cast()", ident(n)),
                 format!(
-                    "pay_base: 0, pay_stride: size_of::<{}>(), pay_offsets: &[], pay_words: &[]",
+                    "pay_base: 0, pay_stride: at(size_of::<{}>()), pay_offsets: &[], pay_words: &[]",
                     rust_type(t)
                 ),
             ),
@@ -934,7 +941,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             checks = checks.concat(),
             numbers = padded(&numbers, "0", 8),
             out_ptrs = padded(&out_ptrs, "std::ptr::null_mut()", 4),
-            offsets = offsets.join(", "),
+            offsets = narrow(&offsets),
             records = records,
             pay = pay,
         ));

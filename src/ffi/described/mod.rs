@@ -34,7 +34,7 @@ pub(crate) const MAX_POINTERS: usize = 4;
 /// 400 bytes a function in the installed library).
 pub(crate) struct Site {
     /// Its entry: `crate::spec::FUNCS[func]`.
-    pub func: usize,
+    pub func: u16,
     /// A read that may join a batch (`ffi_read!`), else `ffi_boundary!`'s.
     pub batch: bool,
     /// How many of [`Call`]'s numbers, outputs, numbers by pointer and
@@ -43,18 +43,31 @@ pub(crate) struct Site {
     pub outs: u8,
     pub io: u8,
     pub texts: u8,
-    /// [`exec`]'s `offsets`.
-    pub offsets: &'static [usize],
+    /// [`exec`]'s `offsets`. Offsets and sizes are `u16`s ([`at`]): a
+    /// `Site` a function, so they are kept small.
+    pub offsets: &'static [u16],
     /// [`RecordsAt`]'s `base`, `stride`, `offsets` and `count`.
-    pub rec_base: usize,
-    pub rec_stride: usize,
-    pub rec_offsets: &'static [usize],
-    pub rec_count: Option<usize>,
+    pub rec_base: u16,
+    pub rec_stride: u16,
+    pub rec_offsets: &'static [u16],
+    pub rec_count: Option<u16>,
     /// [`PayloadAt`]'s `stride`, `offsets` and `words`.
-    pub pay_base: usize,
-    pub pay_stride: usize,
-    pub pay_offsets: &'static [usize],
-    pub pay_words: &'static [usize],
+    pub pay_base: u16,
+    pub pay_stride: u16,
+    pub pay_offsets: &'static [u16],
+    pub pay_words: &'static [u16],
+}
+
+/// A byte offset or size as a [`Site`] keeps it (build.rs writes these in
+/// constants: one past 65535 fails the build).
+pub(crate) const fn at(x: usize) -> u16 {
+    assert!(x <= u16::MAX as usize, "an offset past 65535");
+    x as u16
+}
+
+/// `u16`s as [`exec`] takes them.
+fn wide(s: &[u16]) -> Vec<usize> {
+    s.iter().map(|&x| usize::from(x)).collect()
 }
 
 /// The caller's values of one call of a described export (the first of
@@ -79,7 +92,9 @@ pub(crate) struct Call {
 /// # Safety
 /// As [`exec`]'s, for `site`'s offsets and `call`'s pointers.
 pub(crate) unsafe fn run(site: &'static Site, h: c_ushort, call: Call) -> c_short {
-    let f = &crate::spec::FUNCS[site.func];
+    let f = &crate::spec::FUNCS[usize::from(site.func)];
+    let (offsets, rec_offsets) = (wide(site.offsets), wide(site.rec_offsets));
+    let (pay_offsets, pay_words) = (wide(site.pay_offsets), wide(site.pay_words));
     let mut body = move || -> Result<()> {
         let c = &call;
         // SAFETY: as this function's caller promises.
@@ -89,21 +104,21 @@ pub(crate) unsafe fn run(site: &'static Site, h: c_ushort, call: Call) -> c_shor
                 h,
                 &c.numbers[..usize::from(site.numbers)],
                 &c.outs[..usize::from(site.outs)],
-                site.offsets,
+                &offsets,
                 RecordsAt {
-                    base: site.rec_base,
-                    stride: site.rec_stride,
-                    offsets: site.rec_offsets,
-                    count: site.rec_count,
+                    base: usize::from(site.rec_base),
+                    stride: usize::from(site.rec_stride),
+                    offsets: &rec_offsets,
+                    count: site.rec_count.map(usize::from),
                     asked: c.asked,
                     io: &c.io[..usize::from(site.io)],
                 },
                 PayloadAt {
                     input: c.input,
-                    base: site.pay_base,
-                    stride: site.pay_stride,
-                    offsets: site.pay_offsets,
-                    words: site.pay_words,
+                    base: usize::from(site.pay_base),
+                    stride: usize::from(site.pay_stride),
+                    offsets: &pay_offsets,
+                    words: &pay_words,
                     texts: &c.texts[..usize::from(site.texts)],
                 },
             )
