@@ -2528,6 +2528,1161 @@ typedef struct ODBPMCTITLE {
 } ODBPMCTITLE;
 
 /*
+ Data of `cnc_nextdistance`, `cnc_nextdistance_bg`.
+ */
+typedef struct IODBAXIS {
+    int axnum;
+    LONG data[MAX_AXIS];
+    LONG dp[MAX_AXIS];
+} IODBAXIS;
+
+/*
+ Data of `cnc_rdindexdata`, `cnc_wrindexdata`.
+ */
+typedef struct IODBINDEXDAT {
+    LONG pos;
+    LONG inp_width;
+    unsigned short speed;
+    char f_flg;
+    char dummy;
+} IODBINDEXDAT;
+
+/*
+ Data of `cnc_rdindexposdata`, `cnc_wrindexposdata`.
+ */
+typedef struct IODBINDEXPOSDAT {
+    LONG min_value;
+    LONG max_value;
+    char setting;
+    char dummy[3];
+} IODBINDEXPOSDAT;
+
+/*
+ Data of `cnc_rdindexprm`, `cnc_wrindexprm`.
+ */
+typedef struct IODBINDEXPRM {
+    LONG ofs_limit;
+    LONG detect_width;
+    unsigned short jog_clamp[3];
+    char matrix_single;
+    unsigned char torque_ovr;
+    char ofs_adjust;
+    char dummy[3];
+} IODBINDEXPRM;
+
+/*
+ `cnc_rdmovrlapm`: read manual overlapped motion value.
+ */
+typedef struct IODBOVLM {
+    short datano;
+    short type;
+    LONG data[2][32];
+} IODBOVLM;
+
+/*
+ `cnc_rdoverstore`, `cnc_wroverstore`: read overstore command.
+ */
+typedef struct IODBOVMST {
+    char adrs;
+    LONG num;
+} IODBOVMST;
+
+/*
+ `cnc_rdoverstore`, `cnc_wroverstore`: read overstore command.
+ */
+typedef struct IODBOVSTR {
+    struct IODBOVMST mcode;
+    struct IODBOVMST scode;
+    struct IODBOVMST tcode;
+    struct IODBOVMST bcode;
+} IODBOVSTR;
+
+/*
+ Data of `cnc_rdpalaxis`.
+ */
+typedef struct IODBPALAX {
+    LONG max_pal;
+    LONG data[MAX_AXIS];
+} IODBPALAX;
+
+/*
+ One element of `IODBPITCHBLK.pginf`.
+ */
+typedef struct IODBPITCHBLK_pginf {
+    LONG s_no;
+    LONG e_no;
+    short attr;
+} IODBPITCHBLK_pginf;
+
+/*
+ `cnc_rdpitchblkinfo`: read pitch compensation data.
+ */
+typedef struct IODBPITCHBLK {
+    short group_num;
+    struct IODBPITCHBLK_pginf pginf[8];
+} IODBPITCHBLK;
+
+/*
+ One element of `ODBAHDCK.info`.
+ */
+typedef struct ODBAHDCK_info {
+    short stat;
+    short data;
+} ODBAHDCK_info;
+
+/*
+ Data of `cnc_hdck_nochange_info`.
+ */
+typedef struct ODBAHDCK {
+    short dat_path;
+    struct ODBAHDCK_info info[MAX_CNCPATH];
+} ODBAHDCK;
+
+/*
+ Data of `cnc_machine3_ex`.
+ */
+typedef struct ODBAXIS_EX {
+    short counter;
+    short type;
+    LONG data[MAX_AXIS];
+} ODBAXIS_EX;
+
+/*
+ Data of `cnc_rdaxisstatus_bg`.
+ */
+typedef struct ODBAXSTS_BG {
+    LONG flag;
+} ODBAXSTS_BG;
+
+/*
+ `cnc_cannedcycle`: read canned command data.
+ */
+typedef struct CMNDDATA {
+    double val;
+    LONG dec;
+    LONG dummy;
+} CMNDDATA;
+
+/*
+ Data of `cnc_cannedcycle`.
+ */
+typedef struct ODBCANCMD {
+    struct CMNDDATA p_data;
+    struct CMNDDATA q_data;
+    struct CMNDDATA r_data;
+    struct CMNDDATA z_data;
+} ODBCANCMD;
+
+/*
+ Data of `cnc_rdchopping`.
+ */
+typedef struct REALNUM {
+    LONG val;
+    LONG dec;
+} REALNUM;
+
+/*
+ Data of `cnc_rdchopping`.
+ */
+typedef struct ODBCHOPPING {
+    struct REALNUM cur_pos;
+    struct REALNUM cur_speed;
+    struct REALNUM real_udp;
+    struct REALNUM real_ldp;
+    ULONG stroke_cnt;
+} ODBCHOPPING;
+
+/*
+ Data of `cnc_rd_grpaxisinfo`.
+ */
+typedef struct ODBGRPAXIS {
+    short path_num;
+    short draw_num;
+} ODBGRPAXIS;
+
+/*
+ `cnc_rd_grppos`, `cnc_rd_grppos3`: read graphic position.
+ */
+typedef struct POSVAL {
+    LONG data;
+    LONG dec;
+} POSVAL;
+
+/*
+ Data of `cnc_rd_grppos`, `cnc_rd_grppos3`.
+ */
+typedef struct ODBGRPPOS {
+    struct POSVAL abs;
+    struct POSVAL mcn;
+    short feed_type;
+    short reserved;
+} ODBGRPPOS;
+
+/*
+ Data of `cnc_rdindexinfo`.
+ */
+typedef struct ODBINDEXINFO {
+    unsigned short mode;
+    short nc_ax;
+    short inpos_point;
+    short ofs_edit_signal;
+} ODBINDEXINFO;
+
+/*
+ Data of `cnc_rdipltp`, `cnc_rdipltp_bg`.
+ */
+typedef struct ODBIPL {
+    unsigned char outpt;
+    unsigned char ipltp;
+    unsigned char mv;
+    unsigned char inp;
+} ODBIPL;
+
+/*
+ Data of `cnc_rdpmcaxisinfo`.
+ */
+typedef struct ODBPMCAXISINFO {
+    unsigned char datastatus;
+    unsigned char axisstatus;
+    unsigned char commandsignal;
+    unsigned char statussignal;
+    unsigned char dummy;
+    unsigned char instruction;
+    unsigned short speedsignal;
+    ULONG axisctrldata;
+    unsigned short subinstnum;
+    unsigned short subinstlength;
+    ULONG subinstdata1;
+    ULONG subinstdata2;
+    ULONG subinstdata3;
+    ULONG subinstdata4;
+    ULONG subinstdata5;
+    ULONG subinstdata6;
+    ULONG subinstdata7;
+} ODBPMCAXISINFO;
+
+/*
+ `cnc_rdposfig`: read position and decimal figure.
+ */
+typedef struct ODBPOSFIG {
+    LONG val;
+    LONG dec;
+} ODBPOSFIG;
+
+/*
+ Data of `cnc_rdactpos_w`.
+ */
+typedef struct ODBWACT {
+    LONG data[6];
+} ODBWACT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_EULER_FMT {
+    double orign[3];
+    double i;
+    double j;
+    double k;
+    LONG reserve[24];
+} IDBTWP_EULER_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_RPY_FMT {
+    double orign[3];
+    double i;
+    double j;
+    double k;
+    short turn;
+    short reserve0;
+    LONG reserve[23];
+} IDBTWP_RPY_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_3P_FMT {
+    double p1[3];
+    double p2[3];
+    double p3[3];
+    double sft[3];
+    double rot;
+    LONG reserve[10];
+} IDBTWP_3P_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_2VCT_FMT {
+    double orign[3];
+    double vtr1[3];
+    double vtr2[3];
+    LONG reserve[18];
+} IDBTWP_2VCT_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_PJCT_FMT {
+    double orign[3];
+    double i;
+    double j;
+    double k;
+    LONG reserve[24];
+} IDBTWP_PJCT_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef union IDBTWPFORM {
+    struct IDBTWP_EULER_FMT euler;
+    struct IDBTWP_RPY_FMT rpy;
+    struct IDBTWP_3P_FMT p3;
+    struct IDBTWP_2VCT_FMT vct2;
+    struct IDBTWP_PJCT_FMT pjct;
+} IDBTWPFORM;
+
+/*
+ `cnc_wrrotvolc2`: write rotate volumetric compensation data (2).
+ */
+typedef struct IODBROTVOLC {
+    LONG lin[3];
+    LONG rot[3];
+} IODBROTVOLC;
+
+/*
+ `cnc_rd5dmacmov`, `cnc_rd5dtooltip`: read tip of 5 axis manufacture send handle.
+ */
+typedef struct ODB5DHDL {
+    char name[4];
+    LONG data;
+    short dec;
+    short flag;
+    short axis;
+} ODB5DHDL;
+
+/*
+ `cnc_rd5dpulse`: read pulse of 5 axis manufacture send handle.
+ */
+typedef struct ODB5DPLS {
+    char name[3];
+    LONG data;
+    short dec;
+} ODB5DPLS;
+
+/*
+ Data of `cnc_rdtdicubeinfo`.
+ */
+typedef struct ODBNME {
+    short ob_type;
+    unsigned short obj_no;
+    unsigned short nme_no;
+    unsigned short suffix;
+    char name[12];
+} ODBNME;
+
+/*
+ `cnc_rdtdicubeinfo`: read cube infomation.
+ */
+typedef struct ODBCBI {
+    unsigned short cb_no;
+    struct ODBNME nme_set;
+    unsigned char shp_no;
+    char cd_form;
+} ODBCBI;
+
+/*
+ `cnc_rdtdicubedata`, `cnc_wrtdicubedata`: read cube data.
+ */
+typedef struct ODBCUB {
+    LONG ref_vtx[3];
+    LONG adj_vtx1[3];
+    LONG adj_vtx2[3];
+    LONG adj_vtx3[3];
+    unsigned char n_unit;
+    char cb_form;
+} ODBCUB;
+
+/*
+ `cnc_rdtdicylinderdata`, `cnc_wrtdicylinderdata`: read cylinder data.
+ */
+typedef struct ODBCYL {
+    LONG sta_pnt[3];
+    LONG end_pnt[3];
+    LONG radius;
+    unsigned char n_unit;
+    char cb_form;
+} ODBCYL;
+
+/*
+ `cnc_rdfixoffs`, `cnc_wrfixoffs`: read rotary table dynamic fixture offset.
+ */
+typedef struct ODBFOFS {
+    LONG mcrval;
+    short decval;
+} ODBFOFS;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct ODBFTRMTX {
+    double orgn[3];
+    double rot[3][3];
+} ODBFTRMTX;
+
+/*
+ `cnc_rdlrninfo`: read Parts Learning Data.
+ */
+typedef struct ODBLRNINFO {
+    char name[33];
+    char dummy1[3];
+    char axis[4][4];
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char comment[33];
+    char dummy2[3];
+} ODBLRNINFO;
+
+/*
+ `cnc_rdlrninfo2`: read Parts Learning Data.
+ */
+typedef struct ODBLRNINFO2 {
+    char name[33];
+    char dummy1[3];
+    char axis[20][4];
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char comment[33];
+    char dummy2[3];
+} ODBLRNINFO2;
+
+/*
+ `cnc_rdlrninfol`: read Learning Data.
+ */
+typedef struct ODBLRNINFOL {
+    char axis[4];
+    char name[33];
+    char comment[33];
+    char path;
+    char dummy1;
+} ODBLRNINFOL;
+
+/*
+ `cnc_rdlrnprfcmnt`: read Profile Data.
+ */
+typedef struct ODBLRNPRF {
+    char status;
+    char comment[17];
+    char path;
+    char dummy1;
+} ODBLRNPRF;
+
+/*
+ `cnc_rdtdiplanedata`, `cnc_wrtdiplanedata`: read plane data.
+ */
+typedef struct ODBPLN {
+    LONG point[3];
+    LONG vect[3];
+    unsigned char n_unit;
+    char cb_form;
+} ODBPLN;
+
+/*
+ Data of `cnc_rdplutosmpl`.
+ */
+typedef struct ODBRENPLT {
+    short delay_time;
+    unsigned short data_flag;
+    short pos_data[6];
+} ODBRENPLT;
+
+/*
+ Data of `cnc_rdsuo_prm_name`.
+ */
+typedef struct ODBSUODATA {
+    char data_name[4];
+    LONG prm_val;
+    LONG frc_dgt;
+} ODBSUODATA;
+
+/*
+ Data of `cnc_rdnutatortofs_vect`, `cnc_rdsuofs_vect`.
+ */
+typedef struct ODBSUOVECT {
+    LONG vect_val;
+    LONG frc_dgt;
+} ODBSUOVECT;
+
+/*
+ `cnc_rdlrntrnsdata`: read Transfer Data.
+ */
+typedef struct ODBTRNS {
+    short status;
+    short pct;
+    short type;
+    char dummy[2];
+} ODBTRNS;
+
+/*
+ `cnc_dvpunchvolc`, `cnc_dvreadvolc`: punch volumetric compensation data to device.
+ */
+typedef struct ODBVOLCOMP {
+    LONG comp[5];
+} ODBVOLCOMP;
+
+/*
+ Data of `cnc_mdd_getexceptparam`, `cnc_mdd_setexceptparam`.
+ */
+typedef struct IODBMDDEXCEPTPRM {
+    LONG sno;
+    LONG eno;
+} IODBMDDEXCEPTPRM;
+
+/*
+ Data of `cnc_mdg_rdalminfo`, `cnc_mdg_rdcontinfo`, `cnc_mdg_rddtmsg` ….
+ */
+typedef struct IODBMDGINFO {
+    LONG alm_no;
+    short type;
+    short axis;
+    short path;
+    short reserved;
+} IODBMDGINFO;
+
+/*
+ Data of `cnc_mdg_rdheatsimlt`, `cnc_mdg_rdloadlvl`.
+ */
+typedef struct ODBLOAD {
+    short datano;
+    short type;
+    short data[MAX_AXIS];
+} ODBLOAD;
+
+/*
+ Data of `cnc_mdd_rdinfo`.
+ */
+typedef struct ODBMDDINFO {
+    short status;
+    short prot;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    ULONG reg_code;
+    ULONG cur_code;
+    short modulate;
+} ODBMDDINFO;
+
+/*
+ Data of `cnc_mdg_rddtmsg`.
+ */
+typedef struct ODBMDGDTMSG {
+    char message[1600];
+    ULONG imgid;
+} ODBMDGDTMSG;
+
+/*
+ Data of `cnc_mdg_rdflow`.
+ */
+typedef struct ODBMDGFLOW {
+    short msgidx;
+    short yesidx;
+    short noidx;
+    short reserved;
+    char message[400];
+    short detail;
+    short operate;
+} ODBMDGFLOW;
+
+/*
+ Data of `cnc_mdg_rdmsg`, `cnc_mdg_rdmsgordr`.
+ */
+typedef struct ODBMDGMSG {
+    LONG alm_no;
+    short msgidx;
+    short reserved;
+    char type[4];
+    char part[4];
+    char level[4];
+    char add_inf[4];
+    char mark[20];
+    char message[100];
+    char cause[300];
+} ODBMDGMSG;
+
+/*
+ Data of `cnc_mdg_rdwvdata`.
+ */
+typedef struct ODBMDGWVDT {
+    LONG ldata[500];
+    unsigned short p_dec;
+    unsigned short num;
+    unsigned short channel;
+    unsigned short axis;
+    unsigned short kind;
+    unsigned short interval;
+    unsigned short t_cycle;
+    char unit;
+    char sw_alm;
+} ODBMDGWVDT;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef union ODBMDGVAL {
+    LONG lval;
+    ULONG ulval;
+    short sval;
+    unsigned short usval;
+    char cval;
+    unsigned char ucval;
+} ODBMDGVAL;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBMDGDT {
+    union ODBMDGVAL dt;
+    short fp;
+    short reserved;
+} ODBMDGDT;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP1 {
+    LONG cmd_pls;
+    LONG fb_pls;
+    LONG refc;
+    LONG pos_err;
+    struct ODBMDGDT act_spd;
+    unsigned short amr;
+    short reserved;
+} ODBSV2_GRP1;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP2 {
+    struct ODBMDGDT mt_cur;
+    short trq_cmd;
+    short efc_cur;
+    unsigned short dlvl;
+    unsigned short heat;
+    short opt;
+    short opt2;
+} ODBSV2_GRP2;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP3 {
+    struct ODBMDGDT ps_vumb;
+    struct ODBMDGDT ps_vthd;
+    struct ODBMDGDT freq;
+    unsigned short ps_vrms;
+    unsigned short ps_cur;
+    unsigned short dvolt;
+    unsigned char ps_statf;
+    char reserved;
+} ODBSV2_GRP3;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP4 {
+    struct ODBMDGDT resistance;
+    unsigned char detect_res;
+    char reserved[7];
+} ODBSV2_GRP4;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP5 {
+    unsigned short ps_dgn;
+    unsigned short ps_sub_dgn;
+    unsigned short sv_dgn;
+    unsigned char ps_int_tmp;
+    unsigned char ps_sink_tmp;
+    unsigned char sv_int_tmp;
+    unsigned char sv_sink_tmp;
+    unsigned char amp_grp;
+    unsigned char amp_slv;
+} ODBSV2_GRP5;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP6 {
+    unsigned short sv_up_err1;
+    unsigned short sv_up_err2;
+    unsigned short sv_lw_err1;
+    unsigned short sv_lw_err2;
+    unsigned short sv_up_jt1;
+    unsigned short sv_up_jt2;
+    unsigned short sv_lw_jt1;
+    unsigned short sv_lw_jt2;
+    unsigned short sdu_up_err1;
+    unsigned short sdu_up_err2;
+    unsigned short sdu_lw_err1;
+    unsigned short sdu_lw_err2;
+    unsigned short sdu_up_jt1;
+    unsigned short sdu_up_jt2;
+    unsigned short sdu_lw_jt1;
+    unsigned short sdu_lw_jt2;
+} ODBSV2_GRP6;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP7 {
+    unsigned short id_intp;
+    unsigned short id_com;
+    unsigned short id_wrn;
+    unsigned short ed_intp;
+    unsigned short ed_com;
+    unsigned short ed_wrn;
+    short sv_dat1;
+    short sv_dat2;
+    short sv_dat3;
+    short sv_dat4;
+} ODBSV2_GRP7;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSIGDIO {
+    char sgnl1;
+    char sgnl2;
+    char sgnl3;
+    char sgnl4;
+} ODBSIGDIO;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP1 {
+    LONG motion;
+    short cmd_spd;
+    char mode;
+    char gear;
+    char osel;
+    char reserved[3];
+    struct ODBSIGDIO sig_in;
+    struct ODBSIGDIO sig_out;
+} ODBSP2_GRP1;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP2 {
+    LONG pos_err;
+    LONG syn_err;
+    LONG sp_spd;
+    LONG mt_spd;
+    struct ODBMDGDT mt_cur;
+    unsigned short ldmtr;
+    short trq_cmd;
+    char heat_mt;
+    char heat_amp;
+    char reserved[2];
+} ODBSP2_GRP2;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP3 {
+    struct ODBMDGDT ps_vumb;
+    struct ODBMDGDT ps_vthd;
+    struct ODBMDGDT freq;
+    unsigned short ps_vrms;
+    unsigned short ps_cur;
+    unsigned short dvolt;
+    unsigned char ps_statf;
+    char reserved;
+} ODBSP2_GRP3;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP4 {
+    struct ODBMDGDT resistance;
+    unsigned char detect_res;
+    char reserved[7];
+} ODBSP2_GRP4;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP5 {
+    unsigned short ps_dgn;
+    unsigned short ps_sub_dgn;
+    unsigned short sp_dgn;
+    unsigned char ps_int_tmp;
+    unsigned char ps_sink_tmp;
+    unsigned char sp_int_tmp;
+    unsigned char sp_sink_tmp;
+    unsigned char amp_grp;
+    unsigned char amp_slv;
+} ODBSP2_GRP5;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP6 {
+    unsigned short sp_up_err1;
+    unsigned short sp_up_err2;
+    unsigned short sp_lw_err1;
+    unsigned short sp_lw_err2;
+    unsigned short sp_up_jt1;
+    unsigned short sp_up_jt2;
+    unsigned short sp_lw_jt1;
+    unsigned short sp_lw_jt2;
+} ODBSP2_GRP6;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP7 {
+    struct ODBMDGDT iab_amplt;
+    struct ODBMDGDT eab_amplt;
+    short iab_ofs_a;
+    short iab_ofs_b;
+    short iab_noise;
+    short eab_ofs_a;
+    short eab_ofs_b;
+    short eab_noise;
+    unsigned short iab_max_flt;
+    unsigned short eab_max_flt;
+} ODBSP2_GRP7;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP8 {
+    unsigned short isncr_intp;
+    unsigned short isncr_com;
+    unsigned short isncr_wrn;
+    unsigned short esncr_intp;
+    unsigned short esncr_com;
+    unsigned short esncr_wrn;
+    short sp_dat1;
+    short sp_dat2;
+    short sp_dat3;
+    short sp_dat4;
+} ODBSP2_GRP8;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBLAT_GRP1 {
+    ULONG nnum;
+    char prog[36];
+    char year;
+    char mon;
+    char day;
+    char hour;
+    char min;
+    char sec;
+    char reserved[2];
+} ODBLAT_GRP1;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef union ODBVIEWGRP2 {
+    struct ODBSV2_GRP1 sv1;
+    struct ODBSV2_GRP2 sv2;
+    struct ODBSV2_GRP3 sv3;
+    struct ODBSV2_GRP4 sv4;
+    struct ODBSV2_GRP5 sv5;
+    struct ODBSV2_GRP6 sv6;
+    struct ODBSV2_GRP7 sv7;
+    struct ODBSP2_GRP1 sp1;
+    struct ODBSP2_GRP2 sp2;
+    struct ODBSP2_GRP3 sp3;
+    struct ODBSP2_GRP4 sp4;
+    struct ODBSP2_GRP5 sp5;
+    struct ODBSP2_GRP6 sp6;
+    struct ODBSP2_GRP7 sp7;
+    struct ODBSP2_GRP8 sp8;
+    struct ODBLAT_GRP1 lat1;
+} ODBVIEWGRP2;
+
+/*
+ Data of `cnc_powc_rd_cycle_data`.
+ */
+typedef struct ODBPOWCCYC {
+    ULONG cycletime;
+    ULONG powc_axis;
+    ULONG powc_spindle;
+    ULONG powc_outer;
+} ODBPOWCCYC;
+
+/*
+ Data of `cnc_powc_rd_history`.
+ */
+typedef struct ODBPOWCHIS {
+    ULONG get_time;
+    ULONG powc_axis;
+    ULONG powc_spindle;
+    ULONG powc_outer;
+} ODBPOWCHIS;
+
+/*
+ Data of `cnc_powc_rd_history`.
+ */
+typedef struct ODBPOWCHISALL {
+    struct ODBPOWCHIS powchis[30];
+} ODBPOWCHISALL;
+
+/*
+ Data of `cnc_powc_rd_outer_set`, `cnc_powc_wr_outer_set`.
+ */
+typedef struct ODBPOWCOUTER {
+    ULONG ave_pow[8];
+    unsigned short ref_ofs;
+    char ref_adrs;
+    unsigned char ref_path;
+} ODBPOWCOUTER;
+
+/*
+ `cnc_pwcm_rd_consump`: read power consumption.
+ */
+typedef struct ODBPWCM {
+    LONG consump;
+    LONG regen;
+    LONG net;
+    LONG present;
+} ODBPWCM;
+
+/*
+ Data of `cnc_pwcm_rd_consump`.
+ */
+typedef struct ODBPWCMDAT {
+    ULONG time;
+    short axis_num;
+    short spindle_num;
+    struct ODBPWCM all;
+    struct ODBPWCM axis[MAX_AXIS];
+    struct ODBPWCM spindle[MAX_SPINDLE];
+} ODBPWCMDAT;
+
+/*
+ Data of `cnc_rdifsb_as_sv_axis`, `cnc_wrifsb_as_sv_axis`.
+ */
+typedef struct IODBIFSBAXIS {
+    short axis_num;
+    char axis_name[4];
+    short line;
+    char amp_name[8];
+    short pm[8];
+    short cs;
+    short tndm;
+} IODBIFSBAXIS;
+
+/*
+ Data of `cnc_rdifsb_comstatdtl`.
+ */
+typedef struct ODBIFSBCOMSTATDTL {
+    LONG error_inf;
+    LONG jitter_inf;
+    char n_warning;
+    char j_warning;
+    char reserve[2];
+} ODBIFSBCOMSTATDTL;
+
+/*
+ Data of `cnc_rdifsb_fssbunt`.
+ */
+typedef struct ODBIFSBFSSBUNT {
+    short slv_unt_num;
+    short fssb_unt_num;
+    char name[4];
+} ODBIFSBFSSBUNT;
+
+/*
+ Data of `cnc_rdifsb_info`.
+ */
+typedef struct ODBIFSBLINE {
+    unsigned short hrv_ln;
+    unsigned short ax_num_ln;
+    unsigned short sp_num_ln;
+    unsigned short pm_num_ln;
+} ODBIFSBLINE;
+
+/*
+ Data of `cnc_rdifsb_info`.
+ */
+typedef struct ODBIFSBINFO {
+    unsigned char fssb_line_mnt_st;
+    unsigned char reserve;
+    unsigned short card_num;
+    struct ODBIFSBLINE line_info[4];
+} ODBIFSBINFO;
+
+/*
+ Data of `cnc_rdifsb_mainte_sp`.
+ */
+typedef struct ODBIFSBMNTSP {
+    short spdl_num;
+    char spdl_name[4];
+    short line;
+    char amp_name[8];
+    char amp_series[12];
+    char amp_pwr[8];
+    char amp_edt[8];
+    short amp_spdl_num;
+    char amp_spec_num[23];
+    char amp_serial_num[13];
+} ODBIFSBMNTSP;
+
+/*
+ Data of `cnc_rdifsb_mainte_sv`.
+ */
+typedef struct ODBIFSBMNTSV {
+    short axis_num;
+    char axis_name[4];
+    short line;
+    char amp_name[8];
+    char amp_series[12];
+    char amp_cur[8];
+    char amp_edt[8];
+    short amp_axis_num;
+    char amp_spec_num[23];
+    char amp_serial_num[13];
+} ODBIFSBMNTSV;
+
+/*
+ Data of `cnc_rdifsb_as_plsmod`.
+ */
+typedef struct ODBIFSBPLSMDL {
+    short slave_num;
+    char name[8];
+    char type[8];
+    unsigned short pcb_id;
+    char info[24];
+} ODBIFSBPLSMDL;
+
+/*
+ Data of `cnc_rdifsb_slu_pm`.
+ */
+typedef struct ODBIFSBSLUPM {
+    short slave_num;
+    short axis_num[8];
+    char axis_name[8][4];
+} ODBIFSBSLUPM;
+
+/*
+ Data of `cnc_rdifsb_slu_sp`.
+ */
+typedef struct ODBIFSBSLUSP {
+    short slave_num;
+    short spdl_num;
+    char spdl_name[4];
+} ODBIFSBSLUSP;
+
+/*
+ Data of `cnc_rdifsb_slu_sv`.
+ */
+typedef struct ODBIFSBSLUSV {
+    short slave_num;
+    short axis_num;
+    char axis_name[4];
+    char tndm;
+    char reserve[3];
+} ODBIFSBSLUSV;
+
+/*
+ Data of `cnc_rdifsb_slvunt`.
+ */
+typedef struct ODBIFSBSLVUNT {
+    short slv_unt_num;
+    char kind;
+    char attrb;
+} ODBIFSBSLVUNT;
+
+/*
+ Data of `cnc_rdifsb_as_amp_sp`.
+ */
+typedef struct ODBIFSBSPAMP {
+    short slave_num;
+    char name[8];
+    char series[12];
+    char pwr[8];
+    short as_spdl_num;
+    char as_spdl_name[4];
+} ODBIFSBSPAMP;
+
+/*
+ Data of `cnc_rdifsb_as_amp_sv`.
+ */
+typedef struct ODBIFSBSVAMP {
+    short slave_num;
+    char name[8];
+    char series[12];
+    char cur[8];
+    short as_axis_num;
+    char as_axis_name[4];
+} ODBIFSBSVAMP;
+
+/*
+ Data of `cnc_rdifsb_sysalm`.
+ */
+typedef struct ODBIFSBSYSALM {
+    LONG num_sys_alm;
+    short error_line;
+    short error_slvnum1;
+    short error_slvnum2;
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    char alarm_cause[100];
+} ODBIFSBSYSALM;
+
+/*
+ Data of `cnc_rdifsb_warnhst_msg`, `cnc_rdifsb_warning_msg`.
+ */
+typedef struct ODBIFSBWARNINGMSG {
+    short line;
+    short slv_src;
+    short slv_dst;
+    short type;
+    char wm_typ[32];
+    char wm_pnt[32];
+} ODBIFSBWARNINGMSG;
+
+/*
+ Data of `cnc_rdifsb_warnhst_msg`.
+ */
+typedef struct ODBIFSBWARNHSTMSG {
+    short year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+    char dummy;
+    struct ODBIFSBWARNINGMSG msg_dat;
+} ODBIFSBWARNHSTMSG;
+
+/*
  ODBOPHIS4 MDI key record.
  */
 typedef struct ODBOPHIS4_MDI {
@@ -2784,6 +3939,2589 @@ typedef struct ODBOPHIS4 {
     short rec_type;
     union ODBOPHIS4_u u;
 } ODBOPHIS4;
+
+/*
+ Data of `cnc_diagnoss64`, `cnc_prstwkcd64`, `cnc_rdblkdist` ….
+ */
+typedef struct REALDATA {
+    double val;
+    LONG dec;
+    LONG dummy;
+} REALDATA;
+
+/*
+ `cnc_prstwkcd64`: preset work coordinate.
+ */
+typedef struct IDBWRA64 {
+    short datano;
+    short type;
+    short dummy[2];
+    struct REALDATA data[MAX_AXIS];
+} IDBWRA64;
+
+/*
+ `cnc_wrrelpos64`: set origin / preset relative axis position.
+ */
+typedef struct IDBWRR64 {
+    short datano;
+    short type;
+    short dummy[2];
+    struct REALDATA data[MAX_AXIS];
+} IDBWRR64;
+
+/*
+ The `u` member of `IODBPSD64`.
+ */
+typedef union IODBPSD64_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALDATA rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALDATA rdatas[MAX_AXIS];
+} IODBPSD64_u;
+
+/*
+ `cnc_rdparam64`, `cnc_wrparam64`: read  parameter (IEEE double version).
+ */
+typedef struct IODBPSD64 {
+    short datano;
+    short type;
+    short axis;
+    short dummy;
+    union IODBPSD64_u u;
+} IODBPSD64;
+
+/*
+ `cnc_rdwkcdsfms64`, `cnc_rdwkcdshft64`, `cnc_wrwkcdsfms64` …: read  work coordinate shift.
+ */
+typedef struct IODBWCSF64 {
+    short dummy1;
+    short type;
+    short dummy2[2];
+    struct REALDATA data[MAX_AXIS];
+} IODBWCSF64;
+
+/*
+ `cnc_wrzofs64`: write work zero offset value.
+ */
+typedef struct IODBZOFS64 {
+    short datano;
+    short type;
+    short dummy[2];
+    struct REALDATA data[MAX_AXIS];
+} IODBZOFS64;
+
+/*
+ `cnc_rdzofsr64`: read work zero offset value(area specified).
+ */
+typedef struct IODBZOR64 {
+    short datano_s;
+    short type;
+    short datano_e;
+    short dummy;
+    struct REALDATA data[256];
+} IODBZOR64;
+
+/*
+ `cnc_rdaxisdata64`: read various axis data(IEEE double version).
+ */
+typedef struct ODBAXDT64 {
+    char name[4];
+    char dummy[4];
+    double data;
+    short dec;
+    short unit;
+    short flag;
+    short reserve;
+} ODBAXDT64;
+
+/*
+ `cnc_rdcommand64`: read command value.
+ */
+typedef struct ODBCMD64 {
+    char adrs;
+    char num;
+    short flag;
+    LONG dec_val;
+    double cmd_val;
+} ODBCMD64;
+
+/*
+ `cnc_wksft_rnge64`, `cnc_zofs_rnge64`: read validity of work zero offset.
+ */
+typedef struct ODBDATRNG64 {
+    double data_min;
+    double data_max;
+    LONG dec;
+    LONG status;
+} ODBDATRNG64;
+
+/*
+ The `u` member of `ODBDGN64`.
+ */
+typedef union ODBDGN64_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALDATA rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALDATA rdatas[MAX_AXIS];
+} ODBDGN64_u;
+
+/*
+ Data of `cnc_diagnoss64`.
+ */
+typedef struct ODBDGN64 {
+    short datano;
+    short type;
+    short axis;
+    short dummy;
+    union ODBDGN64_u u;
+} ODBDGN64;
+
+/*
+ Data of `cnc_rdholmes64`.
+ */
+typedef struct ODBHOLDATA64 {
+    double mes_val1[2];
+    LONG mes_dp1[2];
+    double mes_val2[2];
+    LONG mes_dp2[2];
+    double mes_val3[2];
+    LONG mes_dp3[2];
+    char mes_axis[2];
+    char mes_parl[2];
+} ODBHOLDATA64;
+
+/*
+ Data of `cnc_wrtofsdrctinp64`.
+ */
+typedef struct REALMES64 {
+    double mes_val;
+    LONG dec_val;
+    LONG dummy;
+} REALMES64;
+
+/*
+ Data of `cnc_rdhsparam`.
+ */
+typedef union HSPDATA {
+    char cdata[MAX_AXIS];
+    short idata[MAX_AXIS];
+    LONG ldata[MAX_AXIS];
+    struct REALPRM rdata[MAX_AXIS];
+} HSPDATA;
+
+/*
+ Data of `cnc_rdhsparamm`.
+ */
+typedef union HSPDATAM {
+    char cdata[32];
+    short idata[32];
+    LONG ldata[32];
+    struct REALPRM rdata[32];
+} HSPDATAM;
+
+/*
+ `cnc_rdhsparam`, `cnc_rdhsparamm`, `cnc_rdhsprminfo`: read the information for function cnc_rdhsparam().
+ */
+typedef struct HSPINFO {
+    char prminfo[8][16];
+} HSPINFO;
+
+/*
+ `cnc_wrlswork`: white laser work data.
+ */
+typedef struct IDBLSWORK {
+    short slct;
+    short skeyinf;
+    short reserve[14];
+} IDBLSWORK;
+
+/*
+ The `data` member of `IODBCTPR`.
+ */
+typedef struct IODBCTPR_data {
+    LONG acc_bipl[MAX_AXIS];
+    LONG acc_chg_time;
+    LONG jerk_acc_diff[MAX_AXIS];
+    LONG jerk_acc_diff_lin[MAX_AXIS];
+    char jerk_acc_ratio;
+    LONG max_acc[MAX_AXIS];
+    short t_con_aipl[MAX_AXIS];
+    LONG corner_feed_diff[MAX_AXIS];
+    LONG max_cut_fdrate[MAX_AXIS];
+} IODBCTPR_data;
+
+/*
+ The `u` member of `IODBCTPR_prm`.
+ */
+typedef union IODBCTPR_prm_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+} IODBCTPR_prm_u;
+
+/*
+ One element of `IODBCTPR.prm`.
+ */
+typedef struct IODBCTPR_prm {
+    short datano;
+    short type;
+    union IODBCTPR_prm_u u;
+} IODBCTPR_prm;
+
+/*
+ `cnc_rdcdslctprm`: read the machining condition parameters.
+ */
+typedef struct IODBCTPR {
+    struct IODBCTPR_data data;
+    struct IODBCTPR_prm prm[2];
+} IODBCTPR;
+
+/*
+ The `data_160` member of `IODBCTPRM_data`.
+ */
+typedef struct IODBCTPRM_data_data_160 {
+    LONG acc_bipl[8];
+    LONG acc_chg_time;
+    LONG jerk_acc_diff[8];
+    LONG jerk_acc_diff_lin[8];
+    char jerk_acc_ratio;
+    LONG max_acc[8];
+    short t_con_aipl[8];
+    LONG corner_feed_diff[8];
+    LONG max_cut_fdrate[8];
+} IODBCTPRM_data_data_160;
+
+/*
+ The `data_30i` member of `IODBCTPRM_data`.
+ */
+typedef struct IODBCTPRM_data_data_30i {
+    struct REALPRM acc_bipl[32];
+    struct REALPRM acc_chg_time;
+    struct REALPRM jerk_acc_diff[32];
+    struct REALPRM jerk_acc_diff_lin[32];
+    char jerk_acc_ratio;
+    struct REALPRM max_acc[32];
+    short t_con_aipl[32];
+    struct REALPRM corner_feed_diff[32];
+    struct REALPRM max_cut_fdrate[32];
+} IODBCTPRM_data_data_30i;
+
+/*
+ The `data` member of `IODBCTPRM`.
+ */
+typedef union IODBCTPRM_data {
+    struct IODBCTPRM_data_data_160 data_160;
+    struct IODBCTPRM_data_data_30i data_30i;
+} IODBCTPRM_data;
+
+/*
+ The `u` member of `IODBCTPRM_prm`.
+ */
+typedef union IODBCTPRM_prm_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char cdatas[32];
+    short idatas[32];
+    LONG ldatas[32];
+    struct REALPRM rdatas[32];
+} IODBCTPRM_prm_u;
+
+/*
+ One element of `IODBCTPRM.prm`.
+ */
+typedef struct IODBCTPRM_prm {
+    short datano;
+    short type;
+    union IODBCTPRM_prm_u u;
+} IODBCTPRM_prm;
+
+/*
+ `cnc_rdcdslctprmm`: read the machining condition parameters.
+ */
+typedef struct IODBCTPRM {
+    union IODBCTPRM_data data;
+    struct IODBCTPRM_prm prm[2];
+} IODBCTPRM;
+
+/*
+ One element of `IODBHPAC.tune`.
+ */
+typedef struct IODBHPAC_tune {
+    short slct;
+    short diff;
+    short fine;
+    short acc_lv;
+    LONG bipl;
+    short aipl;
+    LONG corner;
+    LONG clamp;
+    LONG c_acc;
+    LONG foward;
+    LONG reserve[8];
+} IODBHPAC_tune;
+
+/*
+ `cnc_rdhpcctuac`, `cnc_wrhpcctuac`: read hpcc tuning data ( acc input ).
+ */
+typedef struct IODBHPAC {
+    struct IODBHPAC_tune tune[3];
+} IODBHPAC;
+
+/*
+ One element of `IODBHPPR.tune`.
+ */
+typedef struct IODBHPPR_tune {
+    short slct;
+    short diff;
+    short fine;
+    short acc_lv;
+    LONG max_f;
+    short bipl;
+    short aipl;
+    LONG corner;
+    short clamp;
+    LONG radius;
+    LONG max_cf;
+    LONG min_cf;
+    LONG foward;
+    LONG reserve[5];
+} IODBHPPR_tune;
+
+/*
+ `cnc_rdhpcctupr`, `cnc_wrhpcctupr`: read hpcc tuning data ( parameter input ).
+ */
+typedef struct IODBHPPR {
+    struct IODBHPPR_tune tune[3];
+} IODBHPPR;
+
+/*
+ `cnc_rdhpccset`, `cnc_wrhpccset`: read hpcc setting data.
+ */
+typedef struct IODBHPST {
+    short slct;
+    short hpcc;
+    short multi;
+    short ovr1;
+    short ign_f;
+    short foward;
+    LONG max_f;
+    short ovr2;
+    short ovr3;
+    short ovr4;
+    LONG reserve[7];
+} IODBHPST;
+
+/*
+ `cnc_rdpscdproc2`, `cnc_wrpscdproc2`: read processing condition file (processing data).
+ */
+typedef struct IODBPSCD2 {
+    LONG slct;
+    LONG feed;
+    short power;
+    short freq;
+    short duty;
+    short g_press;
+    short g_kind;
+    short g_ready_t;
+    short displace;
+    LONG supple;
+    short edge_slt;
+    short appr_slt;
+    short pwr_ctrl;
+    LONG displace2;
+    char gap_axis;
+    char feed_dec;
+    char supple_dec;
+    char dsp2_dec;
+    short pb_power;
+    short reserve[8];
+} IODBPSCD2;
+
+/*
+ Data of `cnc_rct_rdGrpName`, `cnc_rct_wrGrpName`.
+ */
+typedef struct IODBRCT_CSTMNAME {
+    unsigned short grp_num;
+    unsigned short dummy;
+    char grp_name[16];
+    char ptn_name[3][16];
+} IODBRCT_CSTMNAME;
+
+/*
+ Data of `cnc_rct_rdPtnSlct`, `cnc_rct_wrPtnSlct`.
+ */
+typedef struct IODBRCT_GRPPTN {
+    unsigned short grp_num;
+    unsigned short ptn_num;
+} IODBRCT_GRPPTN;
+
+/*
+ The `uParam` member of `IODBRCT_ITEM_ptn`.
+ */
+typedef union IODBRCT_ITEM_ptn_uParam {
+    char bdata;
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char bdatas[MAX_AXIS];
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALPRM rdatas[MAX_AXIS];
+} IODBRCT_ITEM_ptn_uParam;
+
+/*
+ One element of `IODBRCT_ITEM.ptn`.
+ */
+typedef struct IODBRCT_ITEM_ptn {
+    char enable;
+    char dummy2[3];
+    LONG attr2;
+    union IODBRCT_ITEM_ptn_uParam uParam;
+} IODBRCT_ITEM_ptn;
+
+/*
+ Data of `cnc_rct_rdItem`, `cnc_rct_wrItem`.
+ */
+typedef struct IODBRCT_ITEM {
+    unsigned short item_num;
+    unsigned char type;
+    char axsp_num;
+    char ptn_num;
+    unsigned char dummy;
+    unsigned short attr;
+    struct IODBRCT_ITEM_ptn ptn[6];
+} IODBRCT_ITEM;
+
+/*
+ The `u` member of `IODBSOCTLDAT`.
+ */
+typedef union IODBSOCTLDAT_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+} IODBSOCTLDAT_u;
+
+/*
+ Data of `cnc_rdsoc_tldat`, `cnc_wrsoc_tldat`.
+ */
+typedef struct IODBSOCTLDAT {
+    union IODBSOCTLDAT_u u;
+} IODBSOCTLDAT;
+
+/*
+ Data of `cnc_mcs_rdheader`, `cnc_mcs_wrheader`.
+ */
+typedef struct ODBMCSHEAD {
+    char layout;
+    char string1[51];
+    char string2[51];
+} ODBMCSHEAD;
+
+/*
+ Data of `cnc_rdpressure`.
+ */
+typedef struct ODBPRESSURE {
+    LONG cmd_val;
+    LONG feedbak_val;
+} ODBPRESSURE;
+
+/*
+ Data of `cnc_rct_rdslctptnname`.
+ */
+typedef struct ODBRCT_SLCTPTNNAME {
+    LONG sl_ptrn_no;
+    short sl_nm_slct;
+} ODBRCT_SLCTPTNNAME;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CUROVRR {
+    unsigned short current;
+    unsigned short minmum;
+    unsigned short maximum;
+    short dummy;
+} CUROVRR;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CURLOAD {
+    unsigned short current;
+    unsigned short effect;
+    unsigned short target;
+    unsigned short irregular;
+    LONG dummy;
+} CURLOAD;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CURTEMP {
+    unsigned short current;
+    unsigned short start;
+    unsigned short end;
+    unsigned short alarm;
+    LONG dummy;
+} CURTEMP;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CURRDTM {
+    unsigned short current;
+    unsigned short threshold;
+    LONG dummy;
+} CURRDTM;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct ODBSOCCUR {
+    short mode;
+    short table;
+    LONG dummy;
+    struct CUROVRR ovrr;
+    struct CURLOAD load;
+    struct CURTEMP temp;
+    struct CURRDTM rdtm;
+} ODBSOCCUR;
+
+/*
+ Data of `cnc_rdsoc_tlatrr`.
+ */
+typedef struct ODBSOCTLATTR {
+    short prm_no;
+    char type;
+} ODBSOCTLATTR;
+
+/*
+ Data of `cnc_rdscdldat`, `cnc_wrscdldat`.
+ */
+typedef struct SCDL_1D {
+    short file_no;
+    char file_name[16];
+    short repeat_num;
+    short current_num;
+    char dummy[2];
+} SCDL_1D;
+
+/*
+ Data of `cnc_rd_mm_ctgry_cstm_str_data`, `cnc_wr_mm_ctgry_cstm_str_data`.
+ */
+typedef struct IODBMMCTGRYCSTMSTRING {
+    char string[13];
+    char reserve[3];
+} IODBMMCTGRYCSTMSTRING;
+
+/*
+ Data of `cnc_rd_mm_icn_cstm_str_data`, `cnc_rd_mm_mc_dflt_scrn_inf`, `cnc_rd_mm_mc_scrn_def_data` ….
+ */
+typedef struct ODBMMSCRNINF {
+    ULONG scrn_id;
+} ODBMMSCRNINF;
+
+/*
+ Data of `cnc_rd_mm_icn_cstm_str_data`, `cnc_wr_mm_icn_cstm_str_data`.
+ */
+typedef struct IODBMMICONCSTMSTRING {
+    struct ODBMMSCRNINF scrninf;
+    char string[13];
+    char reserve[3];
+} IODBMMICONCSTMSTRING;
+
+/*
+ Data of `cnc_rd_mm_mc_ctgry_def_data`.
+ */
+typedef struct IODBMMMCCTGRYDEFDAT {
+    LONG cmsg_id;
+} IODBMMMCCTGRYDEFDAT;
+
+/*
+ Data of `cnc_rd_mm_mc_scrn_def_data`.
+ */
+typedef struct IODBMMMCSCRNDEFDAT {
+    struct ODBMMSCRNINF scrninf;
+    LONG icn_id;
+    LONG msg_id;
+} IODBMMMCSCRNDEFDAT;
+
+/*
+ One element of `IDBTPCMD.val`.
+ */
+typedef struct IDBTPCMD_val {
+    LONG val;
+    LONG dec;
+} IDBTPCMD_val;
+
+/*
+ Data of `cnc_tprog_editcmd`.
+ */
+typedef struct IDBTPCMD {
+    LONG cmd_id;
+    LONG integer[4];
+    struct IDBTPCMD_val val[4];
+    char text[64];
+} IDBTPCMD;
+
+/*
+ Data of `cnc_tprog_wrinfo`.
+ */
+typedef struct IDBTPINFO {
+    char prg_name[36];
+    char comment[20];
+    ULONG axis;
+    char out_nc_prg[36];
+    LONG reserve[2];
+} IDBTPINFO;
+
+/*
+ Data of `cnc_rd_scrlwaitmcode`, `cnc_wr_scrlwaitmcode`.
+ */
+typedef struct IODBWAITMCODE {
+    LONG mcode;
+    LONG pathnum;
+} IODBWAITMCODE;
+
+/*
+ Data of `cnc_rd_hm_progstat`.
+ */
+typedef struct ODBHMPROGSTAT {
+    short run;
+    short disp;
+    short alm_no;
+    short reserve;
+    LONG prog_no;
+    LONG block_no;
+} ODBHMPROGSTAT;
+
+/*
+ `cnc_sendkey`: Send MDI key information.
+ */
+typedef struct ODBKEYINFO {
+    ULONG key[2];
+} ODBKEYINFO;
+
+/*
+ The `create` member of `ODBTPAPRG`.
+ */
+typedef struct ODBTPAPRG_create {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} ODBTPAPRG_create;
+
+/*
+ The `edit` member of `ODBTPAPRG`.
+ */
+typedef struct ODBTPAPRG_edit {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} ODBTPAPRG_edit;
+
+/*
+ The `convert` member of `ODBTPAPRG`.
+ */
+typedef struct ODBTPAPRG_convert {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} ODBTPAPRG_convert;
+
+/*
+ Data of `cnc_tprog_rdprg_by_name`, `cnc_tprog_rdprg_by_num`.
+ */
+typedef struct ODBTPAPRG {
+    short format_version;
+    short func_version;
+    LONG size;
+    struct ODBTPAPRG_create create;
+    struct ODBTPAPRG_edit edit;
+    struct ODBTPAPRG_convert convert;
+    ULONG attr;
+    char name_copy[36];
+    char prg_name[36];
+    char comment[20];
+    ULONG axis;
+    char out_nc_prg[36];
+    LONG reserve[2];
+} ODBTPAPRG;
+
+/*
+ Data of `cnc_tprog_rdcmd`.
+ */
+typedef struct ODBTPEDTCMD {
+    char cmd_num;
+    char cmd[31];
+    char word_num;
+    char word[31];
+} ODBTPEDTCMD;
+
+/*
+ Data of `cnc_tpl_read`.
+ */
+typedef struct ODBTPNLINTF {
+    unsigned char status;
+    unsigned char dummy[3];
+    short coord_x;
+    short coord_y;
+} ODBTPNLINTF;
+
+/*
+ Data of `cnc_statinfo_dmg`.
+ */
+typedef struct OUT_STATINF_DMG {
+    short dummy[1];
+    short dmg;
+    short dummy1[7];
+} OUT_STATINF_DMG;
+
+/*
+ Data of `cnc_pmclad_screen`.
+ */
+typedef struct PMCLAD_MESSAGE {
+    char *message;
+    int lines;
+    int color_fg;
+    int color_bg;
+} PMCLAD_MESSAGE;
+
+/*
+ Data of `cnc_pmmgetstart`.
+ */
+typedef struct IDBPMMGTI {
+    LONG top;
+    LONG num;
+} IDBPMMGTI;
+
+/*
+ Data of `cnc_rdpmmprmtp`, `cnc_wrpmmprmtp`.
+ */
+typedef struct IDBPMMPRP {
+    LONG chanl;
+    LONG group;
+    char folder[130];
+    LONG warn;
+} IDBPMMPRP;
+
+/*
+ Data of `cnc_pmmget`.
+ */
+typedef struct ODBPMMGET {
+    LONG pos;
+    LONG feed;
+    LONG data[20];
+    LONG number[20];
+    short axis[20];
+    short type[20];
+    char alaxis[40];
+    unsigned short alnumber[40];
+    LONG chanl;
+    LONG group;
+} ODBPMMGET;
+
+/*
+ Data of `cnc_pmmiochanl`.
+ */
+typedef struct ODBPMMIO {
+    LONG chanlnum;
+} ODBPMMIO;
+
+/*
+ Data of `cnc_pmmprmpage`, `cnc_wrpmmprm`.
+ */
+typedef struct ODBPMMPRP {
+    LONG data;
+    unsigned short number;
+    unsigned char axis;
+    unsigned char type;
+} ODBPMMPRP;
+
+/*
+ Data of `cnc_pmminit`.
+ */
+typedef struct ODBPMMSLV {
+    LONG slvnum;
+    LONG group[8];
+} ODBPMMSLV;
+
+/*
+ Data of `cnc_pmmsysdt`.
+ */
+typedef struct ODBPMMSYD {
+    char system[2];
+    char model[2];
+    char series[4];
+    char edition[4];
+} ODBPMMSYD;
+
+/*
+ The `u` member of `ODBOPDI`.
+ */
+typedef union ODBOPDI_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+} ODBOPDI_u;
+
+/*
+ `cnc_opdi`: the axis and a signal value of one of three widths.
+ */
+typedef struct ODBOPDI {
+    short axis;
+    union ODBOPDI_u u;
+} ODBOPDI;
+
+/*
+ `cnc_refpoint`, `cnc_abspoint` … `cnc_exebufstat`: the execution state of each path.
+ */
+typedef struct ODBEXEC {
+    short dummy;
+    char cdata[2][8];
+} ODBEXEC;
+
+/*
+ `cnc_finstate`, `cnc_setfin`: the completion flags of each path.
+ */
+typedef struct ODBFIN {
+    short dummy;
+    char cdata[8];
+} ODBFIN;
+
+/*
+ cnc_rdprogdir4: FANUC's header names PRGDIR3 so (a `#define`).
+ */
+typedef struct PRGDIR3 PRGDIR4;
+
+/*
+ Data of `cnc_rstrt_rdpnt`, `cnc_rstrt_wrpnt`.
+ */
+typedef struct IODBRSTINFO {
+    LONG seq_no;
+    LONG c_blck_cnt;
+    LONG t_blck_cnt;
+    LONG call_from_no;
+    LONG call_from_blck;
+    short prg_rep;
+    short seq_rep;
+    short c_blck_rep;
+    short nest_lv;
+    char prg_name[246];
+    char dummy1[2];
+    char call_from_prg[246];
+    char dummy2[2];
+    char edit_flag;
+    char reserve;
+    short repeat;
+    LONG wait_m_code;
+} IODBRSTINFO;
+
+/*
+ Data of `cnc_rstrt_rdpnt2`, `cnc_rstrt_wrpnt2`.
+ */
+typedef struct IODBRSTINFO2 {
+    LONG seq_no;
+    LONG c_blck_cnt;
+    LONG t_blck_cnt;
+    LONG call_from_no;
+    LONG call_from_blck;
+    short prg_rep;
+    short seq_rep;
+    short c_blck_rep;
+    short nest_lv;
+    char prg_name[246];
+    char dummy1[2];
+    char call_from_prg[246];
+    char dummy2[2];
+    char edit_flag;
+    char reserve;
+    short repeat;
+    LONG wait_m_code;
+    char time_s;
+    char time_m;
+    char time_h;
+    char time_d;
+    LONG id_no;
+    LONG reserve2[3];
+} IODBRSTINFO2;
+
+/*
+ Data of `cnc_rdgcodem`, `cnc_rstrt_rdmodal`.
+ */
+typedef struct ODBGCD {
+    short group;
+    short flag;
+    char code[8];
+} ODBGCD;
+
+/*
+ Data of `cnc_rdprstrinfom`.
+ */
+typedef struct ODBPRSM {
+    short datano;
+    short type;
+    short data_info[5];
+    LONG rstr_bc;
+    LONG rstr_m[35];
+    LONG rstr_t[2];
+    LONG rstr_s;
+    LONG rstr_b;
+    LONG dest[32];
+    LONG dist[32];
+} ODBPRSM;
+
+/*
+ Data of `cnc_rdpthis_aux`.
+ */
+typedef struct ODBPTHIS_AUX {
+    double l_value;
+    double l_value_e;
+    double l_value_sub;
+    double l_value_e_sub;
+    LONG repeat_sub;
+    LONG repeat_e_sub;
+    LONG m_code[3];
+    LONG info1;
+    short number;
+    short number_sub;
+    short table_kind;
+    char m_count;
+    char master_indx_no_pt;
+    char master_indx_no_rel;
+    char l_frac;
+    char reserve1[6];
+} ODBPTHIS_AUX;
+
+/*
+ Data of `cnc_rdpthis_ax`.
+ */
+typedef struct ODBPTHIS_AX {
+    double l_value;
+    double l_value_e;
+    double pos_value;
+    double pos_value_e;
+    double l_value_sub;
+    double l_value_e_sub;
+    double l_value_cycle;
+    double l_value_e_cycle;
+    LONG repeat_sub;
+    LONG repeat_e_sub;
+    LONG info1;
+    short number;
+    short number_sub;
+    short number_cycle;
+    short table_kind;
+    char name[4];
+    char cs_spdl_idx_pt;
+    char cs_spdl_idx_rel;
+    char master_indx_no_pt;
+    char master_indx_no_rel;
+    char pos_frac;
+    char l_frac;
+    char l_frac_cycle;
+    char reserve1;
+} ODBPTHIS_AX;
+
+/*
+ The `date` member of `ODBPTHIS_GB`.
+ */
+typedef struct ODBPTHIS_GB_date {
+    short year;
+    char mon;
+    char day;
+    char hour;
+    char min;
+    char sec;
+} ODBPTHIS_GB_date;
+
+/*
+ Data of `cnc_rdpthis_gb`.
+ */
+typedef struct ODBPTHIS_GB {
+    struct ODBPTHIS_GB_date date;
+    char reserve1;
+    LONG info1;
+    char path_num;
+    char reserve2[3];
+} ODBPTHIS_GB;
+
+/*
+ Data of `cnc_rdpthis_log`.
+ */
+typedef struct ODBPTHIS_LOG {
+    char issub;
+    char kind;
+    short number;
+} ODBPTHIS_LOG;
+
+/*
+ Data of `cnc_rdpthis_pt`.
+ */
+typedef struct ODBPTHIS_PT {
+    double time;
+    short dist_err;
+    short ov_time;
+    LONG info1;
+    short alarm_no;
+    char alarm_type;
+    char alarm_axis;
+    char path_axis_num;
+    char path_spdl_num;
+    char time_frac;
+    char reserve1;
+} ODBPTHIS_PT;
+
+/*
+ Data of `cnc_rdpthis_sp`.
+ */
+typedef struct ODBPTHIS_SP {
+    double l_value;
+    double l_value_e;
+    double pos_value;
+    double pos_value_e;
+    double l_value_sub;
+    double l_value_e_sub;
+    LONG repeat_sub;
+    LONG repeat_e_sub;
+    LONG srpm;
+    LONG rrpm;
+    LONG sspm;
+    LONG smax;
+    LONG info1;
+    short number;
+    short number_sub;
+    short table_kind;
+    char sp_mode;
+    char name[4];
+    char ov_sp;
+    char reserve1;
+    char cs_axis_idx_pt;
+    char cs_axis_idx_rel;
+    char pos_frac;
+    char l_frac;
+    char reserve2[3];
+} ODBPTHIS_SP;
+
+/*
+ Data of `cnc_rstrt_rdpntlist`.
+ */
+typedef struct ODBRSTLIST {
+    char prg_name[246];
+    char dummy[2];
+    LONG seq_no;
+    LONG c_blck_cnt;
+} ODBRSTLIST;
+
+/*
+ Data of `cnc_rstrt_rdpntlist2`.
+ */
+typedef struct ODBRSTLIST2 {
+    char prg_name[246];
+    char status;
+    char dummy;
+    LONG seq_no;
+    LONG wait_m_code;
+    LONG c_blck_cnt;
+    char time_s;
+    char time_m;
+    char time_h;
+    char time_d;
+    LONG id_no;
+    LONG reserve[3];
+} ODBRSTLIST2;
+
+/*
+ Data of `cnc_rstrt_rdlpmppnt`.
+ */
+typedef struct ODBRSTMPINFO {
+    LONG u_block_num;
+    LONG mltpiece_all;
+    LONG mltpiece_exe;
+    char u_file_name[246];
+} ODBRSTMPINFO;
+
+/*
+ Data of `cnc_robo_wrgroup`.
+ */
+typedef struct IDBRBGROUP {
+    unsigned char robot_program;
+    char nc_program_folder[213];
+    char nc_program_name[33];
+} IDBRBGROUP;
+
+/*
+ Data of `cnc_robo_rdalmmsg`.
+ */
+typedef struct IODBRBALMMSG {
+    char msg[152];
+} IODBRBALMMSG;
+
+/*
+ Data of `cnc_robo_rdcomsetting`.
+ */
+typedef struct IODBRBTOPSIG {
+    char unit_type;
+    char adr_type;
+    unsigned short address;
+} IODBRBTOPSIG;
+
+/*
+ Data of `cnc_robo_rdcomsetting`.
+ */
+typedef struct IODBRBPOWERSIG {
+    char unit_type;
+    char adr_type;
+    unsigned short address;
+    char bit;
+    char reserve[3];
+} IODBRBPOWERSIG;
+
+/*
+ Data of `cnc_robo_rdcomsetting`.
+ */
+typedef struct IODBRBCOMSET {
+    struct IODBRBTOPSIG di_top;
+    struct IODBRBTOPSIG do_top;
+    struct IODBRBPOWERSIG power_on;
+    unsigned short di_offset;
+    unsigned short do_offset;
+    unsigned char property;
+    char reserve[3];
+} IODBRBCOMSET;
+
+/*
+ Data of `cnc_robo_rdsignals2`.
+ */
+typedef struct IODBRBSIGNAL2 {
+    char type;
+    char state;
+    unsigned short no;
+    char name[73];
+    char reserve[3];
+} IODBRBSIGNAL2;
+
+/*
+ Data of `cnc_robo_rdselectedsignals`, `cnc_robo_wrselectedsignals`.
+ */
+typedef struct IODBRBSUMMARY {
+    char signal_type;
+    char reserve;
+    unsigned short no;
+} IODBRBSUMMARY;
+
+/*
+ Data of `cnc_robo_rdgrouplist`.
+ */
+typedef struct ODBRBGRPLIST {
+    char select;
+    unsigned char robot_program;
+    char nc_program_folder[213];
+    char nc_program_name[33];
+    char comment[52];
+} ODBRBGRPLIST;
+
+/*
+ Data of `cnc_robo_rdsignals`.
+ */
+typedef struct ODBRBSIGNAL {
+    char type;
+    char state;
+    unsigned short no;
+    char name[76];
+} ODBRBSIGNAL;
+
+/*
+ Data of `cnc_rd_sfsg_disp_stat`, `cnc_wr_sfsg_disp_stat`.
+ */
+typedef struct IODBSFSGDSPSTAT {
+    short extract;
+    short symbol;
+    short extend;
+} IODBSFSGDSPSTAT;
+
+/*
+ Data of `cnc_rd_sfsg_sighis`.
+ */
+typedef struct IODBSFSGSIGHIS {
+    short sno_sig;
+    short len_sig;
+    short sno_sig_his;
+    short len_sig_his;
+    short extract;
+} IODBSFSGSIGHIS;
+
+/*
+ Data of `cnc_rd_sfsg_search`, `cnc_rd_sfsg_siginf`.
+ */
+typedef struct IODBSFSGSIGINF {
+    LONG unittype;
+    LONG number;
+    short adr_type;
+    short bit;
+} IODBSFSGSIGINF;
+
+/*
+ Data of `cnc_rd_sfsg_loginf`.
+ */
+typedef struct ODBSFSGALM {
+    short alm_type;
+    short alm_no;
+} ODBSFSGALM;
+
+/*
+ Data of `cnc_rd_sfsg_loginf`.
+ */
+typedef struct ODBSFSGALMTIME {
+    short year;
+    short month;
+    short date;
+    short hour;
+    short minute;
+    short second;
+} ODBSFSGALMTIME;
+
+/*
+ Data of `cnc_rd_sfsg_loginf`.
+ */
+typedef struct ODBSFSGLOGINF {
+    short signal_num;
+    short sig_his_period;
+    short sig_his_count;
+    short sig_his_after;
+    short alm_detect_time[3];
+    short dummy;
+    struct ODBSFSGALM sfsg_alm;
+    struct ODBSFSGALMTIME sfsg_alm_time;
+} ODBSFSGLOGINF;
+
+/*
+ Data of `cnc_rd_sfsg_siginf`.
+ */
+typedef struct ODBSFSGSIGINFEX {
+    struct IODBSFSGSIGINF sfsg_siginf;
+    short select;
+    short reserve;
+} ODBSFSGSIGINFEX;
+
+/*
+ Data of `cnc_rd_sfsg_signal_num`.
+ */
+typedef struct ODBSFSGSIGNALNUM {
+    short signal_num_default;
+    short signal_num_extract;
+} ODBSFSGSIGNALNUM;
+
+/*
+ Data of `cnc_sdtsetchnl2`, `cnc_sdtstartsmpl2`.
+ */
+typedef struct PMC_DATA {
+    short unittype;
+    char adr;
+    unsigned char bit;
+    unsigned short no;
+} PMC_DATA;
+
+/*
+ Data of `cnc_sdtsetchnl2`.
+ */
+typedef struct IDBSDTCHAN2 {
+    short type;
+    char chno;
+    char axis;
+    unsigned short shift;
+    struct PMC_DATA io[16];
+} IDBSDTCHAN2;
+
+/*
+ `cnc_wrtrqlimit`: Set torque limit data.
+ */
+typedef struct IDBTRQ {
+    short datano;
+    short type;
+    unsigned short data[MAX_AXIS];
+} IDBTRQ;
+
+/*
+ `pmc_rdpmcrng_ext`: read PMC data.
+ */
+typedef struct IODBPMCEXT {
+    short type_a;
+    short type_d;
+    short datano_s;
+    short datano_e;
+    short err_code;
+    short reserved;
+    void *data;
+} IODBPMCEXT;
+
+/*
+ Data of `cnc_rdrtmiowrenbl`, `cnc_rdrtmiowrenblbit`, `cnc_wrrtmiowrenbl` ….
+ */
+typedef struct IODBRTMIO {
+    short adr_type;
+    short dummy;
+    ULONG no;
+    char bit;
+} IODBRTMIO;
+
+/*
+ Data of `cnc_getrtmioinfo`, `cnc_rdrtmiowrenblrng`, `cnc_wrrtmiowrenblrng`.
+ */
+typedef struct IODBRTMIOR {
+    short adr_type;
+    LONG adr_attr;
+    ULONG sno;
+    ULONG eno;
+} IODBRTMIOR;
+
+/*
+ One element of `IODBSIG2.data`.
+ */
+typedef struct IODBSIG2_data {
+    short ent_no;
+    short sig_no;
+    char sig_name;
+    char mask_pat;
+} IODBSIG2_data;
+
+/*
+ `cnc_rdhissgnl2`, `cnc_wrhissgnl2`: read signals related operation history 2.
+ */
+typedef struct IODBSIG2 {
+    short datano;
+    short type;
+    struct IODBSIG2_data data[45];
+} IODBSIG2;
+
+/*
+ Data of `cnc_msr_rdhis_pmc_ex`, `cnc_msr_rdmon_pmcinf_ex`.
+ */
+typedef struct ODBEXPMCSGNLINF {
+    char pmc_no;
+    char kind;
+    char length;
+    char dummy;
+    LONG top_adrs;
+} ODBEXPMCSGNLINF;
+
+/*
+ Data of `cnc_msr_rdhis_pmc_ex`, `cnc_msr_rdmon_pmcinf_ex`.
+ */
+typedef struct ODBEXPMCSGNLTERM {
+    char data;
+    char dummy;
+} ODBEXPMCSGNLTERM;
+
+/*
+ Data of `cnc_msr_rdhis_pmc_ex`, `cnc_msr_rdmon_pmcinf_ex`.
+ */
+typedef struct ODBEXPMCSGNL {
+    struct ODBEXPMCSGNLINF inf[2];
+    struct ODBEXPMCSGNLTERM exsgnlterm[2][32];
+} ODBEXPMCSGNL;
+
+/*
+ `pmc_rdpmcaddr`: read PMC address information.
+ */
+typedef struct ODBPMCADR {
+    unsigned short pmc_adr;
+    unsigned short adr_attr;
+    ULONG adr;
+    ULONG top;
+    ULONG num;
+} ODBPMCADR;
+
+/*
+ `cnc_rdftrq_info`: Get setting information of "Fine toruqe sensing function".
+ */
+typedef struct ODBP_FTRQ_PRM_INF {
+    char smpl_enbl;
+    char cycle;
+    char axis_num;
+    char dummy1;
+} ODBP_FTRQ_PRM_INF;
+
+/*
+ Data of `cnc_sdtreadsmpl2`.
+ */
+typedef struct ODBSD {
+    unsigned short *chadata;
+    LONG *count;
+} ODBSD;
+
+/*
+ `cnc_rdsvfeedback`: Read Servo feedback multiplication data.
+ */
+typedef struct ODBSVFBACK {
+    short dummy;
+    short dtype;
+    LONG fback[MAX_AXIS];
+    LONG afback[MAX_AXIS];
+} ODBSVFBACK;
+
+/*
+ One element of `ODBTUNREQ.stat`.
+ */
+typedef struct ODBTUNREQ_stat {
+    short status;
+    short dummy;
+} ODBTUNREQ_stat;
+
+/*
+ Data of `cnc_reqsvgtung`.
+ */
+typedef struct ODBTUNREQ {
+    struct ODBTUNREQ_stat stat[MAX_AXIS];
+} ODBTUNREQ;
+
+/*
+ One element of `ODBTUNSTAT.stat`.
+ */
+typedef struct ODBTUNSTAT_stat {
+    short status;
+    short dummy;
+} ODBTUNSTAT_stat;
+
+/*
+ Data of `cnc_rdsvgtungstat`.
+ */
+typedef struct ODBTUNSTAT {
+    struct ODBTUNSTAT_stat stat[MAX_AXIS];
+} ODBTUNSTAT;
+
+/*
+ The `w` member of `ODBWVDT2_u`.
+ */
+typedef struct ODBWVDT2_u_w {
+    short axis;
+    char kind;
+} ODBWVDT2_u_w;
+
+/*
+ The `io` member of `ODBWVDT2_u`.
+ */
+typedef struct ODBWVDT2_u_io {
+    short no;
+    char adr;
+    char bit;
+} ODBWVDT2_u_io;
+
+/*
+ The `u` member of `ODBWVDT2`.
+ */
+typedef union ODBWVDT2_u {
+    struct ODBWVDT2_u_w w;
+    struct ODBWVDT2_u_io io;
+} ODBWVDT2_u;
+
+/*
+ The `start` member of `ODBWVDT2`.
+ */
+typedef struct ODBWVDT2_start {
+    char year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+} ODBWVDT2_start;
+
+/*
+ The `stop` member of `ODBWVDT2`.
+ */
+typedef struct ODBWVDT2_stop {
+    char year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+} ODBWVDT2_stop;
+
+/*
+ Data of `cnc_rdwavedata2`.
+ */
+typedef struct ODBWVDT2 {
+    short channel;
+    union ODBWVDT2_u u;
+    struct ODBWVDT2_start start;
+    struct ODBWVDT2_stop stop;
+    short t_cycle;
+    short adjust;
+    short data[8192];
+} ODBWVDT2;
+
+/*
+ Data of `cnc_sdtstartsmpl2`.
+ */
+typedef struct TRG_DATA {
+    LONG seq_no;
+    struct PMC_DATA pmc_trg;
+} TRG_DATA;
+
+/*
+ One element of `ALMINFO2_u_alm1.alm`.
+ */
+typedef struct ALMINFO2_u_alm1_alm {
+    short axis;
+    short alm_no;
+} ALMINFO2_u_alm1_alm;
+
+/*
+ The `alm1` member of `ALMINFO2_u`.
+ */
+typedef struct ALMINFO2_u_alm1 {
+    struct ALMINFO2_u_alm1_alm alm[5];
+    short data_end;
+} ALMINFO2_u_alm1;
+
+/*
+ One element of `ALMINFO2_u_alm2.alm`.
+ */
+typedef struct ALMINFO2_u_alm2_alm {
+    short axis;
+    short alm_no;
+    short msg_len;
+    char alm_msg[34];
+} ALMINFO2_u_alm2_alm;
+
+/*
+ The `alm2` member of `ALMINFO2_u`.
+ */
+typedef struct ALMINFO2_u_alm2 {
+    struct ALMINFO2_u_alm2_alm alm[5];
+    short data_end;
+} ALMINFO2_u_alm2;
+
+/*
+ The `u` member of `ALMINFO2`.
+ */
+typedef union ALMINFO2_u {
+    struct ALMINFO2_u_alm1 alm1;
+    struct ALMINFO2_u_alm2 alm2;
+} ALMINFO2_u;
+
+/*
+ `cnc_rdalminfo2`: read alarm information.
+ */
+typedef struct ALMINFO2 {
+    union ALMINFO2_u u;
+} ALMINFO2;
+
+/*
+ Data of `cnc_read_cexeinfo`.
+ */
+typedef struct CEXEINFO {
+    LONG cond;
+    LONG cycle;
+    LONG count;
+    LONG time;
+    LONG dummy1;
+    LONG dummy2;
+    LONG dummy3;
+    LONG dummy4;
+} CEXEINFO;
+
+/*
+ The `u` member of `IODBBOOK`.
+ */
+typedef union IODBBOOK_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+} IODBBOOK_u;
+
+/*
+ `cnc_preset_prm`: parameter preset.
+ */
+typedef struct IODBBOOK {
+    short param_no;
+    char axis;
+    char type;
+    union IODBBOOK_u u;
+} IODBBOOK;
+
+/*
+ Data of `cnc_srcsrdidinfo`, `cnc_srcswridinfo`.
+ */
+typedef struct IODBIDINF {
+    LONG id_no;
+    short drv_no;
+    short acc_element;
+    short err_general;
+    short err_id_no;
+    short err_id_name;
+    short err_attr;
+    short err_unit;
+    short err_min_val;
+    short err_max_val;
+    short id_name_len;
+    short id_name_max;
+    char id_name[60];
+    LONG attr;
+    short unit_len;
+    short unit_max;
+    char unit[12];
+    LONG min_val;
+    LONG max_val;
+} IODBIDINF;
+
+/*
+ `cnc_rdmacror2_name`: read custom macro names(area specified).
+ */
+typedef struct IODBMRN {
+    double mcr_val;
+    char name[16];
+} IODBMRN;
+
+/*
+ `cnc_rdmacror4`: read custom macro names(area specified).
+ */
+typedef struct IODBMRN4 {
+    double mcr_val;
+    char name[64];
+} IODBMRN4;
+
+/*
+ `cnc_rdactpt_w`: read execution pointer of program for FS160is/180is-WB.
+ */
+typedef struct ODBACTPTW {
+    LONG mprgno;
+    LONG mblkno;
+    LONG sprgno;
+    LONG sblkno;
+} ODBACTPTW;
+
+/*
+ One element of `ODBAHIS3.alm_his`.
+ */
+typedef struct ODBAHIS3_alm_his {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    short pth_no;
+    short dummy;
+    char alm_msg[32];
+} ODBAHIS3_alm_his;
+
+/*
+ `cnc_rdalmhistry3`: read alarm history data.
+ */
+typedef struct ODBAHIS3 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBAHIS3_alm_his alm_his[10];
+} ODBAHIS3;
+
+/*
+ One element of `ODBDLLVERSION.dll`.
+ */
+typedef struct ODBDLLVERSION_dll {
+    char Name[260];
+    char FileVersion[32];
+    char ProductVersion[32];
+} ODBDLLVERSION_dll;
+
+/*
+ Data of `cnc_getdllversion`.
+ */
+typedef struct ODBDLLVERSION {
+    struct ODBDLLVERSION_dll dll[2];
+} ODBDLLVERSION;
+
+/*
+ The `faxis` member of `ODBDY3_pos`.
+ */
+typedef struct ODBDY3_pos_faxis {
+    LONG absolute[MAX_AXIS];
+    LONG machine[MAX_AXIS];
+    LONG relative[MAX_AXIS];
+    LONG distance[MAX_AXIS];
+} ODBDY3_pos_faxis;
+
+/*
+ The `oaxis` member of `ODBDY3_pos`.
+ */
+typedef struct ODBDY3_pos_oaxis {
+    LONG absolute;
+    LONG machine;
+    LONG relative;
+    LONG distance;
+} ODBDY3_pos_oaxis;
+
+/*
+ The `pos` member of `ODBDY3`.
+ */
+typedef union ODBDY3_pos {
+    struct ODBDY3_pos_faxis faxis;
+    struct ODBDY3_pos_oaxis oaxis;
+} ODBDY3_pos;
+
+/*
+ `cnc_rddynamic3`: read all dynamic data(3).
+ */
+typedef struct ODBDY3 {
+    short dummy;
+    short axis;
+    LONG alarm;
+    LONG prgnum;
+    LONG prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY3_pos pos;
+} ODBDY3;
+
+/*
+ The `faxis` member of `ODBDY3M_pos`.
+ */
+typedef struct ODBDY3M_pos_faxis {
+    LONG absolute[32];
+    LONG machine[32];
+    LONG relative[32];
+    LONG distance[32];
+} ODBDY3M_pos_faxis;
+
+/*
+ The `oaxis` member of `ODBDY3M_pos`.
+ */
+typedef struct ODBDY3M_pos_oaxis {
+    LONG absolute;
+    LONG machine;
+    LONG relative;
+    LONG distance;
+} ODBDY3M_pos_oaxis;
+
+/*
+ The `pos` member of `ODBDY3M`.
+ */
+typedef union ODBDY3M_pos {
+    struct ODBDY3M_pos_faxis faxis;
+    struct ODBDY3M_pos_oaxis oaxis;
+} ODBDY3M_pos;
+
+/*
+ `cnc_rddynamic3m`: read all dynamic data(3m).
+ */
+typedef struct ODBDY3M {
+    short dummy;
+    short axis;
+    LONG alarm;
+    LONG prgnum;
+    LONG prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY3M_pos pos;
+} ODBDY3M;
+
+/*
+ `cnc_rdexecprog3`: read execute-program infomation.
+ */
+typedef struct EXEPRG {
+    unsigned short length;
+    short prep_blk;
+    short act_blk;
+    short dummy;
+    char data[512];
+} EXEPRG;
+
+/*
+ Data of `cnc_rdexecprog3`.
+ */
+typedef struct ODBEXEPRGINFO {
+    struct EXEPRG before_buffering;
+    struct EXEPRG after_buffering;
+} ODBEXEPRGINFO;
+
+/*
+ One element of `ODBLALMHIS.alm_his`.
+ */
+typedef struct ODBLALMHIS_alm_his {
+    short lalm_wrg;
+    short alm_grp;
+    short alm_wrg_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    char alm_msg[64];
+    short reserve[4];
+} ODBLALMHIS_alm_his;
+
+/*
+ Data of `cnc_rdlalmhistry`.
+ */
+typedef struct ODBLALMHIS {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBLALMHIS_alm_his alm_his[50];
+} ODBLALMHIS;
+
+/*
+ `cnc_rdmacro3`: read custom macro variable (3).
+ */
+typedef struct ODBM3 {
+    LONG datano;
+    LONG mcr_val;
+    short dec_val;
+} ODBM3;
+
+/*
+ `cnc_rdmdlconfig`: read CNC module configuration information.
+ */
+typedef struct ODBMDLC {
+    short from;
+    short dram;
+    short sram;
+    short pmc;
+    short crtc;
+    short servo12;
+    short servo34;
+    short servo56;
+    short servo78;
+    short sic;
+    short pos_lsi;
+    short hi_aio;
+    short reserve[12];
+    short drmmrc;
+    short drmarc;
+    short pmcmrc;
+    short dmaarc;
+    short iopt;
+    short hdiio;
+    short gm2gr1;
+    short crtgr2;
+    short gm1gr2;
+    short gm2gr2;
+    short cmmrb;
+    short sv5axs;
+    short sv7axs;
+    short sicaxs;
+    short posaxs;
+    short hamaxs;
+    short romr64;
+    short srmr64;
+    short dr1r64;
+    short dr2r64;
+    short iopio2;
+    short hdiio2;
+    short cmmrb2;
+    short romfap;
+    short srmfap;
+    short drmfap;
+    short drmare;
+    short pmcmre;
+    short dmaare;
+    short frmbgg;
+    short drmbgg;
+    short asrbgg;
+    short edtpsc;
+    short slcpsc;
+    short reserve2[34];
+} ODBMDLC;
+
+/*
+ `cnc_rdpmacroinfo3`: read P code macro variable information (3).
+ */
+typedef struct ODBPMINF3 {
+    short use_no1;
+    ULONG use_no2;
+    short v1_type;
+    short v2_type;
+} ODBPMINF3;
+
+/*
+ `cnc_rdpmacvalflag`: read P code macro variable flag.
+ */
+typedef struct ODBPMVALFLG {
+    short exe_type;
+    short aux_type;
+    short tlk_type;
+} ODBPMVALFLG;
+
+/*
+ `cnc_rdprotect2`: read protect status.
+ */
+typedef struct ODBPRTCT2 {
+    short disp;
+    short edit;
+    short encd;
+    short lock;
+    short output;
+    short dummy;
+} ODBPRTCT2;
+
+/*
+ Data of `cnc_rdproctime3`.
+ */
+typedef struct ODBPTIME3 {
+    short hour;
+    short min;
+    short sec;
+    short dummy;
+} ODBPTIME3;
+
+/*
+ Data of `cnc_srcsrdlayout`.
+ */
+typedef struct ODBSRCSLYT {
+    short spndl[4];
+    short servo[8];
+    char axis_name[8];
+} ODBSRCSLYT;
+
+/*
+ Data of `cnc_srcsrdexstat`.
+ */
+typedef struct ODBSRCSST {
+    short acc_element;
+    short err_general;
+    short err_id_no;
+    short err_attr;
+    short err_op_data;
+} ODBSRCSST;
+
+/*
+ Data of `cnc_sysconfig`.
+ */
+typedef struct ODBSYSC {
+    char slot_no_p[16];
+    char slot_no_l[16];
+    short mod_id[16];
+    short soft_id[16];
+    char s_series[16][5];
+    char s_version[16][5];
+    char dummy[16];
+    short m_rom;
+    short s_rom;
+    char svo_soft[8];
+    char pmc_soft[6];
+    char lad_soft[6];
+    char mcr_soft[8];
+    char spl1_soft[6];
+    char spl2_soft[6];
+    short frmmin;
+    short drmmin;
+    short srmmin;
+    short pmcmin;
+    short crtmin;
+    short sv1min;
+    short sv3min;
+    short sicmin;
+    short posmin;
+    short drmmrc;
+    short drmarc;
+    short pmcmrc;
+    short dmaarc;
+    short iopt;
+    short hdiio;
+    short frmsub;
+    short drmsub;
+    short srmsub;
+    short sv5sub;
+    short sv7sub;
+    short sicsub;
+    short possub;
+    short hamsub;
+    short gm2gr1;
+    short crtgr2;
+    short gm1gr2;
+    short gm2gr2;
+    short cmmrb;
+    short sv5axs;
+    short sv7axs;
+    short sicaxs;
+    short posaxs;
+    short hanaxs;
+    short romr64;
+    short srmr64;
+    short dr1r64;
+    short dr2r64;
+    short iopio2;
+    short hdiio2;
+    short cmmrb2;
+    short romfap;
+    short srmfap;
+    short drmfap;
+} ODBSYSC;
+
+/*
+ `cnc_rdopmsgmps`: read operator message for MAPPS.
+ */
+typedef struct OPMSGMPS {
+    short datano;
+    short type;
+    short char_num;
+    char data[256];
+} OPMSGMPS;
+
+/*
+ Data of `cnc_rdusbfilelist`.
+ */
+typedef struct IDBUSBFILE {
+    char path[256];
+    ULONG offset;
+    short req_num;
+    unsigned short req_attrib;
+    char sort;
+    char req_comment;
+    char req_total;
+    char dummy;
+} IDBUSBFILE;
+
+/*
+ Data of `cnc_searchusbfile`.
+ */
+typedef struct IDBUSBSEARCH {
+    char path[256];
+    char s_fname[36];
+    unsigned short req_attrib;
+    char sort;
+    char dummy;
+} IDBUSBSEARCH;
+
+/*
+ `cnc_rdcomparam`, `cnc_wrcomparam`: read communication parameter for DNC1, DNC2, OSI-Ethernet.
+ */
+typedef struct IODBCPRM {
+    char NcApli[65];
+    char Dummy1;
+    char HostApli[65];
+    char Dummy2;
+    ULONG StatPstv;
+    ULONG StatNgtv;
+    ULONG Statmask;
+    ULONG AlarmStat;
+    ULONG PsclHaddr;
+    ULONG PsclLaddr;
+    unsigned short SvcMode1;
+    unsigned short SvcMode2;
+    LONG FileTout;
+    LONG RemTout;
+} IODBCPRM;
+
+/*
+ `cnc_dtsvrdset`, `cnc_dtsvwrset`: read setting data for Data Server.
+ */
+typedef struct IODBDSSET {
+    char host_ip[16];
+    char host_uname[32];
+    char host_passwd[32];
+    char host_dir[128];
+    char dtsv_mac[13];
+    char dtsv_ip[16];
+    char dtsv_mask[16];
+} IODBDSSET;
+
+/*
+ `cnc_dncprgname`: read program name of DNC operation.
+ */
+typedef struct ODBDNCPRG {
+    char name[36];
+    LONG o_num;
+} ODBDNCPRG;
+
+/*
+ One element of `ODBDSDIR.data`.
+ */
+typedef struct ODBDSDIR_data {
+    char file_name[16];
+    char comment[64];
+    LONG size;
+    char date[16];
+} ODBDSDIR_data;
+
+/*
+ `cnc_dtsvrdpgdir`: read file directory in Data Server.
+ */
+typedef struct ODBDSDIR {
+    LONG file_num;
+    LONG remainder;
+    short data_num;
+    struct ODBDSDIR_data data[32];
+} ODBDSDIR;
+
+/*
+ `cnc_dtsvmntinfo`: read maintenance information for Data Server.
+ */
+typedef struct ODBDSMNT {
+    LONG empty_cnt;
+    LONG total_size;
+    LONG read_ptr;
+    LONG write_ptr;
+} ODBDSMNT;
+
+/*
+ `cnc_rdembedf_inf`: read embedded folder information.
+ */
+typedef struct ODBEMBEDFINF {
+    LONG used_page;
+    LONG all_page;
+} ODBEMBEDFINF;
+
+/*
+ `cnc_pdf_rdcallstack`: read call stack PDF.
+ */
+typedef struct ODBNESTPDF {
+    ULONG attrib;
+    char comment[64];
+    char prog_name[245];
+    char dummy[7];
+} ODBNESTPDF;
+
+/*
+ Data of `cnc_rdfsraminfo2`.
+ */
+typedef struct ODBSRAMIF2 {
+    LONG protect;
+    ULONG adrs;
+    LONG size;
+} ODBSRAMIF2;
+
+/*
+ Data of `cnc_rdusbfilelist`.
+ */
+typedef struct ODBUSBFILE {
+    ULONG size;
+    unsigned short attribute;
+    unsigned short long_name;
+    unsigned short year;
+    unsigned char mon;
+    unsigned char day;
+    unsigned char hour;
+    unsigned char min;
+    unsigned char sec;
+    unsigned char dummy;
+    char fname[36];
+    char comment[64];
+} ODBUSBFILE;
+
+/*
+ Data of `cnc_rdusbfilelist`.
+ */
+typedef struct ODBUSBINFO {
+    short f_num;
+    char next_entry;
+    char dummy;
+    ULONG total;
+} ODBUSBINFO;
+
+/*
+ Data of `cnc_rdusbdevinfo`.
+ */
+typedef struct ODBUSBSIZE {
+    ULONG totalsize_h;
+    ULONG totalsize_l;
+    ULONG freesize_h;
+    ULONG freesize_l;
+} ODBUSBSIZE;
+
+/*
+ `cnc_dsfile_req`: get file list infomation.
+ */
+typedef struct ODB_IN_DSFILE_REQ {
+    char file[256];
+    LONG fnum;
+    LONG offset;
+    short detail;
+    unsigned short option;
+} ODB_IN_DSFILE_REQ;
+
+/*
+ `cnc_dsstat_rdfile`: get file list infomation.
+ */
+typedef struct ODB_IN_STAT_DSFILE {
+    short req_num;
+    short size_type;
+} ODB_IN_STAT_DSFILE;
+
+/*
+ Data of `cnc_dsstat_rdfile`.
+ */
+typedef struct OUT_DSFILE {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    LONG size;
+    ULONG attr;
+    char file[36];
+    char info[128];
+} OUT_DSFILE;
+
+/*
+ Data of `cnc_dsstat_rdfile`.
+ */
+typedef struct OUT_DSINFO {
+    short type;
+    short dummy;
+    LONG fnum;
+    LONG total;
+    ULONG remain_h;
+    ULONG remain_l;
+    char dir[256];
+} OUT_DSINFO;
+
+/*
+ `cnc_pdf_rdrmtdgn`, `cnc_pdf_startrmtdgn`: Remote Diagnosis Start.
+ */
+typedef struct OUT_RMTDGNINFO {
+    ULONG receipt_num;
+    ULONG time;
+    short status;
+    short err_num;
+    char err_msg[36];
+} OUT_RMTDGNINFO;
+
+/*
+ Data of `cnc_wr1length`, `cnc_wr1radius`, `cnc_wrt1info`.
+ */
+typedef struct IDBITD2 {
+    short datano;
+    LONG type;
+    LONG data;
+} IDBITD2;
+
+/*
+ Data of `cnc_rdedgedatapage`.
+ */
+typedef struct IDBTLMGR_ADD_INFO {
+    LONG dsp_info;
+    short data_kind;
+} IDBTLMGR_ADD_INFO;
+
+/*
+ The `item` member of `IDBTLM`.
+ */
+typedef union IDBTLM_item {
+    unsigned char data1;
+    short data2;
+    LONG data4;
+} IDBTLM_item;
+
+/*
+ Data of `cnc_magazinesrch`, `cnc_toolsrch`.
+ */
+typedef struct IDBTLM {
+    short data_id;
+    union IDBTLM_item item;
+} IDBTLM;
+
+/*
+ `cnc_magazinesrch`, `cnc_toolsrch`: Search  magazine management data.
+ */
+typedef struct IDBTLM_SRCHDT {
+    struct IDBTLM id_info;
+    short srch_cond;
+    short add_cond;
+} IDBTLM_SRCHDT;
+
+/*
+ `cnc_rdtlgeomsize`, `cnc_wrtlgeomsize`: read tool geom size data.
+ */
+typedef struct IODBTLGS {
+    LONG data1;
+    LONG data2;
+    char tooltype;
+    char install;
+    char toolname[9];
+    char dummy;
+} IODBTLGS;
+
+/*
+ `cnc_rdtlgeomsize_ext2`, `cnc_wrtlgeomsize_ext2`: read extended tool geom size data.
+ */
+typedef struct IODBTLGSEXT2 {
+    LONG data1;
+    LONG data2;
+    LONG data3;
+    LONG data4;
+    LONG data5;
+    LONG data6;
+    LONG data7;
+    LONG data8;
+    LONG data9;
+    LONG data10;
+    char tooltype;
+    char install;
+    char holder;
+    char toolname[9];
+} IODBTLGSEXT2;
+
+/*
+ Data of `cnc_rdtoollife_data`, `cnc_rdtoollife_tcodedata`.
+ */
+typedef struct IODBTLLF {
+    LONG T_code_sum;
+    LONG life_count_sum;
+    LONG rem_life_sum;
+    LONG max_life_sum;
+    LONG notice_life_sum;
+    short tools_sum;
+    char notice_stat_sum;
+    char count_type_sum;
+} IODBTLLF;
+
+/*
+ Data of `cnc_rdtoollifed_data`.
+ */
+typedef struct IODBTLLFD {
+    short order;
+    short tool_num;
+    LONG life_count;
+    LONG rem_life;
+    LONG max_life;
+    LONG notice_life;
+    char life_stat;
+    char count_type;
+    short reserve;
+} IODBTLLFD;
+
+/*
+ The `item` member of `IODBTLM2`.
+ */
+typedef union IODBTLM2_item {
+    unsigned char data1;
+    short data2;
+    LONG data4;
+} IODBTLM2_item;
+
+/*
+ `cnc_rdtool2`: read data.
+ */
+typedef struct IODBTLM2 {
+    short number;
+    short reserve;
+    union IODBTLM2_item item;
+} IODBTLM2;
+
+/*
+ Data of `cnc_magazinesrch`.
+ */
+typedef struct IODBTLMAG_SRCHINFO {
+    struct IODBTLMAG2 startInfo;
+    struct IODBTLMAG result;
+} IODBTLMAG_SRCHINFO;
+
+/*
+ Data of `cnc_rdtlmgr_check`.
+ */
+typedef struct IODBTLMGR_CHECK {
+    LONG T_code;
+    short tool_num;
+    short reserve;
+} IODBTLMGR_CHECK;
+
+/*
+ Data of `cnc_rdedgedatapage`.
+ */
+typedef struct IODBTLMGR_EDG {
+    short data_no;
+    short edge_no;
+} IODBTLMGR_EDG;
+
+/*
+ The `page` member of `IODBTLMGR_PAGE_info`.
+ */
+typedef struct IODBTLMGR_PAGE_info_page {
+    struct IODBTLMGR_EDG s_edg;
+    struct IODBTLMGR_EDG e_edg;
+} IODBTLMGR_PAGE_info_page;
+
+/*
+ The `info` member of `IODBTLMGR_PAGE`.
+ */
+typedef union IODBTLMGR_PAGE_info {
+    struct IODBTLMGR_EDG edg;
+    struct IODBTLMGR_PAGE_info_page page;
+} IODBTLMGR_PAGE_info;
+
+/*
+ Data of `cnc_rdedgedatapage`.
+ */
+typedef struct IODBTLMGR_PAGE {
+    union IODBTLMGR_PAGE_info info;
+} IODBTLMGR_PAGE;
+
+/*
+ Data of `cnc_tool_in3`, `cnc_wredgedata`.
+ */
+typedef struct IODBTLMNG_MU_EDGE_DATA {
+    LONG life_count;
+    LONG max_life;
+    LONG rest_life;
+    unsigned char life_stat;
+    unsigned char cust_bits;
+    short reserve_s;
+    short H_code;
+    short D_code;
+    LONG spindle_speed;
+    LONG feedrate;
+    short G_code;
+    short W_code;
+    LONG custom1;
+    LONG custom2;
+    LONG custom3;
+    LONG custom4;
+} IODBTLMNG_MU_EDGE_DATA;
+
+/*
+ Data of `cnc_srttl_getdata`.
+ */
+typedef struct IODBTLMNG_SORT {
+    short tl_num;
+    short reserve;
+    struct IODBTLMNG_F2 data;
+} IODBTLMNG_SORT;
+
+/*
+ The `sp_name` member of `IODBTLSPWTNAME`.
+ */
+typedef struct IODBTLSPWTNAME_sp_name {
+    char sp_pos1[5];
+    char sp_pos2[5];
+    char sp_pos3[5];
+    char sp_pos4[5];
+} IODBTLSPWTNAME_sp_name;
+
+/*
+ The `wt_name` member of `IODBTLSPWTNAME`.
+ */
+typedef struct IODBTLSPWTNAME_wt_name {
+    char wt_pos1[5];
+    char wt_pos2[5];
+    char wt_pos3[5];
+    char wt_pos4[5];
+} IODBTLSPWTNAME_wt_name;
+
+/*
+ Data of `cnc_rdspdlwaitname`.
+ */
+typedef struct IODBTLSPWTNAME {
+    struct IODBTLSPWTNAME_sp_name sp_name;
+    struct IODBTLSPWTNAME_wt_name wt_name;
+} IODBTLSPWTNAME;
+
+/*
+ Data of `cnc_rdtoollife_data`.
+ */
+typedef struct IODBTL_RDTYPE {
+    unsigned char type;
+    unsigned char data_type;
+    char renew;
+    char reserve;
+} IODBTL_RDTYPE;
+
+/*
+ Data of `cnc_rdtool_cause`.
+ */
+typedef struct IODBTOOL_CAUSENME {
+    char cause1[8];
+    char cause2[8];
+    char cause3[8];
+    char cause4[8];
+    char cause5[8];
+} IODBTOOL_CAUSENME;
+
+/*
+ Data of `cnc_rdtool_inhis`, `cnc_rdtool_outhis`.
+ */
+typedef struct IODBTOOL_DATE {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} IODBTOOL_DATE;
+
+/*
+ Data of `cnc_rdtool_inhis`.
+ */
+typedef struct IODBTOOL_INHIS {
+    short tool_no;
+    short reserve;
+    struct IODBTOOL_DATE date;
+    struct IODBTLMNG_F2 tool_f2;
+} IODBTOOL_INHIS;
+
+/*
+ Data of `cnc_rdtool_outhis`.
+ */
+typedef struct IODBTOOL_OUTHIS {
+    short tool_no;
+    short cause;
+    struct IODBTOOL_DATE date;
+    struct IODBTLMNG_F2 tool_f2;
+} IODBTOOL_OUTHIS;
+
+/*
+ `cnc_rdofslength`: read tool length offset data.
+ */
+typedef struct ODBOFSLEN {
+    LONG len;
+    LONG dec;
+} ODBOFSLEN;
+
+/*
+ `cnc_rdposofs`: read tool position offset for position data.
+ */
+typedef struct ODBPOFS {
+    short mode;
+    LONG ofsvct[MAX_AXIS];
+} ODBPOFS;
+
+/*
+ `cnc_tool_srh_free_min_num`: Serch free number.
+ */
+typedef struct ODBTL_FREE_NUM {
+    short edge_gp;
+    short ofs_h;
+    short ofs_d;
+    short ofs_g;
+    short ofs_w;
+    short reserve[3];
+} ODBTL_FREE_NUM;
 
 #ifdef __cplusplus
 extern "C" {
