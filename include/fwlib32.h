@@ -255,6 +255,61 @@ typedef struct IDBITD {
 } IDBITD;
 
 /*
+ cnc_rdparainfo3: the attributes of one parameter.
+ */
+typedef struct ODBPARAIF2 {
+    short prm_no;
+    short size;
+    short array;
+    short unit;
+    short dim;
+    short input;
+    short display;
+    short others;
+} ODBPARAIF2;
+
+/*
+ A real parameter value: `prm_val · 10^-dec_val`.
+ */
+typedef struct REALPRM {
+    LONG prm_val;
+    LONG dec_val;
+} REALPRM;
+
+/*
+ The value union of IODBPSD: which member is valid depends on the
+ parameter's type and on whether one axis or all axes were read.
+ */
+typedef union IODBPSD_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALPRM rdatas[MAX_AXIS];
+} IODBPSD_u;
+
+/*
+ cnc_rdparam / cnc_wrparam: one parameter (`type` = axis: 0 none, n, -1 all).
+ */
+typedef struct IODBPSD {
+    short datano;
+    short type;
+    union IODBPSD_u u;
+} IODBPSD;
+
+/*
+ cnc_rdparanum: smallest and largest parameter number, and how many exist.
+ */
+typedef struct ODBPARANUM {
+    unsigned short para_min;
+    unsigned short para_max;
+    unsigned short total_no;
+} ODBPARANUM;
+
+/*
  One modal code other than a G code (cnc_modal aux / raux1 / raux2).
  */
 typedef struct MODAL_AUX {
@@ -341,6 +396,15 @@ typedef struct ODB3DHDL {
     short axes[5];
     LONG data[5];
 } ODB3DHDL;
+
+/*
+ cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
+ */
+typedef struct IODBZOFS {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBZOFS;
 
 /*
  One record of ODBAHIS (48 bytes).
@@ -545,6 +609,22 @@ typedef struct ODBAXISNAME {
 } ODBAXISNAME;
 
 /*
+ cnc_rdprstrinfo: program restart information.
+ */
+typedef struct ODBPRS {
+    short datano;
+    short type;
+    short data_info[5];
+    LONG rstr_bc;
+    LONG rstr_m[35];
+    LONG rstr_t[2];
+    LONG rstr_s;
+    LONG rstr_b;
+    LONG dest[MAX_AXIS];
+    LONG dist[MAX_AXIS];
+} ODBPRS;
+
+/*
  cnc_rdbtofsinfo: the B-axis tool offsets' memory type, how many there
  are and the sub function number of offset cancel.
  */
@@ -553,6 +633,15 @@ typedef struct ODBBTLINF {
     short use_no;
     short sub_no;
 } ODBBTLINF;
+
+/*
+ cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
+ */
+typedef struct ODBTLIFE3 {
+    short datano;
+    short dummy;
+    LONG data;
+} ODBTLIFE3;
 
 /*
  cnc_rdcommand: one commanded value of a block: the address letter,
@@ -566,15 +655,6 @@ typedef struct ODBCMD {
     LONG cmd_val;
     LONG dec_val;
 } ODBCMD;
-
-/*
- cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
- */
-typedef struct ODBTLIFE3 {
-    short datano;
-    short dummy;
-    LONG data;
-} ODBTLIFE3;
 
 /*
  cnc_rdctrldi: the spindle control input signals.
@@ -642,6 +722,17 @@ typedef struct ODBDIAGNUM {
     unsigned short diag_max;
     unsigned short total_no;
 } ODBDIAGNUM;
+
+/*
+ cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
+ of MAX_AXIS values; the caller's `length` says how many really fit).
+ */
+typedef struct IODBZOR {
+    short datano_s;
+    short type;
+    short datano_e;
+    LONG data[256];
+} IODBZOR;
 
 /*
  The all-axes form of the position union of ODBDY / ODBDY2.
@@ -1229,61 +1320,6 @@ typedef struct ODBPARAIF {
 } ODBPARAIF;
 
 /*
- cnc_rdparainfo3: the attributes of one parameter.
- */
-typedef struct ODBPARAIF2 {
-    short prm_no;
-    short size;
-    short array;
-    short unit;
-    short dim;
-    short input;
-    short display;
-    short others;
-} ODBPARAIF2;
-
-/*
- A real parameter value: `prm_val · 10^-dec_val`.
- */
-typedef struct REALPRM {
-    LONG prm_val;
-    LONG dec_val;
-} REALPRM;
-
-/*
- The value union of IODBPSD: which member is valid depends on the
- parameter's type and on whether one axis or all axes were read.
- */
-typedef union IODBPSD_u {
-    char cdata;
-    short idata;
-    LONG ldata;
-    struct REALPRM rdata;
-    char cdatas[MAX_AXIS];
-    short idatas[MAX_AXIS];
-    LONG ldatas[MAX_AXIS];
-    struct REALPRM rdatas[MAX_AXIS];
-} IODBPSD_u;
-
-/*
- cnc_rdparam / cnc_wrparam: one parameter (`type` = axis: 0 none, n, -1 all).
- */
-typedef struct IODBPSD {
-    short datano;
-    short type;
-    union IODBPSD_u u;
-} IODBPSD;
-
-/*
- cnc_rdparanum: smallest and largest parameter number, and how many exist.
- */
-typedef struct ODBPARANUM {
-    unsigned short para_min;
-    unsigned short para_max;
-    unsigned short total_no;
-} ODBPARANUM;
-
-/*
  cnc_rdpdf_alldir input: the folder, the first entry, size and format kinds.
  */
 typedef struct IDBPDFADIR {
@@ -1642,22 +1678,6 @@ typedef union ODBNC_u {
 typedef struct ODBNC {
     union ODBNC_u u;
 } ODBNC;
-
-/*
- cnc_rdprstrinfo: program restart information.
- */
-typedef struct ODBPRS {
-    short datano;
-    short type;
-    short data_info[5];
-    LONG rstr_bc;
-    LONG rstr_m[35];
-    LONG rstr_t[2];
-    LONG rstr_s;
-    LONG rstr_b;
-    LONG dest[MAX_AXIS];
-    LONG dist[MAX_AXIS];
-} ODBPRS;
 
 /*
  cnc_rdradofs: the cutter compensation mode, the plane's two axes and
@@ -2236,26 +2256,6 @@ typedef struct IODBWCSF {
     short type;
     LONG data[MAX_AXIS];
 } IODBWCSF;
-
-/*
- cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
- */
-typedef struct IODBZOFS {
-    short datano;
-    short type;
-    LONG data[MAX_AXIS];
-} IODBZOFS;
-
-/*
- cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
- of MAX_AXIS values; the caller's `length` says how many really fit).
- */
-typedef struct IODBZOR {
-    short datano_s;
-    short type;
-    short datano_e;
-    LONG data[256];
-} IODBZOR;
 
 /*
  cnc_regtool_f2: one tool of the tool management data with 40 custom
@@ -6553,6 +6553,18 @@ short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_absolute_bg(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_absolute_mgi(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
  Reads the acceleration/deceleration delay of axis `axis` (1..) or of
  every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
  whole value record answered (at most 32) must fit in `length` (4 + 4
@@ -6648,6 +6660,18 @@ short cnc_allclibhndl4(const char *ip,
                        unsigned short *FlibHndl);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_async_busy_state(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_aux_statinfo(unsigned short FlibHndl, unsigned long *stat);
+
+/*
  Reads a count of the path as cnc_rdaxisdata's counts: `kind` 0 its axes,
  1 its spindles.
 
@@ -6657,9 +6681,81 @@ short cnc_allclibhndl4(const char *ip,
 short cnc_axisnum(unsigned short FlibHndl, short kind, short *num);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_axisnum2(unsigned short FlibHndl, short a, short b, short *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_backuplrn(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_backupophis(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_block_status(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_cancel_prm(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_cdautoset(unsigned short FlibHndl, short a, short b);
+
+/*
  Changes the CNC's display language to `lang` (cnc_getlanguage's codes).
  */
 short cnc_chglang(unsigned short FlibHndl, char lang);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_chgoverstore(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_chkrmtdgn(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_chkusbfile(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_chkusbmount(unsigned short FlibHndl, char a, unsigned short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clear_maint(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clearalm(unsigned short FlibHndl, short a);
 
 /*
  Clears the operator message history.
@@ -6672,9 +6768,57 @@ short cnc_clearomhis(unsigned short FlibHndl);
 short cnc_clearophis(unsigned short FlibHndl, short type);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clr5dplsmov(unsigned short FlibHndl, short a);
+
+/*
  Clears the CNC's active alarms of type `id` (cnc_rdalmmsg's types).
  */
 short cnc_clralm(unsigned short FlibHndl, short id);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clrdgdat(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clrfromsvspid(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clrlrncrnt(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clrmofs(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clrmsgbuff(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clroverstore(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_clrrstraxis(unsigned short FlibHndl);
 
 /*
  Clears every tool offset of type `type` (as cnc_rdtofs numbers them).
@@ -6685,6 +6829,12 @@ short cnc_clrtofs(unsigned short FlibHndl, short type);
  Condenses program memory (`type` 0, program `prog_num`).
  */
 short cnc_condense(unsigned short FlibHndl, short type, long prog_num);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_confirm_restart(unsigned short FlibHndl, unsigned short a);
 
 /*
  Copies program `top_prog` to a new program `bottom_prog`.
@@ -6699,6 +6849,18 @@ short cnc_copyprog(unsigned short FlibHndl, long top_prog, long bottom_prog);
  As cnc_upload.
  */
 short cnc_cupload(unsigned short FlibHndl, struct ODBUP *upload, unsigned short *length);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_data_copy(unsigned short FlibHndl, short a, short b, short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_del_scrlwaitmcode(unsigned short FlibHndl);
 
 /*
  Deletes every program (those protected or in use stay).
@@ -6727,6 +6889,24 @@ short cnc_deleteo8(unsigned short FlibHndl, long prog_no);
 short cnc_delmagazine(unsigned short FlibHndl, short *num, struct IODBTLMAG2 *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_delprogline(unsigned short FlibHndl, long a, unsigned long b, unsigned long c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_delrange(unsigned short FlibHndl, long a, long b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_delsysalm(unsigned short FlibHndl);
+
+/*
  Deletes the `tuse_num`-th tool of tool life group `grpno`.
  */
 short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
@@ -6735,6 +6915,12 @@ short cnc_deltlifedt(unsigned short FlibHndl, short grpno, short tuse_num);
  Deletes tool life group `grpno`.
  */
 short cnc_deltlifegrp(unsigned short FlibHndl, short grpno);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_diagnosr64(unsigned short FlibHndl, short *a, short b, short *c, short *d, void *e);
 
 /*
  Reads CNC diagnosis data, as cnc_rdparam reads parameters (sizes: byte
@@ -6760,6 +6946,18 @@ short cnc_diagnoss(unsigned short FlibHndl,
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_distance2(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_distancem(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
 
 /*
  Sends `number` (0..40959) bytes of the DNC program (the first call
@@ -6821,6 +7019,12 @@ short cnc_download(unsigned short FlibHndl, char *data, short number);
 short cnc_download3(unsigned short FlibHndl, long *length, char *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_download3m(unsigned short FlibHndl, long *a, char *b);
+
+/*
  As cnc_download3 (FANUC's cnc_download4 is the same function).
 
  # Safety
@@ -6829,15 +7033,195 @@ short cnc_download3(unsigned short FlibHndl, long *length, char *data);
 short cnc_download4(unsigned short FlibHndl, long *length, char *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dscopyfile(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dsrdclose(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dsrdopen(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dsread(unsigned short FlibHndl, long *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dssearch(unsigned short FlibHndl, char *a, char *b, unsigned short c, unsigned long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dswrclose(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dswrite(unsigned short FlibHndl, long *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dswropen(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvchkdsk(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvcnclupdn(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvdelete(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvdownload(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvftpget(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvftpput(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvftpstat(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvgetdncpg(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvgetmode(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvhdformat(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvinfo(unsigned short FlibHndl, short *dtsvver);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvrdcram(unsigned short FlibHndl, long a, long *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvrderrmsg(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvrdfile(unsigned short FlibHndl, char *a, char *b, short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvsavecram(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvsetdncpg(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvsetmode(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvupdnstat(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvupload(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvwrfile(unsigned short FlibHndl, char *a, char *b, short c);
+
+/*
  Ends the download started by cnc_dwnstart: the CNC stores the program
  and answers, or returns its refusal (EW_DATA, EW_OVRFLOW, EW_PROT ...).
  */
 short cnc_dwnend(unsigned short FlibHndl);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dwnend2(unsigned short FlibHndl, char *a);
+
+/*
  Ends the download (see cnc_dwnend).
  */
 short cnc_dwnend3(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dwnend3m(unsigned short FlibHndl, short a);
 
 /*
  As cnc_dwnend3.
@@ -6855,6 +7239,12 @@ short cnc_dwnstart(unsigned short FlibHndl);
 short cnc_dwnstart3(unsigned short FlibHndl, short type);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dwnstart3m(unsigned short FlibHndl, short a, long b);
+
+/*
  Starts downloading data of `type` into the folder or program `prgname`
  (e.g. "//CNC_MEM/USER/PATH1/"; NULL sends no name).
 
@@ -6862,6 +7252,18 @@ short cnc_dwnstart3(unsigned short FlibHndl, short type);
  `prgname` must be NULL or a NUL-terminated string.
  */
 short cnc_dwnstart4(unsigned short FlibHndl, short type, char *prgname);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_edplutosmpl(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_end_async_wrparam(unsigned short FlibHndl, short *a);
 
 /*
  Reads the name and O number of the running program. The name as a C
@@ -6885,14 +7287,62 @@ short cnc_exeprgname(unsigned short FlibHndl, struct ODBEXEPRG *exeprg);
 short cnc_exeprgname2(unsigned short FlibHndl, char *path_name);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_exeprgname_bg(unsigned short FlibHndl, struct ODBEXEPRG *a);
+
+/*
  Frees every handle, closes every connection and the log.
  */
 short cnc_exitprocess(void);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_file_cpmv_end(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_file_cpmv_poll(unsigned short FlibHndl, short *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_file_cpmv_restart(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_file_cpmv_start(unsigned short FlibHndl, short a, char *b, char *c, unsigned short d);
+
+/*
  Frees a handle. The last handle to a CNC closes its connections.
  */
 short cnc_freelibhndl(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_ftrq_data_copy(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_ftrq_from_load(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_ftrq_from_save(unsigned short FlibHndl);
 
 /*
  Reads the CNC's model code (the low 16 bits of the 32-bit answer).
@@ -6903,12 +7353,36 @@ short cnc_freelibhndl(unsigned short FlibHndl);
 short cnc_getcncmodel(unsigned short FlibHndl, short *model);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getcrntscrn(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getdspmode(unsigned short FlibHndl, short *a);
+
+/*
  Reads the detail words of the last error on this handle.
 
  # Safety
  `err` must point to a writable ODBERR.
  */
 short cnc_getdtailerr(unsigned short FlibHndl, struct ODBERR *err);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getdtailerr2(unsigned short FlibHndl, struct ODBERR *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getexemacstat(unsigned short FlibHndl, short *a);
 
 /*
  Reads the input (`dec_fig_in`) and output (`dec_fig_out`) decimal
@@ -6941,6 +7415,36 @@ short cnc_getlanguage(unsigned short FlibHndl, short *lang);
 short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getpaxispath(unsigned short FlibHndl, short *a, short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getprntname(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getregprgnum(unsigned short FlibHndl, short *a, short *b, short *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getrtmiorngnum(unsigned short FlibHndl, unsigned long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getscrowner(unsigned short FlibHndl, short *a);
+
+/*
  Reads the CNC's date (`time->type` 0: year, month, date) or time of day
  (1: hour, minute, second). Other types: EW_NUMBER without traffic
  (unverified: no recording has another type; FANUC's cnc_settimer refuses
@@ -6952,6 +7456,30 @@ short cnc_getpath(unsigned short FlibHndl, short *path_no, short *maxpath_no);
 short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_gettolnum_qset(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getzofsnum_qset(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_ifsb_autoset(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_ifsb_reset(unsigned short FlibHndl);
+
+/*
  Inserts tool number `data` into tool life group `datano` as its
  `type`-th tool (the later tools move down).
 
@@ -6959,6 +7487,16 @@ short cnc_gettimer(unsigned short FlibHndl, struct IODBTIMER *time);
  `tool` must point to a readable IDBITD.
  */
 short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_lctcdcstm(unsigned short FlibHndl,
+                    unsigned short a,
+                    unsigned short b,
+                    unsigned char *c,
+                    unsigned char *d);
 
 /*
  Reads the machine position of axis `axis` (1..) or of every axis (-1):
@@ -6971,6 +7509,184 @@ short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_machine_bg(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcdp_mount(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcdp_mountchk(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcdp_unmount(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcdp_update_entry(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcdp_wractpt(unsigned short FlibHndl, char *a, long b, unsigned long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_rdactset(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_rdcompparam(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_rdparainfo2(unsigned short FlibHndl,
+                          short a,
+                          short *b,
+                          short *c,
+                          short *d,
+                          struct ODBPARAIF2 *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_rdparam(unsigned short FlibHndl,
+                      short a,
+                      short b,
+                      short c,
+                      short d,
+                      struct IODBPSD *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_wractset(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mcs_wrparam(unsigned short FlibHndl, short a, short b, struct IODBPSD *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_getswitch(unsigned short FlibHndl, short a, unsigned short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_lock(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_register(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_setpassword(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_setswitch(unsigned short FlibHndl, short a, unsigned short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_unlock(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_unregister(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_update(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_moniclear(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_monistat(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_msgsrch(unsigned short FlibHndl, short a, long b, long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdalmnum(unsigned short FlibHndl, long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdmsgnum(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdsysinfo(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mergeprog(unsigned short FlibHndl, short a, long b, unsigned long c, long d);
 
 /*
  Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
@@ -6987,6 +7703,30 @@ short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBA
 short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL *modal);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_modal_bg(unsigned short FlibHndl, short a, short b, struct ODBMDL *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mtdtnstart(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_ncg_protcancel(unsigned short FlibHndl, char *a, long b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_newprog(unsigned short FlibHndl, long a);
+
+/*
  Creates a program or (a name ending in '/') a folder: `path` sent in a
  256-byte field.
 
@@ -6994,6 +7734,18 @@ short cnc_modal(unsigned short FlibHndl, short type, short block, struct ODBMDL 
  `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_add(unsigned short FlibHndl, char *path);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_add_bgedt(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_chginquiry(unsigned short FlibHndl, char a, short b);
 
 /*
  Copies a program (`to`: a program or a folder; each name sent in a
@@ -7004,6 +7756,30 @@ short cnc_pdf_add(unsigned short FlibHndl, char *path);
  `to` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_copy(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_cpmv_end(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_cpmv_poll(unsigned short FlibHndl, short *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_cpmv_restart(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_cpmv_start(unsigned short FlibHndl, short a, char *b, char *c, short d);
 
 /*
  Deletes a program or an empty folder: `path` sent in a 256-byte field.
@@ -7023,6 +7799,16 @@ short cnc_pdf_del(unsigned short FlibHndl, char *path);
 short cnc_pdf_delall(unsigned short FlibHndl, short type, char *path);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_delchar(unsigned short FlibHndl,
+                      char *a,
+                      unsigned long b,
+                      unsigned long c,
+                      unsigned long d);
+
+/*
  Deletes `count` lines of a program (`path`, in a 256-byte field) from
  line `line_no`.
 
@@ -7035,6 +7821,48 @@ short cnc_pdf_delline(unsigned short FlibHndl,
                       unsigned long count);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_dncread(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_dncset(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_dncset2(unsigned short FlibHndl, char *a, unsigned short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_dssearch(unsigned short FlibHndl,
+                       char *a,
+                       unsigned long b,
+                       unsigned long c,
+                       unsigned long d,
+                       unsigned long e,
+                       char *f,
+                       short g);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_mergeprog(unsigned short FlibHndl,
+                        short a,
+                        char *b,
+                        unsigned long c,
+                        unsigned long d,
+                        char *e);
+
+/*
  Moves a program (`to`: a program or a folder; each name sent in a
  256-byte field).
 
@@ -7043,6 +7871,18 @@ short cnc_pdf_delline(unsigned short FlibHndl,
  `to` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_punch(unsigned short FlibHndl, long a, char *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_punch_bg(unsigned short FlibHndl, long a, char *b, char *c);
 
 /*
  Reads the execution pointer: the program's path name (the answer's
@@ -7054,6 +7894,18 @@ short cnc_pdf_move(unsigned short FlibHndl, char *from, char *to);
 short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_rdactpt_bg(unsigned short FlibHndl, char *a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_rdactpt_bgedt(unsigned short FlibHndl, char *a, long *b);
+
+/*
  Reads the main program's path name: 256 bytes written, the answer's up
  to its NUL and zeros after.
 
@@ -7061,6 +7913,60 @@ short cnc_pdf_rdactpt(unsigned short FlibHndl, char *path, long *block);
  `path_name` must be NULL or point to 256 writable bytes.
  */
 short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_rdmainpt(unsigned short FlibHndl, char *a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_rdprgname(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_read(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_read_bg(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_read_end(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_read_poll(unsigned short FlibHndl, short *a, char *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_read_restart(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_read_start(unsigned short FlibHndl, short a, char *b, char *c, short d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_relsmain(unsigned short FlibHndl);
 
 /*
  Renames a program or folder (`from` sent in a 256-byte field; `to`, the
@@ -7073,12 +7979,78 @@ short cnc_pdf_rdmain(unsigned short FlibHndl, char *path_name);
 short cnc_pdf_rename(unsigned short FlibHndl, char *from, char *to);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_replacechar(unsigned short FlibHndl,
+                          char *a,
+                          unsigned long b,
+                          unsigned long c,
+                          unsigned long d,
+                          char *e,
+                          unsigned long f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_replaceword_all(unsigned short FlibHndl,
+                              char *a,
+                              unsigned long b,
+                              unsigned long c,
+                              unsigned long d,
+                              char *e,
+                              char *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_searchresult2(unsigned short FlibHndl, unsigned long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_searchresult_bgedt(unsigned short FlibHndl, unsigned long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_searchword2(unsigned short FlibHndl,
+                          char *a,
+                          unsigned long b,
+                          unsigned long c,
+                          unsigned long d,
+                          unsigned long e,
+                          char *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_searchword_bgedt(unsigned short FlibHndl,
+                               char *a,
+                               unsigned long b,
+                               unsigned long c,
+                               unsigned long d,
+                               unsigned long e,
+                               char *f);
+
+/*
  Selects a program as the main program: `path` sent in a 256-byte field.
 
  # Safety
  `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_stoprmtdgn(unsigned short FlibHndl, char a, short b);
 
 /*
  Sets the execution pointer to block `*block` of a program (the name
@@ -7089,6 +8061,163 @@ short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
  `path` readable up to its NUL, `block` 4 readable bytes.
  */
 short cnc_pdf_wractpt(unsigned short FlibHndl, char *path, short type, long *block);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_wractpt_bg(unsigned short FlibHndl, char *a, short b, long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_wractpt_bgedt(unsigned short FlibHndl, char *a, short b, long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmmchkalm(unsigned short FlibHndl, long a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmmgetend(unsigned short FlibHndl, long a, long b, long c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_powc_clear_inte(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_powc_del_cycle_data(unsigned short FlibHndl, short lev);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_powc_rd_clear_time(unsigned short FlibHndl, unsigned long *clear_time);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_progdigit(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punch_data_end(unsigned short FlibHndl, unsigned long *a, unsigned long *b, short *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punch_data_start(unsigned short FlibHndl,
+                           short a,
+                           unsigned long b,
+                           unsigned long c,
+                           char *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punch_prog2_bg(unsigned short FlibHndl, long a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punch_prog3(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punch_prog3_bg(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punch_prog_bg(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_punchlrncrnt(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pwcm_clear_consump(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_cpSlctPtn(unsigned short FlibHndl, long a, unsigned short b, unsigned short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdCtgInfo(unsigned short FlibHndl,
+                        unsigned short a,
+                        unsigned short *b,
+                        unsigned short *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdRcmAdjst(unsigned short FlibHndl, short a, short *b, short *c, short *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdptnadjst(unsigned short FlibHndl, short a, short *b, short *c, short *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdtunemoni(unsigned short FlibHndl, short a, short *b, short *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_wrOvLp(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_wrRcmAdjst(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_wrRecom(unsigned short FlibHndl, long a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_wrptnadjst(unsigned short FlibHndl, short a, short *b);
 
 /*
  Reads the length offset number (H) of tool `tuse_num` of tool life group
@@ -7200,6 +8329,48 @@ short cnc_rd3dtofs(unsigned short FlibHndl, struct ODB3DTO *tofs);
 short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_hm_cmpl_stat(unsigned short FlibHndl, long *a, unsigned long *b, short *c, short *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_hm_execprog(unsigned short FlibHndl, unsigned short *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_icn_cstm_str_num(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_mc_message_string(unsigned short FlibHndl, long a, char *b, long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_mc_scrn_def_num(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_update_count(unsigned short FlibHndl, unsigned short *update_count);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdactdofs(unsigned short FlibHndl, short a, struct IODBZOFS *b);
+
+/*
  Reads the execution pointer: program number and block number (4 bytes
  written into each `long`).
 
@@ -7208,6 +8379,18 @@ short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
  `blk_no` must be NULL or point to a writable long.
  */
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdactspdl(unsigned short FlibHndl, short *a, short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdalarmchar(unsigned short FlibHndl, short *a, short *b);
 
 /*
  Reads the number of alarm history entries: the low 16 bits of the CNC's
@@ -7268,6 +8451,16 @@ short cnc_rdalmhistry5(unsigned short FlibHndl,
                        struct ODBAHIS5 *almhis);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdalmhistry_w(unsigned short FlibHndl,
+                        unsigned short a,
+                        unsigned short b,
+                        unsigned short c,
+                        struct ODBAHIS *d);
+
+/*
  Reads active alarms of `alm_type` (−1 all): `type` 0 axis and number
  (ALMINFO alm1, 8-byte records), 1 with messages (alm2, 40-byte records);
  after the last record −1 is written into the next record's place (the
@@ -7286,6 +8479,12 @@ short cnc_rdalminfo(unsigned short FlibHndl,
                     short alm_type,
                     short length,
                     struct ALMINFO *almmsg);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdalminfo_bg(unsigned short FlibHndl, short a, short b, short c, struct ALMINFO *d);
 
 /*
  Reads up to `*num` active alarms of `type` (−1: all) with 32-character
@@ -7310,11 +8509,8 @@ short cnc_rdalmmsg(unsigned short FlibHndl, short type, short *num, struct ODBAL
 short cnc_rdalmmsg2(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG2 *almmsg);
 
 /*
- Reads alarm messages with 256-character texts: `EW_VERSION` (-7) on
- Ethernet.
-
- # Safety
- Nothing is written through the pointers.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdalmmsg3(unsigned short FlibHndl, short type, short *num, struct ODBALMMSG3 *almmsg);
 
@@ -7357,6 +8553,12 @@ short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAM
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdblockcount(unsigned short FlibHndl, struct ODBPRS *a);
+
+/*
  Reads the B-axis tool offsets' memory type, how many there are and the
  sub function number of offset cancel.
 
@@ -7364,6 +8566,24 @@ short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
  `btlinf` must be NULL or point to a writable ODBBTLINF.
  */
 short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcenter64(unsigned short FlibHndl,
+                     double *a,
+                     double *b,
+                     long *c,
+                     long *d,
+                     long *e,
+                     long *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcmstatdata(unsigned short FlibHndl, unsigned long *a);
 
 /*
  Reads the CNC's identification number: four 32-bit words. The pointer
@@ -7378,6 +8598,35 @@ short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
  */
 short cnc_rdcncid(unsigned short FlibHndl,
                   unsigned long *cncid);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcncmem2(unsigned short FlibHndl,
+                    short a,
+                    unsigned long b,
+                    unsigned long c,
+                    void *d,
+                    short e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcntover(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcnttype(unsigned short FlibHndl, short a, struct ODBTLIFE3 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcomlogmsg(unsigned short FlibHndl, char *a);
 
 /*
  Reads the commanded values of block `block` (0: the block in execution)
@@ -7395,6 +8644,12 @@ short cnc_rdcommand(unsigned short FlibHndl,
                     struct ODBCMD *command);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcomopemsg(unsigned short FlibHndl, char *a);
+
+/*
  Reads how many additional work coordinate systems (G54.1 P1..) the CNC
  has (the low 16 bits of the 32-bit answer).
 
@@ -7410,6 +8665,18 @@ short cnc_rdcoordnum(unsigned short FlibHndl, short *num);
  `count` must be NULL or point to a writable ODBTLIFE3.
  */
 short cnc_rdcount(unsigned short FlibHndl, short number, struct ODBTLIFE3 *count);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcstm_decfig(unsigned short FlibHndl, short a, short b, short *c, unsigned char *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcstmdecfig(unsigned short FlibHndl, unsigned char *a);
 
 /*
  Reads the spindle control input signals (four bytes, `sgnl1` the low
@@ -7436,6 +8703,12 @@ short cnc_rdctrldo(unsigned short FlibHndl, struct ODBSPDO *spdo);
  */
 short cnc_rdcurrent(unsigned short FlibHndl,
                     short *data);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rddgdat(unsigned short FlibHndl, short *a, short *b);
 
 /*
  The same as cnc_diagnoss (an alias some programs use).
@@ -7478,6 +8751,18 @@ short cnc_rddiaginfo(unsigned short FlibHndl,
 short cnc_rddiagnum(unsigned short FlibHndl, struct ODBDIAGNUM *diagnum);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rddncfname(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rddofs(unsigned short FlibHndl, short a, short b, short c, short d, struct IODBZOR *e);
+
+/*
  cnc_rddynamic2 with alarm and program numbers as shorts (ODBDY;
  `length` ≥ 40 for one axis, 536 for all).
 
@@ -7511,6 +8796,12 @@ short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct O
 short cnc_rddynamico8(unsigned short FlibHndl, short axis, short length, struct ODBDYO8 *buf);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdedgeactive(unsigned short FlibHndl, short a, char *b);
+
+/*
  Reads the Ethernet board's type and device.
 
  # Safety
@@ -7518,6 +8809,12 @@ short cnc_rddynamico8(unsigned short FlibHndl, short axis, short length, struct 
  `device` must be NULL or point to a writable short.
  */
 short cnc_rdetherinfo(unsigned short FlibHndl, short *type, short *device);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdexecprgnum(unsigned short FlibHndl, long *a);
 
 /*
  Reads the text of the block being executed and the blocks after it.
@@ -7537,12 +8834,34 @@ short cnc_rdetherinfo(unsigned short FlibHndl, short *type, short *device);
 short cnc_rdexecprog(unsigned short FlibHndl, unsigned short *length, short *blknum, char *data);
 
 /*
- Reads the execution pointer: HSSB only; `EW_VERSION` (-7) on Ethernet.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdexecprog2(unsigned short FlibHndl, unsigned short *a, short *b, short *c, char *d);
 
- # Safety
- Nothing is written through the pointers.
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdexecprog_bg(unsigned short FlibHndl, unsigned short *a, short *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdexecpt(unsigned short FlibHndl, struct PRGPNT *pact, struct PRGPNT *pnext);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdexecptm(unsigned short FlibHndl, struct PRGPNT *a, struct PRGPNT *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdfeedmode(unsigned short FlibHndl, short a, short *b);
 
 /*
  Reads the canned cycle in force: its mode (G code), the plane's two axes
@@ -7592,6 +8911,18 @@ short cnc_rdfromspindleid(unsigned short FlibHndl, short sp_no, struct ODBCSPID 
 short cnc_rdfromspindleid2(unsigned short FlibHndl, short sp_no, struct ODBCSPID2 *spindleid);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdftrq_data(unsigned short FlibHndl, short a, long b, short *c, unsigned long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdftrq_storecount(unsigned short FlibHndl, short a, long *b);
+
+/*
  Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
  untouched; cnc_rdgrpid2's request).
 
@@ -7628,6 +8959,18 @@ short cnc_rdgrpinfo(unsigned short FlibHndl,
                     struct IODBTGI *grpinfo);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhipitchinfo(unsigned short FlibHndl, long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhipitchr(unsigned short FlibHndl, long a, long *b, long *c);
+
+/*
  Reads the signals the operation history records (as many 16-byte records
  as the CNC sends, at most 60; datano and type untouched).
 
@@ -7635,6 +8978,58 @@ short cnc_rdgrpinfo(unsigned short FlibHndl,
  `sig` must be NULL or point to a writable IODBSIG3.
  */
 short cnc_rdhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_almstate(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_as_hrv(unsigned short FlibHndl, unsigned short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_warnhst_cnt(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_warning_cnt(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdindexofs(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdioassigned(unsigned short FlibHndl, unsigned short *a, unsigned short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlcstmname(unsigned short FlibHndl,
+                      unsigned short a,
+                      unsigned short b,
+                      unsigned char *c,
+                      unsigned char *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlfiberdata(unsigned short FlibHndl, short a, short b, short *c, long *d);
 
 /*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;
@@ -7665,6 +9060,18 @@ short cnc_rdloopgain(unsigned short FlibHndl,
 short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct ODBM *macro_);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacro2(unsigned short FlibHndl, short a, short b, struct ODBM *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacro_bg(unsigned short FlibHndl, short a, short b, struct ODBM *c);
+
+/*
  Reads how many common variables the CNC has: `use_no1` (#100..),
  `use_no2` (#500..).
 
@@ -7672,6 +9079,18 @@ short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct OD
  `buf` must be NULL or point to a writable ODBMVINF.
  */
 short cnc_rdmacroinfo(unsigned short FlibHndl, struct ODBMVINF *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacrolclevel(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacrolcval(unsigned short FlibHndl, short a, short b, short c, double *d);
 
 /*
  Reads the number of the custom macro variable named `name` (a C string
@@ -7802,6 +9221,30 @@ short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
 short cnc_rdmenuswitch(unsigned short FlibHndl, short *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmodalval(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmofs(unsigned short FlibHndl, short a, short b, long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmovestate(unsigned short FlibHndl, short a, short *b, unsigned char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmtdtnid(unsigned short FlibHndl, unsigned long *a);
+
+/*
  Reads the multiple-piece machining number (4 bytes written into the
  `long`).
 
@@ -7897,6 +9340,12 @@ short cnc_rdope_lvl(unsigned short FlibHndl, short *lvl);
 short cnc_rdophisno(unsigned short FlibHndl, unsigned short *hisno);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdophisno4(unsigned short FlibHndl, unsigned short *a);
+
+/*
  Reads the operation history entries `s_number..=e_number` into ODBHIS,
  each 8-byte record decoded by its type (MDI key, signal, alarm, date,
  time; other types: the type alone). At most 89 entries are asked for;
@@ -7910,6 +9359,16 @@ short cnc_rdophistry(unsigned short FlibHndl,
                      unsigned short e_number,
                      unsigned short length,
                      struct ODBHIS *ophis);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdophistry3(unsigned short FlibHndl,
+                      unsigned short a,
+                      unsigned short *b,
+                      unsigned short *c,
+                      void *d);
 
 /*
  Reads the operation history records `s_number..=*e_number` (1 = the
@@ -7971,6 +9430,12 @@ short cnc_rdopmsg(unsigned short FlibHndl, short type, short length, struct OPMS
 short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG3 *opmsg);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdopmsg3m(unsigned short FlibHndl, short a, short *b, struct OPMSG3 *c);
+
+/*
  Reads the software operator panel's general purpose switches: `sgnal`
  bit k is switch k + 1 (`type` sent and written back as its low byte,
  0..255; `datano` left as it was).
@@ -7999,6 +9464,18 @@ short cnc_rdopnlgsname(unsigned short FlibHndl, short type, struct IODBRDNA *buf
  `buf` must be NULL or point to a writable IODBSGNL.
  */
 short cnc_rdopnlsgnl(unsigned short FlibHndl, short type, struct IODBSGNL *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdoptfuncinfo(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdoverstoremode(unsigned short FlibHndl, long *mode);
 
 /*
  Reads the numbers and attributes of up to `read_no` parameters from
@@ -8118,6 +9595,18 @@ short cnc_rdparar(unsigned short FlibHndl,
                   void *param);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdparar3(unsigned short FlibHndl,
+                   short *a,
+                   short b,
+                   short *c,
+                   short *d,
+                   short e,
+                   void *f);
+
+/*
  Reads up to `*num` folders and programs of `in->path` from entry
  `in->req_num` (at most 20 asked per call, as FANUC's library asks):
  128-byte records: kind and date (7 shorts), 6 bytes not read, size,
@@ -8153,6 +9642,17 @@ short cnc_rdpdf_curdir(unsigned short FlibHndl, short type, char *dir_name);
 short cnc_rdpdf_drive(unsigned short FlibHndl, struct ODBPDFDRV *drive);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpdf_execline(unsigned short FlibHndl,
+                         char *a,
+                         unsigned long b,
+                         char *c,
+                         unsigned long *d,
+                         unsigned long *e);
+
+/*
  Reads a drive's used and total capacity (pages) and directories
  (`drv_name` sent in a 12-byte field; a short answer is EW_PROTOCOL,
  nothing written).
@@ -8182,6 +9682,17 @@ short cnc_rdpdf_line(unsigned short FlibHndl,
                      unsigned long *data_len);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpdf_line_bgedt(unsigned short FlibHndl,
+                           char *a,
+                           unsigned long b,
+                           char *c,
+                           unsigned long *d,
+                           unsigned long *e);
+
+/*
  Reads up to `*num` sub-folders of `in->path` from entry `in->req_num`
  (at most 72 asked per call, as FANUC's library asks); `*num` = read
  (none: the first `sub_exist` is set to 0, as FANUC's library does).
@@ -8204,6 +9715,12 @@ short cnc_rdpdf_subdir(unsigned short FlibHndl,
  `path` must be NULL or point to 256 readable bytes, or to a C string ending within them.
  */
 short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *num_fil);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpglockstat(unsigned short FlibHndl, long *a, long *b);
 
 /*
  Reads the number of pitch error compensation points.
@@ -8346,6 +9863,12 @@ short cnc_rdpmacror2(unsigned short FlibHndl,
                      double *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpmacror_bg(unsigned short FlibHndl, unsigned long a, unsigned long *b, double *c);
+
+/*
  Reads the position deviation of each spindle (spindle position control),
  one `long` per spindle (at most 8; 4 bytes written per `long`).
 
@@ -8405,12 +9928,35 @@ short cnc_rdprgnum(unsigned short FlibHndl, struct ODBPRO *prgnum);
 short cnc_rdprgnumo8(unsigned short FlibHndl, struct ODBPROO8 *prgnum);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprgnumo8_bg(unsigned short FlibHndl, struct ODBPROO8 *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprgrmupdtcnt(unsigned short FlibHndl, unsigned long *a);
+
+/*
  Reads the machining times of the last programs run.
 
  # Safety
  `proc_time` must be NULL or point to a writable ODBPTIME.
  */
 short cnc_rdproctime(unsigned short FlibHndl, struct ODBPTIME *proc_time);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprogdata(unsigned short FlibHndl,
+                     long a,
+                     unsigned long b,
+                     char *c,
+                     unsigned long *d,
+                     unsigned long *e);
 
 /*
  Reads the program directory as text: the programs numbered `datano_s`
@@ -8492,6 +10038,18 @@ short cnc_rdprogdir3(unsigned short FlibHndl,
                      struct PRGDIR3 *buf);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprogdir4_w(unsigned short FlibHndl,
+                       short a,
+                       short b,
+                       short c,
+                       short d,
+                       short *e,
+                       struct PRGDIR3 *f);
+
+/*
  cnc_rdprogdir with 8-digit program numbers: the programs numbered
  `datano_s` to `datano_e` (32 bits each, sent as they are), the same text,
  checks and exchanges.
@@ -8519,10 +10077,8 @@ short cnc_rdprogdiro8(unsigned short FlibHndl,
 short cnc_rdproginfo(unsigned short FlibHndl, short type, short length, struct ODBNC *prog);
 
 /*
- Reads program lines: HSSB only; `EW_VERSION` (-7) on Ethernet.
-
- # Safety
- Nothing is written through the pointers.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdprogline(unsigned short FlibHndl,
                      long prog_no,
@@ -8530,6 +10086,17 @@ short cnc_rdprogline(unsigned short FlibHndl,
                      char *prog_data,
                      unsigned long *line_len,
                      unsigned long *data_len);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprogline2(unsigned short FlibHndl,
+                      long a,
+                      unsigned long b,
+                      char *c,
+                      unsigned long *d,
+                      unsigned long *e);
 
 /*
  Reads the program restart information in one exchange: for the block
@@ -8556,6 +10123,18 @@ short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
 short cnc_rdprt_lvl(unsigned short FlibHndl, short kind, short *rd_lvl, short *wt_lvl);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdptcmdsize(unsigned short FlibHndl, short cmd_id, long *cmd_size);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpthis_num(unsigned short FlibHndl, long *hist_num);
+
+/*
  Reads the cutter compensation mode, the axes of its plane and the offset
  vector in that plane.
 
@@ -8563,6 +10142,18 @@ short cnc_rdprt_lvl(unsigned short FlibHndl, short kind, short *rd_lvl, short *w
  `rofs` must be NULL or point to a writable ODBROFS.
  */
 short cnc_rdradofs(unsigned short FlibHndl, struct ODBROFS *rofs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrcvmsg(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrcvstat(unsigned short FlibHndl, unsigned short *a);
 
 /*
  Reads how many times the running program has repeated (4 bytes written
@@ -8574,12 +10165,40 @@ short cnc_rdradofs(unsigned short FlibHndl, struct ODBROFS *rofs);
 short cnc_rdrepeatval(unsigned short FlibHndl, long *val);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrepeatval_ext(unsigned short FlibHndl, long *a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrmtdgn(unsigned short FlibHndl, long *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdscdlinfo(unsigned short FlibHndl,
+                     short *scdl_mode,
+                     short *scdl_num,
+                     short *data_no,
+                     short *crnt_no);
+
+/*
  Reads the sequence number of the block being executed.
 
  # Safety
  `seqnum` must be NULL or point to a writable ODBSEQ.
  */
 short cnc_rdseqnum(unsigned short FlibHndl, struct ODBSEQ *seqnum);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdseqnum_bg(unsigned short FlibHndl, struct ODBSEQ *a);
 
 /*
  Reads the specification and serial number of the servo motor, pulse
@@ -8646,6 +10265,30 @@ short cnc_rdsetr(unsigned short FlibHndl,
                  void *param);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsndmsg(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsoc_wave(unsigned short FlibHndl, long *a, unsigned short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsoc_wave_end(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsoc_wave_start(unsigned short FlibHndl, short a);
+
+/*
  Reads the commanded spindle speed, constant surface speed and maximum
  spindle speed.
 
@@ -8674,12 +10317,16 @@ short cnc_rdspdlalm(unsigned short FlibHndl, char *data);
 short cnc_rdspdlname(unsigned short FlibHndl, short *data_num, struct ODBSPDLNAME *spdlname);
 
 /*
- Reads spindle names (multi-path form): `EW_VERSION` (-7) on Ethernet.
-
- # Safety
- Nothing is written through the pointers.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdspdlnamem(unsigned short FlibHndl, short *data_num, struct ODBSPDLNAME *spdlname);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdspdlspeed(unsigned short FlibHndl, short a, short b, long *c);
 
 /*
  Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
@@ -8755,6 +10402,12 @@ short cnc_rdspmeter(unsigned short FlibHndl,
                     struct ODBSPLOAD *loadmeter);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdspmonitor(unsigned short FlibHndl, short a, short b, short *c, long *d);
+
+/*
  Reads the actual servo motor speed of each axis (4 bytes written per
  `long`).
 
@@ -8763,6 +10416,18 @@ short cnc_rdspmeter(unsigned short FlibHndl,
  */
 short cnc_rdsrvspeed(unsigned short FlibHndl,
                      long *data);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsrvtcmd(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsrvtsa(unsigned short FlibHndl, short *a);
 
 /*
  Reads the servo load meters: `*data_num` in = room, out = axes written;
@@ -8774,6 +10439,22 @@ short cnc_rdsrvspeed(unsigned short FlibHndl,
  writable ODBSVLOAD.
  */
 short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *loadmeter);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsvmonitor(unsigned short FlibHndl, short a, short b, short *c, long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsysalm(unsigned short FlibHndl,
+                   short kind,
+                   short page,
+                   unsigned short length,
+                   char *data);
 
 /*
  Reads the CNC's boards (hardware IDs) from the `s_no`-th on: `*num` in
@@ -8845,6 +10526,28 @@ short cnc_rdsyssoft3_str(unsigned short FlibHndl,
                          struct ODBSYSS3_STR *syssoft);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtcodemsg(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtdicolordata(unsigned short FlibHndl,
+                         short ob_type,
+                         unsigned short ob_s_no,
+                         unsigned short rd_num,
+                         char *data);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtdicomment(unsigned short FlibHndl, short *length, char *comment);
+
+/*
  Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4
  free) as minutes and milliseconds.
 
@@ -8872,6 +10575,18 @@ short cnc_rdtlctldata(unsigned short FlibHndl, struct IODBTLCTL *tlctl);
 short cnc_rdtldata(unsigned short FlibHndl, struct ODBTLDATA *tldata);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtldspcstms(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtldspcstms2(unsigned short FlibHndl, short a, short *b);
+
+/*
  Reads the tool life management's limits: groups, tools in a group, life
  in minutes and in cycles.
 
@@ -8879,6 +10594,12 @@ short cnc_rdtldata(unsigned short FlibHndl, struct ODBTLDATA *tldata);
  `tlinfo` must be NULL or point to a writable ODBTLINFO.
  */
 short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtlmgr_name(unsigned short FlibHndl, short a, short b, short *c, unsigned char *d);
 
 /*
  Reads the tool length measurement information: T and M codes, the
@@ -8889,6 +10610,12 @@ short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
  `tlmsinf` must be NULL or point to a writable ODBTLMSINF.
  */
 short cnc_rdtlmsinfo(unsigned short FlibHndl, struct ODBTLMSINF *tlmsinf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtlnewstatus(unsigned short FlibHndl, unsigned long *a);
 
 /*
  Reads the next, in-use and selected tool life groups, then their
@@ -8917,6 +10644,12 @@ short cnc_rdtofs(unsigned short FlibHndl,
                  short type,
                  short length,
                  struct ODBTOFS *tofs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtofs_bg(unsigned short FlibHndl, short a, short b, short c, struct ODBTOFS *d);
 
 /*
  Reads whether the `[MEASURE]` and `[MEASURE+]` tool offset measurement
@@ -8963,6 +10696,12 @@ short cnc_rdtofsr(unsigned short FlibHndl,
                   struct IODBTO *tofs);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtofsr_bg(unsigned short FlibHndl, short a, short b, short c, short d, struct IODBTO *e);
+
+/*
  Reads `*num` entries of the tool management data from data number
  `top_no` on, in exchanges of at most 9 (each asks from where the last
  answer ended); `*num` becomes the number read. `top_no` below 1:
@@ -8975,6 +10714,12 @@ short cnc_rdtofsr(unsigned short FlibHndl,
  IODBTLMNG.
  */
 short cnc_rdtool(unsigned short FlibHndl, short top_no, short *num, struct IODBTLMNG *tool);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtoolchggrp(unsigned short FlibHndl, short a, short b, long *c);
 
 /*
  Reads the tool data of a punch press from data number `tool_no` on, at
@@ -9018,6 +10763,18 @@ short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct 
 short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtoollife_count(unsigned short FlibHndl, char a, short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtoollifed_count(unsigned short FlibHndl, long a, short *b);
+
+/*
  Reads the next, in-use and selected tool life groups (`datano` and
  `type` untouched).
 
@@ -9025,6 +10782,28 @@ short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
  `usegrp` must be NULL or point to a writable ODBUSEGR.
  */
 short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwavecount(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdsfms2(unsigned short FlibHndl,
+                      short a,
+                      short b,
+                      unsigned short c,
+                      struct IODBWCSF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdsfms3(unsigned short FlibHndl, short a, short b, short c, struct IODBWCSF *d);
 
 /*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into
@@ -9035,6 +10814,28 @@ short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
  `shift` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_rdwkcdshft(unsigned short FlibHndl, short axis, short length, struct IODBWCSF *shift);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdshft2(unsigned short FlibHndl,
+                      short a,
+                      short b,
+                      unsigned short c,
+                      struct IODBWCSF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdshft3(unsigned short FlibHndl, short a, short b, short c, struct IODBWCSF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdshft_bg(unsigned short FlibHndl, short a, short b, struct IODBWCSF *c);
 
 /*
  Reads a work zero offset (`number` 0 external, 1..6 G54..G59, 7.. G54.1
@@ -9051,6 +10852,12 @@ short cnc_rdzofs(unsigned short FlibHndl,
                  short axis,
                  short length,
                  struct IODBZOFS *zofs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdzofs_bg(unsigned short FlibHndl, short a, short b, short c, struct IODBZOFS *d);
 
 /*
  Reads the number of work zero offsets.
@@ -9081,6 +10888,47 @@ short cnc_rdzofsr(unsigned short FlibHndl,
                   short e_number,
                   short length,
                   struct IODBZOR *zofsr);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdzofsr_bg(unsigned short FlibHndl,
+                     short a,
+                     short b,
+                     short c,
+                     short d,
+                     struct IODBZOR *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_read_prog2_bg(unsigned short FlibHndl, long a, char *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_read_prog3(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_read_prog3_bg(unsigned short FlibHndl, char *a, char *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_read_prog_bg(unsigned short FlibHndl, long a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_readlrncrnt(unsigned short FlibHndl, char *a);
 
 /*
  Registers the `*num` pots of `data` (`magazine`, `pot` and the tool
@@ -9145,9 +10993,21 @@ short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_relative_bg(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
  Renumbers program `old_num` as `new_num`.
  */
 short cnc_renameprog(unsigned short FlibHndl, long old_num, long new_num);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_req_alarm(unsigned short FlibHndl, short alm_grp, short alm_num);
 
 /*
  Resets the CNC: the running program stops, reset-clearable alarms are
@@ -9170,10 +11030,140 @@ short cnc_reset2(unsigned short FlibHndl);
 short cnc_resetconnect(unsigned short FlibHndl);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_resetpglock(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_restorlrn(unsigned short FlibHndl);
+
+/*
  Rewinds the cursor of the path's main program to its top (the path
  stopped).
  */
 short cnc_rewind(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_rdponprop(unsigned short FlibHndl, unsigned char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_selectgroup(unsigned short FlibHndl, unsigned short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_createpnt(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_getdncprg(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_getpntcnt(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_rdaddinfo(unsigned short FlibHndl, short a, short *b, short c, long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_search(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_selectpnt(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_setsuppress(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_rdactset(unsigned short FlibHndl, short *set_num);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_rdname(unsigned short FlibHndl, short set_num, char *setname);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_rdparainfo2(unsigned short FlibHndl,
+                          short s_number,
+                          short *read_no,
+                          short *prev_no,
+                          short *next_no,
+                          struct ODBPARAIF2 *info);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_rdparam(unsigned short FlibHndl,
+                      short set_num,
+                      short number,
+                      short axis,
+                      short length,
+                      struct IODBPSD *param);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_rdparanum(unsigned short FlibHndl, struct ODBPARANUM *paranum);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_wractset(unsigned short FlibHndl, short set_num);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_wrname(unsigned short FlibHndl, short set_num, char *setname);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_s5s_wrparam(unsigned short FlibHndl, short set_num, short length, struct IODBPSD *param);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_save_maint(unsigned short FlibHndl);
 
 /*
  Cancels the servo data sampling (sends `(1,0x0136)`; FANUC's 32-bit
@@ -9192,6 +11182,12 @@ short cnc_sdtclrchnl(unsigned short FlibHndl);
  only).
  */
 short cnc_sdtendsmpl(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sdtendsmpl2(unsigned short FlibHndl);
 
 /*
  Reads the current value of each servo data sampling channel: always 8
@@ -9231,9 +11227,39 @@ short cnc_sdtstartsmpl(unsigned short FlibHndl, short type, long cycle);
 short cnc_search(unsigned short FlibHndl, short prog_no);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_search2(unsigned short FlibHndl, long a);
+
+/*
  Selects program `prog_no` (8 digits) as the main program.
  */
 short cnc_searcho8(unsigned short FlibHndl, long prog_no);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_searchresult2(unsigned short FlibHndl, unsigned long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_searchword2(unsigned short FlibHndl,
+                      long a,
+                      unsigned long b,
+                      short c,
+                      short d,
+                      unsigned long e,
+                      char *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sendmessage(unsigned short FlibHndl, char *a);
 
 /*
  Searches the path's main program for sequence number `seq`: the cursor
@@ -9242,10 +11268,64 @@ short cnc_searcho8(unsigned short FlibHndl, long prog_no);
 short cnc_seqsrch(unsigned short FlibHndl, long seq);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_seqsrch2(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_set_cutcnd_exval(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_set_hm_progno(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_set_smth_exval(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setactptopt(unsigned short FlibHndl, long a);
+
+/*
  Selects the path later calls on this handle address (0 or -1: path 1).
  Other handles, even to the same CNC, are not affected.
  */
 short cnc_setpath(unsigned short FlibHndl, short path_no);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setpdf_pglockexec(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setpglock(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setrstraxis(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setsumdt(unsigned short FlibHndl, short a, char *b);
 
 /*
  Sets the handle's timeout in seconds (0 or less: wait forever).
@@ -9262,6 +11342,24 @@ short cnc_settimeout(unsigned short FlibHndl, long timeout);
 short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_settolnum_qset(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_settpnlcalib(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setzofsnum_qset(unsigned short FlibHndl, short a);
+
+/*
  Reads the skip position (where the skip signal came) of axis `axis`
  (1..) or of every axis (-1): an axis above 32 is EW_ATTRIB before any
  traffic; every whole value record answered (at most 32) must fit in
@@ -9273,6 +11371,72 @@ short cnc_settimer(unsigned short FlibHndl, struct IODBTIMER *time);
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_skip(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_slctscrn(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_soc_wave_setchnl(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsfreechnl(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsrddrvcp(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsrdopdata(unsigned short FlibHndl, long a, long *b, void *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsrsvchnl(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsstartrd(unsigned short FlibHndl, long a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsstartwrt(unsigned short FlibHndl, long a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsstopexec(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcswropdata(unsigned short FlibHndl, long a, long b, void *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srttl_getnum(unsigned short FlibHndl, short a, long b, long c, short *d);
 
 /*
  Reads the servo delay (position deviation) of axis `axis` (1..) or of
@@ -9294,6 +11458,48 @@ short cnc_srvdelay(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_start(unsigned short FlibHndl);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_start_async_wrparam(unsigned short FlibHndl, struct IODBPRM *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_start_grppos(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_start_grppos3(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_start_hm_cmpl(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_startgetdgdat(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_startnccmd(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_startnccmd2(unsigned short FlibHndl, char *a);
+
+/*
  Starts recording the operator message history.
  */
 short cnc_startomhis(unsigned short FlibHndl);
@@ -9302,6 +11508,12 @@ short cnc_startomhis(unsigned short FlibHndl);
  Starts recording the operation history.
  */
 short cnc_startophis(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_startrmtdgn(unsigned short FlibHndl);
 
 /*
  Starts the library's log. `level` 0 = off, 1 = errors, 2 = every call,
@@ -9335,6 +11547,54 @@ short cnc_statinfo(unsigned short FlibHndl, struct ODBST *statinfo);
 short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_statinfo_bg(unsigned short FlibHndl, struct ODBST *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_statlrntrns(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stop_async_read_punch(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stop_grppos(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stop_grppos3(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stopgetdgdat(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stoplrntrns(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stopnccmd(unsigned short FlibHndl);
+
+/*
  Stops recording the operator message history.
  */
 short cnc_stopomhis(unsigned short FlibHndl);
@@ -9345,22 +11605,112 @@ short cnc_stopomhis(unsigned short FlibHndl);
 short cnc_stopophis(unsigned short FlibHndl);
 
 /*
- Ends reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stoprmtdgn(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stopsvgtung(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_stplutosmpl(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_svdtendrd(unsigned short FlibHndl);
 
 /*
- Reads servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtendrd2(unsigned short FlibHndl);
 
- # Safety
- Nothing is written through the pointers.
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtendwr(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtendwr2(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_svdtrddata(unsigned short FlibHndl, short *stat, long *length, void *data);
 
 /*
- Starts reading servo data: HSSB only; `EW_VERSION` (-7) on Ethernet.
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtrddata2(unsigned short FlibHndl,
+                      short *a,
+                      long *b,
+                      void *c,
+                      short *d,
+                      long *e,
+                      void *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_svdtstartrd(unsigned short FlibHndl, short axis);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtstartrd2(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtstartwr(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtstartwr2(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtstopexec(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtwrdata(unsigned short FlibHndl, short *a, long *b, void *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_svdtwrdata2(unsigned short FlibHndl,
+                      short *a,
+                      long *b,
+                      void *c,
+                      short *d,
+                      long *e,
+                      void *f);
 
 /*
  Reads the CNC's system information (series, version, axes) of the
@@ -9405,6 +11755,36 @@ short cnc_t1info(unsigned short FlibHndl, short grp_num, short tuse_num, struct 
 short cnc_t2info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tool_in(unsigned short FlibHndl, short *a, struct IODBTLMNG_F2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tool_in2(unsigned short FlibHndl, struct IODBTLMAG *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tool_out(unsigned short FlibHndl, char a, struct IODBTLMAG2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tool_temp_in(unsigned short FlibHndl, struct IODBTLMAG2 *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tool_temp_out(unsigned short FlibHndl, struct IODBTLMAG2 *a);
+
+/*
  Reads the tool number of the `tuse_num`-th tool of tool-life group
  `grp_num`.
 
@@ -9415,6 +11795,54 @@ short cnc_toolnum(unsigned short FlibHndl,
                   short grp_num,
                   short tuse_num,
                   struct ODBTLIFE4 *toolnum);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_convert_stat(unsigned short FlibHndl,
+                             long *a,
+                             long *b,
+                             long *c,
+                             short *d,
+                             short *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_rdline(unsigned short FlibHndl,
+                       char *a,
+                       long b,
+                       char *c,
+                       unsigned long *d,
+                       unsigned long *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_rdpos(unsigned short FlibHndl,
+                      char *a,
+                      unsigned short b,
+                      unsigned short *c,
+                      long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_st_convert(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_wrpos(unsigned short FlibHndl,
+                      char *a,
+                      unsigned short b,
+                      unsigned short *c,
+                      long *d);
 
 /*
  Ends the upload started by cnc_upstart (as cnc_upend3).
@@ -9486,6 +11914,149 @@ short cnc_upstart3(unsigned short FlibHndl, short type, long startno, long endno
 short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_usbmkdir(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_usbremove(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_usbrename(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_usbrmdir(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_validate_prm(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_verify_prog(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_verify_prog_bg(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr2length(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr2radius(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr_sfsg_extractslct(unsigned short FlibHndl, short no_sig, short select, short extract);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wractpt_w(unsigned short FlibHndl, short a, long b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrcncmem2(unsigned short FlibHndl,
+                    short a,
+                    unsigned long b,
+                    unsigned long c,
+                    void *d,
+                    short e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrcnttype(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrcommstatus(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrcount(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrdgdatptr(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrdncfname(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrdofs(unsigned short FlibHndl, short a, struct IODBZOR *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrdsdncfile2(unsigned short FlibHndl, char *a, char *b, unsigned short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrfromservoid(unsigned short FlibHndl, short a, struct ODBCSVID *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrfromservoid2(unsigned short FlibHndl, short a, struct ODBCSVID2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrfromspindleid(unsigned short FlibHndl, short a, struct ODBCSPID *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrfromspindleid2(unsigned short FlibHndl, short a, struct ODBCSPID2 *b);
+
+/*
  Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
  and counter type; `n_tool` is not sent). `e_grp` below `s_grp`:
  EW_NUMBER; `length` (bytes) below 8 + 16 per group: EW_LENGTH; both
@@ -9496,6 +12067,12 @@ short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
  groups.
  */
 short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpinfo);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrhipitchr(unsigned short FlibHndl, long a, long *b, long *c);
 
 /*
  Writes the signals the operation history records: `type` entries of
@@ -9510,6 +12087,54 @@ short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpin
 short cnc_wrhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrifsb_as_axis_num(unsigned short FlibHndl, short a, short b, short c, short *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrifsb_as_hrv(unsigned short FlibHndl, unsigned short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrifsb_as_spdl_num(unsigned short FlibHndl, short a, short b, short c, short *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrindexofs(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_writeusbfile(unsigned short FlibHndl, char *path, char *buf, long buf_size);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrlife(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrlrninfo(unsigned short FlibHndl, short a, short b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrlrnprf(unsigned short FlibHndl, short a, short b, char *c);
+
+/*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
  `length` must be at least 10 (checked first, as FANUC's library does,
  before the handle); `mcr_val` is taken as 32 bits (FANUC's x86-64
@@ -9520,6 +12145,18 @@ short cnc_wrhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
  No pointers.
  */
 short cnc_wrmacro(unsigned short FlibHndl, short number, short length, long mcr_val, short dec_val);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrmacro3(unsigned short FlibHndl, long a, short b, long c, short d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrmacro_bg(unsigned short FlibHndl, short a, short b, long c, short d);
 
 /*
  Writes the custom macro variables `buf->datano_s`..`buf->datano_e` from
@@ -9581,6 +12218,12 @@ short cnc_wrmdiprog(unsigned short FlibHndl, short length, char *data);
  bits, sign-extended).
  */
 short cnc_wrmenuswitch(unsigned short FlibHndl, short data, short mask);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrmofs(unsigned short FlibHndl, short a, short b, short c, long d);
 
 /*
  Writes the software operator panel's general purpose switches `type`
@@ -9651,6 +12294,23 @@ short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
  `param` must point to `length` readable bytes.
  */
 short cnc_wrparas(unsigned short FlibHndl, short length, void *param);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrparas3(unsigned short FlibHndl, short a, short b, void *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrpdf_char(unsigned short FlibHndl,
+                     char *a,
+                     unsigned long b,
+                     unsigned long c,
+                     char *d,
+                     unsigned long e);
 
 /*
  Sets the current directory of `type` (1 foreground, 2 background) to
@@ -9755,10 +12415,28 @@ short cnc_wrpmacror2(unsigned short FlibHndl,
                      double *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrpmacror_bg(unsigned short FlibHndl, unsigned long a, unsigned long *b, double *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrprogline(unsigned short FlibHndl, long a, unsigned long b, char *c, unsigned long d);
+
+/*
  Sets the operation levels data kind `kind` needs to be modified
  (`rd_lvl`) and output (`wt_lvl`), as cnc_rdprt_lvl reads them.
  */
 short cnc_wrprt_lvl(unsigned short FlibHndl, short kind, short rd_lvl, short wt_lvl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrrmtdgn(unsigned short FlibHndl, long *a, char *b);
 
 /*
  Writes one setting data item from IODBPSD, as cnc_wrparam writes a
@@ -9769,6 +12447,34 @@ short cnc_wrprt_lvl(unsigned short FlibHndl, short kind, short rd_lvl, short wt_
  `param` must be NULL or point to a readable IODBPSD.
  */
 short cnc_wrset(unsigned short FlibHndl, short length, struct IODBPSD *param);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrsignal_f(unsigned short FlibHndl, short a, unsigned long b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrt2info(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtdicolordata(unsigned short FlibHndl,
+                         short ob_type,
+                         unsigned short ob_s_no,
+                         unsigned short wrt_num,
+                         char *data);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtdicomment(unsigned short FlibHndl, short *length, char *comment);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as
@@ -9790,6 +12496,30 @@ short cnc_wrtofs(unsigned short FlibHndl, short number, short type, short length
 short cnc_wrtool(unsigned short FlibHndl, short tool_no, struct IODBTLMNG *tool);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtoolgrp(unsigned short FlibHndl, long a, struct IDBITD *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtoolnum(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrwkcdsfms2(unsigned short FlibHndl, unsigned short a, short b, struct IODBWCSF *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrwkcdsfms3(unsigned short FlibHndl, short a, short b, struct IODBWCSF *c);
+
+/*
  Writes the work coordinate shift of one axis (`type`) or of all axes
  (`type` -1: max_axes values from `data`); `length` as cnc_wrzofs's.
 
@@ -9799,6 +12529,18 @@ short cnc_wrtool(unsigned short FlibHndl, short tool_no, struct IODBTLMNG *tool)
  library reads them).
  */
 short cnc_wrwkcdshft(unsigned short FlibHndl, short length, struct IODBWCSF *shift);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrwkcdshft2(unsigned short FlibHndl, unsigned short a, short b, struct IODBWCSF *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrwkcdshft3(unsigned short FlibHndl, short a, short b, struct IODBWCSF *c);
 
 /*
  Writes a work zero offset for one axis (`type` = axis) or all axes
@@ -9995,6 +12737,17 @@ short pmc_wrcntl_exrelay_grp(unsigned short FlibHndl, short s_number);
  pmc_rdcntlgrp reads it.
  */
 short pmc_wrcntlgrp(unsigned short FlibHndl, short s_number);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short pmc_wriolinkdat(unsigned short FlibHndl,
+                      long a,
+                      long b,
+                      unsigned long c,
+                      void *d,
+                      unsigned long e);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

@@ -79,7 +79,8 @@ impl Bench {
 
     /// Calls `p` with `bad` in place of one argument: the result code and
     /// whether every buffer is intact.
-    fn call(&mut self, p: &Proto, bad: Bad) -> (i16, bool) {
+    /// The code, whether the buffers are intact, and the round trips sent.
+    fn call(&mut self, p: &Proto, bad: Bad) -> (i16, bool, u64) {
         let mut args = Vec::new();
         for (i, a) in p.params.iter().enumerate() {
             args.push(if a.ptr {
@@ -115,7 +116,7 @@ impl Bench {
             "{} {bad:?} took {took:?} over {frames} round trips",
             p.name
         );
-        (rc, intact)
+        (rc, intact, frames)
     }
 }
 
@@ -164,6 +165,7 @@ fn every_export_survives_bad_arguments() {
 
     let mut failures = Vec::new();
     let mut calls = 0;
+    let mut not_on_ethernet = 0;
     let mut codes: BTreeMap<&str, BTreeMap<i16, usize>> = BTreeMap::new();
     for p in all_prototypes() {
         let how = export(&p.name).map(|e| e.how);
@@ -186,10 +188,21 @@ fn every_export_survives_bad_arguments() {
             }
         }
         // The arguments as they are in every case but the bad one.
-        let (base, _) = bench.call(&p, Bad::Int(usize::MAX, 0));
+        let (base, _, sent) = bench.call(&p, Bad::Int(usize::MAX, 0));
+        // A function no Ethernet library of FANUC's has answers its code on
+        // a good handle, sending nothing.
+        if let Some(How::NotOnEthernet { code, .. }) = how {
+            if (base, sent) != (code, 0) {
+                failures.push(format!(
+                    "{}: {base} after {sent} round trips, not {code} and none",
+                    p.name
+                ));
+            }
+            not_on_ethernet += 1;
+        }
         bench.renew();
         for bad in cases {
-            let (rc, intact) = bench.call(&p, bad);
+            let (rc, intact, _) = bench.call(&p, bad);
             calls += 1;
             let kind = match bad {
                 Bad::Null(_) => "NULL",
@@ -205,13 +218,13 @@ fn every_export_survives_bad_arguments() {
                 failures.push(format!("{} {bad:?}: wrote past a buffer", p.name));
             }
             // A handle that does not exist is EW_HANDLE wherever the
-            // function checks handles (all but those FANUC's Ethernet
-            // library lacks, which answer their code at once).
-            // function checks handles (all but those FANUC's Ethernet
-            // library lacks, which answer their code at once), unless an
-            // argument check FANUC's library makes first fails (the code
-            // the same arguments get with a good handle).
-            if let (Bad::Handle(_, which), Some(How::Written { .. } | How::Described)) = (bad, how)
+            // function has one, unless an argument check FANUC's library
+            // makes first fails (the code the same arguments get with a
+            // good handle).
+            if let (
+                Bad::Handle(_, which),
+                Some(How::Written { .. } | How::Described | How::NotOnEthernet { .. }),
+            ) = (bad, how)
             {
                 if rc != EW_HANDLE && (rc == EW_OK || rc != base) {
                     failures.push(format!(
@@ -241,5 +254,13 @@ fn every_export_survives_bad_arguments() {
         println!("  {k:28} {c:?}");
     }
     assert!(calls > 1000, "only {calls} calls");
+    let absent = fwlib32::ffi::exports::EXPORTS
+        .iter()
+        .filter(|e| matches!(e.how, How::NotOnEthernet { .. }))
+        .count();
+    assert_eq!(
+        not_on_ethernet, absent,
+        "every function not on Ethernet called"
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

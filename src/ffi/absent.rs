@@ -1,12 +1,57 @@
-//! cnc_allclibhndl, declared by FANUC's header for its HSSB driver, which
-//! none of its Ethernet libraries has: exported so that programs calling
-//! it link and load, answering as FANUC's library does without the driver.
-//! The functions that answer a code on a handle (`EW_VERSION`) are table
-//! entries (src/spec/table/absent.rs).
+//! The functions FANUC's header declares but none of its Ethernet
+//! libraries implements, exported so that programs calling them link and
+//! load. Each answers as FANUC's library does on an Ethernet handle:
+//! `EW_VERSION` for the rows of src/spec/table/absent/ (build.rs writes
+//! their exports into `$OUT_DIR/absent.rs`, included here), `EW_MMCSYS`
+//! for cnc_allclibhndl (no HSSB driver).
 
 use super::ffi_boundary;
+use crate::client::handles;
 use crate::error::Error;
-use std::os::raw::{c_short, c_ushort};
+use crate::ew::EW_VERSION;
+#[allow(unused_imports)]
+use crate::types::*;
+#[allow(unused_imports)]
+use std::os::raw::{c_char, c_int, c_long, c_short, c_uchar, c_uint, c_ulong, c_ushort, c_void};
+
+/// The body of every export of src/spec/table/absent/, with its row's
+/// index: `EW_VERSION` once the handle is checked, without traffic,
+/// writing nothing.
+extern "C" fn not_on_ethernet(h: c_ushort, row: u32) -> c_short {
+    let row = row as usize;
+    let name = rows::NAMES
+        .get(usize::from(rows::STARTS[row])..usize::from(rows::STARTS[row + 1]))
+        .unwrap_or("a function not on Ethernet");
+    super::boundary(name, &mut || {
+        handles::get(h)?;
+        Err(Error::local(
+            EW_VERSION,
+            "not in FANUC's Ethernet libraries",
+        ))
+    })
+}
+
+/// An export's body on x86-64 and aarch64: row `k`'s index as the second
+/// argument, then a jump to [`not_on_ethernet`] (the handle stays the first).
+#[cfg(target_arch = "x86_64")]
+macro_rules! jump {
+    ($k:literal) => {
+        core::arch::naked_asm!("mov esi, {k}", "jmp {f}", k = const $k, f = sym super::not_on_ethernet)
+    };
+}
+#[cfg(target_arch = "aarch64")]
+macro_rules! jump {
+    ($k:literal) => {
+        core::arch::naked_asm!("mov w1, #{k}", "b {f}", k = const $k, f = sym super::not_on_ethernet)
+    };
+}
+
+#[allow(unused_variables, clippy::too_many_arguments)]
+mod rows {
+    use super::*;
+    include!(concat!(env!("OUT_DIR"), "/absent.rs"));
+}
+pub use rows::*;
 
 /// Allocates a handle on FANUC's HSSB (optical fibre) driver, which an
 /// Ethernet machine does not have: `EW_MMCSYS` (-3), as FANUC's library

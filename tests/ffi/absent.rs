@@ -48,27 +48,35 @@ fn declared_but_not_on_ethernet() {
     let calls: [(&str, Call<'_>); 7] = [
         (
             "cnc_rdexecpt",
-            Box::new(|h| unsafe { cnc_rdexecpt(h, b.cast(), b.add(8).cast()) }),
+            Box::new(|h| cnc_rdexecpt(h, b.cast(), b.wrapping_add(8).cast())),
         ),
         (
             "cnc_rdprogline",
-            Box::new(|h| unsafe {
-                cnc_rdprogline(h, 1, 1, b.cast(), b.add(300).cast(), b.add(308).cast())
+            Box::new(|h| {
+                let at = |n| b.wrapping_add(n).cast();
+                cnc_rdprogline(h, 1, 1, b.cast(), at(300), at(308))
             }),
         ),
         ("cnc_svdtstartrd", Box::new(|h| cnc_svdtstartrd(h, 1))),
         (
             "cnc_svdtrddata",
-            Box::new(|h| unsafe { cnc_svdtrddata(h, b.cast(), b.add(4).cast(), b.add(8).cast()) }),
+            Box::new(|h| {
+                cnc_svdtrddata(
+                    h,
+                    b.cast(),
+                    b.wrapping_add(4).cast(),
+                    b.wrapping_add(8).cast(),
+                )
+            }),
         ),
         ("cnc_svdtendrd", Box::new(|h| cnc_svdtendrd(h))),
         (
             "cnc_rdspdlnamem",
-            Box::new(|h| unsafe { cnc_rdspdlnamem(h, np, b.cast()) }),
+            Box::new(|h| cnc_rdspdlnamem(h, np, b.cast())),
         ),
         (
             "cnc_rdalmmsg3",
-            Box::new(|h| unsafe { cnc_rdalmmsg3(h, -1, np, b.cast()) }),
+            Box::new(|h| cnc_rdalmmsg3(h, -1, np, b.cast())),
         ),
     ];
     for (name, f) in &calls {

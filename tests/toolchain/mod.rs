@@ -266,8 +266,11 @@ pub fn ffi_functions() -> BTreeSet<String> {
             }
         }
     }
-    // The functions described as data: build.rs writes their exports.
+    // The functions described as data, and those not on Ethernet: build.rs
+    // writes their exports.
     names.extend(fwlib32::spec::FUNCS.iter().map(|f| f.name.to_string()));
+    let absent = fwlib32::spec::table::absent::ROWS.iter().copied().flatten();
+    names.extend(absent.map(|(name, _)| name.to_string()));
     names
 }
 

@@ -167,6 +167,26 @@ pub fn generated_words() -> String {
         };
         s.push_str(&format!(" \\\n    WORD({}, {body})", f.word()));
     }
+    // The functions no Ethernet library of FANUC's has
+    // (src/spec/table/absent/): pointers into the buffers, numbers 0.
+    for &(name, params) in fwlib32::spec::table::absent::ROWS.iter().copied().flatten() {
+        let mut b = 0;
+        let args: String = params
+            .split(',')
+            .filter(|p| !p.trim().is_empty())
+            .map(|p| match p.contains('*') || p.contains('[') {
+                true => {
+                    b += 1;
+                    format!(", B{}", (b - 1) % 3)
+                }
+                false => ", 0".to_string(),
+            })
+            .collect();
+        let word = name.strip_prefix("cnc_").unwrap_or(name);
+        s.push_str(&format!(
+            " \\\n    WORD({word}, {{ return F({name})(H{args}); }})"
+        ));
+    }
     s.push('\n');
     s
 }

@@ -8,7 +8,8 @@
 
 use super::types::*;
 
-mod absent;
+/// The functions no Ethernet library of FANUC's has (not [`FUNCS`]).
+pub mod absent;
 mod alarm;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
@@ -62,7 +63,6 @@ const AREAS: &[&[Func]] = &[
     screen::FUNCS,
     signals::FUNCS,
     alarm::FUNCS,
-    absent::FUNCS,
 ];
 
 const LEN: usize = {
