@@ -307,7 +307,7 @@ fn alternate(
         barrier.wait();
         let t = Instant::now();
         let mut k = 0u64;
-        while k % 4 != 0 || t.elapsed() < dur {
+        while !k.is_multiple_of(4) || t.elapsed() < dur {
             f(i);
             k += 1;
         }

@@ -225,13 +225,13 @@ fn every_export_survives_bad_arguments() {
                 Bad::Handle(_, which),
                 Some(How::Written { .. } | How::Described | How::NotOnEthernet { .. }),
             ) = (bad, how)
+                && rc != EW_HANDLE
+                && (rc == EW_OK || rc != base)
             {
-                if rc != EW_HANDLE && (rc == EW_OK || rc != base) {
-                    failures.push(format!(
-                        "{} with a {which} handle: {rc} (a good one: {base})",
-                        p.name
-                    ));
-                }
+                failures.push(format!(
+                    "{} with a {which} handle: {rc} (a good one: {base})",
+                    p.name
+                ));
             }
             // A NULL the header does not allow is refused.
             if let (Bad::Null(i), EW_OK, true) = (bad, rc, has_handle)

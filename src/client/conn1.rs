@@ -139,15 +139,15 @@ impl Conn1 {
     /// 0x1804, a download or DNC operation with its error frame (8 zero
     /// bytes); no answer is awaited.
     pub(super) fn abort(&mut self, deadline: Deadline) -> Result<()> {
-        if let Some(u) = self.upload.take() {
-            if u.ended.is_none() {
-                return self.send(ftype::UPLOAD_ABORT, ABORT_BODY.to_vec(), deadline);
-            }
+        if let Some(u) = self.upload.take()
+            && u.ended.is_none()
+        {
+            return self.send(ftype::UPLOAD_ABORT, ABORT_BODY.to_vec(), deadline);
         }
-        if let Some(s) = self.outgoing.take() {
-            if s.ended.is_none() {
-                return self.send(s.how.error_frame(), ABORT_BODY.to_vec(), deadline);
-            }
+        if let Some(s) = self.outgoing.take()
+            && s.ended.is_none()
+        {
+            return self.send(s.how.error_frame(), ABORT_BODY.to_vec(), deadline);
         }
         Ok(())
     }

@@ -46,11 +46,11 @@ impl Pair {
         };
         let c1 = g.as_mut().ok_or_else(dead)?;
         let r = f(c1);
-        if let Err(e) = &r {
-            if stream_broken(e) {
-                drop(g);
-                self.kill();
-            }
+        if let Err(e) = &r
+            && stream_broken(e)
+        {
+            drop(g);
+            self.kill();
         }
         r
     }

@@ -52,11 +52,11 @@ pub const DEFAULT_PORT: u16 = 8193;
 /// Host and port of `"host:port"`, `"[v6]:port"`, `"host"` or `"v6"`.
 fn split_addr(addr: &str) -> (String, u16) {
     let addr = addr.trim();
-    if let Some(rest) = addr.strip_prefix('[') {
-        if let Some((host, tail)) = rest.split_once(']') {
-            let port = tail.strip_prefix(':').and_then(|p| p.parse().ok());
-            return (host.to_string(), port.unwrap_or(DEFAULT_PORT));
-        }
+    if let Some(rest) = addr.strip_prefix('[')
+        && let Some((host, tail)) = rest.split_once(']')
+    {
+        let port = tail.strip_prefix(':').and_then(|p| p.parse().ok());
+        return (host.to_string(), port.unwrap_or(DEFAULT_PORT));
     }
     match addr.rsplit_once(':') {
         Some((host, port)) if !host.contains(':') => match port.parse() {

@@ -81,10 +81,9 @@ pub fn vary(base: &Profile, n: usize) -> (Profile, Duration) {
         .parameters
         .iter_mut()
         .find(|e| e.number == PART_COUNT)
+        && let Some(v) = e.values.first_mut()
     {
-        if let Some(v) = e.values.first_mut() {
-            *v = v.saturating_add(13 * k as i32);
-        }
+        *v = v.saturating_add(13 * k as i32);
     }
     p.timers.power_on = p.timers.power_on.saturating_add(60 * k as i32);
     let tenths = (k as u64 * 37) % 600;

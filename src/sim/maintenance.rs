@@ -106,7 +106,7 @@ impl Machine {
     /// a negative total or a remain outside 0..=total is EW_DATA. `reset`
     /// 1 starts each item's life anew (remain = total).
     fn pm_write_items(&mut self, reset: i32, start: i32, data: &[u8]) -> Reply<()> {
-        if data.is_empty() || data.len() % ITEM_LEN != 0 {
+        if data.is_empty() || !data.len().is_multiple_of(ITEM_LEN) {
             return Err(CncError::new(ew::EW_LENGTH));
         }
         let r = slots(start, (data.len() / ITEM_LEN) as i32, ITEMS)?;
@@ -154,7 +154,7 @@ impl Machine {
 
     /// [s] + names: the machine-specific item names from slot `s`.
     fn pm_write_names(&mut self, s: i32, p: &[u8]) -> Reply<Vec<u8>> {
-        if p.is_empty() || p.len() % NAME_LEN != 0 {
+        if p.is_empty() || !p.len().is_multiple_of(NAME_LEN) {
             return Err(CncError::new(ew::EW_LENGTH));
         }
         let n = p.len() / NAME_LEN;

@@ -46,10 +46,10 @@ pub struct ProgramModal {
 impl ProgramModal {
     /// After a block's G code `g`.
     pub(crate) fn set_g(&mut self, g: i32) {
-        if let Some(&(_, group, code)) = G_CODES.iter().find(|x| x.0 == g) {
-            if let Some(slot) = self.g.get_mut(group) {
-                *slot = Some(code);
-            }
+        if let Some(&(_, group, code)) = G_CODES.iter().find(|x| x.0 == g)
+            && let Some(slot) = self.g.get_mut(group)
+        {
+            *slot = Some(code);
         }
     }
 

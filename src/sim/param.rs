@@ -440,7 +440,7 @@ impl Machine {
         let blocks: Vec<&[u8]> = if !class16 && payload.len() == 8 + 8 * WRITE_RECORDS_30 {
             vec![payload]
         } else {
-            if payload.is_empty() || payload.len() % size != 0 {
+            if payload.is_empty() || !payload.len().is_multiple_of(size) {
                 return Err(err(ew::EW_LENGTH));
             }
             payload.chunks_exact(size).collect()

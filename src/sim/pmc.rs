@@ -374,7 +374,7 @@ impl Pmc {
             .ok_or(CncError::new(ew::EW_TYPE))?;
         let size = elem_size(r.data_type).ok_or(CncError::new(ew::EW_TYPE))?;
         let n = r.span();
-        if n == 0 || n % size != 0 || !area.covers(r.s, r.e) {
+        if n == 0 || !n.is_multiple_of(size) || !area.covers(r.s, r.e) {
             return Err(CncError::new(ew::EW_RANGE));
         }
         if n > MAX_BYTES {

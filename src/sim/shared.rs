@@ -87,23 +87,23 @@ impl Shared {
     pub(crate) fn apply_listening(&self) -> bool {
         let mut l = self.listener.lock();
         let refusing = self.net.faults.refusing(self.fault_time(self.now()));
-        if let Some((fd, listening)) = l.as_mut() {
-            if *listening == refusing {
-                // SAFETY: the listener's own socket, open while it is set here.
-                unsafe {
-                    if refusing {
-                        // Linux: a listening socket shut down for reading
-                        // is closed but keeps its port; `listen` reopens it.
-                        libc::shutdown(*fd, libc::SHUT_RD);
-                    } else {
-                        libc::listen(*fd, 1024);
-                        self.relistens.fetch_add(1, Ordering::AcqRel);
-                    }
+        if let Some((fd, listening)) = l.as_mut()
+            && *listening == refusing
+        {
+            // SAFETY: the listener's own socket, open while it is set here.
+            unsafe {
+                if refusing {
+                    // Linux: a listening socket shut down for reading
+                    // is closed but keeps its port; `listen` reopens it.
+                    libc::shutdown(*fd, libc::SHUT_RD);
+                } else {
+                    libc::listen(*fd, 1024);
+                    self.relistens.fetch_add(1, Ordering::AcqRel);
                 }
-                *listening = !refusing;
-                let what = if refusing { "refusing" } else { "accepting" };
-                self.trace(0, || format!("!! {what} connections"));
             }
+            *listening = !refusing;
+            let what = if refusing { "refusing" } else { "accepting" };
+            self.trace(0, || format!("!! {what} connections"));
         }
         refusing
     }

@@ -499,10 +499,10 @@ impl Crate {
                 (path, cur, k) = (p, String::new(), 0);
                 continue;
             }
-            if cur.is_empty() {
-                if let Some(m) = self.macros.get(seg) {
-                    return m.clone();
-                }
+            if cur.is_empty()
+                && let Some(m) = self.macros.get(seg)
+            {
+                return m.clone();
             }
             if !self.defines(&cur, seg) {
                 // A glob re-export (`pub use a::*`) that brings `seg` in.

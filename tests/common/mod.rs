@@ -47,7 +47,7 @@ pub fn hex(b: &[u8]) -> String {
 }
 
 pub fn unhex(s: &str) -> Vec<u8> {
-    assert!(s.len() % 2 == 0, "odd-length hex string {s:?}");
+    assert!(s.len().is_multiple_of(2), "odd-length hex string {s:?}");
     (0..s.len())
         .step_by(2)
         .map(|i| u8::from_str_radix(&s[i..i + 2], 16).unwrap_or_else(|_| panic!("bad hex {s:?}")))
@@ -780,11 +780,11 @@ impl Server {
         use std::os::fd::AsRawFd;
         let mut out = Vec::new();
         let label = self.last_label.clone();
-        if readable(self.listener.as_raw_fd(), Duration::ZERO) {
-            if let Ok((s, _)) = self.listener.accept() {
-                out.push(format!("{label}: unexpected extra connection"));
-                drop(s);
-            }
+        if readable(self.listener.as_raw_fd(), Duration::ZERO)
+            && let Ok((s, _)) = self.listener.accept()
+        {
+            out.push(format!("{label}: unexpected extra connection"));
+            drop(s);
         }
         for (c, s) in self.conns.iter_mut() {
             if !readable(s.as_raw_fd(), Duration::ZERO) {

@@ -460,7 +460,7 @@ fn rec(number: i16, ptype: u8, axis: i8, data: &[u8]) -> Vec<u8> {
     b.push(axis as u8);
     b.push(ptype);
     b.extend_from_slice(data);
-    while b.len() % 4 != 0 {
+    while !b.len().is_multiple_of(4) {
         b.push(0);
     }
     b

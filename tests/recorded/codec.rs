@@ -935,11 +935,10 @@ proptest! {
 
     #[test]
     fn list_decoders_never_panic(body in list_body(), version in 0u16..=6) {
-        if let Ok(subs) = decode_response(&body) {
-            if canonical_response(&body) {
+        if let Ok(subs) = decode_response(&body)
+            && canonical_response(&body) {
                 prop_assert_eq!(encode_response(&subs), body.clone());
             }
-        }
         if let Ok(subs) = decode_request(&body) {
             prop_assert_eq!(encode_request(&subs), body.clone());
         }
@@ -1628,11 +1627,10 @@ proptest! {
             let mut at = 0;
             for x in layout {
                 let run = &mut expect[at..at + x.n as usize];
-                if x.wire == Int::Char && x.arg.is_none() {
-                    if let Some(nul) = run.iter().position(|v| *v == 0) {
+                if x.wire == Int::Char && x.arg.is_none()
+                    && let Some(nul) = run.iter().position(|v| *v == 0) {
                         run[nul..].iter_mut().for_each(|v| *v = 0);
                     }
-                }
                 at += x.n as usize;
             }
             // The last number answered (Field::arg LAST): argument 0 (none:

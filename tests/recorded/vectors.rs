@@ -463,13 +463,13 @@ impl HandleMap {
                 ))
             };
         }
-        if let Some(&(f0, o0)) = self.pairs.first() {
-            if ours.wrapping_sub(o0) != fanuc.wrapping_sub(f0) {
-                return Err(format!(
-                    "handle {ours:#06x}: FANUC's numbering ({fanuc:#06x} after {f0:#06x}) gives {:#06x}",
-                    o0.wrapping_add(fanuc.wrapping_sub(f0))
-                ));
-            }
+        if let Some(&(f0, o0)) = self.pairs.first()
+            && ours.wrapping_sub(o0) != fanuc.wrapping_sub(f0)
+        {
+            return Err(format!(
+                "handle {ours:#06x}: FANUC's numbering ({fanuc:#06x} after {f0:#06x}) gives {:#06x}",
+                o0.wrapping_add(fanuc.wrapping_sub(f0))
+            ));
         }
         self.pairs.push((fanuc, ours));
         Ok(())
@@ -1502,11 +1502,11 @@ fn needs_spindle_word(case: &Case) -> bool {
 
 fn set_spindle_word(ev: &mut [Event]) {
     for e in ev.iter_mut() {
-        if e.ftype() == Some(fwlib32::proto::frame::ftype::OPEN_RESP) {
-            if let Ev::Resp(b) = &mut e.ev {
-                // 10-byte frame header, then the body.
-                b[10 + 20..10 + 22].copy_from_slice(&1u16.to_be_bytes());
-            }
+        if e.ftype() == Some(fwlib32::proto::frame::ftype::OPEN_RESP)
+            && let Ev::Resp(b) = &mut e.ev
+        {
+            // 10-byte frame header, then the body.
+            b[10 + 20..10 + 22].copy_from_slice(&1u16.to_be_bytes());
         }
     }
 }

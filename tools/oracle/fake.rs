@@ -313,24 +313,25 @@ fn downward(
         closed = ftype(&f) == 0x0202;
         match ftype(&f) {
             0x0102 => {
-                if let Some(Fault::ShortOpen(k)) = st.fault {
-                    if conn == k {
-                        f.truncate(f.len() - 2);
-                        let n = (f.len() - 10) as u16;
-                        f[8..10].copy_from_slice(&n.to_be_bytes());
-                    }
+                if let Some(Fault::ShortOpen(k)) = st.fault
+                    && conn == k
+                {
+                    f.truncate(f.len() - 2);
+                    let n = (f.len() - 10) as u16;
+                    f[8..10].copy_from_slice(&n.to_be_bytes());
                 }
             }
             0x2102 => {
                 data_resps += 1;
-                if let Some(Fault::SysinfoError(code)) = st.fault {
-                    if data_resps == 1 && conn == 2 {
-                        f = reshape(&f, |subs| {
-                            for s in subs.iter_mut() {
-                                set_error(s, code);
-                            }
-                        });
-                    }
+                if let Some(Fault::SysinfoError(code)) = st.fault
+                    && data_resps == 1
+                    && conn == 2
+                {
+                    f = reshape(&f, |subs| {
+                        for s in subs.iter_mut() {
+                            set_error(s, code);
+                        }
+                    });
                 }
                 if conn == 2 && data_resps == 2 {
                     match st.fault {

@@ -197,10 +197,10 @@ mod fake_reply {
                 let mut p: Vec<u8> = (0..len)
                     .map(|i| super::pure::code(k * len + i, pass))
                     .collect();
-                if let Some((at, v)) = pin {
-                    if at + 2 <= p.len() {
-                        p[at..at + 2].copy_from_slice(&v.to_be_bytes());
-                    }
+                if let Some((at, v)) = pin
+                    && at + 2 <= p.len()
+                {
+                    p[at..at + 2].copy_from_slice(&v.to_be_bytes());
                 }
                 s.1 = p;
             }
@@ -260,10 +260,10 @@ fn shape(p: &Proto) -> Result<Shape, String> {
         }
     }
     for (a, r) in args.iter().zip(&regions) {
-        if let (Arg::Ptr(t), Some((_, span))) = (a, r) {
-            if t.size() > *span {
-                return Err(format!("a {}-byte output over its room", t.size()));
-            }
+        if let (Arg::Ptr(t), Some((_, span))) = (a, r)
+            && t.size() > *span
+        {
+            return Err(format!("a {}-byte output over its room", t.size()));
         }
     }
     Ok(Shape { args, regions })
@@ -530,12 +530,13 @@ fn learn_class(
             let mut plain_in = base.clone();
             for (i, a) in sh.args.iter().enumerate() {
                 // the caller's array: 16 such elements
-                if let (Arg::Ptr(t), Some((_, span))) = (a, sh.regions[i]) {
-                    if !is_bytes(a) && t.size() <= span.min(4096) {
-                        let one = plain_fill(t, w);
-                        let k = (span.min(4096) / one.len().max(1)).clamp(1, 16);
-                        plain_in.fill_ptr[i] = Some(one.repeat(k));
-                    }
+                if let (Arg::Ptr(t), Some((_, span))) = (a, sh.regions[i])
+                    && !is_bytes(a)
+                    && t.size() <= span.min(4096)
+                {
+                    let one = plain_fill(t, w);
+                    let k = (span.min(4096) / one.len().max(1)).clamp(1, 16);
+                    plain_in.fill_ptr[i] = Some(one.repeat(k));
                 }
             }
             if plain_in.fill_ptr.iter().any(Option::is_some) {
@@ -639,24 +640,25 @@ fn learn_class(
                 }
                 s.vals[i] = v;
                 let c = run(sess, &s);
-                if let (Some(o), Some(l)) = (&own, data_subs(&c).iter().flatten().last()) {
-                    if l.cmd == o.cmd && l.class == o.class {
-                        own_runs.push(WordRun {
-                            args: s.vals.clone(),
-                            words: l.words,
-                            payload_len: l.payload.len(),
-                        });
-                    }
+                if let (Some(o), Some(l)) = (&own, data_subs(&c).iter().flatten().last())
+                    && l.cmd == o.cmd
+                    && l.class == o.class
+                {
+                    own_runs.push(WordRun {
+                        args: s.vals.clone(),
+                        words: l.words,
+                        payload_len: l.payload.len(),
+                    });
                 }
-                if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
-                    if sub.cmd == first.cmd {
-                        sent += 1;
-                        runs.push(WordRun {
-                            args: s.vals.clone(),
-                            words: sub.words,
-                            payload_len: sub.payload.len(),
-                        });
-                    }
+                if let Some(sub) = data_subs(&c).first().and_then(|f| f.first())
+                    && sub.cmd == first.cmd
+                {
+                    sent += 1;
+                    runs.push(WordRun {
+                        args: s.vals.clone(),
+                        words: sub.words,
+                        payload_len: sub.payload.len(),
+                    });
                 }
             }
         }
@@ -795,11 +797,11 @@ fn learn_class(
                     b[l.off..l.off + size].copy_from_slice(&v.to_le_bytes()[..size]);
                     s.fill_ptr[i] = Some(b);
                     let c = run(sess, &s);
-                    if let Some(sub) = data_subs(&c).first().and_then(|f| f.first()) {
-                        if sub.cmd == first.cmd {
-                            seen.push((ci.cut(v), sub.words, raise));
-                            break;
-                        }
+                    if let Some(sub) = data_subs(&c).first().and_then(|f| f.first())
+                        && sub.cmd == first.cmd
+                    {
+                        seen.push((ci.cut(v), sub.words, raise));
+                        break;
                     }
                 }
             }
@@ -872,30 +874,31 @@ fn learn_class(
             if v.iter().all(|x| base_req.get(r) == Some(x)) {
                 continue;
             }
-            if let Some(q) = decode(v) {
-                if q < len && map[q] == Src::Kept {
-                    map[q] = Src::At(r);
-                    from_it = true;
-                }
+            if let Some(q) = decode(v)
+                && q < len
+                && map[q] == Src::Kept
+            {
+                map[q] = Src::At(r);
+                from_it = true;
             }
         }
         // A C string sent in a fixed field: its bytes in order from a
         // payload offset (as many as the field holds, up to the string's).
-        if from_it && is_bytes(&sh.args[i]) {
-            if let Some(Src::At(r0)) = map
+        if from_it
+            && is_bytes(&sh.args[i])
+            && let Some(Src::At(r0)) = map
                 .first()
                 .copied()
                 .filter(|s| matches!(s, Src::At(r) if *r >= 20))
-            {
-                let n = map
-                    .iter()
-                    .enumerate()
-                    .take_while(|(q, s)| **s == Src::At(r0 + q))
-                    .count();
-                inputs.push(i);
-                texts.push((i, r0 - 20, n));
-                continue;
-            }
+        {
+            let n = map
+                .iter()
+                .enumerate()
+                .take_while(|(q, s)| **s == Src::At(r0 + q))
+                .count();
+            inputs.push(i);
+            texts.push((i, r0 - 20, n));
+            continue;
         }
         if from_it {
             inputs.push(i);
@@ -915,12 +918,15 @@ fn learn_class(
                     .count()
                     + 1;
                 let whole = (sent..size).all(|b| map[l.off + b] == Src::Kept);
-                if r < 20 && r % 4 == 3 && sent <= 4 && whole {
-                    if let Some(w @ WordSrc::Const(_)) = form.words.get_mut(r / 4) {
-                        *w = WordSrc::Input(l.path.clone());
-                        for b in 0..size {
-                            map[l.off + b] = Src::Kept;
-                        }
+                if r < 20
+                    && r % 4 == 3
+                    && sent <= 4
+                    && whole
+                    && let Some(w @ WordSrc::Const(_)) = form.words.get_mut(r / 4)
+                {
+                    *w = WordSrc::Input(l.path.clone());
+                    for b in 0..size {
+                        map[l.off + b] = Src::Kept;
                     }
                 }
             }
@@ -1277,12 +1283,12 @@ fn learn_local(sess: &mut Session, name: &str, sh: &Shape) -> Result<ClassLearnt
                     _ => None,
                 })
                 .collect();
-            if let (Some(b), Some(_)) = (bytes, l.ty.int()) {
-                if b.len() == l.ty.size() {
-                    values.push((i, l.path.clone(), le_value(&b, true)));
-                    if !outputs.contains(&i) {
-                        outputs.push(i);
-                    }
+            if let (Some(b), Some(_)) = (bytes, l.ty.int())
+                && b.len() == l.ty.size()
+            {
+                values.push((i, l.path.clone(), le_value(&b, true)));
+                if !outputs.contains(&i) {
+                    outputs.push(i);
                 }
             }
         }
@@ -1730,10 +1736,10 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
                 // every value tried is constant, not the argument
                 let mut learnt = learnt.clone();
                 for (k, w) in learnt.words.iter_mut().enumerate() {
-                    if let (WordSrc::Const(_), WordSrc::Arg(i)) = (&*w, &c.2[k]) {
-                        if f.count().and_then(|n| positions.get(n)) == Some(i) {
-                            *w = WordSrc::Arg(*i);
-                        }
+                    if let (WordSrc::Const(_), WordSrc::Arg(i)) = (&*w, &c.2[k])
+                        && f.count().and_then(|n| positions.get(n)) == Some(i)
+                    {
+                        *w = WordSrc::Arg(*i);
                     }
                 }
                 if let Err(e) = same_form(&learnt, &c) {
@@ -2147,12 +2153,12 @@ fn compare(f: &fwlib32::spec::Func, l: &Learnt, hdr: &Header) -> (Vec<String>, V
             at += size;
         }
         // an input whose payload is one C string (`count: TEXT`)
-        if let (Some(pl), Some((n, _))) = (&f.payload, f.input()) {
-            if pl.count == fwlib32::spec::TEXT {
-                let pos = f.params.iter().position(|p| p.name() == n);
-                let size: usize = pl.fields.iter().map(|x| x.wire_len()).sum();
-                want_texts.push((pos.unwrap_or(usize::MAX), at, size.min(STRING)));
-            }
+        if let (Some(pl), Some((n, _))) = (&f.payload, f.input())
+            && pl.count == fwlib32::spec::TEXT
+        {
+            let pos = f.params.iter().position(|p| p.name() == n);
+            let size: usize = pl.fields.iter().map(|x| x.wire_len()).sum();
+            want_texts.push((pos.unwrap_or(usize::MAX), at, size.min(STRING)));
         }
         if want_texts != cl.texts {
             bad.push(format!(

@@ -1113,9 +1113,9 @@ pub fn fields_text(p: &[Placed], from: usize, indent: &str) -> String {
         let x = &p[i];
         while at < x.at {
             let gap = x.at - at;
-            let w = if gap >= 4 && at % 4 == 0 {
+            let w = if gap >= 4 && at.is_multiple_of(4) {
                 "I32"
-            } else if gap >= 2 && at % 2 == 0 {
+            } else if gap >= 2 && at.is_multiple_of(2) {
                 "I16"
             } else {
                 "U8"
@@ -1548,23 +1548,23 @@ pub fn committed_zeros(
         }
     }
     // each record's zero fields, for the records the reply holds
-    if let Some(r) = &f.records {
-        if r.fields.iter().any(|x| x.arg == Some(spec::ZERO)) {
-            let ty = outs.get(r.out as usize).ok_or("no output")?;
-            let (base, stride, elem_ty) = records_at(r, ty)?;
-            let at: usize = f.reply.iter().map(|x| x.wire_len()).sum();
-            let n = ((len - at.min(len)) / r.wire_len().max(1))
-                .min(r.max as usize)
-                .min(asked);
-            for k in 0..n {
-                for fld in r.fields {
-                    let mut one = Vec::new();
-                    zero(fld, &elem_ty, 0, &mut one)?;
-                    v.extend(
-                        one.into_iter()
-                            .map(|(_, b)| (r.out as usize, base + k * stride + b)),
-                    );
-                }
+    if let Some(r) = &f.records
+        && r.fields.iter().any(|x| x.arg == Some(spec::ZERO))
+    {
+        let ty = outs.get(r.out as usize).ok_or("no output")?;
+        let (base, stride, elem_ty) = records_at(r, ty)?;
+        let at: usize = f.reply.iter().map(|x| x.wire_len()).sum();
+        let n = ((len - at.min(len)) / r.wire_len().max(1))
+            .min(r.max as usize)
+            .min(asked);
+        for k in 0..n {
+            for fld in r.fields {
+                let mut one = Vec::new();
+                zero(fld, &elem_ty, 0, &mut one)?;
+                v.extend(
+                    one.into_iter()
+                        .map(|(_, b)| (r.out as usize, base + k * stride + b)),
+                );
             }
         }
     }

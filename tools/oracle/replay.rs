@@ -56,10 +56,10 @@ pub fn compare(label: &str, call: &super::common::Call, answer: &Answer) -> Vec<
         out.push(format!("{label}: returned {ret}, recorded {:?}", call.ret));
     }
     for (name, v) in fields {
-        if let Some(want) = call.fields.get(name) {
-            if want != v {
-                out.push(format!("{label}: {name} = {v}, recorded {want}"));
-            }
+        if let Some(want) = call.fields.get(name)
+            && want != v
+        {
+            out.push(format!("{label}: {name} = {v}, recorded {want}"));
         }
     }
     let (n0, n1) = buffer_names(call.word());

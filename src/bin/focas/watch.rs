@@ -70,10 +70,10 @@ pub fn run(t: &Target, interval: f64, count: Option<u64>, json: bool) -> Result<
         match got {
             Ok(s) => show(s, json, in_place)?,
             Err(f) => {
-                if let Fail::Api(e) = &f {
-                    if broken(e) {
-                        cnc = None;
-                    }
+                if let Fail::Api(e) = &f
+                    && broken(e)
+                {
+                    cnc = None;
                 }
                 let f = f.at(t.addr);
                 if json {

@@ -210,10 +210,10 @@ impl Call for Described<'_> {
         }
         if self.f.more.is_empty() {
             let payload = &sub(resp, 0)?.payload;
-            if let Short::PerSpindle(unit) = self.f.short {
-                if payload.len() < usize::from(unit) || cx.max_spindles == 0 {
-                    return Ok(Vec::new());
-                }
+            if let Short::PerSpindle(unit) = self.f.short
+                && (payload.len() < usize::from(unit) || cx.max_spindles == 0)
+            {
+                return Ok(Vec::new());
             }
             if self.f.short == Short::Request {
                 // The response body's payload starts at byte 18, where

@@ -198,10 +198,10 @@ impl Call for AxisDataCall {
     }
 
     fn decode(&self, cx: &Ctx, resp: &[RespSub]) -> Result<AxisDataReply> {
-        if cx.class.is_16i() {
-            if let AxisData::Servo(codes) | AxisData::Spindle(codes) = &self.what {
-                return self.decode16(cx, codes, resp);
-            }
+        if cx.class.is_16i()
+            && let AxisData::Servo(codes) | AxisData::Spindle(codes) = &self.what
+        {
+            return self.decode16(cx, codes, resp);
         }
         if let AxisData::Speed(cmds) = &self.what {
             return decode_speed(cmds, self.limit, resp);
@@ -223,14 +223,14 @@ impl Call for AxisDataCall {
         // EW_OK, whatever error an earlier subpacket holds [fuzz, seed
         // 0x20271128, rdsvmeter path 2 `e4s2`: error 4 in the data
         // subpacket, closing count 0: num 0, EW_OK].
-        if let Ok(s) = sub(resp, last_at) {
-            if u16::from_be_bytes(zext(&s.payload)) == 0 {
-                return Ok(AxisDataReply {
-                    count: 0,
-                    values: vec![vec![]; codes.len()],
-                    error: None,
-                });
-            }
+        if let Ok(s) = sub(resp, last_at)
+            && u16::from_be_bytes(zext(&s.payload)) == 0
+        {
+            return Ok(AxisDataReply {
+                count: 0,
+                values: vec![vec![]; codes.len()],
+                error: None,
+            });
         }
         for i in 1..resp.len() {
             if let Err(e @ Error::Cnc { .. }) = sub(resp, i) {

@@ -255,12 +255,12 @@ fn scalar(v: &str) -> String {
 
 /// A list element: `a..b` as the numbers a to b, others as one value.
 fn expand_range(x: &str) -> Vec<String> {
-    if let Some((a, b)) = x.split_once("..") {
-        if let (Ok(a), Ok(b)) = (a.trim().parse::<u64>(), b.trim().parse::<u64>()) {
-            if b >= a && b - a < 1_000_000 {
-                return (a..=b).map(|n| n.to_string()).collect();
-            }
-        }
+    if let Some((a, b)) = x.split_once("..")
+        && let (Ok(a), Ok(b)) = (a.trim().parse::<u64>(), b.trim().parse::<u64>())
+        && b >= a
+        && b - a < 1_000_000
+    {
+        return (a..=b).map(|n| n.to_string()).collect();
     }
     vec![scalar(x)]
 }
