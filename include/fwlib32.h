@@ -122,6 +122,36 @@ typedef struct ODBAXIS {
 } ODBAXIS;
 
 /*
+ One position of cnc_rdposition.
+ */
+typedef struct POSELM {
+    LONG data;
+    short dec;
+    short unit;
+    short disp;
+    char name;
+    char suff;
+} POSELM;
+
+/*
+ cnc_rdposition: the four positions of one axis.
+ */
+typedef struct ODBPOS {
+    struct POSELM abs;
+    struct POSELM mach;
+    struct POSELM rel;
+    struct POSELM dist;
+} ODBPOS;
+
+/*
+ `cnc_refpoint`, `cnc_abspoint` … `cnc_exebufstat`: the execution state of each path.
+ */
+typedef struct ODBEXEC {
+    short dummy;
+    char cdata[2][8];
+} ODBEXEC;
+
+/*
  cnc_actf / cnc_acts: actual feed rate or spindle speed.
  */
 typedef struct ODBACT {
@@ -145,6 +175,25 @@ typedef struct ODBALM {
     short dummy[2];
     short data;
 } ODBALM;
+
+/*
+ `cnc_cannedcycle`: read canned command data.
+ */
+typedef struct CMNDDATA {
+    double val;
+    LONG dec;
+    LONG dummy;
+} CMNDDATA;
+
+/*
+ Data of `cnc_cannedcycle`.
+ */
+typedef struct ODBCANCMD {
+    struct CMNDDATA p_data;
+    struct CMNDDATA q_data;
+    struct CMNDDATA r_data;
+    struct CMNDDATA z_data;
+} ODBCANCMD;
 
 /*
  cnc_upload / cnc_cupload: a piece of program text (`data` holds up to
@@ -195,6 +244,151 @@ typedef struct ODBDGN {
 } ODBDGN;
 
 /*
+ Data of `cnc_diagnoss64`, `cnc_prstwkcd64`, `cnc_rdblkdist` ….
+ */
+typedef struct REALDATA {
+    double val;
+    LONG dec;
+    LONG dummy;
+} REALDATA;
+
+/*
+ The `u` member of `ODBDGN64`.
+ */
+typedef union ODBDGN64_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALDATA rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALDATA rdatas[MAX_AXIS];
+} ODBDGN64_u;
+
+/*
+ Data of `cnc_diagnoss64`.
+ */
+typedef struct ODBDGN64 {
+    short datano;
+    short type;
+    short axis;
+    short dummy;
+    union ODBDGN64_u u;
+} ODBDGN64;
+
+/*
+ `cnc_dncprgname`: read program name of DNC operation.
+ */
+typedef struct ODBDNCPRG {
+    char name[36];
+    LONG o_num;
+} ODBDNCPRG;
+
+/*
+ `cnc_dsfile_req`: get file list infomation.
+ */
+typedef struct ODB_IN_DSFILE_REQ {
+    char file[256];
+    LONG fnum;
+    LONG offset;
+    short detail;
+    unsigned short option;
+} ODB_IN_DSFILE_REQ;
+
+/*
+ `cnc_dsstat_rdfile`: get file list infomation.
+ */
+typedef struct ODB_IN_STAT_DSFILE {
+    short req_num;
+    short size_type;
+} ODB_IN_STAT_DSFILE;
+
+/*
+ FANUC's ULONG: 32 bits on every platform.
+ */
+typedef uint32_t ULONG;
+
+/*
+ Data of `cnc_dsstat_rdfile`.
+ */
+typedef struct OUT_DSINFO {
+    short type;
+    short dummy;
+    LONG fnum;
+    LONG total;
+    ULONG remain_h;
+    ULONG remain_l;
+    char dir[256];
+} OUT_DSINFO;
+
+/*
+ Data of `cnc_dsstat_rdfile`.
+ */
+typedef struct OUT_DSFILE {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    LONG size;
+    ULONG attr;
+    char file[36];
+    char info[128];
+} OUT_DSFILE;
+
+/*
+ `cnc_dtsvmntinfo`: read maintenance information for Data Server.
+ */
+typedef struct ODBDSMNT {
+    LONG empty_cnt;
+    LONG total_size;
+    LONG read_ptr;
+    LONG write_ptr;
+} ODBDSMNT;
+
+/*
+ One element of `ODBDSDIR.data`.
+ */
+typedef struct ODBDSDIR_data {
+    char file_name[16];
+    char comment[64];
+    LONG size;
+    char date[16];
+} ODBDSDIR_data;
+
+/*
+ `cnc_dtsvrdpgdir`: read file directory in Data Server.
+ */
+typedef struct ODBDSDIR {
+    LONG file_num;
+    LONG remainder;
+    short data_num;
+    struct ODBDSDIR_data data[32];
+} ODBDSDIR;
+
+/*
+ `cnc_dtsvrdset`, `cnc_dtsvwrset`: read setting data for Data Server.
+ */
+typedef struct IODBDSSET {
+    char host_ip[16];
+    char host_uname[32];
+    char host_passwd[32];
+    char host_dir[128];
+    char dtsv_mac[13];
+    char dtsv_ip[16];
+    char dtsv_mask[16];
+} IODBDSSET;
+
+/*
+ `cnc_dvpunchvolc`, `cnc_dvreadvolc`: punch volumetric compensation data to device.
+ */
+typedef struct ODBVOLCOMP {
+    LONG comp[5];
+} ODBVOLCOMP;
+
+/*
  cnc_exeprgname: name and number of the running program.
  */
 typedef struct ODBEXEPRG {
@@ -203,12 +397,46 @@ typedef struct ODBEXEPRG {
 } ODBEXEPRG;
 
 /*
+ `cnc_finstate`, `cnc_setfin`: the completion flags of each path.
+ */
+typedef struct ODBFIN {
+    short dummy;
+    char cdata[8];
+} ODBFIN;
+
+/*
+ One element of `ODBDLLVERSION.dll`.
+ */
+typedef struct ODBDLLVERSION_dll {
+    char Name[260];
+    char FileVersion[32];
+    char ProductVersion[32];
+} ODBDLLVERSION_dll;
+
+/*
+ Data of `cnc_getdllversion`.
+ */
+typedef struct ODBDLLVERSION {
+    struct ODBDLLVERSION_dll dll[2];
+} ODBDLLVERSION;
+
+/*
  cnc_getdtailerr: detail of the last error.
  */
 typedef struct ODBERR {
     short err_no;
     short err_dtno;
 } ODBERR;
+
+/*
+ Data of `cnc_getrtmioinfo`, `cnc_rdrtmiowrenblrng`, `cnc_wrrtmiowrenblrng`.
+ */
+typedef struct IODBRTMIOR {
+    short adr_type;
+    LONG adr_attr;
+    ULONG sno;
+    ULONG eno;
+} IODBRTMIOR;
 
 /*
  IODBTIMER date view.
@@ -246,6 +474,22 @@ typedef struct IODBTIMER {
 } IODBTIMER;
 
 /*
+ One element of `ODBAHDCK.info`.
+ */
+typedef struct ODBAHDCK_info {
+    short stat;
+    short data;
+} ODBAHDCK_info;
+
+/*
+ Data of `cnc_hdck_nochange_info`.
+ */
+typedef struct ODBAHDCK {
+    short dat_path;
+    struct ODBAHDCK_info info[MAX_CNCPATH];
+} ODBAHDCK;
+
+/*
  cnc_instlifedt: the tool to insert.
  */
 typedef struct IDBITD {
@@ -253,6 +497,24 @@ typedef struct IDBITD {
     short type;
     LONG data;
 } IDBITD;
+
+/*
+ Data of `cnc_machine3_ex`.
+ */
+typedef struct ODBAXIS_EX {
+    short counter;
+    short type;
+    LONG data[MAX_AXIS];
+} ODBAXIS_EX;
+
+/*
+ Data of `cnc_mcs_rdheader`, `cnc_mcs_wrheader`.
+ */
+typedef struct ODBMCSHEAD {
+    char layout;
+    char string1[51];
+    char string2[51];
+} ODBMCSHEAD;
 
 /*
  cnc_rdparainfo3: the attributes of one parameter.
@@ -310,6 +572,388 @@ typedef struct ODBPARANUM {
 } ODBPARANUM;
 
 /*
+ Data of `cnc_mdd_getexceptparam`, `cnc_mdd_setexceptparam`.
+ */
+typedef struct IODBMDDEXCEPTPRM {
+    LONG sno;
+    LONG eno;
+} IODBMDDEXCEPTPRM;
+
+/*
+ Data of `cnc_mdd_rdinfo`.
+ */
+typedef struct ODBMDDINFO {
+    short status;
+    short prot;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    ULONG reg_code;
+    ULONG cur_code;
+    short modulate;
+} ODBMDDINFO;
+
+/*
+ Data of `cnc_mdg_rdalminfo`, `cnc_mdg_rdcontinfo`, `cnc_mdg_rddtmsg` ….
+ */
+typedef struct IODBMDGINFO {
+    LONG alm_no;
+    short type;
+    short axis;
+    short path;
+    short reserved;
+} IODBMDGINFO;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef union ODBMDGVAL {
+    LONG lval;
+    ULONG ulval;
+    short sval;
+    unsigned short usval;
+    char cval;
+    unsigned char ucval;
+} ODBMDGVAL;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBMDGDT {
+    union ODBMDGVAL dt;
+    short fp;
+    short reserved;
+} ODBMDGDT;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP1 {
+    LONG cmd_pls;
+    LONG fb_pls;
+    LONG refc;
+    LONG pos_err;
+    struct ODBMDGDT act_spd;
+    unsigned short amr;
+    short reserved;
+} ODBSV2_GRP1;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP2 {
+    struct ODBMDGDT mt_cur;
+    short trq_cmd;
+    short efc_cur;
+    unsigned short dlvl;
+    unsigned short heat;
+    short opt;
+    short opt2;
+} ODBSV2_GRP2;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP3 {
+    struct ODBMDGDT ps_vumb;
+    struct ODBMDGDT ps_vthd;
+    struct ODBMDGDT freq;
+    unsigned short ps_vrms;
+    unsigned short ps_cur;
+    unsigned short dvolt;
+    unsigned char ps_statf;
+    char reserved;
+} ODBSV2_GRP3;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP4 {
+    struct ODBMDGDT resistance;
+    unsigned char detect_res;
+    char reserved[7];
+} ODBSV2_GRP4;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP5 {
+    unsigned short ps_dgn;
+    unsigned short ps_sub_dgn;
+    unsigned short sv_dgn;
+    unsigned char ps_int_tmp;
+    unsigned char ps_sink_tmp;
+    unsigned char sv_int_tmp;
+    unsigned char sv_sink_tmp;
+    unsigned char amp_grp;
+    unsigned char amp_slv;
+} ODBSV2_GRP5;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP6 {
+    unsigned short sv_up_err1;
+    unsigned short sv_up_err2;
+    unsigned short sv_lw_err1;
+    unsigned short sv_lw_err2;
+    unsigned short sv_up_jt1;
+    unsigned short sv_up_jt2;
+    unsigned short sv_lw_jt1;
+    unsigned short sv_lw_jt2;
+    unsigned short sdu_up_err1;
+    unsigned short sdu_up_err2;
+    unsigned short sdu_lw_err1;
+    unsigned short sdu_lw_err2;
+    unsigned short sdu_up_jt1;
+    unsigned short sdu_up_jt2;
+    unsigned short sdu_lw_jt1;
+    unsigned short sdu_lw_jt2;
+} ODBSV2_GRP6;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSV2_GRP7 {
+    unsigned short id_intp;
+    unsigned short id_com;
+    unsigned short id_wrn;
+    unsigned short ed_intp;
+    unsigned short ed_com;
+    unsigned short ed_wrn;
+    short sv_dat1;
+    short sv_dat2;
+    short sv_dat3;
+    short sv_dat4;
+} ODBSV2_GRP7;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSIGDIO {
+    char sgnl1;
+    char sgnl2;
+    char sgnl3;
+    char sgnl4;
+} ODBSIGDIO;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP1 {
+    LONG motion;
+    short cmd_spd;
+    char mode;
+    char gear;
+    char osel;
+    char reserved[3];
+    struct ODBSIGDIO sig_in;
+    struct ODBSIGDIO sig_out;
+} ODBSP2_GRP1;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP2 {
+    LONG pos_err;
+    LONG syn_err;
+    LONG sp_spd;
+    LONG mt_spd;
+    struct ODBMDGDT mt_cur;
+    unsigned short ldmtr;
+    short trq_cmd;
+    char heat_mt;
+    char heat_amp;
+    char reserved[2];
+} ODBSP2_GRP2;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP3 {
+    struct ODBMDGDT ps_vumb;
+    struct ODBMDGDT ps_vthd;
+    struct ODBMDGDT freq;
+    unsigned short ps_vrms;
+    unsigned short ps_cur;
+    unsigned short dvolt;
+    unsigned char ps_statf;
+    char reserved;
+} ODBSP2_GRP3;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP4 {
+    struct ODBMDGDT resistance;
+    unsigned char detect_res;
+    char reserved[7];
+} ODBSP2_GRP4;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP5 {
+    unsigned short ps_dgn;
+    unsigned short ps_sub_dgn;
+    unsigned short sp_dgn;
+    unsigned char ps_int_tmp;
+    unsigned char ps_sink_tmp;
+    unsigned char sp_int_tmp;
+    unsigned char sp_sink_tmp;
+    unsigned char amp_grp;
+    unsigned char amp_slv;
+} ODBSP2_GRP5;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP6 {
+    unsigned short sp_up_err1;
+    unsigned short sp_up_err2;
+    unsigned short sp_lw_err1;
+    unsigned short sp_lw_err2;
+    unsigned short sp_up_jt1;
+    unsigned short sp_up_jt2;
+    unsigned short sp_lw_jt1;
+    unsigned short sp_lw_jt2;
+} ODBSP2_GRP6;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP7 {
+    struct ODBMDGDT iab_amplt;
+    struct ODBMDGDT eab_amplt;
+    short iab_ofs_a;
+    short iab_ofs_b;
+    short iab_noise;
+    short eab_ofs_a;
+    short eab_ofs_b;
+    short eab_noise;
+    unsigned short iab_max_flt;
+    unsigned short eab_max_flt;
+} ODBSP2_GRP7;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBSP2_GRP8 {
+    unsigned short isncr_intp;
+    unsigned short isncr_com;
+    unsigned short isncr_wrn;
+    unsigned short esncr_intp;
+    unsigned short esncr_com;
+    unsigned short esncr_wrn;
+    short sp_dat1;
+    short sp_dat2;
+    short sp_dat3;
+    short sp_dat4;
+} ODBSP2_GRP8;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef struct ODBLAT_GRP1 {
+    ULONG nnum;
+    char prog[36];
+    char year;
+    char mon;
+    char day;
+    char hour;
+    char min;
+    char sec;
+    char reserved[2];
+} ODBLAT_GRP1;
+
+/*
+ Data of `cnc_mdg_rdalminfoview2`.
+ */
+typedef union ODBVIEWGRP2 {
+    struct ODBSV2_GRP1 sv1;
+    struct ODBSV2_GRP2 sv2;
+    struct ODBSV2_GRP3 sv3;
+    struct ODBSV2_GRP4 sv4;
+    struct ODBSV2_GRP5 sv5;
+    struct ODBSV2_GRP6 sv6;
+    struct ODBSV2_GRP7 sv7;
+    struct ODBSP2_GRP1 sp1;
+    struct ODBSP2_GRP2 sp2;
+    struct ODBSP2_GRP3 sp3;
+    struct ODBSP2_GRP4 sp4;
+    struct ODBSP2_GRP5 sp5;
+    struct ODBSP2_GRP6 sp6;
+    struct ODBSP2_GRP7 sp7;
+    struct ODBSP2_GRP8 sp8;
+    struct ODBLAT_GRP1 lat1;
+} ODBVIEWGRP2;
+
+/*
+ Data of `cnc_mdg_rddtmsg`.
+ */
+typedef struct ODBMDGDTMSG {
+    char message[1600];
+    ULONG imgid;
+} ODBMDGDTMSG;
+
+/*
+ Data of `cnc_mdg_rdflow`.
+ */
+typedef struct ODBMDGFLOW {
+    short msgidx;
+    short yesidx;
+    short noidx;
+    short reserved;
+    char message[400];
+    short detail;
+    short operate;
+} ODBMDGFLOW;
+
+/*
+ Data of `cnc_mdg_rdheatsimlt`, `cnc_mdg_rdloadlvl`.
+ */
+typedef struct ODBLOAD {
+    short datano;
+    short type;
+    short data[MAX_AXIS];
+} ODBLOAD;
+
+/*
+ Data of `cnc_mdg_rdmsg`, `cnc_mdg_rdmsgordr`.
+ */
+typedef struct ODBMDGMSG {
+    LONG alm_no;
+    short msgidx;
+    short reserved;
+    char type[4];
+    char part[4];
+    char level[4];
+    char add_inf[4];
+    char mark[20];
+    char message[100];
+    char cause[300];
+} ODBMDGMSG;
+
+/*
+ Data of `cnc_mdg_rdwvdata`.
+ */
+typedef struct ODBMDGWVDT {
+    LONG ldata[500];
+    unsigned short p_dec;
+    unsigned short num;
+    unsigned short channel;
+    unsigned short axis;
+    unsigned short kind;
+    unsigned short interval;
+    unsigned short t_cycle;
+    char unit;
+    char sw_alm;
+} ODBMDGWVDT;
+
+/*
  One modal code other than a G code (cnc_modal aux / raux1 / raux2).
  */
 typedef struct MODAL_AUX {
@@ -338,6 +982,303 @@ typedef struct ODBMDL {
     short type;
     union ODBMDL_modal modal;
 } ODBMDL;
+
+/*
+ Data of `cnc_msr_rdhis_pmc_ex`, `cnc_msr_rdmon_pmcinf_ex`.
+ */
+typedef struct ODBEXPMCSGNLINF {
+    char pmc_no;
+    char kind;
+    char length;
+    char dummy;
+    LONG top_adrs;
+} ODBEXPMCSGNLINF;
+
+/*
+ Data of `cnc_msr_rdhis_pmc_ex`, `cnc_msr_rdmon_pmcinf_ex`.
+ */
+typedef struct ODBEXPMCSGNLTERM {
+    char data;
+    char dummy;
+} ODBEXPMCSGNLTERM;
+
+/*
+ Data of `cnc_msr_rdhis_pmc_ex`, `cnc_msr_rdmon_pmcinf_ex`.
+ */
+typedef struct ODBEXPMCSGNL {
+    struct ODBEXPMCSGNLINF inf[2];
+    struct ODBEXPMCSGNLTERM exsgnlterm[2][32];
+} ODBEXPMCSGNL;
+
+/*
+ Data of `cnc_nextdistance`, `cnc_nextdistance_bg`.
+ */
+typedef struct IODBAXIS {
+    int axnum;
+    LONG data[MAX_AXIS];
+    LONG dp[MAX_AXIS];
+} IODBAXIS;
+
+/*
+ The `u` member of `ODBOPDI`.
+ */
+typedef union ODBOPDI_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+} ODBOPDI_u;
+
+/*
+ `cnc_opdi`: the axis and a signal value of one of three widths.
+ */
+typedef struct ODBOPDI {
+    short axis;
+    union ODBOPDI_u u;
+} ODBOPDI;
+
+/*
+ `cnc_pdf_rdcallstack`: read call stack PDF.
+ */
+typedef struct ODBNESTPDF {
+    ULONG attrib;
+    char comment[64];
+    char prog_name[245];
+    char dummy[7];
+} ODBNESTPDF;
+
+/*
+ `cnc_pdf_rdrmtdgn`, `cnc_pdf_startrmtdgn`: Remote Diagnosis Start.
+ */
+typedef struct OUT_RMTDGNINFO {
+    ULONG receipt_num;
+    ULONG time;
+    short status;
+    short err_num;
+    char err_msg[36];
+} OUT_RMTDGNINFO;
+
+/*
+ Data of `cnc_pmclad_screen`.
+ */
+typedef struct PMCLAD_MESSAGE {
+    char *message;
+    int lines;
+    int color_fg;
+    int color_bg;
+} PMCLAD_MESSAGE;
+
+/*
+ Data of `cnc_pmmget`.
+ */
+typedef struct ODBPMMGET {
+    LONG pos;
+    LONG feed;
+    LONG data[20];
+    LONG number[20];
+    short axis[20];
+    short type[20];
+    char alaxis[40];
+    unsigned short alnumber[40];
+    LONG chanl;
+    LONG group;
+} ODBPMMGET;
+
+/*
+ Data of `cnc_pmmgetstart`.
+ */
+typedef struct IDBPMMGTI {
+    LONG top;
+    LONG num;
+} IDBPMMGTI;
+
+/*
+ Data of `cnc_pmminit`.
+ */
+typedef struct ODBPMMSLV {
+    LONG slvnum;
+    LONG group[8];
+} ODBPMMSLV;
+
+/*
+ Data of `cnc_pmmiochanl`.
+ */
+typedef struct ODBPMMIO {
+    LONG chanlnum;
+} ODBPMMIO;
+
+/*
+ Data of `cnc_pmmprmpage`, `cnc_wrpmmprm`.
+ */
+typedef struct ODBPMMPRP {
+    LONG data;
+    unsigned short number;
+    unsigned char axis;
+    unsigned char type;
+} ODBPMMPRP;
+
+/*
+ Data of `cnc_pmmsysdt`.
+ */
+typedef struct ODBPMMSYD {
+    char system[2];
+    char model[2];
+    char series[4];
+    char edition[4];
+} ODBPMMSYD;
+
+/*
+ Data of `cnc_powc_rd_cycle_data`.
+ */
+typedef struct ODBPOWCCYC {
+    ULONG cycletime;
+    ULONG powc_axis;
+    ULONG powc_spindle;
+    ULONG powc_outer;
+} ODBPOWCCYC;
+
+/*
+ Data of `cnc_powc_rd_history`.
+ */
+typedef struct ODBPOWCHIS {
+    ULONG get_time;
+    ULONG powc_axis;
+    ULONG powc_spindle;
+    ULONG powc_outer;
+} ODBPOWCHIS;
+
+/*
+ Data of `cnc_powc_rd_history`.
+ */
+typedef struct ODBPOWCHISALL {
+    struct ODBPOWCHIS powchis[30];
+} ODBPOWCHISALL;
+
+/*
+ Data of `cnc_powc_rd_outer_set`, `cnc_powc_wr_outer_set`.
+ */
+typedef struct ODBPOWCOUTER {
+    ULONG ave_pow[8];
+    unsigned short ref_ofs;
+    char ref_adrs;
+    unsigned char ref_path;
+} ODBPOWCOUTER;
+
+/*
+ The `u` member of `IODBBOOK`.
+ */
+typedef union IODBBOOK_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+} IODBBOOK_u;
+
+/*
+ `cnc_preset_prm`: parameter preset.
+ */
+typedef struct IODBBOOK {
+    short param_no;
+    char axis;
+    char type;
+    union IODBBOOK_u u;
+} IODBBOOK;
+
+/*
+ `cnc_prstwkcd64`: preset work coordinate.
+ */
+typedef struct IDBWRA64 {
+    short datano;
+    short type;
+    short dummy[2];
+    struct REALDATA data[MAX_AXIS];
+} IDBWRA64;
+
+/*
+ `cnc_pwcm_rd_consump`: read power consumption.
+ */
+typedef struct ODBPWCM {
+    LONG consump;
+    LONG regen;
+    LONG net;
+    LONG present;
+} ODBPWCM;
+
+/*
+ Data of `cnc_pwcm_rd_consump`.
+ */
+typedef struct ODBPWCMDAT {
+    ULONG time;
+    short axis_num;
+    short spindle_num;
+    struct ODBPWCM all;
+    struct ODBPWCM axis[MAX_AXIS];
+    struct ODBPWCM spindle[MAX_SPINDLE];
+} ODBPWCMDAT;
+
+/*
+ Data of `cnc_rct_rdGrpName`, `cnc_rct_wrGrpName`.
+ */
+typedef struct IODBRCT_CSTMNAME {
+    unsigned short grp_num;
+    unsigned short dummy;
+    char grp_name[16];
+    char ptn_name[3][16];
+} IODBRCT_CSTMNAME;
+
+/*
+ The `uParam` member of `IODBRCT_ITEM_ptn`.
+ */
+typedef union IODBRCT_ITEM_ptn_uParam {
+    char bdata;
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char bdatas[MAX_AXIS];
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALPRM rdatas[MAX_AXIS];
+} IODBRCT_ITEM_ptn_uParam;
+
+/*
+ One element of `IODBRCT_ITEM.ptn`.
+ */
+typedef struct IODBRCT_ITEM_ptn {
+    char enable;
+    char dummy2[3];
+    LONG attr2;
+    union IODBRCT_ITEM_ptn_uParam uParam;
+} IODBRCT_ITEM_ptn;
+
+/*
+ Data of `cnc_rct_rdItem`, `cnc_rct_wrItem`.
+ */
+typedef struct IODBRCT_ITEM {
+    unsigned short item_num;
+    unsigned char type;
+    char axsp_num;
+    char ptn_num;
+    unsigned char dummy;
+    unsigned short attr;
+    struct IODBRCT_ITEM_ptn ptn[6];
+} IODBRCT_ITEM;
+
+/*
+ Data of `cnc_rct_rdPtnSlct`, `cnc_rct_wrPtnSlct`.
+ */
+typedef struct IODBRCT_GRPPTN {
+    unsigned short grp_num;
+    unsigned short ptn_num;
+} IODBRCT_GRPPTN;
+
+/*
+ Data of `cnc_rct_rdslctptnname`.
+ */
+typedef struct ODBRCT_SLCTPTNNAME {
+    LONG sl_ptrn_no;
+    short sl_nm_slct;
+} ODBRCT_SLCTPTNNAME;
 
 /*
  cnc_toolnum: tool number of a tool in a tool-life group (cnc_rd1length,
@@ -398,6 +1339,193 @@ typedef struct ODB3DHDL {
 } ODB3DHDL;
 
 /*
+ `cnc_rd5dmacmov`, `cnc_rd5dtooltip`: read tip of 5 axis manufacture send handle.
+ */
+typedef struct ODB5DHDL {
+    char name[4];
+    LONG data;
+    short dec;
+    short flag;
+    short axis;
+} ODB5DHDL;
+
+/*
+ `cnc_rd5dpulse`: read pulse of 5 axis manufacture send handle.
+ */
+typedef struct ODB5DPLS {
+    char name[3];
+    LONG data;
+    short dec;
+} ODB5DPLS;
+
+/*
+ Data of `cnc_rd_grpaxisinfo`.
+ */
+typedef struct ODBGRPAXIS {
+    short path_num;
+    short draw_num;
+} ODBGRPAXIS;
+
+/*
+ `cnc_rd_grppos`, `cnc_rd_grppos3`: read graphic position.
+ */
+typedef struct POSVAL {
+    LONG data;
+    LONG dec;
+} POSVAL;
+
+/*
+ Data of `cnc_rd_grppos`, `cnc_rd_grppos3`.
+ */
+typedef struct ODBGRPPOS {
+    struct POSVAL abs;
+    struct POSVAL mcn;
+    short feed_type;
+    short reserved;
+} ODBGRPPOS;
+
+/*
+ Data of `cnc_rd_hm_progstat`.
+ */
+typedef struct ODBHMPROGSTAT {
+    short run;
+    short disp;
+    short alm_no;
+    short reserve;
+    LONG prog_no;
+    LONG block_no;
+} ODBHMPROGSTAT;
+
+/*
+ Data of `cnc_rd_mm_ctgry_cstm_str_data`, `cnc_wr_mm_ctgry_cstm_str_data`.
+ */
+typedef struct IODBMMCTGRYCSTMSTRING {
+    char string[13];
+    char reserve[3];
+} IODBMMCTGRYCSTMSTRING;
+
+/*
+ Data of `cnc_rd_mm_icn_cstm_str_data`, `cnc_rd_mm_mc_dflt_scrn_inf`, `cnc_rd_mm_mc_scrn_def_data` ….
+ */
+typedef struct ODBMMSCRNINF {
+    ULONG scrn_id;
+} ODBMMSCRNINF;
+
+/*
+ Data of `cnc_rd_mm_icn_cstm_str_data`, `cnc_wr_mm_icn_cstm_str_data`.
+ */
+typedef struct IODBMMICONCSTMSTRING {
+    struct ODBMMSCRNINF scrninf;
+    char string[13];
+    char reserve[3];
+} IODBMMICONCSTMSTRING;
+
+/*
+ Data of `cnc_rd_mm_mc_ctgry_def_data`.
+ */
+typedef struct IODBMMMCCTGRYDEFDAT {
+    LONG cmsg_id;
+} IODBMMMCCTGRYDEFDAT;
+
+/*
+ Data of `cnc_rd_mm_mc_scrn_def_data`.
+ */
+typedef struct IODBMMMCSCRNDEFDAT {
+    struct ODBMMSCRNINF scrninf;
+    LONG icn_id;
+    LONG msg_id;
+} IODBMMMCSCRNDEFDAT;
+
+/*
+ Data of `cnc_rd_scrlwaitmcode`, `cnc_wr_scrlwaitmcode`.
+ */
+typedef struct IODBWAITMCODE {
+    LONG mcode;
+    LONG pathnum;
+} IODBWAITMCODE;
+
+/*
+ Data of `cnc_rd_sfsg_disp_stat`, `cnc_wr_sfsg_disp_stat`.
+ */
+typedef struct IODBSFSGDSPSTAT {
+    short extract;
+    short symbol;
+    short extend;
+} IODBSFSGDSPSTAT;
+
+/*
+ Data of `cnc_rd_sfsg_loginf`.
+ */
+typedef struct ODBSFSGALM {
+    short alm_type;
+    short alm_no;
+} ODBSFSGALM;
+
+/*
+ Data of `cnc_rd_sfsg_loginf`.
+ */
+typedef struct ODBSFSGALMTIME {
+    short year;
+    short month;
+    short date;
+    short hour;
+    short minute;
+    short second;
+} ODBSFSGALMTIME;
+
+/*
+ Data of `cnc_rd_sfsg_loginf`.
+ */
+typedef struct ODBSFSGLOGINF {
+    short signal_num;
+    short sig_his_period;
+    short sig_his_count;
+    short sig_his_after;
+    short alm_detect_time[3];
+    short dummy;
+    struct ODBSFSGALM sfsg_alm;
+    struct ODBSFSGALMTIME sfsg_alm_time;
+} ODBSFSGLOGINF;
+
+/*
+ Data of `cnc_rd_sfsg_search`, `cnc_rd_sfsg_siginf`.
+ */
+typedef struct IODBSFSGSIGINF {
+    LONG unittype;
+    LONG number;
+    short adr_type;
+    short bit;
+} IODBSFSGSIGINF;
+
+/*
+ Data of `cnc_rd_sfsg_sighis`.
+ */
+typedef struct IODBSFSGSIGHIS {
+    short sno_sig;
+    short len_sig;
+    short sno_sig_his;
+    short len_sig_his;
+    short extract;
+} IODBSFSGSIGHIS;
+
+/*
+ Data of `cnc_rd_sfsg_siginf`.
+ */
+typedef struct ODBSFSGSIGINFEX {
+    struct IODBSFSGSIGINF sfsg_siginf;
+    short select;
+    short reserve;
+} ODBSFSGSIGINFEX;
+
+/*
+ Data of `cnc_rd_sfsg_signal_num`.
+ */
+typedef struct ODBSFSGSIGNALNUM {
+    short signal_num_default;
+    short signal_num_extract;
+} ODBSFSGSIGNALNUM;
+
+/*
  cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
  */
 typedef struct IODBZOFS {
@@ -405,6 +1533,23 @@ typedef struct IODBZOFS {
     short type;
     LONG data[MAX_AXIS];
 } IODBZOFS;
+
+/*
+ Data of `cnc_rdactpos_w`.
+ */
+typedef struct ODBWACT {
+    LONG data[6];
+} ODBWACT;
+
+/*
+ `cnc_rdactpt_w`: read execution pointer of program for FS160is/180is-WB.
+ */
+typedef struct ODBACTPTW {
+    LONG mprgno;
+    LONG mblkno;
+    LONG sprgno;
+    LONG sblkno;
+} ODBACTPTW;
 
 /*
  One record of ODBAHIS (48 bytes).
@@ -461,6 +1606,34 @@ typedef struct ODBAHIS2 {
     unsigned short e_no;
     struct ODBAHIS2_ALM alm_his[10];
 } ODBAHIS2;
+
+/*
+ One element of `ODBAHIS3.alm_his`.
+ */
+typedef struct ODBAHIS3_alm_his {
+    short alm_grp;
+    short alm_no;
+    short axis_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    short pth_no;
+    short dummy;
+    char alm_msg[32];
+} ODBAHIS3_alm_his;
+
+/*
+ `cnc_rdalmhistry3`: read alarm history data.
+ */
+typedef struct ODBAHIS3 {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBAHIS3_alm_his alm_his[10];
+} ODBAHIS3;
 
 /*
  One entry of ODBAHIS5 (516 bytes).
@@ -552,6 +1725,55 @@ typedef struct ALMINFO {
 } ALMINFO;
 
 /*
+ One element of `ALMINFO2_u_alm1.alm`.
+ */
+typedef struct ALMINFO2_u_alm1_alm {
+    short axis;
+    short alm_no;
+} ALMINFO2_u_alm1_alm;
+
+/*
+ The `alm1` member of `ALMINFO2_u`.
+ */
+typedef struct ALMINFO2_u_alm1 {
+    struct ALMINFO2_u_alm1_alm alm[5];
+    short data_end;
+} ALMINFO2_u_alm1;
+
+/*
+ One element of `ALMINFO2_u_alm2.alm`.
+ */
+typedef struct ALMINFO2_u_alm2_alm {
+    short axis;
+    short alm_no;
+    short msg_len;
+    char alm_msg[34];
+} ALMINFO2_u_alm2_alm;
+
+/*
+ The `alm2` member of `ALMINFO2_u`.
+ */
+typedef struct ALMINFO2_u_alm2 {
+    struct ALMINFO2_u_alm2_alm alm[5];
+    short data_end;
+} ALMINFO2_u_alm2;
+
+/*
+ The `u` member of `ALMINFO2`.
+ */
+typedef union ALMINFO2_u {
+    struct ALMINFO2_u_alm1 alm1;
+    struct ALMINFO2_u_alm2 alm2;
+} ALMINFO2_u;
+
+/*
+ `cnc_rdalminfo2`: read alarm information.
+ */
+typedef struct ALMINFO2 {
+    union ALMINFO2_u u;
+} ALMINFO2;
+
+/*
  cnc_rdalmmsg: one alarm with a 32-character message.
  */
 typedef struct ODBALMMSG {
@@ -601,12 +1823,32 @@ typedef struct ODBAXDT {
 } ODBAXDT;
 
 /*
+ `cnc_rdaxisdata64`: read various axis data(IEEE double version).
+ */
+typedef struct ODBAXDT64 {
+    char name[4];
+    char dummy[4];
+    double data;
+    short dec;
+    short unit;
+    short flag;
+    short reserve;
+} ODBAXDT64;
+
+/*
  cnc_rdaxisname: one axis name.
  */
 typedef struct ODBAXISNAME {
     char name;
     char suff;
 } ODBAXISNAME;
+
+/*
+ Data of `cnc_rdaxisstatus_bg`.
+ */
+typedef struct ODBAXSTS_BG {
+    LONG flag;
+} ODBAXSTS_BG;
 
 /*
  cnc_rdprstrinfo: program restart information.
@@ -635,6 +1877,138 @@ typedef struct ODBBTLINF {
 } ODBBTLINF;
 
 /*
+ The `data` member of `IODBCTPR`.
+ */
+typedef struct IODBCTPR_data {
+    LONG acc_bipl[MAX_AXIS];
+    LONG acc_chg_time;
+    LONG jerk_acc_diff[MAX_AXIS];
+    LONG jerk_acc_diff_lin[MAX_AXIS];
+    char jerk_acc_ratio;
+    LONG max_acc[MAX_AXIS];
+    short t_con_aipl[MAX_AXIS];
+    LONG corner_feed_diff[MAX_AXIS];
+    LONG max_cut_fdrate[MAX_AXIS];
+} IODBCTPR_data;
+
+/*
+ The `u` member of `IODBCTPR_prm`.
+ */
+typedef union IODBCTPR_prm_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+} IODBCTPR_prm_u;
+
+/*
+ One element of `IODBCTPR.prm`.
+ */
+typedef struct IODBCTPR_prm {
+    short datano;
+    short type;
+    union IODBCTPR_prm_u u;
+} IODBCTPR_prm;
+
+/*
+ `cnc_rdcdslctprm`: read the machining condition parameters.
+ */
+typedef struct IODBCTPR {
+    struct IODBCTPR_data data;
+    struct IODBCTPR_prm prm[2];
+} IODBCTPR;
+
+/*
+ The `data_160` member of `IODBCTPRM_data`.
+ */
+typedef struct IODBCTPRM_data_data_160 {
+    LONG acc_bipl[8];
+    LONG acc_chg_time;
+    LONG jerk_acc_diff[8];
+    LONG jerk_acc_diff_lin[8];
+    char jerk_acc_ratio;
+    LONG max_acc[8];
+    short t_con_aipl[8];
+    LONG corner_feed_diff[8];
+    LONG max_cut_fdrate[8];
+} IODBCTPRM_data_data_160;
+
+/*
+ The `data_30i` member of `IODBCTPRM_data`.
+ */
+typedef struct IODBCTPRM_data_data_30i {
+    struct REALPRM acc_bipl[32];
+    struct REALPRM acc_chg_time;
+    struct REALPRM jerk_acc_diff[32];
+    struct REALPRM jerk_acc_diff_lin[32];
+    char jerk_acc_ratio;
+    struct REALPRM max_acc[32];
+    short t_con_aipl[32];
+    struct REALPRM corner_feed_diff[32];
+    struct REALPRM max_cut_fdrate[32];
+} IODBCTPRM_data_data_30i;
+
+/*
+ The `data` member of `IODBCTPRM`.
+ */
+typedef union IODBCTPRM_data {
+    struct IODBCTPRM_data_data_160 data_160;
+    struct IODBCTPRM_data_data_30i data_30i;
+} IODBCTPRM_data;
+
+/*
+ The `u` member of `IODBCTPRM_prm`.
+ */
+typedef union IODBCTPRM_prm_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+    char cdatas[32];
+    short idatas[32];
+    LONG ldatas[32];
+    struct REALPRM rdatas[32];
+} IODBCTPRM_prm_u;
+
+/*
+ One element of `IODBCTPRM.prm`.
+ */
+typedef struct IODBCTPRM_prm {
+    short datano;
+    short type;
+    union IODBCTPRM_prm_u u;
+} IODBCTPRM_prm;
+
+/*
+ `cnc_rdcdslctprmm`: read the machining condition parameters.
+ */
+typedef struct IODBCTPRM {
+    union IODBCTPRM_data data;
+    struct IODBCTPRM_prm prm[2];
+} IODBCTPRM;
+
+/*
+ Data of `cnc_rdchopping`.
+ */
+typedef struct REALNUM {
+    LONG val;
+    LONG dec;
+} REALNUM;
+
+/*
+ Data of `cnc_rdchopping`.
+ */
+typedef struct ODBCHOPPING {
+    struct REALNUM cur_pos;
+    struct REALNUM cur_speed;
+    struct REALNUM real_udp;
+    struct REALNUM real_ldp;
+    ULONG stroke_cnt;
+} ODBCHOPPING;
+
+/*
  cnc_rdlife / cnc_rdcount (and cnc_rdntool): one tool life value of a group.
  */
 typedef struct ODBTLIFE3 {
@@ -655,6 +2029,37 @@ typedef struct ODBCMD {
     LONG cmd_val;
     LONG dec_val;
 } ODBCMD;
+
+/*
+ `cnc_rdcommand64`: read command value.
+ */
+typedef struct ODBCMD64 {
+    char adrs;
+    char num;
+    short flag;
+    LONG dec_val;
+    double cmd_val;
+} ODBCMD64;
+
+/*
+ `cnc_rdcomparam`, `cnc_wrcomparam`: read communication parameter for DNC1, DNC2, OSI-Ethernet.
+ */
+typedef struct IODBCPRM {
+    char NcApli[65];
+    char Dummy1;
+    char HostApli[65];
+    char Dummy2;
+    ULONG StatPstv;
+    ULONG StatNgtv;
+    ULONG Statmask;
+    ULONG AlarmStat;
+    ULONG PsclHaddr;
+    ULONG PsclLaddr;
+    unsigned short SvcMode1;
+    unsigned short SvcMode2;
+    LONG FileTout;
+    LONG RemTout;
+} IODBCPRM;
 
 /*
  cnc_rdctrldi: the spindle control input signals.
@@ -794,6 +2199,92 @@ typedef struct ODBDY2 {
 } ODBDY2;
 
 /*
+ The `faxis` member of `ODBDY3_pos`.
+ */
+typedef struct ODBDY3_pos_faxis {
+    LONG absolute[MAX_AXIS];
+    LONG machine[MAX_AXIS];
+    LONG relative[MAX_AXIS];
+    LONG distance[MAX_AXIS];
+} ODBDY3_pos_faxis;
+
+/*
+ The `oaxis` member of `ODBDY3_pos`.
+ */
+typedef struct ODBDY3_pos_oaxis {
+    LONG absolute;
+    LONG machine;
+    LONG relative;
+    LONG distance;
+} ODBDY3_pos_oaxis;
+
+/*
+ The `pos` member of `ODBDY3`.
+ */
+typedef union ODBDY3_pos {
+    struct ODBDY3_pos_faxis faxis;
+    struct ODBDY3_pos_oaxis oaxis;
+} ODBDY3_pos;
+
+/*
+ `cnc_rddynamic3`: read all dynamic data(3).
+ */
+typedef struct ODBDY3 {
+    short dummy;
+    short axis;
+    LONG alarm;
+    LONG prgnum;
+    LONG prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY3_pos pos;
+} ODBDY3;
+
+/*
+ The `faxis` member of `ODBDY3M_pos`.
+ */
+typedef struct ODBDY3M_pos_faxis {
+    LONG absolute[32];
+    LONG machine[32];
+    LONG relative[32];
+    LONG distance[32];
+} ODBDY3M_pos_faxis;
+
+/*
+ The `oaxis` member of `ODBDY3M_pos`.
+ */
+typedef struct ODBDY3M_pos_oaxis {
+    LONG absolute;
+    LONG machine;
+    LONG relative;
+    LONG distance;
+} ODBDY3M_pos_oaxis;
+
+/*
+ The `pos` member of `ODBDY3M`.
+ */
+typedef union ODBDY3M_pos {
+    struct ODBDY3M_pos_faxis faxis;
+    struct ODBDY3M_pos_oaxis oaxis;
+} ODBDY3M_pos;
+
+/*
+ `cnc_rddynamic3m`: read all dynamic data(3m).
+ */
+typedef struct ODBDY3M {
+    short dummy;
+    short axis;
+    LONG alarm;
+    LONG prgnum;
+    LONG prgmnum;
+    LONG seqnum;
+    LONG actf;
+    LONG acts;
+    union ODBDY3M_pos pos;
+} ODBDY3M;
+
+/*
  cnc_rddynamico8: dynamic data, the alarm status as a short, the program
  numbers `long` (FANUC's library writes only their low 16 bits there).
  */
@@ -808,6 +2299,33 @@ typedef struct ODBDYO8 {
     LONG acts;
     union ODBDY_POS pos;
 } ODBDYO8;
+
+/*
+ `cnc_rdembedf_inf`: read embedded folder information.
+ */
+typedef struct ODBEMBEDFINF {
+    LONG used_page;
+    LONG all_page;
+} ODBEMBEDFINF;
+
+/*
+ `cnc_rdexecprog3`: read execute-program infomation.
+ */
+typedef struct EXEPRG {
+    unsigned short length;
+    short prep_blk;
+    short act_blk;
+    short dummy;
+    char data[512];
+} EXEPRG;
+
+/*
+ Data of `cnc_rdexecprog3`.
+ */
+typedef struct ODBEXEPRGINFO {
+    struct EXEPRG before_buffering;
+    struct EXEPRG after_buffering;
+} ODBEXEPRGINFO;
 
 /*
  cnc_rdexecpt: a program pointer (declared for programs that call it; no
@@ -835,6 +2353,14 @@ typedef struct ODBFIX {
     LONG cut;
     LONG shift[2];
 } ODBFIX;
+
+/*
+ `cnc_rdfixoffs`, `cnc_wrfixoffs`: read rotary table dynamic fixture offset.
+ */
+typedef struct ODBFOFS {
+    LONG mcrval;
+    short decval;
+} ODBFOFS;
 
 /*
  cnc_rdservoid / cnc_rdfromservoid: the specifications and serial
@@ -905,6 +2431,34 @@ typedef struct ODBCSPID2 {
     char psm_srn[12];
     char pss_see[9];
 } ODBCSPID2;
+
+/*
+ Data of `cnc_rdfsraminfo2`.
+ */
+typedef struct ODBSRAMIF2 {
+    LONG protect;
+    ULONG adrs;
+    LONG size;
+} ODBSRAMIF2;
+
+/*
+ `cnc_rdftrq_info`: Get setting information of "Fine toruqe sensing function".
+ */
+typedef struct ODBP_FTRQ_PRM_INF {
+    char smpl_enbl;
+    char cycle;
+    char axis_num;
+    char dummy1;
+} ODBP_FTRQ_PRM_INF;
+
+/*
+ Data of `cnc_rdgcodem`, `cnc_rstrt_rdmodal`.
+ */
+typedef struct ODBGCD {
+    short group;
+    short flag;
+    char code[8];
+} ODBGCD;
 
 /*
  cnc_rdgrpid: the tool life group of a tool number (`type` the tool
@@ -979,6 +2533,25 @@ typedef struct IODBSIG {
 } IODBSIG;
 
 /*
+ One element of `IODBSIG2.data`.
+ */
+typedef struct IODBSIG2_data {
+    short ent_no;
+    short sig_no;
+    char sig_name;
+    char mask_pat;
+} IODBSIG2_data;
+
+/*
+ `cnc_rdhissgnl2`, `cnc_wrhissgnl2`: read signals related operation history 2.
+ */
+typedef struct IODBSIG2 {
+    short datano;
+    short type;
+    struct IODBSIG2_data data[45];
+} IODBSIG2;
+
+/*
  One signal of IODBSIG3: a PMC signal byte the operation history records.
  */
 typedef struct IODBSIG3_DATA {
@@ -1015,6 +2588,462 @@ typedef struct IODBSIG3 {
 } IODBSIG3;
 
 /*
+ Data of `cnc_rdholmes64`.
+ */
+typedef struct ODBHOLDATA64 {
+    double mes_val1[2];
+    LONG mes_dp1[2];
+    double mes_val2[2];
+    LONG mes_dp2[2];
+    double mes_val3[2];
+    LONG mes_dp3[2];
+    char mes_axis[2];
+    char mes_parl[2];
+} ODBHOLDATA64;
+
+/*
+ `cnc_rdhpccset`, `cnc_wrhpccset`: read hpcc setting data.
+ */
+typedef struct IODBHPST {
+    short slct;
+    short hpcc;
+    short multi;
+    short ovr1;
+    short ign_f;
+    short foward;
+    LONG max_f;
+    short ovr2;
+    short ovr3;
+    short ovr4;
+    LONG reserve[7];
+} IODBHPST;
+
+/*
+ One element of `IODBHPAC.tune`.
+ */
+typedef struct IODBHPAC_tune {
+    short slct;
+    short diff;
+    short fine;
+    short acc_lv;
+    LONG bipl;
+    short aipl;
+    LONG corner;
+    LONG clamp;
+    LONG c_acc;
+    LONG foward;
+    LONG reserve[8];
+} IODBHPAC_tune;
+
+/*
+ `cnc_rdhpcctuac`, `cnc_wrhpcctuac`: read hpcc tuning data ( acc input ).
+ */
+typedef struct IODBHPAC {
+    struct IODBHPAC_tune tune[3];
+} IODBHPAC;
+
+/*
+ One element of `IODBHPPR.tune`.
+ */
+typedef struct IODBHPPR_tune {
+    short slct;
+    short diff;
+    short fine;
+    short acc_lv;
+    LONG max_f;
+    short bipl;
+    short aipl;
+    LONG corner;
+    short clamp;
+    LONG radius;
+    LONG max_cf;
+    LONG min_cf;
+    LONG foward;
+    LONG reserve[5];
+} IODBHPPR_tune;
+
+/*
+ `cnc_rdhpcctupr`, `cnc_wrhpcctupr`: read hpcc tuning data ( parameter input ).
+ */
+typedef struct IODBHPPR {
+    struct IODBHPPR_tune tune[3];
+} IODBHPPR;
+
+/*
+ `cnc_rdhsparam`, `cnc_rdhsparamm`, `cnc_rdhsprminfo`: read the information for function cnc_rdhsparam().
+ */
+typedef struct HSPINFO {
+    char prminfo[8][16];
+} HSPINFO;
+
+/*
+ Data of `cnc_rdhsparam`.
+ */
+typedef union HSPDATA {
+    char cdata[MAX_AXIS];
+    short idata[MAX_AXIS];
+    LONG ldata[MAX_AXIS];
+    struct REALPRM rdata[MAX_AXIS];
+} HSPDATA;
+
+/*
+ Data of `cnc_rdhsparamm`.
+ */
+typedef union HSPDATAM {
+    char cdata[32];
+    short idata[32];
+    LONG ldata[32];
+    struct REALPRM rdata[32];
+} HSPDATAM;
+
+/*
+ Data of `cnc_rdifsb_as_amp_sp`.
+ */
+typedef struct ODBIFSBSPAMP {
+    short slave_num;
+    char name[8];
+    char series[12];
+    char pwr[8];
+    short as_spdl_num;
+    char as_spdl_name[4];
+} ODBIFSBSPAMP;
+
+/*
+ Data of `cnc_rdifsb_as_amp_sv`.
+ */
+typedef struct ODBIFSBSVAMP {
+    short slave_num;
+    char name[8];
+    char series[12];
+    char cur[8];
+    short as_axis_num;
+    char as_axis_name[4];
+} ODBIFSBSVAMP;
+
+/*
+ Data of `cnc_rdifsb_as_plsmod`.
+ */
+typedef struct ODBIFSBPLSMDL {
+    short slave_num;
+    char name[8];
+    char type[8];
+    unsigned short pcb_id;
+    char info[24];
+} ODBIFSBPLSMDL;
+
+/*
+ Data of `cnc_rdifsb_as_sv_axis`, `cnc_wrifsb_as_sv_axis`.
+ */
+typedef struct IODBIFSBAXIS {
+    short axis_num;
+    char axis_name[4];
+    short line;
+    char amp_name[8];
+    short pm[8];
+    short cs;
+    short tndm;
+} IODBIFSBAXIS;
+
+/*
+ Data of `cnc_rdifsb_comstatdtl`.
+ */
+typedef struct ODBIFSBCOMSTATDTL {
+    LONG error_inf;
+    LONG jitter_inf;
+    char n_warning;
+    char j_warning;
+    char reserve[2];
+} ODBIFSBCOMSTATDTL;
+
+/*
+ Data of `cnc_rdifsb_fssbunt`.
+ */
+typedef struct ODBIFSBFSSBUNT {
+    short slv_unt_num;
+    short fssb_unt_num;
+    char name[4];
+} ODBIFSBFSSBUNT;
+
+/*
+ Data of `cnc_rdifsb_info`.
+ */
+typedef struct ODBIFSBLINE {
+    unsigned short hrv_ln;
+    unsigned short ax_num_ln;
+    unsigned short sp_num_ln;
+    unsigned short pm_num_ln;
+} ODBIFSBLINE;
+
+/*
+ Data of `cnc_rdifsb_info`.
+ */
+typedef struct ODBIFSBINFO {
+    unsigned char fssb_line_mnt_st;
+    unsigned char reserve;
+    unsigned short card_num;
+    struct ODBIFSBLINE line_info[4];
+} ODBIFSBINFO;
+
+/*
+ Data of `cnc_rdifsb_mainte_sp`.
+ */
+typedef struct ODBIFSBMNTSP {
+    short spdl_num;
+    char spdl_name[4];
+    short line;
+    char amp_name[8];
+    char amp_series[12];
+    char amp_pwr[8];
+    char amp_edt[8];
+    short amp_spdl_num;
+    char amp_spec_num[23];
+    char amp_serial_num[13];
+} ODBIFSBMNTSP;
+
+/*
+ Data of `cnc_rdifsb_mainte_sv`.
+ */
+typedef struct ODBIFSBMNTSV {
+    short axis_num;
+    char axis_name[4];
+    short line;
+    char amp_name[8];
+    char amp_series[12];
+    char amp_cur[8];
+    char amp_edt[8];
+    short amp_axis_num;
+    char amp_spec_num[23];
+    char amp_serial_num[13];
+} ODBIFSBMNTSV;
+
+/*
+ Data of `cnc_rdifsb_slu_pm`.
+ */
+typedef struct ODBIFSBSLUPM {
+    short slave_num;
+    short axis_num[8];
+    char axis_name[8][4];
+} ODBIFSBSLUPM;
+
+/*
+ Data of `cnc_rdifsb_slu_sp`.
+ */
+typedef struct ODBIFSBSLUSP {
+    short slave_num;
+    short spdl_num;
+    char spdl_name[4];
+} ODBIFSBSLUSP;
+
+/*
+ Data of `cnc_rdifsb_slu_sv`.
+ */
+typedef struct ODBIFSBSLUSV {
+    short slave_num;
+    short axis_num;
+    char axis_name[4];
+    char tndm;
+    char reserve[3];
+} ODBIFSBSLUSV;
+
+/*
+ Data of `cnc_rdifsb_slvunt`.
+ */
+typedef struct ODBIFSBSLVUNT {
+    short slv_unt_num;
+    char kind;
+    char attrb;
+} ODBIFSBSLVUNT;
+
+/*
+ Data of `cnc_rdifsb_sysalm`.
+ */
+typedef struct ODBIFSBSYSALM {
+    LONG num_sys_alm;
+    short error_line;
+    short error_slvnum1;
+    short error_slvnum2;
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+    char alarm_cause[100];
+} ODBIFSBSYSALM;
+
+/*
+ Data of `cnc_rdifsb_warnhst_msg`, `cnc_rdifsb_warning_msg`.
+ */
+typedef struct ODBIFSBWARNINGMSG {
+    short line;
+    short slv_src;
+    short slv_dst;
+    short type;
+    char wm_typ[32];
+    char wm_pnt[32];
+} ODBIFSBWARNINGMSG;
+
+/*
+ Data of `cnc_rdifsb_warnhst_msg`.
+ */
+typedef struct ODBIFSBWARNHSTMSG {
+    short year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+    char dummy;
+    struct ODBIFSBWARNINGMSG msg_dat;
+} ODBIFSBWARNHSTMSG;
+
+/*
+ Data of `cnc_rdindexdata`, `cnc_wrindexdata`.
+ */
+typedef struct IODBINDEXDAT {
+    LONG pos;
+    LONG inp_width;
+    unsigned short speed;
+    char f_flg;
+    char dummy;
+} IODBINDEXDAT;
+
+/*
+ Data of `cnc_rdindexinfo`.
+ */
+typedef struct ODBINDEXINFO {
+    unsigned short mode;
+    short nc_ax;
+    short inpos_point;
+    short ofs_edit_signal;
+} ODBINDEXINFO;
+
+/*
+ Data of `cnc_rdindexposdata`, `cnc_wrindexposdata`.
+ */
+typedef struct IODBINDEXPOSDAT {
+    LONG min_value;
+    LONG max_value;
+    char setting;
+    char dummy[3];
+} IODBINDEXPOSDAT;
+
+/*
+ Data of `cnc_rdindexprm`, `cnc_wrindexprm`.
+ */
+typedef struct IODBINDEXPRM {
+    LONG ofs_limit;
+    LONG detect_width;
+    unsigned short jog_clamp[3];
+    char matrix_single;
+    unsigned char torque_ovr;
+    char ofs_adjust;
+    char dummy[3];
+} IODBINDEXPRM;
+
+/*
+ Data of `cnc_rdipltp`, `cnc_rdipltp_bg`.
+ */
+typedef struct ODBIPL {
+    unsigned char outpt;
+    unsigned char ipltp;
+    unsigned char mv;
+    unsigned char inp;
+} ODBIPL;
+
+/*
+ One element of `ODBLALMHIS.alm_his`.
+ */
+typedef struct ODBLALMHIS_alm_his {
+    short lalm_wrg;
+    short alm_grp;
+    short alm_wrg_no;
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    short len_msg;
+    char alm_msg[64];
+    short reserve[4];
+} ODBLALMHIS_alm_his;
+
+/*
+ Data of `cnc_rdlalmhistry`.
+ */
+typedef struct ODBLALMHIS {
+    unsigned short s_no;
+    unsigned short e_no;
+    struct ODBLALMHIS_alm_his alm_his[50];
+} ODBLALMHIS;
+
+/*
+ `cnc_rdlrninfo`: read Parts Learning Data.
+ */
+typedef struct ODBLRNINFO {
+    char name[33];
+    char dummy1[3];
+    char axis[4][4];
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char comment[33];
+    char dummy2[3];
+} ODBLRNINFO;
+
+/*
+ `cnc_rdlrninfo2`: read Parts Learning Data.
+ */
+typedef struct ODBLRNINFO2 {
+    char name[33];
+    char dummy1[3];
+    char axis[20][4];
+    short year;
+    short month;
+    short day;
+    short hour;
+    short minute;
+    short second;
+    char comment[33];
+    char dummy2[3];
+} ODBLRNINFO2;
+
+/*
+ `cnc_rdlrninfol`: read Learning Data.
+ */
+typedef struct ODBLRNINFOL {
+    char axis[4];
+    char name[33];
+    char comment[33];
+    char path;
+    char dummy1;
+} ODBLRNINFOL;
+
+/*
+ `cnc_rdlrnprfcmnt`: read Profile Data.
+ */
+typedef struct ODBLRNPRF {
+    char status;
+    char comment[17];
+    char path;
+    char dummy1;
+} ODBLRNPRF;
+
+/*
+ `cnc_rdlrntrnsdata`: read Transfer Data.
+ */
+typedef struct ODBTRNS {
+    short status;
+    short pct;
+    short type;
+    char dummy[2];
+} ODBTRNS;
+
+/*
  cnc_rdmacro: one custom macro variable. The value is
  `mcr_val · 10^-dec_val`; a vacant variable reads as mcr_val 0, dec_val -1.
  */
@@ -1033,6 +3062,15 @@ typedef struct ODBM {
      */
     short dec_val;
 } ODBM;
+
+/*
+ `cnc_rdmacro3`: read custom macro variable (3).
+ */
+typedef struct ODBM3 {
+    LONG datano;
+    LONG mcr_val;
+    short dec_val;
+} ODBM3;
 
 /*
  cnc_rdmacroinfo: custom macro variable information.
@@ -1073,6 +3111,22 @@ typedef struct IODBMR {
     short datano_e;
     struct IODBMR_data data[5];
 } IODBMR;
+
+/*
+ `cnc_rdmacror2_name`: read custom macro names(area specified).
+ */
+typedef struct IODBMRN {
+    double mcr_val;
+    char name[16];
+} IODBMRN;
+
+/*
+ `cnc_rdmacror4`: read custom macro names(area specified).
+ */
+typedef struct IODBMRN4 {
+    double mcr_val;
+    char name[64];
+} IODBMRN4;
 
 /*
  cnc_rdmagazine, cnc_regmagazine: one pot of the magazine management
@@ -1128,12 +3182,91 @@ typedef struct ODBMDIPO8 {
 } ODBMDIPO8;
 
 /*
+ `cnc_rdmdlconfig`: read CNC module configuration information.
+ */
+typedef struct ODBMDLC {
+    short from;
+    short dram;
+    short sram;
+    short pmc;
+    short crtc;
+    short servo12;
+    short servo34;
+    short servo56;
+    short servo78;
+    short sic;
+    short pos_lsi;
+    short hi_aio;
+    short reserve[12];
+    short drmmrc;
+    short drmarc;
+    short pmcmrc;
+    short dmaarc;
+    short iopt;
+    short hdiio;
+    short gm2gr1;
+    short crtgr2;
+    short gm1gr2;
+    short gm2gr2;
+    short cmmrb;
+    short sv5axs;
+    short sv7axs;
+    short sicaxs;
+    short posaxs;
+    short hamaxs;
+    short romr64;
+    short srmr64;
+    short dr1r64;
+    short dr2r64;
+    short iopio2;
+    short hdiio2;
+    short cmmrb2;
+    short romfap;
+    short srmfap;
+    short drmfap;
+    short drmare;
+    short pmcmre;
+    short dmaare;
+    short frmbgg;
+    short drmbgg;
+    short asrbgg;
+    short edtpsc;
+    short slcpsc;
+    short reserve2[34];
+} ODBMDLC;
+
+/*
+ `cnc_rdmovrlapm`: read manual overlapped motion value.
+ */
+typedef struct IODBOVLM {
+    short datano;
+    short type;
+    LONG data[2][32];
+} IODBOVLM;
+
+/*
  cnc_rdngrp: the number of tool life groups.
  */
 typedef struct ODBTLIFE2 {
     short dummy[2];
     LONG data;
 } ODBTLIFE2;
+
+/*
+ Data of `cnc_rdnutatortofs_vect`, `cnc_rdsuofs_vect`.
+ */
+typedef struct ODBSUOVECT {
+    LONG vect_val;
+    LONG frc_dgt;
+} ODBSUOVECT;
+
+/*
+ `cnc_rdofslength`: read tool length offset data.
+ */
+typedef struct ODBOFSLEN {
+    LONG len;
+    LONG dec;
+} ODBOFSLEN;
 
 /*
  cnc_rdomhisinfo: the operator message history's size: most entries,
@@ -1283,6 +3416,16 @@ typedef struct OPMSG3 {
 } OPMSG3;
 
 /*
+ `cnc_rdopmsgmps`: read operator message for MAPPS.
+ */
+typedef struct OPMSGMPS {
+    short datano;
+    short type;
+    short char_num;
+    char data[256];
+} OPMSGMPS;
+
+/*
  cnc_rdopnlgnrl / cnc_wropnlgnrl: the software operator panel's general
  purpose switches (`sgnal` bit k is switch k + 1; `type` selects them).
  */
@@ -1369,6 +3512,32 @@ typedef struct IODBSGNL {
 } IODBSGNL;
 
 /*
+ `cnc_rdoverstore`, `cnc_wroverstore`: read overstore command.
+ */
+typedef struct IODBOVMST {
+    char adrs;
+    LONG num;
+} IODBOVMST;
+
+/*
+ `cnc_rdoverstore`, `cnc_wroverstore`: read overstore command.
+ */
+typedef struct IODBOVSTR {
+    struct IODBOVMST mcode;
+    struct IODBOVMST scode;
+    struct IODBOVMST tcode;
+    struct IODBOVMST bcode;
+} IODBOVSTR;
+
+/*
+ Data of `cnc_rdpalaxis`.
+ */
+typedef struct IODBPALAX {
+    LONG max_pal;
+    LONG data[MAX_AXIS];
+} IODBPALAX;
+
+/*
  One entry of ODBPARAIF.
  */
 typedef struct ODBPARAIF_info {
@@ -1388,6 +3557,31 @@ typedef struct ODBPARAIF {
 } ODBPARAIF;
 
 /*
+ The `u` member of `IODBPSD64`.
+ */
+typedef union IODBPSD64_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALDATA rdata;
+    char cdatas[MAX_AXIS];
+    short idatas[MAX_AXIS];
+    LONG ldatas[MAX_AXIS];
+    struct REALDATA rdatas[MAX_AXIS];
+} IODBPSD64_u;
+
+/*
+ `cnc_rdparam64`, `cnc_wrparam64`: read  parameter (IEEE double version).
+ */
+typedef struct IODBPSD64 {
+    short datano;
+    short type;
+    short axis;
+    short dummy;
+    union IODBPSD64_u u;
+} IODBPSD64;
+
+/*
  cnc_rdpdf_alldir input: the folder, the first entry, size and format kinds.
  */
 typedef struct IDBPDFADIR {
@@ -1397,11 +3591,6 @@ typedef struct IDBPDFADIR {
     short type;
     short dummy;
 } IDBPDFADIR;
-
-/*
- FANUC's ULONG: 32 bits on every platform.
- */
-typedef uint32_t ULONG;
 
 /*
  cnc_rdpdf_alldir output: one folder or program.
@@ -1469,6 +3658,23 @@ typedef struct ODBPDFNFIL {
 } ODBPDFNFIL;
 
 /*
+ One element of `IODBPITCHBLK.pginf`.
+ */
+typedef struct IODBPITCHBLK_pginf {
+    LONG s_no;
+    LONG e_no;
+    short attr;
+} IODBPITCHBLK_pginf;
+
+/*
+ `cnc_rdpitchblkinfo`: read pitch compensation data.
+ */
+typedef struct IODBPITCHBLK {
+    short group_num;
+    struct IODBPITCHBLK_pginf pginf[8];
+} IODBPITCHBLK;
+
+/*
  cnc_rdpitchr: pitch error compensation data (5 points as declared; the
  caller's `length` says how many really fit).
  */
@@ -1478,6 +3684,15 @@ typedef struct IODBPI {
     short datano_e;
     char data[5];
 } IODBPI;
+
+/*
+ Data of `cnc_rdplutosmpl`.
+ */
+typedef struct ODBRENPLT {
+    short delay_time;
+    unsigned short data_flag;
+    short pos_data[6];
+} ODBRENPLT;
 
 /*
  cnc_rdpm_item / cnc_wrpm_item: one maintenance item.
@@ -1574,6 +3789,16 @@ typedef struct ODBPMINF2 {
 } ODBPMINF2;
 
 /*
+ `cnc_rdpmacroinfo3`: read P code macro variable information (3).
+ */
+typedef struct ODBPMINF3 {
+    short use_no1;
+    ULONG use_no2;
+    short v1_type;
+    short v2_type;
+} ODBPMINF3;
+
+/*
  One variable of IODBPR.
  */
 typedef struct IODBPR_data {
@@ -1606,6 +3831,48 @@ typedef struct IODBPR {
 } IODBPR;
 
 /*
+ `cnc_rdpmacvalflag`: read P code macro variable flag.
+ */
+typedef struct ODBPMVALFLG {
+    short exe_type;
+    short aux_type;
+    short tlk_type;
+} ODBPMVALFLG;
+
+/*
+ Data of `cnc_rdpmcaxisinfo`.
+ */
+typedef struct ODBPMCAXISINFO {
+    unsigned char datastatus;
+    unsigned char axisstatus;
+    unsigned char commandsignal;
+    unsigned char statussignal;
+    unsigned char dummy;
+    unsigned char instruction;
+    unsigned short speedsignal;
+    ULONG axisctrldata;
+    unsigned short subinstnum;
+    unsigned short subinstlength;
+    ULONG subinstdata1;
+    ULONG subinstdata2;
+    ULONG subinstdata3;
+    ULONG subinstdata4;
+    ULONG subinstdata5;
+    ULONG subinstdata6;
+    ULONG subinstdata7;
+} ODBPMCAXISINFO;
+
+/*
+ Data of `cnc_rdpmmprmtp`, `cnc_wrpmmprmtp`.
+ */
+typedef struct IDBPMMPRP {
+    LONG chanl;
+    LONG group;
+    char folder[130];
+    LONG warn;
+} IDBPMMPRP;
+
+/*
  cnc_rdposerrs2: the position deviations of spindles 1 and 2.
  */
 typedef struct ODBPSER {
@@ -1614,26 +3881,28 @@ typedef struct ODBPSER {
 } ODBPSER;
 
 /*
- One position of cnc_rdposition.
+ `cnc_rdposfig`: read position and decimal figure.
  */
-typedef struct POSELM {
-    LONG data;
-    short dec;
-    short unit;
-    short disp;
-    char name;
-    char suff;
-} POSELM;
+typedef struct ODBPOSFIG {
+    LONG val;
+    LONG dec;
+} ODBPOSFIG;
 
 /*
- cnc_rdposition: the four positions of one axis.
+ `cnc_rdposofs`: read tool position offset for position data.
  */
-typedef struct ODBPOS {
-    struct POSELM abs;
-    struct POSELM mach;
-    struct POSELM rel;
-    struct POSELM dist;
-} ODBPOS;
+typedef struct ODBPOFS {
+    short mode;
+    LONG ofsvct[MAX_AXIS];
+} ODBPOFS;
+
+/*
+ Data of `cnc_rdpressure`.
+ */
+typedef struct ODBPRESSURE {
+    LONG cmd_val;
+    LONG feedbak_val;
+} ODBPRESSURE;
 
 /*
  cnc_rdprgnum: running and main program numbers (low 16 bits, as FANUC's).
@@ -1670,6 +3939,16 @@ typedef struct ODBPTIME {
     short num;
     struct ODBPTIME_DATA data[10];
 } ODBPTIME;
+
+/*
+ Data of `cnc_rdproctime3`.
+ */
+typedef struct ODBPTIME3 {
+    short hour;
+    short min;
+    short sec;
+    short dummy;
+} ODBPTIME3;
 
 /*
  cnc_rdprogdir: the program directory as text ("O1O1000%", see the function).
@@ -1723,6 +4002,11 @@ typedef struct PRGDIR3 {
 } PRGDIR3;
 
 /*
+ cnc_rdprogdir4: FANUC's header names PRGDIR3 so (a `#define`).
+ */
+typedef struct PRGDIR3 PRGDIR4;
+
+/*
  cnc_rdproginfo type 0: programs and memory, registered and free.
  */
 typedef struct ODBNC_bin {
@@ -1748,6 +4032,192 @@ typedef struct ODBNC {
 } ODBNC;
 
 /*
+ `cnc_rdprotect2`: read protect status.
+ */
+typedef struct ODBPRTCT2 {
+    short disp;
+    short edit;
+    short encd;
+    short lock;
+    short output;
+    short dummy;
+} ODBPRTCT2;
+
+/*
+ Data of `cnc_rdprstrinfom`.
+ */
+typedef struct ODBPRSM {
+    short datano;
+    short type;
+    short data_info[5];
+    LONG rstr_bc;
+    LONG rstr_m[35];
+    LONG rstr_t[2];
+    LONG rstr_s;
+    LONG rstr_b;
+    LONG dest[32];
+    LONG dist[32];
+} ODBPRSM;
+
+/*
+ `cnc_rdpscdproc2`, `cnc_wrpscdproc2`: read processing condition file (processing data).
+ */
+typedef struct IODBPSCD2 {
+    LONG slct;
+    LONG feed;
+    short power;
+    short freq;
+    short duty;
+    short g_press;
+    short g_kind;
+    short g_ready_t;
+    short displace;
+    LONG supple;
+    short edge_slt;
+    short appr_slt;
+    short pwr_ctrl;
+    LONG displace2;
+    char gap_axis;
+    char feed_dec;
+    char supple_dec;
+    char dsp2_dec;
+    short pb_power;
+    short reserve[8];
+} IODBPSCD2;
+
+/*
+ Data of `cnc_rdpthis_aux`.
+ */
+typedef struct ODBPTHIS_AUX {
+    double l_value;
+    double l_value_e;
+    double l_value_sub;
+    double l_value_e_sub;
+    LONG repeat_sub;
+    LONG repeat_e_sub;
+    LONG m_code[3];
+    LONG info1;
+    short number;
+    short number_sub;
+    short table_kind;
+    char m_count;
+    char master_indx_no_pt;
+    char master_indx_no_rel;
+    char l_frac;
+    char reserve1[6];
+} ODBPTHIS_AUX;
+
+/*
+ Data of `cnc_rdpthis_ax`.
+ */
+typedef struct ODBPTHIS_AX {
+    double l_value;
+    double l_value_e;
+    double pos_value;
+    double pos_value_e;
+    double l_value_sub;
+    double l_value_e_sub;
+    double l_value_cycle;
+    double l_value_e_cycle;
+    LONG repeat_sub;
+    LONG repeat_e_sub;
+    LONG info1;
+    short number;
+    short number_sub;
+    short number_cycle;
+    short table_kind;
+    char name[4];
+    char cs_spdl_idx_pt;
+    char cs_spdl_idx_rel;
+    char master_indx_no_pt;
+    char master_indx_no_rel;
+    char pos_frac;
+    char l_frac;
+    char l_frac_cycle;
+    char reserve1;
+} ODBPTHIS_AX;
+
+/*
+ The `date` member of `ODBPTHIS_GB`.
+ */
+typedef struct ODBPTHIS_GB_date {
+    short year;
+    char mon;
+    char day;
+    char hour;
+    char min;
+    char sec;
+} ODBPTHIS_GB_date;
+
+/*
+ Data of `cnc_rdpthis_gb`.
+ */
+typedef struct ODBPTHIS_GB {
+    struct ODBPTHIS_GB_date date;
+    char reserve1;
+    LONG info1;
+    char path_num;
+    char reserve2[3];
+} ODBPTHIS_GB;
+
+/*
+ Data of `cnc_rdpthis_log`.
+ */
+typedef struct ODBPTHIS_LOG {
+    char issub;
+    char kind;
+    short number;
+} ODBPTHIS_LOG;
+
+/*
+ Data of `cnc_rdpthis_pt`.
+ */
+typedef struct ODBPTHIS_PT {
+    double time;
+    short dist_err;
+    short ov_time;
+    LONG info1;
+    short alarm_no;
+    char alarm_type;
+    char alarm_axis;
+    char path_axis_num;
+    char path_spdl_num;
+    char time_frac;
+    char reserve1;
+} ODBPTHIS_PT;
+
+/*
+ Data of `cnc_rdpthis_sp`.
+ */
+typedef struct ODBPTHIS_SP {
+    double l_value;
+    double l_value_e;
+    double pos_value;
+    double pos_value_e;
+    double l_value_sub;
+    double l_value_e_sub;
+    LONG repeat_sub;
+    LONG repeat_e_sub;
+    LONG srpm;
+    LONG rrpm;
+    LONG sspm;
+    LONG smax;
+    LONG info1;
+    short number;
+    short number_sub;
+    short table_kind;
+    char sp_mode;
+    char name[4];
+    char ov_sp;
+    char reserve1;
+    char cs_axis_idx_pt;
+    char cs_axis_idx_rel;
+    char pos_frac;
+    char l_frac;
+    char reserve2[3];
+} ODBPTHIS_SP;
+
+/*
  cnc_rdradofs: the cutter compensation mode, the plane's two axes and
  the offset vector in it.
  */
@@ -1756,6 +4226,27 @@ typedef struct ODBROFS {
     short pln_axes[2];
     LONG ofsvct[2];
 } ODBROFS;
+
+/*
+ Data of `cnc_rdrtmiowrenbl`, `cnc_rdrtmiowrenblbit`, `cnc_wrrtmiowrenbl` ….
+ */
+typedef struct IODBRTMIO {
+    short adr_type;
+    short dummy;
+    ULONG no;
+    char bit;
+} IODBRTMIO;
+
+/*
+ Data of `cnc_rdscdldat`, `cnc_wrscdldat`.
+ */
+typedef struct SCDL_1D {
+    short file_no;
+    char file_name[16];
+    short repeat_num;
+    short current_num;
+    char dummy[2];
+} SCDL_1D;
 
 /*
  cnc_rdseqnum: sequence number.
@@ -1776,6 +4267,85 @@ typedef struct ODBSETNUM {
 } ODBSETNUM;
 
 /*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CUROVRR {
+    unsigned short current;
+    unsigned short minmum;
+    unsigned short maximum;
+    short dummy;
+} CUROVRR;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CURLOAD {
+    unsigned short current;
+    unsigned short effect;
+    unsigned short target;
+    unsigned short irregular;
+    LONG dummy;
+} CURLOAD;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CURTEMP {
+    unsigned short current;
+    unsigned short start;
+    unsigned short end;
+    unsigned short alarm;
+    LONG dummy;
+} CURTEMP;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct CURRDTM {
+    unsigned short current;
+    unsigned short threshold;
+    LONG dummy;
+} CURRDTM;
+
+/*
+ Data of `cnc_rdsoc_curdat`.
+ */
+typedef struct ODBSOCCUR {
+    short mode;
+    short table;
+    LONG dummy;
+    struct CUROVRR ovrr;
+    struct CURLOAD load;
+    struct CURTEMP temp;
+    struct CURRDTM rdtm;
+} ODBSOCCUR;
+
+/*
+ Data of `cnc_rdsoc_tlatrr`.
+ */
+typedef struct ODBSOCTLATTR {
+    short prm_no;
+    char type;
+} ODBSOCTLATTR;
+
+/*
+ The `u` member of `IODBSOCTLDAT`.
+ */
+typedef union IODBSOCTLDAT_u {
+    char cdata;
+    short idata;
+    LONG ldata;
+    struct REALPRM rdata;
+} IODBSOCTLDAT_u;
+
+/*
+ Data of `cnc_rdsoc_tldat`, `cnc_wrsoc_tldat`.
+ */
+typedef struct IODBSOCTLDAT {
+    union IODBSOCTLDAT_u u;
+} IODBSOCTLDAT;
+
+/*
  cnc_rdspcss: the commanded spindle speed, constant surface speed and
  maximum spindle speed.
  */
@@ -1794,6 +4364,34 @@ typedef struct ODBSPDLNAME {
     char suff2;
     char suff3;
 } ODBSPDLNAME;
+
+/*
+ The `sp_name` member of `IODBTLSPWTNAME`.
+ */
+typedef struct IODBTLSPWTNAME_sp_name {
+    char sp_pos1[5];
+    char sp_pos2[5];
+    char sp_pos3[5];
+    char sp_pos4[5];
+} IODBTLSPWTNAME_sp_name;
+
+/*
+ The `wt_name` member of `IODBTLSPWTNAME`.
+ */
+typedef struct IODBTLSPWTNAME_wt_name {
+    char wt_pos1[5];
+    char wt_pos2[5];
+    char wt_pos3[5];
+    char wt_pos4[5];
+} IODBTLSPWTNAME_wt_name;
+
+/*
+ Data of `cnc_rdspdlwaitname`.
+ */
+typedef struct IODBTLSPWTNAME {
+    struct IODBTLSPWTNAME_sp_name sp_name;
+    struct IODBTLSPWTNAME_wt_name wt_name;
+} IODBTLSPWTNAME;
 
 /*
  One speed of cnc_rdspeed.
@@ -1844,6 +4442,40 @@ typedef struct ODBSPLOAD {
     struct LOADELM spload;
     struct LOADELM spspeed;
 } ODBSPLOAD;
+
+/*
+ Data of `cnc_rdsuo_prm_name`.
+ */
+typedef struct ODBSUODATA {
+    char data_name[4];
+    LONG prm_val;
+    LONG frc_dgt;
+} ODBSUODATA;
+
+/*
+ `cnc_rdsvfeedback`: Read Servo feedback multiplication data.
+ */
+typedef struct ODBSVFBACK {
+    short dummy;
+    short dtype;
+    LONG fback[MAX_AXIS];
+    LONG afback[MAX_AXIS];
+} ODBSVFBACK;
+
+/*
+ One element of `ODBTUNSTAT.stat`.
+ */
+typedef struct ODBTUNSTAT_stat {
+    short status;
+    short dummy;
+} ODBTUNSTAT_stat;
+
+/*
+ Data of `cnc_rdsvgtungstat`.
+ */
+typedef struct ODBTUNSTAT {
+    struct ODBTUNSTAT_stat stat[MAX_AXIS];
+} ODBTUNSTAT;
 
 /*
  cnc_rdsvmeter: one axis's servo load.
@@ -2027,6 +4659,60 @@ typedef struct ODBSYSS3_STR {
 } ODBSYSS3_STR;
 
 /*
+ `cnc_rdtdicubedata`, `cnc_wrtdicubedata`: read cube data.
+ */
+typedef struct ODBCUB {
+    LONG ref_vtx[3];
+    LONG adj_vtx1[3];
+    LONG adj_vtx2[3];
+    LONG adj_vtx3[3];
+    unsigned char n_unit;
+    char cb_form;
+} ODBCUB;
+
+/*
+ Data of `cnc_rdtdicubeinfo`.
+ */
+typedef struct ODBNME {
+    short ob_type;
+    unsigned short obj_no;
+    unsigned short nme_no;
+    unsigned short suffix;
+    char name[12];
+} ODBNME;
+
+/*
+ `cnc_rdtdicubeinfo`: read cube infomation.
+ */
+typedef struct ODBCBI {
+    unsigned short cb_no;
+    struct ODBNME nme_set;
+    unsigned char shp_no;
+    char cd_form;
+} ODBCBI;
+
+/*
+ `cnc_rdtdicylinderdata`, `cnc_wrtdicylinderdata`: read cylinder data.
+ */
+typedef struct ODBCYL {
+    LONG sta_pnt[3];
+    LONG end_pnt[3];
+    LONG radius;
+    unsigned char n_unit;
+    char cb_form;
+} ODBCYL;
+
+/*
+ `cnc_rdtdiplanedata`, `cnc_wrtdiplanedata`: read plane data.
+ */
+typedef struct ODBPLN {
+    LONG point[3];
+    LONG vect[3];
+    unsigned char n_unit;
+    char cb_form;
+} ODBPLN;
+
+/*
  cnc_rdtimer: a timer as minutes and milliseconds.
  */
 typedef struct IODBTIME {
@@ -2059,6 +4745,38 @@ typedef struct ODBTLDATA {
 } ODBTLDATA;
 
 /*
+ `cnc_rdtlgeomsize`, `cnc_wrtlgeomsize`: read tool geom size data.
+ */
+typedef struct IODBTLGS {
+    LONG data1;
+    LONG data2;
+    char tooltype;
+    char install;
+    char toolname[9];
+    char dummy;
+} IODBTLGS;
+
+/*
+ `cnc_rdtlgeomsize_ext2`, `cnc_wrtlgeomsize_ext2`: read extended tool geom size data.
+ */
+typedef struct IODBTLGSEXT2 {
+    LONG data1;
+    LONG data2;
+    LONG data3;
+    LONG data4;
+    LONG data5;
+    LONG data6;
+    LONG data7;
+    LONG data8;
+    LONG data9;
+    LONG data10;
+    char tooltype;
+    char install;
+    char holder;
+    char toolname[9];
+} IODBTLGSEXT2;
+
+/*
  cnc_rdtlinfo: the tool life management's limits.
  */
 typedef struct ODBTLINFO {
@@ -2067,6 +4785,15 @@ typedef struct ODBTLINFO {
     LONG max_minute;
     LONG max_cycle;
 } ODBTLINFO;
+
+/*
+ Data of `cnc_rdtlmgr_check`.
+ */
+typedef struct IODBTLMGR_CHECK {
+    LONG T_code;
+    short tool_num;
+    short reserve;
+} IODBTLMGR_CHECK;
 
 /*
  cnc_rdtlmsinfo: the tool length measurement: T and M codes, the
@@ -2239,91 +4966,45 @@ typedef struct IODBTLMNG {
 } IODBTLMNG;
 
 /*
- cnc_rdtooldata: the tool data of a punch press.
+ The `item` member of `IODBTLM2`.
  */
-typedef struct IODBTLDT {
-    short slct;
-    LONG tool_no;
-    LONG x_axis_ofs;
-    LONG y_axis_ofs;
-    LONG turret_pos;
-    LONG chg_tl_no;
-    LONG punch_count;
-    LONG tool_life;
-    LONG m_tl_radius;
-    LONG m_tl_angle;
-    char tl_shape;
-    LONG tl_size_i;
-    LONG tl_size_j;
-    LONG tl_angle;
-    char x_axis_dec;
-    char y_axis_dec;
-    char turret_dec;
-    char m_radius_dec;
-    char m_angle_dec;
-    char tl_size_i_dec;
-    char tl_size_j_dec;
-    char tl_angle_dec;
-    short reserve[2];
-} IODBTLDT;
+typedef union IODBTLM2_item {
+    unsigned char data1;
+    short data2;
+    LONG data4;
+} IODBTLM2_item;
 
 /*
- One tool of a tool life group (ODBTG.data).
+ `cnc_rdtool2`: read data.
  */
-typedef struct ODBTG_DATA {
-    LONG tuse_num;
-    LONG tool_num;
-    LONG length_num;
-    LONG radius_num;
-    LONG tinfo;
-} ODBTG_DATA;
-
-/*
- cnc_rdtoolgrp: a tool life group with its tools (5 as declared; the
- caller's `length` says how many really fit).
- */
-typedef struct ODBTG {
-    short grp_num;
-    short dummy[2];
-    LONG ntool;
-    LONG life;
-    LONG count;
-    struct ODBTG_DATA data[5];
-} ODBTG;
-
-/*
- cnc_rdtoolinfo: the tool data sizes of a punch press.
- */
-typedef struct ODBPTLINF {
-    short tld_max;
-    short mlt_max;
+typedef struct IODBTLM2 {
+    short number;
     short reserve;
-    short tld_size[16];
-    short mlt_size[16];
-    short reserves[16];
-} ODBPTLINF;
+    union IODBTLM2_item item;
+} IODBTLM2;
 
 /*
- cnc_rdusegrpid: the next, in-use and selected tool life groups
- (`datano` and `type` untouched).
+ Data of `cnc_rdtool_cause`.
  */
-typedef struct ODBUSEGR {
-    short datano;
-    short type;
-    LONG next;
-    LONG use;
-    LONG slct;
-} ODBUSEGR;
+typedef struct IODBTOOL_CAUSENME {
+    char cause1[8];
+    char cause2[8];
+    char cause3[8];
+    char cause4[8];
+    char cause5[8];
+} IODBTOOL_CAUSENME;
 
 /*
- cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
- all axes.
+ Data of `cnc_rdtool_inhis`, `cnc_rdtool_outhis`.
  */
-typedef struct IODBWCSF {
-    short datano;
-    short type;
-    LONG data[MAX_AXIS];
-} IODBWCSF;
+typedef struct IODBTOOL_DATE {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} IODBTOOL_DATE;
 
 /*
  cnc_regtool_f2: one tool of the tool management data with 40 custom
@@ -2396,6 +5077,494 @@ typedef struct IODBTLMNG_F2 {
 } IODBTLMNG_F2;
 
 /*
+ Data of `cnc_rdtool_inhis`.
+ */
+typedef struct IODBTOOL_INHIS {
+    short tool_no;
+    short reserve;
+    struct IODBTOOL_DATE date;
+    struct IODBTLMNG_F2 tool_f2;
+} IODBTOOL_INHIS;
+
+/*
+ Data of `cnc_rdtool_outhis`.
+ */
+typedef struct IODBTOOL_OUTHIS {
+    short tool_no;
+    short cause;
+    struct IODBTOOL_DATE date;
+    struct IODBTLMNG_F2 tool_f2;
+} IODBTOOL_OUTHIS;
+
+/*
+ cnc_rdtooldata: the tool data of a punch press.
+ */
+typedef struct IODBTLDT {
+    short slct;
+    LONG tool_no;
+    LONG x_axis_ofs;
+    LONG y_axis_ofs;
+    LONG turret_pos;
+    LONG chg_tl_no;
+    LONG punch_count;
+    LONG tool_life;
+    LONG m_tl_radius;
+    LONG m_tl_angle;
+    char tl_shape;
+    LONG tl_size_i;
+    LONG tl_size_j;
+    LONG tl_angle;
+    char x_axis_dec;
+    char y_axis_dec;
+    char turret_dec;
+    char m_radius_dec;
+    char m_angle_dec;
+    char tl_size_i_dec;
+    char tl_size_j_dec;
+    char tl_angle_dec;
+    short reserve[2];
+} IODBTLDT;
+
+/*
+ One tool of a tool life group (ODBTG.data).
+ */
+typedef struct ODBTG_DATA {
+    LONG tuse_num;
+    LONG tool_num;
+    LONG length_num;
+    LONG radius_num;
+    LONG tinfo;
+} ODBTG_DATA;
+
+/*
+ cnc_rdtoolgrp: a tool life group with its tools (5 as declared; the
+ caller's `length` says how many really fit).
+ */
+typedef struct ODBTG {
+    short grp_num;
+    short dummy[2];
+    LONG ntool;
+    LONG life;
+    LONG count;
+    struct ODBTG_DATA data[5];
+} ODBTG;
+
+/*
+ cnc_rdtoolinfo: the tool data sizes of a punch press.
+ */
+typedef struct ODBPTLINF {
+    short tld_max;
+    short mlt_max;
+    short reserve;
+    short tld_size[16];
+    short mlt_size[16];
+    short reserves[16];
+} ODBPTLINF;
+
+/*
+ Data of `cnc_rdtoollife_data`, `cnc_rdtoollife_tcodedata`.
+ */
+typedef struct IODBTLLF {
+    LONG T_code_sum;
+    LONG life_count_sum;
+    LONG rem_life_sum;
+    LONG max_life_sum;
+    LONG notice_life_sum;
+    short tools_sum;
+    char notice_stat_sum;
+    char count_type_sum;
+} IODBTLLF;
+
+/*
+ Data of `cnc_rdtoollifed_data`.
+ */
+typedef struct IODBTLLFD {
+    short order;
+    short tool_num;
+    LONG life_count;
+    LONG rem_life;
+    LONG max_life;
+    LONG notice_life;
+    char life_stat;
+    char count_type;
+    short reserve;
+} IODBTLLFD;
+
+/*
+ Data of `cnc_rdusbdevinfo`.
+ */
+typedef struct ODBUSBSIZE {
+    ULONG totalsize_h;
+    ULONG totalsize_l;
+    ULONG freesize_h;
+    ULONG freesize_l;
+} ODBUSBSIZE;
+
+/*
+ Data of `cnc_rdusbfilelist`.
+ */
+typedef struct IDBUSBFILE {
+    char path[256];
+    ULONG offset;
+    short req_num;
+    unsigned short req_attrib;
+    char sort;
+    char req_comment;
+    char req_total;
+    char dummy;
+} IDBUSBFILE;
+
+/*
+ Data of `cnc_rdusbfilelist`.
+ */
+typedef struct ODBUSBINFO {
+    short f_num;
+    char next_entry;
+    char dummy;
+    ULONG total;
+} ODBUSBINFO;
+
+/*
+ Data of `cnc_rdusbfilelist`.
+ */
+typedef struct ODBUSBFILE {
+    ULONG size;
+    unsigned short attribute;
+    unsigned short long_name;
+    unsigned short year;
+    unsigned char mon;
+    unsigned char day;
+    unsigned char hour;
+    unsigned char min;
+    unsigned char sec;
+    unsigned char dummy;
+    char fname[36];
+    char comment[64];
+} ODBUSBFILE;
+
+/*
+ cnc_rdusegrpid: the next, in-use and selected tool life groups
+ (`datano` and `type` untouched).
+ */
+typedef struct ODBUSEGR {
+    short datano;
+    short type;
+    LONG next;
+    LONG use;
+    LONG slct;
+} ODBUSEGR;
+
+/*
+ The `w` member of `ODBWVDT2_u`.
+ */
+typedef struct ODBWVDT2_u_w {
+    short axis;
+    char kind;
+} ODBWVDT2_u_w;
+
+/*
+ The `io` member of `ODBWVDT2_u`.
+ */
+typedef struct ODBWVDT2_u_io {
+    short no;
+    char adr;
+    char bit;
+} ODBWVDT2_u_io;
+
+/*
+ The `u` member of `ODBWVDT2`.
+ */
+typedef union ODBWVDT2_u {
+    struct ODBWVDT2_u_w w;
+    struct ODBWVDT2_u_io io;
+} ODBWVDT2_u;
+
+/*
+ The `start` member of `ODBWVDT2`.
+ */
+typedef struct ODBWVDT2_start {
+    char year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+} ODBWVDT2_start;
+
+/*
+ The `stop` member of `ODBWVDT2`.
+ */
+typedef struct ODBWVDT2_stop {
+    char year;
+    char month;
+    char day;
+    char hour;
+    char minute;
+    char second;
+} ODBWVDT2_stop;
+
+/*
+ Data of `cnc_rdwavedata2`.
+ */
+typedef struct ODBWVDT2 {
+    short channel;
+    union ODBWVDT2_u u;
+    struct ODBWVDT2_start start;
+    struct ODBWVDT2_stop stop;
+    short t_cycle;
+    short adjust;
+    short data[8192];
+} ODBWVDT2;
+
+/*
+ cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
+ all axes.
+ */
+typedef struct IODBWCSF {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBWCSF;
+
+/*
+ `cnc_rdwkcdsfms64`, `cnc_rdwkcdshft64`, `cnc_wrwkcdsfms64` …: read  work coordinate shift.
+ */
+typedef struct IODBWCSF64 {
+    short dummy1;
+    short type;
+    short dummy2[2];
+    struct REALDATA data[MAX_AXIS];
+} IODBWCSF64;
+
+/*
+ `cnc_rdzofsr64`: read work zero offset value(area specified).
+ */
+typedef struct IODBZOR64 {
+    short datano_s;
+    short type;
+    short datano_e;
+    short dummy;
+    struct REALDATA data[256];
+} IODBZOR64;
+
+/*
+ Data of `cnc_read_cexeinfo`.
+ */
+typedef struct CEXEINFO {
+    LONG cond;
+    LONG cycle;
+    LONG count;
+    LONG time;
+    LONG dummy1;
+    LONG dummy2;
+    LONG dummy3;
+    LONG dummy4;
+} CEXEINFO;
+
+/*
+ One element of `ODBTUNREQ.stat`.
+ */
+typedef struct ODBTUNREQ_stat {
+    short status;
+    short dummy;
+} ODBTUNREQ_stat;
+
+/*
+ Data of `cnc_reqsvgtung`.
+ */
+typedef struct ODBTUNREQ {
+    struct ODBTUNREQ_stat stat[MAX_AXIS];
+} ODBTUNREQ;
+
+/*
+ Data of `cnc_robo_rdalmmsg`.
+ */
+typedef struct IODBRBALMMSG {
+    char msg[152];
+} IODBRBALMMSG;
+
+/*
+ Data of `cnc_robo_rdcomsetting`.
+ */
+typedef struct IODBRBTOPSIG {
+    char unit_type;
+    char adr_type;
+    unsigned short address;
+} IODBRBTOPSIG;
+
+/*
+ Data of `cnc_robo_rdcomsetting`.
+ */
+typedef struct IODBRBPOWERSIG {
+    char unit_type;
+    char adr_type;
+    unsigned short address;
+    char bit;
+    char reserve[3];
+} IODBRBPOWERSIG;
+
+/*
+ Data of `cnc_robo_rdcomsetting`.
+ */
+typedef struct IODBRBCOMSET {
+    struct IODBRBTOPSIG di_top;
+    struct IODBRBTOPSIG do_top;
+    struct IODBRBPOWERSIG power_on;
+    unsigned short di_offset;
+    unsigned short do_offset;
+    unsigned char property;
+    char reserve[3];
+} IODBRBCOMSET;
+
+/*
+ Data of `cnc_robo_rdgrouplist`.
+ */
+typedef struct ODBRBGRPLIST {
+    char select;
+    unsigned char robot_program;
+    char nc_program_folder[213];
+    char nc_program_name[33];
+    char comment[52];
+} ODBRBGRPLIST;
+
+/*
+ Data of `cnc_robo_rdselectedsignals`, `cnc_robo_wrselectedsignals`.
+ */
+typedef struct IODBRBSUMMARY {
+    char signal_type;
+    char reserve;
+    unsigned short no;
+} IODBRBSUMMARY;
+
+/*
+ Data of `cnc_robo_rdsignals`.
+ */
+typedef struct ODBRBSIGNAL {
+    char type;
+    char state;
+    unsigned short no;
+    char name[76];
+} ODBRBSIGNAL;
+
+/*
+ Data of `cnc_robo_rdsignals2`.
+ */
+typedef struct IODBRBSIGNAL2 {
+    char type;
+    char state;
+    unsigned short no;
+    char name[73];
+    char reserve[3];
+} IODBRBSIGNAL2;
+
+/*
+ Data of `cnc_robo_wrgroup`.
+ */
+typedef struct IDBRBGROUP {
+    unsigned char robot_program;
+    char nc_program_folder[213];
+    char nc_program_name[33];
+} IDBRBGROUP;
+
+/*
+ Data of `cnc_rstrt_rdlpmppnt`.
+ */
+typedef struct ODBRSTMPINFO {
+    LONG u_block_num;
+    LONG mltpiece_all;
+    LONG mltpiece_exe;
+    char u_file_name[246];
+} ODBRSTMPINFO;
+
+/*
+ Data of `cnc_rstrt_rdpnt`, `cnc_rstrt_wrpnt`.
+ */
+typedef struct IODBRSTINFO {
+    LONG seq_no;
+    LONG c_blck_cnt;
+    LONG t_blck_cnt;
+    LONG call_from_no;
+    LONG call_from_blck;
+    short prg_rep;
+    short seq_rep;
+    short c_blck_rep;
+    short nest_lv;
+    char prg_name[246];
+    char dummy1[2];
+    char call_from_prg[246];
+    char dummy2[2];
+    char edit_flag;
+    char reserve;
+    short repeat;
+    LONG wait_m_code;
+} IODBRSTINFO;
+
+/*
+ Data of `cnc_rstrt_rdpnt2`, `cnc_rstrt_wrpnt2`.
+ */
+typedef struct IODBRSTINFO2 {
+    LONG seq_no;
+    LONG c_blck_cnt;
+    LONG t_blck_cnt;
+    LONG call_from_no;
+    LONG call_from_blck;
+    short prg_rep;
+    short seq_rep;
+    short c_blck_rep;
+    short nest_lv;
+    char prg_name[246];
+    char dummy1[2];
+    char call_from_prg[246];
+    char dummy2[2];
+    char edit_flag;
+    char reserve;
+    short repeat;
+    LONG wait_m_code;
+    char time_s;
+    char time_m;
+    char time_h;
+    char time_d;
+    LONG id_no;
+    LONG reserve2[3];
+} IODBRSTINFO2;
+
+/*
+ Data of `cnc_rstrt_rdpntlist`.
+ */
+typedef struct ODBRSTLIST {
+    char prg_name[246];
+    char dummy[2];
+    LONG seq_no;
+    LONG c_blck_cnt;
+} ODBRSTLIST;
+
+/*
+ Data of `cnc_rstrt_rdpntlist2`.
+ */
+typedef struct ODBRSTLIST2 {
+    char prg_name[246];
+    char status;
+    char dummy;
+    LONG seq_no;
+    LONG wait_m_code;
+    LONG c_blck_cnt;
+    char time_s;
+    char time_m;
+    char time_h;
+    char time_d;
+    LONG id_no;
+    LONG reserve[3];
+} ODBRSTLIST2;
+
+/*
+ Data of `cnc_sdtreadsmpl2`.
+ */
+typedef struct ODBSD {
+    unsigned short *chadata;
+    LONG *count;
+} ODBSD;
+
+/*
  cnc_sdtsetchnl: one servo data sampling channel: `type` the datum
  sampled (0..37 of an axis, 0..12 of a spindle, `axis` -1), `chno` the
  channel (1..8), `axis` the axis (-1 a spindle; 1..the path's axes on
@@ -2409,6 +5578,107 @@ typedef struct IDBSDTCHAN {
     char axis;
     unsigned short shift;
 } IDBSDTCHAN;
+
+/*
+ Data of `cnc_sdtsetchnl2`, `cnc_sdtstartsmpl2`.
+ */
+typedef struct PMC_DATA {
+    short unittype;
+    char adr;
+    unsigned char bit;
+    unsigned short no;
+} PMC_DATA;
+
+/*
+ Data of `cnc_sdtsetchnl2`.
+ */
+typedef struct IDBSDTCHAN2 {
+    short type;
+    char chno;
+    char axis;
+    unsigned short shift;
+    struct PMC_DATA io[16];
+} IDBSDTCHAN2;
+
+/*
+ Data of `cnc_sdtstartsmpl2`.
+ */
+typedef struct TRG_DATA {
+    LONG seq_no;
+    struct PMC_DATA pmc_trg;
+} TRG_DATA;
+
+/*
+ Data of `cnc_searchusbfile`.
+ */
+typedef struct IDBUSBSEARCH {
+    char path[256];
+    char s_fname[36];
+    unsigned short req_attrib;
+    char sort;
+    char dummy;
+} IDBUSBSEARCH;
+
+/*
+ `cnc_sendkey`: Send MDI key information.
+ */
+typedef struct ODBKEYINFO {
+    ULONG key[2];
+} ODBKEYINFO;
+
+/*
+ Data of `cnc_srcsrdexstat`.
+ */
+typedef struct ODBSRCSST {
+    short acc_element;
+    short err_general;
+    short err_id_no;
+    short err_attr;
+    short err_op_data;
+} ODBSRCSST;
+
+/*
+ Data of `cnc_srcsrdidinfo`, `cnc_srcswridinfo`.
+ */
+typedef struct IODBIDINF {
+    LONG id_no;
+    short drv_no;
+    short acc_element;
+    short err_general;
+    short err_id_no;
+    short err_id_name;
+    short err_attr;
+    short err_unit;
+    short err_min_val;
+    short err_max_val;
+    short id_name_len;
+    short id_name_max;
+    char id_name[60];
+    LONG attr;
+    short unit_len;
+    short unit_max;
+    char unit[12];
+    LONG min_val;
+    LONG max_val;
+} IODBIDINF;
+
+/*
+ Data of `cnc_srcsrdlayout`.
+ */
+typedef struct ODBSRCSLYT {
+    short spndl[4];
+    short servo[8];
+    char axis_name[8];
+} ODBSRCSLYT;
+
+/*
+ Data of `cnc_srttl_getdata`.
+ */
+typedef struct IODBTLMNG_SORT {
+    short tl_num;
+    short reserve;
+    struct IODBTLMNG_F2 data;
+} IODBTLMNG_SORT;
 
 /*
  cnc_statinfo: CNC status information.
@@ -2443,6 +5713,79 @@ typedef struct ODBST2 {
     short ext_opt;
     short restart;
 } ODBST2;
+
+/*
+ Data of `cnc_statinfo_dmg`.
+ */
+typedef struct OUT_STATINF_DMG {
+    short dummy[1];
+    short dmg;
+    short dummy1[7];
+} OUT_STATINF_DMG;
+
+/*
+ Data of `cnc_sysconfig`.
+ */
+typedef struct ODBSYSC {
+    char slot_no_p[16];
+    char slot_no_l[16];
+    short mod_id[16];
+    short soft_id[16];
+    char s_series[16][5];
+    char s_version[16][5];
+    char dummy[16];
+    short m_rom;
+    short s_rom;
+    char svo_soft[8];
+    char pmc_soft[6];
+    char lad_soft[6];
+    char mcr_soft[8];
+    char spl1_soft[6];
+    char spl2_soft[6];
+    short frmmin;
+    short drmmin;
+    short srmmin;
+    short pmcmin;
+    short crtmin;
+    short sv1min;
+    short sv3min;
+    short sicmin;
+    short posmin;
+    short drmmrc;
+    short drmarc;
+    short pmcmrc;
+    short dmaarc;
+    short iopt;
+    short hdiio;
+    short frmsub;
+    short drmsub;
+    short srmsub;
+    short sv5sub;
+    short sv7sub;
+    short sicsub;
+    short possub;
+    short hamsub;
+    short gm2gr1;
+    short crtgr2;
+    short gm1gr2;
+    short gm2gr2;
+    short cmmrb;
+    short sv5axs;
+    short sv7axs;
+    short sicaxs;
+    short posaxs;
+    short hanaxs;
+    short romr64;
+    short srmr64;
+    short dr1r64;
+    short dr2r64;
+    short iopio2;
+    short hdiio2;
+    short cmmrb2;
+    short romfap;
+    short srmfap;
+    short drmfap;
+} ODBSYSC;
 
 /*
  cnc_sysinfo: CNC system information.
@@ -2494,6 +5837,285 @@ typedef struct ODBSYSEX {
 } ODBSYSEX;
 
 /*
+ Data of `cnc_tool_in3`, `cnc_wredgedata`.
+ */
+typedef struct IODBTLMNG_MU_EDGE_DATA {
+    LONG life_count;
+    LONG max_life;
+    LONG rest_life;
+    unsigned char life_stat;
+    unsigned char cust_bits;
+    short reserve_s;
+    short H_code;
+    short D_code;
+    LONG spindle_speed;
+    LONG feedrate;
+    short G_code;
+    short W_code;
+    LONG custom1;
+    LONG custom2;
+    LONG custom3;
+    LONG custom4;
+} IODBTLMNG_MU_EDGE_DATA;
+
+/*
+ `cnc_tool_srh_free_min_num`: Serch free number.
+ */
+typedef struct ODBTL_FREE_NUM {
+    short edge_gp;
+    short ofs_h;
+    short ofs_d;
+    short ofs_g;
+    short ofs_w;
+    short reserve[3];
+} ODBTL_FREE_NUM;
+
+/*
+ Data of `cnc_tpl_read`.
+ */
+typedef struct ODBTPNLINTF {
+    unsigned char status;
+    unsigned char dummy[3];
+    short coord_x;
+    short coord_y;
+} ODBTPNLINTF;
+
+/*
+ One element of `IDBTPCMD.val`.
+ */
+typedef struct IDBTPCMD_val {
+    LONG val;
+    LONG dec;
+} IDBTPCMD_val;
+
+/*
+ Data of `cnc_tprog_editcmd`.
+ */
+typedef struct IDBTPCMD {
+    LONG cmd_id;
+    LONG integer[4];
+    struct IDBTPCMD_val val[4];
+    char text[64];
+} IDBTPCMD;
+
+/*
+ Data of `cnc_tprog_rdcmd`.
+ */
+typedef struct ODBTPEDTCMD {
+    char cmd_num;
+    char cmd[31];
+    char word_num;
+    char word[31];
+} ODBTPEDTCMD;
+
+/*
+ The `create` member of `ODBTPAPRG`.
+ */
+typedef struct ODBTPAPRG_create {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} ODBTPAPRG_create;
+
+/*
+ The `edit` member of `ODBTPAPRG`.
+ */
+typedef struct ODBTPAPRG_edit {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} ODBTPAPRG_edit;
+
+/*
+ The `convert` member of `ODBTPAPRG`.
+ */
+typedef struct ODBTPAPRG_convert {
+    short year;
+    short mon;
+    short day;
+    short hour;
+    short min;
+    short sec;
+} ODBTPAPRG_convert;
+
+/*
+ Data of `cnc_tprog_rdprg_by_name`, `cnc_tprog_rdprg_by_num`.
+ */
+typedef struct ODBTPAPRG {
+    short format_version;
+    short func_version;
+    LONG size;
+    struct ODBTPAPRG_create create;
+    struct ODBTPAPRG_edit edit;
+    struct ODBTPAPRG_convert convert;
+    ULONG attr;
+    char name_copy[36];
+    char prg_name[36];
+    char comment[20];
+    ULONG axis;
+    char out_nc_prg[36];
+    LONG reserve[2];
+} ODBTPAPRG;
+
+/*
+ Data of `cnc_tprog_wrinfo`.
+ */
+typedef struct IDBTPINFO {
+    char prg_name[36];
+    char comment[20];
+    ULONG axis;
+    char out_nc_prg[36];
+    LONG reserve[2];
+} IDBTPINFO;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_EULER_FMT {
+    double orign[3];
+    double i;
+    double j;
+    double k;
+    LONG reserve[24];
+} IDBTWP_EULER_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_RPY_FMT {
+    double orign[3];
+    double i;
+    double j;
+    double k;
+    short turn;
+    short reserve0;
+    LONG reserve[23];
+} IDBTWP_RPY_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_3P_FMT {
+    double p1[3];
+    double p2[3];
+    double p3[3];
+    double sft[3];
+    double rot;
+    LONG reserve[10];
+} IDBTWP_3P_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_2VCT_FMT {
+    double orign[3];
+    double vtr1[3];
+    double vtr2[3];
+    LONG reserve[18];
+} IDBTWP_2VCT_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct IDBTWP_PJCT_FMT {
+    double orign[3];
+    double i;
+    double j;
+    double k;
+    LONG reserve[24];
+} IDBTWP_PJCT_FMT;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef union IDBTWPFORM {
+    struct IDBTWP_EULER_FMT euler;
+    struct IDBTWP_RPY_FMT rpy;
+    struct IDBTWP_3P_FMT p3;
+    struct IDBTWP_2VCT_FMT vct2;
+    struct IDBTWP_PJCT_FMT pjct;
+} IDBTWPFORM;
+
+/*
+ Data of `cnc_twp_rdfmt_mtrx`.
+ */
+typedef struct ODBFTRMTX {
+    double orgn[3];
+    double rot[3][3];
+} ODBFTRMTX;
+
+/*
+ `cnc_wksft_rnge64`, `cnc_zofs_rnge64`: read validity of work zero offset.
+ */
+typedef struct ODBDATRNG64 {
+    double data_min;
+    double data_max;
+    LONG dec;
+    LONG status;
+} ODBDATRNG64;
+
+/*
+ Data of `cnc_wr1length`, `cnc_wr1radius`, `cnc_wrt1info`.
+ */
+typedef struct IDBITD2 {
+    short datano;
+    LONG type;
+    LONG data;
+} IDBITD2;
+
+/*
+ `cnc_wrlswork`: white laser work data.
+ */
+typedef struct IDBLSWORK {
+    short slct;
+    short skeyinf;
+    short reserve[14];
+} IDBLSWORK;
+
+/*
+ `cnc_wrrelpos64`: set origin / preset relative axis position.
+ */
+typedef struct IDBWRR64 {
+    short datano;
+    short type;
+    short dummy[2];
+    struct REALDATA data[MAX_AXIS];
+} IDBWRR64;
+
+/*
+ `cnc_wrrotvolc2`: write rotate volumetric compensation data (2).
+ */
+typedef struct IODBROTVOLC {
+    LONG lin[3];
+    LONG rot[3];
+} IODBROTVOLC;
+
+/*
+ `cnc_wrtrqlimit`: Set torque limit data.
+ */
+typedef struct IDBTRQ {
+    short datano;
+    short type;
+    unsigned short data[MAX_AXIS];
+} IDBTRQ;
+
+/*
+ `cnc_wrzofs64`: write work zero offset value.
+ */
+typedef struct IODBZOFS64 {
+    short datano;
+    short type;
+    short dummy[2];
+    struct REALDATA data[MAX_AXIS];
+} IODBZOFS64;
+
+/*
  pmc_getdtailerr: detail of the last PMC error.
  */
 typedef struct ODBPMCERR {
@@ -2508,6 +6130,17 @@ typedef struct ODBPMCERR {
 typedef struct ODBPMCALM {
     char almmsg[128];
 } ODBPMCALM;
+
+/*
+ `pmc_rdpmcaddr`: read PMC address information.
+ */
+typedef struct ODBPMCADR {
+    unsigned short pmc_adr;
+    unsigned short adr_attr;
+    ULONG adr;
+    ULONG top;
+    ULONG num;
+} ODBPMCADR;
 
 /*
  One area of ODBPMCINF.
@@ -2578,6 +6211,19 @@ typedef struct IODBPMC {
     short datano_e;
     union IODBPMC_u u;
 } IODBPMC;
+
+/*
+ `pmc_rdpmcrng_ext`: read PMC data.
+ */
+typedef struct IODBPMCEXT {
+    short type_a;
+    short type_d;
+    short datano_s;
+    short datano_e;
+    short err_code;
+    short reserved;
+    void *data;
+} IODBPMCEXT;
 
 /*
  pmc_rdpmctitle: the PMC program's title data (texts, not terminated).
@@ -2853,6 +6499,98 @@ typedef struct ODBOPHIS4 {
     union ODBOPHIS4_u u;
 } ODBOPHIS4;
 
+/*
+ Data of `cnc_wrtofsdrctinp64`.
+ */
+typedef struct REALMES64 {
+    double mes_val;
+    LONG dec_val;
+    LONG dummy;
+} REALMES64;
+
+/*
+ Data of `cnc_rdedgedatapage`.
+ */
+typedef struct IDBTLMGR_ADD_INFO {
+    LONG dsp_info;
+    short data_kind;
+} IDBTLMGR_ADD_INFO;
+
+/*
+ The `item` member of `IDBTLM`.
+ */
+typedef union IDBTLM_item {
+    unsigned char data1;
+    short data2;
+    LONG data4;
+} IDBTLM_item;
+
+/*
+ Data of `cnc_magazinesrch`, `cnc_toolsrch`.
+ */
+typedef struct IDBTLM {
+    short data_id;
+    union IDBTLM_item item;
+} IDBTLM;
+
+/*
+ `cnc_magazinesrch`, `cnc_toolsrch`: Search  magazine management data.
+ */
+typedef struct IDBTLM_SRCHDT {
+    struct IDBTLM id_info;
+    short srch_cond;
+    short add_cond;
+} IDBTLM_SRCHDT;
+
+/*
+ Data of `cnc_magazinesrch`.
+ */
+typedef struct IODBTLMAG_SRCHINFO {
+    struct IODBTLMAG2 startInfo;
+    struct IODBTLMAG result;
+} IODBTLMAG_SRCHINFO;
+
+/*
+ Data of `cnc_rdedgedatapage`.
+ */
+typedef struct IODBTLMGR_EDG {
+    short data_no;
+    short edge_no;
+} IODBTLMGR_EDG;
+
+/*
+ The `page` member of `IODBTLMGR_PAGE_info`.
+ */
+typedef struct IODBTLMGR_PAGE_info_page {
+    struct IODBTLMGR_EDG s_edg;
+    struct IODBTLMGR_EDG e_edg;
+} IODBTLMGR_PAGE_info_page;
+
+/*
+ The `info` member of `IODBTLMGR_PAGE`.
+ */
+typedef union IODBTLMGR_PAGE_info {
+    struct IODBTLMGR_EDG edg;
+    struct IODBTLMGR_PAGE_info_page page;
+} IODBTLMGR_PAGE_info;
+
+/*
+ Data of `cnc_rdedgedatapage`.
+ */
+typedef struct IODBTLMGR_PAGE {
+    union IODBTLMGR_PAGE_info info;
+} IODBTLMGR_PAGE;
+
+/*
+ Data of `cnc_rdtoollife_data`.
+ */
+typedef struct IODBTL_RDTYPE {
+    unsigned char type;
+    unsigned char data_type;
+    char renew;
+    char reserve;
+} IODBTL_RDTYPE;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -2893,6 +6631,18 @@ short cnc_absolute_bg(unsigned short FlibHndl, short a, short b, struct ODBAXIS 
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_absolute_mgi(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_abspoint(unsigned short FlibHndl,
+                   short a,
+                   short b,
+                   short c,
+                   long d,
+                   struct ODBPOS *e,
+                   struct ODBEXEC *f);
 
 /*
  Reads the acceleration/deceleration delay of axis `axis` (1..) or of
@@ -3044,6 +6794,12 @@ short cnc_cancel_prm(unsigned short FlibHndl, short a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_cannedcycle(unsigned short FlibHndl, struct ODBCANCMD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_cdautoset(unsigned short FlibHndl, short a, short b);
 
 /*
@@ -3167,6 +6923,17 @@ short cnc_condense(unsigned short FlibHndl, short type, long prog_num);
 short cnc_confirm_restart(unsigned short FlibHndl, unsigned short a);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_coordre(unsigned short FlibHndl,
+                  short a,
+                  short b,
+                  short c,
+                  struct ODBPOS *d,
+                  struct ODBEXEC *e);
+
+/*
  Copies program `top_prog` to a new program `bottom_prog`.
  */
 short cnc_copyprog(unsigned short FlibHndl, long top_prog, long bottom_prog);
@@ -3266,6 +7033,12 @@ short cnc_diagnoss(unsigned short FlibHndl,
                    struct ODBDGN *diag);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_diagnoss64(unsigned short FlibHndl, short a, short b, short c, struct ODBDGN64 *d);
+
+/*
  Reads the distance to go of axis `axis` (1..) or of every axis (-1): an
  axis above 32 is EW_ATTRIB before any traffic; every whole value record
  answered (at most 32) must fit in `length` (4 + 4 bytes a record, read
@@ -3316,6 +7089,12 @@ short cnc_dncend(unsigned short FlibHndl);
  (the CNC is sent that code); other values are EW_DATA.
  */
 short cnc_dncend2(unsigned short FlibHndl, short rslt);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dncprgname(unsigned short FlibHndl, struct ODBDNCPRG *a);
 
 /*
  Starts a DNC operation: the CNC runs the program while it arrives.
@@ -3372,6 +7151,12 @@ short cnc_dscopyfile(unsigned short FlibHndl, char *a, char *b);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_dsfile_req(unsigned short FlibHndl, char *a, struct ODB_IN_DSFILE_REQ *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_dsrdclose(unsigned short FlibHndl);
 
 /*
@@ -3391,6 +7176,16 @@ short cnc_dsread(unsigned short FlibHndl, long *a, char *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_dssearch(unsigned short FlibHndl, char *a, char *b, unsigned short c, unsigned long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dsstat_rdfile(unsigned short FlibHndl,
+                        char *a,
+                        struct ODB_IN_STAT_DSFILE *b,
+                        struct OUT_DSINFO *c,
+                        struct OUT_DSFILE *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -3480,6 +7275,12 @@ short cnc_dtsvinfo(unsigned short FlibHndl, short *dtsvver);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_dtsvmntinfo(unsigned short FlibHndl, struct ODBDSMNT *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_dtsvrdcram(unsigned short FlibHndl, long a, long *b, char *c);
 
 /*
@@ -3493,6 +7294,18 @@ short cnc_dtsvrderrmsg(unsigned short FlibHndl, short a, char *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_dtsvrdfile(unsigned short FlibHndl, char *a, char *b, short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvrdpgdir(unsigned short FlibHndl, char *a, short b, struct ODBDSDIR *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvrdset(unsigned short FlibHndl, struct IODBDSSET *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -3529,6 +7342,35 @@ short cnc_dtsvupload(unsigned short FlibHndl, char *a);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_dtsvwrfile(unsigned short FlibHndl, char *a, char *b, short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dtsvwrset(unsigned short FlibHndl, struct IODBDSSET *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dvpunchvolc(unsigned short FlibHndl, struct ODBVOLCOMP *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dvreadvolc(unsigned short FlibHndl, struct ODBVOLCOMP *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_dwell(unsigned short FlibHndl,
+                short a,
+                short b,
+                short c,
+                struct ODBPOS *d,
+                struct ODBEXEC *e);
 
 /*
  Ends the download started by cnc_dwnstart: the CNC stores the program
@@ -3596,6 +7438,12 @@ short cnc_edplutosmpl(unsigned short FlibHndl);
 short cnc_end_async_wrparam(unsigned short FlibHndl, short *a);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_exebufstat(unsigned short FlibHndl, struct ODBEXEC *a);
+
+/*
  Reads the name and O number of the running program. The name as a C
  string: the characters up to its NUL, zeros after (FANUC's library
  copies it so, whatever follows in the answer).
@@ -3652,6 +7500,12 @@ short cnc_file_cpmv_restart(unsigned short FlibHndl, short a);
 short cnc_file_cpmv_start(unsigned short FlibHndl, short a, char *b, char *c, unsigned short d);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_finstate(unsigned short FlibHndl, struct ODBFIN *a);
+
+/*
  Frees a handle. The last handle to a CNC closes its connections.
  */
 short cnc_freelibhndl(unsigned short FlibHndl);
@@ -3687,6 +7541,12 @@ short cnc_getcncmodel(unsigned short FlibHndl, short *model);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_getcrntscrn(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_getdllversion(unsigned short FlibHndl, struct ODBDLLVERSION *vers);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -3776,6 +7636,12 @@ short cnc_getregprgnum(unsigned short FlibHndl, short *a, short *b, short *c);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_getrtmioinfo(unsigned short FlibHndl, short a, struct IODBRTMIOR *b, unsigned long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_getrtmiorngnum(unsigned short FlibHndl, unsigned long *a);
 
 /*
@@ -3829,6 +7695,12 @@ short cnc_getzofsnum_qset(unsigned short FlibHndl, short *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_hdck_nochange_info(unsigned short FlibHndl, short path_no, struct ODBAHDCK *hdck_info);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_ifsb_autoset(unsigned short FlibHndl);
 
 /*
@@ -3836,6 +7708,18 @@ short cnc_ifsb_autoset(unsigned short FlibHndl);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_ifsb_reset(unsigned short FlibHndl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_incpoint(unsigned short FlibHndl,
+                   short a,
+                   short b,
+                   short c,
+                   long d,
+                   struct ODBPOS *e,
+                   struct ODBEXEC *f);
 
 /*
  Inserts tool number `data` into tool life group `datano` as its
@@ -3867,6 +7751,12 @@ short cnc_lctcdcstm(unsigned short FlibHndl,
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_machine3_ex(unsigned short FlibHndl, short a, short b, short c, struct ODBAXIS_EX *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -3920,6 +7810,12 @@ short cnc_mcs_rdcompparam(unsigned short FlibHndl, char *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_mcs_rdheader(unsigned short FlibHndl, short a, struct ODBMCSHEAD *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_mcs_rdparainfo2(unsigned short FlibHndl,
                           short a,
                           short *b,
@@ -3954,7 +7850,19 @@ short cnc_mcs_wractset(unsigned short FlibHndl, short a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_mcs_wrheader(unsigned short FlibHndl, short a, struct ODBMCSHEAD *b, char c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_mcs_wrparam(unsigned short FlibHndl, short a, short b, struct IODBPSD *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_getexceptparam(unsigned short FlibHndl, short a, short b, struct IODBMDDEXCEPTPRM *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -3972,7 +7880,19 @@ short cnc_mdd_lock(unsigned short FlibHndl, short a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_mdd_rdinfo(unsigned short FlibHndl, short a, struct ODBMDDINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_mdd_register(unsigned short FlibHndl, short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdd_setexceptparam(unsigned short FlibHndl, short a, short b, struct IODBMDDEXCEPTPRM *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4026,7 +7946,76 @@ short cnc_mdg_msgsrch(unsigned short FlibHndl, short a, long b, long *c);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_mdg_rdalminfo(unsigned short FlibHndl, long a, long *b, struct IODBMDGINFO *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdalminfoview2(unsigned short FlibHndl,
+                             short a,
+                             short b,
+                             short c,
+                             union ODBVIEWGRP2 *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_mdg_rdalmnum(unsigned short FlibHndl, long *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdcontinfo(unsigned short FlibHndl,
+                         short *a,
+                         long *b,
+                         long *c,
+                         struct IODBMDGINFO *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rddtmsg(unsigned short FlibHndl,
+                      short a,
+                      struct IODBMDGINFO *b,
+                      struct ODBMDGDTMSG *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdflow(unsigned short FlibHndl,
+                     short a,
+                     short b,
+                     struct IODBMDGINFO *c,
+                     struct ODBMDGFLOW *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdheatsimlt(unsigned short FlibHndl, short a, short b, short c, struct ODBLOAD *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdlatchedalm(unsigned short FlibHndl, struct IODBMDGINFO *a, short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdloadlvl(unsigned short FlibHndl, short a, short b, short c, struct ODBLOAD *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdmsg(unsigned short FlibHndl, struct IODBMDGINFO *a, struct ODBMDGMSG *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4038,7 +8027,25 @@ short cnc_mdg_rdmsgnum(unsigned short FlibHndl, short a, long *b);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_mdg_rdmsgordr(unsigned short FlibHndl, short a, long b, long *c, struct ODBMDGMSG *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdorderalmno(unsigned short FlibHndl, struct IODBMDGINFO *a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_mdg_rdsysinfo(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_mdg_rdwvdata(unsigned short FlibHndl, short a, char b, struct ODBMDGWVDT *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4070,6 +8077,23 @@ short cnc_modal_bg(unsigned short FlibHndl, short a, short b, struct ODBMDL *c);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_msr_rdhis_pmc_ex(unsigned short FlibHndl,
+                           short hst_no,
+                           short expmcsgnl_no,
+                           struct ODBEXPMCSGNL *expmcsgnl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_msr_rdmon_pmcinf_ex(unsigned short FlibHndl,
+                              short expmcsgnl_no,
+                              struct ODBEXPMCSGNL *expmcsgnl);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_mtdtnstart(unsigned short FlibHndl);
 
 /*
@@ -4083,6 +8107,24 @@ short cnc_ncg_protcancel(unsigned short FlibHndl, char *a, long b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_newprog(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_nextdistance(unsigned short FlibHndl, short a, short b, struct IODBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_nextdistance_bg(unsigned short FlibHndl, short a, short b, struct IODBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_opdi(unsigned short FlibHndl, short a, struct ODBOPDI *b);
 
 /*
  Creates a program or (a name ending in '/') a folder: `path` sent in a
@@ -4264,6 +8306,15 @@ short cnc_pdf_rdactpt_bg(unsigned short FlibHndl, char *a, long *b);
 short cnc_pdf_rdactpt_bgedt(unsigned short FlibHndl, char *a, long *b);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_rdcallstack(unsigned short FlibHndl,
+                          unsigned short a,
+                          short *b,
+                          struct ODBNESTPDF *c);
+
+/*
  Reads the main program's path name: 256 bytes written, the answer's up
  to its NUL and zeros after.
 
@@ -4283,6 +8334,12 @@ short cnc_pdf_rdmainpt(unsigned short FlibHndl, char *a, long *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_pdf_rdprgname(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pdf_rdrmtdgn(unsigned short FlibHndl, char a, short *b, struct OUT_RMTDGNINFO *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4408,6 +8465,12 @@ short cnc_pdf_slctmain(unsigned short FlibHndl, char *path);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_pdf_startrmtdgn(unsigned short FlibHndl, char a, short b, struct OUT_RMTDGNINFO *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_pdf_stoprmtdgn(unsigned short FlibHndl, char a, short b);
 
 /*
@@ -4436,13 +8499,58 @@ short cnc_pdf_wractpt_bgedt(unsigned short FlibHndl, char *a, short b, long *c);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_pmclad_screen(unsigned short FlibHndl,
+                        int iCommand,
+                        void *pParam,
+                        struct PMCLAD_MESSAGE *pstMessage);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_pmmchkalm(unsigned short FlibHndl, long a, long *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_pmmget(unsigned short FlibHndl, long a, long b, long c, struct ODBPMMGET *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_pmmgetend(unsigned short FlibHndl, long a, long b, long c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmmgetstart(unsigned short FlibHndl, long a, long b, long c, struct IDBPMMGTI *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmminit(unsigned short FlibHndl, long a, struct ODBPMMSLV *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmmiochanl(unsigned short FlibHndl, struct ODBPMMIO *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmmprmpage(unsigned short FlibHndl, long a, long b, long c, long d, struct ODBPMMPRP *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_pmmsysdt(unsigned short FlibHndl, long a, long b, struct ODBPMMSYD *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4466,7 +8574,49 @@ short cnc_powc_rd_clear_time(unsigned short FlibHndl, unsigned long *clear_time)
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_powc_rd_cycle_data(unsigned short FlibHndl,
+                             short lev,
+                             short atrb,
+                             struct ODBPOWCCYC *powccyc);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_powc_rd_history(unsigned short FlibHndl,
+                          short unit,
+                          short *num,
+                          struct ODBPOWCHISALL *powchisall);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_powc_rd_outer_set(unsigned short FlibHndl, struct ODBPOWCOUTER *powcouter);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_powc_wr_outer_set(unsigned short FlibHndl, short data_no, struct ODBPOWCOUTER *powcouter);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_preset_prm(unsigned short FlibHndl, short a, struct IODBBOOK *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_progdigit(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_prstwkcd64(unsigned short FlibHndl, short a, struct IDBWRA64 *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4524,6 +8674,12 @@ short cnc_pwcm_clear_consump(unsigned short FlibHndl);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_pwcm_rd_consump(unsigned short FlibHndl, short type, struct ODBPWCMDAT *power);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rct_cpSlctPtn(unsigned short FlibHndl, long a, unsigned short b, unsigned short c);
 
 /*
@@ -4534,6 +8690,24 @@ short cnc_rct_rdCtgInfo(unsigned short FlibHndl,
                         unsigned short a,
                         unsigned short *b,
                         unsigned short *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdGrpName(unsigned short FlibHndl, unsigned short a, struct IODBRCT_CSTMNAME *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdItem(unsigned short FlibHndl, unsigned short a, struct IODBRCT_ITEM *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_rdPtnSlct(unsigned short FlibHndl, unsigned short a, struct IODBRCT_GRPPTN *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4551,13 +8725,37 @@ short cnc_rct_rdptnadjst(unsigned short FlibHndl, short a, short *b, short *c, s
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rct_rdslctptnname(unsigned short FlibHndl, struct ODBRCT_SLCTPTNNAME *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rct_rdtunemoni(unsigned short FlibHndl, short a, short *b, short *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rct_wrGrpName(unsigned short FlibHndl, unsigned short a, struct IODBRCT_CSTMNAME *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_wrItem(unsigned short FlibHndl, unsigned short a, struct IODBRCT_ITEM *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rct_wrOvLp(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rct_wrPtnSlct(unsigned short FlibHndl, unsigned short a, struct IODBRCT_GRPPTN *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4690,6 +8888,42 @@ short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rd5dmacmov(unsigned short FlibHndl, short *a, struct ODB5DHDL *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd5dpulse(unsigned short FlibHndl, short a, short *b, struct ODB5DPLS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd5dtooltip(unsigned short FlibHndl, short *a, struct ODB5DHDL *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_grpaxisinfo(unsigned short FlibHndl, short *a, struct ODBGRPAXIS *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_grppos(unsigned short FlibHndl, short *a, struct ODBGRPPOS *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_grppos3(unsigned short FlibHndl, short *a, struct ODBGRPPOS *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rd_hm_cmpl_stat(unsigned short FlibHndl, long *a, unsigned long *b, short *c, short *d);
 
 /*
@@ -4702,7 +8936,50 @@ short cnc_rd_hm_execprog(unsigned short FlibHndl, unsigned short *a, char *b);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rd_hm_progstat(unsigned short FlibHndl, long a, short *b, struct ODBHMPROGSTAT *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_ctgry_cstm_str_data(unsigned short FlibHndl,
+                                    short a,
+                                    short *b,
+                                    struct IODBMMCTGRYCSTMSTRING *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_icn_cstm_str_data(unsigned short FlibHndl,
+                                  short a,
+                                  short *b,
+                                  struct IODBMMICONCSTMSTRING *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rd_mm_icn_cstm_str_num(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_mc_ctgry_def_data(unsigned short FlibHndl,
+                                  short a,
+                                  short *b,
+                                  struct IODBMMMCCTGRYDEFDAT *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_mc_dflt_scrn_inf(unsigned short FlibHndl,
+                                 short a,
+                                 short b,
+                                 short *c,
+                                 struct ODBMMSCRNINF *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4714,7 +8991,79 @@ short cnc_rd_mm_mc_message_string(unsigned short FlibHndl, long a, char *b, long
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rd_mm_mc_scrn_def_data(unsigned short FlibHndl,
+                                 short a,
+                                 short *b,
+                                 struct IODBMMMCSCRNDEFDAT *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rd_mm_mc_scrn_def_num(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_mm_setting_data(unsigned short FlibHndl,
+                             short a,
+                             short b,
+                             short *c,
+                             struct ODBMMSCRNINF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_scrlwaitmcode(unsigned short FlibHndl, short a, short *b, struct IODBWAITMCODE *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_disp_stat(unsigned short FlibHndl, struct IODBSFSGDSPSTAT *sfsg_dsp_stat);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_loginf(unsigned short FlibHndl, struct ODBSFSGLOGINF *sfsgloginf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_search(unsigned short FlibHndl,
+                         struct IODBSFSGSIGINF *sfsg_siginf,
+                         short extract,
+                         short *no_sig);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_sighis(unsigned short FlibHndl,
+                         struct IODBSFSGSIGHIS *sfsg_sighis,
+                         unsigned char *sig_his_pmc,
+                         unsigned char *sig_his_dcs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_siginf(unsigned short FlibHndl,
+                         short sno_sig,
+                         short *len_sig,
+                         short extract,
+                         struct ODBSFSGSIGINFEX *sfsg_siginf_ex_pmc,
+                         struct ODBSFSGSIGINFEX *sfsg_siginf_ex_dcs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rd_sfsg_signal_num(unsigned short FlibHndl, struct ODBSFSGSIGNALNUM *sfsg_signal_num);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4729,6 +9078,12 @@ short cnc_rd_sfsg_update_count(unsigned short FlibHndl, unsigned short *update_c
 short cnc_rdactdofs(unsigned short FlibHndl, short a, struct IODBZOFS *b);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdactpos_w(unsigned short FlibHndl, short a, struct ODBWACT *b);
+
+/*
  Reads the execution pointer: program number and block number (4 bytes
  written into each `long`).
 
@@ -4737,6 +9092,12 @@ short cnc_rdactdofs(unsigned short FlibHndl, short a, struct IODBZOFS *b);
  `blk_no` must be NULL or point to a writable long.
  */
 short cnc_rdactpt(unsigned short FlibHndl, long *prog_no, long *blk_no);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdactpt_w(unsigned short FlibHndl, short a, struct ODBACTPTW *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4803,6 +9164,16 @@ short cnc_rdalmhistry2(unsigned short FlibHndl,
                        struct ODBAHIS2 *alm_hst);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdalmhistry3(unsigned short FlibHndl,
+                       unsigned short a,
+                       unsigned short b,
+                       unsigned short c,
+                       struct ODBAHIS3 *d);
+
+/*
  Reads alarm history entries `s_number..=e_number` (1 = newest) with their
  modal and position snapshot into ODBAHIS5, two entries an exchange until
  the range is read or the CNC has no more; when an exchange's entries do
@@ -4846,6 +9217,12 @@ short cnc_rdalminfo(unsigned short FlibHndl,
                     short alm_type,
                     short length,
                     struct ALMINFO *almmsg);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdalminfo2(unsigned short FlibHndl, short a, short b, short c, struct ALMINFO2 *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4901,6 +9278,17 @@ short cnc_rdaxisdata(unsigned short FlibHndl,
                      struct ODBAXDT *axdata);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdaxisdata64(unsigned short FlibHndl,
+                       short a,
+                       short *b,
+                       short c,
+                       short *d,
+                       struct ODBAXDT64 *e);
+
+/*
  Reads the names of the controlled axes: `*data_num` in is the room in
  `axisname`, out the names written (at most the CNC's axis count); below
  1 it is EW_LENGTH without traffic.
@@ -4912,12 +9300,24 @@ short cnc_rdaxisdata(unsigned short FlibHndl,
 short cnc_rdaxisname(unsigned short FlibHndl, short *data_num, struct ODBAXISNAME *axisname);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdaxisstatus_bg(unsigned short FlibHndl, short *a, struct ODBAXSTS_BG *b);
+
+/*
  Reads the number of blocks executed (4 bytes written into the `long`).
 
  # Safety
  `prog_bc` must be NULL or point to a writable long.
  */
 short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdblkdist(unsigned short FlibHndl, struct REALDATA *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -4938,6 +9338,18 @@ short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdcdslctprm(unsigned short FlibHndl, short a, unsigned short *b, struct IODBCTPR *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcdslctprmm(unsigned short FlibHndl, short a, unsigned short *b, struct IODBCTPRM *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdcenter64(unsigned short FlibHndl,
                      double *a,
                      double *b,
@@ -4945,6 +9357,12 @@ short cnc_rdcenter64(unsigned short FlibHndl,
                      long *d,
                      long *e,
                      long *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdchopping(unsigned short FlibHndl, struct ODBCHOPPING *chopping);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -5014,7 +9432,19 @@ short cnc_rdcommand(unsigned short FlibHndl,
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdcommand64(unsigned short FlibHndl, short a, short b, short *c, struct ODBCMD64 *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdcomopemsg(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdcomparam(unsigned short FlibHndl, struct IODBCPRM *a);
 
 /*
  Reads how many additional work coordinate systems (G54.1 P1..) the CNC
@@ -5152,6 +9582,18 @@ short cnc_rddynamic(unsigned short FlibHndl, short axis, short length, struct OD
 short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct ODBDY2 *buf);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rddynamic3(unsigned short FlibHndl, short a, short b, struct ODBDY3 *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rddynamic3m(unsigned short FlibHndl, short a, short b, struct ODBDY3M *c);
+
+/*
  cnc_rddynamic2 with the alarm status as a short (ODBDYO8; `length` ≥ 44
  for one axis, 540 for all): the same nine subpackets. The program numbers
  are their low 16 bits sign-extended, as FANUC's library writes them
@@ -5167,6 +9609,12 @@ short cnc_rddynamico8(unsigned short FlibHndl, short axis, short length, struct 
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdedgeactive(unsigned short FlibHndl, short a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdembedf_inf(unsigned short FlibHndl, char *a, short b, struct ODBEMBEDFINF *c);
 
 /*
  Reads the Ethernet board's type and device.
@@ -5210,6 +9658,12 @@ short cnc_rdexecprog2(unsigned short FlibHndl, unsigned short *a, short *b, shor
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdexecprog3(unsigned short FlibHndl, short *a, struct ODBEXEPRGINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdexecprog_bg(unsigned short FlibHndl, unsigned short *a, short *b, char *c);
 
 /*
@@ -5240,6 +9694,12 @@ short cnc_rdfeedmode(unsigned short FlibHndl, short a, short *b);
  `fix` must be NULL or point to a writable ODBFIX.
  */
 short cnc_rdfixcycle(unsigned short FlibHndl, struct ODBFIX *fix);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdfixoffs(unsigned short FlibHndl, short a, short b, struct ODBFOFS *c);
 
 /*
  Reads the servo ID information of axis `axis` the CNC saved (its last ID
@@ -5281,13 +9741,31 @@ short cnc_rdfromspindleid2(unsigned short FlibHndl, short sp_no, struct ODBCSPID
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdfsraminfo2(unsigned short FlibHndl, unsigned long a, struct ODBSRAMIF2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdftrq_data(unsigned short FlibHndl, short a, long b, short *c, unsigned long *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdftrq_info(unsigned short FlibHndl, short a, struct ODBP_FTRQ_PRM_INF *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdftrq_storecount(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdgcodem(unsigned short FlibHndl, short a, short b, short *c, struct ODBGCD *d);
 
 /*
  Reads the tool life group of tool number `tno` (`type` = `tno`, `dummy`
@@ -5348,6 +9826,12 @@ short cnc_rdhipitchr(unsigned short FlibHndl, long a, long *b, long *c);
 short cnc_rdhissgnl(unsigned short FlibHndl, struct IODBSIG *sig);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhissgnl2(unsigned short FlibHndl, struct IODBSIG2 *a);
+
+/*
  Reads the signals the operation history records (as many 16-byte records
  as the CNC sends, at most 60; datano and type untouched).
 
@@ -5360,7 +9844,69 @@ short cnc_rdhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdholmes64(unsigned short FlibHndl, struct ODBHOLDATA64 *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhpccset(unsigned short FlibHndl, struct IODBHPST *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhpcctuac(unsigned short FlibHndl, struct IODBHPAC *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhpcctupr(unsigned short FlibHndl, struct IODBHPPR *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhsparam(unsigned short FlibHndl, long a, struct HSPINFO *b, union HSPDATA *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhsparamm(unsigned short FlibHndl, long a, struct HSPINFO *b, union HSPDATAM *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdhsprminfo(unsigned short FlibHndl, long a, struct HSPINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdifsb_almstate(unsigned short FlibHndl, char *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_as_amp_sp(unsigned short FlibHndl,
+                           short a,
+                           short b,
+                           short *c,
+                           struct ODBIFSBSPAMP *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_as_amp_sv(unsigned short FlibHndl,
+                           short a,
+                           short b,
+                           short *c,
+                           struct ODBIFSBSVAMP *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -5372,7 +9918,118 @@ short cnc_rdifsb_as_hrv(unsigned short FlibHndl, unsigned short *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdifsb_as_plsmod(unsigned short FlibHndl,
+                           short a,
+                           short b,
+                           short *c,
+                           struct ODBIFSBPLSMDL *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_as_sv_axis(unsigned short FlibHndl, short a, short *b, struct IODBIFSBAXIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_comstatdtl(unsigned short FlibHndl,
+                            short a,
+                            short b,
+                            short c,
+                            short *d,
+                            struct ODBIFSBCOMSTATDTL *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_fssbunt(unsigned short FlibHndl,
+                         short a,
+                         short b,
+                         short *c,
+                         struct ODBIFSBFSSBUNT *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_info(unsigned short FlibHndl, short a, struct ODBIFSBINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_mainte_sp(unsigned short FlibHndl, short a, short *b, struct ODBIFSBMNTSP *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_mainte_sv(unsigned short FlibHndl, short a, short *b, struct ODBIFSBMNTSV *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_slu_pm(unsigned short FlibHndl,
+                        short a,
+                        short b,
+                        short *c,
+                        struct ODBIFSBSLUPM *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_slu_sp(unsigned short FlibHndl,
+                        short a,
+                        short b,
+                        short *c,
+                        struct ODBIFSBSLUSP *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_slu_sv(unsigned short FlibHndl,
+                        short a,
+                        short b,
+                        short *c,
+                        struct ODBIFSBSLUSV *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_slvunt(unsigned short FlibHndl,
+                        short a,
+                        short b,
+                        short c,
+                        short *d,
+                        struct ODBIFSBSLVUNT *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_sysalm(unsigned short FlibHndl, short a, struct ODBIFSBSYSALM *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdifsb_warnhst_cnt(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdifsb_warnhst_msg(unsigned short FlibHndl,
+                             short a,
+                             short *b,
+                             struct ODBIFSBWARNHSTMSG *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -5384,13 +10041,72 @@ short cnc_rdifsb_warning_cnt(unsigned short FlibHndl, short *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdifsb_warning_msg(unsigned short FlibHndl,
+                             short a,
+                             short *b,
+                             struct ODBIFSBWARNINGMSG *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdindexdata(unsigned short FlibHndl, short a, short b, short *c, struct IODBINDEXDAT *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdindexinfo(unsigned short FlibHndl, short a, struct ODBINDEXINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdindexofs(unsigned short FlibHndl, short a, long *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdindexposdata(unsigned short FlibHndl,
+                         short a,
+                         short b,
+                         short *c,
+                         struct IODBINDEXPOSDAT *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdindexprm(unsigned short FlibHndl, short a, struct IODBINDEXPRM *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdioassigned(unsigned short FlibHndl, unsigned short *a, unsigned short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdipltp(unsigned short FlibHndl, struct ODBIPL *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdipltp_bg(unsigned short FlibHndl, struct ODBIPL *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlalmhistry(unsigned short FlibHndl,
+                       unsigned short a,
+                       unsigned short b,
+                       unsigned short c,
+                       struct ODBLALMHIS *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -5427,6 +10143,36 @@ short cnc_rdloopgain(unsigned short FlibHndl,
                      long *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlrninfo(unsigned short FlibHndl, short a, struct ODBLRNINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlrninfo2(unsigned short FlibHndl, short a, struct ODBLRNINFO2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlrninfol(unsigned short FlibHndl, short a, short b, short *c, struct ODBLRNINFOL *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlrnprfcmnt(unsigned short FlibHndl, short a, short b, short *c, struct ODBLRNPRF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdlrntrnsdata(unsigned short FlibHndl, short a, struct ODBTRNS *b);
+
+/*
  Reads the custom macro variable `number` (common #100.., #500.., system
  variables): `mcr_val · 10^-dec_val`; a vacant variable reads as
  mcr_val 0, dec_val -1. `length` must be at least 10 (the l32 ODBM).
@@ -5441,6 +10187,12 @@ short cnc_rdmacro(unsigned short FlibHndl, short number, short length, struct OD
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdmacro2(unsigned short FlibHndl, short a, short b, struct ODBM *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacro3(unsigned short FlibHndl, long a, short b, struct ODBM3 *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -5522,6 +10274,24 @@ short cnc_rdmacror(unsigned short FlibHndl,
 short cnc_rdmacror2(unsigned short FlibHndl, unsigned long s_no, unsigned long *num, double *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacror2_name(unsigned short FlibHndl,
+                         unsigned long a,
+                         unsigned long *b,
+                         struct IODBMRN *pdb);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmacror4(unsigned short FlibHndl,
+                    unsigned long a,
+                    unsigned long *b,
+                    struct IODBMRN4 *pdb);
+
+/*
  Reads the tool management data number in each of the `*num` pots `data`
  names (`magazine`, `pot`) into its `tool_index`, 118 pots per request;
  `*num` becomes the pots read. `*num` < 1 is EW_NUMBER without traffic.
@@ -5589,6 +10359,12 @@ short cnc_rdmdiprgstat(unsigned short FlibHndl, unsigned short *stat);
 short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmdlconfig(unsigned short FlibHndl, struct ODBMDLC *a);
+
+/*
  Reads the menu switch signals, bit k the k-th switch (the low 16 bits of
  the 32-bit answer).
 
@@ -5614,6 +10390,12 @@ short cnc_rdmofs(unsigned short FlibHndl, short a, short b, long *c);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdmovestate(unsigned short FlibHndl, short a, short *b, unsigned char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdmovrlapm(unsigned short FlibHndl, short a, short b, struct IODBOVLM *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -5655,6 +10437,21 @@ short cnc_rdnspdl(unsigned short FlibHndl, short *spdl);
  `tool` must be NULL or point to a writable ODBTLIFE3.
  */
 short cnc_rdntool(unsigned short FlibHndl, short grp_num, struct ODBTLIFE3 *tool);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdnutatortofs_vect(unsigned short FlibHndl,
+                             short ax_idx,
+                             short *ax_cnt,
+                             struct ODBSUOVECT *su_ofs_info);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdofslength(unsigned short FlibHndl, struct ODBOFSLEN *a);
 
 /*
  Reads the operator message history's size: most entries, entries held,
@@ -5822,6 +10619,12 @@ short cnc_rdopmsg3(unsigned short FlibHndl, short type, short *num, struct OPMSG
 short cnc_rdopmsg3m(unsigned short FlibHndl, short a, short *b, struct OPMSG3 *c);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdopmsgmps(unsigned short FlibHndl, short a, short *b, struct OPMSGMPS *c);
+
+/*
  Reads the software operator panel's general purpose switches: `sgnal`
  bit k is switch k + 1 (`type` sent and written back as its low byte,
  0..255; `datano` left as it was).
@@ -5882,7 +10685,19 @@ short cnc_rdoptfuncinfo(unsigned short FlibHndl, short a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdoverstore(unsigned short FlibHndl, struct IODBOVSTR *code);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdoverstoremode(unsigned short FlibHndl, long *mode);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpalaxis(unsigned short FlibHndl, short axis, struct IODBPALAX *palax);
 
 /*
  Reads the numbers and attributes of up to `read_no` parameters from
@@ -5949,6 +10764,17 @@ short cnc_rdparam3(unsigned short FlibHndl,
                    short length,
                    short type,
                    struct IODBPSD *param);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdparam64(unsigned short FlibHndl,
+                    short a,
+                    short b,
+                    short c,
+                    short d,
+                    struct IODBPSD64 *e);
 
 /*
  Reads several parameters, all axes each, with their attributes. The
@@ -6130,6 +10956,12 @@ short cnc_rdpdf_subdirn(unsigned short FlibHndl, char *path, struct ODBPDFNFIL *
 short cnc_rdpglockstat(unsigned short FlibHndl, long *a, long *b);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpitchblkinfo(unsigned short FlibHndl, struct IODBPITCHBLK *a);
+
+/*
  Reads the number of pitch error compensation points.
 
  # Safety
@@ -6150,6 +10982,12 @@ short cnc_rdpitchr(unsigned short FlibHndl,
                    short datano_e,
                    short length,
                    struct IODBPI *pi);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdplutosmpl(unsigned short FlibHndl, long *a, struct ODBRENPLT *b);
 
 /*
  Reads the names of the CNC's maintenance items from the `start_num`-th
@@ -6222,6 +11060,12 @@ short cnc_rdpmacroinfo(unsigned short FlibHndl, struct ODBPMINF *pmacinfo);
 short cnc_rdpmacroinfo2(unsigned short FlibHndl, struct ODBPMINF2 *pmacinfo);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpmacroinfo3(unsigned short FlibHndl, struct ODBPMINF3 *a);
+
+/*
  Reads the P-code macro variables `s_no`..`e_no` into `buf->data`, 8
  bytes each: at most to the end of `s_no`'s range (#99, #499, #999,
  #19999, #99999, #199999; a Series 15: #99, #199, #999, #99999) 179 a
@@ -6276,6 +11120,27 @@ short cnc_rdpmacror2(unsigned short FlibHndl,
 short cnc_rdpmacror_bg(unsigned short FlibHndl, unsigned long a, unsigned long *b, double *c);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpmacvalflag(unsigned short FlibHndl, struct ODBPMVALFLG *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpmcaxisinfo(unsigned short FlibHndl,
+                        short axis,
+                        short type,
+                        struct ODBPMCAXISINFO *pmcaxisinfo);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpmmprmtp(unsigned short FlibHndl, struct IDBPMMPRP *a);
+
+/*
  Reads the position deviation of each spindle (spindle position control),
  one `long` per spindle (at most 8; 4 bytes written per `long`).
 
@@ -6303,6 +11168,12 @@ short cnc_rdposerrs2(unsigned short FlibHndl, struct ODBPSER *poserr);
 short cnc_rdposerrz(unsigned short FlibHndl, long *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdposfig(unsigned short FlibHndl, short a, short b, short *c, struct ODBPOSFIG *d);
+
+/*
  Reads positions with decimals, units and names: `type` 0 absolute,
  1 machine, 2 relative, 3 distance to go, -1 all four; `*data_num` in =
  room (at least 1), out = axes written. As FANUC's library, a 16i-class
@@ -6315,6 +11186,18 @@ short cnc_rdposerrz(unsigned short FlibHndl, long *data);
  writable ODBPOS.
  */
 short cnc_rdposition(unsigned short FlibHndl, short type, short *data_num, struct ODBPOS *position);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdposofs(unsigned short FlibHndl, struct ODBPOFS *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpressure(unsigned short FlibHndl, short a, short *b, struct ODBPRESSURE *c);
 
 /*
  Reads the running and main program numbers (the low 16 bits of each, as
@@ -6353,6 +11236,12 @@ short cnc_rdprgrmupdtcnt(unsigned short FlibHndl, unsigned long *a);
  `proc_time` must be NULL or point to a writable ODBPTIME.
  */
 short cnc_rdproctime(unsigned short FlibHndl, struct ODBPTIME *proc_time);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdproctime3(unsigned short FlibHndl, char *a, struct ODBPTIME3 *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -6448,6 +11337,12 @@ short cnc_rdprogdir3(unsigned short FlibHndl,
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdprogdir4(unsigned short FlibHndl, short a, long b, short *c, PRGDIR4 *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdprogdir4_w(unsigned short FlibHndl,
                        short a,
                        short b,
@@ -6506,6 +11401,12 @@ short cnc_rdprogline2(unsigned short FlibHndl,
                       unsigned long *e);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprotect2(unsigned short FlibHndl, short type, char *path, struct ODBPRTCT2 *prtct);
+
+/*
  Reads the program restart information in one exchange: for the block
  counter, M, T, S and B codes the number of values the CNC sent
  (`data_info`) and the values, then the restart position and distance
@@ -6518,6 +11419,12 @@ short cnc_rdprogline2(unsigned short FlibHndl,
  `prs` must point to a writable ODBPRS.
  */
 short cnc_rdprstrinfo(unsigned short FlibHndl, struct ODBPRS *prs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdprstrinfom(unsigned short FlibHndl, struct ODBPRSM *a);
 
 /*
  Reads the operation levels data kind `kind` needs to be modified
@@ -6533,13 +11440,75 @@ short cnc_rdprt_lvl(unsigned short FlibHndl, short kind, short *rd_lvl, short *w
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdpscdproc2(unsigned short FlibHndl, short a, short *b, struct IODBPSCD2 *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdptcmdsize(unsigned short FlibHndl, short cmd_id, long *cmd_size);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdpthis_aux(unsigned short FlibHndl,
+                      long hist_idx,
+                      long path,
+                      struct ODBPTHIS_AUX *odbpthis_aux);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpthis_ax(unsigned short FlibHndl,
+                     long hist_idx,
+                     long path,
+                     long axis,
+                     struct ODBPTHIS_AX *odbpthis_ax);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpthis_gb(unsigned short FlibHndl, long hist_idx, struct ODBPTHIS_GB *odbpthis_gb);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpthis_log(unsigned short FlibHndl,
+                      long hist_idx,
+                      long type,
+                      long path,
+                      long idx,
+                      long *count,
+                      struct ODBPTHIS_LOG *odbpthis_log);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdpthis_num(unsigned short FlibHndl, long *hist_num);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpthis_pt(unsigned short FlibHndl,
+                     long hist_idx,
+                     long path,
+                     struct ODBPTHIS_PT *odbpthis_pt);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdpthis_sp(unsigned short FlibHndl,
+                     long hist_idx,
+                     long path,
+                     long spdl,
+                     struct ODBPTHIS_SP *odbpthis_sp);
 
 /*
  Reads the cutter compensation mode, the axes of its plane and the offset
@@ -6582,6 +11551,34 @@ short cnc_rdrepeatval_ext(unsigned short FlibHndl, long *a, long *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdrmtdgn(unsigned short FlibHndl, long *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrtmiowrenbl(unsigned short FlibHndl, struct IODBRTMIO *a, unsigned long *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrtmiowrenblbit(unsigned short FlibHndl, struct IODBRTMIO *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdrtmiowrenblrng(unsigned short FlibHndl, struct IODBRTMIOR *a, long b, unsigned long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdscdldat(unsigned short FlibHndl,
+                    short s_number,
+                    short e_number,
+                    short length,
+                    struct SCDL_1D *scdldat);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -6681,6 +11678,37 @@ short cnc_rdsndmsg(unsigned short FlibHndl, char *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdsoc_curdat(unsigned short FlibHndl, short a, struct ODBSOCCUR *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsoc_tlatrr(unsigned short FlibHndl,
+                       short a,
+                       short *b,
+                       short c,
+                       short *d,
+                       short *e,
+                       short *f,
+                       struct ODBSOCTLATTR *g);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsoc_tldat(unsigned short FlibHndl,
+                      short a,
+                      short *b,
+                      short c,
+                      short *d,
+                      char e,
+                      struct IODBSOCTLDAT *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdsoc_wave(unsigned short FlibHndl, long *a, unsigned short *b);
 
 /*
@@ -6734,6 +11762,12 @@ short cnc_rdspdlnamem(unsigned short FlibHndl, short *data_num, struct ODBSPDLNA
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdspdlspeed(unsigned short FlibHndl, short a, short b, long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdspdlwaitname(unsigned short FlibHndl, struct IODBTLSPWTNAME *a);
 
 /*
  Reads the actual feed rate (`type` 0), spindle speed (1) or both (-1)
@@ -6835,6 +11869,36 @@ short cnc_rdsrvtcmd(unsigned short FlibHndl, short *a);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdsrvtsa(unsigned short FlibHndl, short *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsuo_prm_name(unsigned short FlibHndl,
+                         short data_idx,
+                         struct ODBSUODATA *su_data,
+                         short *length);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsuofs_vect(unsigned short FlibHndl,
+                       short ax_idx,
+                       short *ax_cnt,
+                       struct ODBSUOVECT *su_ofs_info);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsvfeedback(unsigned short FlibHndl, short a, struct ODBSVFBACK *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdsvgtungstat(unsigned short FlibHndl, short a, short b, struct ODBTUNSTAT *c);
 
 /*
  Reads the servo load meters: `*data_num` in = room, out = axes written;
@@ -6955,6 +12019,33 @@ short cnc_rdtdicolordata(unsigned short FlibHndl,
 short cnc_rdtdicomment(unsigned short FlibHndl, short *length, char *comment);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtdicubedata(unsigned short FlibHndl, unsigned short a, struct ODBCUB *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtdicubeinfo(unsigned short FlibHndl,
+                        unsigned short a,
+                        unsigned short *b,
+                        struct ODBCBI *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtdicylinderdata(unsigned short FlibHndl, unsigned short a, struct ODBCYL *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtdiplanedata(unsigned short FlibHndl, unsigned short a, struct ODBPLN *b);
+
+/*
  Reads a timer (`type` 0 power-on, 1 operating, 2 cutting, 3 cycle, 4
  free) as minutes and milliseconds.
 
@@ -6994,6 +12085,22 @@ short cnc_rdtldspcstms(unsigned short FlibHndl, short *a);
 short cnc_rdtldspcstms2(unsigned short FlibHndl, short a, short *b);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtlgeomsize(unsigned short FlibHndl, short a, short b, short *c, struct IODBTLGS *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtlgeomsize_ext2(unsigned short FlibHndl,
+                            short a,
+                            short b,
+                            short *c,
+                            struct IODBTLGSEXT2 *d);
+
+/*
  Reads the tool life management's limits: groups, tools in a group, life
  in minutes and in cycles.
 
@@ -7001,6 +12108,12 @@ short cnc_rdtldspcstms2(unsigned short FlibHndl, short a, short *b);
  `tlinfo` must be NULL or point to a writable ODBTLINFO.
  */
 short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtlmgr_check(unsigned short FlibHndl, struct IODBTLMGR_CHECK *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7126,6 +12239,30 @@ short cnc_rdtool(unsigned short FlibHndl, short top_no, short *num, struct IODBT
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdtool2(unsigned short FlibHndl, short a, short b, short *c, struct IODBTLM2 *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtool_cause(unsigned short FlibHndl, struct IODBTOOL_CAUSENME *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtool_inhis(unsigned short FlibHndl, short a, short *b, struct IODBTOOL_INHIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtool_outhis(unsigned short FlibHndl, short a, short *b, struct IODBTOOL_OUTHIS *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdtoolchggrp(unsigned short FlibHndl, short a, short b, long *c);
 
 /*
@@ -7179,7 +12316,37 @@ short cnc_rdtoollife_count(unsigned short FlibHndl, char a, short *b);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdtoollife_tcodedata(unsigned short FlibHndl,
+                               long a,
+                               unsigned char b,
+                               struct IODBTLLF *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdtoollifed_count(unsigned short FlibHndl, long a, short *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdtoollifed_data(unsigned short FlibHndl, long a, short b, short *c, struct IODBTLLFD *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdusbdevinfo(unsigned short FlibHndl, char a, struct ODBUSBSIZE *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdusbfilelist(unsigned short FlibHndl,
+                        struct IDBUSBFILE *a,
+                        struct ODBUSBINFO *b,
+                        struct ODBUSBFILE *c);
 
 /*
  Reads the next, in-use and selected tool life groups (`datano` and
@@ -7200,6 +12367,12 @@ short cnc_rdwavecount(unsigned short FlibHndl, short a, long *b);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdwavedata2(unsigned short FlibHndl, short a, long b, long *c, struct ODBWVDT2 *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdwkcdsfms2(unsigned short FlibHndl,
                       short a,
                       short b,
@@ -7211,6 +12384,12 @@ short cnc_rdwkcdsfms2(unsigned short FlibHndl,
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdwkcdsfms3(unsigned short FlibHndl, short a, short b, short c, struct IODBWCSF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdsfms64(unsigned short FlibHndl, short a, short b, short c, struct IODBWCSF64 *d);
 
 /*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into
@@ -7237,6 +12416,12 @@ short cnc_rdwkcdshft2(unsigned short FlibHndl,
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdwkcdshft3(unsigned short FlibHndl, short a, short b, short c, struct IODBWCSF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rdwkcdshft64(unsigned short FlibHndl, short a, short b, short c, struct IODBWCSF64 *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7300,12 +12485,29 @@ short cnc_rdzofsr(unsigned short FlibHndl,
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rdzofsr64(unsigned short FlibHndl,
+                    short a,
+                    short b,
+                    short c,
+                    short d,
+                    struct IODBZOR64 *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rdzofsr_bg(unsigned short FlibHndl,
                      short a,
                      short b,
                      short c,
                      short d,
                      struct IODBZOR *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_read_cexeinfo(unsigned short FlibHndl, short a, struct CEXEINFO *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7336,6 +12538,12 @@ short cnc_read_prog_bg(unsigned short FlibHndl, long a, char *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_readlrncrnt(unsigned short FlibHndl, char *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_refpoint(unsigned short FlibHndl, short a, short b, short c, struct ODBEXEC *d);
 
 /*
  Registers the `*num` pots of `data` (`magazine`, `pot` and the tool
@@ -7417,6 +12625,12 @@ short cnc_renameprog(unsigned short FlibHndl, long old_num, long new_num);
 short cnc_req_alarm(unsigned short FlibHndl, short alm_grp, short alm_num);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_reqsvgtung(unsigned short FlibHndl, short a, short b, struct ODBTUNREQ *c);
+
+/*
  Resets the CNC: the running program stops, reset-clearable alarms are
  cleared.
  */
@@ -7458,13 +12672,83 @@ short cnc_rewind(unsigned short FlibHndl);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_robo_rdalmmsg(unsigned short FlibHndl,
+                        unsigned short a,
+                        unsigned short *b,
+                        struct IODBRBALMMSG *alm_msg);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_rdcomsetting(unsigned short FlibHndl, struct IODBRBCOMSET *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_rdgrouplist(unsigned short FlibHndl,
+                           unsigned short a,
+                           unsigned short *b,
+                           struct ODBRBGRPLIST *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_robo_rdponprop(unsigned short FlibHndl, unsigned char *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_robo_rdselectedsignals(unsigned short FlibHndl,
+                                 unsigned short a,
+                                 unsigned short *b,
+                                 struct IODBRBSUMMARY *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_rdsignals(unsigned short FlibHndl,
+                         char a,
+                         char b,
+                         unsigned short c,
+                         unsigned short *d,
+                         struct ODBRBSIGNAL *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_rdsignals2(unsigned short FlibHndl,
+                          char a,
+                          char b,
+                          unsigned short c,
+                          unsigned short *d,
+                          struct IODBRBSIGNAL2 *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_robo_selectgroup(unsigned short FlibHndl, unsigned short a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_wrgroup(unsigned short FlibHndl, unsigned short a, struct IDBRBGROUP *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_robo_wrselectedsignals(unsigned short FlibHndl,
+                                 unsigned short a,
+                                 unsigned short *b,
+                                 struct IODBRBSUMMARY *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7494,6 +12778,47 @@ short cnc_rstrt_rdaddinfo(unsigned short FlibHndl, short a, short *b, short c, l
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_rstrt_rdlpmppnt(unsigned short FlibHndl, short a, struct ODBRSTMPINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_rdmodal(unsigned short FlibHndl,
+                        short a,
+                        short *b,
+                        short *c,
+                        struct ODBGCD *d,
+                        struct ODBCMD *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_rdpnt(unsigned short FlibHndl, short a, struct IODBRSTINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_rdpnt2(unsigned short FlibHndl, short a, struct IODBRSTINFO2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_rdpntlist(unsigned short FlibHndl, short a, short *b, struct ODBRSTLIST *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_rdpntlist2(unsigned short FlibHndl, short a, short *b, struct ODBRSTLIST2 *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_rstrt_search(unsigned short FlibHndl, short a);
 
 /*
@@ -7507,6 +12832,18 @@ short cnc_rstrt_selectpnt(unsigned short FlibHndl, short a);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rstrt_setsuppress(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_wrpnt(unsigned short FlibHndl, unsigned short a, struct IODBRSTINFO *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_rstrt_wrpnt2(unsigned short FlibHndl, unsigned short a, struct IODBRSTINFO2 *b);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7607,6 +12944,12 @@ short cnc_sdtendsmpl2(unsigned short FlibHndl);
 short cnc_sdtread1shot(unsigned short FlibHndl, unsigned short *data);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sdtreadsmpl2(unsigned short FlibHndl, unsigned short *a, long b, struct ODBSD *c);
+
+/*
  Sets `n` servo data sampling channels (1..8) from `chan[]`, sampled
  every `cycle` (8 or more; -1 too on the 30i class; else EW_DATA, detail
  3). Each channel in turn is checked (`type` 0..37 of an axis or 0..12 of
@@ -7622,11 +12965,23 @@ short cnc_sdtread1shot(unsigned short FlibHndl, unsigned short *data);
 short cnc_sdtsetchnl(unsigned short FlibHndl, short n, long cycle, struct IDBSDTCHAN *chan);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sdtsetchnl2(unsigned short FlibHndl, short a, long b, struct IDBSDTCHAN2 *c);
+
+/*
  Starts sampling the servo data channels: `type` (as an unsigned 16-bit
  number) and `cycle` are sent as the request's two words, unchecked
  (FANUC's 32-bit library only).
  */
 short cnc_sdtstartsmpl(unsigned short FlibHndl, short type, long cycle);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sdtstartsmpl2(unsigned short FlibHndl, short a, short b, struct TRG_DATA *c);
 
 /*
  Selects program `prog_no` as the main program.
@@ -7654,6 +13009,12 @@ short cnc_searchresult2(unsigned short FlibHndl, unsigned long *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_searchusbfile(unsigned short FlibHndl, struct IDBUSBSEARCH *a, unsigned long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_searchword2(unsigned short FlibHndl,
                       long a,
                       unsigned long b,
@@ -7661,6 +13022,12 @@ short cnc_searchword2(unsigned short FlibHndl,
                       short d,
                       unsigned long e,
                       char *f);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sendkey(unsigned short FlibHndl, struct ODBKEYINFO *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7703,6 +13070,12 @@ short cnc_set_smth_exval(unsigned short FlibHndl);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_setactptopt(unsigned short FlibHndl, long a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_setfin(unsigned short FlibHndl, struct ODBFIN *a);
 
 /*
  Selects the path later calls on this handle address (0 or -1: path 1).
@@ -7807,6 +13180,24 @@ short cnc_srcsrddrvcp(unsigned short FlibHndl, short *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_srcsrdexstat(unsigned short FlibHndl, struct ODBSRCSST *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsrdidinfo(unsigned short FlibHndl, long a, short b, short c, struct IODBIDINF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srcsrdlayout(unsigned short FlibHndl, struct ODBSRCSLYT *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_srcsrdopdata(unsigned short FlibHndl, long a, long *b, void *c);
 
 /*
@@ -7837,7 +13228,25 @@ short cnc_srcsstopexec(unsigned short FlibHndl);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_srcswridinfo(unsigned short FlibHndl, struct IODBIDINF *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_srcswropdata(unsigned short FlibHndl, long a, long b, void *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_srttl_getdata(unsigned short FlibHndl,
+                        short a,
+                        short *b,
+                        short c,
+                        long d,
+                        long e,
+                        struct IODBTLMNG_SORT *f);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7958,6 +13367,12 @@ short cnc_statinfo2(unsigned short FlibHndl, struct ODBST2 *statinfo);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_statinfo_bg(unsigned short FlibHndl, struct ODBST *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_statinfo_dmg(unsigned short FlibHndl, struct OUT_STATINF_DMG *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8120,6 +13535,12 @@ short cnc_svdtwrdata2(unsigned short FlibHndl,
                       void *f);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_sysconfig(unsigned short FlibHndl, struct ODBSYSC *a);
+
+/*
  Reads the CNC's system information (series, version, axes) of the
  handle's current path, as the CNC reported it at connect time.
 
@@ -8177,7 +13598,22 @@ short cnc_tool_in2(unsigned short FlibHndl, struct IODBTLMAG *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_tool_in3(unsigned short FlibHndl,
+                   short *a,
+                   struct IODBTLMNG_F2 *b,
+                   struct IODBTLMNG_MU_EDGE_DATA *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_tool_out(unsigned short FlibHndl, char a, struct IODBTLMAG2 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tool_srh_free_min_num(unsigned short FlibHndl, struct ODBTL_FREE_NUM *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8207,12 +13643,30 @@ short cnc_toolnum(unsigned short FlibHndl,
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_tpl_read(unsigned short FlibHndl, struct ODBTPNLINTF *data);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_tprog_convert_stat(unsigned short FlibHndl,
                              long *a,
                              long *b,
                              long *c,
                              short *d,
                              short *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_editcmd(unsigned short FlibHndl, char *a, long b, long c, struct IDBTPCMD *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_rdcmd(unsigned short FlibHndl, char *a, long b, long c, struct ODBTPEDTCMD *d);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8239,7 +13693,29 @@ short cnc_tprog_rdpos(unsigned short FlibHndl,
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_tprog_rdprg_by_name(unsigned short FlibHndl,
+                              long *a,
+                              char *b,
+                              long c,
+                              struct ODBTPAPRG *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_rdprg_by_num(unsigned short FlibHndl, long *a, long b, long c, struct ODBTPAPRG *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_tprog_st_convert(unsigned short FlibHndl, short a, short b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_tprog_wrinfo(unsigned short FlibHndl, short a, char *b, struct IDBTPINFO *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8250,6 +13726,15 @@ short cnc_tprog_wrpos(unsigned short FlibHndl,
                       unsigned short b,
                       unsigned short *c,
                       long *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_twp_rdfmt_mtrx(unsigned short FlibHndl,
+                         short a,
+                         union IDBTWPFORM *b,
+                         struct ODBFTRMTX *c);
 
 /*
  Ends the upload started by cnc_upstart (as cnc_upend3).
@@ -8366,6 +13851,24 @@ short cnc_verify_prog_bg(unsigned short FlibHndl, char *a, char *b);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_wksft_rnge64(unsigned short FlibHndl, short a, struct ODBDATRNG64 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr1length(unsigned short FlibHndl, struct IDBITD2 *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr1radius(unsigned short FlibHndl, struct IDBITD2 *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_wr2length(unsigned short FlibHndl, struct IDBITD *a);
 
 /*
@@ -8373,6 +13876,48 @@ short cnc_wr2length(unsigned short FlibHndl, struct IDBITD *a);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wr2radius(unsigned short FlibHndl, struct IDBITD *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr_mm_ctgry_cstm_str_data(unsigned short FlibHndl,
+                                    short a,
+                                    short b,
+                                    struct IODBMMCTGRYCSTMSTRING *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr_mm_icn_cstm_str_data(unsigned short FlibHndl,
+                                  short a,
+                                  short b,
+                                  struct IODBMMICONCSTMSTRING *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr_mm_setting_data(unsigned short FlibHndl,
+                             short a,
+                             short b,
+                             short c,
+                             struct ODBMMSCRNINF *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr_scrlwaitmcode(unsigned short FlibHndl, short a, short *b, struct IODBWAITMCODE *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wr_sfsg_disp_stat(unsigned short FlibHndl,
+                            struct IODBSFSGDSPSTAT *sfsg_dsp_stat,
+                            short select);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8413,6 +13958,12 @@ short cnc_wrcommstatus(unsigned short FlibHndl, short a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_wrcomparam(unsigned short FlibHndl, struct IODBCPRM *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_wrcount(unsigned short FlibHndl, struct IDBITD *a);
 
 /*
@@ -8438,6 +13989,18 @@ short cnc_wrdofs(unsigned short FlibHndl, short a, struct IODBZOR *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrdsdncfile2(unsigned short FlibHndl, char *a, char *b, unsigned short c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wredgedata(unsigned short FlibHndl, short a, short b, struct IODBTLMNG_MU_EDGE_DATA *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrfixoffs(unsigned short FlibHndl, short a, short b, struct ODBFOFS *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8482,6 +14045,12 @@ short cnc_wrgrpinfo(unsigned short FlibHndl, short length, struct IODBTGI *grpin
 short cnc_wrhipitchr(unsigned short FlibHndl, long a, long *b, long *c);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrhissgnl2(unsigned short FlibHndl, struct IODBSIG2 *a);
+
+/*
  Writes the signals the operation history records: `type` entries of
  IODBSIG3 (`datano` unused), their 16-byte wire form as cnc_rdhissgnl3
  reads them. `type` outside 0..=60: EW_LENGTH before any traffic
@@ -8492,6 +14061,24 @@ short cnc_wrhipitchr(unsigned short FlibHndl, long a, long *b, long *c);
  `sig` must point to a readable IODBSIG3.
  */
 short cnc_wrhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrhpccset(unsigned short FlibHndl, struct IODBHPST *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrhpcctuac(unsigned short FlibHndl, struct IODBHPAC *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrhpcctupr(unsigned short FlibHndl, struct IODBHPPR *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8515,7 +14102,39 @@ short cnc_wrifsb_as_spdl_num(unsigned short FlibHndl, short a, short b, short c,
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_wrifsb_as_sv_axis(unsigned short FlibHndl,
+                            short a,
+                            short b,
+                            short c,
+                            struct IODBIFSBAXIS *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrindexdata(unsigned short FlibHndl, short a, short b, short c, struct IODBINDEXDAT *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_wrindexofs(unsigned short FlibHndl, short a, long *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrindexposdata(unsigned short FlibHndl,
+                         short a,
+                         short b,
+                         short c,
+                         struct IODBINDEXPOSDAT *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrindexprm(unsigned short FlibHndl, short a, short b, struct IODBINDEXPRM *c);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8540,6 +14159,12 @@ short cnc_wrlrninfo(unsigned short FlibHndl, short a, short b, char *c);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrlrnprf(unsigned short FlibHndl, short a, short b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrlswork(unsigned short FlibHndl, struct IDBLSWORK *a);
 
 /*
  Writes the custom macro variable `number` = `mcr_val · 10^-dec_val`.
@@ -8685,6 +14310,12 @@ short cnc_wropnlgsname2(unsigned short FlibHndl, struct IODBRDNA2 *buf);
 short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wroverstore(unsigned short FlibHndl, struct IODBOVSTR *code);
+
+/*
  Writes a CNC parameter. The parameter's attributes are read first (one
  exchange); `length` must then equal 4 + the size of the values (one
  value, or one per axis of the CNC's maximum for a negative `type`: -1,
@@ -8704,6 +14335,12 @@ short cnc_wropnlsgnl(unsigned short FlibHndl, struct IODBSGNL *buf);
  `param` must be NULL or point to a readable IODBPSD.
  */
 short cnc_wrparam(unsigned short FlibHndl, short length, struct IODBPSD *param);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrparam64(unsigned short FlibHndl, short a, short b, struct IODBPSD64 *c);
 
 /*
  Writes several parameters given as packed records (the format
@@ -8851,6 +14488,18 @@ short cnc_wrpmacror_bg(unsigned short FlibHndl, unsigned long a, unsigned long *
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_wrpmmprm(unsigned short FlibHndl, long a, long b, long c, struct ODBPMMPRP *d);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrpmmprmtp(unsigned short FlibHndl, struct IDBPMMPRP *a);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_wrprogline(unsigned short FlibHndl, long a, unsigned long b, char *c, unsigned long d);
 
 /*
@@ -8863,7 +14512,53 @@ short cnc_wrprt_lvl(unsigned short FlibHndl, short kind, short rd_lvl, short wt_
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_wrpscdproc2(unsigned short FlibHndl, short a, short *b, struct IODBPSCD2 *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrrelpos64(unsigned short FlibHndl, short a, struct IDBWRR64 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_wrrmtdgn(unsigned short FlibHndl, long *a, char *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrrotvolc2(unsigned short FlibHndl, long a, long *b, struct IODBROTVOLC *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrrtmiowrenbl(unsigned short FlibHndl, struct IODBRTMIO *a, unsigned long *b, char *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrrtmiowrenblbit(unsigned short FlibHndl, struct IODBRTMIO *a, char *b, long c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrrtmiowrenblrng(unsigned short FlibHndl, struct IODBRTMIOR *a, long b, unsigned long *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrscdldat(unsigned short FlibHndl,
+                    short s_number,
+                    short e_number,
+                    short length,
+                    struct SCDL_1D *scdldat);
 
 /*
  Writes one setting data item from IODBPSD, as cnc_wrparam writes a
@@ -8880,6 +14575,23 @@ short cnc_wrset(unsigned short FlibHndl, short length, struct IODBPSD *param);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrsignal_f(unsigned short FlibHndl, short a, unsigned long b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrsoc_tldat(unsigned short FlibHndl,
+                      short a,
+                      short *b,
+                      short c,
+                      short *d,
+                      struct IODBSOCTLDAT *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrt1info(unsigned short FlibHndl, struct IDBITD2 *a);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -8902,6 +14614,46 @@ short cnc_wrtdicolordata(unsigned short FlibHndl,
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrtdicomment(unsigned short FlibHndl, short *length, char *comment);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtdicubedata(unsigned short FlibHndl, unsigned short a, struct ODBCUB *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtdicylinderdata(unsigned short FlibHndl, unsigned short a, struct ODBCYL *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtdiplanedata(unsigned short FlibHndl, unsigned short a, struct ODBPLN *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtlgeomsize(unsigned short FlibHndl,
+                       short a,
+                       short b,
+                       short c,
+                       short *d,
+                       struct IODBTLGS *e);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrtlgeomsize_ext2(unsigned short FlibHndl,
+                            short a,
+                            short b,
+                            short c,
+                            short *d,
+                            struct IODBTLGSEXT2 *e);
 
 /*
  Writes one tool offset value. `data` is sent as its low 32 bits, as
@@ -8938,6 +14690,12 @@ short cnc_wrtoolnum(unsigned short FlibHndl, struct IDBITD *a);
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
+short cnc_wrtrqlimit(unsigned short FlibHndl, short a, struct IDBTRQ *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
 short cnc_wrwkcdsfms2(unsigned short FlibHndl, unsigned short a, short b, struct IODBWCSF *c);
 
 /*
@@ -8945,6 +14703,12 @@ short cnc_wrwkcdsfms2(unsigned short FlibHndl, unsigned short a, short b, struct
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrwkcdsfms3(unsigned short FlibHndl, short a, short b, struct IODBWCSF *c);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrwkcdsfms64(unsigned short FlibHndl, short a, short b, struct IODBWCSF64 *c);
 
 /*
  Writes the work coordinate shift of one axis (`type`) or of all axes
@@ -8970,6 +14734,12 @@ short cnc_wrwkcdshft2(unsigned short FlibHndl, unsigned short a, short b, struct
 short cnc_wrwkcdshft3(unsigned short FlibHndl, short a, short b, struct IODBWCSF *c);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrwkcdshft64(unsigned short FlibHndl, short a, short b, struct IODBWCSF64 *c);
+
+/*
  Writes a work zero offset for one axis (`type` = axis) or all axes
  (any negative `type`, sent as it is: one value per axis of the CNC, as
  FANUC's library).
@@ -8980,6 +14750,18 @@ short cnc_wrwkcdshft3(unsigned short FlibHndl, short a, short b, struct IODBWCSF
  library reads them).
  */
 short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_wrzofs64(unsigned short FlibHndl, short a, struct IODBZOFS64 *b);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short cnc_zofs_rnge64(unsigned short FlibHndl, short a, short b, struct ODBDATRNG64 *c);
 
 /*
  Reads the PMC unit this handle's PMC calls address (1 until one is
@@ -9090,6 +14872,16 @@ short pmc_rdcntl_exrelay_grp(unsigned short FlibHndl, short *s_number);
 short pmc_rdcntlgrp(unsigned short FlibHndl, short *s_number);
 
 /*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short pmc_rdpmcaddr(unsigned short FlibHndl,
+                    long a,
+                    unsigned short b,
+                    unsigned long c,
+                    struct ODBPMCADR *d);
+
+/*
  Reads the PMC's address areas (letter, attribute, first and last
  address). At most 64 areas, and no more than the reply holds, are
  written (FANUC's library trusts the reply's count and can read past its
@@ -9123,6 +14915,12 @@ short pmc_rdpmcrng(unsigned short FlibHndl,
                    unsigned short e_number,
                    unsigned short length,
                    struct IODBPMC *buf);
+
+/*
+ Declared by FANUC's header, in none of its Ethernet libraries:
+ `EW_VERSION` (-7) without traffic, nothing written.
+ */
+short pmc_rdpmcrng_ext(unsigned short FlibHndl, short a, struct IODBPMCEXT *b);
 
 /*
  Reads the PMC program's title data: each text as the CNC sent it (32,

@@ -10,22 +10,41 @@ use std::os::raw::c_char;
 
 // One file per API area, as in src/ffi/ (cbindgen reads them all).
 mod alarm;
+mod axis_ext;
+mod compensation;
+mod diagnosis;
+mod energy;
+mod fssb;
 mod history;
+mod ieee64;
+mod machining;
 mod macros;
+mod main_menu;
 mod maintenance;
 mod offset;
+mod panel;
 mod param;
 mod pmc;
 mod position;
+mod power_mate;
 mod program;
+mod restart;
+mod robot;
+mod safety_io;
+mod servo;
 mod status;
+mod status_ext;
+mod storage;
 mod tool;
+mod tool_mgmt;
 mod upload;
 
 #[allow(unused_imports)]
 pub use {
-    alarm::*, history::*, macros::*, maintenance::*, offset::*, param::*, pmc::*, position::*,
-    program::*, status::*, tool::*, upload::*,
+    alarm::*, axis_ext::*, compensation::*, diagnosis::*, energy::*, fssb::*, history::*,
+    ieee64::*, machining::*, macros::*, main_menu::*, maintenance::*, offset::*, panel::*,
+    param::*, pmc::*, position::*, power_mate::*, program::*, restart::*, robot::*, safety_io::*,
+    servo::*, status::*, status_ext::*, storage::*, tool::*, tool_mgmt::*, upload::*,
 };
 
 /// FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.

@@ -238,6 +238,9 @@ impl Default for PRGDIR3 {
     }
 }
 
+/// cnc_rdprogdir4: FANUC's header names PRGDIR3 so (a `#define`).
+pub type PRGDIR4 = PRGDIR3;
+
 /// One program of ODBPTIME: its number and machining time.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

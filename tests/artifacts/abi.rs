@@ -24,7 +24,52 @@ fn layouts() -> Value {
             path.display()
         )
     });
-    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+    let mut layouts: Value =
+        serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    layouts
+        .as_object_mut()
+        .unwrap()
+        .extend(power_mate_d_layouts());
+    layouts
+}
+
+/// The three structures FANUC's header declares only under `#if defined (PMD)`
+/// (Power Mate D/H: cnc_opdi, cnc_refpoint … cnc_setfin), which layouts.json,
+/// made from the default variant, lacks: their `l32` layouts by hand, in its form.
+fn power_mate_d_layouts() -> serde_json::Map<String, Value> {
+    use serde_json::json;
+    let field = |name: &str, offset: u64, size: u64, ty: &str| json!({"name": name, "offset": offset, "size": size, "type": ty});
+    let chars = |name: &str, offset: u64, count: u64| {
+        json!({"name": name, "offset": offset, "size": count, "type": "char",
+               "count": count, "elem_size": 1})
+    };
+    let entry = |size: u64, fields: Vec<Value>| json!({"kind": "struct", "l32": {"size": size, "fields": fields}});
+    let mut union = field("u", 4, 4, "union");
+    union["fields"] = json!([
+        field("cdata", 0, 1, "char"),
+        field("idata", 0, 2, "short"),
+        field("ldata", 0, 4, "long"),
+    ]);
+    let mut m = serde_json::Map::new();
+    m.insert(
+        "ODBOPDI".into(),
+        entry(8, vec![field("axis", 0, 2, "short"), union]),
+    );
+    m.insert(
+        "ODBEXEC".into(),
+        entry(
+            18,
+            vec![field("dummy", 0, 2, "short"), chars("cdata", 2, 16)],
+        ),
+    );
+    m.insert(
+        "ODBFIN".into(),
+        entry(
+            10,
+            vec![field("dummy", 0, 2, "short"), chars("cdata", 2, 8)],
+        ),
+    );
+    m
 }
 
 /// The `pub struct` / `pub union` names of src/types/.
@@ -63,7 +108,14 @@ struct Expect {
 
 /// Walks layouts.json fields, appending the C statements that print the
 /// same facts (`label size offset elem`, elem 0 for a non-array).
-fn emit_fields(c: &mut String, out: &mut Vec<Expect>, fields: &[Value], base: &str, label: &str) {
+fn emit_fields(
+    c: &mut String,
+    out: &mut Vec<Expect>,
+    fields: &[Value],
+    base: &str,
+    label: &str,
+    header: &str,
+) {
     for f in fields {
         let name = f["name"].as_str().unwrap();
         let expr = format!("{base}.{name}");
@@ -89,12 +141,27 @@ fn emit_fields(c: &mut String, out: &mut Vec<Expect>, fields: &[Value], base: &s
         .unwrap();
         if let Some(sub) = f.get("fields").and_then(Value::as_array) {
             let inner = match elem {
-                Some(_) => format!("{expr}[0]"),
+                Some(_) => format!("{expr}{}", "[0]".repeat(struct_array_dims(header, name))),
                 None => expr.clone(),
             };
-            emit_fields(c, out, sub, &inner, &label);
+            emit_fields(c, out, sub, &inner, &label, header);
         }
     }
+}
+
+/// How many dimensions the header gives the array of structures `field`
+/// (`struct T field[2][32];`: 2), so its first element is reached.
+fn struct_array_dims(header: &str, field: &str) -> usize {
+    let pat = format!(" {field}[");
+    header
+        .lines()
+        .filter(|l| {
+            let t = l.trim_start();
+            t.starts_with("struct ") || t.starts_with("union ")
+        })
+        .filter_map(|l| l.split_once(&pat).map(|(_, r)| r.matches('[').count() + 1))
+        .max()
+        .unwrap_or(1)
 }
 
 /// Whether the header declares `field` as a multi-dimensional array somewhere.
@@ -167,6 +234,7 @@ fn header_structs_match_l32_layouts() {
             l32["fields"].as_array().unwrap(),
             &var,
             name,
+            &header,
         );
         checked.insert(name.clone());
     }
@@ -251,14 +319,14 @@ fn header_structs_match_l32_layouts() {
     eprintln!("checked {} structures: {checked:?}", checked.len());
 }
 
-fn field_size<T, F>(_: fn(&T) -> &F) -> usize {
+fn field_size<T, F>(_: fn(&T) -> *const F) -> usize {
     std::mem::size_of::<F>()
 }
 
 /// The Rust types, field by field, against the same layouts.
 macro_rules! rust_layouts {
-    ($($ty:ident { $($field:ident),* $(,)? })*) => {
-        fn rust_layouts() -> Vec<(&'static str, usize, Vec<(&'static str, usize, usize)>)> {
+    ($name:ident; $($ty:ident { $($field:ident),* $(,)? })*) => {
+        pub(super) fn $name() -> Vec<(&'static str, usize, Vec<(&'static str, usize, usize)>)> {
             use fwlib32::types::*;
             vec![$(
                 (
@@ -268,7 +336,8 @@ macro_rules! rust_layouts {
                         // `r#type` is FANUC's `type`.
                         stringify!($field).trim_start_matches("r#"),
                         std::mem::offset_of!($ty, $field),
-                        field_size(|v: &$ty| &v.$field),
+                        // A raw pointer: a union's field too, without reading it.
+                        $crate::abi::field_size(|v: &$ty| std::ptr::addr_of!(v.$field)),
                     )),*],
                 ),
             )*]
@@ -276,8 +345,12 @@ macro_rules! rust_layouts {
     };
 }
 
-// Every structure of src/types/ must be listed here (checked below).
+// The types of the functions no FANUC Ethernet library implements (src/spec/table/absent.rs).
+mod absent_types;
+
+// Every structure of src/types/ must be listed here or in abi/absent_types.rs (checked below).
 rust_layouts! {
+    rust_layouts;
     ODBSYS { addinfo, max_axis, cnc_type, mt_type, series, version, axes }
     ODBSYSH { id1, id2, group_id, hard_id, hard_num, slot_no, id1_format, id2_format }
     ODBSYSS3 { soft_id, soft_series, soft_edition }
@@ -500,7 +573,8 @@ rust_layouts! {
 #[test]
 fn rust_types_match_l32_layouts() {
     let layouts = layouts();
-    let listed = rust_layouts();
+    let mut listed = rust_layouts();
+    listed.extend(absent_types::absent_layouts());
     let names: BTreeSet<String> = listed.iter().map(|t| t.0.to_owned()).collect();
     let in_types = rust_type_names();
     // Helper types for nested members (not in layouts.json) are checked

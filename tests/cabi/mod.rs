@@ -228,6 +228,18 @@ pub fn is_handle(p: &Param) -> bool {
     p.name == "FlibHndl"
 }
 
+/// A function FANUC's header declares and none of its Ethernet libraries has
+/// (src/spec/table/absent/): it answers EW_VERSION at once, sending and
+/// writing nothing (tests/bad_input.rs and tests/ffi/absent.rs check that),
+/// so the sweeps of the CNC's answers leave it out.
+pub fn not_on_ethernet(name: &str) -> bool {
+    fwlib32::spec::table::absent::ROWS
+        .iter()
+        .copied()
+        .flatten()
+        .any(|(n, _)| *n == name)
+}
+
 /// Functions that end or change the handle's session (free it, drop its
 /// connections, start an upload, change its path or timeout) are left to
 /// their own tests; every other function taking a handle is swept.

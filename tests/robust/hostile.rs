@@ -644,7 +644,10 @@ fn sweep_against(profile: Profile, seed: u64, min_percent: usize) {
     let h = lib.alloc(plain.port(), 5).expect("a handle");
     let mut calls = Vec::new();
     for p in cabi::all_prototypes() {
-        if !p.params.iter().any(cabi::is_handle) || cabi::SESSION.contains(&p.name.as_str()) {
+        if !p.params.iter().any(cabi::is_handle)
+            || cabi::SESSION.contains(&p.name.as_str())
+            || cabi::not_on_ethernet(&p.name)
+        {
             continue;
         }
         let r = RECIPES
