@@ -122,6 +122,15 @@ typedef struct ODBAXIS {
 } ODBAXIS;
 
 /*
+ cnc_absolute2_exdgt & co.: one axis's position with extra digits.
+ */
+typedef struct ODBEXPOS {
+    double data;
+    LONG dec;
+    LONG digit;
+} ODBEXPOS;
+
+/*
  cnc_actf / cnc_acts: actual feed rate or spindle speed.
  */
 typedef struct ODBACT {
@@ -555,6 +564,17 @@ typedef struct ODBBTLINF {
 } ODBBTLINF;
 
 /*
+ cnc_rdcdrotate: the coordinate rotation in force: its mode, the plane's
+ axes, the center and the angle.
+ */
+typedef struct ODBROT {
+    short mode;
+    short pln_axes[2];
+    LONG center[2];
+    LONG angle;
+} ODBROT;
+
+/*
  cnc_rdcommand: one commanded value of a block: the address letter,
  which of the block's words of that address (M codes: 1, 2, 3 ...), a
  flag, the value and its decimal places.
@@ -890,6 +910,13 @@ typedef struct IODBSIG3 {
     short type;
     struct IODBSIG3_DATA data[60];
 } IODBSIG3;
+
+/*
+ cnc_rdinterference: the two tools of the interference check.
+ */
+typedef struct IODBTLINTF {
+    short inf_tool[2];
+} IODBTLINTF;
 
 /*
  cnc_rdmacro: one custom macro variable. The value is
@@ -2815,6 +2842,16 @@ short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Reads the absolute position of every axis with extra digits: one
+ ODBEXPOS per axis the answer holds (at most 32), the position a double,
+ its decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_absolute2_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
+
+/*
  Reads the acceleration/deceleration delay of axis `axis` (1..) or of
  every axis (-1): an axis above 32 is EW_ATTRIB before any traffic; every
  whole value record answered (at most 32) must fit in `length` (4 + 4
@@ -3022,6 +3059,16 @@ short cnc_diagnoss(unsigned short FlibHndl,
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the distance to go of every axis with extra digits: one ODBEXPOS
+ per axis the answer holds (at most 32), the position a double, its
+ decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_distance_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
 
 /*
  Sends `number` (0..40959) bytes of the DNC program (the first call
@@ -3233,6 +3280,16 @@ short cnc_instlifedt(unsigned short FlibHndl, struct IDBITD *tool);
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_machine(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the machine position of every axis with extra digits: one ODBEXPOS
+ per axis the answer holds (at most 32), the position a double, its
+ decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_machine_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
 
 /*
  Reads modal data: G-code groups (`type` 0.., −1 all, −4/−5 one-shot,
@@ -3628,6 +3685,25 @@ short cnc_rdblkcount(unsigned short FlibHndl, long *prog_bc);
 short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
 
 /*
+ Reads the coordinate rotation in force: its mode and plane axes (the low
+ 16 bits of each word), the center (the value word of two value records)
+ and the angle.
+
+ # Safety
+ `rot` must be NULL or point to a writable ODBROT.
+ */
+short cnc_rdcdrotate(unsigned short FlibHndl, struct ODBROT *rot);
+
+/*
+ Reads whether the `[MEASURE] [CENTER]` operation is available (one
+ byte).
+
+ # Safety
+ `info` must be NULL or point to a writable char.
+ */
+short cnc_rdcenblinfo(unsigned short FlibHndl, char *info);
+
+/*
  Reads the CNC's identification number: four 32-bit words. The pointer
  keeps FANUC's `unsigned long *` spelling, but, exactly as FANUC's x86-64
  library does, four 4-byte words are written (16 bytes): pass a
@@ -3773,6 +3849,14 @@ short cnc_rddynamic2(unsigned short FlibHndl, short axis, short length, struct O
 short cnc_rddynamico8(unsigned short FlibHndl, short axis, short length, struct ODBDYO8 *buf);
 
 /*
+ Reads whether the `[MEASURE]` operation is available (one byte).
+
+ # Safety
+ `info` must be NULL or point to a writable char.
+ */
+short cnc_rdenblinfo(unsigned short FlibHndl, char *info);
+
+/*
  Reads the Ethernet board's type and device.
 
  # Safety
@@ -3897,6 +3981,14 @@ short cnc_rdgrpinfo(unsigned short FlibHndl,
  `sig` must be NULL or point to a writable IODBSIG3.
  */
 short cnc_rdhissgnl3(unsigned short FlibHndl, struct IODBSIG3 *sig);
+
+/*
+ Reads the tool interference check's two tools.
+
+ # Safety
+ `data` must be NULL or point to a writable IODBTLINTF.
+ */
+short cnc_rdinterference(unsigned short FlibHndl, struct IODBTLINTF *data);
 
 /*
  Reads the tool life of tool group `number` (`data`; `dummy` untouched;
@@ -5038,6 +5130,22 @@ short cnc_rdsrvspeed(unsigned short FlibHndl,
 short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *loadmeter);
 
 /*
+ Reads the synchronous error of the rigid tap mode.
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdsynerrrg(unsigned short FlibHndl, long *data);
+
+/*
+ Reads the synchronous error of the synchronous control mode.
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdsynerrsy(unsigned short FlibHndl, long *data);
+
+/*
  Reads the CNC's boards (hardware IDs) from the `s_no`-th on: `*num` in
  is how many (sent as it is), out how many were written (the count the
  CNC answered). Never more boards than asked are written (FANUC's library
@@ -5405,6 +5513,16 @@ short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODB
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the relative position of every axis with extra digits: one
+ ODBEXPOS per axis the answer holds (at most 32), the position a double,
+ its decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_relative2_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
 
 /*
  Renumbers program `old_num` as `new_num`.

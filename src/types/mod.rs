@@ -10,6 +10,7 @@ use std::os::raw::c_char;
 
 // One file per API area, as in src/ffi/ (cbindgen reads them all).
 mod alarm;
+mod axes;
 mod history;
 mod macros;
 mod maintenance;
@@ -24,8 +25,8 @@ mod upload;
 
 #[allow(unused_imports)]
 pub use {
-    alarm::*, history::*, macros::*, maintenance::*, offset::*, param::*, pmc::*, position::*,
-    program::*, status::*, tool::*, upload::*,
+    alarm::*, axes::*, history::*, macros::*, maintenance::*, offset::*, param::*, pmc::*,
+    position::*, program::*, status::*, tool::*, upload::*,
 };
 
 /// FANUC's LONG: 32 bits on every platform, as its Linux documentation defines it.

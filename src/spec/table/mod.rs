@@ -10,6 +10,7 @@ use super::types::*;
 
 mod absent;
 mod alarm;
+mod axes;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
 mod feed;
@@ -60,6 +61,7 @@ const AREAS: &[&[Func]] = &[
     sampling::FUNCS,
     status::FUNCS,
     screen::FUNCS,
+    axes::FUNCS,
     signals::FUNCS,
     alarm::FUNCS,
     absent::FUNCS,
