@@ -6151,6 +6151,16 @@ short cnc_wrprt_lvl(unsigned short FlibHndl, short kind, short rd_lvl, short wt_
 short cnc_wrset(unsigned short FlibHndl, short length, struct IODBPSD *param);
 
 /*
+ Writes timer `type` (cnc_rdtimer's: 0 power-on, 1 operating, 2 cutting,
+ 3 cycle, 4 free) from `time`'s minutes and milliseconds, sent as the
+ payload (32 bits each).
+
+ # Safety
+ `time` must be NULL or point to a readable IODBTIME.
+ */
+short cnc_wrtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
+
+/*
  Writes one tool offset value. `data` is sent as its low 32 bits, as
  FANUC's x86-64 library does.
 

@@ -1,9 +1,12 @@
 //! Axes, modes and settings of the long tail: the positions with extra
 //! digits (from the axes' positions, as cnc_absolute & co. read them),
 //! the synchronous errors, the `[MEASURE]` keys' availability, the tool
-//! interference check and the coordinate rotation of the path's profile.
+//! interference check and the coordinate rotation of the path's profile;
+//! cnc_wrtimer's write of the timers cnc_rdtimer reads.
 
-use super::route::Route;
+use super::route::{Route, none};
+use super::service::CncError;
+use crate::ew::EW_DATA;
 use crate::proto::cmd;
 
 pub(super) const ROUTES: &[Route] = &[
@@ -43,5 +46,19 @@ pub(super) const ROUTES: &[Route] = &[
         let values = [r.center[0], r.center[1], r.angle];
         let values = values.into_iter().flat_map(|v| [i64::from(v), 0]);
         Ok(head.into_iter().chain(values).collect())
+    }),
+    // [type], payload minutes and milliseconds: cnc_rdtimer reads them from
+    // now on (the timer runs on from them). No such timer EW_NUMBER (as the
+    // read), negative minutes or milliseconds past a minute EW_DATA, nothing
+    // changed [ours].
+    Route::table(cmd::WRTIMER, |m, q| {
+        let now = m.timer(q.arg(0))?;
+        let (minute, msec) = match *q.payload {
+            [minute, msec] if minute >= 0 && (0..60_000).contains(&msec) => (minute, msec),
+            _ => return Err(CncError::new(EW_DATA)),
+        };
+        let was = i64::from(now.minute) * 60_000 + i64::from(now.msec);
+        m.profile.timers.written_ms[q.arg(0) as usize] += minute * 60_000 + msec - was;
+        none(Ok(()))
     }),
 ];

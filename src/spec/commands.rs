@@ -348,6 +348,8 @@ commands! {
     /// `(1,0x0111)[k]`: the 3D handle's tool tip, a value record per axis.
     HDL3D_TIP = CLASS_CNC 0x0111 [cnc_rd3dtooltip];
     RDTIMER = CLASS_CNC 0x0120 [cnc_rdtimer];
+    /// cnc_wrtimer: `(1,0x0121)[type]`, payload the minutes and milliseconds (i32 each).
+    WRTIMER = CLASS_CNC 0x0121 [cnc_wrtimer];
     /// Servo data sampling (FANUC's x86 build 1.0.0 exports the senders;
     /// docs/protocol/position.md): `(1,0x0133)[n, 0, 0, 0, 12·n]` + 12
     /// bytes a channel sets the channels (after each axis channel's

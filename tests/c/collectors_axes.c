@@ -1,6 +1,6 @@
 /* The axes, modes and settings long tail (positions with extra digits,
  * extended axis names, synchronous errors, [MEASURE] keys, interference
- * check, coordinate rotation), called through the .so against focas-sim;
+ * check, coordinate rotation, the timers' write), called through the .so against focas-sim;
  * the key=value lines it prints are compared by
  * tests/artifacts/c_examples/collectors_axes.rs with the profile and the
  * simulator's state. Usage: collectors_axes HOST PORT */
@@ -67,6 +67,21 @@ int main(int argc, char **argv) {
     check("rdcdrotate", cnc_rdcdrotate(h, &rot));
     printf("rotation=%d;%d,%d;%d,%d;%d\n", rot.mode, rot.pln_axes[0], rot.pln_axes[1],
            (int)rot.center[0], (int)rot.center[1], (int)rot.angle);
+
+    /* The free timer written and read back; negative minutes refused and
+     * the timer kept. */
+    IODBTIME t;
+    t.minute = 4321;
+    t.msec = 12345;
+    check("wrtimer", cnc_wrtimer(h, 4, &t));
+    memset(&t, 0xee, sizeof t);
+    check("rdtimer", cnc_rdtimer(h, 4, &t));
+    printf("timer.written=%d,%d\n", (int)t.minute, (int)t.msec);
+    t.minute = -1;
+    t.msec = 0;
+    printf("wrtimer.refused=%d\n", cnc_wrtimer(h, 4, &t));
+    check("rdtimer", cnc_rdtimer(h, 4, &t));
+    printf("timer.kept=%d,%d\n", (int)t.minute, (int)t.msec);
 
     cnc_freelibhndl(h);
     return 0;

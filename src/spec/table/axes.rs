@@ -133,4 +133,19 @@ pub const FUNCS: &[Func] = &[
         ],
         ..COMMAND
     },
+    Func {
+        name: "cnc_wrtimer",
+        learnt: Some(&[]),
+        doc: "Writes timer `type` (cnc_rdtimer's: 0 power-on, 1 operating, 2 cutting, 3 cycle, 4 free) from `time`'s minutes and milliseconds, sent as the payload (32 bits each).",
+        params: &[Param::Short("type"), Param::In("time", "IODBTIME")],
+        forms: &[every_class(cmd::WRTIMER, &[Word::Arg(0)])],
+        payload: Some(Payload {
+            fields: &[to(I32, "minute", I32), to(I32, "msec", I32)],
+            elem: "IODBTIME",
+            count: ONE,
+            max: 1,
+        }),
+        dims: &["4|0|1|2|3|-1|5"],
+        ..COMMAND
+    },
 ];

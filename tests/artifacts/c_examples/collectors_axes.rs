@@ -42,6 +42,12 @@ fn axes_functions_follow_the_profile_and_state() {
     let t = path.interference.tools;
     assert!(t[0] != 0 && t[1] != 0);
     assert_eq!(kv["interference"], format!("{},{}", t[0], t[1]));
+    // The free timer (it does not run) written, read back; negative
+    // minutes refused (EW_DATA), the timer kept.
+    assert_ne!(p.timers.free, 4321);
+    assert_eq!(kv["timer.written"], "4321,12345");
+    assert_eq!(kv["wrtimer.refused"], "5", "EW_DATA");
+    assert_eq!(kv["timer.kept"], "4321,12345");
     let r = &path.rotation;
     assert!(r.mode != 0 && r.angle != 0 && r.center[0] != 0);
     assert_eq!(
