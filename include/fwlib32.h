@@ -4147,6 +4147,15 @@ short cnc_rdmdiprgstat(unsigned short FlibHndl, unsigned short *stat);
 short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
 
 /*
+ Reads the CNC module configuration information (2): 128 bytes, the
+ answer's first (a shorter answer's missing bytes as zeros).
+
+ # Safety
+ `data` must be NULL or point to 128 writable bytes: 128 `char`s.
+ */
+short cnc_rdmdlconfig2(unsigned short FlibHndl, char *data);
+
+/*
  Reads the menu switch signals, bit k the k-th switch (the low 16 bits of
  the 32-bit answer).
 

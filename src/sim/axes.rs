@@ -47,6 +47,13 @@ pub(super) const ROUTES: &[Route] = &[
         let values = values.into_iter().flat_map(|v| [i64::from(v), 0]);
         Ok(head.into_iter().chain(values).collect())
     }),
+    // The profile's bytes, zeros after them (128 in all).
+    Route::table(cmd::RDMDLCONFIG2, |m, _| {
+        let c = &m.profile.system.module_config;
+        let mut v: Vec<i64> = c.iter().take(128).map(|&b| i64::from(b)).collect();
+        v.resize(128, 0);
+        Ok(v)
+    }),
     // [type], payload minutes and milliseconds: cnc_rdtimer reads them from
     // now on (the timer runs on from them). No such timer EW_NUMBER (as the
     // read), negative minutes or milliseconds past a minute EW_DATA, nothing

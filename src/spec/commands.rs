@@ -476,6 +476,8 @@ commands! {
     /// the drilling axis), the two counts, then six value records.
     RDFIXCYCLE = CLASS_CNC 0x0119 [cnc_rdfixcycle];
     // Axes, modes and settings (the long tail).
+    /// cnc_rdmdlconfig2: `(1,0x0042)`, the module configuration bytes (at most 128 read).
+    RDMDLCONFIG2 = CLASS_CNC 0x0042 [cnc_rdmdlconfig2];
     /// cnc_rdsynerrsy, cnc_rdsynerrrg: `(1,0x0059)[0 | 1]`, the synchronous
     /// error of the synchronous control (0) or rigid tap (1) mode (i32).
     SYNERR = CLASS_CNC 0x0059 [cnc_rdsynerrsy cnc_rdsynerrrg];

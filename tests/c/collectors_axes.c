@@ -68,6 +68,15 @@ int main(int argc, char **argv) {
     printf("rotation=%d;%d,%d;%d,%d;%d\n", rot.mode, rot.pln_axes[0], rot.pln_axes[1],
            (int)rot.center[0], (int)rot.center[1], (int)rot.angle);
 
+    /* The module configuration bytes (the profile's), zeros after them. */
+    char mdl[128];
+    int i;
+    memset(mdl, 0xee, sizeof mdl);
+    check("rdmdlconfig2", cnc_rdmdlconfig2(h, mdl));
+    printf("mdlconfig=");
+    for (i = 0; i < 9; i++) printf("%s%d", i ? "," : "", mdl[i]);
+    printf(";%d\n", mdl[127]);
+
     /* The free timer written and read back; negative minutes refused and
      * the timer kept. */
     IODBTIME t;

@@ -148,4 +148,18 @@ pub const FUNCS: &[Func] = &[
         dims: &["4|0|1|2|3|-1|5"],
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdmdlconfig2",
+        learnt: Some(&[
+            "written past the pointee: argument 0: 128 bytes written into a 1-byte pointee",
+        ]),
+        doc: "Reads the CNC module configuration information (2): 128 bytes, the answer's first (a shorter answer's missing bytes as zeros).",
+        params: &[Param::Out("data", "char")],
+        forms: &[every_class(cmd::RDMDLCONFIG2, &[])],
+        reply: &[Field {
+            n: 128,
+            ..to(I8, "", I8)
+        }],
+        ..COMMAND
+    },
 ];

@@ -42,6 +42,13 @@ fn axes_functions_follow_the_profile_and_state() {
     let t = path.interference.tools;
     assert!(t[0] != 0 && t[1] != 0);
     assert_eq!(kv["interference"], format!("{},{}", t[0], t[1]));
+    // The module configuration bytes, zeros after them (128 written).
+    let c = &p.system.module_config;
+    assert_eq!(c.len(), 8, "the default profile's");
+    let mut want: Vec<String> = c.iter().map(i8::to_string).collect();
+    want.push("0".into());
+    assert_eq!(kv["mdlconfig"], format!("{};0", want.join(",")));
+
     // The free timer (it does not run) written, read back; negative
     // minutes refused (EW_DATA), the timer kept.
     assert_ne!(p.timers.free, 4321);
