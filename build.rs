@@ -632,8 +632,11 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 };
                 let (stride, offs) = element(r.elem, r.fields);
                 // With a count the output is the caller's array of that many;
-                // with a room, of the size the caller gives.
-                if c_size(ty).is_none() && count.is_none() && r.room.is_none() {
+                // with a room, of the size the caller gives; records of the
+                // output's own struct from its start: the caller's array of
+                // `max` (cnc_absolute2_exdgt's ODBEXPOS per axis).
+                let own = r.to.is_empty() && r.elem == ty;
+                if c_size(ty).is_none() && count.is_none() && r.room.is_none() && !own {
                     checks.push(format!(
                         "const _: () = if {base} + {} * {stride} > size_of::<{ty}>() {{\n    panic!(\"{}: the records do not fit in {ty}\")\n}};\n",
                         r.max, f.name
@@ -754,6 +757,12 @@ fn described_exports(funcs: &[types::Func]) -> String {
                                 ),
                             }
                         }
+                        // Records of the output's own struct: the caller's
+                        // array of `max` (cnc_absolute2_exdgt).
+                        (Some(r), None) if usize::from(r.out) == i && r.to.is_empty() && r.elem == *t => format!(
+                            "/// `{n}` must be NULL or point to {} writable {t}, one per record answered (at most {}).",
+                            r.max, r.max
+                        ),
                         // Records into a struct with a room: the caller's
                         // `room` bytes, none written past them.
                         (Some(r), None) if usize::from(r.out) == i && r.room.is_some() => {

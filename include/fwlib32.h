@@ -122,6 +122,15 @@ typedef struct ODBAXIS {
 } ODBAXIS;
 
 /*
+ cnc_absolute2_exdgt & co.: one axis's position with extra digits.
+ */
+typedef struct ODBEXPOS {
+    double data;
+    LONG dec;
+    LONG digit;
+} ODBEXPOS;
+
+/*
  One position of cnc_rdposition.
  */
 typedef struct POSELM {
@@ -1877,6 +1886,17 @@ typedef struct ODBBTLINF {
 } ODBBTLINF;
 
 /*
+ cnc_rdcdrotate: the coordinate rotation in force: its mode, the plane's
+ axes, the center and the angle.
+ */
+typedef struct ODBROT {
+    short mode;
+    short pln_axes[2];
+    LONG center[2];
+    LONG angle;
+} ODBROT;
+
+/*
  The `data` member of `IODBCTPR`.
  */
 typedef struct IODBCTPR_data {
@@ -2940,6 +2960,13 @@ typedef struct IODBINDEXPRM {
     char ofs_adjust;
     char dummy[3];
 } IODBINDEXPRM;
+
+/*
+ cnc_rdinterference: the two tools of the interference check.
+ */
+typedef struct IODBTLINTF {
+    short inf_tool[2];
+} IODBTLINTF;
 
 /*
  Data of `cnc_rdipltp`, `cnc_rdipltp_bg`.
@@ -6621,6 +6648,16 @@ short cnc_absolute(unsigned short FlibHndl, short axis, short length, struct ODB
 short cnc_absolute2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
 
 /*
+ Reads the absolute position of every axis with extra digits: one
+ ODBEXPOS per axis the answer holds (at most 32), the position a double,
+ its decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_absolute2_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -7055,6 +7092,16 @@ short cnc_distance(unsigned short FlibHndl, short axis, short length, struct ODB
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_distance2(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
+ Reads the distance to go of every axis with extra digits: one ODBEXPOS
+ per axis the answer holds (at most 32), the position a double, its
+ decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_distance_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -7763,6 +7810,16 @@ short cnc_machine3_ex(unsigned short FlibHndl, short a, short b, short c, struct
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_machine_bg(unsigned short FlibHndl, short a, short b, struct ODBAXIS *c);
+
+/*
+ Reads the machine position of every axis with extra digits: one ODBEXPOS
+ per axis the answer holds (at most 32), the position a double, its
+ decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_machine_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -9335,6 +9392,16 @@ short cnc_rdblockcount(unsigned short FlibHndl, struct ODBPRS *a);
 short cnc_rdbtofsinfo(unsigned short FlibHndl, struct ODBBTLINF *btlinf);
 
 /*
+ Reads the coordinate rotation in force: its mode and plane axes (the low
+ 16 bits of each word), the center (the value word of two value records)
+ and the angle.
+
+ # Safety
+ `rot` must be NULL or point to a writable ODBROT.
+ */
+short cnc_rdcdrotate(unsigned short FlibHndl, struct ODBROT *rot);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -9345,6 +9412,15 @@ short cnc_rdcdslctprm(unsigned short FlibHndl, short a, unsigned short *b, struc
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdcdslctprmm(unsigned short FlibHndl, short a, unsigned short *b, struct IODBCTPRM *c);
+
+/*
+ Reads whether the `[MEASURE] [CENTER]` operation is available (one
+ byte).
+
+ # Safety
+ `info` must be NULL or point to a writable char.
+ */
+short cnc_rdcenblinfo(unsigned short FlibHndl, char *info);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -9615,6 +9691,14 @@ short cnc_rdedgeactive(unsigned short FlibHndl, short a, char *b);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdembedf_inf(unsigned short FlibHndl, char *a, short b, struct ODBEMBEDFINF *c);
+
+/*
+ Reads whether the `[MEASURE]` operation is available (one byte).
+
+ # Safety
+ `info` must be NULL or point to a writable char.
+ */
+short cnc_rdenblinfo(unsigned short FlibHndl, char *info);
 
 /*
  Reads the Ethernet board's type and device.
@@ -10081,6 +10165,14 @@ short cnc_rdindexposdata(unsigned short FlibHndl,
 short cnc_rdindexprm(unsigned short FlibHndl, short a, struct IODBINDEXPRM *b);
 
 /*
+ Reads the tool interference check's two tools.
+
+ # Safety
+ `data` must be NULL or point to a writable IODBTLINTF.
+ */
+short cnc_rdinterference(unsigned short FlibHndl, struct IODBTLINTF *data);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -10363,6 +10455,15 @@ short cnc_rdmdiprog(unsigned short FlibHndl, short *length, char *data);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_rdmdlconfig(unsigned short FlibHndl, struct ODBMDLC *a);
+
+/*
+ Reads the CNC module configuration information (2): 128 bytes, the
+ answer's first (a shorter answer's missing bytes as zeros).
+
+ # Safety
+ `data` must be NULL or point to 128 writable bytes: 128 `char`s.
+ */
+short cnc_rdmdlconfig2(unsigned short FlibHndl, char *data);
 
 /*
  Reads the menu switch signals, bit k the k-th switch (the low 16 bits of
@@ -11918,6 +12019,22 @@ short cnc_rdsvmeter(unsigned short FlibHndl, short *data_num, struct ODBSVLOAD *
 short cnc_rdsvmonitor(unsigned short FlibHndl, short a, short b, short *c, long *d);
 
 /*
+ Reads the synchronous error of the rigid tap mode.
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdsynerrrg(unsigned short FlibHndl, long *data);
+
+/*
+ Reads the synchronous error of the synchronous control mode.
+
+ # Safety
+ `data` must be NULL or point to a writable long.
+ */
+short cnc_rdsynerrsy(unsigned short FlibHndl, long *data);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -12606,6 +12723,16 @@ short cnc_relative(unsigned short FlibHndl, short axis, short length, struct ODB
  `buf` must be NULL or point to `length` writable bytes (nothing is written past them).
  */
 short cnc_relative2(unsigned short FlibHndl, short axis, short length, struct ODBAXIS *buf);
+
+/*
+ Reads the relative position of every axis with extra digits: one
+ ODBEXPOS per axis the answer holds (at most 32), the position a double,
+ its decimal places and digits.
+
+ # Safety
+ `axis_data` must be NULL or point to 32 writable ODBEXPOS, one per record answered (at most 32).
+ */
+short cnc_relative2_exdgt(unsigned short FlibHndl, struct ODBEXPOS *axis_data);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -14632,6 +14759,16 @@ short cnc_wrtdicylinderdata(unsigned short FlibHndl, unsigned short a, struct OD
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrtdiplanedata(unsigned short FlibHndl, unsigned short a, struct ODBPLN *b);
+
+/*
+ Writes timer `type` (cnc_rdtimer's: 0 power-on, 1 operating, 2 cutting,
+ 3 cycle, 4 free) from `time`'s minutes and milliseconds, sent as the
+ payload (32 bits each).
+
+ # Safety
+ `time` must be NULL or point to a readable IODBTIME.
+ */
+short cnc_wrtimer(unsigned short FlibHndl, short type, struct IODBTIME *time);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:

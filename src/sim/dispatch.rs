@@ -9,8 +9,8 @@ use super::profile::Class;
 use super::route::{Answer, Asked, Route};
 use super::service::{CncError, CncService, Reply, respond};
 use super::{
-    folder, history, macros, magazine, maintenance, memory, offset, operate, param, pmc_answers,
-    position, program, sampling, screen, setting, status, tool,
+    axes, folder, history, macros, magazine, maintenance, memory, offset, operate, param,
+    pmc_answers, position, program, sampling, screen, setting, status, tool,
 };
 use crate::proto::described;
 use crate::proto::open::{CncClass, OpenBody};
@@ -37,6 +37,7 @@ const AREAS: &[&[Route]] = &[
     sampling::ROUTES,
     setting::ROUTES,
     screen::ROUTES,
+    axes::ROUTES,
 ];
 
 /// The CNC classes a described function's form is chosen by, in the

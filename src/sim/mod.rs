@@ -15,6 +15,7 @@
 //! connections share) → session (one connection) → server (listeners) →
 //! fleet (many machines on one runtime).
 
+pub mod axes;
 pub mod clock;
 pub mod dispatch;
 pub mod download;

@@ -3,6 +3,7 @@
 //! Pure data: the areas' sections are in src/sim/profile/ (and pmc.rs);
 //! nothing here knows the running machine.
 
+pub mod axes;
 pub mod cycle;
 pub mod fault;
 pub mod fleet;
@@ -261,6 +262,14 @@ pub struct Path {
     pub sample_codes: Vec<SampleCode>,
     /// The canned cycle in force (cnc_rdfixcycle).
     pub fixed_cycle: system::FixedCycle,
+    /// The synchronous errors (cnc_rdsynerrsy, cnc_rdsynerrrg).
+    pub sync_error: axes::SyncError,
+    /// The `[MEASURE]` keys' availability (cnc_rdenblinfo, cnc_rdcenblinfo).
+    pub measure: axes::Measure,
+    /// The tool interference check's two tools (cnc_rdinterference).
+    pub interference: axes::Interference,
+    /// The coordinate rotation in force (cnc_rdcdrotate).
+    pub rotation: axes::Rotation,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize, Default)]

@@ -282,6 +282,7 @@ impl Machine {
             4 => min(t.free),
             _ => return Err(CncError::NUMBER),
         };
+        let ms = ms + t.written_ms[kind as usize];
         Ok(Timer {
             minute: (ms / 60_000) as i32,
             msec: (ms % 60_000) as i32,

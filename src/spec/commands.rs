@@ -348,6 +348,8 @@ commands! {
     /// `(1,0x0111)[k]`: the 3D handle's tool tip, a value record per axis.
     HDL3D_TIP = CLASS_CNC 0x0111 [cnc_rd3dtooltip];
     RDTIMER = CLASS_CNC 0x0120 [cnc_rdtimer];
+    /// cnc_wrtimer: `(1,0x0121)[type]`, payload the minutes and milliseconds (i32 each).
+    WRTIMER = CLASS_CNC 0x0121 [cnc_wrtimer];
     /// Servo data sampling (FANUC's x86 build 1.0.0 exports the senders;
     /// docs/protocol/position.md): `(1,0x0133)[n, 0, 0, 0, 12·n]` + 12
     /// bytes a channel sets the channels (after each axis channel's
@@ -487,6 +489,24 @@ commands! {
     /// cnc_rdfixcycle: `(1,0x0119)`: four i32 (mode, the plane's two axes,
     /// the drilling axis), the two counts, then six value records.
     RDFIXCYCLE = CLASS_CNC 0x0119 [cnc_rdfixcycle];
+    // Axes, modes and settings (the long tail).
+    /// cnc_rdmdlconfig2: `(1,0x0042)`, the module configuration bytes (at most 128 read).
+    RDMDLCONFIG2 = CLASS_CNC 0x0042 [cnc_rdmdlconfig2];
+    /// cnc_rdsynerrsy, cnc_rdsynerrrg: `(1,0x0059)[0 | 1]`, the synchronous
+    /// error of the synchronous control (0) or rigid tap (1) mode (i32).
+    SYNERR = CLASS_CNC 0x0059 [cnc_rdsynerrsy cnc_rdsynerrrg];
+    /// cnc_rdinterference: `(1,0x00ec)`, the interference check's two tools (i16 each).
+    RDINTERFERENCE = CLASS_CNC 0x00ec [cnc_rdinterference];
+    /// cnc_rdcdrotate: `(1,0x011a)`: mode and plane axes (i32 each), the
+    /// center (two value records), the angle.
+    RDCDROTATE = CLASS_CNC 0x011a [cnc_rdcdrotate];
+    /// cnc_rdenblinfo: `(1,0x018e)`, the `[MEASURE]` key's availability (a byte).
+    RDENBLINFO = CLASS_CNC 0x018e [cnc_rdenblinfo];
+    /// cnc_rdcenblinfo: `(1,0x018f)`, the `[MEASURE] [CENTER]` key's availability (a byte).
+    RDCENBLINFO = CLASS_CNC 0x018f [cnc_rdcenblinfo];
+    /// cnc_absolute2_exdgt & co.: `(1,0x02ce)[code]` (0 absolute, 1 machine,
+    /// 2 relative, 7 distance to go), a 16-byte record per axis.
+    EXDGT = CLASS_CNC 0x02ce [cnc_absolute2_exdgt cnc_machine_exdgt cnc_relative2_exdgt cnc_distance_exdgt];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];

@@ -10,6 +10,7 @@ use std::os::raw::c_char;
 
 // One file per API area, as in src/ffi/ (cbindgen reads them all).
 mod alarm;
+mod axes;
 mod axis_ext;
 mod compensation;
 mod diagnosis;
@@ -41,7 +42,7 @@ mod upload;
 
 #[allow(unused_imports)]
 pub use {
-    alarm::*, axis_ext::*, compensation::*, diagnosis::*, energy::*, fssb::*, history::*,
+    alarm::*, axes::*, axis_ext::*, compensation::*, diagnosis::*, energy::*, fssb::*, history::*,
     ieee64::*, machining::*, macros::*, main_menu::*, maintenance::*, offset::*, panel::*,
     param::*, pmc::*, position::*, power_mate::*, program::*, restart::*, robot::*, safety_io::*,
     servo::*, status::*, status_ext::*, storage::*, tool::*, tool_mgmt::*, upload::*,

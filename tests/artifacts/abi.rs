@@ -365,6 +365,9 @@ rust_layouts! {
     }
     ODBCSPID2 { mt_spc, mt_srn, sbmt_spc, sbmt_srn, spm_spc, spm_srn, psm_spc, psm_srn, pss_see }
     ODBFIX { mode, pln_axes, drl_axes, i_pos, r_pos, z_pos, cmd_cnt, act_cnt, cut, shift }
+    ODBEXPOS { data, dec, digit }
+    IODBTLINTF { inf_tool }
+    ODBROT { mode, pln_axes, center, angle }
     ODBST { hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit }
     ODBST2 {
         hdck, tmmode, aut, run, motion, mstb, emergency, alarm, edit,

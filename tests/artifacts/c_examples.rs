@@ -561,6 +561,7 @@ fn maintenance_example_reports_the_histories() {
 /// The C tests of tests/c, one module per program.
 mod collectors;
 mod collectors_3dhandle;
+mod collectors_axes;
 mod collectors_history_timers;
 mod collectors_magazine;
 mod collectors_o8;

@@ -156,6 +156,39 @@ pub const ORACLE: &[Deviation] = &[
         reason: "an answer shorter than ODBPDFINF makes FANUC's library fill the rest from its receive buffer (the request's bytes); ours returns EW_PROTOCOL and writes nothing",
     },
     Deviation {
+        function: "cnc_absolute2_exdgt",
+        // oracle fuzz: 33 records or more (32 + 1..4, a longer payload).
+        cases: &[
+            "fuzz_absolute2_exdgt_*_s0Ln3#_*",
+            "fuzz_absolute2_exdgt_*more*",
+        ],
+        reason: "FANUC's library writes every 16-byte record the CNC sends, past the caller's 32 ODBEXPOS (MAX_AXIS) for a longer answer; ours writes at most 32",
+    },
+    Deviation {
+        function: "cnc_machine_exdgt",
+        // oracle fuzz: 33 records or more (32 + 1..4, a longer payload).
+        cases: &["fuzz_machine_exdgt_*_s0Ln3#_*", "fuzz_machine_exdgt_*more*"],
+        reason: "FANUC's library writes every 16-byte record the CNC sends, past the caller's 32 ODBEXPOS (MAX_AXIS) for a longer answer; ours writes at most 32",
+    },
+    Deviation {
+        function: "cnc_relative2_exdgt",
+        // oracle fuzz: 33 records or more (32 + 1..4, a longer payload).
+        cases: &[
+            "fuzz_relative2_exdgt_*_s0Ln3#_*",
+            "fuzz_relative2_exdgt_*more*",
+        ],
+        reason: "FANUC's library writes every 16-byte record the CNC sends, past the caller's 32 ODBEXPOS (MAX_AXIS) for a longer answer; ours writes at most 32",
+    },
+    Deviation {
+        function: "cnc_distance_exdgt",
+        // oracle fuzz: 33 records or more (32 + 1..4, a longer payload).
+        cases: &[
+            "fuzz_distance_exdgt_*_s0Ln3#_*",
+            "fuzz_distance_exdgt_*more*",
+        ],
+        reason: "FANUC's library writes every 16-byte record the CNC sends, past the caller's 32 ODBEXPOS (MAX_AXIS) for a longer answer; ours writes at most 32",
+    },
+    Deviation {
         function: "cnc_rdopmode",
         cases: &["rdopmode_v3_shape_longer", "rdopmode_v2_shape_longer"],
         reason: "FANUC's library writes every word of a longer answer, past the caller's short; ours writes one",

@@ -945,6 +945,24 @@ const WORDS: &[Word] = &[
             &["0|1|2|-1|32767|-32768", "8|0|1|100|65536|-1|2147483647"],
         )
     },
+    // cnc_wrtimer: each timer written and read back; negative minutes,
+    // milliseconds past a minute and no such timer refused by the simulator.
+    Word {
+        after: &["rdtimer 4", "rdtimer 2", "rdtimer 0"],
+        ..wc(
+            "wrtimer",
+            &[],
+            &[
+                "4 hex:0a000000e8030000",
+                "2 hex:393000005fea0000",
+                "0 hex:0000000000000000",
+                "1 hex:ffffffff00000000",
+                "3 hex:0100000060ea0000",
+                "-1 hex:0100000000000000",
+                "5 hex:0100000000000000",
+            ],
+        )
+    },
     // The general purpose switches (F0072): each write read back.
     Word {
         after: &["rdopnlgnrl 255"],

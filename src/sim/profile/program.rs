@@ -22,6 +22,10 @@ pub struct Timers {
     /// cnc_gettimer then reads the same time in every run (the oracle).
     #[serde(skip)]
     pub clock_at_start: Option<i64>,
+    /// Milliseconds cnc_wrtimer moved each timer (cnc_rdtimer's kinds 0..4)
+    /// from the profile's and the run's.
+    #[serde(skip)]
+    pub written_ms: [i64; 5],
 }
 
 /// `[path.modal]`: what cnc_modal reads.

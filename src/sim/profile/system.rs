@@ -30,6 +30,9 @@ pub struct System {
     pub protection: Vec<[i16; 2]>,
     /// cnc_rdmenuswitch / cnc_wrmenuswitch: bit k the k-th menu switch.
     pub menu_switch: u16,
+    /// cnc_rdmdlconfig2: the CNC module configuration bytes (at most 128
+    /// answered; what each byte means is not known).
+    pub module_config: Vec<i8>,
     /// The slots, in the CNC's logical order (cnc_rdsyssoft's logical
     /// slots; its physical list is theirs in ascending order).
     #[serde(rename = "slot")]
@@ -143,6 +146,7 @@ impl Default for System {
             operation_level: 4,
             protection: vec![[4, 4], [4, 4], [7, 7]],
             menu_switch: 0x0005,
+            module_config: Vec::new(),
             boards: vec![
                 board(1, 1, 0, 0x0001_0203, 0x0000_0010),
                 board(1, 2, 0, 0x0001_0405, 0x0000_0020),

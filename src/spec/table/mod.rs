@@ -11,6 +11,7 @@ use super::types::*;
 /// The functions no Ethernet library of FANUC's has (not [`FUNCS`]).
 pub mod absent;
 mod alarm;
+mod axes;
 /// The entries others start from (`..COMMAND`).
 pub mod base;
 mod feed;
@@ -61,6 +62,7 @@ const AREAS: &[&[Func]] = &[
     sampling::FUNCS,
     status::FUNCS,
     screen::FUNCS,
+    axes::FUNCS,
     signals::FUNCS,
     alarm::FUNCS,
 ];
