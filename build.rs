@@ -796,6 +796,9 @@ fn described_exports(funcs: &[types::Func]) -> String {
                 .collect(),
             };
         let mut safety = safety;
+        if f.answers().is_some() {
+            safety = vec!["/// Nothing is written through the pointers.".to_string()];
+        }
         for n in &ios {
             safety.push(format!(
                 "/// `{n}` must be NULL or point to a readable and writable short."
@@ -925,6 +928,7 @@ pub {unsafe_}extern "C" fn {name}(FlibHndl: c_ushort{params}) -> c_short {{
             // cut per answer (types::Word::Upto reading on: a full answer asks again,
             // cnc_rdpmacror).
             batch = !(outs.is_empty()
+                || f.answers().is_some()
                 || f.block.is_some_and(|b| b.range.is_some())
                 || f.pages.is_some()
                 || f.forms.iter().any(|fm| {

@@ -6269,6 +6269,36 @@ typedef struct ODBPMCTITLE {
 } ODBPMCTITLE;
 
 /*
+ pmc_rdpmctitle2: the PMC program's title data, with longer program
+ number and version fields than ODBPMCTITLE's (texts, not terminated).
+ */
+typedef struct ODBPMCTITLE2 {
+    char mtb[48];
+    char machine[48];
+    char type[48];
+    char prgno[16];
+    char prgvers[16];
+    char prgdraw[48];
+    char date[32];
+    char design[48];
+    char written[48];
+    char remarks[48];
+} ODBPMCTITLE2;
+
+/*
+ pmc_read_seq_program_and_memory_type: the sequence program's type and
+ the PMC memory type, as codes (4 bytes each) and texts.
+ */
+typedef struct ODBPMCLADMEMTYPE {
+    ULONG SystemType;
+    ULONG SystemAttribute;
+    ULONG TargetType;
+    ULONG TargetAttribute;
+    char SystemTypeStr[32];
+    char TargetTypeStr[32];
+} ODBPMCLADMEMTYPE;
+
+/*
  ODBOPHIS4 MDI key record.
  */
 typedef struct ODBOPHIS4_MDI {
@@ -14901,6 +14931,26 @@ short cnc_wrzofs64(unsigned short FlibHndl, short a, struct IODBZOFS64 *b);
 short cnc_zofs_rnge64(unsigned short FlibHndl, short a, short b, struct ODBDATRNG64 *c);
 
 /*
+ Reads a message from the PMC, conditionally: not implemented by FANUC's
+ Linux library, which answers EW_FUNC (1) without traffic, writing
+ nothing.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short pmc_crdmsg(unsigned short FlibHndl, short *data, short *length);
+
+/*
+ Writes a message to the PMC, conditionally: not implemented by FANUC's
+ Linux library, which answers EW_FUNC (1) without traffic, reading
+ nothing.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short pmc_cwrmsg(unsigned short FlibHndl, short length, short *data);
+
+/*
  Reads the PMC unit this handle's PMC calls address (1 until one is
  selected), without traffic. Writes 4 bytes into the `long`.
 
@@ -15009,6 +15059,15 @@ short pmc_rdcntl_exrelay_grp(unsigned short FlibHndl, short *s_number);
 short pmc_rdcntlgrp(unsigned short FlibHndl, short *s_number);
 
 /*
+ Reads a message from the PMC: not implemented by FANUC's Linux library,
+ which answers EW_FUNC (1) without traffic, writing nothing.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short pmc_rdmsg(unsigned short FlibHndl, short *data, short *length);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -15070,6 +15129,29 @@ short pmc_rdpmcrng_ext(unsigned short FlibHndl, short a, struct IODBPMCEXT *b);
 short pmc_rdpmctitle(unsigned short FlibHndl, struct ODBPMCTITLE *title);
 
 /*
+ Reads the PMC program's title data with ODBPMCTITLE2's longer program
+ number and version: pmc_rdpmctitle's texts as the CNC sent them (32, 32,
+ 32, 4, 2, 32, 16, 32, 32 and 32 bytes), then 4 more characters of the
+ program number and 6 more of the version, each at the start of its
+ member, the rest of each member zeroed, as FANUC's library; a short
+ answer reads as zeros.
+
+ # Safety
+ `title` must be NULL or point to a writable ODBPMCTITLE2.
+ */
+short pmc_rdpmctitle2(unsigned short FlibHndl, struct ODBPMCTITLE2 *title);
+
+/*
+ Reads the type of the PMC's sequence program and of its memory: four
+ 32-bit codes (4 bytes written into each `unsigned long`), then the two
+ 32-byte texts as the CNC sent them.
+
+ # Safety
+ `type` must be NULL or point to a writable ODBPMCLADMEMTYPE.
+ */
+short pmc_read_seq_program_and_memory_type(unsigned short FlibHndl, struct ODBPMCLADMEMTYPE *type);
+
+/*
  Selects the PMC unit of type `unittype` for this handle's later PMC calls
  (the CNC is asked first; on its refusal the selection stays).
  */
@@ -15110,6 +15192,15 @@ short pmc_wriolinkdat(unsigned short FlibHndl,
                       unsigned long c,
                       void *d,
                       unsigned long e);
+
+/*
+ Writes a message to the PMC: not implemented by FANUC's Linux library,
+ which answers EW_FUNC (1) without traffic, reading nothing.
+
+ # Safety
+ Nothing is written through the pointers.
+ */
+short pmc_wrmsg(unsigned short FlibHndl, short length, short *data);
 
 /*
  Writes PMC addresses `buf->datano_s`..`buf->datano_e` of area

@@ -3,7 +3,7 @@
 //! own tokio runtime, so tests and tools can block while it serves.
 //!
 //! Layers, each using only those before it (tests/artifacts/layers.rs checks it):
-//! service (the CncService trait, errors) and pmc → profile (pure data,
+//! service (the CncService trait, errors) and pmc (pmc_data) → profile (pure data,
 //! with its sections in profile/) → store (program memory) → run (the live
 //! state of the paths) → machine (the [`Machine`]) → route (a dispatch
 //! row) → the areas answering its requests, each declaring its `ROUTES`
@@ -35,6 +35,7 @@ pub mod param;
 pub mod plan;
 pub mod pmc;
 pub mod pmc_answers;
+pub mod pmc_data;
 pub mod position;
 pub mod profile;
 pub mod program;

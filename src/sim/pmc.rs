@@ -118,11 +118,7 @@ pub struct Pmc {
 
 /// Variable timers of a unit (T0-T499: 250 timers of 2 bytes).
 pub const TIMERS: usize = 250;
-/// Most alarm messages one 0x8010 answer carries (FANUC's library asks
-/// for no more: 11 × 128 bytes fit one answer).
-pub const ALMMSG_MAX: usize = 11;
-/// Bytes of one alarm message on the wire (ODBPMCALM).
-pub const ALMMSG_LEN: usize = 128;
+pub use super::pmc_data::{ALMMSG_LEN, ALMMSG_MAX, ProgramType};
 /// The highest timer type (accuracy code) a unit accepts \[ours\].
 pub const TIMER_TYPE_MAX: i16 = 5;
 
@@ -147,6 +143,7 @@ pub struct UnitInfo {
     /// How many divided ladders the sequence program has
     /// (pmc_get_number_of_ladder).
     pub ladders: i32,
+    pub program_type: ProgramType,
 }
 
 /// The highest control data group number a unit accepts \[ours\].
@@ -164,6 +161,7 @@ impl Default for UnitInfo {
             exrelay_group: 0,
             kpm_size: 0,
             ladders: 1,
+            program_type: ProgramType::default(),
         }
     }
 }
@@ -178,25 +176,14 @@ fn standard_areas() -> Vec<PmcArea> {
 impl Pmc {
     /// Unit `unit`'s title, messages and timers: EW_NOPMC for a unit the
     /// CNC lacks.
-    fn unit_info(&self, unit: u16) -> Reply<&UnitInfo> {
+    pub fn unit_info(&self, unit: u16) -> Reply<&UnitInfo> {
         (self.info.get(usize::from(unit).wrapping_sub(1))).ok_or(CncError::new(ew::EW_NOPMC))
     }
 
-    /// pmc_rdpmctitle's answer on unit `unit`: each text of the reply
-    /// layout `f` (its wire fields, in order) from the unit's title texts,
-    /// cut or zero-padded to its characters; the zeros after each.
+    /// A title answer (pmc_rdpmctitle, pmc_rdpmctitle2: reply layout `f`)
+    /// on unit `unit` from its title texts (`pmc_data::title`).
     pub fn title(&self, unit: u16, f: &Func) -> Reply<Vec<i64>> {
-        let mut texts = self.unit_info(unit)?.title.iter();
-        let mut out = Vec::new();
-        for field in f.reply {
-            let n = usize::from(field.n);
-            let t = match field.arg {
-                Some(_) => &[][..],
-                None => texts.next().map_or(&[][..], |t| t.as_bytes()),
-            };
-            out.extend((0..n).map(|k| i64::from(t.get(k).copied().unwrap_or(0))));
-        }
-        Ok(out)
+        Ok(super::pmc_data::title(&self.unit_info(unit)?.title, f))
     }
 
     /// The alarm messages of unit `unit` now: the texts whose A bit is 1,
@@ -214,33 +201,10 @@ impl Pmc {
             .collect())
     }
 
-    /// Command 0x8010[s, n] on unit `unit`: i32 count, i32 exist (-1 no
-    /// alarm, 0 all read, 1 more after these), then `count` messages of
-    /// 128 bytes (alarms s.., at most n and 11).
+    /// Command 0x8010[s, n] on unit `unit`: its alarms s.. (at most n
+    /// and 11, `pmc_data::alarm_messages`).
     pub fn alarm_messages(&self, unit: u16, s: i32, n: i32) -> Reply<Vec<u8>> {
-        if s < 1 || n < 1 {
-            return Err(CncError::NUMBER);
-        }
-        let on = self.alarms(unit)?;
-        let first = (s - 1) as usize;
-        let take = (n as usize).min(ALMMSG_MAX);
-        let list: Vec<&str> = on.iter().skip(first).take(take).copied().collect();
-        let exist: i32 = if on.is_empty() {
-            -1
-        } else if first + list.len() < on.len() {
-            1
-        } else {
-            0
-        };
-        let mut out = Vec::with_capacity(8 + list.len() * ALMMSG_LEN);
-        out.extend((list.len() as i32).to_be_bytes());
-        out.extend(exist.to_be_bytes());
-        for m in list {
-            let at = out.len();
-            out.extend(&m.as_bytes()[..m.len().min(ALMMSG_LEN)]);
-            out.resize(at + ALMMSG_LEN, 0);
-        }
-        Ok(out)
+        super::pmc_data::alarm_messages(&self.alarms(unit)?, s, n)
     }
 
     /// Timers `s..=e` of unit `unit` (1-based): EW_NUMBER outside 1..=250.
@@ -472,6 +436,8 @@ struct PmcToml {
     /// pmc_get_number_of_ladder's count, 1 to 255 (default 1).
     ladders: Option<i32>,
     #[serde(default)]
+    program_type: ProgramType,
+    #[serde(default)]
     area: BTreeMap<String, AreaToml>,
     /// Units 2..: `[pmc.unit.2]` ... (an Option: a unit's empty `unit`
     /// table is refused too).
@@ -510,7 +476,9 @@ fn unit_info(t: &mut PmcToml) -> Result<UnitInfo, String> {
     if types.iter().any(|t| !(0..=TIMER_TYPE_MAX).contains(t)) {
         return Err(format!("[pmc] timer_types: 0 to {TIMER_TYPE_MAX}"));
     }
+    t.program_type.check()?;
     let mut info = UnitInfo {
+        program_type: std::mem::take(&mut t.program_type),
         title,
         messages,
         control_group: t.control_group,

@@ -7,8 +7,8 @@ use super::Machine;
 use super::route::{Route, enc};
 use super::service::Reply;
 use crate::proto::cmd::{
-    KPMSIZ, NUMBER_OF_LADDER, PMC_COUNT, RDCNTL_EXRELAY_GRP, RDCNTLGRP, WRCNTL_EXRELAY_GRP,
-    WRCNTLGRP,
+    KPMSIZ, NUMBER_OF_LADDER, PMC_COUNT, RDCNTL_EXRELAY_GRP, RDCNTLGRP, RDPMCTITLE2,
+    SEQ_PROGRAM_TYPE, WRCNTL_EXRELAY_GRP, WRCNTLGRP,
 };
 use crate::proto::pmc::{
     GET_TIMER_TYPE, PMC_RDALMMSG, PmcRange, RDPMCINFO, RDPMCRNG, RDPMCTITLE, SELECT_UNIT,
@@ -63,6 +63,10 @@ pub(super) const ROUTES: &[Route] = &[
     }),
     Route::pmc_table(WRCNTL_EXRELAY_GRP, |m, q| {
         (m.profile.pmc.set_group(q.path, true, q.arg(0))).map(|()| Vec::new())
+    }),
+    Route::pmc_table(RDPMCTITLE2, |m, q| m.profile.pmc.title(q.path, q.f)),
+    Route::pmc_table(SEQ_PROGRAM_TYPE, |m, q| {
+        Ok(m.profile.pmc.unit_info(q.path)?.program_type.values())
     }),
 ];
 

@@ -544,6 +544,12 @@ commands! {
     KPMSIZ = CLASS_PMC 0x800a [pmc_kpmsiz];
     /// pmc_get_number_of_ladder: `(2,0x805e)`, how many ladders (i32).
     NUMBER_OF_LADDER = CLASS_PMC 0x805e [pmc_get_number_of_ladder];
+    /// pmc_read_seq_program_and_memory_type: `(2,0x804c)`: four u32 codes
+    /// and two 32-byte texts.
+    SEQ_PROGRAM_TYPE = CLASS_PMC 0x804c [pmc_read_seq_program_and_memory_type];
+    /// pmc_rdpmctitle2: `(2,0x8060)`: pmc_rdpmctitle's texts, then the
+    /// program number's and version's further characters.
+    RDPMCTITLE2 = CLASS_PMC 0x8060 [pmc_rdpmctitle2];
 }
 
 #[cfg(test)]

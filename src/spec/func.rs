@@ -10,6 +10,12 @@ impl Func {
     pub fn word(&self) -> &'static str {
         self.name.strip_prefix("cnc_").unwrap_or(self.name)
     }
+    /// The code a function answers on every call without traffic (its
+    /// first check [`ALWAYS`] fails, and it has no form), if it does.
+    pub fn answers(&self) -> Option<i16> {
+        let c = self.checks.first().filter(|c| c.arg == ALWAYS)?;
+        self.forms.is_empty().then_some(c.code)
+    }
     /// The number parameters, in order (the values a caller passes).
     pub fn numbers(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.params.iter().filter_map(|p| match *p {
@@ -268,6 +274,7 @@ impl Func {
         let at = |i: i32| args.get(i as usize).copied().unwrap_or(0);
         self.checks.iter().take(n).find_map(|c| {
             let bad = match c.arg {
+                ALWAYS => true,
                 ORDERED => at(c.lo) > at(c.hi),
                 OPTION => !(c.lo..=c.hi).contains(&i32::from(option)),
                 // lo above hi: the range wraps (Check).

@@ -231,6 +231,22 @@ pub const OPTION: u8 = u8::MAX;
 /// asked backwards, cnc_rdpmacror's `s_no` after `e_no`).
 pub const ORDERED: u8 = u8::MAX - 1;
 
+/// [`Check::arg`] of a check every call fails: the function answers
+/// `code` once the handle is checked, whatever its arguments, without
+/// traffic, writing nothing ([`Func::answers`]): FANUC's Linux library
+/// implements it so (pmc_rdmsg: EW_FUNC, src/spec/table/pmc_data.rs).
+pub const ALWAYS: u8 = u8::MAX - 2;
+
+/// The one check of a function that answers `code` on every call ([`ALWAYS`]).
+pub const fn answers(code: i16) -> Check {
+    Check {
+        arg: ALWAYS,
+        lo: 0,
+        hi: 0,
+        code,
+    }
+}
+
 /// A range's start (`s`, number parameter `s`) at most its end (`e`):
 /// else EW_NUMBER before any traffic.
 pub const fn ordered(s: u8, e: u8) -> Check {

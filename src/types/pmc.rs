@@ -110,3 +110,34 @@ pub struct ODBPMCTITLE {
 pub struct ODBPMCALM {
     pub almmsg: [c_char; 128],
 }
+
+/// pmc_rdpmctitle2: the PMC program's title data, with longer program
+/// number and version fields than ODBPMCTITLE's (texts, not terminated).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ODBPMCTITLE2 {
+    pub mtb: [c_char; 48],
+    pub machine: [c_char; 48],
+    pub r#type: [c_char; 48],
+    pub prgno: [c_char; 16],
+    pub prgvers: [c_char; 16],
+    pub prgdraw: [c_char; 48],
+    pub date: [c_char; 32],
+    pub design: [c_char; 48],
+    pub written: [c_char; 48],
+    pub remarks: [c_char; 48],
+}
+
+/// pmc_read_seq_program_and_memory_type: the sequence program's type and
+/// the PMC memory type, as codes (4 bytes each) and texts.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[allow(non_snake_case)]
+pub struct ODBPMCLADMEMTYPE {
+    pub SystemType: ULONG,
+    pub SystemAttribute: ULONG,
+    pub TargetType: ULONG,
+    pub TargetAttribute: ULONG,
+    pub SystemTypeStr: [c_char; 32],
+    pub TargetTypeStr: [c_char; 32],
+}

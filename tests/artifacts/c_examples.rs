@@ -568,6 +568,7 @@ mod collectors_o8;
 mod collectors_panel_system;
 mod collectors_pcode;
 mod collectors_pmcctl;
+mod collectors_pmcdata;
 mod collectors_programs_macros;
 mod collectors_settings;
 mod collectors_system;

@@ -822,6 +822,18 @@ const WORDS: &[Word] = &[
         after: &["pmc_select_pmc_unit 2", "pmc_get_number_of_ladder"],
         ..w("pmc_get_number_of_ladder", &[])
     },
+    // The title with its longer fields and the program's type: unit 1 and 2.
+    Word {
+        after: &["pmc_select_pmc_unit 2", "pmc_rdpmctitle2"],
+        ..w("pmc_rdpmctitle2", &[])
+    },
+    Word {
+        after: &[
+            "pmc_select_pmc_unit 2",
+            "pmc_read_seq_program_and_memory_type",
+        ],
+        ..w("pmc_read_seq_program_and_memory_type", &[])
+    },
     // PMC alarm messages (A bits of the profile's messages) and timer
     // types, on unit 1, then with many alarms (A0-A1 written: 14, more
     // than one answer holds) and on unit 2.

@@ -847,11 +847,17 @@ pub fn expected(f: &Func, outs: &[Ty], len: usize, asked: usize) -> Result<Vec<P
         if fld.arg.is_some() {
             return Ok(());
         }
-        let (off, mt) = member(ty, m).ok_or_else(|| format!("no member {m:?}"))?;
+        // `name[i]`: from element i of array member `name` on.
+        let (name, i) = match m.strip_suffix(']').and_then(|p| p.rsplit_once('[')) {
+            Some((name, i)) => (name, i.parse::<usize>().map_err(|_| format!("{m:?}"))?),
+            None => (m, 0),
+        };
+        let (off, mt) = member(ty, name).ok_or_else(|| format!("no member {m:?}"))?;
         let elem = match &mt {
             Ty::Array(t, _) => t.size(),
             _ => fld.c.size(),
         };
+        let off = off + i * elem;
         for k in 0..fld.n as usize {
             let o = base + off + k * elem;
             let mut lv = Vec::new();

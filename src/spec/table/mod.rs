@@ -28,6 +28,7 @@ pub mod offset_life;
 pub mod operation;
 mod param;
 pub mod pmc;
+mod pmc_data;
 mod position;
 pub mod program;
 mod sampling;
@@ -51,6 +52,7 @@ const AREAS: &[&[Func]] = &[
     position::FUNCS,
     offset_life::FUNCS,
     pmc::FUNCS,
+    pmc_data::FUNCS,
     memory::FUNCS,
     history::FUNCS,
     tool_life::FUNCS,

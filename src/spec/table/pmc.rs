@@ -5,7 +5,7 @@ use super::super::types::Int::*;
 use super::super::types::*;
 
 /// A text of the reply: `n` characters into member `to` (its first `n`).
-const fn text(to: &'static str, n: u16) -> Field {
+pub(super) const fn text(to: &'static str, n: u16) -> Field {
     Field {
         wire: U8,
         n,
@@ -17,7 +17,7 @@ const fn text(to: &'static str, n: u16) -> Field {
 }
 
 /// `n` zeros written from member element `to` on (not on the wire).
-const fn zeros(to: &'static str, n: u16) -> Field {
+pub(super) const fn zeros(to: &'static str, n: u16) -> Field {
     Field { n, ..zero(to, I8) }
 }
 
