@@ -719,6 +719,15 @@ typedef struct ODBDYO8 {
 } ODBDYO8;
 
 /*
+ cnc_rdexchgtgrp: a tool life group whose tools must be exchanged, and
+ its optional group number.
+ */
+typedef struct ODBEXGP {
+    LONG grp_no;
+    LONG opt_grpno;
+} ODBEXGP;
+
+/*
  cnc_rdexecpt: a program pointer (declared for programs that call it; no
  FANUC Ethernet library implements it).
  */
@@ -1993,6 +2002,17 @@ typedef struct ODBTLMSINF {
 } ODBTLMSINF;
 
 /*
+ cnc_rdtltool: one tool of a tool life group: its number, H and D codes
+ and information.
+ */
+typedef struct IODBTLTOOL {
+    LONG tool_num;
+    LONG h_code;
+    LONG d_code;
+    LONG tool_inf;
+} IODBTLTOOL;
+
+/*
  cnc_rdtlusegrp: the next, in-use and selected tool life groups.
  */
 typedef struct ODBUSEGRP {
@@ -2216,6 +2236,26 @@ typedef struct ODBPTLINF {
 } ODBPTLINF;
 
 /*
+ One group of IODBTR.
+ */
+typedef struct IODBTR_DATA {
+    LONG ntool;
+    LONG life;
+    LONG count;
+} IODBTR_DATA;
+
+/*
+ cnc_rdtoolrng: tool life groups `datano_s`..=`datano_e`: tools, life
+ and counter (5 as declared; the caller's `length` says how many fit).
+ */
+typedef struct IODBTR {
+    short datano_s;
+    short dummy;
+    short datano_e;
+    struct IODBTR_DATA data[5];
+} IODBTR;
+
+/*
  cnc_rdusegrpid: the next, in-use and selected tool life groups
  (`datano` and `type` untouched).
  */
@@ -2226,6 +2266,17 @@ typedef struct ODBUSEGR {
     LONG use;
     LONG slct;
 } ODBUSEGR;
+
+/*
+ cnc_rdusetlno: the use number of the tool in use of each tool life
+ group `s_grp`..=`e_grp` (5 as declared; `length` says how many fit).
+ */
+typedef struct ODBTLUSE {
+    short s_grp;
+    short dummy;
+    short e_grp;
+    LONG data[5];
+} ODBTLUSE;
 
 /*
  cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
@@ -2424,6 +2475,16 @@ typedef struct ODBSYSEX {
     short reserved[2];
     struct ODBSYSEX_PATH path[MAX_CNCPATH];
 } ODBSYSEX;
+
+/*
+ cnc_tofs_rnge / cnc_zofs_rnge / cnc_wksft_rnge: the range an offset's
+ value may be set in, and whether it may be set.
+ */
+typedef struct ODBDATRNG {
+    LONG data_min;
+    LONG data_max;
+    LONG status;
+} ODBDATRNG;
 
 /*
  pmc_getdtailerr: detail of the last PMC error.
@@ -3780,6 +3841,17 @@ short cnc_rddynamico8(unsigned short FlibHndl, short axis, short length, struct 
  `device` must be NULL or point to a writable short.
  */
 short cnc_rdetherinfo(unsigned short FlibHndl, short *type, short *device);
+
+/*
+ Reads the tool life groups whose tools are to be exchanged, each with
+ its optional group number; `*num` in is how many (at most 179 are
+ asked), out how many were written; below 1: EW_LENGTH without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `exgp` must be NULL or point to `*num` writable ODBEXGP.
+ */
+short cnc_rdexchgtgrp(unsigned short FlibHndl, short *num, struct ODBEXGP *exgp);
 
 /*
  Reads the text of the block being executed and the blocks after it.
@@ -5153,6 +5225,23 @@ short cnc_rdtlinfo(unsigned short FlibHndl, struct ODBTLINFO *tlinfo);
 short cnc_rdtlmsinfo(unsigned short FlibHndl, struct ODBTLMSINF *tlmsinf);
 
 /*
+ Reads tools `s_num..` of tool life group `grp_num` (cnc_rdtoolgrp's
+ request `[grp, s, s + num - 1]`): each one's number, H and D codes and
+ information; `*num` in is how many (at most 89 are asked), out how many
+ were written. `grp_num` below 1: EW_NUMBER, `s_num` below 1: EW_ATTRIB,
+ `*num` below 1: EW_LENGTH, without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `tltool` must be NULL or point to `*num` writable IODBTLTOOL.
+ */
+short cnc_rdtltool(unsigned short FlibHndl,
+                   long grp_num,
+                   long s_num,
+                   short *num,
+                   struct IODBTLTOOL *tltool);
+
+/*
  Reads the next, in-use and selected tool life groups, then their
  optional group numbers in a second exchange (the 30i class asks for
  each group above 0 when the next group is above 0, the 16i class
@@ -5280,6 +5369,23 @@ short cnc_rdtoolgrp(unsigned short FlibHndl, short number, short length, struct 
 short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
 
 /*
+ Reads tool life groups `s_grp..=e_grp` (cnc_rdgrpinfo's request and
+ answer, at most 44 per call): for each, its number of tools, life and
+ life counter; `datano_s` = `s_grp`, `datano_e` the last group the CNC
+ answered. `s_grp` below 1 or `e_grp` below it: EW_NUMBER without
+ traffic; `length` (bytes) must hold the 8-byte head and 12 bytes per
+ group answered, else EW_LENGTH with nothing written.
+
+ # Safety
+ `tooldata` must be NULL or point to `length` writable bytes (nothing is written past them).
+ */
+short cnc_rdtoolrng(unsigned short FlibHndl,
+                    short s_grp,
+                    short e_grp,
+                    short length,
+                    struct IODBTR *tooldata);
+
+/*
  Reads the next, in-use and selected tool life groups (`datano` and
  `type` untouched).
 
@@ -5287,6 +5393,24 @@ short cnc_rdtoolinfo(unsigned short FlibHndl, struct ODBPTLINF *info);
  `usegrp` must be NULL or point to a writable ODBUSEGR.
  */
 short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
+
+/*
+ Reads the use number of the tool in use of each tool life group
+ `s_grp..=e_grp` into `data` (at most 357 per call: the request asks
+ `s_grp + 356` at most); `s_grp` is written back, `e_grp` as the last
+ group the CNC answered (`s_grp - 2` for an empty answer, as FANUC's
+ library counts it). `s_grp` below 1 or `e_grp` below it: EW_NUMBER
+ without traffic; `length` (bytes) must hold the 8-byte head and 4 bytes
+ per group answered, else EW_LENGTH with nothing written.
+
+ # Safety
+ `tlusenum` must be NULL or point to `length` writable bytes (nothing is written past them).
+ */
+short cnc_rdusetlno(unsigned short FlibHndl,
+                    short s_grp,
+                    short e_grp,
+                    short length,
+                    struct ODBTLUSE *tlusenum);
 
 /*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into
@@ -5667,6 +5791,16 @@ short cnc_t1info(unsigned short FlibHndl, short grp_num, short tuse_num, struct 
 short cnc_t2info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
 
 /*
+ Reads the range tool offset `number` of type `type` (as cnc_rdtofs
+ numbers them) may be set in: lowest and highest value and its status;
+ the type goes as `1000 + type` (cnc_wrtofs's single form).
+
+ # Safety
+ `rnge` must be NULL or point to a writable ODBDATRNG.
+ */
+short cnc_tofs_rnge(unsigned short FlibHndl, short number, short type, struct ODBDATRNG *rnge);
+
+/*
  Reads the tool number of the `tuse_num`-th tool of tool-life group
  `grp_num`.
 
@@ -5746,6 +5880,15 @@ short cnc_upstart3(unsigned short FlibHndl, short type, long startno, long endno
  `prgname` must be NULL or a NUL-terminated string.
  */
 short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
+
+/*
+ Reads the range the work coordinate shift of axis `axis` may be set in:
+ lowest and highest value and its status.
+
+ # Safety
+ `rnge` must be NULL or point to a writable ODBDATRNG.
+ */
+short cnc_wksft_rnge(unsigned short FlibHndl, short axis, struct ODBDATRNG *rnge);
 
 /*
  Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
@@ -6073,6 +6216,16 @@ short cnc_wrwkcdshft(unsigned short FlibHndl, short length, struct IODBWCSF *shi
  library reads them).
  */
 short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
+
+/*
+ Reads the range work zero offset `number` (0 the external offset, 1..
+ G54..) of axis `axis` may be set in: lowest and highest value and its
+ status.
+
+ # Safety
+ `rnge` must be NULL or point to a writable ODBDATRNG.
+ */
+short cnc_zofs_rnge(unsigned short FlibHndl, short number, short axis, struct ODBDATRNG *rnge);
 
 /*
  Reads the PMC unit this handle's PMC calls address (1 until one is

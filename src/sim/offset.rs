@@ -9,7 +9,7 @@ use crate::ew;
 use crate::proto::cmd::RDTLMSINFO;
 use crate::proto::cmd::RDWKCDSHFT;
 use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
-use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO};
+use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO, TOFS_RNGE, WKSFT_RNGE, ZOFS_RNGE};
 use crate::proto::offset::{
     Ack, Count, RDTOFS, RDZOFS, TOFS_SINGLE, TofsInfo, WRTOFS, WRWKCDSHFT, WRZOFS,
 };
@@ -64,6 +64,29 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(RDWKCDSHFT, |m, q| {
         m.shift_read(q.path, q.arg(0))
             .map(|r| [vec![i64::from(q.arg(0))], r].concat())
+    }),
+    // [n, 0, 1000 + type]: tool offset n of one type.
+    Route::table(TOFS_RNGE, |m, q| {
+        let o = m.offsets(q.path)?;
+        Machine::range(q.words[0], q.words[0], 1, o.tool.len())?;
+        let types = o.tool.first().map_or(0, Vec::len) as i32;
+        let t = q.words[2].wrapping_sub(TOFS_SINGLE);
+        if !(0..types).contains(&t) {
+            return Err(ATTRIB);
+        }
+        m.offset_limits(q.path)
+    }),
+    // [n, 0, axis]: work zero offset n (0 external) of one axis.
+    Route::table(ZOFS_RNGE, |m, q| {
+        m.one_axis(q.path, q.words[2])?;
+        let o = m.offsets(q.path)?;
+        Machine::range(q.words[0], q.words[0], 0, o.work.len())?;
+        m.offset_limits(q.path)
+    }),
+    // [axis]: the work coordinate shift of one axis.
+    Route::table(WKSFT_RNGE, |m, q| {
+        m.one_axis(q.path, q.words[0])?;
+        m.offset_limits(q.path)
     }),
 ];
 
@@ -227,6 +250,25 @@ impl Machine {
             ofs_type: o.memory,
             enable: o.enable,
         })
+    }
+
+    /// The range offsets may be set in and the setting status (the
+    /// cnc_*_rnge answers: two value records and a word).
+    fn offset_limits(&self, path: u16) -> Reply<Vec<i64>> {
+        let o = self.offsets(path)?;
+        // Each limit a value record: base 10, the offsets' decimals.
+        let exp = (10 << 16) | i32::from(o.decimals as u16);
+        let [lo, hi] = o.limits;
+        Ok([lo, exp, hi, exp, o.limit_status].map(i64::from).to_vec())
+    }
+
+    /// One axis of the path, 1..=n (else EW_ATTRIB).
+    fn one_axis(&self, path: u16, axis: i32) -> Reply<()> {
+        let n = self.offsets(path).map(|_| self.axes_of(path))?;
+        if axis < 1 || axis as usize > n {
+            return Err(ATTRIB);
+        }
+        Ok(())
     }
 
     /// Which axes an axis word selects: -1 all (max_axes records), 1..=n one.

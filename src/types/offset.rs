@@ -189,3 +189,13 @@ pub struct ODBTLMSINF {
     pub hm_dp: LONG,
     pub tlofs_no: LONG,
 }
+
+/// cnc_tofs_rnge / cnc_zofs_rnge / cnc_wksft_rnge: the range an offset's
+/// value may be set in, and whether it may be set.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBDATRNG {
+    pub data_min: LONG,
+    pub data_max: LONG,
+    pub status: LONG,
+}

@@ -30,6 +30,11 @@ pub struct Offsets {
     /// Work coordinate shift (cnc_rdwkcdshft), one value per axis (missing
     /// axes read 0).
     pub shift: Vec<i32>,
+    /// The lowest and highest value an offset may be set to, in the
+    /// offsets' decimals (cnc_tofs_rnge, cnc_zofs_rnge, cnc_wksft_rnge).
+    pub limits: [i32; 2],
+    /// The setting status those functions answer with the range.
+    pub limit_status: i32,
 }
 
 impl Default for Offsets {
@@ -44,6 +49,8 @@ impl Default for Offsets {
             tool: Vec::new(),
             work: Vec::new(),
             shift: Vec::new(),
+            limits: [-999_999_999, 999_999_999],
+            limit_status: 0,
         }
     }
 }
@@ -92,6 +99,8 @@ pub struct ToolGroupProfile {
     pub count_type: i32,
     /// The optional group number (cnc_rdtlusegrp's opt_*; 0: none).
     pub optional: i32,
+    /// The use number of the group's tool in use (cnc_rdusetlno; 0: none).
+    pub using: i32,
     /// The group's tools in use order (tool-use number 1, 2, ...).
     #[serde(rename = "tool")]
     pub tools: Vec<ToolProfile>,

@@ -23,6 +23,7 @@ pub mod memory;
 mod names;
 pub mod offset;
 pub mod offset_life;
+mod offset_range;
 pub mod operation;
 mod param;
 pub mod pmc;
@@ -34,6 +35,7 @@ pub mod servo;
 mod setting;
 mod signals;
 pub mod status;
+pub mod tool_group;
 pub mod tool_life;
 
 /// The areas' entries, in this order.
@@ -52,6 +54,8 @@ const AREAS: &[&[Func]] = &[
     memory::FUNCS,
     history::FUNCS,
     tool_life::FUNCS,
+    tool_group::FUNCS,
+    offset_range::FUNCS,
     magazine::FUNCS,
     maintenance::FUNCS,
     names::FUNCS,
