@@ -5891,6 +5891,25 @@ short cnc_upstart4(unsigned short FlibHndl, short type, char *prgname);
 short cnc_wksft_rnge(unsigned short FlibHndl, short axis, struct ODBDATRNG *rnge);
 
 /*
+ Writes tool `type` (its use number, a long) of tool life group `datano`
+ as cnc_wr1tlifedata (its request; `dummy` not sent).
+
+ # Safety
+ `tldata` must be NULL or point to a readable and writable IODBTD2.
+ */
+short cnc_wr1tlifedat2(unsigned short FlibHndl, struct IODBTD2 *tldata);
+
+/*
+ Writes tool `type` (its use number) of tool life group `datano`: its
+ number, H and D codes and information; `datano` and `type` go as the
+ request's first two words.
+
+ # Safety
+ `tldata` must be NULL or point to a readable and writable IODBTD.
+ */
+short cnc_wr1tlifedata(unsigned short FlibHndl, struct IODBTD *tldata);
+
+/*
  Writes tool life groups `s_grp..=e_grp` from `grpinfo` (life, counter
  and counter type; `n_tool` is not sent). `e_grp` below `s_grp`:
  EW_NUMBER; `length` (bytes) below 8 + 16 per group: EW_LENGTH; both

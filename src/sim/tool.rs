@@ -7,7 +7,7 @@ use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
-use crate::proto::cmd::{RD1TLIFEDATA, RDEXCHGTGRP, RDNGRP, RDTLINFO, RDUSETLNO};
+use crate::proto::cmd::{RD1TLIFEDATA, RDEXCHGTGRP, RDNGRP, RDTLINFO, RDUSETLNO, WR1TLIFEDATA};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, PTLDATA, PTLINFO, PTLINFO_16, TLGROUP, TLINSERT, TLOPTGRP,
@@ -106,6 +106,20 @@ pub(super) const ROUTES: &[Route] = &[
     }),
     // cnc_rdexchgtgrp [n]: the groups whose life is used up, at most n.
     Route::table(RDEXCHGTGRP, |m, q| m.tl_exchange(q.path, q.words[0])),
+    // cnc_wr1tlifedata [grp, n] + the tool's number, H, D and information.
+    Route::table(WR1TLIFEDATA, |m, q| {
+        let [tno, h, d, inf] = match q.payload {
+            [a, b, c, d, ..] => [*a, *b, *c, *d].map(|v| v as i32),
+            _ => return Err(LENGTH),
+        };
+        let t = ToolProfile {
+            number: tno,
+            length: h,
+            radius: d,
+            info: inf,
+        };
+        none(m.tl_set_tool(q.path, q.arg(0), q.arg(1), t))
+    }),
 ];
 
 impl Machine {
@@ -166,6 +180,24 @@ impl Machine {
             info: 0,
         };
         g.tools.insert(a[1] as usize - 1, t);
+        Ok(())
+    }
+
+    /// 0x0050 [grp, n] + a record: tool `n` (its use number) of group
+    /// `grp` becomes `t`. An absent group or tool: EW_NUMBER; a tool number
+    /// below 1: EW_DATA (as 0x0054's); nothing changed.
+    pub fn tl_set_tool(&mut self, path: u16, grp: i32, n: i32, t: ToolProfile) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let g = groups.iter_mut().find(|g| g.number == grp).ok_or(NUMBER)?;
+        let slot = usize::try_from(n.wrapping_sub(1)).ok();
+        let tool = slot.and_then(|k| g.tools.get_mut(k)).ok_or(NUMBER)?;
+        if t.number < 1 {
+            return Err(CncError::new(ew::EW_DATA));
+        }
+        *tool = t;
         Ok(())
     }
 

@@ -478,6 +478,9 @@ commands! {
     /// cnc_rdusetlno: `(1,0x0049)[s, e]`, the first group's number, then
     /// the use number of each group's tool in use (i32 each).
     RDUSETLNO = CLASS_CNC 0x0049 [cnc_rdusetlno];
+    /// cnc_wr1tlifedata: `(1,0x0050)[grp, n, 0, 0, 16]` + the tool's
+    /// number, H and D codes and information (i32 each).
+    WR1TLIFEDATA = CLASS_CNC 0x0050 [cnc_wr1tlifedata cnc_wr1tlifedat2];
     /// cnc_rdexchgtgrp: `(1,0x00d4)[n]`, the groups whose tools are to be
     /// exchanged: i32 group and optional group number each.
     RDEXCHGTGRP = CLASS_CNC 0x00d4 [cnc_rdexchgtgrp];

@@ -162,4 +162,46 @@ pub const FUNCS: &[Func] = &[
         learnt: Some(&[]),
         ..COMMAND
     },
+    Func {
+        name: "cnc_wr1tlifedata",
+        doc: "Writes tool `type` (its use number) of tool life group `datano`: its number, H and D codes and information; `datano` and `type` go as the request's first two words.",
+        params: &[Param::In("tldata", "IODBTD")],
+        forms: &[every_class(
+            cmd::WR1TLIFEDATA,
+            &[Word::Input("datano", I16), Word::Input("type", I16)],
+        )],
+        payload: Some(Payload {
+            fields: TOOL_DATA,
+            elem: "IODBTD",
+            count: ONE,
+            max: 1,
+        }),
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_wr1tlifedat2",
+        doc: "Writes tool `type` (its use number, a long) of tool life group `datano` as cnc_wr1tlifedata (its request; `dummy` not sent).",
+        params: &[Param::In("tldata", "IODBTD2")],
+        forms: &[every_class(
+            cmd::WR1TLIFEDATA,
+            &[Word::Input("datano", I16), Word::Input("type", I32)],
+        )],
+        payload: Some(Payload {
+            fields: TOOL_DATA,
+            elem: "IODBTD2",
+            count: ONE,
+            max: 1,
+        }),
+        learnt: Some(&[]),
+        ..COMMAND
+    },
+];
+
+/// A tool's number, H and D codes and information, as the writes send them.
+const TOOL_DATA: &[Field] = &[
+    to(I32, "tool_num", I32),
+    to(I32, "h_code", I32),
+    to(I32, "d_code", I32),
+    to(I32, "tool_inf", I32),
 ];
