@@ -343,6 +343,15 @@ typedef struct ODB3DHDL {
 } ODB3DHDL;
 
 /*
+ cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
+ */
+typedef struct IODBZOFS {
+    short datano;
+    short type;
+    LONG data[MAX_AXIS];
+} IODBZOFS;
+
+/*
  One record of ODBAHIS (48 bytes).
  */
 typedef struct ODBAHIS_ALM {
@@ -2289,15 +2298,6 @@ typedef struct IODBWCSF {
 } IODBWCSF;
 
 /*
- cnc_rdzofs / cnc_wrzofs: one work zero offset, one axis or all axes.
- */
-typedef struct IODBZOFS {
-    short datano;
-    short type;
-    LONG data[MAX_AXIS];
-} IODBZOFS;
-
-/*
  cnc_rdzofsr: work zero offsets of a number range (as declared, 8 offsets
  of MAX_AXIS values; the caller's `length` says how many really fit).
  */
@@ -3521,6 +3521,17 @@ short cnc_rd3dtofs(unsigned short FlibHndl, struct ODB3DTO *tofs);
  `data` must be NULL or point to a writable ODB3DHDL.
  */
 short cnc_rd3dtooltip(unsigned short FlibHndl, struct ODB3DHDL *data);
+
+/*
+ Reads the fixture offset in effect of axis `axis` (-1: all axes):
+ `datano` the fixture offset number the CNC answered (the low half of its
+ word), `type` = `axis`, `data` the value of each axis as sent (at most
+ 32 written: FANUC's library writes as many as the answer holds).
+
+ # Safety
+ `ofs` must be NULL or point to a writable IODBZOFS.
+ */
+short cnc_rdactfixofs(unsigned short FlibHndl, short axis, struct IODBZOFS *ofs);
 
 /*
  Reads the execution pointer: program number and block number (4 bytes

@@ -9,7 +9,7 @@ use crate::ew;
 use crate::proto::cmd::RDTLMSINFO;
 use crate::proto::cmd::RDWKCDSHFT;
 use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
-use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO, TOFS_RNGE, WKSFT_RNGE, ZOFS_RNGE};
+use crate::proto::cmd::{RDACTFIXOFS, RDTOFSINFO, RDZOFSINFO, TOFS_RNGE, WKSFT_RNGE, ZOFS_RNGE};
 use crate::proto::offset::{
     Ack, Count, RDTOFS, RDZOFS, TOFS_SINGLE, TofsInfo, WRTOFS, WRWKCDSHFT, WRZOFS,
 };
@@ -88,7 +88,30 @@ pub(super) const ROUTES: &[Route] = &[
         m.one_axis(q.path, q.words[0])?;
         m.offset_limits(q.path)
     }),
+    // [axis]: the fixture offset in effect, each selected axis's value
+    // (the offsets' decimals).
+    Route::table(RDACTFIXOFS, |m, q| {
+        let cols = m.zofs_axes(q.path, q.words[0])?;
+        let o = m.offsets(q.path)?;
+        let n = o.fixture_active;
+        let row = usize::try_from(n.wrapping_sub(1)).ok();
+        let row = row
+            .and_then(|k| o.fixture.get(k))
+            .map_or(&[][..], Vec::as_slice);
+        let mut v = vec![i64::from(q.words[0]), i64::from(n)];
+        for c in cols {
+            let x = row.get(c).copied().unwrap_or(0);
+            v.extend([i64::from(x), base10(o.decimals)]);
+        }
+        Ok(v)
+    }),
 ];
+
+/// The base and exponent word of a value record of `decimals` places,
+/// base 10.
+fn base10(decimals: i16) -> i64 {
+    (10 << 16) | i64::from(decimals as u16)
+}
 
 /// cnc_rdtofsinfo2's words (cnc_rdtofsinfo reads a prefix of them).
 fn tofs_info(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
@@ -257,9 +280,9 @@ impl Machine {
     fn offset_limits(&self, path: u16) -> Reply<Vec<i64>> {
         let o = self.offsets(path)?;
         // Each limit a value record: base 10, the offsets' decimals.
-        let exp = (10 << 16) | i32::from(o.decimals as u16);
-        let [lo, hi] = o.limits;
-        Ok([lo, exp, hi, exp, o.limit_status].map(i64::from).to_vec())
+        let [lo, hi] = o.limits.map(i64::from);
+        let exp = base10(o.decimals);
+        Ok(vec![lo, exp, hi, exp, i64::from(o.limit_status)])
     }
 
     /// One axis of the path, 1..=n (else EW_ATTRIB).

@@ -491,6 +491,9 @@ commands! {
     ZOFS_RNGE = CLASS_CNC 0x00c9 [cnc_zofs_rnge];
     /// cnc_wksft_rnge: `(1,0x00ca)[axis]`, as cnc_tofs_rnge.
     WKSFT_RNGE = CLASS_CNC 0x00ca [cnc_wksft_rnge];
+    /// cnc_rdactfixofs: `(1,0x0129)[axis]`, the fixture offset number in
+    /// effect (i32), then a value record per axis.
+    RDACTFIXOFS = CLASS_CNC 0x0129 [cnc_rdactfixofs];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];
     /// Write a PMC range: args (s, e, adr_type, data_type, n) + n bytes.

@@ -1,6 +1,7 @@
 /* Tool life groups by range and by count (cnc_rdtoolrng, cnc_rdusetlno,
  * cnc_rdtltool, cnc_rdexchgtgrp), the offsets' ranges (cnc_tofs_rnge,
- * cnc_zofs_rnge, cnc_wksft_rnge) and the tool data writes
+ * cnc_zofs_rnge, cnc_wksft_rnge), the fixture offset in effect
+ * (cnc_rdactfixofs) and the tool data writes
  * (cnc_wr1tlifedata, cnc_wr1tlifedat2), called through the .so against
  * focas-sim; prints key=value lines that tests/artifacts compares with the
  * simulator's machine state.
@@ -78,6 +79,16 @@ int main(int argc, char **argv) {
     printf("tofs_rnge.type=%d\n", cnc_tofs_rnge(h, 3, 9, &r));
     printf("tofs_rnge.number=%d\n", cnc_tofs_rnge(h, 999, 1, &r));
     printf("zofs_rnge.axis=%d\n", cnc_zofs_rnge(h, 1, 9, &r));
+
+    /* The fixture offset in effect: every axis, then axis 2. */
+    IODBZOFS z;
+    memset(&z, 0, sizeof z);
+    check("rdactfixofs", cnc_rdactfixofs(h, -1, &z));
+    printf("rdactfixofs=%d,%d,%d,%d,%d\n", z.datano, z.type, (int)z.data[0], (int)z.data[1],
+           (int)z.data[2]);
+    memset(&z, 0, sizeof z);
+    check("rdactfixofs.axis", cnc_rdactfixofs(h, 2, &z));
+    printf("rdactfixofs.axis=%d,%d,%d\n", z.datano, z.type, (int)z.data[0]);
 
     /* Group 1's second tool rewritten, read back; then refused writes
      * (absent group, tool past the group, tool number 0) change nothing. */

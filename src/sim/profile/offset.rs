@@ -30,6 +30,11 @@ pub struct Offsets {
     /// Work coordinate shift (cnc_rdwkcdshft), one value per axis (missing
     /// axes read 0).
     pub shift: Vec<i32>,
+    /// Fixture offsets: row k is fixture offset number k+1, one column per
+    /// axis (missing columns read 0).
+    pub fixture: Vec<Vec<i32>>,
+    /// The fixture offset number in effect (0: none; cnc_rdactfixofs).
+    pub fixture_active: i32,
     /// The lowest and highest value an offset may be set to, in the
     /// offsets' decimals (cnc_tofs_rnge, cnc_zofs_rnge, cnc_wksft_rnge).
     pub limits: [i32; 2],
@@ -49,6 +54,8 @@ impl Default for Offsets {
             tool: Vec::new(),
             work: Vec::new(),
             shift: Vec::new(),
+            fixture: Vec::new(),
+            fixture_active: 0,
             limits: [-999_999_999, 999_999_999],
             limit_status: 0,
         }
@@ -64,6 +71,9 @@ impl Offsets {
         }
         if self.work.iter().any(|r| r.len() > axes) {
             return Err("offset.work rows have at most one value per axis".into());
+        }
+        if self.fixture.iter().any(|r| r.len() > axes) {
+            return Err("offset.fixture rows have at most one value per axis".into());
         }
         Ok(())
     }

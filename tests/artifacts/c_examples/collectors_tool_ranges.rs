@@ -86,6 +86,15 @@ fn tool_life_ranges_offset_ranges_and_tool_writes_follow_the_machine() {
     assert_eq!(kv["tofs_rnge.number"], EW_NUMBER.to_string());
     assert_eq!(kv["zofs_rnge.axis"], EW_ATTRIB.to_string());
 
+    // The fixture offset in effect, all axes and axis 2.
+    let f = usize::try_from(o.fixture_active - 1).unwrap();
+    let row = &o.fixture[f];
+    let fx = |k: usize| i64::from(row[k]);
+    let act = i64::from(o.fixture_active);
+    assert_eq!(ints(&kv["rdactfixofs"]), [act, -1, fx(0), fx(1), fx(2)]);
+    assert_eq!(ints(&kv["rdactfixofs.axis"]), [act, 2, fx(1)]);
+    assert_ne!(fx(1), 0);
+
     // Group 1's second tool rewritten and read back; the refused writes
     // changed nothing.
     let mut want = tools(g1);
