@@ -2288,6 +2288,14 @@ typedef struct ODBTLUSE {
 } ODBTLUSE;
 
 /*
+ cnc_rdvolccomp: the volumetric compensation amount of each axis (5 as
+ declared).
+ */
+typedef struct ODBVOLCOMP {
+    LONG comp[5];
+} ODBVOLCOMP;
+
+/*
  cnc_rdwkcdshft / cnc_wrwkcdshft: the work coordinate shift of one or
  all axes.
  */
@@ -5422,6 +5430,16 @@ short cnc_rdusetlno(unsigned short FlibHndl,
                     short e_grp,
                     short length,
                     struct ODBTLUSE *tlusenum);
+
+/*
+ Reads the volumetric compensation amount of each axis into `comp`, one
+ word per axis as sent (at most 5 written: FANUC's library writes as many
+ as the answer holds).
+
+ # Safety
+ `comp` must be NULL or point to a writable ODBVOLCOMP.
+ */
+short cnc_rdvolccomp(unsigned short FlibHndl, struct ODBVOLCOMP *comp);
 
 /*
  Reads the work coordinate shift of axis `axis` (-1: all axes) into

@@ -9,7 +9,8 @@ use crate::ew;
 use crate::proto::cmd::RDTLMSINFO;
 use crate::proto::cmd::RDWKCDSHFT;
 use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
-use crate::proto::cmd::{RDACTFIXOFS, RDTOFSINFO, RDZOFSINFO, TOFS_RNGE, WKSFT_RNGE, ZOFS_RNGE};
+use crate::proto::cmd::{RDACTFIXOFS, RDTOFSINFO, RDVOLCCOMP, RDZOFSINFO};
+use crate::proto::cmd::{TOFS_RNGE, WKSFT_RNGE, ZOFS_RNGE};
 use crate::proto::offset::{
     Ack, Count, RDTOFS, RDZOFS, TOFS_SINGLE, TofsInfo, WRTOFS, WRWKCDSHFT, WRZOFS,
 };
@@ -87,6 +88,14 @@ pub(super) const ROUTES: &[Route] = &[
     Route::table(WKSFT_RNGE, |m, q| {
         m.one_axis(q.path, q.words[0])?;
         m.offset_limits(q.path)
+    }),
+    // The volumetric compensation amount of each of the path's axes.
+    Route::table(RDVOLCCOMP, |m, q| {
+        let n = m.offsets(q.path).map(|_| m.axes_of(q.path))?;
+        let v = &m.offsets(q.path)?.volumetric;
+        Ok((0..n)
+            .map(|k| i64::from(v.get(k).copied().unwrap_or(0)))
+            .collect())
     }),
     // [axis]: the fixture offset in effect, each selected axis's value
     // (the offsets' decimals).

@@ -494,6 +494,9 @@ commands! {
     /// cnc_rdactfixofs: `(1,0x0129)[axis]`, the fixture offset number in
     /// effect (i32), then a value record per axis.
     RDACTFIXOFS = CLASS_CNC 0x0129 [cnc_rdactfixofs];
+    /// cnc_rdvolccomp: `(1,0x00e0)`, the volumetric compensation amount
+    /// of each axis (i32 each).
+    RDVOLCCOMP = CLASS_CNC 0x00e0 [cnc_rdvolccomp];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];
     /// Write a PMC range: args (s, e, adr_type, data_type, n) + n bytes.

@@ -199,3 +199,11 @@ pub struct ODBDATRNG {
     pub data_max: LONG,
     pub status: LONG,
 }
+
+/// cnc_rdvolccomp: the volumetric compensation amount of each axis (5 as
+/// declared).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBVOLCOMP {
+    pub comp: [LONG; 5],
+}

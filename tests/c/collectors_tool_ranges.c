@@ -1,7 +1,8 @@
 /* Tool life groups by range and by count (cnc_rdtoolrng, cnc_rdusetlno,
  * cnc_rdtltool, cnc_rdexchgtgrp), the offsets' ranges (cnc_tofs_rnge,
  * cnc_zofs_rnge, cnc_wksft_rnge), the fixture offset in effect
- * (cnc_rdactfixofs) and the tool data writes
+ * (cnc_rdactfixofs), the volumetric compensation (cnc_rdvolccomp) and the
+ * tool data writes
  * (cnc_wr1tlifedata, cnc_wr1tlifedat2), called through the .so against
  * focas-sim; prints key=value lines that tests/artifacts compares with the
  * simulator's machine state.
@@ -89,6 +90,12 @@ int main(int argc, char **argv) {
     memset(&z, 0, sizeof z);
     check("rdactfixofs.axis", cnc_rdactfixofs(h, 2, &z));
     printf("rdactfixofs.axis=%d,%d,%d\n", z.datano, z.type, (int)z.data[0]);
+
+    ODBVOLCOMP vc;
+    memset(&vc, 0x55, sizeof vc);
+    check("rdvolccomp", cnc_rdvolccomp(h, &vc));
+    printf("rdvolccomp=%d,%d,%d,%d,%d\n", (int)vc.comp[0], (int)vc.comp[1], (int)vc.comp[2],
+           (int)vc.comp[3], (int)vc.comp[4]);
 
     /* Group 1's second tool rewritten, read back; then refused writes
      * (absent group, tool past the group, tool number 0) change nothing. */

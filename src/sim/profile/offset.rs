@@ -35,6 +35,9 @@ pub struct Offsets {
     pub fixture: Vec<Vec<i32>>,
     /// The fixture offset number in effect (0: none; cnc_rdactfixofs).
     pub fixture_active: i32,
+    /// The volumetric compensation amount of each axis (cnc_rdvolccomp;
+    /// missing axes read 0).
+    pub volumetric: Vec<i32>,
     /// The lowest and highest value an offset may be set to, in the
     /// offsets' decimals (cnc_tofs_rnge, cnc_zofs_rnge, cnc_wksft_rnge).
     pub limits: [i32; 2],
@@ -56,6 +59,7 @@ impl Default for Offsets {
             shift: Vec::new(),
             fixture: Vec::new(),
             fixture_active: 0,
+            volumetric: Vec::new(),
             limits: [-999_999_999, 999_999_999],
             limit_status: 0,
         }
@@ -71,6 +75,9 @@ impl Offsets {
         }
         if self.work.iter().any(|r| r.len() > axes) {
             return Err("offset.work rows have at most one value per axis".into());
+        }
+        if self.volumetric.len() > axes {
+            return Err("offset.volumetric has at most one value per axis".into());
         }
         if self.fixture.iter().any(|r| r.len() > axes) {
             return Err("offset.fixture rows have at most one value per axis".into());

@@ -137,7 +137,26 @@ pub const FUNCS: &[Func] = &[
             room: None,
         }),
         dims: &["1|-1|0|2|3|4|32|33|-2"],
-        learnt: Some(&[]),
+        learnt: Some(&["written past the pointee: value records past 32 axes (fuzz: a deviation)"]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdvolccomp",
+        doc: "Reads the volumetric compensation amount of each axis into `comp`, one word per axis as sent (at most 5 written: FANUC's library writes as many as the answer holds).",
+        params: &[Param::Out("comp", "ODBVOLCOMP")],
+        forms: &[every_class(cmd::RDVOLCCOMP, &[])],
+        records: Some(Records {
+            fields: &[to(I32, "", I32)],
+            out: 0,
+            to: "comp",
+            elem: "long",
+            max: 5,
+            count: None,
+            room: None,
+        }),
+        learnt: Some(&[
+            "written past the pointee: the answer's words past the fifth (fuzz: a deviation)",
+        ]),
         ..COMMAND
     },
 ];

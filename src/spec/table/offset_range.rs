@@ -36,7 +36,10 @@ pub const FUNCS: &[Func] = &[
         reply: RANGE,
         short: Short::Request,
         dims: &["1|0|-1|2|99|32767", "0|1|2|3|-1|4|-1000|32767"],
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "word 2 computed: 1000 + type (recorded: Word::Plus)",
+            "a short answer reads the request's bytes (recorded)",
+        ]),
         ..COMMAND
     },
     Func {
@@ -54,7 +57,7 @@ pub const FUNCS: &[Func] = &[
         reply: RANGE,
         short: Short::Request,
         dims: &["1|0|-1|2|6|7|32767", "1|0|-1|2|3|4|32|33"],
-        learnt: Some(&[]),
+        learnt: Some(&["a short answer reads the request's bytes (recorded)"]),
         ..COMMAND
     },
     Func {
@@ -65,7 +68,9 @@ pub const FUNCS: &[Func] = &[
         reply: RANGE,
         short: Short::Request,
         dims: &["1|0|-1|2|3|4|32|33"],
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "a short answer reads the request's bytes (as cnc_zofs_rnge; its third word is 0)",
+        ]),
         ..COMMAND
     },
 ];

@@ -59,7 +59,10 @@ pub const FUNCS: &[Func] = &[
             "2|1|0|-1|3|44|45|9999",
             "68|0|-1|8|20|32|1000",
         ],
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "records: 32-byte group records after a 4-byte head (the draft's record left three words out); the request's end cut to s_grp + 43 (recorded)",
+            "written past the pointee: `length` is the room, checked after the answer (cnc_rdgrpinfo's)",
+        ]),
         ..COMMAND
     },
     Func {
@@ -92,7 +95,11 @@ pub const FUNCS: &[Func] = &[
             "2|1|0|-1|3|357|358|9999",
             "28|0|-1|8|12|16|4096",
         ],
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "records: one word per group after a 4-byte head (the draft mapped 28-byte records); the request's end cut to s_grp + 356 (recorded)",
+            "e_grp of an empty answer: s_grp - 2 (recorded)",
+            "written past the pointee: `length` is the room, checked after the answer",
+        ]),
         ..COMMAND
     },
     Func {
@@ -140,7 +147,10 @@ pub const FUNCS: &[Func] = &[
             room: None,
         }),
         dims: &["1|0|-1|2|3|9999", "1|0|-1|2|3|99", "4|1|0|-1|2|89|90|200"],
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "word 2 computed: s_num + *num - 1, *num asked at most 89 (recorded: Word::Last)",
+            "written past the pointee: records past *num (fuzz: a deviation)",
+        ]),
         ..COMMAND
     },
     Func {
@@ -159,7 +169,10 @@ pub const FUNCS: &[Func] = &[
             room: None,
         }),
         dims: &["4|1|0|-1|2|179|180|1000"],
-        learnt: Some(&[]),
+        learnt: Some(&[
+            "*num asked at most 179 (recorded)",
+            "written past the pointee: records past *num (fuzz: a deviation)",
+        ]),
         ..COMMAND
     },
     Func {
@@ -193,7 +206,7 @@ pub const FUNCS: &[Func] = &[
             count: ONE,
             max: 1,
         }),
-        learnt: Some(&[]),
+        learnt: Some(&["type sent as a 32-bit word (recorded; the draft had its low half)"]),
         ..COMMAND
     },
 ];

@@ -95,6 +95,16 @@ fn tool_life_ranges_offset_ranges_and_tool_writes_follow_the_machine() {
     assert_eq!(ints(&kv["rdactfixofs.axis"]), [act, 2, fx(1)]);
     assert_ne!(fx(1), 0);
 
+    // The path's three axes' volumetric compensation; the last two words
+    // untouched (0x55 bytes).
+    let untouched = i64::from(0x5555_5555_i32);
+    let v = |k: usize| i64::from(o.volumetric[k]);
+    assert_eq!(
+        ints(&kv["rdvolccomp"]),
+        [v(0), v(1), v(2), untouched, untouched]
+    );
+    assert_ne!(v(1), 0);
+
     // Group 1's second tool rewritten and read back; the refused writes
     // changed nothing.
     let mut want = tools(g1);
