@@ -391,7 +391,8 @@ typedef struct IODBDSSET {
 } IODBDSSET;
 
 /*
- `cnc_dvpunchvolc`, `cnc_dvreadvolc`: punch volumetric compensation data to device.
+ cnc_rdvolccomp: the volumetric compensation amount of each axis (5 as
+ declared).
  */
 typedef struct ODBVOLCOMP {
     LONG comp[5];
@@ -2327,6 +2328,15 @@ typedef struct ODBEMBEDFINF {
     LONG used_page;
     LONG all_page;
 } ODBEMBEDFINF;
+
+/*
+ cnc_rdexchgtgrp: a tool life group whose tools must be exchanged, and
+ its optional group number.
+ */
+typedef struct ODBEXGP {
+    LONG grp_no;
+    LONG opt_grpno;
+} ODBEXGP;
 
 /*
  `cnc_rdexecprog3`: read execute-program infomation.
@@ -4835,6 +4845,17 @@ typedef struct ODBTLMSINF {
 } ODBTLMSINF;
 
 /*
+ cnc_rdtltool: one tool of a tool life group: its number, H and D codes
+ and information.
+ */
+typedef struct IODBTLTOOL {
+    LONG tool_num;
+    LONG h_code;
+    LONG d_code;
+    LONG tool_inf;
+} IODBTLTOOL;
+
+/*
  cnc_rdtlusegrp: the next, in-use and selected tool life groups.
  */
 typedef struct ODBUSEGRP {
@@ -5218,6 +5239,26 @@ typedef struct IODBTLLFD {
 } IODBTLLFD;
 
 /*
+ One group of IODBTR.
+ */
+typedef struct IODBTR_DATA {
+    LONG ntool;
+    LONG life;
+    LONG count;
+} IODBTR_DATA;
+
+/*
+ cnc_rdtoolrng: tool life groups `datano_s`..=`datano_e`: tools, life
+ and counter (5 as declared; the caller's `length` says how many fit).
+ */
+typedef struct IODBTR {
+    short datano_s;
+    short dummy;
+    short datano_e;
+    struct IODBTR_DATA data[5];
+} IODBTR;
+
+/*
  Data of `cnc_rdusbdevinfo`.
  */
 typedef struct ODBUSBSIZE {
@@ -5280,6 +5321,17 @@ typedef struct ODBUSEGR {
     LONG use;
     LONG slct;
 } ODBUSEGR;
+
+/*
+ cnc_rdusetlno: the use number of the tool in use of each tool life
+ group `s_grp`..=`e_grp` (5 as declared; `length` says how many fit).
+ */
+typedef struct ODBTLUSE {
+    short s_grp;
+    short dummy;
+    short e_grp;
+    LONG data[5];
+} ODBTLUSE;
 
 /*
  The `w` member of `ODBWVDT2_u`.
@@ -5862,6 +5914,16 @@ typedef struct ODBSYSEX {
     short reserved[2];
     struct ODBSYSEX_PATH path[MAX_CNCPATH];
 } ODBSYSEX;
+
+/*
+ cnc_tofs_rnge / cnc_zofs_rnge / cnc_wksft_rnge: the range an offset's
+ value may be set in, and whether it may be set.
+ */
+typedef struct ODBDATRNG {
+    LONG data_min;
+    LONG data_max;
+    LONG status;
+} ODBDATRNG;
 
 /*
  Data of `cnc_tool_in3`, `cnc_wredgedata`.
@@ -9165,6 +9227,17 @@ short cnc_rd_sfsg_update_count(unsigned short FlibHndl, unsigned short *update_c
 short cnc_rdactdofs(unsigned short FlibHndl, short a, struct IODBZOFS *b);
 
 /*
+ Reads the fixture offset in effect of axis `axis` (-1: all axes):
+ `datano` the fixture offset number the CNC answered (the low half of its
+ word), `type` = `axis`, `data` the value of each axis as sent (at most
+ 32 written: FANUC's library writes as many as the answer holds).
+
+ # Safety
+ `ofs` must be NULL or point to a writable IODBZOFS.
+ */
+short cnc_rdactfixofs(unsigned short FlibHndl, short axis, struct IODBZOFS *ofs);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -9738,6 +9811,17 @@ short cnc_rdenblinfo(unsigned short FlibHndl, char *info);
  `device` must be NULL or point to a writable short.
  */
 short cnc_rdetherinfo(unsigned short FlibHndl, short *type, short *device);
+
+/*
+ Reads the tool life groups whose tools are to be exchanged, each with
+ its optional group number; `*num` in is how many (at most 179 are
+ asked), out how many were written; below 1: EW_LENGTH without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `exgp` must be NULL or point to `*num` writable ODBEXGP.
+ */
+short cnc_rdexchgtgrp(unsigned short FlibHndl, short *num, struct ODBEXGP *exgp);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -12285,6 +12369,23 @@ short cnc_rdtlmsinfo(unsigned short FlibHndl, struct ODBTLMSINF *tlmsinf);
 short cnc_rdtlnewstatus(unsigned short FlibHndl, unsigned long *a);
 
 /*
+ Reads tools `s_num..` of tool life group `grp_num` (cnc_rdtoolgrp's
+ request `[grp, s, s + num - 1]`): each one's number, H and D codes and
+ information; `*num` in is how many (at most 89 are asked), out how many
+ were written. `grp_num` below 1: EW_NUMBER, `s_num` below 1: EW_ATTRIB,
+ `*num` below 1: EW_LENGTH, without traffic.
+
+ # Safety
+ `num` must be NULL or point to a writable short.
+ `tltool` must be NULL or point to `*num` writable IODBTLTOOL.
+ */
+short cnc_rdtltool(unsigned short FlibHndl,
+                   long grp_num,
+                   long s_num,
+                   short *num,
+                   struct IODBTLTOOL *tltool);
+
+/*
  Reads the next, in-use and selected tool life groups, then their
  optional group numbers in a second exchange (the 30i class asks for
  each group above 0 when the next group is above 0, the 16i class
@@ -12481,6 +12582,23 @@ short cnc_rdtoollifed_count(unsigned short FlibHndl, long a, short *b);
 short cnc_rdtoollifed_data(unsigned short FlibHndl, long a, short b, short *c, struct IODBTLLFD *d);
 
 /*
+ Reads tool life groups `s_grp..=e_grp` (cnc_rdgrpinfo's request and
+ answer, at most 44 per call): for each, its number of tools, life and
+ life counter; `datano_s` = `s_grp`, `datano_e` the last group the CNC
+ answered. `s_grp` below 1 or `e_grp` below it: EW_NUMBER without
+ traffic; `length` (bytes) must hold the 8-byte head and 12 bytes per
+ group answered, else EW_LENGTH with nothing written.
+
+ # Safety
+ `tooldata` must be NULL or point to `length` writable bytes (nothing is written past them).
+ */
+short cnc_rdtoolrng(unsigned short FlibHndl,
+                    short s_grp,
+                    short e_grp,
+                    short length,
+                    struct IODBTR *tooldata);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -12503,6 +12621,34 @@ short cnc_rdusbfilelist(unsigned short FlibHndl,
  `usegrp` must be NULL or point to a writable ODBUSEGR.
  */
 short cnc_rdusegrpid(unsigned short FlibHndl, struct ODBUSEGR *usegrp);
+
+/*
+ Reads the use number of the tool in use of each tool life group
+ `s_grp..=e_grp` into `data` (at most 357 per call: the request asks
+ `s_grp + 356` at most); `s_grp` is written back, `e_grp` as the last
+ group the CNC answered (`s_grp - 2` for an empty answer, as FANUC's
+ library counts it). `s_grp` below 1 or `e_grp` below it: EW_NUMBER
+ without traffic; `length` (bytes) must hold the 8-byte head and 4 bytes
+ per group answered, else EW_LENGTH with nothing written.
+
+ # Safety
+ `tlusenum` must be NULL or point to `length` writable bytes (nothing is written past them).
+ */
+short cnc_rdusetlno(unsigned short FlibHndl,
+                    short s_grp,
+                    short e_grp,
+                    short length,
+                    struct ODBTLUSE *tlusenum);
+
+/*
+ Reads the volumetric compensation amount of each axis into `comp`, one
+ word per axis as sent (at most 5 written: FANUC's library writes as many
+ as the answer holds).
+
+ # Safety
+ `comp` must be NULL or point to a writable ODBVOLCOMP.
+ */
+short cnc_rdvolccomp(unsigned short FlibHndl, struct ODBVOLCOMP *comp);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -13740,6 +13886,16 @@ short cnc_t1info(unsigned short FlibHndl, short grp_num, short tuse_num, struct 
 short cnc_t2info(unsigned short FlibHndl, short grp_num, short tuse_num, struct ODBTLIFE4 *tlife);
 
 /*
+ Reads the range tool offset `number` of type `type` (as cnc_rdtofs
+ numbers them) may be set in: lowest and highest value and its status;
+ the type goes as `1000 + type` (cnc_wrtofs's single form).
+
+ # Safety
+ `rnge` must be NULL or point to a writable ODBDATRNG.
+ */
+short cnc_tofs_rnge(unsigned short FlibHndl, short number, short type, struct ODBDATRNG *rnge);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -14005,6 +14161,15 @@ short cnc_verify_prog(unsigned short FlibHndl, char *a, char *b);
 short cnc_verify_prog_bg(unsigned short FlibHndl, char *a, char *b);
 
 /*
+ Reads the range the work coordinate shift of axis `axis` may be set in:
+ lowest and highest value and its status.
+
+ # Safety
+ `rnge` must be NULL or point to a writable ODBDATRNG.
+ */
+short cnc_wksft_rnge(unsigned short FlibHndl, short axis, struct ODBDATRNG *rnge);
+
+/*
  Declared by FANUC's header, in none of its Ethernet libraries:
  `EW_VERSION` (-7) without traffic, nothing written.
  */
@@ -14021,6 +14186,25 @@ short cnc_wr1length(unsigned short FlibHndl, struct IDBITD2 *a);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wr1radius(unsigned short FlibHndl, struct IDBITD2 *a);
+
+/*
+ Writes tool `type` (its use number, a long) of tool life group `datano`
+ as cnc_wr1tlifedata (its request; `dummy` not sent).
+
+ # Safety
+ `tldata` must be NULL or point to a readable and writable IODBTD2.
+ */
+short cnc_wr1tlifedat2(unsigned short FlibHndl, struct IODBTD2 *tldata);
+
+/*
+ Writes tool `type` (its use number) of tool life group `datano`: its
+ number, H and D codes and information; `datano` and `type` go as the
+ request's first two words.
+
+ # Safety
+ `tldata` must be NULL or point to a readable and writable IODBTD.
+ */
+short cnc_wr1tlifedata(unsigned short FlibHndl, struct IODBTD *tldata);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:
@@ -14923,6 +15107,16 @@ short cnc_wrzofs(unsigned short FlibHndl, short length, struct IODBZOFS *zofs);
  `EW_VERSION` (-7) without traffic, nothing written.
  */
 short cnc_wrzofs64(unsigned short FlibHndl, short a, struct IODBZOFS64 *b);
+
+/*
+ Reads the range work zero offset `number` (0 the external offset, 1..
+ G54..) of axis `axis` may be set in: lowest and highest value and its
+ status.
+
+ # Safety
+ `rnge` must be NULL or point to a writable ODBDATRNG.
+ */
+short cnc_zofs_rnge(unsigned short FlibHndl, short number, short axis, struct ODBDATRNG *rnge);
 
 /*
  Declared by FANUC's header, in none of its Ethernet libraries:

@@ -54,7 +54,9 @@ fn described_names<'a>(
                             | Word::Asked
                             | Word::Input(..)
                             | Word::Upto(..)
-                            | Word::Nonzero(..) => true,
+                            | Word::Nonzero(..)
+                            | Word::Last(_)
+                            | Word::Plus(..) => true,
                         })
                     })
             })

@@ -478,7 +478,8 @@ mod tests {
                     {
                         *w = match *f {
                             crate::spec::Word::Const(c) => c,
-                            crate::spec::Word::Asked => 0,
+                            crate::spec::Word::Asked | crate::spec::Word::Last(_) => 0,
+                            crate::spec::Word::Plus(a, c) => c + args[usize::from(a).min(4)],
                             crate::spec::Word::Upto(_, e, _, _) => {
                                 args.get(usize::from(e)).copied().unwrap_or(0)
                             }

@@ -9,7 +9,8 @@ use crate::ew;
 use crate::proto::cmd::RDTLMSINFO;
 use crate::proto::cmd::RDWKCDSHFT;
 use crate::proto::cmd::{CLRTOFS, RD3DTOFS, RDBTOFSINFO, RDRADOFS, RDTLDATA, RDTOFSENBL};
-use crate::proto::cmd::{RDTOFSINFO, RDZOFSINFO};
+use crate::proto::cmd::{RDACTFIXOFS, RDTOFSINFO, RDVOLCCOMP, RDZOFSINFO};
+use crate::proto::cmd::{TOFS_RNGE, WKSFT_RNGE, ZOFS_RNGE};
 use crate::proto::offset::{
     Ack, Count, RDTOFS, RDZOFS, TOFS_SINGLE, TofsInfo, WRTOFS, WRWKCDSHFT, WRZOFS,
 };
@@ -65,7 +66,61 @@ pub(super) const ROUTES: &[Route] = &[
         m.shift_read(q.path, q.arg(0))
             .map(|r| [vec![i64::from(q.arg(0))], r].concat())
     }),
+    // [n, 0, 1000 + type]: tool offset n of one type.
+    Route::table(TOFS_RNGE, |m, q| {
+        let o = m.offsets(q.path)?;
+        Machine::range(q.words[0], q.words[0], 1, o.tool.len())?;
+        let types = o.tool.first().map_or(0, Vec::len) as i32;
+        let t = q.words[2].wrapping_sub(TOFS_SINGLE);
+        if !(0..types).contains(&t) {
+            return Err(ATTRIB);
+        }
+        m.offset_limits(q.path)
+    }),
+    // [n, 0, axis]: work zero offset n (0 external) of one axis.
+    Route::table(ZOFS_RNGE, |m, q| {
+        m.one_axis(q.path, q.words[2])?;
+        let o = m.offsets(q.path)?;
+        Machine::range(q.words[0], q.words[0], 0, o.work.len())?;
+        m.offset_limits(q.path)
+    }),
+    // [axis]: the work coordinate shift of one axis.
+    Route::table(WKSFT_RNGE, |m, q| {
+        m.one_axis(q.path, q.words[0])?;
+        m.offset_limits(q.path)
+    }),
+    // The volumetric compensation amount of each of the path's axes.
+    Route::table(RDVOLCCOMP, |m, q| {
+        let n = m.offsets(q.path).map(|_| m.axes_of(q.path))?;
+        let v = &m.offsets(q.path)?.volumetric;
+        Ok((0..n)
+            .map(|k| i64::from(v.get(k).copied().unwrap_or(0)))
+            .collect())
+    }),
+    // [axis]: the fixture offset in effect, each selected axis's value
+    // (the offsets' decimals).
+    Route::table(RDACTFIXOFS, |m, q| {
+        let cols = m.zofs_axes(q.path, q.words[0])?;
+        let o = m.offsets(q.path)?;
+        let n = o.fixture_active;
+        let row = usize::try_from(n.wrapping_sub(1)).ok();
+        let row = row
+            .and_then(|k| o.fixture.get(k))
+            .map_or(&[][..], Vec::as_slice);
+        let mut v = vec![i64::from(q.words[0]), i64::from(n)];
+        for c in cols {
+            let x = row.get(c).copied().unwrap_or(0);
+            v.extend([i64::from(x), base10(o.decimals)]);
+        }
+        Ok(v)
+    }),
 ];
+
+/// The base and exponent word of a value record of `decimals` places,
+/// base 10.
+fn base10(decimals: i16) -> i64 {
+    (10 << 16) | i64::from(decimals as u16)
+}
 
 /// cnc_rdtofsinfo2's words (cnc_rdtofsinfo reads a prefix of them).
 fn tofs_info(m: &mut Machine, q: &Asked<'_>) -> Reply<Vec<i64>> {
@@ -227,6 +282,25 @@ impl Machine {
             ofs_type: o.memory,
             enable: o.enable,
         })
+    }
+
+    /// The range offsets may be set in and the setting status (the
+    /// cnc_*_rnge answers: two value records and a word).
+    fn offset_limits(&self, path: u16) -> Reply<Vec<i64>> {
+        let o = self.offsets(path)?;
+        // Each limit a value record: base 10, the offsets' decimals.
+        let [lo, hi] = o.limits.map(i64::from);
+        let exp = base10(o.decimals);
+        Ok(vec![lo, exp, hi, exp, i64::from(o.limit_status)])
+    }
+
+    /// One axis of the path, 1..=n (else EW_ATTRIB).
+    fn one_axis(&self, path: u16, axis: i32) -> Reply<()> {
+        let n = self.offsets(path).map(|_| self.axes_of(path))?;
+        if axis < 1 || axis as usize > n {
+            return Err(ATTRIB);
+        }
+        Ok(())
     }
 
     /// Which axes an axis word selects: -1 all (max_axes records), 1..=n one.

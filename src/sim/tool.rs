@@ -7,7 +7,7 @@ use super::route::{Route, enc, none};
 use super::service::{CncError, Reply};
 use crate::ew;
 use crate::proto::cmd::{DELTLIFEDT, DELTLIFEGRP, RDGRPID2};
-use crate::proto::cmd::{RD1TLIFEDATA, RDNGRP, RDTLINFO};
+use crate::proto::cmd::{RD1TLIFEDATA, RDEXCHGTGRP, RDNGRP, RDTLINFO, RDUSETLNO, WR1TLIFEDATA};
 use crate::proto::packet::ReqSub;
 use crate::proto::tool::{
     GroupRange, GroupRecord, GroupWrite, PTLDATA, PTLINFO, PTLINFO_16, TLGROUP, TLINSERT, TLOPTGRP,
@@ -98,6 +98,28 @@ pub(super) const ROUTES: &[Route] = &[
         v.extend(m.tl_limits(q.path)?);
         Ok(v)
     }),
+    // cnc_rdusetlno [s, e]: the first group's number, then the use number
+    // of each group's tool in use (`s_grp` and `e_grp` not sent).
+    Route::table(RDUSETLNO, |m, q| {
+        let using = m.tl_using(q.path, q.words[0], q.words[1])?;
+        Ok([vec![0, 0, i64::from(q.words[0])], using].concat())
+    }),
+    // cnc_rdexchgtgrp [n]: the groups whose life is used up, at most n.
+    Route::table(RDEXCHGTGRP, |m, q| m.tl_exchange(q.path, q.words[0])),
+    // cnc_wr1tlifedata [grp, n] + the tool's number, H, D and information.
+    Route::table(WR1TLIFEDATA, |m, q| {
+        let [tno, h, d, inf] = match q.payload {
+            [a, b, c, d, ..] => [*a, *b, *c, *d].map(|v| v as i32),
+            _ => return Err(LENGTH),
+        };
+        let t = ToolProfile {
+            number: tno,
+            length: h,
+            radius: d,
+            info: inf,
+        };
+        none(m.tl_set_tool(q.path, q.arg(0), q.arg(1), t))
+    }),
 ];
 
 impl Machine {
@@ -158,6 +180,24 @@ impl Machine {
             info: 0,
         };
         g.tools.insert(a[1] as usize - 1, t);
+        Ok(())
+    }
+
+    /// 0x0050 [grp, n] + a record: tool `n` (its use number) of group
+    /// `grp` becomes `t`. An absent group or tool: EW_NUMBER; a tool number
+    /// below 1: EW_DATA (as 0x0054's); nothing changed.
+    pub fn tl_set_tool(&mut self, path: u16, grp: i32, n: i32, t: ToolProfile) -> Reply<()> {
+        let groups = &mut (self.profile.paths)
+            .get_mut(usize::from(path).wrapping_sub(1))
+            .ok_or(CncError::PATH)?
+            .tool_groups;
+        let g = groups.iter_mut().find(|g| g.number == grp).ok_or(NUMBER)?;
+        let slot = usize::try_from(n.wrapping_sub(1)).ok();
+        let tool = slot.and_then(|k| g.tools.get_mut(k)).ok_or(NUMBER)?;
+        if t.number < 1 {
+            return Err(CncError::new(ew::EW_DATA));
+        }
+        *tool = t;
         Ok(())
     }
 
@@ -369,6 +409,32 @@ impl Machine {
     fn tl_optional(&self, path: u16, g: i32) -> Reply<Vec<u8>> {
         let opt = self.tool_group_of(path, g)?.optional;
         Ok([g, opt].iter().flat_map(|x| x.to_be_bytes()).collect())
+    }
+
+    /// 0x0049 [s, e]: the use number of the tool in use of each group
+    /// s..=e up to the highest the table holds (0 for a number it lacks);
+    /// s < 1, e < s or s past the highest: EW_NUMBER (as 0x008b's range).
+    fn tl_using(&self, path: u16, s: i32, e: i32) -> Reply<Vec<i64>> {
+        let groups = &self.path(path)?.tool_groups;
+        let last = groups.iter().map(|g| g.number).max().unwrap_or(0);
+        if s < 1 || e < s || s > last {
+            return Err(NUMBER);
+        }
+        let of = |n: i32| groups.iter().find(|g| g.number == n).map_or(0, |g| g.using);
+        Ok((s..=e.min(last)).map(|n| i64::from(of(n))).collect())
+    }
+
+    /// 0x00d4 \[n\]: the groups to exchange, at most n: those whose counter
+    /// reached their life (a life of 0: never), each with its optional
+    /// group number.
+    fn tl_exchange(&self, path: u16, n: i32) -> Reply<Vec<i64>> {
+        let groups = &self.path(path)?.tool_groups;
+        let spent = groups.iter().filter(|g| g.life > 0 && g.count >= g.life);
+        let n = usize::try_from(n).unwrap_or(0);
+        Ok(spent
+            .take(n)
+            .flat_map(|g| [g.number, g.optional].map(i64::from))
+            .collect())
     }
 
     /// 0x004d [grp, s, e]: the tools with use numbers s..=e that exist.

@@ -183,7 +183,8 @@ commands! {
     WRGRPINFO = CLASS_CNC 0x004c [cnc_wrgrpinfo];
     /// Tools of a group: args [grp, s, e] (cnc_toolnum: [grp, n, n]).
     /// cnc_rd2tlifedata: [grp, n, n], the group, n and tool n's record.
-    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata cnc_rd2length cnc_rd2radius cnc_t2info];
+    TLTOOLS = CLASS_CNC 0x004d [cnc_rdtoolgrp cnc_toolnum cnc_rd2tlifedata cnc_rd2length cnc_rd2radius cnc_t2info
+        cnc_rdtltool];
     /// cnc_rd1tlifedata: (1,0x004f)[grp, n]: the group, tool n's number, a
     /// word it does not read, its H and D codes and information.
     RD1TLIFEDATA = CLASS_CNC 0x004f [cnc_rd1tlifedata cnc_rd1length cnc_rd1radius cnc_t1info cnc_rd1tlifedat2];
@@ -258,7 +259,7 @@ commands! {
     RDSPDLNAME = CLASS_CNC 0x008a [cnc_rdspdlname cnc_rdspmeter cnc_rdspeed];
     /// Tool life group record: args [grp, grp].
     TLGROUP = CLASS_CNC 0x008b [cnc_rdtoolgrp cnc_rdgrpinfo cnc_rdtlusegrp cnc_rdntool
-        cnc_rdlife cnc_rdcount];
+        cnc_rdlife cnc_rdcount cnc_rdtoolrng];
     /// Series 15 start-up companion of sysinfo.
     SYSINFO15 = CLASS_CNC 0x008c [cnc_allclibhndl3 cnc_rdposition];
     /// 30i class: read parameter (Series 15: option probe, parameter 9153).
@@ -508,6 +509,28 @@ commands! {
     /// 2 relative, 7 distance to go), a 16-byte record per axis.
     EXDGT = CLASS_CNC 0x02ce [cnc_absolute2_exdgt cnc_machine_exdgt cnc_relative2_exdgt cnc_distance_exdgt];
     RESET2 = CLASS_CNC 0x02c5 [cnc_reset2];
+    /// cnc_rdusetlno: `(1,0x0049)[s, e]`, the first group's number, then
+    /// the use number of each group's tool in use (i32 each).
+    RDUSETLNO = CLASS_CNC 0x0049 [cnc_rdusetlno];
+    /// cnc_wr1tlifedata: `(1,0x0050)[grp, n, 0, 0, 16]` + the tool's
+    /// number, H and D codes and information (i32 each).
+    WR1TLIFEDATA = CLASS_CNC 0x0050 [cnc_wr1tlifedata cnc_wr1tlifedat2];
+    /// cnc_rdexchgtgrp: `(1,0x00d4)[n]`, the groups whose tools are to be
+    /// exchanged: i32 group and optional group number each.
+    RDEXCHGTGRP = CLASS_CNC 0x00d4 [cnc_rdexchgtgrp];
+    /// cnc_tofs_rnge: `(1,0x00c8)[number, 0, type]`, the tool offset's
+    /// range (i32 minimum, maximum, status).
+    TOFS_RNGE = CLASS_CNC 0x00c8 [cnc_tofs_rnge];
+    /// cnc_zofs_rnge: `(1,0x00c9)[number, 0, axis]`, as cnc_tofs_rnge.
+    ZOFS_RNGE = CLASS_CNC 0x00c9 [cnc_zofs_rnge];
+    /// cnc_wksft_rnge: `(1,0x00ca)[axis]`, as cnc_tofs_rnge.
+    WKSFT_RNGE = CLASS_CNC 0x00ca [cnc_wksft_rnge];
+    /// cnc_rdactfixofs: `(1,0x0129)[axis]`, the fixture offset number in
+    /// effect (i32), then a value record per axis.
+    RDACTFIXOFS = CLASS_CNC 0x0129 [cnc_rdactfixofs];
+    /// cnc_rdvolccomp: `(1,0x00e0)`, the volumetric compensation amount
+    /// of each axis (i32 each).
+    RDVOLCCOMP = CLASS_CNC 0x00e0 [cnc_rdvolccomp];
     /// Read a PMC range: args (s, e, adr_type, data_type); payload: the bytes.
     RDPMCRNG = CLASS_PMC 0x8001 [pmc_rdpmcrng];
     /// Write a PMC range: args (s, e, adr_type, data_type, n) + n bytes.

@@ -80,7 +80,7 @@ impl Func {
             Word::Arg(i) => Some(usize::from(i)),
             Word::Asked => self.count(),
             Word::Upto(_, e, _, _) => Some(usize::from(e)),
-            Word::Const(_) | Word::Nonzero(..) => None,
+            Word::Const(_) | Word::Nonzero(..) | Word::Last(_) | Word::Plus(..) => None,
             Word::Input(m, _) => self
                 .inputs()
                 .position(|(x, _)| x == m)

@@ -135,6 +135,13 @@ pub enum Word {
     /// `.1` when number parameter `.0` is not 0, else 0: a flag FANUC's
     /// library sends for a nonzero argument (cnc_rdparam3's `type`).
     Nonzero(u8, i32),
+    /// The last number asked: number parameter `.0` (the first) plus the
+    /// records asked ([`Word::Asked`]) less one, in 32 bits (cnc_rdtltool's
+    /// `s + num - 1`).
+    Last(u8),
+    /// Number parameter `.0` plus `.1`, in 32 bits (cnc_tofs_rnge's
+    /// `1000 + type`).
+    Plus(u8, i32),
 }
 
 /// Where a range of numbers ends, for a start in `lo..=hi` on `classes`

@@ -196,13 +196,6 @@ pub struct ODBTRNS {
     pub dummy: [c_char; 2],
 }
 
-/// `cnc_dvpunchvolc`, `cnc_dvreadvolc`: punch volumetric compensation data to device.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct ODBVOLCOMP {
-    pub comp: [LONG; 5],
-}
-
 /// Data of `cnc_rdtdicubeinfo`.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

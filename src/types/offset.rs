@@ -189,3 +189,21 @@ pub struct ODBTLMSINF {
     pub hm_dp: LONG,
     pub tlofs_no: LONG,
 }
+
+/// cnc_tofs_rnge / cnc_zofs_rnge / cnc_wksft_rnge: the range an offset's
+/// value may be set in, and whether it may be set.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBDATRNG {
+    pub data_min: LONG,
+    pub data_max: LONG,
+    pub status: LONG,
+}
+
+/// cnc_rdvolccomp: the volumetric compensation amount of each axis (5 as
+/// declared).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBVOLCOMP {
+    pub comp: [LONG; 5],
+}

@@ -359,3 +359,54 @@ pub struct IODBTD2 {
     pub d_code: LONG,
     pub tool_inf: LONG,
 }
+
+/// One group of IODBTR.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTR_DATA {
+    pub ntool: LONG,
+    pub life: LONG,
+    pub count: LONG,
+}
+
+/// cnc_rdtoolrng: tool life groups `datano_s`..=`datano_e`: tools, life
+/// and counter (5 as declared; the caller's `length` says how many fit).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTR {
+    pub datano_s: c_short,
+    pub dummy: c_short,
+    pub datano_e: c_short,
+    pub data: [IODBTR_DATA; 5],
+}
+
+/// cnc_rdusetlno: the use number of the tool in use of each tool life
+/// group `s_grp`..=`e_grp` (5 as declared; `length` says how many fit).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBTLUSE {
+    pub s_grp: c_short,
+    pub dummy: c_short,
+    pub e_grp: c_short,
+    pub data: [LONG; 5],
+}
+
+/// cnc_rdtltool: one tool of a tool life group: its number, H and D codes
+/// and information.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct IODBTLTOOL {
+    pub tool_num: LONG,
+    pub h_code: LONG,
+    pub d_code: LONG,
+    pub tool_inf: LONG,
+}
+
+/// cnc_rdexchgtgrp: a tool life group whose tools must be exchanged, and
+/// its optional group number.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ODBEXGP {
+    pub grp_no: LONG,
+    pub opt_grpno: LONG,
+}

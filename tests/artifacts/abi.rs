@@ -504,6 +504,12 @@ rust_layouts! {
     IODBTD { datano, r#type, tool_num, h_code, d_code, tool_inf }
     // tool life and offsets, family B
     IODBTD2 { datano, dummy, r#type, tool_num, h_code, d_code, tool_inf }
+    IODBTR { datano_s, dummy, datano_e, data }
+    ODBTLUSE { s_grp, dummy, e_grp, data }
+    IODBTLTOOL { tool_num, h_code, d_code, tool_inf }
+    ODBEXGP { grp_no, opt_grpno }
+    ODBDATRNG { data_min, data_max, status }
+    ODBVOLCOMP { comp }
     ODBTLIFE1 { dummy, r#type, data }
     ODBBTLINF { ofs_type, use_no, sub_no }
     ODBROFS { mode, pln_axes, ofsvct }

@@ -575,4 +575,5 @@ mod collectors_system;
 mod collectors_system_ids;
 mod collectors_tool;
 mod collectors_tool_axis;
+mod collectors_tool_ranges;
 mod sampling;

@@ -1321,6 +1321,53 @@ pub const ORACLE: &[Deviation] = &[
         ],
         reason: "on an error answer FANUC's library fills the caller's IODBTD (all but `type`) with uninitialised memory (stack bytes, pointers among them) and returns the error; ours writes nothing",
     },
+    // Tool life groups by range and count, tool data writes (wave 8, B).
+    Deviation {
+        function: "cnc_rdtltool",
+        cases: &[
+            "fuzz_rdtltool_*Ln*",
+            "fuzz_rdtltool_*more*",
+            "fuzz_rdtltool_*long*",
+        ],
+        reason: FUZZ_RECORDS_PAST_COUNT,
+    },
+    Deviation {
+        function: "cnc_rdexchgtgrp",
+        cases: &[
+            "fuzz_rdexchgtgrp_*Ln*",
+            "fuzz_rdexchgtgrp_*more*",
+            "fuzz_rdexchgtgrp_*long*",
+        ],
+        reason: FUZZ_RECORDS_PAST_COUNT,
+    },
+    Deviation {
+        function: "cnc_rdactfixofs",
+        cases: &[
+            "fuzz_rdactfixofs_*Ln*",
+            "fuzz_rdactfixofs_*more*",
+            "fuzz_rdactfixofs_*long*",
+        ],
+        reason: "FANUC's library writes the value of every record an answer holds into `data`, past its 32 entries (`MAX_AXIS`) and the struct for a longer one; ours writes at most 32",
+    },
+    Deviation {
+        function: "cnc_rdvolccomp",
+        cases: &[
+            "fuzz_rdvolccomp_*Ln*",
+            "fuzz_rdvolccomp_*more*",
+            "fuzz_rdvolccomp_*long*",
+        ],
+        reason: "FANUC's library copies every word of a longer answer into `comp`, past its 5 entries and the struct; ours writes at most 5",
+    },
+    Deviation {
+        function: "cnc_wr1tlifedata",
+        cases: &["wr1tlifedata_*_path2"],
+        reason: TOOL_READ_BACK_ERROR,
+    },
+    Deviation {
+        function: "cnc_wr1tlifedat2",
+        cases: &["wr1tlifedat2_*_path2"],
+        reason: TOOL_READ_BACK_ERROR,
+    },
     // Tool life family B (issue 24).
     Deviation {
         function: "cnc_rdgrpid",
@@ -1347,6 +1394,8 @@ const FUZZ_SHORT: &str = "FANUC's library reads the bytes a payload cut inside i
 
 /// The oracle fuzz's longer answers to record reads with a caller's count.
 const FUZZ_COUNT_PAST_ASKED: &str = "FANUC's library writes as many records as the count the CNC answered says (zeros past the answer's end), past the `*num` the caller asked for, and sets `*num` to that count; ours writes at most `*num` records and sets `*num` to the number written";
+
+const TOOL_READ_BACK_ERROR: &str = "its read-back, cnc_rd1tlifedata answered by an error (path 2 has no tool life groups, so the write is refused too), makes FANUC's library fill the caller's IODBTD (all but `type`) with uninitialised memory, as the cnc_rd1tlifedata deviation says; ours writes nothing";
 
 const FUZZ_RECORDS_PAST_COUNT: &str = "FANUC's library writes every record a longer answer holds, past the count the caller asked for (and says so in the count); ours writes at most the records asked for";
 

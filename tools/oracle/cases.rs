@@ -1137,6 +1137,42 @@ const WORDS: &[Word] = &[
             ],
         )
     },
+    // cnc_wr1tlifedata: IODBTD (datano, type, tool_num, h, d, inf), read
+    // back: group 1's second tool; group 2's first; an absent group, tool
+    // 0 and past the group; a tool number of 0 and the extremes.
+    Word {
+        after: &["rd1tlifedata 1 2", "rd1tlifedata 2 1"],
+        ..wc(
+            "wr1tlifedata",
+            &[],
+            &[
+                "hex:01000200110000000c0000000d00000002000000",
+                "hex:0200010007000000080000000900000000000000",
+                "hex:0f27010007000000080000000900000000000000",
+                "hex:0100000007000000080000000900000000000000",
+                "hex:0100630007000000080000000900000000000000",
+                "hex:ffff020007000000080000000900000000000000",
+                "hex:0100020000000000080000000900000000000000",
+                "hex:01000200ffffff7f00000080ffffffff01000000",
+            ],
+        )
+    },
+    // cnc_wr1tlifedat2: IODBTD2 (datano, dummy, type as a long, tool_num,
+    // h, d, inf): the use number's high half sent or not.
+    Word {
+        after: &["rd1tlifedata 1 2", "rd1tlifedata 2 1"],
+        ..wc(
+            "wr1tlifedat2",
+            &[],
+            &[
+                "hex:0100341202000000110000000c0000000d00000002000000",
+                "hex:010000000200010011000000120000001300000003000000",
+                "hex:020000000100000007000000080000000900000000000000",
+                "hex:0100000002000080110000000c0000000d00000002000000",
+                "hex:01000000ffffffff110000000c0000000d00000002000000",
+            ],
+        )
+    },
     // cnc_wrpmacror2: `s_no num type` and the doubles (native), read back
     // as doubles and as value records; `*num` 0, `type` past 2, the end of
     // the simulator's #10000..#10199, the end of the range (#19999), 200

@@ -131,6 +131,15 @@ impl Call for Described<'_> {
                 *w = match *f {
                     Word::Const(c) => c,
                     Word::Asked => asked(self.f, self.args).unwrap_or(0) as i32,
+                    Word::Last(s) => {
+                        let s = self.args.get(usize::from(s)).copied().unwrap_or(0);
+                        let n = asked(self.f, self.args).unwrap_or(0) as i32;
+                        s.wrapping_add(n).wrapping_sub(1)
+                    }
+                    Word::Plus(i, c) => {
+                        let v = self.args.get(usize::from(i)).copied().unwrap_or(0);
+                        v.wrapping_add(c)
+                    }
                     Word::Upto(s, e, n, _) => {
                         let at = |i: u8| self.args.get(usize::from(i)).copied().unwrap_or(0);
                         let (s16, s15) = (
@@ -394,7 +403,14 @@ fn decode_tail(f: &Func, args: &[i32], payload: &[u8], tail: &[u8]) -> Result<Ve
         for _ in 0..n {
             read_fields(&mut r, rec.fields, args, &mut out)?;
         }
-        // The last number answered: argument 0 + records - 1.
+        // The last number answered: argument 0 + records - 1, the records
+        // counted as FANUC's library counts them, `(length - head) / size`
+        // in C's division: an answer shorter than the head by a record or
+        // more counts below 0 (cnc_rdusetlno's empty answer: -1).
+        let n = match (n, f.counted) {
+            (0, None) => ((payload.len() as i64 - need as i64) / size as i64).min(0),
+            _ => n as i64,
+        };
         let mut at = 0;
         for field in f.reply {
             if field.arg == Some(LAST) {

@@ -30,6 +30,19 @@ pub struct Offsets {
     /// Work coordinate shift (cnc_rdwkcdshft), one value per axis (missing
     /// axes read 0).
     pub shift: Vec<i32>,
+    /// Fixture offsets: row k is fixture offset number k+1, one column per
+    /// axis (missing columns read 0).
+    pub fixture: Vec<Vec<i32>>,
+    /// The fixture offset number in effect (0: none; cnc_rdactfixofs).
+    pub fixture_active: i32,
+    /// The volumetric compensation amount of each axis (cnc_rdvolccomp;
+    /// missing axes read 0).
+    pub volumetric: Vec<i32>,
+    /// The lowest and highest value an offset may be set to, in the
+    /// offsets' decimals (cnc_tofs_rnge, cnc_zofs_rnge, cnc_wksft_rnge).
+    pub limits: [i32; 2],
+    /// The setting status those functions answer with the range.
+    pub limit_status: i32,
 }
 
 impl Default for Offsets {
@@ -44,6 +57,11 @@ impl Default for Offsets {
             tool: Vec::new(),
             work: Vec::new(),
             shift: Vec::new(),
+            fixture: Vec::new(),
+            fixture_active: 0,
+            volumetric: Vec::new(),
+            limits: [-999_999_999, 999_999_999],
+            limit_status: 0,
         }
     }
 }
@@ -57,6 +75,12 @@ impl Offsets {
         }
         if self.work.iter().any(|r| r.len() > axes) {
             return Err("offset.work rows have at most one value per axis".into());
+        }
+        if self.volumetric.len() > axes {
+            return Err("offset.volumetric has at most one value per axis".into());
+        }
+        if self.fixture.iter().any(|r| r.len() > axes) {
+            return Err("offset.fixture rows have at most one value per axis".into());
         }
         Ok(())
     }
@@ -92,6 +116,8 @@ pub struct ToolGroupProfile {
     pub count_type: i32,
     /// The optional group number (cnc_rdtlusegrp's opt_*; 0: none).
     pub optional: i32,
+    /// The use number of the group's tool in use (cnc_rdusetlno; 0: none).
+    pub using: i32,
     /// The group's tools in use order (tool-use number 1, 2, ...).
     #[serde(rename = "tool")]
     pub tools: Vec<ToolProfile>,

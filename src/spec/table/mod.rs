@@ -25,6 +25,7 @@ pub mod memory;
 mod names;
 pub mod offset;
 pub mod offset_life;
+mod offset_range;
 pub mod operation;
 mod param;
 pub mod pmc;
@@ -37,6 +38,7 @@ pub mod servo;
 mod setting;
 mod signals;
 pub mod status;
+pub mod tool_group;
 pub mod tool_life;
 
 /// The areas' entries, in this order.
@@ -56,6 +58,8 @@ const AREAS: &[&[Func]] = &[
     memory::FUNCS,
     history::FUNCS,
     tool_life::FUNCS,
+    tool_group::FUNCS,
+    offset_range::FUNCS,
     magazine::FUNCS,
     maintenance::FUNCS,
     names::FUNCS,

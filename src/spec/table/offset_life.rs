@@ -120,4 +120,43 @@ pub const FUNCS: &[Func] = &[
         learnt: Some(&[]),
         ..COMMAND
     },
+    Func {
+        name: "cnc_rdactfixofs",
+        doc: "Reads the fixture offset in effect of axis `axis` (-1: all axes): `datano` the fixture offset number the CNC answered (the low half of its word), `type` = `axis`, `data` the value of each axis as sent (at most 32 written: FANUC's library writes as many as the answer holds).",
+        params: &[Param::Short("axis"), Param::Out("ofs", "IODBZOFS")],
+        forms: &[every_class(cmd::RDACTFIXOFS, &[Word::Arg(0)])],
+        reply: &[echo(0, "type", I16), to(I32, "datano", I16)],
+        // A value record per axis: its base and exponent words not read.
+        records: Some(&Records {
+            fields: &[to(I32, "", I32), skip(I32)],
+            out: 0,
+            to: "data",
+            elem: "long",
+            max: 32,
+            count: None,
+            room: None,
+        }),
+        dims: &["1|-1|0|2|3|4|32|33|-2"],
+        learnt: Some(&["written past the pointee: value records past 32 axes (fuzz: a deviation)"]),
+        ..COMMAND
+    },
+    Func {
+        name: "cnc_rdvolccomp",
+        doc: "Reads the volumetric compensation amount of each axis into `comp`, one word per axis as sent (at most 5 written: FANUC's library writes as many as the answer holds).",
+        params: &[Param::Out("comp", "ODBVOLCOMP")],
+        forms: &[every_class(cmd::RDVOLCCOMP, &[])],
+        records: Some(&Records {
+            fields: &[to(I32, "", I32)],
+            out: 0,
+            to: "comp",
+            elem: "long",
+            max: 5,
+            count: None,
+            room: None,
+        }),
+        learnt: Some(&[
+            "written past the pointee: the answer's words past the fifth (fuzz: a deviation)",
+        ]),
+        ..COMMAND
+    },
 ];

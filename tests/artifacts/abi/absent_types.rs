@@ -155,7 +155,6 @@ rust_layouts! {
     ODBSUODATA { data_name, prm_val, frc_dgt }
     ODBSUOVECT { vect_val, frc_dgt }
     ODBTRNS { status, pct, r#type, dummy }
-    ODBVOLCOMP { comp }
     ODBNME { ob_type, obj_no, nme_no, suffix, name }
     IDBTWP_PJCT_FMT { orign, i, j, k, reserve }
     IDBTWP_2VCT_FMT { orign, vtr1, vtr2, reserve }
