@@ -14,15 +14,21 @@ use crate::types::*;
 #[allow(unused_imports)]
 use std::os::raw::{c_char, c_int, c_long, c_short, c_uchar, c_uint, c_ulong, c_ushort, c_void};
 
-/// The body of every export of src/spec/table/absent/, with its row's
-/// index: `EW_VERSION` once the handle is checked, without traffic,
-/// writing nothing.
-extern "C" fn not_on_ethernet(h: c_ushort, row: u32) -> c_short {
-    let row = row as usize;
-    let name = rows::NAMES
-        .get(usize::from(rows::STARTS[row])..usize::from(rows::STARTS[row + 1]))
-        .unwrap_or("a function not on Ethernet");
-    super::boundary(name, &mut || {
+/// The body of every export of src/spec/table/absent/, given an address
+/// inside the export (its name is the dynamic symbol there): `EW_VERSION`
+/// once the handle is checked, without traffic, writing nothing.
+extern "C" fn not_on_ethernet(h: c_ushort, at: *const c_void) -> c_short {
+    // SAFETY: dladdr reads the loaded objects' symbol tables; the name it
+    // gives is the export's, in the library's string table, as long as the
+    // library is loaded (this call).
+    let name = unsafe {
+        let mut info: libc::Dl_info = std::mem::zeroed();
+        match libc::dladdr(at, &mut info) != 0 && !info.dli_sname.is_null() {
+            true => std::ffi::CStr::from_ptr(info.dli_sname).to_str().ok(),
+            false => None,
+        }
+    };
+    super::boundary(name.unwrap_or("a function not on Ethernet"), &mut || {
         handles::get(h)?;
         Err(Error::local(
             EW_VERSION,
@@ -31,18 +37,19 @@ extern "C" fn not_on_ethernet(h: c_ushort, row: u32) -> c_short {
     })
 }
 
-/// An export's body on x86-64 and aarch64: row `k`'s index as the second
-/// argument, then a jump to [`not_on_ethernet`] (the handle stays the first).
+/// An export's body on x86-64 and aarch64: an address inside it as the
+/// second argument, then a jump to [`not_on_ethernet`] (the handle stays
+/// the first).
 #[cfg(target_arch = "x86_64")]
 macro_rules! jump {
-    ($k:literal) => {
-        core::arch::naked_asm!("mov esi, {k}", "jmp {f}", k = const $k, f = sym super::not_on_ethernet)
+    () => {
+        core::arch::naked_asm!("lea rsi, [rip]", "jmp {f}", f = sym super::not_on_ethernet)
     };
 }
 #[cfg(target_arch = "aarch64")]
 macro_rules! jump {
-    ($k:literal) => {
-        core::arch::naked_asm!("mov w1, #{k}", "b {f}", k = const $k, f = sym super::not_on_ethernet)
+    () => {
+        core::arch::naked_asm!("adr x1, .", "b {f}", f = sym super::not_on_ethernet)
     };
 }
 

@@ -43,19 +43,20 @@ pub(crate) struct Site {
     pub outs: u8,
     pub io: u8,
     pub texts: u8,
-    /// [`exec`]'s `offsets`. Offsets and sizes are `u16`s ([`at`]): a
-    /// `Site` a function, so they are kept small.
-    pub offsets: &'static [u16],
-    /// [`RecordsAt`]'s `base`, `stride`, `offsets` and `count`.
+    /// [`RecordsAt`]'s `base`, `stride` and `count`.
     pub rec_base: u16,
     pub rec_stride: u16,
-    pub rec_offsets: &'static [u16],
     pub rec_count: Option<u16>,
-    /// [`PayloadAt`]'s `stride`, `offsets` and `words`.
+    /// [`PayloadAt`]'s `base` and `stride`.
     pub pay_base: u16,
     pub pay_stride: u16,
-    pub pay_offsets: &'static [u16],
-    pub pay_words: &'static [u16],
+    /// How many of [`Site::data`] are [`exec`]'s `offsets`, then
+    /// [`RecordsAt`]'s `offsets`, [`PayloadAt`]'s `offsets` and `words`.
+    pub lens: [u16; 4],
+    /// Those four lists one after another. Offsets and sizes are `u16`s
+    /// ([`at`]) and the lists one slice: a `Site` a function, so it is
+    /// kept small.
+    pub data: &'static [u16],
 }
 
 /// A byte offset or size as a [`Site`] keeps it (build.rs writes these in
@@ -65,9 +66,11 @@ pub(crate) const fn at(x: usize) -> u16 {
     x as u16
 }
 
-/// `u16`s as [`exec`] takes them.
-fn wide(s: &[u16]) -> Vec<usize> {
-    s.iter().map(|&x| usize::from(x)).collect()
+/// [`Site::data`]'s four lists, as [`exec`] takes them.
+fn lists(site: &Site) -> [Vec<usize>; 4] {
+    let mut rest = site.data.iter().map(|&x| usize::from(x));
+    site.lens
+        .map(|n| rest.by_ref().take(usize::from(n)).collect())
 }
 
 /// The caller's values of one call of a described export (the first of
@@ -93,8 +96,7 @@ pub(crate) struct Call {
 /// As [`exec`]'s, for `site`'s offsets and `call`'s pointers.
 pub(crate) unsafe fn run(site: &'static Site, h: c_ushort, call: Call) -> c_short {
     let f = &crate::spec::FUNCS[usize::from(site.func)];
-    let (offsets, rec_offsets) = (wide(site.offsets), wide(site.rec_offsets));
-    let (pay_offsets, pay_words) = (wide(site.pay_offsets), wide(site.pay_words));
+    let [offsets, rec_offsets, pay_offsets, pay_words] = lists(site);
     let mut body = move || -> Result<()> {
         let c = &call;
         // SAFETY: as this function's caller promises.
