@@ -469,6 +469,8 @@ rust_layouts! {
     IODBPMC { type_a, type_d, datano_s, datano_e, u }
     ODBPMCINF { datano, info }
     ODBPMCTITLE { mtb, machine, r#type, prgno, prgvers, prgdraw, date, design, written, remarks }
+    ODBPMCTITLE2 { mtb, machine, r#type, prgno, prgvers, prgdraw, date, design, written, remarks }
+    ODBPMCLADMEMTYPE { SystemType, SystemAttribute, TargetType, TargetAttribute, SystemTypeStr, TargetTypeStr }
     ODBPMCALM { almmsg }
     IODBPMAINTE { name, r#type, total, remain, stat }
     ODBPMCERR { err_no, err_dtno }
