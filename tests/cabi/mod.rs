@@ -228,16 +228,16 @@ pub fn is_handle(p: &Param) -> bool {
     p.name == "FlibHndl"
 }
 
-/// A function FANUC's header declares and none of its Ethernet libraries has
-/// (src/spec/table/absent/): it answers EW_VERSION at once, sending and
-/// writing nothing (tests/bad_input.rs and tests/ffi/absent.rs check that),
-/// so the sweeps of the CNC's answers leave it out.
-pub fn not_on_ethernet(name: &str) -> bool {
-    fwlib32::spec::table::absent::ROWS
-        .iter()
-        .copied()
-        .flatten()
-        .any(|(n, _)| *n == name)
+/// A function answering one code on every call, sending and writing
+/// nothing: one FANUC's header declares and none of its Ethernet libraries
+/// has (src/spec/table/absent/: EW_VERSION; tests/bad_input.rs and
+/// tests/ffi/absent.rs check it), or a described one with an `answers`
+/// check (pmc_rdmsg: EW_FUNC, as FANUC's Linux library). It never reaches
+/// the CNC, so the sweeps of the CNC's answers leave it out.
+pub fn fixed_answer(name: &str) -> bool {
+    let absent = fwlib32::spec::table::absent::ROWS.iter().copied().flatten();
+    absent.clone().any(|(n, _)| *n == name)
+        || (fwlib32::spec::FUNCS.iter()).any(|f| f.name == name && f.answers().is_some())
 }
 
 /// Functions that end or change the handle's session (free it, drop its

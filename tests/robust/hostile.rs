@@ -646,15 +646,8 @@ fn sweep_against(profile: Profile, seed: u64, min_percent: usize) {
     for p in cabi::all_prototypes() {
         if !p.params.iter().any(cabi::is_handle)
             || cabi::SESSION.contains(&p.name.as_str())
-            || cabi::not_on_ethernet(&p.name)
+            || cabi::fixed_answer(&p.name)
         {
-            continue;
-        }
-        // A function answering one code on every call (FANUC's libraries
-        // implement none: EW_VERSION, EW_FUNC) never reaches the CNC.
-        let fixed =
-            (fwlib32::spec::FUNCS.iter()).any(|f| f.name == p.name && f.answers().is_some());
-        if fixed {
             continue;
         }
         let r = RECIPES
